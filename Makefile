@@ -1,0 +1,105 @@
+# Facet: build, test, demo and benchmark.
+#
+#   make          build ./facet (optimised)
+#   make check    run every test, then every test again under ASan+UBSan
+#   make demo     run the main job on a bundled example (no TTY needed)
+#   make bench    benchmarks, reported as ratios against a baseline
+#   make deps     install the Debian packages Facet needs (as root)
+#
+# Objects go to build/$(VARIANT)/; VARIANT=release (default) or san.
+
+CC      ?= gcc
+CXX     ?= g++
+VARIANT ?= release
+BUILD   := build/$(VARIANT)
+VERSION := 0.1.0
+
+DEBIAN_PACKAGES := gcc g++ make pkg-config libncurses-dev libsqlite3-dev \
+	libcmocka-dev sqlite3 tmux python3 python3-tinyobjloader \
+	libtinyobjloader-dev libxml2-utils
+
+WARN    := -Wall -Wextra -Werror -Wshadow -Wstrict-prototypes -Wvla
+DEFS    := -D_POSIX_C_SOURCE=200809L -D_DEFAULT_SOURCE -DFACET_VERSION=\"$(VERSION)\"
+ifeq ($(VARIANT),san)
+OPT     := -O1 -g -fsanitize=address,undefined -fno-omit-frame-pointer \
+	-fno-sanitize-recover=all
+else
+OPT     := -O2 -g
+endif
+CFLAGS  := -std=c11 $(WARN) $(DEFS) $(OPT) -MMD -MP -I.
+LDLIBS  := -lsqlite3 $(shell pkg-config --libs ncursesw 2>/dev/null || echo -lncursesw) -lpthread -lm
+LDFLAGS := $(filter -fsanitize=%,$(OPT))
+
+CORE_SRC  := $(wildcard core/*.c)
+STORE_SRC := $(wildcard store/*.c)
+TUI_SRC   := $(wildcard tui/*.c)
+CLI_SRC   := $(filter-out cli/main.c,$(wildcard cli/*.c))
+LIB_SRC   := $(CORE_SRC) $(STORE_SRC) $(TUI_SRC) $(CLI_SRC)
+LIB_OBJ   := $(LIB_SRC:%.c=$(BUILD)/%.o)
+
+UNIT_SRC  := $(wildcard tests/unit/test_*.c)
+UNIT_BIN  := $(UNIT_SRC:tests/unit/%.c=$(BUILD)/tests/%)
+TOOL_SRC  := $(wildcard tests/tools/*.c)
+TOOL_BIN  := $(TOOL_SRC:tests/tools/%.c=$(BUILD)/tools/%)
+
+.PHONY: all check test demo bench deps clean
+
+all: facet
+
+# ./facet is always the release build; the sanitizer build lives in build/san.
+ifeq ($(VARIANT),release)
+facet: $(BUILD)/facet
+	cp $< $@
+endif
+
+$(BUILD)/facet: $(BUILD)/cli/main.o $(BUILD)/libfacet.a
+	$(CC) $(LDFLAGS) -o $@ $^ $(LDLIBS)
+
+$(BUILD)/libfacet.a: $(LIB_OBJ)
+	rm -f $@
+	ar rcs $@ $^
+
+$(BUILD)/%.o: %.c
+	@mkdir -p $(dir $@)
+	$(CC) $(CFLAGS) -c -o $@ $<
+
+$(BUILD)/tests/%: tests/unit/%.c $(BUILD)/libfacet.a
+	@mkdir -p $(dir $@)
+	$(CC) $(CFLAGS) $(LDFLAGS) -o $@ $< $(BUILD)/libfacet.a -lcmocka $(LDLIBS)
+
+$(BUILD)/tools/%: tests/tools/%.c $(BUILD)/libfacet.a
+	@mkdir -p $(dir $@)
+	$(CC) $(CFLAGS) $(LDFLAGS) -o $@ $< $(BUILD)/libfacet.a $(LDLIBS)
+
+# Build and run every test of one variant.
+test: $(BUILD)/facet $(UNIT_BIN) $(TOOL_BIN)
+	tests/run.sh $(BUILD)
+
+check: deps
+	$(MAKE) VARIANT=release facet test
+	$(MAKE) VARIANT=san test
+
+demo: deps facet
+	examples/demo.sh ./facet
+
+bench: deps facet
+	$(MAKE) VARIANT=release $(BUILD)/libfacet.a
+	tests/bench/run.sh $(BUILD)
+
+deps:
+	@missing=$$(for p in $(DEBIAN_PACKAGES); do \
+		dpkg-query -W -f='$${Status}\n' $$p 2>/dev/null | grep -q 'ok installed' || echo $$p; done); \
+	if [ -z "$$missing" ]; then exit 0; fi; \
+	if [ "$$(id -u)" = 0 ]; then \
+		echo "installing:" $$missing; \
+		DEBIAN_FRONTEND=noninteractive apt-get install -y -q $$missing >/dev/null || \
+		{ apt-get update -q >/dev/null && DEBIAN_FRONTEND=noninteractive apt-get install -y -q $$missing >/dev/null; }; \
+	else \
+		echo "Facet needs Debian packages; run as root:"; \
+		echo "  apt-get install -y" $$missing; exit 1; \
+	fi
+
+clean:
+	rm -rf build facet
+
+-include $(shell find build -name '*.d' 2>/dev/null)

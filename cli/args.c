@@ -1,0 +1,124 @@
+/*
+ * args.c: the shared option parser. See args.h.
+ */
+#include "args.h"
+
+#include <errno.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+static const struct arg_option *find_long(const struct arg_option *options,
+                                          const char *name, size_t length)
+{
+    for (; options->name != NULL; options++)
+        if (strlen(options->name) == length &&
+            memcmp(options->name, name, length) == 0)
+            return options;
+    return NULL;
+}
+
+static const struct arg_option *find_alias(const struct arg_option *options,
+                                           char alias)
+{
+    for (; options->name != NULL; options++)
+        if (options->alias != 0 && options->alias == alias)
+            return options;
+    return NULL;
+}
+
+int args_parse(int argc, char **argv, const struct arg_option *options,
+               const char **positional, int max, int *count,
+               struct facet_error *err)
+{
+    int only_positional = 0;
+    *count = 0;
+    for (int i = 1; i < argc; i++) {
+        const char *word = argv[i];
+        const struct arg_option *option = NULL;
+        const char *value = NULL;
+
+        if (!only_positional && strcmp(word, "--") == 0) {
+            only_positional = 1;
+            continue;
+        }
+        if (!only_positional && word[0] == '-' && word[1] == '-') {
+            const char *name = word + 2;
+            const char *equals = strchr(name, '=');
+            size_t length = equals ? (size_t)(equals - name) : strlen(name);
+            option = find_long(options, name, length);
+            if (option == NULL)
+                return facet_error_set(err, FACET_EINPUT,
+                    "%s: unknown option '%.*s' (see 'facet %s --help')",
+                    argv[0], (int)(length + 2), word, argv[0]);
+            if (equals != NULL) {
+                if (option->kind == ARG_FLAG)
+                    return facet_error_set(err, FACET_EINPUT,
+                        "%s: option '--%s' takes no value", argv[0],
+                        option->name);
+                value = equals + 1;
+            }
+        } else if (!only_positional && word[0] == '-' && word[1] != '\0' &&
+                   word[2] == '\0' && find_alias(options, word[1]) != NULL) {
+            option = find_alias(options, word[1]);
+        } else if (!only_positional && word[0] == '-' && word[1] != '\0' &&
+                   !(word[1] >= '0' && word[1] <= '9') && word[1] != '.') {
+            return facet_error_set(err, FACET_EINPUT,
+                "%s: unknown option '%s' (see 'facet %s --help')", argv[0],
+                word, argv[0]);
+        }
+
+        if (option == NULL) {
+            if (*count >= max)
+                return facet_error_set(err, FACET_EINPUT,
+                    "%s: unexpected argument '%s' (see 'facet %s --help')",
+                    argv[0], word, argv[0]);
+            positional[(*count)++] = word;
+            continue;
+        }
+        if (option->kind == ARG_FLAG) {
+            *option->flag = 1;
+            continue;
+        }
+        if (value == NULL) {
+            if (i + 1 >= argc)
+                return facet_error_set(err, FACET_EINPUT,
+                    "%s: option '--%s' needs a value", argv[0], option->name);
+            value = argv[++i];
+        }
+        *option->value = value;
+    }
+    return FACET_OK;
+}
+
+int args_int(const char *text, long min, long max, const char *what,
+             long *out, struct facet_error *err)
+{
+    char *end;
+    errno = 0;
+    long number = strtol(text, &end, 10);
+    if (end == text || *end != '\0' || errno == ERANGE)
+        return facet_error_set(err, FACET_EINPUT,
+            "%s: '%s' is not a whole number", what, text);
+    if (number < min || number > max)
+        return facet_error_set(err, FACET_EINPUT,
+            "%s: %ld is out of range (%ld to %ld)", what, number, min, max);
+    *out = number;
+    return FACET_OK;
+}
+
+int args_double(const char *text, double min, double max, const char *what,
+                double *out, struct facet_error *err)
+{
+    char *end;
+    errno = 0;
+    double number = strtod(text, &end);
+    if (end == text || *end != '\0' || errno == ERANGE || !isfinite(number))
+        return facet_error_set(err, FACET_EINPUT,
+            "%s: '%s' is not a number", what, text);
+    if (number < min || number > max)
+        return facet_error_set(err, FACET_EINPUT,
+            "%s: %g is out of range (%g to %g)", what, number, min, max);
+    *out = number;
+    return FACET_OK;
+}

@@ -1,0 +1,45 @@
+/*
+ * args.h: the option parser every subcommand shares.
+ *
+ * Options are long (--name VALUE, --name=VALUE, or --flag), with an optional
+ * one-letter alias (-o VALUE); everything else is positional; "--" ends the
+ * options. A command describes its options in a table and gets its values
+ * written where the table points.
+ */
+#ifndef FACET_ARGS_H
+#define FACET_ARGS_H
+
+#include "core/error.h"
+
+enum arg_kind {
+    ARG_FLAG,    /* no value: sets *flag to 1 */
+    ARG_STRING   /* one value: sets *value (points into argv) */
+};
+
+struct arg_option {
+    const char *name;    /* without the leading "--" */
+    char alias;          /* one-letter alias after "-", or 0 */
+    enum arg_kind kind;
+    const char **value;  /* for ARG_STRING */
+    int *flag;           /* for ARG_FLAG */
+};
+
+/* Parses argv[1..argc) (argv[0] is the command name) against options, which
+ * ends with an entry whose name is NULL. Positional arguments are stored in
+ * positional[0..max) and counted in *count. Returns FACET_OK or FACET_EINPUT
+ * with err naming the unknown option, the missing value or the surplus
+ * argument. */
+int args_parse(int argc, char **argv, const struct arg_option *options,
+               const char **positional, int max, int *count,
+               struct facet_error *err);
+
+/* Parses text as an integer in [min, max] into *out. what names the value in
+ * the error ("--res"). Returns FACET_OK or FACET_EINPUT. */
+int args_int(const char *text, long min, long max, const char *what,
+             long *out, struct facet_error *err);
+
+/* Parses text as a finite number in [min, max] into *out, like args_int. */
+int args_double(const char *text, double min, double max, const char *what,
+                double *out, struct facet_error *err);
+
+#endif

@@ -1,0 +1,87 @@
+/*
+ * cmd_example.c: `facet example NAME [-o FILE] [--res N]`, writing one of the
+ * example surfaces that the README and `make demo` use.
+ */
+#include <errno.h>
+#include <stdio.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "args.h"
+#include "command.h"
+#include "core/example.h"
+
+static int example_run(int argc, char **argv, struct facet_error *err)
+{
+    const char *output = NULL, *res_text = NULL;
+    int force = 0;
+    const struct arg_option options[] = {
+        {"output", 'o', ARG_STRING, &output, NULL},
+        {"res", 0, ARG_STRING, &res_text, NULL},
+        {"force", 0, ARG_FLAG, NULL, &force},
+        {NULL, 0, ARG_FLAG, NULL, NULL},
+    };
+    const char *name[1];
+    int count;
+    int rc = args_parse(argc, argv, options, name, 1, &count, err);
+    if (rc != FACET_OK)
+        return rc;
+    if (count != 1) {
+        char names[256] = "";
+        for (int i = 0; example_names[i] != NULL; i++) {
+            strncat(names, i ? ", " : "", sizeof names - strlen(names) - 1);
+            strncat(names, example_names[i], sizeof names - strlen(names) - 1);
+        }
+        return facet_error_set(err, FACET_EINPUT,
+                               "example: name one example (%s)", names);
+    }
+    long res = 0;
+    if (res_text != NULL &&
+        (rc = args_int(res_text, 1, 4096, "--res", &res, err)) != FACET_OK)
+        return rc;
+    if (example_describe(name[0]) == NULL)
+        return example_write(name[0], (int)res, NULL, err);
+
+    if (output == NULL || strcmp(output, "-") == 0)
+        return example_write(name[0], (int)res, stdout, err);
+
+    if (!force && access(output, F_OK) == 0)
+        return facet_error_set(err, FACET_EINPUT,
+            "example: %s exists (pass --force to overwrite it)", output);
+    /* Write beside the target and rename, so a failure never leaves a
+     * half-written surface under the name the user asked for. */
+    char partial[4096];
+    if (snprintf(partial, sizeof partial, "%s.partial", output) >=
+        (int)sizeof partial)
+        return facet_error_set(err, FACET_EINPUT,
+                               "example: output path too long");
+    FILE *out = fopen(partial, "w");
+    if (out == NULL)
+        return facet_error_set(err, FACET_EINPUT, "example: cannot write %s: %s",
+                               output, strerror(errno));
+    rc = example_write(name[0], (int)res, out, err);
+    if (fclose(out) != 0 && rc == FACET_OK)
+        rc = facet_error_set(err, FACET_EWORK, "example: writing %s: %s",
+                             output, strerror(errno));
+    if (rc == FACET_OK && rename(partial, output) != 0)
+        rc = facet_error_set(err, FACET_EWORK, "example: cannot write %s: %s",
+                             output, strerror(errno));
+    if (rc != FACET_OK)
+        remove(partial);
+    return rc;
+}
+
+const struct command cmd_example = {
+    .name = "example",
+    .usage = "NAME [-o FILE] [--res N] [--force]",
+    .summary = "Write an example surface (OBJ, metres, vt = surface "
+               "parameters).",
+    .options =
+        "  NAME           plane, cylinder, dome, hypar, torus, wave or roof\n"
+        "                 (roof: a free-form roof of about 1,240 m^2 with\n"
+        "                 flat, single- and double-curved regions)\n"
+        "  -o, --output F write to F instead of standard output\n"
+        "  --res N        N x N quads (1..4096; default about 20k vertices)\n"
+        "  --force        overwrite F if it exists\n",
+    .run = example_run,
+};

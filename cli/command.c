@@ -1,0 +1,44 @@
+/*
+ * command.c: the subcommand table and the usage text made from it.
+ */
+#include "command.h"
+
+#include <string.h>
+
+const struct command *const command_table[] = {
+    &cmd_info,
+    &cmd_classify,
+    &cmd_example,
+    &cmd_help,
+    NULL
+};
+
+const struct command *command_find(const char *name)
+{
+    for (int i = 0; command_table[i] != NULL; i++)
+        if (strcmp(command_table[i]->name, name) == 0)
+            return command_table[i];
+    return NULL;
+}
+
+void command_print_usage(const struct command *cmd, FILE *out)
+{
+    fprintf(out, "usage: facet %s %s\n\n%s\n", cmd->name, cmd->usage,
+            cmd->summary);
+    if (cmd->options[0] != '\0')
+        fprintf(out, "\noptions:\n%s", cmd->options);
+}
+
+void command_print_overview(FILE *out)
+{
+    fputs("usage: facet COMMAND [ARGS]\n\n"
+          "Facet rationalizes free-form surfaces: it divides a surface into "
+          "a UV grid of\npanels, classifies them flat, single- or "
+          "double-curved, and prices the result.\n\ncommands:\n", out);
+    for (int i = 0; command_table[i] != NULL; i++)
+        fprintf(out, "  %-10s %s\n", command_table[i]->name,
+                command_table[i]->summary);
+    fputs("\n'facet help COMMAND' or 'facet COMMAND --help' tells more.\n"
+          "Exit status: 0 success, 1 failure while working, "
+          "2 bad usage or bad input.\n", out);
+}

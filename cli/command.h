@@ -1,0 +1,43 @@
+/*
+ * command.h: the table of facet subcommands.
+ *
+ * One subcommand, one file (cli/cmd_NAME.c), one table entry. The usage text
+ * printed by `facet --help`, `facet help CMD` and `facet CMD --help` is made
+ * from the same entry, so it never drifts from the code.
+ */
+#ifndef FACET_COMMAND_H
+#define FACET_COMMAND_H
+
+#include <stdio.h>
+
+#include "core/error.h"
+
+struct command {
+    const char *name;
+    const char *usage;    /* arguments after the name, one line */
+    const char *summary;  /* what it does, one line */
+    const char *options;  /* one option per line, "  --flag X  what", or "" */
+    /* Runs the command on argv[0..argc) (argv[0] is the command's name).
+     * Returns the exit code: 0 success, 1 failure while working, 2 bad
+     * usage or bad input, with err filled for 1 and 2. */
+    int (*run)(int argc, char **argv, struct facet_error *err);
+};
+
+/* Every subcommand, NULL-terminated, in the order --help lists them. */
+extern const struct command *const command_table[];
+
+/* The entry named name, or NULL. */
+const struct command *command_find(const char *name);
+
+/* Prints the usage of one command (name, usage, summary, options). */
+void command_print_usage(const struct command *cmd, FILE *out);
+
+/* Prints the program's usage: every command with its summary. */
+void command_print_overview(FILE *out);
+
+extern const struct command cmd_help;
+extern const struct command cmd_info;
+extern const struct command cmd_example;
+extern const struct command cmd_classify;
+
+#endif

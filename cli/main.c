@@ -1,0 +1,56 @@
+/*
+ * main.c: the facet entry point. Finds the subcommand in the table, handles
+ * --help everywhere, runs it, and turns its error into one line on stderr
+ * and the exit status (0 ok, 1 failure while working, 2 bad usage or input).
+ */
+#include <stdio.h>
+#include <string.h>
+
+#include "command.h"
+
+static int wants_help(int argc, char **argv)
+{
+    for (int i = 1; i < argc; i++) {
+        if (strcmp(argv[i], "--") == 0)
+            return 0;
+        if (strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0)
+            return 1;
+    }
+    return 0;
+}
+
+int main(int argc, char **argv)
+{
+    if (argc < 2) {
+        command_print_overview(stderr);
+        return 2;
+    }
+    if (strcmp(argv[1], "--help") == 0 || strcmp(argv[1], "-h") == 0) {
+        command_print_overview(stdout);
+        return 0;
+    }
+    if (strcmp(argv[1], "--version") == 0) {
+        printf("facet %s\n", FACET_VERSION);
+        return 0;
+    }
+    const struct command *cmd = command_find(argv[1]);
+    if (cmd == NULL) {
+        fprintf(stderr, "facet: unknown command '%s' (see 'facet --help')\n",
+                argv[1]);
+        return 2;
+    }
+    if (wants_help(argc - 1, argv + 1)) {
+        command_print_usage(cmd, stdout);
+        return 0;
+    }
+
+    struct facet_error err;
+    facet_error_clear(&err);
+    int status = cmd->run(argc - 1, argv + 1, &err);
+    if (status != 0) {
+        fflush(stdout);
+        fprintf(stderr, "facet: %s\n",
+                err.message[0] ? err.message : "failed");
+    }
+    return status;
+}

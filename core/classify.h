@@ -1,0 +1,86 @@
+/*
+ * classify.h: naming, typing and pricing panels, and the option totals.
+ *
+ * The paper's CPMGC (Table 1) and MOGD rules, as DESIGN.md defines them:
+ *   - a curvature counts as zero when |k| < eps; eps is fixed by the user or,
+ *     by default, the curvature at which a panel of diameter d sags by the
+ *     flatness threshold t: eps = 8 t / d^2;
+ *   - the signs of K and H come from k1 and k2 after that zeroing, and H
+ *     counts as zero when |H| < eps (so K > 0 with H = 0, the "umbilic
+ *     noise" cell of Table 1, cannot occur: two non-zero curvatures of one
+ *     sign have a mean at least eps away from zero);
+ *   - flat -> FP, ruled -> SP, every other class -> DP; then a panel whose
+ *     deviation from its best-fit plane is within t is made FP whatever its
+ *     class;
+ *   - cost = area x price of the type; in the paper's MOGD mode SP area is
+ *     priced as FP.
+ * Every total a user sees is computed here, once.
+ */
+#ifndef FACET_CLASSIFY_H
+#define FACET_CLASSIFY_H
+
+#include <stddef.h>
+
+#include "error.h"
+#include "panel.h"
+
+struct classify_options {
+    double threshold;          /* flatness threshold t (m); paper 0.003 */
+    double curvature_tol;      /* eps (1/m); 0 means 8 t / d^2 per panel */
+    double price[TYPE_COUNT];  /* USD/m^2 of FP, SP, DP */
+    int sp_as_fp;              /* price SP area as FP (the paper's MOGD) */
+    double max_panel_area;     /* feasibility limit (m^2) */
+};
+
+/* The paper's defaults: t = 3 mm, eps = 8 t / d^2, prices 701, 766, 1518,
+ * SP priced as SP, the general 7.06 m^2 panel size limit. */
+void classify_defaults(struct classify_options *options);
+
+struct option_totals {
+    size_t panels;
+    size_t count[TYPE_COUNT];        /* panels per type */
+    double area_of[TYPE_COUNT];      /* area per type (m^2) */
+    double cost_of[TYPE_COUNT];      /* cost per type (USD) */
+    size_t class_count[CLASS_COUNT];
+    double class_area[CLASS_COUNT];  /* m^2 */
+    double area;                     /* m^2, equals the mesh area */
+    double cost;                     /* USD */
+    double planarity;                /* sum of the deviations of the panels
+                                        that are not DP (m): a DP panel is
+                                        moulded to the design */
+    double max_deviation;            /* largest of those deviations (m) */
+    double max_panel_area;           /* m^2 */
+    double p_dist;                   /* sum of the non-DP panels' P_dist
+                                        (m^4) */
+    int feasible;                    /* every panel within max_panel_area */
+};
+
+/* The class of curvatures k1 >= k2 (1/m) with zero tolerance eps (1/m). */
+enum panel_class classify_curvature(double k1, double k2, double eps);
+
+/* FP for flat, SP for ruled, DP for every other class. */
+enum panel_type panel_type_of_class(enum panel_class class);
+
+/* "convex_feature_curve", "saddle", ..., as classify --json writes them. */
+const char *panel_class_name(enum panel_class class);
+
+/* "FP", "SP", "DP". */
+const char *panel_type_name(enum panel_type type);
+
+/* The zero tolerance for a panel: options->curvature_tol when set, else
+ * 8 t / d^2 with d the panel's diameter (1/m). */
+double classify_tolerance(const struct classify_options *options,
+                          const struct panel *panel);
+
+/* Classifies, types and prices every panel of p (K, H, curvature_tol,
+ * class, type, price, cost) and sums the option's totals into *totals. */
+void classify_panels(struct panelization *p,
+                     const struct classify_options *options,
+                     struct option_totals *totals);
+
+/* Checks options for values no facade has (negative or non-finite
+ * threshold, prices, limits). Returns FACET_OK or FACET_EINPUT. */
+int classify_check_options(const struct classify_options *options,
+                           struct facet_error *err);
+
+#endif

@@ -1,0 +1,41 @@
+/*
+ * curvature.h: principal curvatures at every vertex of a surface.
+ *
+ * Computed once per surface, independent of any panel grid. The estimator
+ * fits a quadric (a degree-2 jet) to each vertex's neighbourhood in a local
+ * frame, over a neighbourhood scaled to the local edge length, and reads the
+ * shape operator off the fit; see curvature.c for the details and the
+ * accuracy it reaches.
+ *
+ * Sign convention (DESIGN.md): curvature is negative where the surface bends
+ * away from its normal, so a dome seen from outside, with the normal
+ * pointing out, has k1, k2 < 0 ("convex"). The normal is the vertex normal
+ * from vn when the file has normals, otherwise from the face winding;
+ * flip_normals reverses it (and so every sign).
+ */
+#ifndef FACET_CURVATURE_H
+#define FACET_CURVATURE_H
+
+#include <stddef.h>
+
+#include "error.h"
+#include "mesh.h"
+
+struct curvature {
+    size_t nvertices;
+    double *k1;        /* #V maximum principal curvature (1/m) */
+    double *k2;        /* #V minimum principal curvature (1/m), k2 <= k1 */
+    double *dir1;      /* #V x 3 unit principal direction of k1 */
+    double *dir2;      /* #V x 3 unit principal direction of k2 */
+    double *normal;    /* #V x 3 unit vertex normal that fixes the sign */
+};
+
+/* Estimates curvature at every vertex of mesh into *out (caller-owned,
+ * released with curvature_free, also after a failure). Returns FACET_OK,
+ * FACET_EWORK when out of memory. Isolated or degenerate vertices get 0. */
+int curvature_at_vertices(const struct mesh *mesh, int flip_normals,
+                          struct curvature *out, struct facet_error *err);
+
+void curvature_free(struct curvature *curvature);
+
+#endif

@@ -1,0 +1,146 @@
+/*
+ * report.c: JSON and CSV of an evaluated option. See report.h.
+ */
+#include "report.h"
+
+#include <math.h>
+
+#include "json.h"
+
+static void json_totals(struct json_writer *w,
+                        const struct option_totals *t)
+{
+    json_begin_object(w);
+    json_key(w, "panels");         json_integer(w, (long long)t->panels);
+    json_key(w, "fp_count");       json_integer(w, (long long)t->count[TYPE_FP]);
+    json_key(w, "sp_count");       json_integer(w, (long long)t->count[TYPE_SP]);
+    json_key(w, "dp_count");       json_integer(w, (long long)t->count[TYPE_DP]);
+    json_key(w, "fp_area");        json_number(w, t->area_of[TYPE_FP]);
+    json_key(w, "sp_area");        json_number(w, t->area_of[TYPE_SP]);
+    json_key(w, "dp_area");        json_number(w, t->area_of[TYPE_DP]);
+    json_key(w, "area");           json_number(w, t->area);
+    json_key(w, "cost");           json_number(w, t->cost);
+    json_key(w, "planarity");      json_number(w, t->planarity);
+    json_key(w, "max_deviation");  json_number(w, t->max_deviation);
+    json_key(w, "max_panel_area"); json_number(w, t->max_panel_area);
+    json_key(w, "p_dist");         json_number(w, t->p_dist);
+    json_key(w, "feasible");       json_bool(w, t->feasible);
+    json_key(w, "classes");
+    json_begin_object(w);
+    for (int c = 0; c < CLASS_COUNT; c++) {
+        json_key(w, panel_class_name((enum panel_class)c));
+        json_begin_object(w);
+        json_key(w, "count");
+        json_integer(w, (long long)t->class_count[c]);
+        json_key(w, "area");
+        json_number(w, t->class_area[c]);
+        json_end_object(w);
+    }
+    json_end_object(w);
+    json_end_object(w);
+}
+
+void report_json(FILE *out, const struct report_source *source,
+                 const struct classify_options *options,
+                 const struct panelization *panels,
+                 const struct option_totals *totals)
+{
+    struct json_writer w;
+    json_init(&w, out);
+    json_begin_object(&w);
+    json_key(&w, "surface");
+    json_begin_object(&w);
+    json_key(&w, "file");      json_string(&w, source->file);
+    json_key(&w, "units");     json_string(&w, source->units);
+    json_key(&w, "area");      json_number(&w, source->area);
+    json_key(&w, "triangles"); json_integer(&w, (long long)source->triangles);
+    json_key(&w, "uv");        json_string(&w, source->uv_method);
+    json_end_object(&w);
+    json_key(&w, "grid");
+    json_begin_object(&w);
+    json_key(&w, "nu");        json_integer(&w, panels->nu);
+    json_key(&w, "nv");        json_integer(&w, panels->nv);
+    json_end_object(&w);
+    json_key(&w, "threshold_mm");
+    json_number(&w, options->threshold * 1000);
+    /* null: the tolerance is 8 t / d^2 per panel (each panel's "eps"). */
+    json_key(&w, "curvature_tol");
+    if (options->curvature_tol > 0)
+        json_number(&w, options->curvature_tol);
+    else
+        json_null(&w);
+    json_key(&w, "per_panel");  json_string(&w, source->per_panel);
+    json_key(&w, "prices");
+    json_begin_object(&w);
+    json_key(&w, "FP");         json_number(&w, options->price[TYPE_FP]);
+    json_key(&w, "SP");         json_number(&w, options->price[TYPE_SP]);
+    json_key(&w, "DP");         json_number(&w, options->price[TYPE_DP]);
+    json_key(&w, "sp_as_fp");   json_bool(&w, options->sp_as_fp);
+    json_end_object(&w);
+    json_key(&w, "max_panel_area_limit");
+    json_number(&w, options->max_panel_area);
+
+    json_key(&w, "panels");
+    json_begin_array(&w);
+    for (size_t n = 0; n < panels->npanels; n++) {
+        const struct panel *p = &panels->panels[n];
+        json_begin_object(&w);
+        json_key(&w, "i");         json_integer(&w, p->i);
+        json_key(&w, "j");         json_integer(&w, p->j);
+        json_key(&w, "class");     json_string(&w, panel_class_name(p->class));
+        json_key(&w, "type");      json_string(&w, panel_type_name(p->type));
+        json_key(&w, "area");      json_number(&w, p->area);
+        json_key(&w, "deviation"); json_number(&w, p->deviation);
+        json_key(&w, "k1");        json_number(&w, p->k1);
+        json_key(&w, "k2");        json_number(&w, p->k2);
+        json_key(&w, "K");         json_number(&w, p->K);
+        json_key(&w, "H");         json_number(&w, p->H);
+        json_key(&w, "eps");       json_number(&w, p->curvature_tol);
+        json_key(&w, "p_dist");    json_number(&w, p->p_dist);
+        json_key(&w, "diameter");  json_number(&w, p->diameter);
+        json_key(&w, "trimmed");   json_bool(&w, p->trimmed);
+        json_key(&w, "corner_planarity");
+        json_number(&w, p->corner_planarity);
+        json_key(&w, "cost");      json_number(&w, p->cost);
+        json_end_object(&w);
+    }
+    json_end_array(&w);
+    json_key(&w, "totals");
+    json_totals(&w, totals);
+    json_end_object(&w);
+    json_finish(&w);
+}
+
+/* A CSV number: empty for NaN (a corner off the surface). */
+static void csv_number(FILE *out, double x, const char *format)
+{
+    fputc(',', out);
+    if (isfinite(x))
+        fprintf(out, format, x);
+}
+
+void report_csv(FILE *out, const struct panelization *panels)
+{
+    fputs("i,j,class,type,area_m2,deviation_m,k1,k2,K,H,eps,p_dist_m4,"
+          "diameter_m,trimmed,corner_planarity_m,price_usd_m2,cost_usd\n",
+          out);
+    for (size_t n = 0; n < panels->npanels; n++) {
+        const struct panel *p = &panels->panels[n];
+        fprintf(out, "%d,%d,%s,%s", p->i, p->j, panel_class_name(p->class),
+                panel_type_name(p->type));
+        csv_number(out, p->area, "%.9g");
+        csv_number(out, p->deviation, "%.9g");
+        csv_number(out, p->k1, "%.9g");
+        csv_number(out, p->k2, "%.9g");
+        csv_number(out, p->K, "%.9g");
+        csv_number(out, p->H, "%.9g");
+        csv_number(out, p->curvature_tol, "%.9g");
+        csv_number(out, p->p_dist, "%.9g");
+        csv_number(out, p->diameter, "%.9g");
+        fprintf(out, ",%d", p->trimmed);
+        csv_number(out, p->corner_planarity, "%.9g");
+        csv_number(out, p->price, "%.2f");
+        csv_number(out, p->cost, "%.4f");
+        fputc('\n', out);
+    }
+}

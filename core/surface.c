@@ -1,0 +1,153 @@
+/*
+ * surface.c: loading a surface and collecting its warnings. See surface.h.
+ */
+#include "surface.h"
+
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+static void warn(struct surface *surface, const char *fmt, ...)
+    __attribute__((format(printf, 2, 3)));
+
+static void warn(struct surface *surface, const char *fmt, ...)
+{
+    if (surface->nwarnings >= SURFACE_MAX_WARNINGS)
+        return;
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(surface->warnings[surface->nwarnings++],
+              sizeof surface->warnings[0], fmt, ap);
+    va_end(ap);
+}
+
+/* Writes the names of a table (skipping the unnamed entry 0) into text. */
+static void list_names(const struct obj_name *names, size_t count,
+                       char *text, size_t size)
+{
+    size_t used = 0;
+    text[0] = '\0';
+    for (size_t i = 1; i < count && used + 1 < size; i++) {
+        int n = snprintf(text + used, size - used, "%s%s",
+                         used ? ", " : "", names[i].text);
+        if (n < 0)
+            break;
+        used += (size_t)n;
+    }
+    if (used >= size && size > 4)
+        strcpy(text + size - 4, "...");
+}
+
+int surface_open(const char *path, const struct mesh_options *options,
+                 struct surface *out, struct facet_error *err)
+{
+    memset(out, 0, sizeof *out);
+    out->units = options->units;
+    out->selected = options->object != NULL || options->group != NULL;
+    out->path = strdup(path);
+    if (out->path == NULL)
+        return facet_error_set(err, FACET_EWORK, "out of memory");
+    int rc = obj_load(path, &out->obj, err);
+    if (rc != FACET_OK)
+        return rc;
+    rc = mesh_build(&out->obj, options, &out->mesh, err);
+    if (rc != FACET_OK) {
+        /* mesh errors do not know the file name; add it. */
+        char message[sizeof err->message];
+        snprintf(message, sizeof message, "%s", err->message);
+        return facet_error_set(err, rc, "%s: %s", path, message);
+    }
+
+    char text[256];
+    if (mesh_units_warning(&out->mesh, options->units, text, sizeof text))
+        warn(out, "%s", text);
+    if (!out->selected && out->mesh.ncomponents > 1) {
+        char names[200];
+        if (out->obj.nobjects > 2) {
+            list_names(out->obj.objects, out->obj.nobjects, names,
+                       sizeof names);
+            warn(out, "the file holds %zu separate surfaces; objects: %s "
+                 "(select one with --object NAME)",
+                 out->mesh.ncomponents, names);
+        } else if (out->obj.ngroups > 2) {
+            list_names(out->obj.groups, out->obj.ngroups, names,
+                       sizeof names);
+            warn(out, "the file holds %zu separate surfaces; groups: %s "
+                 "(select one with --group NAME)",
+                 out->mesh.ncomponents, names);
+        } else {
+            warn(out, "the file holds %zu separate surfaces in one object "
+                 "(export the surface to panelize on its own)",
+                 out->mesh.ncomponents);
+        }
+    }
+    if (out->mesh.nonmanifold_edges > 0)
+        warn(out, "%zu edges are shared by more than two triangles "
+             "(non-manifold)", out->mesh.nonmanifold_edges);
+    if (out->mesh.ndegenerate > 0)
+        warn(out, "%zu triangles dropped: their corners weld into fewer "
+             "than three vertices", out->mesh.ndegenerate);
+    return FACET_OK;
+}
+
+int surface_require_single(const struct surface *surface,
+                           struct facet_error *err)
+{
+    if (surface->mesh.ncomponents <= 1 || surface->selected)
+        return FACET_OK;
+    char names[200];
+    if (surface->obj.nobjects > 2) {
+        list_names(surface->obj.objects, surface->obj.nobjects, names,
+                   sizeof names);
+        return facet_error_set(err, FACET_EINPUT,
+            "%s holds %zu separate surfaces; select one with --object NAME "
+            "(objects: %s)", surface->path, surface->mesh.ncomponents,
+            names);
+    }
+    if (surface->obj.ngroups > 2) {
+        list_names(surface->obj.groups, surface->obj.ngroups, names,
+                   sizeof names);
+        return facet_error_set(err, FACET_EINPUT,
+            "%s holds %zu separate surfaces; select one with --group NAME "
+            "(groups: %s)", surface->path, surface->mesh.ncomponents, names);
+    }
+    return facet_error_set(err, FACET_EINPUT,
+        "%s holds %zu separate surfaces in one object; export the surface "
+        "to panelize on its own", surface->path, surface->mesh.ncomponents);
+}
+
+int surface_prepare(struct surface *surface, int flip_normals,
+                    struct facet_error *err)
+{
+    int rc = surface_require_single(surface, err);
+    if (rc != FACET_OK)
+        return rc;
+    rc = param_choose(&surface->mesh, surface->path, &surface->param, err);
+    if (rc != FACET_OK)
+        return rc;
+    if (surface->param.report.degenerate > 0)
+        warn(surface, "%zu triangles have no extent in UV and add no area "
+             "to any panel", surface->param.report.degenerate);
+    rc = uv_index_build(surface->param.uv, surface->mesh.ntriangles,
+                        &surface->uv, err);
+    if (rc != FACET_OK)
+        return rc;
+    rc = curvature_at_vertices(&surface->mesh, flip_normals,
+                               &surface->curvature, err);
+    if (rc != FACET_OK)
+        return rc;
+    surface->prepared = 1;
+    return FACET_OK;
+}
+
+void surface_close(struct surface *surface)
+{
+    uv_index_free(&surface->uv);
+    param_free(&surface->param);
+    curvature_free(&surface->curvature);
+    free(surface->path);
+    obj_free(&surface->obj);
+    mesh_free(&surface->mesh);
+    memset(surface, 0, sizeof *surface);
+}

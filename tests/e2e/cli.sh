@@ -1,0 +1,85 @@
+#!/usr/bin/env bash
+# End-to-end: the facet command's help, examples, info and its errors, run
+# as a user would run them.
+. "$(dirname "$0")/lib.sh"
+
+# Help, from the one command table.
+expect "facet --help exits 0" 0 "$FACET" --help
+stdout_has "--help lists info" '^  info '
+stdout_has "--help lists example" '^  example '
+expect "facet help info exits 0" 0 "$FACET" help info
+stdout_has "help info shows usage" '^usage: facet info SURFACE.obj'
+expect "facet info --help exits 0" 0 "$FACET" info --help
+stdout_has "info --help shows options" '--units U'
+expect_error "no command is bad usage" 'usage: facet COMMAND|unknown' "$FACET" frobnicate
+expect_error "unknown option" "unknown option '--frob'" "$FACET" info --frob x.obj
+expect_error "help for unknown command" "unknown command 'nope'" "$FACET" help nope
+
+# Every example writes, loads back, and is one surface with UV.
+for name in plane cylinder dome hypar torus wave roof; do
+    expect "example $name writes" 0 "$FACET" example "$name" -o "$WORK/$name.obj"
+    expect "info $name --json" 0 "$FACET" info "$WORK/$name.obj" --json
+    json_check "$name has valid UV, one component, one loop" \
+        'j["has_uv"] and j["uv_valid"] and j["components"]==1 and j["boundary_loops"]==1'
+done
+run "$FACET" info "$WORK/roof.obj" --json
+json_check "roof is about 1,240 m^2" 'abs(j["area"]-1240)/1240 < 0.01'
+json_check "info --json has the documented keys" \
+    'all(k in j for k in ["vertices","texcoords","normals","faces","triangles","has_uv","bbox","area","components","boundary_loops","objects"])'
+json_check "bbox is [[min],[max]]" 'len(j["bbox"])==2 and all(len(b)==3 for b in j["bbox"]) and all(j["bbox"][0][k] <= j["bbox"][1][k] for k in range(3))'
+expect "info roof (human)" 0 "$FACET" info "$WORK/roof.obj"
+stdout_has "human info shows area in m^2" '^area +1[0-9]{3}\.[0-9]{3} m\^2'
+stdout_has "human info shows UV valid" '^UV +valid'
+
+expect "example --res" 0 "$FACET" example plane --res 4 -o "$WORK/p4.obj"
+run "$FACET" info "$WORK/p4.obj" --json
+json_check "--res 4 gives 25 vertices" 'j["vertices"]==25'
+expect_error "example refuses to overwrite" 'exists.*--force' "$FACET" example plane -o "$WORK/p4.obj"
+expect "example --force overwrites" 0 "$FACET" example plane --res 2 --force -o "$WORK/p4.obj"
+expect_error "unknown example" "unknown example 'blob'" "$FACET" example blob
+expect_error "example --res 0" 'res' "$FACET" example plane --res 0
+expect_error "example to an unwritable path" 'cannot write' "$FACET" example plane -o /nonexistent/dir/x.obj
+
+# Units: converted once at load, and a warning when they look wrong.
+run "$FACET" info "$WORK/p4.obj" --json --units mm
+json_check "--units mm scales area by 1e-6" 'abs(j["area"]-300e-6) < 1e-9'
+json_check "a 20 mm facade is warned about" 'any("metres" in w or "units" in w for w in j["warnings"])'
+expect_error "bad units" "units 'furlong'" "$FACET" info "$WORK/p4.obj" --units furlong
+
+# Bad input: one line naming the problem, status 2, never a crash.
+expect_error "missing file" 'nothere.obj' "$FACET" info "$WORK/nothere.obj"
+expect_error "a directory" "$WORK" "$FACET" info "$WORK"
+: >"$WORK/empty.obj"
+expect_error "empty file" 'empty.obj.*empty' "$FACET" info "$WORK/empty.obj"
+head -c 4096 /dev/urandom >"$WORK/binary.obj"
+expect_error "binary file" 'binary.obj.*binary' "$FACET" info "$WORK/binary.obj"
+printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 4\n' >"$WORK/range.obj"
+expect_error "index out of range names the line" 'range.obj:4' "$FACET" info "$WORK/range.obj"
+printf 'v 0 0 0\nv 1 nan 0\nv 0 1 0\nf 1 2 3\n' >"$WORK/nan.obj"
+expect_error "NaN coordinate names the line" 'nan.obj:2' "$FACET" info "$WORK/nan.obj"
+printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 0 3\n' >"$WORK/zero.obj"
+expect_error "zero index" 'zero.obj:4' "$FACET" info "$WORK/zero.obj"
+printf 'v 0 0 0\nv 1 0 0\nf 1 2\n' >"$WORK/short.obj"
+expect_error "face of two vertices" 'short.obj:3' "$FACET" info "$WORK/short.obj"
+printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nf -1 -2 -4\n' >"$WORK/before.obj"
+expect_error "relative index before the first vertex" 'before.obj:4' "$FACET" info "$WORK/before.obj"
+expect_error "info with no file" 'name one OBJ file' "$FACET" info
+
+# Several surfaces in one file: said, and listed.
+printf 'o left\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\no right\nv 5 0 0\nv 6 0 0\nv 5 1 0\nf 4 5 6\n' >"$WORK/two.obj"
+expect "info on two objects" 0 "$FACET" info "$WORK/two.obj"
+stdout_has "two surfaces are listed" 'separate surfaces.*left, right'
+run "$FACET" info "$WORK/two.obj" --object right --json
+json_check "--object selects one" 'j["components"]==1 and j["triangles"]==1'
+expect_error "unknown object is named" "nope" "$FACET" info "$WORK/two.obj" --object nope
+
+# Real files from public projects all load.
+for file in "$FACET_DATA"/*.obj; do
+    expect "info $(basename "$file")" 0 "$FACET" info "$file" --json
+done
+run "$FACET" info "$FACET_DATA/acj_spot.obj" --json
+json_check "spot: counts as tinyobjloader reads them" 'j["vertices"]==2930 and j["texcoords"]==3225 and j["triangles"]==5856'
+json_check "spot: closed, so no boundary loop" 'j["boundary_loops"]==0 and j["components"]==1'
+run "$FACET" info "$FACET_DATA/compas_hypar.obj" --json
+json_check "hypar: no UV, one loop" 'not j["has_uv"] and j["boundary_loops"]==1'
+exit 0

@@ -1,0 +1,61 @@
+# lib.sh: helpers for the end-to-end scripts, which run the real facet
+# binary ($FACET) and print one "ok - NAME" or "not ok - NAME" line per check.
+# Each script sources this file; tests/run.sh counts the lines.
+
+FACET=${FACET:?set FACET to the facet binary}
+FACET_DATA=${FACET_DATA:-../shared/data}
+WORK=$(mktemp -d)
+trap 'rm -rf "$WORK"' EXIT
+OUT=$WORK/stdout
+ERR=$WORK/stderr
+
+# run CMD...: runs a command, keeping its stdout, stderr and status.
+run() {
+    "$@" >"$OUT" 2>"$ERR"
+    STATUS=$?
+}
+
+pass() { echo "ok - $1"; }
+fail() {
+    echo "not ok - $1"
+    echo "  status: $STATUS"
+    sed 's/^/  stdout: /' "$OUT" | head -n 20
+    sed 's/^/  stderr: /' "$ERR" | head -n 20
+}
+
+# expect NAME STATUS CMD...: the command exits with STATUS.
+expect() {
+    local name=$1 want=$2
+    shift 2
+    run "$@"
+    if [ "$STATUS" -eq "$want" ]; then pass "$name"; else fail "$name (want status $want)"; fi
+}
+
+# expect_error NAME PATTERN CMD...: exits 2 with one stderr line matching
+# PATTERN (grep -E) and nothing that looks like a crash.
+expect_error() {
+    local name=$1 pattern=$2
+    shift 2
+    run "$@"
+    if [ "$STATUS" -eq 2 ] && [ "$(wc -l <"$ERR")" -eq 1 ] &&
+        grep -qE "$pattern" "$ERR"; then
+        pass "$name"
+    else
+        fail "$name (want status 2 and one line matching: $pattern)"
+    fi
+}
+
+# stdout_has NAME PATTERN: the last run's stdout matches PATTERN.
+stdout_has() {
+    if grep -qE -- "$2" "$OUT"; then pass "$1"; else fail "$1 (stdout lacks: $2)"; fi
+}
+
+# json_check NAME PYTHON_EXPR: evaluates a Python expression over the last
+# run's stdout parsed as JSON (bound to j); passes when it is true.
+json_check() {
+    if /usr/bin/python3 -c "import json,sys; j=json.load(open(sys.argv[1])); sys.exit(0 if ($2) else 1)" "$OUT" 2>>"$ERR"; then
+        pass "$1"
+    else
+        fail "$1 (false: $2)"
+    fi
+}

@@ -1,0 +1,98 @@
+/*
+ * test_args.c: the shared option parser.
+ */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <cmocka.h>
+
+#include <string.h>
+
+#include "cli/args.h"
+
+static void test_forms(void **state)
+{
+    (void)state;
+    const char *units = NULL, *output = NULL;
+    int json = 0;
+    const struct arg_option options[] = {
+        {"units", 0, ARG_STRING, &units, NULL},
+        {"output", 'o', ARG_STRING, &output, NULL},
+        {"json", 0, ARG_FLAG, NULL, &json},
+        {NULL, 0, ARG_FLAG, NULL, NULL},
+    };
+    char *argv[] = {"info", "a.obj", "--units=mm", "-o", "x", "--json",
+                    "--", "--b.obj"};
+    const char *positional[2];
+    int count;
+    struct facet_error err;
+    assert_int_equal(args_parse(8, argv, options, positional, 2, &count,
+                                &err), FACET_OK);
+    assert_int_equal(count, 2);
+    assert_string_equal(positional[0], "a.obj");
+    assert_string_equal(positional[1], "--b.obj");
+    assert_string_equal(units, "mm");
+    assert_string_equal(output, "x");
+    assert_int_equal(json, 1);
+}
+
+static void test_errors(void **state)
+{
+    (void)state;
+    const char *units = NULL;
+    int json = 0;
+    const struct arg_option options[] = {
+        {"units", 0, ARG_STRING, &units, NULL},
+        {"json", 0, ARG_FLAG, NULL, &json},
+        {NULL, 0, ARG_FLAG, NULL, NULL},
+    };
+    const char *positional[1];
+    int count;
+    struct facet_error err;
+    char *unknown[] = {"info", "--unit", "mm"};
+    assert_int_equal(args_parse(3, unknown, options, positional, 1, &count,
+                                &err), FACET_EINPUT);
+    assert_non_null(strstr(err.message, "--unit"));
+    char *missing[] = {"info", "--units"};
+    assert_int_equal(args_parse(2, missing, options, positional, 1, &count,
+                                &err), FACET_EINPUT);
+    assert_non_null(strstr(err.message, "needs a value"));
+    char *surplus[] = {"info", "a", "b"};
+    assert_int_equal(args_parse(3, surplus, options, positional, 1, &count,
+                                &err), FACET_EINPUT);
+    char *flag_value[] = {"info", "--json=1"};
+    assert_int_equal(args_parse(2, flag_value, options, positional, 1,
+                                &count, &err), FACET_EINPUT);
+}
+
+static void test_numbers(void **state)
+{
+    (void)state;
+    long n;
+    double x;
+    struct facet_error err;
+    assert_int_equal(args_int("37", 1, 100, "--u", &n, &err), FACET_OK);
+    assert_int_equal(n, 37);
+    assert_int_equal(args_int("0", 1, 100, "--u", &n, &err), FACET_EINPUT);
+    assert_int_equal(args_int("3x", 1, 100, "--u", &n, &err), FACET_EINPUT);
+    assert_int_equal(args_int("99999999999999999999", 1, 100, "--u", &n,
+                              &err), FACET_EINPUT);
+    assert_int_equal(args_double("3.5", 0, 10, "--t", &x, &err), FACET_OK);
+    assert_true(x == 3.5);
+    assert_int_equal(args_double("nan", 0, 10, "--t", &x, &err),
+                     FACET_EINPUT);
+    assert_int_equal(args_double("inf", 0, 1e300, "--t", &x, &err),
+                     FACET_EINPUT);
+    assert_int_equal(args_double("-1", 0, 10, "--t", &x, &err), FACET_EINPUT);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_forms),
+        cmocka_unit_test(test_errors),
+        cmocka_unit_test(test_numbers),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}

@@ -1,0 +1,184 @@
+/*
+ * test_classify.c: Table 1, the zero tolerance, the threshold rule and the
+ * totals, each against numbers worked out by hand.
+ */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <cmocka.h>
+
+#include <math.h>
+#include <string.h>
+
+#include "core/classify.h"
+#include "core/sym3.h"
+
+static void test_table_one(void **state)
+{
+    (void)state;
+    double eps = 1e-3;
+    /* K < 0: split by the sign of H. */
+    assert_int_equal(classify_curvature(0.01, -0.05, eps),
+                     CLASS_CONVEX_FEATURE_CURVE);
+    assert_int_equal(classify_curvature(0.05, -0.01, eps),
+                     CLASS_CONCAVE_FEATURE_CURVE);
+    assert_int_equal(classify_curvature(0.02, -0.0205, eps), CLASS_SADDLE);
+    /* K = 0. */
+    assert_int_equal(classify_curvature(0, -0.1, eps), CLASS_RULED_CONVEX);
+    assert_int_equal(classify_curvature(0.1, 0, eps), CLASS_RULED_CONCAVE);
+    assert_int_equal(classify_curvature(0, 0, eps), CLASS_FLAT);
+    /* K > 0: a dome from outside is convex (k1, k2 < 0). */
+    assert_int_equal(classify_curvature(-0.05, -0.05, eps),
+                     CLASS_CONVEX_ROUND);
+    assert_int_equal(classify_curvature(0.05, 0.04, eps),
+                     CLASS_CONCAVE_ROUND);
+}
+
+static void test_zero_tolerance(void **state)
+{
+    (void)state;
+    /* Below eps a curvature is zero: a barely curved cylinder is flat. */
+    assert_int_equal(classify_curvature(0.0009, -0.0009, 1e-3), CLASS_FLAT);
+    assert_int_equal(classify_curvature(1e-4, -0.05, 1e-3),
+                     CLASS_RULED_CONVEX);
+    assert_int_equal(classify_curvature(-1e-4, -0.05, 1e-3),
+                     CLASS_RULED_CONVEX);
+    /* Exactly eps counts as non-zero (|k| < eps is zero). */
+    assert_int_equal(classify_curvature(1e-3, 1e-3, 1e-3),
+                     CLASS_CONCAVE_ROUND);
+
+    struct classify_options options;
+    classify_defaults(&options);
+    struct panel panel;
+    memset(&panel, 0, sizeof panel);
+    panel.diameter = 2;
+    /* 8 t / d^2 with t = 3 mm, d = 2 m. */
+    assert_true(fabs(classify_tolerance(&options, &panel) - 0.006) < 1e-15);
+    options.curvature_tol = 0.5;
+    assert_true(classify_tolerance(&options, &panel) == 0.5);
+}
+
+static void test_types(void **state)
+{
+    (void)state;
+    assert_int_equal(panel_type_of_class(CLASS_FLAT), TYPE_FP);
+    assert_int_equal(panel_type_of_class(CLASS_RULED_CONVEX), TYPE_SP);
+    assert_int_equal(panel_type_of_class(CLASS_RULED_CONCAVE), TYPE_SP);
+    for (int c = 0; c < CLASS_COUNT; c++)
+        if (c != CLASS_FLAT && c != CLASS_RULED_CONVEX &&
+            c != CLASS_RULED_CONCAVE)
+            assert_int_equal(panel_type_of_class((enum panel_class)c),
+                             TYPE_DP);
+    assert_string_equal(panel_class_name(CLASS_CONVEX_FEATURE_CURVE),
+                        "convex_feature_curve");
+    assert_string_equal(panel_class_name(CLASS_CONCAVE_ROUND),
+                        "concave_round");
+    assert_string_equal(panel_type_name(TYPE_SP), "SP");
+}
+
+/* Three panels: a flat one, a ruled one 5 mm off its plane, a dome piece
+ * 2 mm off its plane (which the threshold rule makes flat). */
+static void test_threshold_cost_and_totals(void **state)
+{
+    (void)state;
+    struct panel panels[4];
+    memset(panels, 0, sizeof panels);
+    double area[4] = {1.5, 2.0, 1.0, 3.0};
+    double k1[4] = {0, 0, -0.2, -0.2};
+    double k2[4] = {0, -0.2, -0.2, -0.3};
+    double deviation[4] = {0.0001, 0.005, 0.002, 0.010};
+    for (int n = 0; n < 4; n++) {
+        panels[n].area = area[n];
+        panels[n].k1 = k1[n];
+        panels[n].k2 = k2[n];
+        panels[n].deviation = deviation[n];
+        panels[n].diameter = 1.5;
+    }
+    struct panelization p;
+    memset(&p, 0, sizeof p);
+    p.panels = panels;
+    p.npanels = 4;
+    struct classify_options options;
+    classify_defaults(&options);
+    struct option_totals t;
+    classify_panels(&p, &options, &t);
+
+    assert_int_equal(panels[0].type, TYPE_FP);
+    assert_int_equal(panels[1].type, TYPE_SP);
+    assert_int_equal(panels[1].class, CLASS_RULED_CONVEX);
+    assert_int_equal(panels[2].class, CLASS_CONVEX_ROUND);
+    assert_int_equal(panels[2].type, TYPE_FP);  /* within 3 mm */
+    assert_int_equal(panels[3].type, TYPE_DP);
+    assert_true(fabs(panels[3].K - 0.06) < 1e-15);
+    assert_true(fabs(panels[3].H + 0.25) < 1e-15);
+
+    assert_int_equal(t.panels, 4);
+    assert_int_equal(t.count[TYPE_FP], 2);
+    assert_int_equal(t.count[TYPE_SP], 1);
+    assert_int_equal(t.count[TYPE_DP], 1);
+    assert_true(fabs(t.area_of[TYPE_FP] - 2.5) < 1e-12);
+    assert_true(fabs(t.area - 7.5) < 1e-12);
+    /* 2.5 x 701 + 2 x 766 + 3 x 1518 */
+    assert_true(fabs(t.cost - 7838.5) < 1e-9);
+    assert_true(fabs(t.cost_of[TYPE_DP] - 4554) < 1e-9);
+    /* DP panels deviate by 0: 0.1 + 5 + 2 mm. */
+    assert_true(fabs(t.planarity - 0.0071) < 1e-12);
+    assert_true(fabs(t.max_deviation - 0.005) < 1e-15);
+    assert_true(t.max_panel_area == 3.0);
+    assert_true(t.feasible);
+
+    options.sp_as_fp = 1;
+    options.max_panel_area = 1.92;
+    classify_panels(&p, &options, &t);
+    assert_true(fabs(t.cost - (4.5 * 701 + 3 * 1518)) < 1e-9);
+    assert_int_equal(t.count[TYPE_SP], 1);
+    assert_false(t.feasible);
+}
+
+static void test_bad_options(void **state)
+{
+    (void)state;
+    struct classify_options options;
+    struct facet_error err;
+    classify_defaults(&options);
+    assert_int_equal(classify_check_options(&options, &err), FACET_OK);
+    options.threshold = NAN;
+    assert_int_equal(classify_check_options(&options, &err), FACET_EINPUT);
+    classify_defaults(&options);
+    options.price[TYPE_DP] = -1;
+    assert_int_equal(classify_check_options(&options, &err), FACET_EINPUT);
+    assert_non_null(strstr(err.message, "DP"));
+}
+
+static void test_sym3(void **state)
+{
+    (void)state;
+    double a[9] = {4, 1, 2, 1, 3, 0.5, 2, 0.5, 6};
+    double value[3], vector[3][3];
+    sym3_eigen(a, value, vector);
+    assert_true(value[0] <= value[1] && value[1] <= value[2]);
+    assert_true(fabs(value[0] + value[1] + value[2] - 13) < 1e-12);
+    for (int k = 0; k < 3; k++)
+        for (int r = 0; r < 3; r++) {
+            double av = a[3 * r] * vector[k][0] + a[3 * r + 1] * vector[k][1] +
+                        a[3 * r + 2] * vector[k][2];
+            assert_true(fabs(av - value[k] * vector[k][r]) < 1e-12);
+        }
+    double diagonal[9] = {2, 0, 0, 0, -1, 0, 0, 0, 0};
+    sym3_eigen(diagonal, value, vector);
+    assert_true(value[0] == -1 && value[1] == 0 && value[2] == 2);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_table_one),
+        cmocka_unit_test(test_zero_tolerance),
+        cmocka_unit_test(test_types),
+        cmocka_unit_test(test_threshold_cost_and_totals),
+        cmocka_unit_test(test_bad_options),
+        cmocka_unit_test(test_sym3),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
