@@ -11,8 +11,11 @@
  * non-convex planar polygon comes out right. Coordinates are kept exactly as
  * written (no unit conversion; that is mesh.h's job).
  *
- * One pass over one read-only mapping of the file; no allocation per line.
- * Every error names the file, the line and what is wrong.
+ * The file is read with read() (not mapped): whole when it is up to 1 GiB,
+ * else in 64 MiB windows. The text is cut at line boundaries into parts
+ * parsed on up to one thread per core (a small file stays on the calling
+ * thread), then merged in file order; no allocation per line. Every error
+ * names the file, the line and what is wrong, the first in file order.
  */
 #ifndef FACET_OBJ_H
 #define FACET_OBJ_H

@@ -1,0 +1,449 @@
+/*
+ * curvature.c: principal curvatures at every vertex by local jet fitting.
+ *
+ * For each vertex v:
+ *   1. An initial normal: the sum of v's corner normals when the file has vn,
+ *      otherwise the angle-weighted sum of its face normals (from the
+ *      positions, so zero-area triangles add nothing); flipped on request.
+ *   2. A neighbourhood: the k-ring of v by breadth-first search over the
+ *      vertex-to-triangle incidence, at least 2 rings (3 on the boundary) and
+ *      grown ring by ring until it holds enough points. Rings follow the
+ *      mesh, so the neighbourhood scales with the local edge length.
+ *   3. A weighted least-squares fit, in a frame (t1, t2, n) at v, of the
+ *      height w = f(x, y) of the neighbours over the tangent plane:
+ *      a quadric with gradient (5 terms), or a cubic jet (9 terms) where the
+ *      neighbourhood is one-sided (boundary) and large enough, falling back
+ *      to fewer terms when the points cannot determine more. Weights are
+ *      Gaussian in distance relative to the neighbourhood radius.
+ *   4. One refinement: the normal of the fitted graph becomes the new n and
+ *      the fit is repeated, so a poor initial normal costs little.
+ *   5. The shape operator of the graph at the origin, I^-1 II with
+ *      E = 1 + fx^2, F = fx fy, G = 1 + fy^2 and L, M, N = fxx, fxy, fyy / W,
+ *      expressed in an orthonormal tangent basis; its eigenvalues are k1 >=
+ *      k2 and its eigenvectors the principal directions.
+ *
+ * Sign: k = <r'', n>, negative where the surface bends away from the normal
+ * (a sphere with outward normal has k = -1/R). A vertex with no usable
+ * neighbourhood gets k1 = k2 = 0. Nothing here produces NaN for finite
+ * input; a non-finite result is replaced by that zero answer.
+ *
+ * Cost is O(V) for meshes of bounded valence: one pass, two small fits per
+ * vertex, work buffers allocated once.
+ */
+#include <math.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "curvature.h"
+#include "linalg.h"
+
+enum {
+    RINGS_INTERIOR = 2,     /* rings gathered at least, interior vertex */
+    RINGS_BOUNDARY = 3,     /* rings gathered at least, boundary vertex */
+    RINGS_MAX = 6,          /* never more rings than this */
+    POINTS_WANTED = 12,     /* grow the neighbourhood until this many */
+    POINTS_CUBIC = 18,      /* a cubic jet needs at least this many */
+    POINTS_MAX = 1024,      /* neighbourhood size cap (high valence) */
+    TERMS_MAX = 9           /* x^2 xy y^2 x y x^3 x^2y xy^2 y^3 */
+};
+
+/* Gaussian weight exp(-WEIGHT_SHARPNESS (d / radius)^2). */
+#define WEIGHT_SHARPNESS 2.0
+/* Relative pivot below which a fit's normal equations count as singular. */
+#define FIT_PIVOT_TOL 1e-9
+
+/* Work buffers shared by all vertices; allocated once per call. */
+struct workspace {
+    size_t nvertices;
+    uint32_t *mark;     /* #V: the stamp of the last gather that saw it */
+    uint32_t stamp;     /* the current gather's stamp, never 0 */
+    uint32_t *points;   /* POINTS_MAX: the neighbourhood, centre first */
+};
+
+/* A local orthonormal frame: tangents t1, t2 and normal n, world coords. */
+struct frame {
+    double t1[3], t2[3], n[3];
+};
+
+/* The result of fitting w = f(x, y) in a frame, in metres: gradient
+ * (fx, fy), dimensionless, and second derivatives (1/m). */
+struct jet {
+    double fx, fy, fxx, fxy, fyy;
+};
+
+static double dot3(const double *a, const double *b)
+{
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+static void cross3(const double *a, const double *b, double *out)
+{
+    out[0] = a[1] * b[2] - a[2] * b[1];
+    out[1] = a[2] * b[0] - a[0] * b[2];
+    out[2] = a[0] * b[1] - a[1] * b[0];
+}
+
+/* Scales v to unit length in place; returns 0 (leaving v alone) when its
+ * length is zero or not finite. */
+static int normalize3(double *v)
+{
+    double len = sqrt(dot3(v, v));
+    if (!(len > 0) || !isfinite(len))
+        return 0;
+    v[0] /= len;
+    v[1] /= len;
+    v[2] /= len;
+    return 1;
+}
+
+/* Completes the unit vector f->n into a right-handed orthonormal frame. */
+static void frame_complete(struct frame *f)
+{
+    /* Start from the world axis least aligned with n. */
+    double axis[3] = {0, 0, 0};
+    double ax = fabs(f->n[0]), ay = fabs(f->n[1]), az = fabs(f->n[2]);
+    axis[ax <= ay && ax <= az ? 0 : (ay <= az ? 1 : 2)] = 1;
+    cross3(f->n, axis, f->t1);
+    normalize3(f->t1);
+    cross3(f->n, f->t1, f->t2);
+}
+
+/* The initial unit normal of vertex v into n: the sum of its corner normals
+ * when the mesh has vn, else the angle-weighted sum of its face normals.
+ * Returns 0 (n = 0) when v has no triangle with a usable normal. */
+static int vertex_normal(const struct mesh *mesh, uint32_t v, double *n)
+{
+    uint32_t begin = mesh->vertex_start[v], end = mesh->vertex_start[v + 1];
+
+    n[0] = n[1] = n[2] = 0;
+    if (mesh->has_normals && mesh->corner_normal) {
+        for (uint32_t i = begin; i < end; i++) {
+            size_t t = mesh->vertex_triangles[i];
+            for (int k = 0; k < 3; k++)
+                if (mesh->triangle[3 * t + k] == v) {
+                    const double *c = mesh->corner_normal + 9 * t + 3 * k;
+                    if (isfinite(c[0]) && isfinite(c[1]) && isfinite(c[2]))
+                        for (int r = 0; r < 3; r++)
+                            n[r] += c[r];
+                }
+        }
+        if (normalize3(n))
+            return 1;
+        n[0] = n[1] = n[2] = 0;  /* vn cancel out: use the winding */
+    }
+    for (uint32_t i = begin; i < end; i++) {
+        size_t t = mesh->vertex_triangles[i];
+        int k = 0;
+        while (k < 3 && mesh->triangle[3 * t + k] != v)
+            k++;
+        if (k == 3)
+            continue;
+        const double *p = mesh->position + 3 * (size_t)v;
+        const double *a = mesh->position + 3 * (size_t)mesh->triangle[3 * t + (k + 1) % 3];
+        const double *b = mesh->position + 3 * (size_t)mesh->triangle[3 * t + (k + 2) % 3];
+        double ea[3], eb[3], face[3];
+        for (int r = 0; r < 3; r++) {
+            ea[r] = a[r] - p[r];
+            eb[r] = b[r] - p[r];
+        }
+        cross3(ea, eb, face);
+        if (!normalize3(face) || !normalize3(ea) || !normalize3(eb))
+            continue;
+        double c = dot3(ea, eb);
+        double angle = acos(c < -1 ? -1 : (c > 1 ? 1 : c));
+        for (int r = 0; r < 3; r++)
+            n[r] += angle * face[r];
+    }
+    if (normalize3(n))
+        return 1;
+    n[0] = n[1] = n[2] = 0;
+    return 0;
+}
+
+/* Gathers into ws->points the centre v followed by its neighbours, ring by
+ * ring: at least min_rings rings, more (up to RINGS_MAX) while fewer than
+ * want neighbours are found, never more than POINTS_MAX points in all.
+ * Returns the number of points, centre included. */
+static size_t gather(const struct mesh *mesh, uint32_t v, int min_rings,
+                     size_t want, struct workspace *ws)
+{
+    size_t count = 1, ring_begin = 0, ring_end = 1;
+
+    if (++ws->stamp == 0) {  /* wrapped: forget every old mark */
+        memset(ws->mark, 0, ws->nvertices * sizeof(uint32_t));
+        ws->stamp = 1;
+    }
+    uint32_t stamp = ws->stamp;
+
+    ws->points[0] = v;
+    ws->mark[v] = stamp;
+    for (int ring = 1; ring <= RINGS_MAX; ring++) {
+        for (size_t i = ring_begin; i < ring_end; i++) {
+            uint32_t u = ws->points[i];
+            for (uint32_t j = mesh->vertex_start[u];
+                 j < mesh->vertex_start[u + 1]; j++) {
+                const uint32_t *tri =
+                    mesh->triangle + 3 * (size_t)mesh->vertex_triangles[j];
+                for (int k = 0; k < 3; k++) {
+                    uint32_t w = tri[k];
+                    if (ws->mark[w] == stamp || count == POINTS_MAX)
+                        continue;
+                    ws->mark[w] = stamp;
+                    ws->points[count++] = w;
+                }
+            }
+        }
+        if (count == ring_end || count == POINTS_MAX)
+            break;  /* the component is exhausted, or the cap is hit */
+        ring_begin = ring_end;
+        ring_end = count;
+        if (ring >= min_rings && count - 1 >= want)
+            break;
+    }
+    return count;
+}
+
+/* Fits w = f(x, y) to the points (centre first) in frame f at the centre,
+ * with nterms_max terms at most (5 or 9), into *jet. Returns 1 on success,
+ * 0 when the neighbourhood cannot determine even a quadric without
+ * gradient (too few points, collinear, all at the centre). */
+static int fit(const struct mesh *mesh, const uint32_t *points, size_t count,
+               const struct frame *f, int nterms_max, struct jet *jet)
+{
+    const double *c = mesh->position + 3 * (size_t)points[0];
+    double radius2 = 0;
+
+    for (size_t i = 1; i < count; i++) {
+        const double *p = mesh->position + 3 * (size_t)points[i];
+        double d[3] = {p[0] - c[0], p[1] - c[1], p[2] - c[2]};
+        double r2 = dot3(d, d);
+        if (r2 > radius2)
+            radius2 = r2;
+    }
+    if (!(radius2 > 0) || !isfinite(radius2))
+        return 0;
+    double radius = sqrt(radius2);
+
+    /* Normal equations in coordinates scaled by the radius, so every
+     * monomial is O(1). Term order: x^2 xy y^2 | x y | x^3 x^2y xy^2 y^3,
+     * so the leading 3, 5 and 9 terms are the fits tried in turn. */
+    double ata[TERMS_MAX * TERMS_MAX] = {0};
+    double atb[TERMS_MAX] = {0};
+    for (size_t i = 1; i < count; i++) {
+        const double *p = mesh->position + 3 * (size_t)points[i];
+        double d[3] = {p[0] - c[0], p[1] - c[1], p[2] - c[2]};
+        double x = dot3(d, f->t1) / radius;
+        double y = dot3(d, f->t2) / radius;
+        double z = dot3(d, f->n) / radius;
+        double w = exp(-WEIGHT_SHARPNESS * dot3(d, d) / radius2);
+        double m[TERMS_MAX] = {x * x, x * y, y * y, x, y,
+                               x * x * x, x * x * y, x * y * y, y * y * y};
+        for (int r = 0; r < nterms_max; r++) {
+            double wm = w * m[r];
+            atb[r] += wm * z;
+            for (int s = 0; s <= r; s++)
+                ata[r * TERMS_MAX + s] += wm * m[s];
+        }
+    }
+
+    static const int tries[3] = {9, 5, 3};
+    double coef[TERMS_MAX] = {0};
+    int solved = 0;
+    for (int i = 0; i < 3 && !solved; i++) {
+        int n = tries[i];
+        if (n > nterms_max || (size_t)n >= count)
+            continue;
+        solved = linalg_cholesky_solve(n, TERMS_MAX, ata, atb, FIT_PIVOT_TOL,
+                                       coef);
+        if (solved && n < 5)
+            coef[3] = coef[4] = 0;
+    }
+    if (!solved)
+        return 0;
+    /* Back to metres: z = a x^2 / radius for the scaled a. */
+    jet->fxx = 2 * coef[0] / radius;
+    jet->fxy = coef[1] / radius;
+    jet->fyy = 2 * coef[2] / radius;
+    jet->fx = coef[3];
+    jet->fy = coef[4];
+    return isfinite(jet->fxx) && isfinite(jet->fxy) && isfinite(jet->fyy) &&
+           isfinite(jet->fx) && isfinite(jet->fy);
+}
+
+/* The unit normal of the graph of jet in frame f, in world coordinates. */
+static void graph_normal(const struct frame *f, const struct jet *jet,
+                         double *n)
+{
+    for (int r = 0; r < 3; r++)
+        n[r] = f->n[r] - jet->fx * f->t1[r] - jet->fy * f->t2[r];
+    normalize3(n);  /* length >= 1: always succeeds for finite jet */
+}
+
+/* Principal curvatures and directions of the graph of jet at the origin of
+ * frame f: *k1 >= *k2 (1/m), unit directions d1, d2 and unit normal n
+ * (world coordinates, 3 each). */
+static void shape_operator(const struct frame *f, const struct jet *jet,
+                           double *k1, double *k2, double *d1, double *d2,
+                           double *n)
+{
+    double xu[3], xv[3], e1[3], e2[3];
+
+    graph_normal(f, jet, n);
+    /* Tangents of the graph X(x, y) = x t1 + y t2 + f(x, y) n. */
+    for (int r = 0; r < 3; r++) {
+        xu[r] = f->t1[r] + jet->fx * f->n[r];
+        xv[r] = f->t2[r] + jet->fy * f->n[r];
+    }
+    for (int r = 0; r < 3; r++)
+        e1[r] = xu[r];
+    normalize3(e1);
+    cross3(n, e1, e2);
+
+    /* A maps parameter vectors to coordinates in the orthonormal basis
+     * (e1, e2): A = [[a11, a12], [0, a22]]. The second fundamental form
+     * in that basis is A^-T II A^-1, with II = [[fxx, fxy], [fxy, fyy]] / W
+     * and W = sqrt(1 + fx^2 + fy^2). */
+    double a11 = dot3(e1, xu), a12 = dot3(e1, xv), a22 = dot3(e2, xv);
+    double w = sqrt(1 + jet->fx * jet->fx + jet->fy * jet->fy);
+    double l = jet->fxx / w, m = jet->fxy / w, nn = jet->fyy / w;
+    /* B = inv^T II inv, inv = A^-1 = [[i11, i12], [0, i22]]. */
+    double i11 = 1 / a11, i22 = 1 / a22, i12 = -a12 / (a11 * a22);
+    double b11 = i11 * i11 * l;
+    double b12 = i11 * (l * i12 + m * i22);
+    double b22 = i12 * i12 * l + 2 * i12 * i22 * m + i22 * i22 * nn;
+
+    double value[2], theta;
+    linalg_sym2_eigen(b11, b12, b22, value, &theta);
+    double c = cos(theta), s = sin(theta);
+    *k1 = value[0];
+    *k2 = value[1];
+    for (int r = 0; r < 3; r++) {
+        d1[r] = c * e1[r] + s * e2[r];
+        d2[r] = -s * e1[r] + c * e2[r];
+    }
+}
+
+/* Writes vertex v's answer into out: curvatures, directions and normal. */
+static void store(struct curvature *out, uint32_t v, double k1, double k2,
+                  const double *d1, const double *d2, const double *n)
+{
+    out->k1[v] = k1;
+    out->k2[v] = k2;
+    memcpy(out->dir1 + 3 * (size_t)v, d1, 3 * sizeof(double));
+    memcpy(out->dir2 + 3 * (size_t)v, d2, 3 * sizeof(double));
+    memcpy(out->normal + 3 * (size_t)v, n, 3 * sizeof(double));
+}
+
+/* The zero answer for a vertex without a usable neighbourhood: k = 0, the
+ * normal n0 if it has one (else +z), and tangent directions around it. */
+static void store_flat(struct curvature *out, uint32_t v, const double *n0)
+{
+    struct frame f;
+    memcpy(f.n, n0, sizeof f.n);
+    if (!normalize3(f.n)) {
+        f.n[0] = f.n[1] = 0;
+        f.n[2] = 1;
+    }
+    frame_complete(&f);
+    store(out, v, 0, 0, f.t1, f.t2, f.n);
+}
+
+/* Estimates vertex v (see the file comment) into out. */
+static void vertex_curvature(const struct mesh *mesh, uint32_t v,
+                             int flip_normals, struct workspace *ws,
+                             struct curvature *out)
+{
+    struct frame f;
+    struct jet jet;
+
+    if (!vertex_normal(mesh, v, f.n)) {
+        store_flat(out, v, f.n);
+        return;
+    }
+    if (flip_normals)
+        for (int r = 0; r < 3; r++)
+            f.n[r] = -f.n[r];
+
+    /* A neighbourhood that reaches the boundary is one-sided: the odd terms
+     * of the surface no longer cancel, so fit them (cubic jet) on a larger
+     * neighbourhood. */
+    size_t count = gather(mesh, v, RINGS_INTERIOR, POINTS_WANTED, ws);
+    int one_sided = 0;
+    for (size_t i = 0; mesh->on_boundary && i < count && !one_sided; i++)
+        one_sided = mesh->on_boundary[ws->points[i]];
+    if (one_sided)
+        count = gather(mesh, v, RINGS_BOUNDARY, POINTS_CUBIC, ws);
+    int nterms = one_sided && count - 1 >= POINTS_CUBIC ? 9 : 5;
+
+    frame_complete(&f);
+    if (!fit(mesh, ws->points, count, &f, nterms, &jet)) {
+        store_flat(out, v, f.n);
+        return;
+    }
+    /* Refine: refit about the normal of the fitted graph. */
+    struct frame g;
+    struct jet refined;
+    graph_normal(&f, &jet, g.n);
+    frame_complete(&g);
+    if (fit(mesh, ws->points, count, &g, nterms, &refined)) {
+        f = g;
+        jet = refined;
+    }
+
+    double k1, k2, d1[3], d2[3], n[3];
+    shape_operator(&f, &jet, &k1, &k2, d1, d2, n);
+    if (!isfinite(k1) || !isfinite(k2) || !isfinite(dot3(d1, d1)) ||
+        !isfinite(dot3(d2, d2)) || !isfinite(dot3(n, n))) {
+        store_flat(out, v, f.n);
+        return;
+    }
+    store(out, v, k1, k2, d1, d2, n);
+}
+
+int curvature_at_vertices(const struct mesh *mesh, int flip_normals,
+                          struct curvature *out, struct facet_error *err)
+{
+    size_t nv = mesh->nvertices;
+    struct workspace ws = {nv, NULL, 0, NULL};
+
+    memset(out, 0, sizeof *out);
+    facet_error_clear(err);
+    if (nv >= UINT32_MAX)
+        return facet_error_set(err, FACET_EINPUT,
+                               "curvature: %zu vertices is too many", nv);
+    out->nvertices = nv;
+    size_t n1 = nv ? nv : 1;
+    out->k1 = malloc(n1 * sizeof(double));
+    out->k2 = malloc(n1 * sizeof(double));
+    out->dir1 = malloc(3 * n1 * sizeof(double));
+    out->dir2 = malloc(3 * n1 * sizeof(double));
+    out->normal = malloc(3 * n1 * sizeof(double));
+    ws.mark = calloc(n1, sizeof(uint32_t));
+    ws.points = malloc(POINTS_MAX * sizeof(uint32_t));
+    if (!out->k1 || !out->k2 || !out->dir1 || !out->dir2 || !out->normal ||
+        !ws.mark || !ws.points) {
+        free(ws.mark);
+        free(ws.points);
+        return facet_error_set(err, FACET_EWORK,
+                               "curvature: out of memory for %zu vertices",
+                               nv);
+    }
+    for (size_t v = 0; v < nv; v++)
+        vertex_curvature(mesh, (uint32_t)v, flip_normals, &ws, out);
+    free(ws.mark);
+    free(ws.points);
+    return FACET_OK;
+}
+
+void curvature_free(struct curvature *curvature)
+{
+    if (!curvature)
+        return;
+    free(curvature->k1);
+    free(curvature->k2);
+    free(curvature->dir1);
+    free(curvature->dir2);
+    free(curvature->normal);
+    memset(curvature, 0, sizeof *curvature);
+}

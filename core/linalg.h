@@ -1,0 +1,32 @@
+/*
+ * linalg.h: the small dense linear algebra the geometry code needs.
+ *
+ * Fixed-size, allocation-free helpers for systems of at most LINALG_MAX
+ * unknowns: a Cholesky solve for the normal equations of small least-squares
+ * fits, and the closed-form eigen-decomposition of a symmetric 2x2 matrix.
+ * Larger problems do not belong here. (Symmetric 3x3 eigen is sym3.h.)
+ */
+#ifndef FACET_LINALG_H
+#define FACET_LINALG_H
+
+#define LINALG_MAX 16  /* largest n linalg_cholesky_solve accepts */
+
+/* Solves a x = b for the leading n x n block of the symmetric matrix a
+ * (row-major with row stride lda >= n; only the lower triangle is read; a and
+ * b are not modified). Returns 1 and fills x[0..n) on success; returns 0 and
+ * leaves x untouched when n is out of 1..LINALG_MAX or the block is not
+ * safely positive definite, that is when a pivot falls below
+ * rel_tol times the diagonal entry it came from (rel_tol ~1e-10 rejects
+ * rank-deficient fits, such as a quadric through collinear points). */
+int linalg_cholesky_solve(int n, int lda, const double *a, const double *b,
+                          double rel_tol, double *x);
+
+/* Eigen-decomposition of the symmetric matrix [[p, q], [q, r]]: value[0] >=
+ * value[1], and the unit eigenvector of value[0] is (cos theta, sin theta),
+ * that of value[1] is (-sin theta, cos theta); *theta is returned in
+ * (-pi/2, pi/2]. Finite input gives finite output (theta = 0 when the
+ * matrix is a multiple of the identity). */
+void linalg_sym2_eigen(double p, double q, double r, double value[2],
+                       double *theta);
+
+#endif

@@ -1,0 +1,33 @@
+/*
+ * numparse.h: reading decimal floating-point numbers out of OBJ text.
+ *
+ * The OBJ loader spends most of its time here, so this is a small parser of
+ * its own rather than strtod: it needs no NUL terminator (it stops at an end
+ * pointer), never allocates, ignores the locale and is several times faster.
+ * It agrees with strtod to within one unit in the last place, and exactly
+ * for the short decimals that exporters write (up to 15 significant digits
+ * and a decimal exponent of at most 22 in size).
+ *
+ * Accepted: [+-] digits [. digits] [(e|E) [+-] digits], with at least one
+ * digit in the mantissa ("5.", ".5" and "5" are fine). Not accepted: nan,
+ * inf, hexadecimal floats, and anything that would overflow to infinity.
+ */
+#ifndef FACET_NUMPARSE_H
+#define FACET_NUMPARSE_H
+
+enum {
+    NUMPARSE_OK = 0,
+    NUMPARSE_SYNTAX = 1,  /* no number starts at text */
+    NUMPARSE_RANGE = 2    /* a number, but too large for a double */
+};
+
+/* Parses the number that starts at text (reading no further than end).
+ * On NUMPARSE_OK stores the value in *value and the first character after
+ * the number in *stop; the caller decides whether that character may follow
+ * a number. On NUMPARSE_RANGE *stop is set as well and *value is untouched;
+ * on NUMPARSE_SYNTAX neither is. Numbers too small for a double become
+ * subnormals or signed zero, as with strtod. */
+int numparse_double(const char *text, const char *end, double *value,
+                    const char **stop);
+
+#endif

@@ -1,0 +1,94 @@
+#!/usr/bin/env bash
+# End-to-end: facet classify on generated and real surfaces, its JSON, its
+# CSV schedule, its map, and its errors.
+. "$(dirname "$0")/lib.sh"
+
+"$FACET" example roof -o "$WORK/roof.obj" || exit 1
+"$FACET" example hypar --res 40 -o "$WORK/hypar.obj" || exit 1
+"$FACET" example plane --res 8 -o "$WORK/plane.obj" || exit 1
+
+expect "classify roof at the paper's grid" 0 "$FACET" classify "$WORK/roof.obj" --grid 37x49
+stdout_has "totals table" '^total +1813 '
+stdout_has "classes table" '^convex_round '
+stdout_has "panel map (plain letters, not a terminal)" '^  [FSD.]{37}$'
+run "$FACET" classify "$WORK/roof.obj" --grid 37x49
+if grep -q $'\033' "$OUT"; then fail "no colour codes when stdout is not a terminal"; else pass "no colour codes when stdout is not a terminal"; fi
+
+expect "classify --json" 0 "$FACET" classify "$WORK/roof.obj" --grid 37x49 --json
+json_check "json: documented top-level keys" \
+    'all(k in j for k in ["surface","grid","threshold_mm","curvature_tol","panels","totals"])'
+json_check "json: surface keys" 'all(k in j["surface"] for k in ["file","units","area","triangles"])'
+json_check "json: grid" 'j["grid"]=={"nu":37,"nv":49}'
+json_check "json: panel keys" \
+    'all(all(k in p for k in ["i","j","class","type","area","deviation","k1","k2","K","H"]) for p in j["panels"])'
+json_check "json: totals keys" \
+    'all(k in j["totals"] for k in ["panels","fp_count","sp_count","dp_count","fp_area","sp_area","dp_area","area","cost","planarity","max_deviation","max_panel_area","feasible"])'
+json_check "json: panel areas add up to the surface area" \
+    'abs(sum(p["area"] for p in j["panels"]) - j["surface"]["area"]) < 1e-9*j["surface"]["area"]'
+json_check "json: cost = sum of area x price, as a spreadsheet computes it" \
+    'abs(sum(p["area"]*{"FP":701,"SP":766,"DP":1518}[p["type"]] for p in j["panels"]) - j["totals"]["cost"]) < 1e-6*j["totals"]["cost"]'
+json_check "json: planarity = sum of non-DP deviations" \
+    'abs(sum(p["deviation"] for p in j["panels"] if p["type"]!="DP") - j["totals"]["planarity"]) < 1e-9'
+json_check "json: K = k1 k2 and H = (k1+k2)/2" \
+    'all(abs(p["K"]-p["k1"]*p["k2"]) <= 1e-9*max(1e-12,abs(p["K"])) and abs(p["H"]-(p["k1"]+p["k2"])/2) <= 1e-12+1e-9*abs(p["H"]) for p in j["panels"])'
+json_check "json: threshold rule (deviation within 3 mm is FP)" \
+    'all(p["type"]=="FP" for p in j["panels"] if p["deviation"] <= 0.003)'
+json_check "json: roof has FP, SP and DP panels" \
+    'j["totals"]["fp_count"]>0 and j["totals"]["sp_count"]>0 and j["totals"]["dp_count"]>0'
+json_check "json: counts add up" \
+    'j["totals"]["fp_count"]+j["totals"]["sp_count"]+j["totals"]["dp_count"]==j["totals"]["panels"]==len(j["panels"])'
+
+expect "--sp-as-fp and --prices" 0 "$FACET" classify "$WORK/roof.obj" --grid 20x35 --json --prices 100,200,300 --sp-as-fp
+json_check "prices applied, SP priced as FP" \
+    'abs(j["totals"]["cost"] - (100*(j["totals"]["fp_area"]+j["totals"]["sp_area"]) + 300*j["totals"]["dp_area"])) < 1e-6*j["totals"]["cost"]'
+expect "--threshold 1000 makes every panel flat" 0 "$FACET" classify "$WORK/roof.obj" --grid 10x10 --threshold 1000 --json
+json_check "all FP" 'j["totals"]["fp_count"]==j["totals"]["panels"]'
+expect "--max-panel-area" 0 "$FACET" classify "$WORK/roof.obj" --grid 5x5 --max-panel-area 1.92 --json
+json_check "5x5 panels are too large" 'not j["totals"]["feasible"]'
+expect "--per-panel mean" 0 "$FACET" classify "$WORK/roof.obj" --grid 20x35 --per-panel mean --json
+json_check "mean mode reports k1 >= k2" 'all(p["k1"]>=p["k2"] for p in j["panels"])'
+expect "--curvature-tol" 0 "$FACET" classify "$WORK/roof.obj" --grid 20x35 --curvature-tol 1000 --json
+json_check "a huge tolerance makes every class flat" 'all(p["class"]=="flat" for p in j["panels"])'
+
+expect "hypar 5x5" 0 "$FACET" classify "$WORK/hypar.obj" --grid 5x5 --json
+json_check "hypar: only feature-curve areas (K < 0)" \
+    'all(p["class"] in ("convex_feature_curve","concave_feature_curve","saddle") for p in j["panels"]) and {"convex_feature_curve","concave_feature_curve"} <= {p["class"] for p in j["panels"]}'
+expect "--flip-normals" 0 "$FACET" classify "$WORK/hypar.obj" --grid 5x5 --json --flip-normals
+json_check "flipping swaps convex and concave" \
+    'all(p["class"] in ("convex_feature_curve","concave_feature_curve","saddle") for p in j["panels"])'
+
+expect "--csv schedule" 0 "$FACET" classify "$WORK/plane.obj" --grid 4x3 --csv "$WORK/plane.csv"
+if [ "$(wc -l <"$WORK/plane.csv")" -eq 13 ] && head -1 "$WORK/plane.csv" | grep -q '^i,j,class,type,area_m2'; then
+    pass "csv has a header and one row per panel"
+else
+    fail "csv has a header and one row per panel"
+fi
+/usr/bin/python3 - "$WORK/plane.csv" <<'PY' && pass "csv areas are 25 m^2 each" || fail "csv areas are 25 m^2 each"
+import csv, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+sys.exit(0 if all(abs(float(r["area_m2"]) - 25) < 1e-6 and r["type"] == "FP" for r in rows) else 1)
+PY
+
+# Real surfaces: no vt, so Facet makes its own UV.
+expect "compas hypar (no vt: plane projection)" 0 "$FACET" classify "$FACET_DATA/compas_hypar.obj" --grid 5x5 --json
+json_check "compas hypar is all feature curves" \
+    'all(p["class"] in ("convex_feature_curve","concave_feature_curve","saddle") for p in j["panels"]) and j["surface"]["uv"]=="plane"'
+expect "hemisphere (no vt)" 0 "$FACET" classify "$FACET_DATA/hemisphere.obj" --grid 10x10 --json
+json_check "hemisphere: trimmed panels add up to its area" \
+    'abs(sum(p["area"] for p in j["panels"]) - j["surface"]["area"]) < 1e-9*j["surface"]["area"]'
+expect "bubble roof (no vt)" 0 "$FACET" classify "$FACET_DATA/botanic-garden-bubble-0.obj" --grid 20x20 --json
+expect "igloo (vt)" 0 "$FACET" classify "$FACET_DATA/igloo.obj" --grid 20x20 --json
+
+# Bad input.
+expect_error "no grid" 'grid' "$FACET" classify "$WORK/roof.obj"
+expect_error "malformed grid" "'37by49' is not NUxNV" "$FACET" classify "$WORK/roof.obj" --grid 37by49
+expect_error "absurd grid" 'out of range' "$FACET" classify "$WORK/roof.obj" --grid 100000x5
+expect_error "zero grid" 'out of range' "$FACET" classify "$WORK/roof.obj" --grid 0x5
+expect_error "NaN threshold" 'threshold' "$FACET" classify "$WORK/roof.obj" --grid 5x5 --threshold nan
+expect_error "negative threshold" 'threshold' "$FACET" classify "$WORK/roof.obj" --grid 5x5 --threshold -1
+expect_error "bad prices" 'prices' "$FACET" classify "$WORK/roof.obj" --grid 5x5 --prices 1,2
+expect_error "bad per-panel" 'per-panel' "$FACET" classify "$WORK/roof.obj" --grid 5x5 --per-panel median
+expect_error "closed mesh is refused" 'acj_suzanne.obj' "$FACET" classify "$FACET_DATA/acj_suzanne.obj" --grid 5x5
+expect_error "missing file" 'nothere' "$FACET" classify "$WORK/nothere.obj" --grid 5x5
+expect_error "unwritable csv" 'cannot write' "$FACET" classify "$WORK/plane.obj" --grid 2x2 --csv /nonexistent/x.csv
+exit 0

@@ -1,0 +1,292 @@
+/*
+ * test_curvature.c: the per-vertex curvature estimator against analytic
+ * oracles on the generated examples (dome, cylinder, torus, plane, hypar at
+ * their default resolution), its sign convention and flip_normals, and
+ * finite answers on degenerate hand-made meshes.
+ *
+ * Each example test prints the largest relative errors it measured, split
+ * into interior and boundary vertices.
+ */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <cmocka.h>
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "core/curvature.h"
+#include "core/example.h"
+#include "core/linalg.h"
+#include "core/mesh.h"
+#include "core/obj.h"
+
+/* ---- Helpers ------------------------------------------------------------ */
+
+static double dot(const double *a, const double *b)
+{
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+/* Builds *mesh from OBJ text (metres). */
+static void mesh_from_text(const char *text, size_t length, struct mesh *mesh)
+{
+    struct obj_file obj;
+    struct facet_error err;
+    struct mesh_options options = {UNITS_M, NULL, NULL};
+    int rc = obj_parse(text, length, "test", &obj, &err);
+    if (rc != FACET_OK)
+        fail_msg("obj_parse: %s", err.message);
+    rc = mesh_build(&obj, &options, mesh, &err);
+    if (rc != FACET_OK)
+        fail_msg("mesh_build: %s", err.message);
+    obj_free(&obj);
+}
+
+/* Builds *mesh from the named example at its default resolution. */
+static void mesh_from_example(const char *name, struct mesh *mesh)
+{
+    char *text = NULL;
+    size_t length = 0;
+    struct facet_error err;
+    FILE *out = open_memstream(&text, &length);
+    assert_non_null(out);
+    int rc = example_write(name, 0, out, &err);
+    if (rc != FACET_OK)
+        fail_msg("example_write %s: %s", name, err.message);
+    assert_int_equal(fclose(out), 0);
+    mesh_from_text(text, length, mesh);
+    free(text);
+}
+
+/* Runs the estimator, which must succeed, into *c. */
+static void estimate(const struct mesh *mesh, int flip, struct curvature *c)
+{
+    struct facet_error err;
+    int rc = curvature_at_vertices(mesh, flip, c, &err);
+    if (rc != FACET_OK)
+        fail_msg("curvature_at_vertices: %s", err.message);
+    assert_int_equal(c->nvertices, mesh->nvertices);
+}
+
+/* Every value finite; normal and directions unit, mutually orthogonal;
+ * k1 >= k2. */
+static void assert_well_formed(const struct curvature *c)
+{
+    for (size_t v = 0; v < c->nvertices; v++) {
+        const double *d1 = c->dir1 + 3 * v, *d2 = c->dir2 + 3 * v;
+        const double *n = c->normal + 3 * v;
+        assert_true(isfinite(c->k1[v]) && isfinite(c->k2[v]));
+        for (int r = 0; r < 3; r++)
+            assert_true(isfinite(d1[r]) && isfinite(d2[r]) &&
+                        isfinite(n[r]));
+        assert_true(c->k1[v] >= c->k2[v]);
+        assert_true(fabs(dot(d1, d1) - 1) < 1e-9);
+        assert_true(fabs(dot(d2, d2) - 1) < 1e-9);
+        assert_true(fabs(dot(n, n) - 1) < 1e-9);
+        assert_true(fabs(dot(d1, d2)) < 1e-9);
+        assert_true(fabs(dot(d1, n)) < 1e-9);
+        assert_true(fabs(dot(d2, n)) < 1e-9);
+    }
+}
+
+/* Largest errors seen, split into interior [0] and boundary [1]. */
+struct errors {
+    double k1[2], k2[2];
+    size_t count[2];
+};
+
+static void note(struct errors *e, int boundary, double e1, double e2)
+{
+    if (e1 > e->k1[boundary])
+        e->k1[boundary] = e1;
+    if (e2 > e->k2[boundary])
+        e->k2[boundary] = e2;
+    e->count[boundary]++;
+}
+
+static void print_errors(const char *name, const struct errors *e)
+{
+    print_message("%-9s interior (%zu): k1 %.3f%% k2 %.3f%%; "
+                  "boundary (%zu): k1 %.3f%% k2 %.3f%%\n",
+                  name, e->count[0], 100 * e->k1[0], 100 * e->k2[0],
+                  e->count[1], 100 * e->k1[1], 100 * e->k2[1]);
+}
+
+static void release(struct mesh *mesh, struct curvature *c)
+{
+    curvature_free(c);
+    mesh_free(mesh);
+}
+
+/* A mesh made by hand with only what the estimator reads: positions,
+ * triangles, vertex-to-triangle incidence and (optional) boundary flags. */
+static void hand_mesh(struct mesh *mesh, const double *position, size_t nv,
+                      const uint32_t *triangle, size_t nt)
+{
+    memset(mesh, 0, sizeof *mesh);
+    mesh->nvertices = nv;
+    mesh->position = malloc(3 * nv * sizeof(double));
+    memcpy(mesh->position, position, 3 * nv * sizeof(double));
+    mesh->ntriangles = nt;
+    mesh->triangle = malloc((3 * nt + 1) * sizeof(uint32_t));
+    memcpy(mesh->triangle, triangle, 3 * nt * sizeof(uint32_t));
+    mesh->vertex_start = calloc(nv + 1, sizeof(uint32_t));
+    mesh->vertex_triangles = malloc((3 * nt + 1) * sizeof(uint32_t));
+    uint32_t *fill = calloc(nv + 1, sizeof(uint32_t));
+    assert_true(mesh->position && mesh->triangle && mesh->vertex_start &&
+                mesh->vertex_triangles && fill);
+    for (size_t k = 0; k < 3 * nt; k++)
+        mesh->vertex_start[triangle[k] + 1]++;
+    for (size_t v = 0; v < nv; v++)
+        mesh->vertex_start[v + 1] += mesh->vertex_start[v];
+    for (size_t k = 0; k < 3 * nt; k++) {
+        uint32_t v = triangle[k];
+        mesh->vertex_triangles[mesh->vertex_start[v] + fill[v]++] =
+            (uint32_t)(k / 3);
+    }
+    free(fill);
+}
+
+static void hand_free(struct mesh *mesh)
+{
+    free(mesh->position);
+    free(mesh->triangle);
+    free(mesh->vertex_start);
+    free(mesh->vertex_triangles);
+    free(mesh->on_boundary);
+    free(mesh->corner_normal);
+    memset(mesh, 0, sizeof *mesh);
+}
+
+/* ---- Degenerate input ------------------------------------------------------ */
+
+static void test_single_triangle(void **state)
+{
+    (void)state;
+    static const char text[] = "v 0 0 0\nv 2 0 0\nv 0 1 0\nf 1 2 3\n";
+    struct mesh mesh;
+    struct curvature c;
+    mesh_from_text(text, sizeof text - 1, &mesh);
+    estimate(&mesh, 0, &c);
+    assert_well_formed(&c);
+    for (size_t v = 0; v < c.nvertices; v++) {
+        assert_true(c.k1[v] == 0 && c.k2[v] == 0);
+        assert_true(fabs(c.normal[3 * v + 2] - 1) < 1e-12);
+    }
+    release(&mesh, &c);
+}
+
+static void test_isolated_vertex(void **state)
+{
+    (void)state;
+    static const double p[] = {0, 0, 0, 1, 0, 0, 0, 1, 0, 5, 5, 5};
+    static const uint32_t t[] = {0, 1, 2};
+    struct mesh mesh;
+    struct curvature c;
+    hand_mesh(&mesh, p, 4, t, 1);
+    estimate(&mesh, 1, &c);
+    assert_well_formed(&c);
+    assert_true(c.k1[3] == 0 && c.k2[3] == 0);
+    assert_true(fabs(c.normal[2] + 1) < 1e-12);  /* flipped: -z */
+    curvature_free(&c);
+    hand_free(&mesh);
+}
+
+/* Every triangle has zero area: the points lie on one line. */
+static void test_collinear_zero_area(void **state)
+{
+    (void)state;
+    enum { N = 30 };
+    double p[3 * N];
+    uint32_t t[3 * (N - 2)];
+    for (int i = 0; i < N; i++) {
+        p[3 * i] = 0.1 * i;
+        p[3 * i + 1] = 0.2 * i;
+        p[3 * i + 2] = -0.05 * i;
+    }
+    for (int i = 0; i < N - 2; i++) {
+        t[3 * i] = i;
+        t[3 * i + 1] = i + 1;
+        t[3 * i + 2] = i + 2;
+    }
+    struct mesh mesh;
+    struct curvature c;
+    hand_mesh(&mesh, p, N, t, N - 2);
+    estimate(&mesh, 0, &c);
+    assert_well_formed(&c);
+    for (size_t v = 0; v < N; v++)
+        assert_true(c.k1[v] == 0 && c.k2[v] == 0);
+    curvature_free(&c);
+    hand_free(&mesh);
+}
+
+/* A curved grid with slivers: zero-area triangles and a repeated vertex
+ * position must not disturb anything or produce NaN. */
+static void test_slivers_stay_finite(void **state)
+{
+    (void)state;
+    enum { N = 12, NV = (N + 1) * (N + 1) + 1 };
+    double p[3 * NV];
+    uint32_t t[3 * (2 * N * N + 2)];
+    size_t nt = 0;
+    for (int j = 0; j <= N; j++)
+        for (int i = 0; i <= N; i++) {
+            double *q = p + 3 * (j * (N + 1) + i);
+            q[0] = i * 0.5;
+            q[1] = j * 0.5;
+            q[2] = 0.02 * (q[0] * q[0] - q[1] * q[1]);
+        }
+    /* The last vertex sits exactly on vertex 0. */
+    memcpy(p + 3 * (NV - 1), p, 3 * sizeof(double));
+    for (int j = 0; j < N; j++)
+        for (int i = 0; i < N; i++) {
+            uint32_t a = j * (N + 1) + i, b = a + 1, d = a + N + 1, e = d + 1;
+            uint32_t quad[6] = {a, b, e, a, e, d};
+            memcpy(t + 3 * nt, quad, sizeof quad);
+            nt += 2;
+        }
+    uint32_t sliver[6] = {0, 1, NV - 1, 20, 20 + 1, 20 + 2};
+    memcpy(t + 3 * nt, sliver, sizeof sliver);
+    nt += 2;
+    struct mesh mesh;
+    struct curvature c;
+    hand_mesh(&mesh, p, NV, t, nt);
+    estimate(&mesh, 0, &c);
+    assert_well_formed(&c);
+    /* A saddle: k1 > 0 > k2 in the middle. */
+    size_t mid = (N / 2) * (N + 1) + N / 2;
+    assert_true(c.k1[mid] > 0 && c.k2[mid] < 0);
+    curvature_free(&c);
+    hand_free(&mesh);
+}
+
+/* ---- linalg ------------------------------------------------------------------ */
+
+static void test_linalg(void **state)
+{
+    (void)state;
+    /* Leading 2x2 of a 3x3 (row stride 3); only the lower part is read. */
+    double a[9] = {4, 99, 99, 2, 3, 99, 7, 7, 7};
+    double b[2] = {10, 8}, x[2] = {-1, -1};
+    assert_int_equal(linalg_cholesky_solve(2, 3, a, b, 1e-12, x), 1);
+    assert_true(fabs(x[0] - 1.75) < 1e-12 && fabs(x[1] - 1.5) < 1e-12);
+    double singular[4] = {1, 1, 1, 1};
+    x[0] = x[1] = 42;
+    assert_int_equal(linalg_cholesky_solve(2, 2, singular, b, 1e-10, x), 0);
+    assert_true(x[0] == 42 && x[1] == 42);
+    assert_int_equal(linalg_cholesky_solve(0, 2, singular, b, 1e-10, x), 0);
+
+    double value[2], theta;
+    linalg_sym2_eigen(1, 2, 1, value, &theta);
+    assert_true(fabs(value[0] - 3) < 1e-12 && fabs(value[1] + 1) < 1e-12);
+    assert_true(fabs(theta - M_PI / 4) < 1e-12);
+    linalg_sym2_eigen(-2, 0, 5, value, &theta);
+    assert_true(value[0] == 5 && value[1] == -2);
+    assert_true(fabs(fabs(theta) - M_PI / 2) < 1e-12);
+    linalg_sym2_eigen(3, 0, 3, value, &theta);
+    assert_true(value[0] == 3 && value[1] == 3 && theta == 0);
+}

@@ -1,0 +1,258 @@
+/*
+ * test_panel.c: panels of the example surfaces against what geometry says
+ * they must be: areas that add up to the mesh area, deviations of a
+ * cylinder's panels against the analytic best-fit plane of an arc, and the
+ * classes DESIGN.md's validation names (plane flat, cylinder ruled, sphere
+ * round, hypar feature-curve split by the sign of H).
+ */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <cmocka.h>
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "core/example.h"
+#include "core/option.h"
+
+#define PI 3.14159265358979323846
+
+/* Writes example name at res to a temporary file and opens and prepares
+ * it as a surface. */
+static void open_example(const char *name, int res, struct surface *s)
+{
+    char path[] = "/tmp/facet_test_panel_XXXXXX";
+    int fd = mkstemp(path);
+    assert_true(fd >= 0);
+    FILE *out = fdopen(fd, "w");
+    struct facet_error err;
+    assert_int_equal(example_write(name, res, out, &err), FACET_OK);
+    fclose(out);
+    struct mesh_options options = {UNITS_M, NULL, NULL};
+    int rc = surface_open(path, &options, s, &err);
+    if (rc == FACET_OK)
+        rc = surface_prepare(s, 0, &err);
+    unlink(path);
+    if (rc != FACET_OK)
+        fail_msg("%s: %s", name, err.message);
+}
+
+static void evaluate(const struct surface *s, int nu, int nv,
+                     double threshold, struct panelization *p,
+                     struct option_totals *t)
+{
+    struct option_params params;
+    memset(&params, 0, sizeof params);
+    params.nu = nu;
+    params.nv = nv;
+    params.mode = PANEL_EXTREMES;
+    classify_defaults(&params.classify);
+    params.classify.threshold = threshold;
+    struct facet_error err;
+    int rc = option_evaluate(s, &params, p, t, &err);
+    if (rc != FACET_OK)
+        fail_msg("%s", err.message);
+}
+
+static void test_plane_panels(void **state)
+{
+    (void)state;
+    struct surface s;
+    open_example("plane", 0, &s);
+    struct panelization p;
+    struct option_totals t;
+    evaluate(&s, 4, 3, 0.003, &p, &t);
+    assert_int_equal(p.npanels, 12);
+    for (size_t n = 0; n < p.npanels; n++) {
+        assert_true(fabs(p.panels[n].area - 25) < 1e-9);
+        assert_true(p.panels[n].deviation < 1e-9);
+        assert_int_equal(p.panels[n].class, CLASS_FLAT);
+        assert_int_equal(p.panels[n].type, TYPE_FP);
+        assert_int_equal(p.panels[n].ncorners, 4);
+        assert_false(p.panels[n].trimmed);
+        /* 5 m x 5 m cells: the diagonal. */
+        assert_true(fabs(p.panels[n].diameter - sqrt(50)) < 1e-9);
+        assert_true(p.panels[n].corner_planarity < 1e-9);
+    }
+    assert_true(fabs(t.cost - 300 * 701) < 1e-6);
+    assert_true(fabs(t.planarity) < 1e-8);
+    panelization_free(&p);
+    surface_close(&s);
+}
+
+static void test_areas_add_up(void **state)
+{
+    (void)state;
+    const char *names[] = {"roof", "dome", "torus", "wave"};
+    int grids[][2] = {{37, 49}, {20, 35}, {7, 3}, {40, 1}, {1, 1}};
+    for (int e = 0; e < 4; e++) {
+        struct surface s;
+        open_example(names[e], 0, &s);
+        for (int g = 0; g < 5; g++) {
+            struct panelization p;
+            struct option_totals t;
+            evaluate(&s, grids[g][0], grids[g][1], 0.003, &p, &t);
+            double sum = 0;
+            for (size_t n = 0; n < p.npanels; n++)
+                sum += p.panels[n].area;
+            assert_true(fabs(sum - s.mesh.area) <= 1e-9 * s.mesh.area);
+            assert_true(fabs(t.area - s.mesh.area) <= 1e-9 * s.mesh.area);
+            assert_int_equal(t.panels, p.npanels);
+            assert_int_equal(t.count[0] + t.count[1] + t.count[2],
+                             p.npanels);
+            panelization_free(&p);
+        }
+        surface_close(&s);
+    }
+}
+
+/* A cylinder panel spanning angle 2a of radius r: its least-squares plane
+ * lies at the arc's mean distance from the axis, r sin(a)/a, so its
+ * deviation is max(r - r sin(a)/a, r sin(a)/a - r cos(a)). */
+static void test_cylinder_deviation(void **state)
+{
+    (void)state;
+    struct surface s;
+    open_example("cylinder", 0, &s);
+    double r = 10, span = 120 * PI / 180;
+    for (int nu = 4; nu <= 24; nu += 10) {
+        struct panelization p;
+        struct option_totals t;
+        evaluate(&s, nu, 5, 0.003, &p, &t);
+        double a = span / nu / 2;
+        double mean = r * sin(a) / a;
+        double expected = fmax(r - mean, mean - r * cos(a));
+        /* The curved direction may be u or v: find the panels along it. */
+        int curved_u = p.panels[0].deviation > 1e-6;
+        for (size_t n = 0; n < p.npanels; n++) {
+            if (!curved_u)
+                break;
+            double deviation = p.panels[n].deviation;
+            assert_true(fabs(deviation - expected) < 0.01 * expected);
+            assert_int_equal(p.panels[n].class, CLASS_RULED_CONVEX);
+        }
+        if (!curved_u) {
+            /* Then u runs along the axis; every panel must be ruled. */
+            for (size_t n = 0; n < p.npanels; n++)
+                assert_int_equal(p.panels[n].class, CLASS_RULED_CONVEX);
+        }
+        panelization_free(&p);
+    }
+    surface_close(&s);
+}
+
+static void test_dome_is_round_and_convex(void **state)
+{
+    (void)state;
+    struct surface s;
+    open_example("dome", 0, &s);
+    struct panelization p;
+    struct option_totals t;
+    evaluate(&s, 10, 10, 0.003, &p, &t);
+    for (size_t n = 0; n < p.npanels; n++) {
+        assert_int_equal(p.panels[n].class, CLASS_CONVEX_ROUND);
+        assert_true(p.panels[n].k1 < 0 && p.panels[n].k2 < 0);
+    }
+    panelization_free(&p);
+    surface_close(&s);
+}
+
+/* The paper's validation: a hyperbolic paraboloid on a 5 x 5 grid has only
+ * feature-curve areas, convex and concave by the sign of H. */
+static void test_hypar_feature_curves(void **state)
+{
+    (void)state;
+    struct surface s;
+    open_example("hypar", 0, &s);
+    struct panelization p;
+    struct option_totals t;
+    evaluate(&s, 5, 5, 0.003, &p, &t);
+    assert_int_equal(p.npanels, 25);
+    size_t convex = 0, concave = 0;
+    for (size_t n = 0; n < p.npanels; n++) {
+        const struct panel *panel = &p.panels[n];
+        assert_true(panel->K < 0);
+        assert_true(panel->class == CLASS_CONVEX_FEATURE_CURVE ||
+                    panel->class == CLASS_CONCAVE_FEATURE_CURVE ||
+                    panel->class == CLASS_SADDLE);
+        if (panel->class == CLASS_CONVEX_FEATURE_CURVE) {
+            assert_true(panel->H < 0);
+            convex++;
+        }
+        if (panel->class == CLASS_CONCAVE_FEATURE_CURVE) {
+            assert_true(panel->H > 0);
+            concave++;
+        }
+    }
+    assert_true(convex > 0 && concave > 0);
+
+    /* Forcing k1 = 0 on two panels makes them ruled. */
+    p.panels[3].k1 = 0;
+    p.panels[7].k1 = 0;
+    struct classify_options options;
+    classify_defaults(&options);
+    classify_panels(&p, &options, &t);
+    assert_true(p.panels[3].class == CLASS_RULED_CONVEX);
+    assert_true(p.panels[7].class == CLASS_RULED_CONVEX);
+    panelization_free(&p);
+    surface_close(&s);
+}
+
+static void test_roof_has_every_type(void **state)
+{
+    (void)state;
+    struct surface s;
+    open_example("roof", 0, &s);
+    struct panelization p;
+    struct option_totals t;
+    evaluate(&s, 37, 49, 0.003, &p, &t);
+    assert_true(t.count[TYPE_FP] > 0);
+    assert_true(t.count[TYPE_SP] > 0);
+    assert_true(t.count[TYPE_DP] > 0);
+    assert_true(t.feasible);
+    panelization_free(&p);
+    surface_close(&s);
+}
+
+static void test_bad_grid(void **state)
+{
+    (void)state;
+    struct surface s;
+    open_example("plane", 4, &s);
+    struct option_params params;
+    memset(&params, 0, sizeof params);
+    classify_defaults(&params.classify);
+    params.nu = 0;
+    params.nv = 3;
+    struct panelization p;
+    struct option_totals t;
+    struct facet_error err;
+    assert_int_equal(option_evaluate(&s, &params, &p, &t, &err),
+                     FACET_EINPUT);
+    assert_non_null(strstr(err.message, "0x3"));
+    panelization_free(&p);
+    params.nu = PANEL_MAX_GRID + 1;
+    assert_int_equal(option_evaluate(&s, &params, &p, &t, &err),
+                     FACET_EINPUT);
+    panelization_free(&p);
+    surface_close(&s);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_plane_panels),
+        cmocka_unit_test(test_areas_add_up),
+        cmocka_unit_test(test_cylinder_deviation),
+        cmocka_unit_test(test_dome_is_round_and_convex),
+        cmocka_unit_test(test_hypar_feature_curves),
+        cmocka_unit_test(test_roof_has_every_type),
+        cmocka_unit_test(test_bad_grid),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
