@@ -5,9 +5,8 @@
  * a regular grid and triangulated, with vt = (s, t) its surface parameters,
  * as a CAD export of a NURBS face carries them. Lengths are metres.
  *
- *   plane     20 m x 15 m flat rectangle
- *   cylinder  quarter... see example.c for each surface's exact formula
- *   dome, hypar, torus, wave, roof
+ *   plane, cylinder, dome, hypar, torus, wave, roof: example.c's header
+ *   gives each surface's exact formula, the oracle tests compare against.
  *
  * roof is the case-study stand-in: a free-form roof of about 1,240 m^2 with
  * flat, single-curved and double-curved regions.
@@ -24,6 +23,10 @@ extern const char *const example_names[];
 
 /* One line describing the named example, or NULL if there is no such name. */
 const char *example_describe(const char *name);
+
+/* Evaluates the named example at surface parameters (s, t) in [0,1]^2 into
+ * p (m). Returns 0, or -1 for an unknown name. */
+int example_point(const char *name, double s, double t, double p[3]);
 
 /* Writes the named example as OBJ text to out, sampled on res x res quads
  * (res 0 picks the example's default). Returns FACET_OK, FACET_EINPUT for an
