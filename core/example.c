@@ -15,7 +15,7 @@
  *             degrees around the tube: x = (R + r cos q) cos p,
  *             y = (R + r cos q) sin p, z = r sin q        (the outer half)
  *   wave      x = 30 s, y = 20 t, z = 4 + 1.5 sin(2 pi s) cos(pi t)
- *   roof      x = L s, y = 30 t (L = 39.5), z = 6 + arch(x) + bump(x, y):
+ *   roof      x = L s, y = 30 t (L = 39.56), z = 6 + arch(x) + bump(x, y):
  *             flat for x < L/4; arch(x) = 1.5 (1 - cos(2 pi (x - L/4)/16))
  *             on the next 16 m, a single-curved vault (z depends on x
  *             only); bump = 3 exp(-((x - 0.83 L)^2/25 + (y - 15)^2/40)),
@@ -107,7 +107,7 @@ int example_point(const char *name, double s, double t, double p[3])
         p[2] = 4 + 1.5 * sin(2 * PI * s) * cos(PI * t);
         return 0;
     case 6: {
-        const double length = 39.5, width = 30, start = length / 4;
+        const double length = 39.56, width = 30, start = length / 4;
         double x = length * s, y = width * t;
         double arch = x >= start && x <= start + 16
                           ? 1.5 * (1 - cos(2 * PI * (x - start) / 16)) : 0;

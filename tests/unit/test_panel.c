@@ -69,15 +69,16 @@ static void test_plane_panels(void **state)
     evaluate(&s, 4, 3, 0.003, &p, &t);
     assert_int_equal(p.npanels, 12);
     for (size_t n = 0; n < p.npanels; n++) {
-        assert_true(fabs(p.panels[n].area - 25) < 1e-9);
+        /* Positions are written with 9 significant digits. */
+        assert_true(fabs(p.panels[n].area - 25) < 1e-6);
         assert_true(p.panels[n].deviation < 1e-9);
         assert_int_equal(p.panels[n].class, CLASS_FLAT);
         assert_int_equal(p.panels[n].type, TYPE_FP);
         assert_int_equal(p.panels[n].ncorners, 4);
         assert_false(p.panels[n].trimmed);
         /* 5 m x 5 m cells: the diagonal. */
-        assert_true(fabs(p.panels[n].diameter - sqrt(50)) < 1e-9);
-        assert_true(p.panels[n].corner_planarity < 1e-9);
+        assert_true(fabs(p.panels[n].diameter - sqrt(50)) < 1e-7);
+        assert_true(p.panels[n].corner_planarity < 1e-7);
     }
     assert_true(fabs(t.cost - 300 * 701) < 1e-6);
     assert_true(fabs(t.planarity) < 1e-8);
@@ -118,7 +119,7 @@ static void test_cylinder_deviation(void **state)
 {
     (void)state;
     struct surface s;
-    open_example("cylinder", 0, &s);
+    open_example("cylinder", 140, &s);
     double r = 10, span = 120 * PI / 180;
     for (int nu = 4; nu <= 24; nu += 10) {
         struct panelization p;
@@ -132,8 +133,12 @@ static void test_cylinder_deviation(void **state)
         for (size_t n = 0; n < p.npanels; n++) {
             if (!curved_u)
                 break;
+            /* The mesh is a polygon of 140 chords, each off the arc by its
+             * sagitta: the panel's deviation can differ by that much. */
+            double sagitta = r * (1 - cos(span / 140 / 2));
             double deviation = p.panels[n].deviation;
-            assert_true(fabs(deviation - expected) < 0.01 * expected);
+            assert_true(fabs(deviation - expected) <
+                        0.01 * expected + 2 * sagitta);
             assert_int_equal(p.panels[n].class, CLASS_RULED_CONVEX);
         }
         if (!curved_u) {
