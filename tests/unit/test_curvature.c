@@ -290,3 +290,201 @@ static void test_linalg(void **state)
     linalg_sym2_eigen(3, 0, 3, value, &theta);
     assert_true(value[0] == 3 && value[1] == 3 && theta == 0);
 }
+
+/* ---- Analytic oracles on the examples ---------------------------------------- */
+
+/* Principal curvatures k1 >= k2 of the graph z = f(x, y) at a point, for the
+ * upward normal (-fx, -fy, 1) / W: K and H from the fundamental forms. */
+static void graph_oracle(double fx, double fy, double fxx, double fxy,
+                         double fyy, double *k1, double *k2)
+{
+    double w2 = 1 + fx * fx + fy * fy, w = sqrt(w2);
+    double gauss = (fxx * fyy - fxy * fxy) / (w2 * w2);
+    double mean = ((1 + fx * fx) * fyy - 2 * fx * fy * fxy +
+                   (1 + fy * fy) * fxx) / (2 * w2 * w);
+    double disc = mean * mean - gauss;
+    double root = sqrt(disc > 0 ? disc : 0);
+    *k1 = mean + root;
+    *k2 = mean - root;
+}
+
+/* Relative error of k against the exact value, measured against |exact| but
+ * never against less than floor (where the exact curvature passes through
+ * zero a relative error means nothing). */
+static double relative(double k, double exact, double floor)
+{
+    double scale = fabs(exact) > floor ? fabs(exact) : floor;
+    return fabs(k - exact) / scale;
+}
+
+/* Largest errors allowed, as the issue states them. */
+#define SPHERE_TOL 0.01
+#define TORUS_TOL 0.02
+#define BOUNDARY_TOL 0.05
+
+static void assert_errors(const struct errors *e, double interior)
+{
+    assert_true(e->count[0] > 0 && e->count[1] > 0);
+    assert_true(e->k1[0] <= interior && e->k2[0] <= interior);
+    assert_true(e->k1[1] <= BOUNDARY_TOL && e->k2[1] <= BOUNDARY_TOL);
+}
+
+/* dome: a sphere of radius 20 m seen from outside, k1 = k2 = -1/20. */
+static void test_dome(void **state)
+{
+    (void)state;
+    const double radius = 20;
+    struct mesh mesh;
+    struct curvature c;
+    struct errors e = {{0}, {0}, {0}};
+    mesh_from_example("dome", &mesh);
+    assert_true(mesh.nvertices > 15000);
+    estimate(&mesh, 0, &c);
+    assert_well_formed(&c);
+    for (size_t v = 0; v < mesh.nvertices; v++) {
+        /* The centre is at (0, 0, -sqrt(200)); the normal points away. */
+        const double *p = mesh.position + 3 * v;
+        double out[3] = {p[0], p[1], p[2] + sqrt(200)};
+        assert_true(dot(out, c.normal + 3 * v) > 0.999 * radius);
+        note(&e, mesh.on_boundary[v], relative(c.k1[v], -1 / radius, 0),
+             relative(c.k2[v], -1 / radius, 0));
+    }
+    print_errors("dome", &e);
+    assert_errors(&e, SPHERE_TOL);
+    release(&mesh, &c);
+}
+
+/* cylinder: radius 10 m, axis along y; k1 = 0 along the axis, k2 = -1/10
+ * around it (convex, normal outward). */
+static void test_cylinder(void **state)
+{
+    (void)state;
+    const double radius = 10;
+    struct mesh mesh;
+    struct curvature c;
+    struct errors e = {{0}, {0}, {0}};
+    mesh_from_example("cylinder", &mesh);
+    estimate(&mesh, 0, &c);
+    assert_well_formed(&c);
+    for (size_t v = 0; v < mesh.nvertices; v++) {
+        const double *p = mesh.position + 3 * v;
+        double out[3] = {p[0], 0, p[2]};
+        assert_true(dot(out, c.normal + 3 * v) > 0.999 * radius);
+        assert_true(fabs(c.dir1[3 * v + 1]) > 0.99);
+        /* k1 is exactly 0: measured against 1/R. */
+        note(&e, mesh.on_boundary[v], relative(c.k1[v], 0, 1 / radius),
+             relative(c.k2[v], -1 / radius, 0));
+    }
+    print_errors("cylinder", &e);
+    assert_errors(&e, SPHERE_TOL);
+    release(&mesh, &c);
+}
+
+/* torus: R 20, r 6, outer half. At tube angle q, the tube curvature is
+ * -1/r and the other -cos q / (R + r cos q), both for the outward normal.
+ * The latter passes through zero at the top and bottom of the tube, so it
+ * is measured against no less than a tenth of 1/r. */
+static void test_torus(void **state)
+{
+    (void)state;
+    const double big = 20, small = 6;
+    struct mesh mesh;
+    struct curvature c;
+    struct errors e = {{0}, {0}, {0}};
+    mesh_from_example("torus", &mesh);
+    estimate(&mesh, 0, &c);
+    assert_well_formed(&c);
+    for (size_t v = 0; v < mesh.nvertices; v++) {
+        const double *p = mesh.position + 3 * v;
+        double rho = hypot(p[0], p[1]);
+        double q = atan2(p[2], rho - big);
+        double tube = -1 / small;
+        double other = -cos(q) / (big + small * cos(q));
+        double out[3] = {p[0] - big * p[0] / rho, p[1] - big * p[1] / rho,
+                         p[2]};
+        assert_true(dot(out, c.normal + 3 * v) > 0.999 * small);
+        double floor = 0.1 / small;
+        note(&e, mesh.on_boundary[v],
+             relative(c.k1[v], other, floor), relative(c.k2[v], tube, floor));
+    }
+    print_errors("torus", &e);
+    assert_errors(&e, TORUS_TOL);
+    release(&mesh, &c);
+}
+
+/* plane: no curvature at all. */
+static void test_plane(void **state)
+{
+    (void)state;
+    struct mesh mesh;
+    struct curvature c;
+    mesh_from_example("plane", &mesh);
+    estimate(&mesh, 0, &c);
+    assert_well_formed(&c);
+    for (size_t v = 0; v < mesh.nvertices; v++) {
+        assert_true(fabs(c.k1[v]) < 1e-9 && fabs(c.k2[v]) < 1e-9);
+        assert_true(c.normal[3 * v + 2] > 1 - 1e-12);
+    }
+    release(&mesh, &c);
+}
+
+/* hypar: z = x y / 20, a saddle everywhere: k1 > 0 > k2, K < 0; K and H
+ * from the graph's fundamental forms. */
+static void test_hypar(void **state)
+{
+    (void)state;
+    const double cc = 20;
+    struct mesh mesh;
+    struct curvature c;
+    struct errors e = {{0}, {0}, {0}};
+    double worst_gauss = 0;
+    mesh_from_example("hypar", &mesh);
+    estimate(&mesh, 0, &c);
+    assert_well_formed(&c);
+    for (size_t v = 0; v < mesh.nvertices; v++) {
+        const double *p = mesh.position + 3 * v;
+        double k1, k2;
+        graph_oracle(p[1] / cc, p[0] / cc, 0, 1 / cc, 0, &k1, &k2);
+        assert_true(c.k1[v] > 0 && c.k2[v] < 0);
+        double gauss = k1 * k2;
+        double err = relative(c.k1[v] * c.k2[v], gauss, 0);
+        if (err > worst_gauss)
+            worst_gauss = err;
+        note(&e, mesh.on_boundary[v], relative(c.k1[v], k1, 0),
+             relative(c.k2[v], k2, 0));
+    }
+    print_errors("hypar", &e);
+    print_message("hypar     K: %.3f%%\n", 100 * worst_gauss);
+    assert_true(worst_gauss < 0.05);
+    assert_errors(&e, SPHERE_TOL);
+    release(&mesh, &c);
+}
+
+/* wave: z = 4 + 1.5 sin(2 pi x / 30) cos(pi y / 20), a graph whose
+ * curvatures change sign; measured against a tenth of the largest. */
+static void test_wave(void **state)
+{
+    (void)state;
+    const double a = 1.5, wx = 2 * M_PI / 30, wy = M_PI / 20;
+    const double floor = 0.1 * a * wx * wx;
+    struct mesh mesh;
+    struct curvature c;
+    struct errors e = {{0}, {0}, {0}};
+    mesh_from_example("wave", &mesh);
+    estimate(&mesh, 0, &c);
+    assert_well_formed(&c);
+    for (size_t v = 0; v < mesh.nvertices; v++) {
+        const double *p = mesh.position + 3 * v;
+        double sx = sin(wx * p[0]), cx = cos(wx * p[0]);
+        double sy = sin(wy * p[1]), cy = cos(wy * p[1]);
+        double k1, k2;
+        graph_oracle(a * wx * cx * cy, -a * wy * sx * sy,
+                     -a * wx * wx * sx * cy, -a * wx * wy * cx * sy,
+                     -a * wy * wy * sx * cy, &k1, &k2);
+        note(&e, mesh.on_boundary[v], relative(c.k1[v], k1, floor),
+             relative(c.k2[v], k2, floor));
+    }
+    print_errors("wave", &e);
+    assert_errors(&e, TORUS_TOL);
+    release(&mesh, &c);
+}

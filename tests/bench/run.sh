@@ -1,0 +1,10 @@
+#!/usr/bin/env bash
+# make bench: every benchmark, each reported as a ratio against a baseline
+# measured in the same run.
+#
+#   tests/bench/run.sh BUILD_DIR
+set -euo pipefail
+build=${1:?usage: tests/bench/run.sh BUILD_DIR}
+cd "$(dirname "$0")/../.."
+echo "== OBJ loader: Facet's obj_load against Debian's tinyobjloader (1M triangles)"
+tests/bench/bench_obj.sh "$build"
