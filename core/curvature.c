@@ -12,9 +12,10 @@
  *   3. A weighted least-squares fit, in a frame (t1, t2, n) at v, of the
  *      height w = f(x, y) of the neighbours over the tangent plane:
  *      a quadric with gradient (5 terms), or a cubic jet (9 terms) where the
- *      neighbourhood is one-sided (boundary) and large enough, falling back
- *      to fewer terms when the points cannot determine more. Weights are
- *      Gaussian in distance relative to the neighbourhood radius.
+ *      neighbourhood reaches the boundary (one-sided, so the odd terms no
+ *      longer cancel) and is large enough, falling back to fewer terms when
+ *      the points cannot determine more. Weights are Gaussian in distance
+ *      relative to the neighbourhood radius.
  *   4. One refinement: the normal of the fitted graph becomes the new n and
  *      the fit is repeated, so a poor initial normal costs little.
  *   5. The shape operator of the graph at the origin, I^-1 II with
@@ -27,8 +28,15 @@
  * neighbourhood gets k1 = k2 = 0. Nothing here produces NaN for finite
  * input; a non-finite result is replaced by that zero answer.
  *
+ * Accuracy (tests/unit/test_curvature.c, examples at 141 x 141 vertices,
+ * largest relative error over the vertices): sphere 0.01 % inside and
+ * 0.08 % on the boundary, cylinder 0.02 % / 0.11 %, torus 0.09 % / 0.51 %
+ * (its second curvature, which passes through 0, measured against no less
+ * than a tenth of the first).
+ * The error grows with (edge length / radius of curvature)^2.
+ *
  * Cost is O(V) for meshes of bounded valence: one pass, two small fits per
- * vertex, work buffers allocated once.
+ * vertex, work buffers allocated once (about 1.6 s for 1M vertices).
  */
 #include <math.h>
 #include <stdint.h>
@@ -40,10 +48,11 @@
 
 enum {
     RINGS_INTERIOR = 2,     /* rings gathered at least, interior vertex */
-    RINGS_BOUNDARY = 3,     /* rings gathered at least, boundary vertex */
+    RINGS_BOUNDARY = 3,     /* rings gathered at least, on the boundary */
     RINGS_MAX = 6,          /* never more rings than this */
     POINTS_WANTED = 12,     /* grow the neighbourhood until this many */
-    POINTS_CUBIC = 18,      /* a cubic jet needs at least this many */
+    POINTS_CUBIC = 18,      /* a cubic jet needs this many on the boundary */
+    POINTS_CUBIC_NEAR = 14, /* and this many near it (neighbours all round) */
     POINTS_MAX = 1024,      /* neighbourhood size cap (high valence) */
     TERMS_MAX = 9           /* x^2 xy y^2 x y x^3 x^2y xy^2 y^3 */
 };
@@ -336,7 +345,7 @@ static void store(struct curvature *out, uint32_t v, double k1, double k2,
 }
 
 /* The zero answer for a vertex without a usable neighbourhood: k = 0, the
- * normal n0 if it has one (else +z), and tangent directions around it. */
+ * unit normal n0 (+z if n0 is zero), and tangent directions around it. */
 static void store_flat(struct curvature *out, uint32_t v, const double *n0)
 {
     struct frame f;
@@ -358,6 +367,7 @@ static void vertex_curvature(const struct mesh *mesh, uint32_t v,
     struct jet jet;
 
     if (!vertex_normal(mesh, v, f.n)) {
+        f.n[2] = flip_normals ? -1 : 1;  /* no normal: say +z (or -z) */
         store_flat(out, v, f.n);
         return;
     }
@@ -366,15 +376,18 @@ static void vertex_curvature(const struct mesh *mesh, uint32_t v,
             f.n[r] = -f.n[r];
 
     /* A neighbourhood that reaches the boundary is one-sided: the odd terms
-     * of the surface no longer cancel, so fit them (cubic jet) on a larger
-     * neighbourhood. */
+     * of the surface no longer cancel, so fit them too (a cubic jet). Near
+     * the boundary the 2-ring is enough for that, if it is large; on it
+     * the fit needs 3 rings to stay well conditioned. */
     size_t count = gather(mesh, v, RINGS_INTERIOR, POINTS_WANTED, ws);
     int one_sided = 0;
     for (size_t i = 0; mesh->on_boundary && i < count && !one_sided; i++)
         one_sided = mesh->on_boundary[ws->points[i]];
-    if (one_sided)
-        count = gather(mesh, v, RINGS_BOUNDARY, POINTS_CUBIC, ws);
-    int nterms = one_sided && count - 1 >= POINTS_CUBIC ? 9 : 5;
+    int on_boundary = one_sided && mesh->on_boundary[v];
+    size_t cubic_points = on_boundary ? POINTS_CUBIC : POINTS_CUBIC_NEAR;
+    if (one_sided && (on_boundary || count - 1 < cubic_points))
+        count = gather(mesh, v, RINGS_BOUNDARY, cubic_points, ws);
+    int nterms = one_sided && count - 1 >= cubic_points ? 9 : 5;
 
     frame_complete(&f);
     if (!fit(mesh, ws->points, count, &f, nterms, &jet)) {

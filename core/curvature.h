@@ -2,10 +2,11 @@
  * curvature.h: principal curvatures at every vertex of a surface.
  *
  * Computed once per surface, independent of any panel grid. The estimator
- * fits a quadric (a degree-2 jet) to each vertex's neighbourhood in a local
- * frame, over a neighbourhood scaled to the local edge length, and reads the
- * shape operator off the fit; see curvature.c for the details and the
- * accuracy it reaches.
+ * fits a quadric (a degree-2 jet; degree 3 where the neighbourhood reaches
+ * the boundary) to each vertex's neighbourhood in a local frame, over a
+ * neighbourhood scaled to the local edge length (its 2- or 3-ring), and
+ * reads the shape operator off the fit; see curvature.c for the details
+ * and the accuracy it reaches.
  *
  * Sign convention (DESIGN.md): curvature is negative where the surface bends
  * away from its normal, so a dome seen from outside, with the normal
@@ -32,7 +33,10 @@ struct curvature {
 
 /* Estimates curvature at every vertex of mesh into *out (caller-owned,
  * released with curvature_free, also after a failure). Returns FACET_OK,
- * FACET_EWORK when out of memory. Isolated or degenerate vertices get 0. */
+ * FACET_EWORK when out of memory (FACET_EINPUT for 2^32 - 1 vertices or
+ * more). Isolated or degenerate vertices (no neighbourhood a quadric can be
+ * fitted to) get k1 = k2 = 0; one with no normal at all gets +z (-z when
+ * flipped). Every value is finite. */
 int curvature_at_vertices(const struct mesh *mesh, int flip_normals,
                           struct curvature *out, struct facet_error *err);
 

@@ -46,20 +46,27 @@ static void mesh_from_text(const char *text, size_t length, struct mesh *mesh)
     obj_free(&obj);
 }
 
-/* Builds *mesh from the named example at its default resolution. */
-static void mesh_from_example(const char *name, struct mesh *mesh)
+/* Builds *mesh from the named example at res x res quads (0: default). */
+static void mesh_from_example_res(const char *name, int res,
+                                  struct mesh *mesh)
 {
     char *text = NULL;
     size_t length = 0;
     struct facet_error err;
     FILE *out = open_memstream(&text, &length);
     assert_non_null(out);
-    int rc = example_write(name, 0, out, &err);
+    int rc = example_write(name, res, out, &err);
     if (rc != FACET_OK)
         fail_msg("example_write %s: %s", name, err.message);
     assert_int_equal(fclose(out), 0);
     mesh_from_text(text, length, mesh);
     free(text);
+}
+
+/* Builds *mesh from the named example at its default resolution. */
+static void mesh_from_example(const char *name, struct mesh *mesh)
+{
+    mesh_from_example_res(name, 0, mesh);
 }
 
 /* Runs the estimator, which must succeed, into *c. */
@@ -192,6 +199,7 @@ static void test_isolated_vertex(void **state)
     assert_well_formed(&c);
     assert_true(c.k1[3] == 0 && c.k2[3] == 0);
     assert_true(fabs(c.normal[2] + 1) < 1e-12);  /* flipped: -z */
+    assert_true(c.normal[3 * 3 + 2] == -1);      /* no normal: -z too */
     curvature_free(&c);
     hand_free(&mesh);
 }
@@ -412,20 +420,28 @@ static void test_torus(void **state)
     release(&mesh, &c);
 }
 
+/* The named example is flat, k = 0 within tol and the normal +z, at every
+ * vertex with x < x_below, and well formed everywhere. */
+static void check_flat(const char *name, double x_below, double tol)
+{
+    struct mesh mesh;
+    struct curvature c;
+    mesh_from_example(name, &mesh);
+    estimate(&mesh, 0, &c);
+    assert_well_formed(&c);
+    for (size_t v = 0; v < mesh.nvertices; v++)
+        if (mesh.position[3 * v] < x_below) {
+            assert_true(fabs(c.k1[v]) < tol && fabs(c.k2[v]) < tol);
+            assert_true(c.normal[3 * v + 2] > 1 - 1e-9);
+        }
+    release(&mesh, &c);
+}
+
 /* plane: no curvature at all. */
 static void test_plane(void **state)
 {
     (void)state;
-    struct mesh mesh;
-    struct curvature c;
-    mesh_from_example("plane", &mesh);
-    estimate(&mesh, 0, &c);
-    assert_well_formed(&c);
-    for (size_t v = 0; v < mesh.nvertices; v++) {
-        assert_true(fabs(c.k1[v]) < 1e-9 && fabs(c.k2[v]) < 1e-9);
-        assert_true(c.normal[3 * v + 2] > 1 - 1e-12);
-    }
-    release(&mesh, &c);
+    check_flat("plane", INFINITY, 1e-9);
 }
 
 /* hypar: z = x y / 20, a saddle everywhere: k1 > 0 > k2, K < 0; K and H
@@ -487,4 +503,173 @@ static void test_wave(void **state)
     print_errors("wave", &e);
     assert_errors(&e, TORUS_TOL);
     release(&mesh, &c);
+}
+
+/* A sphere cap meshed in polar coordinates: the pole has valence 96 and
+ * thin triangles around it, the last ring is the boundary. Radius 5 m,
+ * outward normal: k1 = k2 = -1/5 everywhere. */
+static void test_polar_sphere(void **state)
+{
+    (void)state;
+    enum { RINGS = 40, AROUND = 96, NV = 1 + RINGS * AROUND };
+    enum { NT = AROUND + 2 * (RINGS - 1) * AROUND };
+    const double radius = 5, cap = 60 * M_PI / 180;
+    double *p = malloc(3 * NV * sizeof(double));
+    uint32_t *t = malloc(3 * NT * sizeof(uint32_t));
+    assert_true(p && t);
+    p[0] = p[1] = 0;
+    p[2] = radius;
+    for (int j = 1; j <= RINGS; j++)
+        for (int i = 0; i < AROUND; i++) {
+            double polar = cap * j / RINGS, azimuth = 2 * M_PI * i / AROUND;
+            double *q = p + 3 * (1 + (j - 1) * AROUND + i);
+            q[0] = radius * sin(polar) * cos(azimuth);
+            q[1] = radius * sin(polar) * sin(azimuth);
+            q[2] = radius * cos(polar);
+        }
+    size_t nt = 0;
+    for (int i = 0; i < AROUND; i++) {
+        uint32_t fan[3] = {0, 1 + i, 1 + (i + 1) % AROUND};
+        memcpy(t + 3 * nt++, fan, sizeof fan);
+    }
+    for (int j = 1; j < RINGS; j++)
+        for (int i = 0; i < AROUND; i++) {
+            uint32_t a = 1 + (j - 1) * AROUND + i;
+            uint32_t b = 1 + (j - 1) * AROUND + (i + 1) % AROUND;
+            uint32_t quad[6] = {a, a + AROUND, b + AROUND, a, b + AROUND, b};
+            memcpy(t + 3 * nt, quad, sizeof quad);
+            nt += 2;
+        }
+    assert_int_equal(nt, NT);
+    struct mesh mesh;
+    struct curvature c;
+    struct errors e = {{0}, {0}, {0}};
+    hand_mesh(&mesh, p, NV, t, NT);
+    mesh.on_boundary = calloc(NV, 1);
+    assert_non_null(mesh.on_boundary);
+    memset(mesh.on_boundary + NV - AROUND, 1, AROUND);
+    estimate(&mesh, 0, &c);
+    assert_well_formed(&c);
+    for (size_t v = 0; v < NV; v++) {
+        assert_true(dot(mesh.position + 3 * v, c.normal + 3 * v) >
+                    0.999 * radius);
+        note(&e, mesh.on_boundary[v], relative(c.k1[v], -1 / radius, 0),
+             relative(c.k2[v], -1 / radius, 0));
+    }
+    print_errors("polar", &e);
+    assert_errors(&e, SPHERE_TOL);
+    curvature_free(&c);
+    hand_free(&mesh);
+    free(p);
+    free(t);
+}
+
+/* ---- Orientation ---------------------------------------------------------------- */
+
+/* flip_normals reverses the normal and so every sign: k1' = -k2,
+ * k2' = -k1, and the directions trade places. */
+static void test_flip_normals(void **state)
+{
+    (void)state;
+    static const char *const names[] = {"torus", "hypar", "roof"};
+    for (size_t i = 0; i < sizeof names / sizeof names[0]; i++) {
+        struct mesh mesh;
+        struct curvature c, f;
+        mesh_from_example(names[i], &mesh);
+        estimate(&mesh, 0, &c);
+        estimate(&mesh, 1, &f);
+        assert_well_formed(&f);
+        for (size_t v = 0; v < mesh.nvertices; v++) {
+            assert_true(fabs(f.k1[v] + c.k2[v]) < 1e-9);
+            assert_true(fabs(f.k2[v] + c.k1[v]) < 1e-9);
+            assert_true(dot(f.normal + 3 * v, c.normal + 3 * v) <
+                        -1 + 1e-9);
+            /* Directions are defined up to sign, and only where k1 != k2. */
+            if (c.k1[v] - c.k2[v] > 1e-6)
+                assert_true(fabs(dot(f.dir1 + 3 * v, c.dir2 + 3 * v)) >
+                            1 - 1e-6);
+        }
+        curvature_free(&f);
+        release(&mesh, &c);
+    }
+}
+
+/* With vn, the normals of the file fix the sign: exact sphere normals
+ * pointing inwards make the dome concave, k1 = k2 = +1/R. */
+static void test_vn_orients(void **state)
+{
+    (void)state;
+    const double radius = 20;
+    struct mesh mesh;
+    struct curvature c;
+    mesh_from_example("dome", &mesh);
+    free(mesh.corner_normal);
+    mesh.corner_normal = malloc(9 * mesh.ntriangles * sizeof(double));
+    assert_non_null(mesh.corner_normal);
+    mesh.has_normals = 1;
+    for (size_t k = 0; k < 3 * mesh.ntriangles; k++) {
+        const double *p = mesh.position + 3 * (size_t)mesh.triangle[k];
+        double in[3] = {-p[0], -p[1], -(p[2] + sqrt(200))};
+        for (int r = 0; r < 3; r++)
+            mesh.corner_normal[3 * k + r] = in[r] / radius;
+    }
+    estimate(&mesh, 0, &c);
+    assert_well_formed(&c);
+    double worst = 0;
+    for (size_t v = 0; v < mesh.nvertices; v++) {
+        assert_true(c.normal[3 * v + 2] < 0);
+        double e1 = relative(c.k1[v], 1 / radius, 0);
+        double e2 = relative(c.k2[v], 1 / radius, 0);
+        worst = fmax(worst, fmax(e1, e2));
+    }
+    print_message("dome, vn  all vertices: %.3f%%\n", 100 * worst);
+    assert_true(worst < BOUNDARY_TOL);
+    release(&mesh, &c);
+}
+
+/* roof: its flat part (x < L/4, away from the vault by more than a
+ * neighbourhood) is flat. */
+static void test_roof(void **state)
+{
+    (void)state;
+    check_flat("roof", 39.56 / 4 - 1.5, 1e-6);
+}
+
+/* Every example at coarse resolutions, down to one quad: well formed. */
+static void test_coarse_examples(void **state)
+{
+    (void)state;
+    static const int res[] = {1, 2, 3, 5, 12};
+    for (size_t i = 0; example_names[i] != NULL; i++)
+        for (size_t r = 0; r < sizeof res / sizeof res[0]; r++) {
+            struct mesh mesh;
+            struct curvature c;
+            mesh_from_example_res(example_names[i], res[r], &mesh);
+            estimate(&mesh, 0, &c);
+            assert_well_formed(&c);
+            release(&mesh, &c);
+        }
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_linalg),
+        cmocka_unit_test(test_single_triangle),
+        cmocka_unit_test(test_isolated_vertex),
+        cmocka_unit_test(test_collinear_zero_area),
+        cmocka_unit_test(test_slivers_stay_finite),
+        cmocka_unit_test(test_polar_sphere),
+        cmocka_unit_test(test_dome),
+        cmocka_unit_test(test_cylinder),
+        cmocka_unit_test(test_torus),
+        cmocka_unit_test(test_plane),
+        cmocka_unit_test(test_hypar),
+        cmocka_unit_test(test_wave),
+        cmocka_unit_test(test_flip_normals),
+        cmocka_unit_test(test_vn_orients),
+        cmocka_unit_test(test_roof),
+        cmocka_unit_test(test_coarse_examples),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
 }
