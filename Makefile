@@ -41,6 +41,8 @@ UNIT_SRC  := $(wildcard tests/unit/test_*.c)
 UNIT_BIN  := $(UNIT_SRC:tests/unit/%.c=$(BUILD)/tests/%)
 TOOL_SRC  := $(wildcard tests/tools/*.c)
 TOOL_BIN  := $(TOOL_SRC:tests/tools/%.c=$(BUILD)/tools/%)
+BENCH_SRC := $(wildcard tests/bench/*.c)
+BENCH_BIN := $(BENCH_SRC:tests/bench/%.c=$(BUILD)/bench/%)
 
 .PHONY: all check test demo bench deps clean
 
@@ -71,6 +73,10 @@ $(BUILD)/tools/%: tests/tools/%.c $(BUILD)/libfacet.a
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS) $(LDFLAGS) -o $@ $< $(BUILD)/libfacet.a $(LDLIBS)
 
+$(BUILD)/bench/%: tests/bench/%.c $(BUILD)/libfacet.a
+	@mkdir -p $(dir $@)
+	$(CC) $(CFLAGS) $(LDFLAGS) -o $@ $< $(BUILD)/libfacet.a $(LDLIBS)
+
 # Build and run every test of one variant.
 test: $(BUILD)/facet $(UNIT_BIN) $(TOOL_BIN)
 	tests/run.sh $(BUILD)
@@ -83,7 +89,7 @@ demo: deps facet
 	examples/demo.sh ./facet
 
 bench: deps facet
-	$(MAKE) VARIANT=release $(BUILD)/libfacet.a
+	$(MAKE) VARIANT=release $(BUILD)/libfacet.a $(BENCH_BIN)
 	tests/bench/run.sh $(BUILD)
 
 deps:

@@ -11,9 +11,11 @@
  *   dome      x = 20 s - 10, y = 20 t - 10,
  *             z = sqrt(400 - x^2 - y^2) - sqrt(200)          (sphere R 20)
  *   hypar     x = 20 s - 10, y = 20 t - 10, z = x y / 20
- *   torus     R 20, r 6, p = 90 s degrees around the axis, q = (-90 + 180 t)
- *             degrees around the tube: x = (R + r cos q) cos p,
- *             y = (R + r cos q) sin p, z = r sin q        (the outer half)
+ *   torus     R 20, r 6, p = 90 s degrees around the axis, q = (-135 +
+ *             270 t) degrees around the tube: x = (R + r cos q) cos p,
+ *             y = (R + r cos q) sin p, z = r sin q: the outside (K > 0)
+ *             and, past the top and bottom of the tube, part of the inside
+ *             (K < 0)
  *   wave      x = 30 s, y = 20 t, z = 4 + 1.5 sin(2 pi s) cos(pi t)
  *   roof      x = L s, y = 30 t (L = 39.56), z = 6 + arch(x) + bump(x, y):
  *             flat for x < L/4; arch(x) = 1.5 (1 - cos(2 pi (x - L/4)/16))
@@ -39,7 +41,8 @@ static const char *const descriptions[] = {
     "a barrel vault: radius 10 m, 120 degrees, 30 m long",
     "a spherical cap of radius 20 m over a 20 m x 20 m square",
     "the hyperbolic paraboloid z = xy/20 over 20 m x 20 m",
-    "the outer half of a torus section, R = 20 m, r = 6 m, 90 degrees",
+    "a torus section, R = 20 m, r = 6 m: 90 degrees around the axis, "
+    "270 around the tube (outside and part of the inside)",
     "a 30 m x 20 m sine wave roof, amplitude 1.5 m",
     "a free-form roof of about 1,240 m^2: flat, single- and "
     "double-curved regions",
@@ -95,7 +98,7 @@ int example_point(const char *name, double s, double t, double p[3])
         p[2] = p[0] * p[1] / 20;
         return 0;
     case 4: {
-        double around = 90 * s * PI / 180, tube = (-90 + 180 * t) * PI / 180;
+        double around = 90 * s * PI / 180, tube = (-135 + 270 * t) * PI / 180;
         p[0] = (20 + 6 * cos(tube)) * cos(around);
         p[1] = (20 + 6 * cos(tube)) * sin(around);
         p[2] = 6 * sin(tube);

@@ -37,6 +37,7 @@ struct cell_sums {
     double second[9];      /* integral of (x - r)(x - r)^T dA */
     double normal_sum[3];  /* area-weighted face normals */
     /* Pass 2: */
+    int need_outline;          /* trimmed or not all corners on the surface */
     double extreme_low[13], extreme_high[13];  /* outline extent */
     double extreme_low_point[13][3], extreme_high_point[13][3];
     double k1_edge, k2_edge;   /* over samples on mesh vertices and edges */
@@ -142,18 +143,24 @@ static void walk_pieces(const struct grid_walk *g, piece_visitor visit,
             start[k].b[0] = start[k].b[1] = start[k].b[2] = 0;
             start[k].b[k] = 1;
         }
+        if (i0 == i1 && j0 == j1) {
+            /* Inside one cell: the triangle is its own piece. */
+            visit(context, (size_t)j0 * g->nu + i0, (uint32_t)t, start, 3);
+            continue;
+        }
         for (int j = j0; j <= j1; j++)
             for (int i = i0; i <= i1; i++) {
                 struct piece_vertex a[PIECE_MAX];
                 int n = 3;
                 memcpy(a, start, sizeof start);
-                if (i > 0)
+                /* A side the whole triangle lies within cuts nothing. */
+                if (i > i0)
                     n = clip_in_place(a, n, 0, g->umin + i * g->du, 1);
-                if (i < g->nu - 1)
+                if (i < i1)
                     n = clip_in_place(a, n, 0, g->umin + (i + 1) * g->du, -1);
-                if (j > 0)
+                if (j > j0)
                     n = clip_in_place(a, n, 1, g->vmin + j * g->dv, 1);
-                if (j < g->nv - 1)
+                if (j < j1)
                     n = clip_in_place(a, n, 1, g->vmin + (j + 1) * g->dv, -1);
                 if (n >= 3)
                     visit(context, (size_t)j * g->nu + i, (uint32_t)t, a, n);
@@ -261,7 +268,7 @@ static void sample_piece(void *context, size_t cell, uint32_t t,
         double distance = fabs(dot(d, panel->normal));
         if (distance > panel->deviation)
             panel->deviation = distance;
-        for (int e = 0; e < 13; e++) {
+        for (int e = 0; s->need_outline && e < 13; e++) {
             double along = dot(p, extent_direction[e]);
             if (along < s->extreme_low[e]) {
                 s->extreme_low[e] = along;
@@ -278,13 +285,17 @@ static void sample_piece(void *context, size_t cell, uint32_t t,
                     b[2] * cv->k1[tri[2]];
         double k2 = b[0] * cv->k2[tri[0]] + b[1] * cv->k2[tri[1]] +
                     b[2] * cv->k2[tri[2]];
-        s->k1_any = fmax(s->k1_any, k1);
-        s->k2_any = fmin(s->k2_any, k2);
+        if (k1 > s->k1_any)
+            s->k1_any = k1;
+        if (k2 < s->k2_any)
+            s->k2_any = k2;
         /* The paper's samples: mesh vertices inside the cell and points
          * where the cell's border cuts a mesh edge (one barycentric 0). */
-        if (fmin(b[0], fmin(b[1], b[2])) <= 1e-12) {
-            s->k1_edge = fmax(s->k1_edge, k1);
-            s->k2_edge = fmin(s->k2_edge, k2);
+        if (b[0] <= 1e-12 || b[1] <= 1e-12 || b[2] <= 1e-12) {
+            if (k1 > s->k1_edge)
+                s->k1_edge = k1;
+            if (k2 < s->k2_edge)
+                s->k2_edge = k2;
             s->edge_samples++;
         }
         for (int x = 0; x < 3; x++)
@@ -482,6 +493,8 @@ int panels_build(const struct mesh *mesh, const struct uv_index *index,
         }
         s->k1_edge = s->k1_any = -INFINITY;
         s->k2_edge = s->k2_any = INFINITY;
+        measure_corners(&grid, panel);
+        s->need_outline = panel->trimmed || panel->ncorners < 4;
     }
 
     walk_pieces(&grid, sample_piece, &pc);
@@ -500,8 +513,7 @@ int panels_build(const struct mesh *mesh, const struct uv_index *index,
             panel->k1 = s->k1_any;
             panel->k2 = s->k2_any;
         }
-        measure_corners(&grid, panel);
-        if (panel->ncorners == 4 && !panel->trimmed) {
+        if (!s->need_outline) {
             panel->diameter = fmax(distance(panel->corner[0],
                                             panel->corner[2]),
                                    distance(panel->corner[1],

@@ -8,3 +8,6 @@ build=${1:?usage: tests/bench/run.sh BUILD_DIR}
 cd "$(dirname "$0")/../.."
 echo "== OBJ loader: Facet's obj_load against Debian's tinyobjloader (1M triangles)"
 tests/bench/bench_obj.sh "$build"
+echo
+echo "== One design option: a 37x49 evaluation of the 100k-triangle roof"
+"$build/bench/bench_classify"

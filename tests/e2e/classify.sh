@@ -79,7 +79,17 @@ json_check "hemisphere: trimmed panels add up to its area" \
 expect "bubble roof (no vt)" 0 "$FACET" classify "$FACET_DATA/botanic-garden-bubble-0.obj" --grid 20x20 --json
 expect "igloo (vt)" 0 "$FACET" classify "$FACET_DATA/igloo.obj" --grid 20x20 --json
 
+# A torus section without vt folds when projected: the harmonic map.
+"$FACET" example torus --res 60 -o "$WORK/torus.obj" || exit 1
+grep -v '^vt' "$WORK/torus.obj" | sed -E 's#/[0-9]+##g' >"$WORK/torus-novt.obj"
+expect "torus without vt" 0 "$FACET" classify "$WORK/torus-novt.obj" --grid 10x12 --json
+json_check "harmonic parameterization, every panel, areas add up" \
+    'j["surface"]["uv"]=="harmonic" and j["totals"]["panels"]==120 and abs(j["totals"]["area"]-j["surface"]["area"]) < 1e-9*j["surface"]["area"]'
+expect "conical roof (no vt)" 0 "$FACET" classify "$FACET_DATA/conical1.obj" --grid 10x10 --json
+json_check "conical roof gets a UV map" 'j["surface"]["uv"] in ("plane","harmonic") and j["totals"]["panels"] > 50'
+
 # Bad input.
+expect_error "unknown units" "units 'yard'" "$FACET" classify "$WORK/roof.obj" --grid 5x5 --units yard
 expect_error "no grid" 'grid' "$FACET" classify "$WORK/roof.obj"
 expect_error "malformed grid" "'37by49' is not NUxNV" "$FACET" classify "$WORK/roof.obj" --grid 37by49
 expect_error "absurd grid" 'out of range' "$FACET" classify "$WORK/roof.obj" --grid 100000x5

@@ -388,7 +388,7 @@ static void test_cylinder(void **state)
     release(&mesh, &c);
 }
 
-/* torus: R 20, r 6, outer half. At tube angle q, the tube curvature is
+/* torus: R 20, r 6, tube angles -135 to 135 degrees. At tube angle q, the tube curvature is
  * -1/r and the other -cos q / (R + r cos q), both for the outward normal.
  * The latter passes through zero at the top and bottom of the tube, so it
  * is measured against no less than a tenth of 1/r. */

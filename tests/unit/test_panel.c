@@ -151,6 +151,81 @@ static void test_cylinder_deviation(void **state)
     surface_close(&s);
 }
 
+/* Below the sagitta every cylinder panel is ruled and SP; once the
+ * threshold exceeds the largest deviation, every panel is FP. */
+static void test_cylinder_threshold(void **state)
+{
+    (void)state;
+    struct surface s;
+    open_example("cylinder", 0, &s);
+    struct panelization p;
+    struct option_totals t;
+    evaluate(&s, 12, 10, 0.0001, &p, &t);
+    assert_int_equal(t.count[TYPE_SP], p.npanels);
+    for (size_t n = 0; n < p.npanels; n++)
+        assert_int_equal(p.panels[n].class, CLASS_RULED_CONVEX);
+    double largest = t.max_deviation;
+    panelization_free(&p);
+    evaluate(&s, 12, 10, largest * 1.001, &p, &t);
+    assert_int_equal(t.count[TYPE_FP], p.npanels);
+    assert_true(fabs(t.cost - 701 * t.area) < 1e-6 * t.cost);
+    panelization_free(&p);
+    surface_close(&s);
+}
+
+/* The torus section: round where the tube faces out, feature-curve where
+ * it faces the axis (K < 0). */
+static void test_torus_outside_and_inside(void **state)
+{
+    (void)state;
+    struct surface s;
+    open_example("torus", 0, &s);
+    struct panelization p;
+    struct option_totals t;
+    evaluate(&s, 10, 12, 0.003, &p, &t);
+    size_t outside = 0, inside = 0;
+    for (size_t n = 0; n < p.npanels; n++) {
+        const struct panel *panel = &p.panels[n];
+        const double *c = panel->centroid;
+        double q = atan2(c[2], hypot(c[0], c[1]) - 20);
+        if (cos(q) > 0.3) {
+            assert_int_equal(panel->class, CLASS_CONVEX_ROUND);
+            outside++;
+        } else if (cos(q) < -0.3) {
+            assert_true(panel->class == CLASS_CONVEX_FEATURE_CURVE ||
+                        panel->class == CLASS_CONCAVE_FEATURE_CURVE);
+            assert_true(panel->K < 0);
+            inside++;
+        }
+    }
+    assert_true(outside > 0 && inside > 0);
+    panelization_free(&p);
+    surface_close(&s);
+}
+
+/* Refining the mesh moves triangle edges across panel borders; panel
+ * areas must not care (within 0.5 %). */
+static void test_refinement_keeps_areas(void **state)
+{
+    (void)state;
+    struct surface coarse, fine;
+    open_example("roof", 100, &coarse);
+    open_example("roof", 173, &fine);
+    struct panelization a, b;
+    struct option_totals ta, tb;
+    evaluate(&coarse, 37, 49, 0.003, &a, &ta);
+    evaluate(&fine, 37, 49, 0.003, &b, &tb);
+    assert_int_equal(a.npanels, b.npanels);
+    for (size_t n = 0; n < a.npanels; n++)
+        assert_true(fabs(a.panels[n].area - b.panels[n].area) <
+                    0.005 * b.panels[n].area);
+    assert_true(fabs(ta.area - tb.area) < 0.005 * tb.area);
+    panelization_free(&a);
+    panelization_free(&b);
+    surface_close(&coarse);
+    surface_close(&fine);
+}
+
 static void test_dome_is_round_and_convex(void **state)
 {
     (void)state;
@@ -195,6 +270,16 @@ static void test_hypar_feature_curves(void **state)
         }
     }
     assert_true(convex > 0 && concave > 0);
+    /* For z = xy/20, H has the sign of -xy: convex where x y > 0. */
+    for (size_t n = 0; n < p.npanels; n++) {
+        const double *c = p.panels[n].centroid;
+        if (fabs(c[0]) < 2 || fabs(c[1]) < 2 ||
+            p.panels[n].class == CLASS_SADDLE)
+            continue;
+        assert_int_equal(p.panels[n].class, c[0] * c[1] > 0
+                                                ? CLASS_CONVEX_FEATURE_CURVE
+                                                : CLASS_CONCAVE_FEATURE_CURVE);
+    }
 
     /* Forcing k1 = 0 on two panels makes them ruled. */
     p.panels[3].k1 = 0;
@@ -254,6 +339,9 @@ int main(void)
         cmocka_unit_test(test_plane_panels),
         cmocka_unit_test(test_areas_add_up),
         cmocka_unit_test(test_cylinder_deviation),
+        cmocka_unit_test(test_cylinder_threshold),
+        cmocka_unit_test(test_torus_outside_and_inside),
+        cmocka_unit_test(test_refinement_keeps_areas),
         cmocka_unit_test(test_dome_is_round_and_convex),
         cmocka_unit_test(test_hypar_feature_curves),
         cmocka_unit_test(test_roof_has_every_type),
