@@ -45,6 +45,7 @@
 
 #include "curvature.h"
 #include "linalg.h"
+#include "vec3.h"
 
 enum {
     RINGS_INTERIOR = 2,     /* rings gathered at least, interior vertex */
@@ -81,31 +82,6 @@ struct jet {
     double fx, fy, fxx, fxy, fyy;
 };
 
-static double dot3(const double *a, const double *b)
-{
-    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-
-static void cross3(const double *a, const double *b, double *out)
-{
-    out[0] = a[1] * b[2] - a[2] * b[1];
-    out[1] = a[2] * b[0] - a[0] * b[2];
-    out[2] = a[0] * b[1] - a[1] * b[0];
-}
-
-/* Scales v to unit length in place; returns 0 (leaving v alone) when its
- * length is zero or not finite. */
-static int normalize3(double *v)
-{
-    double len = sqrt(dot3(v, v));
-    if (!(len > 0) || !isfinite(len))
-        return 0;
-    v[0] /= len;
-    v[1] /= len;
-    v[2] /= len;
-    return 1;
-}
-
 /* Completes the unit vector f->n into a right-handed orthonormal frame. */
 static void frame_complete(struct frame *f)
 {
@@ -113,9 +89,9 @@ static void frame_complete(struct frame *f)
     double axis[3] = {0, 0, 0};
     double ax = fabs(f->n[0]), ay = fabs(f->n[1]), az = fabs(f->n[2]);
     axis[ax <= ay && ax <= az ? 0 : (ay <= az ? 1 : 2)] = 1;
-    cross3(f->n, axis, f->t1);
-    normalize3(f->t1);
-    cross3(f->n, f->t1, f->t2);
+    vec3_cross(f->n, axis, f->t1);
+    vec3_normalize(f->t1);
+    vec3_cross(f->n, f->t1, f->t2);
 }
 
 /* The initial unit normal of vertex v into n: the sum of its corner normals
@@ -137,7 +113,7 @@ static int vertex_normal(const struct mesh *mesh, uint32_t v, double *n)
                             n[r] += c[r];
                 }
         }
-        if (normalize3(n))
+        if (vec3_normalize(n))
             return 1;
         n[0] = n[1] = n[2] = 0;  /* vn cancel out: use the winding */
     }
@@ -156,15 +132,15 @@ static int vertex_normal(const struct mesh *mesh, uint32_t v, double *n)
             ea[r] = a[r] - p[r];
             eb[r] = b[r] - p[r];
         }
-        cross3(ea, eb, face);
-        if (!normalize3(face) || !normalize3(ea) || !normalize3(eb))
+        vec3_cross(ea, eb, face);
+        if (!vec3_normalize(face) || !vec3_normalize(ea) || !vec3_normalize(eb))
             continue;
-        double c = dot3(ea, eb);
+        double c = vec3_dot(ea, eb);
         double angle = acos(c < -1 ? -1 : (c > 1 ? 1 : c));
         for (int r = 0; r < 3; r++)
             n[r] += angle * face[r];
     }
-    if (normalize3(n))
+    if (vec3_normalize(n))
         return 1;
     n[0] = n[1] = n[2] = 0;
     return 0;
@@ -226,7 +202,7 @@ static int fit(const struct mesh *mesh, const uint32_t *points, size_t count,
     for (size_t i = 1; i < count; i++) {
         const double *p = mesh->position + 3 * (size_t)points[i];
         double d[3] = {p[0] - c[0], p[1] - c[1], p[2] - c[2]};
-        double r2 = dot3(d, d);
+        double r2 = vec3_dot(d, d);
         if (r2 > radius2)
             radius2 = r2;
     }
@@ -242,10 +218,10 @@ static int fit(const struct mesh *mesh, const uint32_t *points, size_t count,
     for (size_t i = 1; i < count; i++) {
         const double *p = mesh->position + 3 * (size_t)points[i];
         double d[3] = {p[0] - c[0], p[1] - c[1], p[2] - c[2]};
-        double x = dot3(d, f->t1) / radius;
-        double y = dot3(d, f->t2) / radius;
-        double z = dot3(d, f->n) / radius;
-        double w = exp(-WEIGHT_SHARPNESS * dot3(d, d) / radius2);
+        double x = vec3_dot(d, f->t1) / radius;
+        double y = vec3_dot(d, f->t2) / radius;
+        double z = vec3_dot(d, f->n) / radius;
+        double w = exp(-WEIGHT_SHARPNESS * vec3_dot(d, d) / radius2);
         double m[TERMS_MAX] = {x * x, x * y, y * y, x, y,
                                x * x * x, x * x * y, x * y * y, y * y * y};
         for (int r = 0; r < nterms_max; r++) {
@@ -286,7 +262,7 @@ static void graph_normal(const struct frame *f, const struct jet *jet,
 {
     for (int r = 0; r < 3; r++)
         n[r] = f->n[r] - jet->fx * f->t1[r] - jet->fy * f->t2[r];
-    normalize3(n);  /* length >= 1: always succeeds for finite jet */
+    vec3_normalize(n);  /* length >= 1: always succeeds for finite jet */
 }
 
 /* Principal curvatures and directions of the graph of jet at the origin of
@@ -306,14 +282,14 @@ static void shape_operator(const struct frame *f, const struct jet *jet,
     }
     for (int r = 0; r < 3; r++)
         e1[r] = xu[r];
-    normalize3(e1);
-    cross3(n, e1, e2);
+    vec3_normalize(e1);
+    vec3_cross(n, e1, e2);
 
     /* A maps parameter vectors to coordinates in the orthonormal basis
      * (e1, e2): A = [[a11, a12], [0, a22]]. The second fundamental form
      * in that basis is A^-T II A^-1, with II = [[fxx, fxy], [fxy, fyy]] / W
      * and W = sqrt(1 + fx^2 + fy^2). */
-    double a11 = dot3(e1, xu), a12 = dot3(e1, xv), a22 = dot3(e2, xv);
+    double a11 = vec3_dot(e1, xu), a12 = vec3_dot(e1, xv), a22 = vec3_dot(e2, xv);
     double w = sqrt(1 + jet->fx * jet->fx + jet->fy * jet->fy);
     double l = jet->fxx / w, m = jet->fxy / w, nn = jet->fyy / w;
     /* B = inv^T II inv, inv = A^-1 = [[i11, i12], [0, i22]]. */
@@ -350,7 +326,7 @@ static void store_flat(struct curvature *out, uint32_t v, const double *n0)
 {
     struct frame f;
     memcpy(f.n, n0, sizeof f.n);
-    if (!normalize3(f.n)) {
+    if (!vec3_normalize(f.n)) {
         f.n[0] = f.n[1] = 0;
         f.n[2] = 1;
     }
@@ -406,8 +382,8 @@ static void vertex_curvature(const struct mesh *mesh, uint32_t v,
 
     double k1, k2, d1[3], d2[3], n[3];
     shape_operator(&f, &jet, &k1, &k2, d1, d2, n);
-    if (!isfinite(k1) || !isfinite(k2) || !isfinite(dot3(d1, d1)) ||
-        !isfinite(dot3(d2, d2)) || !isfinite(dot3(n, n))) {
+    if (!isfinite(k1) || !isfinite(k2) || !isfinite(vec3_dot(d1, d1)) ||
+        !isfinite(vec3_dot(d2, d2)) || !isfinite(vec3_dot(n, n))) {
         store_flat(out, v, f.n);
         return;
     }

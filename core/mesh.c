@@ -15,6 +15,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "vec3.h"
+
 double mesh_units_scale(enum mesh_units u)
 {
     switch (u) {
@@ -86,15 +88,7 @@ static int unknown_name(const char *kind, const char *name,
                         struct facet_error *err)
 {
     char list[240];
-    size_t used = 0;
-    list[0] = '\0';
-    for (size_t i = 1; i < count && used + 1 < sizeof list; i++) {
-        int n = snprintf(list + used, sizeof list - used, "%s%s",
-                         used ? ", " : "", names[i].text);
-        if (n < 0)
-            break;
-        used += (size_t)n;
-    }
+    obj_names_list(names, count, list, sizeof list);
     if (count <= 1)
         return facet_error_set(err, FACET_EINPUT,
             "no %s named '%s' (the file has no %s names)", kind, name, kind);
@@ -444,14 +438,10 @@ int mesh_build(const struct obj_file *obj, const struct mesh_options *options,
         const double *q = out->position + 3 * (size_t)b;
         const double *r = out->position + 3 * (size_t)d;
         double e1[3], e2[3], cr[3];
-        for (int x = 0; x < 3; x++) {
-            e1[x] = q[x] - p[x];
-            e2[x] = r[x] - p[x];
-        }
-        cr[0] = e1[1] * e2[2] - e1[2] * e2[1];
-        cr[1] = e1[2] * e2[0] - e1[0] * e2[2];
-        cr[2] = e1[0] * e2[1] - e1[1] * e2[0];
-        double length = sqrt(cr[0] * cr[0] + cr[1] * cr[1] + cr[2] * cr[2]);
+        vec3_sub(q, p, e1);
+        vec3_sub(r, p, e2);
+        vec3_cross(e1, e2, cr);
+        double length = vec3_length(cr);
         out->face_area[n] = 0.5 * length;
         out->area += 0.5 * length;
         for (int x = 0; x < 3; x++)

@@ -880,3 +880,19 @@ void obj_free(struct obj_file *obj)
     free_names(obj->mtllibs, obj->nmtllibs);
     memset(obj, 0, sizeof *obj);
 }
+
+void obj_names_list(const struct obj_name *names, size_t count, char *text,
+                    size_t size)
+{
+    size_t used = 0;
+    text[0] = '\0';
+    for (size_t i = 1; i < count && used + 1 < size; i++) {
+        int n = snprintf(text + used, size - used, "%s%s", used ? ", " : "",
+                         names[i].text);
+        if (n < 0)
+            break;
+        used += (size_t)n;
+    }
+    if (used >= size && size > 4)
+        strcpy(text + size - 4, "...");
+}

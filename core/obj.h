@@ -90,4 +90,9 @@ int obj_parse(const char *text, size_t length, const char *name,
 /* Frees everything obj_load or obj_parse allocated and zeroes *obj. */
 void obj_free(struct obj_file *obj);
 
+/* Writes the names of a table, skipping the unnamed entry 0, into text
+ * (size bytes) as "a, b, c", ending in "..." when they do not fit. */
+void obj_names_list(const struct obj_name *names, size_t count, char *text,
+                    size_t size);
+
 #endif

@@ -15,6 +15,7 @@
 #include <string.h>
 
 #include "sym3.h"
+#include "vec3.h"
 
 /* A vertex of a clipped piece: its UV and its barycentric coordinates in
  * the triangle it was cut from (which carry 3D position and curvature). */
@@ -178,18 +179,6 @@ static void piece_point(const struct mesh *mesh, uint32_t t,
                  p->b[2] * mesh->position[3 * tri[2] + k];
 }
 
-static void cross(const double a[3], const double b[3], double out[3])
-{
-    out[0] = a[1] * b[2] - a[2] * b[1];
-    out[1] = a[2] * b[0] - a[0] * b[2];
-    out[2] = a[0] * b[1] - a[1] * b[0];
-}
-
-static double dot(const double a[3], const double b[3])
-{
-    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-
 struct pass_context {
     const struct grid_walk *grid;
     const struct curvature *curvature;
@@ -225,8 +214,8 @@ static void sum_moments(void *context, size_t cell, uint32_t t,
             ab[x] = b[x] - a[x];
             ac[x] = c[x] - a[x];
         }
-        cross(ab, ac, n);
-        double area = 0.5 * sqrt(dot(n, n));
+        vec3_cross(ab, ac, n);
+        double area = 0.5 * sqrt(vec3_dot(n, n));
         double uv_area = 0.5 * fabs((piece[k].u - piece[0].u) *
                                     (piece[k + 1].v - piece[0].v) -
                                     (piece[k + 1].u - piece[0].u) *
@@ -265,11 +254,11 @@ static void sample_piece(void *context, size_t cell, uint32_t t,
         piece_point(mesh, t, &piece[k], p);
         for (int x = 0; x < 3; x++)
             d[x] = p[x] - panel->centroid[x];
-        double distance = fabs(dot(d, panel->normal));
+        double distance = fabs(vec3_dot(d, panel->normal));
         if (distance > panel->deviation)
             panel->deviation = distance;
         for (int e = 0; s->need_outline && e < 13; e++) {
-            double along = dot(p, extent_direction[e]);
+            double along = vec3_dot(p, extent_direction[e]);
             if (along < s->extreme_low[e]) {
                 s->extreme_low[e] = along;
                 memcpy(s->extreme_low_point[e], p, sizeof p);
@@ -316,8 +305,8 @@ static void sample_piece(void *context, size_t cell, uint32_t t,
                 ab[x] = bb[x] - a[x];
                 ac[x] = c[x] - a[x];
             }
-            cross(ab, ac, n);
-            piece_area += 0.5 * sqrt(dot(n, n));
+            vec3_cross(ab, ac, n);
+            piece_area += 0.5 * sqrt(vec3_dot(n, n));
         }
         for (int corner = 0; corner < 3; corner++) {
             uint32_t v = tri[corner];
@@ -355,7 +344,7 @@ static void mean_curvature_of(const struct cell_sums *s, struct panel *panel)
     int normal_k = 0;
     double best = -1;
     for (int k = 0; k < 3; k++) {
-        double along = fabs(dot(vector[k], panel->normal));
+        double along = fabs(vec3_dot(vector[k], panel->normal));
         if (along > best) {
             best = along;
             normal_k = k;
@@ -368,12 +357,6 @@ static void mean_curvature_of(const struct cell_sums *s, struct panel *panel)
             kept[n++] = value[k];
     panel->k1 = fmax(kept[0], kept[1]);
     panel->k2 = fmin(kept[0], kept[1]);
-}
-
-static double distance(const double a[3], const double b[3])
-{
-    double d[3] = {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
-    return sqrt(dot(d, d));
 }
 
 /* Locates the cell corners on the surface and measures the quad. */
@@ -405,9 +388,9 @@ static void measure_corners(const struct grid_walk *g, struct panel *panel)
             d2[x] = panel->corner[3][x] - panel->corner[1][x];
             w[x] = panel->corner[1][x] - panel->corner[0][x];
         }
-        cross(d1, d2, n);
-        double length = sqrt(dot(n, n));
-        panel->corner_planarity = length > 0 ? fabs(dot(w, n)) / length : 0;
+        vec3_cross(d1, d2, n);
+        double length = sqrt(vec3_dot(n, n));
+        panel->corner_planarity = length > 0 ? fabs(vec3_dot(w, n)) / length : 0;
     }
 }
 
@@ -482,7 +465,7 @@ int panels_build(const struct mesh *mesh, const struct uv_index *index,
                                         mean[r] * mean[q];
         sym3_eigen(covariance, value, vector);
         memcpy(panel->normal, vector[0], sizeof panel->normal);
-        if (dot(panel->normal, s->normal_sum) < 0)
+        if (vec3_dot(panel->normal, s->normal_sum) < 0)
             for (int x = 0; x < 3; x++)
                 panel->normal[x] = -panel->normal[x];
         panel->p_dist = fmax(value[0], 0) * s->area;
@@ -514,19 +497,19 @@ int panels_build(const struct mesh *mesh, const struct uv_index *index,
             panel->k2 = s->k2_any;
         }
         if (!s->need_outline) {
-            panel->diameter = fmax(distance(panel->corner[0],
+            panel->diameter = fmax(vec3_distance(panel->corner[0],
                                             panel->corner[2]),
-                                   distance(panel->corner[1],
+                                   vec3_distance(panel->corner[1],
                                             panel->corner[3]));
         } else {
             double diameter = 0;
             for (int a = 0; a < 13; a++)
                 for (int b = 0; b < 13; b++) {
                     diameter = fmax(diameter,
-                        distance(s->extreme_low_point[a],
+                        vec3_distance(s->extreme_low_point[a],
                                  s->extreme_high_point[b]));
                     diameter = fmax(diameter,
-                        distance(s->extreme_low_point[a],
+                        vec3_distance(s->extreme_low_point[a],
                                  s->extreme_low_point[b]));
                 }
             panel->diameter = diameter;

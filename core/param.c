@@ -8,6 +8,7 @@
 #include <string.h>
 
 #include "sym3.h"
+#include "vec3.h"
 
 #define PI 3.14159265358979323846
 
@@ -100,10 +101,8 @@ static double *plane_projection(const struct mesh *mesh)
 
 static double edge_length(const struct mesh *mesh, uint32_t a, uint32_t b)
 {
-    const double *p = mesh->position + 3 * (size_t)a;
-    const double *q = mesh->position + 3 * (size_t)b;
-    return sqrt((p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) +
-                (p[2] - q[2]) * (p[2] - q[2]));
+    return vec3_distance(mesh->position + 3 * (size_t)a,
+                         mesh->position + 3 * (size_t)b);
 }
 
 /* The angle of triangle t at its corner k (radians). */
@@ -114,15 +113,10 @@ static double corner_angle(const struct mesh *mesh, size_t t, int k)
     const double *b = mesh->position + 3 * (size_t)tri[(k + 1) % 3];
     const double *c = mesh->position + 3 * (size_t)tri[(k + 2) % 3];
     double ab[3], ac[3], n[3];
-    for (int x = 0; x < 3; x++) {
-        ab[x] = b[x] - a[x];
-        ac[x] = c[x] - a[x];
-    }
-    n[0] = ab[1] * ac[2] - ab[2] * ac[1];
-    n[1] = ab[2] * ac[0] - ab[0] * ac[2];
-    n[2] = ab[0] * ac[1] - ab[1] * ac[0];
-    return atan2(sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]),
-                 ab[0] * ac[0] + ab[1] * ac[1] + ab[2] * ac[2]);
+    vec3_sub(b, a, ab);
+    vec3_sub(c, a, ac);
+    vec3_cross(ab, ac, n);
+    return atan2(vec3_length(n), vec3_dot(ab, ac));
 }
 
 /* Places the boundary loop on a rectangle when it has four clear corners

@@ -22,23 +22,6 @@ static void warn(struct surface *surface, const char *fmt, ...)
     va_end(ap);
 }
 
-/* Writes the names of a table (skipping the unnamed entry 0) into text. */
-static void list_names(const struct obj_name *names, size_t count,
-                       char *text, size_t size)
-{
-    size_t used = 0;
-    text[0] = '\0';
-    for (size_t i = 1; i < count && used + 1 < size; i++) {
-        int n = snprintf(text + used, size - used, "%s%s",
-                         used ? ", " : "", names[i].text);
-        if (n < 0)
-            break;
-        used += (size_t)n;
-    }
-    if (used >= size && size > 4)
-        strcpy(text + size - 4, "...");
-}
-
 int surface_open(const char *path, const struct mesh_options *options,
                  struct surface *out, struct facet_error *err)
 {
@@ -65,13 +48,13 @@ int surface_open(const char *path, const struct mesh_options *options,
     if (!out->selected && out->mesh.ncomponents > 1) {
         char names[200];
         if (out->obj.nobjects > 2) {
-            list_names(out->obj.objects, out->obj.nobjects, names,
+            obj_names_list(out->obj.objects, out->obj.nobjects, names,
                        sizeof names);
             warn(out, "the file holds %zu separate surfaces; objects: %s "
                  "(select one with --object NAME)",
                  out->mesh.ncomponents, names);
         } else if (out->obj.ngroups > 2) {
-            list_names(out->obj.groups, out->obj.ngroups, names,
+            obj_names_list(out->obj.groups, out->obj.ngroups, names,
                        sizeof names);
             warn(out, "the file holds %zu separate surfaces; groups: %s "
                  "(select one with --group NAME)",
@@ -98,7 +81,7 @@ int surface_require_single(const struct surface *surface,
         return FACET_OK;
     char names[200];
     if (surface->obj.nobjects > 2) {
-        list_names(surface->obj.objects, surface->obj.nobjects, names,
+        obj_names_list(surface->obj.objects, surface->obj.nobjects, names,
                    sizeof names);
         return facet_error_set(err, FACET_EINPUT,
             "%s holds %zu separate surfaces; select one with --object NAME "
@@ -106,7 +89,7 @@ int surface_require_single(const struct surface *surface,
             names);
     }
     if (surface->obj.ngroups > 2) {
-        list_names(surface->obj.groups, surface->obj.ngroups, names,
+        obj_names_list(surface->obj.groups, surface->obj.ngroups, names,
                    sizeof names);
         return facet_error_set(err, FACET_EINPUT,
             "%s holds %zu separate surfaces; select one with --group NAME "

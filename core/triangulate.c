@@ -17,6 +17,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "vec3.h"
+
 void triangulate_scratch_free(struct triangulate_scratch *scratch)
 {
     free(scratch->plane);
@@ -100,13 +102,6 @@ static void fan(uint32_t *triangle, size_t n)
         put_triangle(triangle, &count, 0, (uint32_t)k, (uint32_t)(k + 1));
 }
 
-static void cross(const double *u, const double *v, double out[3])
-{
-    out[0] = u[1] * v[2] - u[2] * v[1];
-    out[1] = u[2] * v[0] - u[0] * v[2];
-    out[2] = u[0] * v[1] - u[1] * v[0];
-}
-
 void triangulate_quad(const double *a, const double *b, const double *c,
                       const double *d, uint32_t *triangle)
 {
@@ -119,11 +114,11 @@ void triangulate_quad(const double *a, const double *b, const double *c,
         diagonal_ac[k] = c[k] - a[k];
         diagonal_bd[k] = d[k] - b[k];
     }
-    cross(diagonal_ac, diagonal_bd, normal);  /* the quad's Newell normal */
+    vec3_cross(diagonal_ac, diagonal_bd, normal);  /* the quad's Newell normal */
     int reflex = 0, nreflex = 0;
     for (int i = 0; i < 4; i++) {
         double turn3[3];
-        cross(edge[(i + 3) % 4], edge[i], turn3);
+        vec3_cross(edge[(i + 3) % 4], edge[i], turn3);
         if (!(turn3[0] * normal[0] + turn3[1] * normal[1] +
               turn3[2] * normal[2] > 0)) {
             reflex = i;

@@ -1,0 +1,60 @@
+/*
+ * vec3.h: the few 3-vector operations the geometry code shares.
+ *
+ * Vectors are plain double[3] (m, or unitless for directions). Inline so
+ * that inner loops pay nothing for the call.
+ */
+#ifndef FACET_VEC3_H
+#define FACET_VEC3_H
+
+#include <math.h>
+
+static inline double vec3_dot(const double a[3], const double b[3])
+{
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+/* out = a x b; out may not alias a or b. */
+static inline void vec3_cross(const double a[3], const double b[3],
+                              double out[3])
+{
+    out[0] = a[1] * b[2] - a[2] * b[1];
+    out[1] = a[2] * b[0] - a[0] * b[2];
+    out[2] = a[0] * b[1] - a[1] * b[0];
+}
+
+/* out = a - b. */
+static inline void vec3_sub(const double a[3], const double b[3],
+                            double out[3])
+{
+    out[0] = a[0] - b[0];
+    out[1] = a[1] - b[1];
+    out[2] = a[2] - b[2];
+}
+
+static inline double vec3_length(const double a[3])
+{
+    return sqrt(vec3_dot(a, a));
+}
+
+static inline double vec3_distance(const double a[3], const double b[3])
+{
+    double d[3];
+    vec3_sub(a, b, d);
+    return vec3_length(d);
+}
+
+/* Scales v to unit length in place; returns 0 (leaving v alone) when its
+ * length is zero or not finite, 1 otherwise. */
+static inline int vec3_normalize(double v[3])
+{
+    double length = vec3_length(v);
+    if (!(length > 0) || !isfinite(length))
+        return 0;
+    v[0] /= length;
+    v[1] /= length;
+    v[2] /= length;
+    return 1;
+}
+
+#endif
