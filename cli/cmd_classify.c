@@ -34,26 +34,6 @@ static int parse_grid(const char *text, int *nu, int *nv,
     return FACET_OK;
 }
 
-/* Parses "701,766,1518" into the three prices. */
-static int parse_prices(const char *text, double price[TYPE_COUNT],
-                        struct facet_error *err)
-{
-    char copy[128];
-    if (snprintf(copy, sizeof copy, "%s", text) >= (int)sizeof copy)
-        return facet_error_set(err, FACET_EINPUT, "--prices: too long");
-    char *rest = copy;
-    for (int t = 0; t < TYPE_COUNT; t++) {
-        char *field = strsep(&rest, ",");
-        if (field == NULL || (t == TYPE_COUNT - 1 && rest != NULL))
-            return facet_error_set(err, FACET_EINPUT,
-                "--prices: '%s' is not FP,SP,DP (e.g. 701,766,1518)", text);
-        int rc = args_double(field, 0, 1e9, "--prices", &price[t], err);
-        if (rc != FACET_OK)
-            return rc;
-    }
-    return FACET_OK;
-}
-
 static int terminal_width(void)
 {
     struct winsize size;
@@ -236,7 +216,7 @@ static int classify_run(int argc, char **argv, struct facet_error *err)
             return facet_error_set(err, FACET_EINPUT,
                 "--per-panel: '%s' is not extremes or mean", per_panel);
     }
-    if (prices && (rc = parse_prices(prices, params.classify.price, err)))
+    if (prices && (rc = args_parse_prices(prices, params.classify.price, err)))
         return rc;
     params.classify.sp_as_fp = sp_as_fp;
     if (max_area) {

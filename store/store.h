@@ -1,0 +1,177 @@
+/*
+ * store.h: the SQLite result store. Every SQL string of Facet is in store/.
+ *
+ * One file holds any number of runs. A run records what produced it; every
+ * design option it evaluated is a row with its variables and metrics; the
+ * panels of the options a designer looks at (every Pareto option, and any
+ * other on demand) are stored too. The schema is versioned (application_id,
+ * user_version), in WAL mode with foreign keys on and a busy timeout, so a
+ * reader (the TUI, sqlite3) and the writer coexist. README.md documents
+ * every table and column.
+ *
+ * Ownership: store_open returns a handle the caller releases with
+ * store_close. Arrays a store_* function returns are malloc'ed and owned by
+ * the caller (free(), or the named _free function).
+ */
+#ifndef FACET_STORE_H
+#define FACET_STORE_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "core/classify.h"
+#include "core/error.h"
+#include "core/panel.h"
+
+struct store;  /* an open database */
+
+/* What produced a run, and how it went. Text fields are NUL-terminated. */
+struct run_info {
+    int64_t id;
+    char name[128];
+    char surface_path[1024];
+    char surface_sha256[65];   /* hex digest of the OBJ file's bytes */
+    char units[4];             /* m, cm, mm, in, ft */
+    char method[16];           /* exhaustive, random, nsga2 */
+    uint64_t seed;
+    int u_min, u_max;          /* design space: grid sides */
+    int v_min, v_max;
+    double threshold_min_mm;   /* flatness threshold range (mm) */
+    double threshold_max_mm;
+    double threshold_step_mm;  /* 0 for a continuous range (nsga2, random) */
+    double price[TYPE_COUNT];  /* USD/m^2 of FP, SP, DP */
+    int sp_as_fp;
+    double max_panel_area;     /* m^2 */
+    double curvature_tol;      /* 1/m; 0 for 8 t / d^2 */
+    char per_panel[12];        /* extremes or mean */
+    int flip_normals;
+    char object[128];          /* --object, or "" */
+    char group[128];           /* --group, or "" */
+    char objectives[128];      /* e.g. "cost,planarity,dp_area" */
+    int population;            /* nsga2 */
+    int generations;           /* nsga2 */
+    int64_t evaluations;       /* random: --evals */
+    int jobs;
+    char version[16];          /* Facet's version */
+    char status[16];           /* running, done, interrupted, failed */
+    char started[32];          /* UTC, ISO 8601 */
+    char finished[32];         /* "" while running */
+    int64_t options;           /* options evaluated and stored */
+    double elapsed;            /* seconds of work */
+    int64_t writer_pid;        /* process writing it, while running */
+    char writer_host[64];
+    double hypervolume;        /* of the Pareto front, normalised; NaN if
+                                  not computed */
+    int64_t knee;              /* option number of the knee, or 0 */
+    int64_t pareto_options;    /* options of rank 1 */
+    double best_cost;          /* lowest cost of a feasible option (USD) */
+};
+
+/* One design option of a run: its variables and metrics. */
+struct option_row {
+    int64_t number;            /* No. within the run, 1-based */
+    int generation;            /* nsga2 generation, 0 otherwise */
+    int nu, nv;                /* grid */
+    double threshold_mm;       /* flatness threshold (mm) */
+    struct option_totals totals;
+    int rank;                  /* Pareto rank, 1 = on the front; 0 until
+                                  ranked */
+    double crowding;           /* crowding distance (INFINITY at the ends) */
+    int knee;                  /* 1 for the run's knee option */
+};
+
+/* Opens or creates the database at path. A new file gets the current
+ * schema; an older Facet schema is migrated; a file of another application,
+ * a newer schema, or a corrupt file is FACET_EINPUT with a message naming
+ * the file and what is wrong. Runs left "running" by a writer that is gone
+ * (same host, process not alive) are marked "interrupted". */
+int store_open(const char *path, struct store **out, struct facet_error *err);
+void store_close(struct store *store);
+
+/* --- runs --- */
+
+/* Inserts run (id, started, status "running", writer pid/host are set here
+ * and written back into *run). */
+int store_run_create(struct store *store, struct run_info *run,
+                     struct facet_error *err);
+/* Fills *run for id; FACET_EINPUT when there is no such run. */
+int store_run_get(struct store *store, int64_t id, struct run_info *run,
+                  struct facet_error *err);
+/* Every run, by id; *runs is malloc'ed (free()). */
+int store_run_list(struct store *store, struct run_info **runs,
+                   size_t *count, struct facet_error *err);
+/* Sets status (and finished when not "running"), elapsed and the options
+ * count. Taking a run over for --resume: status "running" with this
+ * process as its writer. */
+int store_run_set_status(struct store *store, int64_t id, const char *status,
+                         double elapsed, struct facet_error *err);
+/* Deletes a run with its options and panels. */
+int store_run_delete(struct store *store, int64_t id,
+                     struct facet_error *err);
+
+/* --- options --- */
+
+/* Stores n options of run in one transaction (committed on return), and
+ * updates the run's options count. An option whose number is already
+ * stored is left as it is. */
+int store_options_put(struct store *store, int64_t run,
+                      const struct option_row *rows, size_t n,
+                      struct facet_error *err);
+/* Every option of run, by number; *rows malloc'ed (free()). */
+int store_options_get(struct store *store, int64_t run,
+                      struct option_row **rows, size_t *n,
+                      struct facet_error *err);
+/* Writes Pareto rank, crowding and the knee flag of every option given
+ * (numbers[k] gets rank[k], crowding[k]), and the run's hypervolume,
+ * knee, pareto_options and best_cost, in one transaction. */
+int store_options_set_pareto(struct store *store, int64_t run,
+                             const int64_t *numbers, const int *rank,
+                             const double *crowding, size_t n, int64_t knee,
+                             double hypervolume, struct facet_error *err);
+
+/* --- panels --- */
+
+/* Stores the panels of option number of run (replacing any stored). */
+int store_panels_put(struct store *store, int64_t run, int64_t option,
+                     const struct panelization *panels,
+                     struct facet_error *err);
+/* Whether panels of that option are stored (1) or not (0); < 0 on error. */
+int store_panels_exist(struct store *store, int64_t run, int64_t option,
+                       struct facet_error *err);
+/* Reads the stored panels back into *panels (nu, nv, cell_panel and the
+ * panel fields the panels table holds); release with panelization_free. */
+int store_panels_get(struct store *store, int64_t run, int64_t option,
+                     struct panelization *panels, struct facet_error *err);
+
+/* --- queries (facet options, the TUI) --- */
+
+/* A compiled --where expression: see filter.h. */
+struct filter;
+
+struct option_query {
+    int64_t run;               /* 0 = every run */
+    int pareto_only;           /* rank 1 only */
+    const struct filter *where;/* NULL = no filter */
+    const char *sort;          /* "cost,dp_area" (column names), NULL =
+                                  number */
+    int descending;
+    int64_t limit;             /* 0 = no limit */
+    int64_t offset;
+};
+
+/* Calls row(context, run, option) for each option that matches q, in
+ * order; stops early when row returns non-zero. Unknown sort columns are
+ * FACET_EINPUT naming the column and listing the valid ones. */
+int store_options_query(struct store *store, const struct option_query *q,
+                        int (*row)(void *context, int64_t run,
+                                   const struct option_row *option),
+                        void *context, struct facet_error *err);
+
+/* The option columns a filter or sort may name, NULL-terminated:
+ * number, generation, nu, nv, threshold_mm, panels, fp_count, sp_count,
+ * dp_count, fp_area, sp_area, dp_area, area, cost, planarity,
+ * max_deviation, max_panel_area, p_dist, feasible, rank, crowding, knee,
+ * run. */
+extern const char *const store_option_columns[];
+
+#endif
