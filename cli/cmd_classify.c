@@ -7,11 +7,10 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/ioctl.h>
-#include <unistd.h>
 
 #include "args.h"
 #include "command.h"
+#include "option_text.h"
 #include "core/option.h"
 #include "core/report.h"
 
@@ -34,56 +33,6 @@ static int parse_grid(const char *text, int *nu, int *nv,
     return FACET_OK;
 }
 
-static int terminal_width(void)
-{
-    struct winsize size;
-    if (ioctl(STDOUT_FILENO, TIOCGWINSZ, &size) == 0 && size.ws_col > 0)
-        return size.ws_col;
-    const char *columns = getenv("COLUMNS");
-    if (columns != NULL && atoi(columns) > 0)
-        return atoi(columns);
-    return 80;
-}
-
-static int use_colour(void)
-{
-    const char *term = getenv("TERM");
-    return isatty(STDOUT_FILENO) && getenv("NO_COLOR") == NULL &&
-           term != NULL && strcmp(term, "dumb") != 0;
-}
-
-/* The panel grid, one character per panel, v upwards: F, S, D by type. */
-static void print_map(const struct panelization *p)
-{
-    static const char letter[TYPE_COUNT] = {'F', 'S', 'D'};
-    static const char *const colour[TYPE_COUNT] = {
-        "\033[30;42m", "\033[30;43m", "\033[37;41m"};
-    int colours = use_colour();
-    if (p->nu + 4 > terminal_width()) {
-        printf("\n(panel map not shown: %d columns do not fit the "
-               "terminal)\n", p->nu);
-        return;
-    }
-    printf("\npanel map (u to the right, v upwards): F flat, S "
-           "single-curved, D double-curved, . no panel\n");
-    for (int j = p->nv - 1; j >= 0; j--) {
-        printf("  ");
-        for (int i = 0; i < p->nu; i++) {
-            int n = p->cell_panel[j * p->nu + i];
-            if (n < 0) {
-                putchar('.');
-                continue;
-            }
-            enum panel_type type = p->panels[n].type;
-            if (colours)
-                printf("%s%c\033[0m", colour[type], letter[type]);
-            else
-                putchar(letter[type]);
-        }
-        putchar('\n');
-    }
-}
-
 static void print_human(const struct surface *s,
                         const struct option_params *params,
                         const struct panelization *p,
@@ -103,28 +52,8 @@ static void print_human(const struct surface *s,
            o->price[TYPE_FP], o->price[TYPE_SP], o->price[TYPE_DP],
            o->sp_as_fp ? " (SP priced as FP)" : "");
 
-    printf("\n%-6s %8s %14s %8s %16s\n", "type", "panels", "area m^2",
-           "share", "cost USD");
-    for (int k = 0; k < TYPE_COUNT; k++)
-        printf("%-6s %8zu %14.3f %7.1f%% %16.2f\n",
-               panel_type_name((enum panel_type)k), t->count[k],
-               t->area_of[k], t->area > 0 ? 100 * t->area_of[k] / t->area : 0,
-               t->cost_of[k]);
-    printf("%-6s %8zu %14.3f %7.1f%% %16.2f\n", "total", t->panels, t->area,
-           100.0, t->cost);
-
-    printf("\n%-16s %.6f m (sum of FP and SP panel deviations)\n",
-           "planarity", t->planarity);
-    printf("%-16s %.3f mm\n", "max deviation", t->max_deviation * 1000);
-    printf("%-16s %.3f m^2 (limit %g: %s)\n", "max panel area",
-           t->max_panel_area, o->max_panel_area,
-           t->feasible ? "feasible" : "NOT feasible");
-
-    printf("\n%-22s %8s %14s\n", "class", "panels", "area m^2");
-    for (int c = 0; c < CLASS_COUNT; c++)
-        printf("%-22s %8zu %14.3f\n", panel_class_name((enum panel_class)c),
-               t->class_count[c], t->class_area[c]);
-    print_map(p);
+    option_text_totals(stdout, t, o);
+    option_text_map(stdout, p);
 }
 
 /* Writes the CSV schedule to path through path.partial, so that a failure

@@ -1,0 +1,86 @@
+/*
+ * option_text.c: totals tables and the panel map. See option_text.h.
+ */
+#include "option_text.h"
+
+#include <stdlib.h>
+#include <string.h>
+#include <sys/ioctl.h>
+#include <unistd.h>
+
+void option_text_totals(FILE *out, const struct option_totals *t,
+                        const struct classify_options *o)
+{
+    fprintf(out, "\n%-6s %8s %14s %8s %16s\n", "type", "panels", "area m^2",
+            "share", "cost USD");
+    for (int k = 0; k < TYPE_COUNT; k++)
+        fprintf(out, "%-6s %8zu %14.3f %7.1f%% %16.2f\n",
+                panel_type_name((enum panel_type)k), t->count[k],
+                t->area_of[k],
+                t->area > 0 ? 100 * t->area_of[k] / t->area : 0,
+                t->cost_of[k]);
+    fprintf(out, "%-6s %8zu %14.3f %7.1f%% %16.2f\n", "total", t->panels,
+            t->area, 100.0, t->cost);
+
+    fprintf(out, "\n%-16s %.6f m (sum of FP and SP panel deviations)\n",
+            "planarity", t->planarity);
+    fprintf(out, "%-16s %.3f mm\n", "max deviation", t->max_deviation * 1000);
+    fprintf(out, "%-16s %.3f m^2 (limit %g: %s)\n", "max panel area",
+            t->max_panel_area, o->max_panel_area,
+            t->feasible ? "feasible" : "NOT feasible");
+
+    fprintf(out, "\n%-22s %8s %14s\n", "class", "panels", "area m^2");
+    for (int c = 0; c < CLASS_COUNT; c++)
+        fprintf(out, "%-22s %8zu %14.3f\n",
+                panel_class_name((enum panel_class)c), t->class_count[c],
+                t->class_area[c]);
+}
+
+static int terminal_width(FILE *out)
+{
+    struct winsize size;
+    if (ioctl(fileno(out), TIOCGWINSZ, &size) == 0 && size.ws_col > 0)
+        return size.ws_col;
+    const char *columns = getenv("COLUMNS");
+    if (columns != NULL && atoi(columns) > 0)
+        return atoi(columns);
+    return 80;
+}
+
+static int use_colour(FILE *out)
+{
+    const char *term = getenv("TERM");
+    return isatty(fileno(out)) && getenv("NO_COLOR") == NULL &&
+           term != NULL && strcmp(term, "dumb") != 0;
+}
+
+void option_text_map(FILE *out, const struct panelization *p)
+{
+    static const char letter[TYPE_COUNT] = {'F', 'S', 'D'};
+    static const char *const colour[TYPE_COUNT] = {
+        "\033[30;42m", "\033[30;43m", "\033[37;41m"};
+    int colours = use_colour(out);
+    if (p->nu + 4 > terminal_width(out)) {
+        fprintf(out, "\n(panel map not shown: %d columns do not fit the "
+                "terminal)\n", p->nu);
+        return;
+    }
+    fprintf(out, "\npanel map (u to the right, v upwards): F flat, S "
+            "single-curved, D double-curved, . no panel\n");
+    for (int j = p->nv - 1; j >= 0; j--) {
+        fputs("  ", out);
+        for (int i = 0; i < p->nu; i++) {
+            int n = p->cell_panel[j * p->nu + i];
+            if (n < 0) {
+                fputc('.', out);
+                continue;
+            }
+            enum panel_type type = p->panels[n].type;
+            if (colours)
+                fprintf(out, "%s%c\033[0m", colour[type], letter[type]);
+            else
+                fputc(letter[type], out);
+        }
+        fputc('\n', out);
+    }
+}

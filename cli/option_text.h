@@ -1,0 +1,23 @@
+/*
+ * option_text.h: an evaluated option as a facade engineer reads it in a
+ * terminal: the totals per type, planarity, sizes and classes as aligned
+ * tables, and the panel map. Shared by `facet classify` and `facet show`.
+ */
+#ifndef FACET_OPTION_TEXT_H
+#define FACET_OPTION_TEXT_H
+
+#include <stdio.h>
+
+#include "core/classify.h"
+#include "core/panel.h"
+
+/* The totals tables: per type, planarity and sizes, per class. */
+void option_text_totals(FILE *out, const struct option_totals *totals,
+                        const struct classify_options *options);
+
+/* The panel grid, one character per panel (F, S, D, '.' for no panel), v
+ * upwards; coloured by type when out is stdout on a colour terminal; a
+ * note instead when the grid is wider than the terminal. */
+void option_text_map(FILE *out, const struct panelization *panels);
+
+#endif
