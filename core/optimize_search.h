@@ -40,4 +40,8 @@ int search_batch(struct search *s, const struct design_point *points,
 /* Whether points[k] has been met before in this pass. */
 int search_met(const struct search *s, const struct design_point *point);
 
+/* NSGA-II over the design space (optimize_nsga2.c). */
+int run_nsga2(struct search *s, enum optimize_outcome *outcome,
+              struct facet_error *err);
+
 #endif

@@ -11,3 +11,6 @@ tests/bench/bench_obj.sh "$build"
 echo
 echo "== One design option: a 37x49 evaluation of the 100k-triangle roof"
 "$build/bench/bench_classify"
+echo
+echo "== NSGA-II: Facet against DEAP on ZDT1 (population 100 x 250 generations)"
+tests/bench/bench_nsga2.sh "$build"

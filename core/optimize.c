@@ -1,0 +1,474 @@
+/*
+ * optimize.c: the search driver: design space, the point cache, parallel
+ * batch evaluation, and the exhaustive and random methods. NSGA-II's
+ * generations come through the same batches (optimize_nsga2.c).
+ */
+#include "optimize.h"
+
+#include <math.h>
+#include <pthread.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "optimize_search.h"
+#include "rng.h"
+
+const char *optimize_method_name(enum optimize_method method)
+{
+    switch (method) {
+    case METHOD_EXHAUSTIVE: return "exhaustive";
+    case METHOD_RANDOM:     return "random";
+    default:                return "nsga2";
+    }
+}
+
+int optimize_method_parse(const char *text, enum optimize_method *out,
+                          struct facet_error *err)
+{
+    static const enum optimize_method all[] = {METHOD_EXHAUSTIVE,
+                                               METHOD_RANDOM, METHOD_NSGA2};
+    for (int k = 0; k < 3; k++)
+        if (strcmp(text, optimize_method_name(all[k])) == 0) {
+            *out = all[k];
+            return FACET_OK;
+        }
+    return facet_error_set(err, FACET_EINPUT,
+        "--method: '%s' unknown (choose exhaustive, random or nsga2)", text);
+}
+
+/* Threshold steps of an exhaustive space: t_min, t_min + step, ... up to
+ * t_max, forgiving a thousandth of a step of rounding. */
+static uint64_t threshold_steps(const struct design_space *s)
+{
+    if (!(s->t_step_mm > 0) || s->t_max_mm <= s->t_min_mm)
+        return 1;
+    return (uint64_t)floor((s->t_max_mm - s->t_min_mm) / s->t_step_mm +
+                           1e-3) + 1;
+}
+
+uint64_t design_space_size(const struct design_space *s)
+{
+    return (uint64_t)(s->u_max - s->u_min + 1) *
+           (uint64_t)(s->v_max - s->v_min + 1) * threshold_steps(s);
+}
+
+int design_space_check(const struct design_space *s, struct facet_error *err)
+{
+    if (s->u_min < 1 || s->u_max < s->u_min || s->u_max > PANEL_MAX_GRID)
+        return facet_error_set(err, FACET_EINPUT,
+            "--u %d:%d is not a range within 1..%d", s->u_min, s->u_max,
+            PANEL_MAX_GRID);
+    if (s->v_min < 1 || s->v_max < s->v_min || s->v_max > PANEL_MAX_GRID)
+        return facet_error_set(err, FACET_EINPUT,
+            "--v %d:%d is not a range within 1..%d", s->v_min, s->v_max,
+            PANEL_MAX_GRID);
+    if (!isfinite(s->t_min_mm) || !isfinite(s->t_max_mm) ||
+        s->t_min_mm < 0 || s->t_max_mm < s->t_min_mm ||
+        !isfinite(s->t_step_mm) || s->t_step_mm < 0)
+        return facet_error_set(err, FACET_EINPUT,
+            "--threshold %g:%g:%g is not a range of lengths (mm)",
+            s->t_min_mm, s->t_max_mm, s->t_step_mm);
+    return FACET_OK;
+}
+
+/* --- parallel evaluation --- */
+
+struct evaluation_job {
+    const struct surface *surface;
+    const struct option_params *base;
+    const struct design_point *points;
+    struct option_totals *totals;
+    size_t first, count;
+    int rc;
+    struct facet_error err;
+};
+
+static void *evaluation_thread(void *argument)
+{
+    struct evaluation_job *job = argument;
+    for (size_t k = job->first; k < job->first + job->count; k++) {
+        struct option_params params = *job->base;
+        params.nu = job->points[k].nu;
+        params.nv = job->points[k].nv;
+        params.classify.threshold = job->points[k].threshold_mm / 1000;
+        struct panelization panels;
+        job->rc = option_evaluate(job->surface, &params, &panels,
+                                  &job->totals[k], &job->err);
+        panelization_free(&panels);
+        if (job->rc != FACET_OK)
+            break;
+    }
+    return NULL;
+}
+
+#define MAX_JOBS 64
+
+int optimize_evaluate(const struct surface *surface,
+                      const struct option_params *base,
+                      const struct design_point *points, size_t n, int jobs,
+                      struct option_totals *totals, struct facet_error *err)
+{
+    if (jobs < 1)
+        jobs = 1;
+    if (jobs > MAX_JOBS)
+        jobs = MAX_JOBS;
+    if ((size_t)jobs > n)
+        jobs = n > 0 ? (int)n : 1;
+    struct evaluation_job job[MAX_JOBS];
+    pthread_t thread[MAX_JOBS];
+    int started[MAX_JOBS];
+    size_t first = 0;
+    for (int k = 0; k < jobs; k++) {
+        size_t count = n / (size_t)jobs + ((size_t)k < n % (size_t)jobs);
+        job[k] = (struct evaluation_job){surface, base, points, totals,
+                                         first, count, FACET_OK, {0, ""}};
+        first += count;
+        /* The calling thread does the last share itself. */
+        started[k] = k + 1 < jobs &&
+            pthread_create(&thread[k], NULL, evaluation_thread, &job[k]) == 0;
+    }
+    for (int k = 0; k < jobs; k++)
+        if (!started[k])
+            evaluation_thread(&job[k]);
+    for (int k = 0; k < jobs; k++)
+        if (started[k])
+            pthread_join(thread[k], NULL);
+    for (int k = 0; k < jobs; k++)
+        if (job[k].rc != FACET_OK) {
+            if (err != NULL)
+                *err = job[k].err;
+            return job[k].rc;
+        }
+    return FACET_OK;
+}
+
+/* --- the point cache and batches --- */
+
+static uint64_t point_key_hash(const struct design_point *p)
+{
+    uint64_t h = (uint64_t)p->nu * 0x9E3779B97F4A7C15ull;
+    h ^= (uint64_t)p->nv * 0xC2B2AE3D27D4EB4Full + (h << 6);
+    h ^= (uint64_t)llround(p->threshold_mm * 1000) * 0x165667B19E3779F9ull;
+    return h ^ (h >> 31);
+}
+
+static int same_point(const struct design_point *a,
+                      const struct design_point *b)
+{
+    return a->nu == b->nu && a->nv == b->nv &&
+           llround(a->threshold_mm * 1000) == llround(b->threshold_mm * 1000);
+}
+
+int search_init(struct search *s, const struct surface *surface,
+                const struct optimize_settings *settings,
+                const struct evaluated_option *stored, size_t nstored,
+                const struct optimize_hooks *hooks, int64_t total,
+                struct facet_error *err)
+{
+    memset(s, 0, sizeof *s);
+    s->surface = surface;
+    s->settings = settings;
+    s->hooks = hooks;
+    s->total = total;
+    s->capacity = 1024;
+    while (s->capacity < 2 * (nstored + 1))
+        s->capacity *= 2;
+    s->slot = malloc(s->capacity * sizeof *s->slot);
+    s->known_capacity = nstored + 256;
+    s->known = malloc(s->known_capacity * sizeof *s->known);
+    s->met = calloc(s->known_capacity, 1);
+    if (s->slot == NULL || s->known == NULL || s->met == NULL)
+        return facet_error_set(err, FACET_EWORK, "out of memory (search)");
+    for (size_t k = 0; k < s->capacity; k++)
+        s->slot[k] = SIZE_MAX;
+    for (size_t k = 0; k < nstored; k++) {
+        s->known[s->nknown] = stored[k];
+        size_t h = point_key_hash(&stored[k].point) & (s->capacity - 1);
+        while (s->slot[h] != SIZE_MAX)
+            h = (h + 1) & (s->capacity - 1);
+        s->slot[h] = s->nknown++;
+    }
+    return FACET_OK;
+}
+
+void search_free(struct search *s)
+{
+    free(s->slot);
+    free(s->known);
+    free(s->met);
+    memset(s, 0, sizeof *s);
+}
+
+/* The index into known of point p, or SIZE_MAX. */
+static size_t search_find(const struct search *s, const struct design_point *p)
+{
+    size_t h = point_key_hash(p) & (s->capacity - 1);
+    while (s->slot[h] != SIZE_MAX) {
+        if (same_point(&s->known[s->slot[h]].point, p))
+            return s->slot[h];
+        h = (h + 1) & (s->capacity - 1);
+    }
+    return SIZE_MAX;
+}
+
+int search_met(const struct search *s, const struct design_point *point)
+{
+    size_t found = search_find(s, point);
+    return found != SIZE_MAX && s->met[found];
+}
+
+/* Makes room for more known options and keeps the hash under half full. */
+static int search_grow(struct search *s, size_t more, struct facet_error *err)
+{
+    if (s->nknown + more > s->known_capacity) {
+        size_t capacity = 2 * (s->nknown + more);
+        struct evaluated_option *known = realloc(s->known,
+                                                 capacity * sizeof *known);
+        if (known != NULL)
+            s->known = known;
+        unsigned char *met = realloc(s->met, capacity);
+        if (known == NULL || met == NULL)
+            return facet_error_set(err, FACET_EWORK, "out of memory");
+        memset(met + s->known_capacity, 0, capacity - s->known_capacity);
+        s->met = met;
+        s->known_capacity = capacity;
+    }
+    if (2 * (s->nknown + more) > s->capacity) {
+        size_t capacity = s->capacity;
+        while (2 * (s->nknown + more) > capacity)
+            capacity *= 2;
+        size_t *slot = malloc(capacity * sizeof *slot);
+        if (slot == NULL)
+            return facet_error_set(err, FACET_EWORK, "out of memory");
+        for (size_t k = 0; k < capacity; k++)
+            slot[k] = SIZE_MAX;
+        for (size_t k = 0; k < s->nknown; k++) {
+            size_t h = point_key_hash(&s->known[k].point) & (capacity - 1);
+            while (slot[h] != SIZE_MAX)
+                h = (h + 1) & (capacity - 1);
+            slot[h] = k;
+        }
+        free(s->slot);
+        s->slot = slot;
+        s->capacity = capacity;
+    }
+    return FACET_OK;
+}
+
+int search_batch(struct search *s, const struct design_point *points,
+                 size_t n, int generation, size_t *index,
+                 struct facet_error *err)
+{
+    int rc = search_grow(s, n, err);
+    if (rc != FACET_OK)
+        return rc;
+    size_t first_new = s->nknown;
+    for (size_t k = 0; k < n; k++) {
+        size_t found = search_find(s, &points[k]);
+        if (found == SIZE_MAX) {
+            struct evaluated_option *o = &s->known[s->nknown];
+            memset(o, 0, sizeof *o);
+            o->point = points[k];
+            o->generation = generation;
+            size_t h = point_key_hash(&points[k]) & (s->capacity - 1);
+            while (s->slot[h] != SIZE_MAX)
+                h = (h + 1) & (s->capacity - 1);
+            s->slot[h] = found = s->nknown++;
+        }
+        if (!s->met[found]) {
+            /* The k-th distinct point met is option k, in a resumed pass
+             * as in the first: a stored option keeps the number it got. */
+            s->met[found] = 1;
+            s->distinct_met++;
+            if (found >= first_new)
+                s->known[found].number = s->distinct_met;
+        }
+        index[k] = found;
+    }
+    size_t fresh = s->nknown - first_new;
+    if (fresh > 0) {
+        struct design_point *todo = malloc(fresh * sizeof *todo);
+        struct option_totals *totals = malloc(fresh * sizeof *totals);
+        if (todo == NULL || totals == NULL) {
+            free(todo);
+            free(totals);
+            return facet_error_set(err, FACET_EWORK, "out of memory");
+        }
+        for (size_t k = 0; k < fresh; k++)
+            todo[k] = s->known[first_new + k].point;
+        rc = optimize_evaluate(s->surface, &s->settings->base, todo, fresh,
+                               s->settings->jobs, totals, err);
+        for (size_t k = 0; rc == FACET_OK && k < fresh; k++)
+            s->known[first_new + k].totals = totals[k];
+        free(todo);
+        free(totals);
+        if (rc == FACET_OK && s->hooks->store != NULL)
+            rc = s->hooks->store(s->hooks->context, s->known + first_new,
+                                 fresh, err);
+        if (rc != FACET_OK)
+            return rc;
+    }
+    s->done += (int64_t)n;
+    if (s->hooks->progress != NULL)
+        s->hooks->progress(s->hooks->context,
+                           s->done < s->total ? s->done : s->total, s->total);
+    return FACET_OK;
+}
+
+/* --- exhaustive and random --- */
+
+/* Points per batch: enough to keep every thread busy, few enough that an
+ * interruption loses little and progress moves. */
+static size_t batch_size(const struct optimize_settings *settings)
+{
+    size_t size = 8 * (size_t)(settings->jobs > 0 ? settings->jobs : 1);
+    return size < 16 ? 16 : size;
+}
+
+static int stop_requested(const struct optimize_hooks *hooks)
+{
+    return hooks->should_stop != NULL && hooks->should_stop(hooks->context);
+}
+
+static void point_of_index(const struct design_space *space, uint64_t index,
+                           struct design_point *p)
+{
+    uint64_t steps = threshold_steps(space);
+    uint64_t nv = (uint64_t)(space->v_max - space->v_min + 1);
+    p->threshold_mm = space->t_min_mm + (double)(index % steps) *
+                                            space->t_step_mm;
+    if (p->threshold_mm > space->t_max_mm)
+        p->threshold_mm = space->t_max_mm;
+    index /= steps;
+    p->nv = space->v_min + (int)(index % nv);
+    p->nu = space->u_min + (int)(index / nv);
+}
+
+static int run_exhaustive(struct search *s, enum optimize_outcome *outcome,
+                          struct facet_error *err)
+{
+    const struct optimize_settings *settings = s->settings;
+    uint64_t total = design_space_size(&settings->space);
+    size_t size = batch_size(settings);
+    struct design_point *points = malloc(size * sizeof *points);
+    size_t *index = malloc(size * sizeof *index);
+    int rc = FACET_OK;
+    if (points == NULL || index == NULL)
+        rc = facet_error_set(err, FACET_EWORK, "out of memory");
+    for (uint64_t start = 0; rc == FACET_OK && start < total;
+         start += size) {
+        if (stop_requested(s->hooks)) {
+            *outcome = OPTIMIZE_INTERRUPTED;
+            break;
+        }
+        size_t n = total - start < size ? (size_t)(total - start) : size;
+        for (size_t k = 0; k < n; k++)
+            point_of_index(&settings->space, start + k, &points[k]);
+        rc = search_batch(s, points, n, 0, index, err);
+    }
+    free(points);
+    free(index);
+    return rc;
+}
+
+/* A random point of the space; a continuous threshold is drawn to a
+ * thousandth of a millimetre, the resolution points are told apart by. */
+static void random_point(const struct design_space *space, struct rng *rng,
+                         struct design_point *p)
+{
+    p->nu = space->u_min + (int)rng_below(rng, (uint64_t)(space->u_max -
+                                                          space->u_min + 1));
+    p->nv = space->v_min + (int)rng_below(rng, (uint64_t)(space->v_max -
+                                                          space->v_min + 1));
+    if (space->t_step_mm > 0) {
+        uint64_t steps = threshold_steps(space);
+        p->threshold_mm = space->t_min_mm +
+                          (double)rng_below(rng, steps) * space->t_step_mm;
+    } else {
+        double t = space->t_min_mm +
+                   rng_uniform(rng) * (space->t_max_mm - space->t_min_mm);
+        p->threshold_mm = round(t * 1000) / 1000;
+    }
+}
+
+static int run_random(struct search *s, enum optimize_outcome *outcome,
+                      struct facet_error *err)
+{
+    const struct optimize_settings *settings = s->settings;
+    struct rng rng;
+    rng_seed(&rng, settings->seed);
+    size_t size = batch_size(settings);
+    struct design_point *points = malloc(size * sizeof *points);
+    size_t *index = malloc(size * sizeof *index);
+    int rc = FACET_OK;
+    if (points == NULL || index == NULL)
+        rc = facet_error_set(err, FACET_EWORK, "out of memory");
+    /* Distinct points only; give up drawing when the space seems spent. */
+    int64_t misses = 0, wanted = settings->evaluations;
+    while (rc == FACET_OK && s->distinct_met < wanted) {
+        if (stop_requested(s->hooks)) {
+            *outcome = OPTIMIZE_INTERRUPTED;
+            break;
+        }
+        size_t n = 0;
+        while (n < size && s->distinct_met + (int64_t)n < wanted &&
+               misses < 100 * wanted + 1000) {
+            struct design_point p;
+            random_point(&settings->space, &rng, &p);
+            int repeated = search_met(s, &p);
+            for (size_t k = 0; k < n && !repeated; k++)
+                repeated = p.nu == points[k].nu && p.nv == points[k].nv &&
+                           llround(p.threshold_mm * 1000) ==
+                               llround(points[k].threshold_mm * 1000);
+            if (repeated) {
+                misses++;
+                continue;
+            }
+            points[n++] = p;
+        }
+        if (n == 0)
+            break;
+        rc = search_batch(s, points, n, 0, index, err);
+    }
+    free(points);
+    free(index);
+    return rc;
+}
+
+int optimize_run(const struct surface *surface,
+                 const struct optimize_settings *settings,
+                 const struct evaluated_option *stored, size_t nstored,
+                 const struct optimize_hooks *hooks,
+                 enum optimize_outcome *outcome, struct facet_error *err)
+{
+    *outcome = OPTIMIZE_DONE;
+    int rc = design_space_check(&settings->space, err);
+    if (rc != FACET_OK)
+        return rc;
+    int64_t total;
+    switch (settings->method) {
+    case METHOD_EXHAUSTIVE:
+        total = (int64_t)design_space_size(&settings->space);
+        break;
+    case METHOD_RANDOM:
+        total = settings->evaluations;
+        break;
+    default:
+        total = (int64_t)settings->population *
+                ((int64_t)settings->generations + 1);
+        break;
+    }
+    struct search s;
+    rc = search_init(&s, surface, settings, stored, nstored, hooks, total,
+                     err);
+    if (rc == FACET_OK) {
+        if (settings->method == METHOD_EXHAUSTIVE)
+            rc = run_exhaustive(&s, outcome, err);
+        else if (settings->method == METHOD_RANDOM)
+            rc = run_random(&s, outcome, err);
+        else
+            rc = run_nsga2(&s, outcome, err);
+    }
+    search_free(&s);
+    return rc;
+}

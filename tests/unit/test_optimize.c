@@ -1,0 +1,309 @@
+/*
+ * test_optimize.c: the search driver without a store: exhaustive numbering,
+ * random distinctness, NSGA-II reproducibility, and that a run stopped and
+ * resumed from what it stored ends with exactly the options of a run that
+ * was never stopped, for every method.
+ */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <cmocka.h>
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "core/example.h"
+#include "core/front.h"
+#include "core/optimize.h"
+
+static struct surface roof;
+
+static int setup(void **state)
+{
+    (void)state;
+    char path[] = "/tmp/facet_test_optimize_XXXXXX";
+    int fd = mkstemp(path);
+    FILE *out = fdopen(fd, "w");
+    struct facet_error err;
+    if (example_write("roof", 24, out, &err) != FACET_OK)
+        return -1;
+    fclose(out);
+    struct mesh_options options = {UNITS_M, NULL, NULL};
+    int rc = surface_open(path, &options, &roof, &err);
+    if (rc == FACET_OK)
+        rc = surface_prepare(&roof, 0, &err);
+    unlink(path);
+    return rc;
+}
+
+static int teardown(void **state)
+{
+    (void)state;
+    surface_close(&roof);
+    return 0;
+}
+
+/* What a store would hold: every option committed, in order. */
+struct log {
+    struct evaluated_option *options;
+    size_t n, capacity;
+    int batches;
+    int stop_after;   /* stop once this many batches are stored (0: never) */
+};
+
+static int keep(void *context, const struct evaluated_option *options,
+                size_t n, struct facet_error *err)
+{
+    (void)err;
+    struct log *log = context;
+    if (log->n + n > log->capacity) {
+        log->capacity = 2 * (log->n + n);
+        log->options = realloc(log->options,
+                               log->capacity * sizeof *log->options);
+    }
+    memcpy(log->options + log->n, options, n * sizeof *options);
+    log->n += n;
+    log->batches++;
+    return 0;
+}
+
+static int stop_now(void *context)
+{
+    struct log *log = context;
+    return log->stop_after > 0 && log->batches >= log->stop_after;
+}
+
+static void settings_for(enum optimize_method method,
+                         struct optimize_settings *s)
+{
+    memset(s, 0, sizeof *s);
+    s->method = method;
+    s->space = (struct design_space){4, 9, 5, 8, 1, 5, 2};
+    s->base.mode = PANEL_EXTREMES;
+    classify_defaults(&s->base.classify);
+    struct facet_error err;
+    objectives_parse("cost,planarity,dp_area", s->objectives,
+                     &s->nobjectives, &err);
+    s->seed = 11;
+    s->evaluations = 40;
+    s->population = 10;
+    s->generations = 6;
+    s->jobs = 2;
+}
+
+static void run(const struct optimize_settings *s, struct log *log,
+                const struct evaluated_option *stored, size_t nstored,
+                enum optimize_outcome *outcome)
+{
+    struct optimize_hooks hooks = {log, keep, NULL, stop_now};
+    struct facet_error err;
+    int rc = optimize_run(&roof, s, stored, nstored, &hooks, outcome, &err);
+    if (rc != FACET_OK)
+        fail_msg("%s", err.message);
+}
+
+static int by_number(const void *a, const void *b)
+{
+    const struct evaluated_option *x = a, *y = b;
+    return x->number < y->number ? -1 : x->number > y->number;
+}
+
+static void assert_same_options(struct evaluated_option *a, size_t na,
+                                struct evaluated_option *b, size_t nb)
+{
+    assert_int_equal(na, nb);
+    qsort(a, na, sizeof *a, by_number);
+    qsort(b, nb, sizeof *b, by_number);
+    for (size_t k = 0; k < na; k++) {
+        assert_int_equal(a[k].number, b[k].number);
+        assert_int_equal(a[k].point.nu, b[k].point.nu);
+        assert_int_equal(a[k].point.nv, b[k].point.nv);
+        assert_true(a[k].point.threshold_mm == b[k].point.threshold_mm);
+        assert_true(a[k].totals.cost == b[k].totals.cost);
+        assert_true(a[k].totals.planarity == b[k].totals.planarity);
+        assert_int_equal(a[k].generation, b[k].generation);
+    }
+}
+
+static void test_exhaustive_numbering(void **state)
+{
+    (void)state;
+    struct optimize_settings s;
+    settings_for(METHOD_EXHAUSTIVE, &s);
+    assert_int_equal(design_space_size(&s.space), 6 * 4 * 3);
+    struct log log = {0};
+    enum optimize_outcome outcome;
+    run(&s, &log, NULL, 0, &outcome);
+    assert_int_equal(outcome, OPTIMIZE_DONE);
+    assert_int_equal(log.n, 72);
+    /* u outermost, then v, then threshold. */
+    for (size_t k = 0; k < log.n; k++) {
+        const struct evaluated_option *o = &log.options[k];
+        assert_int_equal(o->number, (int64_t)k + 1);
+        assert_int_equal(o->point.nu, 4 + (int)(k / 12));
+        assert_int_equal(o->point.nv, 5 + (int)(k / 3 % 4));
+        assert_true(o->point.threshold_mm == 1 + 2.0 * (double)(k % 3));
+    }
+    free(log.options);
+}
+
+static void test_random_is_distinct(void **state)
+{
+    (void)state;
+    struct optimize_settings s;
+    settings_for(METHOD_RANDOM, &s);
+    struct log log = {0};
+    enum optimize_outcome outcome;
+    run(&s, &log, NULL, 0, &outcome);
+    assert_int_equal(log.n, 40);
+    for (size_t a = 0; a < log.n; a++)
+        for (size_t b = a + 1; b < log.n; b++)
+            assert_false(log.options[a].point.nu == log.options[b].point.nu &&
+                         log.options[a].point.nv == log.options[b].point.nv &&
+                         log.options[a].point.threshold_mm ==
+                             log.options[b].point.threshold_mm);
+    free(log.options);
+}
+
+static void test_nsga2_same_seed_same_options(void **state)
+{
+    (void)state;
+    struct optimize_settings s;
+    settings_for(METHOD_NSGA2, &s);
+    s.space.t_step_mm = 0;
+    struct log a = {0}, b = {0};
+    enum optimize_outcome outcome;
+    run(&s, &a, NULL, 0, &outcome);
+    s.jobs = 1;
+    run(&s, &b, NULL, 0, &outcome);
+    assert_true(a.n > 10);
+    assert_same_options(a.options, a.n, b.options, b.n);
+    free(a.options);
+    free(b.options);
+}
+
+/* Stops after two batches, resumes from what was stored, and compares
+ * with a run that was never stopped. */
+static void check_resume(enum optimize_method method)
+{
+    struct optimize_settings s;
+    settings_for(method, &s);
+    if (method == METHOD_NSGA2) {
+        /* Room for every generation to find new points. */
+        s.space = (struct design_space){4, 40, 5, 40, 1, 9, 0};
+        s.generations = 8;
+    }
+    struct log whole = {0}, first = {0};
+    enum optimize_outcome outcome;
+    run(&s, &whole, NULL, 0, &outcome);
+    assert_int_equal(outcome, OPTIMIZE_DONE);
+    first.stop_after = 2;
+    run(&s, &first, NULL, 0, &outcome);
+    assert_int_equal(outcome, OPTIMIZE_INTERRUPTED);
+    assert_true(first.n < whole.n);
+    struct log rest = {0};
+    run(&s, &rest, first.options, first.n, &outcome);
+    assert_int_equal(outcome, OPTIMIZE_DONE);
+    /* Nothing stored was evaluated or stored again. */
+    assert_int_equal(first.n + rest.n, whole.n);
+    struct evaluated_option *all = malloc(whole.n * sizeof *all);
+    memcpy(all, first.options, first.n * sizeof *all);
+    memcpy(all + first.n, rest.options, rest.n * sizeof *all);
+    assert_same_options(all, whole.n, whole.options, whole.n);
+    free(all);
+    free(whole.options);
+    free(first.options);
+    free(rest.options);
+}
+
+static void test_resume_exhaustive(void **state)
+{
+    (void)state;
+    check_resume(METHOD_EXHAUSTIVE);
+}
+
+static void test_resume_random(void **state)
+{
+    (void)state;
+    check_resume(METHOD_RANDOM);
+}
+
+static void test_resume_nsga2(void **state)
+{
+    (void)state;
+    check_resume(METHOD_NSGA2);
+}
+
+static void test_front(void **state)
+{
+    (void)state;
+    struct optimize_settings s;
+    settings_for(METHOD_EXHAUSTIVE, &s);
+    struct log log = {0};
+    enum optimize_outcome outcome;
+    run(&s, &log, NULL, 0, &outcome);
+    for (size_t k = 0; k < log.n; k++)
+        assert_true(log.options[k].totals.max_panel_area < 100);
+    struct front front;
+    struct facet_error err;
+    assert_int_equal(front_analyse(log.options, log.n, s.objectives,
+                                   s.nobjectives, 100, &front, &err),
+                     FACET_OK);
+    assert_true(front.pareto > 0);
+    assert_true(front.knee < log.n && front.rank[front.knee] == 1);
+    assert_true(front.hypervolume > 0 && front.hypervolume <= 1.331);
+    /* Brute force: rank 1 exactly when no option dominates it. */
+    for (size_t a = 0; a < log.n; a++) {
+        int dominated = 0;
+        for (size_t b = 0; b < log.n && !dominated; b++) {
+            int no_worse = 1, better = 0;
+            for (int j = 0; j < s.nobjectives; j++) {
+                double x = objective_value(&log.options[b].totals,
+                                           &s.objectives[j]);
+                double y = objective_value(&log.options[a].totals,
+                                           &s.objectives[j]);
+                no_worse &= x <= y;
+                better |= x < y;
+            }
+            dominated = no_worse && better;
+        }
+        assert_int_equal(front.rank[a] == 1, !dominated);
+    }
+    front_free(&front);
+    free(log.options);
+}
+
+static void test_bad_space(void **state)
+{
+    (void)state;
+    struct optimize_settings s;
+    settings_for(METHOD_EXHAUSTIVE, &s);
+    s.space.u_min = 0;
+    struct log log = {0};
+    struct optimize_hooks hooks = {&log, keep, NULL, NULL};
+    enum optimize_outcome outcome;
+    struct facet_error err;
+    assert_int_equal(optimize_run(&roof, &s, NULL, 0, &hooks, &outcome, &err),
+                     FACET_EINPUT);
+    assert_non_null(strstr(err.message, "--u"));
+    free(log.options);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_exhaustive_numbering),
+        cmocka_unit_test(test_random_is_distinct),
+        cmocka_unit_test(test_nsga2_same_seed_same_options),
+        cmocka_unit_test(test_resume_exhaustive),
+        cmocka_unit_test(test_resume_random),
+        cmocka_unit_test(test_resume_nsga2),
+        cmocka_unit_test(test_front),
+        cmocka_unit_test(test_bad_space),
+    };
+    return cmocka_run_group_tests(tests, setup, teardown);
+}
