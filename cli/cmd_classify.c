@@ -9,6 +9,7 @@
 #include <string.h>
 
 #include "args.h"
+#include "classify_flags.h"
 #include "command.h"
 #include "option_text.h"
 #include "core/option.h"
@@ -86,26 +87,19 @@ static int write_csv(const char *path, const struct panelization *p,
 
 static int classify_run(int argc, char **argv, struct facet_error *err)
 {
-    const char *grid = NULL, *threshold = NULL, *units = NULL, *tol = NULL;
-    const char *per_panel = NULL, *prices = NULL, *max_area = NULL;
-    const char *csv = NULL, *object = NULL, *group = NULL;
-    int flip = 0, sp_as_fp = 0, json = 0;
-    const struct arg_option options[] = {
+    const char *grid = NULL, *threshold = NULL, *csv = NULL;
+    int json = 0;
+    struct classify_flags flags;
+    memset(&flags, 0, sizeof flags);
+    struct arg_option options[CLASSIFY_FLAG_COUNT + 5] = {
         {"grid", 0, ARG_STRING, &grid, NULL},
         {"threshold", 0, ARG_STRING, &threshold, NULL},
-        {"units", 0, ARG_STRING, &units, NULL},
-        {"curvature-tol", 0, ARG_STRING, &tol, NULL},
-        {"per-panel", 0, ARG_STRING, &per_panel, NULL},
-        {"flip-normals", 0, ARG_FLAG, NULL, &flip},
-        {"prices", 0, ARG_STRING, &prices, NULL},
-        {"sp-as-fp", 0, ARG_FLAG, NULL, &sp_as_fp},
-        {"max-panel-area", 0, ARG_STRING, &max_area, NULL},
         {"json", 0, ARG_FLAG, NULL, &json},
         {"csv", 0, ARG_STRING, &csv, NULL},
-        {"object", 0, ARG_STRING, &object, NULL},
-        {"group", 0, ARG_STRING, &group, NULL},
-        {NULL, 0, ARG_FLAG, NULL, NULL},
     };
+    classify_flags_table(&flags, options + 4);
+    options[CLASSIFY_FLAG_COUNT + 4] = (struct arg_option){NULL, 0, ARG_FLAG,
+                                                           NULL, NULL};
     const char *path[1];
     int count;
     int rc = args_parse(argc, argv, options, path, 1, &count, err);
@@ -117,43 +111,19 @@ static int classify_run(int argc, char **argv, struct facet_error *err)
             "37x49)");
 
     struct option_params params;
-    memset(&params, 0, sizeof params);
-    classify_defaults(&params.classify);
-    params.mode = PANEL_EXTREMES;
-    struct mesh_options mesh_options = {UNITS_M, object, group};
-    double number;
+    struct mesh_options mesh_options;
+    if ((rc = classify_flags_apply(&flags, &params, &mesh_options, err)))
+        return rc;
     if ((rc = parse_grid(grid, &params.nu, &params.nv, err)) != FACET_OK)
         return rc;
-    if (units && (rc = mesh_units_parse(units, &mesh_options.units, err)))
-        return rc;
     if (threshold) {
+        double number;
         if ((rc = args_double(threshold, 0, 1e6, "--threshold", &number,
                               err)))
             return rc;
         params.classify.threshold = number / 1000;
     }
-    if (tol) {
-        if ((rc = args_double(tol, 1e-12, 1e6, "--curvature-tol", &number,
-                              err)))
-            return rc;
-        params.classify.curvature_tol = number;
-    }
-    if (per_panel) {
-        if (strcmp(per_panel, "mean") == 0)
-            params.mode = PANEL_MEAN;
-        else if (strcmp(per_panel, "extremes") != 0)
-            return facet_error_set(err, FACET_EINPUT,
-                "--per-panel: '%s' is not extremes or mean", per_panel);
-    }
-    if (prices && (rc = args_parse_prices(prices, params.classify.price, err)))
-        return rc;
-    params.classify.sp_as_fp = sp_as_fp;
-    if (max_area) {
-        if ((rc = args_double(max_area, 1e-9, 1e9, "--max-panel-area",
-                              &number, err)))
-            return rc;
-        params.classify.max_panel_area = number;
-    }
+    int flip = flags.flip_normals;
 
     struct surface surface;
     struct panelization panels;
@@ -199,19 +169,8 @@ const struct command cmd_classify = {
         "  --grid NUxNV        panels along u and v (e.g. 37x49, the paper's)\n"
         "  --threshold MM      flatness threshold t: a panel within t of its\n"
         "                      best-fit plane is made flat (default 3)\n"
-        "  --units U           m (default), cm, mm, in, ft\n"
-        "  --curvature-tol K   |k| < K (1/m) counts as zero (default\n"
-        "                      8 t / d^2, d the panel's diagonal)\n"
-        "  --per-panel MODE    extremes: k1 = max, k2 = min over the panel's\n"
-        "                      samples (the paper's, default); mean: the\n"
-        "                      area-weighted mean shape operator\n"
-        "  --flip-normals      reverse the surface normal (and every sign)\n"
-        "  --prices FP,SP,DP   USD/m^2 (default 701,766,1518)\n"
-        "  --sp-as-fp          price SP area as FP (the paper's MOGD)\n"
-        "  --max-panel-area M2 feasibility limit (default 7.06)\n"
         "  --json              one JSON object (see README)\n"
-        "  --csv FILE          the panel schedule, one row per panel\n"
-        "  --object NAME       only the faces of object NAME\n"
-        "  --group NAME        only the faces of group NAME\n",
+        "  --csv FILE          the panel schedule, one row per panel\n",
+    .shared_options = classify_flags_usage,
     .run = classify_run,
 };

@@ -8,6 +8,10 @@
 const struct command *const command_table[] = {
     &cmd_info,
     &cmd_classify,
+    &cmd_optimize,
+    &cmd_runs,
+    &cmd_options,
+    &cmd_show,
     &cmd_example,
     &cmd_help,
     NULL
@@ -25,8 +29,9 @@ void command_print_usage(const struct command *cmd, FILE *out)
 {
     fprintf(out, "usage: facet %s %s\n\n%s\n", cmd->name, cmd->usage,
             cmd->summary);
-    if (cmd->options[0] != '\0')
-        fprintf(out, "\noptions:\n%s", cmd->options);
+    if (cmd->options[0] != '\0' || cmd->shared_options != NULL)
+        fprintf(out, "\noptions:\n%s%s", cmd->options,
+                cmd->shared_options ? cmd->shared_options : "");
 }
 
 void command_print_overview(FILE *out)

@@ -17,6 +17,8 @@ struct command {
     const char *usage;    /* arguments after the name, one line */
     const char *summary;  /* what it does, one line */
     const char *options;  /* one option per line, "  --flag X  what", or "" */
+    const char *shared_options;  /* option lines shared with other commands
+                                    (classify_flags_usage), or NULL */
     /* Runs the command on argv[0..argc) (argv[0] is the command's name).
      * Returns the exit code: 0 success, 1 failure while working, 2 bad
      * usage or bad input, with err filled for 1 and 2. */
@@ -39,5 +41,9 @@ extern const struct command cmd_help;
 extern const struct command cmd_info;
 extern const struct command cmd_example;
 extern const struct command cmd_classify;
+extern const struct command cmd_optimize;
+extern const struct command cmd_runs;
+extern const struct command cmd_options;
+extern const struct command cmd_show;
 
 #endif

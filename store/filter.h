@@ -5,12 +5,15 @@
  *   (nu >= 30 or nv = 40) and not feasible
  *
  * Grammar: or-expressions of and-expressions of [not] terms; a term is a
- * comparison COLUMN OP NUMBER (OP one of < <= > >= = == != <>), a bare
- * boolean column (pareto, feasible, knee), or a parenthesised expression.
- * Keywords are case-insensitive. The same parser serves `facet options
- * --where` and the TUI's filter line. A compiled filter becomes a SQL WHERE
- * fragment with every number bound as a parameter: the user's text is never
- * pasted into SQL. A bad expression is FACET_EINPUT with a message that
+ * comparison COLUMN OP NUMBER (OP one of < <= > >= = == != <>) or NUMBER
+ * OP COLUMN, a bare boolean column (pareto, feasible, knee), or a
+ * parenthesised expression. Keywords and column names are case-insensitive;
+ * && || ! are and, or, not; u, v and threshold are nu, nv and threshold_mm;
+ * pareto is rank = 1. A number is decimal with an optional exponent (1.5e6)
+ * or a k/M suffix (1.5M); NaN and infinity are not numbers here. The same
+ * parser serves `facet options --where` and the TUI's filter line. A
+ * compiled filter becomes a SQL WHERE fragment with every number bound as
+ * a parameter (filter_sql.h): the user's text is never pasted into SQL. A bad expression is FACET_EINPUT with a message that
  * points at the column (1-based character position) of the mistake.
  */
 #ifndef FACET_FILTER_H
@@ -20,15 +23,39 @@
 
 struct filter;
 
+/* Limits that keep hostile text from costing much: longer text, or more
+ * nested parentheses and nots, is FACET_EINPUT. */
+enum {
+    FILTER_MAX_LENGTH = 4096,  /* bytes of text */
+    FILTER_MAX_DEPTH = 64      /* '(' and 'not' open at once */
+};
+
 /* Compiles text into *out (caller-owned, released with filter_free).
- * Returns FACET_OK or FACET_EINPUT ("--where: column 12: unknown column
- * 'dp_aera' (did you mean dp_area?)"). */
+ * Empty or all-blank text (or NULL) compiles to a filter matching every
+ * option. Returns FACET_OK; FACET_EINPUT ("--where: column 12: unknown
+ * column 'dp_aera' (did you mean dp_area?)"), the column being the 1-based
+ * character (UTF-8 code point) position of the mistake; or FACET_EWORK
+ * when out of memory. *out is NULL on failure. */
 int filter_compile(const char *text, struct filter **out,
                    struct facet_error *err);
-void filter_free(struct filter *filter);
+void filter_free(struct filter *filter);  /* NULL is fine */
 
-/* The expression as Facet understood it, fully parenthesised (for
- * messages and the TUI's status line). */
+/* The expression as Facet understood it, fully parenthesised, with
+ * canonical lowercase column names, aliases resolved and every comparison
+ * written COLUMN OP NUMBER (for messages and the TUI's status line):
+ * "((cost < 1500000) and (dp_area <= 900)) or pareto". "" for the empty
+ * filter. Owned by the filter. Compiling it again gives the same filter. */
 const char *filter_text(const struct filter *filter);
+
+/* Whether an option with these column values matches. value(context,
+ * column) returns the value of the named column of store_option_columns
+ * (lowercase, as in store.h) as a double, booleans 0/1. A NaN value stands
+ * for SQL NULL and is unknown, exactly as in the SQL of filter_sql.h: a
+ * comparison with it is unknown, not unknown is unknown, and an option
+ * matches only when the whole expression is true. A NULL filter matches
+ * everything. */
+int filter_match(const struct filter *filter,
+                 double (*value)(void *context, const char *column),
+                 void *context);
 
 #endif

@@ -121,6 +121,9 @@ int store_options_put(struct store *store, int64_t run,
 int store_options_get(struct store *store, int64_t run,
                       struct option_row **rows, size_t *n,
                       struct facet_error *err);
+/* Option number of run into *row; FACET_EINPUT when there is none. */
+int store_option_get(struct store *store, int64_t run, int64_t number,
+                     struct option_row *row, struct facet_error *err);
 /* Writes Pareto rank, crowding and the knee flag of every option given
  * (numbers[k] gets rank[k], crowding[k]), and the run's hypervolume,
  * knee, pareto_options and best_cost, in one transaction. */
@@ -173,5 +176,11 @@ int store_options_query(struct store *store, const struct option_query *q,
  * max_deviation, max_panel_area, p_dist, feasible, rank, crowding, knee,
  * run. */
 extern const char *const store_option_columns[];
+
+/* The value of column (a name of store_option_columns other than run) of
+ * option, booleans as 0 or 1; NAN for a name it does not know. The TUI and
+ * the CLI read option columns by name through this one function. */
+double store_option_value(const struct option_row *option,
+                          const char *column);
 
 #endif

@@ -1,0 +1,74 @@
+/*
+ * classify_flags.c: the classification flags. See classify_flags.h.
+ */
+#include "classify_flags.h"
+
+#include <string.h>
+
+const char classify_flags_usage[] =
+    "  --units U           m (default), cm, mm, in, ft\n"
+    "  --curvature-tol K   |k| < K (1/m) counts as zero (default\n"
+    "                      8 t / d^2, d the panel's diagonal)\n"
+    "  --per-panel MODE    extremes: k1 = max, k2 = min over the panel's\n"
+    "                      samples (the paper's, default); mean: the\n"
+    "                      area-weighted mean shape operator\n"
+    "  --flip-normals      reverse the surface normal (and every sign)\n"
+    "  --prices FP,SP,DP   USD/m^2 (default 701,766,1518)\n"
+    "  --sp-as-fp          price SP area as FP (the paper's MOGD)\n"
+    "  --max-panel-area M2 feasibility limit (default 7.06)\n"
+    "  --object NAME       only the faces of object NAME\n"
+    "  --group NAME        only the faces of group NAME\n";
+
+void classify_flags_table(struct classify_flags *f, struct arg_option *table)
+{
+    const struct arg_option entries[CLASSIFY_FLAG_COUNT] = {
+        {"units", 0, ARG_STRING, &f->units, NULL},
+        {"curvature-tol", 0, ARG_STRING, &f->curvature_tol, NULL},
+        {"per-panel", 0, ARG_STRING, &f->per_panel, NULL},
+        {"flip-normals", 0, ARG_FLAG, NULL, &f->flip_normals},
+        {"prices", 0, ARG_STRING, &f->prices, NULL},
+        {"sp-as-fp", 0, ARG_FLAG, NULL, &f->sp_as_fp},
+        {"max-panel-area", 0, ARG_STRING, &f->max_area, NULL},
+        {"object", 0, ARG_STRING, &f->object, NULL},
+        {"group", 0, ARG_STRING, &f->group, NULL},
+    };
+    memcpy(table, entries, sizeof entries);
+}
+
+int classify_flags_apply(const struct classify_flags *f,
+                         struct option_params *params,
+                         struct mesh_options *mesh, struct facet_error *err)
+{
+    memset(params, 0, sizeof *params);
+    classify_defaults(&params->classify);
+    params->mode = PANEL_EXTREMES;
+    *mesh = (struct mesh_options){UNITS_M, f->object, f->group};
+    double number;
+    int rc;
+    if (f->units && (rc = mesh_units_parse(f->units, &mesh->units, err)))
+        return rc;
+    if (f->curvature_tol) {
+        if ((rc = args_double(f->curvature_tol, 1e-12, 1e6,
+                              "--curvature-tol", &number, err)))
+            return rc;
+        params->classify.curvature_tol = number;
+    }
+    if (f->per_panel) {
+        if (strcmp(f->per_panel, "mean") == 0)
+            params->mode = PANEL_MEAN;
+        else if (strcmp(f->per_panel, "extremes") != 0)
+            return facet_error_set(err, FACET_EINPUT,
+                "--per-panel: '%s' is not extremes or mean", f->per_panel);
+    }
+    if (f->prices &&
+        (rc = args_parse_prices(f->prices, params->classify.price, err)))
+        return rc;
+    params->classify.sp_as_fp = f->sp_as_fp;
+    if (f->max_area) {
+        if ((rc = args_double(f->max_area, 1e-9, 1e9, "--max-panel-area",
+                              &number, err)))
+            return rc;
+        params->classify.max_panel_area = number;
+    }
+    return FACET_OK;
+}

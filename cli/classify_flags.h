@@ -1,0 +1,40 @@
+/*
+ * classify_flags.h: the options that fix how a surface is read and its
+ * panels classified and priced (units, part, curvature tolerance, per-panel
+ * mode, normals, prices, size limit). `facet classify` takes them for one
+ * option, `facet optimize` for every option of a run; one parser serves
+ * both so that the two never disagree on a flag.
+ */
+#ifndef FACET_CLASSIFY_FLAGS_H
+#define FACET_CLASSIFY_FLAGS_H
+
+#include "args.h"
+#include "core/mesh.h"
+#include "core/option.h"
+
+/* The flags' values as given (pointing into argv), NULL when absent. */
+struct classify_flags {
+    const char *units, *curvature_tol, *per_panel, *prices, *max_area;
+    const char *object, *group;
+    int flip_normals, sp_as_fp;
+};
+
+/* Entries classify_flags_table writes. */
+#define CLASSIFY_FLAG_COUNT 9
+
+/* Writes the CLASSIFY_FLAG_COUNT arg_option entries of the flags into
+ * table, pointing at *flags (which must outlive the parse). */
+void classify_flags_table(struct classify_flags *flags,
+                          struct arg_option *table);
+
+/* Sets params (all but grid and threshold, which it leaves at the
+ * defaults' values) and mesh from the flags, starting from the paper's
+ * defaults. Returns FACET_OK or FACET_EINPUT naming the bad flag. */
+int classify_flags_apply(const struct classify_flags *flags,
+                         struct option_params *params,
+                         struct mesh_options *mesh, struct facet_error *err);
+
+/* The usage lines of the flags, for a command's --help. */
+extern const char classify_flags_usage[];
+
+#endif

@@ -1,0 +1,311 @@
+/*
+ * cmd_optimize.c: `facet optimize SURFACE.obj --db FILE`, the paper's MOGD:
+ * search grid sizes and flatness thresholds for the Pareto-optimal
+ * trade-offs, every option committed to SQLite as it is evaluated, and the
+ * paper's Table 2 for the run at the end. The work is store/study.h's; this
+ * file parses the design space and reports.
+ */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "args.h"
+#include "classify_flags.h"
+#include "command.h"
+#include "progress.h"
+#include "run_table.h"
+#include "signals.h"
+#include "store/study.h"
+
+/* The largest space the exhaustive method takes by default. */
+#define EXHAUSTIVE_DEFAULT_LIMIT 100000
+
+/* Parses "A:B" (or "A") into an inclusive integer range. */
+static int parse_int_range(const char *text, const char *what, int *lo,
+                           int *hi, struct facet_error *err)
+{
+    char extra;
+    if (sscanf(text, "%d:%d%c", lo, hi, &extra) == 2)
+        return FACET_OK;
+    if (sscanf(text, "%d%c", lo, &extra) == 1) {
+        *hi = *lo;
+        return FACET_OK;
+    }
+    return facet_error_set(err, FACET_EINPUT,
+        "%s: '%s' is not a range A:B of whole numbers (e.g. 20:40)", what,
+        text);
+}
+
+/* Parses "MM", "A:B" or "A:B:STEP" (mm). */
+static int parse_threshold(const char *text, struct design_space *space,
+                           struct facet_error *err)
+{
+    char copy[128];
+    if (snprintf(copy, sizeof copy, "%s", text) >= (int)sizeof copy)
+        return facet_error_set(err, FACET_EINPUT, "--threshold: too long");
+    double value[3] = {0, 0, 0};
+    int n = 0;
+    char *rest = copy, *field;
+    while ((field = strsep(&rest, ":")) != NULL) {
+        if (n == 3)
+            return facet_error_set(err, FACET_EINPUT,
+                "--threshold: '%s' is not MM, A:B or A:B:STEP", text);
+        int rc = args_double(field, 0, 1e6, "--threshold", &value[n++], err);
+        if (rc != FACET_OK)
+            return rc;
+    }
+    space->t_min_mm = value[0];
+    space->t_max_mm = n >= 2 ? value[1] : value[0];
+    space->t_step_mm = n == 3 ? value[2] : 0;
+    if (space->t_max_mm < space->t_min_mm)
+        return facet_error_set(err, FACET_EINPUT,
+            "--threshold: %g:%g runs backwards", space->t_min_mm,
+            space->t_max_mm);
+    if (n == 3 && !(space->t_step_mm > 0))
+        return facet_error_set(err, FACET_EINPUT,
+            "--threshold: the step of '%s' must be above 0", text);
+    return FACET_OK;
+}
+
+/* --- what the user sees while it runs --- */
+
+struct optimize_view {
+    struct progress bar;
+    int bar_started;
+    int64_t first_done;
+};
+
+static void show_stage(void *context, const char *what)
+{
+    (void)context;
+    fprintf(stderr, "facet: %s\n", what);
+}
+
+static void show_progress(void *context, int64_t done, int64_t total)
+{
+    struct optimize_view *view = context;
+    if (!view->bar_started) {
+        progress_start(&view->bar, "options", done);
+        view->bar_started = 1;
+    }
+    progress_update(&view->bar, done, total);
+    if (done >= total)
+        progress_finish(&view->bar, done, total);
+}
+
+static int stop_requested(void *context)
+{
+    (void)context;
+    return signals_stop_requested() != 0;
+}
+
+static void show_started(void *context, int64_t run)
+{
+    (void)context;
+    fprintf(stderr, "facet: run %lld\n", (long long)run);
+}
+
+/* Fills the design space, method and objectives of *s from the flags. */
+struct search_flags {
+    const char *u, *v, *threshold, *method, *evals, *pop, *gens, *seed;
+    const char *objectives, *jobs;
+};
+
+static int parse_search(const struct search_flags *f,
+                        struct optimize_settings *s, struct facet_error *err)
+{
+    int rc;
+    long number;
+    s->space = (struct design_space){20, 40, 35, 50, 3, 3, 0};
+    if (f->u && (rc = parse_int_range(f->u, "--u", &s->space.u_min,
+                                      &s->space.u_max, err)))
+        return rc;
+    if (f->v && (rc = parse_int_range(f->v, "--v", &s->space.v_min,
+                                      &s->space.v_max, err)))
+        return rc;
+    if (f->threshold && (rc = parse_threshold(f->threshold, &s->space, err)))
+        return rc;
+    if ((rc = design_space_check(&s->space, err)))
+        return rc;
+    int continuous = s->space.t_max_mm > s->space.t_min_mm &&
+                     s->space.t_step_mm == 0;
+    if (f->method) {
+        if ((rc = optimize_method_parse(f->method, &s->method, err)))
+            return rc;
+    } else {
+        s->method = !continuous && design_space_size(&s->space) <=
+                                       EXHAUSTIVE_DEFAULT_LIMIT
+                        ? METHOD_EXHAUSTIVE : METHOD_NSGA2;
+    }
+    if (s->method == METHOD_EXHAUSTIVE && continuous)
+        return facet_error_set(err, FACET_EINPUT,
+            "--threshold %g:%g: the exhaustive method needs a step "
+            "(e.g. --threshold %g:%g:0.5)", s->space.t_min_mm,
+            s->space.t_max_mm, s->space.t_min_mm, s->space.t_max_mm);
+    s->evaluations = 1000;
+    s->population = 100;
+    s->generations = 50;
+    if (f->evals) {
+        if ((rc = args_int(f->evals, 1, 100000000, "--evals", &number, err)))
+            return rc;
+        s->evaluations = number;
+    }
+    if (f->pop) {
+        if ((rc = args_int(f->pop, 4, 100000, "--pop", &number, err)))
+            return rc;
+        s->population = (int)number;
+    }
+    if (f->gens) {
+        if ((rc = args_int(f->gens, 1, 100000, "--gens", &number, err)))
+            return rc;
+        s->generations = (int)number;
+    }
+    s->seed = 1;
+    if (f->seed) {
+        char *end;
+        unsigned long long seed = strtoull(f->seed, &end, 10);
+        if (end == f->seed || *end != '\0' || f->seed[0] == '-')
+            return facet_error_set(err, FACET_EINPUT,
+                "--seed: '%s' is not a whole number >= 0", f->seed);
+        s->seed = seed;
+    }
+    if ((rc = objectives_parse(f->objectives ? f->objectives
+                                             : "cost,planarity,dp_area",
+                               s->objectives, &s->nobjectives, err)))
+        return rc;
+    long cores = sysconf(_SC_NPROCESSORS_ONLN);
+    s->jobs = cores > 0 ? (int)(cores < 64 ? cores : 64) : 1;
+    if (f->jobs) {
+        if ((rc = args_int(f->jobs, 1, 64, "--jobs", &number, err)))
+            return rc;
+        s->jobs = (int)number;
+    }
+    return FACET_OK;
+}
+
+static int optimize_main(int argc, char **argv, struct facet_error *err)
+{
+    struct search_flags search;
+    struct classify_flags flags;
+    const char *db = NULL, *resume = NULL, *name = NULL, *table = NULL;
+    memset(&search, 0, sizeof search);
+    memset(&flags, 0, sizeof flags);
+    struct arg_option options[CLASSIFY_FLAG_COUNT + 15] = {
+        {"db", 0, ARG_STRING, &db, NULL},
+        {"u", 0, ARG_STRING, &search.u, NULL},
+        {"v", 0, ARG_STRING, &search.v, NULL},
+        {"threshold", 0, ARG_STRING, &search.threshold, NULL},
+        {"method", 0, ARG_STRING, &search.method, NULL},
+        {"evals", 0, ARG_STRING, &search.evals, NULL},
+        {"pop", 0, ARG_STRING, &search.pop, NULL},
+        {"gens", 0, ARG_STRING, &search.gens, NULL},
+        {"seed", 0, ARG_STRING, &search.seed, NULL},
+        {"objectives", 0, ARG_STRING, &search.objectives, NULL},
+        {"jobs", 'j', ARG_STRING, &search.jobs, NULL},
+        {"resume", 0, ARG_STRING, &resume, NULL},
+        {"name", 0, ARG_STRING, &name, NULL},
+        {"table", 0, ARG_STRING, &table, NULL},
+    };
+    classify_flags_table(&flags, options + 14);
+    options[CLASSIFY_FLAG_COUNT + 14] =
+        (struct arg_option){NULL, 0, ARG_FLAG, NULL, NULL};
+    const char *path[1];
+    int count;
+    int rc = args_parse(argc, argv, options, path, 1, &count, err);
+    if (rc != FACET_OK)
+        return rc;
+    if (db == NULL)
+        return facet_error_set(err, FACET_EINPUT,
+            "optimize: name the result database, e.g. --db runs.db");
+    long rows = 20, run_number = 0;
+    if (table && (rc = args_int(table, 0, 1000000000, "--table", &rows, err)))
+        return rc;
+    if (resume) {
+        if ((rc = args_int(resume, 1, 1L << 62, "--resume", &run_number,
+                           err)))
+            return rc;
+        if (count != 0)
+            return facet_error_set(err, FACET_EINPUT,
+                "optimize --resume: the run knows its surface; give no "
+                "OBJ file");
+    } else if (count != 1) {
+        return facet_error_set(err, FACET_EINPUT,
+            "optimize: name one OBJ file (facet optimize FILE.obj --db "
+            "runs.db)");
+    }
+
+    struct study_request request;
+    memset(&request, 0, sizeof request);
+    if (!resume) {
+        if ((rc = classify_flags_apply(&flags, &request.settings.base,
+                                       &request.mesh, err)))
+            return rc;
+        if ((rc = parse_search(&search, &request.settings, err)))
+            return rc;
+        request.surface_path = path[0];
+        request.flip_normals = flags.flip_normals;
+        request.name = name ? name : "";
+    }
+
+    struct store *store;
+    if ((rc = store_open(db, &store, err)) != FACET_OK)
+        return rc;
+    signals_catch_stop();
+    struct optimize_view view;
+    memset(&view, 0, sizeof view);
+    struct study_hooks hooks = {&view, show_stage, show_progress,
+                                stop_requested, show_started};
+    enum optimize_outcome outcome;
+    int64_t run = run_number;
+    if (resume)
+        rc = study_resume(store, run, &hooks, &outcome, err);
+    else
+        rc = study_start(store, &request, &hooks, &run, &outcome, err);
+    if (view.bar_started && !view.bar.finished)
+        fputc('\n', stderr);
+    if (rc == FACET_OK) {
+        if (outcome == OPTIMIZE_INTERRUPTED)
+            fprintf(stderr, "facet: run %lld interrupted; every evaluated "
+                    "option is stored. Go on with: facet optimize --db %s "
+                    "--resume %lld\n", (long long)run, db, (long long)run);
+        rc = run_table_print(stdout, store, db, run, rows, err);
+    }
+    store_close(store);
+    if (rc == FACET_OK && outcome == OPTIMIZE_INTERRUPTED)
+        return 130;
+    return rc;
+}
+
+const struct command cmd_optimize = {
+    .name = "optimize",
+    .usage = "SURFACE.obj --db FILE [--u A:B] [--v A:B] "
+             "[--threshold MM|A:B[:STEP]]\n"
+             "       [--method exhaustive|random|nsga2] [--evals N] "
+             "[--pop N] [--gens N]\n"
+             "       [--seed S] [--objectives LIST] [--jobs N] [--name TEXT]"
+             " [--table N]\n"
+             "       [classification options]\n"
+             "   or: facet optimize --db FILE --resume RUN",
+    .summary = "Search grid sizes and thresholds for the Pareto-optimal "
+               "options; store them.",
+    .options =
+        "  --db FILE           the SQLite result store (created if missing)\n"
+        "  --u A:B             panels along u (default 20:40, the paper's)\n"
+        "  --v A:B             panels along v (default 35:50, the paper's)\n"
+        "  --threshold T       flatness threshold in mm: one value (default\n"
+        "                      3), a range A:B, or A:B:STEP for exhaustive\n"
+        "  --method M          exhaustive (default up to 100,000 points),\n"
+        "                      random, or nsga2 (default above)\n"
+        "  --evals N           random: points to draw (default 1000)\n"
+        "  --pop N, --gens N   nsga2: population (100), generations (50)\n"
+        "  --seed S            the same seed gives the same options (1)\n"
+        "  --objectives LIST   metrics to minimise, max:NAME to maximise\n"
+        "                      (default cost,planarity,dp_area)\n"
+        "  --jobs N, -j N      threads (default: every core)\n"
+        "  --resume RUN        go on with an interrupted run\n"
+        "  --name TEXT         a name for the run\n"
+        "  --table N           rows of the final table (default 20; 0 all)\n",
+    .shared_options = classify_flags_usage,
+    .run = optimize_main,
+};

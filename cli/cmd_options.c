@@ -1,0 +1,172 @@
+/*
+ * cmd_options.c: `facet options DB`, the design options of a store,
+ * filtered with the --where language (store/filter.h), sorted, as a table,
+ * JSON or CSV.
+ */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "args.h"
+#include "command.h"
+#include "core/json.h"
+#include "run_table.h"
+#include "store/filter.h"
+#include "store/store.h"
+
+enum listing_format { LISTING_TABLE, LISTING_JSON, LISTING_CSV };
+
+struct listing {
+    enum listing_format format;
+    struct json_writer json;
+    int64_t rows;
+};
+
+static int list_row(void *context, int64_t run, const struct option_row *o)
+{
+    struct listing *l = context;
+    if (l->format == LISTING_TABLE) {
+        char cost[64];
+        run_table_thousands(cost, sizeof cost, o->totals.cost, 0);
+        printf("%4lld %6lld %1s %11.4f %10.2f %14s %10.2f %10.2f %4d %4d "
+               "%7.2f %4d %3s%s\n", (long long)run, (long long)o->number,
+               o->rank == 1 ? "*" : "", o->totals.planarity,
+               o->totals.area_of[TYPE_DP], cost, o->totals.area_of[TYPE_FP],
+               o->totals.area_of[TYPE_SP], o->nu, o->nv, o->threshold_mm,
+               o->rank, o->totals.feasible ? "yes" : "no",
+               o->knee ? "  knee" : "");
+    } else if (l->format == LISTING_JSON) {
+        json_begin_object(&l->json);
+        json_key(&l->json, "run");
+        json_integer(&l->json, run);
+        for (int k = 0; store_option_columns[k] != NULL; k++) {
+            const char *name = store_option_columns[k];
+            if (strcmp(name, "run") == 0)
+                continue;
+            double value = store_option_value(o, name);
+            json_key(&l->json, name);
+            if (!isfinite(value))
+                json_null(&l->json);  /* crowding at a front's end */
+            else if (value == floor(value) && fabs(value) < 1e15)
+                json_integer(&l->json, (long long)value);
+            else
+                json_number(&l->json, value);
+        }
+        json_end_object(&l->json);
+    } else {
+        printf("%lld", (long long)run);
+        for (int k = 0; store_option_columns[k] != NULL; k++) {
+            if (strcmp(store_option_columns[k], "run") == 0)
+                continue;
+            double value = store_option_value(o, store_option_columns[k]);
+            if (isinf(value))
+                printf(",inf");
+            else
+                printf(",%.12g", value);
+        }
+        putchar('\n');
+    }
+    l->rows++;
+    return 0;
+}
+
+static int options_main(int argc, char **argv, struct facet_error *err)
+{
+    const char *run = NULL, *sort = NULL, *where = NULL, *limit = NULL;
+    int pareto = 0, desc = 0, json = 0, csv = 0;
+    const struct arg_option options[] = {
+        {"run", 0, ARG_STRING, &run, NULL},
+        {"pareto", 0, ARG_FLAG, NULL, &pareto},
+        {"sort", 0, ARG_STRING, &sort, NULL},
+        {"desc", 0, ARG_FLAG, NULL, &desc},
+        {"where", 0, ARG_STRING, &where, NULL},
+        {"limit", 0, ARG_STRING, &limit, NULL},
+        {"json", 0, ARG_FLAG, NULL, &json},
+        {"csv", 0, ARG_FLAG, NULL, &csv},
+        {NULL, 0, ARG_FLAG, NULL, NULL},
+    };
+    const char *path[1];
+    int count;
+    int rc = args_parse(argc, argv, options, path, 1, &count, err);
+    if (rc != FACET_OK)
+        return rc;
+    if (count != 1)
+        return facet_error_set(err, FACET_EINPUT,
+            "options: name the result database (facet options runs.db)");
+    if (json && csv)
+        return facet_error_set(err, FACET_EINPUT,
+            "options: choose one of --json and --csv");
+    long run_id = 0, rows = 0;
+    if (run && (rc = args_int(run, 1, 1L << 62, "--run", &run_id, err)))
+        return rc;
+    if (limit && (rc = args_int(limit, 1, 1L << 62, "--limit", &rows, err)))
+        return rc;
+    struct filter *filter = NULL;
+    if (where && (rc = filter_compile(where, &filter, err)))
+        return rc;
+    struct store *store;
+    if ((rc = store_open(path[0], &store, err)) != FACET_OK) {
+        filter_free(filter);
+        return rc;
+    }
+    struct run_info info;
+    if (run_id > 0)
+        rc = store_run_get(store, run_id, &info, err);
+
+    struct listing listing;
+    memset(&listing, 0, sizeof listing);
+    listing.format = json ? LISTING_JSON : csv ? LISTING_CSV : LISTING_TABLE;
+    if (rc == FACET_OK) {
+        if (listing.format == LISTING_TABLE) {
+            printf("%4s %6s %1s %11s %10s %14s %10s %10s %4s %4s %7s %4s "
+                   "%3s\n", "run", "No.", "", "planarity", "DP area",
+                   "total cost", "FP area", "SP area", "U", "V", "t",
+                   "rank", "ok");
+            printf("%4s %6s %1s %11s %10s %14s %10s %10s %4s %4s %7s\n", "",
+                   "", "", "m", "m^2", "USD", "m^2", "m^2", "", "", "mm");
+        } else if (listing.format == LISTING_JSON) {
+            json_init(&listing.json, stdout);
+            json_begin_array(&listing.json);
+        } else {
+            printf("run");
+            for (int k = 0; store_option_columns[k] != NULL; k++)
+                if (strcmp(store_option_columns[k], "run") != 0)
+                    printf(",%s", store_option_columns[k]);
+            putchar('\n');
+        }
+        struct option_query q = {run_id, pareto, filter, sort, desc, rows, 0};
+        rc = store_options_query(store, &q, list_row, &listing, err);
+        if (listing.format == LISTING_JSON) {
+            json_end_array(&listing.json);
+            json_finish(&listing.json);
+        } else if (listing.format == LISTING_TABLE && rc == FACET_OK) {
+            printf("(%lld options%s%s)\n", (long long)listing.rows,
+                   filter ? " where " : "", filter ? filter_text(filter)
+                                                   : "");
+        }
+    }
+    store_close(store);
+    filter_free(filter);
+    return rc;
+}
+
+const struct command cmd_options = {
+    .name = "options",
+    .usage = "DB [--run N] [--pareto] [--sort KEY[,KEY]] [--desc]\n"
+             "       [--where EXPR] [--limit N] [--json|--csv]",
+    .summary = "List, filter and sort the design options of a result "
+               "store.",
+    .options =
+        "  --run N             only run N (default every run)\n"
+        "  --pareto            only Pareto-optimal options (rank 1)\n"
+        "  --sort KEYS         columns to sort by, e.g. cost,dp_area\n"
+        "                      (default run, number)\n"
+        "  --desc              sort descending\n"
+        "  --where EXPR        e.g. 'cost < 1.5e6 and dp_area <= 900 or\n"
+        "                      pareto' (columns: see README)\n"
+        "  --limit N           at most N options\n"
+        "  --json              one JSON array, every column\n"
+        "  --csv               CSV with a header row, every column\n",
+    .run = options_main,
+};

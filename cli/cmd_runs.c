@@ -1,0 +1,139 @@
+/*
+ * cmd_runs.c: `facet runs DB`, one line per run of a result store.
+ */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "args.h"
+#include "command.h"
+#include "core/json.h"
+#include "run_table.h"
+#include "store/store.h"
+
+static void print_json(const struct run_info *runs, size_t n)
+{
+    struct json_writer w;
+    json_init(&w, stdout);
+    json_begin_array(&w);
+    for (size_t k = 0; k < n; k++) {
+        const struct run_info *r = &runs[k];
+        json_begin_object(&w);
+        json_key(&w, "id"); json_integer(&w, r->id);
+        json_key(&w, "name"); json_string(&w, r->name);
+        json_key(&w, "status"); json_string(&w, r->status);
+        json_key(&w, "surface"); json_string(&w, r->surface_path);
+        json_key(&w, "surface_sha256"); json_string(&w, r->surface_sha256);
+        json_key(&w, "units"); json_string(&w, r->units);
+        json_key(&w, "method"); json_string(&w, r->method);
+        json_key(&w, "seed"); json_integer(&w, (long long)r->seed);
+        json_key(&w, "u");
+        json_begin_array(&w);
+        json_integer(&w, r->u_min);
+        json_integer(&w, r->u_max);
+        json_end_array(&w);
+        json_key(&w, "v");
+        json_begin_array(&w);
+        json_integer(&w, r->v_min);
+        json_integer(&w, r->v_max);
+        json_end_array(&w);
+        json_key(&w, "threshold_mm");
+        json_begin_array(&w);
+        json_number(&w, r->threshold_min_mm);
+        json_number(&w, r->threshold_max_mm);
+        json_number(&w, r->threshold_step_mm);
+        json_end_array(&w);
+        json_key(&w, "objectives"); json_string(&w, r->objectives);
+        json_key(&w, "options"); json_integer(&w, r->options);
+        json_key(&w, "pareto_options"); json_integer(&w, r->pareto_options);
+        json_key(&w, "knee");
+        if (r->knee > 0)
+            json_integer(&w, r->knee);
+        else
+            json_null(&w);
+        json_key(&w, "hypervolume");
+        if (isfinite(r->hypervolume))
+            json_number(&w, r->hypervolume);
+        else
+            json_null(&w);
+        json_key(&w, "best_cost");
+        if (isfinite(r->best_cost))
+            json_number(&w, r->best_cost);
+        else
+            json_null(&w);
+        json_key(&w, "started"); json_string(&w, r->started);
+        json_key(&w, "finished");
+        if (r->finished[0])
+            json_string(&w, r->finished);
+        else
+            json_null(&w);
+        json_key(&w, "elapsed"); json_number(&w, r->elapsed);
+        json_key(&w, "version"); json_string(&w, r->version);
+        json_end_object(&w);
+    }
+    json_end_array(&w);
+    json_finish(&w);
+}
+
+static void print_human(const struct run_info *runs, size_t n)
+{
+    printf("%4s %-11s %-10s %8s %6s %14s %8s %9s  %-20s %s\n", "run",
+           "status", "method", "options", "pareto", "best cost USD",
+           "HV", "elapsed s", "started", "name / surface");
+    for (size_t k = 0; k < n; k++) {
+        const struct run_info *r = &runs[k];
+        char cost[64] = "-", hv[32] = "-";
+        if (isfinite(r->best_cost))
+            run_table_thousands(cost, sizeof cost, r->best_cost, 0);
+        if (isfinite(r->hypervolume))
+            snprintf(hv, sizeof hv, "%.4f", r->hypervolume);
+        printf("%4lld %-11s %-10s %8lld %6lld %14s %8s %9.2f  %-20s %s%s%s\n",
+               (long long)r->id, r->status, r->method, (long long)r->options,
+               (long long)r->pareto_options, cost, hv, r->elapsed,
+               r->started, r->name, r->name[0] ? " / " : "",
+               r->surface_path);
+    }
+    if (n == 0)
+        printf("(no runs yet: facet optimize SURFACE.obj --db FILE)\n");
+}
+
+static int runs_main(int argc, char **argv, struct facet_error *err)
+{
+    int json = 0;
+    const struct arg_option options[] = {
+        {"json", 0, ARG_FLAG, NULL, &json},
+        {NULL, 0, ARG_FLAG, NULL, NULL},
+    };
+    const char *path[1];
+    int count;
+    int rc = args_parse(argc, argv, options, path, 1, &count, err);
+    if (rc != FACET_OK)
+        return rc;
+    if (count != 1)
+        return facet_error_set(err, FACET_EINPUT,
+            "runs: name the result database (facet runs runs.db)");
+    struct store *store;
+    if ((rc = store_open(path[0], &store, err)) != FACET_OK)
+        return rc;
+    struct run_info *runs;
+    size_t n;
+    rc = store_run_list(store, &runs, &n, err);
+    if (rc == FACET_OK) {
+        if (json)
+            print_json(runs, n);
+        else
+            print_human(runs, n);
+        free(runs);
+    }
+    store_close(store);
+    return rc;
+}
+
+const struct command cmd_runs = {
+    .name = "runs",
+    .usage = "DB [--json]",
+    .summary = "List the runs of a result store, one line each.",
+    .options = "  --json              one JSON array of runs\n",
+    .run = runs_main,
+};

@@ -1,0 +1,98 @@
+/*
+ * cmd_show.c: `facet show DB --run N --option M`, one stored option: its
+ * variables, totals and panel map, computing and storing its panels first
+ * when they are not stored yet.
+ */
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "args.h"
+#include "command.h"
+#include "option_text.h"
+#include "core/report.h"
+#include "store/study.h"
+
+static int show_main(int argc, char **argv, struct facet_error *err)
+{
+    const char *run = NULL, *option = NULL;
+    int json = 0;
+    const struct arg_option options[] = {
+        {"run", 0, ARG_STRING, &run, NULL},
+        {"option", 0, ARG_STRING, &option, NULL},
+        {"json", 0, ARG_FLAG, NULL, &json},
+        {NULL, 0, ARG_FLAG, NULL, NULL},
+    };
+    const char *path[1];
+    int count;
+    int rc = args_parse(argc, argv, options, path, 1, &count, err);
+    if (rc != FACET_OK)
+        return rc;
+    if (count != 1 || run == NULL || option == NULL)
+        return facet_error_set(err, FACET_EINPUT,
+            "show: give the database, the run and the option (facet show "
+            "runs.db --run 1 --option 12)");
+    long run_id, number;
+    if ((rc = args_int(run, 1, 1L << 62, "--run", &run_id, err)) ||
+        (rc = args_int(option, 1, 1L << 62, "--option", &number, err)))
+        return rc;
+    struct store *store;
+    if ((rc = store_open(path[0], &store, err)) != FACET_OK)
+        return rc;
+    struct run_info info;
+    struct option_row row;
+    struct optimize_settings settings;
+    struct mesh_options mesh;
+    struct panelization panels;
+    struct option_totals totals;
+    int flip;
+    memset(&panels, 0, sizeof panels);
+    rc = store_run_get(store, run_id, &info, err);
+    if (rc == FACET_OK)
+        rc = store_option_get(store, run_id, number, &row, err);
+    if (rc == FACET_OK)
+        rc = study_settings(&info, &settings, &mesh, &flip, err);
+    if (rc == FACET_OK)
+        rc = study_option_panels(store, &info, NULL, number, &panels,
+                                 &totals, err);
+    if (rc == FACET_OK) {
+        struct classify_options classify = settings.base.classify;
+        classify.threshold = row.threshold_mm / 1000;
+        if (json) {
+            struct report_source source = {
+                info.surface_path, info.units, totals.area, 0, "",
+                info.per_panel,
+            };
+            report_json(stdout, &source, &classify, &panels, &totals);
+        } else {
+            printf("%-16s run %lld option %lld%s%s\n", "option",
+                   (long long)run_id, (long long)number,
+                   row.rank == 1 ? " (Pareto-optimal)" : "",
+                   row.knee ? " (the knee)" : "");
+            printf("%-16s %s (%s)\n", "surface", info.surface_path,
+                   info.units);
+            printf("%-16s %d x %d (%zu panels)\n", "grid", row.nu, row.nv,
+                   totals.panels);
+            printf("%-16s %g mm\n", "threshold", row.threshold_mm);
+            printf("%-16s %d%s\n", "Pareto rank", row.rank,
+                   row.rank == 0 ? " (not ranked yet)" : "");
+            option_text_totals(stdout, &totals, &classify);
+            option_text_map(stdout, &panels);
+        }
+    }
+    panelization_free(&panels);
+    store_close(store);
+    return rc;
+}
+
+const struct command cmd_show = {
+    .name = "show",
+    .usage = "DB --run N --option M [--json]",
+    .summary = "Show one stored option: totals and panel map.",
+    .options =
+        "  --run N             the run\n"
+        "  --option M          the option's number in the run\n"
+        "  --json              the option as facet classify --json writes "
+        "it\n",
+    .run = show_main,
+};

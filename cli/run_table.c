@@ -1,0 +1,120 @@
+/*
+ * run_table.c: the paper's Table 2 for a run. See run_table.h.
+ */
+#include "run_table.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+void run_table_thousands(char *out, size_t size, double value, int decimals)
+{
+    char digits[64];
+    snprintf(digits, sizeof digits, "%.*f", decimals, fabs(value));
+    char *point = strchr(digits, '.');
+    size_t whole = point ? (size_t)(point - digits) : strlen(digits);
+    size_t len = 0;
+    if (value < 0 && len + 1 < size)
+        out[len++] = '-';
+    for (size_t k = 0; k < whole && len + 1 < size; k++) {
+        if (k > 0 && (whole - k) % 3 == 0 && len + 1 < size)
+            out[len++] = ',';
+        if (len + 1 < size)
+            out[len++] = digits[k];
+    }
+    out[len] = '\0';
+    if (point)
+        snprintf(out + len, size - len, "%s", point);
+}
+
+struct table_rows {
+    struct option_row *rows;
+    size_t n, capacity;
+    int out_of_memory;
+};
+
+static int collect(void *context, int64_t run, const struct option_row *o)
+{
+    (void)run;
+    struct table_rows *t = context;
+    if (t->n == t->capacity) {
+        size_t capacity = t->capacity ? 2 * t->capacity : 64;
+        struct option_row *grown = realloc(t->rows,
+                                           capacity * sizeof *grown);
+        if (grown == NULL) {
+            t->out_of_memory = 1;
+            return 1;
+        }
+        t->rows = grown;
+        t->capacity = capacity;
+    }
+    t->rows[t->n++] = *o;
+    return 0;
+}
+
+static int by_cost(const void *a, const void *b)
+{
+    const struct option_row *x = a, *y = b;
+    if (x->totals.cost != y->totals.cost)
+        return x->totals.cost < y->totals.cost ? -1 : 1;
+    return x->number < y->number ? -1 : x->number > y->number;
+}
+
+int run_table_print(FILE *out, struct store *store, const char *db,
+                    int64_t run, long rows, struct facet_error *err)
+{
+    struct run_info info;
+    int rc = store_run_get(store, run, &info, err);
+    if (rc != FACET_OK)
+        return rc;
+    char cost[64];
+    run_table_thousands(cost, sizeof cost, info.best_cost, 0);
+    fprintf(out, "run %lld (%s%s%s): %s, %s, %lld options in %.2f s, "
+            "%lld Pareto-optimal\n", (long long)info.id, info.status,
+            info.name[0] ? ", " : "", info.name, info.surface_path,
+            info.method, (long long)info.options, info.elapsed,
+            (long long)info.pareto_options);
+    fprintf(out, "objectives %s; hypervolume %.6f (normalised, reference "
+            "point 1.1 on every axis); knee option %lld; best cost %s USD\n",
+            info.objectives, info.hypervolume, (long long)info.knee,
+            isfinite(info.best_cost) ? cost : "-");
+
+    /* The Pareto options first, then the next fronts, cheapest first
+     * within each, up to rows. */
+    long limit = rows == 0 ? 0
+                 : (long)info.pareto_options > rows ? (long)info.pareto_options
+                                                    : rows;
+    struct table_rows table = {NULL, 0, 0, 0};
+    struct option_query q = {run, 0, NULL, "rank,cost", 0, limit, 0};
+    rc = store_options_query(store, &q, collect, &table, err);
+    if (rc == FACET_OK && table.out_of_memory)
+        rc = facet_error_set(err, FACET_EWORK, "out of memory");
+    if (rc != FACET_OK) {
+        free(table.rows);
+        return rc;
+    }
+    qsort(table.rows, table.n, sizeof *table.rows, by_cost);
+    fprintf(out, "\n%6s %1s %11s %10s %14s %10s %10s %4s %4s %7s %4s\n",
+            "No.", "", "planarity", "DP area", "total cost", "FP area",
+            "SP area", "U", "V", "t", "rank");
+    fprintf(out, "%6s %1s %11s %10s %14s %10s %10s %4s %4s %7s %4s\n", "",
+            "", "m", "m^2", "USD", "m^2", "m^2", "", "", "mm", "");
+    for (size_t k = 0; k < table.n; k++) {
+        const struct option_row *o = &table.rows[k];
+        run_table_thousands(cost, sizeof cost, o->totals.cost, 0);
+        fprintf(out, "%6lld %1s %11.3f %10.1f %14s %10.1f %10.1f %4d %4d "
+                "%7.2f %4d%s%s\n", (long long)o->number,
+                o->rank == 1 ? "*" : "", o->totals.planarity,
+                o->totals.area_of[TYPE_DP], cost, o->totals.area_of[TYPE_FP],
+                o->totals.area_of[TYPE_SP], o->nu, o->nv, o->threshold_mm,
+                o->rank, o->knee ? "  knee" : "",
+                o->totals.feasible ? "" : "  infeasible");
+    }
+    if ((int64_t)table.n < info.options)
+        fprintf(out, "(%zu of %lld options; 'facet options %s --run %lld' "
+                "lists them all)\n", table.n, (long long)info.options,
+                db, (long long)run);
+    fprintf(out, "* Pareto-optimal\n");
+    free(table.rows);
+    return FACET_OK;
+}

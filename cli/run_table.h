@@ -1,0 +1,23 @@
+/*
+ * run_table.h: a run's options as the paper's Table 2 (No., total
+ * planarity, DP area, total cost, FP area, SP area, U, V, threshold, a
+ * mark for the Pareto options), sorted like the paper's: by total cost,
+ * cheapest first. Printed by `facet optimize` at the end of a run.
+ */
+#ifndef FACET_RUN_TABLE_H
+#define FACET_RUN_TABLE_H
+
+#include <stdio.h>
+
+#include "store/store.h"
+
+/* Prints the run's summary line and its table: every Pareto option, then
+ * the best-ranked others, rows in all (0 = every option). */
+int run_table_print(FILE *out, struct store *store, const char *db,
+                    int64_t run, long rows, struct facet_error *err);
+
+/* Formats a number with thousands separators and decimals places:
+ * 1481515.2 -> "1,481,515" (decimals 0). */
+void run_table_thousands(char *out, size_t size, double value, int decimals);
+
+#endif

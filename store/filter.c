@@ -1,0 +1,1075 @@
+/*
+ * filter.c: the --where expression language (filter.h, filter_sql.h).
+ *
+ * Text is lexed into tokens, parsed by recursive descent into a small tree
+ * held in one array, and that tree is written back three ways: the text
+ * Facet shows (filter_text), the SQL fragment store.c runs (filter_sql),
+ * and an in-memory evaluator (filter_match) that follows SQL's three-valued
+ * logic so that both always select the same options. The option columns a
+ * filter or sort may name are defined here too (store_option_columns).
+ * This file runs no SQL and knows nothing of what the columns mean beyond
+ * which of them are yes/no.
+ *
+ * Hostile text is bounded before any work: at most FILTER_MAX_LENGTH bytes,
+ * at most FILTER_MAX_DEPTH nested '(' and 'not' (recursion depth), and
+ * and/or chains are n-ary nodes, so no chain makes the tree deep.
+ */
+#include "store/filter.h"
+#include "store/filter_sql.h"
+#include "store/store.h"
+
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "core/numparse.h"
+
+const char *const store_option_columns[] = {
+    "number", "generation", "nu", "nv", "threshold_mm", "panels",
+    "fp_count", "sp_count", "dp_count", "fp_area", "sp_area", "dp_area",
+    "area", "cost", "planarity", "max_deviation", "max_panel_area",
+    "p_dist", "feasible", "rank", "crowding", "knee", "run", NULL,
+};
+
+enum { COLUMN_COUNT = 23 };
+_Static_assert(sizeof store_option_columns / sizeof *store_option_columns ==
+                   COLUMN_COUNT + 1,
+               "column_example must follow store_option_columns");
+
+/* A plausible number to compare each column with, for the message that
+ * tells a user to compare a column that is not yes/no; NULL marks the
+ * yes/no columns, which may stand alone. */
+static const char *const column_example[COLUMN_COUNT] = {
+    "10", "5", "30", "30", "5", "500",
+    "100", "100", "100", "100", "100", "900",
+    "1200", "1e6", "0.01", "0.01", "4",
+    "0.5", NULL, "2", "0.5", NULL, "1",
+};
+
+/* Other names a user may type for a column. */
+static const struct {
+    const char *name;
+    const char *column;
+} aliases[] = {
+    {"u", "nu"},
+    {"v", "nv"},
+    {"threshold", "threshold_mm"},
+};
+
+#define ALIAS_COUNT (sizeof aliases / sizeof *aliases)
+#define COLUMN_PARETO (-2)  /* the name pareto: rank = 1, not a column */
+#define COLUMN_UNKNOWN (-1)
+#define SHOWN_MAX 40        /* bytes of a user's word quoted in a message */
+
+enum op { OP_LT, OP_LE, OP_GT, OP_GE, OP_EQ, OP_NE };
+
+static const char *const op_text[] = {"<", "<=", ">", ">=", "=", "!="};
+
+/* a OP b is b FLIPPED(OP) a: NUMBER OP COLUMN becomes COLUMN OP' NUMBER. */
+static const enum op op_flipped[] = {OP_GT, OP_GE, OP_LT, OP_LE, OP_EQ,
+                                     OP_NE};
+
+enum token_kind {
+    TOK_END,
+    TOK_NAME,
+    TOK_NUMBER,
+    TOK_OP,
+    TOK_LPAREN,
+    TOK_RPAREN,
+    TOK_AND,
+    TOK_OR,
+    TOK_NOT
+};
+
+struct token {
+    enum token_kind kind;
+    size_t at;       /* byte offset in the text */
+    size_t length;   /* bytes */
+    enum op op;      /* TOK_OP */
+    double number;   /* TOK_NUMBER */
+};
+
+enum node_kind {
+    NODE_COMPARE,    /* column op params[param] */
+    NODE_YES_NO,     /* column != 0 */
+    NODE_PARETO,     /* rank = 1 */
+    NODE_NOT,
+    NODE_AND,
+    NODE_OR
+};
+
+struct node {
+    enum node_kind kind;
+    enum op op;      /* NODE_COMPARE */
+    int column;      /* index into store_option_columns */
+    size_t param;    /* NODE_COMPARE: index into filter->params */
+    int child;       /* NOT, AND, OR: first operand */
+    int next;        /* the next operand of the parent, -1 after the last */
+};
+
+struct filter {
+    struct node *nodes;
+    int root;        /* -1 for the empty filter, which matches everything */
+    double *params;  /* the user's numbers, in the order written */
+    size_t nparams;
+    char *text;      /* filter_text */
+};
+
+struct parser {
+    const char *text;
+    size_t length;
+    struct token *tokens;
+    size_t ntokens;
+    size_t pos;      /* the next token */
+    struct filter *filter;
+    int nnodes;
+    int depth;       /* '(' and 'not' open */
+    struct facet_error *err;
+};
+
+/* ---- characters and messages --------------------------------------------- */
+
+/* ASCII only, whatever the locale: the language is ASCII. */
+static int is_space(char c)
+{
+    return c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\v' ||
+           c == '\f';
+}
+
+static int is_digit(char c)
+{
+    return c >= '0' && c <= '9';
+}
+
+static int is_name_start(char c)
+{
+    return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_';
+}
+
+static int is_name_char(char c)
+{
+    return is_name_start(c) || is_digit(c);
+}
+
+static char lower(char c)
+{
+    return c >= 'A' && c <= 'Z' ? (char)(c - 'A' + 'a') : c;
+}
+
+/* Whether the length bytes at s spell word (lowercase) in any case. */
+static int word_is(const char *s, size_t length, const char *word)
+{
+    size_t i = 0;
+    for (; i < length && word[i] != '\0'; i++)
+        if (lower(s[i]) != word[i])
+            return 0;
+    return i == length && word[i] == '\0';
+}
+
+/* The 1-based character position of byte offset at: UTF-8 continuation
+ * bytes do not start a character, so a caret under a terminal line lands
+ * where the user sees the mistake. */
+static size_t column_of(const char *text, size_t at)
+{
+    size_t column = 1;
+    for (size_t i = 0; i < at; i++)
+        column += ((unsigned char)text[i] & 0xC0) != 0x80;
+    return column;
+}
+
+/* Sets p->err to "--where: column N: WHAT", N the column of byte offset at.
+ * Returns FACET_EINPUT. */
+static int fail_at(struct parser *p, size_t at, const char *fmt, ...)
+    __attribute__((format(printf, 3, 4)));
+
+static int fail_at(struct parser *p, size_t at, const char *fmt, ...)
+{
+    char what[sizeof p->err->message];
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(what, sizeof what, fmt, ap);
+    va_end(ap);
+    return facet_error_set(p->err, FACET_EINPUT, "--where: column %zu: %s",
+                           column_of(p->text, at), what);
+}
+
+/* The token as the user wrote it, cut to SHOWN_MAX bytes, for quoting in
+ * a message. Only ever holds ASCII: names, numbers and operators are. */
+static const char *shown(const struct parser *p, const struct token *t,
+                         char buf[SHOWN_MAX + 4])
+{
+    if (t->kind == TOK_END)
+        return "the end";
+    size_t n = t->length;
+    if (n > SHOWN_MAX) {
+        memcpy(buf, p->text + t->at, SHOWN_MAX - 3);
+        memcpy(buf + SHOWN_MAX - 3, "...", 4);
+    } else {
+        memcpy(buf, p->text + t->at, n);
+        buf[n] = '\0';
+    }
+    return buf;
+}
+
+/* Optimal string alignment distance of a (length n, any case) to the
+ * lowercase word b, or 3 when it is surely more than 2 (all callers want). */
+static int distance(const char *a, size_t n, const char *b)
+{
+    size_t m = strlen(b);
+    if (n > m + 2 || m > n + 2 || m > 30)
+        return 3;
+    int d[33][33];
+    for (size_t i = 0; i <= n; i++)
+        d[i][0] = (int)i;
+    for (size_t j = 0; j <= m; j++)
+        d[0][j] = (int)j;
+    for (size_t i = 1; i <= n; i++)
+        for (size_t j = 1; j <= m; j++) {
+            int cost = lower(a[i - 1]) != b[j - 1];
+            int best = d[i - 1][j - 1] + cost;
+            if (d[i - 1][j] + 1 < best)
+                best = d[i - 1][j] + 1;
+            if (d[i][j - 1] + 1 < best)
+                best = d[i][j - 1] + 1;
+            if (i > 1 && j > 1 && lower(a[i - 1]) == b[j - 2] &&
+                lower(a[i - 2]) == b[j - 1] && d[i - 2][j - 2] + 1 < best)
+                best = d[i - 2][j - 2] + 1;
+            d[i][j] = best;
+        }
+    return d[n][m];
+}
+
+/* The candidate closest to the word a (length n): within 2 edits, and
+ * fewer edits than the word has letters, so "x" does not become "u". The
+ * first of equally close ones; NULL when none is close. */
+static const char *closest(const char *a, size_t n,
+                           const char *const *candidates, size_t count)
+{
+    const char *best = NULL;
+    int best_distance = 3;
+    for (size_t k = 0; k < count; k++) {
+        int d = distance(a, n, candidates[k]);
+        if (d < best_distance && (size_t)d < n) {
+            best = candidates[k];
+            best_distance = d;
+        }
+    }
+    return best;
+}
+
+/* ---- lexing -------------------------------------------------------------- */
+
+/* Whether a NaN or infinity is spelled at s (length n). */
+static int is_not_finite_word(const char *s, size_t n)
+{
+    return word_is(s, n, "nan") || word_is(s, n, "inf") ||
+           word_is(s, n, "infinity");
+}
+
+/* The length of the well-formed, printable UTF-8 character of two to four
+ * bytes at s, or 0 (then the message shows the byte in hex, keeping control
+ * characters and broken sequences out of a one-line message). */
+static size_t utf8_length(const char *s)
+{
+    const unsigned char *u = (const unsigned char *)s;
+    size_t n = u[0] >= 0xC2 && u[0] <= 0xDF   ? 2
+               : u[0] >= 0xE0 && u[0] <= 0xEF ? 3
+               : u[0] >= 0xF0 && u[0] <= 0xF4 ? 4
+                                              : 0;
+    for (size_t k = 1; k < n; k++)
+        if ((u[k] & 0xC0) != 0x80)
+            return 0;
+    if (n == 2 && u[0] == 0xC2 && u[1] < 0xA0)
+        return 0;  /* C1 controls */
+    if (n == 3 && ((u[0] == 0xE0 && u[1] < 0xA0) ||
+                   (u[0] == 0xED && u[1] >= 0xA0)))
+        return 0;  /* overlong, surrogates */
+    if (n == 4 && ((u[0] == 0xF0 && u[1] < 0x90) ||
+                   (u[0] == 0xF4 && u[1] >= 0x90)))
+        return 0;  /* overlong, beyond U+10FFFF */
+    return n;
+}
+
+/* Reads the number that starts at byte i into t: [+-] decimal [exponent]
+ * or [+-] decimal k/K/M. Whatever name character or '.' follows makes it
+ * malformed, so "1e6and" and "1.2.3" are mistakes rather than two tokens.
+ */
+static int lex_number(struct parser *p, size_t i, struct token *t)
+{
+    const char *s = p->text;
+    const char *stop = s + i;
+    double value = 0;
+    int rc = numparse_double(s + i, s + p->length, &value, &stop);
+    size_t j = (size_t)(stop - s);
+    t->kind = TOK_NUMBER;  /* for shown() in the messages below */
+    if (rc == NUMPARSE_SYNTAX)
+        j = i + 1;
+    int has_exponent = memchr(s + i, 'e', j - i) != NULL ||
+                       memchr(s + i, 'E', j - i) != NULL;
+    int scale = 0;  /* decimal exponent of a k or M suffix */
+    if (rc != NUMPARSE_SYNTAX && j < p->length &&
+        (s[j] == 'k' || s[j] == 'K' || s[j] == 'M') &&
+        !(is_name_char(s[j + 1]) || s[j + 1] == '.')) {
+        scale = s[j] == 'M' ? 6 : 3;
+        j++;
+    }
+    if (rc == NUMPARSE_SYNTAX || is_name_char(s[j]) || s[j] == '.') {
+        size_t k = j;
+        while (is_name_char(s[k]) || s[k] == '.')
+            k++;
+        t->length = k - i;
+        char buf[SHOWN_MAX + 4];
+        if (s[j] == 'm' && k == j + 1)
+            return fail_at(p, j, "'m' after a number is ambiguous; write k "
+                                 "(thousand) or M (million)");
+        return fail_at(p, i, "malformed number '%s'", shown(p, t, buf));
+    }
+    t->length = j - i;
+    char buf[SHOWN_MAX + 4];
+    if (rc == NUMPARSE_RANGE)
+        return fail_at(p, i, "number '%s' is out of range",
+                       shown(p, t, buf));
+    if (scale != 0) {
+        if (has_exponent)
+            return fail_at(p, i, "number '%s' has both an exponent and a "
+                                 "k/M suffix; write one",
+                           shown(p, t, buf));
+        /* Shifting the decimal exponent of the written digits, rather than
+         * multiplying, keeps 1.1k exactly the double of 1100. */
+        size_t n = j - 1 - i;
+        char *scaled = malloc(n + 3);
+        if (scaled == NULL)
+            return facet_error_set(p->err, FACET_EWORK,
+                                   "--where: out of memory");
+        memcpy(scaled, s + i, n);
+        scaled[n] = 'e';
+        scaled[n + 1] = (char)('0' + scale);
+        scaled[n + 2] = '\0';
+        rc = numparse_double(scaled, scaled + n + 2, &value, &stop);
+        free(scaled);
+        if (rc != NUMPARSE_OK)
+            return fail_at(p, i, "number '%s' is out of range",
+                           shown(p, t, buf));
+    }
+    if (!isfinite(value))
+        return fail_at(p, i, "number '%s' is out of range",
+                       shown(p, t, buf));
+    t->kind = TOK_NUMBER;
+    t->number = value;
+    return FACET_OK;
+}
+
+/* Splits p->text into p->tokens, the last one TOK_END at the end of the
+ * text. p->tokens has room for one token per byte plus the end. */
+static int lex(struct parser *p)
+{
+    const char *s = p->text;
+    size_t i = 0;
+    p->ntokens = 0;
+    for (;;) {
+        while (i < p->length && is_space(s[i]))
+            i++;
+        struct token *t = &p->tokens[p->ntokens++];
+        t->kind = TOK_END;
+        t->at = i;
+        t->length = 0;
+        t->op = OP_EQ;
+        t->number = 0;
+        if (i == p->length)
+            return FACET_OK;
+        char c = s[i], d = s[i + 1];  /* s[p->length] is the NUL */
+        t->length = 1;
+        switch (c) {
+        case '(':
+            t->kind = TOK_LPAREN;
+            break;
+        case ')':
+            t->kind = TOK_RPAREN;
+            break;
+        case '<':
+            t->kind = TOK_OP;
+            t->op = d == '=' ? OP_LE : d == '>' ? OP_NE : OP_LT;
+            t->length = d == '=' || d == '>' ? 2 : 1;
+            break;
+        case '>':
+            t->kind = TOK_OP;
+            t->op = d == '=' ? OP_GE : OP_GT;
+            t->length = d == '=' ? 2 : 1;
+            break;
+        case '=':
+            t->kind = TOK_OP;
+            t->op = OP_EQ;
+            t->length = d == '=' ? 2 : 1;
+            break;
+        case '!':
+            if (d == '=') {
+                t->kind = TOK_OP;
+                t->op = OP_NE;
+                t->length = 2;
+            } else {
+                t->kind = TOK_NOT;
+            }
+            break;
+        case '&':
+        case '|':
+            if (d != c)
+                return fail_at(p, i, "'%c' is not an operator; write %s "
+                                     "(or %c%c)",
+                               c, c == '&' ? "and" : "or", c, c);
+            t->kind = c == '&' ? TOK_AND : TOK_OR;
+            t->length = 2;
+            break;
+        default:
+            if (is_name_start(c)) {
+                size_t j = i;
+                while (is_name_char(s[j]))
+                    j++;
+                t->length = j - i;
+                t->kind = word_is(s + i, t->length, "and")   ? TOK_AND
+                          : word_is(s + i, t->length, "or")  ? TOK_OR
+                          : word_is(s + i, t->length, "not") ? TOK_NOT
+                                                              : TOK_NAME;
+            } else if (is_digit(c) || (c == '.' && is_digit(d)) ||
+                       ((c == '+' || c == '-') &&
+                        (is_digit(d) || (d == '.' && is_digit(s[i + 2]))))) {
+                int rc = lex_number(p, i, t);
+                if (rc != FACET_OK)
+                    return rc;
+            } else if ((c == '+' || c == '-') && is_name_start(d)) {
+                size_t j = i + 1;
+                while (is_name_char(s[j]))
+                    j++;
+                if (is_not_finite_word(s + i + 1, j - i - 1))
+                    return fail_at(p, i, "NaN and infinity are not allowed; "
+                                         "write a finite number");
+                return fail_at(p, i, "unexpected '%c'", c);
+            } else if (c >= 0x21 && c <= 0x7E) {
+                return fail_at(p, i, "unexpected '%c'", c);
+            } else {
+                size_t n = utf8_length(s + i);
+                if (n > 0)
+                    return fail_at(p, i, "unexpected character '%.*s'",
+                                   (int)n, s + i);
+                return fail_at(p, i, "unexpected byte 0x%02X",
+                               (unsigned)(unsigned char)c);
+            }
+        }
+        i += t->length;
+    }
+}
+
+/* ---- parsing ------------------------------------------------------------- */
+
+static const struct token *peek(const struct parser *p)
+{
+    return &p->tokens[p->pos];
+}
+
+/* Consumes and returns the next token; TOK_END stays put. */
+static const struct token *advance(struct parser *p)
+{
+    const struct token *t = &p->tokens[p->pos];
+    if (t->kind != TOK_END)
+        p->pos++;
+    return t;
+}
+
+/* Every node takes at least one token no other node takes (a comparison
+ * its operator, a yes/no its name, a not its not, an and/or chain its
+ * first and/or), so ntokens nodes are always room enough. */
+static int new_node(struct parser *p, enum node_kind kind)
+{
+    int k = p->nnodes++;
+    struct node *n = &p->filter->nodes[k];
+    n->kind = kind;
+    n->op = OP_EQ;
+    n->column = COLUMN_UNKNOWN;
+    n->param = 0;
+    n->child = -1;
+    n->next = -1;
+    return k;
+}
+
+static int column_index(const char *name)
+{
+    for (int k = 0; k < COLUMN_COUNT; k++)
+        if (strcmp(store_option_columns[k], name) == 0)
+            return k;
+    return COLUMN_UNKNOWN;
+}
+
+/* The column a name token means (any case, aliases resolved),
+ * COLUMN_PARETO, or COLUMN_UNKNOWN. */
+static int resolve(const struct parser *p, const struct token *t)
+{
+    const char *s = p->text + t->at;
+    for (int k = 0; k < COLUMN_COUNT; k++)
+        if (word_is(s, t->length, store_option_columns[k]))
+            return k;
+    for (size_t k = 0; k < ALIAS_COUNT; k++)
+        if (word_is(s, t->length, aliases[k].name))
+            return column_index(aliases[k].column);
+    if (word_is(s, t->length, "pareto"))
+        return COLUMN_PARETO;
+    return COLUMN_UNKNOWN;
+}
+
+/* The message for a name that is no column, with the nearest name or, when
+ * nothing is near, the list of them. */
+static int fail_unknown_name(struct parser *p, const struct token *t)
+{
+    char buf[SHOWN_MAX + 4];
+    const char *s = p->text + t->at;
+    if (is_not_finite_word(s, t->length))
+        return fail_at(p, t->at, "NaN and infinity are not allowed; write a "
+                                 "finite number");
+    const char *names[COLUMN_COUNT + ALIAS_COUNT + 1];
+    size_t n = 0;
+    for (int k = 0; k < COLUMN_COUNT; k++)
+        names[n++] = store_option_columns[k];
+    for (size_t k = 0; k < ALIAS_COUNT; k++)
+        names[n++] = aliases[k].name;
+    names[n++] = "pareto";
+    const char *near = closest(s, t->length, names, n);
+    if (near != NULL)
+        return fail_at(p, t->at, "unknown column '%s' (did you mean %s?)",
+                       shown(p, t, buf), near);
+    char list[400];
+    size_t used = 0;
+    for (size_t k = 0; k < n && used < sizeof list; k++)
+        used += (size_t)snprintf(list + used, sizeof list - used, "%s%s",
+                                 k == 0 ? "" : ", ", names[k]);
+    return fail_at(p, t->at, "unknown column '%s' (columns: %s)",
+                   shown(p, t, buf), list);
+}
+
+/* A complete condition was followed by t, which cannot follow one here. */
+static int fail_after_condition(struct parser *p, const struct token *t)
+{
+    char buf[SHOWN_MAX + 4];
+    if (t->kind == TOK_RPAREN)
+        return fail_at(p, t->at, "unexpected ')'");
+    if (t->kind == TOK_OP)
+        return fail_at(p, t->at, "unexpected '%s'; compare one column with "
+                                 "one number at a time, e.g. cost > 5 and "
+                                 "cost < 10",
+                       op_text[t->op]);
+    if (t->kind == TOK_NAME) {
+        static const char *const joins[] = {"and", "or"};
+        const char *near = closest(p->text + t->at, t->length, joins, 2);
+        if (near != NULL)
+            return fail_at(p, t->at, "unexpected '%s' (did you mean %s?)",
+                           shown(p, t, buf), near);
+    }
+    return fail_at(p, t->at, "unexpected '%s'; join conditions with and / or",
+                   shown(p, t, buf));
+}
+
+static int parse_or(struct parser *p, int *out);
+
+/* A number of the text becomes the next parameter. */
+static size_t add_param(struct parser *p, double value)
+{
+    p->filter->params[p->filter->nparams] = value;
+    return p->filter->nparams++;
+}
+
+/* term: '(' or ')' | NAME [OP NUMBER] | NUMBER OP NAME. */
+static int parse_term(struct parser *p, int *out)
+{
+    char buf[SHOWN_MAX + 4], buf2[SHOWN_MAX + 4];
+    const struct token *t = peek(p);
+    struct node *nodes = p->filter->nodes;
+
+    if (t->kind == TOK_LPAREN) {
+        if (p->depth >= FILTER_MAX_DEPTH)
+            return fail_at(p, t->at, "nested too deeply (more than %d "
+                                     "parentheses and nots)",
+                           FILTER_MAX_DEPTH);
+        advance(p);
+        p->depth++;
+        int rc = parse_or(p, out);
+        if (rc != FACET_OK)
+            return rc;
+        const struct token *close = peek(p);
+        if (close->kind == TOK_END)
+            return fail_at(p, close->at, "missing ')' for the '(' at column "
+                                         "%zu",
+                           column_of(p->text, t->at));
+        if (close->kind != TOK_RPAREN)
+            return fail_after_condition(p, close);
+        advance(p);
+        p->depth--;
+        return FACET_OK;
+    }
+
+    if (t->kind == TOK_NAME) {
+        int column = resolve(p, t);
+        if (column == COLUMN_UNKNOWN)
+            return fail_unknown_name(p, t);
+        advance(p);
+        const struct token *op = peek(p);
+        if (op->kind == TOK_OP) {
+            if (column == COLUMN_PARETO)
+                return fail_at(p, t->at, "'%s' is yes/no and cannot be "
+                                         "compared; write pareto, or compare "
+                                         "rank, e.g. rank <= 2",
+                               shown(p, t, buf));
+            advance(p);
+            const struct token *number = peek(p);
+            if (number->kind != TOK_NUMBER) {
+                if (number->kind == TOK_NAME &&
+                    is_not_finite_word(p->text + number->at, number->length))
+                    return fail_at(p, number->at, "NaN and infinity are not "
+                                                  "allowed; write a finite "
+                                                  "number");
+                return fail_at(p, number->at, "expected a number after '%s'",
+                               shown(p, op, buf));
+            }
+            advance(p);
+            int k = new_node(p, NODE_COMPARE);
+            nodes[k].column = column;
+            nodes[k].op = op->op;
+            nodes[k].param = add_param(p, number->number);
+            *out = k;
+            return FACET_OK;
+        }
+        int ends = op->kind == TOK_END || op->kind == TOK_AND ||
+                   op->kind == TOK_OR || op->kind == TOK_RPAREN;
+        int yes_no = column == COLUMN_PARETO || column_example[column] == NULL;
+        if (!yes_no && ends)
+            return fail_at(p, t->at, "'%s' is not a yes/no column; compare "
+                                     "it, e.g. %s < %s",
+                           shown(p, t, buf), store_option_columns[column],
+                           column_example[column]);
+        if (!yes_no)
+            return fail_at(p, op->at, "expected a comparison (<, <=, >, >=, "
+                                      "=, !=) after '%s'",
+                           shown(p, t, buf));
+        int k = new_node(p, column == COLUMN_PARETO ? NODE_PARETO
+                                                    : NODE_YES_NO);
+        nodes[k].column = column;
+        *out = k;
+        return FACET_OK;
+    }
+
+    if (t->kind == TOK_NUMBER) {
+        advance(p);
+        const struct token *op = peek(p);
+        if (op->kind != TOK_OP)
+            return fail_at(p, op->at, "expected a comparison (<, <=, >, >=, "
+                                      "=, !=) after '%s'",
+                           shown(p, t, buf));
+        advance(p);
+        const struct token *name = peek(p);
+        if (name->kind != TOK_NAME)
+            return fail_at(p, name->at, "expected a column after '%s'",
+                           shown(p, op, buf));
+        int column = resolve(p, name);
+        if (column == COLUMN_UNKNOWN)
+            return fail_unknown_name(p, name);
+        if (column == COLUMN_PARETO)
+            return fail_at(p, name->at, "'%s' is yes/no and cannot be "
+                                        "compared; write pareto, or compare "
+                                        "rank, e.g. rank <= 2",
+                           shown(p, name, buf));
+        advance(p);
+        int k = new_node(p, NODE_COMPARE);
+        nodes[k].column = column;
+        nodes[k].op = op_flipped[op->op];
+        nodes[k].param = add_param(p, t->number);
+        *out = k;
+        return FACET_OK;
+    }
+
+    if (t->kind == TOK_RPAREN && p->pos == 0)
+        return fail_at(p, t->at, "unexpected ')'");
+    if (p->pos == 0)
+        return fail_at(p, t->at, "unexpected '%s'; a condition starts with a "
+                                 "column, a number, not or '('",
+                       shown(p, t, buf));
+    return fail_at(p, t->at, "expected a condition after '%s'%s%s%s",
+                   shown(p, &p->tokens[p->pos - 1], buf),
+                   t->kind == TOK_END ? "" : ", not '",
+                   t->kind == TOK_END ? "" : shown(p, t, buf2),
+                   t->kind == TOK_END ? "" : "'");
+}
+
+/* not-term: ('not' | '!')* term */
+static int parse_not(struct parser *p, int *out)
+{
+    const struct token *t = peek(p);
+    if (t->kind != TOK_NOT)
+        return parse_term(p, out);
+    if (p->depth >= FILTER_MAX_DEPTH)
+        return fail_at(p, t->at, "nested too deeply (more than %d "
+                                 "parentheses and nots)",
+                       FILTER_MAX_DEPTH);
+    advance(p);
+    p->depth++;
+    int child;
+    int rc = parse_not(p, &child);
+    if (rc != FACET_OK)
+        return rc;
+    p->depth--;
+    int k = new_node(p, NODE_NOT);
+    p->filter->nodes[k].child = child;
+    *out = k;
+    return FACET_OK;
+}
+
+/* A chain of operands joined by joiner, as one n-ary node (or the operand
+ * alone when there is no joiner). */
+static int parse_chain(struct parser *p, enum token_kind joiner,
+                       enum node_kind kind,
+                       int (*operand)(struct parser *, int *), int *out)
+{
+    int first;
+    int rc = operand(p, &first);
+    if (rc != FACET_OK)
+        return rc;
+    if (peek(p)->kind != joiner) {
+        *out = first;
+        return FACET_OK;
+    }
+    int k = new_node(p, kind);
+    struct node *nodes = p->filter->nodes;
+    nodes[k].child = first;
+    int tail = first;
+    while (peek(p)->kind == joiner) {
+        advance(p);
+        int next;
+        rc = operand(p, &next);
+        if (rc != FACET_OK)
+            return rc;
+        nodes[tail].next = next;
+        tail = next;
+    }
+    *out = k;
+    return FACET_OK;
+}
+
+static int parse_and(struct parser *p, int *out)
+{
+    return parse_chain(p, TOK_AND, NODE_AND, parse_not, out);
+}
+
+static int parse_or(struct parser *p, int *out)
+{
+    return parse_chain(p, TOK_OR, NODE_OR, parse_and, out);
+}
+
+/* ---- writing ------------------------------------------------------------- */
+
+struct buffer {
+    char *data;
+    size_t length, capacity;
+    int failed;      /* out of memory: data is gone */
+};
+
+static void put(struct buffer *b, const char *s)
+{
+    size_t n = strlen(s);
+    if (b->failed)
+        return;
+    if (b->length + n + 1 > b->capacity) {
+        size_t capacity = b->capacity == 0 ? 64 : b->capacity;
+        while (b->length + n + 1 > capacity)
+            capacity *= 2;
+        char *data = realloc(b->data, capacity);
+        if (data == NULL) {
+            free(b->data);
+            b->data = NULL;
+            b->failed = 1;
+            return;
+        }
+        b->data = data;
+        b->capacity = capacity;
+    }
+    memcpy(b->data + b->length, s, n + 1);
+    b->length += n;
+}
+
+/* The shortest of %.15g, %.16g, %.17g that reads back as value, with a
+ * '.' for the decimal point whatever LC_NUMERIC says, so that compiling
+ * filter_text again gives the same numbers. */
+static void format_number(double value, char out[32])
+{
+    for (int precision = 15; precision <= 17; precision++) {
+        snprintf(out, 32, "%.*g", precision, value);
+        for (char *c = out; *c != '\0'; c++)
+            if (!is_digit(*c) && *c != 'e' && *c != '-' && *c != '+')
+                *c = '.';
+        double back;
+        const char *stop;
+        if (numparse_double(out, out + strlen(out), &back, &stop) ==
+                NUMPARSE_OK &&
+            back == value)
+            return;
+    }
+}
+
+static int is_compound(const struct node *n)
+{
+    return n->kind == NODE_NOT || n->kind == NODE_AND || n->kind == NODE_OR;
+}
+
+/* filter_text of node k; operand: it is an operand of not/and/or, so all
+ * but a bare yes/no name are parenthesised. */
+static void write_text(const struct filter *f, int k, int operand,
+                       struct buffer *b)
+{
+    const struct node *n = &f->nodes[k];
+    int parens = operand && n->kind != NODE_YES_NO && n->kind != NODE_PARETO;
+    char number[32];
+    if (parens)
+        put(b, "(");
+    switch (n->kind) {
+    case NODE_COMPARE:
+        format_number(f->params[n->param], number);
+        put(b, store_option_columns[n->column]);
+        put(b, " ");
+        put(b, op_text[n->op]);
+        put(b, " ");
+        put(b, number);
+        break;
+    case NODE_YES_NO:
+        put(b, store_option_columns[n->column]);
+        break;
+    case NODE_PARETO:
+        put(b, "pareto");
+        break;
+    case NODE_NOT:
+        put(b, "not ");
+        write_text(f, n->child, 1, b);
+        break;
+    case NODE_AND:
+    case NODE_OR:
+        for (int c = n->child; c >= 0; c = f->nodes[c].next) {
+            if (c != n->child)
+                put(b, n->kind == NODE_AND ? " and " : " or ");
+            write_text(f, c, 1, b);
+        }
+        break;
+    }
+    if (parens)
+        put(b, ")");
+}
+
+/* The SQL of node k. Comparisons bind tighter than NOT, AND and OR in
+ * SQL, so only compound operands need parentheses. */
+static void write_sql(const struct filter *f, int k, int first_param,
+                      struct buffer *b)
+{
+    const struct node *n = &f->nodes[k];
+    char text[64];
+    switch (n->kind) {
+    case NODE_COMPARE:
+        snprintf(text, sizeof text, "\"%s\" %s ?%lld",
+                 store_option_columns[n->column], op_text[n->op],
+                 (long long)first_param + (long long)n->param);
+        put(b, text);
+        break;
+    case NODE_YES_NO:
+        snprintf(text, sizeof text, "\"%s\" != 0",
+                 store_option_columns[n->column]);
+        put(b, text);
+        break;
+    case NODE_PARETO:
+        put(b, "\"rank\" = 1");
+        break;
+    case NODE_NOT:
+        put(b, "NOT (");
+        write_sql(f, n->child, first_param, b);
+        put(b, ")");
+        break;
+    case NODE_AND:
+    case NODE_OR:
+        for (int c = n->child; c >= 0; c = f->nodes[c].next) {
+            int parens = is_compound(&f->nodes[c]);
+            if (c != n->child)
+                put(b, n->kind == NODE_AND ? " AND " : " OR ");
+            if (parens)
+                put(b, "(");
+            write_sql(f, c, first_param, b);
+            if (parens)
+                put(b, ")");
+        }
+        break;
+    }
+}
+
+/* ---- the public functions ------------------------------------------------ */
+
+int filter_compile(const char *text, struct filter **out,
+                   struct facet_error *err)
+{
+    *out = NULL;
+    if (text == NULL)
+        text = "";
+    size_t length = strnlen(text, (size_t)FILTER_MAX_LENGTH + 1);
+    if (length > FILTER_MAX_LENGTH)
+        return facet_error_set(err, FACET_EINPUT,
+                               "--where: column %zu: the expression is "
+                               "longer than %d bytes",
+                               column_of(text, FILTER_MAX_LENGTH),
+                               FILTER_MAX_LENGTH);
+
+    int rc = FACET_EWORK;
+    struct buffer b = {0};
+    struct filter *f = calloc(1, sizeof *f);
+    struct parser p = {.text = text, .length = length, .filter = f,
+                       .err = err};
+    p.tokens = malloc((length + 1) * sizeof *p.tokens);
+    if (f == NULL || p.tokens == NULL)
+        goto out_of_memory;
+    f->root = -1;
+    rc = lex(&p);
+    if (rc != FACET_OK)
+        goto fail;
+    f->nodes = malloc(p.ntokens * sizeof *f->nodes);
+    f->params = malloc(p.ntokens * sizeof *f->params);
+    if (f->nodes == NULL || f->params == NULL)
+        goto out_of_memory;
+
+    if (p.ntokens > 1) {
+        rc = parse_or(&p, &f->root);
+        if (rc != FACET_OK)
+            goto fail;
+        if (peek(&p)->kind != TOK_END) {
+            rc = fail_after_condition(&p, peek(&p));
+            goto fail;
+        }
+        write_text(f, f->root, 0, &b);
+    } else {
+        put(&b, "");
+    }
+    if (b.failed)
+        goto out_of_memory;
+    f->text = b.data;
+    free(p.tokens);
+    facet_error_clear(err);
+    *out = f;
+    return FACET_OK;
+
+out_of_memory:
+    rc = facet_error_set(err, FACET_EWORK, "--where: out of memory");
+fail:
+    free(p.tokens);
+    filter_free(f);
+    return rc;
+}
+
+void filter_free(struct filter *filter)
+{
+    if (filter == NULL)
+        return;
+    free(filter->nodes);
+    free(filter->params);
+    free(filter->text);
+    free(filter);
+}
+
+const char *filter_text(const struct filter *filter)
+{
+    return filter == NULL || filter->text == NULL ? "" : filter->text;
+}
+
+char *filter_sql(const struct filter *filter, int first_param)
+{
+    struct buffer b = {0};
+    if (filter == NULL || filter->root < 0)
+        put(&b, "1");
+    else
+        write_sql(filter, filter->root, first_param, &b);
+    return b.data;
+}
+
+size_t filter_param_count(const struct filter *filter)
+{
+    return filter == NULL ? 0 : filter->nparams;
+}
+
+double filter_param(const struct filter *filter, size_t k)
+{
+    return filter->params[k];
+}
+
+/* SQL's three truth values: a comparison with NULL (a NaN here) is
+ * unknown, and unknown spreads through not, and, or as SQL spreads it. */
+enum truth { TRUTH_NO, TRUTH_YES, TRUTH_UNKNOWN };
+
+struct match {
+    const struct filter *filter;
+    double (*value)(void *context, const char *column);
+    void *context;
+};
+
+static enum truth compare(enum op op, double a, double b)
+{
+    if (isnan(a))
+        return TRUTH_UNKNOWN;
+    switch (op) {
+    case OP_LT:
+        return a < b;
+    case OP_LE:
+        return a <= b;
+    case OP_GT:
+        return a > b;
+    case OP_GE:
+        return a >= b;
+    case OP_EQ:
+        return a == b;
+    case OP_NE:
+        return a != b;
+    }
+    return TRUTH_NO;
+}
+
+static enum truth evaluate(const struct match *m, int k)
+{
+    const struct node *n = &m->filter->nodes[k];
+    switch (n->kind) {
+    case NODE_COMPARE:
+        return compare(n->op,
+                       m->value(m->context, store_option_columns[n->column]),
+                       m->filter->params[n->param]);
+    case NODE_YES_NO:
+        return compare(OP_NE,
+                       m->value(m->context, store_option_columns[n->column]),
+                       0);
+    case NODE_PARETO:
+        return compare(OP_EQ, m->value(m->context, "rank"), 1);
+    case NODE_NOT: {
+        enum truth t = evaluate(m, n->child);
+        return t == TRUTH_UNKNOWN ? t : t == TRUTH_YES ? TRUTH_NO : TRUTH_YES;
+    }
+    case NODE_AND:
+    case NODE_OR: {
+        /* and: any no decides; or: any yes decides; else unknown wins. */
+        enum truth decisive = n->kind == NODE_AND ? TRUTH_NO : TRUTH_YES;
+        enum truth result = n->kind == NODE_AND ? TRUTH_YES : TRUTH_NO;
+        for (int c = n->child; c >= 0; c = m->filter->nodes[c].next) {
+            enum truth t = evaluate(m, c);
+            if (t == decisive)
+                return t;
+            if (t == TRUTH_UNKNOWN)
+                result = TRUTH_UNKNOWN;
+        }
+        return result;
+    }
+    }
+    return TRUTH_NO;
+}
+
+int filter_match(const struct filter *filter,
+                 double (*value)(void *context, const char *column),
+                 void *context)
+{
+    if (filter == NULL || filter->root < 0)
+        return 1;
+    struct match m = {filter, value, context};
+    return evaluate(&m, filter->root) == TRUTH_YES;
+}

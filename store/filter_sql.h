@@ -1,0 +1,32 @@
+/*
+ * filter_sql.h: a compiled --where filter as SQL, for store/ only.
+ *
+ * store.c appends the fragment to its own WHERE clause and binds the
+ * filter's numbers as parameters; no text the user typed reaches SQL (the
+ * column names come from store_option_columns, the numbers are bound).
+ * A column that is NULL makes a comparison unknown, with SQL's usual
+ * three-valued logic; filter_match (filter.h) gives the same answers.
+ */
+#ifndef FACET_FILTER_SQL_H
+#define FACET_FILTER_SQL_H
+
+#include <stddef.h>
+
+#include "store/filter.h"
+
+/* The WHERE fragment, e.g. "(\"cost\" < ?1 AND \"dp_area\" <= ?2) OR
+ * \"rank\" = 1", over the columns of the options table, which are named
+ * exactly as in store_option_columns. Parameters are numbered from
+ * first_param (>= 1, so the caller can bind its own parameters first);
+ * every number of the user's text is a parameter, never pasted. "1" for
+ * the empty filter (or NULL). Malloc'ed, the caller frees; NULL when out of
+ * memory. */
+char *filter_sql(const struct filter *filter, int first_param);
+
+/* How many parameters the fragment has (0 for the empty filter). */
+size_t filter_param_count(const struct filter *filter);
+
+/* The value to bind to parameter first_param + k, k < filter_param_count. */
+double filter_param(const struct filter *filter, size_t k);
+
+#endif

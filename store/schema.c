@@ -1,0 +1,375 @@
+/*
+ * schema.c: opening a Facet database: recognising the file, creating or
+ * migrating the schema, the connection settings a writer and a reader
+ * share, and noticing runs whose writer is gone. README.md ("The result
+ * store") documents every table, column and unit defined here.
+ */
+#include "store_db.h"
+
+#include <errno.h>
+#include <signal.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+#include <unistd.h>
+
+/* Version 1: the tables. Every length m, area m^2, money USD, threshold
+ * mm, time UTC ISO 8601, elapsed seconds. */
+static const char schema_v1[] =
+    "CREATE TABLE runs ("
+    " id INTEGER PRIMARY KEY,"
+    " name TEXT NOT NULL DEFAULT '',"
+    " status TEXT NOT NULL CHECK (status IN"
+    "  ('running','done','interrupted','failed')),"
+    " started TEXT NOT NULL,"
+    " finished TEXT,"
+    " elapsed REAL NOT NULL DEFAULT 0,"
+    " surface_path TEXT NOT NULL,"
+    " surface_sha256 TEXT NOT NULL,"
+    " units TEXT NOT NULL,"
+    " object TEXT,"
+    " group_name TEXT,"
+    " method TEXT NOT NULL,"
+    " seed INTEGER NOT NULL,"
+    " u_min INTEGER NOT NULL, u_max INTEGER NOT NULL,"
+    " v_min INTEGER NOT NULL, v_max INTEGER NOT NULL,"
+    " threshold_min_mm REAL NOT NULL, threshold_max_mm REAL NOT NULL,"
+    " threshold_step_mm REAL NOT NULL,"
+    " price_fp REAL NOT NULL, price_sp REAL NOT NULL,"
+    " price_dp REAL NOT NULL,"
+    " sp_as_fp INTEGER NOT NULL,"
+    " max_panel_area_limit REAL NOT NULL,"
+    " curvature_tol REAL,"
+    " per_panel TEXT NOT NULL,"
+    " flip_normals INTEGER NOT NULL,"
+    " objectives TEXT NOT NULL,"
+    " population INTEGER, generations INTEGER, evaluations INTEGER,"
+    " jobs INTEGER NOT NULL,"
+    " version TEXT NOT NULL,"
+    " options INTEGER NOT NULL DEFAULT 0,"
+    " writer_pid INTEGER, writer_host TEXT,"
+    " hypervolume REAL,"
+    " knee INTEGER,"
+    " pareto_options INTEGER,"
+    " best_cost REAL"
+    ");"
+    "CREATE TABLE options ("
+    " run INTEGER NOT NULL REFERENCES runs(id) ON DELETE CASCADE,"
+    " number INTEGER NOT NULL,"
+    " generation INTEGER NOT NULL,"
+    " nu INTEGER NOT NULL, nv INTEGER NOT NULL,"
+    " threshold_mm REAL NOT NULL,"
+    " panels INTEGER NOT NULL,"
+    " fp_count INTEGER NOT NULL, sp_count INTEGER NOT NULL,"
+    " dp_count INTEGER NOT NULL,"
+    " fp_area REAL NOT NULL, sp_area REAL NOT NULL, dp_area REAL NOT NULL,"
+    " area REAL NOT NULL,"
+    " fp_cost REAL NOT NULL, sp_cost REAL NOT NULL, dp_cost REAL NOT NULL,"
+    " cost REAL NOT NULL,"
+    " planarity REAL NOT NULL,"
+    " max_deviation REAL NOT NULL,"
+    " max_panel_area REAL NOT NULL,"
+    " p_dist REAL NOT NULL,"
+    " feasible INTEGER NOT NULL,"
+    " convex_feature_curve_count INTEGER NOT NULL,"
+    " convex_feature_curve_area REAL NOT NULL,"
+    " saddle_count INTEGER NOT NULL, saddle_area REAL NOT NULL,"
+    " concave_feature_curve_count INTEGER NOT NULL,"
+    " concave_feature_curve_area REAL NOT NULL,"
+    " ruled_convex_count INTEGER NOT NULL, ruled_convex_area REAL NOT NULL,"
+    " flat_count INTEGER NOT NULL, flat_area REAL NOT NULL,"
+    " ruled_concave_count INTEGER NOT NULL,"
+    " ruled_concave_area REAL NOT NULL,"
+    " convex_round_count INTEGER NOT NULL, convex_round_area REAL NOT NULL,"
+    " concave_round_count INTEGER NOT NULL,"
+    " concave_round_area REAL NOT NULL,"
+    " rank INTEGER,"
+    " crowding REAL,"
+    " knee INTEGER NOT NULL DEFAULT 0,"
+    " PRIMARY KEY (run, number)"
+    ") WITHOUT ROWID;"
+    "CREATE TABLE panel_sets ("
+    " run INTEGER NOT NULL, option INTEGER NOT NULL,"
+    " nu INTEGER NOT NULL, nv INTEGER NOT NULL,"
+    " umin REAL NOT NULL, vmin REAL NOT NULL,"
+    " umax REAL NOT NULL, vmax REAL NOT NULL,"
+    " stored TEXT NOT NULL,"
+    " PRIMARY KEY (run, option),"
+    " FOREIGN KEY (run, option) REFERENCES options(run, number)"
+    "  ON DELETE CASCADE"
+    ");"
+    "CREATE TABLE panels ("
+    " run INTEGER NOT NULL, option INTEGER NOT NULL,"
+    " i INTEGER NOT NULL, j INTEGER NOT NULL,"
+    " class TEXT NOT NULL, type TEXT NOT NULL,"
+    " area REAL NOT NULL, uv_area REAL NOT NULL,"
+    " deviation REAL NOT NULL,"
+    " k1 REAL NOT NULL, k2 REAL NOT NULL, K REAL NOT NULL, H REAL NOT NULL,"
+    " eps REAL NOT NULL, p_dist REAL NOT NULL, diameter REAL NOT NULL,"
+    " trimmed INTEGER NOT NULL, corner_planarity REAL,"
+    " price REAL NOT NULL, cost REAL NOT NULL,"
+    " centroid_x REAL, centroid_y REAL, centroid_z REAL,"
+    " normal_x REAL, normal_y REAL, normal_z REAL,"
+    " c0_x REAL, c0_y REAL, c0_z REAL, c1_x REAL, c1_y REAL, c1_z REAL,"
+    " c2_x REAL, c2_y REAL, c2_z REAL, c3_x REAL, c3_y REAL, c3_z REAL,"
+    " PRIMARY KEY (run, option, j, i),"
+    " FOREIGN KEY (run, option) REFERENCES panel_sets(run, option)"
+    "  ON DELETE CASCADE"
+    ") WITHOUT ROWID;";
+
+/* Version 2: what readers query by (the TUI sorts a million options by a
+ * metric without reading them all) and the two views of the README. */
+static const char schema_v2[] =
+    "CREATE INDEX options_by_rank ON options(run, rank, number);"
+    "CREATE INDEX options_by_cost ON options(run, cost);"
+    "CREATE INDEX options_by_planarity ON options(run, planarity);"
+    "CREATE INDEX options_by_dp_area ON options(run, dp_area);"
+    "CREATE VIEW pareto AS"
+    " SELECT r.name AS run_name, r.surface_path, o.*"
+    " FROM options o JOIN runs r ON r.id = o.run WHERE o.rank = 1;"
+    "CREATE VIEW run_summary AS"
+    " SELECT r.id, r.name, r.status, r.method, r.surface_path, r.units,"
+    "  r.u_min || ':' || r.u_max AS u, r.v_min || ':' || r.v_max AS v,"
+    "  r.threshold_min_mm, r.threshold_max_mm, r.seed, r.options,"
+    "  r.pareto_options, r.best_cost, r.hypervolume, r.knee,"
+    "  r.started, r.finished, r.elapsed,"
+    "  CASE WHEN r.elapsed > 0 THEN r.options / r.elapsed END"
+    "   AS options_per_second"
+    " FROM runs r;";
+
+static const char *const migrations[STORE_SCHEMA_VERSION] = {
+    schema_v1,
+    schema_v2,
+};
+
+int store_fail(struct store *store, const char *doing,
+               struct facet_error *err)
+{
+    int code = sqlite3_errcode(store->db);
+    int input = code == SQLITE_CORRUPT || code == SQLITE_NOTADB ||
+                code == SQLITE_BUSY || code == SQLITE_READONLY ||
+                code == SQLITE_CANTOPEN || code == SQLITE_LOCKED;
+    const char *hint = "";
+    if (code == SQLITE_CORRUPT || code == SQLITE_NOTADB)
+        hint = "; the file is damaged or not a Facet database";
+    else if (code == SQLITE_BUSY || code == SQLITE_LOCKED)
+        hint = "; another process holds it, try again";
+    return facet_error_set(err, input ? FACET_EINPUT : FACET_EWORK,
+                           "%s: %s (%s)%s", store->path,
+                           sqlite3_errmsg(store->db), doing, hint);
+}
+
+int store_exec(struct store *store, const char *sql, const char *doing,
+               struct facet_error *err)
+{
+    if (sqlite3_exec(store->db, sql, NULL, NULL, NULL) != SQLITE_OK)
+        return store_fail(store, doing, err);
+    return FACET_OK;
+}
+
+int store_prepare(struct store *store, const char *sql, sqlite3_stmt **out,
+                  const char *doing, struct facet_error *err)
+{
+    if (sqlite3_prepare_v2(store->db, sql, -1, out, NULL) != SQLITE_OK) {
+        *out = NULL;
+        return store_fail(store, doing, err);
+    }
+    return FACET_OK;
+}
+
+void store_now(char out[32])
+{
+    time_t now = time(NULL);
+    struct tm utc;
+    gmtime_r(&now, &utc);
+    strftime(out, 32, "%Y-%m-%dT%H:%M:%SZ", &utc);
+}
+
+/* One integer from a pragma. */
+static int pragma_int(struct store *store, const char *sql, int *value,
+                      struct facet_error *err)
+{
+    sqlite3_stmt *stmt;
+    int rc = store_prepare(store, sql, &stmt, "reading the header", err);
+    if (rc != FACET_OK)
+        return rc;
+    int step = sqlite3_step(stmt);
+    if (step == SQLITE_ROW)
+        *value = sqlite3_column_int(stmt, 0);
+    sqlite3_finalize(stmt);
+    if (step != SQLITE_ROW)
+        return store_fail(store, "reading the header", err);
+    return FACET_OK;
+}
+
+int store_schema_migrate(struct store *store, int from, int to,
+                         struct facet_error *err)
+{
+    char sql[64], stamp[64];
+    snprintf(stamp, sizeof stamp, "PRAGMA application_id = %d",
+             STORE_APPLICATION_ID);
+    for (int version = from + 1; version <= to; version++) {
+        int rc = store_exec(store, "BEGIN IMMEDIATE", "migrating", err);
+        if (rc != FACET_OK)
+            return rc;
+        snprintf(sql, sizeof sql, "PRAGMA user_version = %d", version);
+        if (version == 1)
+            rc = store_exec(store, stamp,
+                            "creating the schema", err);
+        if (rc == FACET_OK)
+            rc = store_exec(store, migrations[version - 1],
+                            "creating the schema", err);
+        if (rc == FACET_OK)
+            rc = store_exec(store, sql, "creating the schema", err);
+        if (rc == FACET_OK)
+            rc = store_exec(store, "COMMIT", "migrating", err);
+        if (rc != FACET_OK) {
+            sqlite3_exec(store->db, "ROLLBACK", NULL, NULL, NULL);
+            return rc;
+        }
+    }
+    return FACET_OK;
+}
+
+/* Refuses a file that is not an SQLite database before SQLite opens it,
+ * so that the message says what the file is rather than SQLite's generic
+ * "file is not a database" on the first query. */
+static int check_header(const char *path, struct facet_error *err)
+{
+    FILE *file = fopen(path, "rb");
+    if (file == NULL)
+        return errno == ENOENT ? FACET_OK
+                               : facet_error_set(err, FACET_EINPUT,
+                                     "%s: cannot open: %s", path,
+                                     strerror(errno));
+    char header[16];
+    size_t got = fread(header, 1, sizeof header, file);
+    fclose(file);
+    if (got == 0)
+        return FACET_OK;  /* an empty file becomes a new database */
+    if (got < sizeof header || memcmp(header, "SQLite format 3", 16) != 0)
+        return facet_error_set(err, FACET_EINPUT,
+            "%s: not an SQLite database (is it the right file?)", path);
+    return FACET_OK;
+}
+
+/* Whether the process that wrote a run is gone: on this host, no process
+ * with that pid, or one that is not Facet (the pid was reused). */
+static int writer_gone(int64_t pid, const char *host)
+{
+    char here[64] = "";
+    gethostname(here, sizeof here - 1);
+    if (strcmp(here, host) != 0)
+        return 0;  /* another machine's writer: cannot tell */
+    if (pid <= 0 || (kill((pid_t)pid, 0) != 0 && errno == ESRCH))
+        return 1;
+    char path[64], cmdline[256] = "";
+    snprintf(path, sizeof path, "/proc/%lld/cmdline", (long long)pid);
+    FILE *file = fopen(path, "rb");
+    if (file == NULL)
+        return 0;
+    size_t got = fread(cmdline, 1, sizeof cmdline - 1, file);
+    fclose(file);
+    for (size_t k = 0; k < got; k++)
+        if (cmdline[k] == '\0')
+            cmdline[k] = ' ';
+    cmdline[got] = '\0';
+    return strstr(cmdline, "facet") == NULL;
+}
+
+/* Marks "running" runs whose writer is gone as "interrupted". */
+static int reap_orphans(struct store *store, struct facet_error *err)
+{
+    sqlite3_stmt *stmt;
+    int rc = store_prepare(store,
+        "SELECT id, writer_pid, coalesce(writer_host, '') FROM runs"
+        " WHERE status = 'running'", &stmt, "reading runs", err);
+    if (rc != FACET_OK)
+        return rc;
+    int64_t orphan[64];
+    int norphans = 0, step;
+    while ((step = sqlite3_step(stmt)) == SQLITE_ROW && norphans < 64)
+        if (writer_gone(sqlite3_column_int64(stmt, 1),
+                        (const char *)sqlite3_column_text(stmt, 2)))
+            orphan[norphans++] = sqlite3_column_int64(stmt, 0);
+    sqlite3_finalize(stmt);
+    if (step != SQLITE_ROW && step != SQLITE_DONE)
+        return store_fail(store, "reading runs", err);
+    for (int k = 0; k < norphans && rc == FACET_OK; k++) {
+        struct run_info run;
+        rc = store_run_get(store, orphan[k], &run, err);
+        if (rc == FACET_OK)
+            rc = store_run_set_status(store, orphan[k], "interrupted",
+                                      run.elapsed, err);
+    }
+    return rc;
+}
+
+int store_open(const char *path, struct store **out,
+               struct facet_error *err)
+{
+    *out = NULL;
+    int rc = check_header(path, err);
+    if (rc != FACET_OK)
+        return rc;
+    struct store *store = calloc(1, sizeof *store);
+    if (store == NULL || (store->path = strdup(path)) == NULL) {
+        free(store);
+        return facet_error_set(err, FACET_EWORK, "out of memory");
+    }
+    if (sqlite3_open_v2(path, &store->db,
+                        SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE |
+                        SQLITE_OPEN_NOMUTEX, NULL) != SQLITE_OK) {
+        rc = store->db ? store_fail(store, "opening", err)
+                       : facet_error_set(err, FACET_EWORK,
+                                         "%s: cannot open", path);
+        store_close(store);
+        return rc;
+    }
+    /* A reader and a writer wait for each other's short transactions
+     * rather than fail. */
+    sqlite3_busy_timeout(store->db, 10000);
+    int application = 0, version = 0;
+    rc = pragma_int(store, "PRAGMA application_id", &application, err);
+    if (rc == FACET_OK)
+        rc = pragma_int(store, "PRAGMA user_version", &version, err);
+    if (rc == FACET_OK && application != STORE_APPLICATION_ID) {
+        int tables = 0;
+        rc = pragma_int(store, "SELECT count(*) FROM sqlite_schema", &tables,
+                        err);
+        if (rc == FACET_OK && (application != 0 || tables != 0))
+            rc = facet_error_set(err, FACET_EINPUT,
+                "%s: an SQLite database of another application, not "
+                "Facet's (use a new file)", path);
+    }
+    if (rc == FACET_OK && version > STORE_SCHEMA_VERSION)
+        rc = facet_error_set(err, FACET_EINPUT,
+            "%s: written by a newer Facet (schema %d; this Facet %s reads "
+            "up to %d): upgrade Facet", path, version, FACET_VERSION,
+            STORE_SCHEMA_VERSION);
+    if (rc == FACET_OK)
+        rc = store_exec(store, "PRAGMA journal_mode = WAL;"
+                        "PRAGMA synchronous = NORMAL;"
+                        "PRAGMA foreign_keys = ON;", "opening", err);
+    if (rc == FACET_OK && version < STORE_SCHEMA_VERSION)
+        rc = store_schema_migrate(store, version, STORE_SCHEMA_VERSION, err);
+    if (rc == FACET_OK)
+        rc = reap_orphans(store, err);
+    if (rc != FACET_OK) {
+        store_close(store);
+        return rc;
+    }
+    *out = store;
+    return FACET_OK;
+}
+
+void store_close(struct store *store)
+{
+    if (store == NULL)
+        return;
+    sqlite3_finalize(store->option_insert);
+    sqlite3_close(store->db);
+    free(store->path);
+    free(store);
+}

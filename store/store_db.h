@@ -1,0 +1,46 @@
+/*
+ * store_db.h: what the store's own files share (internal to store/): the
+ * open database and the helpers that turn SQLite's result codes into
+ * Facet's one-line errors. Nothing outside store/ includes this header.
+ */
+#ifndef FACET_STORE_DB_H
+#define FACET_STORE_DB_H
+
+#include <sqlite3.h>
+
+#include "store.h"
+
+/* The schema this Facet writes (PRAGMA user_version) and the
+ * application_id that marks a file as Facet's: "FCET". */
+#define STORE_SCHEMA_VERSION 2
+#define STORE_APPLICATION_ID 0x46434554
+
+struct store {
+    sqlite3 *db;
+    char *path;                 /* owned copy, for messages */
+    sqlite3_stmt *option_insert;/* prepared once, reused by every batch */
+};
+
+/* Fills err from the connection's last error: "FILE: what (while DOING)".
+ * A corrupt or non-database file is FACET_EINPUT (the user can act on it),
+ * anything else FACET_EWORK. Returns the code. */
+int store_fail(struct store *store, const char *doing,
+               struct facet_error *err);
+
+/* Runs sql (no parameters, no rows wanted). */
+int store_exec(struct store *store, const char *sql, const char *doing,
+               struct facet_error *err);
+
+/* Prepares sql; on failure fills err. */
+int store_prepare(struct store *store, const char *sql, sqlite3_stmt **out,
+                  const char *doing, struct facet_error *err);
+
+/* Brings a database at schema version `from` (0 = empty) up to `to`,
+ * one migration at a time, each in its own transaction. */
+int store_schema_migrate(struct store *store, int from, int to,
+                         struct facet_error *err);
+
+/* The current UTC time as ISO 8601 ("2026-11-25T01:30:00Z"). */
+void store_now(char out[32]);
+
+#endif

@@ -1,0 +1,392 @@
+/*
+ * store_option.c: the options table: committing a batch of evaluated
+ * options, reading a run's options back, writing the Pareto analysis, and
+ * the sorted, filtered queries of `facet options` and the TUI. See store.h.
+ */
+#include "store_db.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <strings.h>
+
+#include "filter_sql.h"
+
+/* Every column of options, in the order option_bind writes them and
+ * option_from_row reads them (after run). */
+#define OPTION_COLUMNS \
+    "number, generation, nu, nv, threshold_mm, panels, fp_count," \
+    " sp_count, dp_count, fp_area, sp_area, dp_area, area, fp_cost," \
+    " sp_cost, dp_cost, cost, planarity, max_deviation, max_panel_area," \
+    " p_dist, feasible, convex_feature_curve_count," \
+    " convex_feature_curve_area, saddle_count, saddle_area," \
+    " concave_feature_curve_count, concave_feature_curve_area," \
+    " ruled_convex_count, ruled_convex_area, flat_count, flat_area," \
+    " ruled_concave_count, ruled_concave_area, convex_round_count," \
+    " convex_round_area, concave_round_count, concave_round_area," \
+    " coalesce(rank, 0), coalesce(crowding, 0), knee"
+#define OPTION_VALUES 38  /* columns an insert binds (not rank..knee) */
+
+/* Binds run and row's values to ?1..?(1 + OPTION_VALUES). */
+static void option_bind(sqlite3_stmt *s, int64_t run,
+                        const struct option_row *o)
+{
+    const struct option_totals *t = &o->totals;
+    int c = 1;
+    sqlite3_bind_int64(s, c++, run);
+    sqlite3_bind_int64(s, c++, o->number);
+    sqlite3_bind_int(s, c++, o->generation);
+    sqlite3_bind_int(s, c++, o->nu);
+    sqlite3_bind_int(s, c++, o->nv);
+    sqlite3_bind_double(s, c++, o->threshold_mm);
+    sqlite3_bind_int64(s, c++, (sqlite3_int64)t->panels);
+    for (int k = 0; k < TYPE_COUNT; k++)
+        sqlite3_bind_int64(s, c++, (sqlite3_int64)t->count[k]);
+    for (int k = 0; k < TYPE_COUNT; k++)
+        sqlite3_bind_double(s, c++, t->area_of[k]);
+    sqlite3_bind_double(s, c++, t->area);
+    for (int k = 0; k < TYPE_COUNT; k++)
+        sqlite3_bind_double(s, c++, t->cost_of[k]);
+    sqlite3_bind_double(s, c++, t->cost);
+    sqlite3_bind_double(s, c++, t->planarity);
+    sqlite3_bind_double(s, c++, t->max_deviation);
+    sqlite3_bind_double(s, c++, t->max_panel_area);
+    sqlite3_bind_double(s, c++, t->p_dist);
+    sqlite3_bind_int(s, c++, t->feasible);
+    for (int k = 0; k < CLASS_COUNT; k++) {
+        sqlite3_bind_int64(s, c++, (sqlite3_int64)t->class_count[k]);
+        sqlite3_bind_double(s, c++, t->class_area[k]);
+    }
+}
+
+/* Reads a row of OPTION_COLUMNS starting at column first. */
+static void option_from_row(sqlite3_stmt *s, int first,
+                            struct option_row *o)
+{
+    struct option_totals *t = &o->totals;
+    memset(o, 0, sizeof *o);
+    int c = first;
+    o->number = sqlite3_column_int64(s, c++);
+    o->generation = sqlite3_column_int(s, c++);
+    o->nu = sqlite3_column_int(s, c++);
+    o->nv = sqlite3_column_int(s, c++);
+    o->threshold_mm = sqlite3_column_double(s, c++);
+    t->panels = (size_t)sqlite3_column_int64(s, c++);
+    for (int k = 0; k < TYPE_COUNT; k++)
+        t->count[k] = (size_t)sqlite3_column_int64(s, c++);
+    for (int k = 0; k < TYPE_COUNT; k++)
+        t->area_of[k] = sqlite3_column_double(s, c++);
+    t->area = sqlite3_column_double(s, c++);
+    for (int k = 0; k < TYPE_COUNT; k++)
+        t->cost_of[k] = sqlite3_column_double(s, c++);
+    t->cost = sqlite3_column_double(s, c++);
+    t->planarity = sqlite3_column_double(s, c++);
+    t->max_deviation = sqlite3_column_double(s, c++);
+    t->max_panel_area = sqlite3_column_double(s, c++);
+    t->p_dist = sqlite3_column_double(s, c++);
+    t->feasible = sqlite3_column_int(s, c++);
+    for (int k = 0; k < CLASS_COUNT; k++) {
+        t->class_count[k] = (size_t)sqlite3_column_int64(s, c++);
+        t->class_area[k] = sqlite3_column_double(s, c++);
+    }
+    o->rank = sqlite3_column_int(s, c++);
+    /* Crowding is stored as NULL for +infinity: SQLite has no infinity
+     * literal a user could compare against. */
+    o->crowding = sqlite3_column_type(s, c) == SQLITE_NULL && o->rank > 0
+                      ? INFINITY : sqlite3_column_double(s, c);
+    c++;
+    o->knee = sqlite3_column_int(s, c++);
+}
+
+/* Runs the statement to completion, for statements without rows. */
+static int step_done(struct store *store, sqlite3_stmt *s, const char *doing,
+                     struct facet_error *err)
+{
+    int step = sqlite3_step(s);
+    sqlite3_reset(s);
+    if (step != SQLITE_DONE)
+        return store_fail(store, doing, err);
+    return FACET_OK;
+}
+
+int store_options_put(struct store *store, int64_t run,
+                      const struct option_row *rows, size_t n,
+                      struct facet_error *err)
+{
+    int rc = FACET_OK;
+    if (store->option_insert == NULL) {
+        char sql[2048];
+        int len = snprintf(sql, sizeof sql,
+                           "INSERT OR IGNORE INTO options (run, %.*s)"
+                           " VALUES (?1", (int)(strstr(OPTION_COLUMNS,
+                           ", coalesce(rank") - OPTION_COLUMNS),
+                           OPTION_COLUMNS);
+        for (int k = 2; k <= 1 + OPTION_VALUES; k++)
+            len += snprintf(sql + len, sizeof sql - (size_t)len, ", ?%d", k);
+        snprintf(sql + len, sizeof sql - (size_t)len, ")");
+        rc = store_prepare(store, sql, &store->option_insert,
+                           "storing options", err);
+        if (rc != FACET_OK)
+            return rc;
+    }
+    rc = store_exec(store, "BEGIN IMMEDIATE", "storing options", err);
+    if (rc != FACET_OK)
+        return rc;
+    int64_t added = 0;
+    for (size_t k = 0; k < n && rc == FACET_OK; k++) {
+        sqlite3_clear_bindings(store->option_insert);
+        option_bind(store->option_insert, run, &rows[k]);
+        rc = step_done(store, store->option_insert, "storing options", err);
+        added += sqlite3_changes(store->db);
+    }
+    sqlite3_stmt *count = NULL;
+    if (rc == FACET_OK)
+        rc = store_prepare(store,
+            "UPDATE runs SET options = options + ?2 WHERE id = ?1", &count,
+            "storing options", err);
+    if (rc == FACET_OK) {
+        sqlite3_bind_int64(count, 1, run);
+        sqlite3_bind_int64(count, 2, added);
+        rc = step_done(store, count, "storing options", err);
+    }
+    sqlite3_finalize(count);
+    if (rc == FACET_OK)
+        rc = store_exec(store, "COMMIT", "storing options", err);
+    if (rc != FACET_OK)
+        sqlite3_exec(store->db, "ROLLBACK", NULL, NULL, NULL);
+    return rc;
+}
+
+int store_options_get(struct store *store, int64_t run,
+                      struct option_row **rows, size_t *n,
+                      struct facet_error *err)
+{
+    *rows = NULL;
+    *n = 0;
+    sqlite3_stmt *s;
+    int rc = store_prepare(store, "SELECT " OPTION_COLUMNS
+                           " FROM options WHERE run = ?1 ORDER BY number",
+                           &s, "reading options", err);
+    if (rc != FACET_OK)
+        return rc;
+    sqlite3_bind_int64(s, 1, run);
+    size_t capacity = 0;
+    int step;
+    while ((step = sqlite3_step(s)) == SQLITE_ROW) {
+        if (*n == capacity) {
+            capacity = capacity ? 2 * capacity : 256;
+            struct option_row *grown = realloc(*rows,
+                                               capacity * sizeof **rows);
+            if (grown == NULL) {
+                rc = facet_error_set(err, FACET_EWORK, "out of memory");
+                break;
+            }
+            *rows = grown;
+        }
+        option_from_row(s, 0, &(*rows)[(*n)++]);
+    }
+    if (rc == FACET_OK && step != SQLITE_DONE)
+        rc = store_fail(store, "reading options", err);
+    sqlite3_finalize(s);
+    if (rc != FACET_OK) {
+        free(*rows);
+        *rows = NULL;
+        *n = 0;
+    }
+    return rc;
+}
+
+int store_option_get(struct store *store, int64_t run, int64_t number,
+                     struct option_row *row, struct facet_error *err)
+{
+    sqlite3_stmt *s;
+    int rc = store_prepare(store, "SELECT " OPTION_COLUMNS
+                           " FROM options WHERE run = ?1 AND number = ?2",
+                           &s, "reading an option", err);
+    if (rc != FACET_OK)
+        return rc;
+    sqlite3_bind_int64(s, 1, run);
+    sqlite3_bind_int64(s, 2, number);
+    int step = sqlite3_step(s);
+    if (step == SQLITE_ROW)
+        option_from_row(s, 0, row);
+    else if (step == SQLITE_DONE)
+        rc = facet_error_set(err, FACET_EINPUT,
+            "%s: run %lld has no option %lld", store->path, (long long)run,
+            (long long)number);
+    else
+        rc = store_fail(store, "reading an option", err);
+    sqlite3_finalize(s);
+    return rc;
+}
+
+int store_options_set_pareto(struct store *store, int64_t run,
+                             const int64_t *numbers, const int *rank,
+                             const double *crowding, size_t n, int64_t knee,
+                             double hypervolume, struct facet_error *err)
+{
+    sqlite3_stmt *option = NULL, *summary = NULL;
+    int rc = store_exec(store, "BEGIN IMMEDIATE", "storing the front", err);
+    if (rc != FACET_OK)
+        return rc;
+    rc = store_prepare(store,
+        "UPDATE options SET rank = ?3, crowding = ?4, knee = ?5"
+        " WHERE run = ?1 AND number = ?2", &option, "storing the front",
+        err);
+    for (size_t k = 0; k < n && rc == FACET_OK; k++) {
+        sqlite3_bind_int64(option, 1, run);
+        sqlite3_bind_int64(option, 2, numbers[k]);
+        sqlite3_bind_int(option, 3, rank[k]);
+        if (isfinite(crowding[k]))
+            sqlite3_bind_double(option, 4, crowding[k]);
+        else
+            sqlite3_bind_null(option, 4);
+        sqlite3_bind_int(option, 5, numbers[k] == knee);
+        rc = step_done(store, option, "storing the front", err);
+    }
+    if (rc == FACET_OK)
+        rc = store_prepare(store,
+            "UPDATE runs SET knee = nullif(?2, 0), hypervolume = ?3,"
+            " pareto_options = (SELECT count(*) FROM options"
+            "  WHERE run = ?1 AND rank = 1),"
+            " best_cost = (SELECT min(cost) FROM options"
+            "  WHERE run = ?1 AND feasible)"
+            " WHERE id = ?1", &summary, "storing the front", err);
+    if (rc == FACET_OK) {
+        sqlite3_bind_int64(summary, 1, run);
+        sqlite3_bind_int64(summary, 2, knee);
+        if (isfinite(hypervolume))
+            sqlite3_bind_double(summary, 3, hypervolume);
+        else
+            sqlite3_bind_null(summary, 3);
+        rc = step_done(store, summary, "storing the front", err);
+    }
+    sqlite3_finalize(option);
+    sqlite3_finalize(summary);
+    if (rc == FACET_OK)
+        rc = store_exec(store, "COMMIT", "storing the front", err);
+    if (rc != FACET_OK)
+        sqlite3_exec(store->db, "ROLLBACK", NULL, NULL, NULL);
+    return rc;
+}
+
+double store_option_value(const struct option_row *o, const char *column)
+{
+    const struct option_totals *t = &o->totals;
+    static const char *const names[] = {
+        "number", "generation", "nu", "nv", "threshold_mm", "panels",
+        "fp_count", "sp_count", "dp_count", "fp_area", "sp_area", "dp_area",
+        "area", "cost", "planarity", "max_deviation", "max_panel_area",
+        "p_dist", "feasible", "rank", "crowding", "knee", NULL};
+    const double values[] = {
+        (double)o->number, o->generation, o->nu, o->nv, o->threshold_mm,
+        (double)t->panels, (double)t->count[TYPE_FP],
+        (double)t->count[TYPE_SP], (double)t->count[TYPE_DP],
+        t->area_of[TYPE_FP], t->area_of[TYPE_SP], t->area_of[TYPE_DP],
+        t->area, t->cost, t->planarity, t->max_deviation, t->max_panel_area,
+        t->p_dist, t->feasible != 0, o->rank, o->crowding, o->knee != 0};
+    for (int k = 0; names[k] != NULL; k++)
+        if (strcmp(names[k], column) == 0)
+            return values[k];
+    return NAN;
+}
+
+/* --- queries --- */
+
+/* Whether name is a column of store_option_columns. */
+static int known_column(const char *name, size_t length)
+{
+    for (int k = 0; store_option_columns[k] != NULL; k++)
+        if (strlen(store_option_columns[k]) == length &&
+            strncasecmp(store_option_columns[k], name, length) == 0)
+            return 1;
+    return 0;
+}
+
+/* Appends the ORDER BY list for sort ("cost,dp_area") to sql. */
+static int order_by(const char *sort, int descending, char *sql,
+                    size_t size, struct facet_error *err)
+{
+    const char *direction = descending ? " DESC" : "";
+    size_t len = strlen(sql);
+    const char *p = sort ? sort : "";
+    while (*p != '\0') {
+        size_t n = strcspn(p, ",");
+        while (n > 0 && p[0] == ' ') {
+            p++;
+            n--;
+        }
+        while (n > 0 && p[n - 1] == ' ')
+            n--;
+        if (n == 0 || !known_column(p, n)) {
+            char list[512] = "";
+            for (int k = 0; store_option_columns[k] != NULL; k++)
+                snprintf(list + strlen(list), sizeof list - strlen(list),
+                         "%s%s", k ? ", " : "", store_option_columns[k]);
+            return facet_error_set(err, FACET_EINPUT,
+                "--sort: unknown column '%.*s' (choose from %s)", (int)n, p,
+                list);
+        }
+        len += (size_t)snprintf(sql + len, size - len, "\"%.*s\"%s, ",
+                                (int)n, p, direction);
+        if (len >= size)
+            return facet_error_set(err, FACET_EINPUT, "--sort: too long");
+        p += strcspn(p, ",");
+        if (*p == ',')
+            p++;
+    }
+    snprintf(sql + len, size - len, "run%s, number%s", direction, direction);
+    return FACET_OK;
+}
+
+int store_options_query(struct store *store, const struct option_query *q,
+                        int (*row)(void *context, int64_t run,
+                                   const struct option_row *option),
+                        void *context, struct facet_error *err)
+{
+    /* ?1 run (0 = all), ?2 limit, ?3 offset; the filter's from ?4. */
+    char *where = NULL;
+    if (q->where != NULL && (where = filter_sql(q->where, 4)) == NULL)
+        return facet_error_set(err, FACET_EWORK, "out of memory");
+    size_t size = 1024 + (where ? strlen(where) : 0) +
+                  (q->sort ? 4 * strlen(q->sort) : 0);
+    char *sql = malloc(size);
+    if (sql == NULL) {
+        free(where);
+        return facet_error_set(err, FACET_EWORK, "out of memory");
+    }
+    snprintf(sql, size, "SELECT run, " OPTION_COLUMNS " FROM options"
+             " WHERE (?1 = 0 OR run = ?1)%s AND (%s) ORDER BY ",
+             q->pareto_only ? " AND rank = 1" : "", where ? where : "1");
+    free(where);
+    int rc = order_by(q->sort, q->descending, sql, size, err);
+    if (rc == FACET_OK)
+        snprintf(sql + strlen(sql), size - strlen(sql),
+                 " LIMIT ?2 OFFSET ?3");
+    sqlite3_stmt *s = NULL;
+    if (rc == FACET_OK)
+        rc = store_prepare(store, sql, &s, "querying options", err);
+    free(sql);
+    if (rc != FACET_OK)
+        return rc;
+    sqlite3_bind_int64(s, 1, q->run);
+    sqlite3_bind_int64(s, 2, q->limit > 0 ? q->limit : -1);
+    sqlite3_bind_int64(s, 3, q->offset > 0 ? q->offset : 0);
+    if (q->where != NULL)
+        for (size_t k = 0; k < filter_param_count(q->where); k++)
+            sqlite3_bind_double(s, 4 + (int)k, filter_param(q->where, k));
+    int step;
+    struct option_row option;
+    while ((step = sqlite3_step(s)) == SQLITE_ROW) {
+        option_from_row(s, 1, &option);
+        if (row(context, sqlite3_column_int64(s, 0), &option) != 0) {
+            step = SQLITE_DONE;
+            break;
+        }
+    }
+    if (step != SQLITE_DONE)
+        rc = store_fail(store, "querying options", err);
+    sqlite3_finalize(s);
+    return rc;
+}

@@ -1,0 +1,272 @@
+/*
+ * store_run.c: the runs table: creating a run, reading it back, its status
+ * as it goes, deleting it. See store.h.
+ */
+#include "store_db.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+/* The columns of runs in the order run_from_row reads them. */
+#define RUN_COLUMNS \
+    "id, name, status, started, coalesce(finished, ''), elapsed," \
+    " surface_path, surface_sha256, units, coalesce(object, '')," \
+    " coalesce(group_name, ''), method, seed, u_min, u_max, v_min, v_max," \
+    " threshold_min_mm, threshold_max_mm, threshold_step_mm, price_fp," \
+    " price_sp, price_dp, sp_as_fp, max_panel_area_limit," \
+    " coalesce(curvature_tol, 0), per_panel, flip_normals, objectives," \
+    " coalesce(population, 0), coalesce(generations, 0)," \
+    " coalesce(evaluations, 0), jobs, version, options," \
+    " coalesce(writer_pid, 0), coalesce(writer_host, '')," \
+    " hypervolume, coalesce(knee, 0), coalesce(pareto_options, 0)," \
+    " best_cost"
+
+static void copy_text(char *to, size_t size, sqlite3_stmt *stmt, int col)
+{
+    const unsigned char *text = sqlite3_column_text(stmt, col);
+    snprintf(to, size, "%s", text ? (const char *)text : "");
+}
+
+static double column_or_nan(sqlite3_stmt *stmt, int col)
+{
+    return sqlite3_column_type(stmt, col) == SQLITE_NULL
+               ? NAN : sqlite3_column_double(stmt, col);
+}
+
+static void run_from_row(sqlite3_stmt *s, struct run_info *r)
+{
+    memset(r, 0, sizeof *r);
+    int c = 0;
+    r->id = sqlite3_column_int64(s, c++);
+    copy_text(r->name, sizeof r->name, s, c++);
+    copy_text(r->status, sizeof r->status, s, c++);
+    copy_text(r->started, sizeof r->started, s, c++);
+    copy_text(r->finished, sizeof r->finished, s, c++);
+    r->elapsed = sqlite3_column_double(s, c++);
+    copy_text(r->surface_path, sizeof r->surface_path, s, c++);
+    copy_text(r->surface_sha256, sizeof r->surface_sha256, s, c++);
+    copy_text(r->units, sizeof r->units, s, c++);
+    copy_text(r->object, sizeof r->object, s, c++);
+    copy_text(r->group, sizeof r->group, s, c++);
+    copy_text(r->method, sizeof r->method, s, c++);
+    r->seed = (uint64_t)sqlite3_column_int64(s, c++);
+    r->u_min = sqlite3_column_int(s, c++);
+    r->u_max = sqlite3_column_int(s, c++);
+    r->v_min = sqlite3_column_int(s, c++);
+    r->v_max = sqlite3_column_int(s, c++);
+    r->threshold_min_mm = sqlite3_column_double(s, c++);
+    r->threshold_max_mm = sqlite3_column_double(s, c++);
+    r->threshold_step_mm = sqlite3_column_double(s, c++);
+    for (int t = 0; t < TYPE_COUNT; t++)
+        r->price[t] = sqlite3_column_double(s, c++);
+    r->sp_as_fp = sqlite3_column_int(s, c++);
+    r->max_panel_area = sqlite3_column_double(s, c++);
+    r->curvature_tol = sqlite3_column_double(s, c++);
+    copy_text(r->per_panel, sizeof r->per_panel, s, c++);
+    r->flip_normals = sqlite3_column_int(s, c++);
+    copy_text(r->objectives, sizeof r->objectives, s, c++);
+    r->population = sqlite3_column_int(s, c++);
+    r->generations = sqlite3_column_int(s, c++);
+    r->evaluations = sqlite3_column_int64(s, c++);
+    r->jobs = sqlite3_column_int(s, c++);
+    copy_text(r->version, sizeof r->version, s, c++);
+    r->options = sqlite3_column_int64(s, c++);
+    r->writer_pid = sqlite3_column_int64(s, c++);
+    copy_text(r->writer_host, sizeof r->writer_host, s, c++);
+    r->hypervolume = column_or_nan(s, c++);
+    r->knee = sqlite3_column_int64(s, c++);
+    r->pareto_options = sqlite3_column_int64(s, c++);
+    r->best_cost = column_or_nan(s, c++);
+}
+
+static void bind_text_or_null(sqlite3_stmt *s, int col, const char *text)
+{
+    if (text[0] == '\0')
+        sqlite3_bind_null(s, col);
+    else
+        sqlite3_bind_text(s, col, text, -1, SQLITE_TRANSIENT);
+}
+
+int store_run_create(struct store *store, struct run_info *r,
+                     struct facet_error *err)
+{
+    sqlite3_stmt *s;
+    int rc = store_prepare(store,
+        "INSERT INTO runs (name, status, started, surface_path,"
+        " surface_sha256, units, object, group_name, method, seed, u_min,"
+        " u_max, v_min, v_max, threshold_min_mm, threshold_max_mm,"
+        " threshold_step_mm, price_fp, price_sp, price_dp, sp_as_fp,"
+        " max_panel_area_limit, curvature_tol, per_panel, flip_normals,"
+        " objectives, population, generations, evaluations, jobs, version,"
+        " writer_pid, writer_host)"
+        " VALUES (?1, 'running', ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10, ?11,"
+        " ?12, ?13, ?14, ?15, ?16, ?17, ?18, ?19, ?20, ?21, ?22, ?23, ?24,"
+        " ?25, ?26, ?27, ?28, ?29, ?30, ?31, ?32)",
+        &s, "creating a run", err);
+    if (rc != FACET_OK)
+        return rc;
+    store_now(r->started);
+    snprintf(r->status, sizeof r->status, "running");
+    r->finished[0] = '\0';
+    r->writer_pid = (int64_t)getpid();
+    memset(r->writer_host, 0, sizeof r->writer_host);
+    gethostname(r->writer_host, sizeof r->writer_host - 1);
+    sqlite3_bind_text(s, 1, r->name, -1, SQLITE_TRANSIENT);
+    sqlite3_bind_text(s, 2, r->started, -1, SQLITE_TRANSIENT);
+    sqlite3_bind_text(s, 3, r->surface_path, -1, SQLITE_TRANSIENT);
+    sqlite3_bind_text(s, 4, r->surface_sha256, -1, SQLITE_TRANSIENT);
+    sqlite3_bind_text(s, 5, r->units, -1, SQLITE_TRANSIENT);
+    bind_text_or_null(s, 6, r->object);
+    bind_text_or_null(s, 7, r->group);
+    sqlite3_bind_text(s, 8, r->method, -1, SQLITE_TRANSIENT);
+    sqlite3_bind_int64(s, 9, (sqlite3_int64)r->seed);
+    sqlite3_bind_int(s, 10, r->u_min);
+    sqlite3_bind_int(s, 11, r->u_max);
+    sqlite3_bind_int(s, 12, r->v_min);
+    sqlite3_bind_int(s, 13, r->v_max);
+    sqlite3_bind_double(s, 14, r->threshold_min_mm);
+    sqlite3_bind_double(s, 15, r->threshold_max_mm);
+    sqlite3_bind_double(s, 16, r->threshold_step_mm);
+    for (int t = 0; t < TYPE_COUNT; t++)
+        sqlite3_bind_double(s, 17 + t, r->price[t]);
+    sqlite3_bind_int(s, 20, r->sp_as_fp);
+    sqlite3_bind_double(s, 21, r->max_panel_area);
+    if (r->curvature_tol > 0)
+        sqlite3_bind_double(s, 22, r->curvature_tol);
+    sqlite3_bind_text(s, 23, r->per_panel, -1, SQLITE_TRANSIENT);
+    sqlite3_bind_int(s, 24, r->flip_normals);
+    sqlite3_bind_text(s, 25, r->objectives, -1, SQLITE_TRANSIENT);
+    if (r->population > 0)
+        sqlite3_bind_int(s, 26, r->population);
+    if (r->generations > 0)
+        sqlite3_bind_int(s, 27, r->generations);
+    if (r->evaluations > 0)
+        sqlite3_bind_int64(s, 28, r->evaluations);
+    sqlite3_bind_int(s, 29, r->jobs);
+    sqlite3_bind_text(s, 30, FACET_VERSION, -1, SQLITE_STATIC);
+    sqlite3_bind_int64(s, 31, r->writer_pid);
+    sqlite3_bind_text(s, 32, r->writer_host, -1, SQLITE_TRANSIENT);
+    if (sqlite3_step(s) != SQLITE_DONE)
+        rc = store_fail(store, "creating a run", err);
+    else
+        r->id = sqlite3_last_insert_rowid(store->db);
+    snprintf(r->version, sizeof r->version, "%s", FACET_VERSION);
+    r->options = 0;
+    r->elapsed = 0;
+    r->hypervolume = NAN;
+    r->best_cost = NAN;
+    sqlite3_finalize(s);
+    return rc;
+}
+
+int store_run_get(struct store *store, int64_t id, struct run_info *run,
+                  struct facet_error *err)
+{
+    sqlite3_stmt *s;
+    int rc = store_prepare(store, "SELECT " RUN_COLUMNS
+                           " FROM runs WHERE id = ?1", &s, "reading a run",
+                           err);
+    if (rc != FACET_OK)
+        return rc;
+    sqlite3_bind_int64(s, 1, id);
+    int step = sqlite3_step(s);
+    if (step == SQLITE_ROW)
+        run_from_row(s, run);
+    else if (step == SQLITE_DONE)
+        rc = facet_error_set(err, FACET_EINPUT, "%s: no run %lld "
+                             "('facet runs %s' lists them)", store->path,
+                             (long long)id, store->path);
+    else
+        rc = store_fail(store, "reading a run", err);
+    sqlite3_finalize(s);
+    return rc;
+}
+
+int store_run_list(struct store *store, struct run_info **runs,
+                   size_t *count, struct facet_error *err)
+{
+    *runs = NULL;
+    *count = 0;
+    sqlite3_stmt *s;
+    int rc = store_prepare(store, "SELECT " RUN_COLUMNS
+                           " FROM runs ORDER BY id", &s, "listing runs", err);
+    if (rc != FACET_OK)
+        return rc;
+    size_t capacity = 0;
+    int step;
+    while ((step = sqlite3_step(s)) == SQLITE_ROW) {
+        if (*count == capacity) {
+            capacity = capacity ? 2 * capacity : 16;
+            struct run_info *grown = realloc(*runs, capacity * sizeof **runs);
+            if (grown == NULL) {
+                rc = facet_error_set(err, FACET_EWORK, "out of memory");
+                break;
+            }
+            *runs = grown;
+        }
+        run_from_row(s, &(*runs)[(*count)++]);
+    }
+    if (rc == FACET_OK && step != SQLITE_DONE)
+        rc = store_fail(store, "listing runs", err);
+    sqlite3_finalize(s);
+    if (rc != FACET_OK) {
+        free(*runs);
+        *runs = NULL;
+        *count = 0;
+    }
+    return rc;
+}
+
+int store_run_set_status(struct store *store, int64_t id, const char *status,
+                         double elapsed, struct facet_error *err)
+{
+    sqlite3_stmt *s;
+    int running = strcmp(status, "running") == 0;
+    int rc = store_prepare(store,
+        "UPDATE runs SET status = ?2, elapsed = ?3,"
+        " finished = CASE WHEN ?2 = 'running' THEN NULL ELSE ?4 END,"
+        " writer_pid = CASE WHEN ?2 = 'running' THEN ?5 ELSE writer_pid END,"
+        " writer_host = CASE WHEN ?2 = 'running' THEN ?6"
+        "  ELSE writer_host END,"
+        " options = (SELECT count(*) FROM options WHERE run = ?1)"
+        " WHERE id = ?1", &s, "updating a run", err);
+    if (rc != FACET_OK)
+        return rc;
+    char now[32], host[64] = "";
+    store_now(now);
+    gethostname(host, sizeof host - 1);
+    sqlite3_bind_int64(s, 1, id);
+    sqlite3_bind_text(s, 2, status, -1, SQLITE_TRANSIENT);
+    sqlite3_bind_double(s, 3, elapsed);
+    sqlite3_bind_text(s, 4, now, -1, SQLITE_TRANSIENT);
+    sqlite3_bind_int64(s, 5, running ? (int64_t)getpid() : 0);
+    sqlite3_bind_text(s, 6, host, -1, SQLITE_TRANSIENT);
+    if (sqlite3_step(s) != SQLITE_DONE)
+        rc = store_fail(store, "updating a run", err);
+    else if (sqlite3_changes(store->db) == 0)
+        rc = facet_error_set(err, FACET_EINPUT, "%s: no run %lld",
+                             store->path, (long long)id);
+    sqlite3_finalize(s);
+    return rc;
+}
+
+int store_run_delete(struct store *store, int64_t id,
+                     struct facet_error *err)
+{
+    sqlite3_stmt *s;
+    int rc = store_prepare(store, "DELETE FROM runs WHERE id = ?1", &s,
+                           "deleting a run", err);
+    if (rc != FACET_OK)
+        return rc;
+    sqlite3_bind_int64(s, 1, id);
+    if (sqlite3_step(s) != SQLITE_DONE)
+        rc = store_fail(store, "deleting a run", err);
+    else if (sqlite3_changes(store->db) == 0)
+        rc = facet_error_set(err, FACET_EINPUT, "%s: no run %lld",
+                             store->path, (long long)id);
+    sqlite3_finalize(s);
+    return rc;
+}

@@ -1,0 +1,439 @@
+/*
+ * study.c: an optimisation run written through the store. See study.h.
+ */
+#include "study.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#include "core/front.h"
+#include "core/sha256.h"
+
+/* What the optimiser's hooks need to reach the store. */
+struct study_state {
+    struct store *store;
+    int64_t run;
+    const struct study_hooks *hooks;
+    struct option_row *rows;     /* conversion buffer for a batch */
+    size_t capacity;
+};
+
+/* Monotonic seconds, for the run's elapsed time. */
+static double clock_seconds(void)
+{
+    struct timespec t;
+    clock_gettime(CLOCK_MONOTONIC, &t);
+    return (double)t.tv_sec + (double)t.tv_nsec * 1e-9;
+}
+
+static void stage(const struct study_hooks *hooks, const char *what)
+{
+    if (hooks != NULL && hooks->stage != NULL)
+        hooks->stage(hooks->context, what);
+}
+
+static void option_row_of(const struct evaluated_option *e,
+                          struct option_row *row)
+{
+    memset(row, 0, sizeof *row);
+    row->number = e->number;
+    row->generation = e->generation;
+    row->nu = e->point.nu;
+    row->nv = e->point.nv;
+    row->threshold_mm = e->point.threshold_mm;
+    row->totals = e->totals;
+}
+
+static void evaluated_of(const struct option_row *row,
+                         struct evaluated_option *e)
+{
+    memset(e, 0, sizeof *e);
+    e->number = row->number;
+    e->generation = row->generation;
+    e->point.nu = row->nu;
+    e->point.nv = row->nv;
+    e->point.threshold_mm = row->threshold_mm;
+    e->totals = row->totals;
+}
+
+static int store_batch(void *context, const struct evaluated_option *options,
+                       size_t n, struct facet_error *err)
+{
+    struct study_state *state = context;
+    if (n > state->capacity) {
+        struct option_row *grown = realloc(state->rows, n * sizeof *grown);
+        if (grown == NULL)
+            return facet_error_set(err, FACET_EWORK, "out of memory");
+        state->rows = grown;
+        state->capacity = n;
+    }
+    for (size_t k = 0; k < n; k++)
+        option_row_of(&options[k], &state->rows[k]);
+    return store_options_put(state->store, state->run, state->rows, n, err);
+}
+
+static void report_progress(void *context, int64_t done, int64_t total)
+{
+    struct study_state *state = context;
+    if (state->hooks != NULL && state->hooks->progress != NULL)
+        state->hooks->progress(state->hooks->context, done, total);
+}
+
+static int stop_requested(void *context)
+{
+    struct study_state *state = context;
+    return state->hooks != NULL && state->hooks->should_stop != NULL &&
+           state->hooks->should_stop(state->hooks->context);
+}
+
+int study_settings(const struct run_info *run,
+                   struct optimize_settings *s, struct mesh_options *mesh,
+                   int *flip_normals, struct facet_error *err)
+{
+    memset(s, 0, sizeof *s);
+    int rc = optimize_method_parse(run->method, &s->method, err);
+    if (rc == FACET_OK)
+        rc = objectives_parse(run->objectives, s->objectives,
+                              &s->nobjectives, err);
+    if (rc == FACET_OK)
+        rc = mesh_units_parse(run->units, &mesh->units, err);
+    if (rc != FACET_OK)
+        return rc;
+    s->space = (struct design_space){run->u_min, run->u_max, run->v_min,
+                                     run->v_max, run->threshold_min_mm,
+                                     run->threshold_max_mm,
+                                     run->threshold_step_mm};
+    classify_defaults(&s->base.classify);
+    s->base.mode = strcmp(run->per_panel, "mean") == 0 ? PANEL_MEAN
+                                                       : PANEL_EXTREMES;
+    s->base.classify.threshold = run->threshold_min_mm / 1000;
+    s->base.classify.curvature_tol = run->curvature_tol;
+    memcpy(s->base.classify.price, run->price, sizeof run->price);
+    s->base.classify.sp_as_fp = run->sp_as_fp;
+    s->base.classify.max_panel_area = run->max_panel_area;
+    s->seed = run->seed;
+    s->evaluations = run->evaluations;
+    s->population = run->population;
+    s->generations = run->generations;
+    s->jobs = run->jobs > 0 ? run->jobs : 1;
+    mesh->object = run->object[0] ? run->object : NULL;
+    mesh->group = run->group[0] ? run->group : NULL;
+    *flip_normals = run->flip_normals;
+    return design_space_check(&s->space, err);
+}
+
+int study_open_surface(const struct run_info *run, struct surface *surface,
+                       struct facet_error *err)
+{
+    struct optimize_settings settings;
+    struct mesh_options mesh;
+    int flip;
+    memset(surface, 0, sizeof *surface);
+    int rc = study_settings(run, &settings, &mesh, &flip, err);
+    if (rc != FACET_OK)
+        return rc;
+    char digest[65];
+    rc = sha256_file(run->surface_path, digest, err);
+    if (rc != FACET_OK)
+        return rc;
+    if (strcmp(digest, run->surface_sha256) != 0)
+        return facet_error_set(err, FACET_EINPUT,
+            "%s: the file has changed since run %lld was made from it "
+            "(SHA-256 %.12s..., was %.12s...)", run->surface_path,
+            (long long)run->id, digest, run->surface_sha256);
+    rc = surface_open(run->surface_path, &mesh, surface, err);
+    if (rc == FACET_OK)
+        rc = surface_prepare(surface, flip, err);
+    return rc;
+}
+
+int study_rank(struct store *store, int64_t run, struct facet_error *err)
+{
+    struct run_info info;
+    struct optimize_settings settings;
+    struct mesh_options mesh;
+    int flip;
+    int rc = store_run_get(store, run, &info, err);
+    if (rc == FACET_OK)
+        rc = study_settings(&info, &settings, &mesh, &flip, err);
+    if (rc != FACET_OK)
+        return rc;
+    struct option_row *rows;
+    size_t n;
+    rc = store_options_get(store, run, &rows, &n, err);
+    if (rc != FACET_OK)
+        return rc;
+    struct evaluated_option *options = malloc((n ? n : 1) * sizeof *options);
+    int64_t *numbers = malloc((n ? n : 1) * sizeof *numbers);
+    struct front front;
+    memset(&front, 0, sizeof front);
+    if (options == NULL || numbers == NULL)
+        rc = facet_error_set(err, FACET_EWORK, "out of memory");
+    for (size_t k = 0; rc == FACET_OK && k < n; k++) {
+        evaluated_of(&rows[k], &options[k]);
+        numbers[k] = rows[k].number;
+    }
+    if (rc == FACET_OK)
+        rc = front_analyse(options, n, settings.objectives,
+                           settings.nobjectives,
+                           settings.base.classify.max_panel_area, &front,
+                           err);
+    if (rc == FACET_OK)
+        rc = store_options_set_pareto(store, run, numbers, front.rank,
+                                      front.crowding, n,
+                                      front.knee < n ? numbers[front.knee]
+                                                     : 0,
+                                      front.hypervolume, err);
+    front_free(&front);
+    free(options);
+    free(numbers);
+    free(rows);
+    return rc;
+}
+
+/* Evaluates option on surface with the run's settings. */
+static int evaluate_option(const struct run_info *run,
+                           const struct surface *surface,
+                           const struct option_row *option,
+                           struct panelization *panels,
+                           struct option_totals *totals,
+                           struct facet_error *err)
+{
+    struct optimize_settings settings;
+    struct mesh_options mesh;
+    int flip;
+    int rc = study_settings(run, &settings, &mesh, &flip, err);
+    if (rc != FACET_OK)
+        return rc;
+    struct option_params params = settings.base;
+    params.nu = option->nu;
+    params.nv = option->nv;
+    params.classify.threshold = option->threshold_mm / 1000;
+    return option_evaluate(surface, &params, panels, totals, err);
+}
+
+int study_option_panels(struct store *store, const struct run_info *run,
+                        const struct surface *surface, int64_t number,
+                        struct panelization *panels,
+                        struct option_totals *totals,
+                        struct facet_error *err)
+{
+    memset(panels, 0, sizeof *panels);
+    struct option_row option;
+    int rc = store_option_get(store, run->id, number, &option, err);
+    if (rc != FACET_OK)
+        return rc;
+    *totals = option.totals;
+    int stored = store_panels_exist(store, run->id, number, err);
+    if (stored < 0)
+        return -stored;
+    if (stored)
+        return store_panels_get(store, run->id, number, panels, err);
+    struct surface own;
+    memset(&own, 0, sizeof own);
+    if (surface == NULL) {
+        rc = study_open_surface(run, &own, err);
+        surface = &own;
+    }
+    if (rc == FACET_OK)
+        rc = evaluate_option(run, surface, &option, panels, totals, err);
+    if (rc == FACET_OK)
+        rc = store_panels_put(store, run->id, number, panels, err);
+    if (surface == &own)
+        surface_close(&own);
+    return rc;
+}
+
+/* Stores the panels of every Pareto option of run not stored yet. */
+static int store_front_panels(struct store *store, const struct run_info *run,
+                              const struct surface *surface,
+                              struct facet_error *err)
+{
+    struct option_row *rows;
+    size_t n;
+    int rc = store_options_get(store, run->id, &rows, &n, err);
+    for (size_t k = 0; rc == FACET_OK && k < n; k++) {
+        if (rows[k].rank != 1)
+            continue;
+        struct panelization panels;
+        struct option_totals totals;
+        rc = study_option_panels(store, run, surface, rows[k].number,
+                                 &panels, &totals, err);
+        panelization_free(&panels);
+    }
+    free(rows);
+    return rc;
+}
+
+/* Runs the optimiser for run (recorded, status running) on the prepared
+ * surface, then ranks and finishes it. elapsed_before: seconds of earlier
+ * sessions. */
+static int study_go(struct store *store, struct run_info *run,
+                    const struct surface *surface,
+                    const struct optimize_settings *settings,
+                    const struct study_hooks *hooks, double started,
+                    enum optimize_outcome *outcome, struct facet_error *err)
+{
+    struct study_state state = {store, run->id, hooks, NULL, 0};
+    struct optimize_hooks optimize_hooks = {&state, store_batch,
+                                            report_progress, stop_requested};
+    struct option_row *rows = NULL;
+    struct evaluated_option *stored = NULL;
+    size_t nstored = 0;
+    int rc = store_options_get(store, run->id, &rows, &nstored, err);
+    if (rc == FACET_OK && nstored > 0) {
+        stored = malloc(nstored * sizeof *stored);
+        if (stored == NULL)
+            rc = facet_error_set(err, FACET_EWORK, "out of memory");
+        for (size_t k = 0; rc == FACET_OK && k < nstored; k++)
+            evaluated_of(&rows[k], &stored[k]);
+    }
+    free(rows);
+    stage(hooks, "evaluating options");
+    if (rc == FACET_OK)
+        rc = optimize_run(surface, settings, stored, nstored,
+                          &optimize_hooks, outcome, err);
+    free(stored);
+    free(state.rows);
+
+    struct facet_error later;
+    facet_error_clear(&later);
+    if (rc == FACET_OK) {
+        stage(hooks, "ranking options");
+        rc = study_rank(store, run->id, err);
+    }
+    if (rc == FACET_OK && *outcome == OPTIMIZE_DONE) {
+        stage(hooks, "storing the Pareto options' panels");
+        rc = store_front_panels(store, run, surface, err);
+    }
+    const char *status = rc != FACET_OK ? "failed"
+                         : *outcome == OPTIMIZE_DONE ? "done"
+                                                     : "interrupted";
+    /* The status is written even after a failure, with its own error
+     * kept apart so the first error is the one reported. */
+    int status_rc = store_run_set_status(store, run->id, status,
+                                         run->elapsed + clock_seconds() -
+                                             started,
+                                         rc == FACET_OK ? err : &later);
+    return rc != FACET_OK ? rc : status_rc;
+}
+
+int study_start(struct store *store, const struct study_request *request,
+                const struct study_hooks *hooks, int64_t *run_id,
+                enum optimize_outcome *outcome, struct facet_error *err)
+{
+    *run_id = 0;
+    *outcome = OPTIMIZE_INTERRUPTED;
+    const struct optimize_settings *s = &request->settings;
+    int rc = design_space_check(&s->space, err);
+    if (rc != FACET_OK)
+        return rc;
+    double started = clock_seconds();
+    struct run_info run;
+    memset(&run, 0, sizeof run);
+    snprintf(run.name, sizeof run.name, "%s", request->name);
+    snprintf(run.surface_path, sizeof run.surface_path, "%s",
+             request->surface_path);
+    stage(hooks, "reading the surface");
+    rc = sha256_file(request->surface_path, run.surface_sha256, err);
+    struct surface surface;
+    memset(&surface, 0, sizeof surface);
+    if (rc == FACET_OK)
+        rc = surface_open(request->surface_path, &request->mesh, &surface,
+                          err);
+    if (rc == FACET_OK) {
+        stage(hooks, "preparing the surface (UV, curvature)");
+        rc = surface_prepare(&surface, request->flip_normals, err);
+    }
+    if (rc != FACET_OK) {
+        surface_close(&surface);
+        return rc;
+    }
+    snprintf(run.units, sizeof run.units, "%s",
+             mesh_units_name(request->mesh.units));
+    snprintf(run.method, sizeof run.method, "%s",
+             optimize_method_name(s->method));
+    run.seed = s->seed;
+    run.u_min = s->space.u_min;
+    run.u_max = s->space.u_max;
+    run.v_min = s->space.v_min;
+    run.v_max = s->space.v_max;
+    run.threshold_min_mm = s->space.t_min_mm;
+    run.threshold_max_mm = s->space.t_max_mm;
+    run.threshold_step_mm = s->space.t_step_mm;
+    memcpy(run.price, s->base.classify.price, sizeof run.price);
+    run.sp_as_fp = s->base.classify.sp_as_fp;
+    run.max_panel_area = s->base.classify.max_panel_area;
+    run.curvature_tol = s->base.classify.curvature_tol;
+    snprintf(run.per_panel, sizeof run.per_panel, "%s",
+             s->base.mode == PANEL_MEAN ? "mean" : "extremes");
+    run.flip_normals = request->flip_normals;
+    snprintf(run.object, sizeof run.object, "%s",
+             request->mesh.object ? request->mesh.object : "");
+    snprintf(run.group, sizeof run.group, "%s",
+             request->mesh.group ? request->mesh.group : "");
+    size_t len = 0;
+    for (int k = 0; k < s->nobjectives; k++)
+        len += (size_t)snprintf(run.objectives + len,
+                                sizeof run.objectives - len, "%s%s%s",
+                                k ? "," : "",
+                                s->objectives[k].maximise ? "max:" : "",
+                                metric_name(s->objectives[k].metric));
+    run.population = s->method == METHOD_NSGA2 ? s->population : 0;
+    run.generations = s->method == METHOD_NSGA2 ? s->generations : 0;
+    run.evaluations = s->method == METHOD_RANDOM ? s->evaluations : 0;
+    run.jobs = s->jobs;
+    rc = store_run_create(store, &run, err);
+    if (rc == FACET_OK) {
+        *run_id = run.id;
+        if (hooks != NULL && hooks->started != NULL)
+            hooks->started(hooks->context, run.id);
+        rc = study_go(store, &run, &surface, s, hooks, started, outcome,
+                      err);
+    }
+    surface_close(&surface);
+    return rc;
+}
+
+int study_resume(struct store *store, int64_t run_id,
+                 const struct study_hooks *hooks,
+                 enum optimize_outcome *outcome, struct facet_error *err)
+{
+    *outcome = OPTIMIZE_INTERRUPTED;
+    double started = clock_seconds();
+    struct run_info run;
+    int rc = store_run_get(store, run_id, &run, err);
+    if (rc != FACET_OK)
+        return rc;
+    if (strcmp(run.status, "done") == 0)
+        return facet_error_set(err, FACET_EINPUT,
+            "run %lld is done: nothing to resume", (long long)run_id);
+    if (strcmp(run.status, "running") == 0)
+        return facet_error_set(err, FACET_EINPUT,
+            "run %lld is being written by process %lld on %s: stop it "
+            "first", (long long)run_id, (long long)run.writer_pid,
+            run.writer_host);
+    struct optimize_settings settings;
+    struct mesh_options mesh;
+    int flip;
+    rc = study_settings(&run, &settings, &mesh, &flip, err);
+    if (rc != FACET_OK)
+        return rc;
+    stage(hooks, "preparing the surface (UV, curvature)");
+    struct surface surface;
+    rc = study_open_surface(&run, &surface, err);
+    if (rc == FACET_OK)
+        rc = store_run_set_status(store, run_id, "running", run.elapsed,
+                                  err);
+    if (rc == FACET_OK) {
+        if (hooks != NULL && hooks->started != NULL)
+            hooks->started(hooks->context, run_id);
+        rc = study_go(store, &run, &surface, &settings, hooks, started,
+                      outcome, err);
+    }
+    surface_close(&surface);
+    return rc;
+}

@@ -1,0 +1,84 @@
+/*
+ * study.h: an optimisation run from start to finish, written through the
+ * store: what `facet optimize` and the TUI's New run both do.
+ *
+ * A study opens and prepares the surface, records the run, lets the
+ * optimiser (core/optimize.h) evaluate the design space and commits every
+ * batch as soon as it is evaluated, then ranks the options (core/front.h),
+ * stores the panels of the Pareto options, and marks the run done. When the
+ * stop hook fires it ranks what was stored and marks the run interrupted;
+ * on an error, failed. Resuming reads the run back, checks that the surface
+ * file is the one the run was made from, and goes on: nothing stored is
+ * evaluated again, and the finished run has the options an uninterrupted
+ * one would have.
+ */
+#ifndef FACET_STUDY_H
+#define FACET_STUDY_H
+
+#include "core/mesh.h"
+#include "core/optimize.h"
+#include "core/surface.h"
+#include "store.h"
+
+struct study_hooks {
+    void *context;
+    /* What the study is doing now ("preparing the surface", ...). */
+    void (*stage)(void *context, const char *what);
+    /* Options done (stored or reused) of total. */
+    void (*progress)(void *context, int64_t done, int64_t total);
+    /* Non-zero when the user asked to stop; checked between batches. */
+    int (*should_stop)(void *context);
+    /* The run's id, once it is recorded (the TUI follows it live). */
+    void (*started)(void *context, int64_t run);
+};
+
+/* What a new run is made of. */
+struct study_request {
+    const char *surface_path;
+    struct mesh_options mesh;        /* units, object, group */
+    int flip_normals;
+    struct optimize_settings settings;
+    const char *name;                /* "" for none */
+};
+
+/* Runs a new study into store. *run receives its id (0 if it failed
+ * before one was recorded), *outcome DONE or INTERRUPTED. Returns
+ * FACET_OK, or the first error (the run, if recorded, is then "failed"). */
+int study_start(struct store *store, const struct study_request *request,
+                const struct study_hooks *hooks, int64_t *run,
+                enum optimize_outcome *outcome, struct facet_error *err);
+
+/* Goes on with run (status interrupted or failed; a running run whose
+ * writer is alive is refused, a done one too). */
+int study_resume(struct store *store, int64_t run,
+                 const struct study_hooks *hooks,
+                 enum optimize_outcome *outcome, struct facet_error *err);
+
+/* The optimiser settings, mesh options and normal flip a run was made
+ * with. */
+int study_settings(const struct run_info *run,
+                   struct optimize_settings *settings,
+                   struct mesh_options *mesh, int *flip_normals,
+                   struct facet_error *err);
+
+/* Opens and prepares the surface of run, refusing a file whose content is
+ * not the one the run was made from. Release with surface_close, also
+ * after a failure. */
+int study_open_surface(const struct run_info *run, struct surface *surface,
+                       struct facet_error *err);
+
+/* The panels and totals of option number of run: read from the store when
+ * stored, else evaluated on surface (opened by study_open_surface when
+ * surface is NULL) and stored. *panels is caller-owned (panelization_free,
+ * also after a failure). */
+int study_option_panels(struct store *store, const struct run_info *run,
+                        const struct surface *surface, int64_t option,
+                        struct panelization *panels,
+                        struct option_totals *totals,
+                        struct facet_error *err);
+
+/* Ranks every stored option of run and stores ranks, crowding, knee and
+ * hypervolume. */
+int study_rank(struct store *store, int64_t run, struct facet_error *err);
+
+#endif
