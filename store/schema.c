@@ -255,27 +255,15 @@ static int check_header(const char *path, struct facet_error *err)
 }
 
 /* Whether the process that wrote a run is gone: on this host, no process
- * with that pid, or one that is not Facet (the pid was reused). */
+ * with that pid. (A pid reused by another process since reads as alive;
+ * --resume then says who holds the run.) */
 static int writer_gone(int64_t pid, const char *host)
 {
     char here[64] = "";
     gethostname(here, sizeof here - 1);
     if (strcmp(here, host) != 0)
         return 0;  /* another machine's writer: cannot tell */
-    if (pid <= 0 || (kill((pid_t)pid, 0) != 0 && errno == ESRCH))
-        return 1;
-    char path[64], cmdline[256] = "";
-    snprintf(path, sizeof path, "/proc/%lld/cmdline", (long long)pid);
-    FILE *file = fopen(path, "rb");
-    if (file == NULL)
-        return 0;
-    size_t got = fread(cmdline, 1, sizeof cmdline - 1, file);
-    fclose(file);
-    for (size_t k = 0; k < got; k++)
-        if (cmdline[k] == '\0')
-            cmdline[k] = ' ';
-    cmdline[got] = '\0';
-    return strstr(cmdline, "facet") == NULL;
+    return pid <= 0 || (kill((pid_t)pid, 0) != 0 && errno == ESRCH);
 }
 
 /* Marks "running" runs whose writer is gone as "interrupted". */

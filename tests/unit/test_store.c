@@ -1,0 +1,537 @@
+/*
+ * test_store.c: the SQLite result store on real files: runs, options and
+ * panels round-trip bit for bit; queries sort, filter and page like SQL
+ * written by hand; a study stopped between batches and resumed ends with
+ * the rows of one never stopped; foreign, newer, damaged and non-database
+ * files are refused with one clear line; an older schema is migrated.
+ */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <cmocka.h>
+
+#include <math.h>
+#include <sqlite3.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "core/example.h"
+#include "store/filter.h"
+#include "store/study.h"
+
+static char surface_path[64];
+static char db_path[64];
+
+static int setup(void **state)
+{
+    (void)state;
+    snprintf(surface_path, sizeof surface_path,
+             "/tmp/facet_test_store_%d.obj", (int)getpid());
+    FILE *out = fopen(surface_path, "w");
+    struct facet_error err;
+    if (out == NULL || example_write("roof", 20, out, &err) != FACET_OK)
+        return -1;
+    fclose(out);
+    return 0;
+}
+
+static int teardown(void **state)
+{
+    (void)state;
+    unlink(surface_path);
+    return 0;
+}
+
+/* A fresh database path for one test. */
+static const char *fresh_db(const char *name)
+{
+    snprintf(db_path, sizeof db_path, "/tmp/facet_test_%s_%d.db", name,
+             (int)getpid());
+    char side[80];
+    unlink(db_path);
+    snprintf(side, sizeof side, "%s-wal", db_path);
+    unlink(side);
+    snprintf(side, sizeof side, "%s-shm", db_path);
+    unlink(side);
+    return db_path;
+}
+
+static void request_for(struct study_request *r, enum optimize_method method)
+{
+    memset(r, 0, sizeof *r);
+    r->surface_path = surface_path;
+    r->mesh = (struct mesh_options){UNITS_M, NULL, NULL};
+    r->name = "test";
+    struct optimize_settings *s = &r->settings;
+    classify_defaults(&s->base.classify);
+    s->base.mode = PANEL_EXTREMES;
+    s->base.classify.max_panel_area = 1000;  /* coarse grids, big panels */
+    s->method = method;
+    s->space = (struct design_space){4, 7, 5, 8, 2, 4, 1};
+    s->seed = 7;
+    s->evaluations = 45;
+    s->population = 8;
+    s->generations = 4;
+    s->jobs = 2;
+    struct facet_error err;
+    assert_int_equal(objectives_parse("cost,planarity,dp_area",
+                                      s->objectives, &s->nobjectives, &err),
+                     FACET_OK);
+}
+
+/* Stops after a number of progress reports. */
+struct stopper {
+    int reports, stop_after;
+};
+
+static void count_report(void *context, int64_t done, int64_t total)
+{
+    (void)done;
+    (void)total;
+    ((struct stopper *)context)->reports++;
+}
+
+static int stop_when_told(void *context)
+{
+    struct stopper *s = context;
+    return s->stop_after > 0 && s->reports >= s->stop_after;
+}
+
+static void get_options(struct store *store, int64_t run,
+                        struct option_row **rows, size_t *n)
+{
+    struct facet_error err;
+    assert_int_equal(store_options_get(store, run, rows, n, &err), FACET_OK);
+}
+
+static void test_run_roundtrip(void **state)
+{
+    (void)state;
+    struct store *store;
+    struct facet_error err;
+    assert_int_equal(store_open(fresh_db("roundtrip"), &store, &err),
+                     FACET_OK);
+    struct study_request request;
+    request_for(&request, METHOD_EXHAUSTIVE);
+    int64_t run;
+    enum optimize_outcome outcome;
+    assert_int_equal(study_start(store, &request, NULL, &run, &outcome,
+                                 &err), FACET_OK);
+    assert_int_equal(outcome, OPTIMIZE_DONE);
+
+    struct run_info info;
+    assert_int_equal(store_run_get(store, run, &info, &err), FACET_OK);
+    assert_string_equal(info.status, "done");
+    assert_string_equal(info.method, "exhaustive");
+    assert_int_equal(info.options, 4 * 4 * 3);
+    assert_int_equal(info.u_min, 4);
+    assert_int_equal(info.v_max, 8);
+    assert_true(info.finished[0] != '\0');
+    assert_true(info.knee > 0);
+    assert_true(info.pareto_options > 0);
+    assert_true(isfinite(info.hypervolume));
+    assert_int_equal(strlen(info.surface_sha256), 64);
+
+    /* Every option equals a fresh evaluation of its design point, bit for
+     * bit: nothing is rounded on the way through SQLite. */
+    struct option_row *rows;
+    size_t n;
+    get_options(store, run, &rows, &n);
+    assert_int_equal(n, 48);
+    struct surface surface;
+    assert_int_equal(study_open_surface(&info, &surface, &err), FACET_OK);
+    int knees = 0;
+    size_t pareto = 0;
+    for (size_t k = 0; k < n; k++) {
+        assert_int_equal(rows[k].number, (int64_t)k + 1);
+        struct option_params params = request.settings.base;
+        params.nu = rows[k].nu;
+        params.nv = rows[k].nv;
+        params.classify.threshold = rows[k].threshold_mm / 1000;
+        struct panelization panels;
+        struct option_totals totals;
+        assert_int_equal(option_evaluate(&surface, &params, &panels,
+                                         &totals, &err), FACET_OK);
+        assert_memory_equal(&totals, &rows[k].totals, sizeof totals);
+        panelization_free(&panels);
+        knees += rows[k].knee;
+        pareto += rows[k].rank == 1;
+        assert_true(rows[k].rank >= 1);
+        if (rows[k].rank == 1) {
+            /* The Pareto options' panels are stored and read back as
+             * they were computed. */
+            assert_int_equal(store_panels_exist(store, run, rows[k].number,
+                                                &err), 1);
+            struct panelization stored;
+            assert_int_equal(store_panels_get(store, run, rows[k].number,
+                                              &stored, &err), FACET_OK);
+            assert_int_equal(option_evaluate(&surface, &params, &panels,
+                                             &totals, &err), FACET_OK);
+            assert_int_equal(stored.npanels, panels.npanels);
+            assert_int_equal(stored.nu, panels.nu);
+            for (size_t p = 0; p < panels.npanels; p++) {
+                assert_int_equal(stored.panels[p].i, panels.panels[p].i);
+                assert_int_equal(stored.panels[p].class,
+                                 panels.panels[p].class);
+                assert_int_equal(stored.panels[p].type,
+                                 panels.panels[p].type);
+                assert_true(stored.panels[p].area == panels.panels[p].area);
+                assert_true(stored.panels[p].cost == panels.panels[p].cost);
+                assert_true(stored.panels[p].k1 == panels.panels[p].k1);
+            }
+            for (int c = 0; c < panels.nu * panels.nv; c++)
+                assert_int_equal(stored.cell_panel[c], panels.cell_panel[c]);
+            panelization_free(&stored);
+            panelization_free(&panels);
+        } else {
+            assert_int_equal(store_panels_exist(store, run, rows[k].number,
+                                                &err), 0);
+        }
+    }
+    assert_int_equal(knees, 1);
+    assert_int_equal(pareto, (size_t)info.pareto_options);
+    surface_close(&surface);
+    free(rows);
+
+    assert_int_equal(store_run_delete(store, run, &err), FACET_OK);
+    assert_int_equal(store_run_get(store, run, &info, &err), FACET_EINPUT);
+    get_options(store, run, &rows, &n);
+    assert_int_equal(n, 0);
+    free(rows);
+    store_close(store);
+}
+
+/* What a query hands back, in order. */
+struct collected {
+    int64_t number[512];
+    size_t n;
+};
+
+static int collect(void *context, int64_t run, const struct option_row *o)
+{
+    (void)run;
+    struct collected *c = context;
+    if (c->n < 512)
+        c->number[c->n++] = o->number;
+    return 0;
+}
+
+/* The same question asked through store_options_query and as SQL written
+ * by hand against the file. */
+static void check_query(struct store *store, sqlite3 *db, int64_t run,
+                        const char *where, const char *sort, int desc,
+                        int pareto, int64_t limit, int64_t offset,
+                        const char *sql)
+{
+    struct facet_error err;
+    struct filter *filter = NULL;
+    if (where != NULL)
+        assert_int_equal(filter_compile(where, &filter, &err), FACET_OK);
+    struct option_query q = {run, pareto, filter, sort, desc, limit, offset};
+    struct collected got = {{0}, 0}, want = {{0}, 0};
+    assert_int_equal(store_options_query(store, &q, collect, &got, &err),
+                     FACET_OK);
+    sqlite3_stmt *s;
+    assert_int_equal(sqlite3_prepare_v2(db, sql, -1, &s, NULL), SQLITE_OK);
+    while (sqlite3_step(s) == SQLITE_ROW)
+        want.number[want.n++] = sqlite3_column_int64(s, 0);
+    sqlite3_finalize(s);
+    assert_int_equal(got.n, want.n);
+    for (size_t k = 0; k < got.n; k++)
+        assert_int_equal(got.number[k], want.number[k]);
+    filter_free(filter);
+}
+
+static void test_queries(void **state)
+{
+    (void)state;
+    struct store *store;
+    struct facet_error err;
+    assert_int_equal(store_open(fresh_db("queries"), &store, &err),
+                     FACET_OK);
+    struct study_request request;
+    request_for(&request, METHOD_EXHAUSTIVE);
+    int64_t run;
+    enum optimize_outcome outcome;
+    assert_int_equal(study_start(store, &request, NULL, &run, &outcome,
+                                 &err), FACET_OK);
+    sqlite3 *db;
+    assert_int_equal(sqlite3_open(db_path, &db), SQLITE_OK);
+    check_query(store, db, run, NULL, "cost", 0, 0, 0, 0,
+                "SELECT number FROM options ORDER BY cost, run, number");
+    check_query(store, db, run, NULL, "dp_area,planarity", 1, 0, 5, 3,
+                "SELECT number FROM options ORDER BY dp_area DESC,"
+                " planarity DESC, run DESC, number DESC LIMIT 5 OFFSET 3");
+    check_query(store, db, run, NULL, NULL, 0, 1, 0, 0,
+                "SELECT number FROM options WHERE rank = 1 ORDER BY number");
+    check_query(store, db, run, "nu >= 6 and threshold_mm < 3.5 or pareto",
+                "cost", 0, 0, 0, 0,
+                "SELECT number FROM options WHERE (nu >= 6 AND"
+                " threshold_mm < 3.5) OR rank = 1 ORDER BY cost, number");
+    check_query(store, db, 0, "not feasible", NULL, 0, 0, 0, 0,
+                "SELECT number FROM options WHERE NOT feasible"
+                " ORDER BY run, number");
+
+    struct option_query bad = {run, 0, NULL, "cost,nosuch", 0, 0, 0};
+    struct collected got = {{0}, 0};
+    assert_int_equal(store_options_query(store, &bad, collect, &got, &err),
+                     FACET_EINPUT);
+    assert_non_null(strstr(err.message, "nosuch"));
+    sqlite3_close(db);
+    store_close(store);
+}
+
+/* A study stopped after some batches and resumed, possibly by another
+ * process, ends with the rows of one that was never stopped. */
+static void check_resume(enum optimize_method method)
+{
+    struct facet_error err;
+    struct store *store;
+    assert_int_equal(store_open(fresh_db("resume"), &store, &err), FACET_OK);
+    struct study_request request;
+    request_for(&request, method);
+    int64_t whole, cut;
+    enum optimize_outcome outcome;
+    assert_int_equal(study_start(store, &request, NULL, &whole, &outcome,
+                                 &err), FACET_OK);
+    struct stopper stopper = {0, 2};
+    struct study_hooks hooks = {&stopper, NULL, count_report,
+                                stop_when_told, NULL};
+    assert_int_equal(study_start(store, &request, &hooks, &cut, &outcome,
+                                 &err), FACET_OK);
+    assert_int_equal(outcome, OPTIMIZE_INTERRUPTED);
+    struct run_info info;
+    assert_int_equal(store_run_get(store, cut, &info, &err), FACET_OK);
+    assert_string_equal(info.status, "interrupted");
+    assert_true(info.options > 0);
+    store_close(store);
+
+    assert_int_equal(store_open(db_path, &store, &err), FACET_OK);
+    assert_int_equal(study_resume(store, cut, NULL, &outcome, &err),
+                     FACET_OK);
+    assert_int_equal(outcome, OPTIMIZE_DONE);
+    assert_int_equal(study_resume(store, cut, NULL, &outcome, &err),
+                     FACET_EINPUT);  /* done: nothing to resume */
+    struct option_row *a, *b;
+    size_t na, nb;
+    get_options(store, whole, &a, &na);
+    get_options(store, cut, &b, &nb);
+    assert_int_equal(na, nb);
+    for (size_t k = 0; k < na; k++) {
+        assert_int_equal(a[k].number, b[k].number);
+        assert_int_equal(a[k].generation, b[k].generation);
+        assert_int_equal(a[k].nu, b[k].nu);
+        assert_int_equal(a[k].nv, b[k].nv);
+        assert_true(a[k].threshold_mm == b[k].threshold_mm);
+        assert_memory_equal(&a[k].totals, &b[k].totals, sizeof a[k].totals);
+        assert_int_equal(a[k].rank, b[k].rank);
+        assert_int_equal(a[k].knee, b[k].knee);
+    }
+    free(a);
+    free(b);
+    store_close(store);
+}
+
+static void test_resume_exhaustive(void **state)
+{
+    (void)state;
+    check_resume(METHOD_EXHAUSTIVE);
+}
+
+static void test_resume_random(void **state)
+{
+    (void)state;
+    check_resume(METHOD_RANDOM);
+}
+
+static void test_resume_nsga2(void **state)
+{
+    (void)state;
+    check_resume(METHOD_NSGA2);
+}
+
+/* A run left "running" by a process that is gone reads as interrupted. */
+static void test_orphan_is_interrupted(void **state)
+{
+    (void)state;
+    struct facet_error err;
+    struct store *store;
+    assert_int_equal(store_open(fresh_db("orphan"), &store, &err), FACET_OK);
+    struct run_info run;
+    memset(&run, 0, sizeof run);
+    snprintf(run.surface_path, sizeof run.surface_path, "x.obj");
+    snprintf(run.units, sizeof run.units, "m");
+    snprintf(run.method, sizeof run.method, "exhaustive");
+    snprintf(run.per_panel, sizeof run.per_panel, "extremes");
+    snprintf(run.objectives, sizeof run.objectives, "cost");
+    run.u_min = run.u_max = run.v_min = run.v_max = 1;
+    run.jobs = 1;
+    assert_int_equal(store_run_create(store, &run, &err), FACET_OK);
+    store_close(store);
+
+    /* Still ours: this process is alive. */
+    assert_int_equal(store_open(db_path, &store, &err), FACET_OK);
+    assert_int_equal(store_run_get(store, run.id, &run, &err), FACET_OK);
+    assert_string_equal(run.status, "running");
+    store_close(store);
+
+    sqlite3 *db;
+    assert_int_equal(sqlite3_open(db_path, &db), SQLITE_OK);
+    assert_int_equal(sqlite3_exec(db, "UPDATE runs SET writer_pid ="
+                                  " 2147483646", NULL, NULL, NULL),
+                     SQLITE_OK);
+    sqlite3_close(db);
+    assert_int_equal(store_open(db_path, &store, &err), FACET_OK);
+    assert_int_equal(store_run_get(store, run.id, &run, &err), FACET_OK);
+    assert_string_equal(run.status, "interrupted");
+    store_close(store);
+}
+
+static void write_file(const char *path, const char *bytes, size_t n)
+{
+    FILE *out = fopen(path, "wb");
+    assert_non_null(out);
+    assert_int_equal(fwrite(bytes, 1, n, out), n);
+    fclose(out);
+}
+
+static void expect_refused(const char *path, const char *words)
+{
+    struct facet_error err;
+    struct store *store = NULL;
+    assert_int_equal(store_open(path, &store, &err), FACET_EINPUT);
+    assert_null(store);
+    if (strstr(err.message, words) == NULL)
+        fail_msg("message '%s' lacks '%s'", err.message, words);
+    assert_null(strchr(err.message, '\n'));
+    assert_non_null(strstr(err.message, path));
+}
+
+static void sql(const char *path, const char *statements)
+{
+    sqlite3 *db;
+    assert_int_equal(sqlite3_open(path, &db), SQLITE_OK);
+    assert_int_equal(sqlite3_exec(db, statements, NULL, NULL, NULL),
+                     SQLITE_OK);
+    sqlite3_close(db);
+}
+
+static void test_refuses_other_files(void **state)
+{
+    (void)state;
+    const char *path = fresh_db("text");
+    write_file(path, "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", 32);
+    expect_refused(path, "not an SQLite database");
+
+    path = fresh_db("foreign");
+    sql(path, "CREATE TABLE invoices (id INTEGER, total REAL);");
+    expect_refused(path, "another application");
+
+    path = fresh_db("newer");
+    struct facet_error err;
+    struct store *store;
+    assert_int_equal(store_open(path, &store, &err), FACET_OK);
+    store_close(store);
+    sql(path, "PRAGMA user_version = 99;");
+    expect_refused(path, "newer Facet");
+
+    /* A damaged file: a good database with its pages overwritten. */
+    path = fresh_db("corrupt");
+    assert_int_equal(store_open(path, &store, &err), FACET_OK);
+    struct study_request request;
+    request_for(&request, METHOD_EXHAUSTIVE);
+    int64_t run;
+    enum optimize_outcome outcome;
+    assert_int_equal(study_start(store, &request, NULL, &run, &outcome,
+                                 &err), FACET_OK);
+    store_close(store);
+    sql(path, "PRAGMA wal_checkpoint(TRUNCATE); PRAGMA journal_mode=DELETE;");
+    FILE *file = fopen(path, "r+b");
+    assert_non_null(file);
+    char junk[4096];
+    memset(junk, 0xA5, sizeof junk);
+    fseek(file, 4096, SEEK_SET);
+    fwrite(junk, 1, sizeof junk, file);
+    fseek(file, 3 * 4096, SEEK_SET);
+    fwrite(junk, 1, sizeof junk, file);
+    fclose(file);
+    store = NULL;
+    int rc = store_open(path, &store, &err);
+    if (rc == FACET_OK) {
+        /* The header pages may survive; the damage shows on reading. */
+        struct option_row *rows;
+        size_t n;
+        rc = store_options_get(store, run, &rows, &n, &err);
+        store_close(store);
+    }
+    assert_int_equal(rc, FACET_EINPUT);
+    assert_non_null(strstr(err.message, "damaged"));
+    assert_null(strchr(err.message, '\n'));
+}
+
+/* A file of schema version 1 (no views, no indexes) is brought up to the
+ * current version when opened, and keeps its runs. */
+static void test_migrates_older_schema(void **state)
+{
+    (void)state;
+    const char *path = fresh_db("migrate");
+    struct facet_error err;
+    struct store *store;
+    assert_int_equal(store_open(path, &store, &err), FACET_OK);
+    struct study_request request;
+    request_for(&request, METHOD_EXHAUSTIVE);
+    int64_t run;
+    enum optimize_outcome outcome;
+    assert_int_equal(study_start(store, &request, NULL, &run, &outcome,
+                                 &err), FACET_OK);
+    store_close(store);
+    sql(path, "DROP VIEW pareto; DROP VIEW run_summary;"
+              "DROP INDEX options_by_rank; DROP INDEX options_by_cost;"
+              "DROP INDEX options_by_planarity; DROP INDEX options_by_dp_area;"
+              "PRAGMA user_version = 1;");
+    assert_int_equal(store_open(path, &store, &err), FACET_OK);
+    struct run_info info;
+    assert_int_equal(store_run_get(store, run, &info, &err), FACET_OK);
+    assert_int_equal(info.options, 48);
+    store_close(store);
+    sqlite3 *db;
+    assert_int_equal(sqlite3_open(path, &db), SQLITE_OK);
+    sqlite3_stmt *s;
+    assert_int_equal(sqlite3_prepare_v2(db, "SELECT (SELECT user_version"
+                     " FROM pragma_user_version), (SELECT count(*) FROM"
+                     " pareto), (SELECT count(*) FROM sqlite_schema WHERE"
+                     " type = 'index' AND name LIKE 'options_by_%')",
+                     -1, &s, NULL), SQLITE_OK);
+    assert_int_equal(sqlite3_step(s), SQLITE_ROW);
+    assert_int_equal(sqlite3_column_int(s, 0), 2);
+    assert_int_equal(sqlite3_column_int(s, 1), info.pareto_options);
+    assert_int_equal(sqlite3_column_int(s, 2), 4);
+    sqlite3_finalize(s);
+    sqlite3_close(db);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_run_roundtrip),
+        cmocka_unit_test(test_queries),
+        cmocka_unit_test(test_resume_exhaustive),
+        cmocka_unit_test(test_resume_random),
+        cmocka_unit_test(test_resume_nsga2),
+        cmocka_unit_test(test_orphan_is_interrupted),
+        cmocka_unit_test(test_refuses_other_files),
+        cmocka_unit_test(test_migrates_older_schema),
+    };
+    int failed = cmocka_run_group_tests(tests, setup, teardown);
+    const char *names[] = {"roundtrip", "queries", "resume", "orphan",
+                           "text", "foreign", "newer", "corrupt",
+                           "migrate"};
+    for (size_t k = 0; k < sizeof names / sizeof *names; k++) {
+        fresh_db(names[k]);
+        unlink(db_path);
+    }
+    return failed;
+}
