@@ -576,7 +576,7 @@ static size_t add_param(struct parser *p, double value)
     return p->filter->nparams++;
 }
 
-/* term: '(' or ')' | NAME [OP NUMBER] | NUMBER OP NAME. */
+/* term: '(' or-expression ')' | NAME [OP NUMBER] | NUMBER OP NAME. */
 static int parse_term(struct parser *p, int *out)
 {
     char buf[SHOWN_MAX + 4], buf2[SHOWN_MAX + 4];

@@ -12,5 +12,8 @@ echo
 echo "== One design option: a 37x49 evaluation of the 100k-triangle roof"
 "$build/bench/bench_classify"
 echo
+echo "== The paper's whole space (336 grids) on the 100k-triangle roof, into SQLite"
+"$build/bench/bench_optimize"
+echo
 echo "== NSGA-II: Facet against DEAP on ZDT1 (population 100 x 250 generations)"
 tests/bench/bench_nsga2.sh "$build"

@@ -1,0 +1,93 @@
+/*
+ * bench_common.h: what every C benchmark shares: a monotonic clock, the
+ * example roof at a given resolution, prepared, and the bare pass over its
+ * triangles that serves as the baseline the figures are ratios against.
+ * Header-only (static functions) because each benchmark is one file.
+ */
+#ifndef FACET_BENCH_COMMON_H
+#define FACET_BENCH_COMMON_H
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <time.h>
+#include <unistd.h>
+
+#include "core/example.h"
+#include "core/surface.h"
+
+static double bench_now(void)
+{
+    struct timespec t;
+    clock_gettime(CLOCK_MONOTONIC, &t);
+    return (double)t.tv_sec + (double)t.tv_nsec * 1e-9;
+}
+
+/* Sums the triangle areas from the positions: the least any evaluation
+ * must do. */
+static double bench_bare_pass(const struct mesh *mesh)
+{
+    double area = 0;
+    for (size_t t = 0; t < mesh->ntriangles; t++) {
+        const uint32_t *tri = mesh->triangle + 3 * t;
+        const double *a = mesh->position + 3 * (size_t)tri[0];
+        const double *b = mesh->position + 3 * (size_t)tri[1];
+        const double *c = mesh->position + 3 * (size_t)tri[2];
+        double e[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
+        double f[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+        double n[3] = {e[1] * f[2] - e[2] * f[1], e[2] * f[0] - e[0] * f[2],
+                       e[0] * f[1] - e[1] * f[0]};
+        area += 0.5 * sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    }
+    return area;
+}
+
+/* Best time of a bare pass over runs repetitions (seconds). */
+static double bench_bare_best(const struct mesh *mesh, int runs)
+{
+    volatile double sink = 0;
+    double best = INFINITY;
+    for (int run = 0; run < runs; run++) {
+        double start = bench_now();
+        sink += bench_bare_pass(mesh);
+        best = fmin(best, bench_now() - start);
+    }
+    (void)sink;
+    return best;
+}
+
+/* Writes the example roof at res x res quads to path (kept when path is
+ * not NULL, else a temporary file) and opens and prepares it. Exits on
+ * failure: a benchmark without its surface has nothing to say. */
+static void bench_roof(int res, const char *keep_path,
+                       struct surface *surface)
+{
+    char temporary[] = "/tmp/facet_bench_roof_XXXXXX";
+    const char *path = keep_path;
+    FILE *out;
+    if (path == NULL) {
+        int fd = mkstemp(temporary);
+        out = fd >= 0 ? fdopen(fd, "w") : NULL;
+        path = temporary;
+    } else {
+        out = fopen(path, "w");
+    }
+    struct facet_error err;
+    if (out == NULL || example_write("roof", res, out, &err) != FACET_OK) {
+        fprintf(stderr, "bench: cannot write the roof\n");
+        exit(1);
+    }
+    fclose(out);
+    struct mesh_options options = {UNITS_M, NULL, NULL};
+    int rc = surface_open(path, &options, surface, &err);
+    if (keep_path == NULL)
+        unlink(path);
+    if (rc == FACET_OK)
+        rc = surface_prepare(surface, 0, &err);
+    if (rc != FACET_OK) {
+        fprintf(stderr, "bench: %s\n", err.message);
+        exit(1);
+    }
+}
+
+#endif
