@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # make demo: the main job end to end on a bundled example, no TTY needed.
 # Generates the example roof with Facet itself, describes it, and classifies
-# it at the paper's grid (37 x 49).
+# it at the paper's grid (37 x 49), then searches the paper's whole design
+# space into the SQLite store examples/out/demo.db and prints its Pareto table.
 set -euo pipefail
 facet=${1:-./facet}
 out=${DEMO_DIR:-examples/out}
@@ -16,3 +17,11 @@ rm -f "$out/roof-37x49.csv"
 "$facet" classify "$out/roof.obj" --grid 37x49 --csv "$out/roof-37x49.csv"
 echo
 echo "panel schedule: $out/roof-37x49.csv ($(($(wc -l <"$out/roof-37x49.csv") - 1)) panels)"
+echo
+echo "== facet optimize $out/roof.obj --db $out/demo.db (the paper's space: u 20:40, v 35:50, 3 mm)"
+rm -f "$out/demo.db" "$out/demo.db-wal" "$out/demo.db-shm"
+"$facet" optimize "$out/roof.obj" --db "$out/demo.db" --u 20:40 --v 35:50 \
+    --threshold 3 --sp-as-fp --max-panel-area 1.92 --name "paper space"
+echo
+echo "== facet options $out/demo.db --pareto --sort cost (the Pareto table)"
+"$facet" options "$out/demo.db" --pareto --sort cost
