@@ -12,6 +12,9 @@ const struct command *const command_table[] = {
     &cmd_runs,
     &cmd_options,
     &cmd_show,
+    &cmd_tui,
+    &cmd_export,
+    &cmd_plot,
     &cmd_example,
     &cmd_help,
     NULL

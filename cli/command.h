@@ -45,5 +45,8 @@ extern const struct command cmd_optimize;
 extern const struct command cmd_runs;
 extern const struct command cmd_options;
 extern const struct command cmd_show;
+extern const struct command cmd_tui;
+extern const struct command cmd_export;
+extern const struct command cmd_plot;
 
 #endif

@@ -17,16 +17,6 @@
 #include "sym3.h"
 #include "vec3.h"
 
-/* A vertex of a clipped piece: its UV and its barycentric coordinates in
- * the triangle it was cut from (which carry 3D position and curvature). */
-struct piece_vertex {
-    double u, v;
-    double b[3];
-};
-
-/* At most 3 + 4 vertices: each of the four cell sides adds one. */
-#define PIECE_MAX 8
-
 /* What pass 1 accumulates per cell. Moments are taken about a reference
  * point of the panel, so that surfaces far from the origin (site
  * coordinates) keep their precision. */
@@ -59,21 +49,21 @@ static const double extent_direction[13][3] = {
 /* Clips the convex piece in (count vertices) to the half-plane
  * side * (coordinate - limit) >= 0, coordinate being u (axis 0) or v
  * (axis 1), into out; returns out's vertex count. */
-static int clip_half(const struct piece_vertex *in, int count,
-                     struct piece_vertex *out, int axis, double limit,
+static int clip_half(const struct panel_piece_vertex *in, int count,
+                     struct panel_piece_vertex *out, int axis, double limit,
                      double side)
 {
     int n = 0;
     for (int k = 0; k < count; k++) {
-        const struct piece_vertex *p = &in[k];
-        const struct piece_vertex *q = &in[(k + 1) % count];
+        const struct panel_piece_vertex *p = &in[k];
+        const struct panel_piece_vertex *q = &in[(k + 1) % count];
         double dp = side * ((axis == 0 ? p->u : p->v) - limit);
         double dq = side * ((axis == 0 ? q->u : q->v) - limit);
         if (dp >= 0)
             out[n++] = *p;
         if ((dp >= 0) != (dq >= 0)) {
             double t = dp / (dp - dq);
-            struct piece_vertex *x = &out[n++];
+            struct panel_piece_vertex *x = &out[n++];
             x->u = p->u + t * (q->u - p->u);
             x->v = p->v + t * (q->v - p->v);
             for (int c = 0; c < 3; c++)
@@ -89,10 +79,10 @@ static int clip_half(const struct piece_vertex *in, int count,
 }
 
 /* clip_half on poly itself; returns the new vertex count. */
-static int clip_in_place(struct piece_vertex *poly, int count, int axis,
+static int clip_in_place(struct panel_piece_vertex *poly, int count, int axis,
                          double limit, double side)
 {
-    struct piece_vertex clipped[PIECE_MAX];
+    struct panel_piece_vertex clipped[PANEL_PIECE_MAX];
     if (count < 3)
         return 0;
     int n = clip_half(poly, count, clipped, axis, limit, side);
@@ -107,9 +97,6 @@ struct grid_walk {
     double umin, vmin, du, dv;
 };
 
-typedef void (*piece_visitor)(void *context, size_t cell, uint32_t triangle,
-                              const struct piece_vertex *piece, int count);
-
 static int cell_coordinate(double x, double origin, double step, int count)
 {
     double f = floor((x - origin) / step);
@@ -123,7 +110,7 @@ static int cell_coordinate(double x, double origin, double step, int count)
 /* Calls visit for every non-empty piece of every triangle in every cell. The
  * grid's outermost lines are not clipped against, so that no sliver of the
  * surface is lost to rounding at the UV box's edges. */
-static void walk_pieces(const struct grid_walk *g, piece_visitor visit,
+static void walk_pieces(const struct grid_walk *g, panel_piece_visitor visit,
                         void *context)
 {
     const double *uv = g->index->uv;
@@ -137,7 +124,7 @@ static void walk_pieces(const struct grid_walk *g, piece_visitor visit,
         int i1 = cell_coordinate(u1, g->umin, g->du, g->nu);
         int j0 = cell_coordinate(v0, g->vmin, g->dv, g->nv);
         int j1 = cell_coordinate(v1, g->vmin, g->dv, g->nv);
-        struct piece_vertex start[3];
+        struct panel_piece_vertex start[3];
         for (int k = 0; k < 3; k++) {
             start[k].u = c[2 * k];
             start[k].v = c[2 * k + 1];
@@ -151,7 +138,7 @@ static void walk_pieces(const struct grid_walk *g, piece_visitor visit,
         }
         for (int j = j0; j <= j1; j++)
             for (int i = i0; i <= i1; i++) {
-                struct piece_vertex a[PIECE_MAX];
+                struct panel_piece_vertex a[PANEL_PIECE_MAX];
                 int n = 3;
                 memcpy(a, start, sizeof start);
                 /* A side the whole triangle lies within cuts nothing. */
@@ -169,8 +156,22 @@ static void walk_pieces(const struct grid_walk *g, piece_visitor visit,
     }
 }
 
-static void piece_point(const struct mesh *mesh, uint32_t t,
-                        const struct piece_vertex *p, double out[3])
+void panels_walk_pieces(const struct mesh *mesh,
+                        const struct uv_index *index, int nu, int nv,
+                        panel_piece_visitor visit, void *context)
+{
+    /* The same grid panels_build makes, so the pieces are its pieces. */
+    struct grid_walk grid = {
+        mesh, index, nu, nv, index->umin, index->vmin,
+        (index->umax - index->umin) / nu, (index->vmax - index->vmin) / nv,
+    };
+    if (nu < 1 || nv < 1 || !(grid.du > 0) || !(grid.dv > 0))
+        return;
+    walk_pieces(&grid, visit, context);
+}
+
+void panel_piece_point(const struct mesh *mesh, uint32_t t,
+                       const struct panel_piece_vertex *p, double out[3])
 {
     const uint32_t *tri = mesh->triangle + 3 * (size_t)t;
     for (int k = 0; k < 3; k++)
@@ -191,14 +192,14 @@ struct pass_context {
  * triangles; the integral of x x^T over a triangle of area A with corners
  * a, b, c is A/12 (a a^T + b b^T + c c^T + s s^T), s = a + b + c). */
 static void sum_moments(void *context, size_t cell, uint32_t t,
-                        const struct piece_vertex *piece, int count)
+                        const struct panel_piece_vertex *piece, int count)
 {
     struct pass_context *pc = context;
     struct cell_sums *s = &pc->sums[cell];
     const struct mesh *mesh = pc->grid->mesh;
-    double point[PIECE_MAX][3];
+    double point[PANEL_PIECE_MAX][3];
     for (int k = 0; k < count; k++)
-        piece_point(mesh, t, &piece[k], point[k]);
+        panel_piece_point(mesh, t, &piece[k], point[k]);
     if (!s->has_reference) {
         memcpy(s->reference, point[0], sizeof s->reference);
         s->has_reference = 1;
@@ -239,7 +240,7 @@ static void sum_moments(void *context, size_t cell, uint32_t t,
 
 /* Pass 2: distance from the plane, curvature samples, outline extent. */
 static void sample_piece(void *context, size_t cell, uint32_t t,
-                         const struct piece_vertex *piece, int count)
+                         const struct panel_piece_vertex *piece, int count)
 {
     struct pass_context *pc = context;
     struct cell_sums *s = &pc->sums[cell];
@@ -251,7 +252,7 @@ static void sample_piece(void *context, size_t cell, uint32_t t,
     double centroid[3] = {0, 0, 0}, piece_area = 0;
     for (int k = 0; k < count; k++) {
         double p[3], d[3];
-        piece_point(mesh, t, &piece[k], p);
+        panel_piece_point(mesh, t, &piece[k], p);
         for (int x = 0; x < 3; x++)
             d[x] = p[x] - panel->centroid[x];
         double distance = fabs(vec3_dot(d, panel->normal));
@@ -298,9 +299,9 @@ static void sample_piece(void *context, size_t cell, uint32_t t,
          * pieces a cell cuts, and exact for triangles. */
         for (int k = 1; k + 1 < count; k++) {
             double a[3], bb[3], c[3], ab[3], ac[3], n[3];
-            piece_point(mesh, t, &piece[0], a);
-            piece_point(mesh, t, &piece[k], bb);
-            piece_point(mesh, t, &piece[k + 1], c);
+            panel_piece_point(mesh, t, &piece[0], a);
+            panel_piece_point(mesh, t, &piece[k], bb);
+            panel_piece_point(mesh, t, &piece[k + 1], c);
             for (int x = 0; x < 3; x++) {
                 ab[x] = bb[x] - a[x];
                 ac[x] = c[x] - a[x];
@@ -376,8 +377,8 @@ static void measure_corners(const struct grid_walk *g, struct panel *panel)
                 panel->corner[c][2] = NAN;
             continue;
         }
-        struct piece_vertex p = {u, v, {b[0], b[1], b[2]}};
-        piece_point(g->mesh, t, &p, panel->corner[c]);
+        struct panel_piece_vertex p = {u, v, {b[0], b[1], b[2]}};
+        panel_piece_point(g->mesh, t, &p, panel->corner[c]);
         panel->ncorners++;
     }
     panel->corner_planarity = NAN;

@@ -17,6 +17,7 @@
 #define FACET_PANEL_H
 
 #include <stddef.h>
+#include <stdint.h>
 
 #include "curvature.h"
 #include "error.h"
@@ -108,5 +109,42 @@ int panels_build(const struct mesh *mesh, const struct uv_index *index,
                  struct panelization *out, struct facet_error *err);
 
 void panelization_free(struct panelization *panelization);
+
+/* The pieces themselves, for code that needs a panel's exact geometry
+ * (panel_geometry.h) rather than its measures: panels_build walks them
+ * without storing them, and so does panels_walk_pieces, one at a time. */
+
+/* A vertex of a piece: its UV and its barycentric coordinates in the
+ * triangle it was cut from (which carry 3D position and curvature). */
+struct panel_piece_vertex {
+    double u, v;
+    double b[3];
+};
+
+/* A piece has at most 3 + 4 vertices: each of the four cell sides adds
+ * one. */
+#define PANEL_PIECE_MAX 8
+
+/* Receives one piece: the convex polygon piece[0..count) (count >= 3, in
+ * the winding of the triangle) cut from mesh triangle triangle by grid
+ * cell cell = j * nu + i. A piece may have zero area when a triangle only
+ * touches a cell line. */
+typedef void (*panel_piece_visitor)(void *context, size_t cell,
+                                    uint32_t triangle,
+                                    const struct panel_piece_vertex *piece,
+                                    int count);
+
+/* Calls visit for every piece of the nu x nv grid over the UV box of
+ * index, exactly the pieces panels_build measures for the same mesh, index
+ * and grid (cells in the order of triangles, then j, then i). Visits
+ * nothing for a grid side below 1 or a UV box without extent. */
+void panels_walk_pieces(const struct mesh *mesh,
+                        const struct uv_index *index, int nu, int nv,
+                        panel_piece_visitor visit, void *context);
+
+/* The 3D position (m) of piece vertex p of mesh triangle t, by the
+ * triangle's affine map. */
+void panel_piece_point(const struct mesh *mesh, uint32_t t,
+                       const struct panel_piece_vertex *p, double out[3]);
 
 #endif

@@ -144,3 +144,36 @@ void report_csv(FILE *out, const struct panelization *panels)
         fputc('\n', out);
     }
 }
+
+void report_schedule_csv(FILE *out, const struct panelization *panels,
+                         const struct option_totals *totals)
+{
+    fputs("id,i,j,type,class,area_m2,deviation_mm,k1,k2,K,H,"
+          "unit_price_usd_m2,cost_usd", out);
+    for (int c = 0; c < 4; c++)
+        fprintf(out, ",c%d_x,c%d_y,c%d_z", c, c, c);
+    fputc('\n', out);
+    for (size_t n = 0; n < panels->npanels; n++) {
+        const struct panel *p = &panels->panels[n];
+        fprintf(out, "%zu,%d,%d,%s,%s", n + 1, p->i, p->j,
+                panel_type_name(p->type), panel_class_name(p->class));
+        csv_number(out, p->area, "%.9g");
+        csv_number(out, p->deviation * 1000, "%.6f");
+        csv_number(out, p->k1, "%.9g");
+        csv_number(out, p->k2, "%.9g");
+        csv_number(out, p->K, "%.9g");
+        csv_number(out, p->H, "%.9g");
+        csv_number(out, p->price, "%.2f");
+        csv_number(out, p->cost, "%.4f");
+        for (int c = 0; c < 4; c++)
+            for (int d = 0; d < 3; d++)
+                csv_number(out, p->corner[c][d], "%.6f");
+        fputc('\n', out);
+    }
+    fprintf(out, "total,,,,%zu panels", totals->panels);
+    csv_number(out, totals->area, "%.9g");
+    csv_number(out, totals->max_deviation * 1000, "%.6f");
+    fputs(",,,,,", out);
+    csv_number(out, totals->cost, "%.4f");
+    fputs(",,,,,,,,,,,,\n", out);
+}

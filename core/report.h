@@ -33,4 +33,14 @@ void report_json(FILE *out, const struct report_source *source,
 /* Writes the panel schedule: a header row, then one row per panel. */
 void report_csv(FILE *out, const struct panelization *panels);
 
+/* Writes the panel schedule a cost plan takes: a header row; one row per
+ * panel (id = its row number from 1, i, j, type, class, area m^2,
+ * deviation mm, k1, k2 1/m, K 1/m^2, H 1/m, unit price USD/m^2, cost USD,
+ * the four cell corners on the surface, m, empty where off it); then a
+ * totals row (id "total", class "N panels", the area, the largest
+ * deviation among the FP and SP panels, the cost) with the numbers of
+ * totals, which `facet show` prints. */
+void report_schedule_csv(FILE *out, const struct panelization *panels,
+                         const struct option_totals *totals);
+
 #endif
