@@ -14,7 +14,7 @@ VARIANT ?= release
 BUILD   := build/$(VARIANT)
 VERSION := 0.1.0
 
-DEBIAN_PACKAGES := gcc g++ make pkg-config libncurses-dev libsqlite3-dev \
+DEBIAN_PACKAGES := gcc g++ make pkg-config libncurses-dev libsqlite3-dev librsvg2-bin \
 	libcmocka-dev sqlite3 tmux python3 python3-tinyobjloader \
 	libtinyobjloader-dev libxml2-utils python3-deap
 

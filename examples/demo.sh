@@ -2,7 +2,9 @@
 # make demo: the main job end to end on a bundled example, no TTY needed.
 # Generates the example roof with Facet itself, describes it, and classifies
 # it at the paper's grid (37 x 49), then searches the paper's whole design
-# space into the SQLite store examples/out/demo.db and prints its Pareto table.
+# space into the SQLite store examples/out/demo.db, prints its Pareto table,
+# and writes the scatter (demo-pareto.svg) and the knee option as OBJ + MTL,
+# CSV schedule and SVG panel map (demo-knee.*).
 set -euo pipefail
 facet=${1:-./facet}
 out=${DEMO_DIR:-examples/out}
@@ -25,3 +27,9 @@ rm -f "$out/demo.db" "$out/demo.db-wal" "$out/demo.db-shm"
 echo
 echo "== facet options $out/demo.db --pareto --sort cost (the Pareto table)"
 "$facet" options "$out/demo.db" --pareto --sort cost
+echo
+knee=$("$facet" options "$out/demo.db" --run 1 --where knee --csv | sed -n 2p | cut -d, -f2)
+echo "== facet plot and facet export: the run's scatter and the knee option ($knee)"
+"$facet" plot "$out/demo.db" --run 1 -o "$out/demo-pareto.svg" --force
+"$facet" export "$out/demo.db" --run 1 --option "$knee" --force \
+    --obj "$out/demo-knee.obj" --csv "$out/demo-knee.csv" --svg "$out/demo-knee.svg"
