@@ -20,27 +20,8 @@ struct export_paths {
     const char *obj, *csv, *json, *svg;
 };
 
-/* Writes the CSV schedule or the JSON through an outfile. */
-static int write_report(const char *path, int force, int json,
-                        const struct run_info *run,
-                        const struct classify_options *classify,
-                        const struct panelization *panels,
-                        const struct option_totals *totals,
-                        struct facet_error *err)
-{
-    struct outfile file;
-    int rc = outfile_open(&file, path, force, err);
-    if (rc != FACET_OK)
-        return rc;
-    if (json) {
-        struct report_source source = {run->surface_path, run->units,
-                                       totals->area, 0, "", run->per_panel};
-        report_json(file.out, &source, classify, panels, totals);
-    } else {
-        report_schedule_csv(file.out, panels, totals);
-    }
-    return outfile_commit(&file, err);
-}
+enum export_file { FILE_OBJ, FILE_MTL, FILE_CSV, FILE_JSON, FILE_SVG,
+                   FILE_COUNT };
 
 static int export_main(int argc, char **argv, struct facet_error *err)
 {
@@ -85,17 +66,30 @@ static int export_main(int argc, char **argv, struct facet_error *err)
                                                  err)))
         return rc;
     map.triangles = triangles;
-    /* Refuse existing files before any work, so that nothing is half
-     * exported. */
-    char mtl[4096];
-    const char *files[] = {out.obj, out.csv, out.json, out.svg};
-    for (int k = 0; k < 4; k++)
-        if (files[k] && (rc = outfile_check(files[k], force, err)))
-            return rc;
-    if (out.obj && ((rc = export_obj_mtl_path(out.obj, mtl, sizeof mtl,
-                                              err)) ||
-                    (rc = outfile_check(mtl, force, err))))
+    /* Every file is opened (as FILE.partial) before any work and
+     * renamed into place only when all are written, so that an export
+     * that fails leaves no file behind, new or old. */
+    char mtl[4096] = "";
+    if (out.obj && (rc = export_obj_mtl_path(out.obj, mtl, sizeof mtl, err)))
         return rc;
+    const char *target[FILE_COUNT] = {out.obj, out.obj ? mtl : NULL,
+                                      out.csv, out.json, out.svg};
+    for (int k = 0; k < FILE_COUNT; k++)
+        if (target[k] && (rc = outfile_check(target[k], force, err)))
+            return rc;
+    struct outfile file[FILE_COUNT];
+    int open[FILE_COUNT] = {0};
+    for (int k = 0; k < FILE_COUNT && rc == FACET_OK; k++)
+        if (target[k]) {
+            rc = outfile_open(&file[k], target[k], force, err);
+            open[k] = rc == FACET_OK;
+        }
+    if (rc != FACET_OK) {
+        for (int k = 0; k < FILE_COUNT; k++)
+            if (open[k])
+                outfile_abort(&file[k]);
+        return rc;
+    }
 
     struct store *store;
     if ((rc = store_open(path[0], &store, err)) != FACET_OK)
@@ -132,28 +126,44 @@ static int export_main(int argc, char **argv, struct facet_error *err)
     }
     struct classify_options classify = settings.base.classify;
     classify.threshold = row.threshold_mm / 1000;
-    if (rc == FACET_OK && out.obj)
-        rc = export_obj_save(out.obj, force, &geometry, &panels, err);
+    if (rc == FACET_OK && out.obj) {
+        /* mtllib is relative to the OBJ: the MTL's own name. */
+        const char *slash = strrchr(mtl, '/');
+        export_obj_write(file[FILE_OBJ].out, slash ? slash + 1 : mtl,
+                         &geometry, &panels);
+        export_obj_write_mtl(file[FILE_MTL].out);
+    }
     if (rc == FACET_OK && out.csv)
-        rc = write_report(out.csv, force, 0, &info, &classify, &panels,
-                          &totals, err);
-    if (rc == FACET_OK && out.json)
-        rc = write_report(out.json, force, 1, &info, &classify, &panels,
-                          &totals, err);
+        report_schedule_csv(file[FILE_CSV].out, &panels, &totals);
+    if (rc == FACET_OK && out.json) {
+        struct report_source source = {info.surface_path, info.units,
+                                       totals.area, 0, "", info.per_panel};
+        report_json(file[FILE_JSON].out, &source, &classify, &panels,
+                    &totals);
+    }
     if (rc == FACET_OK && out.svg) {
         char title[256];
         snprintf(title, sizeof title, "Run %lld, option %lld: %d x %d, "
                  "%g mm", (long long)run_id, (long long)number, row.nu,
                  row.nv, row.threshold_mm);
         map.title = title;
-        rc = svg_map_save(out.svg, force, &geometry, &panels, &totals, &map,
-                          err);
+        svg_map_write(file[FILE_SVG].out, &geometry, &panels, &totals,
+                      &map);
     }
-    if (rc == FACET_OK)
-        for (int k = 0; k < 4; k++)
-            if (files[k])
-                printf("wrote %s%s%s\n", files[k], k == 0 ? " and " : "",
-                       k == 0 ? mtl : "");
+    /* The MTL before the OBJ: an OBJ never names a missing MTL. */
+    static const int order[FILE_COUNT] = {FILE_MTL, FILE_OBJ, FILE_CSV,
+                                          FILE_JSON, FILE_SVG};
+    for (int k = 0; k < FILE_COUNT; k++) {
+        int f = order[k];
+        if (!open[f])
+            continue;
+        if (rc == FACET_OK)
+            rc = outfile_commit(&file[f], err);
+        else
+            outfile_abort(&file[f]);
+        if (rc == FACET_OK)
+            printf("wrote %s\n", target[f]);
+    }
     if (have_geometry)
         panel_geometry_free(&geometry);
     panelization_free(&panels);

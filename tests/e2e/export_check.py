@@ -1,0 +1,219 @@
+"""export_check.py: checks for tests/e2e/export.sh.
+
+    export_check.py CHECK ARGS...
+
+Each check prints nothing on success and exits 0; on failure it prints the
+reason on stderr and exits 1. The option row comes from sqlite3 (python's
+sqlite3 module, read-only).
+"""
+import csv
+import json
+import sqlite3
+import struct
+import sys
+import zlib
+
+
+def option_row(db, run, number):
+    con = sqlite3.connect("file:%s?mode=ro" % db, uri=True)
+    con.row_factory = sqlite3.Row
+    row = con.execute("SELECT * FROM options WHERE run=? AND number=?",
+                      (int(run), int(number))).fetchone()
+    if row is None:
+        raise SystemExit("no option %s of run %s" % (number, run))
+    return dict(row)
+
+
+def close(a, b, rel):
+    return abs(a - b) <= rel * max(abs(a), abs(b), 1e-300)
+
+
+def fail(msg):
+    print(msg, file=sys.stderr)
+    sys.exit(1)
+
+
+def polygon_area(points):
+    """Area of a planar polygon (any shape) by Newell's vector area."""
+    sx = sy = sz = 0.0
+    n = len(points)
+    for k in range(n):
+        x0, y0, z0 = points[k]
+        x1, y1, z1 = points[(k + 1) % n]
+        sx += y0 * z1 - z0 * y1
+        sy += z0 * x1 - x0 * z1
+        sz += x0 * y1 - y0 * x1
+    return 0.5 * (sx * sx + sy * sy + sz * sz) ** 0.5
+
+
+def read_mtl(path):
+    kd, name = {}, None
+    for line in open(path):
+        w = line.split()
+        if not w:
+            continue
+        if w[0] == "newmtl":
+            name = w[1]
+        elif w[0] == "Kd" and name is not None:
+            kd[name] = tuple(float(x) for x in w[1:4])
+    return kd
+
+
+def check_obj(obj, mtl, db, run, number):
+    import tinyobjloader
+    o = option_row(db, run, number)
+    kd = read_mtl(mtl)
+    if set(kd) != {"FP", "SP", "DP"}:
+        fail("mtl materials %s, want FP, SP, DP" % sorted(kd))
+    if len(set(kd.values())) != 3:
+        fail("mtl Kd not distinct: %s" % kd)
+    reader = tinyobjloader.ObjReader()
+    config = tinyobjloader.ObjReaderConfig()
+    config.triangulate = False
+    if not reader.ParseFromFile(obj, config):
+        fail("tinyobjloader: %s" % reader.Error().strip())
+    names = [m.name for m in reader.GetMaterials()]
+    if sorted(names) != ["DP", "FP", "SP"]:
+        fail("tinyobjloader materials %s" % names)
+    shapes = reader.GetShapes()
+    if len(shapes) != o["panels"]:
+        fail("%d shapes, want %d panels" % (len(shapes), o["panels"]))
+    shape_names = [s.name for s in shapes]
+    if len(set(shape_names)) != len(shape_names) or \
+            not all(n.startswith("panel_") for n in shape_names):
+        fail("shape names not one panel_I_J each: %s" % shape_names[:10])
+    v = list(reader.GetAttrib().vertices)
+    area = {"FP": 0.0, "SP": 0.0, "DP": 0.0}
+    count = {"FP": 0, "SP": 0, "DP": 0}
+    for s in shapes:
+        mesh = s.mesh
+        idx = [i.vertex_index for i in mesh.indices]
+        mats = set()
+        at = 0
+        for f, nv in enumerate(mesh.num_face_vertices):
+            pts = [tuple(v[3 * idx[at + k] + c] for c in range(3))
+                   for k in range(nv)]
+            at += nv
+            m = names[mesh.material_ids[f]] if mesh.material_ids[f] >= 0 else None
+            if m is None:
+                fail("face without a material in %s" % s.name)
+            mats.add(m)
+            area[m] += polygon_area(pts)
+        if len(mats) != 1:
+            fail("shape %s has materials %s" % (s.name, mats))
+        count[mats.pop()] += 1
+    for t in ("FP", "SP", "DP"):
+        if count[t] != o[t.lower() + "_count"]:
+            fail("%s: %d groups, want %d" % (t, count[t], o[t.lower() + "_count"]))
+    for t in ("SP", "DP"):
+        if not close(area[t], o[t.lower() + "_area"], 1e-6):
+            fail("%s area %.12g, option says %.12g" % (t, area[t], o[t.lower() + "_area"]))
+    fp, want = area["FP"], o["fp_area"]
+    if not close(fp, want, 1e-3) or fp > want * (1 + 1e-9) + 1e-12:
+        fail("FP area %.12g, option says %.12g" % (fp, want))
+
+
+def check_csv(path, db, run, number):
+    o = option_row(db, run, number)
+    rows = list(csv.reader(open(path, newline="")))
+    header = rows[0]
+    for col in ("i", "j", "type", "area_m2", "cost_usd"):
+        if col not in header:
+            fail("csv header lacks %s: %s" % (col, header))
+    a, c = header.index("area_m2"), header.index("cost_usd")
+    body = [r for r in rows[1:] if r and r[0] != "total"]
+    totals = [r for r in rows[1:] if r and r[0] == "total"]
+    if len(body) != o["panels"]:
+        fail("%d panel rows, want %d" % (len(body), o["panels"]))
+    if len(totals) != 1 or rows[-1][0] != "total":
+        fail("want one totals row, last: %s" % totals)
+    t = totals[0]
+    if not close(float(t[a]), o["area"], 1e-6):
+        fail("totals area %s, option %.12g" % (t[a], o["area"]))
+    if not close(float(t[c]), o["cost"], 1e-6):
+        fail("totals cost %s, option %.12g" % (t[c], o["cost"]))
+    s = sum(float(r[c]) for r in body)
+    if not close(s, float(t[c]), 1e-6):
+        fail("panel costs add to %.12g, totals row %s" % (s, t[c]))
+    if len({(r[header.index("i")], r[header.index("j")]) for r in body}) != len(body):
+        fail("csv panel (i,j) repeated")
+
+
+def keyset(j, prefix=""):
+    keys = set()
+    if isinstance(j, dict):
+        for k, v in j.items():
+            keys.add(prefix + k)
+            keys |= keyset(v, prefix + k + ".")
+    elif isinstance(j, list) and j and isinstance(j[0], dict):
+        for item in j:
+            keys |= keyset(item, prefix + "[].")
+    return keys
+
+
+def check_json(path, classify_json, db, run, number):
+    o = option_row(db, run, number)
+    j = json.load(open(path))
+    c = json.load(open(classify_json))
+    if keyset(j) != keyset(c):
+        fail("key sets differ: only in export %s, only in classify %s"
+             % (sorted(keyset(j) - keyset(c)), sorted(keyset(c) - keyset(j))))
+    t = j["totals"]
+    compared = 0
+    for k, want in o.items():
+        if k in t and isinstance(t[k], (int, float)) and want is not None:
+            compared += 1
+            if not close(float(t[k]), float(want), 1e-9):
+                fail("totals.%s = %r, store has %r" % (k, t[k], want))
+    if compared < 10:
+        fail("only %d totals compared" % compared)
+    if len(j["panels"]) != o["panels"]:
+        fail("%d panels, want %d" % (len(j["panels"]), o["panels"]))
+    if j["grid"] != {"nu": o["nu"], "nv": o["nv"]}:
+        fail("grid %s, option %dx%d" % (j["grid"], o["nu"], o["nv"]))
+
+
+def png_pixels(path):
+    data = open(path, "rb").read()
+    if data[:8] != b"\x89PNG\r\n\x1a\n":
+        fail("%s is not a PNG" % path)
+    at, idat, width = 8, b"", None
+    while at < len(data):
+        n, kind = struct.unpack(">I4s", data[at:at + 8])
+        body = data[at + 8:at + 8 + n]
+        if kind == b"IHDR":
+            width, height, depth, ctype = struct.unpack(">IIBB", body[:10])
+        elif kind == b"IDAT":
+            idat += body
+        at += 12 + n
+    return width, zlib.decompress(idat)
+
+
+def check_png(path):
+    """Not a single colour: decode with PIL if there, else count bytes."""
+    try:
+        from PIL import Image
+        colours = Image.open(path).convert("RGBA").getcolors(1 << 24)
+        if colours is None or len(colours) < 3:
+            fail("%s has %s colours" % (path, None if colours is None else len(colours)))
+        return
+    except ImportError:
+        pass
+    _, raw = png_pixels(path)
+    if len(set(raw)) < 8:
+        fail("%s looks blank (%d distinct bytes)" % (path, len(set(raw))))
+
+
+def check_pngs_differ(a, b):
+    if open(a, "rb").read() == open(b, "rb").read():
+        fail("%s and %s are the same image" % (a, b))
+
+
+def main():
+    check, args = sys.argv[1], sys.argv[2:]
+    {"obj": check_obj, "csv": check_csv, "json": check_json,
+     "png": check_png, "pngs_differ": check_pngs_differ}[check](*args)
+
+
+if __name__ == "__main__":
+    main()
