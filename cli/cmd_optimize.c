@@ -76,10 +76,13 @@ struct optimize_view {
     int64_t first_done;
 };
 
+/* Stages show on a terminal only: in a log, the progress lines say
+ * enough, and an error stays the one line on stderr. */
 static void show_stage(void *context, const char *what)
 {
     (void)context;
-    fprintf(stderr, "facet: %s\n", what);
+    if (isatty(STDERR_FILENO))
+        fprintf(stderr, "facet: %s\n", what);
 }
 
 static void show_progress(void *context, int64_t done, int64_t total)
@@ -103,7 +106,8 @@ static int stop_requested(void *context)
 static void show_started(void *context, int64_t run)
 {
     (void)context;
-    fprintf(stderr, "facet: run %lld\n", (long long)run);
+    if (isatty(STDERR_FILENO))
+        fprintf(stderr, "facet: run %lld\n", (long long)run);
 }
 
 /* Fills the design space, method and objectives of *s from the flags. */

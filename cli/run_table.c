@@ -74,9 +74,12 @@ int run_table_print(FILE *out, struct store *store, const char *db,
             info.name[0] ? ", " : "", info.name, info.surface_path,
             info.method, (long long)info.options, info.elapsed,
             (long long)info.pareto_options);
-    fprintf(out, "objectives %s; hypervolume %.6f (normalised, reference "
+    char hypervolume[32] = "- (no feasible option)";
+    if (isfinite(info.hypervolume))
+        snprintf(hypervolume, sizeof hypervolume, "%.6f", info.hypervolume);
+    fprintf(out, "objectives %s; hypervolume %s (normalised, reference "
             "point 1.1 on every axis); knee option %lld; best cost %s USD\n",
-            info.objectives, info.hypervolume, (long long)info.knee,
+            info.objectives, hypervolume, (long long)info.knee,
             isfinite(info.best_cost) ? cost : "-");
 
     /* The Pareto options first, then the next fronts, cheapest first

@@ -352,6 +352,28 @@ int store_open(const char *path, struct store **out,
     return FACET_OK;
 }
 
+int store_check(struct store *store, struct facet_error *err)
+{
+    sqlite3_stmt *stmt;
+    int rc = store_prepare(store, "PRAGMA integrity_check(1)", &stmt,
+                           "checking the file", err);
+    if (rc != FACET_OK)
+        return rc;
+    int step = sqlite3_step(stmt);
+    if (step == SQLITE_ROW) {
+        const char *verdict = (const char *)sqlite3_column_text(stmt, 0);
+        if (verdict == NULL || strcmp(verdict, "ok") != 0)
+            rc = facet_error_set(err, FACET_EINPUT,
+                "%s: the database is damaged (%.200s); the file is damaged "
+                "or not a Facet database", store->path,
+                verdict ? verdict : "no verdict");
+    } else {
+        rc = store_fail(store, "checking the file", err);
+    }
+    sqlite3_finalize(stmt);
+    return rc;
+}
+
 void store_close(struct store *store)
 {
     if (store == NULL)

@@ -88,6 +88,12 @@ struct option_row {
 int store_open(const char *path, struct store **out, struct facet_error *err);
 void store_close(struct store *store);
 
+/* Reads every page of the file (PRAGMA integrity_check): FACET_EINPUT naming
+ * the file when it is damaged. A writer calls it before adding to a file,
+ * so that nothing is written into a database that is already broken; it
+ * takes time in proportion to the file's size. */
+int store_check(struct store *store, struct facet_error *err);
+
 /* --- runs --- */
 
 /* Inserts run (id, started, status "running", writer pid/host are set here
@@ -182,5 +188,75 @@ extern const char *const store_option_columns[];
  * the CLI read option columns by name through this one function. */
 double store_option_value(const struct option_row *option,
                           const char *column);
+
+/* --- browsing one run (the TUI): keyset pages, counts, ranges ---
+ * These serve a table that shows a page of a million options at a time:
+ * no call reads more rows than it returns, except counts and ranges, which
+ * scan the run's rows once (SQLite's count(*) and min/max, no rows built). */
+
+/* One sort key: a column of store_option_columns (not run), ascending
+ * unless descending. */
+struct browse_key {
+    const char *column;
+    int descending;
+};
+
+#define BROWSE_MAX_KEYS 3
+
+/* What a browse sees: one run's options, filtered, in the order of keys
+ * then number ascending (so every option has one place). */
+struct option_browse {
+    int64_t run;               /* > 0 */
+    int pareto_only;           /* rank 1 only */
+    const struct filter *where;/* NULL = every option */
+    struct browse_key keys[BROWSE_MAX_KEYS];
+    int nkeys;                 /* 0 = by number */
+};
+
+/* Calls row(context, option) for up to limit options of b that come after
+ * *after in b's order (after NULL: from the first), or, backward, for
+ * those before *after (after NULL: from the last) nearest first, so the
+ * caller receives them in reverse order. Stops early when row returns
+ * non-zero. Unknown columns are FACET_EINPUT naming the column. */
+int store_browse_page(struct store *store, const struct option_browse *b,
+                      const struct option_row *after, int backward,
+                      int64_t limit,
+                      int (*row)(void *context,
+                                 const struct option_row *option),
+                      void *context, struct facet_error *err);
+
+/* The options of b in its order from position offset (0-based), for a
+ * jump far from what the caller holds. */
+int store_browse_offset(struct store *store, const struct option_browse *b,
+                        int64_t offset, int64_t limit,
+                        int (*row)(void *context,
+                                   const struct option_row *option),
+                        void *context, struct facet_error *err);
+
+/* How many options b sees into *count. */
+int store_browse_count(struct store *store, const struct option_browse *b,
+                       int64_t *count, struct facet_error *err);
+
+/* How many options of b come before *option in b's order (its 0-based
+ * position when b sees it) into *position. */
+int store_browse_position(struct store *store,
+                          const struct option_browse *b,
+                          const struct option_row *option,
+                          int64_t *position, struct facet_error *err);
+
+/* The least and greatest value of column over the options b sees; both
+ * NaN when it sees none. */
+int store_browse_range(struct store *store, const struct option_browse *b,
+                       const char *column, double *min, double *max,
+                       struct facet_error *err);
+
+/* A sample of b for a plot: every option when stride <= 1, else the
+ * options whose number is a multiple of stride and every option of rank
+ * 1, by number; at most limit (0 = no limit). */
+int store_browse_sample(struct store *store, const struct option_browse *b,
+                        int64_t stride, int64_t limit,
+                        int (*row)(void *context,
+                                   const struct option_row *option),
+                        void *context, struct facet_error *err);
 
 #endif

@@ -25,7 +25,7 @@
     " ruled_convex_count, ruled_convex_area, flat_count, flat_area," \
     " ruled_concave_count, ruled_concave_area, convex_round_count," \
     " convex_round_area, concave_round_count, concave_round_area," \
-    " coalesce(rank, 0), coalesce(crowding, 0), knee"
+    " coalesce(rank, 0), crowding, knee"
 #define OPTION_VALUES 38  /* columns an insert binds (not rank..knee) */
 
 /* Binds run and row's values to ?1..?(1 + OPTION_VALUES). */

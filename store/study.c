@@ -329,6 +329,8 @@ int study_start(struct store *store, const struct study_request *request,
     *outcome = OPTIMIZE_INTERRUPTED;
     const struct optimize_settings *s = &request->settings;
     int rc = design_space_check(&s->space, err);
+    if (rc == FACET_OK)
+        rc = store_check(store, err);
     if (rc != FACET_OK)
         return rc;
     double started = clock_seconds();
@@ -405,7 +407,9 @@ int study_resume(struct store *store, int64_t run_id,
     *outcome = OPTIMIZE_INTERRUPTED;
     double started = clock_seconds();
     struct run_info run;
-    int rc = store_run_get(store, run_id, &run, err);
+    int rc = store_check(store, err);
+    if (rc == FACET_OK)
+        rc = store_run_get(store, run_id, &run, err);
     if (rc != FACET_OK)
         return rc;
     if (strcmp(run.status, "done") == 0)

@@ -1,0 +1,399 @@
+/*
+ * store_browse.c: browsing one run's options a page at a time, for the
+ * TUI: keyset pages in any order of columns with mixed directions, counts,
+ * positions, ranges and plot samples. See store.h ("browsing one run").
+ *
+ * Pages are chosen by keyset (the rows after the last one shown), never by
+ * a large OFFSET, so the SQLite indexes on (run, cost), (run, planarity),
+ * (run, dp_area) and (run, rank, number) serve a million options at page
+ * speed; a leading range term on the first key lets the planner seek.
+ * Each query selects option numbers only; the rows themselves are read
+ * with store_option_get, so this file has no second copy of the options
+ * table's column list. Not here: writing options (store_option.c).
+ */
+#include "store_db.h"
+
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "filter_sql.h"
+
+/* Parameters: ?1 run, ?2 limit, ?3 offset or stride, ?4.. key values
+ * (BROWSE_MAX_KEYS + number), the filter's from FILTER_FIRST. */
+#define KEY_FIRST 4
+#define FILTER_FIRST (KEY_FIRST + BROWSE_MAX_KEYS + 1)
+
+/* The SQL expression that orders by column, or NULL when column is not a
+ * sortable option column. The expressions give what an option_row read
+ * by store_option_get holds, so keyset values compare alike: rank is NULL
+ * until a run is ranked and crowding NULL at a front's ends, and both
+ * read as 0. */
+static const char *key_expr(const char *column)
+{
+    static const char *const special[][2] = {
+        {"rank", "ifnull(\"rank\", 0)"},
+        {"crowding", "ifnull(\"crowding\", 0)"},
+    };
+    for (size_t k = 0; k < sizeof special / sizeof special[0]; k++)
+        if (strcmp(column, special[k][0]) == 0)
+            return special[k][1];
+    for (int k = 0; store_option_columns[k] != NULL; k++)
+        if (strcmp(store_option_columns[k], "run") != 0 &&
+            strcmp(store_option_columns[k], column) == 0)
+            return "";  /* a plain column: key_sql quotes it */
+    return NULL;
+}
+
+/* Writes the expression of column into out ("\"cost\"" or a special). */
+static void key_sql(const char *column, char *out, size_t size)
+{
+    const char *expr = key_expr(column);
+    if (expr != NULL && expr[0] != '\0')
+        snprintf(out, size, "%s", expr);
+    else
+        snprintf(out, size, "\"%s\"", column);
+}
+
+/* The value of column of option as the key expression sees it. */
+static double key_value(const struct option_row *option, const char *column)
+{
+    return store_option_value(option, column);
+}
+
+/* A growing SQL string; a failed append leaves failed set. */
+struct sql_text {
+    char *text;
+    size_t length, capacity;
+    int failed;
+};
+
+static void sql_add(struct sql_text *s, const char *fmt, ...)
+    __attribute__((format(printf, 2, 3)));
+
+static void sql_add(struct sql_text *s, const char *fmt, ...)
+{
+    if (s->failed)
+        return;
+    for (;;) {
+        va_list ap;
+        va_start(ap, fmt);
+        int n = vsnprintf(s->text ? s->text + s->length : NULL,
+                          s->text ? s->capacity - s->length : 0, fmt, ap);
+        va_end(ap);
+        if (n < 0) {
+            s->failed = 1;
+            return;
+        }
+        if (s->text != NULL && s->length + (size_t)n < s->capacity) {
+            s->length += (size_t)n;
+            return;
+        }
+        size_t capacity = 2 * (s->capacity + (size_t)n) + 256;
+        char *grown = realloc(s->text, capacity);
+        if (grown == NULL) {
+            s->failed = 1;
+            return;
+        }
+        s->text = grown;
+        s->capacity = capacity;
+    }
+}
+
+/* Checks b's keys; FACET_EINPUT names an unknown column. */
+static int check_keys(const struct option_browse *b, struct facet_error *err)
+{
+    if (b->nkeys < 0 || b->nkeys > BROWSE_MAX_KEYS)
+        return facet_error_set(err, FACET_EINPUT,
+                               "sort: at most %d keys", BROWSE_MAX_KEYS);
+    for (int k = 0; k < b->nkeys; k++)
+        if (b->keys[k].column == NULL || key_expr(b->keys[k].column) == NULL)
+            return facet_error_set(err, FACET_EINPUT,
+                "sort: unknown column '%s'",
+                b->keys[k].column ? b->keys[k].column : "(none)");
+    return FACET_OK;
+}
+
+/* Appends "FROM options WHERE run = ?1 [AND rank = 1] AND (filter)". */
+static void add_where(struct sql_text *s, const struct option_browse *b)
+{
+    sql_add(s, " FROM options WHERE run = ?1%s",
+            b->pareto_only ? " AND rank = 1" : "");
+    if (b->where != NULL) {
+        char *fragment = filter_sql(b->where, FILTER_FIRST);
+        if (fragment == NULL) {
+            s->failed = 1;
+            return;
+        }
+        sql_add(s, " AND (%s)", fragment);
+        free(fragment);
+    }
+}
+
+/* Appends " AND <row comes after the keyset row>" (before, when
+ * backward): a lexicographic comparison over the keys and number, with a
+ * leading range term on the first key that an index can seek by. */
+static void add_keyset(struct sql_text *s, const struct option_browse *b,
+                       int backward)
+{
+    char expr[160];
+    sql_add(s, " AND ");
+    if (b->nkeys > 0) {
+        int greater = !b->keys[0].descending != !!backward;
+        key_sql(b->keys[0].column, expr, sizeof expr);
+        sql_add(s, "%s %s ?%d AND ", expr, greater ? ">=" : "<=",
+                KEY_FIRST);
+    }
+    for (int k = 0; k <= b->nkeys; k++) {
+        int greater = k < b->nkeys ? !b->keys[k].descending != !!backward
+                                   : !backward;
+        if (k < b->nkeys)
+            key_sql(b->keys[k].column, expr, sizeof expr);
+        else
+            snprintf(expr, sizeof expr, "number");
+        if (k < b->nkeys)
+            sql_add(s, "(%s %s ?%d OR (%s = ?%d AND ", expr,
+                    greater ? ">" : "<", KEY_FIRST + k, expr, KEY_FIRST + k);
+        else
+            sql_add(s, "number %s ?%d", greater ? ">" : "<", KEY_FIRST + k);
+    }
+    for (int k = 0; k < b->nkeys; k++)
+        sql_add(s, "))");
+}
+
+/* Appends " ORDER BY keys, number" (every direction reversed when
+ * backward). */
+static void add_order(struct sql_text *s, const struct option_browse *b,
+                      int backward)
+{
+    char expr[160];
+    sql_add(s, " ORDER BY ");
+    for (int k = 0; k < b->nkeys; k++) {
+        key_sql(b->keys[k].column, expr, sizeof expr);
+        sql_add(s, "%s %s, ", expr,
+                !b->keys[k].descending != !!backward ? "ASC" : "DESC");
+    }
+    sql_add(s, "number %s", backward ? "DESC" : "ASC");
+}
+
+/* Prepares s's text and binds run, the filter's numbers and, when keyset
+ * is given, its key values. */
+static int prepare(struct store *store, struct sql_text *s,
+                   const struct option_browse *b,
+                   const struct option_row *keyset, sqlite3_stmt **stmt,
+                   const char *doing, struct facet_error *err)
+{
+    *stmt = NULL;
+    if (s->failed) {
+        free(s->text);
+        return facet_error_set(err, FACET_EWORK, "out of memory");
+    }
+    int rc = store_prepare(store, s->text, stmt, doing, err);
+    free(s->text);
+    s->text = NULL;
+    if (rc != FACET_OK)
+        return rc;
+    sqlite3_bind_int64(*stmt, 1, b->run);
+    if (keyset != NULL) {
+        for (int k = 0; k < b->nkeys; k++)
+            sqlite3_bind_double(*stmt, KEY_FIRST + k,
+                                key_value(keyset, b->keys[k].column));
+        sqlite3_bind_int64(*stmt, KEY_FIRST + b->nkeys, keyset->number);
+    }
+    if (b->where != NULL)
+        for (size_t k = 0; k < filter_param_count(b->where); k++)
+            sqlite3_bind_double(*stmt, FILTER_FIRST + (int)k,
+                                filter_param(b->where, k));
+    return FACET_OK;
+}
+
+/* Steps stmt (rows of one column, an option number), collecting at most
+ * limit numbers, then reads each option and hands it to row. */
+static int deliver(struct store *store, const struct option_browse *b,
+                   sqlite3_stmt *stmt, int64_t limit,
+                   int (*row)(void *, const struct option_row *),
+                   void *context, const char *doing, struct facet_error *err)
+{
+    int64_t *numbers = NULL;
+    size_t n = 0, capacity = 0;
+    int rc = FACET_OK, step;
+    while ((step = sqlite3_step(stmt)) == SQLITE_ROW) {
+        if (n == capacity) {
+            capacity = capacity ? 2 * capacity : 64;
+            int64_t *grown = realloc(numbers, capacity * sizeof *numbers);
+            if (grown == NULL) {
+                rc = facet_error_set(err, FACET_EWORK, "out of memory");
+                break;
+            }
+            numbers = grown;
+        }
+        numbers[n++] = sqlite3_column_int64(stmt, 0);
+        if (limit > 0 && (int64_t)n >= limit) {
+            step = SQLITE_DONE;
+            break;
+        }
+    }
+    if (rc == FACET_OK && step != SQLITE_DONE)
+        rc = store_fail(store, doing, err);
+    sqlite3_finalize(stmt);
+    struct option_row option;
+    for (size_t k = 0; k < n && rc == FACET_OK; k++) {
+        rc = store_option_get(store, b->run, numbers[k], &option, err);
+        if (rc == FACET_OK && row(context, &option) != 0)
+            break;
+    }
+    free(numbers);
+    return rc;
+}
+
+int store_browse_page(struct store *store, const struct option_browse *b,
+                      const struct option_row *after, int backward,
+                      int64_t limit,
+                      int (*row)(void *context,
+                                 const struct option_row *option),
+                      void *context, struct facet_error *err)
+{
+    int rc = check_keys(b, err);
+    if (rc != FACET_OK)
+        return rc;
+    struct sql_text s = {0};
+    sql_add(&s, "SELECT number");
+    add_where(&s, b);
+    if (after != NULL)
+        add_keyset(&s, b, backward);
+    add_order(&s, b, backward);
+    sql_add(&s, " LIMIT ?2");
+    sqlite3_stmt *stmt;
+    rc = prepare(store, &s, b, after, &stmt, "browsing options", err);
+    if (rc != FACET_OK)
+        return rc;
+    sqlite3_bind_int64(stmt, 2, limit > 0 ? limit : -1);
+    return deliver(store, b, stmt, limit, row, context, "browsing options",
+                   err);
+}
+
+int store_browse_offset(struct store *store, const struct option_browse *b,
+                        int64_t offset, int64_t limit,
+                        int (*row)(void *context,
+                                   const struct option_row *option),
+                        void *context, struct facet_error *err)
+{
+    int rc = check_keys(b, err);
+    if (rc != FACET_OK)
+        return rc;
+    struct sql_text s = {0};
+    sql_add(&s, "SELECT number");
+    add_where(&s, b);
+    add_order(&s, b, 0);
+    sql_add(&s, " LIMIT ?2 OFFSET ?3");
+    sqlite3_stmt *stmt;
+    rc = prepare(store, &s, b, NULL, &stmt, "browsing options", err);
+    if (rc != FACET_OK)
+        return rc;
+    sqlite3_bind_int64(stmt, 2, limit > 0 ? limit : -1);
+    sqlite3_bind_int64(stmt, 3, offset > 0 ? offset : 0);
+    return deliver(store, b, stmt, limit, row, context, "browsing options",
+                   err);
+}
+
+/* Runs a query of one integer or two reals into the outputs given. */
+static int single_row(struct store *store, sqlite3_stmt *stmt,
+                      int64_t *count, double *a, double *z,
+                      const char *doing, struct facet_error *err)
+{
+    int rc = FACET_OK;
+    int step = sqlite3_step(stmt);
+    if (step == SQLITE_ROW) {
+        if (count != NULL)
+            *count = sqlite3_column_int64(stmt, 0);
+        if (a != NULL)
+            *a = sqlite3_column_type(stmt, 0) == SQLITE_NULL
+                     ? NAN : sqlite3_column_double(stmt, 0);
+        if (z != NULL)
+            *z = sqlite3_column_type(stmt, 1) == SQLITE_NULL
+                     ? NAN : sqlite3_column_double(stmt, 1);
+    } else {
+        rc = store_fail(store, doing, err);
+    }
+    sqlite3_finalize(stmt);
+    return rc;
+}
+
+int store_browse_count(struct store *store, const struct option_browse *b,
+                       int64_t *count, struct facet_error *err)
+{
+    *count = 0;
+    struct sql_text s = {0};
+    sql_add(&s, "SELECT count(*)");
+    add_where(&s, b);
+    sqlite3_stmt *stmt;
+    int rc = prepare(store, &s, b, NULL, &stmt, "counting options", err);
+    if (rc != FACET_OK)
+        return rc;
+    return single_row(store, stmt, count, NULL, NULL, "counting options",
+                      err);
+}
+
+int store_browse_position(struct store *store,
+                          const struct option_browse *b,
+                          const struct option_row *option,
+                          int64_t *position, struct facet_error *err)
+{
+    *position = 0;
+    int rc = check_keys(b, err);
+    if (rc != FACET_OK)
+        return rc;
+    struct sql_text s = {0};
+    sql_add(&s, "SELECT count(*)");
+    add_where(&s, b);
+    add_keyset(&s, b, 1);
+    sqlite3_stmt *stmt;
+    rc = prepare(store, &s, b, option, &stmt, "locating an option", err);
+    if (rc != FACET_OK)
+        return rc;
+    return single_row(store, stmt, position, NULL, NULL,
+                      "locating an option", err);
+}
+
+int store_browse_range(struct store *store, const struct option_browse *b,
+                       const char *column, double *min, double *max,
+                       struct facet_error *err)
+{
+    *min = *max = NAN;
+    if (column == NULL || key_expr(column) == NULL)
+        return facet_error_set(err, FACET_EINPUT, "unknown column '%s'",
+                               column ? column : "(none)");
+    char expr[160];
+    key_sql(column, expr, sizeof expr);
+    struct sql_text s = {0};
+    sql_add(&s, "SELECT min(%s), max(%s)", expr, expr);
+    add_where(&s, b);
+    sqlite3_stmt *stmt;
+    int rc = prepare(store, &s, b, NULL, &stmt, "measuring options", err);
+    if (rc != FACET_OK)
+        return rc;
+    return single_row(store, stmt, NULL, min, max, "measuring options", err);
+}
+
+int store_browse_sample(struct store *store, const struct option_browse *b,
+                        int64_t stride, int64_t limit,
+                        int (*row)(void *context,
+                                   const struct option_row *option),
+                        void *context, struct facet_error *err)
+{
+    struct sql_text s = {0};
+    sql_add(&s, "SELECT number");
+    add_where(&s, b);
+    sql_add(&s, " AND (?3 <= 1 OR number %% ?3 = 0 OR rank = 1)"
+                " ORDER BY number LIMIT ?2");
+    sqlite3_stmt *stmt;
+    int rc = prepare(store, &s, b, NULL, &stmt, "sampling options", err);
+    if (rc != FACET_OK)
+        return rc;
+    sqlite3_bind_int64(stmt, 2, limit > 0 ? limit : -1);
+    sqlite3_bind_int64(stmt, 3, stride);
+    return deliver(store, b, stmt, limit, row, context, "sampling options",
+                   err);
+}

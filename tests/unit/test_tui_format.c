@@ -1,0 +1,112 @@
+/*
+ * test_tui_format.c: how `facet tui` writes numbers (thousands, decimals,
+ * NaN and infinity, durations, times) and the cells of its options table
+ * (right-aligned in their width, yes/no, unranked rank).
+ */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <cmocka.h>
+
+#include <math.h>
+#include <string.h>
+
+#include "tui/format.h"
+
+static void check_number(double v, int decimals, int thousands,
+                         const char *want)
+{
+    char out[64];
+    tui_fmt_number(out, sizeof out, v, decimals, thousands);
+    assert_string_equal(out, want);
+}
+
+static void test_numbers(void **state)
+{
+    (void)state;
+    check_number(1551317.4, 0, 1, "1,551,317");
+    check_number(1551317.25, 2, 1, "1,551,317.25");
+    check_number(999, 0, 1, "999");
+    check_number(1000, 0, 1, "1,000");
+    check_number(-1234567.5, 1, 1, "-1,234,567.5");
+    check_number(-999.5, 0, 1, "-1,000");  /* rounding carries a digit */
+    check_number(0, 3, 1, "0.000");
+    check_number(2.52174, 3, 0, "2.522");
+    check_number(123456, 0, 0, "123456");
+    check_number(NAN, 2, 1, "-");
+    check_number(INFINITY, 2, 1, "inf");
+    check_number(-INFINITY, 0, 0, "-inf");
+    char tiny[4];
+    tui_fmt_number(tiny, sizeof tiny, 1234567, 0, 1);
+    assert_string_equal(tiny, "1,2");  /* truncated, still terminated */
+}
+
+static void test_times(void **state)
+{
+    (void)state;
+    char out[32];
+    tui_fmt_elapsed(out, sizeof out, 0.05);
+    assert_string_equal(out, "0.05 s");
+    tui_fmt_elapsed(out, sizeof out, 12.34);
+    assert_string_equal(out, "12.3 s");
+    tui_fmt_elapsed(out, sizeof out, 245);
+    assert_string_equal(out, "4m05s");
+    tui_fmt_elapsed(out, sizeof out, 7380);
+    assert_string_equal(out, "2h03m");
+    tui_fmt_elapsed(out, sizeof out, NAN);
+    assert_string_equal(out, "-");
+    tui_fmt_started(out, sizeof out, "2026-11-25T01:30:59Z");
+    assert_string_equal(out, "2026-11-25 01:30");
+    tui_fmt_started(out, sizeof out, "");
+    assert_string_equal(out, "-");
+}
+
+static void test_cells(void **state)
+{
+    (void)state;
+    struct option_row o;
+    memset(&o, 0, sizeof o);
+    o.number = 73;
+    o.totals.cost = 1551317.2;
+    o.totals.planarity = 2.52174;
+    o.totals.feasible = 0;
+    o.threshold_mm = 2;
+    int total = 0;
+    for (int c = 0; c < tui_option_column_count; c++) {
+        const struct tui_column *col = &tui_option_columns[c];
+        char cell[64];
+        tui_fmt_cell(cell, sizeof cell, col, &o);
+        assert_int_equal((int)strlen(cell), col->width);  /* aligned */
+        assert_true(col->width >= (int)strlen(col->title));
+        assert_true(col->width >= (int)strlen(col->unit));
+        if (strcmp(col->title, "cost") == 0)
+            assert_string_equal(cell, " 1,551,317");
+        if (strcmp(col->title, "planarity") == 0)
+            assert_string_equal(cell, "    2.522");
+        if (strcmp(col->title, "ok") == 0)
+            assert_string_equal(cell, " no");
+        if (strcmp(col->title, "rank") == 0)
+            assert_string_equal(cell, "   -");  /* not ranked yet */
+        if (strcmp(col->title, "t") == 0)
+            assert_string_equal(cell, " 2.00");
+        total += col->width + 1;
+    }
+    assert_true(total - 1 <= 80);  /* the table fits 80 columns */
+    /* every metric the tables show is a store column */
+    for (int c = 0; c < tui_metric_column_count; c++)
+        assert_false(isnan(store_option_value(&o,
+                                              tui_metric_columns[c].column)));
+    assert_non_null(tui_metric_column("cost"));
+    assert_null(tui_metric_column("nosuch"));
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_numbers),
+        cmocka_unit_test(test_times),
+        cmocka_unit_test(test_cells),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}

@@ -1,0 +1,111 @@
+/*
+ * test_tui_keys.c: the key map every screen of `facet tui` shares (vi
+ * keys and arrows alike, function keys, key names for help) and the
+ * one-line editor of the filter line and forms.
+ */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <cmocka.h>
+
+#include <curses.h>
+#include <string.h>
+
+#include "tui/input.h"
+#include "tui/keys.h"
+
+static void test_actions(void **state)
+{
+    (void)state;
+    const struct { int key; enum tui_action action; } map[] = {
+        {'j', ACTION_DOWN}, {KEY_DOWN, ACTION_DOWN},
+        {'k', ACTION_UP}, {KEY_UP, ACTION_UP},
+        {'h', ACTION_LEFT}, {KEY_LEFT, ACTION_LEFT},
+        {'l', ACTION_RIGHT}, {KEY_RIGHT, ACTION_RIGHT},
+        {'g', ACTION_TOP}, {KEY_HOME, ACTION_TOP},
+        {'G', ACTION_BOTTOM}, {KEY_END, ACTION_BOTTOM},
+        {KEY_NPAGE, ACTION_PAGE_DOWN}, {6 /* Ctrl-F */, ACTION_PAGE_DOWN},
+        {KEY_PPAGE, ACTION_PAGE_UP}, {2 /* Ctrl-B */, ACTION_PAGE_UP},
+        {'/', ACTION_SEARCH}, {'n', ACTION_NEXT}, {'N', ACTION_PREVIOUS},
+        {'\r', ACTION_OPEN}, {'\n', ACTION_OPEN}, {KEY_ENTER, ACTION_OPEN},
+        {'q', ACTION_BACK}, {27, ACTION_BACK},
+        {KEY_F(10), ACTION_QUIT},
+        {'?', ACTION_HELP}, {KEY_F(1), ACTION_HELP},
+        {12 /* Ctrl-L */, ACTION_REDRAW},
+        {'x', ACTION_NONE}, {KEY_F(5), ACTION_NONE},
+    };
+    for (size_t k = 0; k < sizeof map / sizeof map[0]; k++)
+        assert_int_equal(tui_key_action(map[k].key), map[k].action);
+}
+
+static void test_names(void **state)
+{
+    (void)state;
+    char buffer[16];
+    assert_string_equal(tui_key_name(KEY_F(5), buffer), "F5");
+    assert_string_equal(tui_key_name(KEY_F(10), buffer), "F10");
+    assert_string_equal(tui_key_name('\n', buffer), "Enter");
+    assert_string_equal(tui_key_name(' ', buffer), "Space");
+    assert_string_equal(tui_key_name(12, buffer), "Ctrl-L");
+    assert_string_equal(tui_key_name('K', buffer), "K");
+    assert_string_equal(tui_key_name(KEY_NPAGE, buffer), "PgDn");
+}
+
+static void type(struct tui_input *in, const char *text)
+{
+    for (const char *p = text; *p; p++)
+        assert_int_equal(tui_input_key(in, (unsigned char)*p),
+                         INPUT_EDITING);
+}
+
+static void test_input(void **state)
+{
+    (void)state;
+    struct tui_input in;
+    tui_input_set(&in, "cost < 1");
+    assert_int_equal(in.cursor, 8);
+    type(&in, ".5M");
+    assert_string_equal(in.text, "cost < 1.5M");
+    assert_int_equal(tui_input_key(&in, KEY_HOME), INPUT_EDITING);
+    type(&in, "(");
+    assert_int_equal(tui_input_key(&in, KEY_END), INPUT_EDITING);
+    type(&in, ")");
+    assert_string_equal(in.text, "(cost < 1.5M)");
+    assert_int_equal(tui_input_key(&in, KEY_BACKSPACE), INPUT_EDITING);
+    assert_int_equal(tui_input_key(&in, KEY_LEFT), INPUT_EDITING);
+    assert_int_equal(tui_input_key(&in, KEY_DC), INPUT_EDITING);
+    assert_string_equal(in.text, "(cost < 1.5");
+    assert_int_equal(tui_input_key(&in, 23 /* Ctrl-W */), INPUT_EDITING);
+    assert_string_equal(in.text, "(cost < ");
+    assert_int_equal(tui_input_key(&in, 21 /* Ctrl-U */), INPUT_EDITING);
+    assert_string_equal(in.text, "");
+    assert_int_equal(in.cursor, 0);
+    assert_int_equal(tui_input_key(&in, KEY_BACKSPACE), INPUT_EDITING);
+    assert_int_equal(tui_input_key(&in, '\r'), INPUT_DONE);
+    assert_int_equal(tui_input_key(&in, 27), INPUT_CANCEL);
+    assert_int_equal(tui_input_key(&in, KEY_F(5)), INPUT_IGNORED);
+    /* the view scrolls to keep the cursor visible */
+    tui_input_set(&in, "abcdefghijklmnopqrstuvwxyz");
+    assert_int_equal(tui_input_scroll(&in, 10), 17);
+    assert_int_equal(tui_input_scroll(&in, 40), 0);
+    /* a full buffer takes no more */
+    char big[TUI_INPUT_MAX + 10];
+    memset(big, 'a', sizeof big - 1);
+    big[sizeof big - 1] = '\0';
+    tui_input_set(&in, big);
+    assert_int_equal(in.length, TUI_INPUT_MAX - 1);
+    tui_input_key(&in, 'b');
+    assert_int_equal(in.length, TUI_INPUT_MAX - 1);
+    assert_int_equal(strlen(in.text), TUI_INPUT_MAX - 1);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_actions),
+        cmocka_unit_test(test_names),
+        cmocka_unit_test(test_input),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}

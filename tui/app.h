@@ -1,0 +1,109 @@
+/*
+ * app.h: what the workbench's screens share (internal to tui/): the open
+ * store, the screen stack, the status line, the glyphs, the background
+ * run; the screen interface; and the drawing helpers every screen uses.
+ *
+ * A screen is a small struct whose first member is struct tui_screen; its
+ * class names it, lists its keys for the help screen and its function-key
+ * labels, draws it, and handles a key by returning what happened. A screen
+ * never reaches into another: it pushes a new one or returns RESULT_BACK.
+ */
+#ifndef FACET_TUI_APP_H
+#define FACET_TUI_APP_H
+
+#include <curses.h>
+#include <stdint.h>
+
+#include "store/store.h"
+#include "table_model.h"
+#include "theme.h"
+
+struct tui_app;
+struct tui_screen;
+
+enum tui_result {
+    RESULT_UNHANDLED,  /* not this screen's key: the global keys apply */
+    RESULT_HANDLED,    /* done; redraw */
+    RESULT_BACK,       /* close this screen */
+    RESULT_QUIT        /* leave the workbench */
+};
+
+struct tui_key_help {
+    const char *keys;  /* "s, F6" */
+    const char *what;  /* "sort by the column under the cursor" */
+};
+
+struct tui_screen_class {
+    const char *name;                  /* "Options", for the help title */
+    const struct tui_key_help *help;   /* ends with {NULL, NULL} */
+    const char *fkeys[10];             /* labels of F1..F10 (<= 6 chars) */
+    /* Draws into rows [0, height) of the terminal, width columns. */
+    void (*draw)(struct tui_screen *s, struct tui_app *app, int height,
+                 int width);
+    enum tui_result (*key)(struct tui_screen *s, struct tui_app *app,
+                           int key);
+    /* About four times a second while no key comes; returns non-zero to
+     * be redrawn (live runs). May be NULL. */
+    int (*tick)(struct tui_screen *s, struct tui_app *app);
+    void (*destroy)(struct tui_screen *s);
+};
+
+struct tui_screen {
+    const struct tui_screen_class *cls;
+};
+
+#define TUI_STACK_MAX 12
+
+struct tui_job;  /* a New run working in a thread (job.h) */
+
+struct tui_app {
+    struct store *store;
+    char db_path[1024];
+    struct tui_screen *stack[TUI_STACK_MAX];
+    int depth;
+    char status[512];
+    int status_error;             /* the message is an error */
+    const char *prompt;           /* a screen's input line label, or NULL */
+    const struct tui_input *input;/* ... and its text */
+    int utf8, colour;
+    const struct tui_glyphs *glyphs;
+    int help_open, help_top;
+    struct tui_job *job;          /* NULL when no run works */
+};
+
+/* Pushes screen (NULL: nothing, the constructor reported its error). */
+void tui_push(struct tui_app *app, struct tui_screen *screen);
+
+/* Sets the status line (cleared at the next key). */
+void tui_status(struct tui_app *app, const char *fmt, ...)
+    __attribute__((format(printf, 2, 3)));
+void tui_error(struct tui_app *app, const char *fmt, ...)
+    __attribute__((format(printf, 2, 3)));
+
+/* Shows label and input in the status row (input NULL: no prompt). */
+void tui_prompt(struct tui_app *app, const char *label,
+                const struct tui_input *input);
+
+/* Text at (y, x) in at most width columns (UTF-8 aware: one column per
+ * code point), with attr; returns the columns written. */
+int tui_put(int y, int x, int width, attr_t attr, const char *text);
+/* Same, formatted. */
+int tui_putf(int y, int x, int width, attr_t attr, const char *fmt, ...)
+    __attribute__((format(printf, 5, 6)));
+/* width blanks with attr at (y, x). */
+void tui_fill(int y, int x, int width, attr_t attr);
+
+/* Screens (one file each). Constructors report failures on the status
+ * line and return NULL. */
+struct tui_screen *screen_runs_new(struct tui_app *app);
+struct tui_screen *screen_options_new(struct tui_app *app, int64_t run);
+struct tui_screen *screen_map_new(struct tui_app *app, int64_t run,
+                                  int64_t option);
+struct tui_screen *screen_scatter_new(struct tui_app *app,
+                                      struct table_model *model);
+struct tui_screen *screen_compare_new(struct tui_app *app, int64_t run,
+                                      const int64_t *options, int n);
+struct tui_screen *screen_newrun_new(struct tui_app *app,
+                                     const char *surface_path);
+
+#endif

@@ -1,0 +1,115 @@
+/*
+ * scatter_model.c: scaling and navigation of the scatter plot. See
+ * scatter_model.h.
+ */
+#include "scatter_model.h"
+
+#include <math.h>
+#include <stdlib.h>
+
+int scatter_cell(double value, double min, double max, int cells)
+{
+    if (!isfinite(value) || cells < 1)
+        return -1;
+    if (!(max > min))
+        return cells / 2;
+    double t = (value - min) / (max - min);
+    int cell = (int)floor(t * cells);
+    if (cell < 0)
+        cell = 0;
+    if (cell >= cells)
+        cell = cells - 1;
+    return cell;
+}
+
+int scatter_level(double z, double min, double max, int levels)
+{
+    int level = scatter_cell(z, min, max, levels);
+    return !(max > min) || level < 0 ? 0 : level;
+}
+
+void scatter_range(const struct scatter_point *points, size_t n, int axis,
+                   double *min, double *max)
+{
+    *min = *max = NAN;
+    for (size_t k = 0; k < n; k++) {
+        double v = axis == 0 ? points[k].x : axis == 1 ? points[k].y
+                                                       : points[k].z;
+        if (!isfinite(v))
+            continue;
+        if (isnan(*min) || v < *min)
+            *min = v;
+        if (isnan(*max) || v > *max)
+            *max = v;
+    }
+}
+
+static const struct scatter_point *sort_points;
+
+static int by_x_then_y(const void *a, const void *b)
+{
+    const struct scatter_point *p = &sort_points[*(const size_t *)a];
+    const struct scatter_point *q = &sort_points[*(const size_t *)b];
+    if (p->x != q->x)
+        return p->x < q->x ? -1 : 1;
+    if (p->y != q->y)
+        return p->y < q->y ? -1 : 1;
+    return *(const size_t *)a < *(const size_t *)b ? -1 : 1;
+}
+
+size_t scatter_front(const struct scatter_point *points, size_t n,
+                     size_t *front)
+{
+    size_t m = 0;
+    for (size_t k = 0; k < n; k++)
+        if (isfinite(points[k].x) && isfinite(points[k].y))
+            front[m++] = k;
+    sort_points = points;
+    qsort(front, m, sizeof *front, by_x_then_y);
+    /* by x ascending: a point is on the front when its y is below every
+     * y before it */
+    size_t kept = 0;
+    double best = INFINITY;
+    for (size_t k = 0; k < m; k++) {
+        const struct scatter_point *p = &points[front[k]];
+        if (p->y < best) {
+            best = p->y;
+            front[kept++] = front[k];
+        }
+    }
+    return kept;
+}
+
+size_t scatter_step(const struct scatter_point *points, size_t n,
+                    size_t current, int dx, int dy)
+{
+    if (current >= n || (dx == 0 && dy == 0))
+        return current;
+    double xmin, xmax, ymin, ymax;
+    scatter_range(points, n, 0, &xmin, &xmax);
+    scatter_range(points, n, 1, &ymin, &ymax);
+    double xs = xmax > xmin ? xmax - xmin : 1, ys = ymax > ymin ? ymax - ymin
+                                                                 : 1;
+    const struct scatter_point *c = &points[current];
+    size_t best = current;
+    double best_score = INFINITY;
+    for (size_t k = 0; k < n; k++) {
+        if (k == current)
+            continue;
+        const struct scatter_point *p = &points[k];
+        double along = dx ? (p->x - c->x) / xs * dx : (p->y - c->y) / ys * dy;
+        double across = dx ? fabs(p->y - c->y) / ys : fabs(p->x - c->x) / xs;
+        /* a point at the same place counts as ahead when it comes later */
+        if (along < 0 || (along == 0 && across == 0 &&
+                          ((dx + dy > 0) != (k > current))))
+            continue;
+        if (along == 0 && across > 0)
+            continue;
+        double score = along + 3 * across;
+        if (score < best_score) {
+            best_score = score;
+            best = k;
+        }
+    }
+    return best;
+}

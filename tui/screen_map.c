@@ -1,0 +1,266 @@
+/*
+ * screen_map.c: Option detail / panel map: the UV grid of one option with
+ * each panel coloured by type (FP/SP/DP) or by class (c toggles), a legend
+ * with counts and areas, and a cursor over the panels that shows one
+ * panel's class, type, k1, k2, K, H, area, deviation and cost. The view
+ * pans with the cursor over grids larger than the screen, and z zooms
+ * between one and two columns per panel. Panels come from
+ * study_option_panels, which evaluates and stores them when missing.
+ */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "app.h"
+#include "format.h"
+#include "keys.h"
+#include "store/study.h"
+
+struct map_screen {
+    struct tui_screen base;
+    struct run_info run;
+    struct option_row option;
+    struct panelization panels;
+    struct option_totals totals;
+    int by_class;
+    int zoom;            /* columns per panel: 1 or 2; 0 = choose */
+    int ci, cj;          /* cursor cell */
+    int left, top;       /* first column (i) and row (from v's top) shown */
+};
+
+static const struct tui_key_help map_help[] = {
+    {"h/j/k/l, arrows", "move the cursor from panel to panel"},
+    {"PgUp/PgDn", "a page up / down"},
+    {"g / G", "first / last panel"},
+    {"0 / $", "start / end of the row"},
+    {"c, F4", "colour by type (FP/SP/DP) or by class"},
+    {"z, F5", "zoom: one or two columns per panel"},
+    {NULL, NULL},
+};
+
+/* One letter per class, as the legend lists them. */
+static const char class_letter[CLASS_COUNT] = {
+    'v', 'x', 'c', 'r', 'f', 'R', 'o', 'O'};
+
+/* The classes' names, short enough for the legend. */
+static const char *const class_label[CLASS_COUNT] = {
+    "convex feature", "saddle", "concave feature", "ruled convex", "flat",
+    "ruled concave", "convex round", "concave round"};
+
+static const struct panel *panel_at(const struct map_screen *s, int i, int j)
+{
+    if (i < 0 || j < 0 || i >= s->panels.nu || j >= s->panels.nv)
+        return NULL;
+    int k = s->panels.cell_panel[(size_t)j * (size_t)s->panels.nu +
+                                 (size_t)i];
+    return k >= 0 ? &s->panels.panels[k] : NULL;
+}
+
+static void draw_legend(struct map_screen *s, int y, int x, int width)
+{
+    const struct option_totals *t = &s->totals;
+    tui_put(y++, x, width, tui_attr(ROLE_HEADER),
+            s->by_class ? " class              count       m^2"
+                        : " type               count       m^2");
+    if (s->by_class) {
+        for (int c = 0; c < CLASS_COUNT; c++) {
+            char letter[2] = {class_letter[c], 0};
+            tui_put(y, x + 1, 1, tui_attr(ROLE_CLASS0 + c), letter);
+            tui_putf(y++, x + 2, width - 2, A_NORMAL, " %-15s %6zu %9.1f",
+                     class_label[c], t->class_count[c], t->class_area[c]);
+        }
+    } else {
+        for (int k = 0; k < TYPE_COUNT; k++) {
+            const char *name = panel_type_name((enum panel_type)k);
+            char letter[2] = {name[0], 0};
+            tui_put(y, x + 1, 1, tui_attr(tui_type_role(k)), letter);
+            tui_putf(y++, x + 2, width - 2, A_NORMAL, " %-15s %6zu %9.1f",
+                     name, t->count[k], t->area_of[k]);
+        }
+    }
+    char cost[32];
+    tui_fmt_number(cost, sizeof cost, t->cost, 0, 1);
+    tui_putf(y++, x, width, A_NORMAL, "   %-15s %6zu %9.1f", "all", t->panels,
+             t->area);
+    y++;
+    tui_putf(y++, x, width, A_NORMAL, " cost      %s USD", cost);
+    tui_putf(y++, x, width, A_NORMAL, " planarity %.4f m", t->planarity);
+    tui_putf(y++, x, width, A_NORMAL, " max dev.  %.4f m", t->max_deviation);
+    tui_putf(y++, x, width, A_NORMAL, " largest   %.2f m^2 (%s)",
+             t->max_panel_area, t->feasible ? "feasible" : "infeasible");
+}
+
+static void map_draw(struct tui_screen *base, struct tui_app *app,
+                     int height, int width)
+{
+    struct map_screen *s = (struct map_screen *)base;
+    int nu = s->panels.nu, nv = s->panels.nv;
+    tui_fill(0, 0, width, tui_attr(ROLE_TITLE));
+    tui_putf(0, 0, width, tui_attr(ROLE_TITLE),
+             " Panel map: option %lld of run %lld | grid %d x %d | t %.2f mm "
+             "| by %s", (long long)s->option.number, (long long)s->run.id,
+             nu, nv, s->option.threshold_mm, s->by_class ? "class" : "type");
+    int legend = width >= 70 ? 36 : 0;
+    int map_w = width - legend - 1, map_h = height - 5;
+    if (map_h < 1)
+        map_h = 1;
+    int zoom = s->zoom ? s->zoom : nu * 2 <= map_w ? 2 : 1;
+    int cols = map_w / zoom;
+    if (cols < 1)
+        cols = 1;
+    /* pan so the cursor shows: rows count down from v's top */
+    int crow = nv - 1 - s->cj;
+    s->left = (int)table_model_scroll(s->left, s->ci, cols, nu);
+    s->top = (int)table_model_scroll(s->top, crow, map_h, nv);
+    for (int r = 0; r < map_h && s->top + r < nv; r++) {
+        int j = nv - 1 - (s->top + r);
+        for (int c = 0; c < cols && s->left + c < nu; c++) {
+            int i = s->left + c;
+            const struct panel *p = panel_at(s, i, j);
+            char text[8];
+            attr_t attr;
+            if (p == NULL) {
+                snprintf(text, sizeof text, "%s", app->glyphs->empty);
+                attr = tui_attr(ROLE_DIM);
+            } else if (s->by_class) {
+                snprintf(text, sizeof text, "%c", class_letter[p->class]);
+                attr = tui_attr(ROLE_CLASS0 + (int)p->class);
+            } else {
+                snprintf(text, sizeof text, "%c",
+                         panel_type_name(p->type)[0]);
+                attr = tui_attr(tui_type_role((int)p->type));
+            }
+            if (i == s->ci && j == s->cj)
+                attr = A_REVERSE | A_BOLD;
+            int x = 1 + c * zoom;
+            tui_put(1 + r, x, 1, attr, text);
+            if (zoom == 2)
+                tui_put(1 + r, x + 1, 1, attr, p == NULL ? " " : text);
+        }
+    }
+    if (legend)
+        draw_legend(s, 1, width - legend, legend);
+    /* the cursor's panel */
+    int y = height - 4;
+    tui_fill(y, 0, width, tui_attr(ROLE_DIM));
+    tui_putf(y, 0, width, tui_attr(ROLE_HEADER),
+             " Panel (%d, %d)  u %d-%d of %d, v %d-%d of %d shown ", s->ci,
+             s->cj, s->left, (s->left + cols < nu ? s->left + cols : nu) - 1,
+             nu, nv - (s->top + map_h < nv ? s->top + map_h : nv),
+             nv - 1 - s->top, nv);
+    const struct panel *p = panel_at(s, s->ci, s->cj);
+    if (p == NULL) {
+        tui_put(y + 1, 1, width - 1, A_NORMAL,
+                "no panel: the surface does not reach this cell");
+        return;
+    }
+    char cost[32];
+    tui_fmt_number(cost, sizeof cost, p->cost, 0, 1);
+    tui_putf(y + 1, 0, width, A_NORMAL,
+             " class %s  type %s  area %.3f m^2%s  cost %s USD",
+             panel_class_name(p->class), panel_type_name(p->type), p->area,
+             p->trimmed ? " (trimmed)" : "", cost);
+    tui_putf(y + 2, 0, width, A_NORMAL,
+             " k1 %.4g  k2 %.4g 1/m  K %.4g 1/m^2  H %.4g 1/m  deviation "
+             "%.2f mm", p->k1, p->k2, p->K, p->H, p->deviation * 1000);
+}
+
+/* Moves the cursor by (di, dj), clamped to the grid. */
+static void move_cursor(struct map_screen *s, int di, int dj)
+{
+    s->ci += di;
+    s->cj += dj;
+    if (s->ci < 0)
+        s->ci = 0;
+    if (s->ci >= s->panels.nu)
+        s->ci = s->panels.nu - 1;
+    if (s->cj < 0)
+        s->cj = 0;
+    if (s->cj >= s->panels.nv)
+        s->cj = s->panels.nv - 1;
+}
+
+static enum tui_result map_key(struct tui_screen *base, struct tui_app *app,
+                               int key)
+{
+    struct map_screen *s = (struct map_screen *)base;
+    int page = LINES - 7 > 1 ? LINES - 7 : 1;
+    switch (key) {
+    case 'c': case KEY_F(4):
+        s->by_class = !s->by_class;
+        return RESULT_HANDLED;
+    case 'z': case KEY_F(5):
+        s->zoom = s->zoom == 1 ? 2 : 1;
+        return RESULT_HANDLED;
+    case '0':
+        s->ci = 0;
+        return RESULT_HANDLED;
+    case '$':
+        s->ci = s->panels.nu - 1;
+        return RESULT_HANDLED;
+    default:
+        break;
+    }
+    (void)app;
+    switch (tui_key_action(key)) {
+    case ACTION_LEFT: move_cursor(s, -1, 0); break;
+    case ACTION_RIGHT: move_cursor(s, 1, 0); break;
+    case ACTION_UP: move_cursor(s, 0, 1); break;
+    case ACTION_DOWN: move_cursor(s, 0, -1); break;
+    case ACTION_PAGE_UP: move_cursor(s, 0, page); break;
+    case ACTION_PAGE_DOWN: move_cursor(s, 0, -page); break;
+    case ACTION_TOP:
+        s->ci = 0;
+        s->cj = s->panels.nv - 1;
+        break;
+    case ACTION_BOTTOM:
+        s->ci = s->panels.nu - 1;
+        s->cj = 0;
+        break;
+    default:
+        return RESULT_UNHANDLED;
+    }
+    return RESULT_HANDLED;
+}
+
+static void map_destroy(struct tui_screen *base)
+{
+    struct map_screen *s = (struct map_screen *)base;
+    panelization_free(&s->panels);
+    free(s);
+}
+
+static const struct tui_screen_class map_class = {
+    "Panel map", map_help,
+    {"Help", NULL, NULL, "Colour", "Zoom", NULL, NULL, NULL, NULL, "Quit"},
+    map_draw, map_key, NULL, map_destroy,
+};
+
+struct tui_screen *screen_map_new(struct tui_app *app, int64_t run,
+                                  int64_t option)
+{
+    struct map_screen *s = calloc(1, sizeof *s);
+    struct facet_error err;
+    if (s == NULL) {
+        tui_error(app, "out of memory");
+        return NULL;
+    }
+    s->base.cls = &map_class;
+    int rc = store_run_get(app->store, run, &s->run, &err);
+    if (rc == FACET_OK)
+        rc = store_option_get(app->store, run, option, &s->option, &err);
+    if (rc == FACET_OK)
+        rc = study_option_panels(app->store, &s->run, NULL, option,
+                                 &s->panels, &s->totals, &err);
+    if (rc == FACET_OK && (s->panels.nu < 1 || s->panels.nv < 1))
+        rc = facet_error_set(&err, FACET_EWORK, "option %lld has no panels",
+                             (long long)option);
+    if (rc != FACET_OK) {
+        tui_error(app, "panel map: %s", err.message);
+        map_destroy(&s->base);
+        return NULL;
+    }
+    s->cj = s->panels.nv - 1;  /* top left, as the map reads */
+    return &s->base;
+}

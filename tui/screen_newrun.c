@@ -1,0 +1,273 @@
+/*
+ * screen_newrun.c: New run: a form for a surface (OBJ path), its units,
+ * the design space (u and v ranges, flatness threshold), the method, the
+ * seed and a name; F5 (or Enter on the last field) starts the study in a
+ * worker thread (job.h) and opens the run's options table, which fills in
+ * live while the status line shows a progress gauge. Ctrl-X stops the run
+ * (it stays resumable). The classification settings are the paper's
+ * defaults; facet optimize takes the others.
+ */
+#include <ctype.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "app.h"
+#include "input.h"
+#include "job.h"
+#include "keys.h"
+#include "store/study.h"
+
+enum field { F_SURFACE, F_UNITS, F_U, F_V, F_THRESHOLD, F_METHOD, F_SEED,
+             F_NAME, F_COUNT };
+
+static const char *const field_label[F_COUNT] = {
+    "Surface (OBJ)", "Units", "U (panels)", "V (panels)", "Threshold (mm)",
+    "Method", "Seed", "Name"};
+static const char *const field_hint[F_COUNT] = {
+    "path of the OBJ file", "m, cm, mm, in or ft",
+    "A:B, panels along u", "A:B, panels along v",
+    "MM, A:B or A:B:STEP", "auto, exhaustive, random or nsga2",
+    "a whole number; the same seed gives the same options",
+    "optional"};
+
+struct newrun_screen {
+    struct tui_screen base;
+    struct tui_input field[F_COUNT];
+    int focus;
+    int64_t opened;    /* the run whose table was opened */
+};
+
+static const struct tui_key_help newrun_help[] = {
+    {"Tab, Down", "next field"},
+    {"Shift-Tab, Up", "previous field"},
+    {"Enter", "next field; on the last one, start"},
+    {"F5", "start the run"},
+    {"Esc", "back without starting"},
+    {"(typing)", "edits the field; Ctrl-U clears it"},
+    {NULL, NULL},
+};
+
+static void newrun_draw(struct tui_screen *base, struct tui_app *app,
+                        int height, int width)
+{
+    struct newrun_screen *s = (struct newrun_screen *)base;
+    (void)height;
+    tui_fill(0, 0, width, tui_attr(ROLE_TITLE));
+    tui_putf(0, 0, width, tui_attr(ROLE_TITLE), " New run into %s",
+             app->db_path);
+    int lw = 16, fw = width - lw - 4;
+    for (int f = 0; f < F_COUNT; f++) {
+        int y = 2 + 2 * f;
+        tui_putf(y, 1, lw, f == s->focus ? tui_attr(ROLE_HEADER) : A_NORMAL,
+                 "%-*s", lw - 1, field_label[f]);
+        attr_t attr = f == s->focus ? tui_attr(ROLE_SELECTION) : A_UNDERLINE;
+        tui_fill(y, lw + 2, fw, attr);
+        size_t from = f == s->focus ? tui_input_scroll(&s->field[f], fw) : 0;
+        tui_put(y, lw + 2, fw, attr, s->field[f].text + from);
+        if (f == s->focus)
+            tui_put(y + 1, lw + 2, fw, tui_attr(ROLE_DIM), field_hint[f]);
+    }
+    int y = 2 + 2 * F_COUNT;
+    tui_put(y, lw + 2, width - lw - 2, tui_attr(ROLE_PARETO),
+            app->job ? "A run is working (see the gauge below)."
+                     : "F5 starts the run.");
+    if (app->prompt == NULL && !app->help_open && s->focus < F_COUNT) {
+        size_t from = tui_input_scroll(&s->field[s->focus], fw);
+        move(2 + 2 * s->focus,
+             lw + 2 + (int)(s->field[s->focus].cursor - from));
+        curs_set(1);
+    }
+}
+
+static int parse_range(const char *text, const char *what, int *lo, int *hi,
+                       struct facet_error *err)
+{
+    char extra;
+    if (sscanf(text, "%d:%d%c", lo, hi, &extra) == 2)
+        return FACET_OK;
+    if (sscanf(text, "%d%c", lo, &extra) == 1) {
+        *hi = *lo;
+        return FACET_OK;
+    }
+    return facet_error_set(err, FACET_EINPUT,
+        "%s: '%s' is not a range A:B of whole numbers (e.g. 20:40)", what,
+        text);
+}
+
+static int parse_threshold(const char *text, struct design_space *space,
+                           struct facet_error *err)
+{
+    double v[3];
+    char extra;
+    int n = sscanf(text, "%lf:%lf:%lf%c", &v[0], &v[1], &v[2], &extra);
+    if (n < 1 || n > 3 || (n == 1 && strchr(text, ':')) ||
+        (n == 2 && strchr(strchr(text, ':') + 1, ':')))
+        return facet_error_set(err, FACET_EINPUT,
+            "threshold: '%s' is not MM, A:B or A:B:STEP", text);
+    space->t_min_mm = v[0];
+    space->t_max_mm = n >= 2 ? v[1] : v[0];
+    space->t_step_mm = n == 3 ? v[2] : 0;
+    if (space->t_max_mm < space->t_min_mm)
+        return facet_error_set(err, FACET_EINPUT,
+            "threshold: %g:%g runs backwards", space->t_min_mm,
+            space->t_max_mm);
+    return FACET_OK;
+}
+
+/* The request the form describes; FACET_EINPUT names the bad field. */
+static int build(struct newrun_screen *s, struct study_request *r,
+                 struct facet_error *err)
+{
+    memset(r, 0, sizeof *r);
+    const char *path = s->field[F_SURFACE].text;
+    if (path[0] == '\0')
+        return facet_error_set(err, FACET_EINPUT, "name the surface's OBJ "
+                               "file");
+    if (access(path, R_OK) != 0)
+        return facet_error_set(err, FACET_EINPUT, "%s: cannot read it",
+                               path);
+    r->surface_path = path;
+    r->name = s->field[F_NAME].text;
+    memset(&r->settings.base, 0, sizeof r->settings.base);
+    classify_defaults(&r->settings.base.classify);
+    r->settings.base.mode = PANEL_EXTREMES;
+    r->mesh.units = UNITS_M;
+    int rc = mesh_units_parse(s->field[F_UNITS].text, &r->mesh.units, err);
+    struct optimize_settings *o = &r->settings;
+    if (rc == FACET_OK)
+        rc = parse_range(s->field[F_U].text, "U", &o->space.u_min,
+                         &o->space.u_max, err);
+    if (rc == FACET_OK)
+        rc = parse_range(s->field[F_V].text, "V", &o->space.v_min,
+                         &o->space.v_max, err);
+    if (rc == FACET_OK)
+        rc = parse_threshold(s->field[F_THRESHOLD].text, &o->space, err);
+    if (rc == FACET_OK)
+        rc = design_space_check(&o->space, err);
+    if (rc != FACET_OK)
+        return rc;
+    int continuous = o->space.t_max_mm > o->space.t_min_mm &&
+                     o->space.t_step_mm == 0;
+    const char *method = s->field[F_METHOD].text;
+    if (strcmp(method, "auto") == 0 || method[0] == '\0')
+        o->method = !continuous && design_space_size(&o->space) <= 100000
+                        ? METHOD_EXHAUSTIVE : METHOD_NSGA2;
+    else if ((rc = optimize_method_parse(method, &o->method, err)))
+        return rc;
+    if (o->method == METHOD_EXHAUSTIVE && continuous)
+        return facet_error_set(err, FACET_EINPUT,
+            "threshold %g:%g: the exhaustive method needs a step (A:B:STEP)",
+            o->space.t_min_mm, o->space.t_max_mm);
+    char *end;
+    const char *seed = s->field[F_SEED].text;
+    o->seed = strtoull(seed, &end, 10);
+    if (end == seed || *end != '\0' || seed[0] == '-')
+        return facet_error_set(err, FACET_EINPUT,
+            "seed: '%s' is not a whole number >= 0", seed);
+    o->evaluations = 1000;
+    o->population = 100;
+    o->generations = 50;
+    if ((rc = objectives_parse("cost,planarity,dp_area", o->objectives,
+                               &o->nobjectives, err)))
+        return rc;
+    long cores = sysconf(_SC_NPROCESSORS_ONLN);
+    o->jobs = cores > 0 ? (int)(cores < 64 ? cores : 64) : 1;
+    return FACET_OK;
+}
+
+static void start(struct newrun_screen *s, struct tui_app *app)
+{
+    if (app->job != NULL) {
+        tui_error(app, "a run is already working; Ctrl-X stops it");
+        return;
+    }
+    struct study_request request;
+    struct facet_error err;
+    if (build(s, &request, &err) != FACET_OK ||
+        tui_job_start(app->db_path, &request, &app->job, &err) != FACET_OK) {
+        tui_error(app, "new run: %s", err.message);
+        return;
+    }
+    s->opened = 0;
+    tui_status(app, "starting the run");
+}
+
+static enum tui_result newrun_key(struct tui_screen *base,
+                                  struct tui_app *app, int key)
+{
+    struct newrun_screen *s = (struct newrun_screen *)base;
+    switch (key) {
+    case KEY_F(5):
+        start(s, app);
+        return RESULT_HANDLED;
+    case '\t': case KEY_DOWN:
+        s->focus = (s->focus + 1) % F_COUNT;
+        return RESULT_HANDLED;
+    case KEY_BTAB: case KEY_UP:
+        s->focus = (s->focus + F_COUNT - 1) % F_COUNT;
+        return RESULT_HANDLED;
+    case 27: case KEY_F(10): case KEY_F(1):
+        return RESULT_UNHANDLED;
+    default:
+        break;
+    }
+    enum tui_input_result r = tui_input_key(&s->field[s->focus], key);
+    if (r == INPUT_DONE) {
+        if (s->focus == F_COUNT - 1)
+            start(s, app);
+        else
+            s->focus++;
+    }
+    return RESULT_HANDLED;
+}
+
+/* Opens the run's table once the study has recorded it. */
+static int newrun_tick(struct tui_screen *base, struct tui_app *app)
+{
+    struct newrun_screen *s = (struct newrun_screen *)base;
+    if (app->job == NULL || s->opened)
+        return 0;
+    struct tui_job_state st;
+    tui_job_state(app->job, &st);
+    if (st.run <= 0)
+        return 0;
+    s->opened = st.run;
+    tui_push(app, screen_options_new(app, st.run));
+    return 1;
+}
+
+static void newrun_destroy(struct tui_screen *base)
+{
+    curs_set(0);
+    free(base);
+}
+
+static const struct tui_screen_class newrun_class = {
+    "New run", newrun_help,
+    {"Help", NULL, NULL, NULL, "Start", NULL, NULL, NULL, NULL, "Quit"},
+    newrun_draw, newrun_key, newrun_tick, newrun_destroy,
+};
+
+struct tui_screen *screen_newrun_new(struct tui_app *app,
+                                     const char *surface_path)
+{
+    struct newrun_screen *s = calloc(1, sizeof *s);
+    if (s == NULL) {
+        tui_error(app, "out of memory");
+        return NULL;
+    }
+    s->base.cls = &newrun_class;
+    static const char *const defaults[F_COUNT] = {
+        "", "m", "20:40", "35:50", "3", "auto", "1", ""};
+    for (int f = 0; f < F_COUNT; f++)
+        tui_input_set(&s->field[f], defaults[f]);
+    if (surface_path) {
+        tui_input_set(&s->field[F_SURFACE], surface_path);
+        s->focus = F_UNITS;
+        if (access(surface_path, R_OK) != 0)
+            tui_error(app, "%s: cannot read it", surface_path);
+    }
+    return &s->base;
+}

@@ -1,0 +1,594 @@
+/*
+ * screen_options.c: the Options table of one run: one row per design
+ * option (No., Pareto mark, planarity, DP area, cost, FP area, SP area,
+ * U, V, threshold, feasibility, rank), right-aligned with units in the
+ * header; sort by any column with a secondary key, the --where filter
+ * line, Pareto-only, jump to the knee, marks for Compare, and a detail
+ * pane with every metric of the selected option. Rows come a page at a
+ * time through table_model; the scatter and compare screens share the
+ * model, so selection and filter stay linked. A running run refills live.
+ */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#include "app.h"
+#include "format.h"
+#include "input.h"
+#include "keys.h"
+
+struct options_screen {
+    struct tui_screen base;
+    struct run_info run;
+    struct table_model model;
+    int64_t top;                 /* first row shown */
+    int rows;                    /* rows shown at the last draw */
+    int column;                  /* column cursor (tui_option_columns) */
+    struct browse_key keys[2];   /* primary, secondary */
+    int nkeys;
+    int editing;                 /* the filter line is open */
+    struct tui_input filter;
+    int64_t marks[64];           /* options marked for Compare */
+    int nmarks;
+    int detail;                  /* the detail pane is shown */
+    struct timespec last_refresh;
+};
+
+static const struct tui_key_help options_help[] = {
+    {"j/k, Up/Down", "select an option"},
+    {"PgUp/PgDn, g/G", "a page up / down, first / last option"},
+    {"h/l, Left/Right", "move the column cursor (highlighted header)"},
+    {"s, F6", "sort by the cursor's column; again: reverse it"},
+    {"S", "secondary key: the cursor's column (asc, desc, off)"},
+    {"< / >", "sort by the previous / next column"},
+    {"I", "invert the primary sort direction"},
+    {"/, F3", "filter, e.g. cost < 1.6M and dp_area <= 900 or pareto"},
+    {"p, F4", "Pareto-optimal options only (toggle)"},
+    {"K, F9", "jump to the knee option"},
+    {"n / N", "next / previous Pareto-optimal option"},
+    {"Space", "mark / unmark the option for Compare"},
+    {"u", "clear every mark"},
+    {"c, F7", "compare the marked options (2 to 4)"},
+    {"Enter, m, F8", "panel map of the option"},
+    {"x, F5", "scatter plot (planarity vs cost)"},
+    {"d, F2", "show / hide the detail pane"},
+    {"r", "reload from the database"},
+    {NULL, NULL},
+};
+
+static double seconds_since(const struct timespec *t)
+{
+    struct timespec now;
+    clock_gettime(CLOCK_MONOTONIC, &now);
+    return (double)(now.tv_sec - t->tv_sec) +
+           (double)(now.tv_nsec - t->tv_nsec) * 1e-9;
+}
+
+static int is_marked(const struct options_screen *s, int64_t number)
+{
+    for (int k = 0; k < s->nmarks; k++)
+        if (s->marks[k] == number)
+            return 1;
+    return 0;
+}
+
+/* --- drawing --- */
+
+/* "cost asc, then planarity desc" */
+static void sort_text(const struct options_screen *s, char *out, size_t size)
+{
+    if (s->nkeys == 0) {
+        snprintf(out, size, "number asc");
+        return;
+    }
+    size_t n = 0;
+    for (int k = 0; k < s->nkeys && n < size; k++)
+        n += (size_t)snprintf(out + n, size - n, "%s%s %s",
+                              k ? ", then " : "", s->keys[k].column,
+                              s->keys[k].descending ? "desc" : "asc");
+}
+
+/* The key index (0 primary, 1 secondary) of column c, or -1. */
+static int key_of(const struct options_screen *s, int c)
+{
+    for (int k = 0; k < s->nkeys; k++)
+        if (strcmp(s->keys[k].column, tui_option_columns[c].column) == 0)
+            return k;
+    return -1;
+}
+
+static void draw_header(struct options_screen *s, struct tui_app *app,
+                        int y, int width)
+{
+    tui_fill(y, 0, width, tui_attr(ROLE_HEADER));
+    tui_fill(y + 1, 0, width, tui_attr(ROLE_HEADER));
+    int x = 0;
+    for (int c = 0; c < tui_option_column_count && x < width; c++) {
+        const struct tui_column *col = &tui_option_columns[c];
+        int key = key_of(s, c);
+        attr_t attr = c == s->column ? tui_attr(ROLE_COLUMN)
+                      : key >= 0 ? tui_attr(ROLE_SORTED)
+                                 : tui_attr(ROLE_HEADER);
+        tui_fill(y, x, col->width, attr);
+        tui_fill(y + 1, x, col->width, attr);
+        tui_putf(y, x, width - x, attr, "%*s", col->width, col->title);
+        tui_putf(y + 1, x, width - x, attr, "%*s", col->width, col->unit);
+        if (key >= 0) {
+            /* the direction just left of the unit; "2" marks the
+             * secondary key */
+            int at = x + col->width - (int)strlen(col->unit) - 1 - key;
+            if (at < x)
+                at = x;
+            tui_put(y + 1, at, 1, attr, s->keys[key].descending
+                                            ? app->glyphs->down
+                                            : app->glyphs->up);
+            if (key == 1)
+                tui_put(y + 1, at + 1, 1, attr, "2");
+        }
+        x += col->width + 1;
+    }
+}
+
+static void draw_row(struct options_screen *s, struct tui_app *app, int y,
+                     int width, const struct option_row *o, int selected)
+{
+    attr_t base = selected ? tui_attr(ROLE_SELECTION) : A_NORMAL;
+    if (selected)
+        tui_fill(y, 0, width, base);
+    int x = 0;
+    char cell[64];
+    for (int c = 0; c < tui_option_column_count && x < width; c++) {
+        const struct tui_column *col = &tui_option_columns[c];
+        tui_fmt_cell(cell, sizeof cell, col, o);
+        attr_t attr = base;
+        if (!selected && col->kind == COLUMN_YESNO && !o->totals.feasible)
+            attr = tui_attr(ROLE_DIM);
+        tui_put(y, x, width - x, attr, cell);
+        if (col->kind == COLUMN_PARETO && o->rank == 1)
+            tui_put(y, x, 1, selected ? base : tui_attr(o->knee ? ROLE_KNEE
+                                                                : ROLE_PARETO),
+                    o->knee ? app->glyphs->knee : app->glyphs->pareto);
+        if (c == 0 && is_marked(s, o->number))
+            tui_put(y, x, 1, selected ? base : tui_attr(ROLE_MARKED),
+                    app->glyphs->mark);
+        x += col->width + 1;
+    }
+}
+
+/* The selected option's metrics as short lines for the bottom pane. */
+static int detail_lines(const struct option_row *o, char lines[][160])
+{
+    const struct option_totals *t = &o->totals;
+    char cost[32], fc[32], sc[32], dc[32], area[32];
+    tui_fmt_number(cost, sizeof cost, t->cost, 0, 1);
+    tui_fmt_number(fc, sizeof fc, t->cost_of[TYPE_FP], 0, 1);
+    tui_fmt_number(sc, sizeof sc, t->cost_of[TYPE_SP], 0, 1);
+    tui_fmt_number(dc, sizeof dc, t->cost_of[TYPE_DP], 0, 1);
+    tui_fmt_number(area, sizeof area, t->area, 1, 1);
+    snprintf(lines[0], 160, "No. %lld: %d x %d, t %.2f mm, %zu panels "
+             "(FP %zu, SP %zu, DP %zu), rank %d%s, %s",
+             (long long)o->number, o->nu, o->nv, o->threshold_mm, t->panels,
+             t->count[TYPE_FP], t->count[TYPE_SP], t->count[TYPE_DP],
+             o->rank, o->knee ? " (knee)" : "",
+             t->feasible ? "feasible" : "infeasible");
+    snprintf(lines[1], 160, "cost %s USD = FP %s + SP %s + DP %s", cost, fc,
+             sc, dc);
+    snprintf(lines[2], 160, "area %s m^2: FP %.1f, SP %.1f, DP %.1f; "
+             "largest panel %.2f m^2", area, t->area_of[TYPE_FP],
+             t->area_of[TYPE_SP], t->area_of[TYPE_DP], t->max_panel_area);
+    snprintf(lines[3], 160, "planarity %.4f m, max deviation %.4f m, "
+             "P_dist %.3g m^4, crowding %.3g", t->planarity,
+             t->max_deviation, t->p_dist, o->crowding);
+    return 4;
+}
+
+static void draw_detail_side(const struct option_row *o, int y, int x,
+                             int height, int width)
+{
+    tui_put(y, x, width, tui_attr(ROLE_HEADER), " Selected option");
+    tui_fill(y, x + 16, width - 16, tui_attr(ROLE_HEADER));
+    for (int k = 0; k < tui_metric_column_count && k + 1 < height; k++) {
+        const struct tui_column *c = &tui_metric_columns[k];
+        char value[64];
+        tui_fmt_value(value, sizeof value, c, store_option_value(o,
+                                                                 c->column));
+        tui_putf(y + 1 + k, x, width, A_NORMAL, " %-15s %14s %s", c->title,
+                 value, c->unit);
+    }
+}
+
+static void options_draw(struct tui_screen *base, struct tui_app *app,
+                         int height, int width)
+{
+    struct options_screen *s = (struct options_screen *)base;
+    struct table_model *m = &s->model;
+    const char *surface = strrchr(s->run.surface_path, '/');
+    surface = surface ? surface + 1 : s->run.surface_path;
+    tui_fill(0, 0, width, tui_attr(ROLE_TITLE));
+    tui_putf(0, 0, width, tui_attr(ROLE_TITLE),
+             " Run %lld %s%s%s | %s | %s | %lld options, %lld Pareto, "
+             "knee %lld", (long long)s->run.id, s->run.name,
+             s->run.name[0] ? " " : "", surface, s->run.method,
+             s->run.status, (long long)s->run.options,
+             (long long)s->run.pareto_options, (long long)s->run.knee);
+    char sort[160];
+    sort_text(s, sort, sizeof sort);
+    int x = tui_putf(1, 0, width, A_NORMAL, " %lld shown  sort %s",
+                     (long long)m->count, sort);
+    const char *where = m->filter ? filter_text(m->filter) : "";
+    x += tui_putf(1, x, width - x, where[0] ? tui_attr(ROLE_PARETO)
+                                            : A_NORMAL,
+                  "  filter %s", where[0] ? where : "none");
+    if (m->browse.pareto_only)
+        x += tui_put(1, x, width - x, tui_attr(ROLE_PARETO),
+                     "  Pareto only");
+    if (s->nmarks)
+        tui_putf(1, x, width - x, tui_attr(ROLE_MARKED), "  %d marked",
+                 s->nmarks);
+
+    int side = s->detail && width >= 120;
+    int table_width = side ? 80 : width;
+    int pane = s->detail && !side && height >= 14 ? 5 : 0;
+    draw_header(s, app, 2, table_width);
+    s->rows = height - 4 - pane;
+    if (s->rows < 1)
+        s->rows = 1;
+    s->top = table_model_scroll(s->top, m->selected, s->rows, m->count);
+    struct facet_error err;
+    if (table_model_fetch(m, s->top, s->rows, &err) != FACET_OK)
+        tui_error(app, "%s", err.message);
+    for (int r = 0; r < s->rows; r++) {
+        const struct option_row *o = table_model_row(m, s->top + r);
+        if (o == NULL)
+            break;
+        draw_row(s, app, 4 + r, table_width, o, s->top + r == m->selected);
+    }
+    if (m->count == 0)
+        tui_put(5, 2, table_width - 2, tui_attr(ROLE_DIM),
+                m->filter || m->browse.pareto_only
+                    ? "No option passes the filter (/ edits it, p toggles "
+                      "Pareto only)."
+                    : "No options yet.");
+    const struct option_row *o = table_model_selection(m);
+    if (o == NULL)
+        return;
+    if (side) {
+        draw_detail_side(o, 2, 81, height - 2, width - 81);
+    } else if (pane) {
+        char lines[4][160];
+        int n = detail_lines(o, lines);
+        int y = height - pane;
+        tui_fill(y, 0, width, tui_attr(ROLE_DIM));
+        tui_put(y, 0, width, tui_attr(ROLE_HEADER), " Selected option ");
+        for (int k = 0; k < n; k++)
+            tui_putf(y + 1 + k, 0, width, A_NORMAL, " %s", lines[k]);
+    }
+}
+
+/* --- keys --- */
+
+static void report(struct tui_app *app, int rc, const struct facet_error *e)
+{
+    if (rc == FACET_OK)
+        return;
+    /* filter_compile speaks of --where; here it is the filter line */
+    const char *m = e->message;
+    if (strncmp(m, "--where: ", 9) == 0)
+        tui_error(app, "filter: %s", m + 9);
+    else
+        tui_error(app, "%s", m);
+}
+
+static void apply_sort(struct options_screen *s, struct tui_app *app)
+{
+    struct facet_error err;
+    report(app, table_model_set_sort(&s->model, s->keys, s->nkeys, &err),
+           &err);
+    s->top = s->model.selected - s->rows / 2;
+}
+
+/* s: the cursor's column becomes the primary key, or is reversed. */
+static void sort_primary(struct options_screen *s, struct tui_app *app)
+{
+    const char *column = tui_option_columns[s->column].column;
+    if (s->nkeys > 0 && strcmp(s->keys[0].column, column) == 0) {
+        s->keys[0].descending = !s->keys[0].descending;
+    } else {
+        if (s->nkeys == 2 && strcmp(s->keys[1].column, column) == 0)
+            s->nkeys = 1;
+        else if (s->nkeys > 0) {
+            s->keys[1] = s->keys[0];   /* the old primary becomes second */
+            s->nkeys = 2;
+        } else {
+            s->nkeys = 1;
+        }
+        s->keys[0].column = column;
+        s->keys[0].descending = 0;
+    }
+    apply_sort(s, app);
+}
+
+/* S: the cursor's column as the secondary key: asc, desc, off. */
+static void sort_secondary(struct options_screen *s, struct tui_app *app)
+{
+    const char *column = tui_option_columns[s->column].column;
+    if (s->nkeys == 0 || strcmp(s->keys[0].column, column) == 0) {
+        tui_error(app, "that is the primary key; move the cursor (h/l) "
+                  "to another column");
+        return;
+    }
+    if (s->nkeys == 2 && strcmp(s->keys[1].column, column) == 0) {
+        if (s->keys[1].descending)
+            s->nkeys = 1;
+        else
+            s->keys[1].descending = 1;
+    } else {
+        s->keys[1].column = column;
+        s->keys[1].descending = 0;
+        s->nkeys = 2;
+    }
+    apply_sort(s, app);
+}
+
+static void jump_knee(struct options_screen *s, struct tui_app *app)
+{
+    struct facet_error err;
+    if (store_run_get(app->store, s->run.id, &s->run, &err) != FACET_OK) {
+        tui_error(app, "%s", err.message);
+        return;
+    }
+    if (s->run.knee <= 0) {
+        tui_error(app, "run %lld has no knee option (not ranked yet)",
+                  (long long)s->run.id);
+        return;
+    }
+    int found;
+    int rc = table_model_select_number(&s->model, s->run.knee, &found, &err);
+    if (rc != FACET_OK)
+        report(app, rc, &err);
+    else if (!found)
+        tui_error(app, "the knee option %lld is hidden by the filter",
+                  (long long)s->run.knee);
+    else
+        tui_status(app, "knee option %lld", (long long)s->run.knee);
+}
+
+/* n / N: the next Pareto-optimal row in the table's order. */
+static void next_pareto(struct options_screen *s, struct tui_app *app,
+                        int dir)
+{
+    struct table_model *m = &s->model;
+    struct facet_error err;
+    for (int64_t p = m->selected + dir, steps = 0;
+         p >= 0 && p < m->count && steps < 20000; p += dir, steps++) {
+        const struct option_row *o = table_model_row(m, p);
+        if (o == NULL) {
+            int rc = table_model_fetch(m, dir > 0 ? p : p - TABLE_PAGE + 1,
+                                       TABLE_PAGE, &err);
+            if (rc != FACET_OK || (o = table_model_row(m, p)) == NULL) {
+                report(app, rc, &err);
+                return;
+            }
+        }
+        if (o->rank == 1) {
+            report(app, table_model_select(m, p, &err), &err);
+            return;
+        }
+    }
+    tui_error(app, "no Pareto-optimal option %s", dir > 0 ? "below"
+                                                          : "above");
+}
+
+static void toggle_mark(struct options_screen *s, struct tui_app *app)
+{
+    const struct option_row *o = table_model_selection(&s->model);
+    if (o == NULL)
+        return;
+    for (int k = 0; k < s->nmarks; k++)
+        if (s->marks[k] == o->number) {
+            memmove(s->marks + k, s->marks + k + 1,
+                    (size_t)(s->nmarks - k - 1) * sizeof s->marks[0]);
+            s->nmarks--;
+            return;
+        }
+    if (s->nmarks == 64) {
+        tui_error(app, "at most 64 marks");
+        return;
+    }
+    s->marks[s->nmarks++] = o->number;
+    struct facet_error err;
+    table_model_select(&s->model, s->model.selected + 1, &err);
+}
+
+static enum tui_result filter_key(struct options_screen *s,
+                                  struct tui_app *app, int key)
+{
+    enum tui_input_result r = tui_input_key(&s->filter, key);
+    if (r == INPUT_EDITING || r == INPUT_IGNORED)
+        return RESULT_HANDLED;
+    s->editing = 0;
+    tui_prompt(app, NULL, NULL);
+    if (r == INPUT_CANCEL)
+        return RESULT_HANDLED;
+    struct facet_error err;
+    int rc = table_model_set_filter(&s->model, s->filter.text, &err);
+    report(app, rc, &err);
+    if (rc == FACET_OK)
+        tui_status(app, "%lld options pass the filter",
+                   (long long)s->model.count);
+    return RESULT_HANDLED;
+}
+
+static enum tui_result options_key(struct tui_screen *base,
+                                   struct tui_app *app, int key)
+{
+    struct options_screen *s = (struct options_screen *)base;
+    struct table_model *m = &s->model;
+    struct facet_error err;
+    const struct option_row *o = table_model_selection(m);
+    if (s->editing)
+        return filter_key(s, app, key);
+    switch (key) {
+    case 's': case KEY_F(6):
+        sort_primary(s, app);
+        return RESULT_HANDLED;
+    case 'S':
+        sort_secondary(s, app);
+        return RESULT_HANDLED;
+    case '<': case '>':
+        s->column = (s->column + (key == '>' ? 1 : -1) +
+                     tui_option_column_count) % tui_option_column_count;
+        if (s->nkeys > 0 &&
+            strcmp(s->keys[0].column, tui_option_columns[s->column].column)
+                == 0)
+            return RESULT_HANDLED;
+        sort_primary(s, app);
+        return RESULT_HANDLED;
+    case 'I':
+        if (s->nkeys == 0) {
+            s->keys[0].column = "number";
+            s->nkeys = 1;
+        }
+        s->keys[0].descending = !s->keys[0].descending;
+        apply_sort(s, app);
+        return RESULT_HANDLED;
+    case 'p': case KEY_F(4):
+        report(app, table_model_set_pareto(m, !m->browse.pareto_only, &err),
+               &err);
+        return RESULT_HANDLED;
+    case 'K': case KEY_F(9):
+        jump_knee(s, app);
+        return RESULT_HANDLED;
+    case ' ':
+        toggle_mark(s, app);
+        return RESULT_HANDLED;
+    case 'u':
+        s->nmarks = 0;
+        return RESULT_HANDLED;
+    case 'c': case KEY_F(7):
+        if (s->nmarks < 2) {
+            tui_error(app, "mark 2 to 4 options with Space first");
+            return RESULT_HANDLED;
+        }
+        tui_push(app, screen_compare_new(app, s->run.id, s->marks,
+                                         s->nmarks > 4 ? 4 : s->nmarks));
+        return RESULT_HANDLED;
+    case 'm': case KEY_F(8): case '\r': case '\n': case KEY_ENTER:
+        if (o != NULL)
+            tui_push(app, screen_map_new(app, s->run.id, o->number));
+        return RESULT_HANDLED;
+    case 'x': case KEY_F(5):
+        tui_push(app, screen_scatter_new(app, m));
+        return RESULT_HANDLED;
+    case 'd': case KEY_F(2):
+        s->detail = !s->detail;
+        return RESULT_HANDLED;
+    case 'r':
+        store_run_get(app->store, s->run.id, &s->run, &err);
+        report(app, table_model_refresh(m, &err), &err);
+        return RESULT_HANDLED;
+    case KEY_F(3):
+        key = '/';
+        break;
+    default:
+        break;
+    }
+    int64_t page = s->rows > 1 ? s->rows - 1 : 1;
+    int rc = FACET_OK;
+    switch (tui_key_action(key)) {
+    case ACTION_UP: rc = table_model_select(m, m->selected - 1, &err); break;
+    case ACTION_DOWN: rc = table_model_select(m, m->selected + 1, &err);
+        break;
+    case ACTION_PAGE_UP:
+        s->top -= page;
+        rc = table_model_select(m, m->selected - page, &err);
+        break;
+    case ACTION_PAGE_DOWN:
+        s->top += page;
+        rc = table_model_select(m, m->selected + page, &err);
+        break;
+    case ACTION_TOP: rc = table_model_select(m, 0, &err); break;
+    case ACTION_BOTTOM: rc = table_model_select(m, m->count - 1, &err);
+        break;
+    case ACTION_LEFT:
+        if (s->column > 0)
+            s->column--;
+        break;
+    case ACTION_RIGHT:
+        if (s->column + 1 < tui_option_column_count)
+            s->column++;
+        break;
+    case ACTION_SEARCH:
+        s->editing = 1;
+        tui_input_set(&s->filter, m->filter ? filter_text(m->filter) : "");
+        if (s->filter.text[0] == '\0' && s->filter.length == 0)
+            tui_input_set(&s->filter, "");
+        tui_prompt(app, "Filter:", &s->filter);
+        break;
+    case ACTION_NEXT: next_pareto(s, app, 1); break;
+    case ACTION_PREVIOUS: next_pareto(s, app, -1); break;
+    default:
+        return RESULT_UNHANDLED;
+    }
+    report(app, rc, &err);
+    return RESULT_HANDLED;
+}
+
+/* A running run: count and refetch every second, so the table fills in
+ * as options are committed. */
+static int options_tick(struct tui_screen *base, struct tui_app *app)
+{
+    struct options_screen *s = (struct options_screen *)base;
+    if (strcmp(s->run.status, "running") != 0 ||
+        seconds_since(&s->last_refresh) < 1.0)
+        return 0;
+    clock_gettime(CLOCK_MONOTONIC, &s->last_refresh);
+    struct facet_error err;
+    if (store_run_get(app->store, s->run.id, &s->run, &err) != FACET_OK ||
+        table_model_refresh(&s->model, &err) != FACET_OK)
+        tui_error(app, "%s", err.message);
+    return 1;
+}
+
+static void options_destroy(struct tui_screen *base)
+{
+    struct options_screen *s = (struct options_screen *)base;
+    table_model_close(&s->model);
+    free(s);
+}
+
+static const struct tui_screen_class options_class = {
+    "Options", options_help,
+    {"Help", "Detail", "Filter", "Pareto", "Plot", "Sort", "Diff", "Map",
+     "Knee", "Quit"},
+    options_draw, options_key, options_tick, options_destroy,
+};
+
+struct tui_screen *screen_options_new(struct tui_app *app, int64_t run)
+{
+    struct options_screen *s = calloc(1, sizeof *s);
+    struct facet_error err;
+    if (s == NULL) {
+        tui_error(app, "out of memory");
+        return NULL;
+    }
+    s->base.cls = &options_class;
+    s->detail = 1;
+    s->column = 4;  /* cost */
+    s->keys[0].column = "cost";  /* the paper's Table 2: cheapest first */
+    s->nkeys = 1;
+    clock_gettime(CLOCK_MONOTONIC, &s->last_refresh);
+    if (store_run_get(app->store, run, &s->run, &err) != FACET_OK ||
+        table_model_open(&s->model, app->store, run, &err) != FACET_OK ||
+        table_model_set_sort(&s->model, s->keys, s->nkeys, &err) !=
+            FACET_OK ||
+        table_model_select(&s->model, 0, &err) != FACET_OK) {
+        tui_error(app, "%s", err.message);
+        table_model_close(&s->model);
+        free(s);
+        return NULL;
+    }
+    return &s->base;
+}

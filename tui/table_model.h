@@ -1,0 +1,94 @@
+/*
+ * table_model.h: the options of one run as a table that a screen scrolls:
+ * filter, Pareto-only, sort keys, a count, a selected position, and a
+ * window of cached rows around what is shown. Rows come from the store a
+ * page at a time (store_browse_*), never all at once, so a run of a
+ * million options opens, sorts, filters and scrolls at page speed. No
+ * curses here: the table, scatter and compare screens share one model,
+ * which is how their selection and filter stay linked.
+ */
+#ifndef FACET_TUI_TABLE_MODEL_H
+#define FACET_TUI_TABLE_MODEL_H
+
+#include <stdint.h>
+
+#include "store/filter.h"
+#include "store/store.h"
+
+/* Rows the window holds at most, and rows one fetch adds. */
+#define TABLE_WINDOW 600
+#define TABLE_PAGE 200
+
+struct table_model {
+    struct store *store;          /* borrowed */
+    struct option_browse browse;  /* run, Pareto-only, filter, keys */
+    struct filter *filter;        /* owned; browse.where points to it */
+    char key_names[BROWSE_MAX_KEYS][32];  /* browse.keys[k].column */
+    int64_t count;                /* options the browse sees */
+    int64_t selected;             /* position of the selected row, or 0 */
+    int64_t base;                 /* position of rows[0] */
+    struct option_row *rows;      /* rows[0..nrows): window */
+    int64_t nrows;
+    int64_t fetches;              /* store queries made (tests, bench) */
+};
+
+/* Opens the model on run of store (by number, no filter) with the
+ * selection on the first row. Release with table_model_close. */
+int table_model_open(struct table_model *m, struct store *store,
+                     int64_t run, struct facet_error *err);
+void table_model_close(struct table_model *m);
+
+/* The row at position, when the window holds it; NULL otherwise (call
+ * table_model_fetch first). */
+const struct option_row *table_model_row(const struct table_model *m,
+                                         int64_t position);
+
+/* The selected row, or NULL when the table is empty. */
+const struct option_row *table_model_selection(const struct table_model *m);
+
+/* Makes the window hold positions [from, from + n) (clamped to the
+ * table), by keyset pages next to what it holds, else from either end,
+ * else by offset. */
+int table_model_fetch(struct table_model *m, int64_t from, int64_t n,
+                      struct facet_error *err);
+
+/* Moves the selection to position (clamped) and fetches around it. */
+int table_model_select(struct table_model *m, int64_t position,
+                       struct facet_error *err);
+
+/* Moves the selection to option number when the table shows it; *found
+ * tells whether it does (the selection stays otherwise). */
+int table_model_select_number(struct table_model *m, int64_t number,
+                              int *found, struct facet_error *err);
+
+/* Replaces the filter with text compiled by filter_compile. A bad text is
+ * FACET_EINPUT with filter_compile's message and leaves the model as it
+ * was. The selected option stays selected when the new filter shows it. */
+int table_model_set_filter(struct table_model *m, const char *text,
+                           struct facet_error *err);
+
+/* Shows only rank 1 (on) or every option (off); keeps the selection as
+ * set_filter does. */
+int table_model_set_pareto(struct table_model *m, int on,
+                           struct facet_error *err);
+
+/* Sorts by keys[0..n) (then number); keeps the selected option selected.
+ * Unknown columns are FACET_EINPUT and leave the model as it was. */
+int table_model_set_sort(struct table_model *m, const struct browse_key *keys,
+                         int n, struct facet_error *err);
+
+/* Counts again and refetches (options were added by a live run, or
+ * ranks written), keeping the selected option selected. */
+int table_model_refresh(struct table_model *m, struct facet_error *err);
+
+/* Whether option passes the model's filter and Pareto-only setting. */
+int table_model_shows(const struct table_model *m,
+                      const struct option_row *option);
+
+/* The first row to show so that the selection is visible in a view of
+ * height rows that showed top before: the view scrolls only as far as it
+ * must. */
+int64_t table_model_scroll(int64_t top, int64_t selected, int64_t height,
+                           int64_t count);
+
+#endif

@@ -1,0 +1,21 @@
+/*
+ * tui.h: `facet tui`, the terminal workbench: runs, the options table,
+ * scatter, panel map, compare and New run screens over a result store.
+ * Every curses call of Facet is in tui/; runs are read and written only
+ * through the store/ headers, and computed only through core/.
+ */
+#ifndef FACET_TUI_H
+#define FACET_TUI_H
+
+#include "core/error.h"
+
+/* Runs the workbench until the user quits. path is a result database
+ * (opened, or created when missing; NULL for facet.db in the current
+ * directory) or an OBJ surface (path ending in .obj: facet.db, with the
+ * New run form open for it). Needs a terminal on stdin and stdout. The
+ * terminal is restored on every return, on SIGINT and SIGTERM (which end
+ * the workbench as q does) and on a crash. Returns FACET_OK, or an error
+ * (bad database, no terminal) with err filled. */
+int tui_run(const char *path, struct facet_error *err);
+
+#endif
