@@ -867,7 +867,11 @@ static void write_sql(const struct filter *f, int k, int first_param,
     char text[64];
     switch (n->kind) {
     case NODE_COMPARE:
-        snprintf(text, sizeof text, "\"%s\" %s ?%lld",
+        /* crowding is stored NULL at a front's ends, where it is
+         * infinite: compare it as the infinity it stands for. */
+        snprintf(text, sizeof text,
+                 strcmp(store_option_columns[n->column], "crowding") == 0
+                     ? "ifnull(\"%s\", 1e999) %s ?%lld" : "\"%s\" %s ?%lld",
                  store_option_columns[n->column], op_text[n->op],
                  (long long)first_param + (long long)n->param);
         put(b, text);

@@ -29,13 +29,13 @@
 /* The SQL expression that orders by column, or NULL when column is not a
  * sortable option column. The expressions give what an option_row read
  * by store_option_get holds, so keyset values compare alike: rank is NULL
- * until a run is ranked and crowding NULL at a front's ends, and both
- * read as 0. */
+ * until a run is ranked (reads as 0) and crowding NULL at a front's ends
+ * (reads as +infinity, which SQLite writes 1e999). */
 static const char *key_expr(const char *column)
 {
     static const char *const special[][2] = {
         {"rank", "ifnull(\"rank\", 0)"},
-        {"crowding", "ifnull(\"crowding\", 0)"},
+        {"crowding", "ifnull(\"crowding\", 1e999)"},
     };
     for (size_t k = 0; k < sizeof special / sizeof special[0]; k++)
         if (strcmp(column, special[k][0]) == 0)

@@ -328,7 +328,11 @@ static int order_by(const char *sort, int descending, char *sql,
                 "--sort: unknown column '%.*s' (choose from %s)", (int)n, p,
                 list);
         }
-        len += (size_t)snprintf(sql + len, size - len, "\"%.*s\"%s, ",
+        /* A front's ends have crowding NULL: infinitely far apart. */
+        int crowding = n == 8 && strncasecmp(p, "crowding", 8) == 0;
+        len += (size_t)snprintf(sql + len, size - len,
+                                crowding ? "ifnull(\"%.*s\", 1e999)%s, "
+                                         : "\"%.*s\"%s, ",
                                 (int)n, p, direction);
         if (len >= size)
             return facet_error_set(err, FACET_EINPUT, "--sort: too long");
