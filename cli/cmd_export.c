@@ -137,7 +137,9 @@ static int export_main(int argc, char **argv, struct facet_error *err)
         report_schedule_csv(file[FILE_CSV].out, &panels, &totals);
     if (rc == FACET_OK && out.json) {
         struct report_source source = {info.surface_path, info.units,
-                                       totals.area, 0, "", info.per_panel};
+                                       info.surface_area,
+                                       (size_t)info.triangles,
+                                       info.uv_method, info.per_panel};
         report_json(file[FILE_JSON].out, &source, &classify, &panels,
                     &totals);
     }

@@ -60,8 +60,8 @@ static int show_main(int argc, char **argv, struct facet_error *err)
         classify.threshold = row.threshold_mm / 1000;
         if (json) {
             struct report_source source = {
-                info.surface_path, info.units, totals.area, 0, "",
-                info.per_panel,
+                info.surface_path, info.units, info.surface_area,
+                (size_t)info.triangles, info.uv_method, info.per_panel,
             };
             report_json(stdout, &source, &classify, &panels, &totals);
         } else {

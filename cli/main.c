@@ -47,7 +47,8 @@ int main(int argc, char **argv)
     struct facet_error err;
     facet_error_clear(&err);
     int status = cmd->run(argc - 1, argv + 1, &err);
-    if (status != 0) {
+    /* 130 (interrupted) is not a failure: the command said what it did. */
+    if (status != 0 && status != 130) {
         fflush(stdout);
         fprintf(stderr, "facet: %s\n",
                 err.message[0] ? err.message : "failed");

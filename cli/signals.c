@@ -18,6 +18,9 @@ void signals_catch_stop(void)
     struct sigaction action;
     memset(&action, 0, sizeof action);
     action.sa_handler = on_stop;
+    /* A signal must not fail a system call under SQLite or a file write
+     * with EINTR: the stop is honoured between batches. */
+    action.sa_flags = SA_RESTART;
     sigemptyset(&action.sa_mask);
     sigaction(SIGINT, &action, NULL);
     sigaction(SIGTERM, &action, NULL);

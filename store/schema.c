@@ -27,6 +27,7 @@ static const char schema_v1[] =
     " elapsed REAL NOT NULL DEFAULT 0,"
     " surface_path TEXT NOT NULL,"
     " surface_sha256 TEXT NOT NULL,"
+    " surface_area REAL, triangles INTEGER, uv_method TEXT,"
     " units TEXT NOT NULL,"
     " object TEXT,"
     " group_name TEXT,"
@@ -361,12 +362,17 @@ int store_check(struct store *store, struct facet_error *err)
         return rc;
     int step = sqlite3_step(stmt);
     if (step == SQLITE_ROW) {
-        const char *verdict = (const char *)sqlite3_column_text(stmt, 0);
-        if (verdict == NULL || strcmp(verdict, "ok") != 0)
+        const char *text = (const char *)sqlite3_column_text(stmt, 0);
+        char verdict[200];
+        snprintf(verdict, sizeof verdict, "%s", text ? text : "no verdict");
+        /* SQLite's verdict spans lines; the error is one. */
+        for (char *c = verdict; *c != '\0'; c++)
+            if (*c == '\n')
+                *c = ' ';
+        if (strcmp(verdict, "ok") != 0)
             rc = facet_error_set(err, FACET_EINPUT,
-                "%s: the database is damaged (%.200s); the file is damaged "
-                "or not a Facet database", store->path,
-                verdict ? verdict : "no verdict");
+                "%s: the database is damaged (%s); restore it from a copy "
+                "or use a new file", store->path, verdict);
     } else {
         rc = store_fail(store, "checking the file", err);
     }
@@ -379,6 +385,17 @@ void store_close(struct store *store)
     if (store == NULL)
         return;
     sqlite3_finalize(store->option_insert);
+    /* Closing the last connection would checkpoint and delete the WAL
+     * under an exclusive lock, failing a reader without a busy timeout
+     * (sqlite3 on the command line) that opens the file at that moment.
+     * A passive checkpoint moves everything into the main file without
+     * blocking anyone, and the WAL file stays. */
+    if (store->db != NULL) {
+        sqlite3_wal_checkpoint_v2(store->db, NULL, SQLITE_CHECKPOINT_PASSIVE,
+                                  NULL, NULL);
+        sqlite3_db_config(store->db, SQLITE_DBCONFIG_NO_CKPT_ON_CLOSE, 1,
+                          NULL);
+    }
     sqlite3_close(store->db);
     free(store->path);
     free(store);

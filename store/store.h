@@ -31,6 +31,9 @@ struct run_info {
     char name[128];
     char surface_path[1024];
     char surface_sha256[65];   /* hex digest of the OBJ file's bytes */
+    double surface_area;       /* m^2 of the selected part */
+    int64_t triangles;         /* after triangulation */
+    char uv_method[12];        /* "vt", "plane" or "harmonic" */
     char units[4];             /* m, cm, mm, in, ft */
     char method[16];           /* exhaustive, random, nsga2 */
     uint64_t seed;

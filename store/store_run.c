@@ -22,7 +22,8 @@
     " coalesce(evaluations, 0), jobs, version, options," \
     " coalesce(writer_pid, 0), coalesce(writer_host, '')," \
     " hypervolume, coalesce(knee, 0), coalesce(pareto_options, 0)," \
-    " best_cost"
+    " best_cost, coalesce(surface_area, 0), coalesce(triangles, 0)," \
+    " coalesce(uv_method, '')"
 
 static void copy_text(char *to, size_t size, sqlite3_stmt *stmt, int col)
 {
@@ -80,6 +81,9 @@ static void run_from_row(sqlite3_stmt *s, struct run_info *r)
     r->knee = sqlite3_column_int64(s, c++);
     r->pareto_options = sqlite3_column_int64(s, c++);
     r->best_cost = column_or_nan(s, c++);
+    r->surface_area = sqlite3_column_double(s, c++);
+    r->triangles = sqlite3_column_int64(s, c++);
+    copy_text(r->uv_method, sizeof r->uv_method, s, c++);
 }
 
 static void bind_text_or_null(sqlite3_stmt *s, int col, const char *text)
@@ -101,10 +105,10 @@ int store_run_create(struct store *store, struct run_info *r,
         " threshold_step_mm, price_fp, price_sp, price_dp, sp_as_fp,"
         " max_panel_area_limit, curvature_tol, per_panel, flip_normals,"
         " objectives, population, generations, evaluations, jobs, version,"
-        " writer_pid, writer_host)"
+        " writer_pid, writer_host, surface_area, triangles, uv_method)"
         " VALUES (?1, 'running', ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10, ?11,"
         " ?12, ?13, ?14, ?15, ?16, ?17, ?18, ?19, ?20, ?21, ?22, ?23, ?24,"
-        " ?25, ?26, ?27, ?28, ?29, ?30, ?31, ?32)",
+        " ?25, ?26, ?27, ?28, ?29, ?30, ?31, ?32, ?33, ?34, ?35)",
         &s, "creating a run", err);
     if (rc != FACET_OK)
         return rc;
@@ -149,6 +153,9 @@ int store_run_create(struct store *store, struct run_info *r,
     sqlite3_bind_text(s, 30, FACET_VERSION, -1, SQLITE_STATIC);
     sqlite3_bind_int64(s, 31, r->writer_pid);
     sqlite3_bind_text(s, 32, r->writer_host, -1, SQLITE_TRANSIENT);
+    sqlite3_bind_double(s, 33, r->surface_area);
+    sqlite3_bind_int64(s, 34, r->triangles);
+    sqlite3_bind_text(s, 35, r->uv_method, -1, SQLITE_TRANSIENT);
     if (sqlite3_step(s) != SQLITE_DONE)
         rc = store_fail(store, "creating a run", err);
     else

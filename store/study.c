@@ -356,6 +356,10 @@ int study_start(struct store *store, const struct study_request *request,
     }
     snprintf(run.units, sizeof run.units, "%s",
              mesh_units_name(request->mesh.units));
+    run.surface_area = surface.mesh.area;
+    run.triangles = (int64_t)surface.mesh.ntriangles;
+    snprintf(run.uv_method, sizeof run.uv_method, "%s",
+             param_method_name(surface.param.method));
     snprintf(run.method, sizeof run.method, "%s",
              optimize_method_name(s->method));
     run.seed = s->seed;
