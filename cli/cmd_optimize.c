@@ -5,6 +5,7 @@
  * paper's Table 2 for the run at the end. The work is store/study.h's; this
  * file parses the design space and reports.
  */
+#include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -252,6 +253,15 @@ static int optimize_main(int argc, char **argv, struct facet_error *err)
         request.name = name ? name : "";
     }
 
+    /* A surface that cannot be read is refused before the database is
+     * created or touched. */
+    if (!resume) {
+        FILE *surface = fopen(request.surface_path, "rb");
+        if (surface == NULL)
+            return facet_error_set(err, FACET_EINPUT, "%s: cannot open: %s",
+                                   request.surface_path, strerror(errno));
+        fclose(surface);
+    }
     struct store *store;
     if ((rc = store_open(db, &store, err)) != FACET_OK)
         return rc;

@@ -102,6 +102,8 @@ static int options_main(int argc, char **argv, struct facet_error *err)
         return rc;
     if (limit && (rc = args_int(limit, 1, 1L << 62, "--limit", &rows, err)))
         return rc;
+    if ((rc = store_options_sort_check(sort, err)))
+        return rc;
     struct filter *filter = NULL;
     if (where && (rc = filter_compile(where, &filter, err)))
         return rc;

@@ -179,6 +179,10 @@ int store_options_query(struct store *store, const struct option_query *q,
                                    const struct option_row *option),
                         void *context, struct facet_error *err);
 
+/* Checks a sort list ("cost,dp_area") as store_options_query would, so a
+ * caller can refuse it before printing anything. */
+int store_options_sort_check(const char *sort, struct facet_error *err);
+
 /* The option columns a filter or sort may name, NULL-terminated:
  * number, generation, nu, nv, threshold_mm, panels, fp_count, sp_count,
  * dp_count, fp_area, sp_area, dp_area, area, cost, planarity,

@@ -344,6 +344,12 @@ static int order_by(const char *sort, int descending, char *sql,
     return FACET_OK;
 }
 
+int store_options_sort_check(const char *sort, struct facet_error *err)
+{
+    char sql[2048] = "";
+    return order_by(sort, 0, sql, sizeof sql, err);
+}
+
 int store_options_query(struct store *store, const struct option_query *q,
                         int (*row)(void *context, int64_t run,
                                    const struct option_row *option),
