@@ -29,13 +29,15 @@
 /* The SQL expression that orders by column, or NULL when column is not a
  * sortable option column. The expressions give what an option_row read
  * by store_option_get holds, so keyset values compare alike: rank is NULL
- * until a run is ranked (reads as 0) and crowding NULL at a front's ends
- * (reads as +infinity, which SQLite writes 1e999). */
+ * until a run is ranked (0 in a row); crowding is NULL at a front's ends,
+ * infinity in a row of a ranked option (1e999 is SQLite's infinity, equal
+ * to a bound INFINITY) and 0 in an unranked one. */
 static const char *key_expr(const char *column)
 {
     static const char *const special[][2] = {
         {"rank", "ifnull(\"rank\", 0)"},
-        {"crowding", "ifnull(\"crowding\", 1e999)"},
+        {"crowding", "ifnull(\"crowding\", CASE WHEN ifnull(\"rank\", 0) > 0"
+                     " THEN 1e999 ELSE 0 END)"},
     };
     for (size_t k = 0; k < sizeof special / sizeof special[0]; k++)
         if (strcmp(column, special[k][0]) == 0)
@@ -117,7 +119,7 @@ static int check_keys(const struct option_browse *b, struct facet_error *err)
 }
 
 /* Appends "FROM options WHERE run = ?1 [AND rank = 1] AND (filter)". */
-static void add_where(struct sql_text *s, const struct option_browse *b)
+static void add_from(struct sql_text *s, const struct option_browse *b)
 {
     sql_add(s, " FROM options WHERE run = ?1%s",
             b->pareto_only ? " AND rank = 1" : "");
@@ -260,7 +262,7 @@ int store_browse_page(struct store *store, const struct option_browse *b,
         return rc;
     struct sql_text s = {0};
     sql_add(&s, "SELECT number");
-    add_where(&s, b);
+    add_from(&s, b);
     if (after != NULL)
         add_keyset(&s, b, backward);
     add_order(&s, b, backward);
@@ -285,7 +287,7 @@ int store_browse_offset(struct store *store, const struct option_browse *b,
         return rc;
     struct sql_text s = {0};
     sql_add(&s, "SELECT number");
-    add_where(&s, b);
+    add_from(&s, b);
     add_order(&s, b, 0);
     sql_add(&s, " LIMIT ?2 OFFSET ?3");
     sqlite3_stmt *stmt;
@@ -327,7 +329,7 @@ int store_browse_count(struct store *store, const struct option_browse *b,
     *count = 0;
     struct sql_text s = {0};
     sql_add(&s, "SELECT count(*)");
-    add_where(&s, b);
+    add_from(&s, b);
     sqlite3_stmt *stmt;
     int rc = prepare(store, &s, b, NULL, &stmt, "counting options", err);
     if (rc != FACET_OK)
@@ -347,7 +349,7 @@ int store_browse_position(struct store *store,
         return rc;
     struct sql_text s = {0};
     sql_add(&s, "SELECT count(*)");
-    add_where(&s, b);
+    add_from(&s, b);
     add_keyset(&s, b, 1);
     sqlite3_stmt *stmt;
     rc = prepare(store, &s, b, option, &stmt, "locating an option", err);
@@ -369,7 +371,7 @@ int store_browse_range(struct store *store, const struct option_browse *b,
     key_sql(column, expr, sizeof expr);
     struct sql_text s = {0};
     sql_add(&s, "SELECT min(%s), max(%s)", expr, expr);
-    add_where(&s, b);
+    add_from(&s, b);
     sqlite3_stmt *stmt;
     int rc = prepare(store, &s, b, NULL, &stmt, "measuring options", err);
     if (rc != FACET_OK)
@@ -385,7 +387,7 @@ int store_browse_sample(struct store *store, const struct option_browse *b,
 {
     struct sql_text s = {0};
     sql_add(&s, "SELECT number");
-    add_where(&s, b);
+    add_from(&s, b);
     sql_add(&s, " AND (?3 <= 1 OR number %% ?3 = 0 OR rank = 1)"
                 " ORDER BY number LIMIT ?2");
     sqlite3_stmt *stmt;

@@ -43,11 +43,13 @@ static void compare_draw(struct tui_screen *base, struct tui_app *app,
         cw = 26;
     tui_fill(1, 0, width, tui_attr(ROLE_HEADER));
     tui_put(1, 0, lw, tui_attr(ROLE_HEADER), " metric");
-    for (int k = 0; k < s->n; k++)
-        tui_putf(1, lw + 6 + k * cw, cw, tui_attr(ROLE_HEADER), "%*s%lld",
-                 cw - 1 - (int)snprintf(NULL, 0, "%lld",
-                                        (long long)s->options[k].number),
-                 "No. ", (long long)s->options[k].number);
+    for (int k = 0; k < s->n; k++) {
+        char title[32];
+        snprintf(title, sizeof title, "No. %lld",
+                 (long long)s->options[k].number);
+        tui_putf(1, lw + 6 + k * cw, cw, tui_attr(ROLE_HEADER), "%*s",
+                 cw - 1, title);
+    }
     int rows = height - 2;
     if (s->top > tui_metric_column_count - rows)
         s->top = tui_metric_column_count - rows > 0

@@ -167,17 +167,16 @@ static int detail_lines(const struct option_row *o, char lines[][160])
     tui_fmt_number(sc, sizeof sc, t->cost_of[TYPE_SP], 0, 1);
     tui_fmt_number(dc, sizeof dc, t->cost_of[TYPE_DP], 0, 1);
     tui_fmt_number(area, sizeof area, t->area, 1, 1);
-    snprintf(lines[0], 160, "No. %lld: %d x %d, t %.2f mm, %zu panels "
-             "(FP %zu, SP %zu, DP %zu), rank %d%s, %s",
-             (long long)o->number, o->nu, o->nv, o->threshold_mm, t->panels,
-             t->count[TYPE_FP], t->count[TYPE_SP], t->count[TYPE_DP],
-             o->rank, o->knee ? " (knee)" : "",
-             t->feasible ? "feasible" : "infeasible");
+    snprintf(lines[0], 160, "No. %lld: %d x %d, t %.2f mm, rank %d%s, %s, "
+             "largest panel %.2f m^2", (long long)o->number, o->nu, o->nv,
+             o->threshold_mm, o->rank, o->knee ? " (knee)" : "",
+             t->feasible ? "feasible" : "infeasible", t->max_panel_area);
     snprintf(lines[1], 160, "cost %s USD = FP %s + SP %s + DP %s", cost, fc,
              sc, dc);
-    snprintf(lines[2], 160, "area %s m^2: FP %.1f, SP %.1f, DP %.1f; "
-             "largest panel %.2f m^2", area, t->area_of[TYPE_FP],
-             t->area_of[TYPE_SP], t->area_of[TYPE_DP], t->max_panel_area);
+    snprintf(lines[2], 160, "%zu panels, %s m^2: FP %zu %.1f, SP %zu %.1f, "
+             "DP %zu %.1f m^2", t->panels, area, t->count[TYPE_FP],
+             t->area_of[TYPE_FP], t->count[TYPE_SP], t->area_of[TYPE_SP],
+             t->count[TYPE_DP], t->area_of[TYPE_DP]);
     snprintf(lines[3], 160, "planarity %.4f m, max deviation %.4f m, "
              "P_dist %.3g m^4, crowding %.3g", t->planarity,
              t->max_deviation, t->p_dist, o->crowding);

@@ -269,6 +269,8 @@ static void scatter_draw(struct tui_screen *base, struct tui_app *app,
 static void cycle(struct scatter_screen *s, int a, int dir)
 {
     s->axis[a] = (s->axis[a] + dir + AXES) % AXES;
+    if (a < 2 && s->axis[a] == s->axis[1 - a])  /* not the other axis */
+        s->axis[a] = (s->axis[a] + dir + AXES) % AXES;
     int64_t number = s->n ? s->points[s->cursor].number : 0;
     compute(s);
     cursor_to(s, number);

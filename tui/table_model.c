@@ -182,6 +182,35 @@ int table_model_shows(const struct table_model *m,
     return filter_match(m->filter, option_value, (void *)option);
 }
 
+/* Fills the window with the pages before and after keep, which is at
+ * position: by keyset from a row, so a jump deep into a filtered table
+ * costs a page, not an OFFSET scan. */
+static int window_around(struct table_model *m, const struct option_row *keep,
+                         int64_t position, struct facet_error *err)
+{
+    struct batch *b = malloc(sizeof *b);
+    if (b == NULL)
+        return facet_error_set(err, FACET_EWORK, "out of memory");
+    b->n = 0;
+    m->fetches++;
+    int rc = store_browse_page(m->store, &m->browse, keep, 1, TABLE_PAGE,
+                               collect, b, err);
+    if (rc == FACET_OK) {
+        window_set(m, b, 1, position - b->n);
+        m->rows[m->nrows++] = *keep;
+        b->n = 0;
+        m->fetches++;
+        rc = store_browse_page(m->store, &m->browse, keep, 0, TABLE_PAGE,
+                               collect, b, err);
+    }
+    if (rc == FACET_OK)
+        window_append(m, b);
+    else
+        m->nrows = 0;
+    free(b);
+    return rc;
+}
+
 /* Counts again, empties the window, and selects keep (an option) at its
  * new position when the model shows it, else position fallback. */
 static int reload(struct table_model *m, const struct option_row *keep,
@@ -198,6 +227,9 @@ static int reload(struct table_model *m, const struct option_row *keep,
     if (keep != NULL && table_model_shows(m, keep)) {
         rc = store_browse_position(m->store, &m->browse, keep, &position,
                                    err);
+        if (rc != FACET_OK)
+            return rc;
+        rc = window_around(m, keep, position, err);
         if (rc != FACET_OK)
             return rc;
     }

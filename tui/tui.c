@@ -264,8 +264,10 @@ static void draw_help(struct tui_app *app, int height, int width)
         app->help_top = lines - visible > 0 ? lines - visible : 0;
     for (int y = 0; y < h; y++)
         tui_fill(y0 + y, x0, w, tui_attr(ROLE_NORMAL));
-    tui_putf(y0, x0, w, tui_attr(ROLE_TITLE), " Help: %s keys%*s",
-             s->cls->name, w, "");
+    tui_fill(y0, x0, w, tui_attr(ROLE_TITLE));
+    tui_putf(y0, x0, w, tui_attr(ROLE_TITLE),
+             " Help: %s keys (j/k scroll, any other key closes)",
+             s->cls->name);
     int row = 0, y = y0 + 2;
     for (int k = 0; k < 2; k++) {
         if (k == 1) {

@@ -1,0 +1,198 @@
+#!/usr/bin/env bash
+# End-to-end: facet tui driven in tmux (send-keys, capture-pane) at 80x24
+# and 200x60: open a database made by facet optimize, sort, filter (and a
+# bad filter), toggle Pareto, jump to the knee, help, scatter, panel map,
+# compare, resize, delete (answering no), a New run watched to the end,
+# ASCII fallback, SIGTERM and quit, the terminal given back every time.
+# Every step polls the captured screen (no fixed sleeps); every tmux
+# server this script starts is killed on exit.
+. "$(dirname "$0")/lib.sh"
+
+if ! command -v tmux >/dev/null; then
+    echo "ok - tmux is not installed (skipped)"
+    exit 0
+fi
+# Each session gets its own tmux server (facet_test_PID_N): reusing one
+# right after kill-server races the old server's exit. All are killed, and
+# their sockets removed, on exit.
+SESSIONS=0
+SOCKET=
+TMUX_CMD=(true)
+end_session() {
+    [ -n "$SOCKET" ] || return 0
+    "${TMUX_CMD[@]}" kill-server 2>/dev/null
+    rm -f "${TMUX_TMPDIR:-/tmp}/tmux-$(id -u)/$SOCKET"
+    SOCKET=
+}
+trap 'end_session; rm -rf "$WORK"' EXIT
+# A sanitizer build is slower: give every step up to 30 s.
+POLLS=${TUI_POLLS:-600}
+
+"$FACET" example roof --res 40 -o "$WORK/roof.obj" || exit 1
+"$FACET" optimize "$WORK/roof.obj" --db "$WORK/t.db" --u 4:8 --v 4:8 \
+    --threshold 2:4:1 >/dev/null 2>&1 || exit 1
+
+# start W H ENV... -- ARGS...: facet tui ARGS in a fresh session; its exit
+# status goes to $WORK/exit, its pid to $WORK/pid.
+start() {
+    local w=$1 h=$2
+    shift 2
+    local env=()
+    while [ "$1" != -- ]; do env+=("$1"); shift; done
+    shift
+    rm -f "$WORK/exit" "$WORK/pid"
+    end_session
+    SESSIONS=$((SESSIONS + 1))
+    SOCKET=facet_test_$$_$SESSIONS
+    TMUX_CMD=(tmux -L "$SOCKET" -f /dev/null)
+    "${TMUX_CMD[@]}" new-session -d -x "$w" -y "$h" \
+        "cd '$WORK' && env TERM=xterm-256color ${env[*]} sh -c 'echo \$\$ > pid; exec \"\$0\" tui \"\$@\"' '$FACET' $* 2>'$WORK/tui.err'; echo \$? > '$WORK/exit'; echo EXITED; sleep 600"
+}
+screen() { "${TMUX_CMD[@]}" capture-pane -p; }
+keys() { "${TMUX_CMD[@]}" send-keys "$@"; }
+
+# wait_for PATTERN: polls the screen until it matches (grep -E).
+wait_for() {
+    local i=0
+    while [ $i -lt $POLLS ]; do
+        if screen | grep -qE -- "$1"; then return 0; fi
+        sleep 0.05
+        i=$((i + 1))
+    done
+    return 1
+}
+# check NAME PATTERN: passes when the screen comes to match PATTERN.
+check() {
+    if wait_for "$2"; then
+        pass "$1"
+    else
+        echo "not ok - $1 (screen lacks: $2)"
+        screen | sed 's/^/  screen: /'
+    fi
+}
+# check_exit NAME: facet tui ended with status 0, nothing on stderr, and
+# the terminal is out of the alternate screen.
+check_exit() {
+    local i=0
+    while [ ! -s "$WORK/exit" ] && [ $i -lt $POLLS ]; do sleep 0.05; i=$((i + 1)); done
+    local alt
+    alt=$("${TMUX_CMD[@]}" display -p '#{alternate_on}' 2>/dev/null)
+    if [ "$(cat "$WORK/exit" 2>/dev/null)" = 0 ] && [ ! -s "$WORK/tui.err" ] &&
+        [ "$alt" = 0 ]; then
+        pass "$1"
+    else
+        echo "not ok - $1 (exit '$(cat "$WORK/exit" 2>/dev/null)', alternate screen '$alt')"
+        sed 's/^/  stderr: /' "$WORK/tui.err" | head -n 20
+    fi
+}
+
+# --- 80x24: the whole tour ---
+start 80 24 -- t.db
+check "runs screen lists the run" '^ +1 done +exhaustive +75 +3 .*roof\.obj'
+check "runs screen has the function-key bar" 'F1Help.*F10Quit'
+keys Enter
+check "Enter opens the options table" '^ Run 1 roof\.obj \| exhaustive \| done \| 75 options, 3 Pareto, knee 73'
+check "header with units" 'No\. P planarity +DP area +cost +FP area +SP area +U +V +t +ok rank'
+check "sorted by cost, cheapest first" '^ 75 shown +sort cost asc +filter none'
+check "first row is the cheapest option" '^ +73 .* 2\.522 +826\.2 +1,551,317 +296\.7 +116\.4 +8 +8 +2\.00 +no +1$'
+check "detail pane shows the selected option" 'No\. 73: 8 x 8, t 2\.00 mm, rank 1 \(knee\), infeasible, largest panel 20\.74 m\^2'
+keys h h s g
+check "s sorts by the cursor's column; the old key becomes second" 'sort planarity asc, then cost asc '
+check "planarity ascending puts a 0.000 first" '^ +[0-9]+ +0\.000 '
+keys s g
+check "s again reverses it" 'sort planarity desc, then cost asc '
+check "descending starts at the largest planarity" '^ +7[345] .* 2\.522 '
+keys l S
+check "S sets the secondary key" 'sort planarity desc, then dp_area asc'
+keys l s
+check "the old primary becomes the secondary" 'sort cost asc, then planarity desc'
+keys / 'cost < 1.56M' Enter
+check "filter line filters" '^ 6 shown .* filter cost < 1560000'
+keys / C-u 'cost < 2M and dp_aera > 1' Enter
+check "a bad filter names the column in the status line" "filter: column 15: unknown column 'dp_aera' \(did you mean dp_area\?\)"
+check "a bad filter keeps the old one" '^ 6 shown .* filter cost < 1560000'
+keys / C-u Enter
+check "an empty filter shows every option" '^ 75 shown .* filter none'
+keys p
+check "p shows Pareto-optimal options only" '^ 3 shown .*Pareto only'
+keys p G
+check "p again shows them all" '^ 75 shown .*filter none *$'
+keys K
+check "K jumps to the knee" 'knee option 73'
+keys '?'
+check "? lists the screen's keys" 'Help: Options keys'
+check "help names the sort key" 's, F6 +sort by the cursor'
+keys q
+check "any key closes help" '^ 75 shown'
+keys x
+check "x opens the scatter (planarity vs cost)" '^ Scatter: cost vs planarity, size dp_area \| 75 points'
+check "scatter cursor starts on the table's selection" '^ No\. 73 +planarity 2\.5217 +cost 1,551,317'
+keys Left
+check "the scatter cursor moves point to point" '^ No\. (7[0-2]) +planarity 2\.1'
+keys x
+check "x changes the x metric" '^ Scatter: cost vs dp_area'
+keys q
+check "the table follows the scatter's cursor" 'No\. 7[0-2]: 8 x 7'
+keys K Enter
+check "Enter opens the panel map" '^ Panel map: option 73 of run 1 \| grid 8 x 8 \| t 2\.00 mm \| by type'
+check "legend by type with counts and areas" 'FP +16 +296\.7'
+check "the cursor's panel is described" 'class flat +type FP +area [0-9.]+ m\^2'
+keys l l j
+check "the cursor moves over panels" 'Panel \(2, 6\)'
+check "a panel shows k1, k2, K, H and deviation" 'k1 [-0-9.e]+ +k2 [-0-9.e]+ 1/m +K [-0-9.e]+ 1/m\^2 +H [-0-9.e]+ 1/m +deviation'
+keys c
+check "c colours by class" 'by class'
+check "class legend" 'concave feature +40 '
+keys q g Space Space c
+check "Space marks and c compares" '^ Compare 2 options of run 1'
+check "compare shows differences to the first" 'cost +USD +1,551,317 +1,551,317'
+keys q
+"${TMUX_CMD[@]}" resize-window -x 200 -y 60
+check "resize to 200x60 shows the side pane" 'Selected option.*'
+check "the side pane lists every metric" 'max panel area +20\.74 m\^2'
+"${TMUX_CMD[@]}" resize-window -x 80 -y 24
+check "back at 80x24 the bottom pane returns" '^ No\. [0-9]+: '
+keys q
+check "q goes back to the runs" '^ Facet runs'
+keys d
+check "d asks before deleting" 'Delete run 1 with its options and panels\? \(y/n\)'
+keys n
+check "n keeps the run" 'run 1 kept'
+keys F10
+check_exit "F10 quits with status 0 and the terminal restored"
+
+# --- 200x60 from the start, ended by SIGTERM ---
+start 200 60 -- t.db
+check "200x60: runs screen shows the start time" 'started'
+keys Enter
+check "200x60: options table with the side pane" '^ +73 .* 1,551,317 .* Selected option|Selected option'
+check "200x60: every row fits" '^ +1 +0\.000 +942\.6 +1,638,833'
+i=0; while [ ! -s "$WORK/pid" ] && [ $i -lt $POLLS ]; do sleep 0.05; i=$((i + 1)); done
+kill -TERM "$(cat "$WORK/pid")"
+check_exit "SIGTERM ends it with the terminal restored"
+
+# --- ASCII and monochrome ---
+start 80 24 LC_ALL=C NO_COLOR=1 -- t.db
+keys Enter
+check "ASCII locale: plain Pareto marks" '^ +74 \* +2\.522'
+check "ASCII locale: plain sort arrow" '\^USD'
+keys F10
+check_exit "ASCII session quits cleanly"
+
+# --- facet tui SURFACE.obj: the New run form, run watched to the end ---
+rm -f "$WORK/facet.db"
+start 80 24 -- roof.obj
+check "SURFACE.obj opens the New run form" '^ New run into facet\.db'
+check "the form holds the surface" 'Surface \(OBJ\) +roof\.obj'
+keys Down C-u 4:5 Down C-u 4:6 F5
+check "F5 starts the run and opens its table" '^ Run 1 roof\.obj \| exhaustive'
+check "the run is watched to the end" '^ Run 1 roof\.obj \| exhaustive \| done \| 6 options'
+check "its options fill the table" '^ 6 shown'
+keys Escape Escape
+check "Esc goes back to the runs" '^ Facet runs +facet\.db +\(1 run\)'
+keys F10
+check_exit "quits after a New run"
+
+# --- without a terminal ---
+expect_error "tui without a terminal is refused" 'needs a terminal' \
+    "$FACET" tui "$WORK/t.db"
