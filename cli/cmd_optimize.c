@@ -22,53 +22,6 @@
 /* The largest space the exhaustive method takes by default. */
 #define EXHAUSTIVE_DEFAULT_LIMIT 100000
 
-/* Parses "A:B" (or "A") into an inclusive integer range. */
-static int parse_int_range(const char *text, const char *what, int *lo,
-                           int *hi, struct facet_error *err)
-{
-    char extra;
-    if (sscanf(text, "%d:%d%c", lo, hi, &extra) == 2)
-        return FACET_OK;
-    if (sscanf(text, "%d%c", lo, &extra) == 1) {
-        *hi = *lo;
-        return FACET_OK;
-    }
-    return facet_error_set(err, FACET_EINPUT,
-        "%s: '%s' is not a range A:B of whole numbers (e.g. 20:40)", what,
-        text);
-}
-
-/* Parses "MM", "A:B" or "A:B:STEP" (mm). */
-static int parse_threshold(const char *text, struct design_space *space,
-                           struct facet_error *err)
-{
-    char copy[128];
-    if (snprintf(copy, sizeof copy, "%s", text) >= (int)sizeof copy)
-        return facet_error_set(err, FACET_EINPUT, "--threshold: too long");
-    double value[3] = {0, 0, 0};
-    int n = 0;
-    char *rest = copy, *field;
-    while ((field = strsep(&rest, ":")) != NULL) {
-        if (n == 3)
-            return facet_error_set(err, FACET_EINPUT,
-                "--threshold: '%s' is not MM, A:B or A:B:STEP", text);
-        int rc = args_double(field, 0, 1e6, "--threshold", &value[n++], err);
-        if (rc != FACET_OK)
-            return rc;
-    }
-    space->t_min_mm = value[0];
-    space->t_max_mm = n >= 2 ? value[1] : value[0];
-    space->t_step_mm = n == 3 ? value[2] : 0;
-    if (space->t_max_mm < space->t_min_mm)
-        return facet_error_set(err, FACET_EINPUT,
-            "--threshold: %g:%g runs backwards", space->t_min_mm,
-            space->t_max_mm);
-    if (n == 3 && !(space->t_step_mm > 0))
-        return facet_error_set(err, FACET_EINPUT,
-            "--threshold: the step of '%s' must be above 0", text);
-    return FACET_OK;
-}
-
 /* --- what the user sees while it runs --- */
 
 struct optimize_view {
@@ -93,9 +46,10 @@ static void show_progress(void *context, int64_t done, int64_t total)
         progress_start(&view->bar, "options", done);
         view->bar_started = 1;
     }
-    progress_update(&view->bar, done, total);
     if (done >= total)
         progress_finish(&view->bar, done, total);
+    else
+        progress_update(&view->bar, done, total);
 }
 
 static int stop_requested(void *context)
@@ -123,13 +77,14 @@ static int parse_search(const struct search_flags *f,
     int rc;
     long number;
     s->space = (struct design_space){20, 40, 35, 50, 3, 3, 0};
-    if (f->u && (rc = parse_int_range(f->u, "--u", &s->space.u_min,
+    if (f->u && (rc = design_space_parse_sides(f->u, "--u", &s->space.u_min,
                                       &s->space.u_max, err)))
         return rc;
-    if (f->v && (rc = parse_int_range(f->v, "--v", &s->space.v_min,
+    if (f->v && (rc = design_space_parse_sides(f->v, "--v", &s->space.v_min,
                                       &s->space.v_max, err)))
         return rc;
-    if (f->threshold && (rc = parse_threshold(f->threshold, &s->space, err)))
+    if (f->threshold &&
+        (rc = design_space_parse_threshold(f->threshold, &s->space, err)))
         return rc;
     if ((rc = design_space_check(&s->space, err)))
         return rc;

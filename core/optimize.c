@@ -7,6 +7,7 @@
 
 #include <math.h>
 #include <pthread.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -50,6 +51,57 @@ uint64_t design_space_size(const struct design_space *s)
 {
     return (uint64_t)(s->u_max - s->u_min + 1) *
            (uint64_t)(s->v_max - s->v_min + 1) * threshold_steps(s);
+}
+
+int design_space_parse_sides(const char *text, const char *what, int *lo,
+                             int *hi, struct facet_error *err)
+{
+    char extra;
+    if (sscanf(text, "%d:%d%c", lo, hi, &extra) == 2)
+        return FACET_OK;
+    if (sscanf(text, "%d%c", lo, &extra) == 1) {
+        *hi = *lo;
+        return FACET_OK;
+    }
+    return facet_error_set(err, FACET_EINPUT,
+        "%s: '%s' is not a range A:B of whole numbers (e.g. 20:40)", what,
+        text);
+}
+
+int design_space_parse_threshold(const char *text,
+                                 struct design_space *space,
+                                 struct facet_error *err)
+{
+    double value[3] = {0, 0, 0};
+    int n = 0;
+    const char *p = text;
+    for (;;) {
+        char *end;
+        if (n == 3)
+            return facet_error_set(err, FACET_EINPUT,
+                "--threshold: '%s' is not MM, A:B or A:B:STEP", text);
+        value[n] = strtod(p, &end);
+        if (end == p || !isfinite(value[n]) || value[n] < 0 ||
+            value[n] > 1e6 || (*end != ':' && *end != '\0'))
+            return facet_error_set(err, FACET_EINPUT,
+                "--threshold: '%s' is not MM, A:B or A:B:STEP (mm, 0 to "
+                "1e6)", text);
+        n++;
+        if (*end == '\0')
+            break;
+        p = end + 1;
+    }
+    space->t_min_mm = value[0];
+    space->t_max_mm = n >= 2 ? value[1] : value[0];
+    space->t_step_mm = n == 3 ? value[2] : 0;
+    if (space->t_max_mm < space->t_min_mm)
+        return facet_error_set(err, FACET_EINPUT,
+            "--threshold: %g:%g runs backwards", space->t_min_mm,
+            space->t_max_mm);
+    if (n == 3 && !(space->t_step_mm > 0))
+        return facet_error_set(err, FACET_EINPUT,
+            "--threshold: the step of '%s' must be above 0", text);
+    return FACET_OK;
 }
 
 int design_space_check(const struct design_space *s, struct facet_error *err)

@@ -84,6 +84,19 @@ int optimize_method_parse(const char *text, enum optimize_method *out,
  * t_min to t_max inclusive, to within a thousandth of a step). */
 uint64_t design_space_size(const struct design_space *space);
 
+/* Parses a grid range as a designer writes it, "20:40" or "30", into
+ * *lo, *hi. what names the field in the error ("--u"). */
+int design_space_parse_sides(const char *text, const char *what, int *lo,
+                             int *hi, struct facet_error *err);
+
+/* Parses a threshold as a designer writes it (mm): "3" (one value), "1:5"
+ * (a continuous range) or "1:5:0.5" (stepped), into space's t_min_mm,
+ * t_max_mm and t_step_mm. FACET_EINPUT for anything else, a backward
+ * range, a negative or non-finite value, or a step that is not above 0. */
+int design_space_parse_threshold(const char *text,
+                                 struct design_space *space,
+                                 struct facet_error *err);
+
 /* Checks ranges (1 <= min <= max <= PANEL_MAX_GRID, finite thresholds
  * >= 0, step >= 0). FACET_EINPUT names the bad range. */
 int design_space_check(const struct design_space *space,

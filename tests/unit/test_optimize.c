@@ -293,6 +293,43 @@ static void test_bad_space(void **state)
     free(log.options);
 }
 
+/* The design space as a designer types it, in the CLI and the TUI alike. */
+static void test_parse_space(void **state)
+{
+    (void)state;
+    struct facet_error err;
+    struct design_space s;
+    int lo, hi;
+    assert_int_equal(design_space_parse_sides("20:40", "--u", &lo, &hi,
+                                              &err), FACET_OK);
+    assert_int_equal(lo, 20);
+    assert_int_equal(hi, 40);
+    assert_int_equal(design_space_parse_sides("30", "--u", &lo, &hi, &err),
+                     FACET_OK);
+    assert_int_equal(lo * 100 + hi, 3030);
+    assert_int_equal(design_space_parse_sides("20:", "--u", &lo, &hi, &err),
+                     FACET_EINPUT);
+    assert_non_null(strstr(err.message, "--u"));
+    assert_int_equal(design_space_parse_sides("2x3", "--v", &lo, &hi, &err),
+                     FACET_EINPUT);
+    assert_int_equal(design_space_parse_threshold("3", &s, &err), FACET_OK);
+    assert_true(s.t_min_mm == 3 && s.t_max_mm == 3 && s.t_step_mm == 0);
+    assert_int_equal(design_space_parse_threshold("1:5", &s, &err),
+                     FACET_OK);
+    assert_true(s.t_min_mm == 1 && s.t_max_mm == 5 && s.t_step_mm == 0);
+    assert_int_equal(design_space_parse_threshold("1:5:0.5", &s, &err),
+                     FACET_OK);
+    assert_true(s.t_step_mm == 0.5);
+    assert_int_equal(design_space_size(&s), 9);
+    const char *bad[] = {"", "x", "5:1", "1:5:0", "1:2:3:4", "-1", "1e9",
+                         "2:", "nan", "1::2"};
+    for (size_t k = 0; k < sizeof bad / sizeof *bad; k++) {
+        assert_int_equal(design_space_parse_threshold(bad[k], &s, &err),
+                         FACET_EINPUT);
+        assert_null(strchr(err.message, '\n'));
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -304,6 +341,7 @@ int main(void)
         cmocka_unit_test(test_resume_nsga2),
         cmocka_unit_test(test_front),
         cmocka_unit_test(test_bad_space),
+        cmocka_unit_test(test_parse_space),
     };
     return cmocka_run_group_tests(tests, setup, teardown);
 }
