@@ -18,8 +18,8 @@ int option_evaluate(const struct surface *surface,
     int rc = classify_check_options(&params->classify, err);
     if (rc != FACET_OK)
         return rc;
-    rc = panels_build(&surface->mesh, &surface->uv, &surface->curvature,
-                      params->mode, params->nu, params->nv, panels, err);
+    rc = panels_build_fast(&surface->panels, params->mode, params->nu,
+                           params->nv, panels, err);
     if (rc != FACET_OK)
         return rc;
     classify_panels(panels, &params->classify, totals);

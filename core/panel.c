@@ -1,12 +1,16 @@
 /*
  * panel.c: clipping the mesh to the UV grid and measuring every panel.
- * See panel.h.
+ * See panel.h; panel_sums.h says what this file shares with panel_fast.c.
  *
- * Two passes over the clipped pieces, which are cheap to recompute and so
- * are never stored: the first sums each panel's area and its first and
- * second moments (for the least-squares plane), the second, once the planes
- * are known, takes the largest distance from the plane, samples curvature
- * and finds the outline's extent.
+ * panels_build is the straightforward measurement: two passes over the
+ * clipped pieces of every triangle, which are cheap to recompute and so are
+ * never stored. The first sums each panel's area and its first and second
+ * moments (for the least-squares plane), the second, once the planes are
+ * known, takes the largest distance from the plane, samples curvature and
+ * finds the outline's extent. panels_build_fast (panel_fast.c) gives the
+ * same panels from per-surface sums and is what option_evaluate uses;
+ * panels_build is the oracle it is tested against. Fitting the planes and
+ * finishing the panels from the two passes' sums is here, for both.
  */
 #include "panel.h"
 
@@ -14,33 +18,11 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "panel_sums.h"
 #include "sym3.h"
 #include "vec3.h"
 
-/* What pass 1 accumulates per cell. Moments are taken about a reference
- * point of the panel, so that surfaces far from the origin (site
- * coordinates) keep their precision. */
-struct cell_sums {
-    double reference[3];
-    int has_reference;
-    double area, uv_area;
-    double first[3];       /* integral of (x - reference) dA */
-    double second[9];      /* integral of (x - r)(x - r)^T dA */
-    double normal_sum[3];  /* area-weighted face normals */
-    /* Pass 2: */
-    int need_outline;          /* trimmed or not all corners on the surface */
-    double extreme_low[13], extreme_high[13];  /* outline extent */
-    double extreme_low_point[13][3], extreme_high_point[13][3];
-    double k1_edge, k2_edge;   /* over samples on mesh vertices and edges */
-    double k1_any, k2_any;     /* over every piece vertex: the fallback */
-    int edge_samples;
-    double shape[9];           /* integral of the shape operator dA */
-};
-
-/* Directions along which the outline's extent is measured: its diameter is
- * the largest distance between the extreme points found, which is within
- * a few percent of the exact diameter and cheap for any panel size. */
-static const double extent_direction[13][3] = {
+const double panel_extent_direction[13][3] = {
     {1, 0, 0}, {0, 1, 0}, {0, 0, 1},
     {1, 1, 0}, {1, -1, 0}, {1, 0, 1}, {1, 0, -1}, {0, 1, 1}, {0, 1, -1},
     {1, 1, 1}, {1, 1, -1}, {1, -1, 1}, {-1, 1, 1},
@@ -90,70 +72,75 @@ static int clip_in_place(struct panel_piece_vertex *poly, int count, int axis,
     return n;
 }
 
-struct grid_walk {
-    const struct mesh *mesh;
-    const struct uv_index *index;
-    int nu, nv;
-    double umin, vmin, du, dv;
-};
-
-static int cell_coordinate(double x, double origin, double step, int count)
+int panel_grid_init(struct panel_grid *g, const struct mesh *mesh,
+                    const struct uv_index *index, int nu, int nv,
+                    struct panelization *out, struct facet_error *err)
 {
-    double f = floor((x - origin) / step);
-    if (!(f > 0))
-        return 0;
-    if (f >= count)
-        return count - 1;
-    return (int)f;
+    memset(out, 0, sizeof *out);
+    if (nu < 1 || nv < 1 || nu > PANEL_MAX_GRID || nv > PANEL_MAX_GRID)
+        return facet_error_set(err, FACET_EINPUT,
+            "grid %dx%d is out of range (each side 1 to %d)", nu, nv,
+            PANEL_MAX_GRID);
+    out->nu = nu;
+    out->nv = nv;
+    out->umin = index->umin;
+    out->vmin = index->vmin;
+    out->umax = index->umax;
+    out->vmax = index->vmax;
+    *g = (struct panel_grid){
+        mesh, index, nu, nv, index->umin, index->vmin,
+        (index->umax - index->umin) / nu, (index->vmax - index->vmin) / nv,
+    };
+    if (!(g->du > 0) || !(g->dv > 0))
+        return facet_error_set(err, FACET_EINPUT,
+            "the UV map has no extent (all texture coordinates equal in u "
+            "or in v)");
+    return FACET_OK;
 }
 
-/* Calls visit for every non-empty piece of every triangle in every cell. The
- * grid's outermost lines are not clipped against, so that no sliver of the
- * surface is lost to rounding at the UV box's edges. */
-static void walk_pieces(const struct grid_walk *g, panel_piece_visitor visit,
-                        void *context)
+/* The grid's outermost lines are not clipped against, so that no sliver of
+ * the surface is lost to rounding at the UV box's edges. */
+void panel_walk_triangle(const struct panel_grid *g, uint32_t t,
+                         panel_piece_visitor visit, void *context)
 {
-    const double *uv = g->index->uv;
-    for (size_t t = 0; t < g->mesh->ntriangles; t++) {
-        const double *c = uv + 6 * t;
-        double u0 = fmin(c[0], fmin(c[2], c[4]));
-        double u1 = fmax(c[0], fmax(c[2], c[4]));
-        double v0 = fmin(c[1], fmin(c[3], c[5]));
-        double v1 = fmax(c[1], fmax(c[3], c[5]));
-        int i0 = cell_coordinate(u0, g->umin, g->du, g->nu);
-        int i1 = cell_coordinate(u1, g->umin, g->du, g->nu);
-        int j0 = cell_coordinate(v0, g->vmin, g->dv, g->nv);
-        int j1 = cell_coordinate(v1, g->vmin, g->dv, g->nv);
-        struct panel_piece_vertex start[3];
-        for (int k = 0; k < 3; k++) {
-            start[k].u = c[2 * k];
-            start[k].v = c[2 * k + 1];
-            start[k].b[0] = start[k].b[1] = start[k].b[2] = 0;
-            start[k].b[k] = 1;
-        }
-        if (i0 == i1 && j0 == j1) {
-            /* Inside one cell: the triangle is its own piece. */
-            visit(context, (size_t)j0 * g->nu + i0, (uint32_t)t, start, 3);
-            continue;
-        }
-        for (int j = j0; j <= j1; j++)
-            for (int i = i0; i <= i1; i++) {
-                struct panel_piece_vertex a[PANEL_PIECE_MAX];
-                int n = 3;
-                memcpy(a, start, sizeof start);
-                /* A side the whole triangle lies within cuts nothing. */
-                if (i > i0)
-                    n = clip_in_place(a, n, 0, g->umin + i * g->du, 1);
-                if (i < i1)
-                    n = clip_in_place(a, n, 0, g->umin + (i + 1) * g->du, -1);
-                if (j > j0)
-                    n = clip_in_place(a, n, 1, g->vmin + j * g->dv, 1);
-                if (j < j1)
-                    n = clip_in_place(a, n, 1, g->vmin + (j + 1) * g->dv, -1);
-                if (n >= 3)
-                    visit(context, (size_t)j * g->nu + i, (uint32_t)t, a, n);
-            }
+    const double *c = g->index->uv + 6 * (size_t)t;
+    double u0 = fmin(c[0], fmin(c[2], c[4]));
+    double u1 = fmax(c[0], fmax(c[2], c[4]));
+    double v0 = fmin(c[1], fmin(c[3], c[5]));
+    double v1 = fmax(c[1], fmax(c[3], c[5]));
+    int i0 = panel_cell_coordinate(u0, g->umin, g->du, g->nu);
+    int i1 = panel_cell_coordinate(u1, g->umin, g->du, g->nu);
+    int j0 = panel_cell_coordinate(v0, g->vmin, g->dv, g->nv);
+    int j1 = panel_cell_coordinate(v1, g->vmin, g->dv, g->nv);
+    struct panel_piece_vertex start[3];
+    for (int k = 0; k < 3; k++) {
+        start[k].u = c[2 * k];
+        start[k].v = c[2 * k + 1];
+        start[k].b[0] = start[k].b[1] = start[k].b[2] = 0;
+        start[k].b[k] = 1;
     }
+    if (i0 == i1 && j0 == j1) {
+        /* Inside one cell: the triangle is its own piece. */
+        visit(context, (size_t)j0 * g->nu + i0, t, start, 3);
+        return;
+    }
+    for (int j = j0; j <= j1; j++)
+        for (int i = i0; i <= i1; i++) {
+            struct panel_piece_vertex a[PANEL_PIECE_MAX];
+            int n = 3;
+            memcpy(a, start, sizeof start);
+            /* A side the whole triangle lies within cuts nothing. */
+            if (i > i0)
+                n = clip_in_place(a, n, 0, g->umin + i * g->du, 1);
+            if (i < i1)
+                n = clip_in_place(a, n, 0, g->umin + (i + 1) * g->du, -1);
+            if (j > j0)
+                n = clip_in_place(a, n, 1, g->vmin + j * g->dv, 1);
+            if (j < j1)
+                n = clip_in_place(a, n, 1, g->vmin + (j + 1) * g->dv, -1);
+            if (n >= 3)
+                visit(context, (size_t)j * g->nu + i, t, a, n);
+        }
 }
 
 void panels_walk_pieces(const struct mesh *mesh,
@@ -161,13 +148,14 @@ void panels_walk_pieces(const struct mesh *mesh,
                         panel_piece_visitor visit, void *context)
 {
     /* The same grid panels_build makes, so the pieces are its pieces. */
-    struct grid_walk grid = {
+    struct panel_grid grid = {
         mesh, index, nu, nv, index->umin, index->vmin,
         (index->umax - index->umin) / nu, (index->vmax - index->vmin) / nv,
     };
     if (nu < 1 || nv < 1 || !(grid.du > 0) || !(grid.dv > 0))
         return;
-    walk_pieces(&grid, visit, context);
+    for (size_t t = 0; t < mesh->ntriangles; t++)
+        panel_walk_triangle(&grid, (uint32_t)t, visit, context);
 }
 
 void panel_piece_point(const struct mesh *mesh, uint32_t t,
@@ -180,151 +168,121 @@ void panel_piece_point(const struct mesh *mesh, uint32_t t,
                  p->b[2] * mesh->position[3 * tri[2] + k];
 }
 
-struct pass_context {
-    const struct grid_walk *grid;
-    const struct curvature *curvature;
-    enum panel_curvature_mode mode;
-    struct cell_sums *sums;
-    struct panelization *out;
+struct moments_context {
+    const struct mesh *mesh;
+    struct cell_moments *sums;
 };
 
 /* Pass 1: area and moments, exact for the planar piece (fanned into
- * triangles; the integral of x x^T over a triangle of area A with corners
- * a, b, c is A/12 (a a^T + b b^T + c c^T + s s^T), s = a + b + c). */
-static void sum_moments(void *context, size_t cell, uint32_t t,
-                        const struct panel_piece_vertex *piece, int count)
+ * triangles about its first vertex). */
+static void sum_piece_moments(void *context, size_t cell, uint32_t t,
+                              const struct panel_piece_vertex *piece,
+                              int count)
 {
-    struct pass_context *pc = context;
-    struct cell_sums *s = &pc->sums[cell];
-    const struct mesh *mesh = pc->grid->mesh;
-    double point[PANEL_PIECE_MAX][3];
-    for (int k = 0; k < count; k++)
+    struct moments_context *mc = context;
+    const struct mesh *mesh = mc->mesh;
+    double origin[3], point[PANEL_PIECE_MAX][3];
+    panel_piece_point(mesh, t, &piece[0], origin);
+    for (int k = 0; k < count; k++) {
         panel_piece_point(mesh, t, &piece[k], point[k]);
-    if (!s->has_reference) {
-        memcpy(s->reference, point[0], sizeof s->reference);
-        s->has_reference = 1;
-    }
-    for (int k = 0; k < count; k++)
         for (int c = 0; c < 3; c++)
-            point[k][c] -= s->reference[c];
-
+            point[k][c] -= origin[c];
+    }
+    struct piece_moments p;
+    memset(&p, 0, sizeof p);
     for (int k = 1; k + 1 < count; k++) {
-        const double *a = point[0], *b = point[k], *c = point[k + 1];
-        double ab[3], ac[3], n[3];
-        for (int x = 0; x < 3; x++) {
-            ab[x] = b[x] - a[x];
-            ac[x] = c[x] - a[x];
-        }
-        vec3_cross(ab, ac, n);
+        double n[3];
+        vec3_cross(point[k], point[k + 1], n);
         double area = 0.5 * sqrt(vec3_dot(n, n));
-        double uv_area = 0.5 * fabs((piece[k].u - piece[0].u) *
-                                    (piece[k + 1].v - piece[0].v) -
-                                    (piece[k + 1].u - piece[0].u) *
-                                    (piece[k].v - piece[0].v));
-        s->area += area;
-        s->uv_area += uv_area;
-        double sum[3];
-        for (int x = 0; x < 3; x++) {
-            sum[x] = a[x] + b[x] + c[x];
-            s->first[x] += area * sum[x] / 3;
-        }
+        p.area += area;
+        p.uv_area += 0.5 * fabs((piece[k].u - piece[0].u) *
+                                (piece[k + 1].v - piece[0].v) -
+                                (piece[k + 1].u - piece[0].u) *
+                                (piece[k].v - piece[0].v));
+        piece_moments_add_triangle(&p, point[0], point[k], point[k + 1],
+                                   area);
+    }
+    for (int x = 0; x < 3; x++)
+        p.normal_sum[x] = p.area * mesh->face_normal[3 * (size_t)t + x];
+    cell_moments_add(&mc->sums[cell], origin, &p);
+}
+
+void cell_samples_add_shape(struct cell_samples *s,
+                            const struct mesh *mesh,
+                            const struct curvature *cv, uint32_t t,
+                            double piece_area, const double centroid[3])
+{
+    const uint32_t *tri = mesh->triangle + 3 * (size_t)t;
+    for (int corner = 0; corner < 3; corner++) {
+        uint32_t v = tri[corner];
+        const double *d1 = cv->dir1 + 3 * (size_t)v;
+        const double *d2 = cv->dir2 + 3 * (size_t)v;
         for (int r = 0; r < 3; r++)
             for (int q = 0; q < 3; q++)
-                s->second[3 * r + q] += area / 12 *
-                    (a[r] * a[q] + b[r] * b[q] + c[r] * c[q] +
-                     sum[r] * sum[q]);
-        for (int x = 0; x < 3; x++)
-            s->normal_sum[x] += area * mesh->face_normal[3 * (size_t)t + x];
+                s->shape[3 * r + q] += piece_area * centroid[corner] *
+                    (cv->k1[v] * d1[r] * d1[q] + cv->k2[v] * d2[r] * d2[q]);
     }
 }
 
 /* Pass 2: distance from the plane, curvature samples, outline extent. */
-static void sample_piece(void *context, size_t cell, uint32_t t,
-                         const struct panel_piece_vertex *piece, int count)
+void panel_sample_piece(void *context, size_t cell, uint32_t t,
+                        const struct panel_piece_vertex *piece, int count)
 {
-    struct pass_context *pc = context;
-    struct cell_sums *s = &pc->sums[cell];
-    struct panel *panel = &pc->out->panels[pc->out->cell_panel[cell]];
-    const struct mesh *mesh = pc->grid->mesh;
-    const struct curvature *cv = pc->curvature;
+    struct sample_context *sc = context;
+    int n = sc->cell_panel[cell];
+    if (n < 0)
+        return;  /* a piece without area where no panel is */
+    struct cell_samples *s = &sc->samples[n];
+    struct cell_outline *o = s->outline >= 0 ? &sc->outlines[s->outline]
+                                             : NULL;
+    const struct mesh *mesh = sc->grid->mesh;
+    const struct curvature *cv = sc->curvature;
     const uint32_t *tri = mesh->triangle + 3 * (size_t)t;
 
-    double centroid[3] = {0, 0, 0}, piece_area = 0;
+    double centroid[3] = {0, 0, 0};
     for (int k = 0; k < count; k++) {
-        double p[3], d[3];
-        panel_piece_point(mesh, t, &piece[k], p);
-        for (int x = 0; x < 3; x++)
-            d[x] = p[x] - panel->centroid[x];
-        double distance = fabs(vec3_dot(d, panel->normal));
-        if (distance > panel->deviation)
-            panel->deviation = distance;
-        for (int e = 0; s->need_outline && e < 13; e++) {
-            double along = vec3_dot(p, extent_direction[e]);
-            if (along < s->extreme_low[e]) {
-                s->extreme_low[e] = along;
-                memcpy(s->extreme_low_point[e], p, sizeof p);
-            }
-            if (along > s->extreme_high[e]) {
-                s->extreme_high[e] = along;
-                memcpy(s->extreme_high_point[e], p, sizeof p);
-            }
-        }
-
         const double *b = piece[k].b;
-        double k1 = b[0] * cv->k1[tri[0]] + b[1] * cv->k1[tri[1]] +
-                    b[2] * cv->k1[tri[2]];
-        double k2 = b[0] * cv->k2[tri[0]] + b[1] * cv->k2[tri[1]] +
-                    b[2] * cv->k2[tri[2]];
-        if (k1 > s->k1_any)
-            s->k1_any = k1;
-        if (k2 < s->k2_any)
-            s->k2_any = k2;
-        /* The paper's samples: mesh vertices inside the cell and points
-         * where the cell's border cuts a mesh edge (one barycentric 0). */
-        if (b[0] <= 1e-12 || b[1] <= 1e-12 || b[2] <= 1e-12) {
-            if (k1 > s->k1_edge)
-                s->k1_edge = k1;
-            if (k2 < s->k2_edge)
-                s->k2_edge = k2;
-            s->edge_samples++;
+        if (sc->points) {
+            double p[3];
+            panel_piece_point(mesh, t, &piece[k], p);
+            double k1 = b[0] * cv->k1[tri[0]] + b[1] * cv->k1[tri[1]] +
+                        b[2] * cv->k1[tri[2]];
+            double k2 = b[0] * cv->k2[tri[0]] + b[1] * cv->k2[tri[1]] +
+                        b[2] * cv->k2[tri[2]];
+            /* The paper's samples: mesh vertices inside the cell and
+             * points where the cell's border cuts a mesh edge (one
+             * barycentric 0). */
+            cell_sample(s, o, p, k1, k2,
+                        b[0] <= 1e-12 || b[1] <= 1e-12 || b[2] <= 1e-12);
         }
         for (int x = 0; x < 3; x++)
             centroid[x] += b[x] / count;
     }
 
-    if (pc->mode == PANEL_MEAN) {
+    if (sc->shape) {
         /* The shape operator is linear over the triangle, so its integral
          * over the piece is the piece's area times its value at the piece's
          * area centroid; the vertex average is close enough for the small
          * pieces a cell cuts, and exact for triangles. */
+        double piece_area = 0;
         for (int k = 1; k + 1 < count; k++) {
-            double a[3], bb[3], c[3], ab[3], ac[3], n[3];
+            double a[3], bb[3], c[3], ab[3], ac[3], nn[3];
             panel_piece_point(mesh, t, &piece[0], a);
             panel_piece_point(mesh, t, &piece[k], bb);
             panel_piece_point(mesh, t, &piece[k + 1], c);
-            for (int x = 0; x < 3; x++) {
-                ab[x] = bb[x] - a[x];
-                ac[x] = c[x] - a[x];
-            }
-            vec3_cross(ab, ac, n);
-            piece_area += 0.5 * sqrt(vec3_dot(n, n));
+            vec3_sub(bb, a, ab);
+            vec3_sub(c, a, ac);
+            vec3_cross(ab, ac, nn);
+            piece_area += 0.5 * sqrt(vec3_dot(nn, nn));
         }
-        for (int corner = 0; corner < 3; corner++) {
-            uint32_t v = tri[corner];
-            const double *d1 = cv->dir1 + 3 * (size_t)v;
-            const double *d2 = cv->dir2 + 3 * (size_t)v;
-            for (int r = 0; r < 3; r++)
-                for (int q = 0; q < 3; q++)
-                    s->shape[3 * r + q] += piece_area * centroid[corner] *
-                        (cv->k1[v] * d1[r] * d1[q] +
-                         cv->k2[v] * d2[r] * d2[q]);
-        }
+        cell_samples_add_shape(s, mesh, cv, t, piece_area, centroid);
     }
 }
 
 /* The panel's k1 >= k2 from the mean shape operator: its two eigenvalues
  * whose eigenvectors lie in the panel's plane. */
-static void mean_curvature_of(const struct cell_sums *s, struct panel *panel)
+static void mean_curvature_of(const struct cell_samples *s,
+                              struct panel *panel)
 {
     double projected[9], value[3], vector[3][3];
     double p[9];
@@ -360,25 +318,42 @@ static void mean_curvature_of(const struct cell_sums *s, struct panel *panel)
     panel->k2 = fmin(kept[0], kept[1]);
 }
 
-/* Locates the cell corners on the surface and measures the quad. */
-static void measure_corners(const struct grid_walk *g, struct panel *panel)
+/* A grid node located on the surface, shared by the panels around it. */
+struct grid_node {
+    int state;         /* 0 not yet located, 1 on the surface, -1 off it */
+    double point[3];
+};
+
+/* Locates the cell corners on the surface (each grid node once, in nodes)
+ * and measures the quad. */
+static void measure_corners(const struct panel_grid *g,
+                            struct grid_node *nodes, struct panel *panel)
 {
     static const int offset[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
     double extent = fmax(g->du * g->nu, g->dv * g->nv);
     panel->ncorners = 0;
     for (int c = 0; c < 4; c++) {
-        double u = g->umin + (panel->i + offset[c][0]) * g->du;
-        double v = g->vmin + (panel->j + offset[c][1]) * g->dv;
-        double b[3];
-        uint32_t t = uv_index_locate(g->index, u, v, 1e-9 * (extent > 0),
-                                     b);
-        if (t == UINT32_MAX) {
+        int ni = panel->i + offset[c][0], nj = panel->j + offset[c][1];
+        struct grid_node *node = &nodes[(size_t)nj * (g->nu + 1) + ni];
+        if (node->state == 0) {
+            double u = g->umin + ni * g->du;
+            double v = g->vmin + nj * g->dv;
+            double b[3];
+            uint32_t t = uv_index_locate(g->index, u, v,
+                                         1e-9 * (extent > 0), b);
+            node->state = -1;
+            if (t != UINT32_MAX) {
+                struct panel_piece_vertex p = {u, v, {b[0], b[1], b[2]}};
+                panel_piece_point(g->mesh, t, &p, node->point);
+                node->state = 1;
+            }
+        }
+        if (node->state < 0) {
             panel->corner[c][0] = panel->corner[c][1] =
                 panel->corner[c][2] = NAN;
             continue;
         }
-        struct panel_piece_vertex p = {u, v, {b[0], b[1], b[2]}};
-        panel_piece_point(g->mesh, t, &p, panel->corner[c]);
+        memcpy(panel->corner[c], node->point, sizeof node->point);
         panel->ncorners++;
     }
     panel->corner_planarity = NAN;
@@ -395,66 +370,46 @@ static void measure_corners(const struct grid_walk *g, struct panel *panel)
     }
 }
 
-int panels_build(const struct mesh *mesh, const struct uv_index *index,
-                 const struct curvature *curvature,
-                 enum panel_curvature_mode mode, int nu, int nv,
-                 struct panelization *out, struct facet_error *err)
+int panels_fit(const struct panel_grid *g, const struct cell_moments *sums,
+               struct panelization *out, struct cell_samples **samples_out,
+               struct cell_outline **outlines_out, struct facet_error *err)
 {
-    memset(out, 0, sizeof *out);
-    if (nu < 1 || nv < 1 || nu > PANEL_MAX_GRID || nv > PANEL_MAX_GRID)
-        return facet_error_set(err, FACET_EINPUT,
-            "grid %dx%d is out of range (each side 1 to %d)", nu, nv,
-            PANEL_MAX_GRID);
-    out->nu = nu;
-    out->nv = nv;
-    out->umin = index->umin;
-    out->vmin = index->vmin;
-    out->umax = index->umax;
-    out->vmax = index->vmax;
-
-    struct grid_walk grid = {
-        mesh, index, nu, nv, index->umin, index->vmin,
-        (index->umax - index->umin) / nu, (index->vmax - index->vmin) / nv,
-    };
-    if (!(grid.du > 0) || !(grid.dv > 0))
-        return facet_error_set(err, FACET_EINPUT,
-            "the UV map has no extent (all texture coordinates equal in u "
-            "or in v)");
-
-    size_t ncells = (size_t)nu * (size_t)nv;
-    struct cell_sums *sums = calloc(ncells, sizeof *sums);
+    size_t ncells = (size_t)g->nu * (size_t)g->nv;
+    *samples_out = NULL;
+    *outlines_out = NULL;
     out->cell_panel = malloc(ncells * sizeof *out->cell_panel);
-    if (sums == NULL || out->cell_panel == NULL) {
-        free(sums);
+    if (out->cell_panel == NULL)
         return facet_error_set(err, FACET_EWORK, "out of memory (panels)");
-    }
-    struct pass_context pc = {&grid, curvature, mode, sums, out};
-    walk_pieces(&grid, sum_moments, &pc);
-
     for (size_t c = 0; c < ncells; c++) {
         out->cell_panel[c] = sums[c].area > 0 ? (int)out->npanels : -1;
         if (sums[c].area > 0)
             out->npanels++;
     }
-    out->panels = calloc(out->npanels ? out->npanels : 1,
-                         sizeof *out->panels);
-    if (out->panels == NULL) {
-        free(sums);
+    size_t npanels = out->npanels ? out->npanels : 1;
+    size_t nnodes = (size_t)(g->nu + 1) * (size_t)(g->nv + 1);
+    out->panels = calloc(npanels, sizeof *out->panels);
+    struct cell_samples *samples = malloc(npanels * sizeof *samples);
+    struct grid_node *nodes = calloc(nnodes, sizeof *nodes);
+    if (out->panels == NULL || samples == NULL || nodes == NULL) {
+        free(samples);
+        free(nodes);
         return facet_error_set(err, FACET_EWORK, "out of memory (panels)");
     }
 
-    double cell_uv_area = grid.du * grid.dv;
+    double cell_uv_area = g->du * g->dv;
+    size_t noutlines = 0;
     for (size_t c = 0; c < ncells; c++) {
         if (out->cell_panel[c] < 0)
             continue;
-        struct cell_sums *s = &sums[c];
+        const struct cell_moments *s = &sums[c];
         struct panel *panel = &out->panels[out->cell_panel[c]];
-        panel->i = (int)(c % (size_t)nu);
-        panel->j = (int)(c / (size_t)nu);
+        panel->i = (int)(c % (size_t)g->nu);
+        panel->j = (int)(c / (size_t)g->nu);
         panel->area = s->area;
         panel->uv_area = s->uv_area;
         panel->trimmed = s->uv_area < cell_uv_area * (1 - 1e-9);
 
+        static const int at[3][3] = {{0, 1, 2}, {1, 3, 4}, {2, 4, 5}};
         double mean[3], covariance[9], value[3], vector[3][3];
         for (int x = 0; x < 3; x++) {
             mean[x] = s->first[x] / s->area;
@@ -462,7 +417,7 @@ int panels_build(const struct mesh *mesh, const struct uv_index *index,
         }
         for (int r = 0; r < 3; r++)
             for (int q = 0; q < 3; q++)
-                covariance[3 * r + q] = s->second[3 * r + q] / s->area -
+                covariance[3 * r + q] = s->second[at[r][q]] / s->area -
                                         mean[r] * mean[q];
         sym3_eigen(covariance, value, vector);
         memcpy(panel->normal, vector[0], sizeof panel->normal);
@@ -470,24 +425,48 @@ int panels_build(const struct mesh *mesh, const struct uv_index *index,
             for (int x = 0; x < 3; x++)
                 panel->normal[x] = -panel->normal[x];
         panel->p_dist = fmax(value[0], 0) * s->area;
+        measure_corners(g, nodes, panel);
 
-        for (int e = 0; e < 13; e++) {
-            s->extreme_low[e] = INFINITY;
-            s->extreme_high[e] = -INFINITY;
-        }
-        s->k1_edge = s->k1_any = -INFINITY;
-        s->k2_edge = s->k2_any = INFINITY;
-        measure_corners(&grid, panel);
-        s->need_outline = panel->trimmed || panel->ncorners < 4;
+        struct cell_samples *sample = &samples[out->cell_panel[c]];
+        memset(sample, 0, sizeof *sample);
+        memcpy(sample->centroid, panel->centroid, sizeof sample->centroid);
+        memcpy(sample->normal, panel->normal, sizeof sample->normal);
+        sample->k1_edge = sample->k1_any = -INFINITY;
+        sample->k2_edge = sample->k2_any = INFINITY;
+        sample->outline = -1;
+        if (panel->trimmed || panel->ncorners < 4)
+            sample->outline = (int)noutlines++;
     }
+    free(nodes);
 
-    walk_pieces(&grid, sample_piece, &pc);
+    struct cell_outline *outlines =
+        malloc((noutlines ? noutlines : 1) * sizeof *outlines);
+    if (outlines == NULL) {
+        free(samples);
+        return facet_error_set(err, FACET_EWORK, "out of memory (panels)");
+    }
+    for (size_t o = 0; o < noutlines; o++)
+        for (int e = 0; e < 13; e++) {
+            outlines[o].low[e] = INFINITY;
+            outlines[o].high[e] = -INFINITY;
+            memset(outlines[o].low_point[e], 0, sizeof outlines[o].low_point[e]);
+            memset(outlines[o].high_point[e], 0,
+                   sizeof outlines[o].high_point[e]);
+        }
+    *samples_out = samples;
+    *outlines_out = outlines;
+    return FACET_OK;
+}
 
-    for (size_t c = 0; c < ncells; c++) {
-        if (out->cell_panel[c] < 0)
-            continue;
-        struct cell_sums *s = &sums[c];
-        struct panel *panel = &out->panels[out->cell_panel[c]];
+void panels_finish(enum panel_curvature_mode mode,
+                   const struct cell_samples *samples,
+                   const struct cell_outline *outlines,
+                   struct panelization *out)
+{
+    for (size_t n = 0; n < out->npanels; n++) {
+        const struct cell_samples *s = &samples[n];
+        struct panel *panel = &out->panels[n];
+        panel->deviation = s->deviation;
         if (mode == PANEL_MEAN) {
             mean_curvature_of(s, panel);
         } else if (s->edge_samples > 0) {
@@ -497,26 +476,56 @@ int panels_build(const struct mesh *mesh, const struct uv_index *index,
             panel->k1 = s->k1_any;
             panel->k2 = s->k2_any;
         }
-        if (!s->need_outline) {
+        if (s->outline < 0) {
             panel->diameter = fmax(vec3_distance(panel->corner[0],
-                                            panel->corner[2]),
+                                                 panel->corner[2]),
                                    vec3_distance(panel->corner[1],
-                                            panel->corner[3]));
+                                                 panel->corner[3]));
         } else {
+            const struct cell_outline *o = &outlines[s->outline];
             double diameter = 0;
             for (int a = 0; a < 13; a++)
                 for (int b = 0; b < 13; b++) {
                     diameter = fmax(diameter,
-                        vec3_distance(s->extreme_low_point[a],
-                                 s->extreme_high_point[b]));
+                        vec3_distance(o->low_point[a], o->high_point[b]));
                     diameter = fmax(diameter,
-                        vec3_distance(s->extreme_low_point[a],
-                                 s->extreme_low_point[b]));
+                        vec3_distance(o->low_point[a], o->low_point[b]));
                 }
             panel->diameter = diameter;
         }
     }
+}
+
+int panels_build(const struct mesh *mesh, const struct uv_index *index,
+                 const struct curvature *curvature,
+                 enum panel_curvature_mode mode, int nu, int nv,
+                 struct panelization *out, struct facet_error *err)
+{
+    struct panel_grid grid;
+    int rc = panel_grid_init(&grid, mesh, index, nu, nv, out, err);
+    if (rc != FACET_OK)
+        return rc;
+    size_t ncells = (size_t)nu * (size_t)nv;
+    struct cell_moments *sums = calloc(ncells, sizeof *sums);
+    if (sums == NULL)
+        return facet_error_set(err, FACET_EWORK, "out of memory (panels)");
+    struct moments_context mc = {mesh, sums};
+    for (size_t t = 0; t < mesh->ntriangles; t++)
+        panel_walk_triangle(&grid, (uint32_t)t, sum_piece_moments, &mc);
+
+    struct cell_samples *samples;
+    struct cell_outline *outlines;
+    rc = panels_fit(&grid, sums, out, &samples, &outlines, err);
     free(sums);
+    if (rc != FACET_OK)
+        return rc;
+    struct sample_context sc = {&grid, curvature, out->cell_panel, samples,
+                                outlines, 1, mode == PANEL_MEAN};
+    for (size_t t = 0; t < mesh->ntriangles; t++)
+        panel_walk_triangle(&grid, (uint32_t)t, panel_sample_piece, &sc);
+    panels_finish(mode, samples, outlines, out);
+    free(samples);
+    free(outlines);
     return FACET_OK;
 }
 

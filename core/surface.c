@@ -120,12 +120,17 @@ int surface_prepare(struct surface *surface, int flip_normals,
                                &surface->curvature, err);
     if (rc != FACET_OK)
         return rc;
+    rc = panel_prep_build(&surface->mesh, &surface->uv, &surface->curvature,
+                          &surface->panels, err);
+    if (rc != FACET_OK)
+        return rc;
     surface->prepared = 1;
     return FACET_OK;
 }
 
 void surface_close(struct surface *surface)
 {
+    panel_prep_free(&surface->panels);
     uv_index_free(&surface->uv);
     param_free(&surface->param);
     curvature_free(&surface->curvature);

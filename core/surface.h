@@ -13,6 +13,7 @@
 #include "curvature.h"
 #include "mesh.h"
 #include "obj.h"
+#include "panel.h"
 #include "param.h"
 #include "uv_index.h"
 
@@ -33,6 +34,7 @@ struct surface {
     struct parameterization param;  /* the UV the panels follow */
     struct uv_index uv;             /* lookup over param.uv */
     struct curvature curvature;     /* vertex curvature */
+    struct panel_prep panels;       /* per-triangle sums every grid adds */
 };
 
 /* Loads path with options into *out. Returns FACET_OK, or the loader's or
@@ -48,8 +50,9 @@ int surface_require_single(const struct surface *surface,
                            struct facet_error *err);
 
 /* Computes what every panelization of the surface shares: the UV
- * parameterization (param.h), its lookup and the vertex curvature, with the
- * normals flipped when flip_normals is set. Refuses a surface of several
+ * parameterization (param.h), its lookup, the vertex curvature, with the
+ * normals flipped when flip_normals is set, and the sums panels_build_fast
+ * starts from (panel_prep_build). Refuses a surface of several
  * unselected pieces (surface_require_single). Returns FACET_OK or the first
  * error; surface_close releases what it made. */
 int surface_prepare(struct surface *surface, int flip_normals,

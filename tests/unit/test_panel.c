@@ -333,6 +333,132 @@ static void test_bad_grid(void **state)
     surface_close(&s);
 }
 
+/* Writes a curved disc (no vt, so UV is the projection onto its plane):
+ * the grid's boundary cells are trimmed panels and many are no panels. */
+static void open_trimmed_disc(struct surface *s)
+{
+    char path[] = "/tmp/facet_test_panel_disc_XXXXXX";
+    int fd = mkstemp(path);
+    assert_true(fd >= 0);
+    FILE *out = fdopen(fd, "w");
+    enum { N = 60 };
+    for (int j = 0; j <= N; j++)
+        for (int i = 0; i <= N; i++) {
+            double x = 10.0 * i / N - 5, y = 10.0 * j / N - 5;
+            fprintf(out, "v %.17g %.17g %.17g\n", x + 1000, y + 2000,
+                    0.05 * x * x - 0.02 * y * y + 0.01 * x * y);
+        }
+    for (int j = 0; j < N; j++)
+        for (int i = 0; i < N; i++) {
+            int a = j * (N + 1) + i + 1, b = a + 1, c = a + N + 1,
+                d = c + 1;
+            double x = 10.0 * (i + 0.5) / N - 5, y = 10.0 * (j + 0.5) / N - 5;
+            if (x * x + y * y > 21)
+                continue;
+            fprintf(out, "f %d %d %d\nf %d %d %d\n", a, b, d, a, d, c);
+        }
+    fclose(out);
+    struct mesh_options options = {UNITS_M, NULL, NULL};
+    struct facet_error err;
+    int rc = surface_open(path, &options, s, &err);
+    if (rc == FACET_OK)
+        rc = surface_prepare(s, 0, &err);
+    unlink(path);
+    if (rc != FACET_OK)
+        fail_msg("disc: %s", err.message);
+}
+
+static void assert_close(double fast, double reference, double tolerance,
+                         const char *what, const struct panel *panel)
+{
+    if (!(fabs(fast - reference) <= tolerance))
+        fail_msg("panel (%d, %d) %s: fast %.17g, reference %.17g",
+                 panel->i, panel->j, what, fast, reference);
+}
+
+/* panels_build_fast (what option_evaluate uses: per-surface sums, only
+ * crossing triangles clipped) against panels_build (every triangle
+ * clipped): the same panels, every measure to 1e-9 of its scale. */
+static void test_fast_matches_reference(void **state)
+{
+    (void)state;
+    const char *names[] = {"roof", "torus", "hypar", "disc"};
+    int grids[][2] = {{37, 49}, {20, 35}, {28, 32}, {7, 3}, {1, 1},
+                      {90, 60}};
+    for (int e = 0; e < 4; e++) {
+        struct surface s;
+        if (strcmp(names[e], "disc") == 0)
+            open_trimmed_disc(&s);
+        else
+            open_example(names[e], 0, &s);
+        size_t trimmed = 0;
+        /* A sliver of a panel is judged against a triangle's area: both
+         * computations round relative to the triangles they cut. */
+        double triangle_area = s.mesh.area / (double)s.mesh.ntriangles;
+        double triangle_uv = 0;
+        for (size_t t = 0; t < s.mesh.ntriangles; t++) {
+            const double *c = s.uv.uv + 6 * t;
+            triangle_uv += 0.5 * fabs((c[2] - c[0]) * (c[5] - c[1]) -
+                                      (c[4] - c[0]) * (c[3] - c[1]));
+        }
+        triangle_uv /= (double)s.mesh.ntriangles;
+        for (int g = 0; g < 6; g++)
+            for (int mode = 0; mode < 2; mode++) {
+                struct panelization fast, reference;
+                struct facet_error err;
+                int nu = grids[g][0], nv = grids[g][1];
+                assert_int_equal(panels_build_fast(&s.panels, mode, nu, nv,
+                                                   &fast, &err), FACET_OK);
+                assert_int_equal(panels_build(&s.mesh, &s.uv, &s.curvature,
+                                              mode, nu, nv, &reference,
+                                              &err), FACET_OK);
+                assert_int_equal(fast.npanels, reference.npanels);
+                assert_memory_equal(fast.cell_panel, reference.cell_panel,
+                                    (size_t)nu * nv * sizeof(int));
+                for (size_t n = 0; n < fast.npanels; n++) {
+                    const struct panel *f = &fast.panels[n];
+                    const struct panel *r = &reference.panels[n];
+                    assert_int_equal(f->i, r->i);
+                    assert_int_equal(f->j, r->j);
+                    assert_int_equal(f->trimmed, r->trimmed);
+                    assert_int_equal(f->ncorners, r->ncorners);
+                    trimmed += (size_t)r->trimmed;
+                    double size = r->diameter;
+                    assert_true(size > 0);
+                    double area = fmax(r->area, triangle_area);
+                    /* ...and so is the plane of a sliver. */
+                    double tol = 1e-9 * fmax(1, triangle_area / r->area);
+                    assert_close(f->area, r->area, 1e-9 * area, "area", r);
+                    assert_close(f->uv_area, r->uv_area,
+                                 1e-9 * fmax(r->uv_area, triangle_uv),
+                                 "uv_area", r);
+                    for (int x = 0; x < 3; x++) {
+                        assert_close(f->centroid[x], r->centroid[x],
+                                     tol * size, "centroid", r);
+                        assert_close(f->normal[x], r->normal[x], tol,
+                                     "normal", r);
+                    }
+                    assert_close(f->deviation, r->deviation, tol * size,
+                                 "deviation", r);
+                    assert_close(f->p_dist, r->p_dist,
+                                 tol * area * size * size, "p_dist", r);
+                    assert_close(f->diameter, r->diameter, tol * size,
+                                 "diameter", r);
+                    double k = fmax(fabs(r->k1), fabs(r->k2));
+                    assert_close(f->k1, r->k1, tol * k + 1e-300, "k1", r);
+                    assert_close(f->k2, r->k2, tol * k + 1e-300, "k2", r);
+                }
+                panelization_free(&fast);
+                panelization_free(&reference);
+            }
+        /* The disc and the torus's ends must have put the trimmed path
+         * to the test. */
+        if (strcmp(names[e], "disc") == 0)
+            assert_true(trimmed > 0);
+        surface_close(&s);
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -346,6 +472,7 @@ int main(void)
         cmocka_unit_test(test_hypar_feature_curves),
         cmocka_unit_test(test_roof_has_every_type),
         cmocka_unit_test(test_bad_grid),
+        cmocka_unit_test(test_fast_matches_reference),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

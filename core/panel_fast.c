@@ -1,0 +1,656 @@
+/*
+ * panel_fast.c: panels from per-surface sums, clipping only what crosses a
+ * cell line. See panel.h (panel_prep_build, panels_build_fast) and
+ * panel_sums.h for what it shares with panel.c's panels_build.
+ *
+ * Once per surface: the distinct (vertex, UV) corners ("points") with their
+ * position and curvature, and per triangle its area, UV area, centroid,
+ * second moment about the centroid and area-weighted normal.
+ *
+ * Per grid, pass 1: each point's cell, once; a triangle whose corners share
+ * a cell adds its sums to the cell's in O(1); one that crosses a line is
+ * split along the lines it crosses, row by row and then cell by cell, and
+ * each piece's moments come from its barycentric fan. Pass 2 samples each
+ * point once in its cell (the distance from the plane is largest at piece
+ * vertices, and a triangle inside a cell has only its corners), then the
+ * pieces of the crossing triangles. A point within 1e-6 cell of a line
+ * the triangles are clipped at is sampled with its triangles instead, as
+ * panels_build takes it, so that rounding never moves it to the wrong side.
+ */
+#include "panel.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "panel_sums.h"
+
+struct panel_prep_point {
+    double position[3];  /* m */
+    double k1, k2;       /* 1/m */
+};
+
+struct panel_prep_triangle {
+    double area, uv_area;  /* m^2, UV units^2 */
+    double centroid[3];    /* m */
+    double second[6];      /* integral of (x - centroid)(x - ...)^T dA */
+    double normal_sum[3];  /* area x unit face normal */
+};
+
+int panel_prep_build(const struct mesh *mesh, const struct uv_index *index,
+                     const struct curvature *curvature,
+                     struct panel_prep *out, struct facet_error *err)
+{
+    memset(out, 0, sizeof *out);
+    out->mesh = mesh;
+    out->index = index;
+    out->curvature = curvature;
+    size_t nt = mesh->ntriangles, ncorners = 3 * nt;
+    if (ncorners >= (size_t)INT32_MAX)
+        return facet_error_set(err, FACET_EINPUT,
+            "%zu triangles are too many to panelize", nt);
+    out->triangle = malloc((nt ? nt : 1) * sizeof *out->triangle);
+    out->corner = malloc((ncorners ? ncorners : 1) * sizeof *out->corner);
+    out->point = malloc((ncorners ? ncorners : 1) * sizeof *out->point);
+    out->point_uv = malloc((ncorners ? ncorners : 1) * 2 *
+                           sizeof *out->point_uv);
+    uint32_t *head = malloc((mesh->nvertices ? mesh->nvertices : 1) *
+                            sizeof *head);
+    uint32_t *next = malloc((ncorners ? ncorners : 1) * sizeof *next);
+    if (out->triangle == NULL || out->corner == NULL || out->point == NULL ||
+        out->point_uv == NULL || head == NULL || next == NULL) {
+        free(head);
+        free(next);
+        return facet_error_set(err, FACET_EWORK, "out of memory (panels)");
+    }
+    for (size_t v = 0; v < mesh->nvertices; v++)
+        head[v] = UINT32_MAX;
+
+    for (size_t t = 0; t < nt; t++) {
+        struct panel_prep_triangle *T = &out->triangle[t];
+        const uint32_t *tri = mesh->triangle + 3 * t;
+        const double *uv = index->uv + 6 * t;
+        /* The corners, each (vertex, UV) once. */
+        for (int k = 0; k < 3; k++) {
+            uint32_t v = tri[k], p = head[v];
+            double u = uv[2 * k], w = uv[2 * k + 1];
+            while (p != UINT32_MAX && !(out->point_uv[2 * p] == u &&
+                                        out->point_uv[2 * p + 1] == w))
+                p = next[p];
+            if (p == UINT32_MAX) {
+                p = (uint32_t)out->npoints++;
+                struct panel_prep_point *P = &out->point[p];
+                out->point_uv[2 * p] = u;
+                out->point_uv[2 * p + 1] = w;
+                memcpy(P->position, mesh->position + 3 * (size_t)v,
+                       sizeof P->position);
+                P->k1 = curvature->k1[v];
+                P->k2 = curvature->k2[v];
+                next[p] = head[v];
+                head[v] = p;
+            }
+            out->corner[3 * t + k] = p;
+        }
+
+        /* Its sums, about its centroid. */
+        const double *x[3];
+        for (int k = 0; k < 3; k++)
+            x[k] = mesh->position + 3 * (size_t)tri[k];
+        double a[3], b[3], c[3], ab[3], ac[3], n[3];
+        for (int d = 0; d < 3; d++) {
+            T->centroid[d] = (x[0][d] + x[1][d] + x[2][d]) / 3;
+            a[d] = x[0][d] - T->centroid[d];
+            b[d] = x[1][d] - T->centroid[d];
+            c[d] = x[2][d] - T->centroid[d];
+            ab[d] = b[d] - a[d];
+            ac[d] = c[d] - a[d];
+        }
+        n[0] = ab[1] * ac[2] - ab[2] * ac[1];
+        n[1] = ab[2] * ac[0] - ab[0] * ac[2];
+        n[2] = ab[0] * ac[1] - ab[1] * ac[0];
+        T->area = 0.5 * sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+        T->uv_area = 0.5 * fabs((uv[2] - uv[0]) * (uv[5] - uv[1]) -
+                                (uv[4] - uv[0]) * (uv[3] - uv[1]));
+        struct piece_moments m;
+        memset(&m, 0, sizeof m);
+        piece_moments_add_triangle(&m, a, b, c, T->area);
+        memcpy(T->second, m.second, sizeof T->second);
+        for (int d = 0; d < 3; d++)
+            T->normal_sum[d] = T->area * mesh->face_normal[3 * t + d];
+    }
+    free(head);
+    free(next);
+    size_t kept = out->npoints ? out->npoints : 1;
+    struct panel_prep_point *shrunk =
+        realloc(out->point, kept * sizeof *out->point);
+    if (shrunk != NULL)
+        out->point = shrunk;
+    double *shrunk_uv = realloc(out->point_uv,
+                                kept * 2 * sizeof *out->point_uv);
+    if (shrunk_uv != NULL)
+        out->point_uv = shrunk_uv;
+    return FACET_OK;
+}
+
+void panel_prep_free(struct panel_prep *prep)
+{
+    free(prep->point_uv);
+    free(prep->point);
+    free(prep->corner);
+    free(prep->triangle);
+    memset(prep, 0, sizeof *prep);
+}
+
+/* A point's cell along one axis, as panel_cell_coordinate gives it, and
+ * whether it lies within 1e-6 cell of a line triangles are clipped at (not
+ * the outermost): near is set then, and left alone otherwise. */
+static inline int point_cell(double x, double origin, double step,
+                             double inverse, int count, uint32_t *near)
+{
+    double q = (x - origin) * inverse;
+    if (q > 0 && q < count) {
+        int i = (int)q;
+        double fraction = q - i;
+        if (fraction >= 1e-6 && fraction <= 1 - 1e-6)
+            return i;
+    }
+    /* By a line, or outside the box: exactly as panel_cell_coordinate,
+     * which the product with the inverse may round to the other side. */
+    double line = nearbyint(q);
+    if (line >= 1 && line <= count - 1 && fabs(q - line) < 1e-6)
+        *near = 1;
+    return panel_cell_coordinate(x, origin, step, count);
+}
+
+#define CELL_I(packed) ((int)((packed) & 0xffffu))
+#define CELL_J(packed) ((int)(((packed) >> 16) & 0x7fffu))
+#define CELL_NEAR(packed) ((packed) >> 31)
+
+/* A vertex of a piece while splitting: UV and barycentric coordinates. */
+struct split_vertex {
+    double u, v;
+    double b[3];
+};
+
+/* Enough for any piece of a triangle cut by four lines (at most 7
+ * vertices, and a repeated one where a corner lies on a line); a split
+ * that would exceed it drops the excess, which convex input never has. */
+#define SPLIT_MAX 16
+
+static inline void split_push(struct split_vertex *out, int *n,
+                              const struct split_vertex *x)
+{
+    if (*n < SPLIT_MAX)
+        out[(*n)++] = *x;
+}
+
+/* Splits the convex polygon in (count vertices) at coordinate axis (0 u,
+ * 1 v) = limit into low (coordinate <= limit) and high (>= limit), as two
+ * clip_half calls of panel.c would, the cut points snapped to the line. */
+static void split(const struct split_vertex *in, int count, int axis,
+                  double limit, struct split_vertex *low, int *nlow,
+                  struct split_vertex *high, int *nhigh)
+{
+    *nlow = *nhigh = 0;
+    for (int k = 0; k < count; k++) {
+        const struct split_vertex *p = &in[k];
+        const struct split_vertex *q = &in[k + 1 < count ? k + 1 : 0];
+        double dp = (axis == 0 ? p->u : p->v) - limit;
+        double dq = (axis == 0 ? q->u : q->v) - limit;
+        int low_p = dp <= 0, high_p = dp >= 0;
+        if (low_p)
+            split_push(low, nlow, p);
+        if (high_p)
+            split_push(high, nhigh, p);
+        int cut_low = low_p != (dq <= 0), cut_high = high_p != (dq >= 0);
+        if (cut_low || cut_high) {
+            double t = dp / (dp - dq);
+            struct split_vertex x;
+            x.u = p->u + t * (q->u - p->u);
+            x.v = p->v + t * (q->v - p->v);
+            for (int c = 0; c < 3; c++)
+                x.b[c] = p->b[c] + t * (q->b[c] - p->b[c]);
+            if (axis == 0)
+                x.u = limit;
+            else
+                x.v = limit;
+            if (cut_low)
+                split_push(low, nlow, &x);
+            if (cut_high)
+                split_push(high, nhigh, &x);
+        }
+    }
+}
+
+/* One panelization in progress. */
+struct fast {
+    const struct panel_prep *prep;
+    const struct panel_grid *grid;
+    struct cell_moments *sums;          /* pass 1, ncells */
+    const int *cell_panel;              /* pass 2 */
+    struct cell_samples *samples;
+    struct cell_outline *outlines;
+    const uint32_t *cell_of;            /* packed cell of each point */
+};
+
+/* Pass 1 for one piece of triangle t: its moments from the fan of its
+ * barycentric polygon (area fraction of the triangle's), about the
+ * triangle's centroid. */
+static void piece_sums(struct fast *f, const struct panel_prep_triangle *T,
+                       const double corner[3][3], size_t cell,
+                       const struct split_vertex *piece, int count)
+{
+    double x[SPLIT_MAX][3];
+    for (int k = 0; k < count; k++)
+        for (int d = 0; d < 3; d++)
+            x[k][d] = piece[k].b[0] * corner[0][d] +
+                      piece[k].b[1] * corner[1][d] +
+                      piece[k].b[2] * corner[2][d];
+    struct piece_moments m;
+    memset(&m, 0, sizeof m);
+    double fraction = 0;
+    const double *b0 = piece[0].b;
+    for (int k = 1; k + 1 < count; k++) {
+        const double *b1 = piece[k].b, *b2 = piece[k + 1].b;
+        double part = fabs((b1[1] - b0[1]) * (b2[2] - b0[2]) -
+                           (b2[1] - b0[1]) * (b1[2] - b0[2]));
+        fraction += part;
+        piece_moments_add_triangle(&m, x[0], x[k], x[k + 1],
+                                   part * T->area);
+    }
+    m.area = fraction * T->area;
+    m.uv_area = fraction * T->uv_area;
+    for (int d = 0; d < 3; d++)
+        m.normal_sum[d] = fraction * T->normal_sum[d];
+    cell_moments_add(&f->sums[cell], T->centroid, &m);
+}
+
+/* Pass 2 for one piece of triangle t: every vertex a sample. */
+static void piece_samples(struct fast *f, const struct panel_prep_point *P[3],
+                          size_t cell, const struct split_vertex *piece,
+                          int count)
+{
+    int n = f->cell_panel[cell];
+    if (n < 0)
+        return;
+    struct cell_samples *s = &f->samples[n];
+    struct cell_outline *o = s->outline >= 0 ? &f->outlines[s->outline]
+                                             : NULL;
+    for (int k = 0; k < count; k++) {
+        const double *b = piece[k].b;
+        double x[3];
+        for (int d = 0; d < 3; d++)
+            x[d] = b[0] * P[0]->position[d] + b[1] * P[1]->position[d] +
+                   b[2] * P[2]->position[d];
+        double k1 = b[0] * P[0]->k1 + b[1] * P[1]->k1 + b[2] * P[2]->k1;
+        double k2 = b[0] * P[0]->k2 + b[1] * P[1]->k2 + b[2] * P[2]->k2;
+        cell_sample(s, o, x, k1, k2,
+                    b[0] <= 1e-12 || b[1] <= 1e-12 || b[2] <= 1e-12);
+    }
+}
+
+/* Pass 1 or 2 for triangle t when it crosses exactly one line, coordinate
+ * axis = limit, between cells low and high, and no corner lies on it:
+ * one corner a alone on its side, b and c on the other. The piece on a's
+ * side is the triangle a, x_b, x_c (x cut from edge a-b at t_b), the
+ * other the quad x_b, b, c, x_c, fanned as b, c, x_c and b, x_c, x_b; their
+ * areas are the fractions t_b t_c, 1 - t_c and t_c (1 - t_b) of the
+ * triangle's, each without cancellation. Returns 0, doing nothing, when a
+ * corner lies on the line. */
+static int cross_one_line(struct fast *f, uint32_t t, int axis, double limit,
+                          size_t low, size_t high, int sums)
+{
+    const uint32_t *point = f->prep->corner + 3 * (size_t)t;
+    const double *uv = f->prep->point_uv;
+    double d[3];
+    int above = 0;
+    for (int k = 0; k < 3; k++) {
+        d[k] = uv[2 * point[k] + axis] - limit;
+        if (d[k] == 0)
+            return 0;
+        above += d[k] > 0;
+    }
+    if (above == 0 || above == 3)
+        return 0;  /* it only touches the line, to rounding */
+    int a = 0;
+    if (above == 1)
+        a = d[0] > 0 ? 0 : d[1] > 0 ? 1 : 2;
+    else
+        a = d[0] < 0 ? 0 : d[1] < 0 ? 1 : 2;
+    int b = a == 2 ? 0 : a + 1, c = b == 2 ? 0 : b + 1;
+    double tb = d[a] / (d[a] - d[b]), sb = d[b] / (d[b] - d[a]);
+    double tc = d[a] / (d[a] - d[c]), sc = d[c] / (d[c] - d[a]);
+    size_t cell_a = d[a] > 0 ? high : low, cell_bc = d[a] > 0 ? low : high;
+    const struct panel_prep_point *P[3] = {&f->prep->point[point[a]],
+                                           &f->prep->point[point[b]],
+                                           &f->prep->point[point[c]]};
+    if (sums) {
+        const struct panel_prep_triangle *T = &f->prep->triangle[t];
+        double x[3][3], xb[3], xc[3];
+        for (int k = 0; k < 3; k++)
+            for (int e = 0; e < 3; e++)
+                x[k][e] = P[k]->position[e] - T->centroid[e];
+        for (int e = 0; e < 3; e++) {
+            xb[e] = x[0][e] + tb * (x[1][e] - x[0][e]);
+            xc[e] = x[0][e] + tc * (x[2][e] - x[0][e]);
+        }
+        /* The smaller side directly, the other as the rest of the
+         * triangle, so neither loses precision. */
+        double fa = tb * tc, f1 = sc, f2 = tc * sb;
+        struct piece_moments m, rest;
+        memset(&m, 0, sizeof m);
+        int small_a = fa <= 0.5;
+        if (small_a) {
+            piece_moments_add_triangle(&m, x[0], xb, xc, fa * T->area);
+        } else {
+            piece_moments_add_triangle(&m, x[1], x[2], xc, f1 * T->area);
+            piece_moments_add_triangle(&m, x[1], xc, xb, f2 * T->area);
+        }
+        double fm = small_a ? fa : f1 + f2, fr = small_a ? f1 + f2 : fa;
+        m.area = fm * T->area;
+        m.uv_area = fm * T->uv_area;
+        rest.area = fr * T->area;
+        rest.uv_area = fr * T->uv_area;
+        for (int e = 0; e < 3; e++) {
+            m.normal_sum[e] = fm * T->normal_sum[e];
+            rest.normal_sum[e] = fr * T->normal_sum[e];
+            rest.first[e] = -m.first[e];
+        }
+        for (int e = 0; e < 6; e++)
+            rest.second[e] = T->second[e] - m.second[e];
+        cell_moments_add(&f->sums[small_a ? cell_a : cell_bc], T->centroid,
+                         &m);
+        cell_moments_add(&f->sums[small_a ? cell_bc : cell_a], T->centroid,
+                         &rest);
+        return 1;
+    }
+
+    /* Pass 2: the cut points belong to both pieces; a corner is sampled
+     * here only when it lies by the line (else with the points). */
+    double xb[3], xc[3];
+    for (int e = 0; e < 3; e++) {
+        xb[e] = P[0]->position[e] + tb * (P[1]->position[e] -
+                                          P[0]->position[e]);
+        xc[e] = P[0]->position[e] + tc * (P[2]->position[e] -
+                                          P[0]->position[e]);
+    }
+    double k1b = P[0]->k1 + tb * (P[1]->k1 - P[0]->k1);
+    double k2b = P[0]->k2 + tb * (P[1]->k2 - P[0]->k2);
+    double k1c = P[0]->k1 + tc * (P[2]->k1 - P[0]->k1);
+    double k2c = P[0]->k2 + tc * (P[2]->k2 - P[0]->k2);
+    size_t cells[2] = {low, high};
+    for (int side = 0; side < 2; side++) {
+        int n = f->cell_panel[cells[side]];
+        if (n < 0)
+            continue;
+        struct cell_samples *s = &f->samples[n];
+        struct cell_outline *o = s->outline >= 0 ? &f->outlines[s->outline]
+                                                 : NULL;
+        cell_sample(s, o, xb, k1b, k2b, 1);
+        cell_sample(s, o, xc, k1c, k2c, 1);
+        for (int k = 0; k < 3; k++) {
+            int corner = k == 0 ? a : k == 1 ? b : c;
+            size_t cell = (corner == a) ? cell_a : cell_bc;
+            if (cell == cells[side] && CELL_NEAR(f->cell_of[point[corner]]))
+                cell_sample(s, o, P[k]->position, P[k]->k1, P[k]->k2, 1);
+        }
+    }
+    return 1;
+}
+
+/* Splits triangle t, whose corners span cells i0..i1 x j0..j1, along the
+ * lines between them, row by row (v) and then cell by cell (u), and hands
+ * every piece of three or more vertices to pass 1 (sums set) or pass 2. */
+static void split_triangle(struct fast *f, uint32_t t, int i0, int i1,
+                           int j0, int j1, int sums)
+{
+    const struct panel_grid *g = f->grid;
+    const struct panel_prep_triangle *T = &f->prep->triangle[t];
+    const uint32_t *point = f->prep->corner + 3 * (size_t)t;
+    const struct panel_prep_point *P[3];
+    double corner[3][3];
+    struct split_vertex rest[SPLIT_MAX], row[SPLIT_MAX], piece[SPLIT_MAX],
+        scratch[SPLIT_MAX];
+    int nrest = 3;
+    for (int k = 0; k < 3; k++) {
+        P[k] = &f->prep->point[point[k]];
+        if (sums)
+            for (int d = 0; d < 3; d++)
+                corner[k][d] = P[k]->position[d] - T->centroid[d];
+        rest[k].u = f->prep->point_uv[2 * point[k]];
+        rest[k].v = f->prep->point_uv[2 * point[k] + 1];
+        rest[k].b[0] = rest[k].b[1] = rest[k].b[2] = 0;
+        rest[k].b[k] = 1;
+    }
+    for (int j = j0; j <= j1 && nrest >= 3; j++) {
+        int nrow;
+        if (j < j1) {
+            int nnext;
+            split(rest, nrest, 1, g->vmin + (j + 1) * g->dv, row, &nrow,
+                  scratch, &nnext);
+            memcpy(rest, scratch, sizeof rest[0] * (size_t)nnext);
+            nrest = nnext;
+        } else {
+            memcpy(row, rest, sizeof rest[0] * (size_t)nrest);
+            nrow = nrest;
+            nrest = 0;
+        }
+        for (int i = i0; i <= i1 && nrow >= 3; i++) {
+            int npiece;
+            if (i < i1) {
+                int nnext;
+                split(row, nrow, 0, g->umin + (i + 1) * g->du, piece,
+                      &npiece, scratch, &nnext);
+                memcpy(row, scratch, sizeof row[0] * (size_t)nnext);
+                nrow = nnext;
+            } else {
+                memcpy(piece, row, sizeof row[0] * (size_t)nrow);
+                npiece = nrow;
+                nrow = 0;
+            }
+            if (npiece < 3)
+                continue;
+            size_t cell = (size_t)j * g->nu + i;
+            if (sums)
+                piece_sums(f, T, corner, cell, piece, npiece);
+            else
+                piece_samples(f, P, cell, piece, npiece);
+        }
+    }
+}
+
+/* Pass 1 (sums set) or 2 for triangle t, whose corners span cells
+ * i0..i1 x j0..j1 (more than one). */
+static void cross(struct fast *f, uint32_t t, int i0, int i1, int j0, int j1,
+                  int sums)
+{
+    const struct panel_grid *g = f->grid;
+    if (i1 == i0 + 1 && j1 == j0) {
+        size_t low = (size_t)j0 * g->nu + i0;
+        if (cross_one_line(f, t, 0, g->umin + i1 * g->du, low, low + 1,
+                           sums))
+            return;
+    } else if (j1 == j0 + 1 && i1 == i0) {
+        size_t low = (size_t)j0 * g->nu + i0;
+        if (cross_one_line(f, t, 1, g->vmin + j1 * g->dv, low, low + g->nu,
+                           sums))
+            return;
+    }
+    split_triangle(f, t, i0, i1, j0, j1, sums);
+}
+
+/* A whole triangle's sums into a cell. */
+static inline void add_triangle(struct cell_moments *m,
+                                const struct panel_prep_triangle *T)
+{
+    if (!m->has_reference) {
+        memcpy(m->reference, T->centroid, sizeof m->reference);
+        m->has_reference = 1;
+    }
+    double d[3] = {T->centroid[0] - m->reference[0],
+                   T->centroid[1] - m->reference[1],
+                   T->centroid[2] - m->reference[2]};
+    double a = T->area;
+    double ad[3] = {a * d[0], a * d[1], a * d[2]};
+    m->area += a;
+    m->uv_area += T->uv_area;
+    m->first[0] += ad[0];
+    m->first[1] += ad[1];
+    m->first[2] += ad[2];
+    m->second[0] += T->second[0] + ad[0] * d[0];
+    m->second[1] += T->second[1] + ad[0] * d[1];
+    m->second[2] += T->second[2] + ad[0] * d[2];
+    m->second[3] += T->second[3] + ad[1] * d[1];
+    m->second[4] += T->second[4] + ad[1] * d[2];
+    m->second[5] += T->second[5] + ad[2] * d[2];
+    m->normal_sum[0] += T->normal_sum[0];
+    m->normal_sum[1] += T->normal_sum[1];
+    m->normal_sum[2] += T->normal_sum[2];
+}
+
+static inline int min3(int a, int b, int c)
+{
+    int m = a < b ? a : b;
+    return m < c ? m : c;
+}
+
+static inline int max3(int a, int b, int c)
+{
+    int m = a > b ? a : b;
+    return m > c ? m : c;
+}
+
+int panels_build_fast(const struct panel_prep *prep,
+                      enum panel_curvature_mode mode, int nu, int nv,
+                      struct panelization *out, struct facet_error *err)
+{
+    struct panel_grid grid;
+    int rc = panel_grid_init(&grid, prep->mesh, prep->index, nu, nv, out,
+                             err);
+    if (rc != FACET_OK)
+        return rc;
+    size_t ncells = (size_t)nu * (size_t)nv;
+    size_t nt = prep->mesh->ntriangles;
+    struct cell_moments *sums = calloc(ncells, sizeof *sums);
+    uint32_t *cell_of = malloc((prep->npoints ? prep->npoints : 1) *
+                               sizeof *cell_of);
+    uint32_t *listed = malloc((nt ? nt : 1) * sizeof *listed);
+    if (sums == NULL || cell_of == NULL || listed == NULL) {
+        free(sums);
+        free(cell_of);
+        free(listed);
+        return facet_error_set(err, FACET_EWORK, "out of memory (panels)");
+    }
+
+    /* Each point's cell, packed: i, j << 16, near << 31. */
+    double inverse_u = 1 / grid.du, inverse_v = 1 / grid.dv;
+    for (size_t p = 0; p < prep->npoints; p++) {
+        const double *uv = prep->point_uv + 2 * p;
+        uint32_t near = 0;
+        int i = point_cell(uv[0], grid.umin, grid.du, inverse_u, nu, &near);
+        int j = point_cell(uv[1], grid.vmin, grid.dv, inverse_v, nv, &near);
+        cell_of[p] = (uint32_t)i | (uint32_t)j << 16 | near << 31;
+    }
+
+    /* Pass 1; listed keeps the triangles pass 2 must look at. */
+    struct fast f = {prep, &grid, sums, NULL, NULL, NULL, cell_of};
+    size_t nlisted = 0;
+    for (size_t t = 0; t < nt; t++) {
+        const uint32_t *point = prep->corner + 3 * (size_t)t;
+        uint32_t a = cell_of[point[0]], b = cell_of[point[1]],
+                 c = cell_of[point[2]];
+        if (a == b && b == c) {
+            add_triangle(&sums[(size_t)CELL_J(a) * nu + CELL_I(a)],
+                         &prep->triangle[t]);
+            if (CELL_NEAR(a))
+                listed[nlisted++] = (uint32_t)t;
+            continue;
+        }
+        int i0 = min3(CELL_I(a), CELL_I(b), CELL_I(c));
+        int i1 = max3(CELL_I(a), CELL_I(b), CELL_I(c));
+        int j0 = min3(CELL_J(a), CELL_J(b), CELL_J(c));
+        int j1 = max3(CELL_J(a), CELL_J(b), CELL_J(c));
+        listed[nlisted++] = (uint32_t)t;
+        if (i0 == i1 && j0 == j1)
+            add_triangle(&sums[(size_t)j0 * nu + i0], &prep->triangle[t]);
+        else
+            cross(&f, (uint32_t)t, i0, i1, j0, j1, 1);
+    }
+
+    struct cell_samples *samples;
+    struct cell_outline *outlines;
+    rc = panels_fit(&grid, sums, out, &samples, &outlines, err);
+    free(sums);
+    if (rc != FACET_OK) {
+        free(cell_of);
+        free(listed);
+        return rc;
+    }
+    f.cell_panel = out->cell_panel;
+    f.samples = samples;
+    f.outlines = outlines;
+
+    /* Pass 2: every point not by a line once, in its cell... */
+    for (size_t p = 0; p < prep->npoints; p++) {
+        uint32_t packed = cell_of[p];
+        if (CELL_NEAR(packed))
+            continue;
+        int n = out->cell_panel[(size_t)CELL_J(packed) * nu +
+                                CELL_I(packed)];
+        if (n < 0)
+            continue;
+        const struct panel_prep_point *P = &prep->point[p];
+        struct cell_samples *s = &samples[n];
+        cell_sample(s, s->outline >= 0 ? &outlines[s->outline] : NULL,
+                    P->position, P->k1, P->k2, 1);
+    }
+    /* ...then the pieces of the listed triangles. */
+    for (size_t k = 0; k < nlisted; k++) {
+        uint32_t t = listed[k];
+        const uint32_t *point = prep->corner + 3 * (size_t)t;
+        uint32_t a = cell_of[point[0]], b = cell_of[point[1]],
+                 c = cell_of[point[2]];
+        int i0 = min3(CELL_I(a), CELL_I(b), CELL_I(c));
+        int i1 = max3(CELL_I(a), CELL_I(b), CELL_I(c));
+        int j0 = min3(CELL_J(a), CELL_J(b), CELL_J(c));
+        int j1 = max3(CELL_J(a), CELL_J(b), CELL_J(c));
+        if (i0 != i1 || j0 != j1) {
+            cross(&f, t, i0, i1, j0, j1, 0);
+            continue;
+        }
+        int n = out->cell_panel[(size_t)j0 * nu + i0];
+        if (n < 0)
+            continue;
+        struct cell_samples *s = &samples[n];
+        for (int corner = 0; corner < 3; corner++) {
+            const struct panel_prep_point *P = &prep->point[point[corner]];
+            cell_sample(s, s->outline >= 0 ? &outlines[s->outline] : NULL,
+                        P->position, P->k1, P->k2, 1);
+        }
+    }
+    if (mode == PANEL_MEAN) {
+        /* The shape operator as panels_build takes it, piece by piece. */
+        static const double third[3] = {1.0 / 3, 1.0 / 3, 1.0 / 3};
+        struct sample_context sc = {&grid, prep->curvature, out->cell_panel,
+                                    samples, outlines, 0, 1};
+        for (size_t t = 0; t < nt; t++) {
+            const uint32_t *point = prep->corner + 3 * t;
+            uint32_t a = cell_of[point[0]], b = cell_of[point[1]],
+                     c = cell_of[point[2]];
+            int n = out->cell_panel[(size_t)CELL_J(a) * nu + CELL_I(a)];
+            if (a == b && b == c && !CELL_NEAR(a) && n >= 0)
+                cell_samples_add_shape(&samples[n], prep->mesh,
+                                       prep->curvature, (uint32_t)t,
+                                       prep->triangle[t].area, third);
+            else
+                panel_walk_triangle(&grid, (uint32_t)t, panel_sample_piece,
+                                    &sc);
+        }
+    }
+    panels_finish(mode, samples, outlines, out);
+    free(samples);
+    free(outlines);
+    free(cell_of);
+    free(listed);
+    return FACET_OK;
+}

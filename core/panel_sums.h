@@ -1,0 +1,246 @@
+/*
+ * panel_sums.h: what the two ways of measuring panels share (internal to
+ * panel.c and panel_fast.c; not part of Facet's interface).
+ *
+ * A panelization is measured in two passes over the surface. Pass 1 sums
+ * each cell's area and moments (struct cell_moments); panels_fit turns them
+ * into panels with their best-fit planes. Pass 2 takes the points of each
+ * panel's surface that bound its deviation, curvature and outline
+ * (cell_sample); panels_finish turns those into the panels' remaining
+ * measures. panel.c's panels_build feeds both passes from the clipped
+ * pieces of every triangle; panel_fast.c's panels_build_fast feeds them
+ * from what panel_prep_build computed once per surface, clipping only the
+ * triangles that cross a cell line. Everything else is this file's.
+ */
+#ifndef FACET_PANEL_SUMS_H
+#define FACET_PANEL_SUMS_H
+
+#include <math.h>
+#include <stddef.h>
+#include <stdint.h>
+
+#include "panel.h"
+
+/* The grid of one panelization. */
+struct panel_grid {
+    const struct mesh *mesh;
+    const struct uv_index *index;
+    int nu, nv;
+    double umin, vmin, du, dv;
+};
+
+/* Checks the grid side (1..PANEL_MAX_GRID) and the UV box's extent, fills
+ * *g and the grid fields of *out (which it zeroes first). Returns FACET_OK
+ * or FACET_EINPUT. */
+int panel_grid_init(struct panel_grid *g, const struct mesh *mesh,
+                    const struct uv_index *index, int nu, int nv,
+                    struct panelization *out, struct facet_error *err);
+
+/* The cell of coordinate x along one grid axis: floor((x - origin) / step)
+ * clamped to 0..count-1, so the outermost lines cut nothing. */
+static inline int panel_cell_coordinate(double x, double origin, double step,
+                                        int count)
+{
+    double f = floor((x - origin) / step);
+    if (!(f > 0))
+        return 0;
+    if (f >= count)
+        return count - 1;
+    return (int)f;
+}
+
+/* Pass 1 per cell. Moments are taken about a reference point of the
+ * panel, so that surfaces far from the origin (site coordinates) keep
+ * their precision. Symmetric 3x3 matrices are kept as xx, xy, xz, yy, yz,
+ * zz. */
+struct cell_moments {
+    double reference[3];
+    int has_reference;
+    double area, uv_area;  /* m^2, UV units^2 */
+    double first[3];       /* integral of (x - reference) dA */
+    double second[6];      /* integral of (x - r)(x - r)^T dA */
+    double normal_sum[3];  /* area-weighted face normals */
+};
+
+/* Area and moments of a part of one triangle about a point g of it. */
+struct piece_moments {
+    double area, uv_area;
+    double first[3];       /* integral of (x - g) dA */
+    double second[6];      /* integral of (x - g)(x - g)^T dA */
+    double normal_sum[3];
+};
+
+/* Adds the triangle with corners a, b, c (m, relative to the point the
+ * moments are about) and area area (m^2) to the first and second moments
+ * of p: the integral of x x^T over it is area/12 (a a^T + b b^T + c c^T +
+ * s s^T), s = a + b + c. */
+__attribute__((always_inline))
+static inline void piece_moments_add_triangle(struct piece_moments *p,
+                                              const double a[3],
+                                              const double b[3],
+                                              const double c[3],
+                                              double area)
+{
+    double s[3] = {a[0] + b[0] + c[0], a[1] + b[1] + c[1],
+                   a[2] + b[2] + c[2]};
+    double w = area * (1.0 / 12), f = area * (1.0 / 3);
+    p->first[0] += f * s[0];
+    p->first[1] += f * s[1];
+    p->first[2] += f * s[2];
+    p->second[0] += w * (a[0] * a[0] + b[0] * b[0] + c[0] * c[0] +
+                         s[0] * s[0]);
+    p->second[1] += w * (a[0] * a[1] + b[0] * b[1] + c[0] * c[1] +
+                         s[0] * s[1]);
+    p->second[2] += w * (a[0] * a[2] + b[0] * b[2] + c[0] * c[2] +
+                         s[0] * s[2]);
+    p->second[3] += w * (a[1] * a[1] + b[1] * b[1] + c[1] * c[1] +
+                         s[1] * s[1]);
+    p->second[4] += w * (a[1] * a[2] + b[1] * b[2] + c[1] * c[2] +
+                         s[1] * s[2]);
+    p->second[5] += w * (a[2] * a[2] + b[2] * b[2] + c[2] * c[2] +
+                         s[2] * s[2]);
+}
+
+/* Adds p, whose moments are about g (m), to cell m; the first part added
+ * to a cell sets its reference point to g. */
+__attribute__((always_inline))
+static inline void cell_moments_add(struct cell_moments *m,
+                                    const double g[3],
+                                    const struct piece_moments *p)
+{
+    if (!m->has_reference) {
+        m->reference[0] = g[0];
+        m->reference[1] = g[1];
+        m->reference[2] = g[2];
+        m->has_reference = 1;
+    }
+    double d[3] = {g[0] - m->reference[0], g[1] - m->reference[1],
+                   g[2] - m->reference[2]};
+    double a = p->area;
+    const double *f = p->first;
+    /* About the reference: S + f d^T + d f^T + area d d^T. */
+    m->second[0] += p->second[0] + 2 * f[0] * d[0] + a * d[0] * d[0];
+    m->second[1] += p->second[1] + f[0] * d[1] + d[0] * f[1] +
+                    a * d[0] * d[1];
+    m->second[2] += p->second[2] + f[0] * d[2] + d[0] * f[2] +
+                    a * d[0] * d[2];
+    m->second[3] += p->second[3] + 2 * f[1] * d[1] + a * d[1] * d[1];
+    m->second[4] += p->second[4] + f[1] * d[2] + d[1] * f[2] +
+                    a * d[1] * d[2];
+    m->second[5] += p->second[5] + 2 * f[2] * d[2] + a * d[2] * d[2];
+    for (int x = 0; x < 3; x++) {
+        m->first[x] += f[x] + a * d[x];
+        m->normal_sum[x] += p->normal_sum[x];
+    }
+    m->area += a;
+    m->uv_area += p->uv_area;
+}
+
+/* Pass 2 per panel. */
+struct cell_samples {
+    double centroid[3], normal[3];  /* the panel's plane */
+    double deviation;               /* largest distance from it so far */
+    double k1_edge, k2_edge;  /* over samples on mesh vertices and edges */
+    double k1_any, k2_any;    /* over every piece vertex: the fallback */
+    int edge_samples;
+    int outline;              /* index into the outlines, or -1 when the
+                                 panel's diameter comes from its corners */
+    double shape[9];          /* integral of the shape operator dA */
+};
+
+/* The extent of a panel's outline along 13 directions. */
+struct cell_outline {
+    double low[13], high[13];
+    double low_point[13][3], high_point[13][3];
+};
+
+/* Directions along which the outline's extent is measured: its diameter is
+ * the largest distance between the extreme points found, which is within
+ * a few percent of the exact diameter and cheap for any panel size. */
+extern const double panel_extent_direction[13][3];
+
+/* Takes point p (m) of the panel's surface, with curvature k1, k2 there,
+ * into s (and its outline o when not NULL); edge says p lies on a mesh
+ * vertex or edge, the paper's samples. */
+static inline void cell_sample(struct cell_samples *s,
+                               struct cell_outline *o, const double p[3],
+                               double k1, double k2, int edge)
+{
+    double distance = fabs((p[0] - s->centroid[0]) * s->normal[0] +
+                           (p[1] - s->centroid[1]) * s->normal[1] +
+                           (p[2] - s->centroid[2]) * s->normal[2]);
+    if (distance > s->deviation)
+        s->deviation = distance;
+    if (k1 > s->k1_any)
+        s->k1_any = k1;
+    if (k2 < s->k2_any)
+        s->k2_any = k2;
+    if (edge) {
+        if (k1 > s->k1_edge)
+            s->k1_edge = k1;
+        if (k2 < s->k2_edge)
+            s->k2_edge = k2;
+        s->edge_samples++;
+    }
+    if (o != NULL)
+        for (int e = 0; e < 13; e++) {
+            const double *dir = panel_extent_direction[e];
+            double along = p[0] * dir[0] + p[1] * dir[1] + p[2] * dir[2];
+            if (along < o->low[e]) {
+                o->low[e] = along;
+                o->low_point[e][0] = p[0];
+                o->low_point[e][1] = p[1];
+                o->low_point[e][2] = p[2];
+            }
+            if (along > o->high[e]) {
+                o->high[e] = along;
+                o->high_point[e][0] = p[0];
+                o->high_point[e][1] = p[1];
+                o->high_point[e][2] = p[2];
+            }
+        }
+}
+
+/* Adds piece_area (m^2) times the shape operator of mesh triangle t at
+ * barycentric point centroid to s->shape. */
+void cell_samples_add_shape(struct cell_samples *s,
+                            const struct mesh *mesh,
+                            const struct curvature *curvature, uint32_t t,
+                            double piece_area, const double centroid[3]);
+
+/* Makes the panels of the cells with area (out->panels, out->cell_panel,
+ * their area, plane, P_dist and corners) from the pass 1 sums, and the pass
+ * 2 state for each panel: *samples (npanels) and *outlines (one per
+ * panel whose outline is needed), both malloc'ed for the caller to free.
+ * Returns FACET_OK or FACET_EWORK. */
+int panels_fit(const struct panel_grid *g, const struct cell_moments *sums,
+               struct panelization *out, struct cell_samples **samples,
+               struct cell_outline **outlines, struct facet_error *err);
+
+/* Sets each panel's deviation, k1, k2 and diameter from its samples. */
+void panels_finish(enum panel_curvature_mode mode,
+                   const struct cell_samples *samples,
+                   const struct cell_outline *outlines,
+                   struct panelization *out);
+
+/* Calls visit for every non-empty piece of triangle t: panels_walk_pieces
+ * for one triangle. */
+void panel_walk_triangle(const struct panel_grid *g, uint32_t t,
+                         panel_piece_visitor visit, void *context);
+
+/* Pass 2 for the piece of mesh triangle t in cell as panels_build takes
+ * it: every piece vertex a sample, and in PANEL_MEAN mode the shape
+ * operator (mean set) or not (mean clear). */
+struct sample_context {
+    const struct panel_grid *grid;
+    const struct curvature *curvature;
+    const int *cell_panel;
+    struct cell_samples *samples;
+    struct cell_outline *outlines;
+    int points;   /* sample the piece's vertices */
+    int shape;    /* add the shape operator (PANEL_MEAN) */
+};
+void panel_sample_piece(void *context, size_t cell, uint32_t t,
+                        const struct panel_piece_vertex *piece, int count);
+
+#endif
