@@ -218,6 +218,10 @@ struct option_browse {
     const struct filter *where;/* NULL = every option */
     struct browse_key keys[BROWSE_MAX_KEYS];
     int nkeys;                 /* 0 = by number */
+    int filter_first;          /* the filter passes few options: find them
+                                  by the filter's own index (or a scan) and
+                                  sort them, instead of walking the order's
+                                  index past rows that fail it */
 };
 
 /* Calls row(context, option) for up to limit options of b that come after
@@ -243,6 +247,28 @@ int store_browse_offset(struct store *store, const struct option_browse *b,
 /* How many options b sees into *count. */
 int store_browse_count(struct store *store, const struct option_browse *b,
                        int64_t *count, struct facet_error *err);
+
+/* How many options of b come after *after in b's order (after NULL:
+ * every option; backward: before *after), counting no further than cap,
+ * into *count: a count of cap means "cap or more". It reads at most the
+ * cap matching rows (and the rows that fail the filter among them), so
+ * it is the cheap count a table shows first ("10,000+"). */
+int store_browse_count_capped(struct store *store,
+                              const struct option_browse *b,
+                              const struct option_row *after, int backward,
+                              int64_t cap, int64_t *count,
+                              struct facet_error *err);
+
+/* One slice of an exact count in steps: looks at the next at most rows
+ * options of b's run by number after number *from (0: from the first),
+ * adds those b sees to *count and sets *from to the last number looked
+ * at; *done is set when no option is left after it. The cost of a step
+ * is bounded by rows, so a caller can count a million options between
+ * keystrokes. */
+int store_browse_count_step(struct store *store,
+                            const struct option_browse *b, int64_t rows,
+                            int64_t *from, int64_t *count, int *done,
+                            struct facet_error *err);
 
 /* How many options of b come before *option in b's order (its 0-based
  * position when b sees it) into *position. */

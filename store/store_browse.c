@@ -49,14 +49,20 @@ static const char *key_expr(const char *column)
     return NULL;
 }
 
-/* Writes the expression of column into out ("\"cost\"" or a special). */
-static void key_sql(const char *column, char *out, size_t size)
+/* Writes the expression of column into out ("\"cost\"" or a special).
+ * With filter_first, a plain column is written "+\"cost\"": the unary
+ * plus keeps SQLite from walking the column's index for the order, so it
+ * finds the filter's rows first (by the filter's index, or a scan) and
+ * sorts them. */
+static void key_sql(const struct option_browse *b, const char *column,
+                    char *out, size_t size)
 {
     const char *expr = key_expr(column);
     if (expr != NULL && expr[0] != '\0')
         snprintf(out, size, "%s", expr);
     else
-        snprintf(out, size, "\"%s\"", column);
+        snprintf(out, size, "%s\"%s\"", b->filter_first ? "+" : "",
+                 column);
 }
 
 /* The value of column of option as the key expression sees it. */
@@ -118,11 +124,18 @@ static int check_keys(const struct option_browse *b, struct facet_error *err)
     return FACET_OK;
 }
 
-/* Appends "FROM options WHERE run = ?1 [AND rank = 1] AND (filter)". */
+/* Appends "FROM options WHERE run = ?1 [AND rank = 1] AND (filter)"; with
+ * filter_first, the filter goes into "number IN (SELECT ...)", which
+ * SQLite evaluates first, by the filter's best index or a scan, so the
+ * page is then read by primary key and sorted (see key_sql). */
 static void add_from(struct sql_text *s, const struct option_browse *b)
 {
-    sql_add(s, " FROM options WHERE run = ?1%s",
-            b->pareto_only ? " AND rank = 1" : "");
+    sql_add(s, " FROM options WHERE run = ?1");
+    if (b->filter_first)
+        sql_add(s, " AND number IN (SELECT number FROM options"
+                   " WHERE run = ?1");
+    if (b->pareto_only)
+        sql_add(s, " AND rank = 1");
     if (b->where != NULL) {
         char *fragment = filter_sql(b->where, FILTER_FIRST);
         if (fragment == NULL) {
@@ -132,6 +145,8 @@ static void add_from(struct sql_text *s, const struct option_browse *b)
         sql_add(s, " AND (%s)", fragment);
         free(fragment);
     }
+    if (b->filter_first)
+        sql_add(s, ")");
 }
 
 /* Appends " AND <row comes after the keyset row>" (before, when
@@ -144,7 +159,7 @@ static void add_keyset(struct sql_text *s, const struct option_browse *b,
     sql_add(s, " AND ");
     if (b->nkeys > 0) {
         int greater = !b->keys[0].descending != !!backward;
-        key_sql(b->keys[0].column, expr, sizeof expr);
+        key_sql(b, b->keys[0].column, expr, sizeof expr);
         sql_add(s, "%s %s ?%d AND ", expr, greater ? ">=" : "<=",
                 KEY_FIRST);
     }
@@ -152,14 +167,16 @@ static void add_keyset(struct sql_text *s, const struct option_browse *b,
         int greater = k < b->nkeys ? !b->keys[k].descending != !!backward
                                    : !backward;
         if (k < b->nkeys)
-            key_sql(b->keys[k].column, expr, sizeof expr);
+            key_sql(b, b->keys[k].column, expr, sizeof expr);
         else
-            snprintf(expr, sizeof expr, "number");
+            snprintf(expr, sizeof expr, "%snumber",
+                     b->filter_first ? "+" : "");
         if (k < b->nkeys)
             sql_add(s, "(%s %s ?%d OR (%s = ?%d AND ", expr,
                     greater ? ">" : "<", KEY_FIRST + k, expr, KEY_FIRST + k);
         else
-            sql_add(s, "number %s ?%d", greater ? ">" : "<", KEY_FIRST + k);
+            sql_add(s, "%s %s ?%d", expr, greater ? ">" : "<",
+                    KEY_FIRST + k);
     }
     for (int k = 0; k < b->nkeys; k++)
         sql_add(s, "))");
@@ -173,11 +190,12 @@ static void add_order(struct sql_text *s, const struct option_browse *b,
     char expr[160];
     sql_add(s, " ORDER BY ");
     for (int k = 0; k < b->nkeys; k++) {
-        key_sql(b->keys[k].column, expr, sizeof expr);
+        key_sql(b, b->keys[k].column, expr, sizeof expr);
         sql_add(s, "%s %s, ", expr,
                 !b->keys[k].descending != !!backward ? "ASC" : "DESC");
     }
-    sql_add(s, "number %s", backward ? "DESC" : "ASC");
+    sql_add(s, "%snumber %s", b->filter_first ? "+" : "",
+            backward ? "DESC" : "ASC");
 }
 
 /* Prepares s's text and binds run, the filter's numbers and, when keyset
@@ -240,12 +258,17 @@ static int deliver(struct store *store, const struct option_browse *b,
     if (rc == FACET_OK && step != SQLITE_DONE)
         rc = store_fail(store, doing, err);
     sqlite3_finalize(stmt);
+    /* one read transaction for the page: one snapshot, one lock */
+    int own = n > 1 && sqlite3_get_autocommit(store->db) &&
+              sqlite3_exec(store->db, "BEGIN", NULL, NULL, NULL) == SQLITE_OK;
     struct option_row option;
     for (size_t k = 0; k < n && rc == FACET_OK; k++) {
         rc = store_option_get(store, b->run, numbers[k], &option, err);
         if (rc == FACET_OK && row(context, &option) != 0)
             break;
     }
+    if (own)
+        sqlite3_exec(store->db, "COMMIT", NULL, NULL, NULL);
     free(numbers);
     return rc;
 }
@@ -338,6 +361,87 @@ int store_browse_count(struct store *store, const struct option_browse *b,
                       err);
 }
 
+int store_browse_count_capped(struct store *store,
+                              const struct option_browse *b,
+                              const struct option_row *after, int backward,
+                              int64_t cap, int64_t *count,
+                              struct facet_error *err)
+{
+    *count = 0;
+    int rc = check_keys(b, err);
+    if (rc != FACET_OK)
+        return rc;
+    struct sql_text s = {0};
+    sql_add(&s, "SELECT count(*) FROM (SELECT 1");
+    add_from(&s, b);
+    if (after != NULL)
+        add_keyset(&s, b, backward);
+    sql_add(&s, " LIMIT ?2)");
+    sqlite3_stmt *stmt;
+    rc = prepare(store, &s, b, after, &stmt, "counting options", err);
+    if (rc != FACET_OK)
+        return rc;
+    sqlite3_bind_int64(stmt, 2, cap > 0 ? cap : -1);
+    return single_row(store, stmt, count, NULL, NULL, "counting options",
+                      err);
+}
+
+int store_browse_count_step(struct store *store,
+                            const struct option_browse *b, int64_t rows,
+                            int64_t *from, int64_t *count, int *done,
+                            struct facet_error *err)
+{
+    *done = 0;
+    /* the slice by number (the primary key, read in order), then the
+     * filter over it: ?3 the number to start after */
+    struct sql_text s = {0};
+    sql_add(&s, "SELECT count(*) FROM (SELECT * FROM options"
+                " WHERE run = ?1 AND number > ?3 ORDER BY number LIMIT ?2)"
+                " WHERE 1%s", b->pareto_only ? " AND rank = 1" : "");
+    if (b->where != NULL) {
+        char *fragment = filter_sql(b->where, FILTER_FIRST);
+        if (fragment == NULL)
+            s.failed = 1;
+        else
+            sql_add(&s, " AND (%s)", fragment);
+        free(fragment);
+    }
+    sqlite3_stmt *stmt;
+    int rc = prepare(store, &s, b, NULL, &stmt, "counting options", err);
+    if (rc != FACET_OK)
+        return rc;
+    sqlite3_bind_int64(stmt, 2, rows > 0 ? rows : -1);
+    sqlite3_bind_int64(stmt, 3, *from);
+    if (sqlite3_step(stmt) == SQLITE_ROW) {
+        *count += sqlite3_column_int64(stmt, 0);
+        if (rows <= 0)
+            *done = 1;
+    } else {
+        rc = store_fail(store, "counting options", err);
+    }
+    sqlite3_finalize(stmt);
+    if (rc != FACET_OK || *done)
+        return rc;
+    /* where the slice ended: the rows-th number after *from */
+    rc = store_prepare(store, "SELECT number FROM options WHERE run = ?1"
+                       " AND number > ?3 ORDER BY number LIMIT 1"
+                       " OFFSET ?2 - 1", &stmt, "counting options", err);
+    if (rc != FACET_OK)
+        return rc;
+    sqlite3_bind_int64(stmt, 1, b->run);
+    sqlite3_bind_int64(stmt, 2, rows);
+    sqlite3_bind_int64(stmt, 3, *from);
+    int step = sqlite3_step(stmt);
+    if (step == SQLITE_ROW)
+        *from = sqlite3_column_int64(stmt, 0);
+    else if (step == SQLITE_DONE)
+        *done = 1;  /* the slice held every option left */
+    else
+        rc = store_fail(store, "counting options", err);
+    sqlite3_finalize(stmt);
+    return rc;
+}
+
 int store_browse_position(struct store *store,
                           const struct option_browse *b,
                           const struct option_row *option,
@@ -368,7 +472,9 @@ int store_browse_range(struct store *store, const struct option_browse *b,
         return facet_error_set(err, FACET_EINPUT, "unknown column '%s'",
                                column ? column : "(none)");
     char expr[160];
-    key_sql(column, expr, sizeof expr);
+    struct option_browse plain = *b;
+    plain.filter_first = 0;
+    key_sql(&plain, column, expr, sizeof expr);
     struct sql_text s = {0};
     sql_add(&s, "SELECT min(%s), max(%s)", expr, expr);
     add_from(&s, b);

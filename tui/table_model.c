@@ -1,8 +1,17 @@
 /*
  * table_model.c: a paged, sorted, filtered view of one run's options. See
  * table_model.h.
+ *
+ * Nothing here reads the whole run unless the user asks for the end of
+ * the table: the count is capped (TABLE_COUNT_CAP) and grows as the user
+ * scrolls, a kept selection is located with a capped count, and every
+ * page comes by keyset from a row held. Positions are exact except after
+ * a deep option was kept across a re-sort (m->estimated): then they are
+ * lower bounds, corrected when the window reaches either end.
  */
 #include "table_model.h"
+
+#include "format.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -79,9 +88,20 @@ static void window_append(struct table_model *m, const struct batch *b)
 }
 
 /* Prepends batch (delivered nearest first) before the window, dropping
- * rows at the back to fit. */
-static void window_prepend(struct table_model *m, const struct batch *b)
+ * rows at the back to fit. With estimated positions, renumbers so that
+ * positions stay >= 0, and exact once a short batch shows the start. */
+static int64_t window_prepend(struct table_model *m, const struct batch *b)
 {
+    int64_t shift = 0;
+    if (m->base - b->n < 0 || (m->estimated && b->n < TABLE_PAGE))
+        shift = b->n - m->base;
+    if (b->n < TABLE_PAGE)
+        m->estimated = 0;  /* rows[0] will be the first row */
+    m->base += shift;
+    m->selected += shift;
+    m->count += shift;
+    if (m->count < m->base + m->nrows)
+        m->count = m->base + m->nrows;
     int64_t keep = m->nrows;
     if (keep + b->n > TABLE_WINDOW)
         keep = TABLE_WINDOW - b->n;
@@ -90,6 +110,7 @@ static void window_prepend(struct table_model *m, const struct batch *b)
         m->rows[b->n - 1 - k] = b->rows[k];
     m->nrows = keep + b->n;
     m->base -= b->n;
+    return shift;
 }
 
 int table_model_fetch(struct table_model *m, int64_t from, int64_t n,
@@ -108,6 +129,19 @@ int table_model_fetch(struct table_model *m, int64_t from, int64_t n,
     if (b == NULL)
         return facet_error_set(err, FACET_EWORK, "out of memory");
     int rc = FACET_OK;
+    if (m->estimated && m->nrows > 0 && m->base < TABLE_PAGE &&
+        from < m->base + TABLE_PAGE / 4) {
+        /* near an estimated start: read what is really before rows[0] */
+        b->n = 0;
+        m->fetches++;
+        rc = store_browse_page(m->store, &m->browse, &m->rows[0], 1,
+                               TABLE_PAGE, collect, b, err);
+        if (rc == FACET_OK) {
+            int64_t shift = window_prepend(m, b);
+            from += shift;
+            end += shift;
+        }
+    }
     while (rc == FACET_OK) {
         int64_t have_end = m->base + m->nrows;
         if (m->nrows > 0 && from >= m->base && end <= have_end)
@@ -120,25 +154,40 @@ int table_model_fetch(struct table_model *m, int64_t from, int64_t n,
             rc = store_browse_page(m->store, &m->browse,
                                    &m->rows[m->nrows - 1], 0, TABLE_PAGE,
                                    collect, b, err);
+            if (rc == FACET_OK && b->n < TABLE_PAGE && !m->estimated) {
+                /* the end of the table: the count is now known */
+                m->count = m->base + m->nrows + b->n;
+                m->count_exact = 1;
+            }
             if (rc == FACET_OK && b->n == 0)
                 break;  /* the table shrank under us */
             if (rc == FACET_OK)
                 window_append(m, b);
+            if (end > m->count)
+                end = m->count;
         } else if (m->nrows > 0 && end <= have_end && end >= m->base &&
-                   m->base > 0) {
+                   (m->base > 0 || m->estimated)) {
             /* next to the start: the page before the first row held */
             rc = store_browse_page(m->store, &m->browse, &m->rows[0], 1,
                                    TABLE_PAGE, collect, b, err);
-            if (rc == FACET_OK && b->n == 0)
+            if (rc == FACET_OK && b->n == 0) {
+                if (m->estimated)
+                    window_prepend(m, b);  /* rows[0] is the first */
                 break;
-            if (rc == FACET_OK)
-                window_prepend(m, b);
-        } else if (end > m->count - TABLE_PAGE) {
+            }
+            if (rc == FACET_OK) {
+                int64_t shift = window_prepend(m, b);
+                from += shift;
+                end += shift;
+            }
+        } else if (m->count_exact && end > m->count - TABLE_PAGE) {
             /* near the end: the last page, read backwards */
             rc = store_browse_page(m->store, &m->browse, NULL, 1,
                                    TABLE_PAGE, collect, b, err);
-            if (rc == FACET_OK)
+            if (rc == FACET_OK) {
                 window_set(m, b, 1, m->count - b->n);
+                m->estimated = 0;
+            }
             if (rc == FACET_OK && (b->n == 0 || from >= m->base))
                 break;
         } else {
@@ -147,8 +196,10 @@ int table_model_fetch(struct table_model *m, int64_t from, int64_t n,
                                                       : 0;
             rc = store_browse_offset(m->store, &m->browse, start, TABLE_PAGE,
                                      collect, b, err);
-            if (rc == FACET_OK)
+            if (rc == FACET_OK) {
                 window_set(m, b, 0, start);
+                m->estimated = 0;
+            }
             if (rc == FACET_OK && b->n == 0)
                 break;
         }
@@ -157,15 +208,100 @@ int table_model_fetch(struct table_model *m, int64_t from, int64_t n,
     return rc;
 }
 
+/* Counts TABLE_COUNT_CAP options past the last row held, so that the
+ * count grows as far as the user scrolls. */
+static int count_further(struct table_model *m, struct facet_error *err)
+{
+    if (m->nrows == 0)
+        return table_model_fetch(m, m->count - 1, 1, err);
+    int64_t more;
+    m->fetches++;
+    int rc = store_browse_count_capped(m->store, &m->browse,
+                                       &m->rows[m->nrows - 1], 0,
+                                       TABLE_COUNT_CAP, &more, err);
+    if (rc != FACET_OK)
+        return rc;
+    if (m->base + m->nrows + more > m->count)
+        m->count = m->base + m->nrows + more;
+    m->count_exact = more < TABLE_COUNT_CAP && !m->estimated;
+    return FACET_OK;
+}
+
 int table_model_select(struct table_model *m, int64_t position,
                        struct facet_error *err)
 {
+    if (!m->count_exact && m->count > 0 && position >= m->count - 1) {
+        int rc;
+        if (position == m->count - 1 &&
+            position - m->selected > TABLE_PAGE) {
+            rc = table_model_count_exact(m, err);  /* End, G */
+            position = m->count - 1;
+        } else {
+            rc = count_further(m, err);
+        }
+        if (rc != FACET_OK)
+            return rc;
+    }
     if (position >= m->count)
         position = m->count - 1;
     if (position < 0)
         position = 0;
     m->selected = position;
-    return table_model_fetch(m, position - 60, 121, err);
+    int rc = table_model_fetch(m, position - 60, 121, err);
+    if (m->selected >= m->count)  /* the end came nearer than counted */
+        m->selected = m->count > 0 ? m->count - 1 : 0;
+    return rc;
+}
+
+int table_model_count_exact(struct table_model *m, struct facet_error *err)
+{
+    if (m->count_exact)
+        return FACET_OK;
+    int64_t count;
+    m->fetches++;
+    int rc = store_browse_count(m->store, &m->browse, &count, err);
+    if (rc != FACET_OK)
+        return rc;
+    m->count = count;
+    m->count_exact = 1;
+    if (m->estimated) {
+        /* the window's numbering is a guess: start again from the top */
+        m->estimated = 0;
+        m->nrows = 0;
+        m->base = 0;
+    }
+    return FACET_OK;
+}
+
+int table_model_count_step(struct table_model *m, int64_t rows,
+                           struct facet_error *err)
+{
+    if (m->count_exact)
+        return 1;
+    int done;
+    m->fetches++;
+    int rc = store_browse_count_step(m->store, &m->browse, rows,
+                                     &m->count_from, &m->count_sofar, &done,
+                                     err);
+    if (rc != FACET_OK)
+        return -1;
+    if (done && !m->estimated) {
+        m->count = m->count_sofar;
+        m->count_exact = 1;
+        if (m->selected >= m->count)
+            m->selected = m->count > 0 ? m->count - 1 : 0;
+    } else if (m->count_sofar > m->count) {
+        m->count = m->count_sofar;
+    }
+    return done;
+}
+
+void table_model_count_text(const struct table_model *m, char *out,
+                            size_t size)
+{
+    char number[32];
+    tui_fmt_number(number, sizeof number, (double)m->count, 0, 1);
+    snprintf(out, size, "%s%s", number, m->count_exact ? "" : "+");
 }
 
 /* filter_match's view of an option's columns. */
@@ -211,25 +347,68 @@ static int window_around(struct table_model *m, const struct option_row *keep,
     return rc;
 }
 
-/* Counts again, empties the window, and selects keep (an option) at its
- * new position when the model shows it, else position fallback. */
-static int reload(struct table_model *m, const struct option_row *keep,
-                  int64_t fallback, int recount, struct facet_error *err)
+/* Counts again with a cap: the count, whether it is exact, and whether
+ * the filter passes so few options that they are found first and sorted
+ * (option_browse.filter_first). */
+static int recount(struct table_model *m, struct facet_error *err)
 {
-    int rc = recount ? store_browse_count(m->store, &m->browse, &m->count,
-                                          err)
-                     : FACET_OK;
+    m->browse.filter_first = 0;
+    m->count_from = m->count_sofar = 0;
+    m->fetches++;
+    int rc = store_browse_count_capped(m->store, &m->browse, NULL, 0,
+                                       TABLE_COUNT_CAP, &m->count, err);
+    if (rc != FACET_OK)
+        return rc;
+    m->count_exact = m->count < TABLE_COUNT_CAP;
+    m->browse.filter_first = (m->browse.where != NULL ||
+                              m->browse.pareto_only) &&
+                             m->count_exact &&
+                             m->count <= TABLE_FILTER_FIRST;
+    return FACET_OK;
+}
+
+/* The position of keep (shown by the model) into *position: exact within
+ * TABLE_POSITION_CAP rows of the start, else that cap, and the model's
+ * positions become estimates. */
+static int locate(struct table_model *m, const struct option_row *keep,
+                  int64_t *position, struct facet_error *err)
+{
+    m->fetches++;
+    int rc = store_browse_count_capped(m->store, &m->browse, keep, 1,
+                                       TABLE_POSITION_CAP, position, err);
+    if (rc == FACET_OK && *position >= TABLE_POSITION_CAP)
+        m->estimated = 1;
+    return rc;
+}
+
+/* Fills the window around keep at position and makes the count cover
+ * what the window holds. */
+static int keep_at(struct table_model *m, const struct option_row *keep,
+                   int64_t position, struct facet_error *err)
+{
+    int rc = window_around(m, keep, position, err);
+    if (rc == FACET_OK && m->count < m->base + m->nrows)
+        m->count = m->base + m->nrows;
+    return rc;
+}
+
+/* Counts again (when recount), empties the window, and selects keep (an
+ * option) at its new position when the model shows it, else position
+ * fallback. */
+static int reload(struct table_model *m, const struct option_row *keep,
+                  int64_t fallback, int do_recount, struct facet_error *err)
+{
+    int rc = do_recount ? recount(m, err) : FACET_OK;
     if (rc != FACET_OK)
         return rc;
     m->nrows = 0;
     m->base = 0;
+    m->estimated = 0;
     int64_t position = fallback;
     if (keep != NULL && table_model_shows(m, keep)) {
-        rc = store_browse_position(m->store, &m->browse, keep, &position,
-                                   err);
-        if (rc != FACET_OK)
-            return rc;
-        rc = window_around(m, keep, position, err);
+        rc = locate(m, keep, &position, err);
+        if (rc == FACET_OK)
+            rc = keep_at(m, keep, position, err);
         if (rc != FACET_OK)
             return rc;
     }
@@ -252,8 +431,12 @@ int table_model_select_number(struct table_model *m, int64_t number,
                                                                   &option))
         return FACET_OK;
     int64_t position;
-    int rc = store_browse_position(m->store, &m->browse, &option, &position,
-                                   err);
+    m->nrows = 0;
+    m->base = 0;
+    m->estimated = 0;
+    int rc = locate(m, &option, &position, err);
+    if (rc == FACET_OK)
+        rc = keep_at(m, &option, position, err);
     if (rc != FACET_OK)
         return rc;
     *found = 1;

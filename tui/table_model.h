@@ -10,6 +10,7 @@
 #ifndef FACET_TUI_TABLE_MODEL_H
 #define FACET_TUI_TABLE_MODEL_H
 
+#include <stddef.h>
 #include <stdint.h>
 
 #include "store/filter.h"
@@ -19,12 +20,27 @@
 #define TABLE_WINDOW 600
 #define TABLE_PAGE 200
 
+/* A count stops here until it is needed exactly ("10,000+"); a selected
+ * option deeper than TABLE_POSITION_CAP rows in a new order is placed at
+ * that row (positions become estimates: lower bounds); a filter that
+ * passes at most TABLE_FILTER_FIRST options is read by the filter's own
+ * index or a scan and sorted, not by walking the order's index. */
+#define TABLE_COUNT_CAP 10000
+#define TABLE_POSITION_CAP 10000
+#define TABLE_FILTER_FIRST 2000
+
 struct table_model {
     struct store *store;          /* borrowed */
     struct option_browse browse;  /* run, Pareto-only, filter, keys */
     struct filter *filter;        /* owned; browse.where points to it */
     char key_names[BROWSE_MAX_KEYS][32];  /* browse.keys[k].column */
-    int64_t count;                /* options the browse sees */
+    int64_t count;                /* options the browse sees; when
+                                     count_exact is 0, a lower bound that
+                                     grows as the table is scrolled */
+    int count_exact;              /* count is the exact count */
+    int estimated;                /* positions are lower bounds (a deep
+                                     option kept across a re-sort) */
+    int64_t count_from, count_sofar;  /* table_model_count_step's place */
     int64_t selected;             /* position of the selected row, or 0 */
     int64_t base;                 /* position of rows[0] */
     struct option_row *rows;      /* rows[0..nrows): window */
@@ -52,7 +68,10 @@ const struct option_row *table_model_selection(const struct table_model *m);
 int table_model_fetch(struct table_model *m, int64_t from, int64_t n,
                       struct facet_error *err);
 
-/* Moves the selection to position (clamped) and fetches around it. */
+/* Moves the selection to position (clamped) and fetches around it. While
+ * the count is a lower bound, a position at or past the last row known
+ * counts further (TABLE_COUNT_CAP more), except a far jump to exactly
+ * count - 1 (the last row: End, G), which counts exactly first. */
 int table_model_select(struct table_model *m, int64_t position,
                        struct facet_error *err);
 
@@ -80,6 +99,21 @@ int table_model_set_sort(struct table_model *m, const struct browse_key *keys,
 /* Counts again and refetches (options were added by a live run, or
  * ranks written), keeping the selected option selected. */
 int table_model_refresh(struct table_model *m, struct facet_error *err);
+
+/* The count as a table shows it: "1,234" or, while it is a lower bound,
+ * "10,000+". */
+void table_model_count_text(const struct table_model *m, char *out,
+                            size_t size);
+
+/* Counts exactly now (reads every option of the run with a filter, the
+ * run's index without one). */
+int table_model_count_exact(struct table_model *m, struct facet_error *err);
+
+/* One bounded step of an exact count (at most rows options looked at),
+ * for a screen to call between keystrokes; returns 1 when the count is
+ * exact, 0 when more steps are needed, < 0 on error (err filled). */
+int table_model_count_step(struct table_model *m, int64_t rows,
+                           struct facet_error *err);
 
 /* Whether option passes the model's filter and Pareto-only setting. */
 int table_model_shows(const struct table_model *m,

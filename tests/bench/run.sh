@@ -17,3 +17,6 @@ echo "== The paper's whole space (336 grids) on the 100k-triangle roof, into SQL
 echo
 echo "== NSGA-II: Facet against DEAP on ZDT1 (population 100 x 250 generations)"
 tests/bench/bench_nsga2.sh "$build"
+echo
+echo "== The TUI's options table on 1,000,000 options: open, sort, filter, page, end"
+"$build/bench/bench_tui"

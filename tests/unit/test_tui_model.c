@@ -283,7 +283,7 @@ static void test_store_browse(void **state)
     int64_t run;
     struct store *store = make_store(&run);
     struct facet_error err;
-    struct option_browse b = {run, 0, NULL, {{"cost", 0}}, 1};
+    struct option_browse b = {run, 0, NULL, {{"cost", 0}}, 1, 0};
     double lo, hi;
     assert_int_equal(store_browse_range(store, &b, "cost", &lo, &hi, &err),
                      FACET_OK);
