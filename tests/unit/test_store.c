@@ -473,7 +473,7 @@ static void test_refuses_other_files(void **state)
 }
 
 /* A file of schema version 1 (no views, no indexes) is brought up to the
- * current version when opened, and keeps its runs. */
+ * current version (3) when opened, and keeps its runs. */
 static void test_migrates_older_schema(void **state)
 {
     (void)state;
@@ -491,6 +491,9 @@ static void test_migrates_older_schema(void **state)
     sql(path, "DROP VIEW pareto; DROP VIEW run_summary;"
               "DROP INDEX options_by_rank; DROP INDEX options_by_cost;"
               "DROP INDEX options_by_planarity; DROP INDEX options_by_dp_area;"
+              "DROP INDEX options_by_fp_area; DROP INDEX options_by_sp_area;"
+              "DROP INDEX options_by_nu; DROP INDEX options_by_nv;"
+              "DROP INDEX options_by_threshold;"
               "PRAGMA user_version = 1;");
     assert_int_equal(store_open(path, &store, &err), FACET_OK);
     struct run_info info;
@@ -506,9 +509,9 @@ static void test_migrates_older_schema(void **state)
                      " type = 'index' AND name LIKE 'options_by_%')",
                      -1, &s, NULL), SQLITE_OK);
     assert_int_equal(sqlite3_step(s), SQLITE_ROW);
-    assert_int_equal(sqlite3_column_int(s, 0), 2);
+    assert_int_equal(sqlite3_column_int(s, 0), 3);
     assert_int_equal(sqlite3_column_int(s, 1), info.pareto_options);
-    assert_int_equal(sqlite3_column_int(s, 2), 4);
+    assert_int_equal(sqlite3_column_int(s, 2), 9);
     sqlite3_finalize(s);
     sqlite3_close(db);
 }
