@@ -1,0 +1,60 @@
+/*
+ * study_export.h: a stored option or run out of Facet, as files: what
+ * `facet export`, `facet plot` and the TUI's export keys all do.
+ *
+ * An option goes out as OBJ + MTL (core/export_obj.h), a CSV panel
+ * schedule and JSON (core/report.h) and an SVG panel map (core/svg_map.h);
+ * a run as an SVG scatter (core/svg_plot.h). Every file is opened (as
+ * FILE.partial) before any work and renamed into place only when all of
+ * them are written, so an export that fails leaves no file behind, new or
+ * old; an existing file is refused unless force is set.
+ */
+#ifndef FACET_STUDY_EXPORT_H
+#define FACET_STUDY_EXPORT_H
+
+#include "core/svg_map.h"
+#include "store.h"
+
+enum export_file { EXPORT_OBJ, EXPORT_MTL, EXPORT_CSV, EXPORT_JSON,
+                   EXPORT_SVG, EXPORT_FILES };
+
+struct export_request {
+    const char *obj, *csv, *json, *svg;   /* paths; NULL: not wanted */
+    int force;                            /* overwrite existing files */
+    struct svg_map_options map;           /* view and colouring of the SVG */
+    /* Set by study_export: the paths written, in the order written (the
+     * MTL is obj's name with .mtl), "" for those not wanted. */
+    char written[EXPORT_FILES][4096];
+};
+
+/* Writes the files request asks for of option number of run. Panels not
+ * stored yet are computed and stored first (study_option_panels); the OBJ
+ * and the SVG need the surface file, which must be unchanged. Returns
+ * FACET_OK, FACET_EINPUT (no such run or option, a file that exists, a
+ * path that cannot be written, no file asked for) or FACET_EWORK. */
+int study_export(struct store *store, int64_t run, int64_t number,
+                 struct export_request *request, struct facet_error *err);
+
+/* What a scatter of runs shows: option columns (store_option_columns) */
+struct plot_request {
+    const int64_t *runs;    /* the runs to overlay, one colour each */
+    int nruns;              /* 1 to PLOT_MAX_RUNS */
+    const char *x, *y;      /* columns across and up */
+    const char *size;       /* bubble size column, or NULL for dots */
+    const char *title;      /* or NULL */
+    int force;
+};
+
+#define PLOT_MAX_RUNS 8
+
+/* Writes the scatter of the request's runs to path: one circle per
+ * option, Pareto options highlighted and joined by the front, the knee
+ * marked, axes with units. FACET_EINPUT for an unknown run or column, a
+ * run without options, a path that exists or cannot be written. */
+int study_plot(struct store *store, const struct plot_request *request,
+               const char *path, struct facet_error *err);
+
+/* The unit of an option column ("USD", "m", "m^2", "mm", "" for counts). */
+const char *study_column_unit(const char *column);
+
+#endif
