@@ -15,7 +15,9 @@
 #include "app.h"
 #include "format.h"
 #include "keys.h"
+#include "input.h"
 #include "store/study.h"
+#include "store/study_export.h"
 
 struct map_screen {
     struct tui_screen base;
@@ -27,6 +29,8 @@ struct map_screen {
     int zoom;            /* columns per panel: 1 or 2; 0 = choose */
     int ci, cj;          /* cursor cell */
     int left, top;       /* first column (i) and row (from v's top) shown */
+    int exporting;       /* the export line is open */
+    struct tui_input export_to;
 };
 
 static const struct tui_key_help map_help[] = {
@@ -36,6 +40,8 @@ static const struct tui_key_help map_help[] = {
     {"0 / $", "start / end of the row"},
     {"c, F4", "colour by type (FP/SP/DP) or by class"},
     {"z, F5", "zoom: one or two columns per panel"},
+    {"e, F6", "export: PREFIX.obj (+ .mtl), PREFIX.csv and PREFIX.svg; "
+              "end the prefix with ! to overwrite"},
     {NULL, NULL},
 };
 
@@ -181,12 +187,71 @@ static void move_cursor(struct map_screen *s, int di, int dj)
         s->cj = s->panels.nv - 1;
 }
 
+/* Splits "PREFIX" or "PREFIX!" (overwrite) into the export's paths. */
+static void export_option(struct map_screen *s, struct tui_app *app)
+{
+    char prefix[TUI_INPUT_MAX];
+    snprintf(prefix, sizeof prefix, "%s", s->export_to.text);
+    size_t n = strlen(prefix);
+    int force = n > 0 && prefix[n - 1] == '!';
+    if (force)
+        prefix[--n] = '\0';
+    if (n == 0) {
+        tui_error(app, "export: give a file name prefix");
+        return;
+    }
+    char obj[TUI_INPUT_MAX + 8], csv[TUI_INPUT_MAX + 8];
+    char svg[TUI_INPUT_MAX + 8];
+    snprintf(obj, sizeof obj, "%s.obj", prefix);
+    snprintf(csv, sizeof csv, "%s.csv", prefix);
+    snprintf(svg, sizeof svg, "%s.svg", prefix);
+    struct export_request request;
+    memset(&request, 0, sizeof request);
+    request.obj = obj;
+    request.csv = csv;
+    request.svg = svg;
+    request.force = force;
+    svg_map_defaults(&request.map);
+    request.map.colour_by = s->by_class ? SVG_MAP_BY_CLASS : SVG_MAP_BY_TYPE;
+    struct facet_error err;
+    if (study_export(app->store, s->run.id, s->option.number, &request,
+                     &err) != FACET_OK) {
+        tui_error(app, "export: %s", err.message);
+        return;
+    }
+    tui_status(app, "wrote %s (+ .mtl), %s, %s", obj, csv, svg);
+}
+
+static enum tui_result export_key(struct map_screen *s, struct tui_app *app,
+                                  int key)
+{
+    enum tui_input_result r = tui_input_key(&s->export_to, key);
+    if (r == INPUT_EDITING || r == INPUT_IGNORED)
+        return RESULT_HANDLED;
+    s->exporting = 0;
+    tui_prompt(app, NULL, NULL);
+    if (r == INPUT_DONE)
+        export_option(s, app);
+    return RESULT_HANDLED;
+}
+
 static enum tui_result map_key(struct tui_screen *base, struct tui_app *app,
                                int key)
 {
     struct map_screen *s = (struct map_screen *)base;
     int page = LINES - 7 > 1 ? LINES - 7 : 1;
+    if (s->exporting)
+        return export_key(s, app, key);
     switch (key) {
+    case 'e': case KEY_F(6): {
+        char prefix[128];
+        snprintf(prefix, sizeof prefix, "facet-run%lld-option%lld",
+                 (long long)s->run.id, (long long)s->option.number);
+        tui_input_set(&s->export_to, prefix);
+        s->exporting = 1;
+        tui_prompt(app, "Export to (prefix):", &s->export_to);
+        return RESULT_HANDLED;
+    }
     case 'c': case KEY_F(4):
         s->by_class = !s->by_class;
         return RESULT_HANDLED;
@@ -233,7 +298,8 @@ static void map_destroy(struct tui_screen *base)
 
 static const struct tui_screen_class map_class = {
     "Panel map", map_help,
-    {"Help", NULL, NULL, "Colour", "Zoom", NULL, NULL, NULL, NULL, "Quit"},
+    {"Help", NULL, NULL, "Colour", "Zoom", "Export", NULL, NULL, NULL,
+     "Quit"},
     map_draw, map_key, NULL, map_destroy,
 };
 

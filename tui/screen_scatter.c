@@ -20,6 +20,7 @@
 #include "input.h"
 #include "keys.h"
 #include "scatter_model.h"
+#include "store/study_export.h"
 
 #define SCATTER_POINTS 8000
 
@@ -43,6 +44,8 @@ struct scatter_screen {
     int sampled;                 /* the points are a sample */
     int editing;
     struct tui_input filter;
+    int exporting;               /* the plot's file line is open */
+    struct tui_input plot_to;
 };
 
 static const struct tui_key_help scatter_help[] = {
@@ -55,6 +58,8 @@ static const struct tui_key_help scatter_help[] = {
     {"p, F4", "Pareto-optimal options only (shared with the table)"},
     {"/, F3", "filter (shared with the table)"},
     {"K", "the knee option"},
+    {"e, F6", "write the run's scatter as SVG with these axes (every "
+              "option); end the name with ! to overwrite"},
     {NULL, NULL},
 };
 
@@ -276,11 +281,54 @@ static void cycle(struct scatter_screen *s, int a, int dir)
     cursor_to(s, number);
 }
 
+/* Writes the run's scatter (every option, the screen's axes) to the path
+ * typed; a trailing ! overwrites. */
+static void write_plot(struct scatter_screen *s, struct tui_app *app)
+{
+    char path[TUI_INPUT_MAX];
+    snprintf(path, sizeof path, "%s", s->plot_to.text);
+    size_t n = strlen(path);
+    int force = n > 0 && path[n - 1] == '!';
+    if (force)
+        path[--n] = '\0';
+    if (n == 0) {
+        tui_error(app, "plot: give a file name");
+        return;
+    }
+    int64_t run = s->model->browse.run;
+    struct plot_request request = {&run, 1, axis_name(s, 0), axis_name(s, 1),
+                                   axis_name(s, 2), NULL, force};
+    struct facet_error err;
+    if (study_plot(app->store, &request, path, &err) != FACET_OK)
+        tui_error(app, "plot: %s", err.message);
+    else
+        tui_status(app, "wrote %s", path);
+}
+
 static enum tui_result scatter_key(struct tui_screen *base,
                                    struct tui_app *app, int key)
 {
     struct scatter_screen *s = (struct scatter_screen *)base;
     struct facet_error err;
+    if (s->exporting) {
+        enum tui_input_result r = tui_input_key(&s->plot_to, key);
+        if (r == INPUT_DONE || r == INPUT_CANCEL) {
+            s->exporting = 0;
+            tui_prompt(app, NULL, NULL);
+            if (r == INPUT_DONE)
+                write_plot(s, app);
+        }
+        return RESULT_HANDLED;
+    }
+    if (key == 'e' || key == KEY_F(6)) {
+        char name[128];
+        snprintf(name, sizeof name, "facet-run%lld-plot.svg",
+                 (long long)s->model->browse.run);
+        tui_input_set(&s->plot_to, name);
+        s->exporting = 1;
+        tui_prompt(app, "Plot to:", &s->plot_to);
+        return RESULT_HANDLED;
+    }
     if (s->editing) {
         enum tui_input_result r = tui_input_key(&s->filter, key);
         if (r == INPUT_DONE || r == INPUT_CANCEL) {
@@ -363,7 +411,7 @@ static void scatter_destroy(struct tui_screen *base)
 
 static const struct tui_screen_class scatter_class = {
     "Scatter", scatter_help,
-    {"Help", NULL, "Filter", "Pareto", NULL, NULL, NULL, NULL, NULL,
+    {"Help", NULL, "Filter", "Pareto", NULL, "Export", NULL, NULL, NULL,
      "Quit"},
     scatter_draw, scatter_key, NULL, scatter_destroy,
 };

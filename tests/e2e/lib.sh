@@ -59,3 +59,14 @@ json_check() {
         fail "$1 (false: $2)"
     fi
 }
+
+# same NAME GOT WANT: passes when the two strings are equal.
+same() {
+    if [ "$2" = "$3" ]; then
+        pass "$1"
+    else
+        echo "not ok - $1"
+        echo "  got:  $2" | head -n 5
+        echo "  want: $3" | head -n 5
+    fi
+}

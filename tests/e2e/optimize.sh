@@ -22,16 +22,6 @@ NSGA=(--u 10:20 --v 12:24 --threshold 1:20 --method nsga2 --pop 24 --gens 40)
 # sql DB QUERY: the query's rows, '|' between columns.
 sql() { sqlite3 -batch "$1" "$2"; }
 
-# same NAME GOT WANT: passes when the two strings are equal.
-same() {
-    if [ "$2" = "$3" ]; then
-        pass "$1"
-    else
-        echo "not ok - $1"
-        echo "  got:  $2" | head -n 5
-        echo "  want: $3" | head -n 5
-    fi
-}
 
 # check NAME CMD...: passes when CMD exits 0 (a checker prints why not).
 check() {
