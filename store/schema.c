@@ -363,6 +363,12 @@ int store_open(const char *path, struct store **out,
     return FACET_OK;
 }
 
+int store_analyze(struct store *store, struct facet_error *err)
+{
+    return store_exec(store, "PRAGMA analysis_limit = 1000; ANALYZE;",
+                      "gathering statistics", err);
+}
+
 int store_check(struct store *store, struct facet_error *err)
 {
     sqlite3_stmt *stmt;

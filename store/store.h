@@ -91,6 +91,12 @@ struct option_row {
 int store_open(const char *path, struct store **out, struct facet_error *err);
 void store_close(struct store *store);
 
+/* Refreshes the statistics SQLite plans queries with (a bounded ANALYZE,
+ * a fraction of a second on a million options), so that a filter on nu
+ * or nv reads its index instead of the whole run. A writer calls it when a
+ * run ends. */
+int store_analyze(struct store *store, struct facet_error *err);
+
 /* Reads every page of the file (PRAGMA integrity_check): FACET_EINPUT naming
  * the file when it is damaged. A writer calls it before adding to a file,
  * so that nothing is written into a database that is already broken; it

@@ -305,6 +305,8 @@ static int study_go(struct store *store, struct run_info *run,
         stage(hooks, "ranking options");
         rc = study_rank(store, run->id, err);
     }
+    if (rc == FACET_OK)
+        rc = store_analyze(store, err);
     if (rc == FACET_OK && *outcome == OPTIMIZE_DONE) {
         stage(hooks, "storing the Pareto options' panels");
         rc = store_front_panels(store, run, surface, err);
