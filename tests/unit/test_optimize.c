@@ -298,7 +298,7 @@ static void test_parse_space(void **state)
 {
     (void)state;
     struct facet_error err;
-    struct design_space s;
+    struct design_space s = {1, 1, 1, 1, 0, 0, 0};  /* one grid */
     int lo, hi;
     assert_int_equal(design_space_parse_sides("20:40", "--u", &lo, &hi,
                                               &err), FACET_OK);
