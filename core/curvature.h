@@ -40,6 +40,13 @@ struct curvature {
 int curvature_at_vertices(const struct mesh *mesh, int flip_normals,
                           struct curvature *out, struct facet_error *err);
 
+/* curvature_at_vertices on jobs threads (1 to 8; clamped), which is what
+ * that does with the online CPUs: each vertex is estimated on its own, so
+ * the result is the same, bit for bit, whatever jobs is. */
+int curvature_at_vertices_jobs(const struct mesh *mesh, int flip_normals,
+                               int jobs, struct curvature *out,
+                               struct facet_error *err);
+
 void curvature_free(struct curvature *curvature);
 
 #endif

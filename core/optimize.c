@@ -7,6 +7,7 @@
 
 #include <math.h>
 #include <pthread.h>
+#include <stdatomic.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -125,32 +126,80 @@ int design_space_check(const struct design_space *s, struct facet_error *err)
 
 /* --- parallel evaluation --- */
 
-struct evaluation_job {
+/* The points of a batch in the order they are evaluated (by grid), cut
+ * into groups of one grid each, which the jobs take in turn. */
+struct evaluation_plan {
     const struct surface *surface;
     const struct option_params *base;
     const struct design_point *points;
+    const size_t *order;            /* the points by grid */
+    const size_t *group;            /* ngroups + 1: group g is
+                                       order[group[g] .. group[g + 1]) */
+    size_t ngroups;
+    atomic_size_t next;             /* the next group not taken */
     struct option_totals *totals;
-    size_t first, count;
+};
+
+struct evaluation_job {
+    struct evaluation_plan *plan;
     int rc;
     struct facet_error err;
 };
 
+/* Evaluates groups until none is left or one fails. A group's grid is
+ * panelized once: its other points (only the threshold differs) have the
+ * same panels, which are only classified anew. */
 static void *evaluation_thread(void *argument)
 {
     struct evaluation_job *job = argument;
-    for (size_t k = job->first; k < job->first + job->count; k++) {
-        struct option_params params = *job->base;
-        params.nu = job->points[k].nu;
-        params.nv = job->points[k].nv;
-        params.classify.threshold = job->points[k].threshold_mm / 1000;
-        struct panelization panels;
-        job->rc = option_evaluate(job->surface, &params, &panels,
-                                  &job->totals[k], &job->err);
-        panelization_free(&panels);
-        if (job->rc != FACET_OK)
+    struct evaluation_plan *plan = job->plan;
+    for (;;) {
+        size_t g = atomic_fetch_add(&plan->next, 1);
+        if (g >= plan->ngroups)
             break;
+        struct panelization panels;
+        for (size_t x = plan->group[g]; x < plan->group[g + 1]; x++) {
+            size_t k = plan->order[x];
+            struct option_params params = *plan->base;
+            params.nu = plan->points[k].nu;
+            params.nv = plan->points[k].nv;
+            params.classify.threshold = plan->points[k].threshold_mm / 1000;
+            if (x == plan->group[g]) {
+                job->rc = option_evaluate(plan->surface, &params, &panels,
+                                          &plan->totals[k], &job->err);
+            } else {
+                job->rc = classify_check_options(&params.classify,
+                                                 &job->err);
+                if (job->rc == FACET_OK)
+                    classify_panels(&panels, &params.classify,
+                                    &plan->totals[k]);
+            }
+            if (job->rc != FACET_OK)
+                break;
+        }
+        panelization_free(&panels);
+        if (job->rc != FACET_OK) {
+            atomic_store(&plan->next, plan->ngroups);  /* the others stop */
+            break;
+        }
     }
     return NULL;
+}
+
+/* A point's place in the order of evaluation: by grid, then index. */
+struct grid_key {
+    int nu, nv;
+    size_t index;
+};
+
+static int compare_by_grid(const void *a, const void *b)
+{
+    const struct grid_key *p = a, *q = b;
+    if (p->nu != q->nu)
+        return p->nu < q->nu ? -1 : 1;
+    if (p->nv != q->nv)
+        return p->nv < q->nv ? -1 : 1;
+    return p->index < q->index ? -1 : p->index > q->index;
 }
 
 #define MAX_JOBS 64
@@ -164,18 +213,47 @@ int optimize_evaluate(const struct surface *surface,
         jobs = 1;
     if (jobs > MAX_JOBS)
         jobs = MAX_JOBS;
-    if ((size_t)jobs > n)
-        jobs = n > 0 ? (int)n : 1;
+    /* Points that share a grid make one group, panelized once for all
+     * their thresholds. Already ordered (exhaustive: thresholds innermost)
+     * is kept as is. */
+    size_t *order = malloc((n ? n : 1) * sizeof *order);
+    size_t *group = malloc((n + 1) * sizeof *group);
+    struct grid_key *key = malloc((n ? n : 1) * sizeof *key);
+    if (order == NULL || group == NULL || key == NULL) {
+        free(order);
+        free(group);
+        free(key);
+        return facet_error_set(err, FACET_EWORK, "out of memory");
+    }
+    int sorted = 1;
+    for (size_t k = 0; k < n; k++) {
+        key[k] = (struct grid_key){points[k].nu, points[k].nv, k};
+        if (k > 0 && compare_by_grid(&key[k - 1], &key[k]) > 0)
+            sorted = 0;
+    }
+    if (!sorted)
+        qsort(key, n, sizeof *key, compare_by_grid);
+    size_t ngroups = 0;
+    for (size_t k = 0; k < n; k++) {
+        order[k] = key[k].index;
+        if (k == 0 || key[k].nu != key[k - 1].nu ||
+            key[k].nv != key[k - 1].nv)
+            group[ngroups++] = k;
+    }
+    group[ngroups] = n;
+    free(key);
+    if ((size_t)jobs > ngroups)
+        jobs = ngroups > 0 ? (int)ngroups : 1;
+
+    struct evaluation_plan plan = {surface, base, points, order, group,
+                                   ngroups, 0, totals};
+    atomic_init(&plan.next, 0);
     struct evaluation_job job[MAX_JOBS];
     pthread_t thread[MAX_JOBS];
     int started[MAX_JOBS];
-    size_t first = 0;
     for (int k = 0; k < jobs; k++) {
-        size_t count = n / (size_t)jobs + ((size_t)k < n % (size_t)jobs);
-        job[k] = (struct evaluation_job){surface, base, points, totals,
-                                         first, count, FACET_OK, {0, ""}};
-        first += count;
-        /* The calling thread does the last share itself. */
+        job[k] = (struct evaluation_job){&plan, FACET_OK, {0, ""}};
+        /* The calling thread is the last job itself. */
         started[k] = k + 1 < jobs &&
             pthread_create(&thread[k], NULL, evaluation_thread, &job[k]) == 0;
     }
@@ -185,6 +263,8 @@ int optimize_evaluate(const struct surface *surface,
     for (int k = 0; k < jobs; k++)
         if (started[k])
             pthread_join(thread[k], NULL);
+    free(order);
+    free(group);
     for (int k = 0; k < jobs; k++)
         if (job[k].rc != FACET_OK) {
             if (err != NULL)

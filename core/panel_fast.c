@@ -409,8 +409,11 @@ static void split_triangle(struct fast *f, uint32_t t, int i0, int i1,
     const uint32_t *point = f->prep->corner + 3 * (size_t)t;
     const struct panel_prep_point *P[3];
     double corner[3][3];
-    struct split_vertex rest[SPLIT_MAX], row[SPLIT_MAX], piece[SPLIT_MAX],
-        scratch[SPLIT_MAX];
+    /* Buffers taken in turn rather than copied: the rest of the triangle
+     * (two), the row split off it, the rest of the row (two), the piece
+     * split off that. */
+    struct split_vertex buffer[6][SPLIT_MAX];
+    struct split_vertex *rest = buffer[0], *rest_next = buffer[1];
     int nrest = 3;
     for (int k = 0; k < 3; k++) {
         P[k] = &f->prep->point[point[k]];
@@ -423,28 +426,36 @@ static void split_triangle(struct fast *f, uint32_t t, int i0, int i1,
         rest[k].b[k] = 1;
     }
     for (int j = j0; j <= j1 && nrest >= 3; j++) {
+        struct split_vertex *row;
         int nrow;
         if (j < j1) {
             int nnext;
+            row = buffer[2];
             split(rest, nrest, 1, g->vmin + (j + 1) * g->dv, row, &nrow,
-                  scratch, &nnext);
-            memcpy(rest, scratch, sizeof rest[0] * (size_t)nnext);
+                  rest_next, &nnext);
+            struct split_vertex *swap = rest;
+            rest = rest_next;
+            rest_next = swap;
             nrest = nnext;
         } else {
-            memcpy(row, rest, sizeof rest[0] * (size_t)nrest);
+            row = rest;
             nrow = nrest;
             nrest = 0;
         }
+        struct split_vertex *row_next = buffer[3];
         for (int i = i0; i <= i1 && nrow >= 3; i++) {
+            struct split_vertex *piece;
             int npiece;
             if (i < i1) {
                 int nnext;
+                piece = buffer[5];
                 split(row, nrow, 0, g->umin + (i + 1) * g->du, piece,
-                      &npiece, scratch, &nnext);
-                memcpy(row, scratch, sizeof row[0] * (size_t)nnext);
+                      &npiece, row_next, &nnext);
+                row = row_next;
+                row_next = row_next == buffer[3] ? buffer[4] : buffer[3];
                 nrow = nnext;
             } else {
-                memcpy(piece, row, sizeof row[0] * (size_t)nrow);
+                piece = row;
                 npiece = nrow;
                 nrow = 0;
             }

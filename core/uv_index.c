@@ -5,19 +5,33 @@
 #include "uv_index.h"
 
 #include <math.h>
+#include <pthread.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 /* Cells per triangle: about one keeps buckets short without wasting memory. */
 #define MAX_CELLS_PER_AXIS 4096
 
+/* fmin and fmax for numbers that are not NaN (every UV value here is
+ * finite: uv_index_build refuses others), without the library call. */
+static inline double min2(double a, double b)
+{
+    return b < a ? b : a;
+}
+
+static inline double max2(double a, double b)
+{
+    return b > a ? b : a;
+}
+
 static void triangle_box(const double *uv, size_t t, double box[4])
 {
     const double *c = uv + 6 * t;
-    box[0] = fmin(c[0], fmin(c[2], c[4]));
-    box[1] = fmin(c[1], fmin(c[3], c[5]));
-    box[2] = fmax(c[0], fmax(c[2], c[4]));
-    box[3] = fmax(c[1], fmax(c[3], c[5]));
+    box[0] = min2(c[0], min2(c[2], c[4]));
+    box[1] = min2(c[1], min2(c[3], c[5]));
+    box[2] = max2(c[0], max2(c[2], c[4]));
+    box[3] = max2(c[1], max2(c[3], c[5]));
 }
 
 static int cell_of(double x, double origin, double size, int count)
@@ -224,10 +238,10 @@ static int separated_by_edges_of(const double *a, const double *b,
         for (int k = 0; k < 3; k++) {
             double pa = a[2 * k] * nx + a[2 * k + 1] * ny;
             double pb = b[2 * k] * nx + b[2 * k + 1] * ny;
-            amin = fmin(amin, pa);
-            amax = fmax(amax, pa);
-            bmin = fmin(bmin, pb);
-            bmax = fmax(bmax, pb);
+            amin = min2(amin, pa);
+            amax = max2(amax, pa);
+            bmin = min2(bmin, pb);
+            bmax = max2(bmax, pb);
         }
         if (amax <= bmin + tolerance || bmax <= amin + tolerance)
             return 1;
@@ -242,6 +256,58 @@ static int interiors_overlap(const double *a, const double *b,
 {
     return !separated_by_edges_of(a, b, tolerance) &&
            !separated_by_edges_of(b, a, tolerance);
+}
+
+/* uv_check's pair test over the cell rows [j0, j1) of index. */
+struct overlap_job {
+    const struct uv_index *index;
+    const double *uv;
+    double tiny_area, tolerance;
+    int j0, j1;
+    size_t overlapping;   /* out: the overlapping pairs found */
+};
+
+enum { OVERLAP_THREADS_MAX = 8, OVERLAP_THREADS_FROM = 20000 };
+
+static void *overlap_rows(void *argument)
+{
+    struct overlap_job *job = argument;
+    const struct uv_index *index = job->index;
+    const double *uv = job->uv;
+    for (int j = job->j0; j < job->j1; j++)
+        for (int i = 0; i < index->ncells_u; i++) {
+            size_t c = (size_t)j * index->ncells_u + i;
+            for (uint32_t x = index->cell_start[c];
+                 x < index->cell_start[c + 1]; x++) {
+                uint32_t s = index->cell_triangles[x];
+                const double *a = uv + 6 * (size_t)s;
+                if (fabs(signed_area(a)) <= job->tiny_area)
+                    continue;
+                double box_a[4];
+                triangle_box(uv, s, box_a);
+                for (uint32_t y = x + 1; y < index->cell_start[c + 1]; y++) {
+                    uint32_t t = index->cell_triangles[y];
+                    const double *b = uv + 6 * (size_t)t;
+                    if (fabs(signed_area(b)) <= job->tiny_area)
+                        continue;
+                    double box_b[4];
+                    triangle_box(uv, t, box_b);
+                    double lo_u = max2(box_a[0], box_b[0]);
+                    double lo_v = max2(box_a[1], box_b[1]);
+                    if (lo_u > min2(box_a[2], box_b[2]) ||
+                        lo_v > min2(box_a[3], box_b[3]))
+                        continue;
+                    if (cell_of(lo_u, index->umin, index->cell_u,
+                                index->ncells_u) != i ||
+                        cell_of(lo_v, index->vmin, index->cell_v,
+                                index->ncells_v) != j)
+                        continue;
+                    if (interiors_overlap(a, b, job->tolerance))
+                        job->overlapping++;
+                }
+            }
+        }
+    return NULL;
 }
 
 int uv_check(const double *uv, size_t ntriangles, struct uv_report *report,
@@ -277,40 +343,34 @@ int uv_check(const double *uv, size_t ntriangles, struct uv_report *report,
     report->flipped = positive < negative ? positive : negative;
 
     /* Test each pair of triangles that share a cell, once: in the cell that
-     * holds the lower-left corner of their bounding boxes' intersection. */
-    for (int j = 0; j < index.ncells_v; j++)
-        for (int i = 0; i < index.ncells_u; i++) {
-            size_t c = (size_t)j * index.ncells_u + i;
-            for (uint32_t x = index.cell_start[c];
-                 x < index.cell_start[c + 1]; x++) {
-                uint32_t s = index.cell_triangles[x];
-                const double *a = uv + 6 * (size_t)s;
-                if (fabs(signed_area(a)) <= tiny_area)
-                    continue;
-                double box_a[4];
-                triangle_box(uv, s, box_a);
-                for (uint32_t y = x + 1; y < index.cell_start[c + 1]; y++) {
-                    uint32_t t = index.cell_triangles[y];
-                    const double *b = uv + 6 * (size_t)t;
-                    if (fabs(signed_area(b)) <= tiny_area)
-                        continue;
-                    double box_b[4];
-                    triangle_box(uv, t, box_b);
-                    double lo_u = fmax(box_a[0], box_b[0]);
-                    double lo_v = fmax(box_a[1], box_b[1]);
-                    if (lo_u > fmin(box_a[2], box_b[2]) ||
-                        lo_v > fmin(box_a[3], box_b[3]))
-                        continue;
-                    if (cell_of(lo_u, index.umin, index.cell_u,
-                                index.ncells_u) != i ||
-                        cell_of(lo_v, index.vmin, index.cell_v,
-                                index.ncells_v) != j)
-                        continue;
-                    if (interiors_overlap(a, b, tolerance))
-                        report->overlapping++;
-                }
-            }
-        }
+     * holds the lower-left corner of their bounding boxes' intersection.
+     * Rows of cells are shared among the online CPUs (at most 8) when
+     * there are enough triangles to pay for threads. */
+    struct overlap_job job[OVERLAP_THREADS_MAX];
+    long cpus = sysconf(_SC_NPROCESSORS_ONLN);
+    int njobs = ntriangles < OVERLAP_THREADS_FROM || cpus < 2 ? 1
+                : cpus < OVERLAP_THREADS_MAX ? (int)cpus : OVERLAP_THREADS_MAX;
+    if (njobs > index.ncells_v)
+        njobs = index.ncells_v;
+    pthread_t thread[OVERLAP_THREADS_MAX];
+    int started[OVERLAP_THREADS_MAX] = {0};
+    for (int k = 0; k < njobs; k++) {
+        job[k] = (struct overlap_job){&index, uv, tiny_area, tolerance,
+            (int)((long)index.ncells_v * k / njobs),
+            (int)((long)index.ncells_v * (k + 1) / njobs), 0};
+        if (k > 0)
+            started[k] = pthread_create(&thread[k], NULL, overlap_rows,
+                                        &job[k]) == 0;
+    }
+    overlap_rows(&job[0]);
+    for (int k = 1; k < njobs; k++) {
+        if (started[k])
+            pthread_join(thread[k], NULL);
+        else
+            overlap_rows(&job[k]);
+        job[0].overlapping += job[k].overlapping;
+    }
+    report->overlapping = job[0].overlapping;
     uv_index_free(&index);
     return FACET_OK;
 }

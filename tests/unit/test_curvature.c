@@ -635,6 +635,50 @@ static void test_roof(void **state)
     check_flat("roof", 39.56 / 4 - 1.5, 1e-6);
 }
 
+/* The vertices shared among threads give the answer of one thread, bit
+ * for bit, whatever the number of threads and however the chunks fall
+ * (both examples span several chunks), with the normals flipped or not. */
+static void test_threads_same(void **state)
+{
+    (void)state;
+    static const char *names[] = {"roof", "torus"};
+    static const int jobs[] = {2, 3, 8, 64};
+    for (size_t i = 0; i < 2; i++)
+        for (int flip = 0; flip < 2; flip++) {
+            struct mesh mesh;
+            struct curvature one;
+            struct facet_error err;
+            mesh_from_example_res(names[i], 48, &mesh);
+            assert_true(mesh.nvertices > 4 * 512);
+            assert_int_equal(curvature_at_vertices_jobs(&mesh, flip, 1, &one,
+                                                        &err), FACET_OK);
+            size_t n = mesh.nvertices;
+            for (size_t k = 0; k < sizeof jobs / sizeof jobs[0]; k++) {
+                struct curvature many;
+                assert_int_equal(curvature_at_vertices_jobs(&mesh, flip,
+                                                            jobs[k], &many,
+                                                            &err), FACET_OK);
+                assert_int_equal(many.nvertices, n);
+                assert_memory_equal(one.k1, many.k1, n * sizeof(double));
+                assert_memory_equal(one.k2, many.k2, n * sizeof(double));
+                assert_memory_equal(one.dir1, many.dir1,
+                                    3 * n * sizeof(double));
+                assert_memory_equal(one.dir2, many.dir2,
+                                    3 * n * sizeof(double));
+                assert_memory_equal(one.normal, many.normal,
+                                    3 * n * sizeof(double));
+                curvature_free(&many);
+            }
+            /* And curvature_at_vertices is one of them. */
+            struct curvature usual;
+            estimate(&mesh, flip, &usual);
+            assert_memory_equal(one.k1, usual.k1, n * sizeof(double));
+            assert_memory_equal(one.k2, usual.k2, n * sizeof(double));
+            release(&mesh, &usual);
+            curvature_free(&one);
+        }
+}
+
 /* Every example at coarse resolutions, down to one quad: well formed. */
 static void test_coarse_examples(void **state)
 {
@@ -670,6 +714,7 @@ int main(void)
         cmocka_unit_test(test_vn_orients),
         cmocka_unit_test(test_roof),
         cmocka_unit_test(test_coarse_examples),
+        cmocka_unit_test(test_threads_same),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -18,6 +18,7 @@
 #include <unistd.h>
 
 #include "core/example.h"
+#include "core/optimize.h"
 #include "core/option.h"
 
 #define PI 3.14159265358979323846
@@ -459,6 +460,44 @@ static void test_fast_matches_reference(void **state)
     }
 }
 
+/* A batch whose points share grids (only the threshold differs), given in
+ * no particular order, panelizes each grid once and gives every point the
+ * totals option_evaluate gives it alone, on one thread and on several. */
+static void test_batch_shares_grids(void **state)
+{
+    (void)state;
+    struct surface s;
+    open_example("roof", 24, &s);
+    static const struct design_point points[] = {
+        {8, 6, 0}, {9, 6, 3}, {8, 6, 5}, {8, 7, 5}, {9, 6, 0}, {8, 6, 40},
+        {8, 7, 0}, {9, 6, 3.5}, {8, 6, 1},
+    };
+    size_t n = sizeof points / sizeof points[0];
+    struct option_params base;
+    memset(&base, 0, sizeof base);
+    base.mode = PANEL_EXTREMES;
+    classify_defaults(&base.classify);
+    struct option_totals alone[sizeof points / sizeof points[0]];
+    for (size_t k = 0; k < n; k++) {
+        struct panelization p;
+        evaluate(&s, points[k].nu, points[k].nv,
+                 points[k].threshold_mm / 1000, &p, &alone[k]);
+        panelization_free(&p);
+    }
+    /* The thresholds do change the totals: the sharing is not vacuous. */
+    assert_true(alone[0].count[TYPE_FP] != alone[5].count[TYPE_FP]);
+    for (int jobs = 1; jobs <= 4; jobs++) {
+        struct option_totals batch[sizeof points / sizeof points[0]];
+        memset(batch, 0xff, sizeof batch);
+        struct facet_error err;
+        assert_int_equal(optimize_evaluate(&s, &base, points, n, jobs, batch,
+                                           &err), FACET_OK);
+        for (size_t k = 0; k < n; k++)
+            assert_memory_equal(&batch[k], &alone[k], sizeof alone[k]);
+    }
+    surface_close(&s);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -473,6 +512,7 @@ int main(void)
         cmocka_unit_test(test_roof_has_every_type),
         cmocka_unit_test(test_bad_grid),
         cmocka_unit_test(test_fast_matches_reference),
+        cmocka_unit_test(test_batch_shares_grids),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
