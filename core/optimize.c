@@ -138,6 +138,8 @@ struct evaluation_plan {
     size_t ngroups;
     atomic_size_t next;             /* the next group not taken */
     struct option_totals *totals;
+    struct panelization *keep;      /* NULL, or every point's panels (its
+                                       own group each) */
 };
 
 struct evaluation_job {
@@ -177,6 +179,10 @@ static void *evaluation_thread(void *argument)
             if (job->rc != FACET_OK)
                 break;
         }
+        if (plan->keep != NULL && job->rc == FACET_OK) {
+            plan->keep[plan->order[plan->group[g]]] = panels;
+            memset(&panels, 0, sizeof panels);
+        }
         panelization_free(&panels);
         if (job->rc != FACET_OK) {
             atomic_store(&plan->next, plan->ngroups);  /* the others stop */
@@ -204,10 +210,12 @@ static int compare_by_grid(const void *a, const void *b)
 
 #define MAX_JOBS 64
 
-int optimize_evaluate(const struct surface *surface,
-                      const struct option_params *base,
-                      const struct design_point *points, size_t n, int jobs,
-                      struct option_totals *totals, struct facet_error *err)
+/* optimize_evaluate, and with keep, optimize_evaluate_panels. */
+static int evaluate(const struct surface *surface,
+                    const struct option_params *base,
+                    const struct design_point *points, size_t n, int jobs,
+                    struct option_totals *totals, struct panelization *keep,
+                    struct facet_error *err)
 {
     if (jobs < 1)
         jobs = 1;
@@ -231,12 +239,13 @@ int optimize_evaluate(const struct surface *surface,
         if (k > 0 && compare_by_grid(&key[k - 1], &key[k]) > 0)
             sorted = 0;
     }
-    if (!sorted)
+    if (!sorted && keep == NULL)
         qsort(key, n, sizeof *key, compare_by_grid);
     size_t ngroups = 0;
     for (size_t k = 0; k < n; k++) {
         order[k] = key[k].index;
-        if (k == 0 || key[k].nu != key[k - 1].nu ||
+        /* Kept panels are each point's own: one group a point. */
+        if (k == 0 || keep != NULL || key[k].nu != key[k - 1].nu ||
             key[k].nv != key[k - 1].nv)
             group[ngroups++] = k;
     }
@@ -245,8 +254,10 @@ int optimize_evaluate(const struct surface *surface,
     if ((size_t)jobs > ngroups)
         jobs = ngroups > 0 ? (int)ngroups : 1;
 
+    if (keep != NULL && n > 0)
+        memset(keep, 0, n * sizeof *keep);
     struct evaluation_plan plan = {surface, base, points, order, group,
-                                   ngroups, 0, totals};
+                                   ngroups, 0, totals, keep};
     atomic_init(&plan.next, 0);
     struct evaluation_job job[MAX_JOBS];
     pthread_t thread[MAX_JOBS];
@@ -269,9 +280,29 @@ int optimize_evaluate(const struct surface *surface,
         if (job[k].rc != FACET_OK) {
             if (err != NULL)
                 *err = job[k].err;
+            for (size_t p = 0; keep != NULL && p < n; p++)
+                panelization_free(&keep[p]);
             return job[k].rc;
         }
     return FACET_OK;
+}
+
+int optimize_evaluate(const struct surface *surface,
+                      const struct option_params *base,
+                      const struct design_point *points, size_t n, int jobs,
+                      struct option_totals *totals, struct facet_error *err)
+{
+    return evaluate(surface, base, points, n, jobs, totals, NULL, err);
+}
+
+int optimize_evaluate_panels(const struct surface *surface,
+                             const struct option_params *base,
+                             const struct design_point *points, size_t n,
+                             int jobs, struct panelization *panels,
+                             struct option_totals *totals,
+                             struct facet_error *err)
+{
+    return evaluate(surface, base, points, n, jobs, totals, panels, err);
 }
 
 /* --- the point cache and batches --- */

@@ -119,4 +119,14 @@ int optimize_evaluate(const struct surface *surface,
                       const struct design_point *points, size_t n, int jobs,
                       struct option_totals *totals, struct facet_error *err);
 
+/* Like optimize_evaluate, keeping every point's panels: panels[0..n)
+ * (caller-owned, each released with panelization_free; all released
+ * already when it fails). */
+int optimize_evaluate_panels(const struct surface *surface,
+                             const struct option_params *base,
+                             const struct design_point *points, size_t n,
+                             int jobs, struct panelization *panels,
+                             struct option_totals *totals,
+                             struct facet_error *err);
+
 #endif

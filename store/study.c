@@ -247,24 +247,56 @@ int study_option_panels(struct store *store, const struct run_info *run,
     return rc;
 }
 
-/* Stores the panels of every Pareto option of run not stored yet. */
+/* Stores the panels of every Pareto option of run not stored yet,
+ * evaluating them on every core. */
 static int store_front_panels(struct store *store, const struct run_info *run,
                               const struct surface *surface,
+                              const struct optimize_settings *settings,
                               struct facet_error *err)
 {
     struct option_row *rows;
-    size_t n;
+    size_t n, nfront = 0;
     int rc = store_options_get(store, run->id, &rows, &n, err);
+    if (rc != FACET_OK)
+        return rc;
+    struct design_point *points = malloc((n ? n : 1) * sizeof *points);
+    int64_t *numbers = malloc((n ? n : 1) * sizeof *numbers);
+    if (points == NULL || numbers == NULL)
+        rc = facet_error_set(err, FACET_EWORK, "out of memory");
     for (size_t k = 0; rc == FACET_OK && k < n; k++) {
         if (rows[k].rank != 1)
             continue;
-        struct panelization panels;
-        struct option_totals totals;
-        rc = study_option_panels(store, run, surface, rows[k].number,
-                                 &panels, &totals, err);
-        panelization_free(&panels);
+        int stored = store_panels_exist(store, run->id, rows[k].number, err);
+        if (stored < 0)
+            rc = -stored;
+        else if (!stored) {
+            points[nfront] = (struct design_point){rows[k].nu, rows[k].nv,
+                                                   rows[k].threshold_mm};
+            numbers[nfront++] = rows[k].number;
+        }
     }
     free(rows);
+    struct panelization *panels = NULL;
+    struct option_totals *totals = NULL;
+    if (rc == FACET_OK && nfront > 0) {
+        panels = calloc(nfront, sizeof *panels);
+        totals = malloc(nfront * sizeof *totals);
+        if (panels == NULL || totals == NULL)
+            rc = facet_error_set(err, FACET_EWORK, "out of memory");
+        else
+            rc = optimize_evaluate_panels(surface, &settings->base, points,
+                                          nfront, settings->jobs, panels,
+                                          totals, err);
+        for (size_t k = 0; rc == FACET_OK && k < nfront; k++)
+            rc = store_panels_put(store, run->id, numbers[k], &panels[k],
+                                  err);
+        for (size_t k = 0; panels != NULL && k < nfront; k++)
+            panelization_free(&panels[k]);
+    }
+    free(panels);
+    free(totals);
+    free(points);
+    free(numbers);
     return rc;
 }
 
@@ -309,7 +341,7 @@ static int study_go(struct store *store, struct run_info *run,
         rc = store_analyze(store, err);
     if (rc == FACET_OK && *outcome == OPTIMIZE_DONE) {
         stage(hooks, "storing the Pareto options' panels");
-        rc = store_front_panels(store, run, surface, err);
+        rc = store_front_panels(store, run, surface, settings, err);
     }
     const char *status = rc != FACET_OK ? "failed"
                          : *outcome == OPTIMIZE_DONE ? "done"
