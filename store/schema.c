@@ -224,8 +224,18 @@ int store_schema_migrate(struct store *store, int from, int to,
         int rc = store_exec(store, "BEGIN IMMEDIATE", "migrating", err);
         if (rc != FACET_OK)
             return rc;
+        /* Another process may have migrated the file while this one
+         * waited for the write lock: look again, inside the transaction. */
+        int now = 0;
+        rc = pragma_int(store, "PRAGMA user_version", &now, err);
+        if (rc == FACET_OK && now >= version) {
+            rc = store_exec(store, "COMMIT", "migrating", err);
+            if (rc != FACET_OK)
+                return rc;
+            continue;
+        }
         snprintf(sql, sizeof sql, "PRAGMA user_version = %d", version);
-        if (version == 1)
+        if (rc == FACET_OK && version == 1)
             rc = store_exec(store, stamp,
                             "creating the schema", err);
         if (rc == FACET_OK)
@@ -240,28 +250,6 @@ int store_schema_migrate(struct store *store, int from, int to,
             return rc;
         }
     }
-    return FACET_OK;
-}
-
-/* Refuses a file that is not an SQLite database before SQLite opens it,
- * so that the message says what the file is rather than SQLite's generic
- * "file is not a database" on the first query. */
-static int check_header(const char *path, struct facet_error *err)
-{
-    FILE *file = fopen(path, "rb");
-    if (file == NULL)
-        return errno == ENOENT ? FACET_OK
-                               : facet_error_set(err, FACET_EINPUT,
-                                     "%s: cannot open: %s", path,
-                                     strerror(errno));
-    char header[16];
-    size_t got = fread(header, 1, sizeof header, file);
-    fclose(file);
-    if (got == 0)
-        return FACET_OK;  /* an empty file becomes a new database */
-    if (got < sizeof header || memcmp(header, "SQLite format 3", 16) != 0)
-        return facet_error_set(err, FACET_EINPUT,
-            "%s: not an SQLite database (is it the right file?)", path);
     return FACET_OK;
 }
 
@@ -305,13 +293,44 @@ static int reap_orphans(struct store *store, struct facet_error *err)
     return rc;
 }
 
+/* Puts the file in WAL mode (once per file: it stays so). Switching
+ * needs the file to itself and SQLite does not wait for it, so a second
+ * process opening a new file at the same moment retries for up to 10 s. */
+static int use_wal(struct store *store, struct facet_error *err)
+{
+    for (int attempt = 0;; attempt++) {
+        sqlite3_stmt *stmt;
+        int rc = store_prepare(store, "PRAGMA journal_mode = WAL", &stmt,
+                               "opening", err);
+        if (rc != FACET_OK)
+            return rc;
+        int step = sqlite3_step(stmt);
+        const char *mode = step == SQLITE_ROW
+            ? (const char *)sqlite3_column_text(stmt, 0) : NULL;
+        int wal = mode != NULL && strcmp(mode, "wal") == 0;
+        sqlite3_finalize(stmt);
+        if (wal)
+            return FACET_OK;
+        int code = sqlite3_errcode(store->db);
+        if ((step == SQLITE_ROW || code == SQLITE_BUSY ||
+             code == SQLITE_LOCKED) && attempt < 200) {
+            struct timespec pause = {0, 50 * 1000 * 1000};
+            nanosleep(&pause, NULL);
+            continue;
+        }
+        return step == SQLITE_ROW
+            ? facet_error_set(err, FACET_EINPUT,
+                  "%s: cannot switch to WAL mode (journal mode %s)",
+                  store->path, mode ? mode : "?")
+            : store_fail(store, "opening", err);
+    }
+}
+
 int store_open(const char *path, struct store **out,
                struct facet_error *err)
 {
     *out = NULL;
-    int rc = check_header(path, err);
-    if (rc != FACET_OK)
-        return rc;
+    int rc;
     struct store *store = calloc(1, sizeof *store);
     if (store == NULL || (store->path = strdup(path)) == NULL) {
         free(store);
@@ -330,7 +349,13 @@ int store_open(const char *path, struct store **out,
      * rather than fail. */
     sqlite3_busy_timeout(store->db, 10000);
     int application = 0, version = 0;
+    /* The header is read through SQLite, never with a second file
+     * descriptor: closing one would drop every lock this process holds
+     * on the file (POSIX), under another connection of this process. */
     rc = pragma_int(store, "PRAGMA application_id", &application, err);
+    if (rc != FACET_OK && sqlite3_errcode(store->db) == SQLITE_NOTADB)
+        rc = facet_error_set(err, FACET_EINPUT,
+            "%s: not an SQLite database (is it the right file?)", path);
     if (rc == FACET_OK)
         rc = pragma_int(store, "PRAGMA user_version", &version, err);
     if (rc == FACET_OK && application != STORE_APPLICATION_ID) {
@@ -348,8 +373,9 @@ int store_open(const char *path, struct store **out,
             "up to %d): upgrade Facet", path, version, FACET_VERSION,
             STORE_SCHEMA_VERSION);
     if (rc == FACET_OK)
-        rc = store_exec(store, "PRAGMA journal_mode = WAL;"
-                        "PRAGMA synchronous = NORMAL;"
+        rc = use_wal(store, err);
+    if (rc == FACET_OK)
+        rc = store_exec(store, "PRAGMA synchronous = NORMAL;"
                         "PRAGMA foreign_keys = ON;", "opening", err);
     if (rc == FACET_OK && version < STORE_SCHEMA_VERSION)
         rc = store_schema_migrate(store, version, STORE_SCHEMA_VERSION, err);

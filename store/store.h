@@ -298,4 +298,14 @@ int store_browse_sample(struct store *store, const struct option_browse *b,
                                    const struct option_row *option),
                         void *context, struct facet_error *err);
 
+/* --- the workbench's newer screens (store_tui2.c) --- */
+
+/* The least and greatest value of column (a name of store_option_columns
+ * other than run) over every option of run, NULLs left out, each read
+ * from one end of the column's index where it has one; both NaN when the
+ * run has none. Unknown columns are FACET_EINPUT. */
+int store_run_column_range(struct store *store, int64_t run,
+                           const char *column, double *min, double *max,
+                           struct facet_error *err);
+
 #endif

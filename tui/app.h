@@ -13,7 +13,10 @@
 
 #include <curses.h>
 #include <stdint.h>
+#include <time.h>
 
+#include "columns.h"
+#include "input.h"
 #include "store/store.h"
 #include "table_model.h"
 #include "theme.h"
@@ -69,6 +72,7 @@ struct tui_app {
     const struct tui_glyphs *glyphs;
     int help_open, help_top;
     struct tui_job *job;          /* NULL when no run works */
+    struct tui_column_set columns;/* the options table's, for the session */
 };
 
 /* Pushes screen (NULL: nothing, the constructor reported its error). */
@@ -84,12 +88,24 @@ void tui_error(struct tui_app *app, const char *fmt, ...)
 void tui_prompt(struct tui_app *app, const char *label,
                 const struct tui_input *input);
 
+/* Feeds key to input, the open prompt's text: on Enter or Esc the prompt
+ * closes (tui_prompt(app, NULL, NULL)) and *open becomes 0. Returns
+ * INPUT_DONE (Enter), INPUT_CANCEL (Esc) or INPUT_EDITING (anything
+ * else: the prompt stays open). */
+enum tui_input_result tui_prompt_key(struct tui_app *app,
+                                     struct tui_input *input, int *open,
+                                     int key);
+
 /* Text at (y, x) in at most width columns (UTF-8 aware: one column per
  * code point), with attr; returns the columns written. */
 int tui_put(int y, int x, int width, attr_t attr, const char *text);
 /* Same, formatted. */
 int tui_putf(int y, int x, int width, attr_t attr, const char *fmt, ...)
     __attribute__((format(printf, 5, 6)));
+/* Seconds from *t to now on CLOCK_MONOTONIC (the screens' refresh
+ * clocks). */
+double tui_seconds_since(const struct timespec *t);
+
 /* width blanks with attr at (y, x). */
 void tui_fill(int y, int x, int width, attr_t attr);
 
@@ -101,6 +117,10 @@ struct tui_screen *screen_map_new(struct tui_app *app, int64_t run,
                                   int64_t option);
 struct tui_screen *screen_scatter_new(struct tui_app *app,
                                       struct table_model *model);
+/* Parallel coordinates over model (the options table's, borrowed): its
+ * brushes set model's filter. */
+struct tui_screen *screen_parallel_new(struct tui_app *app,
+                                       struct table_model *model);
 struct tui_screen *screen_compare_new(struct tui_app *app, int64_t run,
                                       const int64_t *options, int n);
 struct tui_screen *screen_newrun_new(struct tui_app *app,

@@ -79,7 +79,17 @@ const struct tui_column tui_option_columns[] = {
     {"threshold_mm", "t", "mm", 5, 2, 0, COLUMN_NUMBER},
     {"feasible", "ok", "", 3, 0, 0, COLUMN_YESNO},
     {"rank", "rank", "", 4, 0, 0, COLUMN_NUMBER},
+    /* hidden until the column chooser shows them */
+    {"area", "area", "m^2", 8, 1, 0, COLUMN_NUMBER},
+    {"panels", "panels", "", 6, 0, 0, COLUMN_NUMBER},
+    {"dp_count", "DP n", "", 5, 0, 0, COLUMN_NUMBER},
+    {"max_panel_area", "max pan", "m^2", 7, 2, 0, COLUMN_NUMBER},
+    {"max_deviation", "max dev", "m", 7, 4, 0, COLUMN_NUMBER},
+    {"p_dist", "P_dist", "m^4", 9, 4, 0, COLUMN_NUMBER},
+    {"crowding", "crowd", "", 6, 3, 0, COLUMN_NUMBER},
+    {"generation", "gen", "", 4, 0, 0, COLUMN_NUMBER},
 };
+const int tui_option_column_default_count = 12;
 const int tui_option_column_count =
     (int)(sizeof tui_option_columns / sizeof tui_option_columns[0]);
 

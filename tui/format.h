@@ -34,10 +34,14 @@ struct tui_column {
     enum tui_column_kind kind;
 };
 
-/* The options table's columns in order: No., Pareto mark, planarity, DP
- * area, cost, FP area, SP area, U, V, threshold, feasibility, rank. */
+/* The options table's columns: first the ones it shows by default, in
+ * order (No., Pareto mark, planarity, DP area, cost, FP area, SP area, U,
+ * V, threshold, feasibility, rank: 80 characters), then the ones the
+ * column chooser can add (area, panels, DP panels, largest panel, max
+ * deviation, P_dist, crowding, generation). */
 extern const struct tui_column tui_option_columns[];
 extern const int tui_option_column_count;
+extern const int tui_option_column_default_count;
 
 /* Every metric of an option with its label, unit and format (the detail
  * pane, compare and the scatter's axes). */

@@ -17,6 +17,7 @@ struct tui_job {
     char name[128];
     char object[128], group[128];
     struct study_request request;
+    int64_t resume;               /* the run to go on with, or 0 */
     struct tui_job_state state;   /* under lock */
 };
 
@@ -66,7 +67,13 @@ static void *work(void *context)
     if (rc == FACET_OK) {
         struct study_hooks hooks = {job, on_stage, on_progress,
                                     on_should_stop, on_started};
-        rc = study_start(store, &job->request, &hooks, &run, &outcome, &err);
+        if (job->resume > 0) {
+            run = job->resume;
+            rc = study_resume(store, run, &hooks, &outcome, &err);
+        } else {
+            rc = study_start(store, &job->request, &hooks, &run, &outcome,
+                             &err);
+        }
         store_close(store);
     }
     pthread_mutex_lock(&job->lock);
@@ -78,6 +85,35 @@ static void *work(void *context)
         job->state.run = run;
     pthread_mutex_unlock(&job->lock);
     return NULL;
+}
+
+/* Starts job's thread; frees job on failure. */
+static int launch(struct tui_job *job, struct tui_job **out,
+                  struct facet_error *err)
+{
+    snprintf(job->state.stage, sizeof job->state.stage, "starting");
+    pthread_mutex_init(&job->lock, NULL);
+    if (pthread_create(&job->thread, NULL, work, job) != 0) {
+        pthread_mutex_destroy(&job->lock);
+        free(job);
+        return facet_error_set(err, FACET_EWORK,
+                               "could not start a thread for the run");
+    }
+    *out = job;
+    return FACET_OK;
+}
+
+int tui_job_resume(const char *db_path, int64_t run, struct tui_job **out,
+                   struct facet_error *err)
+{
+    *out = NULL;
+    struct tui_job *job = calloc(1, sizeof *job);
+    if (job == NULL)
+        return facet_error_set(err, FACET_EWORK, "out of memory");
+    snprintf(job->db_path, sizeof job->db_path, "%s", db_path);
+    job->resume = run;
+    job->state.run = run;
+    return launch(job, out, err);
 }
 
 int tui_job_start(const char *db_path, const struct study_request *request,
@@ -104,16 +140,7 @@ int tui_job_start(const char *db_path, const struct study_request *request,
         snprintf(job->group, sizeof job->group, "%s", request->mesh.group);
         job->request.mesh.group = job->group;
     }
-    snprintf(job->state.stage, sizeof job->state.stage, "starting");
-    pthread_mutex_init(&job->lock, NULL);
-    if (pthread_create(&job->thread, NULL, work, job) != 0) {
-        pthread_mutex_destroy(&job->lock);
-        free(job);
-        return facet_error_set(err, FACET_EWORK,
-                               "could not start a thread for the run");
-    }
-    *out = job;
-    return FACET_OK;
+    return launch(job, out, err);
 }
 
 void tui_job_state(struct tui_job *job, struct tui_job_state *out)

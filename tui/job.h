@@ -1,6 +1,6 @@
 /*
- * job.h: a New run working in a thread while the workbench stays
- * responsive. The thread opens its own connection to the database, runs
+ * job.h: a New run (or a resumed one) working in a thread while the
+ * workbench stays responsive. The thread opens its own connection to the database, runs
  * study_start through it (every batch committed as it is evaluated, so the
  * options table fills in live), and reports its stage and progress under
  * a lock; the UI polls a snapshot and may ask it to stop, which leaves the
@@ -31,6 +31,12 @@ struct tui_job_state {
  * Release with tui_job_free. */
 int tui_job_start(const char *db_path, const struct study_request *request,
                   struct tui_job **out, struct facet_error *err);
+
+/* Goes on with run (interrupted or failed) through study_resume, in a
+ * thread as tui_job_start does; the state's run is run from the start.
+ * Release with tui_job_free. */
+int tui_job_resume(const char *db_path, int64_t run, struct tui_job **out,
+                   struct facet_error *err);
 
 /* A consistent copy of the job's state. */
 void tui_job_state(struct tui_job *job, struct tui_job_state *out);

@@ -1,35 +1,44 @@
 /*
  * screen_newrun.c: New run: a form for a surface (OBJ path), its units,
  * the design space (u and v ranges, flatness threshold), the method, the
- * seed and a name; F5 (or Enter on the last field) starts the study in a
- * worker thread (job.h) and opens the run's options table, which fills in
- * live while the status line shows a progress gauge. Ctrl-X stops the run
- * (it stays resumable). The classification settings are the paper's
- * defaults; facet optimize takes the others.
+ * seed, the prices of FP, SP and DP panels, SP priced as FP, the largest
+ * panel and a name; Tab completes the surface's path (directories and
+ * OBJ files, complete.h). F5 (or Enter on the last field) starts the
+ * study in a worker thread (job.h) and opens the run's options table,
+ * which fills in live while the status line shows a progress gauge.
+ * Ctrl-X stops the run (it stays resumable). The other classification
+ * settings are the paper's defaults; facet optimize takes them all.
  */
 #include <ctype.h>
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
 
 #include "app.h"
+#include "complete.h"
 #include "input.h"
 #include "job.h"
 #include "keys.h"
 #include "store/study.h"
 
 enum field { F_SURFACE, F_UNITS, F_U, F_V, F_THRESHOLD, F_METHOD, F_SEED,
-             F_NAME, F_COUNT };
+             F_PRICES, F_SP_AS_FP, F_MAX_AREA, F_NAME, F_COUNT };
 
 static const char *const field_label[F_COUNT] = {
     "Surface (OBJ)", "Units", "U (panels)", "V (panels)", "Threshold (mm)",
-    "Method", "Seed", "Name"};
+    "Method", "Seed", "Prices FP,SP,DP", "SP priced as FP", "Max panel m^2",
+    "Name"};
 static const char *const field_hint[F_COUNT] = {
-    "path of the OBJ file", "m, cm, mm, in or ft",
+    "path of the OBJ file; Tab completes it (directories, .obj files)",
+    "m, cm, mm, in or ft",
     "A:B, panels along u", "A:B, panels along v",
     "MM, A:B or A:B:STEP", "auto, exhaustive, random or nsga2",
     "a whole number; the same seed gives the same options",
+    "USD/m^2 of flat, single- and double-curved panels",
+    "yes or no (the paper's MOGD prices SP area as FP)",
+    "the largest panel that can be made (m^2): feasibility",
     "optional"};
 
 struct newrun_screen {
@@ -37,10 +46,14 @@ struct newrun_screen {
     struct tui_input field[F_COUNT];
     int focus;
     int64_t opened;    /* the run whose table was opened */
+    struct tui_completion completion;  /* the last Tab's candidates */
+    int listing;       /* they show under the form */
 };
 
 static const struct tui_key_help newrun_help[] = {
-    {"Tab, Down", "next field"},
+    {"Tab", "on the surface: complete the path (again: list the choices);"
+            " elsewhere: next field"},
+    {"Down", "next field"},
     {"Shift-Tab, Up", "previous field"},
     {"Enter", "next field; on the last one, start"},
     {"F5", "start the run"},
@@ -59,23 +72,41 @@ static void newrun_draw(struct tui_screen *base, struct tui_app *app,
              app->db_path);
     int lw = 16, fw = width - lw - 4;
     for (int f = 0; f < F_COUNT; f++) {
-        int y = 2 + 2 * f;
+        int y = 2 + f;
         tui_putf(y, 1, lw, f == s->focus ? tui_attr(ROLE_HEADER) : A_NORMAL,
                  "%-*s", lw - 1, field_label[f]);
         attr_t attr = f == s->focus ? tui_attr(ROLE_SELECTION) : A_UNDERLINE;
         tui_fill(y, lw + 2, fw, attr);
         size_t from = f == s->focus ? tui_input_scroll(&s->field[f], fw) : 0;
         tui_put(y, lw + 2, fw, attr, s->field[f].text + from);
-        if (f == s->focus)
-            tui_put(y + 1, lw + 2, fw, tui_attr(ROLE_DIM), field_hint[f]);
     }
-    int y = 2 + 2 * F_COUNT;
-    tui_put(y, lw + 2, width - lw - 2, tui_attr(ROLE_PARETO),
+    int y = 3 + F_COUNT;
+    tui_put(y, 1, width - 2, tui_attr(ROLE_DIM), field_hint[s->focus]);
+    tui_put(y + 1, 1, width - 2, tui_attr(ROLE_PARETO),
             app->job ? "A run is working (see the gauge below)."
                      : "F5 starts the run.");
+    if (s->listing && s->focus == F_SURFACE) {
+        const struct tui_completion *c = &s->completion;
+        int top = y + 3, colw = 1;
+        for (int k = 0; k < c->kept; k++)
+            if ((int)strlen(c->name[k]) + 2 > colw)
+                colw = (int)strlen(c->name[k]) + 2;
+        if (colw > width - 2)
+            colw = width - 2;
+        int per_row = (width - 2) / colw, lines = height - top - 1;
+        tui_putf(y + 2, 1, width - 2, tui_attr(ROLE_HEADER),
+                 " %d choices%s", c->count,
+                 c->count > c->kept ? " (the first shown)" : "");
+        for (int k = 0; k < c->kept && lines > 0 &&
+                        k / per_row < lines; k++)
+            tui_put(top + k / per_row, 1 + (k % per_row) * colw, colw - 1,
+                    c->name[k][strlen(c->name[k]) - 1] == '/'
+                        ? tui_attr(ROLE_HEADER) : A_NORMAL,
+                    c->name[k]);
+    }
     if (app->prompt == NULL && !app->help_open && s->focus < F_COUNT) {
         size_t from = tui_input_scroll(&s->field[s->focus], fw);
-        move(2 + 2 * s->focus,
+        move(2 + s->focus,
              lw + 2 + (int)(s->field[s->focus].cursor - from));
         curs_set(1);
     }
@@ -114,6 +145,54 @@ static int parse_threshold(const char *text, struct design_space *space,
             "threshold: %g:%g runs backwards", space->t_min_mm,
             space->t_max_mm);
     return FACET_OK;
+}
+
+/* "FP,SP,DP" prices (USD/m^2, finite, >= 0) into price. */
+static int parse_prices(const char *text, double price[TYPE_COUNT],
+                        struct facet_error *err)
+{
+    const char *p = text;
+    for (int t = 0; t < TYPE_COUNT; t++) {
+        char *end;
+        price[t] = strtod(p, &end);
+        while (*end == ' ')
+            end++;
+        if (end == p || !isfinite(price[t]) || price[t] < 0 ||
+            *end != (t + 1 < TYPE_COUNT ? ',' : '\0'))
+            return facet_error_set(err, FACET_EINPUT,
+                "prices: '%s' is not FP,SP,DP in USD/m^2 (e.g. "
+                "701,766,1518)", text);
+        p = end + 1;
+    }
+    return FACET_OK;
+}
+
+/* Tab on the surface field: completes the path; a second Tab that adds
+ * nothing lists the choices; a path that is complete goes on to the next
+ * field. */
+static void complete(struct newrun_screen *s, struct tui_app *app)
+{
+    struct tui_input *in = &s->field[F_SURFACE];
+    int n = tui_complete_path(in->text, &s->completion);
+    if (n == 0) {
+        s->listing = 0;
+        tui_error(app, "no directory or .obj file begins with '%s'",
+                  in->text);
+        return;
+    }
+    if (strcmp(s->completion.text, in->text) != 0) {
+        tui_input_set(in, s->completion.text);
+        s->listing = n > 1 && s->listing;
+        if (n == 1 && in->text[in->length - 1] != '/')
+            tui_status(app, "%s", in->text);
+        return;
+    }
+    if (n == 1 && in->text[in->length - 1] != '/') {
+        s->listing = 0;
+        s->focus++;
+        return;
+    }
+    s->listing = 1;
 }
 
 /* The request the form describes; FACET_EINPUT names the bad field. */
@@ -172,6 +251,27 @@ static int build(struct newrun_screen *s, struct study_request *r,
     if ((rc = objectives_parse("cost,planarity,dp_area", o->objectives,
                                &o->nobjectives, err)))
         return rc;
+    struct classify_options *c = &o->base.classify;
+    if ((rc = parse_prices(s->field[F_PRICES].text, c->price, err)))
+        return rc;
+    const char *yes = s->field[F_SP_AS_FP].text;
+    if (strcmp(yes, "yes") == 0 || strcmp(yes, "y") == 0 ||
+        strcmp(yes, "1") == 0)
+        c->sp_as_fp = 1;
+    else if (strcmp(yes, "no") == 0 || strcmp(yes, "n") == 0 ||
+             strcmp(yes, "0") == 0 || yes[0] == '\0')
+        c->sp_as_fp = 0;
+    else
+        return facet_error_set(err, FACET_EINPUT,
+            "SP priced as FP: '%s' is not yes or no", yes);
+    const char *area = s->field[F_MAX_AREA].text;
+    c->max_panel_area = strtod(area, &end);
+    if (end == area || *end != '\0' || !(c->max_panel_area > 0) ||
+        !isfinite(c->max_panel_area))
+        return facet_error_set(err, FACET_EINPUT,
+            "max panel: '%s' is not an area > 0 (m^2)", area);
+    if ((rc = classify_check_options(c, err)))
+        return rc;
     long cores = sysconf(_SC_NPROCESSORS_ONLN);
     o->jobs = cores > 0 ? (int)(cores < 64 ? cores : 64) : 1;
     return FACET_OK;
@@ -198,11 +298,20 @@ static enum tui_result newrun_key(struct tui_screen *base,
                                   struct tui_app *app, int key)
 {
     struct newrun_screen *s = (struct newrun_screen *)base;
+    if (key != '\t')
+        s->listing = 0;
     switch (key) {
     case KEY_F(5):
         start(s, app);
         return RESULT_HANDLED;
-    case '\t': case KEY_DOWN:
+    case '\t':
+        if (s->focus == F_SURFACE) {
+            complete(s, app);
+            return RESULT_HANDLED;
+        }
+        s->focus = (s->focus + 1) % F_COUNT;
+        return RESULT_HANDLED;
+    case KEY_DOWN:
         s->focus = (s->focus + 1) % F_COUNT;
         return RESULT_HANDLED;
     case KEY_BTAB: case KEY_UP:
@@ -233,8 +342,14 @@ static int newrun_tick(struct tui_screen *base, struct tui_app *app)
     tui_job_state(app->job, &st);
     if (st.run <= 0)
         return 0;
+    /* the run may not show through this connection yet: try again at the
+     * next tick */
+    struct tui_screen *table = screen_options_new(app, st.run);
+    if (table == NULL)
+        return 0;
+    app->status[0] = '\0';
     s->opened = st.run;
-    tui_push(app, screen_options_new(app, st.run));
+    tui_push(app, table);
     return 1;
 }
 
@@ -259,8 +374,15 @@ struct tui_screen *screen_newrun_new(struct tui_app *app,
         return NULL;
     }
     s->base.cls = &newrun_class;
-    static const char *const defaults[F_COUNT] = {
-        "", "m", "20:40", "35:50", "3", "auto", "1", ""};
+    struct classify_options c;
+    classify_defaults(&c);
+    char prices[96], area[32];
+    snprintf(prices, sizeof prices, "%g,%g,%g", c.price[TYPE_FP],
+             c.price[TYPE_SP], c.price[TYPE_DP]);
+    snprintf(area, sizeof area, "%g", c.max_panel_area);
+    const char *const defaults[F_COUNT] = {
+        "", "m", "20:40", "35:50", "3", "auto", "1", prices,
+        c.sp_as_fp ? "yes" : "no", area, ""};
     for (int f = 0; f < F_COUNT; f++)
         tui_input_set(&s->field[f], defaults[f]);
     if (surface_path) {

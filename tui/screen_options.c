@@ -26,6 +26,11 @@ struct options_screen {
     int64_t top;                 /* first row shown */
     int rows;                    /* rows shown at the last draw */
     int column;                  /* column cursor (tui_option_columns) */
+    int vis[TUI_COLUMNS_MAX];    /* the shown columns (app->columns) */
+    int nvis;
+    int choosing;                /* the column chooser is open */
+    int choice;                  /* its cursor: a place in the order */
+    int choice_top;              /* its first row shown */
     struct browse_key keys[2];   /* primary, secondary */
     int nkeys;
     int editing;                 /* the filter line is open */
@@ -46,24 +51,41 @@ static const struct tui_key_help options_help[] = {
     {"I", "invert the primary sort direction"},
     {"/, F3", "filter, e.g. cost < 1.6M and dp_area <= 900 or pareto"},
     {"p, F4", "Pareto-optimal options only (toggle)"},
-    {"K, F9", "jump to the knee option"},
+    {"K", "jump to the knee option"},
     {"n / N", "next / previous Pareto-optimal option"},
     {"Space", "mark / unmark the option for Compare"},
     {"u", "clear every mark"},
     {"c, F7", "compare the marked options (2 to 4)"},
     {"Enter, m, F8", "panel map of the option"},
     {"x, F5", "scatter plot (planarity vs cost)"},
-    {"d, F2", "show / hide the detail pane"},
+    {"|, a, F9", "parallel coordinates (brushing sets the filter)"},
+    {"C, F2", "column chooser: show, hide and reorder the columns"},
+    {"  j/k, Space", "  (chooser) move; show / hide the column"},
+    {"  J/K, +/-", "  (chooser) move the column down / up the order"},
+    {"  r, Enter/q", "  (chooser) default columns; close"},
+    {"d", "show / hide the detail pane"},
     {"r", "reload from the database"},
     {NULL, NULL},
 };
 
-static double seconds_since(const struct timespec *t)
+/* Reads the session's column set; the cursor moves to the first shown
+ * column when its own is hidden. */
+static void columns_update(struct options_screen *s, struct tui_app *app)
 {
-    struct timespec now;
-    clock_gettime(CLOCK_MONOTONIC, &now);
-    return (double)(now.tv_sec - t->tv_sec) +
-           (double)(now.tv_nsec - t->tv_nsec) * 1e-9;
+    s->nvis = tui_columns_visible(&app->columns, s->vis);
+    for (int v = 0; v < s->nvis; v++)
+        if (s->vis[v] == s->column)
+            return;
+    s->column = s->vis[0];
+}
+
+/* The place of the cursor's column among the shown ones. */
+static int cursor_place(const struct options_screen *s)
+{
+    for (int v = 0; v < s->nvis; v++)
+        if (s->vis[v] == s->column)
+            return v;
+    return 0;
 }
 
 static int is_marked(const struct options_screen *s, int64_t number)
@@ -105,7 +127,8 @@ static void draw_header(struct options_screen *s, struct tui_app *app,
     tui_fill(y, 0, width, tui_attr(ROLE_HEADER));
     tui_fill(y + 1, 0, width, tui_attr(ROLE_HEADER));
     int x = 0;
-    for (int c = 0; c < tui_option_column_count && x < width; c++) {
+    for (int v = 0; v < s->nvis && x < width; v++) {
+        int c = s->vis[v];
         const struct tui_column *col = &tui_option_columns[c];
         int key = key_of(s, c);
         attr_t attr = c == s->column ? tui_attr(ROLE_COLUMN)
@@ -139,7 +162,8 @@ static void draw_row(struct options_screen *s, struct tui_app *app, int y,
         tui_fill(y, 0, width, base);
     int x = 0;
     char cell[64];
-    for (int c = 0; c < tui_option_column_count && x < width; c++) {
+    for (int v = 0; v < s->nvis && x < width; v++) {
+        int c = s->vis[v];
         const struct tui_column *col = &tui_option_columns[c];
         tui_fmt_cell(cell, sizeof cell, col, o);
         attr_t attr = base;
@@ -150,7 +174,7 @@ static void draw_row(struct options_screen *s, struct tui_app *app, int y,
             tui_put(y, x, 1, selected ? base : tui_attr(o->knee ? ROLE_KNEE
                                                                 : ROLE_PARETO),
                     o->knee ? app->glyphs->knee : app->glyphs->pareto);
-        if (c == 0 && is_marked(s, o->number))
+        if (v == 0 && is_marked(s, o->number))
             tui_put(y, x, 1, selected ? base : tui_attr(ROLE_MARKED),
                     app->glyphs->mark);
         x += col->width + 1;
@@ -198,11 +222,48 @@ static void draw_detail_side(const struct option_row *o, int y, int x,
     }
 }
 
+/* The column chooser: every column in the table's order, shown or not,
+ * over the table. */
+static void draw_chooser(struct options_screen *s, struct tui_app *app,
+                         int height, int width)
+{
+    const struct tui_column_set *set = &app->columns;
+    int w = width < 52 ? width : 52, x0 = (width - w) / 2, y0 = 1;
+    int rows = height - 5;
+    if (rows > set->n)
+        rows = set->n;
+    if (rows < 1)
+        rows = 1;
+    s->choice_top = (int)table_model_scroll(s->choice_top, s->choice, rows,
+                                            set->n);
+    int top = s->choice_top;
+    for (int y = 0; y < rows + 4; y++)
+        tui_fill(y0 + y, x0, w, tui_attr(ROLE_NORMAL));
+    tui_fill(y0, x0, w, tui_attr(ROLE_TITLE));
+    tui_putf(y0, x0, w, tui_attr(ROLE_TITLE), " Columns: %d of %d shown, "
+             "%d characters", s->nvis, set->n, tui_columns_width(set));
+    tui_put(y0 + 1, x0, w, tui_attr(ROLE_DIM),
+            " Space show/hide  J/K move  r default  Enter close");
+    for (int r = 0; r < rows && top + r < set->n; r++) {
+        int k = top + r;
+        const struct tui_column *c = &tui_option_columns[set->order[k]];
+        attr_t attr = k == s->choice ? tui_attr(ROLE_SELECTION) : A_NORMAL;
+        if (k == s->choice)
+            tui_fill(y0 + 2 + r, x0, w, attr);
+        tui_putf(y0 + 2 + r, x0, w, attr, " %s %-10s %-4s %s",
+                 set->shown[k] ? "[x]" : "[ ]",
+                 c->kind == COLUMN_PARETO ? "P (mark)" : c->title, c->unit,
+                 c->column);
+    }
+    tui_fill(y0 + 2 + rows, x0, w, tui_attr(ROLE_NORMAL));
+}
+
 static void options_draw(struct tui_screen *base, struct tui_app *app,
                          int height, int width)
 {
     struct options_screen *s = (struct options_screen *)base;
     struct table_model *m = &s->model;
+    columns_update(s, app);
     const char *surface = strrchr(s->run.surface_path, '/');
     surface = surface ? surface + 1 : s->run.surface_path;
     tui_fill(0, 0, width, tui_attr(ROLE_TITLE));
@@ -214,8 +275,10 @@ static void options_draw(struct tui_screen *base, struct tui_app *app,
              (long long)s->run.pareto_options, (long long)s->run.knee);
     char sort[160];
     sort_text(s, sort, sizeof sort);
-    int x = tui_putf(1, 0, width, A_NORMAL, " %lld shown  sort %s",
-                     (long long)m->count, sort);
+    char shown[32];
+    table_model_count_text(m, shown, sizeof shown);
+    int x = tui_putf(1, 0, width, A_NORMAL, " %s shown  sort %s", shown,
+                     sort);
     const char *where = m->filter ? filter_text(m->filter) : "";
     x += tui_putf(1, x, width - x, where[0] ? tui_attr(ROLE_PARETO)
                                             : A_NORMAL,
@@ -227,8 +290,11 @@ static void options_draw(struct tui_screen *base, struct tui_app *app,
         tui_putf(1, x, width - x, tui_attr(ROLE_MARKED), "  %d marked",
                  s->nmarks);
 
-    int side = s->detail && width >= 120;
-    int table_width = side ? 80 : width;
+    int columns = tui_columns_width(&app->columns);
+    if (columns < 80)
+        columns = 80;
+    int side = s->detail && width >= columns + 40;
+    int table_width = side ? columns : width;
     int pane = s->detail && !side && height >= 14 ? 5 : 0;
     draw_header(s, app, 2, table_width);
     s->rows = height - 4 - pane;
@@ -254,7 +320,8 @@ static void options_draw(struct tui_screen *base, struct tui_app *app,
     if (o == NULL)
         return;
     if (side) {
-        draw_detail_side(o, 2, 81, height - 2, width - 81);
+        draw_detail_side(o, 2, table_width + 1, height - 2,
+                         width - table_width - 1);
     } else if (pane) {
         char lines[4][160];
         int n = detail_lines(o, lines);
@@ -264,6 +331,8 @@ static void options_draw(struct tui_screen *base, struct tui_app *app,
         for (int k = 0; k < n; k++)
             tui_putf(y + 1 + k, 0, width, A_NORMAL, " %s", lines[k]);
     }
+    if (s->choosing)
+        draw_chooser(s, app, height, width);
 }
 
 /* --- keys --- */
@@ -404,19 +473,53 @@ static void toggle_mark(struct options_screen *s, struct tui_app *app)
 static enum tui_result filter_key(struct options_screen *s,
                                   struct tui_app *app, int key)
 {
-    enum tui_input_result r = tui_input_key(&s->filter, key);
-    if (r == INPUT_EDITING || r == INPUT_IGNORED)
-        return RESULT_HANDLED;
-    s->editing = 0;
-    tui_prompt(app, NULL, NULL);
-    if (r == INPUT_CANCEL)
+    if (tui_prompt_key(app, &s->filter, &s->editing, key) != INPUT_DONE)
         return RESULT_HANDLED;
     struct facet_error err;
     int rc = table_model_set_filter(&s->model, s->filter.text, &err);
     report(app, rc, &err);
-    if (rc == FACET_OK)
-        tui_status(app, "%lld options pass the filter",
-                   (long long)s->model.count);
+    if (rc == FACET_OK) {
+        char shown[32];
+        table_model_count_text(&s->model, shown, sizeof shown);
+        tui_status(app, "%s options pass the filter", shown);
+    }
+    return RESULT_HANDLED;
+}
+
+/* The column chooser's keys; the set is the session's (app->columns). */
+static enum tui_result chooser_key(struct options_screen *s,
+                                   struct tui_app *app, int key)
+{
+    struct tui_column_set *set = &app->columns;
+    switch (key) {
+    case ' ': case 'x':
+        if (tui_columns_toggle(set, s->choice) != 0)
+            tui_error(app, "the table keeps at least one column");
+        break;
+    case 'J': case '+': case KEY_SF:
+        s->choice = tui_columns_move(set, s->choice, 1);
+        break;
+    case 'K': case '-': case KEY_SR:
+        s->choice = tui_columns_move(set, s->choice, -1);
+        break;
+    case 'r':
+        tui_columns_default(set);
+        break;
+    case 'C': case KEY_F(2): case 'q': case 27: case '\r': case '\n':
+    case KEY_ENTER:
+        s->choosing = 0;
+        break;
+    default:
+        switch (tui_key_action(key)) {
+        case ACTION_UP: if (s->choice > 0) s->choice--; break;
+        case ACTION_DOWN: if (s->choice + 1 < set->n) s->choice++; break;
+        case ACTION_TOP: s->choice = 0; break;
+        case ACTION_BOTTOM: s->choice = set->n - 1; break;
+        case ACTION_HELP: case ACTION_QUIT: return RESULT_UNHANDLED;
+        default: break;
+        }
+    }
+    columns_update(s, app);
     return RESULT_HANDLED;
 }
 
@@ -427,8 +530,11 @@ static enum tui_result options_key(struct tui_screen *base,
     struct table_model *m = &s->model;
     struct facet_error err;
     const struct option_row *o = table_model_selection(m);
+    columns_update(s, app);
     if (s->editing)
         return filter_key(s, app, key);
+    if (s->choosing)
+        return chooser_key(s, app, key);
     switch (key) {
     case 's': case KEY_F(6):
         sort_primary(s, app);
@@ -437,8 +543,8 @@ static enum tui_result options_key(struct tui_screen *base,
         sort_secondary(s, app);
         return RESULT_HANDLED;
     case '<': case '>':
-        s->column = (s->column + (key == '>' ? 1 : -1) +
-                     tui_option_column_count) % tui_option_column_count;
+        s->column = s->vis[(cursor_place(s) + (key == '>' ? 1 : -1) +
+                            s->nvis) % s->nvis];
         if (s->nkeys > 0 &&
             strcmp(s->keys[0].column, tui_option_columns[s->column].column)
                 == 0)
@@ -457,8 +563,15 @@ static enum tui_result options_key(struct tui_screen *base,
         report(app, table_model_set_pareto(m, !m->browse.pareto_only, &err),
                &err);
         return RESULT_HANDLED;
-    case 'K': case KEY_F(9):
+    case 'K':
         jump_knee(s, app);
+        return RESULT_HANDLED;
+    case '|': case 'a': case KEY_F(9):
+        tui_push(app, screen_parallel_new(app, m));
+        return RESULT_HANDLED;
+    case 'C': case KEY_F(2):
+        s->choosing = 1;
+        s->choice = 0;
         return RESULT_HANDLED;
     case ' ':
         toggle_mark(s, app);
@@ -481,7 +594,7 @@ static enum tui_result options_key(struct tui_screen *base,
     case 'x': case KEY_F(5):
         tui_push(app, screen_scatter_new(app, m));
         return RESULT_HANDLED;
-    case 'd': case KEY_F(2):
+    case 'd':
         s->detail = !s->detail;
         return RESULT_HANDLED;
     case 'r':
@@ -509,15 +622,18 @@ static enum tui_result options_key(struct tui_screen *base,
         rc = table_model_select(m, m->selected + page, &err);
         break;
     case ACTION_TOP: rc = table_model_select(m, 0, &err); break;
-    case ACTION_BOTTOM: rc = table_model_select(m, m->count - 1, &err);
+    case ACTION_BOTTOM:
+        rc = m->count_exact ? FACET_OK : table_model_count_exact(m, &err);
+        if (rc == FACET_OK)
+            rc = table_model_select(m, m->count - 1, &err);
         break;
     case ACTION_LEFT:
-        if (s->column > 0)
-            s->column--;
+        if (cursor_place(s) > 0)
+            s->column = s->vis[cursor_place(s) - 1];
         break;
     case ACTION_RIGHT:
-        if (s->column + 1 < tui_option_column_count)
-            s->column++;
+        if (cursor_place(s) + 1 < s->nvis)
+            s->column = s->vis[cursor_place(s) + 1];
         break;
     case ACTION_SEARCH:
         s->editing = 1;
@@ -535,13 +651,20 @@ static enum tui_result options_key(struct tui_screen *base,
     return RESULT_HANDLED;
 }
 
-/* A running run: count and refetch every second, so the table fills in
- * as options are committed. */
+/* A count that is a lower bound goes on between keys; a running run:
+ * count and refetch every second, so the table fills in as options are
+ * committed. */
 static int options_tick(struct tui_screen *base, struct tui_app *app)
 {
     struct options_screen *s = (struct options_screen *)base;
+    if (!s->model.count_exact) {
+        struct facet_error err;
+        if (table_model_count_step(&s->model, 200000, &err) < 0)
+            tui_error(app, "%s", err.message);
+        return 1;
+    }
     if (strcmp(s->run.status, "running") != 0 ||
-        seconds_since(&s->last_refresh) < 1.0)
+        tui_seconds_since(&s->last_refresh) < 1.0)
         return 0;
     clock_gettime(CLOCK_MONOTONIC, &s->last_refresh);
     struct facet_error err;
@@ -560,8 +683,8 @@ static void options_destroy(struct tui_screen *base)
 
 static const struct tui_screen_class options_class = {
     "Options", options_help,
-    {"Help", "Detail", "Filter", "Pareto", "Plot", "Sort", "Diff", "Map",
-     "Knee", "Quit"},
+    {"Help", "Cols", "Filter", "Pareto", "Plot", "Sort", "Diff", "Map",
+     "PCoord", "Quit"},
     options_draw, options_key, options_tick, options_destroy,
 };
 

@@ -12,6 +12,7 @@
 #include "app.h"
 #include "format.h"
 #include "input.h"
+#include "job.h"
 #include "keys.h"
 
 struct runs_screen {
@@ -33,6 +34,7 @@ static const struct tui_key_help runs_help[] = {
     {"PgUp/PgDn", "a page up / down"},
     {"Enter", "open the run's options table"},
     {"d, F8", "delete the run (asks y/n)"},
+    {"R, F6", "resume a stopped (interrupted or failed) run, with a gauge"},
     {"a, F7", "a new run (New run form)"},
     {"/, F3", "search names and surfaces"},
     {"n / N", "next / previous match"},
@@ -40,15 +42,8 @@ static const struct tui_key_help runs_help[] = {
     {NULL, NULL},
 };
 
-static double seconds_since(const struct timespec *t)
-{
-    struct timespec now;
-    clock_gettime(CLOCK_MONOTONIC, &now);
-    return (double)(now.tv_sec - t->tv_sec) +
-           (double)(now.tv_nsec - t->tv_nsec) * 1e-9;
-}
-
-static void load(struct runs_screen *s, struct tui_app *app)
+/* Reads the list again; returns whether a run came, went or changed. */
+static int load(struct runs_screen *s, struct tui_app *app)
 {
     struct run_info *runs;
     size_t n;
@@ -56,8 +51,14 @@ static void load(struct runs_screen *s, struct tui_app *app)
     clock_gettime(CLOCK_MONOTONIC, &s->last_load);
     if (store_run_list(app->store, &runs, &n, &err) != FACET_OK) {
         tui_error(app, "%s", err.message);
-        return;
+        return 1;
     }
+    int changed = n != s->n;
+    for (size_t k = 0; k < n && !changed; k++)
+        changed = runs[k].id != s->runs[k].id ||
+                  runs[k].options != s->runs[k].options ||
+                  strcmp(runs[k].status, s->runs[k].status) != 0 ||
+                  runs[k].elapsed != s->runs[k].elapsed;
     int64_t keep = s->n > 0 ? s->runs[s->selected].id : 0;
     free(s->runs);
     s->runs = runs;
@@ -66,6 +67,7 @@ static void load(struct runs_screen *s, struct tui_app *app)
     for (size_t k = 0; k < n; k++)
         if (runs[k].id == keep)
             s->selected = k;
+    return changed;
 }
 
 static const char *base_name(const char *path)
@@ -146,22 +148,43 @@ static void search_step(struct runs_screen *s, struct tui_app *app, int dir)
     tui_error(app, "no run matches '%s'", s->last_search);
 }
 
+/* Goes on with the selected run in the background (job.h); the status
+ * line shows the gauge and the list follows it. */
+static void resume(struct runs_screen *s, struct tui_app *app)
+{
+    if (s->n == 0)
+        return;
+    const struct run_info *run = &s->runs[s->selected];
+    if (app->job != NULL) {
+        tui_error(app, "a run is already working; Ctrl-X stops it");
+        return;
+    }
+    if (strcmp(run->status, "interrupted") != 0 &&
+        strcmp(run->status, "failed") != 0) {
+        tui_error(app, "run %lld is %s; only an interrupted or failed run "
+                  "resumes", (long long)run->id, run->status);
+        return;
+    }
+    struct facet_error err;
+    if (tui_job_resume(app->db_path, run->id, &app->job, &err) != FACET_OK) {
+        tui_error(app, "resume: %s", err.message);
+        return;
+    }
+    /* the status line stays clear, so the gauge shows there */
+}
+
 static enum tui_result runs_key(struct tui_screen *base, struct tui_app *app,
                                 int key)
 {
     struct runs_screen *s = (struct runs_screen *)base;
     if (s->searching) {
-        enum tui_input_result r = tui_input_key(&s->search, key);
-        if (r == INPUT_DONE || r == INPUT_CANCEL) {
-            s->searching = 0;
-            tui_prompt(app, NULL, NULL);
-            if (r == INPUT_DONE) {
-                snprintf(s->last_search, sizeof s->last_search, "%s",
-                         s->search.text);
-                if (s->n > 0)
-                    s->selected = (s->selected + s->n - 1) % s->n;
-                search_step(s, app, 1);
-            }
+        if (tui_prompt_key(app, &s->search, &s->searching, key) ==
+            INPUT_DONE) {
+            snprintf(s->last_search, sizeof s->last_search, "%s",
+                     s->search.text);
+            if (s->n > 0)
+                s->selected = (s->selected + s->n - 1) % s->n;
+            search_step(s, app, 1);
         }
         return RESULT_HANDLED;
     }
@@ -182,6 +205,9 @@ static enum tui_result runs_key(struct tui_screen *base, struct tui_app *app,
         return RESULT_HANDLED;
     }
     switch (key) {
+    case 'R': case KEY_F(6):
+        resume(s, app);
+        return RESULT_HANDLED;
     case 'd': case KEY_F(8):
         if (s->n == 0)
             return RESULT_HANDLED;
@@ -246,23 +272,15 @@ static enum tui_result runs_key(struct tui_screen *base, struct tui_app *app,
     }
 }
 
-/* Reloads every second while a run is running (or when one was added). */
+/* Reloads every second (a handful of rows), so runs that another screen
+ * or process started, resumed or finished show; redraws when the list
+ * changed. */
 static int runs_tick(struct tui_screen *base, struct tui_app *app)
 {
     struct runs_screen *s = (struct runs_screen *)base;
-    if (seconds_since(&s->last_load) < 1.0)
+    if (tui_seconds_since(&s->last_load) < 1.0)
         return 0;
-    int live = app->job != NULL;
-    for (size_t k = 0; k < s->n; k++)
-        if (strcmp(s->runs[k].status, "running") == 0)
-            live = 1;
-    size_t before = s->n;
-    if (live || s->n == 0) {
-        load(s, app);
-        return live || s->n != before;
-    }
-    clock_gettime(CLOCK_MONOTONIC, &s->last_load);
-    return 0;
+    return load(s, app);
 }
 
 static void runs_destroy(struct tui_screen *base)
@@ -274,8 +292,8 @@ static void runs_destroy(struct tui_screen *base)
 
 static const struct tui_screen_class runs_class = {
     "Runs", runs_help,
-    {"Help", NULL, "Search", NULL, "Reload", NULL, "New", "Delete", NULL,
-     "Quit"},
+    {"Help", NULL, "Search", NULL, "Reload", "Resume", "New", "Delete",
+     NULL, "Quit"},
     runs_draw, runs_key, runs_tick, runs_destroy,
 };
 

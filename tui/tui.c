@@ -16,6 +16,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <strings.h>
+#include <time.h>
 #include <unistd.h>
 
 #include "app.h"
@@ -111,6 +112,18 @@ void tui_prompt(struct tui_app *app, const char *label,
     app->input = input;
 }
 
+enum tui_input_result tui_prompt_key(struct tui_app *app,
+                                     struct tui_input *input, int *open,
+                                     int key)
+{
+    enum tui_input_result r = tui_input_key(input, key);
+    if (r != INPUT_DONE && r != INPUT_CANCEL)
+        return INPUT_EDITING;
+    *open = 0;
+    tui_prompt(app, NULL, NULL);
+    return r;
+}
+
 int tui_put(int y, int x, int width, attr_t attr, const char *text)
 {
     if (width <= 0 || y < 0 || y >= LINES || x >= COLS)
@@ -143,6 +156,14 @@ int tui_putf(int y, int x, int width, attr_t attr, const char *fmt, ...)
     vsnprintf(text, sizeof text, fmt, ap);
     va_end(ap);
     return tui_put(y, x, width, attr, text);
+}
+
+double tui_seconds_since(const struct timespec *t)
+{
+    struct timespec now;
+    clock_gettime(CLOCK_MONOTONIC, &now);
+    return (double)(now.tv_sec - t->tv_sec) +
+           (double)(now.tv_nsec - t->tv_nsec) * 1e-9;
 }
 
 void tui_fill(int y, int x, int width, attr_t attr)
@@ -422,6 +443,7 @@ int tui_run(const char *path, struct facet_error *err)
     setlocale(LC_ALL, "");
     app->utf8 = strcmp(nl_langinfo(CODESET), "UTF-8") == 0;
     app->glyphs = tui_glyphs_for(app->utf8);
+    tui_columns_default(&app->columns);
     stop_signal = 0;
     signals_install();
     SCREEN *screen = newterm(NULL, stdout, stdin);

@@ -1,6 +1,7 @@
 /*
  * tui.h: `facet tui`, the terminal workbench: runs, the options table,
- * scatter, panel map, compare and New run screens over a result store.
+ * scatter, parallel coordinates, panel map, compare and New run screens
+ * over a result store.
  * Every curses call of Facet is in tui/; runs are read and written only
  * through the store/ headers, and computed only through core/.
  */

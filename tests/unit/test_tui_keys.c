@@ -1,7 +1,8 @@
 /*
  * test_tui_keys.c: the key map every screen of `facet tui` shares (vi
  * keys and arrows alike, function keys, key names for help) and the
- * one-line editor of the filter line and forms.
+ * one-line editor of the filter line and forms, and a prompt closing on
+ * Enter or Esc (tui_prompt_key).
  */
 #include <setjmp.h>
 #include <stdarg.h>
@@ -12,6 +13,7 @@
 #include <curses.h>
 #include <string.h>
 
+#include "tui/app.h"
 #include "tui/input.h"
 #include "tui/keys.h"
 
@@ -100,12 +102,39 @@ static void test_input(void **state)
     assert_int_equal(strlen(in.text), TUI_INPUT_MAX - 1);
 }
 
+static void test_prompt(void **state)
+{
+    (void)state;
+    static struct tui_app app;
+    struct tui_input in;
+    int open = 1;
+    tui_input_set(&in, "");
+    tui_prompt(&app, "Range:", &in);
+    assert_non_null(app.prompt);
+    assert_int_equal(tui_prompt_key(&app, &in, &open, '1'), INPUT_EDITING);
+    assert_int_equal(tui_prompt_key(&app, &in, &open, KEY_F(5)),
+                     INPUT_EDITING);  /* ignored keys keep it open */
+    assert_int_equal(open, 1);
+    assert_non_null(app.prompt);
+    assert_int_equal(tui_prompt_key(&app, &in, &open, '\n'), INPUT_DONE);
+    assert_int_equal(open, 0);
+    assert_null(app.prompt);
+    assert_null(app.input);
+    assert_string_equal(in.text, "1");
+    open = 1;
+    tui_prompt(&app, "Range:", &in);
+    assert_int_equal(tui_prompt_key(&app, &in, &open, 27), INPUT_CANCEL);
+    assert_int_equal(open, 0);
+    assert_null(app.prompt);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_actions),
         cmocka_unit_test(test_names),
         cmocka_unit_test(test_input),
+        cmocka_unit_test(test_prompt),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
