@@ -123,22 +123,3 @@ int args_double(const char *text, double min, double max, const char *what,
     *out = number;
     return FACET_OK;
 }
-
-int args_parse_prices(const char *text, double price[3],
-                      struct facet_error *err)
-{
-    char copy[128];
-    if (snprintf(copy, sizeof copy, "%s", text) >= (int)sizeof copy)
-        return facet_error_set(err, FACET_EINPUT, "--prices: too long");
-    char *rest = copy;
-    for (int t = 0; t < 3; t++) {
-        char *field = strsep(&rest, ",");
-        if (field == NULL || (t == 2 && rest != NULL))
-            return facet_error_set(err, FACET_EINPUT,
-                "--prices: '%s' is not FP,SP,DP (e.g. 701,766,1518)", text);
-        int rc = args_double(field, 0, 1e9, "--prices", &price[t], err);
-        if (rc != FACET_OK)
-            return rc;
-    }
-    return FACET_OK;
-}

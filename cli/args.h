@@ -42,8 +42,4 @@ int args_int(const char *text, long min, long max, const char *what,
 int args_double(const char *text, double min, double max, const char *what,
                 double *out, struct facet_error *err);
 
-/* Parses "701,766,1518" into the prices of FP, SP and DP (USD/m^2). */
-int args_parse_prices(const char *text, double price[3],
-                      struct facet_error *err);
-
 #endif

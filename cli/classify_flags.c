@@ -61,7 +61,8 @@ int classify_flags_apply(const struct classify_flags *f,
                 "--per-panel: '%s' is not extremes or mean", f->per_panel);
     }
     if (f->prices &&
-        (rc = args_parse_prices(f->prices, params->classify.price, err)))
+        (rc = classify_prices_parse(f->prices, params->classify.price,
+                                    err)))
         return rc;
     params->classify.sp_as_fp = f->sp_as_fp;
     if (f->max_area) {

@@ -5,6 +5,7 @@
 #include "classify.h"
 
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 
 void classify_defaults(struct classify_options *options)
@@ -140,5 +141,24 @@ int classify_check_options(const struct classify_options *options,
         return facet_error_set(err, FACET_EINPUT,
             "maximum panel area %g m^2 must be more than 0",
             options->max_panel_area);
+    return FACET_OK;
+}
+
+int classify_prices_parse(const char *text, double price[TYPE_COUNT],
+                          struct facet_error *err)
+{
+    const char *p = text;
+    for (int t = 0; t < TYPE_COUNT; t++) {
+        char *end;
+        price[t] = strtod(p, &end);
+        while (*end == ' ')
+            end++;
+        if (end == p || !isfinite(price[t]) || price[t] < 0 ||
+            price[t] > 1e9 || *end != (t + 1 < TYPE_COUNT ? ',' : '\0'))
+            return facet_error_set(err, FACET_EINPUT,
+                "--prices: '%s' is not FP,SP,DP in USD/m^2 (e.g. "
+                "701,766,1518)", text);
+        p = end + 1;
+    }
     return FACET_OK;
 }

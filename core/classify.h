@@ -78,6 +78,11 @@ void classify_panels(struct panelization *p,
                      const struct classify_options *options,
                      struct option_totals *totals);
 
+/* Parses "701,766,1518", the prices of FP, SP and DP (USD/m^2, finite,
+ * 0 to 1e9), into price. FACET_EINPUT names the text. */
+int classify_prices_parse(const char *text, double price[TYPE_COUNT],
+                          struct facet_error *err);
+
 /* Checks options for values no facade has (negative or non-finite
  * threshold, prices, limits). Returns FACET_OK or FACET_EINPUT. */
 int classify_check_options(const struct classify_options *options,

@@ -112,61 +112,6 @@ static void newrun_draw(struct tui_screen *base, struct tui_app *app,
     }
 }
 
-static int parse_range(const char *text, const char *what, int *lo, int *hi,
-                       struct facet_error *err)
-{
-    char extra;
-    if (sscanf(text, "%d:%d%c", lo, hi, &extra) == 2)
-        return FACET_OK;
-    if (sscanf(text, "%d%c", lo, &extra) == 1) {
-        *hi = *lo;
-        return FACET_OK;
-    }
-    return facet_error_set(err, FACET_EINPUT,
-        "%s: '%s' is not a range A:B of whole numbers (e.g. 20:40)", what,
-        text);
-}
-
-static int parse_threshold(const char *text, struct design_space *space,
-                           struct facet_error *err)
-{
-    double v[3];
-    char extra;
-    int n = sscanf(text, "%lf:%lf:%lf%c", &v[0], &v[1], &v[2], &extra);
-    if (n < 1 || n > 3 || (n == 1 && strchr(text, ':')) ||
-        (n == 2 && strchr(strchr(text, ':') + 1, ':')))
-        return facet_error_set(err, FACET_EINPUT,
-            "threshold: '%s' is not MM, A:B or A:B:STEP", text);
-    space->t_min_mm = v[0];
-    space->t_max_mm = n >= 2 ? v[1] : v[0];
-    space->t_step_mm = n == 3 ? v[2] : 0;
-    if (space->t_max_mm < space->t_min_mm)
-        return facet_error_set(err, FACET_EINPUT,
-            "threshold: %g:%g runs backwards", space->t_min_mm,
-            space->t_max_mm);
-    return FACET_OK;
-}
-
-/* "FP,SP,DP" prices (USD/m^2, finite, >= 0) into price. */
-static int parse_prices(const char *text, double price[TYPE_COUNT],
-                        struct facet_error *err)
-{
-    const char *p = text;
-    for (int t = 0; t < TYPE_COUNT; t++) {
-        char *end;
-        price[t] = strtod(p, &end);
-        while (*end == ' ')
-            end++;
-        if (end == p || !isfinite(price[t]) || price[t] < 0 ||
-            *end != (t + 1 < TYPE_COUNT ? ',' : '\0'))
-            return facet_error_set(err, FACET_EINPUT,
-                "prices: '%s' is not FP,SP,DP in USD/m^2 (e.g. "
-                "701,766,1518)", text);
-        p = end + 1;
-    }
-    return FACET_OK;
-}
-
 /* Tab on the surface field: completes the path; a second Tab that adds
  * nothing lists the choices; a path that is complete goes on to the next
  * field. */
@@ -216,13 +161,14 @@ static int build(struct newrun_screen *s, struct study_request *r,
     int rc = mesh_units_parse(s->field[F_UNITS].text, &r->mesh.units, err);
     struct optimize_settings *o = &r->settings;
     if (rc == FACET_OK)
-        rc = parse_range(s->field[F_U].text, "U", &o->space.u_min,
+        rc = design_space_parse_sides(s->field[F_U].text, "U", &o->space.u_min,
                          &o->space.u_max, err);
     if (rc == FACET_OK)
-        rc = parse_range(s->field[F_V].text, "V", &o->space.v_min,
+        rc = design_space_parse_sides(s->field[F_V].text, "V", &o->space.v_min,
                          &o->space.v_max, err);
     if (rc == FACET_OK)
-        rc = parse_threshold(s->field[F_THRESHOLD].text, &o->space, err);
+        rc = design_space_parse_threshold(s->field[F_THRESHOLD].text,
+                                          &o->space, err);
     if (rc == FACET_OK)
         rc = design_space_check(&o->space, err);
     if (rc != FACET_OK)
@@ -252,7 +198,7 @@ static int build(struct newrun_screen *s, struct study_request *r,
                                &o->nobjectives, err)))
         return rc;
     struct classify_options *c = &o->base.classify;
-    if ((rc = parse_prices(s->field[F_PRICES].text, c->price, err)))
+    if ((rc = classify_prices_parse(s->field[F_PRICES].text, c->price, err)))
         return rc;
     const char *yes = s->field[F_SP_AS_FP].text;
     if (strcmp(yes, "yes") == 0 || strcmp(yes, "y") == 0 ||

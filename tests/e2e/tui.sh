@@ -15,55 +15,12 @@ if ! command -v tmux >/dev/null; then
     echo "ok - tmux is not installed (skipped)"
     exit 0
 fi
-# Each session gets its own tmux server (facet_test_PID_N): reusing one
-# right after kill-server races the old server's exit. All are killed, and
-# their sockets removed, on exit.
-SESSIONS=0
-SOCKET=
-TMUX_CMD=(true)
-end_session() {
-    [ -n "$SOCKET" ] || return 0
-    "${TMUX_CMD[@]}" kill-server 2>/dev/null
-    rm -f "${TMUX_TMPDIR:-/tmp}/tmux-$(id -u)/$SOCKET"
-    SOCKET=
-}
-trap 'end_session; rm -rf "$WORK"' EXIT
-# A sanitizer build is slower: give every step up to 30 s.
-POLLS=${TUI_POLLS:-600}
+. "$(dirname "$0")/tui_lib.sh"
 
 "$FACET" example roof --res 40 -o "$WORK/roof.obj" || exit 1
 "$FACET" optimize "$WORK/roof.obj" --db "$WORK/t.db" --u 4:8 --v 4:8 \
     --threshold 2:4:1 >/dev/null 2>&1 || exit 1
 
-# start W H ENV... -- ARGS...: facet tui ARGS in a fresh session; its exit
-# status goes to $WORK/exit, its pid to $WORK/pid.
-start() {
-    local w=$1 h=$2
-    shift 2
-    local env=()
-    while [ "$1" != -- ]; do env+=("$1"); shift; done
-    shift
-    rm -f "$WORK/exit" "$WORK/pid"
-    end_session
-    SESSIONS=$((SESSIONS + 1))
-    SOCKET=facet_test_$$_$SESSIONS
-    TMUX_CMD=(tmux -L "$SOCKET" -f /dev/null)
-    "${TMUX_CMD[@]}" new-session -d -x "$w" -y "$h" \
-        "cd '$WORK' && env TERM=xterm-256color ${env[*]} sh -c 'echo \$\$ > pid; exec \"\$0\" tui \"\$@\"' '$FACET' $* 2>'$WORK/tui.err'; echo \$? > '$WORK/exit'; echo EXITED; sleep 600"
-}
-screen() { "${TMUX_CMD[@]}" capture-pane -p; }
-keys() { "${TMUX_CMD[@]}" send-keys "$@"; }
-
-# wait_for PATTERN: polls the screen until it matches (grep -E).
-wait_for() {
-    local i=0
-    while [ $i -lt $POLLS ]; do
-        if screen | grep -qE -- "$1"; then return 0; fi
-        sleep 0.05
-        i=$((i + 1))
-    done
-    return 1
-}
 # count WHERE: how many options of run 1 of t.db pass the filter WHERE.
 count() {
     "$FACET" options "$WORK/t.db" --run 1 --where "$1" --csv | tail -n +2 | wc -l
@@ -84,31 +41,6 @@ check_not() {
         pass "$1"
     fi
 }
-# check NAME PATTERN: passes when the screen comes to match PATTERN.
-check() {
-    if wait_for "$2"; then
-        pass "$1"
-    else
-        echo "not ok - $1 (screen lacks: $2)"
-        screen | sed 's/^/  screen: /'
-    fi
-}
-# check_exit NAME: facet tui ended with status 0, nothing on stderr, and
-# the terminal is out of the alternate screen.
-check_exit() {
-    local i=0
-    while [ ! -s "$WORK/exit" ] && [ $i -lt $POLLS ]; do sleep 0.05; i=$((i + 1)); done
-    local alt
-    alt=$("${TMUX_CMD[@]}" display -p '#{alternate_on}' 2>/dev/null)
-    if [ "$(cat "$WORK/exit" 2>/dev/null)" = 0 ] && [ ! -s "$WORK/tui.err" ] &&
-        [ "$alt" = 0 ]; then
-        pass "$1"
-    else
-        echo "not ok - $1 (exit '$(cat "$WORK/exit" 2>/dev/null)', alternate screen '$alt')"
-        sed 's/^/  stderr: /' "$WORK/tui.err" | head -n 20
-    fi
-}
-
 # --- 80x24: the whole tour ---
 start 80 24 -- t.db
 check "runs screen lists the run" '^ +1 done +exhaustive +75 +3 .*roof\.obj'
