@@ -11,10 +11,6 @@
 # server this script starts is killed on exit.
 . "$(dirname "$0")/lib.sh"
 
-if ! command -v tmux >/dev/null; then
-    echo "ok - tmux is not installed (skipped)"
-    exit 0
-fi
 . "$(dirname "$0")/tui_lib.sh"
 
 "$FACET" example roof --res 40 -o "$WORK/roof.obj" || exit 1

@@ -5,10 +5,6 @@
 # unless the name ends with '!', and the UI reports it all on its status
 # line.
 . "$(dirname "$0")/lib.sh"
-if ! command -v tmux >/dev/null; then
-    echo "ok - tmux is not installed (skipped)"
-    exit 0
-fi
 . "$(dirname "$0")/tui_lib.sh"
 
 "$FACET" example roof --res 40 -o "$WORK/roof.obj" || exit 1
