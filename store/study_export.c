@@ -223,9 +223,14 @@ static int load_points(struct store *store, int64_t run,
         if (p->rows[k].knee)
             knee = k;
     }
-    snprintf(p->label, sizeof p->label, "run %lld%s%s (%s)",
-             (long long)run, info.name[0] ? " " : "", info.name,
-             info.method);
+    /* The legend has room for about 24 characters. */
+    if (info.name[0])
+        snprintf(p->label, sizeof p->label, "run %lld %.16s%s",
+                 (long long)run, info.name,
+                 strlen(info.name) > 16 ? "..." : "");
+    else
+        snprintf(p->label, sizeof p->label, "run %lld (%s)", (long long)run,
+                 info.method);
     *series = (struct svg_plot_series){p->label, NULL, p->n, p->x, p->y,
                                        r->size ? p->size : NULL, p->rank,
                                        knee};
