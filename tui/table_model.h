@@ -20,13 +20,13 @@
 #define TABLE_WINDOW 600
 #define TABLE_PAGE 200
 
-/* A count stops here until it is needed exactly ("10,000+"); a selected
+/* A count stops here until it is needed exactly ("2,000+"); a selected
  * option deeper than TABLE_POSITION_CAP rows in a new order is placed at
  * that row (positions become estimates: lower bounds); a filter that
  * passes at most TABLE_FILTER_FIRST options is read by the filter's own
  * index or a scan and sorted, not by walking the order's index. */
-#define TABLE_COUNT_CAP 10000
-#define TABLE_POSITION_CAP 10000
+#define TABLE_COUNT_CAP 2000
+#define TABLE_POSITION_CAP 2000
 #define TABLE_FILTER_FIRST 2000
 
 struct table_model {
@@ -101,7 +101,7 @@ int table_model_set_sort(struct table_model *m, const struct browse_key *keys,
 int table_model_refresh(struct table_model *m, struct facet_error *err);
 
 /* The count as a table shows it: "1,234" or, while it is a lower bound,
- * "10,000+". */
+ * "2,000+". */
 void table_model_count_text(const struct table_model *m, char *out,
                             size_t size);
 
