@@ -11,7 +11,7 @@
 #include "command.h"
 #include "option_text.h"
 #include "core/report.h"
-#include "store/study.h"
+#include "store/study_export.h"
 
 static int show_main(int argc, char **argv, struct facet_error *err)
 {
@@ -39,48 +39,30 @@ static int show_main(int argc, char **argv, struct facet_error *err)
     struct store *store;
     if ((rc = store_open(path[0], &store, err)) != FACET_OK)
         return rc;
-    struct run_info info;
-    struct option_row row;
-    struct optimize_settings settings;
-    struct mesh_options mesh;
-    struct panelization panels;
-    struct option_totals totals;
-    int flip;
-    memset(&panels, 0, sizeof panels);
-    rc = store_run_get(store, run_id, &info, err);
-    if (rc == FACET_OK)
-        rc = store_option_get(store, run_id, number, &row, err);
-    if (rc == FACET_OK)
-        rc = study_settings(&info, &settings, &mesh, &flip, err);
-    if (rc == FACET_OK)
-        rc = study_option_panels(store, &info, NULL, number, &panels,
-                                 &totals, err);
+    struct study_option o;
+    rc = study_option_load(store, run_id, number, 0, &o, err);
     if (rc == FACET_OK) {
-        struct classify_options classify = settings.base.classify;
-        classify.threshold = row.threshold_mm / 1000;
         if (json) {
-            struct report_source source = {
-                info.surface_path, info.units, info.surface_area,
-                (size_t)info.triangles, info.uv_method, info.per_panel,
-            };
-            report_json(stdout, &source, &classify, &panels, &totals);
+            struct report_source source;
+            study_option_source(&o, &source);
+            report_json(stdout, &source, &o.classify, &o.panels, &o.totals);
         } else {
             printf("%-16s run %lld option %lld%s%s\n", "option",
                    (long long)run_id, (long long)number,
-                   row.rank == 1 ? " (Pareto-optimal)" : "",
-                   row.knee ? " (the knee)" : "");
-            printf("%-16s %s (%s)\n", "surface", info.surface_path,
-                   info.units);
-            printf("%-16s %d x %d (%zu panels)\n", "grid", row.nu, row.nv,
-                   totals.panels);
-            printf("%-16s %g mm\n", "threshold", row.threshold_mm);
-            printf("%-16s %d%s\n", "Pareto rank", row.rank,
-                   row.rank == 0 ? " (not ranked yet)" : "");
-            option_text_totals(stdout, &totals, &classify);
-            option_text_map(stdout, &panels);
+                   o.row.rank == 1 ? " (Pareto-optimal)" : "",
+                   o.row.knee ? " (the knee)" : "");
+            printf("%-16s %s (%s)\n", "surface", o.run.surface_path,
+                   o.run.units);
+            printf("%-16s %d x %d (%zu panels)\n", "grid", o.row.nu,
+                   o.row.nv, o.totals.panels);
+            printf("%-16s %g mm\n", "threshold", o.row.threshold_mm);
+            printf("%-16s %d%s\n", "Pareto rank", o.row.rank,
+                   o.row.rank == 0 ? " (not ranked yet)" : "");
+            option_text_totals(stdout, &o.totals, &o.classify);
+            option_text_map(stdout, &o.panels);
         }
     }
-    panelization_free(&panels);
+    study_option_free(&o);
     store_close(store);
     return rc;
 }

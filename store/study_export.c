@@ -39,30 +39,24 @@ static int open_all(const char *const target[EXPORT_FILES], int force,
     return rc;
 }
 
-/* The option's panels, its totals and, when wanted, their geometry. */
-struct option_parts {
-    struct run_info run;
-    struct option_row row;
-    struct optimize_settings settings;
-    struct surface surface;
-    struct panelization panels;
-    struct option_totals totals;
-    struct panel_geometry geometry;
-    int have_surface, have_geometry;
-};
-
-static int load_parts(struct store *store, int64_t run, int64_t number,
-                      int geometry, struct option_parts *p,
+int study_option_load(struct store *store, int64_t run, int64_t number,
+                      int geometry, struct study_option *p,
                       struct facet_error *err)
 {
+    memset(p, 0, sizeof *p);
+    struct optimize_settings settings;
     struct mesh_options mesh;
     int flip;
     int rc = store_run_get(store, run, &p->run, err);
     if (rc == FACET_OK)
         rc = store_option_get(store, run, number, &p->row, err);
     if (rc == FACET_OK)
-        rc = study_settings(&p->run, &p->settings, &mesh, &flip, err);
-    if (rc == FACET_OK && geometry) {
+        rc = study_settings(&p->run, &settings, &mesh, &flip, err);
+    if (rc != FACET_OK)
+        return rc;
+    p->classify = settings.base.classify;
+    p->classify.threshold = p->row.threshold_mm / 1000;
+    if (geometry) {
         rc = study_open_surface(&p->run, &p->surface, err);
         p->have_surface = 1;
     }
@@ -78,13 +72,23 @@ static int load_parts(struct store *store, int64_t run, int64_t number,
     return rc;
 }
 
-static void free_parts(struct option_parts *p)
+void study_option_free(struct study_option *p)
 {
     if (p->have_geometry)
         panel_geometry_free(&p->geometry);
     panelization_free(&p->panels);
     if (p->have_surface)
         surface_close(&p->surface);
+    memset(p, 0, sizeof *p);
+}
+
+void study_option_source(const struct study_option *p,
+                         struct report_source *out)
+{
+    *out = (struct report_source){p->run.surface_path, p->run.units,
+                                  p->run.surface_area,
+                                  (size_t)p->run.triangles,
+                                  p->run.uv_method, p->run.per_panel};
 }
 
 int study_export(struct store *store, int64_t run, int64_t number,
@@ -105,11 +109,8 @@ int study_export(struct store *store, int64_t run, int64_t number,
     if ((rc = open_all(target, r->force, file, open, err)))
         return rc;
 
-    struct option_parts p;
-    memset(&p, 0, sizeof p);
-    rc = load_parts(store, run, number, r->obj || r->svg, &p, err);
-    struct classify_options classify = p.settings.base.classify;
-    classify.threshold = p.row.threshold_mm / 1000;
+    struct study_option p;
+    rc = study_option_load(store, run, number, r->obj || r->svg, &p, err);
     if (rc == FACET_OK && r->obj) {
         /* mtllib is relative to the OBJ: the MTL's own name. */
         const char *slash = strrchr(mtl, '/');
@@ -120,11 +121,9 @@ int study_export(struct store *store, int64_t run, int64_t number,
     if (rc == FACET_OK && r->csv)
         report_schedule_csv(file[EXPORT_CSV].out, &p.panels, &p.totals);
     if (rc == FACET_OK && r->json) {
-        struct report_source source = {p.run.surface_path, p.run.units,
-                                       p.run.surface_area,
-                                       (size_t)p.run.triangles,
-                                       p.run.uv_method, p.run.per_panel};
-        report_json(file[EXPORT_JSON].out, &source, &classify, &p.panels,
+        struct report_source source;
+        study_option_source(&p, &source);
+        report_json(file[EXPORT_JSON].out, &source, &p.classify, &p.panels,
                     &p.totals);
     }
     if (rc == FACET_OK && r->svg) {
@@ -154,7 +153,7 @@ int study_export(struct store *store, int64_t run, int64_t number,
             snprintf(r->written[n++], sizeof r->written[0], "%s",
                      target[f]);
     }
-    free_parts(&p);
+    study_option_free(&p);
     return rc;
 }
 

@@ -12,8 +12,38 @@
 #ifndef FACET_STUDY_EXPORT_H
 #define FACET_STUDY_EXPORT_H
 
+#include "core/panel_geometry.h"
+#include "core/report.h"
+#include "core/surface.h"
 #include "core/svg_map.h"
 #include "store.h"
+
+/* A stored option with what showing or exporting it needs. */
+struct study_option {
+    struct run_info run;
+    struct option_row row;
+    struct classify_options classify;  /* the run's, at the option's
+                                          threshold */
+    struct panelization panels;
+    struct option_totals totals;
+    /* With geometry only (the surface file is opened for it): */
+    struct surface surface;
+    struct panel_geometry geometry;
+    int have_surface, have_geometry;
+};
+
+/* Reads option number of run into *out (caller-owned, released with
+ * study_option_free, also after a failure): its run, row and classify
+ * settings, its panels (computed and stored first when not stored), and
+ * with geometry set the panels' surface patches too. */
+int study_option_load(struct store *store, int64_t run, int64_t number,
+                      int geometry, struct study_option *out,
+                      struct facet_error *err);
+void study_option_free(struct study_option *option);
+
+/* What report_json writes about the option's surface. */
+void study_option_source(const struct study_option *option,
+                         struct report_source *out);
 
 enum export_file { EXPORT_OBJ, EXPORT_MTL, EXPORT_CSV, EXPORT_JSON,
                    EXPORT_SVG, EXPORT_FILES };
