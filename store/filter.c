@@ -16,6 +16,7 @@
  */
 #include "store/filter.h"
 #include "store/filter_sql.h"
+#include "store/store_db.h"
 #include "store/store.h"
 
 #include <math.h>
@@ -864,16 +865,19 @@ static void write_sql(const struct filter *f, int k, int first_param,
                       struct buffer *b)
 {
     const struct node *n = &f->nodes[k];
-    char text[64];
+    char text[192];
     switch (n->kind) {
     case NODE_COMPARE:
         /* crowding is stored NULL at a front's ends, where it is
          * infinite: compare it as the infinity it stands for. */
-        snprintf(text, sizeof text,
-                 strcmp(store_option_columns[n->column], "crowding") == 0
-                     ? "ifnull(\"%s\", 1e999) %s ?%lld" : "\"%s\" %s ?%lld",
-                 store_option_columns[n->column], op_text[n->op],
-                 (long long)first_param + (long long)n->param);
+        if (strcmp(store_option_columns[n->column], "crowding") == 0)
+            snprintf(text, sizeof text, "%s %s ?%lld", store_crowding_sql,
+                     op_text[n->op],
+                     (long long)first_param + (long long)n->param);
+        else
+            snprintf(text, sizeof text, "\"%s\" %s ?%lld",
+                     store_option_columns[n->column], op_text[n->op],
+                     (long long)first_param + (long long)n->param);
         put(b, text);
         break;
     case NODE_YES_NO:

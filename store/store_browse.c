@@ -36,8 +36,7 @@ static const char *key_expr(const char *column)
 {
     static const char *const special[][2] = {
         {"rank", "ifnull(\"rank\", 0)"},
-        {"crowding", "ifnull(\"crowding\", CASE WHEN ifnull(\"rank\", 0) > 0"
-                     " THEN 1e999 ELSE 0 END)"},
+        {"crowding", store_crowding_sql},
     };
     for (size_t k = 0; k < sizeof special / sizeof special[0]; k++)
         if (strcmp(column, special[k][0]) == 0)

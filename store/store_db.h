@@ -21,6 +21,12 @@ struct store {
     sqlite3_stmt *option_insert;/* prepared once, reused by every batch */
 };
 
+/* The SQL that reads the crowding column as an option_row holds it:
+ * NULL at a front's ends, where it is infinite, reads as +infinity
+ * (SQLite's 1e999) in a ranked option and as 0 in one not ranked yet.
+ * Sorting, filtering and paging all compare crowding through it. */
+extern const char store_crowding_sql[];
+
 /* Fills err from the connection's last error: "FILE: what (while DOING)".
  * A corrupt or non-database file is FACET_EINPUT (the user can act on it),
  * anything else FACET_EWORK. Returns the code. */

@@ -294,6 +294,10 @@ double store_option_value(const struct option_row *o, const char *column)
 
 /* --- queries --- */
 
+const char store_crowding_sql[] =
+    "ifnull(\"crowding\", CASE WHEN ifnull(\"rank\", 0) > 0 THEN 1e999"
+    " ELSE 0 END)";
+
 /* Whether name is a column of store_option_columns. */
 static int known_column(const char *name, size_t length)
 {
@@ -328,12 +332,12 @@ static int order_by(const char *sort, int descending, char *sql,
                 "--sort: unknown column '%.*s' (choose from %s)", (int)n, p,
                 list);
         }
-        /* A front's ends have crowding NULL: infinitely far apart. */
-        int crowding = n == 8 && strncasecmp(p, "crowding", 8) == 0;
-        len += (size_t)snprintf(sql + len, size - len,
-                                crowding ? "ifnull(\"%.*s\", 1e999)%s, "
-                                         : "\"%.*s\"%s, ",
-                                (int)n, p, direction);
+        if (n == 8 && strncasecmp(p, "crowding", 8) == 0)
+            len += (size_t)snprintf(sql + len, size - len, "%s%s, ",
+                                    store_crowding_sql, direction);
+        else
+            len += (size_t)snprintf(sql + len, size - len, "\"%.*s\"%s, ",
+                                    (int)n, p, direction);
         if (len >= size)
             return facet_error_set(err, FACET_EINPUT, "--sort: too long");
         p += strcspn(p, ",");
