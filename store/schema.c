@@ -7,6 +7,7 @@
 #include "store_db.h"
 
 #include <errno.h>
+#include <math.h>
 #include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -187,6 +188,20 @@ int store_prepare(struct store *store, const char *sql, sqlite3_stmt **out,
         return store_fail(store, doing, err);
     }
     return FACET_OK;
+}
+
+void store_bind_or_null(sqlite3_stmt *stmt, int col, double value)
+{
+    if (isfinite(value))
+        sqlite3_bind_double(stmt, col, value);
+    else
+        sqlite3_bind_null(stmt, col);
+}
+
+double store_column_or_nan(sqlite3_stmt *stmt, int col)
+{
+    return sqlite3_column_type(stmt, col) == SQLITE_NULL
+               ? NAN : sqlite3_column_double(stmt, col);
 }
 
 void store_now(char out[32])

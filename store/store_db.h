@@ -41,6 +41,13 @@ int store_exec(struct store *store, const char *sql, const char *doing,
 int store_prepare(struct store *store, const char *sql, sqlite3_stmt **out,
                   const char *doing, struct facet_error *err);
 
+/* Binds value to parameter col, or NULL when it is not finite (SQL has
+ * no NaN or infinity). */
+void store_bind_or_null(sqlite3_stmt *stmt, int col, double value);
+
+/* Column col of the current row, NaN when it is NULL. */
+double store_column_or_nan(sqlite3_stmt *stmt, int col);
+
 /* Brings a database at schema version `from` (0 = empty) up to `to`,
  * one migration at a time, each in its own transaction. */
 int store_schema_migrate(struct store *store, int from, int to,

@@ -238,10 +238,7 @@ int store_options_set_pareto(struct store *store, int64_t run,
         sqlite3_bind_int64(option, 1, run);
         sqlite3_bind_int64(option, 2, numbers[k]);
         sqlite3_bind_int(option, 3, rank[k]);
-        if (isfinite(crowding[k]))
-            sqlite3_bind_double(option, 4, crowding[k]);
-        else
-            sqlite3_bind_null(option, 4);
+        store_bind_or_null(option, 4, crowding[k]);
         sqlite3_bind_int(option, 5, numbers[k] == knee);
         rc = step_done(store, option, "storing the front", err);
     }
@@ -256,10 +253,7 @@ int store_options_set_pareto(struct store *store, int64_t run,
     if (rc == FACET_OK) {
         sqlite3_bind_int64(summary, 1, run);
         sqlite3_bind_int64(summary, 2, knee);
-        if (isfinite(hypervolume))
-            sqlite3_bind_double(summary, 3, hypervolume);
-        else
-            sqlite3_bind_null(summary, 3);
+        store_bind_or_null(summary, 3, hypervolume);
         rc = step_done(store, summary, "storing the front", err);
     }
     sqlite3_finalize(option);

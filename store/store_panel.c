@@ -8,20 +8,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-static void bind_or_null(sqlite3_stmt *s, int col, double value)
-{
-    if (isfinite(value))
-        sqlite3_bind_double(s, col, value);
-    else
-        sqlite3_bind_null(s, col);
-}
-
-static double column_or_nan(sqlite3_stmt *s, int col)
-{
-    return sqlite3_column_type(s, col) == SQLITE_NULL
-               ? NAN : sqlite3_column_double(s, col);
-}
-
 int store_panels_put(struct store *store, int64_t run, int64_t option,
                      const struct panelization *p, struct facet_error *err)
 {
@@ -82,16 +68,16 @@ int store_panels_put(struct store *store, int64_t run, int64_t option,
         sqlite3_bind_double(panel, c++, x->p_dist);
         sqlite3_bind_double(panel, c++, x->diameter);
         sqlite3_bind_int(panel, c++, x->trimmed);
-        bind_or_null(panel, c++, x->corner_planarity);
+        store_bind_or_null(panel, c++, x->corner_planarity);
         sqlite3_bind_double(panel, c++, x->price);
         sqlite3_bind_double(panel, c++, x->cost);
         for (int d = 0; d < 3; d++)
-            bind_or_null(panel, c++, x->centroid[d]);
+            store_bind_or_null(panel, c++, x->centroid[d]);
         for (int d = 0; d < 3; d++)
-            bind_or_null(panel, c++, x->normal[d]);
+            store_bind_or_null(panel, c++, x->normal[d]);
         for (int corner = 0; corner < 4; corner++)
             for (int d = 0; d < 3; d++)
-                bind_or_null(panel, c++, x->corner[corner][d]);
+                store_bind_or_null(panel, c++, x->corner[corner][d]);
         if (sqlite3_step(panel) != SQLITE_DONE)
             rc = store_fail(store, "storing panels", err);
         sqlite3_reset(panel);
@@ -224,17 +210,17 @@ int store_panels_get(struct store *store, int64_t run, int64_t option,
         x->p_dist = sqlite3_column_double(s, c++);
         x->diameter = sqlite3_column_double(s, c++);
         x->trimmed = sqlite3_column_int(s, c++);
-        x->corner_planarity = column_or_nan(s, c++);
+        x->corner_planarity = store_column_or_nan(s, c++);
         x->price = sqlite3_column_double(s, c++);
         x->cost = sqlite3_column_double(s, c++);
         for (int d = 0; d < 3; d++)
-            x->centroid[d] = column_or_nan(s, c++);
+            x->centroid[d] = store_column_or_nan(s, c++);
         for (int d = 0; d < 3; d++)
-            x->normal[d] = column_or_nan(s, c++);
+            x->normal[d] = store_column_or_nan(s, c++);
         x->ncorners = 0;
         for (int corner = 0; corner < 4; corner++) {
             for (int d = 0; d < 3; d++)
-                x->corner[corner][d] = column_or_nan(s, c++);
+                x->corner[corner][d] = store_column_or_nan(s, c++);
             x->ncorners += isfinite(x->corner[corner][0]);
         }
         p->cell_panel[(size_t)x->j * (size_t)p->nu + (size_t)x->i] = (int)n;

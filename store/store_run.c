@@ -31,12 +31,6 @@ static void copy_text(char *to, size_t size, sqlite3_stmt *stmt, int col)
     snprintf(to, size, "%s", text ? (const char *)text : "");
 }
 
-static double column_or_nan(sqlite3_stmt *stmt, int col)
-{
-    return sqlite3_column_type(stmt, col) == SQLITE_NULL
-               ? NAN : sqlite3_column_double(stmt, col);
-}
-
 static void run_from_row(sqlite3_stmt *s, struct run_info *r)
 {
     memset(r, 0, sizeof *r);
@@ -77,10 +71,10 @@ static void run_from_row(sqlite3_stmt *s, struct run_info *r)
     r->options = sqlite3_column_int64(s, c++);
     r->writer_pid = sqlite3_column_int64(s, c++);
     copy_text(r->writer_host, sizeof r->writer_host, s, c++);
-    r->hypervolume = column_or_nan(s, c++);
+    r->hypervolume = store_column_or_nan(s, c++);
     r->knee = sqlite3_column_int64(s, c++);
     r->pareto_options = sqlite3_column_int64(s, c++);
-    r->best_cost = column_or_nan(s, c++);
+    r->best_cost = store_column_or_nan(s, c++);
     r->surface_area = sqlite3_column_double(s, c++);
     r->triangles = sqlite3_column_int64(s, c++);
     copy_text(r->uv_method, sizeof r->uv_method, s, c++);
