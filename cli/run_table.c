@@ -27,31 +27,6 @@ void run_table_thousands(char *out, size_t size, double value, int decimals)
         snprintf(out + len, size - len, "%s", point);
 }
 
-struct table_rows {
-    struct option_row *rows;
-    size_t n, capacity;
-    int out_of_memory;
-};
-
-static int collect(void *context, int64_t run, const struct option_row *o)
-{
-    (void)run;
-    struct table_rows *t = context;
-    if (t->n == t->capacity) {
-        size_t capacity = t->capacity ? 2 * t->capacity : 64;
-        struct option_row *grown = realloc(t->rows,
-                                           capacity * sizeof *grown);
-        if (grown == NULL) {
-            t->out_of_memory = 1;
-            return 1;
-        }
-        t->rows = grown;
-        t->capacity = capacity;
-    }
-    t->rows[t->n++] = *o;
-    return 0;
-}
-
 static int by_cost(const void *a, const void *b)
 {
     const struct option_row *x = a, *y = b;
@@ -87,23 +62,20 @@ int run_table_print(FILE *out, struct store *store, const char *db,
     long limit = rows == 0 ? 0
                  : (long)info.pareto_options > rows ? (long)info.pareto_options
                                                     : rows;
-    struct table_rows table = {NULL, 0, 0, 0};
     struct option_query q = {run, 0, NULL, "rank,cost", 0, limit, 0};
-    rc = store_options_query(store, &q, collect, &table, err);
-    if (rc == FACET_OK && table.out_of_memory)
-        rc = facet_error_set(err, FACET_EWORK, "out of memory");
-    if (rc != FACET_OK) {
-        free(table.rows);
+    struct option_row *listed;
+    size_t n;
+    rc = store_options_query_rows(store, &q, &listed, &n, err);
+    if (rc != FACET_OK)
         return rc;
-    }
-    qsort(table.rows, table.n, sizeof *table.rows, by_cost);
+    qsort(listed, n, sizeof *listed, by_cost);
     fprintf(out, "\n%6s %1s %11s %10s %14s %10s %10s %4s %4s %7s %4s\n",
             "No.", "", "planarity", "DP area", "total cost", "FP area",
             "SP area", "U", "V", "t", "rank");
     fprintf(out, "%6s %1s %11s %10s %14s %10s %10s %4s %4s %7s %4s\n", "",
             "", "m", "m^2", "USD", "m^2", "m^2", "", "", "mm", "");
-    for (size_t k = 0; k < table.n; k++) {
-        const struct option_row *o = &table.rows[k];
+    for (size_t k = 0; k < n; k++) {
+        const struct option_row *o = &listed[k];
         run_table_thousands(cost, sizeof cost, o->totals.cost, 0);
         fprintf(out, "%6lld %1s %11.3f %10.1f %14s %10.1f %10.1f %4d %4d "
                 "%7.2f %4d%s%s\n", (long long)o->number,
@@ -113,11 +85,11 @@ int run_table_print(FILE *out, struct store *store, const char *db,
                 o->rank, o->knee ? "  knee" : "",
                 o->totals.feasible ? "" : "  infeasible");
     }
-    if ((int64_t)table.n < info.options)
+    if ((int64_t)n < info.options)
         fprintf(out, "(%zu of %lld options; 'facet options %s --run %lld' "
-                "lists them all)\n", table.n, (long long)info.options,
+                "lists them all)\n", n, (long long)info.options,
                 db, (long long)run);
     fprintf(out, "* Pareto-optimal\n");
-    free(table.rows);
+    free(listed);
     return FACET_OK;
 }

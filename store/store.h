@@ -185,6 +185,13 @@ int store_options_query(struct store *store, const struct option_query *q,
                                    const struct option_row *option),
                         void *context, struct facet_error *err);
 
+/* The options that match q, in order, into *rows (malloc'ed, free()),
+ * *n of them. */
+int store_options_query_rows(struct store *store,
+                             const struct option_query *q,
+                             struct option_row **rows, size_t *n,
+                             struct facet_error *err);
+
 /* Checks a sort list ("cost,dp_area") as store_options_query would, so a
  * caller can refuse it before printing anything. */
 int store_options_sort_check(const char *sort, struct facet_error *err);

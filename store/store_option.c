@@ -162,39 +162,9 @@ int store_options_get(struct store *store, int64_t run,
                       struct option_row **rows, size_t *n,
                       struct facet_error *err)
 {
-    *rows = NULL;
-    *n = 0;
-    sqlite3_stmt *s;
-    int rc = store_prepare(store, "SELECT " OPTION_COLUMNS
-                           " FROM options WHERE run = ?1 ORDER BY number",
-                           &s, "reading options", err);
-    if (rc != FACET_OK)
-        return rc;
-    sqlite3_bind_int64(s, 1, run);
-    size_t capacity = 0;
-    int step;
-    while ((step = sqlite3_step(s)) == SQLITE_ROW) {
-        if (*n == capacity) {
-            capacity = capacity ? 2 * capacity : 256;
-            struct option_row *grown = realloc(*rows,
-                                               capacity * sizeof **rows);
-            if (grown == NULL) {
-                rc = facet_error_set(err, FACET_EWORK, "out of memory");
-                break;
-            }
-            *rows = grown;
-        }
-        option_from_row(s, 0, &(*rows)[(*n)++]);
-    }
-    if (rc == FACET_OK && step != SQLITE_DONE)
-        rc = store_fail(store, "reading options", err);
-    sqlite3_finalize(s);
-    if (rc != FACET_OK) {
-        free(*rows);
-        *rows = NULL;
-        *n = 0;
-    }
-    return rc;
+    /* Run 0 would mean every run to a query; here it is no run. */
+    struct option_query q = {run > 0 ? run : -1, 0, NULL, NULL, 0, 0, 0};
+    return store_options_query_rows(store, &q, rows, n, err);
 }
 
 int store_option_get(struct store *store, int64_t run, int64_t number,
@@ -396,5 +366,50 @@ int store_options_query(struct store *store, const struct option_query *q,
     if (step != SQLITE_DONE)
         rc = store_fail(store, "querying options", err);
     sqlite3_finalize(s);
+    return rc;
+}
+
+/* A query's rows, gathered into a growing array. */
+struct gathered_rows {
+    struct option_row *rows;
+    size_t n, capacity;
+    int out_of_memory;
+};
+
+static int gather_row(void *context, int64_t run, const struct option_row *o)
+{
+    (void)run;
+    struct gathered_rows *g = context;
+    if (g->n == g->capacity) {
+        size_t capacity = g->capacity ? 2 * g->capacity : 256;
+        struct option_row *grown = realloc(g->rows,
+                                           capacity * sizeof *grown);
+        if (grown == NULL) {
+            g->out_of_memory = 1;
+            return 1;
+        }
+        g->rows = grown;
+        g->capacity = capacity;
+    }
+    g->rows[g->n++] = *o;
+    return 0;
+}
+
+int store_options_query_rows(struct store *store,
+                             const struct option_query *q,
+                             struct option_row **rows, size_t *n,
+                             struct facet_error *err)
+{
+    struct gathered_rows g = {NULL, 0, 0, 0};
+    int rc = store_options_query(store, q, gather_row, &g, err);
+    if (rc == FACET_OK && g.out_of_memory)
+        rc = facet_error_set(err, FACET_EWORK, "out of memory");
+    if (rc != FACET_OK) {
+        free(g.rows);
+        g.rows = NULL;
+        g.n = 0;
+    }
+    *rows = g.rows;
+    *n = g.n;
     return rc;
 }

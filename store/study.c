@@ -254,18 +254,16 @@ static int store_front_panels(struct store *store, const struct run_info *run,
                               const struct optimize_settings *settings,
                               struct facet_error *err)
 {
+    /* Only the front is read (by the rank index), not the whole run. */
+    struct option_query q = {run->id, 1, NULL, NULL, 0, 0, 0};
     struct option_row *rows;
     size_t n, nfront = 0;
-    int rc = store_options_get(store, run->id, &rows, &n, err);
-    if (rc != FACET_OK)
-        return rc;
+    int rc = store_options_query_rows(store, &q, &rows, &n, err);
     struct design_point *points = malloc((n ? n : 1) * sizeof *points);
     int64_t *numbers = malloc((n ? n : 1) * sizeof *numbers);
-    if (points == NULL || numbers == NULL)
+    if (rc == FACET_OK && (points == NULL || numbers == NULL))
         rc = facet_error_set(err, FACET_EWORK, "out of memory");
     for (size_t k = 0; rc == FACET_OK && k < n; k++) {
-        if (rows[k].rank != 1)
-            continue;
         int stored = store_panels_exist(store, run->id, rows[k].number, err);
         if (stored < 0)
             rc = -stored;
