@@ -11,7 +11,7 @@
 #include "args.h"
 #include "command.h"
 #include "core/json.h"
-#include "run_table.h"
+#include "core/numformat.h"
 #include "store/filter.h"
 #include "store/store.h"
 
@@ -28,7 +28,7 @@ static int list_row(void *context, int64_t run, const struct option_row *o)
     struct listing *l = context;
     if (l->format == LISTING_TABLE) {
         char cost[64];
-        run_table_thousands(cost, sizeof cost, o->totals.cost, 0);
+        number_grouped(cost, sizeof cost, o->totals.cost, 0);
         printf("%4lld %6lld %1s %11.4f %10.2f %14s %10.2f %10.2f %4d %4d "
                "%7.2f %4d %3s%s\n", (long long)run, (long long)o->number,
                o->rank == 1 ? "*" : "", o->totals.planarity,

@@ -9,7 +9,7 @@
 #include "args.h"
 #include "command.h"
 #include "core/json.h"
-#include "run_table.h"
+#include "core/numformat.h"
 #include "store/store.h"
 
 static void print_json(const struct run_info *runs, size_t n)
@@ -85,7 +85,7 @@ static void print_human(const struct run_info *runs, size_t n)
         const struct run_info *r = &runs[k];
         char cost[64] = "-", hv[32] = "-";
         if (isfinite(r->best_cost))
-            run_table_thousands(cost, sizeof cost, r->best_cost, 0);
+            number_grouped(cost, sizeof cost, r->best_cost, 0);
         if (isfinite(r->hypervolume))
             snprintf(hv, sizeof hv, "%.4f", r->hypervolume);
         printf("%4lld %-11s %-10s %8lld %6lld %14s %8s %9.2f  %-20s %s%s%s\n",

@@ -7,25 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-void run_table_thousands(char *out, size_t size, double value, int decimals)
-{
-    char digits[64];
-    snprintf(digits, sizeof digits, "%.*f", decimals, fabs(value));
-    char *point = strchr(digits, '.');
-    size_t whole = point ? (size_t)(point - digits) : strlen(digits);
-    size_t len = 0;
-    if (value < 0 && len + 1 < size)
-        out[len++] = '-';
-    for (size_t k = 0; k < whole && len + 1 < size; k++) {
-        if (k > 0 && (whole - k) % 3 == 0 && len + 1 < size)
-            out[len++] = ',';
-        if (len + 1 < size)
-            out[len++] = digits[k];
-    }
-    out[len] = '\0';
-    if (point)
-        snprintf(out + len, size - len, "%s", point);
-}
+#include "core/numformat.h"
 
 static int by_cost(const void *a, const void *b)
 {
@@ -43,7 +25,7 @@ int run_table_print(FILE *out, struct store *store, const char *db,
     if (rc != FACET_OK)
         return rc;
     char cost[64];
-    run_table_thousands(cost, sizeof cost, info.best_cost, 0);
+    number_grouped(cost, sizeof cost, info.best_cost, 0);
     fprintf(out, "run %lld (%s%s%s): %s, %s, %lld options in %.2f s, "
             "%lld Pareto-optimal\n", (long long)info.id, info.status,
             info.name[0] ? ", " : "", info.name, info.surface_path,
@@ -76,7 +58,7 @@ int run_table_print(FILE *out, struct store *store, const char *db,
             "", "m", "m^2", "USD", "m^2", "m^2", "", "", "mm", "");
     for (size_t k = 0; k < n; k++) {
         const struct option_row *o = &listed[k];
-        run_table_thousands(cost, sizeof cost, o->totals.cost, 0);
+        number_grouped(cost, sizeof cost, o->totals.cost, 0);
         fprintf(out, "%6lld %1s %11.3f %10.1f %14s %10.1f %10.1f %4d %4d "
                 "%7.2f %4d%s%s\n", (long long)o->number,
                 o->rank == 1 ? "*" : "", o->totals.planarity,

@@ -16,8 +16,4 @@
 int run_table_print(FILE *out, struct store *store, const char *db,
                     int64_t run, long rows, struct facet_error *err);
 
-/* Formats a number with thousands separators and decimals places:
- * 1481515.2 -> "1,481,515" (decimals 0). */
-void run_table_thousands(char *out, size_t size, double value, int decimals);
-
 #endif

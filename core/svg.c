@@ -53,36 +53,6 @@ void svg_format_number(char *text, size_t size, double x, int precision)
         strcpy(text, "0");
 }
 
-void svg_format_grouped(char *text, size_t size, double x, int decimals)
-{
-    if (size == 0)
-        return;
-    if (!isfinite(x)) {
-        snprintf(text, size, "-");
-        return;
-    }
-    char plain[64];
-    int n = snprintf(plain, sizeof plain, "%.*f", decimals, x);
-    if (n < 0 || (size_t)n >= sizeof plain) {
-        snprintf(text, size, "%.6g", x);
-        return;
-    }
-    const char *digits = plain + (plain[0] == '-');
-    const char *point = strchr(digits, '.');
-    size_t whole = point ? (size_t)(point - digits) : strlen(digits);
-    char grouped[96];
-    size_t g = 0;
-    if (plain[0] == '-' && strspn(digits, "0.") != strlen(digits))
-        grouped[g++] = '-';  /* no "-0.0" for a tiny negative number */
-    for (size_t k = 0; k < whole; k++) {
-        if (k > 0 && (whole - k) % 3 == 0)
-            grouped[g++] = ',';
-        grouped[g++] = digits[k];
-    }
-    grouped[g] = '\0';
-    snprintf(text, size, "%s%s", grouped, point ? point : "");
-}
-
 void svg_number(struct svg *svg, double x)
 {
     char text[64];

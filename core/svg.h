@@ -40,10 +40,6 @@ void svg_end(struct svg *svg);
  * non-finite x as "0" (SVG has no NaN). */
 void svg_format_number(char *text, size_t size, double x, int precision);
 
-/* Writes x into text (size bytes) with decimals digits after the point
- * and its thousands grouped by commas, as a label reads best:
- * "1,234,567.5" for 1234567.5 at 1 decimal. Non-finite x as "-". */
-void svg_format_grouped(char *text, size_t size, double x, int decimals);
 
 /* Writes x as svg_format_number does at the document's precision. */
 void svg_number(struct svg *svg, double x);

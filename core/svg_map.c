@@ -8,6 +8,7 @@
 #include <string.h>
 
 #include "outfile.h"
+#include "numformat.h"
 #include "svg.h"
 
 #define MARGIN 16.0
@@ -193,7 +194,7 @@ static void write_panel(struct svg *svg, const struct frame *f,
     }
     char words[64], area[32];
     class_words(panel->class, words, sizeof words);
-    svg_format_grouped(area, sizeof area, panel->area, 3);
+    number_grouped(area, sizeof area, panel->area, 3);
     fprintf(out, "\"><title>panel %d,%d: %s, %s, %s m^2, deviation %.1f mm"
             "</title></path>\n", panel->i, panel->j,
             panel_type_name(panel->type), words, area,
@@ -234,8 +235,8 @@ static void write_legend(struct svg *svg, double left, double top,
         snprintf(fill, sizeof fill, "fill=\"%s\" stroke=\"#333333\"", colour);
         svg_rect(svg, left, y + 2, 12, 12, fill);
         svg_text(svg, left + 18, y + 12, NULL, "%s", name);
-        svg_format_grouped(count, sizeof count, (double)n, 0);
-        svg_format_grouped(area, sizeof area, a, 2);
+        number_grouped(count, sizeof count, (double)n, 0);
+        number_grouped(area, sizeof area, a, 2);
         svg_text(svg, left + 230, y + 12, "text-anchor=\"end\"", "%s", count);
         svg_text(svg, left + LEGEND_WIDTH, y + 12, "text-anchor=\"end\"",
                  "%s", area);
@@ -243,8 +244,8 @@ static void write_legend(struct svg *svg, double left, double top,
     double y = top + (rows + 1) * LEGEND_ROW;
     svg_line(svg, left, y + 3, left + LEGEND_WIDTH, y + 3,
              "stroke=\"#333333\"");
-    svg_format_grouped(count, sizeof count, (double)totals->panels, 0);
-    svg_format_grouped(area, sizeof area, totals->area, 2);
+    number_grouped(count, sizeof count, (double)totals->panels, 0);
+    number_grouped(area, sizeof area, totals->area, 2);
     svg_text(svg, left + 18, y + 16, NULL, "total");
     svg_text(svg, left + 230, y + 16, "text-anchor=\"end\"", "%s", count);
     svg_text(svg, left + LEGEND_WIDTH, y + 16, "text-anchor=\"end\"", "%s",
@@ -305,8 +306,8 @@ void svg_map_write(FILE *out, const struct panel_geometry *g,
 
     /* Title block. */
     char cost[48], dp[48];
-    svg_format_grouped(cost, sizeof cost, totals->cost, 0);
-    svg_format_grouped(dp, sizeof dp, totals->area_of[TYPE_DP], 2);
+    number_grouped(cost, sizeof cost, totals->cost, 0);
+    number_grouped(dp, sizeof dp, totals->area_of[TYPE_DP], 2);
     fputs("<g class=\"title\">\n", out);
     svg_text(&svg, MARGIN, MARGIN + 14,
              "font-size=\"16\" font-weight=\"bold\"", "%s",

@@ -9,6 +9,7 @@
 #include <string.h>
 
 #include "outfile.h"
+#include "numformat.h"
 #include "svg.h"
 
 /* Plot area inside the page (px). */
@@ -184,7 +185,7 @@ static void write_ticks(struct svg *svg, const struct plot_frame *f,
     char label[64];
     for (long k = 0; k <= n; k++) {
         double v = axis->min + k * axis->step;
-        svg_format_grouped(label, sizeof label, v, axis->decimals);
+        number_grouped(label, sizeof label, v, axis->decimals);
         if (horizontal) {
             double x = px_x(f, v);
             svg_line(svg, x, f->top, x, bottom,
@@ -402,7 +403,7 @@ static void write_legend(struct svg *svg, const struct plot_frame *f,
                      "stroke=\"#555555\"", r);
             svg_rect(svg, x + BUBBLE_MAX - r, y, 2 * r,
                      2 * r, rounded);
-            svg_format_grouped(value, sizeof value, values[k],
+            number_grouped(value, sizeof value, values[k],
                                values[k] >= 100 ? 0 : 2);
             svg_text(svg, x + 2 * BUBBLE_MAX + 8,
                      y + r + 4, NULL, "%s", value);

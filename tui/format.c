@@ -7,38 +7,23 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "core/numformat.h"
+
 void tui_fmt_number(char *out, size_t size, double value, int decimals,
                     int thousands)
 {
     if (size == 0)
         return;
-    if (isnan(value)) {
+    if (thousands && !(fabs(value) >= 1e18)) {
+        number_grouped(out, size, value, decimals);
+        return;
+    }
+    if (isnan(value))
         snprintf(out, size, "-");
-        return;
-    }
-    if (isinf(value)) {
+    else if (isinf(value))
         snprintf(out, size, value > 0 ? "inf" : "-inf");
-        return;
-    }
-    char plain[64];
-    snprintf(plain, sizeof plain, "%.*f", decimals, value);
-    if (!thousands || fabs(value) >= 1e18) {
-        snprintf(out, size, "%s", plain);
-        return;
-    }
-    const char *digits = plain[0] == '-' ? plain + 1 : plain;
-    size_t whole = strcspn(digits, ".");
-    char grouped[96];
-    size_t n = 0;
-    if (plain[0] == '-')
-        grouped[n++] = '-';
-    for (size_t k = 0; k < whole; k++) {
-        if (k > 0 && (whole - k) % 3 == 0)
-            grouped[n++] = ',';
-        grouped[n++] = digits[k];
-    }
-    snprintf(grouped + n, sizeof grouped - n, "%s", digits + whole);
-    snprintf(out, size, "%s", grouped);
+    else
+        snprintf(out, size, "%.*f", decimals, value);
 }
 
 void tui_fmt_elapsed(char *out, size_t size, double seconds)

@@ -25,6 +25,7 @@
 #include "core/option.h"
 #include "core/panel_geometry.h"
 #include "core/pareto.h"
+#include "core/numformat.h"
 #include "core/svg.h"
 #include "core/svg_map.h"
 #include "core/svg_plot.h"
@@ -923,15 +924,15 @@ static void test_svg_helpers(void **state)
     assert_string_equal(text, "-12.35");
     svg_format_number(text, sizeof text, NAN, 2);
     assert_string_equal(text, "0");
-    svg_format_grouped(text, sizeof text, 1234567.891, 1);
+    number_grouped(text, sizeof text, 1234567.891, 1);
     assert_string_equal(text, "1,234,567.9");
-    svg_format_grouped(text, sizeof text, -1234, 0);
+    number_grouped(text, sizeof text, -1234, 0);
     assert_string_equal(text, "-1,234");
-    svg_format_grouped(text, sizeof text, 999, 0);
+    number_grouped(text, sizeof text, 999, 0);
     assert_string_equal(text, "999");
-    svg_format_grouped(text, sizeof text, -0.001, 1);
+    number_grouped(text, sizeof text, -0.001, 1);
     assert_string_equal(text, "0.0");
-    svg_format_grouped(text, sizeof text, 0.05, 2);
+    number_grouped(text, sizeof text, 0.05, 2);
     assert_string_equal(text, "0.05");
 
     char *escaped = NULL;
