@@ -82,6 +82,20 @@ static void request_for(struct study_request *r, enum optimize_method method)
                      FACET_OK);
 }
 
+/* Runs the exhaustive test study into store to its end; its id. */
+static int64_t finished_run(struct store *store,
+                            struct study_request *request)
+{
+    struct facet_error err;
+    request_for(request, METHOD_EXHAUSTIVE);
+    int64_t run;
+    enum optimize_outcome outcome;
+    assert_int_equal(study_start(store, request, NULL, &run, &outcome, &err),
+                     FACET_OK);
+    assert_int_equal(outcome, OPTIMIZE_DONE);
+    return run;
+}
+
 /* Stops after a number of progress reports. */
 struct stopper {
     int reports, stop_after;
@@ -115,12 +129,7 @@ static void test_run_roundtrip(void **state)
     assert_int_equal(store_open(fresh_db("roundtrip"), &store, &err),
                      FACET_OK);
     struct study_request request;
-    request_for(&request, METHOD_EXHAUSTIVE);
-    int64_t run;
-    enum optimize_outcome outcome;
-    assert_int_equal(study_start(store, &request, NULL, &run, &outcome,
-                                 &err), FACET_OK);
-    assert_int_equal(outcome, OPTIMIZE_DONE);
+    int64_t run = finished_run(store, &request);
 
     struct run_info info;
     assert_int_equal(store_run_get(store, run, &info, &err), FACET_OK);
@@ -253,11 +262,7 @@ static void test_queries(void **state)
     assert_int_equal(store_open(fresh_db("queries"), &store, &err),
                      FACET_OK);
     struct study_request request;
-    request_for(&request, METHOD_EXHAUSTIVE);
-    int64_t run;
-    enum optimize_outcome outcome;
-    assert_int_equal(study_start(store, &request, NULL, &run, &outcome,
-                                 &err), FACET_OK);
+    int64_t run = finished_run(store, &request);
     sqlite3 *db;
     assert_int_equal(sqlite3_open(db_path, &db), SQLITE_OK);
     check_query(store, db, run, NULL, "cost", 0, 0, 0, 0,
@@ -442,11 +447,7 @@ static void test_refuses_other_files(void **state)
     path = fresh_db("corrupt");
     assert_int_equal(store_open(path, &store, &err), FACET_OK);
     struct study_request request;
-    request_for(&request, METHOD_EXHAUSTIVE);
-    int64_t run;
-    enum optimize_outcome outcome;
-    assert_int_equal(study_start(store, &request, NULL, &run, &outcome,
-                                 &err), FACET_OK);
+    int64_t run = finished_run(store, &request);
     store_close(store);
     sql(path, "PRAGMA wal_checkpoint(TRUNCATE); PRAGMA journal_mode=DELETE;");
     FILE *file = fopen(path, "r+b");
@@ -482,11 +483,7 @@ static void test_migrates_older_schema(void **state)
     struct store *store;
     assert_int_equal(store_open(path, &store, &err), FACET_OK);
     struct study_request request;
-    request_for(&request, METHOD_EXHAUSTIVE);
-    int64_t run;
-    enum optimize_outcome outcome;
-    assert_int_equal(study_start(store, &request, NULL, &run, &outcome,
-                                 &err), FACET_OK);
+    int64_t run = finished_run(store, &request);
     store_close(store);
     sql(path, "DROP VIEW pareto; DROP VIEW run_summary;"
               "DROP INDEX options_by_rank; DROP INDEX options_by_cost;"
