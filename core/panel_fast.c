@@ -25,18 +25,6 @@
 
 #include "panel_sums.h"
 
-struct panel_prep_point {
-    double position[3];  /* m */
-    double k1, k2;       /* 1/m */
-};
-
-struct panel_prep_triangle {
-    double area, uv_area;  /* m^2, UV units^2 */
-    double centroid[3];    /* m */
-    double second[6];      /* integral of (x - centroid)(x - ...)^T dA */
-    double normal_sum[3];  /* area x unit face normal */
-};
-
 int panel_prep_build(const struct mesh *mesh, const struct uv_index *index,
                      const struct curvature *curvature,
                      struct panel_prep *out, struct facet_error *err)
@@ -166,62 +154,6 @@ static inline int point_cell(double x, double origin, double step,
 #define CELL_J(packed) ((int)(((packed) >> 16) & 0x7fffu))
 #define CELL_NEAR(packed) ((packed) >> 31)
 
-/* A vertex of a piece while splitting: UV and barycentric coordinates. */
-struct split_vertex {
-    double u, v;
-    double b[3];
-};
-
-/* Enough for any piece of a triangle cut by four lines (at most 7
- * vertices, and a repeated one where a corner lies on a line); a split
- * that would exceed it drops the excess, which convex input never has. */
-#define SPLIT_MAX 16
-
-static inline void split_push(struct split_vertex *out, int *n,
-                              const struct split_vertex *x)
-{
-    if (*n < SPLIT_MAX)
-        out[(*n)++] = *x;
-}
-
-/* Splits the convex polygon in (count vertices) at coordinate axis (0 u,
- * 1 v) = limit into low (coordinate <= limit) and high (>= limit), as two
- * clip_half calls of panel.c would, the cut points snapped to the line. */
-static void split(const struct split_vertex *in, int count, int axis,
-                  double limit, struct split_vertex *low, int *nlow,
-                  struct split_vertex *high, int *nhigh)
-{
-    *nlow = *nhigh = 0;
-    for (int k = 0; k < count; k++) {
-        const struct split_vertex *p = &in[k];
-        const struct split_vertex *q = &in[k + 1 < count ? k + 1 : 0];
-        double dp = (axis == 0 ? p->u : p->v) - limit;
-        double dq = (axis == 0 ? q->u : q->v) - limit;
-        int low_p = dp <= 0, high_p = dp >= 0;
-        if (low_p)
-            split_push(low, nlow, p);
-        if (high_p)
-            split_push(high, nhigh, p);
-        int cut_low = low_p != (dq <= 0), cut_high = high_p != (dq >= 0);
-        if (cut_low || cut_high) {
-            double t = dp / (dp - dq);
-            struct split_vertex x;
-            x.u = p->u + t * (q->u - p->u);
-            x.v = p->v + t * (q->v - p->v);
-            for (int c = 0; c < 3; c++)
-                x.b[c] = p->b[c] + t * (q->b[c] - p->b[c]);
-            if (axis == 0)
-                x.u = limit;
-            else
-                x.v = limit;
-            if (cut_low)
-                split_push(low, nlow, &x);
-            if (cut_high)
-                split_push(high, nhigh, &x);
-        }
-    }
-}
-
 /* One panelization in progress. */
 struct fast {
     const struct panel_prep *prep;
@@ -233,35 +165,13 @@ struct fast {
     const uint32_t *cell_of;            /* packed cell of each point */
 };
 
-/* Pass 1 for one piece of triangle t: its moments from the fan of its
- * barycentric polygon (area fraction of the triangle's), about the
- * triangle's centroid. */
+/* Pass 1 for one piece of triangle t. */
 static void piece_sums(struct fast *f, const struct panel_prep_triangle *T,
                        const double corner[3][3], size_t cell,
                        const struct split_vertex *piece, int count)
 {
-    double x[SPLIT_MAX][3];
-    for (int k = 0; k < count; k++)
-        for (int d = 0; d < 3; d++)
-            x[k][d] = piece[k].b[0] * corner[0][d] +
-                      piece[k].b[1] * corner[1][d] +
-                      piece[k].b[2] * corner[2][d];
     struct piece_moments m;
-    memset(&m, 0, sizeof m);
-    double fraction = 0;
-    const double *b0 = piece[0].b;
-    for (int k = 1; k + 1 < count; k++) {
-        const double *b1 = piece[k].b, *b2 = piece[k + 1].b;
-        double part = fabs((b1[1] - b0[1]) * (b2[2] - b0[2]) -
-                           (b2[1] - b0[1]) * (b1[2] - b0[2]));
-        fraction += part;
-        piece_moments_add_triangle(&m, x[0], x[k], x[k + 1],
-                                   part * T->area);
-    }
-    m.area = fraction * T->area;
-    m.uv_area = fraction * T->uv_area;
-    for (int d = 0; d < 3; d++)
-        m.normal_sum[d] = fraction * T->normal_sum[d];
+    panel_piece_moments(T, corner, piece, count, &m);
     cell_moments_add(&f->sums[cell], T->centroid, &m);
 }
 
@@ -431,7 +341,7 @@ static void split_triangle(struct fast *f, uint32_t t, int i0, int i1,
         if (j < j1) {
             int nnext;
             row = buffer[2];
-            split(rest, nrest, 1, g->vmin + (j + 1) * g->dv, row, &nrow,
+            panel_split(rest, nrest, 1, g->vmin + (j + 1) * g->dv, row, &nrow,
                   rest_next, &nnext);
             struct split_vertex *swap = rest;
             rest = rest_next;
@@ -449,7 +359,7 @@ static void split_triangle(struct fast *f, uint32_t t, int i0, int i1,
             if (i < i1) {
                 int nnext;
                 piece = buffer[5];
-                split(row, nrow, 0, g->umin + (i + 1) * g->du, piece,
+                panel_split(row, nrow, 0, g->umin + (i + 1) * g->du, piece,
                       &npiece, row_next, &nnext);
                 row = row_next;
                 row_next = row_next == buffer[3] ? buffer[4] : buffer[3];
@@ -488,35 +398,6 @@ static void cross(struct fast *f, uint32_t t, int i0, int i1, int j0, int j1,
             return;
     }
     split_triangle(f, t, i0, i1, j0, j1, sums);
-}
-
-/* A whole triangle's sums into a cell. */
-static inline void add_triangle(struct cell_moments *m,
-                                const struct panel_prep_triangle *T)
-{
-    if (!m->has_reference) {
-        memcpy(m->reference, T->centroid, sizeof m->reference);
-        m->has_reference = 1;
-    }
-    double d[3] = {T->centroid[0] - m->reference[0],
-                   T->centroid[1] - m->reference[1],
-                   T->centroid[2] - m->reference[2]};
-    double a = T->area;
-    double ad[3] = {a * d[0], a * d[1], a * d[2]};
-    m->area += a;
-    m->uv_area += T->uv_area;
-    m->first[0] += ad[0];
-    m->first[1] += ad[1];
-    m->first[2] += ad[2];
-    m->second[0] += T->second[0] + ad[0] * d[0];
-    m->second[1] += T->second[1] + ad[0] * d[1];
-    m->second[2] += T->second[2] + ad[0] * d[2];
-    m->second[3] += T->second[3] + ad[1] * d[1];
-    m->second[4] += T->second[4] + ad[1] * d[2];
-    m->second[5] += T->second[5] + ad[2] * d[2];
-    m->normal_sum[0] += T->normal_sum[0];
-    m->normal_sum[1] += T->normal_sum[1];
-    m->normal_sum[2] += T->normal_sum[2];
 }
 
 static inline int min3(int a, int b, int c)
@@ -571,7 +452,7 @@ int panels_build_fast(const struct panel_prep *prep,
         uint32_t a = cell_of[point[0]], b = cell_of[point[1]],
                  c = cell_of[point[2]];
         if (a == b && b == c) {
-            add_triangle(&sums[(size_t)CELL_J(a) * nu + CELL_I(a)],
+            cell_moments_add_triangle(&sums[(size_t)CELL_J(a) * nu + CELL_I(a)],
                          &prep->triangle[t]);
             if (CELL_NEAR(a))
                 listed[nlisted++] = (uint32_t)t;
@@ -583,7 +464,7 @@ int panels_build_fast(const struct panel_prep *prep,
         int j1 = max3(CELL_J(a), CELL_J(b), CELL_J(c));
         listed[nlisted++] = (uint32_t)t;
         if (i0 == i1 && j0 == j1)
-            add_triangle(&sums[(size_t)j0 * nu + i0], &prep->triangle[t]);
+            cell_moments_add_triangle(&sums[(size_t)j0 * nu + i0], &prep->triangle[t]);
         else
             cross(&f, (uint32_t)t, i0, i1, j0, j1, 1);
     }

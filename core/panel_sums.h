@@ -136,6 +136,76 @@ static inline void cell_moments_add(struct cell_moments *m,
     m->uv_area += p->uv_area;
 }
 
+/* What panel_prep_build keeps of a point (a distinct (vertex, UV) corner)
+ * and of a triangle. */
+struct panel_prep_point {
+    double position[3];  /* m */
+    double k1, k2;       /* 1/m */
+};
+
+struct panel_prep_triangle {
+    double area, uv_area;  /* m^2, UV units^2 */
+    double centroid[3];    /* m */
+    double second[6];      /* integral of (x - centroid)(x - ...)^T dA */
+    double normal_sum[3];  /* area x unit face normal */
+};
+
+/* A vertex of a piece while splitting: UV and barycentric coordinates. */
+struct split_vertex {
+    double u, v;
+    double b[3];
+};
+
+/* Enough for any piece of a triangle cut by four lines (at most 7
+ * vertices, and a repeated one where a corner lies on a line); a split
+ * that would exceed it drops the excess, which convex input never has. */
+#define SPLIT_MAX 16
+
+/* Splits the convex polygon in (count vertices) at coordinate axis (0 u,
+ * 1 v) = limit into low (coordinate <= limit) and high (>= limit), as two
+ * clip_half calls of panel.c would, the cut points snapped to the line:
+ * a vertex on the line goes to both sides. */
+void panel_split(const struct split_vertex *in, int count, int axis,
+                 double limit, struct split_vertex *low, int *nlow,
+                 struct split_vertex *high, int *nhigh);
+
+/* The moments of a piece (count vertices, barycentric in triangle T) about
+ * T's centroid, from the fan of its barycentric polygon; corner holds T's
+ * corners relative to its centroid (m). */
+void panel_piece_moments(const struct panel_prep_triangle *T,
+                         const double corner[3][3],
+                         const struct split_vertex *piece, int count,
+                         struct piece_moments *m);
+
+/* A whole triangle's sums into a cell. */
+static inline void cell_moments_add_triangle(struct cell_moments *m,
+                                             const struct panel_prep_triangle *T)
+{
+    if (!m->has_reference) {
+        memcpy(m->reference, T->centroid, sizeof m->reference);
+        m->has_reference = 1;
+    }
+    double d[3] = {T->centroid[0] - m->reference[0],
+                   T->centroid[1] - m->reference[1],
+                   T->centroid[2] - m->reference[2]};
+    double a = T->area;
+    double ad[3] = {a * d[0], a * d[1], a * d[2]};
+    m->area += a;
+    m->uv_area += T->uv_area;
+    m->first[0] += ad[0];
+    m->first[1] += ad[1];
+    m->first[2] += ad[2];
+    m->second[0] += T->second[0] + ad[0] * d[0];
+    m->second[1] += T->second[1] + ad[0] * d[1];
+    m->second[2] += T->second[2] + ad[0] * d[2];
+    m->second[3] += T->second[3] + ad[1] * d[1];
+    m->second[4] += T->second[4] + ad[1] * d[2];
+    m->second[5] += T->second[5] + ad[2] * d[2];
+    m->normal_sum[0] += T->normal_sum[0];
+    m->normal_sum[1] += T->normal_sum[1];
+    m->normal_sum[2] += T->normal_sum[2];
+}
+
 /* Pass 2 per panel. */
 struct cell_samples {
     double centroid[3], normal[3];  /* the panel's plane */
