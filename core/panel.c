@@ -370,6 +370,22 @@ static void measure_corners(const struct panel_grid *g,
     }
 }
 
+/* Which way the plane's normal n should point: the side of the surface
+ * normals (normal_sum). When the panel has no side (its normals cancel
+ * along n, as a whole ring of a tube does) the dot product is rounding
+ * noise, and a fixed choice keeps every way of summing the panel to the
+ * same normal: the first clearly non-zero component positive. */
+static int normal_side(const double n[3], const double normal_sum[3])
+{
+    double dot = vec3_dot(n, normal_sum);
+    if (fabs(dot) > 1e-9 * sqrt(vec3_dot(normal_sum, normal_sum)))
+        return dot < 0 ? -1 : 1;
+    for (int x = 0; x < 3; x++)
+        if (fabs(n[x]) > 1e-3)
+            return n[x] < 0 ? -1 : 1;
+    return 1;
+}
+
 int panels_fit(const struct panel_grid *g, const struct cell_moments *sums,
                struct panelization *out, struct cell_samples **samples_out,
                struct cell_outline **outlines_out, struct facet_error *err)
@@ -421,7 +437,7 @@ int panels_fit(const struct panel_grid *g, const struct cell_moments *sums,
                                         mean[r] * mean[q];
         sym3_eigen(covariance, value, vector);
         memcpy(panel->normal, vector[0], sizeof panel->normal);
-        if (vec3_dot(panel->normal, s->normal_sum) < 0)
+        if (normal_side(panel->normal, s->normal_sum) < 0)
             for (int x = 0; x < 3; x++)
                 panel->normal[x] = -panel->normal[x];
         panel->p_dist = fmax(value[0], 0) * s->area;

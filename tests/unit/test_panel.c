@@ -20,6 +20,7 @@
 #include "core/example.h"
 #include "core/optimize.h"
 #include "core/option.h"
+#include "core/panel_lattice.h"
 
 #define PI 3.14159265358979323846
 
@@ -377,6 +378,58 @@ static void assert_close(double fast, double reference, double tolerance,
                  panel->i, panel->j, what, fast, reference);
 }
 
+/* Asserts that got has reference's panels, every measure to 1e-9 of its
+ * scale (a sliver's judged against a triangle's area: both computations
+ * round relative to the triangles they cut); returns its trimmed panels. */
+static size_t assert_same_panels(const struct surface *s,
+                                 const struct panelization *got,
+                                 const struct panelization *reference)
+{
+    double triangle_area = s->mesh.area / (double)s->mesh.ntriangles;
+    double triangle_uv = 0;
+    for (size_t t = 0; t < s->mesh.ntriangles; t++) {
+        const double *c = s->uv.uv + 6 * t;
+        triangle_uv += 0.5 * fabs((c[2] - c[0]) * (c[5] - c[1]) -
+                                  (c[4] - c[0]) * (c[3] - c[1]));
+    }
+    triangle_uv /= (double)s->mesh.ntriangles;
+    int nu = reference->nu, nv = reference->nv;
+    size_t trimmed = 0;
+    assert_int_equal(got->npanels, reference->npanels);
+    assert_memory_equal(got->cell_panel, reference->cell_panel,
+                        (size_t)nu * nv * sizeof(int));
+    for (size_t n = 0; n < got->npanels; n++) {
+        const struct panel *f = &got->panels[n];
+        const struct panel *r = &reference->panels[n];
+        assert_int_equal(f->i, r->i);
+        assert_int_equal(f->j, r->j);
+        assert_int_equal(f->trimmed, r->trimmed);
+        assert_int_equal(f->ncorners, r->ncorners);
+        trimmed += (size_t)r->trimmed;
+        double size = r->diameter;
+        assert_true(size > 0);
+        double area = fmax(r->area, triangle_area);
+        /* ...and so is the plane of a sliver. */
+        double tol = 1e-9 * fmax(1, triangle_area / r->area);
+        assert_close(f->area, r->area, 1e-9 * area, "area", r);
+        assert_close(f->uv_area, r->uv_area,
+                     1e-9 * fmax(r->uv_area, triangle_uv), "uv_area", r);
+        for (int x = 0; x < 3; x++) {
+            assert_close(f->centroid[x], r->centroid[x], tol * size,
+                         "centroid", r);
+            assert_close(f->normal[x], r->normal[x], tol, "normal", r);
+        }
+        assert_close(f->deviation, r->deviation, tol * size, "deviation", r);
+        assert_close(f->p_dist, r->p_dist, tol * area * size * size,
+                     "p_dist", r);
+        assert_close(f->diameter, r->diameter, tol * size, "diameter", r);
+        double k = fmax(fabs(r->k1), fabs(r->k2));
+        assert_close(f->k1, r->k1, tol * k + 1e-300, "k1", r);
+        assert_close(f->k2, r->k2, tol * k + 1e-300, "k2", r);
+    }
+    return trimmed;
+}
+
 /* panels_build_fast (what option_evaluate uses: per-surface sums, only
  * crossing triangles clipped) against panels_build (every triangle
  * clipped): the same panels, every measure to 1e-9 of its scale. */
@@ -393,16 +446,6 @@ static void test_fast_matches_reference(void **state)
         else
             open_example(names[e], 0, &s);
         size_t trimmed = 0;
-        /* A sliver of a panel is judged against a triangle's area: both
-         * computations round relative to the triangles they cut. */
-        double triangle_area = s.mesh.area / (double)s.mesh.ntriangles;
-        double triangle_uv = 0;
-        for (size_t t = 0; t < s.mesh.ntriangles; t++) {
-            const double *c = s.uv.uv + 6 * t;
-            triangle_uv += 0.5 * fabs((c[2] - c[0]) * (c[5] - c[1]) -
-                                      (c[4] - c[0]) * (c[3] - c[1]));
-        }
-        triangle_uv /= (double)s.mesh.ntriangles;
         for (int g = 0; g < 6; g++)
             for (int mode = 0; mode < 2; mode++) {
                 struct panelization fast, reference;
@@ -413,47 +456,64 @@ static void test_fast_matches_reference(void **state)
                 assert_int_equal(panels_build(&s.mesh, &s.uv, &s.curvature,
                                               mode, nu, nv, &reference,
                                               &err), FACET_OK);
-                assert_int_equal(fast.npanels, reference.npanels);
-                assert_memory_equal(fast.cell_panel, reference.cell_panel,
-                                    (size_t)nu * nv * sizeof(int));
-                for (size_t n = 0; n < fast.npanels; n++) {
-                    const struct panel *f = &fast.panels[n];
-                    const struct panel *r = &reference.panels[n];
-                    assert_int_equal(f->i, r->i);
-                    assert_int_equal(f->j, r->j);
-                    assert_int_equal(f->trimmed, r->trimmed);
-                    assert_int_equal(f->ncorners, r->ncorners);
-                    trimmed += (size_t)r->trimmed;
-                    double size = r->diameter;
-                    assert_true(size > 0);
-                    double area = fmax(r->area, triangle_area);
-                    /* ...and so is the plane of a sliver. */
-                    double tol = 1e-9 * fmax(1, triangle_area / r->area);
-                    assert_close(f->area, r->area, 1e-9 * area, "area", r);
-                    assert_close(f->uv_area, r->uv_area,
-                                 1e-9 * fmax(r->uv_area, triangle_uv),
-                                 "uv_area", r);
-                    for (int x = 0; x < 3; x++) {
-                        assert_close(f->centroid[x], r->centroid[x],
-                                     tol * size, "centroid", r);
-                        assert_close(f->normal[x], r->normal[x], tol,
-                                     "normal", r);
-                    }
-                    assert_close(f->deviation, r->deviation, tol * size,
-                                 "deviation", r);
-                    assert_close(f->p_dist, r->p_dist,
-                                 tol * area * size * size, "p_dist", r);
-                    assert_close(f->diameter, r->diameter, tol * size,
-                                 "diameter", r);
-                    double k = fmax(fabs(r->k1), fabs(r->k2));
-                    assert_close(f->k1, r->k1, tol * k + 1e-300, "k1", r);
-                    assert_close(f->k2, r->k2, tol * k + 1e-300, "k2", r);
-                }
+                trimmed += assert_same_panels(&s, &fast, &reference);
                 panelization_free(&fast);
                 panelization_free(&reference);
             }
         /* The disc and the torus's ends must have put the trimmed path
          * to the test. */
+        if (strcmp(names[e], "disc") == 0)
+            assert_true(trimmed > 0);
+        surface_close(&s);
+    }
+}
+
+/* panels_build_lattice (what a run over a design space uses) against
+ * panels_build: every grid of three spaces on each surface, including
+ * the paper's ranges and grids whose lines fall on mesh vertices. */
+static void test_lattice_matches_reference(void **state)
+{
+    (void)state;
+    const char *names[] = {"roof", "torus", "hypar", "disc"};
+    int spaces[][4] = {{20, 24, 35, 38}, {1, 8, 1, 4}, {36, 40, 46, 50}};
+    for (int e = 0; e < 4; e++) {
+        struct surface s;
+        if (strcmp(names[e], "disc") == 0)
+            open_trimmed_disc(&s);
+        else
+            open_example(names[e], 0, &s);
+        size_t trimmed = 0;
+        for (int k = 0; k < 3; k++) {
+            struct panel_lattice *lattice;
+            struct facet_error err;
+            int *space = spaces[k];
+            assert_int_equal(panel_lattice_build(&s.panels, space[0],
+                                                 space[1], space[2], space[3],
+                                                 &lattice, &err), FACET_OK);
+            assert_non_null(lattice);
+            for (int nu = space[0]; nu <= space[1]; nu++)
+                for (int nv = space[2]; nv <= space[3]; nv++) {
+                    struct panelization got, reference;
+                    assert_int_equal(panels_build_lattice(lattice, nu, nv,
+                                                          &got, &err),
+                                     FACET_OK);
+                    assert_int_equal(panels_build(&s.mesh, &s.uv,
+                                                  &s.curvature,
+                                                  PANEL_EXTREMES, nu, nv,
+                                                  &reference, &err),
+                                     FACET_OK);
+                    trimmed += assert_same_panels(&s, &got, &reference);
+                    panelization_free(&got);
+                    panelization_free(&reference);
+                }
+            /* A grid outside the space is refused, not approximated. */
+            struct panelization outside;
+            assert_int_equal(panels_build_lattice(lattice, space[1] + 1,
+                                                  space[2], &outside, &err),
+                             FACET_EINPUT);
+            panelization_free(&outside);
+            panel_lattice_free(lattice);
+        }
         if (strcmp(names[e], "disc") == 0)
             assert_true(trimmed > 0);
         surface_close(&s);
@@ -512,6 +572,7 @@ int main(void)
         cmocka_unit_test(test_roof_has_every_type),
         cmocka_unit_test(test_bad_grid),
         cmocka_unit_test(test_fast_matches_reference),
+        cmocka_unit_test(test_lattice_matches_reference),
         cmocka_unit_test(test_batch_shares_grids),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

@@ -1,0 +1,912 @@
+/*
+ * panel_lattice.c: every grid of a design space from one fine division of
+ * the surface. See panel_lattice.h.
+ *
+ * Fine column c spans [line_u[c - 1], line_u[c]] (the outermost columns
+ * reach to the UV box and beyond), fine row r likewise in v; fine cell
+ * (c, r) is at r * ncolumns + c. A grid's line is one of the fine lines,
+ * bit for bit (both are umin + i * ((umax - umin) / nu)), so a grid cell
+ * is a block of fine cells.
+ *
+ * Pass 1 of a grid takes a cell's sums from the prefix sums, about the
+ * lattice's origin, in long double: the four-term difference of sums over
+ * the whole surface keeps about 1e-19 of their size, so a panel's second
+ * moment keeps about 1e-13 of its own. A cell the surface covers less
+ * than half of (a trimmed edge, a sliver) is summed from its fine cells
+ * instead, where nothing cancels.
+ *
+ * Pass 2 samples what panels_build samples, less the points inside a
+ * grid cell that cannot decide a maximum (distance from a plane and
+ * barycentric curvature are largest at a piece's vertices): each mesh
+ * point in its cell (a point on a fine line in every cell it is a piece
+ * vertex of), each cut of a mesh edge by one of the grid's lines in the
+ * cells on both sides, and each crossing of two of the grid's lines on
+ * the surface in the four cells around it.
+ */
+#include "panel_lattice.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "panel_sums.h"
+
+/* Raw moments about the lattice's origin, summed over fine cells. */
+struct lattice_sums {
+    long double area, uv_area;
+    long double first[3], second[6], normal_sum[3];
+};
+
+/* A point of the surface a grid may sample. */
+struct lattice_sample {
+    double position[3];  /* m */
+    double k1, k2;       /* 1/m */
+};
+
+/* Where a fine line cuts a mesh edge: across is the fine row (for a line
+ * in u) or column (in v) the cut lies in. */
+struct lattice_cut {
+    struct lattice_sample at;
+    uint32_t across;
+};
+
+/* A crossing of two fine lines. */
+struct lattice_corner {
+    struct lattice_sample at;
+    int state;  /* -1 off the surface, 0 inside a triangle, 1 on an edge */
+};
+
+/* A mesh point on a fine line, in one of the fine cells it is a piece
+ * vertex of. */
+struct lattice_extra {
+    uint32_t point, column, row;
+};
+
+#define OFF_LINE UINT32_MAX
+
+struct panel_lattice {
+    const struct panel_prep *prep;
+    int side_lo[2], side_hi[2];     /* the grids: nu, nv ranges */
+    double origin[3];               /* of the prefix sums (m) */
+    size_t nline[2];                /* fine lines in u, v */
+    double *line[2];                /* ascending, distinct */
+    size_t ncolumns, nrows;         /* nline + 1 each */
+    struct cell_moments *fine;      /* nrows x ncolumns */
+    struct lattice_sums *prefix;    /* (nrows + 1) x (ncolumns + 1): the
+                                       fine cells of lower row and column */
+    uint32_t *pieces;               /* the same, pieces with area */
+    uint32_t *place;                /* npoints x 2: fine column and row, or
+                                       OFF_LINE for a point on a line */
+    struct lattice_extra *extra;    /* the points on lines */
+    size_t nextra;
+    size_t *cut_start[2];           /* nline + 1: cuts of each line */
+    struct lattice_cut *cut[2];
+    struct lattice_corner *corner;  /* nline[1] x nline[0] */
+};
+
+/* The number of lines below x, and whether x is one of them. */
+static size_t line_rank(const double *line, size_t n, double x, int *on)
+{
+    size_t lo = 0, hi = n;
+    while (lo < hi) {
+        size_t mid = lo + (hi - lo) / 2;
+        if (line[mid] < x)
+            lo = mid + 1;
+        else
+            hi = mid;
+    }
+    *on = lo < n && line[lo] == x;
+    return lo;
+}
+
+/* The number of lines at or below x. */
+static size_t line_rank_above(const double *line, size_t n, double x)
+{
+    size_t lo = 0, hi = n;
+    while (lo < hi) {
+        size_t mid = lo + (hi - lo) / 2;
+        if (line[mid] <= x)
+            lo = mid + 1;
+        else
+            hi = mid;
+    }
+    return lo;
+}
+
+static int compare_double(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return x < y ? -1 : x > y;
+}
+
+/* The interior lines of every grid side lo..hi over [min, max], as the
+ * grids compute them, sorted and distinct, into *line (malloc'ed). */
+static int make_lines(double min, double max, int lo, int hi, double **line,
+                      size_t *nline)
+{
+    size_t n = 0;
+    for (int side = lo; side <= hi; side++)
+        n += (size_t)(side - 1);
+    double *all = malloc((n ? n : 1) * sizeof *all);
+    if (all == NULL)
+        return FACET_EWORK;
+    n = 0;
+    for (int side = lo; side <= hi; side++) {
+        double step = (max - min) / side;
+        for (int i = 1; i < side; i++)
+            all[n++] = min + i * step;
+    }
+    qsort(all, n, sizeof *all, compare_double);
+    size_t distinct = 0;
+    for (size_t k = 0; k < n; k++)
+        if (distinct == 0 || all[k] != all[distinct - 1])
+            all[distinct++] = all[k];
+    *line = all;
+    *nline = distinct;
+    return FACET_OK;
+}
+
+static size_t lines_upper_bound(int lo, int hi)
+{
+    size_t n = 0;
+    for (int side = lo; side <= hi; side++)
+        n += (size_t)(side - 1);
+    return n;
+}
+
+static void sample_at(const struct panel_prep *prep, const uint32_t *point,
+                      const double b[3], struct lattice_sample *out)
+{
+    const struct panel_prep_point *P[3] = {&prep->point[point[0]],
+                                           &prep->point[point[1]],
+                                           &prep->point[point[2]]};
+    for (int d = 0; d < 3; d++)
+        out->position[d] = b[0] * P[0]->position[d] +
+                           b[1] * P[1]->position[d] +
+                           b[2] * P[2]->position[d];
+    out->k1 = b[0] * P[0]->k1 + b[1] * P[1]->k1 + b[2] * P[2]->k1;
+    out->k2 = b[0] * P[0]->k2 + b[1] * P[1]->k2 + b[2] * P[2]->k2;
+}
+
+/* --- building --- */
+
+struct builder {
+    struct panel_lattice *lattice;
+    size_t extra_capacity;
+    uint32_t *fine_pieces;  /* nrows x ncolumns: pieces with area */
+};
+
+/* Files what pass 2 needs from piece vertices in fine cell (column, row)
+ * of triangle t: its mesh points that lie on a line, and the line
+ * crossings inside it. */
+static int note_piece_vertices(struct builder *b, uint32_t t, size_t column,
+                               size_t row, const struct split_vertex *piece,
+                               int count)
+{
+    struct panel_lattice *L = b->lattice;
+    const uint32_t *point = L->prep->corner + 3 * (size_t)t;
+    for (int k = 0; k < count; k++) {
+        const struct split_vertex *x = &piece[k];
+        int corner = x->b[0] == 1 ? 0 : x->b[1] == 1 ? 1 : x->b[2] == 1 ? 2
+                                                                      : -1;
+        if (corner >= 0) {
+            uint32_t p = point[corner];
+            if (L->place[2 * (size_t)p] != OFF_LINE)
+                continue;
+            struct lattice_extra e = {p, (uint32_t)column, (uint32_t)row};
+            if (L->nextra > 0) {
+                const struct lattice_extra *last = &L->extra[L->nextra - 1];
+                if (last->point == p && last->column == e.column &&
+                    last->row == e.row)
+                    continue;
+            }
+            if (L->nextra == b->extra_capacity) {
+                size_t grown = b->extra_capacity ? 2 * b->extra_capacity
+                                                 : 1024;
+                struct lattice_extra *more =
+                    realloc(L->extra, grown * sizeof *more);
+                if (more == NULL)
+                    return FACET_EWORK;
+                L->extra = more;
+                b->extra_capacity = grown;
+            }
+            L->extra[L->nextra++] = e;
+            continue;
+        }
+        /* A crossing of the cell's lines inside the triangle. */
+        size_t a, c;
+        if (column > 0 && x->u == L->line[0][column - 1])
+            a = column - 1;
+        else if (column < L->nline[0] && x->u == L->line[0][column])
+            a = column;
+        else
+            continue;
+        if (row > 0 && x->v == L->line[1][row - 1])
+            c = row - 1;
+        else if (row < L->nline[1] && x->v == L->line[1][row])
+            c = row;
+        else
+            continue;
+        struct lattice_corner *q = &L->corner[c * L->nline[0] + a];
+        if (q->state >= 0)
+            continue;
+        sample_at(L->prep, point, x->b, &q->at);
+        q->state = x->b[0] <= 1e-12 || x->b[1] <= 1e-12 || x->b[2] <= 1e-12;
+    }
+    return FACET_OK;
+}
+
+/* Adds a piece of triangle t to fine cell (column, row). */
+static int add_piece(struct builder *b, uint32_t t, const double corner[3][3],
+                     size_t column, size_t row,
+                     const struct split_vertex *piece, int count)
+{
+    struct panel_lattice *L = b->lattice;
+    const struct panel_prep_triangle *T = &L->prep->triangle[t];
+    size_t cell = row * L->ncolumns + column;
+    struct piece_moments m;
+    panel_piece_moments(T, corner, piece, count, &m);
+    cell_moments_add(&L->fine[cell], T->centroid, &m);
+    if (m.area > 0)
+        b->fine_pieces[cell]++;
+    return note_piece_vertices(b, t, column, row, piece, count);
+}
+
+/* Clips triangle t along the fine lines, row by row and then cell by cell
+ * (panel_fast.c's split_triangle over uneven lines), into the fine sums. */
+static int divide_triangle(struct builder *b, uint32_t t)
+{
+    struct panel_lattice *L = b->lattice;
+    const struct panel_prep *prep = L->prep;
+    const struct panel_prep_triangle *T = &prep->triangle[t];
+    const uint32_t *point = prep->corner + 3 * (size_t)t;
+    double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
+    for (int k = 0; k < 3; k++)
+        for (int a = 0; a < 2; a++) {
+            double x = prep->point_uv[2 * point[k] + a];
+            lo[a] = fmin(lo[a], x);
+            hi[a] = fmax(hi[a], x);
+        }
+    int on;
+    size_t c0 = line_rank(L->line[0], L->nline[0], lo[0], &on);
+    size_t c1 = line_rank_above(L->line[0], L->nline[0], hi[0]);
+    size_t r0 = line_rank(L->line[1], L->nline[1], lo[1], &on);
+    size_t r1 = line_rank_above(L->line[1], L->nline[1], hi[1]);
+    if (c0 == c1 && r0 == r1) {
+        size_t cell = r0 * L->ncolumns + c0;
+        cell_moments_add_triangle(&L->fine[cell], T);
+        if (T->area > 0)
+            b->fine_pieces[cell]++;
+        return FACET_OK;
+    }
+    double corner[3][3];
+    struct split_vertex buffer[6][SPLIT_MAX];
+    struct split_vertex *rest = buffer[0], *rest_next = buffer[1];
+    int nrest = 3;
+    for (int k = 0; k < 3; k++) {
+        const struct panel_prep_point *P = &prep->point[point[k]];
+        for (int d = 0; d < 3; d++)
+            corner[k][d] = P->position[d] - T->centroid[d];
+        rest[k].u = prep->point_uv[2 * point[k]];
+        rest[k].v = prep->point_uv[2 * point[k] + 1];
+        rest[k].b[0] = rest[k].b[1] = rest[k].b[2] = 0;
+        rest[k].b[k] = 1;
+    }
+    for (size_t r = r0; r <= r1 && nrest >= 3; r++) {
+        struct split_vertex *row;
+        int nrow;
+        if (r < r1) {
+            int nnext;
+            row = buffer[2];
+            panel_split(rest, nrest, 1, L->line[1][r], row, &nrow, rest_next,
+                        &nnext);
+            struct split_vertex *swap = rest;
+            rest = rest_next;
+            rest_next = swap;
+            nrest = nnext;
+        } else {
+            row = rest;
+            nrow = nrest;
+            nrest = 0;
+        }
+        struct split_vertex *row_next = buffer[3];
+        for (size_t c = c0; c <= c1 && nrow >= 3; c++) {
+            struct split_vertex *piece;
+            int npiece;
+            if (c < c1) {
+                int nnext;
+                piece = buffer[5];
+                panel_split(row, nrow, 0, L->line[0][c], piece, &npiece,
+                            row_next, &nnext);
+                row = row_next;
+                row_next = row_next == buffer[3] ? buffer[4] : buffer[3];
+                nrow = nnext;
+            } else {
+                piece = row;
+                npiece = nrow;
+                nrow = 0;
+            }
+            if (npiece < 3)
+                continue;
+            if (add_piece(b, t, corner, c, r, piece, npiece) != FACET_OK)
+                return FACET_EWORK;
+        }
+    }
+    return FACET_OK;
+}
+
+/* The directed edges of the triangles, to tell an edge two triangles share
+ * (filed once) from a boundary edge. */
+struct edge_set {
+    uint64_t *key;
+    size_t mask;
+};
+
+static uint64_t edge_key(uint32_t from, uint32_t to)
+{
+    return (uint64_t)from << 32 | to;
+}
+
+static size_t edge_slot(const struct edge_set *s, uint64_t key)
+{
+    uint64_t h = key * 0x9E3779B97F4A7C15ull;
+    size_t slot = (size_t)(h >> 20) & s->mask;
+    while (s->key[slot] != UINT64_MAX && s->key[slot] != key)
+        slot = (slot + 1) & s->mask;
+    return slot;
+}
+
+static int edge_set_build(const struct panel_prep *prep, struct edge_set *s)
+{
+    size_t nt = prep->mesh->ntriangles, size = 1024;
+    while (size < 6 * nt)
+        size *= 2;
+    s->key = malloc(size * sizeof *s->key);
+    if (s->key == NULL)
+        return FACET_EWORK;
+    s->mask = size - 1;
+    for (size_t k = 0; k < size; k++)
+        s->key[k] = UINT64_MAX;
+    for (size_t t = 0; t < nt; t++) {
+        const uint32_t *point = prep->corner + 3 * t;
+        for (int k = 0; k < 3; k++) {
+            uint64_t key = edge_key(point[k], point[k == 2 ? 0 : k + 1]);
+            s->key[edge_slot(s, key)] = key;
+        }
+    }
+    return FACET_OK;
+}
+
+/* For every cut of a fine line of axis by a mesh edge (a shared edge
+ * once): with cut NULL, makes room for it in count[line] (two slots: a cut
+ * on a crossing of lines is filed for the cells on each side); else writes
+ * it at cut[count[line]++]. */
+static void cut_edges(const struct panel_lattice *L,
+                      const struct edge_set *edges, int axis, size_t *count,
+                      struct lattice_cut *cut)
+{
+    const struct panel_prep *prep = L->prep;
+    const double *line = L->line[axis], *across = L->line[1 - axis];
+    size_t nline = L->nline[axis], nacross = L->nline[1 - axis];
+    for (size_t t = 0; t < prep->mesh->ntriangles; t++) {
+        const uint32_t *point = prep->corner + 3 * t;
+        for (int k = 0; k < 3; k++) {
+            uint32_t pa = point[k], pb = point[k == 2 ? 0 : k + 1];
+            if (pa > pb &&
+                edges->key[edge_slot(edges, edge_key(pb, pa))] ==
+                    edge_key(pb, pa))
+                continue;
+            double xa = prep->point_uv[2 * pa + axis];
+            double xb = prep->point_uv[2 * pb + axis];
+            if (xa == xb)
+                continue;
+            /* The lines strictly between the ends: a line through an end
+             * is that point's, not a cut. */
+            int on;
+            size_t first = line_rank_above(line, nline, fmin(xa, xb));
+            size_t last = line_rank(line, nline, fmax(xa, xb), &on);
+            if (cut == NULL) {
+                for (size_t n = first; n < last; n++)
+                    count[n] += 2;
+                continue;
+            }
+            double ya = prep->point_uv[2 * pa + 1 - axis];
+            double yb = prep->point_uv[2 * pb + 1 - axis];
+            uint32_t ends[3] = {pa, pb, pb};
+            for (size_t n = first; n < last; n++) {
+                double s = (line[n] - xa) / (xb - xa);
+                double b[3] = {1 - s, s, 0};
+                struct lattice_cut c;
+                sample_at(prep, ends, b, &c.at);
+                size_t r = line_rank(across, nacross, ya + s * (yb - ya),
+                                     &on);
+                c.across = (uint32_t)r;
+                cut[count[n]++] = c;
+                if (on) {
+                    c.across = (uint32_t)r + 1;
+                    cut[count[n]++] = c;
+                }
+            }
+        }
+    }
+}
+
+/* Files the cuts of the lines of axis, line by line. */
+static int file_cuts(struct panel_lattice *L, const struct edge_set *edges,
+                     int axis)
+{
+    size_t nline = L->nline[axis];
+    size_t *room = calloc(nline ? nline : 1, sizeof *room);
+    size_t *start = malloc((nline + 1) * sizeof *start);
+    if (room == NULL || start == NULL) {
+        free(room);
+        free(start);
+        return FACET_EWORK;
+    }
+    L->cut_start[axis] = start;
+    cut_edges(L, edges, axis, room, NULL);
+    size_t total = 0;
+    for (size_t n = 0; n < nline; n++) {
+        start[n] = total;
+        total += room[n];
+        room[n] = start[n];
+    }
+    start[nline] = total;
+    struct lattice_cut *cut = malloc((total ? total : 1) * sizeof *cut);
+    if (cut == NULL) {
+        free(room);
+        return FACET_EWORK;
+    }
+    L->cut[axis] = cut;
+    cut_edges(L, edges, axis, room, cut);
+    /* Close the room left for crossings that were not. */
+    size_t kept = 0;
+    for (size_t n = 0; n < nline; n++) {
+        size_t begin = start[n], end = room[n];
+        start[n] = kept;
+        memmove(&cut[kept], &cut[begin], (end - begin) * sizeof *cut);
+        kept += end - begin;
+    }
+    start[nline] = kept;
+    free(room);
+    struct lattice_cut *shrunk = realloc(cut, (kept ? kept : 1) * sizeof *cut);
+    if (shrunk != NULL)
+        L->cut[axis] = shrunk;
+    return FACET_OK;
+}
+
+/* A fine cell's moments about the lattice's origin. */
+static void raw_moments(const struct cell_moments *m, const double origin[3],
+                        struct lattice_sums *out)
+{
+    static const int at[6][2] = {{0, 0}, {0, 1}, {0, 2},
+                                 {1, 1}, {1, 2}, {2, 2}};
+    long double area = m->area, d[3], f[3];
+    for (int x = 0; x < 3; x++) {
+        d[x] = m->has_reference ? (long double)m->reference[x] - origin[x]
+                                : 0;
+        f[x] = m->first[x];
+    }
+    out->area = area;
+    out->uv_area = m->uv_area;
+    for (int x = 0; x < 3; x++) {
+        out->first[x] = f[x] + area * d[x];
+        out->normal_sum[x] = m->normal_sum[x];
+    }
+    for (int e = 0; e < 6; e++) {
+        int r = at[e][0], q = at[e][1];
+        out->second[e] = m->second[e] + f[r] * d[q] + d[r] * f[q] +
+                         area * d[r] * d[q];
+    }
+}
+
+static void sums_add(struct lattice_sums *to, const struct lattice_sums *x,
+                     long double sign)
+{
+    to->area += sign * x->area;
+    to->uv_area += sign * x->uv_area;
+    for (int e = 0; e < 3; e++) {
+        to->first[e] += sign * x->first[e];
+        to->normal_sum[e] += sign * x->normal_sum[e];
+    }
+    for (int e = 0; e < 6; e++)
+        to->second[e] += sign * x->second[e];
+}
+
+/* The running sums: prefix[(r + 1) * W + c + 1] = the fine cells of rows
+ * 0..r, columns 0..c, W = ncolumns + 1. */
+static void make_prefix(struct panel_lattice *L, const uint32_t *fine_pieces)
+{
+    size_t W = L->ncolumns + 1;
+    memset(L->prefix, 0, W * sizeof *L->prefix);
+    memset(L->pieces, 0, W * sizeof *L->pieces);
+    for (size_t r = 0; r < L->nrows; r++) {
+        struct lattice_sums run;
+        memset(&run, 0, sizeof run);
+        uint32_t run_pieces = 0;
+        memset(&L->prefix[(r + 1) * W], 0, sizeof *L->prefix);
+        L->pieces[(r + 1) * W] = 0;
+        for (size_t c = 0; c < L->ncolumns; c++) {
+            struct lattice_sums cell;
+            raw_moments(&L->fine[r * L->ncolumns + c], L->origin, &cell);
+            sums_add(&run, &cell, 1);
+            run_pieces += fine_pieces[r * L->ncolumns + c];
+            struct lattice_sums *to = &L->prefix[(r + 1) * W + c + 1];
+            *to = L->prefix[r * W + c + 1];
+            sums_add(to, &run, 1);
+            L->pieces[(r + 1) * W + c + 1] =
+                L->pieces[r * W + c + 1] + run_pieces;
+        }
+    }
+}
+
+void panel_lattice_free(struct panel_lattice *lattice)
+{
+    if (lattice == NULL)
+        return;
+    for (int a = 0; a < 2; a++) {
+        free(lattice->line[a]);
+        free(lattice->cut_start[a]);
+        free(lattice->cut[a]);
+    }
+    free(lattice->fine);
+    free(lattice->prefix);
+    free(lattice->pieces);
+    free(lattice->place);
+    free(lattice->extra);
+    free(lattice->corner);
+    free(lattice);
+}
+
+static int out_of_memory(struct panel_lattice *lattice, uint32_t *scratch,
+                         struct facet_error *err)
+{
+    free(scratch);
+    panel_lattice_free(lattice);
+    return facet_error_set(err, FACET_EWORK, "out of memory (panel lattice)");
+}
+
+int panel_lattice_build(const struct panel_prep *prep, int u_lo, int u_hi,
+                        int v_lo, int v_hi, struct panel_lattice **out,
+                        struct facet_error *err)
+{
+    *out = NULL;
+    int lo[2] = {u_lo, v_lo}, hi[2] = {u_hi, v_hi};
+    for (int a = 0; a < 2; a++)
+        if (lo[a] < 1 || hi[a] < lo[a] || hi[a] > PANEL_MAX_GRID)
+            return facet_error_set(err, FACET_EINPUT,
+                "grid sides %d..%d are out of range (1 to %d)", lo[a], hi[a],
+                PANEL_MAX_GRID);
+    const struct uv_index *index = prep->index;
+    if (!(index->umax > index->umin) || !(index->vmax > index->vmin))
+        return facet_error_set(err, FACET_EINPUT,
+            "the UV map has no extent (all texture coordinates equal in u "
+            "or in v)");
+    /* Too fine before anything is made: distinct lines are at most all. */
+    size_t bound[2] = {lines_upper_bound(u_lo, u_hi),
+                       lines_upper_bound(v_lo, v_hi)};
+    if (bound[0] > 64 * (size_t)PANEL_LATTICE_MAX_NODES ||
+        bound[1] > 64 * (size_t)PANEL_LATTICE_MAX_NODES)
+        return FACET_OK;
+
+    struct panel_lattice *L = calloc(1, sizeof *L);
+    if (L == NULL)
+        return facet_error_set(err, FACET_EWORK,
+                               "out of memory (panel lattice)");
+    L->prep = prep;
+    double min[2] = {index->umin, index->vmin};
+    double max[2] = {index->umax, index->vmax};
+    for (int a = 0; a < 2; a++) {
+        L->side_lo[a] = lo[a];
+        L->side_hi[a] = hi[a];
+        if (make_lines(min[a], max[a], lo[a], hi[a], &L->line[a],
+                       &L->nline[a]) != FACET_OK)
+            return out_of_memory(L, NULL, err);
+    }
+    if ((L->nline[0] + 2) * (L->nline[1] + 2) > PANEL_LATTICE_MAX_NODES) {
+        panel_lattice_free(L);
+        return FACET_OK;
+    }
+    L->ncolumns = L->nline[0] + 1;
+    L->nrows = L->nline[1] + 1;
+    size_t nfine = L->ncolumns * L->nrows;
+    size_t nprefix = (L->ncolumns + 1) * (L->nrows + 1);
+    size_t ncorners = L->nline[0] * L->nline[1];
+    uint32_t *fine_pieces = calloc(nfine, sizeof *fine_pieces);
+    L->fine = calloc(nfine, sizeof *L->fine);
+    L->prefix = malloc(nprefix * sizeof *L->prefix);
+    L->pieces = malloc(nprefix * sizeof *L->pieces);
+    L->place = malloc((prep->npoints ? prep->npoints : 1) * 2 *
+                      sizeof *L->place);
+    L->corner = malloc((ncorners ? ncorners : 1) * sizeof *L->corner);
+    if (fine_pieces == NULL || L->fine == NULL || L->prefix == NULL ||
+        L->pieces == NULL || L->place == NULL || L->corner == NULL)
+        return out_of_memory(L, fine_pieces, err);
+    for (size_t q = 0; q < ncorners; q++)
+        L->corner[q].state = -1;
+
+    /* The origin of the running sums: the middle of the surface, so that
+     * they are as small as they can be. */
+    double low[3] = {INFINITY, INFINITY, INFINITY};
+    double high[3] = {-INFINITY, -INFINITY, -INFINITY};
+    for (size_t p = 0; p < prep->npoints; p++)
+        for (int x = 0; x < 3; x++) {
+            low[x] = fmin(low[x], prep->point[p].position[x]);
+            high[x] = fmax(high[x], prep->point[p].position[x]);
+        }
+    for (int x = 0; x < 3; x++)
+        L->origin[x] = prep->npoints ? 0.5 * (low[x] + high[x]) : 0;
+
+    /* Each point's fine cell, unless it lies on a line. */
+    for (size_t p = 0; p < prep->npoints; p++) {
+        int on_u, on_v;
+        size_t c = line_rank(L->line[0], L->nline[0], prep->point_uv[2 * p],
+                             &on_u);
+        size_t r = line_rank(L->line[1], L->nline[1],
+                             prep->point_uv[2 * p + 1], &on_v);
+        L->place[2 * p] = on_u || on_v ? OFF_LINE : (uint32_t)c;
+        L->place[2 * p + 1] = (uint32_t)r;
+    }
+
+    struct builder b = {L, 0, fine_pieces};
+    for (size_t t = 0; t < prep->mesh->ntriangles; t++)
+        if (divide_triangle(&b, (uint32_t)t) != FACET_OK)
+            return out_of_memory(L, fine_pieces, err);
+
+    struct edge_set edges;
+    if (edge_set_build(prep, &edges) != FACET_OK)
+        return out_of_memory(L, fine_pieces, err);
+    int rc = file_cuts(L, &edges, 0);
+    if (rc == FACET_OK)
+        rc = file_cuts(L, &edges, 1);
+    free(edges.key);
+    if (rc != FACET_OK)
+        return out_of_memory(L, fine_pieces, err);
+
+    make_prefix(L, fine_pieces);
+    free(fine_pieces);
+    *out = L;
+    return FACET_OK;
+}
+
+int panel_lattice_has(const struct panel_lattice *lattice, int nu, int nv)
+{
+    return nu >= lattice->side_lo[0] && nu <= lattice->side_hi[0] &&
+           nv >= lattice->side_lo[1] && nv <= lattice->side_hi[1];
+}
+
+/* --- one grid --- */
+
+/* The grid's lines among the lattice's, per axis: line_of[i] the fine line
+ * of grid line i (1..n-1), first[i] the first fine column (row) of grid
+ * column (row) i (0..n), and cell_of each fine column's grid column. */
+struct grid_axis {
+    size_t *line_of, *first;
+    uint32_t *cell_of;
+};
+
+static int grid_axis_make(const struct panel_lattice *L, int axis, int n,
+                          double min, double step, struct grid_axis *g)
+{
+    size_t nfine = L->nline[axis] + 1;
+    g->line_of = malloc((size_t)(n + 1) * sizeof *g->line_of);
+    g->first = malloc((size_t)(n + 1) * sizeof *g->first);
+    g->cell_of = malloc(nfine * sizeof *g->cell_of);
+    if (g->line_of == NULL || g->first == NULL || g->cell_of == NULL)
+        return FACET_EWORK;
+    g->first[0] = 0;
+    g->line_of[0] = 0;
+    for (int i = 1; i < n; i++) {
+        int on;
+        size_t k = line_rank(L->line[axis], L->nline[axis], min + i * step,
+                             &on);
+        if (!on)
+            return FACET_EINPUT;
+        g->line_of[i] = k;
+        g->first[i] = k + 1;
+    }
+    g->first[n] = nfine;
+    for (int i = 0; i < n; i++)
+        for (size_t f = g->first[i]; f < g->first[i + 1]; f++)
+            g->cell_of[f] = (uint32_t)i;
+    return FACET_OK;
+}
+
+static void grid_axis_free(struct grid_axis *g)
+{
+    free(g->line_of);
+    free(g->first);
+    free(g->cell_of);
+}
+
+/* Cell sums from the fine cells of columns a0..a1-1, rows b0..b1-1. */
+static void sum_fine_cells(const struct panel_lattice *L, size_t a0,
+                           size_t a1, size_t b0, size_t b1,
+                           struct cell_moments *to)
+{
+    for (size_t r = b0; r < b1; r++)
+        for (size_t c = a0; c < a1; c++) {
+            const struct cell_moments *m = &L->fine[r * L->ncolumns + c];
+            if (!m->has_reference)
+                continue;
+            struct piece_moments part;
+            part.area = m->area;
+            part.uv_area = m->uv_area;
+            memcpy(part.first, m->first, sizeof part.first);
+            memcpy(part.second, m->second, sizeof part.second);
+            memcpy(part.normal_sum, m->normal_sum, sizeof part.normal_sum);
+            cell_moments_add(to, m->reference, &part);
+        }
+}
+
+/* Cell sums from the running sums: about the cell's centroid, which is
+ * where the second moment has no cancellation left to lose. */
+static void sum_from_prefix(const struct panel_lattice *L,
+                            const struct lattice_sums *block,
+                            struct cell_moments *to)
+{
+    static const int at[6][2] = {{0, 0}, {0, 1}, {0, 2},
+                                 {1, 1}, {1, 2}, {2, 2}};
+    long double area = block->area, mean[3];
+    to->has_reference = 1;
+    for (int x = 0; x < 3; x++) {
+        mean[x] = block->first[x] / area;
+        to->reference[x] = (double)(L->origin[x] + mean[x]);
+        /* What rounding the reference left, as a first moment. */
+        to->first[x] = (double)(block->first[x] -
+                                area * ((long double)to->reference[x] -
+                                        L->origin[x]));
+        to->normal_sum[x] = (double)block->normal_sum[x];
+    }
+    for (int e = 0; e < 6; e++) {
+        int r = at[e][0], q = at[e][1];
+        to->second[e] = (double)(block->second[e] -
+                                 block->first[r] * block->first[q] / area);
+    }
+    to->area = (double)area;
+    to->uv_area = (double)block->uv_area;
+}
+
+static inline void sample_cell(const struct panelization *out,
+                               struct cell_samples *samples,
+                               struct cell_outline *outlines, size_t cell,
+                               const double position[3], double k1,
+                               double k2, int edge)
+{
+    int n = out->cell_panel[cell];
+    if (n < 0)
+        return;
+    struct cell_samples *s = &samples[n];
+    cell_sample(s, s->outline >= 0 ? &outlines[s->outline] : NULL, position,
+                k1, k2, edge);
+}
+
+int panels_build_lattice(const struct panel_lattice *L, int nu, int nv,
+                         struct panelization *out, struct facet_error *err)
+{
+    const struct panel_prep *prep = L->prep;
+    struct panel_grid grid;
+    int rc = panel_grid_init(&grid, prep->mesh, prep->index, nu, nv, out,
+                             err);
+    if (rc != FACET_OK)
+        return rc;
+    if (!panel_lattice_has(L, nu, nv))
+        return facet_error_set(err, FACET_EINPUT,
+            "grid %dx%d is not one of the panel lattice's", nu, nv);
+    size_t ncells = (size_t)nu * (size_t)nv;
+    struct grid_axis axis[2];
+    memset(axis, 0, sizeof axis);
+    struct cell_moments *sums = calloc(ncells, sizeof *sums);
+    rc = sums == NULL ? FACET_EWORK
+                      : grid_axis_make(L, 0, nu, grid.umin, grid.du,
+                                       &axis[0]);
+    if (rc == FACET_OK)
+        rc = grid_axis_make(L, 1, nv, grid.vmin, grid.dv, &axis[1]);
+    if (rc != FACET_OK) {
+        free(sums);
+        grid_axis_free(&axis[0]);
+        grid_axis_free(&axis[1]);
+        if (rc == FACET_EINPUT)
+            return facet_error_set(err, FACET_EINPUT,
+                "grid %dx%d: a line is missing from the panel lattice", nu,
+                nv);
+        return facet_error_set(err, FACET_EWORK, "out of memory (panels)");
+    }
+
+    /* Pass 1. */
+    size_t W = L->ncolumns + 1;
+    double cell_uv_area = grid.du * grid.dv;
+    for (int j = 0; j < nv; j++)
+        for (int i = 0; i < nu; i++) {
+            size_t a0 = axis[0].first[i], a1 = axis[0].first[i + 1];
+            size_t b0 = axis[1].first[j], b1 = axis[1].first[j + 1];
+            uint32_t pieces = L->pieces[b1 * W + a1] - L->pieces[b0 * W + a1] -
+                              L->pieces[b1 * W + a0] + L->pieces[b0 * W + a0];
+            if (pieces == 0)
+                continue;
+            struct lattice_sums block = L->prefix[b1 * W + a1];
+            sums_add(&block, &L->prefix[b0 * W + a1], -1);
+            sums_add(&block, &L->prefix[b1 * W + a0], -1);
+            sums_add(&block, &L->prefix[b0 * W + a0], 1);
+            struct cell_moments *to = &sums[(size_t)j * nu + i];
+            if (block.area > 0 && block.uv_area >= 0.5 * cell_uv_area)
+                sum_from_prefix(L, &block, to);
+            else
+                sum_fine_cells(L, a0, a1, b0, b1, to);
+        }
+    struct cell_samples *samples;
+    struct cell_outline *outlines;
+    rc = panels_fit(&grid, sums, out, &samples, &outlines, err);
+    free(sums);
+    if (rc != FACET_OK) {
+        grid_axis_free(&axis[0]);
+        grid_axis_free(&axis[1]);
+        return rc;
+    }
+
+    /* Pass 2: the mesh points... */
+    const uint32_t *column_cell = axis[0].cell_of, *row_cell = axis[1].cell_of;
+    for (size_t p = 0; p < prep->npoints; p++) {
+        uint32_t c = L->place[2 * p];
+        if (c == OFF_LINE)
+            continue;
+        size_t cell = (size_t)row_cell[L->place[2 * p + 1]] * nu +
+                      column_cell[c];
+        const struct panel_prep_point *P = &prep->point[p];
+        sample_cell(out, samples, outlines, cell, P->position, P->k1, P->k2,
+                    1);
+    }
+    for (size_t e = 0; e < L->nextra; e++) {
+        const struct lattice_extra *x = &L->extra[e];
+        size_t cell = (size_t)row_cell[x->row] * nu + column_cell[x->column];
+        const struct panel_prep_point *P = &prep->point[x->point];
+        sample_cell(out, samples, outlines, cell, P->position, P->k1, P->k2,
+                    1);
+    }
+    /* ...where the grid's lines cut mesh edges... */
+    for (int i = 1; i < nu; i++) {
+        size_t k = axis[0].line_of[i];
+        for (size_t n = L->cut_start[0][k]; n < L->cut_start[0][k + 1];
+             n++) {
+            const struct lattice_cut *x = &L->cut[0][n];
+            size_t cell = (size_t)row_cell[x->across] * nu + (size_t)i;
+            sample_cell(out, samples, outlines, cell - 1, x->at.position,
+                        x->at.k1, x->at.k2, 1);
+            sample_cell(out, samples, outlines, cell, x->at.position,
+                        x->at.k1, x->at.k2, 1);
+        }
+    }
+    for (int j = 1; j < nv; j++) {
+        size_t k = axis[1].line_of[j];
+        for (size_t n = L->cut_start[1][k]; n < L->cut_start[1][k + 1];
+             n++) {
+            const struct lattice_cut *x = &L->cut[1][n];
+            size_t cell = (size_t)j * nu + column_cell[x->across];
+            sample_cell(out, samples, outlines, cell - (size_t)nu,
+                        x->at.position, x->at.k1, x->at.k2, 1);
+            sample_cell(out, samples, outlines, cell, x->at.position,
+                        x->at.k1, x->at.k2, 1);
+        }
+    }
+    /* ...and where they cross on the surface. */
+    for (int j = 1; j < nv; j++)
+        for (int i = 1; i < nu; i++) {
+            const struct lattice_corner *q =
+                &L->corner[axis[1].line_of[j] * L->nline[0] +
+                           axis[0].line_of[i]];
+            if (q->state < 0)
+                continue;
+            size_t cell = (size_t)j * nu + (size_t)i;
+            size_t around[4] = {cell - (size_t)nu - 1, cell - (size_t)nu,
+                                cell - 1, cell};
+            for (int a = 0; a < 4; a++)
+                sample_cell(out, samples, outlines, around[a],
+                            q->at.position, q->at.k1, q->at.k2, q->state);
+        }
+    panels_finish(PANEL_EXTREMES, samples, outlines, out);
+    free(samples);
+    free(outlines);
+    grid_axis_free(&axis[0]);
+    grid_axis_free(&axis[1]);
+    return FACET_OK;
+}
