@@ -130,6 +130,7 @@ int design_space_check(const struct design_space *s, struct facet_error *err)
  * into groups of one grid each, which the jobs take in turn. */
 struct evaluation_plan {
     const struct surface *surface;
+    const struct panel_lattice *lattice;  /* or NULL */
     const struct option_params *base;
     const struct design_point *points;
     const size_t *order;            /* the points by grid */
@@ -167,8 +168,10 @@ static void *evaluation_thread(void *argument)
             params.nv = plan->points[k].nv;
             params.classify.threshold = plan->points[k].threshold_mm / 1000;
             if (x == plan->group[g]) {
-                job->rc = option_evaluate(plan->surface, &params, &panels,
-                                          &plan->totals[k], &job->err);
+                job->rc = option_evaluate_lattice(plan->surface,
+                                                  plan->lattice, &params,
+                                                  &panels, &plan->totals[k],
+                                                  &job->err);
             } else {
                 job->rc = classify_check_options(&params.classify,
                                                  &job->err);
@@ -212,6 +215,7 @@ static int compare_by_grid(const void *a, const void *b)
 
 /* optimize_evaluate, and with keep, optimize_evaluate_panels. */
 static int evaluate(const struct surface *surface,
+                    const struct panel_lattice *lattice,
                     const struct option_params *base,
                     const struct design_point *points, size_t n, int jobs,
                     struct option_totals *totals, struct panelization *keep,
@@ -256,8 +260,8 @@ static int evaluate(const struct surface *surface,
 
     if (keep != NULL && n > 0)
         memset(keep, 0, n * sizeof *keep);
-    struct evaluation_plan plan = {surface, base, points, order, group,
-                                   ngroups, 0, totals, keep};
+    struct evaluation_plan plan = {surface, lattice, base, points, order,
+                                   group, ngroups, 0, totals, keep};
     atomic_init(&plan.next, 0);
     struct evaluation_job job[MAX_JOBS];
     pthread_t thread[MAX_JOBS];
@@ -288,11 +292,13 @@ static int evaluate(const struct surface *surface,
 }
 
 int optimize_evaluate(const struct surface *surface,
+                      const struct panel_lattice *lattice,
                       const struct option_params *base,
                       const struct design_point *points, size_t n, int jobs,
                       struct option_totals *totals, struct facet_error *err)
 {
-    return evaluate(surface, base, points, n, jobs, totals, NULL, err);
+    return evaluate(surface, lattice, base, points, n, jobs, totals, NULL,
+                    err);
 }
 
 int optimize_evaluate_panels(const struct surface *surface,
@@ -302,7 +308,8 @@ int optimize_evaluate_panels(const struct surface *surface,
                              struct option_totals *totals,
                              struct facet_error *err)
 {
-    return evaluate(surface, base, points, n, jobs, totals, panels, err);
+    return evaluate(surface, NULL, base, points, n, jobs, totals, panels,
+                    err);
 }
 
 /* --- the point cache and batches --- */
@@ -459,8 +466,8 @@ int search_batch(struct search *s, const struct design_point *points,
         }
         for (size_t k = 0; k < fresh; k++)
             todo[k] = s->known[first_new + k].point;
-        rc = optimize_evaluate(s->surface, &s->settings->base, todo, fresh,
-                               s->settings->jobs, totals, err);
+        rc = optimize_evaluate(s->surface, s->lattice, &s->settings->base,
+                               todo, fresh, s->settings->jobs, totals, err);
         for (size_t k = 0; rc == FACET_OK && k < fresh; k++)
             s->known[first_new + k].totals = totals[k];
         free(todo);
@@ -621,9 +628,24 @@ int optimize_run(const struct surface *surface,
                 ((int64_t)settings->generations + 1);
         break;
     }
+    /* The grids still to evaluate, at most: the lattice pays for itself
+     * only over many. */
+    double grids = (double)(settings->space.u_max - settings->space.u_min +
+                            1) *
+                   (double)(settings->space.v_max - settings->space.v_min +
+                            1);
+    double fresh = (double)total - (double)nstored;
+    if (settings->method == METHOD_EXHAUSTIVE)
+        fresh /= (double)threshold_steps(&settings->space);
+    struct panel_lattice *lattice = NULL;
+    rc = optimize_lattice(surface, settings, fresh < grids ? fresh : grids,
+                          &lattice, err);
+    if (rc != FACET_OK)
+        return rc;
     struct search s;
     rc = search_init(&s, surface, settings, stored, nstored, hooks, total,
                      err);
+    s.lattice = lattice;
     if (rc == FACET_OK) {
         if (settings->method == METHOD_EXHAUSTIVE)
             rc = run_exhaustive(&s, outcome, err);
@@ -633,5 +655,21 @@ int optimize_run(const struct surface *surface,
             rc = run_nsga2(&s, outcome, err);
     }
     search_free(&s);
+    panel_lattice_free(lattice);
     return rc;
+}
+
+/* A lattice costs about as much to build as 15 grids on their own. */
+#define LATTICE_MIN_GRIDS 30
+
+int optimize_lattice(const struct surface *surface,
+                     const struct optimize_settings *settings, double grids,
+                     struct panel_lattice **out, struct facet_error *err)
+{
+    *out = NULL;
+    if (settings->base.mode != PANEL_EXTREMES || grids < LATTICE_MIN_GRIDS)
+        return FACET_OK;
+    const struct design_space *space = &settings->space;
+    return panel_lattice_build(&surface->panels, space->u_min, space->u_max,
+                               space->v_min, space->v_max, out, err);
 }

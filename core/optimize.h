@@ -113,11 +113,21 @@ int optimize_run(const struct surface *surface,
                  const struct optimize_hooks *hooks,
                  enum optimize_outcome *outcome, struct facet_error *err);
 
-/* Evaluates points[0..n) on up to jobs threads into totals[0..n). */
+/* Evaluates points[0..n) on up to jobs threads into totals[0..n), the
+ * panels of the grids lattice holds from it (NULL: none; see
+ * option_evaluate_lattice). */
 int optimize_evaluate(const struct surface *surface,
+                      const struct panel_lattice *lattice,
                       const struct option_params *base,
                       const struct design_point *points, size_t n, int jobs,
                       struct option_totals *totals, struct facet_error *err);
+
+/* The lattice worth building for a run over space that is yet to evaluate
+ * about `grids` grids: built by panel_lattice_build when the space's grids
+ * share enough lines to pay for it, else NULL (with FACET_OK). */
+int optimize_lattice(const struct surface *surface,
+                     const struct optimize_settings *settings, double grids,
+                     struct panel_lattice **out, struct facet_error *err);
 
 /* Like optimize_evaluate, keeping every point's panels: panels[0..n)
  * (caller-owned, each released with panelization_free; all released

@@ -12,6 +12,7 @@ struct search {
     const struct surface *surface;
     const struct optimize_settings *settings;
     const struct optimize_hooks *hooks;
+    const struct panel_lattice *lattice;  /* or NULL: see optimize_lattice */
     struct evaluated_option *known;  /* stored at start, then new ones */
     unsigned char *met;              /* known[k] met in this pass */
     size_t nknown, known_capacity;

@@ -12,6 +12,7 @@
 
 #include "classify.h"
 #include "panel.h"
+#include "panel_lattice.h"
 #include "surface.h"
 
 struct option_params {
@@ -28,5 +29,15 @@ int option_evaluate(const struct surface *surface,
                     const struct option_params *params,
                     struct panelization *panels,
                     struct option_totals *totals, struct facet_error *err);
+
+/* option_evaluate with the panels taken from lattice (NULL: none) when it
+ * holds the grid and params ask for PANEL_EXTREMES: the same panels, to
+ * rounding, in a fraction of the time. */
+int option_evaluate_lattice(const struct surface *surface,
+                            const struct panel_lattice *lattice,
+                            const struct option_params *params,
+                            struct panelization *panels,
+                            struct option_totals *totals,
+                            struct facet_error *err);
 
 #endif

@@ -62,8 +62,6 @@ struct lattice_extra {
     uint32_t point, column, row;
 };
 
-#define OFF_LINE UINT32_MAX
-
 struct panel_lattice {
     const struct panel_prep *prep;
     int side_lo[2], side_hi[2];     /* the grids: nu, nv ranges */
@@ -75,9 +73,11 @@ struct panel_lattice {
     struct lattice_sums *prefix;    /* (nrows + 1) x (ncolumns + 1): the
                                        fine cells of lower row and column */
     uint32_t *pieces;               /* the same, pieces with area */
-    uint32_t *place;                /* npoints x 2: fine column and row, or
-                                       OFF_LINE for a point on a line */
-    struct lattice_extra *extra;    /* the points on lines */
+    uint32_t *place;                /* npoints x 2: a fine column and row
+                                       the point is in */
+    uint32_t *on_line;              /* npoints x 2: 1 + the fine line in u,
+                                       v it lies on, or 0 */
+    struct lattice_extra *extra;    /* the points on lines, by point */
     size_t nextra;
     size_t *cut_start[2];           /* nline + 1: cuts of each line */
     struct lattice_cut *cut[2];
@@ -170,6 +170,16 @@ static void sample_at(const struct panel_prep *prep, const uint32_t *point,
 
 /* --- building --- */
 
+static int compare_extra(const void *a, const void *b)
+{
+    const struct lattice_extra *x = a, *y = b;
+    if (x->point != y->point)
+        return x->point < y->point ? -1 : 1;
+    if (x->column != y->column)
+        return x->column < y->column ? -1 : 1;
+    return x->row < y->row ? -1 : x->row > y->row;
+}
+
 struct builder {
     struct panel_lattice *lattice;
     size_t extra_capacity;
@@ -191,7 +201,8 @@ static int note_piece_vertices(struct builder *b, uint32_t t, size_t column,
                                                                       : -1;
         if (corner >= 0) {
             uint32_t p = point[corner];
-            if (L->place[2 * (size_t)p] != OFF_LINE)
+            if (L->on_line[2 * (size_t)p] == 0 &&
+                L->on_line[2 * (size_t)p + 1] == 0)
                 continue;
             struct lattice_extra e = {p, (uint32_t)column, (uint32_t)row};
             if (L->nextra > 0) {
@@ -553,6 +564,7 @@ void panel_lattice_free(struct panel_lattice *lattice)
     free(lattice->prefix);
     free(lattice->pieces);
     free(lattice->place);
+    free(lattice->on_line);
     free(lattice->extra);
     free(lattice->corner);
     free(lattice);
@@ -618,9 +630,12 @@ int panel_lattice_build(const struct panel_prep *prep, int u_lo, int u_hi,
     L->pieces = malloc(nprefix * sizeof *L->pieces);
     L->place = malloc((prep->npoints ? prep->npoints : 1) * 2 *
                       sizeof *L->place);
+    L->on_line = malloc((prep->npoints ? prep->npoints : 1) * 2 *
+                        sizeof *L->on_line);
     L->corner = malloc((ncorners ? ncorners : 1) * sizeof *L->corner);
     if (fine_pieces == NULL || L->fine == NULL || L->prefix == NULL ||
-        L->pieces == NULL || L->place == NULL || L->corner == NULL)
+        L->pieces == NULL || L->place == NULL || L->on_line == NULL ||
+        L->corner == NULL)
         return out_of_memory(L, fine_pieces, err);
     for (size_t q = 0; q < ncorners; q++)
         L->corner[q].state = -1;
@@ -644,14 +659,26 @@ int panel_lattice_build(const struct panel_prep *prep, int u_lo, int u_hi,
                              &on_u);
         size_t r = line_rank(L->line[1], L->nline[1],
                              prep->point_uv[2 * p + 1], &on_v);
-        L->place[2 * p] = on_u || on_v ? OFF_LINE : (uint32_t)c;
+        L->place[2 * p] = (uint32_t)c;
         L->place[2 * p + 1] = (uint32_t)r;
+        L->on_line[2 * p] = on_u ? (uint32_t)c + 1 : 0;
+        L->on_line[2 * p + 1] = on_v ? (uint32_t)r + 1 : 0;
     }
 
     struct builder b = {L, 0, fine_pieces};
     for (size_t t = 0; t < prep->mesh->ntriangles; t++)
         if (divide_triangle(&b, (uint32_t)t) != FACET_OK)
             return out_of_memory(L, fine_pieces, err);
+
+    /* A point on a line is a piece vertex of each of its triangles on
+     * each side: once per fine cell is enough. */
+    qsort(L->extra, L->nextra, sizeof *L->extra, compare_extra);
+    size_t distinct = 0;
+    for (size_t e = 0; e < L->nextra; e++)
+        if (distinct == 0 ||
+            compare_extra(&L->extra[e], &L->extra[distinct - 1]) != 0)
+            L->extra[distinct++] = L->extra[e];
+    L->nextra = distinct;
 
     struct edge_set edges;
     if (edge_set_build(prep, &edges) != FACET_OK)
@@ -683,6 +710,7 @@ int panel_lattice_has(const struct panel_lattice *lattice, int nu, int nv)
 struct grid_axis {
     size_t *line_of, *first;
     uint32_t *cell_of;
+    unsigned char *is_line;  /* per fine line: one of the grid's */
 };
 
 static int grid_axis_make(const struct panel_lattice *L, int axis, int n,
@@ -692,7 +720,9 @@ static int grid_axis_make(const struct panel_lattice *L, int axis, int n,
     g->line_of = malloc((size_t)(n + 1) * sizeof *g->line_of);
     g->first = malloc((size_t)(n + 1) * sizeof *g->first);
     g->cell_of = malloc(nfine * sizeof *g->cell_of);
-    if (g->line_of == NULL || g->first == NULL || g->cell_of == NULL)
+    g->is_line = calloc(nfine, 1);
+    if (g->line_of == NULL || g->first == NULL || g->cell_of == NULL ||
+        g->is_line == NULL)
         return FACET_EWORK;
     g->first[0] = 0;
     g->line_of[0] = 0;
@@ -704,6 +734,7 @@ static int grid_axis_make(const struct panel_lattice *L, int axis, int n,
             return FACET_EINPUT;
         g->line_of[i] = k;
         g->first[i] = k + 1;
+        g->is_line[k] = 1;
     }
     g->first[n] = nfine;
     for (int i = 0; i < n; i++)
@@ -717,6 +748,7 @@ static void grid_axis_free(struct grid_axis *g)
     free(g->line_of);
     free(g->first);
     free(g->cell_of);
+    free(g->is_line);
 }
 
 /* Cell sums from the fine cells of columns a0..a1-1, rows b0..b1-1. */
@@ -765,6 +797,15 @@ static void sum_from_prefix(const struct panel_lattice *L,
     }
     to->area = (double)area;
     to->uv_area = (double)block->uv_area;
+}
+
+/* Whether point p lies on one of the grid's lines. */
+static inline int on_grid_line(const struct panel_lattice *L,
+                               const struct grid_axis axis[2], uint32_t p)
+{
+    uint32_t u = L->on_line[2 * (size_t)p], v = L->on_line[2 * (size_t)p + 1];
+    return (u != 0 && axis[0].is_line[u - 1]) ||
+           (v != 0 && axis[1].is_line[v - 1]);
 }
 
 static inline void sample_cell(const struct panelization *out,
@@ -847,17 +888,19 @@ int panels_build_lattice(const struct panel_lattice *L, int nu, int nv,
     /* Pass 2: the mesh points... */
     const uint32_t *column_cell = axis[0].cell_of, *row_cell = axis[1].cell_of;
     for (size_t p = 0; p < prep->npoints; p++) {
-        uint32_t c = L->place[2 * p];
-        if (c == OFF_LINE)
+        if (on_grid_line(L, axis, (uint32_t)p))
             continue;
         size_t cell = (size_t)row_cell[L->place[2 * p + 1]] * nu +
-                      column_cell[c];
+                      column_cell[L->place[2 * p]];
         const struct panel_prep_point *P = &prep->point[p];
         sample_cell(out, samples, outlines, cell, P->position, P->k1, P->k2,
                     1);
     }
+    /* (a point on one of the grid's lines in each cell it borders)... */
     for (size_t e = 0; e < L->nextra; e++) {
         const struct lattice_extra *x = &L->extra[e];
+        if (!on_grid_line(L, axis, x->point))
+            continue;
         size_t cell = (size_t)row_cell[x->row] * nu + column_cell[x->column];
         const struct panel_prep_point *P = &prep->point[x->point];
         sample_cell(out, samples, outlines, cell, P->position, P->k1, P->k2,

@@ -8,11 +8,14 @@
  * committed to a fresh store file through the same study that `facet
  * optimize` runs. Reports:
  *   - the whole run (surface prepared before the clock starts), options/s;
- *   - the split: the 336 evaluations alone on every core, and storage
- *     alone (the same rows put again into a fresh file), rows/s;
+ *   - the split: the lattice of the space's lines (built once per run),
+ *     the 336 evaluations alone on every core, and storage alone (the
+ *     same rows put again into a fresh file), rows/s;
  *   - evaluation on one thread, the baseline for the parallel speed-up;
  *   - per option, the evaluation as a ratio to a bare pass over the
  *     triangles (the machine-independent figure);
+ *   - the same evaluations with each grid on its own (no lattice), the
+ *     baseline the lattice is measured against;
  *   - bulk storage: ROWS options (default 1,000,000) in batches of 1,000.
  */
 #include <string.h>
@@ -102,16 +105,39 @@ int main(int argc, char **argv)
     for (size_t k = 0; k < n; k++)
         points[k] = (struct design_point){rows[k].nu, rows[k].nv,
                                           rows[k].threshold_mm};
+    /* The lattice every grid of the space is taken from, as the run
+     * builds it, then the grids from it, and each grid on its own (the
+     * way without a lattice) for comparison. */
     start = bench_now();
-    if (optimize_evaluate(&surface, &s->base, points, n, jobs, totals,
-                          &err) != FACET_OK)
+    struct panel_lattice *lattice;
+    if (optimize_lattice(&surface, s, (double)n, &lattice, &err) != FACET_OK)
+        die(&err);
+    if (lattice == NULL) {
+        fprintf(stderr, "bench_optimize: no lattice for the paper's space\n");
+        return 1;
+    }
+    double lattice_time = bench_now() - start;
+    start = bench_now();
+    if (optimize_evaluate(&surface, lattice, &s->base, points, n, jobs,
+                          totals, &err) != FACET_OK)
         die(&err);
     double evaluate_all = bench_now() - start;
     start = bench_now();
-    if (optimize_evaluate(&surface, &s->base, points, n, 1, totals,
+    if (optimize_evaluate(&surface, lattice, &s->base, points, n, 1, totals,
                           &err) != FACET_OK)
         die(&err);
     double evaluate_one = bench_now() - start;
+    panel_lattice_free(lattice);
+    start = bench_now();
+    if (optimize_evaluate(&surface, NULL, &s->base, points, n, jobs, totals,
+                          &err) != FACET_OK)
+        die(&err);
+    double alone_all = bench_now() - start;
+    start = bench_now();
+    if (optimize_evaluate(&surface, NULL, &s->base, points, n, 1, totals,
+                          &err) != FACET_OK)
+        die(&err);
+    double alone_one = bench_now() - start;
 
     /* Storage alone: the same rows into a fresh file, one batch per 16
      * options as the run commits them. */
@@ -148,6 +174,8 @@ int main(int argc, char **argv)
            "1 s: %s); surface preparation, once per surface: %.3f s\n",
            whole, (double)n / whole, whole < 1 ? "met" : "NOT met",
            prepare);
+    printf("  lattice of the space's lines, once per run: %.3f s\n",
+           lattice_time);
     printf("  evaluation alone: %.3f s on %d threads (%.0f options/s), "
            "%.3f s on 1 thread: %.2fx speed-up\n", evaluate_all, jobs,
            (double)n / evaluate_all, evaluate_one,
@@ -158,6 +186,11 @@ int main(int argc, char **argv)
     printf("  per option: %.2f ms = %.1fx a bare pass over the triangles "
            "(%.3f ms)\n", 1e3 * evaluate_one / (double)n,
            evaluate_one / (double)n / bare, 1e3 * bare);
+    printf("  each grid on its own (no lattice): %.3f s on %d threads, "
+           "%.2f ms per option on 1 = %.1fx a bare pass; the lattice, its "
+           "build included, is %.2fx faster on %d threads\n", alone_all,
+           jobs, 1e3 * alone_one / (double)n, alone_one / (double)n / bare,
+           alone_all / (lattice_time + evaluate_all), jobs);
     printf("bulk storage: %ld rows in batches of 1,000: %.2f s = %.0f "
            "rows/s\n", bulk, bulk_time, (double)bulk / bulk_time);
     free(batch);

@@ -550,8 +550,8 @@ static void test_batch_shares_grids(void **state)
         struct option_totals batch[sizeof points / sizeof points[0]];
         memset(batch, 0xff, sizeof batch);
         struct facet_error err;
-        assert_int_equal(optimize_evaluate(&s, &base, points, n, jobs, batch,
-                                           &err), FACET_OK);
+        assert_int_equal(optimize_evaluate(&s, NULL, &base, points, n, jobs,
+                                           batch, &err), FACET_OK);
         for (size_t k = 0; k < n; k++)
             assert_memory_equal(&batch[k], &alone[k], sizeof alone[k]);
     }
