@@ -50,7 +50,6 @@
 
 #include <errno.h>
 #include <fcntl.h>
-#include <pthread.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -60,6 +59,7 @@
 #include "obj_part.h"
 #include "obj_table.h"
 #include "obj_tuning.h"
+#include "parallel.h"
 
 #define BINARY_SAMPLE 4096               /* bytes that tell text from data */
 #define DEFAULT_PART_BYTES ((size_t)1 << 20)
@@ -199,39 +199,10 @@ struct job {
     struct obj_part_error error;
 };
 
-/* What a thread runs: one job with one function. */
-struct call {
-    void (*run)(struct job *);
-    struct job *job;
-};
-
-static void *job_thread(void *arg)
+/* Runs jobs[0..n) with run (parallel.h). */
+static void run_jobs(struct job *jobs, unsigned n, void (*run)(void *job))
 {
-    struct call *call = arg;
-    call->run(call->job);
-    return NULL;
-}
-
-/* Runs jobs[0..n) with run, job 0 on the calling thread and the others on
- * threads of their own (or, if a thread cannot start, here afterwards). */
-static void run_jobs(struct job *jobs, unsigned n, void (*run)(struct job *))
-{
-    pthread_t thread[MAX_THREADS];
-    int started[MAX_THREADS] = {0};
-    struct call call[MAX_THREADS];
-    for (unsigned t = 1; t < n; t++) {
-        call[t].run = run;
-        call[t].job = &jobs[t];
-        started[t] = pthread_create(&thread[t], NULL, job_thread,
-                                    &call[t]) == 0;
-    }
-    run(&jobs[0]);
-    for (unsigned t = 1; t < n; t++) {
-        if (started[t])
-            pthread_join(thread[t], NULL);
-        else
-            run(&jobs[t]);
-    }
+    parallel_run(jobs, sizeof *jobs, (int)n, run);
 }
 
 /* Slice t of n of the range [0, count). */
@@ -242,8 +213,9 @@ static size_t slice_start(size_t count, size_t t, size_t n)
 
 /* ---- phase 1: parsing a window ---------------------------------------- */
 
-static void parse_job(struct job *job)
+static void parse_job(void *argument)
 {
+    struct job *job = argument;
     size_t from = slice_start(job->window_parts, job->index, job->njobs);
     size_t to = slice_start(job->window_parts, job->index + 1, job->njobs);
     for (size_t p = from; p < to; p++) {
@@ -457,8 +429,9 @@ static size_t column_size(const struct obj_part *part, size_t which)
 /* Copies slice job->index of every part's elements into obj (those of the
  * part that handed its array over are there already); vertices of parts
  * without colour get white when the file has colours. */
-static void copy_job(struct job *job)
+static void copy_job(void *argument)
 {
+    struct job *job = argument;
     struct obj_file *obj = job->obj;
     double *merged[4] = {obj->position, obj->color, obj->texcoord,
                          obj->normal};
@@ -484,8 +457,9 @@ static void copy_job(struct job *job)
 }
 
 /* Writes the triangles of faces slice job->index of the whole file. */
-static void emit_job(struct job *job)
+static void emit_job(void *argument)
 {
+    struct job *job = argument;
     struct loader *ld = job->ld;
     size_t a = slice_start(job->obj->nfaces, job->index, job->njobs);
     size_t b = slice_start(job->obj->nfaces, job->index + 1, job->njobs);
@@ -703,8 +677,9 @@ static int fill_buffer(int fd, char *buffer, size_t capacity, size_t *filled,
 
 /* Phase 0 for a whole file: reads slice job->index of its job->size bytes
  * with pread, counting them in job->got (fewer if the file shrank). */
-static void read_job(struct job *job)
+static void read_job(void *argument)
 {
+    struct job *job = argument;
     size_t a = slice_start(job->size, job->index, job->njobs);
     size_t b = slice_start(job->size, job->index + 1, job->njobs);
     while (a < b) {

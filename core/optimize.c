@@ -671,5 +671,6 @@ int optimize_lattice(const struct surface *surface,
         return FACET_OK;
     const struct design_space *space = &settings->space;
     return panel_lattice_build(&surface->panels, space->u_min, space->u_max,
-                               space->v_min, space->v_max, out, err);
+                               space->v_min, space->v_max, settings->jobs,
+                               out, err);
 }

@@ -30,6 +30,7 @@
 #include <string.h>
 
 #include "panel_sums.h"
+#include "parallel.h"
 
 /* Raw moments about the lattice's origin, summed over fine cells. */
 struct lattice_sums {
@@ -180,20 +181,51 @@ static int compare_extra(const void *a, const void *b)
     return x->row < y->row ? -1 : x->row > y->row;
 }
 
-struct builder {
+/* One thread's share of dividing the triangles: the fine rows
+ * row_lo..row_hi-1, from every triangle that reaches them. Rows are the
+ * unit so that no two threads write one fine cell or one line crossing. */
+struct divide_job {
     struct panel_lattice *lattice;
-    size_t extra_capacity;
-    uint32_t *fine_pieces;  /* nrows x ncolumns: pieces with area */
+    uint32_t *fine_pieces;          /* nrows x ncolumns: pieces with area */
+    size_t row_lo, row_hi;
+    struct lattice_extra *extra;    /* this job's points on lines */
+    size_t nextra, capacity;
+    int rc;
 };
+
+static int note_extra(struct divide_job *job, uint32_t point, size_t column,
+                      size_t row)
+{
+    struct lattice_extra e = {point, (uint32_t)column, (uint32_t)row};
+    if (job->nextra > 0) {
+        const struct lattice_extra *last = &job->extra[job->nextra - 1];
+        if (last->point == point && last->column == e.column &&
+            last->row == e.row)
+            return FACET_OK;
+    }
+    if (job->nextra == job->capacity) {
+        size_t grown = job->capacity ? 2 * job->capacity : 1024;
+        struct lattice_extra *more = realloc(job->extra,
+                                             grown * sizeof *more);
+        if (more == NULL)
+            return FACET_EWORK;
+        job->extra = more;
+        job->capacity = grown;
+    }
+    job->extra[job->nextra++] = e;
+    return FACET_OK;
+}
 
 /* Files what pass 2 needs from piece vertices in fine cell (column, row)
  * of triangle t: its mesh points that lie on a line, and the line
- * crossings inside it. */
-static int note_piece_vertices(struct builder *b, uint32_t t, size_t column,
-                               size_t row, const struct split_vertex *piece,
-                               int count)
+ * crossings inside it. A crossing is taken from the row below it only: a
+ * crossing inside a triangle is a vertex of its piece there, and one on a
+ * mesh edge is also a cut of that edge, filed with the cuts. */
+static int note_piece_vertices(struct divide_job *job, uint32_t t,
+                               size_t column, size_t row,
+                               const struct split_vertex *piece, int count)
 {
-    struct panel_lattice *L = b->lattice;
+    struct panel_lattice *L = job->lattice;
     const uint32_t *point = L->prep->corner + 3 * (size_t)t;
     for (int k = 0; k < count; k++) {
         const struct split_vertex *x = &piece[k];
@@ -201,44 +233,22 @@ static int note_piece_vertices(struct builder *b, uint32_t t, size_t column,
                                                                       : -1;
         if (corner >= 0) {
             uint32_t p = point[corner];
-            if (L->on_line[2 * (size_t)p] == 0 &&
-                L->on_line[2 * (size_t)p + 1] == 0)
-                continue;
-            struct lattice_extra e = {p, (uint32_t)column, (uint32_t)row};
-            if (L->nextra > 0) {
-                const struct lattice_extra *last = &L->extra[L->nextra - 1];
-                if (last->point == p && last->column == e.column &&
-                    last->row == e.row)
-                    continue;
-            }
-            if (L->nextra == b->extra_capacity) {
-                size_t grown = b->extra_capacity ? 2 * b->extra_capacity
-                                                 : 1024;
-                struct lattice_extra *more =
-                    realloc(L->extra, grown * sizeof *more);
-                if (more == NULL)
-                    return FACET_EWORK;
-                L->extra = more;
-                b->extra_capacity = grown;
-            }
-            L->extra[L->nextra++] = e;
+            if ((L->on_line[2 * (size_t)p] != 0 ||
+                 L->on_line[2 * (size_t)p + 1] != 0) &&
+                note_extra(job, p, column, row) != FACET_OK)
+                return FACET_EWORK;
             continue;
         }
-        /* A crossing of the cell's lines inside the triangle. */
-        size_t a, c;
+        if (row >= L->nline[1] || x->v != L->line[1][row])
+            continue;
+        size_t a;
         if (column > 0 && x->u == L->line[0][column - 1])
             a = column - 1;
         else if (column < L->nline[0] && x->u == L->line[0][column])
             a = column;
         else
             continue;
-        if (row > 0 && x->v == L->line[1][row - 1])
-            c = row - 1;
-        else if (row < L->nline[1] && x->v == L->line[1][row])
-            c = row;
-        else
-            continue;
-        struct lattice_corner *q = &L->corner[c * L->nline[0] + a];
+        struct lattice_corner *q = &L->corner[row * L->nline[0] + a];
         if (q->state >= 0)
             continue;
         sample_at(L->prep, point, x->b, &q->at);
@@ -248,26 +258,27 @@ static int note_piece_vertices(struct builder *b, uint32_t t, size_t column,
 }
 
 /* Adds a piece of triangle t to fine cell (column, row). */
-static int add_piece(struct builder *b, uint32_t t, const double corner[3][3],
-                     size_t column, size_t row,
+static int add_piece(struct divide_job *job, uint32_t t,
+                     const double corner[3][3], size_t column, size_t row,
                      const struct split_vertex *piece, int count)
 {
-    struct panel_lattice *L = b->lattice;
+    struct panel_lattice *L = job->lattice;
     const struct panel_prep_triangle *T = &L->prep->triangle[t];
     size_t cell = row * L->ncolumns + column;
     struct piece_moments m;
     panel_piece_moments(T, corner, piece, count, &m);
     cell_moments_add(&L->fine[cell], T->centroid, &m);
     if (m.area > 0)
-        b->fine_pieces[cell]++;
-    return note_piece_vertices(b, t, column, row, piece, count);
+        job->fine_pieces[cell]++;
+    return note_piece_vertices(job, t, column, row, piece, count);
 }
 
 /* Clips triangle t along the fine lines, row by row and then cell by cell
- * (panel_fast.c's split_triangle over uneven lines), into the fine sums. */
-static int divide_triangle(struct builder *b, uint32_t t)
+ * (panel_fast.c's split_triangle over uneven lines), into the fine sums of
+ * the job's rows. */
+static int divide_triangle(struct divide_job *job, uint32_t t)
 {
-    struct panel_lattice *L = b->lattice;
+    struct panel_lattice *L = job->lattice;
     const struct panel_prep *prep = L->prep;
     const struct panel_prep_triangle *T = &prep->triangle[t];
     const uint32_t *point = prep->corner + 3 * (size_t)t;
@@ -283,11 +294,13 @@ static int divide_triangle(struct builder *b, uint32_t t)
     size_t c1 = line_rank_above(L->line[0], L->nline[0], hi[0]);
     size_t r0 = line_rank(L->line[1], L->nline[1], lo[1], &on);
     size_t r1 = line_rank_above(L->line[1], L->nline[1], hi[1]);
+    if (r1 < job->row_lo || r0 >= job->row_hi)
+        return FACET_OK;
     if (c0 == c1 && r0 == r1) {
         size_t cell = r0 * L->ncolumns + c0;
         cell_moments_add_triangle(&L->fine[cell], T);
         if (T->area > 0)
-            b->fine_pieces[cell]++;
+            job->fine_pieces[cell]++;
         return FACET_OK;
     }
     double corner[3][3];
@@ -320,6 +333,10 @@ static int divide_triangle(struct builder *b, uint32_t t)
             nrow = nrest;
             nrest = 0;
         }
+        if (r < job->row_lo)
+            continue;
+        if (r >= job->row_hi)
+            break;
         struct split_vertex *row_next = buffer[3];
         for (size_t c = c0; c <= c1 && nrow >= 3; c++) {
             struct split_vertex *piece;
@@ -339,53 +356,77 @@ static int divide_triangle(struct builder *b, uint32_t t)
             }
             if (npiece < 3)
                 continue;
-            if (add_piece(b, t, corner, c, r, piece, npiece) != FACET_OK)
+            if (add_piece(job, t, corner, c, r, piece, npiece) != FACET_OK)
                 return FACET_EWORK;
         }
     }
     return FACET_OK;
 }
 
-/* The directed edges of the triangles, to tell an edge two triangles share
- * (filed once) from a boundary edge. */
-struct edge_set {
-    uint64_t *key;
-    size_t mask;
-};
-
-static uint64_t edge_key(uint32_t from, uint32_t to)
+static void divide_run(void *argument)
 {
-    return (uint64_t)from << 32 | to;
+    /* Worked on in a copy: jobs lie side by side in one array, and
+     * writing to a neighbour's cache line on every triangle would cost
+     * more than the second thread gains. */
+    struct divide_job job = *(struct divide_job *)argument;
+    struct panel_lattice *L = job.lattice;
+    const struct panel_prep *prep = L->prep;
+    /* The job's rows are zeroed here, by writing: memory read before it
+     * is written maps the zero page, and replacing that with threads
+     * running costs every CPU a TLB flush on each page. */
+    size_t first = job.row_lo * L->ncolumns;
+    size_t cells = (job.row_hi - job.row_lo) * L->ncolumns;
+    memset(&L->fine[first], 0, cells * sizeof *L->fine);
+    memset(&job.fine_pieces[first], 0, cells * sizeof *job.fine_pieces);
+    for (size_t t = 0; t < prep->mesh->ntriangles && job.rc == FACET_OK;
+         t++)
+        job.rc = divide_triangle(&job, (uint32_t)t);
+    *(struct divide_job *)argument = job;
 }
 
-static size_t edge_slot(const struct edge_set *s, uint64_t key)
-{
-    uint64_t h = key * 0x9E3779B97F4A7C15ull;
-    size_t slot = (size_t)(h >> 20) & s->mask;
-    while (s->key[slot] != UINT64_MAX && s->key[slot] != key)
-        slot = (slot + 1) & s->mask;
-    return slot;
-}
-
-static int edge_set_build(const struct panel_prep *prep, struct edge_set *s)
+/* Which edges each triangle files cuts for, so that an edge two
+ * triangles share is filed once: bit k of owned[t] for the edge from
+ * corner k to corner k + 1, set unless the edge runs from the higher point
+ * to the lower and its twin (the other way round) is another triangle's.
+ * A hash set of the directed edges tells. Returns the malloc'ed mask or
+ * NULL when out of memory. */
+static unsigned char *owned_edges(const struct panel_prep *prep)
 {
     size_t nt = prep->mesh->ntriangles, size = 1024;
     while (size < 6 * nt)
         size *= 2;
-    s->key = malloc(size * sizeof *s->key);
-    if (s->key == NULL)
-        return FACET_EWORK;
-    s->mask = size - 1;
-    for (size_t k = 0; k < size; k++)
-        s->key[k] = UINT64_MAX;
-    for (size_t t = 0; t < nt; t++) {
-        const uint32_t *point = prep->corner + 3 * t;
-        for (int k = 0; k < 3; k++) {
-            uint64_t key = edge_key(point[k], point[k == 2 ? 0 : k + 1]);
-            s->key[edge_slot(s, key)] = key;
-        }
+    uint64_t *key = malloc(size * sizeof *key);
+    unsigned char *owned = malloc(nt ? nt : 1);
+    if (key == NULL || owned == NULL) {
+        free(key);
+        free(owned);
+        return NULL;
     }
-    return FACET_OK;
+    size_t mask = size - 1;
+    for (size_t k = 0; k < size; k++)
+        key[k] = UINT64_MAX;
+    for (int pass = 0; pass < 2; pass++)
+        for (size_t t = 0; t < nt; t++) {
+            const uint32_t *point = prep->corner + 3 * t;
+            if (pass == 1)
+                owned[t] = 0;
+            for (int k = 0; k < 3; k++) {
+                uint32_t from = point[k], to = point[k == 2 ? 0 : k + 1];
+                /* Inserted the way it runs; looked up the other way. */
+                uint64_t wanted = pass == 0 ? (uint64_t)from << 32 | to
+                                            : (uint64_t)to << 32 | from;
+                size_t slot = (size_t)((wanted * 0x9E3779B97F4A7C15ull) >>
+                                       20) & mask;
+                while (key[slot] != UINT64_MAX && key[slot] != wanted)
+                    slot = (slot + 1) & mask;
+                if (pass == 0)
+                    key[slot] = wanted;
+                else if (from < to || key[slot] != wanted)
+                    owned[t] |= (unsigned char)(1u << k);
+            }
+        }
+    free(key);
+    return owned;
 }
 
 /* For every cut of a fine line of axis by a mesh edge (a shared edge
@@ -393,7 +434,7 @@ static int edge_set_build(const struct panel_prep *prep, struct edge_set *s)
  * on a crossing of lines is filed for the cells on each side); else writes
  * it at cut[count[line]++]. */
 static void cut_edges(const struct panel_lattice *L,
-                      const struct edge_set *edges, int axis, size_t *count,
+                      const unsigned char *owned, int axis, size_t *count,
                       struct lattice_cut *cut)
 {
     const struct panel_prep *prep = L->prep;
@@ -402,11 +443,9 @@ static void cut_edges(const struct panel_lattice *L,
     for (size_t t = 0; t < prep->mesh->ntriangles; t++) {
         const uint32_t *point = prep->corner + 3 * t;
         for (int k = 0; k < 3; k++) {
-            uint32_t pa = point[k], pb = point[k == 2 ? 0 : k + 1];
-            if (pa > pb &&
-                edges->key[edge_slot(edges, edge_key(pb, pa))] ==
-                    edge_key(pb, pa))
+            if (!(owned[t] >> k & 1))
                 continue;
+            uint32_t pa = point[k], pb = point[k == 2 ? 0 : k + 1];
             double xa = prep->point_uv[2 * pa + axis];
             double xb = prep->point_uv[2 * pb + axis];
             if (xa == xb)
@@ -443,7 +482,7 @@ static void cut_edges(const struct panel_lattice *L,
 }
 
 /* Files the cuts of the lines of axis, line by line. */
-static int file_cuts(struct panel_lattice *L, const struct edge_set *edges,
+static int file_cuts(struct panel_lattice *L, const unsigned char *owned,
                      int axis)
 {
     size_t nline = L->nline[axis];
@@ -455,7 +494,7 @@ static int file_cuts(struct panel_lattice *L, const struct edge_set *edges,
         return FACET_EWORK;
     }
     L->cut_start[axis] = start;
-    cut_edges(L, edges, axis, room, NULL);
+    cut_edges(L, owned, axis, room, NULL);
     size_t total = 0;
     for (size_t n = 0; n < nline; n++) {
         start[n] = total;
@@ -469,7 +508,7 @@ static int file_cuts(struct panel_lattice *L, const struct edge_set *edges,
         return FACET_EWORK;
     }
     L->cut[axis] = cut;
-    cut_edges(L, edges, axis, room, cut);
+    cut_edges(L, owned, axis, room, cut);
     /* Close the room left for crossings that were not. */
     size_t kept = 0;
     for (size_t n = 0; n < nline; n++) {
@@ -484,6 +523,19 @@ static int file_cuts(struct panel_lattice *L, const struct edge_set *edges,
     if (shrunk != NULL)
         L->cut[axis] = shrunk;
     return FACET_OK;
+}
+
+struct cut_job {
+    struct panel_lattice *lattice;
+    const unsigned char *owned;
+    int axis;
+    int rc;
+};
+
+static void cut_run(void *argument)
+{
+    struct cut_job *job = argument;
+    job->rc = file_cuts(job->lattice, job->owned, job->axis);
 }
 
 /* A fine cell's moments about the lattice's origin. */
@@ -524,30 +576,59 @@ static void sums_add(struct lattice_sums *to, const struct lattice_sums *x,
         to->second[e] += sign * x->second[e];
 }
 
-/* The running sums: prefix[(r + 1) * W + c + 1] = the fine cells of rows
- * 0..r, columns 0..c, W = ncolumns + 1. */
-static void make_prefix(struct panel_lattice *L, const uint32_t *fine_pieces)
+/* The running sums: prefix[(r + 1) * W + c + 1] holds the fine cells of
+ * rows 0..r, columns 0..c (W = ncolumns + 1), made in two phases a job
+ * shares: along each of rows lo..hi-1, then down each of columns
+ * lo..hi-1 (1..W-1). */
+struct prefix_job {
+    struct panel_lattice *lattice;
+    const uint32_t *fine_pieces;
+    int phase;
+    size_t lo, hi;
+};
+
+static void prefix_run(void *argument)
+{
+    struct prefix_job *job = argument;
+    struct panel_lattice *L = job->lattice;
+    size_t W = L->ncolumns + 1;
+    if (job->phase == 0) {
+        for (size_t r = job->lo; r < job->hi; r++) {
+            struct lattice_sums *to = &L->prefix[(r + 1) * W];
+            uint32_t *pieces = &L->pieces[(r + 1) * W];
+            memset(to, 0, sizeof *to);
+            pieces[0] = 0;
+            for (size_t c = 0; c < L->ncolumns; c++) {
+                raw_moments(&L->fine[r * L->ncolumns + c], L->origin,
+                            &to[c + 1]);
+                sums_add(&to[c + 1], &to[c], 1);
+                pieces[c + 1] = pieces[c] +
+                                job->fine_pieces[r * L->ncolumns + c];
+            }
+        }
+        return;
+    }
+    for (size_t r = 2; r <= L->nrows; r++)
+        for (size_t c = job->lo; c < job->hi; c++) {
+            sums_add(&L->prefix[r * W + c], &L->prefix[(r - 1) * W + c], 1);
+            L->pieces[r * W + c] += L->pieces[(r - 1) * W + c];
+        }
+}
+
+static void make_prefix(struct panel_lattice *L, const uint32_t *fine_pieces,
+                        int jobs)
 {
     size_t W = L->ncolumns + 1;
     memset(L->prefix, 0, W * sizeof *L->prefix);
     memset(L->pieces, 0, W * sizeof *L->pieces);
-    for (size_t r = 0; r < L->nrows; r++) {
-        struct lattice_sums run;
-        memset(&run, 0, sizeof run);
-        uint32_t run_pieces = 0;
-        memset(&L->prefix[(r + 1) * W], 0, sizeof *L->prefix);
-        L->pieces[(r + 1) * W] = 0;
-        for (size_t c = 0; c < L->ncolumns; c++) {
-            struct lattice_sums cell;
-            raw_moments(&L->fine[r * L->ncolumns + c], L->origin, &cell);
-            sums_add(&run, &cell, 1);
-            run_pieces += fine_pieces[r * L->ncolumns + c];
-            struct lattice_sums *to = &L->prefix[(r + 1) * W + c + 1];
-            *to = L->prefix[r * W + c + 1];
-            sums_add(to, &run, 1);
-            L->pieces[(r + 1) * W + c + 1] =
-                L->pieces[r * W + c + 1] + run_pieces;
-        }
+    struct prefix_job job[PARALLEL_MAX];
+    for (int phase = 0; phase < 2; phase++) {
+        size_t count = phase == 0 ? L->nrows : W - 1;
+        for (int k = 0; k < jobs; k++)
+            job[k] = (struct prefix_job){L, fine_pieces, phase,
+                count * (size_t)k / (size_t)jobs + (phase == 1),
+                count * (size_t)(k + 1) / (size_t)jobs + (phase == 1)};
+        parallel_run(job, sizeof *job, jobs, prefix_run);
     }
 }
 
@@ -579,10 +660,14 @@ static int out_of_memory(struct panel_lattice *lattice, uint32_t *scratch,
 }
 
 int panel_lattice_build(const struct panel_prep *prep, int u_lo, int u_hi,
-                        int v_lo, int v_hi, struct panel_lattice **out,
-                        struct facet_error *err)
+                        int v_lo, int v_hi, int jobs,
+                        struct panel_lattice **out, struct facet_error *err)
 {
     *out = NULL;
+    if (jobs < 1)
+        jobs = 1;
+    if (jobs > PARALLEL_MAX)
+        jobs = PARALLEL_MAX;
     int lo[2] = {u_lo, v_lo}, hi[2] = {u_hi, v_hi};
     for (int a = 0; a < 2; a++)
         if (lo[a] < 1 || hi[a] < lo[a] || hi[a] > PANEL_MAX_GRID)
@@ -624,8 +709,9 @@ int panel_lattice_build(const struct panel_prep *prep, int u_lo, int u_hi,
     size_t nfine = L->ncolumns * L->nrows;
     size_t nprefix = (L->ncolumns + 1) * (L->nrows + 1);
     size_t ncorners = L->nline[0] * L->nline[1];
-    uint32_t *fine_pieces = calloc(nfine, sizeof *fine_pieces);
-    L->fine = calloc(nfine, sizeof *L->fine);
+    /* Zeroed by the jobs that fill them (divide_run). */
+    uint32_t *fine_pieces = malloc(nfine * sizeof *fine_pieces);
+    L->fine = malloc(nfine * sizeof *L->fine);
     L->prefix = malloc(nprefix * sizeof *L->prefix);
     L->pieces = malloc(nprefix * sizeof *L->pieces);
     L->place = malloc((prep->npoints ? prep->npoints : 1) * 2 *
@@ -665,11 +751,35 @@ int panel_lattice_build(const struct panel_prep *prep, int u_lo, int u_hi,
         L->on_line[2 * p + 1] = on_v ? (uint32_t)r + 1 : 0;
     }
 
-    struct builder b = {L, 0, fine_pieces};
-    for (size_t t = 0; t < prep->mesh->ntriangles; t++)
-        if (divide_triangle(&b, (uint32_t)t) != FACET_OK)
-            return out_of_memory(L, fine_pieces, err);
-
+    /* The triangles divided by bands of rows... */
+    struct divide_job divide[PARALLEL_MAX];
+    int bands = (size_t)jobs < L->nrows ? jobs : (int)L->nrows;
+    for (int k = 0; k < bands; k++)
+        divide[k] = (struct divide_job){L, fine_pieces,
+            L->nrows * (size_t)k / (size_t)bands,
+            L->nrows * (size_t)(k + 1) / (size_t)bands, NULL, 0, 0,
+            FACET_OK};
+    parallel_run(divide, sizeof *divide, bands, divide_run);
+    int rc = FACET_OK;
+    size_t nextra = 0;
+    for (int k = 0; k < bands; k++) {
+        if (divide[k].rc != FACET_OK)
+            rc = divide[k].rc;
+        nextra += divide[k].nextra;
+    }
+    L->extra = malloc((nextra ? nextra : 1) * sizeof *L->extra);
+    if (L->extra == NULL)
+        rc = FACET_EWORK;
+    for (int k = 0; k < bands; k++) {
+        if (rc == FACET_OK && divide[k].nextra > 0) {
+            memcpy(&L->extra[L->nextra], divide[k].extra,
+                   divide[k].nextra * sizeof *L->extra);
+            L->nextra += divide[k].nextra;
+        }
+        free(divide[k].extra);
+    }
+    if (rc != FACET_OK)
+        return out_of_memory(L, fine_pieces, err);
     /* A point on a line is a piece vertex of each of its triangles on
      * each side: once per fine cell is enough. */
     qsort(L->extra, L->nextra, sizeof *L->extra, compare_extra);
@@ -680,17 +790,21 @@ int panel_lattice_build(const struct panel_prep *prep, int u_lo, int u_hi,
             L->extra[distinct++] = L->extra[e];
     L->nextra = distinct;
 
-    struct edge_set edges;
-    if (edge_set_build(prep, &edges) != FACET_OK)
+    /* ...the cuts of each axis's lines, an axis a job... */
+    unsigned char *owned = owned_edges(prep);
+    if (owned == NULL)
         return out_of_memory(L, fine_pieces, err);
-    int rc = file_cuts(L, &edges, 0);
-    if (rc == FACET_OK)
-        rc = file_cuts(L, &edges, 1);
-    free(edges.key);
-    if (rc != FACET_OK)
+    struct cut_job cut[2] = {{L, owned, 0, FACET_OK},
+                             {L, owned, 1, FACET_OK}};
+    parallel_run(cut, sizeof *cut, jobs > 1 ? 2 : 1, cut_run);
+    if (jobs == 1)
+        cut_run(&cut[1]);
+    free(owned);
+    if (cut[0].rc != FACET_OK || cut[1].rc != FACET_OK)
         return out_of_memory(L, fine_pieces, err);
 
-    make_prefix(L, fine_pieces);
+    /* ...and the running sums. */
+    make_prefix(L, fine_pieces, jobs);
     free(fine_pieces);
     *out = L;
     return FACET_OK;

@@ -31,15 +31,15 @@
 struct panel_lattice;
 
 /* Builds the lattice of prep's surface for the grids nu in u_lo..u_hi by
- * nv in v_lo..v_hi into *out (caller-owned, released with
+ * nv in v_lo..v_hi, on up to jobs threads, into *out (caller-owned, released with
  * panel_lattice_free; it borrows prep, which must outlive it). *out is
  * NULL, with FACET_OK, when the lattice would exceed
  * PANEL_LATTICE_MAX_NODES line crossings. Returns FACET_OK, FACET_EINPUT
  * for sides outside 1..PANEL_MAX_GRID or a UV box without extent,
  * FACET_EWORK when out of memory. */
 int panel_lattice_build(const struct panel_prep *prep, int u_lo, int u_hi,
-                        int v_lo, int v_hi, struct panel_lattice **out,
-                        struct facet_error *err);
+                        int v_lo, int v_hi, int jobs,
+                        struct panel_lattice **out, struct facet_error *err);
 
 /* Whether grid nu x nv is one of the lattice's. */
 int panel_lattice_has(const struct panel_lattice *lattice, int nu, int nv);
