@@ -628,18 +628,18 @@ int optimize_run(const struct surface *surface,
                 ((int64_t)settings->generations + 1);
         break;
     }
-    /* The grids still to evaluate, at most: the lattice pays for itself
-     * only over many. */
+    /* The grids the run evaluates, at most: the lattice pays for itself
+     * only over many. Counted from the settings alone, never from what is
+     * stored, so that a resumed run takes its panels the same way as the
+     * run it resumes, and its options come out the same to the bit. */
     double grids = (double)(settings->space.u_max - settings->space.u_min +
                             1) *
                    (double)(settings->space.v_max - settings->space.v_min +
                             1);
-    double fresh = (double)total - (double)nstored;
-    if (settings->method == METHOD_EXHAUSTIVE)
-        fresh /= (double)threshold_steps(&settings->space);
+    if (settings->method != METHOD_EXHAUSTIVE && (double)total < grids)
+        grids = (double)total;
     struct panel_lattice *lattice = NULL;
-    rc = optimize_lattice(surface, settings, fresh < grids ? fresh : grids,
-                          &lattice, err);
+    rc = optimize_lattice(surface, settings, grids, &lattice, err);
     if (rc != FACET_OK)
         return rc;
     struct search s;

@@ -122,9 +122,11 @@ int optimize_evaluate(const struct surface *surface,
                       const struct design_point *points, size_t n, int jobs,
                       struct option_totals *totals, struct facet_error *err);
 
-/* The lattice worth building for a run over space that is yet to evaluate
- * about `grids` grids: built by panel_lattice_build when the space's grids
- * share enough lines to pay for it, else NULL (with FACET_OK). */
+/* The lattice a run with settings takes its panels from, when it
+ * evaluates `grids` grids or so and they share enough lines to pay for it
+ * (panel_lattice_build, on settings->jobs threads); else NULL, with
+ * FACET_OK. The choice depends on the settings alone: the same run, also
+ * resumed, takes its panels the same way. */
 int optimize_lattice(const struct surface *surface,
                      const struct optimize_settings *settings, double grids,
                      struct panel_lattice **out, struct facet_error *err);

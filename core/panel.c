@@ -319,11 +319,6 @@ static void mean_curvature_of(const struct cell_samples *s,
 }
 
 /* A grid node located on the surface, shared by the panels around it. */
-struct grid_node {
-    int state;         /* 0 not yet located, 1 on the surface, -1 off it */
-    double point[3];
-};
-
 /* Locates the cell corners on the surface (each grid node once, in nodes)
  * and measures the quad. */
 static void measure_corners(const struct panel_grid *g,
@@ -387,7 +382,8 @@ static int normal_side(const double n[3], const double normal_sum[3])
 }
 
 int panels_fit(const struct panel_grid *g, const struct cell_moments *sums,
-               struct panelization *out, struct cell_samples **samples_out,
+               struct grid_node *known, struct panelization *out,
+               struct cell_samples **samples_out,
                struct cell_outline **outlines_out, struct facet_error *err)
 {
     size_t ncells = (size_t)g->nu * (size_t)g->nv;
@@ -405,10 +401,12 @@ int panels_fit(const struct panel_grid *g, const struct cell_moments *sums,
     size_t nnodes = (size_t)(g->nu + 1) * (size_t)(g->nv + 1);
     out->panels = calloc(npanels, sizeof *out->panels);
     struct cell_samples *samples = malloc(npanels * sizeof *samples);
-    struct grid_node *nodes = calloc(nnodes, sizeof *nodes);
+    struct grid_node *nodes = known != NULL ? known
+                                            : calloc(nnodes, sizeof *nodes);
     if (out->panels == NULL || samples == NULL || nodes == NULL) {
         free(samples);
-        free(nodes);
+        if (known == NULL)
+            free(nodes);
         return facet_error_set(err, FACET_EWORK, "out of memory (panels)");
     }
 
@@ -453,7 +451,8 @@ int panels_fit(const struct panel_grid *g, const struct cell_moments *sums,
         if (panel->trimmed || panel->ncorners < 4)
             sample->outline = (int)noutlines++;
     }
-    free(nodes);
+    if (known == NULL)
+        free(nodes);
 
     struct cell_outline *outlines =
         malloc((noutlines ? noutlines : 1) * sizeof *outlines);
@@ -531,7 +530,7 @@ int panels_build(const struct mesh *mesh, const struct uv_index *index,
 
     struct cell_samples *samples;
     struct cell_outline *outlines;
-    rc = panels_fit(&grid, sums, out, &samples, &outlines, err);
+    rc = panels_fit(&grid, sums, NULL, out, &samples, &outlines, err);
     free(sums);
     if (rc != FACET_OK)
         return rc;

@@ -471,7 +471,7 @@ int panels_build_fast(const struct panel_prep *prep,
 
     struct cell_samples *samples;
     struct cell_outline *outlines;
-    rc = panels_fit(&grid, sums, out, &samples, &outlines, err);
+    rc = panels_fit(&grid, sums, NULL, out, &samples, &outlines, err);
     free(sums);
     if (rc != FACET_OK) {
         free(cell_of);

@@ -968,31 +968,67 @@ int panels_build_lattice(const struct panel_lattice *L, int nu, int nv,
         return facet_error_set(err, FACET_EWORK, "out of memory (panels)");
     }
 
-    /* Pass 1. */
-    size_t W = L->ncolumns + 1;
+    /* Pass 1: each grid node's running sums gathered once (a node is a
+     * corner of four cells), then each cell from its four corners. */
+    size_t W = L->ncolumns + 1, nnodes = (size_t)(nu + 1) * (size_t)(nv + 1);
+    struct lattice_sums *node = malloc(nnodes * sizeof *node);
+    uint32_t *node_pieces = malloc(nnodes * sizeof *node_pieces);
+    struct grid_node *known = calloc(nnodes, sizeof *known);
+    if (node == NULL || node_pieces == NULL || known == NULL) {
+        free(node);
+        free(node_pieces);
+        free(known);
+        free(sums);
+        grid_axis_free(&axis[0]);
+        grid_axis_free(&axis[1]);
+        return facet_error_set(err, FACET_EWORK, "out of memory (panels)");
+    }
+    for (int j = 0; j <= nv; j++)
+        for (int i = 0; i <= nu; i++) {
+            size_t at = axis[1].first[j] * W + axis[0].first[i];
+            node[(size_t)j * (nu + 1) + i] = L->prefix[at];
+            node_pieces[(size_t)j * (nu + 1) + i] = L->pieces[at];
+        }
     double cell_uv_area = grid.du * grid.dv;
     for (int j = 0; j < nv; j++)
         for (int i = 0; i < nu; i++) {
-            size_t a0 = axis[0].first[i], a1 = axis[0].first[i + 1];
-            size_t b0 = axis[1].first[j], b1 = axis[1].first[j + 1];
-            uint32_t pieces = L->pieces[b1 * W + a1] - L->pieces[b0 * W + a1] -
-                              L->pieces[b1 * W + a0] + L->pieces[b0 * W + a0];
+            size_t n00 = (size_t)j * (nu + 1) + i, n01 = n00 + 1;
+            size_t n10 = n00 + (size_t)nu + 1, n11 = n10 + 1;
+            uint32_t pieces = node_pieces[n11] - node_pieces[n10] -
+                              node_pieces[n01] + node_pieces[n00];
             if (pieces == 0)
                 continue;
-            struct lattice_sums block = L->prefix[b1 * W + a1];
-            sums_add(&block, &L->prefix[b0 * W + a1], -1);
-            sums_add(&block, &L->prefix[b1 * W + a0], -1);
-            sums_add(&block, &L->prefix[b0 * W + a0], 1);
+            struct lattice_sums block = node[n11];
+            sums_add(&block, &node[n10], -1);
+            sums_add(&block, &node[n01], -1);
+            sums_add(&block, &node[n00], 1);
             struct cell_moments *to = &sums[(size_t)j * nu + i];
             if (block.area > 0 && block.uv_area >= 0.5 * cell_uv_area)
                 sum_from_prefix(L, &block, to);
             else
-                sum_fine_cells(L, a0, a1, b0, b1, to);
+                sum_fine_cells(L, axis[0].first[i], axis[0].first[i + 1],
+                               axis[1].first[j], axis[1].first[j + 1], to);
+        }
+    free(node);
+    free(node_pieces);
+    /* The inner nodes the lattice found on the surface; panels_fit
+     * locates the others. */
+    for (int j = 1; j < nv; j++)
+        for (int i = 1; i < nu; i++) {
+            const struct lattice_corner *q =
+                &L->corner[axis[1].line_of[j] * L->nline[0] +
+                           axis[0].line_of[i]];
+            if (q->state < 0)
+                continue;
+            struct grid_node *k = &known[(size_t)j * (nu + 1) + i];
+            k->state = 1;
+            memcpy(k->point, q->at.position, sizeof k->point);
         }
     struct cell_samples *samples;
     struct cell_outline *outlines;
-    rc = panels_fit(&grid, sums, out, &samples, &outlines, err);
+    rc = panels_fit(&grid, sums, known, out, &samples, &outlines, err);
     free(sums);
+    free(known);
     if (rc != FACET_OK) {
         grid_axis_free(&axis[0]);
         grid_axis_free(&axis[1]);

@@ -278,14 +278,24 @@ void cell_samples_add_shape(struct cell_samples *s,
                             const struct curvature *curvature, uint32_t t,
                             double piece_area, const double centroid[3]);
 
+/* A grid node ((nu + 1) x (nv + 1) of them, at [nj * (nu + 1) + ni]) as
+ * panels_fit locates it on the surface. */
+struct grid_node {
+    int state;         /* 0 not yet located, 1 on the surface, -1 off it */
+    double point[3];   /* where it is on the surface (m), state 1 */
+};
+
 /* Makes the panels of the cells with area (out->panels, out->cell_panel,
  * their area, plane, P_dist and corners) from the pass 1 sums, and the pass
  * 2 state for each panel: *samples (npanels) and *outlines (one per
  * panel whose outline is needed), both malloc'ed for the caller to free.
- * Returns FACET_OK or FACET_EWORK. */
+ * known (or NULL) holds the grid nodes the caller knows already (state 1),
+ * the others zeroed; panels_fit locates those it needs in it. Returns
+ * FACET_OK or FACET_EWORK. */
 int panels_fit(const struct panel_grid *g, const struct cell_moments *sums,
-               struct panelization *out, struct cell_samples **samples,
-               struct cell_outline **outlines, struct facet_error *err);
+               struct grid_node *known, struct panelization *out,
+               struct cell_samples **samples, struct cell_outline **outlines,
+               struct facet_error *err);
 
 /* Sets each panel's deviation, k1, k2 and diameter from its samples. */
 void panels_finish(enum panel_curvature_mode mode,
