@@ -302,13 +302,14 @@ int optimize_evaluate(const struct surface *surface,
 }
 
 int optimize_evaluate_panels(const struct surface *surface,
+                             const struct panel_lattice *lattice,
                              const struct option_params *base,
                              const struct design_point *points, size_t n,
                              int jobs, struct panelization *panels,
                              struct option_totals *totals,
                              struct facet_error *err)
 {
-    return evaluate(surface, NULL, base, points, n, jobs, totals, panels,
+    return evaluate(surface, lattice, base, points, n, jobs, totals, panels,
                     err);
 }
 
@@ -606,6 +607,7 @@ static int run_random(struct search *s, enum optimize_outcome *outcome,
 }
 
 int optimize_run(const struct surface *surface,
+                 const struct panel_lattice *lattice,
                  const struct optimize_settings *settings,
                  const struct evaluated_option *stored, size_t nstored,
                  const struct optimize_hooks *hooks,
@@ -628,20 +630,6 @@ int optimize_run(const struct surface *surface,
                 ((int64_t)settings->generations + 1);
         break;
     }
-    /* The grids the run evaluates, at most: the lattice pays for itself
-     * only over many. Counted from the settings alone, never from what is
-     * stored, so that a resumed run takes its panels the same way as the
-     * run it resumes, and its options come out the same to the bit. */
-    double grids = (double)(settings->space.u_max - settings->space.u_min +
-                            1) *
-                   (double)(settings->space.v_max - settings->space.v_min +
-                            1);
-    if (settings->method != METHOD_EXHAUSTIVE && (double)total < grids)
-        grids = (double)total;
-    struct panel_lattice *lattice = NULL;
-    rc = optimize_lattice(surface, settings, grids, &lattice, err);
-    if (rc != FACET_OK)
-        return rc;
     struct search s;
     rc = search_init(&s, surface, settings, stored, nstored, hooks, total,
                      err);
@@ -655,7 +643,6 @@ int optimize_run(const struct surface *surface,
             rc = run_nsga2(&s, outcome, err);
     }
     search_free(&s);
-    panel_lattice_free(lattice);
     return rc;
 }
 
@@ -663,13 +650,26 @@ int optimize_run(const struct surface *surface,
 #define LATTICE_MIN_GRIDS 30
 
 int optimize_lattice(const struct surface *surface,
-                     const struct optimize_settings *settings, double grids,
+                     const struct optimize_settings *settings,
                      struct panel_lattice **out, struct facet_error *err)
 {
     *out = NULL;
+    const struct design_space *space = &settings->space;
+    int rc = design_space_check(space, err);
+    if (rc != FACET_OK)
+        return rc;
+    /* The grids the run evaluates, at most, from the settings alone. */
+    double grids = (double)(space->u_max - space->u_min + 1) *
+                   (double)(space->v_max - space->v_min + 1);
+    double evaluations =
+        settings->method == METHOD_RANDOM ? (double)settings->evaluations
+        : settings->method == METHOD_NSGA2
+            ? (double)settings->population * (settings->generations + 1)
+            : grids;
+    if (evaluations < grids)
+        grids = evaluations;
     if (settings->base.mode != PANEL_EXTREMES || grids < LATTICE_MIN_GRIDS)
         return FACET_OK;
-    const struct design_space *space = &settings->space;
     return panel_lattice_build(&surface->panels, space->u_min, space->u_max,
                                space->v_min, space->v_max, settings->jobs,
                                out, err);

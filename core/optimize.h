@@ -102,12 +102,14 @@ int design_space_parse_threshold(const char *text,
 int design_space_check(const struct design_space *space,
                        struct facet_error *err);
 
-/* Runs the search on the prepared surface. stored[0..nstored) are the
- * options of the run already committed (resume), else NULL/0. *outcome is
- * OPTIMIZE_DONE or OPTIMIZE_INTERRUPTED (the stop hook fired; everything
- * evaluated was stored). Returns FACET_OK, or the first error of an
- * evaluation or of the store hook. */
+/* Runs the search on the prepared surface, the panels of the grids
+ * lattice holds (or NULL; see optimize_lattice) taken from it. stored[0..
+ * nstored) are the options of the run already committed (resume), else
+ * NULL/0. *outcome is OPTIMIZE_DONE or OPTIMIZE_INTERRUPTED (the stop hook
+ * fired; everything evaluated was stored). Returns FACET_OK, or the first
+ * error of an evaluation or of the store hook. */
 int optimize_run(const struct surface *surface,
+                 const struct panel_lattice *lattice,
                  const struct optimize_settings *settings,
                  const struct evaluated_option *stored, size_t nstored,
                  const struct optimize_hooks *hooks,
@@ -122,23 +124,25 @@ int optimize_evaluate(const struct surface *surface,
                       const struct design_point *points, size_t n, int jobs,
                       struct option_totals *totals, struct facet_error *err);
 
-/* The lattice a run with settings takes its panels from, when it
- * evaluates `grids` grids or so and they share enough lines to pay for it
- * (panel_lattice_build, on settings->jobs threads); else NULL, with
- * FACET_OK. The choice depends on the settings alone: the same run, also
- * resumed, takes its panels the same way. */
-int optimize_lattice(const struct surface *surface,
-                     const struct optimize_settings *settings, double grids,
-                     struct panel_lattice **out, struct facet_error *err);
-
 /* Like optimize_evaluate, keeping every point's panels: panels[0..n)
  * (caller-owned, each released with panelization_free; all released
  * already when it fails). */
 int optimize_evaluate_panels(const struct surface *surface,
+                             const struct panel_lattice *lattice,
                              const struct option_params *base,
                              const struct design_point *points, size_t n,
                              int jobs, struct panelization *panels,
                              struct option_totals *totals,
                              struct facet_error *err);
+
+/* The lattice a run with settings takes its panels from
+ * (panel_lattice_build, on settings->jobs threads), when it evaluates
+ * enough grids that share enough lines to pay for one; else NULL, with
+ * FACET_OK. The choice depends on the settings alone, so that a resumed
+ * run takes its panels the same way as the run it resumes and its options
+ * come out the same to the bit. */
+int optimize_lattice(const struct surface *surface,
+                     const struct optimize_settings *settings,
+                     struct panel_lattice **out, struct facet_error *err);
 
 #endif

@@ -251,6 +251,7 @@ int study_option_panels(struct store *store, const struct run_info *run,
  * evaluating them on every core. */
 static int store_front_panels(struct store *store, const struct run_info *run,
                               const struct surface *surface,
+                              const struct panel_lattice *lattice,
                               const struct optimize_settings *settings,
                               struct facet_error *err)
 {
@@ -282,9 +283,9 @@ static int store_front_panels(struct store *store, const struct run_info *run,
         if (panels == NULL || totals == NULL)
             rc = facet_error_set(err, FACET_EWORK, "out of memory");
         else
-            rc = optimize_evaluate_panels(surface, &settings->base, points,
-                                          nfront, settings->jobs, panels,
-                                          totals, err);
+            rc = optimize_evaluate_panels(surface, lattice, &settings->base,
+                                          points, nfront, settings->jobs,
+                                          panels, totals, err);
         for (size_t k = 0; rc == FACET_OK && k < nfront; k++)
             rc = store_panels_put(store, run->id, numbers[k], &panels[k],
                                   err);
@@ -322,9 +323,16 @@ static int study_go(struct store *store, struct run_info *run,
             evaluated_of(&rows[k], &stored[k]);
     }
     free(rows);
+    /* The panels of the run and of its front from one lattice, so that
+     * the stored panels add up to their options' totals. */
+    struct panel_lattice *lattice = NULL;
+    if (rc == FACET_OK) {
+        stage(hooks, "dividing the surface along the space's grid lines");
+        rc = optimize_lattice(surface, settings, &lattice, err);
+    }
     stage(hooks, "evaluating options");
     if (rc == FACET_OK)
-        rc = optimize_run(surface, settings, stored, nstored,
+        rc = optimize_run(surface, lattice, settings, stored, nstored,
                           &optimize_hooks, outcome, err);
     free(stored);
     free(state.rows);
@@ -339,8 +347,10 @@ static int study_go(struct store *store, struct run_info *run,
         rc = store_analyze(store, err);
     if (rc == FACET_OK && *outcome == OPTIMIZE_DONE) {
         stage(hooks, "storing the Pareto options' panels");
-        rc = store_front_panels(store, run, surface, settings, err);
+        rc = store_front_panels(store, run, surface, lattice, settings,
+                                err);
     }
+    panel_lattice_free(lattice);
     const char *status = rc != FACET_OK ? "failed"
                          : *outcome == OPTIMIZE_DONE ? "done"
                                                      : "interrupted";

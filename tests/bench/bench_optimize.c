@@ -110,7 +110,7 @@ int main(int argc, char **argv)
      * way without a lattice) for comparison. */
     start = bench_now();
     struct panel_lattice *lattice;
-    if (optimize_lattice(&surface, s, (double)n, &lattice, &err) != FACET_OK)
+    if (optimize_lattice(&surface, s, &lattice, &err) != FACET_OK)
         die(&err);
     if (lattice == NULL) {
         fprintf(stderr, "bench_optimize: no lattice for the paper's space\n");

@@ -16,7 +16,8 @@ what is wrong on stderr and exits 1.
   show DB RUN OPTION SHOW.json CLASSIFY.json
                             `facet show --json` of one option has the keys
                             of classify --json, its totals are the options
-                            row and classify's, its panels classify's
+                            row and classify's, its panels classify's (to
+                            1e-9 of each panel's scale)
   show-surface SHOW.json CLASSIFY.json
                             and its surface is classify's
 """
@@ -309,15 +310,53 @@ def check_show(path, run, number, show_file, classify_file):
                 not close(v["area"], row[name + "_area"]):
             problem("class %s: %s, options row %s, %s" % (
                 name, v, row[name + "_count"], row[name + "_area"]))
+    # A run takes its panels from the lattice of its space's lines,
+    # classify from its one grid: the same panels, each measure to 1e-9 of
+    # its panel's scale (a flat panel deviates by 0 or by 1e-18 m), the
+    # same types and classes.
+    if len(show["panels"]) != len(classify["panels"]):
+        problem("%d panels, classify %d"
+                % (len(show["panels"]), len(classify["panels"])))
     for a, b in zip(show["panels"], classify["panels"]):
         for k in a:
-            same = close(a[k], b[k]) if isinstance(a[k], float) or \
-                isinstance(b[k], float) else a[k] == b[k]
+            if isinstance(a[k], float) or isinstance(b[k], float):
+                same = near(a[k], b[k], panel_scale(k, b))
+            else:
+                same = a[k] == b[k]
             if not same:
                 problem("panel (%s, %s) %s: %r, classify %r"
                         % (a["i"], a["j"], k, a[k], b[k]))
-    if show["totals"] != classify["totals"]:
-        problem("totals differ from classify --json of the same grid")
+    ts, tc = show["totals"], classify["totals"]
+    for k in tc:
+        if k == "classes":
+            same = all(ts[k][c]["count"] == v["count"] and
+                       near(ts[k][c]["area"], v["area"], tc["area"])
+                       for c, v in tc[k].items())
+        elif isinstance(tc[k], float) or isinstance(ts[k], float):
+            scale = {"planarity": 1e-3, "max_deviation": 1e-3,
+                     "p_dist": 1e-6}.get(k, 0)
+            same = near(ts[k], tc[k], scale)
+        else:
+            same = ts[k] == tc[k]
+        if not same:
+            problem("totals.%s %r, classify --json of the same grid %r"
+                    % (k, ts[k], tc[k]))
+
+
+def near(a, b, scale):
+    """Equal to 1e-9 of the larger of the two or of scale."""
+    return abs(a - b) <= 1e-9 * max(abs(a), abs(b), scale) + 1e-300
+
+
+def panel_scale(key, panel):
+    """What a panel's measure is judged against: its size for lengths, its
+    area for areas, its largest principal curvature for curvatures."""
+    size, area = panel["diameter"], panel["area"]
+    k = max(abs(panel["k1"]), abs(panel["k2"]))
+    return {"deviation": size, "diameter": size, "corner_planarity": size,
+            "area": area, "p_dist": area * size * size,
+            "cost": panel["cost"], "k1": k, "k2": k, "H": k, "K": k * k,
+            "eps": k}.get(key, 0)
 
 
 def check_show_surface(show_file, classify_file):

@@ -101,7 +101,8 @@ static void run(const struct optimize_settings *s, struct log *log,
 {
     struct optimize_hooks hooks = {log, keep, NULL, stop_now};
     struct facet_error err;
-    int rc = optimize_run(&roof, s, stored, nstored, &hooks, outcome, &err);
+    int rc = optimize_run(&roof, NULL, s, stored, nstored, &hooks, outcome,
+                          &err);
     if (rc != FACET_OK)
         fail_msg("%s", err.message);
 }
@@ -277,6 +278,56 @@ static void test_front(void **state)
     free(log.options);
 }
 
+/* A run over enough grids takes them from a lattice (optimize_lattice
+ * says so from the settings alone, for every method); its options are the
+ * run without one, to 1e-9, in the same order. */
+static void test_lattice_run(void **state)
+{
+    (void)state;
+    for (int m = 0; m < 3; m++) {
+        struct optimize_settings s;
+        settings_for((enum optimize_method)m, &s);
+        s.space = (struct design_space){4, 10, 5, 10, 1, 5, 2};
+        s.evaluations = 60;
+        struct panel_lattice *lattice;
+        struct facet_error err;
+        assert_int_equal(optimize_lattice(&roof, &s, &lattice, &err),
+                         FACET_OK);
+        assert_non_null(lattice);
+        struct log with = {0}, without = {0};
+        enum optimize_outcome outcome;
+        struct optimize_hooks hooks = {&with, keep, NULL, stop_now};
+        assert_int_equal(optimize_run(&roof, lattice, &s, NULL, 0, &hooks,
+                                      &outcome, &err), FACET_OK);
+        panel_lattice_free(lattice);
+        run(&s, &without, NULL, 0, &outcome);
+        assert_int_equal(with.n, without.n);
+        for (size_t k = 0; k < with.n; k++) {
+            const struct evaluated_option *a = &with.options[k];
+            const struct evaluated_option *b = &without.options[k];
+            assert_int_equal(a->number, b->number);
+            assert_int_equal(a->point.nu, b->point.nu);
+            assert_int_equal(a->point.nv, b->point.nv);
+            for (int t = 0; t < TYPE_COUNT; t++)
+                assert_int_equal(a->totals.count[t], b->totals.count[t]);
+            assert_true(fabs(a->totals.cost - b->totals.cost) <=
+                        1e-9 * b->totals.cost);
+            /* Flat panels deviate by nothing, to rounding. */
+            assert_true(fabs(a->totals.planarity - b->totals.planarity) <=
+                        1e-9 * b->totals.planarity + 1e-12);
+        }
+        free(with.options);
+        free(without.options);
+    }
+    /* Too few grids to pay for one: none. */
+    struct optimize_settings few;
+    settings_for(METHOD_EXHAUSTIVE, &few);
+    struct panel_lattice *none;
+    struct facet_error err;
+    assert_int_equal(optimize_lattice(&roof, &few, &none, &err), FACET_OK);
+    assert_null(none);
+}
+
 static void test_bad_space(void **state)
 {
     (void)state;
@@ -287,7 +338,8 @@ static void test_bad_space(void **state)
     struct optimize_hooks hooks = {&log, keep, NULL, NULL};
     enum optimize_outcome outcome;
     struct facet_error err;
-    assert_int_equal(optimize_run(&roof, &s, NULL, 0, &hooks, &outcome, &err),
+    assert_int_equal(optimize_run(&roof, NULL, &s, NULL, 0, &hooks, &outcome,
+                                  &err),
                      FACET_EINPUT);
     assert_non_null(strstr(err.message, "--u"));
     free(log.options);
@@ -340,6 +392,7 @@ int main(void)
         cmocka_unit_test(test_resume_random),
         cmocka_unit_test(test_resume_nsga2),
         cmocka_unit_test(test_front),
+        cmocka_unit_test(test_lattice_run),
         cmocka_unit_test(test_bad_space),
         cmocka_unit_test(test_parse_space),
     };
