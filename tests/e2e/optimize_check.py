@@ -300,14 +300,16 @@ def check_show(path, run, number, show_file, classify_file):
         problem("grid %s threshold %s, options row %dx%d %s"
                 % (show["grid"], show["threshold_mm"], row["nu"], row["nv"],
                    row["threshold_mm"]))
+    # The options row may come from the run's lattice and show's panels
+    # from the option's own grid: equal to 1e-9 (see below).
     for c in ["panels", "fp_count", "sp_count", "dp_count", "fp_area",
               "sp_area", "dp_area", "area", "cost", "planarity",
               "max_deviation", "max_panel_area", "p_dist", "feasible"]:
-        if not close(float(t[c]), float(row[c])):
+        if not near(float(t[c]), float(row[c]), TOTAL_SCALE.get(c, 0)):
             problem("totals.%s %r, options row %r" % (c, t[c], row[c]))
     for name, v in t["classes"].items():
         if v["count"] != row[name + "_count"] or \
-                not close(v["area"], row[name + "_area"]):
+                not near(v["area"], row[name + "_area"], t["area"]):
             problem("class %s: %s, options row %s, %s" % (
                 name, v, row[name + "_count"], row[name + "_area"]))
     # A run takes its panels from the lattice of its space's lines,
@@ -333,14 +335,17 @@ def check_show(path, run, number, show_file, classify_file):
                        near(ts[k][c]["area"], v["area"], tc["area"])
                        for c, v in tc[k].items())
         elif isinstance(tc[k], float) or isinstance(ts[k], float):
-            scale = {"planarity": 1e-3, "max_deviation": 1e-3,
-                     "p_dist": 1e-6}.get(k, 0)
-            same = near(ts[k], tc[k], scale)
+            same = near(ts[k], tc[k], TOTAL_SCALE.get(k, 0))
         else:
             same = ts[k] == tc[k]
         if not same:
             problem("totals.%s %r, classify --json of the same grid %r"
                     % (k, ts[k], tc[k]))
+
+
+# What a total is judged against when it is near zero: a millimetre of
+# deviation (m), a millimetre squared over a square metre of P_dist (m^4).
+TOTAL_SCALE = {"planarity": 1e-3, "max_deviation": 1e-3, "p_dist": 1e-6}
 
 
 def near(a, b, scale):
