@@ -922,18 +922,59 @@ static inline int on_grid_line(const struct panel_lattice *L,
            (v != 0 && axis[1].is_line[v - 1]);
 }
 
-static inline void sample_cell(const struct panelization *out,
-                               struct cell_samples *samples,
-                               struct cell_outline *outlines, size_t cell,
-                               const double position[3], double k1,
-                               double k2, int edge)
+/* What pass 2 keeps of a panel while it samples, in one cache line:
+ * sampling touches nothing else of the panel, and a grid takes some
+ * 130,000 samples. */
+struct sample_state {
+    _Alignas(64) double normal[3];
+    double offset;             /* normal . (centroid - lattice origin) */
+    double deviation;          /* largest distance from the plane so far */
+    double k1, k2;             /* over the samples on mesh edges */
+    int edge_samples;
+    int outline;               /* as in struct cell_samples */
+};
+
+struct pass2 {
+    const int *cell_panel;
+    const double *origin;
+    struct sample_state *state;
+    double *k_any;             /* 2 per panel: k1 max, k2 min over the
+                                  samples inside triangles */
+    struct cell_outline *outlines;
+};
+
+/* cell_sample for the panel of cell (if any), p absolute (m). */
+static inline void sample_cell(struct pass2 *pass, size_t cell,
+                               const double p[3], double k1, double k2,
+                               int edge)
 {
-    int n = out->cell_panel[cell];
+    int n = pass->cell_panel[cell];
     if (n < 0)
         return;
-    struct cell_samples *s = &samples[n];
-    cell_sample(s, s->outline >= 0 ? &outlines[s->outline] : NULL, position,
-                k1, k2, edge);
+    struct sample_state *s = &pass->state[n];
+    double q[3] = {p[0] - pass->origin[0], p[1] - pass->origin[1],
+                   p[2] - pass->origin[2]};
+    double distance = fabs(s->normal[0] * q[0] + s->normal[1] * q[1] +
+                           s->normal[2] * q[2] - s->offset);
+    if (distance > s->deviation)
+        s->deviation = distance;
+    if (edge) {
+        if (k1 > s->k1)
+            s->k1 = k1;
+        if (k2 < s->k2)
+            s->k2 = k2;
+        s->edge_samples++;
+    } else {
+        /* Only the fallback of a panel with no edge sample at all, when
+         * these are all its samples. */
+        double *k = &pass->k_any[2 * (size_t)n];
+        if (k1 > k[0])
+            k[0] = k1;
+        if (k2 < k[1])
+            k[1] = k2;
+    }
+    if (s->outline >= 0)
+        cell_outline_take(&pass->outlines[s->outline], q);
 }
 
 int panels_build_lattice(const struct panel_lattice *L, int nu, int nv,
@@ -1036,6 +1077,34 @@ int panels_build_lattice(const struct panel_lattice *L, int nu, int nv,
     }
 
     /* Pass 2: the mesh points... */
+    size_t npanels = out->npanels ? out->npanels : 1;
+    struct sample_state *state = aligned_alloc(64, npanels * sizeof *state);
+    double *k_any = malloc(2 * npanels * sizeof *k_any);
+    if (state == NULL || k_any == NULL) {
+        free(state);
+        free(k_any);
+        free(samples);
+        free(outlines);
+        grid_axis_free(&axis[0]);
+        grid_axis_free(&axis[1]);
+        return facet_error_set(err, FACET_EWORK, "out of memory (panels)");
+    }
+    for (size_t n = 0; n < out->npanels; n++) {
+        const struct cell_samples *c = &samples[n];
+        struct sample_state *s = &state[n];
+        memcpy(s->normal, c->normal, sizeof s->normal);
+        s->offset = c->normal[0] * (c->centroid[0] - L->origin[0]) +
+                    c->normal[1] * (c->centroid[1] - L->origin[1]) +
+                    c->normal[2] * (c->centroid[2] - L->origin[2]);
+        s->deviation = 0;
+        s->k1 = -INFINITY;
+        s->k2 = INFINITY;
+        s->edge_samples = 0;
+        s->outline = c->outline;
+        k_any[2 * n] = -INFINITY;
+        k_any[2 * n + 1] = INFINITY;
+    }
+    struct pass2 pass = {out->cell_panel, L->origin, state, k_any, outlines};
     const uint32_t *column_cell = axis[0].cell_of, *row_cell = axis[1].cell_of;
     for (size_t p = 0; p < prep->npoints; p++) {
         if (on_grid_line(L, axis, (uint32_t)p))
@@ -1043,7 +1112,7 @@ int panels_build_lattice(const struct panel_lattice *L, int nu, int nv,
         size_t cell = (size_t)row_cell[L->place[2 * p + 1]] * nu +
                       column_cell[L->place[2 * p]];
         const struct panel_prep_point *P = &prep->point[p];
-        sample_cell(out, samples, outlines, cell, P->position, P->k1, P->k2,
+        sample_cell(&pass, cell, P->position, P->k1, P->k2,
                     1);
     }
     /* (a point on one of the grid's lines in each cell it borders)... */
@@ -1053,7 +1122,7 @@ int panels_build_lattice(const struct panel_lattice *L, int nu, int nv,
             continue;
         size_t cell = (size_t)row_cell[x->row] * nu + column_cell[x->column];
         const struct panel_prep_point *P = &prep->point[x->point];
-        sample_cell(out, samples, outlines, cell, P->position, P->k1, P->k2,
+        sample_cell(&pass, cell, P->position, P->k1, P->k2,
                     1);
     }
     /* ...where the grid's lines cut mesh edges... */
@@ -1063,9 +1132,9 @@ int panels_build_lattice(const struct panel_lattice *L, int nu, int nv,
              n++) {
             const struct lattice_cut *x = &L->cut[0][n];
             size_t cell = (size_t)row_cell[x->across] * nu + (size_t)i;
-            sample_cell(out, samples, outlines, cell - 1, x->at.position,
+            sample_cell(&pass, cell - 1, x->at.position,
                         x->at.k1, x->at.k2, 1);
-            sample_cell(out, samples, outlines, cell, x->at.position,
+            sample_cell(&pass, cell, x->at.position,
                         x->at.k1, x->at.k2, 1);
         }
     }
@@ -1075,9 +1144,9 @@ int panels_build_lattice(const struct panel_lattice *L, int nu, int nv,
              n++) {
             const struct lattice_cut *x = &L->cut[1][n];
             size_t cell = (size_t)j * nu + column_cell[x->across];
-            sample_cell(out, samples, outlines, cell - (size_t)nu,
+            sample_cell(&pass, cell - (size_t)nu,
                         x->at.position, x->at.k1, x->at.k2, 1);
-            sample_cell(out, samples, outlines, cell, x->at.position,
+            sample_cell(&pass, cell, x->at.position,
                         x->at.k1, x->at.k2, 1);
         }
     }
@@ -1093,9 +1162,21 @@ int panels_build_lattice(const struct panel_lattice *L, int nu, int nv,
             size_t around[4] = {cell - (size_t)nu - 1, cell - (size_t)nu,
                                 cell - 1, cell};
             for (int a = 0; a < 4; a++)
-                sample_cell(out, samples, outlines, around[a],
+                sample_cell(&pass, around[a],
                             q->at.position, q->at.k1, q->at.k2, q->state);
         }
+    for (size_t n = 0; n < out->npanels; n++) {
+        struct cell_samples *c = &samples[n];
+        const struct sample_state *s = &state[n];
+        c->deviation = s->deviation;
+        c->k1_edge = s->k1;
+        c->k2_edge = s->k2;
+        c->edge_samples = s->edge_samples;
+        c->k1_any = k_any[2 * n];
+        c->k2_any = k_any[2 * n + 1];
+    }
+    free(state);
+    free(k_any);
     panels_finish(PANEL_EXTREMES, samples, outlines, out);
     free(samples);
     free(outlines);

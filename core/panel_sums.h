@@ -229,6 +229,28 @@ struct cell_outline {
  * a few percent of the exact diameter and cheap for any panel size. */
 extern const double panel_extent_direction[13][3];
 
+/* Takes point p (m; any origin, the same for all of a panel's points)
+ * into the outline o. */
+static inline void cell_outline_take(struct cell_outline *o, const double p[3])
+{
+    for (int e = 0; e < 13; e++) {
+        const double *dir = panel_extent_direction[e];
+        double along = p[0] * dir[0] + p[1] * dir[1] + p[2] * dir[2];
+        if (along < o->low[e]) {
+            o->low[e] = along;
+            o->low_point[e][0] = p[0];
+            o->low_point[e][1] = p[1];
+            o->low_point[e][2] = p[2];
+        }
+        if (along > o->high[e]) {
+            o->high[e] = along;
+            o->high_point[e][0] = p[0];
+            o->high_point[e][1] = p[1];
+            o->high_point[e][2] = p[2];
+        }
+    }
+}
+
 /* Takes point p (m) of the panel's surface, with curvature k1, k2 there,
  * into s (and its outline o when not NULL); edge says p lies on a mesh
  * vertex or edge, the paper's samples. */
@@ -253,22 +275,7 @@ static inline void cell_sample(struct cell_samples *s,
         s->edge_samples++;
     }
     if (o != NULL)
-        for (int e = 0; e < 13; e++) {
-            const double *dir = panel_extent_direction[e];
-            double along = p[0] * dir[0] + p[1] * dir[1] + p[2] * dir[2];
-            if (along < o->low[e]) {
-                o->low[e] = along;
-                o->low_point[e][0] = p[0];
-                o->low_point[e][1] = p[1];
-                o->low_point[e][2] = p[2];
-            }
-            if (along > o->high[e]) {
-                o->high[e] = along;
-                o->high_point[e][0] = p[0];
-                o->high_point[e][1] = p[1];
-                o->high_point[e][2] = p[2];
-            }
-        }
+        cell_outline_take(o, p);
 }
 
 /* Adds piece_area (m^2) times the shape operator of mesh triangle t at
