@@ -147,14 +147,6 @@ static int make_lines(double min, double max, int lo, int hi, double **line,
     return FACET_OK;
 }
 
-static size_t lines_upper_bound(int lo, int hi)
-{
-    size_t n = 0;
-    for (int side = lo; side <= hi; side++)
-        n += (size_t)(side - 1);
-    return n;
-}
-
 static void sample_at(const struct panel_prep *prep, const uint32_t *point,
                       const double b[3], struct lattice_sample *out)
 {
@@ -679,11 +671,9 @@ int panel_lattice_build(const struct panel_prep *prep, int u_lo, int u_hi,
         return facet_error_set(err, FACET_EINPUT,
             "the UV map has no extent (all texture coordinates equal in u "
             "or in v)");
-    /* Too fine before anything is made: distinct lines are at most all. */
-    size_t bound[2] = {lines_upper_bound(u_lo, u_hi),
-                       lines_upper_bound(v_lo, v_hi)};
-    if (bound[0] > 64 * (size_t)PANEL_LATTICE_MAX_NODES ||
-        bound[1] > 64 * (size_t)PANEL_LATTICE_MAX_NODES)
+    /* Too fine before anything is made: the largest grid's own lines are
+     * distinct already. */
+    if ((size_t)(u_hi + 1) * (size_t)(v_hi + 1) > PANEL_LATTICE_MAX_NODES)
         return FACET_OK;
 
     struct panel_lattice *L = calloc(1, sizeof *L);
@@ -808,6 +798,22 @@ int panel_lattice_build(const struct panel_prep *prep, int u_lo, int u_hi,
     free(fine_pieces);
     *out = L;
     return FACET_OK;
+}
+
+size_t panel_lattice_bytes(const struct panel_lattice *L)
+{
+    size_t nfine = L->ncolumns * L->nrows;
+    size_t nprefix = (L->ncolumns + 1) * (L->nrows + 1);
+    size_t npoints = L->prep->npoints;
+    size_t ncuts = L->cut_start[0][L->nline[0]] + L->cut_start[1][L->nline[1]];
+    return sizeof *L + (L->nline[0] + L->nline[1]) * sizeof(double) +
+           nfine * sizeof *L->fine +
+           nprefix * (sizeof *L->prefix + sizeof *L->pieces) +
+           npoints * 2 * (sizeof *L->place + sizeof *L->on_line) +
+           L->nextra * sizeof *L->extra +
+           (L->nline[0] + L->nline[1] + 2) * sizeof(size_t) +
+           ncuts * sizeof(struct lattice_cut) +
+           L->nline[0] * L->nline[1] * sizeof *L->corner;
 }
 
 int panel_lattice_has(const struct panel_lattice *lattice, int nu, int nv)

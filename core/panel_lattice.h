@@ -4,7 +4,7 @@
  *
  * The grids nu x nv of a design space (nu in u_lo..u_hi, nv in
  * v_lo..v_hi) cut the UV box along a few hundred distinct lines: the
- * paper's space, 336 grids, along 506 lines in u and 609 in v. The lattice
+ * paper's space, 336 grids, along 506 lines in u and 610 in v. The lattice
  * clips the surface once along all of them into fine cells and keeps:
  *   - each fine cell's area and moments, and their running (prefix) sums
  *     in extended precision, so that a grid's cell is four lookups;
@@ -16,9 +16,10 @@
  * panels_build_fast's (PANEL_EXTREMES) to rounding, tested against
  * panels_build.
  *
- * A lattice costs about 400 bytes per line crossing (the paper's space:
- * 310,000 crossings, 120 MB) and is built only below
- * PANEL_LATTICE_MAX_NODES crossings.
+ * A lattice costs about 500 bytes per line crossing, and some more per
+ * mesh point and per cut of a line by a mesh edge (the paper's space on a
+ * 100,000-triangle surface: 310,000 crossings, 150 MB); it is built only
+ * up to PANEL_LATTICE_MAX_NODES crossings.
  */
 #ifndef FACET_PANEL_LATTICE_H
 #define FACET_PANEL_LATTICE_H
@@ -40,6 +41,9 @@ struct panel_lattice;
 int panel_lattice_build(const struct panel_prep *prep, int u_lo, int u_hi,
                         int v_lo, int v_hi, int jobs,
                         struct panel_lattice **out, struct facet_error *err);
+
+/* The memory the lattice holds (bytes). */
+size_t panel_lattice_bytes(const struct panel_lattice *lattice);
 
 /* Whether grid nu x nv is one of the lattice's. */
 int panel_lattice_has(const struct panel_lattice *lattice, int nu, int nv);

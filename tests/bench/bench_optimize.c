@@ -117,6 +117,7 @@ int main(int argc, char **argv)
         return 1;
     }
     double lattice_time = bench_now() - start;
+    double lattice_mb = (double)panel_lattice_bytes(lattice) / 1e6;
     start = bench_now();
     if (optimize_evaluate(&surface, lattice, &s->base, points, n, jobs,
                           totals, &err) != FACET_OK)
@@ -174,8 +175,8 @@ int main(int argc, char **argv)
            "1 s: %s); surface preparation, once per surface: %.3f s\n",
            whole, (double)n / whole, whole < 1 ? "met" : "NOT met",
            prepare);
-    printf("  lattice of the space's lines, once per run: %.3f s\n",
-           lattice_time);
+    printf("  lattice of the space's lines, once per run: %.3f s, %.0f MB\n",
+           lattice_time, lattice_mb);
     printf("  evaluation alone: %.3f s on %d threads (%.0f options/s), "
            "%.3f s on 1 thread: %.2fx speed-up\n", evaluate_all, jobs,
            (double)n / evaluate_all, evaluate_one,
