@@ -522,6 +522,40 @@ static void test_lattice_matches_reference(void **state)
     }
 }
 
+/* A space whose lines cross too often gets no lattice (each grid is then
+ * evaluated on its own); sides out of range are refused. */
+static void test_lattice_limits(void **state)
+{
+    (void)state;
+    struct surface s;
+    open_example("hypar", 8, &s);
+    struct panel_lattice *lattice = (struct panel_lattice *)&s;
+    struct facet_error err;
+    assert_int_equal(panel_lattice_build(&s.panels, 1, 2000, 1, 2000, 2,
+                                         &lattice, &err), FACET_OK);
+    assert_null(lattice);
+    assert_int_equal(panel_lattice_build(&s.panels, 10, 80, 10, 80, 2,
+                                         &lattice, &err), FACET_OK);
+    assert_null(lattice);
+    assert_int_equal(panel_lattice_build(&s.panels, 0, 3, 1, 3, 2, &lattice,
+                                         &err), FACET_EINPUT);
+    assert_non_null(strstr(err.message, "out of range"));
+    assert_int_equal(panel_lattice_build(&s.panels, 3, 2, 1, 3, 2, &lattice,
+                                         &err), FACET_EINPUT);
+    assert_int_equal(panel_lattice_build(&s.panels, 1, 3, 1, 2001, 2,
+                                         &lattice, &err), FACET_EINPUT);
+    /* And a lattice that is built says what it holds. */
+    assert_int_equal(panel_lattice_build(&s.panels, 2, 5, 3, 4, 1, &lattice,
+                                         &err), FACET_OK);
+    assert_non_null(lattice);
+    assert_true(panel_lattice_has(lattice, 2, 4));
+    assert_false(panel_lattice_has(lattice, 1, 4));
+    assert_false(panel_lattice_has(lattice, 5, 5));
+    assert_true(panel_lattice_bytes(lattice) > 0);
+    panel_lattice_free(lattice);
+    surface_close(&s);
+}
+
 /* A batch whose points share grids (only the threshold differs), given in
  * no particular order, panelizes each grid once and gives every point the
  * totals option_evaluate gives it alone, on one thread and on several. */
@@ -575,6 +609,7 @@ int main(void)
         cmocka_unit_test(test_bad_grid),
         cmocka_unit_test(test_fast_matches_reference),
         cmocka_unit_test(test_lattice_matches_reference),
+        cmocka_unit_test(test_lattice_limits),
         cmocka_unit_test(test_batch_shares_grids),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
