@@ -413,7 +413,11 @@ int store_analyze(struct store *store, struct facet_error *err)
 int store_check(struct store *store, struct facet_error *err)
 {
     sqlite3_stmt *stmt;
-    int rc = store_prepare(store, "PRAGMA integrity_check(1)", &stmt,
+    /* quick_check reads every page and checks its structure, its records
+     * and the constraints, and leaves out integrity_check's lookup of
+     * every index entry in its table: 0.9 s instead of 17 s on a file of
+     * a million options, before every run. */
+    int rc = store_prepare(store, "PRAGMA quick_check(1)", &stmt,
                            "checking the file", err);
     if (rc != FACET_OK)
         return rc;
