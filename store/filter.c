@@ -869,9 +869,14 @@ static void write_sql(const struct filter *f, int k, int first_param,
     switch (n->kind) {
     case NODE_COMPARE:
         /* crowding is stored NULL at a front's ends, where it is
-         * infinite: compare it as the infinity it stands for. */
-        if (strcmp(store_option_columns[n->column], "crowding") == 0)
-            snprintf(text, sizeof text, "%s %s ?%lld", store_crowding_sql,
+         * infinite, and rank NULL until the run is ranked: compare them
+         * as the values an option's row holds (filter_match's). */
+        if (strcmp(store_option_columns[n->column], "crowding") == 0 ||
+            strcmp(store_option_columns[n->column], "rank") == 0)
+            snprintf(text, sizeof text, "%s %s ?%lld",
+                     strcmp(store_option_columns[n->column], "rank") == 0
+                         ? store_rank_sql
+                         : store_crowding_sql,
                      op_text[n->op],
                      (long long)first_param + (long long)n->param);
         else
@@ -886,7 +891,9 @@ static void write_sql(const struct filter *f, int k, int first_param,
         put(b, text);
         break;
     case NODE_PARETO:
-        put(b, "\"rank\" = 1");
+        /* Never NULL (an unranked option is not Pareto, and "not pareto"
+         * takes it), and still the rank index's. */
+        put(b, "(\"rank\" IS NOT NULL AND \"rank\" = 1)");
         break;
     case NODE_NOT:
         put(b, "NOT (");

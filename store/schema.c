@@ -406,7 +406,11 @@ int store_open(const char *path, struct store **out,
 
 int store_analyze(struct store *store, struct facet_error *err)
 {
-    return store_exec(store, "PRAGMA analysis_limit = 1000; ANALYZE;",
+    /* SQLite reads the first entries of each index only: 1,000 of them
+     * all had one run and one nu, and left a file of one large run and a
+     * small one scanning the large run for `nu = 7 and nv = 13` (210 ms
+     * instead of 1 ms); 50,000 see enough, in 0.07 s on a million. */
+    return store_exec(store, "PRAGMA analysis_limit = 50000; ANALYZE;",
                       "gathering statistics", err);
 }
 

