@@ -522,6 +522,56 @@ static void test_lattice_matches_reference(void **state)
     }
 }
 
+/* The lattice against panels_build on real surfaces from
+ * ../shared/data (FACET_DATA): a UV map from libigl (igloo), harmonic
+ * parameterizations of a disk (hemisphere) and of a gridshell roof
+ * (bubble), a planar-quad roof (conical1) and a Rhino quad grid (barrel):
+ * irregular triangles, curved trimmed boundaries, every grid of a space. */
+static void test_lattice_real_surfaces(void **state)
+{
+    (void)state;
+    const char *data = getenv("FACET_DATA");
+    if (data == NULL)
+        data = "../shared/data";
+    const char *files[] = {"igloo.obj", "hemisphere.obj",
+                           "botanic-garden-bubble-0.obj", "conical1.obj",
+                           "barrel.obj"};
+    size_t trimmed = 0, grids = 0;
+    for (size_t f = 0; f < sizeof files / sizeof *files; f++) {
+        char path[1024];
+        snprintf(path, sizeof path, "%s/%s", data, files[f]);
+        struct mesh_options options = {UNITS_M, NULL, NULL};
+        struct surface s;
+        struct facet_error err;
+        int rc = surface_open(path, &options, &s, &err);
+        if (rc == FACET_OK)
+            rc = surface_prepare(&s, 0, &err);
+        if (rc != FACET_OK)
+            fail_msg("%s: %s", path, err.message);
+        struct panel_lattice *lattice;
+        assert_int_equal(panel_lattice_build(&s.panels, 7, 12, 9, 13, 2,
+                                             &lattice, &err), FACET_OK);
+        assert_non_null(lattice);
+        for (int nu = 7; nu <= 12; nu++)
+            for (int nv = 9; nv <= 13; nv++) {
+                struct panelization got, reference;
+                assert_int_equal(panels_build_lattice(lattice, nu, nv, &got,
+                                                      &err), FACET_OK);
+                assert_int_equal(panels_build(&s.mesh, &s.uv, &s.curvature,
+                                              PANEL_EXTREMES, nu, nv,
+                                              &reference, &err), FACET_OK);
+                trimmed += assert_same_panels(&s, &got, &reference);
+                grids++;
+                panelization_free(&got);
+                panelization_free(&reference);
+            }
+        panel_lattice_free(lattice);
+        surface_close(&s);
+    }
+    assert_int_equal(grids, 5 * 30);
+    assert_true(trimmed > 0);
+}
+
 /* A space whose lines cross too often gets no lattice (each grid is then
  * evaluated on its own); sides out of range are refused. */
 static void test_lattice_limits(void **state)
@@ -609,6 +659,7 @@ int main(void)
         cmocka_unit_test(test_bad_grid),
         cmocka_unit_test(test_fast_matches_reference),
         cmocka_unit_test(test_lattice_matches_reference),
+        cmocka_unit_test(test_lattice_real_surfaces),
         cmocka_unit_test(test_lattice_limits),
         cmocka_unit_test(test_batch_shares_grids),
     };
