@@ -18,10 +18,10 @@
  * Pass 2 samples what panels_build samples, less the points inside a
  * grid cell that cannot decide a maximum (distance from a plane and
  * barycentric curvature are largest at a piece's vertices): each mesh
- * point in its cell (a point on a fine line in every cell it is a piece
- * vertex of), each cut of a mesh edge by one of the grid's lines in the
- * cells on both sides, and each crossing of two of the grid's lines on
- * the surface in the four cells around it.
+ * point in its cell (a point on one of the grid's lines in every cell it
+ * is a piece vertex of), each cut of a mesh edge by one of the grid's
+ * lines in the cells on both sides, and each crossing of two of the
+ * grid's lines on the surface in the four cells around it.
  */
 #include "panel_lattice.h"
 
@@ -728,7 +728,7 @@ int panel_lattice_build(const struct panel_prep *prep, int u_lo, int u_hi,
     for (int x = 0; x < 3; x++)
         L->origin[x] = prep->npoints ? 0.5 * (low[x] + high[x]) : 0;
 
-    /* Each point's fine cell, unless it lies on a line. */
+    /* Each point's fine cell, and the lines it lies on. */
     for (size_t p = 0; p < prep->npoints; p++) {
         int on_u, on_v;
         size_t c = line_rank(L->line[0], L->nline[0], prep->point_uv[2 * p],
