@@ -18,6 +18,7 @@
 #include <math.h>
 #include <stddef.h>
 #include <stdint.h>
+#include <string.h>
 
 #include "panel.h"
 
@@ -178,8 +179,8 @@ void panel_piece_moments(const struct panel_prep_triangle *T,
                          struct piece_moments *m);
 
 /* A whole triangle's sums into a cell. */
-static inline void cell_moments_add_triangle(struct cell_moments *m,
-                                             const struct panel_prep_triangle *T)
+static inline void cell_moments_add_triangle(
+    struct cell_moments *m, const struct panel_prep_triangle *T)
 {
     if (!m->has_reference) {
         memcpy(m->reference, T->centroid, sizeof m->reference);
