@@ -34,8 +34,7 @@ struct panel_lattice;
 /* Builds the lattice of prep's surface for the grids nu in u_lo..u_hi by
  * nv in v_lo..v_hi, on up to jobs threads, into *out (caller-owned,
  * released with panel_lattice_free; it borrows prep, which must outlive
- * it). *out is
- * NULL, with FACET_OK, when the lattice would exceed
+ * it). *out is NULL, with FACET_OK, when the lattice would exceed
  * PANEL_LATTICE_MAX_NODES line crossings. Returns FACET_OK, FACET_EINPUT
  * for sides outside 1..PANEL_MAX_GRID or a UV box without extent,
  * FACET_EWORK when out of memory. */
