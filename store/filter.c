@@ -860,10 +860,12 @@ static void write_text(const struct filter *f, int k, int operand,
 }
 
 /* The SQL of node k. Comparisons bind tighter than NOT, AND and OR in
- * SQL, so only compound operands need parentheses. */
+ * SQL, so only compound operands need parentheses. With scan, columns are
+ * written +"column", which no index serves. */
 static void write_sql(const struct filter *f, int k, int first_param,
-                      struct buffer *b)
+                      int scan, struct buffer *b)
 {
+    const char *plus = scan ? "+" : "";
     const struct node *n = &f->nodes[k];
     char text[192];
     switch (n->kind) {
@@ -880,24 +882,26 @@ static void write_sql(const struct filter *f, int k, int first_param,
                      op_text[n->op],
                      (long long)first_param + (long long)n->param);
         else
-            snprintf(text, sizeof text, "\"%s\" %s ?%lld",
+            snprintf(text, sizeof text, "%s\"%s\" %s ?%lld", plus,
                      store_option_columns[n->column], op_text[n->op],
                      (long long)first_param + (long long)n->param);
         put(b, text);
         break;
     case NODE_YES_NO:
-        snprintf(text, sizeof text, "\"%s\" != 0",
+        snprintf(text, sizeof text, "%s\"%s\" != 0", plus,
                  store_option_columns[n->column]);
         put(b, text);
         break;
     case NODE_PARETO:
         /* Never NULL (an unranked option is not Pareto, and "not pareto"
          * takes it), and still the rank index's. */
-        put(b, "(\"rank\" IS NOT NULL AND \"rank\" = 1)");
+        snprintf(text, sizeof text,
+                 "(%s\"rank\" IS NOT NULL AND %s\"rank\" = 1)", plus, plus);
+        put(b, text);
         break;
     case NODE_NOT:
         put(b, "NOT (");
-        write_sql(f, n->child, first_param, b);
+        write_sql(f, n->child, first_param, scan, b);
         put(b, ")");
         break;
     case NODE_AND:
@@ -908,7 +912,7 @@ static void write_sql(const struct filter *f, int k, int first_param,
                 put(b, n->kind == NODE_AND ? " AND " : " OR ");
             if (parens)
                 put(b, "(");
-            write_sql(f, c, first_param, b);
+            write_sql(f, c, first_param, scan, b);
             if (parens)
                 put(b, ")");
         }
@@ -992,14 +996,24 @@ const char *filter_text(const struct filter *filter)
     return filter == NULL || filter->text == NULL ? "" : filter->text;
 }
 
-char *filter_sql(const struct filter *filter, int first_param)
+static char *sql_of(const struct filter *filter, int first_param, int scan)
 {
     struct buffer b = {0};
     if (filter == NULL || filter->root < 0)
         put(&b, "1");
     else
-        write_sql(filter, filter->root, first_param, &b);
+        write_sql(filter, filter->root, first_param, scan, &b);
     return b.data;
+}
+
+char *filter_sql(const struct filter *filter, int first_param)
+{
+    return sql_of(filter, first_param, 0);
+}
+
+char *filter_sql_scan(const struct filter *filter, int first_param)
+{
+    return sql_of(filter, first_param, 1);
 }
 
 size_t filter_param_count(const struct filter *filter)

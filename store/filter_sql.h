@@ -15,13 +15,20 @@
 #include "store/filter.h"
 
 /* The WHERE fragment, e.g. "(\"cost\" < ?1 AND \"dp_area\" <= ?2) OR
- * \"rank\" = 1", over the columns of the options table, which are named
- * exactly as in store_option_columns. Parameters are numbered from
- * first_param (>= 1, so the caller can bind its own parameters first);
- * every number of the user's text is a parameter, never pasted. "1" for
- * the empty filter (or NULL). Malloc'ed, the caller frees; NULL when out of
- * memory. */
+ * (\"rank\" IS NOT NULL AND \"rank\" = 1)", over the columns of the
+ * options table, which are named exactly as in store_option_columns.
+ * Parameters are numbered from first_param (>= 1, so the caller can bind
+ * its own parameters first); every number of the user's text is a
+ * parameter, never pasted. "1" for the empty filter (or NULL). Malloc'ed,
+ * the caller frees; NULL when out of memory. */
 char *filter_sql(const struct filter *filter, int first_param);
+
+/* filter_sql with every column written +"column", which keeps SQLite from
+ * walking an index for the filter: for counting the rows of a run through
+ * its primary key. A filter that many options pass costs a read of each
+ * of its rows through an index (5 s for 420,000 of a million), and 0.2 s
+ * by a scan of the run. */
+char *filter_sql_scan(const struct filter *filter, int first_param);
 
 /* How many parameters the fragment has (0 for the empty filter). */
 size_t filter_param_count(const struct filter *filter);

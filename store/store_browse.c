@@ -345,13 +345,32 @@ static int single_row(struct store *store, sqlite3_stmt *stmt,
     return rc;
 }
 
+/* Appends " FROM options WHERE run = ?1 ..." as add_from does, with the
+ * filter written for a scan of the run's rows (filter_sql_scan): the form
+ * a count that may run into every option of a run takes. */
+static void add_from_scan(struct sql_text *s, const struct option_browse *b)
+{
+    sql_add(s, " FROM options WHERE run = ?1");
+    if (b->pareto_only)
+        sql_add(s, " AND rank = 1");
+    if (b->where != NULL) {
+        char *fragment = filter_sql_scan(b->where, FILTER_FIRST);
+        if (fragment == NULL) {
+            s->failed = 1;
+            return;
+        }
+        sql_add(s, " AND (%s)", fragment);
+        free(fragment);
+    }
+}
+
 int store_browse_count(struct store *store, const struct option_browse *b,
                        int64_t *count, struct facet_error *err)
 {
     *count = 0;
     struct sql_text s = {0};
     sql_add(&s, "SELECT count(*)");
-    add_from(&s, b);
+    add_from_scan(&s, b);
     sqlite3_stmt *stmt;
     int rc = prepare(store, &s, b, NULL, &stmt, "counting options", err);
     if (rc != FACET_OK)
@@ -391,54 +410,54 @@ int store_browse_count_step(struct store *store,
                             struct facet_error *err)
 {
     *done = 0;
-    /* the slice by number (the primary key, read in order), then the
-     * filter over it: ?3 the number to start after */
-    struct sql_text s = {0};
-    sql_add(&s, "SELECT count(*) FROM (SELECT * FROM options"
-                " WHERE run = ?1 AND number > ?3 ORDER BY number LIMIT ?2)"
-                " WHERE 1%s", b->pareto_only ? " AND rank = 1" : "");
-    if (b->where != NULL) {
-        char *fragment = filter_sql(b->where, FILTER_FIRST);
-        if (fragment == NULL)
-            s.failed = 1;
-        else
-            sql_add(&s, " AND (%s)", fragment);
-        free(fragment);
-    }
+    /* Where the slice ends: the rows-th number after *from, or none when
+     * the slice holds every option left. */
+    int64_t end = 0;
+    int last = rows <= 0;
     sqlite3_stmt *stmt;
-    int rc = prepare(store, &s, b, NULL, &stmt, "counting options", err);
-    if (rc != FACET_OK)
-        return rc;
-    sqlite3_bind_int64(stmt, 2, rows > 0 ? rows : -1);
-    sqlite3_bind_int64(stmt, 3, *from);
-    if (sqlite3_step(stmt) == SQLITE_ROW) {
-        *count += sqlite3_column_int64(stmt, 0);
-        if (rows <= 0)
-            *done = 1;
-    } else {
-        rc = store_fail(store, "counting options", err);
+    int rc;
+    if (!last) {
+        rc = store_prepare(store, "SELECT number FROM options WHERE run = ?1"
+                           " AND number > ?3 ORDER BY number LIMIT 1"
+                           " OFFSET ?2 - 1", &stmt, "counting options", err);
+        if (rc != FACET_OK)
+            return rc;
+        sqlite3_bind_int64(stmt, 1, b->run);
+        sqlite3_bind_int64(stmt, 2, rows);
+        sqlite3_bind_int64(stmt, 3, *from);
+        int step = sqlite3_step(stmt);
+        if (step == SQLITE_ROW)
+            end = sqlite3_column_int64(stmt, 0);
+        else if (step == SQLITE_DONE)
+            last = 1;
+        else
+            rc = store_fail(store, "counting options", err);
+        sqlite3_finalize(stmt);
+        if (rc != FACET_OK)
+            return rc;
     }
-    sqlite3_finalize(stmt);
-    if (rc != FACET_OK || *done)
-        return rc;
-    /* where the slice ended: the rows-th number after *from */
-    rc = store_prepare(store, "SELECT number FROM options WHERE run = ?1"
-                       " AND number > ?3 ORDER BY number LIMIT 1"
-                       " OFFSET ?2 - 1", &stmt, "counting options", err);
+    /* The slice by number (the primary key, read in order), the filter
+     * over its rows: ?3 the number to start after, ?2 the last one. */
+    struct sql_text s = {0};
+    sql_add(&s, "SELECT count(*)");
+    add_from_scan(&s, b);
+    sql_add(&s, " AND number > ?3%s", last ? "" : " AND number <= ?2");
+    rc = prepare(store, &s, b, NULL, &stmt, "counting options", err);
     if (rc != FACET_OK)
         return rc;
-    sqlite3_bind_int64(stmt, 1, b->run);
-    sqlite3_bind_int64(stmt, 2, rows);
     sqlite3_bind_int64(stmt, 3, *from);
-    int step = sqlite3_step(stmt);
-    if (step == SQLITE_ROW)
-        *from = sqlite3_column_int64(stmt, 0);
-    else if (step == SQLITE_DONE)
-        *done = 1;  /* the slice held every option left */
+    if (!last)
+        sqlite3_bind_int64(stmt, 2, end);
+    int64_t seen = 0;
+    rc = single_row(store, stmt, &seen, NULL, NULL, "counting options", err);
+    if (rc != FACET_OK)
+        return rc;
+    *count += seen;
+    if (last)
+        *done = 1;
     else
-        rc = store_fail(store, "counting options", err);
-    sqlite3_finalize(stmt);
-    return rc;
+        *from = end;
+    return FACET_OK;
 }
 
 int store_browse_position(struct store *store,

@@ -943,6 +943,23 @@ static int compare_with_sqlite(sqlite3 *db, const struct row *rows,
     }
     free(query);
     free(where);
+
+    /* The form for scans (+"column") selects the same options. */
+    char *scan = filter_sql_scan(f, 1);
+    size = strlen(scan) + 64;
+    query = malloc(size);
+    snprintf(query, size, "SELECT count(*) FROM options WHERE %s", scan);
+    assert_int_equal(sqlite3_prepare_v2(db, query, -1, &stmt, NULL),
+                     SQLITE_OK);
+    for (size_t k = 0; k < filter_param_count(f); k++)
+        sqlite3_bind_double(stmt, 1 + (int)k, filter_param(f, k));
+    assert_int_equal(sqlite3_step(stmt), SQLITE_ROW);
+    if (sqlite3_column_int(stmt, 0) != count)
+        fail_msg("'%s' (SQL for scans %s): %d options, filter_match %d",
+                 text, scan, sqlite3_column_int(stmt, 0), count);
+    sqlite3_finalize(stmt);
+    free(query);
+    free(scan);
     filter_free(f);
     return count;
 }
