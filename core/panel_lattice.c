@@ -179,7 +179,7 @@ static inline void sample_cell(struct pass2 *pass, size_t cell,
             k[1] = k2;
     }
     if (s->outline >= 0)
-        cell_outline_take(&pass->outlines[s->outline], q);
+        cell_outline_take(&pass->outlines[s->outline], p);
 }
 
 int panels_build_lattice(const struct panel_lattice *L, int nu, int nv,

@@ -230,20 +230,43 @@ struct cell_outline {
  * a few percent of the exact diameter and cheap for any panel size. */
 extern const double panel_extent_direction[13][3];
 
-/* Takes point p (m; any origin, the same for all of a panel's points)
- * into the outline o. */
+/* Whether a point p at along (its extent along a direction) takes the
+ * place of the extreme so far, best at best_point, for a maximum (sign
+ * 1) or a minimum (-1). Extents within rounding of each other tie, and a
+ * tie goes to the point with the larger coordinates (x, then y, then z):
+ * on a symmetric surface two mirror points are extreme to the last bit,
+ * and which one is kept must not depend on the order the points come in
+ * (the three ways of measuring panels take them in three orders). */
+static inline int outline_wins(double along, const double p[3], double best,
+                               const double best_point[3], double sign)
+{
+    if (isinf(best))
+        return 1;
+    double tolerance = 1e-12 * fmax(fabs(along), fabs(best));
+    double ahead = sign * (along - best);
+    if (ahead > tolerance)
+        return 1;
+    if (ahead < -tolerance)
+        return 0;
+    for (int x = 0; x < 3; x++)
+        if (p[x] != best_point[x])
+            return p[x] > best_point[x];
+    return 0;
+}
+
+/* Takes point p (m) into the outline o. */
 static inline void cell_outline_take(struct cell_outline *o, const double p[3])
 {
     for (int e = 0; e < 13; e++) {
         const double *dir = panel_extent_direction[e];
         double along = p[0] * dir[0] + p[1] * dir[1] + p[2] * dir[2];
-        if (along < o->low[e]) {
+        if (outline_wins(along, p, o->low[e], o->low_point[e], -1)) {
             o->low[e] = along;
             o->low_point[e][0] = p[0];
             o->low_point[e][1] = p[1];
             o->low_point[e][2] = p[2];
         }
-        if (along > o->high[e]) {
+        if (outline_wins(along, p, o->high[e], o->high_point[e], 1)) {
             o->high[e] = along;
             o->high_point[e][0] = p[0];
             o->high_point[e][1] = p[1];

@@ -522,11 +522,13 @@ static void test_lattice_matches_reference(void **state)
     }
 }
 
-/* The lattice against panels_build on real surfaces from
- * ../shared/data (FACET_DATA): a UV map from libigl (igloo), harmonic
- * parameterizations of a disk (hemisphere) and of a gridshell roof
- * (bubble), a planar-quad roof (conical1) and a Rhino quad grid (barrel):
- * irregular triangles, curved trimmed boundaries, every grid of a space. */
+/* The lattice and panels_build_fast against panels_build on real
+ * surfaces from ../shared/data (FACET_DATA): a UV map from libigl
+ * (igloo), harmonic parameterizations of a disk (hemisphere) and of a
+ * gridshell roof (bubble), a planar-quad roof (conical1), a Rhino quad
+ * grid (barrel) and a 5-chart UV atlas whose seams split points (fish,
+ * symmetric: mirror points tie for a trimmed panel's outline): irregular
+ * triangles, curved trimmed boundaries, every grid of a space. */
 static void test_lattice_real_surfaces(void **state)
 {
     (void)state;
@@ -535,7 +537,7 @@ static void test_lattice_real_surfaces(void **state)
         data = "../shared/data";
     const char *files[] = {"igloo.obj", "hemisphere.obj",
                            "botanic-garden-bubble-0.obj", "conical1.obj",
-                           "barrel.obj"};
+                           "barrel.obj", "fish.obj"};
     size_t trimmed = 0, grids = 0;
     for (size_t f = 0; f < sizeof files / sizeof *files; f++) {
         char path[1024];
@@ -563,12 +565,18 @@ static void test_lattice_real_surfaces(void **state)
                 trimmed += assert_same_panels(&s, &got, &reference);
                 grids++;
                 panelization_free(&got);
+                /* And the way a single grid is measured. */
+                assert_int_equal(panels_build_fast(&s.panels, PANEL_EXTREMES,
+                                                   nu, nv, &got, &err),
+                                 FACET_OK);
+                assert_same_panels(&s, &got, &reference);
+                panelization_free(&got);
                 panelization_free(&reference);
             }
         panel_lattice_free(lattice);
         surface_close(&s);
     }
-    assert_int_equal(grids, 5 * 30);
+    assert_int_equal(grids, 6 * 30);
     assert_true(trimmed > 0);
 }
 
