@@ -163,6 +163,8 @@ struct fast {
     struct cell_samples *samples;
     struct cell_outline *outlines;
     const uint32_t *cell_of;            /* packed cell of each point */
+    const double *line_u, *line_v;      /* the lines after cells i, j:
+                                           umin + (i + 1) du, ... */
 };
 
 /* Pass 1 for one piece of triangle t. */
@@ -308,76 +310,42 @@ static int cross_one_line(struct fast *f, uint32_t t, int axis, double limit,
     return 1;
 }
 
+/* One crossing triangle being split: what its pieces need. */
+struct splitting {
+    struct fast *f;
+    const struct panel_prep_triangle *T;
+    const struct panel_prep_point *P[3];
+    double corner[3][3];  /* pass 1: relative to the triangle's centroid */
+    int sums;             /* pass 1, else pass 2 */
+};
+
+static int split_piece(void *context, size_t column, size_t row,
+                       const struct split_vertex *piece, int count)
+{
+    struct splitting *s = context;
+    size_t cell = row * (size_t)s->f->grid->nu + column;
+    if (s->sums)
+        piece_sums(s->f, s->T, s->corner, cell, piece, count);
+    else
+        piece_samples(s->f, s->P, cell, piece, count);
+    return 0;
+}
+
 /* Splits triangle t, whose corners span cells i0..i1 x j0..j1, along the
- * lines between them, row by row (v) and then cell by cell (u), and hands
- * every piece of three or more vertices to pass 1 (sums set) or pass 2. */
+ * lines between them and hands every piece to pass 1 (sums set) or 2. */
 static void split_triangle(struct fast *f, uint32_t t, int i0, int i1,
                            int j0, int j1, int sums)
 {
-    const struct panel_grid *g = f->grid;
-    const struct panel_prep_triangle *T = &f->prep->triangle[t];
     const uint32_t *point = f->prep->corner + 3 * (size_t)t;
-    const struct panel_prep_point *P[3];
-    double corner[3][3];
-    /* Buffers taken in turn rather than copied: the rest of the triangle
-     * (two), the row split off it, the rest of the row (two), the piece
-     * split off that. */
-    struct split_vertex buffer[6][SPLIT_MAX];
-    struct split_vertex *rest = buffer[0], *rest_next = buffer[1];
-    int nrest = 3;
-    for (int k = 0; k < 3; k++) {
-        P[k] = &f->prep->point[point[k]];
-        if (sums)
-            for (int d = 0; d < 3; d++)
-                corner[k][d] = P[k]->position[d] - T->centroid[d];
-        rest[k].u = f->prep->point_uv[2 * point[k]];
-        rest[k].v = f->prep->point_uv[2 * point[k] + 1];
-        rest[k].b[0] = rest[k].b[1] = rest[k].b[2] = 0;
-        rest[k].b[k] = 1;
-    }
-    for (int j = j0; j <= j1 && nrest >= 3; j++) {
-        struct split_vertex *row;
-        int nrow;
-        if (j < j1) {
-            int nnext;
-            row = buffer[2];
-            panel_split(rest, nrest, 1, g->vmin + (j + 1) * g->dv, row, &nrow,
-                  rest_next, &nnext);
-            struct split_vertex *swap = rest;
-            rest = rest_next;
-            rest_next = swap;
-            nrest = nnext;
-        } else {
-            row = rest;
-            nrow = nrest;
-            nrest = 0;
-        }
-        struct split_vertex *row_next = buffer[3];
-        for (int i = i0; i <= i1 && nrow >= 3; i++) {
-            struct split_vertex *piece;
-            int npiece;
-            if (i < i1) {
-                int nnext;
-                piece = buffer[5];
-                panel_split(row, nrow, 0, g->umin + (i + 1) * g->du, piece,
-                      &npiece, row_next, &nnext);
-                row = row_next;
-                row_next = row_next == buffer[3] ? buffer[4] : buffer[3];
-                nrow = nnext;
-            } else {
-                piece = row;
-                npiece = nrow;
-                nrow = 0;
-            }
-            if (npiece < 3)
-                continue;
-            size_t cell = (size_t)j * g->nu + i;
-            if (sums)
-                piece_sums(f, T, corner, cell, piece, npiece);
-            else
-                piece_samples(f, P, cell, piece, npiece);
-        }
-    }
+    struct splitting s = {f, &f->prep->triangle[t], {NULL, NULL, NULL},
+                          {{0}}, sums};
+    for (int k = 0; k < 3; k++)
+        s.P[k] = &f->prep->point[point[k]];
+    if (sums)
+        panel_triangle_corners(f->prep, t, s.corner);
+    panel_split_cells(f->prep, t, f->line_u, (size_t)i0, (size_t)i1,
+                      f->line_v, (size_t)j0, (size_t)j1, 0, SIZE_MAX,
+                      split_piece, &s);
 }
 
 /* Pass 1 (sums set) or 2 for triangle t, whose corners span cells
@@ -388,13 +356,11 @@ static void cross(struct fast *f, uint32_t t, int i0, int i1, int j0, int j1,
     const struct panel_grid *g = f->grid;
     if (i1 == i0 + 1 && j1 == j0) {
         size_t low = (size_t)j0 * g->nu + i0;
-        if (cross_one_line(f, t, 0, g->umin + i1 * g->du, low, low + 1,
-                           sums))
+        if (cross_one_line(f, t, 0, f->line_u[i0], low, low + 1, sums))
             return;
     } else if (j1 == j0 + 1 && i1 == i0) {
         size_t low = (size_t)j0 * g->nu + i0;
-        if (cross_one_line(f, t, 1, g->vmin + j1 * g->dv, low, low + g->nu,
-                           sums))
+        if (cross_one_line(f, t, 1, f->line_v[j0], low, low + g->nu, sums))
             return;
     }
     split_triangle(f, t, i0, i1, j0, j1, sums);
@@ -427,12 +393,19 @@ int panels_build_fast(const struct panel_prep *prep,
     uint32_t *cell_of = malloc((prep->npoints ? prep->npoints : 1) *
                                sizeof *cell_of);
     uint32_t *listed = malloc((nt ? nt : 1) * sizeof *listed);
-    if (sums == NULL || cell_of == NULL || listed == NULL) {
+    double *line = malloc((size_t)(nu + nv) * sizeof *line);
+    if (sums == NULL || cell_of == NULL || listed == NULL || line == NULL) {
         free(sums);
         free(cell_of);
         free(listed);
+        free(line);
         return facet_error_set(err, FACET_EWORK, "out of memory (panels)");
     }
+    /* The lines triangles are clipped at, as panels_build places them. */
+    for (int i = 0; i < nu; i++)
+        line[i] = grid.umin + (i + 1) * grid.du;
+    for (int j = 0; j < nv; j++)
+        line[nu + j] = grid.vmin + (j + 1) * grid.dv;
 
     /* Each point's cell, packed: i, j << 16, near << 31. */
     double inverse_u = 1 / grid.du, inverse_v = 1 / grid.dv;
@@ -445,15 +418,17 @@ int panels_build_fast(const struct panel_prep *prep,
     }
 
     /* Pass 1; listed keeps the triangles pass 2 must look at. */
-    struct fast f = {prep, &grid, sums, NULL, NULL, NULL, cell_of};
+    struct fast f = {prep, &grid, sums, NULL, NULL, NULL, cell_of, line,
+                     line + nu};
     size_t nlisted = 0;
     for (size_t t = 0; t < nt; t++) {
         const uint32_t *point = prep->corner + 3 * (size_t)t;
         uint32_t a = cell_of[point[0]], b = cell_of[point[1]],
                  c = cell_of[point[2]];
         if (a == b && b == c) {
-            cell_moments_add_triangle(&sums[(size_t)CELL_J(a) * nu + CELL_I(a)],
-                         &prep->triangle[t]);
+            cell_moments_add_triangle(
+                &sums[(size_t)CELL_J(a) * nu + CELL_I(a)],
+                &prep->triangle[t]);
             if (CELL_NEAR(a))
                 listed[nlisted++] = (uint32_t)t;
             continue;
@@ -464,7 +439,8 @@ int panels_build_fast(const struct panel_prep *prep,
         int j1 = max3(CELL_J(a), CELL_J(b), CELL_J(c));
         listed[nlisted++] = (uint32_t)t;
         if (i0 == i1 && j0 == j1)
-            cell_moments_add_triangle(&sums[(size_t)j0 * nu + i0], &prep->triangle[t]);
+            cell_moments_add_triangle(&sums[(size_t)j0 * nu + i0],
+                                      &prep->triangle[t]);
         else
             cross(&f, (uint32_t)t, i0, i1, j0, j1, 1);
     }
@@ -476,6 +452,7 @@ int panels_build_fast(const struct panel_prep *prep,
     if (rc != FACET_OK) {
         free(cell_of);
         free(listed);
+        free(line);
         return rc;
     }
     f.cell_panel = out->cell_panel;
@@ -544,5 +521,6 @@ int panels_build_fast(const struct panel_prep *prep,
     free(outlines);
     free(cell_of);
     free(listed);
+    free(line);
     return FACET_OK;
 }

@@ -165,25 +165,31 @@ static int note_piece_vertices(struct divide_job *job, uint32_t t,
     return FACET_OK;
 }
 
-/* Adds a piece of triangle t to fine cell (column, row). */
-static int add_piece(struct divide_job *job, uint32_t t,
-                     const double corner[3][3], size_t column, size_t row,
+/* One triangle being divided: what add_piece needs besides the piece. */
+struct dividing {
+    struct divide_job *job;
+    uint32_t t;
+    double corner[3][3];  /* relative to the triangle's centroid */
+};
+
+/* Adds a piece of the triangle to fine cell (column, row). */
+static int add_piece(void *context, size_t column, size_t row,
                      const struct split_vertex *piece, int count)
 {
-    struct panel_lattice *L = job->lattice;
-    const struct panel_prep_triangle *T = &L->prep->triangle[t];
+    struct dividing *d = context;
+    struct panel_lattice *L = d->job->lattice;
+    const struct panel_prep_triangle *T = &L->prep->triangle[d->t];
     size_t cell = row * L->ncolumns + column;
     struct piece_moments m;
-    panel_piece_moments(T, corner, piece, count, &m);
+    panel_piece_moments(T, d->corner, piece, count, &m);
     cell_moments_add(&L->fine[cell], T->centroid, &m);
     if (m.area > 0)
-        job->fine_pieces[cell]++;
-    return note_piece_vertices(job, t, column, row, piece, count);
+        d->job->fine_pieces[cell]++;
+    return note_piece_vertices(d->job, d->t, column, row, piece, count);
 }
 
-/* Clips triangle t along the fine lines, row by row and then cell by cell
- * (panel_fast.c's split_triangle over uneven lines), into the fine sums of
- * the job's rows. */
+/* Clips triangle t along the fine lines into the fine sums of the job's
+ * rows. */
 static int divide_triangle(struct divide_job *job, uint32_t t)
 {
     struct panel_lattice *L = job->lattice;
@@ -211,64 +217,10 @@ static int divide_triangle(struct divide_job *job, uint32_t t)
             job->fine_pieces[cell]++;
         return FACET_OK;
     }
-    double corner[3][3];
-    struct split_vertex buffer[6][SPLIT_MAX];
-    struct split_vertex *rest = buffer[0], *rest_next = buffer[1];
-    int nrest = 3;
-    for (int k = 0; k < 3; k++) {
-        const struct panel_prep_point *P = &prep->point[point[k]];
-        for (int d = 0; d < 3; d++)
-            corner[k][d] = P->position[d] - T->centroid[d];
-        rest[k].u = prep->point_uv[2 * point[k]];
-        rest[k].v = prep->point_uv[2 * point[k] + 1];
-        rest[k].b[0] = rest[k].b[1] = rest[k].b[2] = 0;
-        rest[k].b[k] = 1;
-    }
-    for (size_t r = r0; r <= r1 && nrest >= 3; r++) {
-        struct split_vertex *row;
-        int nrow;
-        if (r < r1) {
-            int nnext;
-            row = buffer[2];
-            panel_split(rest, nrest, 1, L->line[1][r], row, &nrow, rest_next,
-                        &nnext);
-            struct split_vertex *swap = rest;
-            rest = rest_next;
-            rest_next = swap;
-            nrest = nnext;
-        } else {
-            row = rest;
-            nrow = nrest;
-            nrest = 0;
-        }
-        if (r < job->row_lo)
-            continue;
-        if (r >= job->row_hi)
-            break;
-        struct split_vertex *row_next = buffer[3];
-        for (size_t c = c0; c <= c1 && nrow >= 3; c++) {
-            struct split_vertex *piece;
-            int npiece;
-            if (c < c1) {
-                int nnext;
-                piece = buffer[5];
-                panel_split(row, nrow, 0, L->line[0][c], piece, &npiece,
-                            row_next, &nnext);
-                row = row_next;
-                row_next = row_next == buffer[3] ? buffer[4] : buffer[3];
-                nrow = nnext;
-            } else {
-                piece = row;
-                npiece = nrow;
-                nrow = 0;
-            }
-            if (npiece < 3)
-                continue;
-            if (add_piece(job, t, corner, c, r, piece, npiece) != FACET_OK)
-                return FACET_EWORK;
-        }
-    }
-    return FACET_OK;
+    struct dividing d = {job, t, {{0}}};
+    panel_triangle_corners(prep, t, d.corner);
+    return panel_split_cells(prep, t, L->line[0], c0, c1, L->line[1], r0, r1,
+                             job->row_lo, job->row_hi, add_piece, &d);
 }
 
 static void divide_run(void *argument)

@@ -1,6 +1,6 @@
 /*
- * panel_split.c: cutting a piece of a triangle along a grid line, and its
- * moments. See panel_sums.h.
+ * panel_split.c: cutting a triangle along grid lines into the pieces of
+ * the cells it crosses, and a piece's moments. See panel_sums.h.
  */
 #include <math.h>
 #include <string.h>
@@ -79,3 +79,14 @@ void panel_piece_moments(const struct panel_prep_triangle *T,
     *m_out = m;
 }
 
+
+void panel_triangle_corners(const struct panel_prep *prep, uint32_t t,
+                            double corner[3][3])
+{
+    const struct panel_prep_triangle *T = &prep->triangle[t];
+    const uint32_t *point = prep->corner + 3 * (size_t)t;
+    for (int k = 0; k < 3; k++)
+        for (int d = 0; d < 3; d++)
+            corner[k][d] = prep->point[point[k]].position[d] -
+                           T->centroid[d];
+}

@@ -170,6 +170,95 @@ void panel_split(const struct split_vertex *in, int count, int axis,
                  double limit, struct split_vertex *low, int *nlow,
                  struct split_vertex *high, int *nhigh);
 
+/* Receives one piece cut from a triangle by panel_split_cells: the convex
+ * polygon piece[0..count) (count >= 3) in cell (column, row). A non-zero
+ * return stops the walk and is returned by it. */
+typedef int (*split_piece_visitor)(void *context, size_t column, size_t row,
+                                   const struct split_vertex *piece,
+                                   int count);
+
+/* Splits triangle t of prep, whose corners span columns c0..c1 and rows
+ * r0..r1, row by row along v_line and then cell by cell along u_line
+ * (column c lies below u_line[c], row r below v_line[r]), and hands every
+ * piece of three or more vertices in rows row_lo..row_hi-1 to visit,
+ * rows in order, columns in order within a row. Returns 0 or visit's
+ * first non-zero return. Inline, so that a visitor known where it is
+ * called is inlined with it, as the single-grid way's was before it
+ * shared this walk with the lattice. */
+static inline int panel_split_cells(const struct panel_prep *prep,
+                                    uint32_t t,
+                                    const double *u_line, size_t c0,
+                                    size_t c1, const double *v_line,
+                                    size_t r0, size_t r1, size_t row_lo,
+                                    size_t row_hi, split_piece_visitor visit,
+                                    void *context)
+{
+    const uint32_t *point = prep->corner + 3 * (size_t)t;
+    /* Buffers taken in turn rather than copied: the rest of the triangle
+     * (two), the row split off it, the rest of the row (two), the piece
+     * split off that. */
+    struct split_vertex buffer[6][SPLIT_MAX];
+    struct split_vertex *rest = buffer[0], *rest_next = buffer[1];
+    int nrest = 3;
+    for (int k = 0; k < 3; k++) {
+        rest[k].u = prep->point_uv[2 * point[k]];
+        rest[k].v = prep->point_uv[2 * point[k] + 1];
+        rest[k].b[0] = rest[k].b[1] = rest[k].b[2] = 0;
+        rest[k].b[k] = 1;
+    }
+    for (size_t r = r0; r <= r1 && nrest >= 3; r++) {
+        struct split_vertex *row;
+        int nrow;
+        if (r < r1) {
+            int nnext;
+            row = buffer[2];
+            panel_split(rest, nrest, 1, v_line[r], row, &nrow, rest_next,
+                        &nnext);
+            struct split_vertex *swap = rest;
+            rest = rest_next;
+            rest_next = swap;
+            nrest = nnext;
+        } else {
+            row = rest;
+            nrow = nrest;
+            nrest = 0;
+        }
+        if (r < row_lo)
+            continue;
+        if (r >= row_hi)
+            break;
+        struct split_vertex *row_next = buffer[3];
+        for (size_t c = c0; c <= c1 && nrow >= 3; c++) {
+            struct split_vertex *piece;
+            int npiece;
+            if (c < c1) {
+                int nnext;
+                piece = buffer[5];
+                panel_split(row, nrow, 0, u_line[c], piece, &npiece,
+                            row_next, &nnext);
+                row = row_next;
+                row_next = row_next == buffer[3] ? buffer[4] : buffer[3];
+                nrow = nnext;
+            } else {
+                piece = row;
+                npiece = nrow;
+                nrow = 0;
+            }
+            if (npiece < 3)
+                continue;
+            int stop = visit(context, c, r, piece, npiece);
+            if (stop != 0)
+                return stop;
+        }
+    }
+    return 0;
+}
+
+/* The corners of triangle t of prep relative to its centroid (m): what
+ * panel_piece_moments takes. */
+void panel_triangle_corners(const struct panel_prep *prep, uint32_t t,
+                            double corner[3][3]);
+
 /* The moments of a piece (count vertices, barycentric in triangle T) about
  * T's centroid, from the fan of its barycentric polygon; corner holds T's
  * corners relative to its centroid (m). */
