@@ -126,17 +126,23 @@ static int check_keys(const struct option_browse *b, struct facet_error *err)
 /* Appends "FROM options WHERE run = ?1 [AND rank = 1] AND (filter)"; with
  * filter_first, the filter goes into "number IN (SELECT ...)", which
  * SQLite evaluates first, by the filter's best index or a scan, so the
- * page is then read by primary key and sorted (see key_sql). */
-static void add_from(struct sql_text *s, const struct option_browse *b)
+ * page is then read by primary key and sorted (see key_sql). With scan,
+ * the filter is written for a read of the run's rows by the primary key
+ * (filter_sql_scan): the form of a count that may run into every option
+ * of a run, where filter_first has nothing to add. */
+static void add_from(struct sql_text *s, const struct option_browse *b,
+                     int scan)
 {
+    int filter_first = b->filter_first && !scan;
     sql_add(s, " FROM options WHERE run = ?1");
-    if (b->filter_first)
+    if (filter_first)
         sql_add(s, " AND number IN (SELECT number FROM options"
                    " WHERE run = ?1");
     if (b->pareto_only)
         sql_add(s, " AND rank = 1");
     if (b->where != NULL) {
-        char *fragment = filter_sql(b->where, FILTER_FIRST);
+        char *fragment = scan ? filter_sql_scan(b->where, FILTER_FIRST)
+                              : filter_sql(b->where, FILTER_FIRST);
         if (fragment == NULL) {
             s->failed = 1;
             return;
@@ -144,7 +150,7 @@ static void add_from(struct sql_text *s, const struct option_browse *b)
         sql_add(s, " AND (%s)", fragment);
         free(fragment);
     }
-    if (b->filter_first)
+    if (filter_first)
         sql_add(s, ")");
 }
 
@@ -284,7 +290,7 @@ int store_browse_page(struct store *store, const struct option_browse *b,
         return rc;
     struct sql_text s = {0};
     sql_add(&s, "SELECT number");
-    add_from(&s, b);
+    add_from(&s, b, 0);
     if (after != NULL)
         add_keyset(&s, b, backward);
     add_order(&s, b, backward);
@@ -309,7 +315,7 @@ int store_browse_offset(struct store *store, const struct option_browse *b,
         return rc;
     struct sql_text s = {0};
     sql_add(&s, "SELECT number");
-    add_from(&s, b);
+    add_from(&s, b, 0);
     add_order(&s, b, 0);
     sql_add(&s, " LIMIT ?2 OFFSET ?3");
     sqlite3_stmt *stmt;
@@ -345,32 +351,13 @@ static int single_row(struct store *store, sqlite3_stmt *stmt,
     return rc;
 }
 
-/* Appends " FROM options WHERE run = ?1 ..." as add_from does, with the
- * filter written for a scan of the run's rows (filter_sql_scan): the form
- * a count that may run into every option of a run takes. */
-static void add_from_scan(struct sql_text *s, const struct option_browse *b)
-{
-    sql_add(s, " FROM options WHERE run = ?1");
-    if (b->pareto_only)
-        sql_add(s, " AND rank = 1");
-    if (b->where != NULL) {
-        char *fragment = filter_sql_scan(b->where, FILTER_FIRST);
-        if (fragment == NULL) {
-            s->failed = 1;
-            return;
-        }
-        sql_add(s, " AND (%s)", fragment);
-        free(fragment);
-    }
-}
-
 int store_browse_count(struct store *store, const struct option_browse *b,
                        int64_t *count, struct facet_error *err)
 {
     *count = 0;
     struct sql_text s = {0};
     sql_add(&s, "SELECT count(*)");
-    add_from_scan(&s, b);
+    add_from(&s, b, 1);
     sqlite3_stmt *stmt;
     int rc = prepare(store, &s, b, NULL, &stmt, "counting options", err);
     if (rc != FACET_OK)
@@ -391,7 +378,7 @@ int store_browse_count_capped(struct store *store,
         return rc;
     struct sql_text s = {0};
     sql_add(&s, "SELECT count(*) FROM (SELECT 1");
-    add_from(&s, b);
+    add_from(&s, b, 0);
     if (after != NULL)
         add_keyset(&s, b, backward);
     sql_add(&s, " LIMIT ?2)");
@@ -440,7 +427,7 @@ int store_browse_count_step(struct store *store,
      * over its rows: ?3 the number to start after, ?2 the last one. */
     struct sql_text s = {0};
     sql_add(&s, "SELECT count(*)");
-    add_from_scan(&s, b);
+    add_from(&s, b, 1);
     sql_add(&s, " AND number > ?3%s", last ? "" : " AND number <= ?2");
     rc = prepare(store, &s, b, NULL, &stmt, "counting options", err);
     if (rc != FACET_OK)
@@ -471,7 +458,7 @@ int store_browse_position(struct store *store,
         return rc;
     struct sql_text s = {0};
     sql_add(&s, "SELECT count(*)");
-    add_from(&s, b);
+    add_from(&s, b, 0);
     add_keyset(&s, b, 1);
     sqlite3_stmt *stmt;
     rc = prepare(store, &s, b, option, &stmt, "locating an option", err);
@@ -495,7 +482,7 @@ int store_browse_range(struct store *store, const struct option_browse *b,
     key_sql(&plain, column, expr, sizeof expr);
     struct sql_text s = {0};
     sql_add(&s, "SELECT min(%s), max(%s)", expr, expr);
-    add_from(&s, b);
+    add_from(&s, b, 0);
     sqlite3_stmt *stmt;
     int rc = prepare(store, &s, b, NULL, &stmt, "measuring options", err);
     if (rc != FACET_OK)
@@ -511,7 +498,7 @@ int store_browse_sample(struct store *store, const struct option_browse *b,
 {
     struct sql_text s = {0};
     sql_add(&s, "SELECT number");
-    add_from(&s, b);
+    add_from(&s, b, 0);
     sql_add(&s, " AND (?3 <= 1 OR number %% ?3 = 0 OR rank = 1)"
                 " ORDER BY number LIMIT ?2");
     sqlite3_stmt *stmt;
