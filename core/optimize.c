@@ -458,20 +458,21 @@ int search_batch(struct search *s, const struct design_point *points,
     }
     size_t fresh = s->nknown - first_new;
     if (fresh > 0) {
-        struct design_point *todo = malloc(fresh * sizeof *todo);
+        struct design_point *points_new = malloc(fresh * sizeof *points_new);
         struct option_totals *totals = malloc(fresh * sizeof *totals);
-        if (todo == NULL || totals == NULL) {
-            free(todo);
+        if (points_new == NULL || totals == NULL) {
+            free(points_new);
             free(totals);
             return facet_error_set(err, FACET_EWORK, "out of memory");
         }
         for (size_t k = 0; k < fresh; k++)
-            todo[k] = s->known[first_new + k].point;
+            points_new[k] = s->known[first_new + k].point;
         rc = optimize_evaluate(s->surface, s->lattice, &s->settings->base,
-                               todo, fresh, s->settings->jobs, totals, err);
+                               points_new, fresh, s->settings->jobs, totals,
+                               err);
         for (size_t k = 0; rc == FACET_OK && k < fresh; k++)
             s->known[first_new + k].totals = totals[k];
-        free(todo);
+        free(points_new);
         free(totals);
         if (rc == FACET_OK && s->hooks->store != NULL)
             rc = s->hooks->store(s->hooks->context, s->known + first_new,
