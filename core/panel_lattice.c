@@ -182,52 +182,23 @@ static inline void sample_cell(struct pass2 *pass, size_t cell,
         cell_outline_take(&pass->outlines[s->outline], p);
 }
 
-int panels_build_lattice(const struct panel_lattice *L, int nu, int nv,
-                         struct panelization *out, struct facet_error *err)
+/* Pass 1: the cells' sums, and known[] the inner grid nodes the lattice
+ * found on the surface (panels_fit locates the others). Each grid node's
+ * running sums are gathered once (a node is a corner of four cells), then
+ * each cell comes from its four corners. Returns FACET_OK or FACET_EWORK. */
+static int grid_sums(const struct panel_lattice *L,
+                     const struct panel_grid *grid,
+                     const struct grid_axis axis[2],
+                     struct cell_moments *sums, struct grid_node *known)
 {
-    const struct panel_prep *prep = L->prep;
-    struct panel_grid grid;
-    int rc = panel_grid_init(&grid, prep->mesh, prep->index, nu, nv, out,
-                             err);
-    if (rc != FACET_OK)
-        return rc;
-    if (!panel_lattice_has(L, nu, nv))
-        return facet_error_set(err, FACET_EINPUT,
-            "grid %dx%d is not one of the panel lattice's", nu, nv);
-    size_t ncells = (size_t)nu * (size_t)nv;
-    struct grid_axis axis[2];
-    memset(axis, 0, sizeof axis);
-    struct cell_moments *sums = calloc(ncells, sizeof *sums);
-    rc = sums == NULL ? FACET_EWORK
-                      : grid_axis_make(L, 0, nu, grid.umin, grid.du,
-                                       &axis[0]);
-    if (rc == FACET_OK)
-        rc = grid_axis_make(L, 1, nv, grid.vmin, grid.dv, &axis[1]);
-    if (rc != FACET_OK) {
-        free(sums);
-        grid_axis_free(&axis[0]);
-        grid_axis_free(&axis[1]);
-        if (rc == FACET_EINPUT)
-            return facet_error_set(err, FACET_EINPUT,
-                "grid %dx%d: a line is missing from the panel lattice", nu,
-                nv);
-        return facet_error_set(err, FACET_EWORK, "out of memory (panels)");
-    }
-
-    /* Pass 1: each grid node's running sums gathered once (a node is a
-     * corner of four cells), then each cell from its four corners. */
+    int nu = grid->nu, nv = grid->nv;
     size_t W = L->ncolumns + 1, nnodes = (size_t)(nu + 1) * (size_t)(nv + 1);
     struct lattice_sums *node = malloc(nnodes * sizeof *node);
     uint32_t *node_pieces = malloc(nnodes * sizeof *node_pieces);
-    struct grid_node *known = calloc(nnodes, sizeof *known);
-    if (node == NULL || node_pieces == NULL || known == NULL) {
+    if (node == NULL || node_pieces == NULL) {
         free(node);
         free(node_pieces);
-        free(known);
-        free(sums);
-        grid_axis_free(&axis[0]);
-        grid_axis_free(&axis[1]);
-        return facet_error_set(err, FACET_EWORK, "out of memory (panels)");
+        return FACET_EWORK;
     }
     for (int j = 0; j <= nv; j++)
         for (int i = 0; i <= nu; i++) {
@@ -235,7 +206,7 @@ int panels_build_lattice(const struct panel_lattice *L, int nu, int nv,
             node[(size_t)j * (nu + 1) + i] = L->prefix[at];
             node_pieces[(size_t)j * (nu + 1) + i] = L->pieces[at];
         }
-    double cell_uv_area = grid.du * grid.dv;
+    double cell_uv_area = grid->du * grid->dv;
     for (int j = 0; j < nv; j++)
         for (int i = 0; i < nu; i++) {
             size_t n00 = (size_t)j * (nu + 1) + i, n01 = n00 + 1;
@@ -257,8 +228,6 @@ int panels_build_lattice(const struct panel_lattice *L, int nu, int nv,
         }
     free(node);
     free(node_pieces);
-    /* The inner nodes the lattice found on the surface; panels_fit
-     * locates the others. */
     for (int j = 1; j < nv; j++)
         for (int i = 1; i < nu; i++) {
             const struct lattice_corner *q =
@@ -270,29 +239,28 @@ int panels_build_lattice(const struct panel_lattice *L, int nu, int nv,
             k->state = 1;
             memcpy(k->point, q->at.position, sizeof k->point);
         }
-    struct cell_samples *samples;
-    struct cell_outline *outlines;
-    rc = panels_fit(&grid, sums, known, out, &samples, &outlines, err);
-    free(sums);
-    free(known);
-    if (rc != FACET_OK) {
-        grid_axis_free(&axis[0]);
-        grid_axis_free(&axis[1]);
-        return rc;
-    }
+    return FACET_OK;
+}
 
-    /* Pass 2: the mesh points... */
+/* Pass 2: the deviation, edge curvature and outline of each of out's
+ * panels into samples (and outlines), from the mesh points, the cuts of
+ * mesh edges by the grid's lines and the crossings of its lines. Returns
+ * FACET_OK or FACET_EWORK. */
+static int grid_samples(const struct panel_lattice *L,
+                        const struct grid_axis axis[2],
+                        const struct panelization *out,
+                        struct cell_samples *samples,
+                        struct cell_outline *outlines)
+{
+    const struct panel_prep *prep = L->prep;
+    int nu = out->nu, nv = out->nv;
     size_t npanels = out->npanels ? out->npanels : 1;
     struct sample_state *state = aligned_alloc(64, npanels * sizeof *state);
     double *k_any = malloc(2 * npanels * sizeof *k_any);
     if (state == NULL || k_any == NULL) {
         free(state);
         free(k_any);
-        free(samples);
-        free(outlines);
-        grid_axis_free(&axis[0]);
-        grid_axis_free(&axis[1]);
-        return facet_error_set(err, FACET_EWORK, "out of memory (panels)");
+        return FACET_EWORK;
     }
     for (size_t n = 0; n < out->npanels; n++) {
         const struct cell_samples *c = &samples[n];
@@ -311,14 +279,14 @@ int panels_build_lattice(const struct panel_lattice *L, int nu, int nv,
     }
     struct pass2 pass = {out->cell_panel, L->origin, state, k_any, outlines};
     const uint32_t *column_cell = axis[0].cell_of, *row_cell = axis[1].cell_of;
+    /* The mesh points... */
     for (size_t p = 0; p < prep->npoints; p++) {
         if (on_grid_line(L, axis, (uint32_t)p))
             continue;
         size_t cell = (size_t)row_cell[L->place[2 * p + 1]] * nu +
                       column_cell[L->place[2 * p]];
         const struct panel_prep_point *P = &prep->point[p];
-        sample_cell(&pass, cell, P->position, P->k1, P->k2,
-                    1);
+        sample_cell(&pass, cell, P->position, P->k1, P->k2, 1);
     }
     /* (a point on one of the grid's lines in each cell it borders)... */
     for (size_t e = 0; e < L->nextra; e++) {
@@ -327,8 +295,7 @@ int panels_build_lattice(const struct panel_lattice *L, int nu, int nv,
             continue;
         size_t cell = (size_t)row_cell[x->row] * nu + column_cell[x->column];
         const struct panel_prep_point *P = &prep->point[x->point];
-        sample_cell(&pass, cell, P->position, P->k1, P->k2,
-                    1);
+        sample_cell(&pass, cell, P->position, P->k1, P->k2, 1);
     }
     /* ...where the grid's lines cut mesh edges... */
     for (int i = 1; i < nu; i++) {
@@ -337,10 +304,9 @@ int panels_build_lattice(const struct panel_lattice *L, int nu, int nv,
              n++) {
             const struct lattice_cut *x = &L->cut[0][n];
             size_t cell = (size_t)row_cell[x->across] * nu + (size_t)i;
-            sample_cell(&pass, cell - 1, x->at.position,
-                        x->at.k1, x->at.k2, 1);
-            sample_cell(&pass, cell, x->at.position,
-                        x->at.k1, x->at.k2, 1);
+            sample_cell(&pass, cell - 1, x->at.position, x->at.k1, x->at.k2,
+                        1);
+            sample_cell(&pass, cell, x->at.position, x->at.k1, x->at.k2, 1);
         }
     }
     for (int j = 1; j < nv; j++) {
@@ -349,10 +315,9 @@ int panels_build_lattice(const struct panel_lattice *L, int nu, int nv,
              n++) {
             const struct lattice_cut *x = &L->cut[1][n];
             size_t cell = (size_t)j * nu + column_cell[x->across];
-            sample_cell(&pass, cell - (size_t)nu,
-                        x->at.position, x->at.k1, x->at.k2, 1);
-            sample_cell(&pass, cell, x->at.position,
-                        x->at.k1, x->at.k2, 1);
+            sample_cell(&pass, cell - (size_t)nu, x->at.position, x->at.k1,
+                        x->at.k2, 1);
+            sample_cell(&pass, cell, x->at.position, x->at.k1, x->at.k2, 1);
         }
     }
     /* ...and where they cross on the surface. */
@@ -367,8 +332,8 @@ int panels_build_lattice(const struct panel_lattice *L, int nu, int nv,
             size_t around[4] = {cell - (size_t)nu - 1, cell - (size_t)nu,
                                 cell - 1, cell};
             for (int a = 0; a < 4; a++)
-                sample_cell(&pass, around[a],
-                            q->at.position, q->at.k1, q->at.k2, q->state);
+                sample_cell(&pass, around[a], q->at.position, q->at.k1,
+                            q->at.k2, q->state);
         }
     for (size_t n = 0; n < out->npanels; n++) {
         struct cell_samples *c = &samples[n];
@@ -382,10 +347,60 @@ int panels_build_lattice(const struct panel_lattice *L, int nu, int nv,
     }
     free(state);
     free(k_any);
+    return FACET_OK;
+}
+
+int panels_build_lattice(const struct panel_lattice *L, int nu, int nv,
+                         struct panelization *out, struct facet_error *err)
+{
+    const struct panel_prep *prep = L->prep;
+    struct panel_grid grid;
+    int rc = panel_grid_init(&grid, prep->mesh, prep->index, nu, nv, out,
+                             err);
+    if (rc != FACET_OK)
+        return rc;
+    if (!panel_lattice_has(L, nu, nv))
+        return facet_error_set(err, FACET_EINPUT,
+            "grid %dx%d is not one of the panel lattice's", nu, nv);
+    size_t ncells = (size_t)nu * (size_t)nv;
+    size_t nnodes = (size_t)(nu + 1) * (size_t)(nv + 1);
+    struct grid_axis axis[2];
+    memset(axis, 0, sizeof axis);
+    struct cell_moments *sums = calloc(ncells, sizeof *sums);
+    struct grid_node *known = calloc(nnodes, sizeof *known);
+    struct cell_samples *samples = NULL;
+    struct cell_outline *outlines = NULL;
+    rc = sums == NULL || known == NULL
+             ? FACET_EWORK
+             : grid_axis_make(L, 0, nu, grid.umin, grid.du, &axis[0]);
+    if (rc == FACET_OK)
+        rc = grid_axis_make(L, 1, nv, grid.vmin, grid.dv, &axis[1]);
+    if (rc == FACET_EINPUT) {
+        facet_error_set(err, FACET_EINPUT,
+            "grid %dx%d: a line is missing from the panel lattice", nu, nv);
+        goto done;
+    }
+    if (rc == FACET_OK)
+        rc = grid_sums(L, &grid, axis, sums, known);
+    if (rc != FACET_OK) {
+        facet_error_set(err, FACET_EWORK, "out of memory (panels)");
+        goto done;
+    }
+    rc = panels_fit(&grid, sums, known, out, &samples, &outlines, err);
+    if (rc != FACET_OK)
+        goto done;
+    rc = grid_samples(L, axis, out, samples, outlines);
+    if (rc != FACET_OK) {
+        facet_error_set(err, FACET_EWORK, "out of memory (panels)");
+        goto done;
+    }
     panels_finish(PANEL_EXTREMES, samples, outlines, out);
+done:
+    free(sums);
+    free(known);
     free(samples);
     free(outlines);
     grid_axis_free(&axis[0]);
     grid_axis_free(&axis[1]);
-    return FACET_OK;
+    return rc;
 }
