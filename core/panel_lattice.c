@@ -182,6 +182,14 @@ static inline void sample_cell(struct pass2 *pass, size_t cell,
         cell_outline_take(&pass->outlines[s->outline], p);
 }
 
+/* Where the grid's u-line i crosses its v-line j (both inner lines). */
+static const struct lattice_corner *grid_crossing(
+    const struct panel_lattice *L, const struct grid_axis axis[2], int i,
+    int j)
+{
+    return &L->corner[axis[1].line_of[j] * L->nline[0] + axis[0].line_of[i]];
+}
+
 /* Pass 1: the cells' sums, and known[] the inner grid nodes the lattice
  * found on the surface (panels_fit locates the others). Each grid node's
  * running sums are gathered once (a node is a corner of four cells), then
@@ -230,9 +238,7 @@ static int grid_sums(const struct panel_lattice *L,
     free(node_pieces);
     for (int j = 1; j < nv; j++)
         for (int i = 1; i < nu; i++) {
-            const struct lattice_corner *q =
-                &L->corner[axis[1].line_of[j] * L->nline[0] +
-                           axis[0].line_of[i]];
+            const struct lattice_corner *q = grid_crossing(L, axis, i, j);
             if (q->state < 0)
                 continue;
             struct grid_node *k = &known[(size_t)j * (nu + 1) + i];
@@ -323,9 +329,7 @@ static int grid_samples(const struct panel_lattice *L,
     /* ...and where they cross on the surface. */
     for (int j = 1; j < nv; j++)
         for (int i = 1; i < nu; i++) {
-            const struct lattice_corner *q =
-                &L->corner[axis[1].line_of[j] * L->nline[0] +
-                           axis[0].line_of[i]];
+            const struct lattice_corner *q = grid_crossing(L, axis, i, j);
             if (q->state < 0)
                 continue;
             size_t cell = (size_t)j * nu + (size_t)i;
