@@ -378,6 +378,16 @@ static void assert_close(double fast, double reference, double tolerance,
                  panel->i, panel->j, what, fast, reference);
 }
 
+/* Opens one of the surfaces the ways of measuring are compared on: an
+ * example at its default resolution, or "disc", the trimmed disc. */
+static void open_test_surface(const char *name, struct surface *s)
+{
+    if (strcmp(name, "disc") == 0)
+        open_trimmed_disc(s);
+    else
+        open_example(name, 0, s);
+}
+
 /* Asserts that got has reference's panels, every measure to 1e-9 of its
  * scale (a sliver's judged against a triangle's area: both computations
  * round relative to the triangles they cut); returns its trimmed panels. */
@@ -441,10 +451,7 @@ static void test_fast_matches_reference(void **state)
                       {90, 60}};
     for (int e = 0; e < 4; e++) {
         struct surface s;
-        if (strcmp(names[e], "disc") == 0)
-            open_trimmed_disc(&s);
-        else
-            open_example(names[e], 0, &s);
+        open_test_surface(names[e], &s);
         size_t trimmed = 0;
         for (int g = 0; g < 6; g++)
             for (int mode = 0; mode < 2; mode++) {
@@ -478,10 +485,7 @@ static void test_lattice_matches_reference(void **state)
     int spaces[][4] = {{20, 24, 35, 38}, {1, 8, 1, 4}, {36, 40, 46, 50}};
     for (int e = 0; e < 4; e++) {
         struct surface s;
-        if (strcmp(names[e], "disc") == 0)
-            open_trimmed_disc(&s);
-        else
-            open_example(names[e], 0, &s);
+        open_test_surface(names[e], &s);
         size_t trimmed = 0;
         for (int k = 0; k < 3; k++) {
             struct panel_lattice *lattice;
