@@ -190,12 +190,8 @@ static void piece_samples(struct fast *f, const struct panel_prep_point *P[3],
                                              : NULL;
     for (int k = 0; k < count; k++) {
         const double *b = piece[k].b;
-        double x[3];
-        for (int d = 0; d < 3; d++)
-            x[d] = b[0] * P[0]->position[d] + b[1] * P[1]->position[d] +
-                   b[2] * P[2]->position[d];
-        double k1 = b[0] * P[0]->k1 + b[1] * P[1]->k1 + b[2] * P[2]->k1;
-        double k2 = b[0] * P[0]->k2 + b[1] * P[1]->k2 + b[2] * P[2]->k2;
+        double x[3], k1, k2;
+        panel_point_at(P, b, x, &k1, &k2);
         cell_sample(s, o, x, k1, k2,
                     b[0] <= 1e-12 || b[1] <= 1e-12 || b[2] <= 1e-12);
     }

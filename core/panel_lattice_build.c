@@ -69,12 +69,7 @@ static void sample_at(const struct panel_prep *prep, const uint32_t *point,
     const struct panel_prep_point *P[3] = {&prep->point[point[0]],
                                            &prep->point[point[1]],
                                            &prep->point[point[2]]};
-    for (int d = 0; d < 3; d++)
-        out->position[d] = b[0] * P[0]->position[d] +
-                           b[1] * P[1]->position[d] +
-                           b[2] * P[2]->position[d];
-    out->k1 = b[0] * P[0]->k1 + b[1] * P[1]->k1 + b[2] * P[2]->k1;
-    out->k2 = b[0] * P[0]->k2 + b[1] * P[1]->k2 + b[2] * P[2]->k2;
+    panel_point_at(P, b, out->position, &out->k1, &out->k2);
 }
 
 /* --- building --- */

@@ -170,6 +170,19 @@ void panel_split(const struct split_vertex *in, int count, int axis,
                  double limit, struct split_vertex *low, int *nlow,
                  struct split_vertex *high, int *nhigh);
 
+/* The point at barycentric b of the triangle with corners P: its position
+ * (m) and curvature k1, k2 (1/m), interpolated as the mesh is. */
+static inline void panel_point_at(const struct panel_prep_point *P[3],
+                                  const double b[3], double position[3],
+                                  double *k1, double *k2)
+{
+    for (int d = 0; d < 3; d++)
+        position[d] = b[0] * P[0]->position[d] + b[1] * P[1]->position[d] +
+                      b[2] * P[2]->position[d];
+    *k1 = b[0] * P[0]->k1 + b[1] * P[1]->k1 + b[2] * P[2]->k1;
+    *k2 = b[0] * P[0]->k2 + b[1] * P[1]->k2 + b[2] * P[2]->k2;
+}
+
 /* Receives one piece cut from a triangle by panel_split_cells: the convex
  * polygon piece[0..count) (count >= 3) in cell (column, row). A non-zero
  * return stops the walk and is returned by it. */
