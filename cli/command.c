@@ -8,6 +8,7 @@
 const struct command *const command_table[] = {
     &cmd_info,
     &cmd_classify,
+    &cmd_curvature,
     &cmd_optimize,
     &cmd_runs,
     &cmd_options,

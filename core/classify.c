@@ -19,9 +19,12 @@ void classify_defaults(struct classify_options *options)
     options->max_panel_area = 7.06;
 }
 
+/* The sign of a curvature, 0 within the zero tolerance eps widened by
+ * rounding: a value computed as eps (1 + 1e-15) is eps. An exact 0 is
+ * always 0, whatever eps. */
 static int sign_of(double x, double eps)
 {
-    if (fabs(x) < eps)
+    if (fabs(x) <= eps * (1 + CLASSIFY_ROUNDING))
         return 0;
     return x > 0 ? 1 : -1;
 }
@@ -29,16 +32,24 @@ static int sign_of(double x, double eps)
 enum panel_class classify_curvature(double k1, double k2, double eps)
 {
     int s1 = sign_of(k1, eps), s2 = sign_of(k2, eps);
-    double k1z = s1 ? k1 : 0, k2z = s2 ? k2 : 0;
-    int sign_k = s1 * s2;
-    int sign_h = sign_of((k1z + k2z) / 2, eps);
-    if (sign_k < 0)
-        return sign_h < 0 ? CLASS_CONVEX_FEATURE_CURVE
-             : sign_h > 0 ? CLASS_CONCAVE_FEATURE_CURVE : CLASS_SADDLE;
-    if (sign_k == 0)
-        return sign_h < 0 ? CLASS_RULED_CONVEX
-             : sign_h > 0 ? CLASS_RULED_CONCAVE : CLASS_FLAT;
-    return sign_h < 0 ? CLASS_CONVEX_ROUND : CLASS_CONCAVE_ROUND;
+
+    /* K = 0: one curvature at most is non-zero, and H takes its sign, as
+     * k1 + k2 does after zeroing. No test of |H| here: a ruled panel with
+     * eps < |k1| < 2 eps has |H| < eps and would turn flat. */
+    if (s1 == 0 || s2 == 0) {
+        int s = s1 ? s1 : s2;
+        return s < 0 ? CLASS_RULED_CONVEX
+             : s > 0 ? CLASS_RULED_CONCAVE : CLASS_FLAT;
+    }
+    /* K > 0: both curvatures non-zero and of one sign, which H shares. */
+    if (s1 == s2)
+        return s1 < 0 ? CLASS_CONVEX_ROUND : CLASS_CONCAVE_ROUND;
+    /* K < 0, the saddle rule: a saddle when the two curvatures cancel to
+     * within the zero tolerance (|k1 + k2| / 2 <= eps), else a feature
+     * curve on the side of the larger curvature. */
+    int sign_h = sign_of((k1 + k2) / 2, eps);
+    return sign_h < 0 ? CLASS_CONVEX_FEATURE_CURVE
+         : sign_h > 0 ? CLASS_CONCAVE_FEATURE_CURVE : CLASS_SADDLE;
 }
 
 enum panel_type panel_type_of_class(enum panel_class class)
@@ -77,7 +88,26 @@ double classify_tolerance(const struct classify_options *options,
         return options->curvature_tol;
     if (!(panel->diameter > 0))
         return INFINITY;
-    return 8 * options->threshold / (panel->diameter * panel->diameter);
+    /* Never below the curvature of a sag of rounding size, so that t = 0
+     * still leaves a plane flat: its fitted curvature is rounding noise,
+     * and 8 * 0 / d^2 would call every sign of that noise a curvature. */
+    double sag = fmax(options->threshold, CLASSIFY_ROUNDING * panel->diameter);
+    return 8 * sag / (panel->diameter * panel->diameter);
+}
+
+int classify_within_threshold(const struct classify_options *options,
+                              const struct panel *panel)
+{
+    double rounding = CLASSIFY_ROUNDING *
+                      (isfinite(panel->diameter) ? panel->diameter : 0);
+    return panel->deviation <= options->threshold + rounding;
+}
+
+double classify_area_excess(double max_panel_area, double limit)
+{
+    if (max_panel_area <= limit * (1 + CLASSIFY_ROUNDING))
+        return 0;
+    return max_panel_area - limit;
 }
 
 void classify_panels(struct panelization *p,
@@ -94,7 +124,7 @@ void classify_panels(struct panelization *p,
         panel->class = classify_curvature(panel->k1, panel->k2,
                                           panel->curvature_tol);
         panel->type = panel_type_of_class(panel->class);
-        if (panel->deviation <= options->threshold)
+        if (classify_within_threshold(options, panel))
             panel->type = TYPE_FP;
         enum panel_type priced_as = panel->type;
         if (options->sp_as_fp && priced_as == TYPE_SP)
@@ -105,11 +135,9 @@ void classify_panels(struct panelization *p,
         totals->panels++;
         totals->count[panel->type]++;
         totals->area_of[panel->type] += panel->area;
-        totals->cost_of[panel->type] += panel->cost;
         totals->class_count[panel->class]++;
         totals->class_area[panel->class] += panel->area;
         totals->area += panel->area;
-        totals->cost += panel->cost;
         if (panel->type != TYPE_DP) {
             totals->planarity += panel->deviation;
             totals->p_dist += panel->p_dist;
@@ -118,7 +146,19 @@ void classify_panels(struct panelization *p,
         }
         totals->max_panel_area = fmax(totals->max_panel_area, panel->area);
     }
-    totals->feasible = totals->max_panel_area <= options->max_panel_area;
+    /* Cost from the areas per type, not from the panels one by one: two
+     * options whose type areas are equal then cost the same to the bit,
+     * whatever order their panels were summed in. */
+    for (int t = 0; t < TYPE_COUNT; t++) {
+        enum panel_type priced_as = (enum panel_type)t;
+        if (options->sp_as_fp && priced_as == TYPE_SP)
+            priced_as = TYPE_FP;
+        totals->cost_of[t] = totals->area_of[t] * options->price[priced_as];
+    }
+    totals->cost = totals->cost_of[TYPE_FP] + totals->cost_of[TYPE_SP] +
+                   totals->cost_of[TYPE_DP];
+    totals->feasible = classify_area_excess(totals->max_panel_area,
+                                            options->max_panel_area) == 0;
 }
 
 int classify_check_options(const struct classify_options *options,

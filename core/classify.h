@@ -2,18 +2,24 @@
  * classify.h: naming, typing and pricing panels, and the option totals.
  *
  * The paper's CPMGC (Table 1) and MOGD rules, as DESIGN.md defines them:
- *   - a curvature counts as zero when |k| < eps; eps is fixed by the user or,
- *     by default, the curvature at which a panel of diameter d sags by the
- *     flatness threshold t: eps = 8 t / d^2;
- *   - the signs of K and H come from k1 and k2 after that zeroing, and H
- *     counts as zero when |H| < eps (so K > 0 with H = 0, the "umbilic
- *     noise" cell of Table 1, cannot occur: two non-zero curvatures of one
- *     sign have a mean at least eps away from zero);
+ *   - a curvature counts as zero when |k| <= eps (widened by rounding, see
+ *     CLASSIFY_ROUNDING); eps is fixed by the user or, by default, the
+ *     curvature at which a panel of diameter d sags by the flatness
+ *     threshold t: eps = 8 t / d^2 (never below 8 * 1e-9 / d, a sag of
+ *     rounding size, so that t = 0 leaves a plane flat);
+ *   - the signs of K and H come from k1 and k2 after that zeroing: K = 0
+ *     when either is zero, H then has the sign of the other (so a ruled
+ *     panel never turns flat), and K > 0 gives H the common sign (so the
+ *     "umbilic noise" cell of Table 1, K > 0 with H = 0, cannot occur);
+ *   - the saddle rule: K < 0 and |k1 + k2| / 2 <= eps, the two curvatures
+ *     cancelling to within the zero tolerance; other K < 0 panels are
+ *     feature curves on the side of the sign of k1 + k2;
  *   - flat -> FP, ruled -> SP, every other class -> DP; then a panel whose
- *     deviation from its best-fit plane is within t is made FP whatever its
- *     class;
+ *     deviation from its best-fit plane is within t (plus rounding) is made
+ *     FP whatever its class;
  *   - cost = area x price of the type; in the paper's MOGD mode SP area is
- *     priced as FP.
+ *     priced as FP. An option's cost is summed from its areas per type, so
+ *     that equal areas give bit-equal costs.
  * Every total a user sees is computed here, once.
  */
 #ifndef FACET_CLASSIFY_H
@@ -23,6 +29,17 @@
 
 #include "error.h"
 #include "panel.h"
+
+/* The rounding allowance of every limit a panel is held to: a computed
+ * measure within 1e-9 of its panel's scale of the limit meets it. The three
+ * ways of building panels agree to that (README: "Same panels, three
+ * ways"), so a panel is never typed or judged by the order its sums were
+ * taken in. Applied as:
+ *   - the threshold rule: deviation <= t + 1e-9 d (d the panel's diameter);
+ *   - the zero test: |k| <= eps (1 + 1e-9);
+ *   - the size limit: largest panel <= limit (1 + 1e-9), so a 2 m x 2 m
+ *     panel summed as 4.000000000000003 m^2 meets a 4 m^2 limit. */
+#define CLASSIFY_ROUNDING 1e-9
 
 struct classify_options {
     double threshold;          /* flatness threshold t (m); paper 0.003 */
@@ -71,6 +88,16 @@ const char *panel_type_name(enum panel_type type);
  * 8 t / d^2 with d the panel's diameter (1/m). */
 double classify_tolerance(const struct classify_options *options,
                           const struct panel *panel);
+
+/* 1 when panel's deviation is within options->threshold, rounding
+ * allowed (CLASSIFY_ROUNDING): the threshold rule. */
+int classify_within_threshold(const struct classify_options *options,
+                              const struct panel *panel);
+
+/* How far (m^2) a largest panel of max_panel_area exceeds the size limit:
+ * 0 when within it, rounding allowed (CLASSIFY_ROUNDING). Feasibility and
+ * constraint-domination both read it. */
+double classify_area_excess(double max_panel_area, double limit);
 
 /* Classifies, types and prices every panel of p (K, H, curvature_tol,
  * class, type, price, cost) and sums the option's totals into *totals. */

@@ -7,6 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "classify.h"
 #include "pareto.h"
 
 void front_free(struct front *front)
@@ -47,8 +48,8 @@ int front_analyse(const struct evaluated_option *options, size_t n,
     }
     for (size_t i = 0; i < n; i++) {
         const struct option_totals *t = &options[i].totals;
-        violation[i] = t->max_panel_area > max_panel_area
-                           ? t->max_panel_area - max_panel_area : 0;
+        violation[i] = classify_area_excess(t->max_panel_area,
+                                            max_panel_area);
         for (size_t j = 0; j < m; j++) {
             value[i * m + j] = objective_value(t, &objectives[j]);
             if (violation[i] == 0) {

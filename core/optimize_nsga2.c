@@ -13,6 +13,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "classify.h"
 #include "nsga2.h"
 #include "optimize_search.h"
 
@@ -63,8 +64,7 @@ static int evaluate(void *context, size_t count, const double *vars,
             objectives[k * m + j] = objective_value(t,
                                                     &settings->objectives[j]);
         double limit = settings->base.classify.max_panel_area;
-        violation[k] = t->max_panel_area > limit ? t->max_panel_area - limit
-                                                 : 0;
+        violation[k] = classify_area_excess(t->max_panel_area, limit);
     }
     free(points);
     free(index);

@@ -44,9 +44,19 @@ static void test_zero_tolerance(void **state)
                      CLASS_RULED_CONVEX);
     assert_int_equal(classify_curvature(-1e-4, -0.05, 1e-3),
                      CLASS_RULED_CONVEX);
-    /* Exactly eps counts as non-zero (|k| < eps is zero). */
-    assert_int_equal(classify_curvature(1e-3, 1e-3, 1e-3),
+    /* eps itself, and eps to rounding, count as zero (|k| <= eps (1 +
+     * 1e-9)); a millionth beyond it does not. */
+    assert_int_equal(classify_curvature(1e-3, 1e-3, 1e-3), CLASS_FLAT);
+    assert_int_equal(classify_curvature(1e-3 * (1 + 1e-12), 0, 1e-3),
+                     CLASS_FLAT);
+    assert_int_equal(classify_curvature(1e-3 * (1 + 1e-6), 1e-3 * (1 + 1e-6),
+                                        1e-3),
                      CLASS_CONCAVE_ROUND);
+    /* A ruled panel stays ruled when |H| < eps: k1 = 1.5 eps, k2 = 0. */
+    assert_int_equal(classify_curvature(1.5e-3, 0, 1e-3),
+                     CLASS_RULED_CONCAVE);
+    assert_int_equal(classify_curvature(0, -1.5e-3, 1e-3),
+                     CLASS_RULED_CONVEX);
 
     struct classify_options options;
     classify_defaults(&options);

@@ -1,0 +1,200 @@
+/*
+ * cmd_curvature.c: `facet curvature SURFACE.obj`, the vertex curvature
+ * every panel's k1 and k2 come from, one row per vertex, so that a user can
+ * hold it against their CAD's curvature analysis and a test against a
+ * formula.
+ *
+ * Rows are the welded vertices, in the order of the first OBJ `v` welded
+ * into each (`v` gives that OBJ index, 1-based as in the file).
+ */
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "args.h"
+#include "command.h"
+#include "core/curvature.h"
+#include "core/json.h"
+#include "core/outfile.h"
+#include "core/surface.h"
+
+static const char csv_header[] =
+    "v,x,y,z,k1,k2,K,H,normal_x,normal_y,normal_z,boundary\n";
+
+/* Writes the rows as CSV; every double in %.17g, so it reads back to the
+ * bit. */
+static void write_csv(FILE *out, const struct mesh *m,
+                      const struct curvature *c)
+{
+    fputs(csv_header, out);
+    for (size_t v = 0; v < m->nvertices; v++) {
+        const double *p = m->position + 3 * v, *n = c->normal + 3 * v;
+        double k1 = c->k1[v], k2 = c->k2[v];
+        fprintf(out,
+                "%lu,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,"
+                "%.17g,%d\n",
+                (unsigned long)m->source_vertex[v] + 1, p[0], p[1], p[2], k1,
+                k2, k1 * k2, (k1 + k2) / 2, n[0], n[1], n[2],
+                m->on_boundary ? m->on_boundary[v] : 0);
+    }
+}
+
+/* Writes the rows as one JSON object, through the writer every --json of
+ * Facet uses. */
+static void write_json(FILE *out, const struct surface *s,
+                       const struct curvature *c, int flip)
+{
+    const struct mesh *m = &s->mesh;
+    struct json_writer w;
+    json_init(&w, out);
+    json_begin_object(&w);
+    json_key(&w, "file");
+    json_string(&w, s->path);
+    json_key(&w, "units");
+    json_string(&w, mesh_units_name(s->units));
+    json_key(&w, "flip_normals");
+    json_bool(&w, flip);
+    json_key(&w, "vertices");
+    json_begin_array(&w);
+    for (size_t v = 0; v < m->nvertices; v++) {
+        const double *p = m->position + 3 * v, *n = c->normal + 3 * v;
+        double k1 = c->k1[v], k2 = c->k2[v];
+        json_begin_object(&w);
+        json_key(&w, "v");
+        json_integer(&w, (long long)m->source_vertex[v] + 1);
+        json_key(&w, "position");
+        json_begin_array(&w);
+        for (int r = 0; r < 3; r++)
+            json_number(&w, p[r]);
+        json_end_array(&w);
+        json_key(&w, "k1");
+        json_number(&w, k1);
+        json_key(&w, "k2");
+        json_number(&w, k2);
+        json_key(&w, "K");
+        json_number(&w, k1 * k2);
+        json_key(&w, "H");
+        json_number(&w, (k1 + k2) / 2);
+        json_key(&w, "normal");
+        json_begin_array(&w);
+        for (int r = 0; r < 3; r++)
+            json_number(&w, n[r]);
+        json_end_array(&w);
+        json_key(&w, "boundary");
+        json_bool(&w, m->on_boundary && m->on_boundary[v]);
+        json_end_object(&w);
+    }
+    json_end_array(&w);
+    json_end_object(&w);
+    json_finish(&w);
+}
+
+/* The human summary: ranges of k1 and k2, inside and on the boundary. */
+static void print_summary(const struct surface *s, const struct curvature *c)
+{
+    const struct mesh *m = &s->mesh;
+    double lo[2][2] = {{INFINITY, INFINITY}, {INFINITY, INFINITY}};
+    double hi[2][2] = {{-INFINITY, -INFINITY}, {-INFINITY, -INFINITY}};
+    size_t count[2] = {0, 0};
+    for (size_t v = 0; v < m->nvertices; v++) {
+        int b = m->on_boundary ? m->on_boundary[v] != 0 : 0;
+        count[b]++;
+        lo[b][0] = fmin(lo[b][0], c->k1[v]);
+        hi[b][0] = fmax(hi[b][0], c->k1[v]);
+        lo[b][1] = fmin(lo[b][1], c->k2[v]);
+        hi[b][1] = fmax(hi[b][1], c->k2[v]);
+    }
+    printf("%-15s %s\n", "surface", s->path);
+    printf("%-15s %zu\n", "vertices", m->nvertices);
+    static const char *const where[2] = {"inside", "boundary"};
+    for (int b = 0; b < 2; b++) {
+        if (count[b] == 0)
+            continue;
+        printf("%-15s %zu vertices, k1 %.6g .. %.6g, k2 %.6g .. %.6g 1/m\n",
+               where[b], count[b], lo[b][0], hi[b][0], lo[b][1], hi[b][1]);
+    }
+    printf("(--csv FILE or --json for every vertex)\n");
+}
+
+static int curvature_run(int argc, char **argv, struct facet_error *err)
+{
+    const char *units_text = NULL, *object = NULL, *group = NULL;
+    const char *csv = NULL;
+    int json = 0, flip = 0, force = 0;
+    const struct arg_option options[] = {
+        {"units", 0, ARG_STRING, &units_text, NULL},
+        {"object", 0, ARG_STRING, &object, NULL},
+        {"group", 0, ARG_STRING, &group, NULL},
+        {"csv", 0, ARG_STRING, &csv, NULL},
+        {"json", 0, ARG_FLAG, NULL, &json},
+        {"flip-normals", 0, ARG_FLAG, NULL, &flip},
+        {"force", 'f', ARG_FLAG, NULL, &force},
+        {NULL, 0, ARG_FLAG, NULL, NULL},
+    };
+    const char *path[1];
+    int count;
+    int rc = args_parse(argc, argv, options, path, 1, &count, err);
+    if (rc != FACET_OK)
+        return rc;
+    if (count != 1)
+        return facet_error_set(err, FACET_EINPUT,
+            "curvature: name one OBJ file (facet curvature FILE.obj)");
+    if (csv != NULL && json)
+        return facet_error_set(err, FACET_EINPUT,
+            "curvature: give --csv FILE or --json, not both");
+    struct mesh_options mesh_options = {UNITS_M, object, group};
+    if (units_text != NULL &&
+        (rc = mesh_units_parse(units_text, &mesh_options.units, err)) != 0)
+        return rc;
+    /* Refuse an existing CSV before the work, not after it. */
+    if (csv != NULL && (rc = outfile_check(csv, force, err)) != FACET_OK)
+        return rc;
+
+    struct surface surface;
+    struct curvature curvature;
+    memset(&curvature, 0, sizeof curvature);
+    rc = surface_open(path[0], &mesh_options, &surface, err);
+    if (rc == FACET_OK)
+        rc = curvature_at_vertices(&surface.mesh, flip, &curvature, err);
+    if (rc == FACET_OK) {
+        for (int i = 0; i < surface.nwarnings; i++)
+            fprintf(stderr, "facet: warning: %s\n", surface.warnings[i]);
+        if (csv != NULL) {
+            struct outfile f;
+            rc = outfile_open(&f, csv, force, err);
+            if (rc == FACET_OK) {
+                write_csv(f.out, &surface.mesh, &curvature);
+                rc = outfile_commit(&f, err);
+            }
+        } else if (json) {
+            write_json(stdout, &surface, &curvature, flip);
+        } else {
+            print_summary(&surface, &curvature);
+        }
+    }
+    curvature_free(&curvature);
+    surface_close(&surface);
+    return rc;
+}
+
+const struct command cmd_curvature = {
+    .name = "curvature",
+    .usage = "SURFACE.obj [--csv FILE | --json] [--units U] [--object NAME]\n"
+             "       [--group NAME] [--flip-normals] [--force]",
+    .summary = "Curvature at every vertex: position, k1, k2, K, H, normal.",
+    .options =
+        "  --csv FILE      one row per vertex: v (the OBJ index), x, y, z (m),\n"
+        "                  k1, k2 (1/m), K (1/m^2), H (1/m), normal_x/y/z,\n"
+        "                  boundary (1 on the boundary)\n"
+        "  --json          the same as one JSON object: file, units,\n"
+        "                  flip_normals, vertices [{v, position, k1, k2, K,\n"
+        "                  H, normal, boundary}]\n"
+        "  --units U       what one OBJ unit is: m (default), cm, mm, in, ft\n"
+        "  --object NAME   only the faces of object NAME (o statement)\n"
+        "  --group NAME    only the faces of group NAME (g statement)\n"
+        "  --flip-normals  reverse the normal, and so every sign\n"
+        "  --force, -f     overwrite an existing --csv file\n"
+        "Without --csv or --json: the ranges of k1 and k2 inside and on the\n"
+        "boundary. Every number is written so that it reads back exactly.\n",
+    .run = curvature_run,
+};
