@@ -12,6 +12,7 @@
 #include "classify_flags.h"
 #include "command.h"
 #include "option_text.h"
+#include "core/coarse_mesh.h"
 #include "core/option.h"
 #include "core/report.h"
 
@@ -54,6 +55,13 @@ static void print_human(const struct surface *s,
            o->sp_as_fp ? " (SP priced as FP)" : "");
 
     option_text_totals(stdout, t, o);
+    double worst;
+    size_t over = classify_fp_over_threshold(p, o, &worst);
+    printf("%-16s %zu of %zu FP panels deviate more than %g mm", "FP beyond t",
+           over, t->count[TYPE_FP], o->threshold * 1000);
+    if (over > 0)
+        printf(" (up to %.3f mm)", worst * 1000);
+    printf("\n");
     option_text_map(stdout, p);
 }
 
@@ -136,9 +144,25 @@ static int classify_run(int argc, char **argv, struct facet_error *err)
         rc = option_evaluate(&surface, &params, &panels, &totals, err);
     if (rc == FACET_OK && csv != NULL)
         rc = write_csv(csv, &panels, err);
+    char coarse[400];
+    int is_coarse = 0;
+    if (rc == FACET_OK) {
+        char grid_name[64];
+        snprintf(grid_name, sizeof grid_name, "%d x %d panels", params.nu,
+                 params.nv);
+        double facet = mesh_facet_size(&surface.mesh);
+        double side = panels_typical_side(&panels);
+        if (facet < 0 || side < 0)
+            rc = facet_error_set(err, FACET_EWORK, "out of memory");
+        else
+            is_coarse = coarse_mesh_warning(facet, side, grid_name, coarse,
+                                            sizeof coarse);
+    }
     if (rc == FACET_OK) {
         for (int i = 0; i < surface.nwarnings; i++)
             fprintf(stderr, "facet: warning: %s\n", surface.warnings[i]);
+        if (is_coarse)
+            fprintf(stderr, "facet: warning: %s\n", coarse);
         if (json) {
             struct report_source source = {
                 surface.path, mesh_units_name(surface.units),

@@ -103,6 +103,25 @@ int classify_within_threshold(const struct classify_options *options,
     return panel->deviation <= options->threshold + rounding;
 }
 
+size_t classify_fp_over_threshold(const struct panelization *p,
+                                  const struct classify_options *options,
+                                  double *worst)
+{
+    size_t count = 0;
+    double largest = 0;
+    for (size_t n = 0; n < p->npanels; n++) {
+        const struct panel *panel = &p->panels[n];
+        if (panel->type == TYPE_FP &&
+            !classify_within_threshold(options, panel)) {
+            count++;
+            largest = fmax(largest, panel->deviation);
+        }
+    }
+    if (worst != NULL)
+        *worst = largest;
+    return count;
+}
+
 double classify_area_excess(double max_panel_area, double limit)
 {
     if (max_panel_area <= limit * (1 + CLASSIFY_ROUNDING))

@@ -99,6 +99,15 @@ int classify_within_threshold(const struct classify_options *options,
  * constraint-domination both read it. */
 double classify_area_excess(double max_panel_area, double limit);
 
+/* The FP panels of p that deviate more than options->threshold (rounding
+ * allowed): flat by curvature, not by deviation, as on a mesh coarser than
+ * its panels (coarse_mesh.h) or, with the mean shape operator, across an
+ * inflection. *worst (when not NULL) receives the largest such deviation
+ * (m, 0 when none). */
+size_t classify_fp_over_threshold(const struct panelization *p,
+                                  const struct classify_options *options,
+                                  double *worst);
+
 /* Classifies, types and prices every panel of p (K, H, curvature_tol,
  * class, type, price, cost) and sums the option's totals into *totals. */
 void classify_panels(struct panelization *p,

@@ -8,7 +8,8 @@
 #include "json.h"
 
 static void json_totals(struct json_writer *w,
-                        const struct option_totals *t)
+                        const struct option_totals *t,
+                        size_t fp_over_threshold)
 {
     json_begin_object(w);
     json_key(w, "panels");         json_integer(w, (long long)t->panels);
@@ -25,6 +26,8 @@ static void json_totals(struct json_writer *w,
     json_key(w, "max_panel_area"); json_number(w, t->max_panel_area);
     json_key(w, "p_dist");         json_number(w, t->p_dist);
     json_key(w, "feasible");       json_bool(w, t->feasible);
+    json_key(w, "fp_over_threshold");
+    json_integer(w, (long long)fp_over_threshold);
     json_key(w, "classes");
     json_begin_object(w);
     for (int c = 0; c < CLASS_COUNT; c++) {
@@ -106,7 +109,8 @@ void report_json(FILE *out, const struct report_source *source,
     }
     json_end_array(&w);
     json_key(&w, "totals");
-    json_totals(&w, totals);
+    json_totals(&w, totals,
+                classify_fp_over_threshold(panels, options, NULL));
     json_end_object(&w);
     json_finish(&w);
 }
