@@ -4,7 +4,7 @@
 # exit); the last one is killed, and its socket removed, on exit.
 
 if ! command -v tmux >/dev/null; then
-    echo "ok - tmux is not installed (skipped)"
+    echo "skip - every terminal UI check (tmux is not installed)"
     exit 0
 fi
 
