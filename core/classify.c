@@ -8,6 +8,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "exact_sum.h"
+
 void classify_defaults(struct classify_options *options)
 {
     options->threshold = 0.003;
@@ -135,6 +137,17 @@ void classify_panels(struct panelization *p,
 {
     memset(totals, 0, sizeof *totals);
     totals->feasible = 1;
+    /* Sums independent of the panels' order (exact_sum.h), so that options
+     * equal in exact arithmetic get bit-equal totals. */
+    struct exact_sum area_of[TYPE_COUNT], class_area[CLASS_COUNT];
+    struct exact_sum area, planarity, p_dist;
+    for (int t = 0; t < TYPE_COUNT; t++)
+        exact_sum_init(&area_of[t]);
+    for (int c = 0; c < CLASS_COUNT; c++)
+        exact_sum_init(&class_area[c]);
+    exact_sum_init(&area);
+    exact_sum_init(&planarity);
+    exact_sum_init(&p_dist);
     for (size_t n = 0; n < p->npanels; n++) {
         struct panel *panel = &p->panels[n];
         panel->K = panel->k1 * panel->k2;
@@ -153,18 +166,25 @@ void classify_panels(struct panelization *p,
 
         totals->panels++;
         totals->count[panel->type]++;
-        totals->area_of[panel->type] += panel->area;
+        exact_sum_add(&area_of[panel->type], panel->area);
         totals->class_count[panel->class]++;
-        totals->class_area[panel->class] += panel->area;
-        totals->area += panel->area;
+        exact_sum_add(&class_area[panel->class], panel->area);
+        exact_sum_add(&area, panel->area);
         if (panel->type != TYPE_DP) {
-            totals->planarity += panel->deviation;
-            totals->p_dist += panel->p_dist;
+            exact_sum_add(&planarity, panel->deviation);
+            exact_sum_add(&p_dist, panel->p_dist);
             totals->max_deviation = fmax(totals->max_deviation,
                                          panel->deviation);
         }
         totals->max_panel_area = fmax(totals->max_panel_area, panel->area);
     }
+    for (int t = 0; t < TYPE_COUNT; t++)
+        totals->area_of[t] = exact_sum_value(&area_of[t]);
+    for (int c = 0; c < CLASS_COUNT; c++)
+        totals->class_area[c] = exact_sum_value(&class_area[c]);
+    totals->area = exact_sum_value(&area);
+    totals->planarity = exact_sum_value(&planarity);
+    totals->p_dist = exact_sum_value(&p_dist);
     /* Cost from the areas per type, not from the panels one by one: two
      * options whose type areas are equal then cost the same to the bit,
      * whatever order their panels were summed in. */
