@@ -10,11 +10,13 @@
 
 #include "args.h"
 #include "command.h"
+#include "store/study.h"
 #include "store/study_export.h"
 
 static int export_main(int argc, char **argv, struct facet_error *err)
 {
     const char *run = NULL, *option = NULL, *view = NULL, *colour = NULL;
+    const char *surface = NULL;
     struct export_request request;
     memset(&request, 0, sizeof request);
     int triangles = 0;
@@ -29,6 +31,7 @@ static int export_main(int argc, char **argv, struct facet_error *err)
         {"colour", 0, ARG_STRING, &colour, NULL},
         {"color", 0, ARG_STRING, &colour, NULL},
         {"triangles", 0, ARG_FLAG, NULL, &triangles},
+        {"surface", 0, ARG_STRING, &surface, NULL},
         {"force", 'f', ARG_FLAG, NULL, &request.force},
         {NULL, 0, ARG_FLAG, NULL, NULL},
     };
@@ -57,9 +60,12 @@ static int export_main(int argc, char **argv, struct facet_error *err)
         return rc;
     request.map.triangles = triangles;
     struct store *store;
-    if ((rc = store_open(path[0], &store, err)) != FACET_OK)
+    if ((rc = store_open_existing(path[0], &store, err)) != FACET_OK)
         return rc;
-    rc = study_export(store, run_id, number, &request, err);
+    if (surface != NULL)
+        rc = study_repoint_surface(store, run_id, surface, err);
+    if (rc == FACET_OK)
+        rc = study_export(store, run_id, number, &request, err);
     for (int k = 0; rc == FACET_OK && k < EXPORT_FILES; k++)
         if (request.written[k][0])
             printf("wrote %s\n", request.written[k]);
@@ -72,7 +78,8 @@ const struct command cmd_export = {
     .usage = "DB --run N --option M [--obj FILE.obj] [--csv FILE.csv]\n"
              "       [--json FILE.json] [--svg FILE.svg] [--view "
              "uv|top|front|side]\n"
-             "       [--colour type|class] [--triangles] [--force]",
+             "       [--colour type|class] [--triangles] [--surface FILE] "
+             "[--force]",
     .summary = "Export one option: OBJ + MTL, CSV panel schedule, JSON, "
                "SVG panel map.",
     .options =
@@ -87,6 +94,8 @@ const struct command cmd_export = {
         "                      front, side\n"
         "  --colour C          panels coloured by type (default) or class\n"
         "  --triangles         draw each panel's triangles, not its outline\n"
+        "  --surface FILE      the run's surface has moved: record its new\n"
+        "                      place (its SHA-256 must be the run's)\n"
         "  --force, -f         overwrite existing files\n",
     .run = export_main,
 };

@@ -149,9 +149,10 @@ static int optimize_main(int argc, char **argv, struct facet_error *err)
     struct search_flags search;
     struct classify_flags flags;
     const char *db = NULL, *resume = NULL, *name = NULL, *table = NULL;
+    const char *surface = NULL;
     memset(&search, 0, sizeof search);
     memset(&flags, 0, sizeof flags);
-    struct arg_option options[CLASSIFY_FLAG_COUNT + 15] = {
+    struct arg_option options[CLASSIFY_FLAG_COUNT + 16] = {
         {"db", 0, ARG_STRING, &db, NULL},
         {"u", 0, ARG_STRING, &search.u, NULL},
         {"v", 0, ARG_STRING, &search.v, NULL},
@@ -166,9 +167,10 @@ static int optimize_main(int argc, char **argv, struct facet_error *err)
         {"resume", 0, ARG_STRING, &resume, NULL},
         {"name", 0, ARG_STRING, &name, NULL},
         {"table", 0, ARG_STRING, &table, NULL},
+        {"surface", 0, ARG_STRING, &surface, NULL},
     };
-    classify_flags_table(&flags, options + 14);
-    options[CLASSIFY_FLAG_COUNT + 14] =
+    classify_flags_table(&flags, options + 15);
+    options[CLASSIFY_FLAG_COUNT + 15] =
         (struct arg_option){NULL, 0, ARG_FLAG, NULL, NULL};
     const char *path[1];
     int count;
@@ -189,6 +191,10 @@ static int optimize_main(int argc, char **argv, struct facet_error *err)
             return facet_error_set(err, FACET_EINPUT,
                 "optimize --resume: the run knows its surface; give no "
                 "OBJ file");
+    } else if (surface != NULL) {
+        return facet_error_set(err, FACET_EINPUT,
+            "optimize: --surface re-points a run for --resume; a new run "
+            "takes its OBJ file as its argument");
     } else if (count != 1) {
         return facet_error_set(err, FACET_EINPUT,
             "optimize: name one OBJ file (facet optimize FILE.obj --db "
@@ -211,11 +217,11 @@ static int optimize_main(int argc, char **argv, struct facet_error *err)
     /* A surface that cannot be read is refused before the database is
      * created or touched. */
     if (!resume) {
-        FILE *surface = fopen(request.surface_path, "rb");
-        if (surface == NULL)
+        FILE *file = fopen(request.surface_path, "rb");
+        if (file == NULL)
             return facet_error_set(err, FACET_EINPUT, "%s: cannot open: %s",
                                    request.surface_path, strerror(errno));
-        fclose(surface);
+        fclose(file);
     }
     struct store *store;
     if ((rc = store_open(db, &store, err)) != FACET_OK)
@@ -227,7 +233,9 @@ static int optimize_main(int argc, char **argv, struct facet_error *err)
                                 stop_requested, show_started};
     enum optimize_outcome outcome;
     int64_t run = run_number;
-    if (resume)
+    if (resume && surface != NULL)
+        rc = study_repoint_surface(store, run, surface, err);
+    if (resume && rc == FACET_OK)
         rc = study_resume(store, run, &hooks, &outcome, err);
     else
         rc = study_start(store, &request, &hooks, &run, &outcome, err);
@@ -255,7 +263,7 @@ const struct command cmd_optimize = {
              "       [--seed S] [--objectives LIST] [--jobs N] [--name TEXT]"
              " [--table N]\n"
              "       [classification options]\n"
-             "   or: facet optimize --db FILE --resume RUN",
+             "   or: facet optimize --db FILE --resume RUN [--surface FILE]",
     .summary = "Search grid sizes and thresholds for the Pareto-optimal "
                "options; store them.",
     .options =
@@ -273,6 +281,8 @@ const struct command cmd_optimize = {
         "                      (default cost,planarity,dp_area)\n"
         "  --jobs N, -j N      threads (default: every core)\n"
         "  --resume RUN        go on with an interrupted run\n"
+        "  --surface FILE      with --resume: the run's surface has moved;\n"
+        "                      record its new place (same SHA-256)\n"
         "  --name TEXT         a name for the run\n"
         "  --table N           rows of the final table (default 20; 0 all)\n",
     .shared_options = classify_flags_usage,

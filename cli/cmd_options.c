@@ -108,7 +108,7 @@ static int options_main(int argc, char **argv, struct facet_error *err)
     if (where && (rc = filter_compile(where, &filter, err)))
         return rc;
     struct store *store;
-    if ((rc = store_open(path[0], &store, err)) != FACET_OK) {
+    if ((rc = store_open_read(path[0], &store, err)) != FACET_OK) {
         filter_free(filter);
         return rc;
     }

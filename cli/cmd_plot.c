@@ -56,7 +56,7 @@ static int plot_main(int argc, char **argv, struct facet_error *err)
     }
     struct plot_request request = {ids, nruns, x, y, size, title, force};
     struct store *store;
-    if ((rc = store_open(path[0], &store, err)) != FACET_OK)
+    if ((rc = store_open_read(path[0], &store, err)) != FACET_OK)
         return rc;
     rc = study_plot(store, &request, output, err);
     if (rc == FACET_OK)

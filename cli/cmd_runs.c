@@ -114,7 +114,7 @@ static int runs_main(int argc, char **argv, struct facet_error *err)
         return facet_error_set(err, FACET_EINPUT,
             "runs: name the result database (facet runs runs.db)");
     struct store *store;
-    if ((rc = store_open(path[0], &store, err)) != FACET_OK)
+    if ((rc = store_open_read(path[0], &store, err)) != FACET_OK)
         return rc;
     struct run_info *runs;
     size_t n;

@@ -11,16 +11,18 @@
 #include "command.h"
 #include "option_text.h"
 #include "core/report.h"
+#include "store/study.h"
 #include "store/study_export.h"
 
 static int show_main(int argc, char **argv, struct facet_error *err)
 {
-    const char *run = NULL, *option = NULL;
+    const char *run = NULL, *option = NULL, *surface = NULL;
     int json = 0;
     const struct arg_option options[] = {
         {"run", 0, ARG_STRING, &run, NULL},
         {"option", 0, ARG_STRING, &option, NULL},
         {"json", 0, ARG_FLAG, NULL, &json},
+        {"surface", 0, ARG_STRING, &surface, NULL},
         {NULL, 0, ARG_FLAG, NULL, NULL},
     };
     const char *path[1];
@@ -37,10 +39,14 @@ static int show_main(int argc, char **argv, struct facet_error *err)
         (rc = args_int(option, 1, 1L << 62, "--option", &number, err)))
         return rc;
     struct store *store;
-    if ((rc = store_open(path[0], &store, err)) != FACET_OK)
+    if ((rc = store_open_existing(path[0], &store, err)) != FACET_OK)
         return rc;
     struct study_option o;
-    rc = study_option_load(store, run_id, number, 0, &o, err);
+    memset(&o, 0, sizeof o);
+    if (surface != NULL)
+        rc = study_repoint_surface(store, run_id, surface, err);
+    if (rc == FACET_OK)
+        rc = study_option_load(store, run_id, number, 0, &o, err);
     if (rc == FACET_OK) {
         if (json) {
             struct report_source source;
@@ -69,12 +75,14 @@ static int show_main(int argc, char **argv, struct facet_error *err)
 
 const struct command cmd_show = {
     .name = "show",
-    .usage = "DB --run N --option M [--json]",
+    .usage = "DB --run N --option M [--json] [--surface FILE]",
     .summary = "Show one stored option: totals and panel map.",
     .options =
         "  --run N             the run\n"
         "  --option M          the option's number in the run\n"
         "  --json              the option as facet classify --json writes "
-        "it\n",
+        "it\n"
+        "  --surface FILE      the run's surface has moved: record its new\n"
+        "                      place (its SHA-256 must be the run's)\n",
     .run = show_main,
 };

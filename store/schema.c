@@ -12,6 +12,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <time.h>
 #include <unistd.h>
 
@@ -341,19 +342,59 @@ static int use_wal(struct store *store, struct facet_error *err)
     }
 }
 
-int store_open(const char *path, struct store **out,
-               struct facet_error *err)
+/* "file:" + path as an SQLite URI (RFC 3986: everything but unreserved
+ * characters and '/' percent-encoded) + query, into uri. Returns 0 when
+ * it does not fit. */
+static int file_uri(const char *path, const char *query, char *uri,
+                    size_t size)
+{
+    static const char hex[] = "0123456789ABCDEF";
+    size_t n = (size_t)snprintf(uri, size, "file:");
+    for (const unsigned char *c = (const unsigned char *)path; *c; c++) {
+        int plain = (*c >= 'A' && *c <= 'Z') || (*c >= 'a' && *c <= 'z') ||
+                    (*c >= '0' && *c <= '9') || strchr("-._~/", *c) != NULL;
+        if (n + 4 >= size)
+            return 0;
+        if (plain) {
+            uri[n++] = (char)*c;
+        } else {
+            uri[n++] = '%';
+            uri[n++] = hex[*c >> 4];
+            uri[n++] = hex[*c & 15];
+        }
+    }
+    int tail = snprintf(uri + n, size - n, "%s", query);
+    return tail >= 0 && (size_t)tail < size - n;
+}
+
+/* Opens path into *store (allocated here) with SQLite flags, reading the
+ * header: *application and *version. The file name is given as a URI when
+ * query is not NULL. */
+static int open_connection(const char *path, const char *query, int flags,
+                           struct store **out, int *application,
+                           int *version, struct facet_error *err)
 {
     *out = NULL;
-    int rc;
     struct store *store = calloc(1, sizeof *store);
     if (store == NULL || (store->path = strdup(path)) == NULL) {
         free(store);
         return facet_error_set(err, FACET_EWORK, "out of memory");
     }
-    if (sqlite3_open_v2(path, &store->db,
-                        SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE |
-                        SQLITE_OPEN_NOMUTEX, NULL) != SQLITE_OK) {
+    store->read_only = (flags & SQLITE_OPEN_READONLY) != 0;
+    char uri[4200];
+    const char *name = path;
+    if (query != NULL) {
+        if (!file_uri(path, query, uri, sizeof uri)) {
+            store_close(store);
+            return facet_error_set(err, FACET_EINPUT, "%.200s...: path too "
+                                   "long", path);
+        }
+        name = uri;
+        flags |= SQLITE_OPEN_URI;
+    }
+    int rc;
+    if (sqlite3_open_v2(name, &store->db, flags | SQLITE_OPEN_NOMUTEX,
+                        NULL) != SQLITE_OK) {
         rc = store->db ? store_fail(store, "opening", err)
                        : facet_error_set(err, FACET_EWORK,
                                          "%s: cannot open", path);
@@ -363,32 +404,50 @@ int store_open(const char *path, struct store **out,
     /* A reader and a writer wait for each other's short transactions
      * rather than fail. */
     sqlite3_busy_timeout(store->db, 10000);
-    int application = 0, version = 0;
     /* The header is read through SQLite, never with a second file
      * descriptor: closing one would drop every lock this process holds
      * on the file (POSIX), under another connection of this process. */
-    rc = pragma_int(store, "PRAGMA application_id", &application, err);
+    rc = pragma_int(store, "PRAGMA application_id", application, err);
     if (rc != FACET_OK && sqlite3_errcode(store->db) == SQLITE_NOTADB)
         rc = facet_error_set(err, FACET_EINPUT,
             "%s: not an SQLite database (is it the right file?)", path);
     if (rc == FACET_OK)
-        rc = pragma_int(store, "PRAGMA user_version", &version, err);
-    if (rc == FACET_OK && application != STORE_APPLICATION_ID) {
+        rc = pragma_int(store, "PRAGMA user_version", version, err);
+    if (rc == FACET_OK && *application != STORE_APPLICATION_ID) {
         int tables = 0;
         rc = pragma_int(store, "SELECT count(*) FROM sqlite_schema", &tables,
                         err);
-        if (rc == FACET_OK && (application != 0 || tables != 0))
+        if (rc == FACET_OK && (*application != 0 || tables != 0))
             rc = facet_error_set(err, FACET_EINPUT,
                 "%s: an SQLite database of another application, not "
                 "Facet's (use a new file)", path);
     }
-    if (rc == FACET_OK && version > STORE_SCHEMA_VERSION)
+    if (rc == FACET_OK && *version > STORE_SCHEMA_VERSION)
         rc = facet_error_set(err, FACET_EINPUT,
             "%s: written by a newer Facet (schema %d; this Facet %s reads "
-            "up to %d): upgrade Facet", path, version, FACET_VERSION,
+            "up to %d): upgrade Facet", path, *version, FACET_VERSION,
             STORE_SCHEMA_VERSION);
-    if (rc == FACET_OK)
-        rc = use_wal(store, err);
+    if (rc != FACET_OK) {
+        store_close(store);
+        return rc;
+    }
+    *out = store;
+    return FACET_OK;
+}
+
+/* Opens path for writing (creating it when create is set): WAL, foreign
+ * keys, the schema migrated forward, orphaned runs marked. */
+static int open_writer(const char *path, int create, struct store **out,
+                       struct facet_error *err)
+{
+    int application = 0, version = 0;
+    struct store *store;
+    int flags = SQLITE_OPEN_READWRITE | (create ? SQLITE_OPEN_CREATE : 0);
+    int rc = open_connection(path, NULL, flags, &store, &application,
+                             &version, err);
+    if (rc != FACET_OK)
+        return rc;
+    rc = use_wal(store, err);
     if (rc == FACET_OK)
         rc = store_exec(store, "PRAGMA synchronous = NORMAL;"
                         "PRAGMA foreign_keys = ON;", "opening", err);
@@ -402,6 +461,99 @@ int store_open(const char *path, struct store **out,
     }
     *out = store;
     return FACET_OK;
+}
+
+/* Refuses a path where there is no database file to read. */
+static int require_file(const char *path, struct facet_error *err)
+{
+    struct stat st;
+    if (stat(path, &st) != 0)
+        return facet_error_set(err, FACET_EINPUT, "%s: %s%s", path,
+            strerror(errno),
+            errno == ENOENT ? " (no such database; facet optimize --db "
+                              "FILE makes one)" : "");
+    if (!S_ISREG(st.st_mode))
+        return facet_error_set(err, FACET_EINPUT,
+                               "%s: not a regular file, not a database",
+                               path);
+    return FACET_OK;
+}
+
+int store_open(const char *path, struct store **out,
+               struct facet_error *err)
+{
+    return open_writer(path, 1, out, err);
+}
+
+int store_open_existing(const char *path, struct store **out,
+                        struct facet_error *err)
+{
+    *out = NULL;
+    int rc = require_file(path, err);
+    if (rc != FACET_OK)
+        return rc;
+    if (access(path, W_OK) == 0)
+        return open_writer(path, 0, out, err);
+    return store_open_read(path, out, err);
+}
+
+int store_open_read(const char *path, struct store **out,
+                    struct facet_error *err)
+{
+    *out = NULL;
+    int rc = require_file(path, err);
+    if (rc != FACET_OK)
+        return rc;
+    int application = 0, version = 0;
+    struct store *store;
+    rc = open_connection(path, "?mode=ro", SQLITE_OPEN_READONLY, &store,
+                         &application, &version, err);
+    /* A WAL file whose folder is read-only cannot get its shared memory
+     * file: read it as immutable media (no writer can change it there). */
+    if (rc != FACET_OK && (strstr(err->message, "unable to open") != NULL ||
+                           strstr(err->message, "readonly") != NULL)) {
+        struct facet_error first = *err;
+        rc = open_connection(path, "?mode=ro&immutable=1",
+                             SQLITE_OPEN_READONLY, &store, &application,
+                             &version, err);
+        if (rc != FACET_OK)
+            *err = first;
+    }
+    if (rc != FACET_OK)
+        return rc;
+    if (version < STORE_SCHEMA_VERSION) {
+        /* An older Facet's file: a reader cannot read the new columns, so
+         * the file is migrated once, when it may be written. */
+        store_close(store);
+        if (access(path, W_OK) != 0)
+            return facet_error_set(err, FACET_EINPUT,
+                "%s: written by an older Facet (schema %d; this one reads "
+                "%d) and read-only here: copy it where it can be written "
+                "and open it once to migrate it", path, version,
+                STORE_SCHEMA_VERSION);
+        rc = open_writer(path, 0, &store, err);
+        if (rc != FACET_OK)
+            return rc;
+        store_close(store);
+        return store_open_read(path, out, err);
+    }
+    *out = store;
+    return FACET_OK;
+}
+
+int store_read_only(const struct store *store)
+{
+    return store->read_only;
+}
+
+const char *store_path(const struct store *store)
+{
+    return store->path;
+}
+
+int store_run_writer_gone(int64_t pid, const char *host)
+{
+    return writer_gone(pid, host);
 }
 
 int store_analyze(struct store *store, struct facet_error *err)

@@ -89,6 +89,29 @@ struct option_row {
  * the file and what is wrong. Runs left "running" by a writer that is gone
  * (same host, process not alive) are marked "interrupted". */
 int store_open(const char *path, struct store **out, struct facet_error *err);
+
+/* Opens the database at path for reading only, for the commands that only
+ * read (runs, options, plot): a missing path is FACET_EINPUT ("no such
+ * database") and nothing is created; the file is opened read-only, as
+ * immutable media when its folder is read-only (no -shm can be made
+ * there). A file of an older schema is migrated first when it may be
+ * written, and refused with what to do when not. A run left "running" by
+ * a writer that is gone reads as "interrupted" (nothing is written). */
+int store_open_read(const char *path, struct store **out,
+                    struct facet_error *err);
+
+/* Opens an existing database (FACET_EINPUT when there is none) for
+ * writing when it may be written, else as store_open_read: for commands
+ * that store what they compute only if they can (show, export). */
+int store_open_existing(const char *path, struct store **out,
+                        struct facet_error *err);
+
+/* 1 when store was opened read-only: nothing can be stored. */
+int store_read_only(const struct store *store);
+
+/* The file's path, as given to the open call. */
+const char *store_path(const struct store *store);
+
 void store_close(struct store *store);
 
 /* Refreshes the statistics SQLite plans queries with (a bounded ANALYZE,
@@ -116,6 +139,10 @@ int store_run_get(struct store *store, int64_t id, struct run_info *run,
 /* Every run, by id; *runs is malloc'ed (free()). */
 int store_run_list(struct store *store, struct run_info **runs,
                    size_t *count, struct facet_error *err);
+/* Records path as run id's surface (study_repoint_surface checks it). */
+int store_run_set_surface(struct store *store, int64_t id, const char *path,
+                          struct facet_error *err);
+
 /* Sets status (and finished when not "running"), elapsed and the options
  * count. Taking a run over for --resume: status "running" with this
  * process as its writer. */

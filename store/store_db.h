@@ -19,7 +19,12 @@ struct store {
     sqlite3 *db;
     char *path;                 /* owned copy, for messages */
     sqlite3_stmt *option_insert;/* prepared once, reused by every batch */
+    int read_only;              /* opened by store_open_read */
 };
+
+/* Whether the process that wrote a run is gone (same host, no such
+ * pid): a run left "running" by it reads as interrupted. */
+int store_run_writer_gone(int64_t pid, const char *host);
 
 /* The SQL that reads the crowding column as an option_row holds it:
  * NULL at a front's ends, where it is infinite, reads as +infinity

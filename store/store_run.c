@@ -31,7 +31,8 @@ static void copy_text(char *to, size_t size, sqlite3_stmt *stmt, int col)
     snprintf(to, size, "%s", text ? (const char *)text : "");
 }
 
-static void run_from_row(sqlite3_stmt *s, struct run_info *r)
+static void run_from_row(const struct store *store, sqlite3_stmt *s,
+                         struct run_info *r)
 {
     memset(r, 0, sizeof *r);
     int c = 0;
@@ -78,6 +79,11 @@ static void run_from_row(sqlite3_stmt *s, struct run_info *r)
     r->surface_area = sqlite3_column_double(s, c++);
     r->triangles = sqlite3_column_int64(s, c++);
     copy_text(r->uv_method, sizeof r->uv_method, s, c++);
+    /* A writer marks such runs when it opens the file; a reader cannot
+     * write, so it reads them as what they are. */
+    if (store->read_only && strcmp(r->status, "running") == 0 &&
+        store_run_writer_gone(r->writer_pid, r->writer_host))
+        snprintf(r->status, sizeof r->status, "interrupted");
 }
 
 static void bind_text_or_null(sqlite3_stmt *s, int col, const char *text)
@@ -175,7 +181,7 @@ int store_run_get(struct store *store, int64_t id, struct run_info *run,
     sqlite3_bind_int64(s, 1, id);
     int step = sqlite3_step(s);
     if (step == SQLITE_ROW)
-        run_from_row(s, run);
+        run_from_row(store, s, run);
     else if (step == SQLITE_DONE)
         rc = facet_error_set(err, FACET_EINPUT, "%s: no run %lld "
                              "('facet runs %s' lists them)", store->path,
@@ -208,7 +214,7 @@ int store_run_list(struct store *store, struct run_info **runs,
             }
             *runs = grown;
         }
-        run_from_row(s, &(*runs)[(*count)++]);
+        run_from_row(store, s, &(*runs)[(*count)++]);
     }
     if (rc == FACET_OK && step != SQLITE_DONE)
         rc = store_fail(store, "listing runs", err);
@@ -218,6 +224,26 @@ int store_run_list(struct store *store, struct run_info **runs,
         *runs = NULL;
         *count = 0;
     }
+    return rc;
+}
+
+int store_run_set_surface(struct store *store, int64_t id, const char *path,
+                          struct facet_error *err)
+{
+    sqlite3_stmt *s;
+    int rc = store_prepare(store,
+        "UPDATE runs SET surface_path = ?2 WHERE id = ?1", &s,
+        "re-pointing a run", err);
+    if (rc != FACET_OK)
+        return rc;
+    sqlite3_bind_int64(s, 1, id);
+    sqlite3_bind_text(s, 2, path, -1, SQLITE_TRANSIENT);
+    if (sqlite3_step(s) != SQLITE_DONE)
+        rc = store_fail(store, "re-pointing a run", err);
+    else if (sqlite3_changes(store->db) == 0)
+        rc = facet_error_set(err, FACET_EINPUT, "%s: no run %lld",
+                             store->path, (long long)id);
+    sqlite3_finalize(s);
     return rc;
 }
 

@@ -3,11 +3,13 @@
  */
 #include "study.h"
 
+#include <errno.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
+#include <unistd.h>
 
 #include "core/front.h"
 #include "core/parallel.h"
@@ -168,8 +170,42 @@ static int read_surface(const char *path, const struct mesh_options *mesh,
     return FACET_OK;
 }
 
-int study_open_surface(const struct run_info *run, struct surface *surface,
-                       struct facet_error *err)
+/* The places a run's surface may be, first first: as stored (absolute
+ * since runs record it so; relative to the working folder in older files),
+ * then a relative path against the database's folder, then the file's name
+ * in the database's folder (a database copied with its surface beside
+ * it). Returns how many it wrote into place[]. */
+static int surface_candidates(const char *db_path, const char *stored,
+                              char place[3][4096])
+{
+    int n = 0;
+    snprintf(place[n++], sizeof place[0], "%s", stored);
+    char folder[4096];
+    snprintf(folder, sizeof folder, "%s", db_path);
+    char *slash = strrchr(folder, '/');
+    if (slash != NULL)
+        slash[1] = '\0';
+    else
+        snprintf(folder, sizeof folder, "./");
+    const char *name = strrchr(stored, '/');
+    name = name ? name + 1 : stored;
+    const char *tail[2] = {stored[0] != '/' ? stored : NULL, name};
+    for (int k = 0; k < 2; k++) {
+        if (tail[k] == NULL)
+            continue;
+        size_t a = strlen(folder), b = strlen(tail[k]);
+        if (a + b >= sizeof place[0])
+            continue;  /* too long to be a file anyway */
+        memcpy(place[n], folder, a);
+        memcpy(place[n] + a, tail[k], b + 1);
+        if (strcmp(place[n], place[n - 1]) != 0)
+            n++;
+    }
+    return n;
+}
+
+int study_open_surface(const struct store *store, const struct run_info *run,
+                       struct surface *surface, struct facet_error *err)
 {
     struct optimize_settings settings;
     struct mesh_options mesh;
@@ -178,16 +214,70 @@ int study_open_surface(const struct run_info *run, struct surface *surface,
     int rc = study_settings(run, &settings, &mesh, &flip, err);
     if (rc != FACET_OK)
         return rc;
-    char digest[65];
-    rc = read_surface(run->surface_path, &mesh, digest, surface, err);
+    char place[3][4096];
+    int nplaces = surface_candidates(store_path(store), run->surface_path,
+                                     place);
+    int changed = 0;
+    struct facet_error first;
+    facet_error_clear(&first);
+    for (int k = 0; k < nplaces; k++) {
+        if (access(place[k], F_OK) != 0)
+            continue;
+        char digest[65];
+        rc = read_surface(place[k], &mesh, digest, surface, err);
+        if (rc != FACET_OK)
+            return rc;
+        if (strcmp(digest, run->surface_sha256) == 0)
+            return surface_prepare(surface, flip, err);
+        if (!changed)
+            facet_error_set(&first, FACET_EINPUT,
+                "%s: the file has changed since run %lld was made from it "
+                "(SHA-256 %.12s..., was %.12s...); give the original with "
+                "--surface FILE", place[k], (long long)run->id, digest,
+                run->surface_sha256);
+        changed = 1;
+        surface_close(surface);
+        memset(surface, 0, sizeof *surface);
+    }
+    if (changed) {
+        *err = first;
+        return FACET_EINPUT;
+    }
+    return facet_error_set(err, FACET_EINPUT,
+        "%s: no such file (run %lld's surface, nor beside the database); if "
+        "it has moved, give its new place with --surface FILE (SHA-256 "
+        "%.12s...)", run->surface_path, (long long)run->id,
+        run->surface_sha256);
+}
+
+int study_repoint_surface(struct store *store, int64_t run_id,
+                          const char *path, struct facet_error *err)
+{
+    struct run_info run;
+    int rc = store_run_get(store, run_id, &run, err);
     if (rc != FACET_OK)
         return rc;
-    if (strcmp(digest, run->surface_sha256) != 0)
+    char digest[65];
+    if ((rc = sha256_file(path, digest, err)) != FACET_OK)
+        return rc;
+    if (strcmp(digest, run.surface_sha256) != 0)
         return facet_error_set(err, FACET_EINPUT,
-            "%s: the file has changed since run %lld was made from it "
-            "(SHA-256 %.12s..., was %.12s...)", run->surface_path,
-            (long long)run->id, digest, run->surface_sha256);
-    return surface_prepare(surface, flip, err);
+            "--surface %s: not run %lld's surface (SHA-256 %.12s..., the "
+            "run's is %.12s...)", path, (long long)run_id, digest,
+            run.surface_sha256);
+    char absolute[4096];
+    if (realpath(path, absolute) == NULL)
+        return facet_error_set(err, FACET_EINPUT, "--surface %s: %s", path,
+                               strerror(errno));
+    if (strlen(absolute) >= sizeof run.surface_path)
+        return facet_error_set(err, FACET_EINPUT,
+                               "--surface %.200s...: path too long", path);
+    if (store_read_only(store))
+        return facet_error_set(err, FACET_EINPUT,
+            "--surface: %s is read-only here, so run %lld cannot be "
+            "re-pointed; copy the database where it can be written",
+            store_path(store), (long long)run_id);
+    return store_run_set_surface(store, run_id, absolute, err);
 }
 
 int study_rank(struct store *store, int64_t run, struct facet_error *err)
@@ -275,12 +365,13 @@ int study_option_panels(struct store *store, const struct run_info *run,
     struct surface own;
     memset(&own, 0, sizeof own);
     if (surface == NULL) {
-        rc = study_open_surface(run, &own, err);
+        rc = study_open_surface(store, run, &own, err);
         surface = &own;
     }
     if (rc == FACET_OK)
         rc = evaluate_option(run, surface, &option, panels, totals, err);
-    if (rc == FACET_OK)
+    /* Stored for the next look, when the file may be written. */
+    if (rc == FACET_OK && !store_read_only(store))
         rc = store_panels_put(store, run->id, number, panels, err);
     if (surface == &own)
         surface_close(&own);
@@ -419,8 +510,15 @@ int study_start(struct store *store, const struct study_request *request,
     struct run_info run;
     memset(&run, 0, sizeof run);
     snprintf(run.name, sizeof run.name, "%s", request->name);
-    snprintf(run.surface_path, sizeof run.surface_path, "%s",
-             request->surface_path);
+    /* Recorded absolute, so the run's surface is found from any folder;
+     * a path realpath cannot resolve fails below, when it is read. */
+    char absolute[4096];
+    const char *recorded = realpath(request->surface_path, absolute)
+                               ? absolute : request->surface_path;
+    if (strlen(recorded) >= sizeof run.surface_path)
+        return facet_error_set(err, FACET_EINPUT, "%.200s...: path too long",
+                               recorded);
+    memcpy(run.surface_path, recorded, strlen(recorded) + 1);
     stage(hooks, "reading the surface");
     struct surface surface;
     memset(&surface, 0, sizeof surface);
@@ -512,7 +610,7 @@ int study_resume(struct store *store, int64_t run_id,
         return rc;
     stage(hooks, "preparing the surface (UV, curvature)");
     struct surface surface;
-    rc = study_open_surface(&run, &surface, err);
+    rc = study_open_surface(store, &run, &surface, err);
     if (rc == FACET_OK)
         rc = store_run_set_status(store, run_id, "running", run.elapsed,
                                   err);

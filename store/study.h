@@ -62,10 +62,19 @@ int study_settings(const struct run_info *run,
                    struct facet_error *err);
 
 /* Opens and prepares the surface of run, refusing a file whose content is
- * not the one the run was made from. Release with surface_close, also
- * after a failure. */
-int study_open_surface(const struct run_info *run, struct surface *surface,
-                       struct facet_error *err);
+ * not the one the run was made from. The surface is looked for where the
+ * run recorded it, then (a relative path) against the folder of store's
+ * file, then by its name in that folder; the message of a failure says how
+ * to re-point the run (study_repoint_surface). Release with surface_close,
+ * also after a failure. */
+int study_open_surface(const struct store *store, const struct run_info *run,
+                       struct surface *surface, struct facet_error *err);
+
+/* Records path (made absolute) as run's surface, after checking that its
+ * SHA-256 is the run's: what --surface FILE does for a surface that has
+ * moved. FACET_EINPUT for another file or a read-only store. */
+int study_repoint_surface(struct store *store, int64_t run,
+                          const char *path, struct facet_error *err);
 
 /* The panels and totals of option number of run: read from the store when
  * stored, else evaluated on surface (opened by study_open_surface when

@@ -57,7 +57,7 @@ int study_option_load(struct store *store, int64_t run, int64_t number,
     p->classify = settings.base.classify;
     p->classify.threshold = p->row.threshold_mm / 1000;
     if (geometry) {
-        rc = study_open_surface(&p->run, &p->surface, err);
+        rc = study_open_surface(store, &p->run, &p->surface, err);
         p->have_surface = 1;
     }
     if (rc == FACET_OK)

@@ -250,7 +250,7 @@ static void load_maps(struct compare_screen *s, struct tui_app *app)
         int stored = store_panels_exist(app->store, s->run, number, &err);
         int rc = stored < 0 ? FACET_EWORK : FACET_OK;
         if (rc == FACET_OK && stored == 0 && !opened && !open_failed) {
-            rc = study_open_surface(&run, &surface, &err);
+            rc = study_open_surface(app->store, &run, &surface, &err);
             if (rc == FACET_OK)
                 opened = 1;
             else
