@@ -9,6 +9,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "core/spelling.h"
+
 static const struct arg_option *find_long(const struct arg_option *options,
                                           const char *name, size_t length)
 {
@@ -26,6 +28,27 @@ static const struct arg_option *find_alias(const struct arg_option *options,
         if (options->alias != 0 && options->alias == alias)
             return options;
     return NULL;
+}
+
+/* The error for an unknown --name (length bytes of name), with the
+ * nearest flag of the table when one is close. */
+static int unknown_long(const char *command,
+                        const struct arg_option *options, const char *name,
+                        size_t length, struct facet_error *err)
+{
+    const char *names[128];
+    size_t n = 0;
+    for (const struct arg_option *o = options; o->name != NULL && n < 128;
+         o++)
+        names[n++] = o->name;
+    const char *near = spelling_closest(name, length, names, n);
+    if (near != NULL)
+        return facet_error_set(err, FACET_EINPUT,
+            "%s: unknown option '--%.*s' (did you mean --%s?)", command,
+            (int)length, name, near);
+    return facet_error_set(err, FACET_EINPUT,
+        "%s: unknown option '--%.*s' (see 'facet %s --help')", command,
+        (int)length, name, command);
 }
 
 int args_parse(int argc, char **argv, const struct arg_option *options,
@@ -49,9 +72,7 @@ int args_parse(int argc, char **argv, const struct arg_option *options,
             size_t length = equals ? (size_t)(equals - name) : strlen(name);
             option = find_long(options, name, length);
             if (option == NULL)
-                return facet_error_set(err, FACET_EINPUT,
-                    "%s: unknown option '%.*s' (see 'facet %s --help')",
-                    argv[0], (int)(length + 2), word, argv[0]);
+                return unknown_long(argv[0], options, name, length, err);
             if (equals != NULL) {
                 if (option->kind == ARG_FLAG)
                     return facet_error_set(err, FACET_EINPUT,

@@ -7,6 +7,7 @@
 #include <string.h>
 
 #include "command.h"
+#include "core/spelling.h"
 
 static int wants_help(int argc, char **argv)
 {
@@ -35,8 +36,18 @@ int main(int argc, char **argv)
     }
     const struct command *cmd = command_find(argv[1]);
     if (cmd == NULL) {
-        fprintf(stderr, "facet: unknown command '%s' (see 'facet --help')\n",
-                argv[1]);
+        const char *names[32];
+        size_t n = 0;
+        for (int i = 0; command_table[i] != NULL && n < 32; i++)
+            names[n++] = command_table[i]->name;
+        const char *near = spelling_closest(argv[1], strlen(argv[1]), names,
+                                            n);
+        if (near != NULL)
+            fprintf(stderr, "facet: unknown command '%s' (did you mean "
+                    "'facet %s'?)\n", argv[1], near);
+        else
+            fprintf(stderr, "facet: unknown command '%s' (see 'facet "
+                    "--help')\n", argv[1]);
         return 2;
     }
     if (wants_help(argc - 1, argv + 1)) {

@@ -26,6 +26,7 @@
 #include <string.h>
 
 #include "core/numparse.h"
+#include "core/spelling.h"
 
 const char *const store_option_columns[] = {
     "number", "generation", "nu", "nv", "threshold_mm", "panels",
@@ -212,52 +213,6 @@ static const char *shown(const struct parser *p, const struct token *t,
         buf[n] = '\0';
     }
     return buf;
-}
-
-/* Optimal string alignment distance of a (length n, any case) to the
- * lowercase word b, or 3 when it is surely more than 2 (all callers want). */
-static int distance(const char *a, size_t n, const char *b)
-{
-    size_t m = strlen(b);
-    if (n > m + 2 || m > n + 2 || m > 30)
-        return 3;
-    int d[33][33];
-    for (size_t i = 0; i <= n; i++)
-        d[i][0] = (int)i;
-    for (size_t j = 0; j <= m; j++)
-        d[0][j] = (int)j;
-    for (size_t i = 1; i <= n; i++)
-        for (size_t j = 1; j <= m; j++) {
-            int cost = lower(a[i - 1]) != b[j - 1];
-            int best = d[i - 1][j - 1] + cost;
-            if (d[i - 1][j] + 1 < best)
-                best = d[i - 1][j] + 1;
-            if (d[i][j - 1] + 1 < best)
-                best = d[i][j - 1] + 1;
-            if (i > 1 && j > 1 && lower(a[i - 1]) == b[j - 2] &&
-                lower(a[i - 2]) == b[j - 1] && d[i - 2][j - 2] + 1 < best)
-                best = d[i - 2][j - 2] + 1;
-            d[i][j] = best;
-        }
-    return d[n][m];
-}
-
-/* The candidate closest to the word a (length n): within 2 edits, and
- * fewer edits than the word has letters, so "x" does not become "u". The
- * first of equally close ones; NULL when none is close. */
-static const char *closest(const char *a, size_t n,
-                           const char *const *candidates, size_t count)
-{
-    const char *best = NULL;
-    int best_distance = 3;
-    for (size_t k = 0; k < count; k++) {
-        int d = distance(a, n, candidates[k]);
-        if (d < best_distance && (size_t)d < n) {
-            best = candidates[k];
-            best_distance = d;
-        }
-    }
-    return best;
 }
 
 /* ---- lexing -------------------------------------------------------------- */
@@ -533,7 +488,7 @@ static int fail_unknown_name(struct parser *p, const struct token *t)
     for (size_t k = 0; k < ALIAS_COUNT; k++)
         names[n++] = aliases[k].name;
     names[n++] = "pareto";
-    const char *near = closest(s, t->length, names, n);
+    const char *near = spelling_closest(s, t->length, names, n);
     if (near != NULL)
         return fail_at(p, t->at, "unknown column '%s' (did you mean %s?)",
                        shown(p, t, buf), near);
@@ -559,7 +514,7 @@ static int fail_after_condition(struct parser *p, const struct token *t)
                        op_text[t->op]);
     if (t->kind == TOK_NAME) {
         static const char *const joins[] = {"and", "or"};
-        const char *near = closest(p->text + t->at, t->length, joins, 2);
+        const char *near = spelling_closest(p->text + t->at, t->length, joins, 2);
         if (near != NULL)
             return fail_at(p, t->at, "unexpected '%s' (did you mean %s?)",
                            shown(p, t, buf), near);

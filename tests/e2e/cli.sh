@@ -73,6 +73,13 @@ run "$FACET" info "$WORK/two.obj" --object right --json
 json_check "--object selects one" 'j["components"]==1 and j["triangles"]==1'
 expect_error "unknown object is named" "nope" "$FACET" info "$WORK/two.obj" --object nope
 
+# Did you mean: commands and flags suggest the nearest known word.
+expect_error "did you mean a command" "unknown command 'optimise' \\(did you mean 'facet optimize'\\?\\)" "$FACET" optimise
+expect_error "did you mean a flag" "unknown option '--sortt' \\(did you mean --sort\\?\\)" "$FACET" options x.db --sortt cost
+expect_error "did you mean a swapped flag" "did you mean --grid\\?" "$FACET" classify x.obj --gird 3x3
+expect_error "nothing near: the help" "unknown command 'zzz' \\(see 'facet --help'\\)" "$FACET" zzz
+expect_error "nothing near a flag: the help" "unknown option '--zzzzzz' \\(see 'facet runs --help'\\)" "$FACET" runs x.db --zzzzzz
+
 # Real files from public projects all load.
 if have_data acj_spot.obj compas_hypar.obj; then
     for file in "$FACET_DATA"/*.obj; do
