@@ -11,9 +11,14 @@
 #include "core/json.h"
 #include "core/numformat.h"
 #include "store/store.h"
+#include "store/study.h"
 
-static void print_json(const struct run_info *runs, size_t n)
+static void print_json(const struct run_info *runs,
+                       const struct front_bounds *bounds, size_t n)
 {
+    static const char *const bound_name[FRONT_BOUNDS][2] = {
+        {"nu", "min"}, {"nu", "max"}, {"nv", "min"}, {"nv", "max"},
+        {"threshold_mm", "min"}, {"threshold_mm", "max"}};
     struct json_writer w;
     json_init(&w, stdout);
     json_begin_array(&w);
@@ -70,13 +75,33 @@ static void print_json(const struct run_info *runs, size_t n)
             json_null(&w);
         json_key(&w, "elapsed"); json_number(&w, r->elapsed);
         json_key(&w, "version"); json_string(&w, r->version);
+        /* The bounds of the design space Pareto options sit on (an
+         * artefact of the range, not an optimum): [{variable, bound,
+         * value, pareto}]. */
+        json_key(&w, "front_at_bounds");
+        json_begin_array(&w);
+        double value[FRONT_BOUNDS] = {r->u_min, r->u_max, r->v_min, r->v_max,
+                                      r->threshold_min_mm,
+                                      r->threshold_max_mm};
+        for (int b = 0; b < FRONT_BOUNDS; b++) {
+            if (bounds[k].at[b] == 0 || !(value[b | 1] > value[b & ~1]))
+                continue;
+            json_begin_object(&w);
+            json_key(&w, "variable"); json_string(&w, bound_name[b][0]);
+            json_key(&w, "bound"); json_string(&w, bound_name[b][1]);
+            json_key(&w, "value"); json_number(&w, value[b]);
+            json_key(&w, "pareto"); json_integer(&w, bounds[k].at[b]);
+            json_end_object(&w);
+        }
+        json_end_array(&w);
         json_end_object(&w);
     }
     json_end_array(&w);
     json_finish(&w);
 }
 
-static void print_human(const struct run_info *runs, size_t n)
+static void print_human(const struct run_info *runs,
+                        const struct front_bounds *bounds, size_t n)
 {
     printf("%4s %-11s %-10s %8s %6s %14s %8s %9s  %-20s %s\n", "run",
            "status", "method", "options", "pareto", "best cost USD",
@@ -96,6 +121,11 @@ static void print_human(const struct run_info *runs, size_t n)
     }
     if (n == 0)
         printf("(no runs yet: facet optimize SURFACE.obj --db FILE)\n");
+    for (size_t k = 0; k < n; k++) {
+        char note[1024];
+        if (study_front_edge_note(&runs[k], &bounds[k], note, sizeof note))
+            printf("run %lld: %s\n", (long long)runs[k].id, note);
+    }
 }
 
 static int runs_main(int argc, char **argv, struct facet_error *err)
@@ -116,16 +146,22 @@ static int runs_main(int argc, char **argv, struct facet_error *err)
     struct store *store;
     if ((rc = store_open_read(path[0], &store, err)) != FACET_OK)
         return rc;
-    struct run_info *runs;
-    size_t n;
+    struct run_info *runs = NULL;
+    size_t n = 0;
     rc = store_run_list(store, &runs, &n, err);
+    struct front_bounds *bounds = NULL;
+    if (rc == FACET_OK && (bounds = calloc(n ? n : 1, sizeof *bounds)) == NULL)
+        rc = facet_error_set(err, FACET_EWORK, "out of memory");
+    for (size_t k = 0; rc == FACET_OK && k < n; k++)
+        rc = store_front_bounds(store, runs[k].id, &bounds[k], err);
     if (rc == FACET_OK) {
         if (json)
-            print_json(runs, n);
+            print_json(runs, bounds, n);
         else
-            print_human(runs, n);
-        free(runs);
+            print_human(runs, bounds, n);
     }
+    free(bounds);
+    free(runs);
     store_close(store);
     return rc;
 }

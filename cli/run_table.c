@@ -8,6 +8,7 @@
 #include <string.h>
 
 #include "core/numformat.h"
+#include "store/study.h"
 
 static int by_cost(const void *a, const void *b)
 {
@@ -73,5 +74,11 @@ int run_table_print(FILE *out, struct store *store, const char *db,
                 db, (long long)run);
     fprintf(out, "* Pareto-optimal\n");
     free(listed);
+    struct front_bounds bounds;
+    if ((rc = store_front_bounds(store, run, &bounds, err)) != FACET_OK)
+        return rc;
+    char note[1024];
+    if (study_front_edge_note(&info, &bounds, note, sizeof note))
+        fprintf(out, "note: %s\n", note);
     return FACET_OK;
 }

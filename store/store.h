@@ -164,6 +164,17 @@ int store_options_put(struct store *store, int64_t run,
 int store_options_get(struct store *store, int64_t run,
                       struct option_row **rows, size_t *n,
                       struct facet_error *err);
+/* How many of a run's Pareto options sit on each bound of its design
+ * space, in the order of enum front_bound. */
+enum front_bound { BOUND_U_MIN, BOUND_U_MAX, BOUND_V_MIN, BOUND_V_MAX,
+                   BOUND_T_MIN, BOUND_T_MAX, FRONT_BOUNDS };
+struct front_bounds {
+    int64_t pareto;              /* options of rank 1 */
+    int64_t at[FRONT_BOUNDS];
+};
+int store_front_bounds(struct store *store, int64_t run,
+                       struct front_bounds *out, struct facet_error *err);
+
 /* Option number of run into *row; FACET_EINPUT when there is none. */
 int store_option_get(struct store *store, int64_t run, int64_t number,
                      struct option_row *row, struct facet_error *err);

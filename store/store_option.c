@@ -191,6 +191,35 @@ int store_option_get(struct store *store, int64_t run, int64_t number,
     return rc;
 }
 
+int store_front_bounds(struct store *store, int64_t run,
+                       struct front_bounds *out, struct facet_error *err)
+{
+    memset(out, 0, sizeof *out);
+    sqlite3_stmt *s;
+    /* The threshold's bounds compare to a thousandth of a millimetre, the
+     * precision options are drawn at. */
+    int rc = store_prepare(store,
+        "SELECT count(*),"
+        " coalesce(sum(o.nu = r.u_min), 0), coalesce(sum(o.nu = r.u_max), 0),"
+        " coalesce(sum(o.nv = r.v_min), 0), coalesce(sum(o.nv = r.v_max), 0),"
+        " coalesce(sum(abs(o.threshold_mm - r.threshold_min_mm) < 5e-4), 0),"
+        " coalesce(sum(abs(o.threshold_mm - r.threshold_max_mm) < 5e-4), 0)"
+        " FROM options o JOIN runs r ON r.id = o.run"
+        " WHERE o.run = ?1 AND o.rank = 1", &s, "reading the front", err);
+    if (rc != FACET_OK)
+        return rc;
+    sqlite3_bind_int64(s, 1, run);
+    if (sqlite3_step(s) == SQLITE_ROW) {
+        out->pareto = sqlite3_column_int64(s, 0);
+        for (int k = 0; k < FRONT_BOUNDS; k++)
+            out->at[k] = sqlite3_column_int64(s, 1 + k);
+    } else {
+        rc = store_fail(store, "reading the front", err);
+    }
+    sqlite3_finalize(s);
+    return rc;
+}
+
 int store_options_set_pareto(struct store *store, int64_t run,
                              const int64_t *numbers, const int *rank,
                              const double *crowding, size_t n, int64_t knee,

@@ -623,3 +623,35 @@ int study_resume(struct store *store, int64_t run_id,
     surface_close(&surface);
     return rc;
 }
+
+int study_front_edge_note(const struct run_info *run,
+                          const struct front_bounds *b, char *text,
+                          size_t size)
+{
+    static const char *const variable[3] = {"U", "V", "the threshold"};
+    static const char *const unit[3] = {"", "", " mm"};
+    double low[3] = {run->u_min, run->v_min, run->threshold_min_mm};
+    double high[3] = {run->u_max, run->v_max, run->threshold_max_mm};
+    size_t used = 0;
+    text[0] = '\0';
+    for (int k = 0; k < FRONT_BOUNDS; k++) {
+        int v = k / 2, top = k % 2;
+        if (b->at[k] == 0 || !(high[v] > low[v]))
+            continue;
+        int wrote = snprintf(text + used, size - used,
+            "%s%lld of %lld Pareto options sit at %s = %g%s, the %s of its "
+            "range %g:%g", used ? "; " : "", (long long)b->at[k],
+            (long long)b->pareto, variable[v], top ? high[v] : low[v],
+            unit[v], top ? "top" : "bottom", low[v], high[v]);
+        if (wrote < 0 || (size_t)wrote >= size - used)
+            break;
+        used += (size_t)wrote;
+    }
+    if (used == 0)
+        return 0;
+    if (used < size)
+        snprintf(text + used, size - used,
+                 ": the front may go on beyond it; widen the range there "
+                 "before taking the bound for an optimum");
+    return 1;
+}

@@ -90,4 +90,14 @@ int study_option_panels(struct store *store, const struct run_info *run,
  * hypervolume. */
 int study_rank(struct store *store, int64_t run, struct facet_error *err);
 
+/* Writes into text (size bytes) what a designer must know when run's
+ * Pareto options sit on a bound of its design space (bounds, read with
+ * store_front_bounds): each such bound, how many options sit there, and
+ * that widening the range there shows whether the front goes on, instead
+ * of taking the bound for an optimum. Bounds of a range of one value are
+ * not edges. Returns 1 when it wrote a note, 0 (text "") otherwise. */
+int study_front_edge_note(const struct run_info *run,
+                          const struct front_bounds *bounds, char *text,
+                          size_t size);
+
 #endif

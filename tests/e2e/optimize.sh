@@ -409,7 +409,9 @@ same "kill -9: no committed option lost, and it stopped mid-run (options before,
     "$before $after yes"
 expect "kill -9: facet runs" 0 "$FACET" runs "$KILL"
 stdout_has "kill -9: facet runs reports the run interrupted" '^ +1 interrupted '
-same "kill -9: and records it" "$(sql "$KILL" 'SELECT status FROM runs')" interrupted
+same "kill -9: facet runs only reads: the file still says running" "$(sql "$KILL" 'SELECT status FROM runs')" running
+expect "kill -9: a writer opens the file (facet show)" 0 "$FACET" show "$KILL" --run 1 --option 1
+same "kill -9: and the writer records it" "$(sql "$KILL" 'SELECT status FROM runs')" interrupted
 same "kill -9: integrity ok" "$(sql "$KILL" 'PRAGMA integrity_check')" ok
 expect "kill -9: resume" 0 "$FACET" optimize --db "$KILL" --resume 1 --table 0
 same "kill -9: resumed to done" \
@@ -474,4 +476,24 @@ expect_error "--objectives nosuch" "facet: --objectives: unknown metric 'nosuch'
     "$FACET" optimize "$ROOF" --db "$WORK/fresh.db" --objectives nosuch
 expect_error "--db missing" 'name the result database' "$FACET" optimize "$ROOF" "${SMALL[@]}"
 expect_error "--resume with an OBJ" 'give no OBJ' "$FACET" optimize "$ROOF" --db "$DB" --resume 1
+# A front at the edge of the search: the roof priced SP as FP with no size
+# limit worth the name piles its Pareto options at the finest grid; the
+# note names the bound and the count, which sqlite3 counts too.
+run "$FACET" optimize "$ROOF" --db "$WORK/edge.db" --u 3:9 --v 3:9 --threshold 3 --max-panel-area 1000
+edge_db=$WORK/edge.db
+at_top=$(sqlite3 "$edge_db" "SELECT count(*) FROM options WHERE run = 1 AND rank = 1 AND nv = 9")
+pareto=$(sqlite3 "$edge_db" "SELECT count(*) FROM options WHERE run = 1 AND rank = 1")
+if [ "$at_top" -gt 0 ]; then
+    stdout_has "optimize notes the front at V's top" "^note: .*$at_top of $pareto Pareto options sit at V = 9, the top of its range 3:9"
+    run "$FACET" runs "$edge_db"
+    stdout_has "runs notes it too" "^run 1: .*sit at V = 9, the top of its range 3:9.*widen the range"
+    run "$FACET" runs "$edge_db" --json
+    json_check "runs --json: front_at_bounds as sqlite3 counts it" \
+        "{'variable':'nv','bound':'max','value':9,'pareto':$at_top} in j[0]['front_at_bounds']"
+else
+    fail "the edge case has Pareto options at V = 9 (sqlite3 counts $at_top)"
+fi
+# A space whose front sits inside: no note.
+run "$FACET" optimize "$ROOF" --db "$WORK/inner.db" --u 5:5 --v 5:5 --threshold 3
+if grep -q '^note:' "$OUT"; then fail "one grid: no edge note"; else pass "one grid: no edge note"; fi
 exit 0
