@@ -28,8 +28,17 @@ void progress_start(struct progress *p, const char *what,
 static void draw(struct progress *p, int64_t done, int64_t total, int last)
 {
     double elapsed = progress_now() - p->started;
-    double rate = elapsed > 0 ? (double)(done - p->first_done) / elapsed : 0;
-    double left = rate > 0 ? (double)(total - done) / rate : 0;
+    int64_t since = done - p->first_done;
+    /* A rate needs work done over a time worth the name; until then the
+     * line says so rather than "0.0/s, ETA 0 s". */
+    int measured = since > 0 && elapsed >= 0.05;
+    double rate = measured ? (double)since / elapsed : 0;
+    char rate_text[32] = "-/s", left_text[32] = "-";
+    if (measured) {
+        snprintf(rate_text, sizeof rate_text, "%.1f/s", rate);
+        snprintf(left_text, sizeof left_text, "%.0f s",
+                 (double)(total - done) / rate);
+    }
     double fraction = total > 0 ? (double)done / (double)total : 1;
     if (p->terminal) {
         char bar[31];
@@ -37,15 +46,22 @@ static void draw(struct progress *p, int64_t done, int64_t total, int last)
         for (int k = 0; k < 30; k++)
             bar[k] = k < filled ? '#' : '-';
         bar[30] = '\0';
-        fprintf(stderr, "\r[%s] %lld/%lld %s  %.1f/s  ETA %.0f s  ", bar,
-                (long long)done, (long long)total, p->what, rate,
-                last ? 0.0 : left);
         if (last)
-            fputc('\n', stderr);
-    } else {
-        fprintf(stderr, "progress: %lld/%lld %s (%.0f%%), %.1f/s, %s %.0f s\n",
+            fprintf(stderr, "\r[%s] %lld/%lld %s  %s  took %.1f s  \n", bar,
+                    (long long)done, (long long)total, p->what, rate_text,
+                    elapsed);
+        else
+            fprintf(stderr, "\r[%s] %lld/%lld %s  %s  ETA %s  ", bar,
+                    (long long)done, (long long)total, p->what, rate_text,
+                    left_text);
+    } else if (last) {
+        fprintf(stderr, "progress: %lld/%lld %s (%.0f%%), %s, took %.1f s\n",
                 (long long)done, (long long)total, p->what, 100 * fraction,
-                rate, last ? "took" : "ETA", last ? elapsed : left);
+                rate_text, elapsed);
+    } else {
+        fprintf(stderr, "progress: %lld/%lld %s (%.0f%%), %s, ETA %s\n",
+                (long long)done, (long long)total, p->what, 100 * fraction,
+                rate_text, left_text);
     }
     fflush(stderr);
 }

@@ -33,3 +33,6 @@ echo "== facet plot and facet export: the run's scatter and the knee option ($kn
 "$facet" plot "$out/demo.db" --run 1 -o "$out/demo-pareto.svg" --force
 "$facet" export "$out/demo.db" --run 1 --option "$knee" --force \
     --obj "$out/demo-knee.obj" --csv "$out/demo-knee.csv" --svg "$out/demo-knee.svg"
+echo
+echo "Next: explore the options in the workbench (q quits, ? lists the keys):"
+echo "  $facet tui $out/demo.db"

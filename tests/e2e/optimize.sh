@@ -496,4 +496,16 @@ fi
 # A space whose front sits inside: no note.
 run "$FACET" optimize "$ROOF" --db "$WORK/inner.db" --u 5:5 --v 5:5 --threshold 3
 if grep -q '^note:' "$OUT"; then fail "one grid: no edge note"; else pass "one grid: no edge note"; fi
+# The progress line never claims a rate before it has one.
+run "$FACET" optimize "$ROOF" --db "$WORK/progress.db" --u 4:20 --v 4:20 --threshold 3
+if grep -qE '0\.0/s|ETA 0 s' "$ERR"; then
+    fail "progress: no 0.0/s or ETA 0 s before a rate is measured"
+else
+    pass "progress: no 0.0/s or ETA 0 s before a rate is measured"
+fi
+if tail -n 1 "$ERR" | grep -qE '^progress: 289/289 options \(100%\), [0-9.]+/s, took [0-9.]+ s$'; then
+    pass "progress: the last line gives the rate and the time taken"
+else
+    fail "progress: the last line gives the rate and the time taken"
+fi
 exit 0
