@@ -150,9 +150,10 @@ static int optimize_main(int argc, char **argv, struct facet_error *err)
     struct classify_flags flags;
     const char *db = NULL, *resume = NULL, *name = NULL, *table = NULL;
     const char *surface = NULL;
+    int wide = 0;
     memset(&search, 0, sizeof search);
     memset(&flags, 0, sizeof flags);
-    struct arg_option options[CLASSIFY_FLAG_COUNT + 16] = {
+    struct arg_option options[CLASSIFY_FLAG_COUNT + 17] = {
         {"db", 0, ARG_STRING, &db, NULL},
         {"u", 0, ARG_STRING, &search.u, NULL},
         {"v", 0, ARG_STRING, &search.v, NULL},
@@ -168,9 +169,10 @@ static int optimize_main(int argc, char **argv, struct facet_error *err)
         {"name", 0, ARG_STRING, &name, NULL},
         {"table", 0, ARG_STRING, &table, NULL},
         {"surface", 0, ARG_STRING, &surface, NULL},
+        {"wide", 0, ARG_FLAG, NULL, &wide},
     };
-    classify_flags_table(&flags, options + 15);
-    options[CLASSIFY_FLAG_COUNT + 15] =
+    classify_flags_table(&flags, options + 16);
+    options[CLASSIFY_FLAG_COUNT + 16] =
         (struct arg_option){NULL, 0, ARG_FLAG, NULL, NULL};
     const char *path[1];
     int count;
@@ -246,7 +248,7 @@ static int optimize_main(int argc, char **argv, struct facet_error *err)
             fprintf(stderr, "facet: run %lld interrupted; every evaluated "
                     "option is stored. Go on with: facet optimize --db %s "
                     "--resume %lld\n", (long long)run, db, (long long)run);
-        rc = run_table_print(stdout, store, db, run, rows, err);
+        rc = run_table_print(stdout, store, db, run, rows, wide, err);
     }
     store_close(store);
     if (rc == FACET_OK && outcome == OPTIMIZE_INTERRUPTED)
@@ -284,7 +286,13 @@ const struct command cmd_optimize = {
         "  --surface FILE      with --resume: the run's surface has moved;\n"
         "                      record its new place (same SHA-256)\n"
         "  --name TEXT         a name for the run\n"
-        "  --table N           rows of the final table (default 20; 0 all)\n",
+        "  --table N           rows of the final table (default 20; 0 all)\n"
+        "  --wide              every column of it, whatever the terminal\n"
+        "examples:\n"
+        "  facet optimize roof.obj --db runs.db --sp-as-fp "
+        "--max-panel-area 1.92\n"
+        "  facet optimize roof.obj --db runs.db --threshold 1:10 --method "
+        "nsga2 --seed 7\n",
     .shared_options = classify_flags_usage,
     .run = optimize_main,
 };

@@ -12,6 +12,7 @@
 #include "command.h"
 #include "core/json.h"
 #include "core/numformat.h"
+#include "text_table.h"
 #include "store/filter.h"
 #include "store/store.h"
 
@@ -20,22 +21,52 @@ enum listing_format { LISTING_TABLE, LISTING_JSON, LISTING_CSV };
 struct listing {
     enum listing_format format;
     struct json_writer json;
+    struct text_table table;
     int64_t rows;
 };
+
+/* The human table: the objectives and the design variables stay longest,
+ * the FP and SP areas go first on a narrow terminal. */
+static const struct text_column option_columns[] = {
+    {"run", "", 4, 0, 2, 0},
+    {"No.", "", 6, 0, 0, 0},
+    {"", "", 1, 0, 0, 0},
+    {"planarity", "m", 11, 0, 9, 0},
+    {"DP area", "m^2", 10, 0, 9, 0},
+    {"total cost", "USD", 14, 0, 9, 0},
+    {"FP area", "m^2", 10, 0, 3, 0},
+    {"SP area", "m^2", 10, 0, 3, 0},
+    {"U", "", 4, 0, 8, 0},
+    {"V", "", 4, 0, 8, 0},
+    {"t", "mm", 7, 0, 7, 0},
+    {"rank", "", 4, 0, 5, 0},
+    {"ok", "", 3, 0, 4, 0},
+    {"", "", 4, 1, 6, 0},
+};
+enum { OPTION_COLUMNS = sizeof option_columns / sizeof option_columns[0] };
 
 static int list_row(void *context, int64_t run, const struct option_row *o)
 {
     struct listing *l = context;
     if (l->format == LISTING_TABLE) {
-        char cost[64];
+        char cost[64], id[24], number[24], planarity[32], dp[32], fp[32];
+        char sp[32], u[16], v[16], t[32], rank[16];
         number_grouped(cost, sizeof cost, o->totals.cost, 0);
-        printf("%4lld %6lld %1s %11.4f %10.2f %14s %10.2f %10.2f %4d %4d "
-               "%7.2f %4d %3s%s\n", (long long)run, (long long)o->number,
-               o->rank == 1 ? "*" : "", o->totals.planarity,
-               o->totals.area_of[TYPE_DP], cost, o->totals.area_of[TYPE_FP],
-               o->totals.area_of[TYPE_SP], o->nu, o->nv, o->threshold_mm,
-               o->rank, o->totals.feasible ? "yes" : "no",
-               o->knee ? "  knee" : "");
+        snprintf(id, sizeof id, "%lld", (long long)run);
+        snprintf(number, sizeof number, "%lld", (long long)o->number);
+        snprintf(planarity, sizeof planarity, "%.4f", o->totals.planarity);
+        snprintf(dp, sizeof dp, "%.2f", o->totals.area_of[TYPE_DP]);
+        snprintf(fp, sizeof fp, "%.2f", o->totals.area_of[TYPE_FP]);
+        snprintf(sp, sizeof sp, "%.2f", o->totals.area_of[TYPE_SP]);
+        snprintf(u, sizeof u, "%d", o->nu);
+        snprintf(v, sizeof v, "%d", o->nv);
+        snprintf(t, sizeof t, "%.2f", o->threshold_mm);
+        snprintf(rank, sizeof rank, "%d", o->rank);
+        const char *cell[OPTION_COLUMNS] = {
+            id, number, o->rank == 1 ? "*" : "", planarity, dp, cost, fp, sp,
+            u, v, t, rank, o->totals.feasible ? "yes" : "no",
+            o->knee ? "knee" : ""};
+        text_table_row(stdout, &l->table, cell);
     } else if (l->format == LISTING_JSON) {
         json_begin_object(&l->json);
         json_key(&l->json, "run");
@@ -74,7 +105,7 @@ static int list_row(void *context, int64_t run, const struct option_row *o)
 static int options_main(int argc, char **argv, struct facet_error *err)
 {
     const char *run = NULL, *sort = NULL, *where = NULL, *limit = NULL;
-    int pareto = 0, desc = 0, json = 0, csv = 0;
+    int pareto = 0, desc = 0, json = 0, csv = 0, wide = 0;
     const struct arg_option options[] = {
         {"run", 0, ARG_STRING, &run, NULL},
         {"pareto", 0, ARG_FLAG, NULL, &pareto},
@@ -84,6 +115,7 @@ static int options_main(int argc, char **argv, struct facet_error *err)
         {"limit", 0, ARG_STRING, &limit, NULL},
         {"json", 0, ARG_FLAG, NULL, &json},
         {"csv", 0, ARG_FLAG, NULL, &csv},
+        {"wide", 0, ARG_FLAG, NULL, &wide},
         {NULL, 0, ARG_FLAG, NULL, NULL},
     };
     const char *path[1];
@@ -121,12 +153,10 @@ static int options_main(int argc, char **argv, struct facet_error *err)
     listing.format = json ? LISTING_JSON : csv ? LISTING_CSV : LISTING_TABLE;
     if (rc == FACET_OK) {
         if (listing.format == LISTING_TABLE) {
-            printf("%4s %6s %1s %11s %10s %14s %10s %10s %4s %4s %7s %4s "
-                   "%3s\n", "run", "No.", "", "planarity", "DP area",
-                   "total cost", "FP area", "SP area", "U", "V", "t",
-                   "rank", "ok");
-            printf("%4s %6s %1s %11s %10s %14s %10s %10s %4s %4s %7s\n", "",
-                   "", "", "m", "m^2", "USD", "m^2", "m^2", "", "", "mm");
+            listing.table = (struct text_table){option_columns,
+                                                OPTION_COLUMNS, {0}, 0, 0};
+            text_table_fit(&listing.table, text_table_width(stdout, wide));
+            text_table_head(stdout, &listing.table);
         } else if (listing.format == LISTING_JSON) {
             json_init(&listing.json, stdout);
             json_begin_array(&listing.json);
@@ -146,6 +176,7 @@ static int options_main(int argc, char **argv, struct facet_error *err)
             printf("(%lld options%s%s)\n", (long long)listing.rows,
                    filter ? " where " : "", filter ? filter_text(filter)
                                                    : "");
+            text_table_foot(stdout, &listing.table);
         }
     }
     store_close(store);
@@ -156,7 +187,7 @@ static int options_main(int argc, char **argv, struct facet_error *err)
 const struct command cmd_options = {
     .name = "options",
     .usage = "DB [--run N] [--pareto] [--sort KEY[,KEY]] [--desc]\n"
-             "       [--where EXPR] [--limit N] [--json|--csv]",
+             "       [--where EXPR] [--limit N] [--wide] [--json|--csv]",
     .summary = "List, filter and sort the design options of a result "
                "store.",
     .options =
@@ -169,6 +200,12 @@ const struct command cmd_options = {
         "                      pareto' (columns: see README)\n"
         "  --limit N           at most N options\n"
         "  --json              one JSON array, every column\n"
-        "  --csv               CSV with a header row, every column\n",
+        "  --csv               CSV with a header row, every column\n"
+        "  --wide              every column of the table, whatever the\n"
+        "                      terminal's width\n"
+        "examples:\n"
+        "  facet options runs.db --run 1 --pareto --sort cost\n"
+        "  facet options runs.db --where 'dp_area < 300 and feasible' "
+        "--csv > cheap.csv\n",
     .run = options_main,
 };

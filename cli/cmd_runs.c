@@ -10,6 +10,7 @@
 #include "command.h"
 #include "core/json.h"
 #include "core/numformat.h"
+#include "text_table.h"
 #include "store/store.h"
 #include "store/study.h"
 
@@ -101,38 +102,62 @@ static void print_json(const struct run_info *runs,
 }
 
 static void print_human(const struct run_info *runs,
-                        const struct front_bounds *bounds, size_t n)
+                        const struct front_bounds *bounds, size_t n,
+                        int wide)
 {
-    printf("%4s %-11s %-10s %8s %6s %14s %8s %9s  %-20s %s\n", "run",
-           "status", "method", "options", "pareto", "best cost USD",
-           "HV", "elapsed s", "started", "name / surface");
+    static const struct text_column columns[] = {
+        {"run", "", 4, 0, 0, 0},
+        {"status", "", 11, 1, 0, 0},
+        {"method", "", 10, 1, 3, 0},
+        {"options", "", 8, 0, 5, 0},
+        {"pareto", "", 6, 0, 4, 0},
+        {"best cost", "USD", 14, 0, 6, 0},
+        {"HV", "", 8, 0, 2, 0},
+        {"elapsed", "s", 9, 0, 2, 0},
+        {"started", "UTC", 20, 1, 1, 0},
+        {"name / surface", "", 14, 1, 0, 1},
+    };
+    struct text_table t = {columns, 10, {0}, 0, 0};
+    text_table_fit(&t, text_table_width(stdout, wide));
+    text_table_head(stdout, &t);
     for (size_t k = 0; k < n; k++) {
         const struct run_info *r = &runs[k];
-        char cost[64] = "-", hv[32] = "-";
+        char id[24], options[24], pareto[24], elapsed[32];
+        char cost[64] = "-", hv[32] = "-", label[1200];
+        snprintf(id, sizeof id, "%lld", (long long)r->id);
+        snprintf(options, sizeof options, "%lld", (long long)r->options);
+        snprintf(pareto, sizeof pareto, "%lld", (long long)r->pareto_options);
+        snprintf(elapsed, sizeof elapsed, "%.2f", r->elapsed);
         if (isfinite(r->best_cost))
             number_grouped(cost, sizeof cost, r->best_cost, 0);
         if (isfinite(r->hypervolume))
             snprintf(hv, sizeof hv, "%.4f", r->hypervolume);
-        printf("%4lld %-11s %-10s %8lld %6lld %14s %8s %9.2f  %-20s %s%s%s\n",
-               (long long)r->id, r->status, r->method, (long long)r->options,
-               (long long)r->pareto_options, cost, hv, r->elapsed,
-               r->started, r->name, r->name[0] ? " / " : "",
-               r->surface_path);
+        snprintf(label, sizeof label, "%s%s%s", r->name,
+                 r->name[0] ? " / " : "", r->surface_path);
+        const char *cell[] = {id, r->status, r->method, options, pareto,
+                              cost, hv, elapsed, r->started, label};
+        text_table_row(stdout, &t, cell);
     }
     if (n == 0)
         printf("(no runs yet: facet optimize SURFACE.obj --db FILE)\n");
+    text_table_foot(stdout, &t);
     for (size_t k = 0; k < n; k++) {
         char note[1024];
-        if (study_front_edge_note(&runs[k], &bounds[k], note, sizeof note))
-            printf("run %lld: %s\n", (long long)runs[k].id, note);
+        char line[1100];
+        if (study_front_edge_note(&runs[k], &bounds[k], note, sizeof note)) {
+            snprintf(line, sizeof line, "run %lld: %s", (long long)runs[k].id,
+                     note);
+            text_wrap(stdout, line, text_table_width(stdout, wide));
+        }
     }
 }
 
 static int runs_main(int argc, char **argv, struct facet_error *err)
 {
-    int json = 0;
+    int json = 0, wide = 0;
     const struct arg_option options[] = {
         {"json", 0, ARG_FLAG, NULL, &json},
+        {"wide", 0, ARG_FLAG, NULL, &wide},
         {NULL, 0, ARG_FLAG, NULL, NULL},
     };
     const char *path[1];
@@ -158,7 +183,7 @@ static int runs_main(int argc, char **argv, struct facet_error *err)
         if (json)
             print_json(runs, bounds, n);
         else
-            print_human(runs, bounds, n);
+            print_human(runs, bounds, n, wide);
     }
     free(bounds);
     free(runs);
@@ -168,8 +193,14 @@ static int runs_main(int argc, char **argv, struct facet_error *err)
 
 const struct command cmd_runs = {
     .name = "runs",
-    .usage = "DB [--json]",
+    .usage = "DB [--wide] [--json]",
     .summary = "List the runs of a result store, one line each.",
-    .options = "  --json              one JSON array of runs\n",
+    .options = "  --wide              every column, whatever the terminal's "
+               "width\n"
+               "  --json              one JSON array of runs\n"
+               "examples:\n"
+               "  facet runs runs.db\n"
+               "  facet runs runs.db --json | python3 -c 'import json,sys; "
+               "print(json.load(sys.stdin)[-1][\"status\"])'\n",
     .run = runs_main,
 };

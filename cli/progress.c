@@ -31,7 +31,7 @@ static void draw(struct progress *p, int64_t done, int64_t total, int last)
     int64_t since = done - p->first_done;
     /* A rate needs work done over a time worth the name; until then the
      * line says so rather than "0.0/s, ETA 0 s". */
-    int measured = since > 0 && elapsed >= 0.05;
+    int measured = since > 0 && (elapsed >= 0.05 || (last && elapsed > 0));
     double rate = measured ? (double)since / elapsed : 0;
     char rate_text[32] = "-/s", left_text[32] = "-";
     if (measured) {

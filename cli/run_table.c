@@ -8,6 +8,7 @@
 #include <string.h>
 
 #include "core/numformat.h"
+#include "text_table.h"
 #include "store/study.h"
 
 static int by_cost(const void *a, const void *b)
@@ -19,7 +20,7 @@ static int by_cost(const void *a, const void *b)
 }
 
 int run_table_print(FILE *out, struct store *store, const char *db,
-                    int64_t run, long rows, struct facet_error *err)
+                    int64_t run, long rows, int wide, struct facet_error *err)
 {
     struct run_info info;
     int rc = store_run_get(store, run, &info, err);
@@ -27,18 +28,21 @@ int run_table_print(FILE *out, struct store *store, const char *db,
         return rc;
     char cost[64];
     number_grouped(cost, sizeof cost, info.best_cost, 0);
-    fprintf(out, "run %lld (%s%s%s): %s, %s, %lld options in %.2f s, "
-            "%lld Pareto-optimal\n", (long long)info.id, info.status,
-            info.name[0] ? ", " : "", info.name, info.surface_path,
-            info.method, (long long)info.options, info.elapsed,
-            (long long)info.pareto_options);
+    char line[2400];
+    snprintf(line, sizeof line, "run %lld (%s%s%s): %s, %s, %lld options in "
+             "%.2f s, %lld Pareto-optimal", (long long)info.id, info.status,
+             info.name[0] ? ", " : "", info.name, info.surface_path,
+             info.method, (long long)info.options, info.elapsed,
+             (long long)info.pareto_options);
+    text_wrap(out, line, text_table_width(out, wide));
     char hypervolume[32] = "- (no feasible option)";
     if (isfinite(info.hypervolume))
         snprintf(hypervolume, sizeof hypervolume, "%.6f", info.hypervolume);
-    fprintf(out, "objectives %s; hypervolume %s (normalised, reference "
-            "point 1.1 on every axis); knee option %lld; best cost %s USD\n",
-            info.objectives, hypervolume, (long long)info.knee,
-            isfinite(info.best_cost) ? cost : "-");
+    snprintf(line, sizeof line, "objectives %s; hypervolume %s (normalised, "
+             "reference point 1.1 on every axis); knee option %lld; best "
+             "cost %s USD", info.objectives, hypervolume,
+             (long long)info.knee, isfinite(info.best_cost) ? cost : "-");
+    text_wrap(out, line, text_table_width(out, wide));
 
     /* The Pareto options first, then the next fronts, cheapest first
      * within each, up to rows. */
@@ -52,33 +56,62 @@ int run_table_print(FILE *out, struct store *store, const char *db,
     if (rc != FACET_OK)
         return rc;
     qsort(listed, n, sizeof *listed, by_cost);
-    fprintf(out, "\n%6s %1s %11s %10s %14s %10s %10s %4s %4s %7s %4s\n",
-            "No.", "", "planarity", "DP area", "total cost", "FP area",
-            "SP area", "U", "V", "t", "rank");
-    fprintf(out, "%6s %1s %11s %10s %14s %10s %10s %4s %4s %7s %4s\n", "",
-            "", "m", "m^2", "USD", "m^2", "m^2", "", "", "mm", "");
+    static const struct text_column columns[] = {
+        {"No.", "", 6, 0, 0, 0},
+        {"", "", 1, 0, 0, 0},
+        {"planarity", "m", 11, 0, 9, 0},
+        {"DP area", "m^2", 10, 0, 9, 0},
+        {"total cost", "USD", 14, 0, 9, 0},
+        {"FP area", "m^2", 10, 0, 3, 0},
+        {"SP area", "m^2", 10, 0, 2, 0},
+        {"U", "", 4, 0, 8, 0},
+        {"V", "", 4, 0, 8, 0},
+        {"t", "mm", 7, 0, 7, 0},
+        {"rank", "", 4, 0, 5, 0},
+        {"", "", 15, 1, 9, 0},
+    };
+    struct text_table t = {columns, sizeof columns / sizeof columns[0],
+                           {0}, 0, 0};
+    text_table_fit(&t, text_table_width(out, wide));
+    fputc('\n', out);
+    text_table_head(out, &t);
     for (size_t k = 0; k < n; k++) {
         const struct option_row *o = &listed[k];
+        char number[24], planarity[32], dp[32], fp[32], sp[32], u[16], v[16];
+        char th[32], rank[16], marks[32];
         number_grouped(cost, sizeof cost, o->totals.cost, 0);
-        fprintf(out, "%6lld %1s %11.3f %10.1f %14s %10.1f %10.1f %4d %4d "
-                "%7.2f %4d%s%s\n", (long long)o->number,
-                o->rank == 1 ? "*" : "", o->totals.planarity,
-                o->totals.area_of[TYPE_DP], cost, o->totals.area_of[TYPE_FP],
-                o->totals.area_of[TYPE_SP], o->nu, o->nv, o->threshold_mm,
-                o->rank, o->knee ? "  knee" : "",
-                o->totals.feasible ? "" : "  infeasible");
+        snprintf(number, sizeof number, "%lld", (long long)o->number);
+        snprintf(planarity, sizeof planarity, "%.3f", o->totals.planarity);
+        snprintf(dp, sizeof dp, "%.1f", o->totals.area_of[TYPE_DP]);
+        snprintf(fp, sizeof fp, "%.1f", o->totals.area_of[TYPE_FP]);
+        snprintf(sp, sizeof sp, "%.1f", o->totals.area_of[TYPE_SP]);
+        snprintf(u, sizeof u, "%d", o->nu);
+        snprintf(v, sizeof v, "%d", o->nv);
+        snprintf(th, sizeof th, "%.2f", o->threshold_mm);
+        snprintf(rank, sizeof rank, "%d", o->rank);
+        snprintf(marks, sizeof marks, "%s%s%s", o->knee ? "knee" : "",
+                 o->knee && !o->totals.feasible ? " " : "",
+                 o->totals.feasible ? "" : "infeasible");
+        const char *cell[] = {number, o->rank == 1 ? "*" : "", planarity,
+                              dp, cost, fp, sp, u, v, th, rank, marks};
+        text_table_row(out, &t, cell);
     }
-    if ((int64_t)n < info.options)
-        fprintf(out, "(%zu of %lld options; 'facet options %s --run %lld' "
-                "lists them all)\n", n, (long long)info.options,
-                db, (long long)run);
+    if ((int64_t)n < info.options) {
+        snprintf(line, sizeof line, "(%zu of %lld options; 'facet options %s "
+                 "--run %lld' lists them all)", n, (long long)info.options,
+                 db, (long long)run);
+        text_wrap(out, line, text_table_width(out, wide));
+    }
     fprintf(out, "* Pareto-optimal\n");
+    text_table_foot(out, &t);
     free(listed);
     struct front_bounds bounds;
     if ((rc = store_front_bounds(store, run, &bounds, err)) != FACET_OK)
         return rc;
     char note[1024];
-    if (study_front_edge_note(&info, &bounds, note, sizeof note))
-        fprintf(out, "note: %s\n", note);
+    if (study_front_edge_note(&info, &bounds, note, sizeof note)) {
+        snprintf(line, sizeof line, "note: %s", note);
+        text_wrap(out, line, text_table_width(out, wide));
+    }
     return FACET_OK;
 }

@@ -80,6 +80,29 @@ expect_error "did you mean a swapped flag" "did you mean --grid\\?" "$FACET" cla
 expect_error "nothing near: the help" "unknown command 'zzz' \\(see 'facet --help'\\)" "$FACET" zzz
 expect_error "nothing near a flag: the help" "unknown option '--zzzzzz' \\(see 'facet runs --help'\\)" "$FACET" runs x.db --zzzzzz
 
+# Width: the human tables fit an 80-column terminal (COLUMNS, as a terminal
+# would say), and --wide prints every column.
+"$FACET" example roof --res 30 -o "$WORK/wroof.obj" || exit 1
+run env COLUMNS=80 "$FACET" optimize "$WORK/wroof.obj" --db "$WORK/w.db" --u 4:9 --v 4:9 --threshold 3 --name "a rather long run name for the width check"
+widest=$(awk '{ if (length($0) > w) w = length($0) } END { print w + 0 }' "$OUT")
+if [ "$widest" -le 80 ]; then pass "optimize's table fits 80 columns ($widest)"; else fail "optimize's table fits 80 columns ($widest)"; fi
+for cmd in runs options; do
+    run env COLUMNS=80 "$FACET" "$cmd" "$WORK/w.db"
+    widest=$(awk '{ if (length($0) > w) w = length($0) } END { print w + 0 }' "$OUT")
+    if [ "$widest" -le 80 ]; then pass "$cmd fits 80 columns ($widest)"; else fail "$cmd fits 80 columns ($widest)"; fi
+    stdout_has "$cmd says what it left out" 'left out to fit the terminal; --wide shows every column'
+    run env COLUMNS=80 "$FACET" "$cmd" "$WORK/w.db" --wide
+    if grep -q 'left out' "$OUT"; then fail "$cmd --wide leaves nothing out"; else pass "$cmd --wide leaves nothing out"; fi
+done
+run env COLUMNS=80 "$FACET" options "$WORK/w.db" --wide
+stdout_has "options --wide has the FP and SP areas" 'FP area +SP area'
+run env COLUMNS=80 "$FACET" runs "$WORK/w.db"
+stdout_has "runs cuts a long name with ..." '\.\.\.$'
+run "$FACET" options "$WORK/w.db"
+stdout_has "no terminal, no COLUMNS: every column" 'FP area +SP area'
+expect "--help gives examples" 0 "$FACET" options --help
+stdout_has "options --help: an example" '^  facet options runs.db --run 1 --pareto --sort cost$'
+
 # Real files from public projects all load.
 if have_data acj_spot.obj compas_hypar.obj; then
     for file in "$FACET_DATA"/*.obj; do

@@ -151,7 +151,7 @@ static void test_run_roundtrip(void **state)
     get_options(store, run, &rows, &n);
     assert_int_equal(n, 48);
     struct surface surface;
-    assert_int_equal(study_open_surface(&info, &surface, &err), FACET_OK);
+    assert_int_equal(study_open_surface(store, &info, &surface, &err), FACET_OK);
     int knees = 0;
     size_t pareto = 0;
     for (size_t k = 0; k < n; k++) {
