@@ -4,6 +4,7 @@
 #include "export_obj.h"
 
 #include <ctype.h>
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
@@ -11,6 +12,7 @@
 #include "classify.h"
 #include "outfile.h"
 #include "svg.h"
+#include "vec3.h"
 
 /* Twelve significant digits: a micrometre at a kilometre from the origin,
  * and areas exact to far below what the tests ask (1e-6). */
@@ -49,20 +51,83 @@ static void write_pieces(FILE *out, const struct panel_geometry *g,
     *next += v1 - v0;
 }
 
-/* Writes FP panel n as the polygon of its one outline loop. */
+/* Whether outline point b lies on the line from a to c to rounding (its
+ * distance from it under 1e-9 of the panel's diameter): a point of a
+ * straight edge, which would make a fan of the polygon hold zero-area
+ * triangles. */
+static int on_line(const double *a, const double *b, const double *c,
+                   double diameter)
+{
+    double ab[3], ac[3], cross[3];
+    vec3_sub(b, a, ab);
+    vec3_sub(c, a, ac);
+    vec3_cross(ab, ac, cross);
+    double base = sqrt(vec3_dot(ac, ac));
+    double tol = 1e-9 * diameter;
+    return base > 0 ? sqrt(vec3_dot(cross, cross)) / base <= tol
+                    : sqrt(vec3_dot(ab, ab)) <= tol;
+}
+
+/* Writes trimmed FP panel n as the polygon of its one outline loop,
+ * projected onto its plane, without the points that lie on a straight
+ * edge between their neighbours. */
 static void write_outline(FILE *out, const struct panel_geometry *g,
-                          size_t n, size_t *next)
+                          const struct panel *panel, size_t n, size_t *next)
 {
     size_t l = g->panel_loop[n];
     size_t k0 = g->loop_start[l], k1 = g->loop_start[l + 1];
-    for (size_t k = k0; k < k1; k++)
-        write_vertex(out, &g->outline_plane[3 * k],
-                     &g->uv[2 * g->outline[k]]);
+    size_t count = k1 - k0, written = 0;
+    const double *plane = g->outline_plane;
+    for (size_t k = k0; k < k1; k++) {
+        size_t before = k > k0 ? k - 1 : k1 - 1;
+        size_t after = k + 1 < k1 ? k + 1 : k0;
+        /* Points of one straight run are dropped all but its ends; a
+         * polygon keeps three points at least. */
+        if (count - (k - k0) + written > 3 &&
+            on_line(&plane[3 * before], &plane[3 * k], &plane[3 * after],
+                    panel->diameter))
+            continue;
+        write_vertex(out, &plane[3 * k], &g->uv[2 * g->outline[k]]);
+        written++;
+    }
     fputc('f', out);
-    for (size_t k = 0; k < k1 - k0; k++)
+    for (size_t k = 0; k < written; k++)
         fprintf(out, " %zu/%zu", *next + k, *next + k);
     fputc('\n', out);
-    *next += k1 - k0;
+    *next += written;
+}
+
+/* Writes full-cell FP panel n as the planar quad of its four cell corners
+ * projected onto its plane, wound as the surface faces. */
+static void write_quad(FILE *out, const struct panelization *panels,
+                       const struct panel *panel, size_t *next)
+{
+    double du = (panels->umax - panels->umin) / panels->nu;
+    double dv = (panels->vmax - panels->vmin) / panels->nv;
+    static const int step[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+    double x[4][3], uv[4][2];
+    for (int c = 0; c < 4; c++) {
+        panel_geometry_project(panel, panel->corner[c], x[c]);
+        uv[c][0] = panels->umin + (panel->i + step[c][0]) * du;
+        uv[c][1] = panels->vmin + (panel->j + step[c][1]) * dv;
+    }
+    /* Newell's normal of the quad against the panel's (the surface's
+     * side). */
+    double normal[3] = {0, 0, 0};
+    for (int c = 0; c < 4; c++) {
+        const double *a = x[c], *b = x[(c + 1) % 4];
+        normal[0] += (a[1] - b[1]) * (a[2] + b[2]);
+        normal[1] += (a[2] - b[2]) * (a[0] + b[0]);
+        normal[2] += (a[0] - b[0]) * (a[1] + b[1]);
+    }
+    int reverse = vec3_dot(normal, panel->normal) < 0;
+    for (int c = 0; c < 4; c++) {
+        int k = reverse ? 3 - c : c;
+        write_vertex(out, x[k], uv[k]);
+    }
+    fprintf(out, "f %zu/%zu %zu/%zu %zu/%zu %zu/%zu\n", *next, *next,
+            *next + 1, *next + 1, *next + 2, *next + 2, *next + 3, *next + 3);
+    *next += 4;
 }
 
 void export_obj_write(FILE *out, const char *mtl_name,
@@ -76,20 +141,33 @@ void export_obj_write(FILE *out, const char *mtl_name,
     fprintf(out, "# Facet panels: grid %dx%d, %zu panels (FP %zu, SP %zu, "
             "DP %zu); lengths in metres\n", panels->nu, panels->nv,
             panels->npanels, count[TYPE_FP], count[TYPE_SP], count[TYPE_DP]);
-    fputs("# FP: planar polygon on the best-fit plane; SP, DP: surface "
-          "patch; vt: the surface's UV\n", out);
+    fputs("# o FP, SP, DP: the panels of each type; g panel_I_J: one panel\n"
+          "# FP: a full cell is the planar quad of its corners on its "
+          "best-fit plane, a trimmed one its outline there; SP, DP: the "
+          "surface patch; vt: the surface's UV\n", out);
     fprintf(out, "mtllib %s\n", mtl_name);
     size_t next = 1;
-    for (size_t n = 0; n < panels->npanels && n < g->npanels; n++) {
-        const struct panel *panel = &panels->panels[n];
-        fprintf(out, "g panel_%d_%d\nusemtl %s\n", panel->i, panel->j,
-                panel_type_name(panel->type));
-        if (panel->type != TYPE_FP)
-            write_pieces(out, g, panel, n, 0, &next);
-        else if (g->panel_loop[n + 1] - g->panel_loop[n] == 1)
-            write_outline(out, g, n, &next);
-        else
-            write_pieces(out, g, panel, n, 1, &next);
+    /* One object per type, so that CAD layers and Blender collections
+     * come out by type; within it a group per panel. */
+    for (int type = 0; type < TYPE_COUNT; type++) {
+        if (count[type] == 0)
+            continue;
+        fprintf(out, "o %s\n", panel_type_name((enum panel_type)type));
+        for (size_t n = 0; n < panels->npanels && n < g->npanels; n++) {
+            const struct panel *panel = &panels->panels[n];
+            if ((int)panel->type != type)
+                continue;
+            fprintf(out, "g panel_%d_%d\nusemtl %s\n", panel->i, panel->j,
+                    panel_type_name(panel->type));
+            if (panel->type != TYPE_FP)
+                write_pieces(out, g, panel, n, 0, &next);
+            else if (!panel->trimmed && panel->ncorners == 4)
+                write_quad(out, panels, panel, &next);
+            else if (g->panel_loop[n + 1] - g->panel_loop[n] == 1)
+                write_outline(out, g, panel, n, &next);
+            else
+                write_pieces(out, g, panel, n, 1, &next);
+        }
     }
 }
 

@@ -1,11 +1,15 @@
 /*
  * export_obj.h: an evaluated option as Wavefront OBJ + MTL, for CAD.
  *
- * Every panel is its own group, `g panel_I_J`, with `usemtl FP`, `SP` or
- * `DP`:
- *   - an FP panel is what is cut from flat stock: one planar polygon, its
- *     outline projected onto its best-fit plane (panel_geometry.h). A
- *     trimmed FP panel whose outline is not one loop (two lobes in one
+ * The panels of each type make one object, `o FP`, `o SP`, `o DP` (CAD
+ * layers, Blender collections), and within it every panel is its own
+ * group, `g panel_I_J`, with `usemtl FP`, `SP` or `DP`:
+ *   - an FP panel is what is cut from flat stock, planar: a full cell is
+ *     the quad of its four cell corners projected onto its best-fit plane;
+ *     a trimmed cell is its outline projected onto that plane, without the
+ *     points that lie on a straight edge between their neighbours (to
+ *     1e-9 of its diameter), so a fan of it holds no zero-area triangle.
+ *     A trimmed FP panel whose outline is not one loop (two lobes in one
  *     cell, or a hole) is written as its pieces projected onto that plane
  *     instead, still planar, since an OBJ face cannot hold a hole;
  *   - an SP or DP panel is its surface patch: the clipped triangles
@@ -18,8 +22,10 @@
  * Kd colours of svg.h's palette.
  *
  * Note that an FP polygon's area is its projection's, not the surface's:
- * smaller by the cosine of the angle between surface and plane, which for
- * a panel within the flatness threshold is a few parts in 10^5.
+ * for an outline, smaller by the cosine of the angle between surface and
+ * plane, which for a panel within the flatness threshold is a few parts
+ * in 10^5; for a full cell's quad, that of straight edges between the
+ * corners, within 1e-3 of the surface's either way.
  */
 #ifndef FACET_EXPORT_OBJ_H
 #define FACET_EXPORT_OBJ_H

@@ -62,6 +62,8 @@ fi
 count_is "obj: one g per panel" "$PANELS" "$(grep -c '^g ' "$E/k.obj")"
 check "obj: tinyobjloader reads one shape per panel, FP/SP/DP materials, areas match the option" \
     $CHECK obj "$E/k.obj" "$E/k.mtl" "$DB" 1 "$KNEE"
+check "obj: an object per type, full-cell FP panels as planar quads, no zero-area triangle" \
+    $CHECK obj_panels "$E/k.obj" "$DB" 1 "$KNEE"
 
 # --- CSV --------------------------------------------------------------------
 check "csv: header, one row per panel, totals row = options row, costs add up" \

@@ -209,9 +209,72 @@ def check_pngs_differ(a, b):
         fail("%s and %s are the same image" % (a, b))
 
 
+def check_obj_panels(obj, db, run, number):
+    """The OBJ's structure, read as plain text: one object per type holding
+    that type's panel groups; every full-cell FP panel one planar quad; no
+    FP face whose fan holds a zero-area triangle."""
+    con = sqlite3.connect(db)
+    cells = {(i, j): (t, trimmed, d) for i, j, t, trimmed, d in con.execute(
+        "SELECT i, j, type, trimmed, diameter FROM panels WHERE run = ? AND "
+        "option = ?", (int(run), int(number)))}
+    if not cells:
+        fail("no stored panels for run %s option %s" % (run, number))
+    verts, obj_type, group, faces = [], None, None, {}
+    objects = []
+    for line in open(obj):
+        w = line.split()
+        if not w:
+            continue
+        if w[0] == "v":
+            verts.append(tuple(float(x) for x in w[1:4]))
+        elif w[0] == "o":
+            obj_type = w[1]
+            objects.append(obj_type)
+        elif w[0] == "g":
+            group = w[1]
+        elif w[0] == "usemtl":
+            if w[1] != obj_type:
+                fail("group %s is %s inside object %s" % (group, w[1], obj_type))
+        elif w[0] == "f":
+            faces.setdefault(group, []).append(
+                [verts[int(c.split("/")[0]) - 1] for c in w[1:]])
+    want = [t for t in ("FP", "SP", "DP") if any(c[0] == t for c in cells.values())]
+    if objects != want:
+        fail("objects %s, want one per type present: %s" % (objects, want))
+    quads = zero = 0
+    for (i, j), (t, trimmed, d) in cells.items():
+        fs = faces.get("panel_%d_%d" % (i, j))
+        if fs is None:
+            fail("no group for panel %d %d" % (i, j))
+        if t != "FP":
+            continue
+        if not trimmed:
+            if len(fs) != 1 or len(fs[0]) != 4:
+                fail("full-cell FP panel %d %d: %d faces of %s corners, want "
+                     "one quad" % (i, j, len(fs), [len(f) for f in fs]))
+            a, b, c, e = fs[0]
+            u = [b[k] - a[k] for k in range(3)]
+            v = [c[k] - a[k] for k in range(3)]
+            n = [u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2],
+                 u[0] * v[1] - u[1] * v[0]]
+            ln = sum(x * x for x in n) ** 0.5
+            off = abs(sum(n[k] * (e[k] - a[k]) for k in range(3))) / ln
+            if off > 1e-9 * d:
+                fail("FP quad %d %d is not planar: %.3g m" % (i, j, off))
+            quads += 1
+        for f in fs:
+            total = polygon_area(f)
+            for k in range(1, len(f) - 1):
+                if polygon_area([f[0], f[k], f[k + 1]]) <= 1e-12 * total:
+                    zero += 1
+    if zero:
+        fail("%d zero-area triangles in the fans of FP faces" % zero)
+    print("%d full-cell FP quads, no zero-area triangle" % quads)
+
+
 def main():
     check, args = sys.argv[1], sys.argv[2:]
-    {"obj": check_obj, "csv": check_csv, "json": check_json,
+    {"obj": check_obj, "obj_panels": check_obj_panels, "csv": check_csv, "json": check_json,
      "png": check_png, "pngs_differ": check_pngs_differ}[check](*args)
 
 
