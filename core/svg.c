@@ -183,22 +183,25 @@ void svg_point(struct svg *svg, double x, double y)
     svg_number(svg, y);
 }
 
-/* One table, so that a picture and an OBJ of the same option agree. */
+/* One table, so that a picture and an OBJ of the same option agree.
+ * Okabe and Ito's colours, which readers with any common colour vision
+ * deficiency tell apart (test_export measures them under simulated
+ * protanopia, deuteranopia and tritanopia): never red against green. */
 static const char *const type_colour[TYPE_COUNT] = {
-    "#59a14f",  /* FP */
-    "#f28e2b",  /* SP */
-    "#e15759",  /* DP */
+    "#0072b2",  /* FP: blue */
+    "#f0e442",  /* SP: yellow */
+    "#d55e00",  /* DP: vermillion */
 };
 
 static const char *const class_colour[CLASS_COUNT] = {
-    "#b6403a",  /* convex feature curve */
-    "#b07aa1",  /* saddle */
-    "#ff9da7",  /* concave feature curve */
-    "#f28e2b",  /* ruled convex */
-    "#59a14f",  /* flat */
-    "#edc948",  /* ruled concave */
-    "#e15759",  /* convex round */
-    "#4e79a7",  /* concave round */
+    "#56b4e9",  /* convex feature curve: sky blue */
+    "#999999",  /* saddle: grey */
+    "#009e73",  /* concave feature curve: bluish green */
+    "#f0e442",  /* ruled convex: SP's yellow */
+    "#0072b2",  /* flat: FP's blue */
+    "#e69f00",  /* ruled concave: orange */
+    "#d55e00",  /* convex round: DP's vermillion */
+    "#cc79a7",  /* concave round: reddish purple */
 };
 
 const char *svg_type_colour(enum panel_type type)

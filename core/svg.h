@@ -65,9 +65,10 @@ void svg_line(struct svg *svg, double x1, double y1, double x2, double y2,
 /* Writes "x,y" (as in points= and path data). */
 void svg_point(struct svg *svg, double x, double y);
 
-/* "#rrggbb" of a panel type (FP green, SP orange, DP red) and of a class
- * (eight distinct colours: flat in FP's green, ruled convex in SP's
- * orange, convex round in DP's red). */
+/* "#rrggbb" of a panel type (FP blue, SP yellow, DP vermillion) and of a
+ * class (eight distinct colours: flat in FP's blue, ruled convex in SP's
+ * yellow, convex round in DP's vermillion), from Okabe and Ito's palette,
+ * which colour-blind readers tell apart. */
 const char *svg_type_colour(enum panel_type type);
 const char *svg_class_colour(enum panel_class class);
 

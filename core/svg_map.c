@@ -15,6 +15,7 @@
 #define TITLE_HEIGHT 66.0
 #define LEGEND_GAP 24.0
 #define LEGEND_WIDTH 330.0
+#define SCALE_BAR_HEIGHT 30  /* room for the scale bar under a view */
 #define LEGEND_ROW 18.0
 
 static const char *const view_names[] = {"uv", "top", "front", "side"};
@@ -253,6 +254,27 @@ static void write_legend(struct svg *svg, double left, double top,
     fputs("</g>\n", svg->out);
 }
 
+/* A bar of a round length (1, 2 or 5 times a power of ten metres) near a
+ * fifth of the drawing's width (m), at (x, y), scale px per metre. */
+static void write_scale_bar(struct svg *svg, double x, double y,
+                            double width, double scale)
+{
+    double want = width > 0 ? width / 5 : 1;
+    double step = pow(10, floor(log10(want)));
+    double length = step;
+    if (5 * step <= want)
+        length = 5 * step;
+    else if (2 * step <= want)
+        length = 2 * step;
+    double px = length * scale;
+    fputs("<g class=\"scale-bar\">\n", svg->out);
+    svg_rect(svg, x, y, px, 5, "fill=\"#333333\"");
+    svg_line(svg, x, y - 3, x, y + 8, "stroke=\"#333333\"");
+    svg_line(svg, x + px, y - 3, x + px, y + 8, "stroke=\"#333333\"");
+    svg_text(svg, x + px + 8, y + 7, "data-metres=\"1\"", "%g m", length);
+    fputs("</g>\n", svg->out);
+}
+
 void svg_map_write(FILE *out, const struct panel_geometry *g,
                    const struct panelization *panels,
                    const struct option_totals *totals,
@@ -298,7 +320,11 @@ void svg_map_write(FILE *out, const struct panel_geometry *g,
     double legend_height = (rows + 2) * LEGEND_ROW + 8;
     double page_width = MARGIN + draw_width + LEGEND_GAP + LEGEND_WIDTH +
                         MARGIN;
-    double page_height = f.top + fmax(draw_height, legend_height) + MARGIN;
+    /* A projected view is in metres at one scale for both axes (its true
+     * aspect), with a scale bar under it. */
+    int scale_bar = f.view != SVG_MAP_UV;
+    double page_height = f.top + fmax(draw_height, legend_height) + MARGIN +
+                         (scale_bar ? SCALE_BAR_HEIGHT : 0);
 
     struct svg svg;
     svg_begin(&svg, out, page_width, page_height, 2);
@@ -350,6 +376,9 @@ void svg_map_write(FILE *out, const struct panel_geometry *g,
     fputs("</g>\n", out);
     free(order);
 
+    if (scale_bar)
+        write_scale_bar(&svg, f.left, f.top + fmax(draw_height, 1) + 14,
+                        width, f.scale);
     write_legend(&svg, MARGIN + draw_width + LEGEND_GAP, f.top, totals,
                  options->colour_by);
     svg_end(&svg);

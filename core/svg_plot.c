@@ -20,10 +20,14 @@
 #define DOT_RADIUS 4.5
 #define BUBBLE_MIN 3.0     /* radius of the smallest bubble (px) */
 #define BUBBLE_MAX 13.0    /* radius of the largest */
+#define DENSE_OPTIONS 600  /* beyond this, dominated options are dots */
+#define DENSE_RADIUS 1.6   /* a dominated option's dot then (px) */
 
+/* Okabe and Ito's palette, in their order: runs overlaid in one plot stay
+ * apart for colour-blind readers. */
 static const char *const series_colour[] = {
-    "#4e79a7", "#f28e2b", "#59a14f", "#e15759", "#76b7b2",
-    "#edc948", "#b07aa1", "#ff9da7", "#9c755f", "#bab0ac",
+    "#0072b2", "#e69f00", "#009e73", "#cc79a7", "#56b4e9",
+    "#d55e00", "#f0e442", "#000000",
 };
 #define NCOLOURS (sizeof series_colour / sizeof series_colour[0])
 
@@ -130,6 +134,8 @@ struct plot_frame {
     struct svg_axis x, y;
     double left, top, width, height;   /* plot area (px) */
     int sized;                         /* some series has sizes */
+    int dense;                         /* so many options that dominated
+                                          ones are drawn as faint dots */
     double size_min, size_max;         /* their range */
 };
 
@@ -246,8 +252,12 @@ static void write_circle(struct svg *svg, const struct plot_frame *f,
         fprintf(out, " data-rank=\"%d\"", se->rank[k]);
     svg_attribute(svg, "cx", px_x(f, se->x[k]));
     svg_attribute(svg, "cy", px_y(f, se->y[k]));
-    svg_attribute(svg, "r", radius(f, se, k));
-    if (pareto)
+    svg_attribute(svg, "r", !pareto && f->dense ? DENSE_RADIUS
+                                                : radius(f, se, k));
+    if (!pareto && f->dense)
+        fprintf(out, " fill=\"%s\" fill-opacity=\"0.25\" stroke=\"none\"",
+                colour);
+    else if (pareto)
         fprintf(out, " fill=\"%s\" fill-opacity=\"0.85\" stroke=\"#222222\" "
                 "stroke-width=\"1.2\"", colour);
     else
@@ -355,19 +365,26 @@ static void write_legend(struct svg *svg, const struct plot_frame *f,
             break;
         snprintf(style, sizeof style, "fill=\"%s\"", colour_of(se, s));
         svg_rect(svg, x, y, 12, 12, style);
-        if (se->label != NULL)
-            svg_text(svg, x + 18, y + 10, NULL, "%s (%zu)", se->label,
-                     se->n);
-        else
-            svg_text(svg, x + 18, y + 10, NULL, "run %zu (%zu)", s + 1,
-                     se->n);
+        size_t pareto = 0;
+        for (size_t k = 0; se->rank != NULL && k < se->n; k++)
+            pareto += se->rank[k] == 1;
+        char name[64];
+        snprintf(name, sizeof name, "run %zu", s + 1);
+        svg_text(svg, x + 18, y + 10, NULL, "%s (%zu, %zu Pareto)",
+                 se->label != NULL ? se->label : name, se->n, pareto);
         y += 20;
     }
     y += 6;
-    svg_rect(svg, x + 1, y, 10, 10,
-             "rx=\"5\" fill=\"#888888\" fill-opacity=\"0.3\" "
-             "stroke=\"#888888\"");
-    svg_text(svg, x + 18, y + 9, NULL, "option");
+    if (f->dense)
+        svg_rect(svg, x + 6 - DENSE_RADIUS, y + 5 - DENSE_RADIUS,
+                 2 * DENSE_RADIUS, 2 * DENSE_RADIUS,
+                 "rx=\"1.6\" fill=\"#888888\" fill-opacity=\"0.5\"");
+    else
+        svg_rect(svg, x + 1, y, 10, 10,
+                 "rx=\"5\" fill=\"#888888\" fill-opacity=\"0.3\" "
+                 "stroke=\"#888888\"");
+    svg_text(svg, x + 18, y + 9, NULL, "%s",
+             f->dense ? "dominated option" : "option");
     y += 18;
     svg_rect(svg, x + 1, y, 10, 10,
              "rx=\"5\" fill=\"#888888\" stroke=\"#222222\"");
@@ -466,13 +483,20 @@ int svg_plot_write(FILE *out, const struct svg_plot *plot,
              "%zu options, %zu Pareto-optimal", total, pareto);
     write_axes(&svg, &f, plot);
     fputs("<g class=\"options\">\n", out);
+    /* Every run's dominated options first, then every run's front, so
+     * that a second run's cloud never hides the first run's front. Past
+     * DENSE_OPTIONS they are small faint dots, so thousands of options
+     * read as a density and the front stands out. */
+    f.dense = total > DENSE_OPTIONS;
+    for (size_t s = 0; s < plot->nseries; s++) {
+        const struct svg_plot_series *se = &plot->series[s];
+        for (size_t k = 0; k < se->n; k++)
+            if (se->rank == NULL || se->rank[k] != 1)
+                write_circle(&svg, &f, plot, s, se, colour_of(se, s), k);
+    }
     for (size_t s = 0; s < plot->nseries; s++) {
         const struct svg_plot_series *se = &plot->series[s];
         const char *colour = colour_of(se, s);
-        /* Dominated options under the front, Pareto options on top. */
-        for (size_t k = 0; k < se->n; k++)
-            if (se->rank == NULL || se->rank[k] != 1)
-                write_circle(&svg, &f, plot, s, se, colour, k);
         if (se->rank != NULL) {
             write_front(&svg, &f, se, colour, s);
             for (size_t k = 0; k < se->n; k++)
