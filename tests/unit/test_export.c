@@ -561,11 +561,32 @@ static void test_svg_map(void **state)
                 assert_non_null(strstr(text, "DP area "));
                 assert_non_null(strstr(text, "roof &lt;&amp;&gt; "
                                              "&quot;test&quot;"));
-                /* The legend lists every type or every class. */
+                /* The legend lists every type or every class (besides
+                 * the page, the UV box of the UV view and the scale bar
+                 * of the others). */
                 int rows = by == SVG_MAP_BY_CLASS ? CLASS_COUNT : TYPE_COUNT;
-                assert_int_equal(count_of(text, "<rect") - 1 -
-                                     (view == SVG_MAP_UV),
-                                 (size_t)rows);
+                assert_int_equal(count_of(text, "<rect") - 2, (size_t)rows);
+                /* A projected view has a scale bar of a round length in
+                 * metres, drawn at the view's scale. */
+                if (view != SVG_MAP_UV) {
+                    const char *bar = strstr(text, "<g class=\"scale-bar\">");
+                    assert_non_null(bar);
+                    double x, y, w, metres;
+                    assert_int_equal(sscanf(bar, "<g class=\"scale-bar\">\n"
+                                            "<rect x=\"%lf\" y=\"%lf\" "
+                                            "width=\"%lf\"", &x, &y, &w), 3);
+                    const char *label = strstr(bar, "data-metres=\"1\">");
+                    assert_non_null(label);
+                    assert_int_equal(sscanf(label, "data-metres=\"1\">%lf m",
+                                            &metres), 1);
+                    double mantissa = metres / pow(10, floor(log10(metres)));
+                    assert_true(fabs(mantissa - 1) < 1e-9 ||
+                                fabs(mantissa - 2) < 1e-9 ||
+                                fabs(mantissa - 5) < 1e-9);
+                    assert_true(w > 20);
+                } else {
+                    assert_null(strstr(text, "scale-bar"));
+                }
                 free(text);
             }
     /* One written to a file is well-formed. */
