@@ -16,11 +16,12 @@ double ties_tolerance(const double *values, size_t n, size_t stride)
         low = fmin(low, v);
         high = fmax(high, v);
     }
-    if (!(high > low))
+    if (!(high >= low))
         return 0;
     /* Scaled before subtracting, so that a range beyond DBL_MAX stays
      * finite. */
-    return TIES_RELATIVE * high - TIES_RELATIVE * low;
+    double range = TIES_RELATIVE * high - TIES_RELATIVE * low;
+    return fmax(range, TIES_RELATIVE * fmax(fabs(high), fabs(low)));
 }
 
 struct keyed {

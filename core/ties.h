@@ -13,14 +13,17 @@
  *
  *   Over a set of n points (a run's options, or the population NSGA-II
  *   ranks), objective j has the tolerance
- *       tol_j = TIES_RELATIVE x (max_j - min_j),
- *   its range over the finite values of the set (0 when they are all
- *   equal: then nothing needs deciding). Two values of objective j tie
- *   when they are within tol_j of each other; and so that "equal" stays
- *   transitive, a chain of values each within tol_j of the next ties as a
- *   whole (single linkage: sort the values, and a gap above tol_j starts
- *   a new tie class). A tie class is represented by its lowest value
- *   (ties_merge), after which comparisons are exact.
+ *       tol_j = TIES_RELATIVE x max(max_j - min_j, |v_j|max),
+ *   a billionth of its range over the finite values of the set, or of its
+ *   largest magnitude when that is larger: rounding noise is relative to
+ *   the size of the sums, and a run whose options all cost the same but
+ *   for rounding (a plane: every panel flat) has a range that is itself
+ *   noise. Two values of objective j tie when they are within tol_j of
+ *   each other; and so that "equal" stays transitive, a chain of values
+ *   each within tol_j of the next ties as a whole (single linkage: sort
+ *   the values, and a gap above tol_j starts a new tie class). A tie
+ *   class is represented by its lowest value (ties_merge), after which
+ *   comparisons are exact.
  *
  * Why classes and not "a_j <= b_j + tol_j": that pairwise rule is not a
  * partial order (with three objectives, a can dominate b, b dominate c
@@ -43,9 +46,8 @@
 /* The relative tolerance: a fraction of an objective's range. */
 #define TIES_RELATIVE 1e-9
 
-/* TIES_RELATIVE x (max - min) over the finite values among
- * values[k * stride], k < n; 0 when there are fewer than two distinct
- * ones. */
+/* TIES_RELATIVE x max(max - min, max |v|) over the finite values v among
+ * values[k * stride], k < n; 0 when there is none. */
 double ties_tolerance(const double *values, size_t n, size_t stride);
 
 /* Replaces each of values[k * stride], k < n, by the lowest value of its
