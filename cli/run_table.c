@@ -8,13 +8,30 @@
 #include <string.h>
 
 #include "core/numformat.h"
+#include "core/ties.h"
 
-static int by_cost(const void *a, const void *b)
+/* The listed options cheapest first, costs equal but for rounding
+ * (core/ties.h) by planarity, then DP area, then No.: into order. Returns
+ * 0, or -1 when out of memory. */
+static int order_by_cost(const struct option_row *listed, size_t n,
+                         size_t *order)
 {
-    const struct option_row *x = a, *y = b;
-    if (x->totals.cost != y->totals.cost)
-        return x->totals.cost < y->totals.cost ? -1 : 1;
-    return x->number < y->number ? -1 : x->number > y->number;
+    enum { KEYS = 4 };
+    double *keys = malloc((n * KEYS + 1) * sizeof *keys);
+    if (keys == NULL)
+        return -1;
+    for (size_t k = 0; k < n; k++) {
+        keys[k * KEYS + 0] = listed[k].totals.cost;
+        keys[k * KEYS + 1] = listed[k].totals.planarity;
+        keys[k * KEYS + 2] = listed[k].totals.area_of[TYPE_DP];
+        keys[k * KEYS + 3] = (double)listed[k].number;
+    }
+    double tolerance[KEYS] = {0, 0, 0, 0};
+    for (int j = 0; j < 3; j++)
+        tolerance[j] = ties_tolerance(keys + j, n, KEYS);
+    int rc = ties_order(keys, n, KEYS, tolerance, 0, order);
+    free(keys);
+    return rc;
 }
 
 int run_table_print(FILE *out, struct store *store, const char *db,
@@ -50,14 +67,19 @@ int run_table_print(FILE *out, struct store *store, const char *db,
     rc = store_options_query_rows(store, &q, &listed, &n, err);
     if (rc != FACET_OK)
         return rc;
-    qsort(listed, n, sizeof *listed, by_cost);
+    size_t *order = malloc((n + 1) * sizeof *order);
+    if (order == NULL || order_by_cost(listed, n, order) != 0) {
+        free(order);
+        free(listed);
+        return facet_error_set(err, FACET_EWORK, "out of memory (table)");
+    }
     fprintf(out, "\n%6s %1s %11s %10s %14s %10s %10s %4s %4s %7s %4s\n",
             "No.", "", "planarity", "DP area", "total cost", "FP area",
             "SP area", "U", "V", "t", "rank");
     fprintf(out, "%6s %1s %11s %10s %14s %10s %10s %4s %4s %7s %4s\n", "",
             "", "m", "m^2", "USD", "m^2", "m^2", "", "", "mm", "");
     for (size_t k = 0; k < n; k++) {
-        const struct option_row *o = &listed[k];
+        const struct option_row *o = &listed[order[k]];
         number_grouped(cost, sizeof cost, o->totals.cost, 0);
         fprintf(out, "%6lld %1s %11.3f %10.1f %14s %10.1f %10.1f %4d %4d "
                 "%7.2f %4d%s%s\n", (long long)o->number,
@@ -72,6 +94,7 @@ int run_table_print(FILE *out, struct store *store, const char *db,
                 "lists them all)\n", n, (long long)info.options,
                 db, (long long)run);
     fprintf(out, "* Pareto-optimal\n");
+    free(order);
     free(listed);
     return FACET_OK;
 }

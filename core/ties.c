@@ -81,3 +81,51 @@ int ties_compare_normalised(double a, double b)
         return 0;
     return a < b ? -1 : 1;
 }
+
+/* A row to order: its merged keys, and what qsort's comparator needs to
+ * read them, since qsort passes no context. */
+struct ordered_row {
+    const double *keys;
+    size_t nkeys;
+    size_t index;
+    int descending;
+};
+
+static int compare_rows(const void *a, const void *b)
+{
+    const struct ordered_row *x = a, *y = b;
+    int c = 0;
+    for (size_t k = 0; k < x->nkeys && c == 0; k++)
+        if (x->keys[k] != y->keys[k])
+            c = x->keys[k] < y->keys[k] ? -1 : 1;
+    if (c == 0)
+        c = (x->index > y->index) - (x->index < y->index);
+    return x->descending ? -c : c;
+}
+
+int ties_order(const double *keys, size_t n, size_t nkeys,
+               const double *tolerance, int descending, size_t *order)
+{
+    if (n == 0)
+        return 0;
+    double *merged = malloc(n * nkeys * sizeof *merged + 1);
+    struct ordered_row *rows = malloc(n * sizeof *rows);
+    int rc = -1;
+    if (merged == NULL || rows == NULL)
+        goto done;
+    for (size_t k = 0; k < nkeys; k++)
+        if (ties_merge_column(keys + k, n, nkeys, tolerance[k],
+                              merged + k) != 0)
+            goto done;
+    for (size_t i = 0; i < n; i++)
+        rows[i] = (struct ordered_row){merged + i * nkeys, nkeys, i,
+                                       descending};
+    qsort(rows, n, sizeof *rows, compare_rows);
+    for (size_t i = 0; i < n; i++)
+        order[i] = rows[i].index;
+    rc = 0;
+done:
+    free(merged);
+    free(rows);
+    return rc;
+}

@@ -68,4 +68,15 @@ int ties_merge(const double *objectives, size_t n, size_t m, double *out);
  * strcmp. */
 int ties_compare_normalised(double a, double b);
 
+/* Orders n rows by nkeys keys with ties: keys is n x nkeys row-major
+ * (key k of row i at keys[i * nkeys + k]) and tolerance[k] the tolerance
+ * of key k (0 for exact, e.g. an option's number). order (n entries)
+ * receives the rows sorted by key 0's tie classes over the n rows (each
+ * class read as its lowest value), then key 1's, and so on, then by row
+ * index; descending reverses every comparison, the index's too. Keys
+ * may be +-INFINITY; NaN is not allowed. Returns 0,
+ * or -1 when out of memory (order untouched). */
+int ties_order(const double *keys, size_t n, size_t nkeys,
+               const double *tolerance, int descending, size_t *order);
+
 #endif
