@@ -73,3 +73,7 @@ run "$FACET" runs "$DB" --json
 cp "$OUT" "$WORK/runs.json"
 check "runs --json: hypervolume, best cost, elapsed as stored" \
     "${CHECK[@]}" exact-runs "$DB" "$WORK/runs.json"
+expect "export --csv of the knee" 0 \
+    "$FACET" export "$DB" --run 1 --option "$KNEE" --csv "$WORK/knee.csv"
+check "export --csv: every panel double is the stored one" \
+    "${CHECK[@]}" exact-schedule "$DB" 1 "$KNEE" "$WORK/knee.csv"

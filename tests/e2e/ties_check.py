@@ -18,6 +18,10 @@ prints what is wrong on stderr and exits 1.
         every panel double of `facet show --json` (FILE) is the stored one
   exact-runs DB FILE
         every double of `facet runs --json` (FILE) is the stored one
+  exact-schedule DB RUN OPTION FILE
+        every panel double of `facet export --csv` (FILE) is the stored
+        one (deviation_mm: the stored deviation times 1000), and the totals
+        row's area and cost are the options row's
 """
 import csv
 import json
@@ -164,6 +168,37 @@ def check_runs(path, listing):
                         % (r["id"], key, r[key], s[key]))
 
 
+def check_schedule(path, run, option, schedule):
+    db = connect(path)
+    stored = {(r["i"], r["j"]): dict(r) for r in db.execute(
+        "SELECT * FROM panels WHERE run = ? AND option = ?", (run, option))}
+    row = dict(db.execute("SELECT * FROM options WHERE run = ? AND "
+                          "number = ?", (run, option)).fetchone())
+    columns = {"area_m2": "area", "k1": "k1", "k2": "k2", "K": "K",
+               "H": "H", "unit_price_usd_m2": "price", "cost_usd": "cost"}
+    with open(schedule, newline="") as f:
+        reader = csv.DictReader(f)
+        rows = list(reader)
+    panels = [r for r in rows if r["id"] != "total"]
+    if len(panels) != len(stored):
+        problem("%d panels in the schedule, %d stored"
+                % (len(panels), len(stored)))
+    for p in panels:
+        s = stored[(int(p["i"]), int(p["j"]))]
+        for key, col in columns.items():
+            if not same_double(float(p[key]), s[col]):
+                problem("panel (%s, %s) %s: written %r, stored %r"
+                        % (p["i"], p["j"], key, p[key], s[col]))
+        if not same_double(float(p["deviation_mm"]), s["deviation"] * 1000):
+            problem("panel (%s, %s) deviation_mm %s, stored %r m"
+                    % (p["i"], p["j"], p["deviation_mm"], s["deviation"]))
+    total = [r for r in rows if r["id"] == "total"][0]
+    for key, col in (("area_m2", "area"), ("cost_usd", "cost")):
+        if not same_double(float(total[key]), row[col]):
+            problem("totals %s %s, options row %r" % (key, total[key],
+                                                      row[col]))
+
+
 def main(argv):
     command, args = argv[1], argv[2:]
     if command == "order":
@@ -174,6 +209,8 @@ def main(argv):
         check_show(args[0], int(args[1]), int(args[2]), args[3])
     elif command == "exact-runs":
         check_runs(args[0], args[1])
+    elif command == "exact-schedule":
+        check_schedule(args[0], int(args[1]), int(args[2]), args[3])
     else:
         problem("unknown check %s" % command)
 
