@@ -21,8 +21,8 @@ void number_grouped(char *out, size_t size, double value, int decimals);
 
 /* Writes the finite value as the shortest of %.15g, %.16g and %.17g that
  * reads back (strtod) as the same double, bit for bit, with '.' as the
- * decimal point whatever LC_NUMERIC says: 0.1 is "0.1", 1215639.0000000009
- * "1215639.0000000009". -0 is "-0". Non-finite values are written as
+ * decimal point whatever LC_NUMERIC says: 0.1 is "0.1", 0.1 + 0.2
+ * "0.30000000000000004". -0 is "-0". Non-finite values are written as
  * "nan", "inf" or "-inf"; callers whose format has no such words (JSON)
  * test isfinite first. */
 void number_exact(char out[NUMBER_EXACT_SIZE], double value);
