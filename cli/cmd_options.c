@@ -91,10 +91,9 @@ static int list_row(void *context, int64_t run, const struct option_row *o)
             if (strcmp(store_option_columns[k], "run") == 0)
                 continue;
             double value = store_option_value(o, store_option_columns[k]);
-            if (isinf(value))
-                printf(",inf");
-            else
-                printf(",%.12g", value);
+            char text[NUMBER_EXACT_SIZE];
+            number_exact(text, value);  /* "inf" at a front's end */
+            printf(",%s", text);
         }
         putchar('\n');
     }

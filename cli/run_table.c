@@ -8,15 +8,32 @@
 #include <string.h>
 
 #include "core/numformat.h"
-#include "text_table.h"
+#include "core/ties.h"
 #include "store/study.h"
+#include "text_table.h"
 
-static int by_cost(const void *a, const void *b)
+/* The listed options cheapest first, costs equal but for rounding
+ * (core/ties.h) by planarity, then DP area, then No.: into order. Returns
+ * 0, or -1 when out of memory. */
+static int order_by_cost(const struct option_row *listed, size_t n,
+                         size_t *order)
 {
-    const struct option_row *x = a, *y = b;
-    if (x->totals.cost != y->totals.cost)
-        return x->totals.cost < y->totals.cost ? -1 : 1;
-    return x->number < y->number ? -1 : x->number > y->number;
+    enum { KEYS = 4 };
+    double *keys = malloc((n * KEYS + 1) * sizeof *keys);
+    if (keys == NULL)
+        return -1;
+    for (size_t k = 0; k < n; k++) {
+        keys[k * KEYS + 0] = listed[k].totals.cost;
+        keys[k * KEYS + 1] = listed[k].totals.planarity;
+        keys[k * KEYS + 2] = listed[k].totals.area_of[TYPE_DP];
+        keys[k * KEYS + 3] = (double)listed[k].number;
+    }
+    double tolerance[KEYS] = {0, 0, 0, 0};
+    for (int j = 0; j < 3; j++)
+        tolerance[j] = ties_tolerance(keys + j, n, KEYS);
+    int rc = ties_order(keys, n, KEYS, tolerance, 0, order);
+    free(keys);
+    return rc;
 }
 
 int run_table_print(FILE *out, struct store *store, const char *db,
@@ -55,7 +72,12 @@ int run_table_print(FILE *out, struct store *store, const char *db,
     rc = store_options_query_rows(store, &q, &listed, &n, err);
     if (rc != FACET_OK)
         return rc;
-    qsort(listed, n, sizeof *listed, by_cost);
+    size_t *order = malloc((n + 1) * sizeof *order);
+    if (order == NULL || order_by_cost(listed, n, order) != 0) {
+        free(order);
+        free(listed);
+        return facet_error_set(err, FACET_EWORK, "out of memory (table)");
+    }
     static const struct text_column columns[] = {
         {"No.", "", 6, 0, 0, 0},
         {"", "", 1, 0, 0, 0},
@@ -76,7 +98,7 @@ int run_table_print(FILE *out, struct store *store, const char *db,
     fputc('\n', out);
     text_table_head(out, &t);
     for (size_t k = 0; k < n; k++) {
-        const struct option_row *o = &listed[k];
+        const struct option_row *o = &listed[order[k]];
         char number[24], planarity[32], dp[32], fp[32], sp[32], u[16], v[16];
         char th[32], rank[16], marks[32];
         number_grouped(cost, sizeof cost, o->totals.cost, 0);
@@ -104,6 +126,7 @@ int run_table_print(FILE *out, struct store *store, const char *db,
     }
     fprintf(out, "* Pareto-optimal\n");
     text_table_foot(out, &t);
+    free(order);
     free(listed);
     struct front_bounds bounds;
     if ((rc = store_front_bounds(store, run, &bounds, err)) != FACET_OK)

@@ -9,6 +9,7 @@
 
 #include "classify.h"
 #include "pareto.h"
+#include "ties.h"
 
 void front_free(struct front *front)
 {
@@ -50,14 +51,22 @@ int front_analyse(const struct evaluated_option *options, size_t n,
         const struct option_totals *t = &options[i].totals;
         violation[i] = classify_area_excess(t->max_panel_area,
                                             max_panel_area);
-        for (size_t j = 0; j < m; j++) {
+        for (size_t j = 0; j < m; j++)
             value[i * m + j] = objective_value(t, &objectives[j]);
+    }
+    /* Values equal within the run's tolerance (ties.h) are made equal
+     * once, here, so that the ranks, the crowding, the knee and the
+     * hypervolume's ideal and nadir all see the same ties. */
+    if (ties_merge(value, n, m, value) != 0) {
+        rc = facet_error_set(err, FACET_EWORK, "out of memory (front)");
+        goto done;
+    }
+    for (size_t i = 0; i < n; i++)
+        for (size_t j = 0; j < m; j++)
             if (violation[i] == 0) {
                 ideal[j] = fmin(ideal[j], value[i * m + j]);
                 nadir[j] = fmax(nadir[j], value[i * m + j]);
             }
-        }
-    }
     rc = pareto_rank(value, n, m, violation, out->rank, NULL, err);
     if (rc == FACET_OK)
         rc = pareto_crowding(value, n, m, out->rank, out->crowding, err);

@@ -6,6 +6,8 @@
  * the panel size limit), computes crowding distances per front, the exact
  * hypervolume of the first front in normalised objective space, and the
  * knee option. The numbers a designer sees about the front come from here.
+ * Objective values equal but for rounding are equal throughout (ties.h:
+ * the tolerance of each objective over the run's options).
  */
 #ifndef FACET_FRONT_H
 #define FACET_FRONT_H

@@ -5,6 +5,8 @@
 
 #include <math.h>
 
+#include "numformat.h"
+
 void json_init(struct json_writer *w, FILE *out)
 {
     w->out = out;
@@ -83,10 +85,13 @@ void json_string(struct json_writer *w, const char *text)
 void json_number(struct json_writer *w, double number)
 {
     before_value(w);
-    if (isfinite(number))
-        fprintf(w->out, "%.12g", number);
-    else
+    if (isfinite(number)) {
+        char text[NUMBER_EXACT_SIZE];
+        number_exact(text, number);
+        fputs(text, w->out);
+    } else {
         fputs("null", w->out);
+    }
 }
 
 void json_integer(struct json_writer *w, long long number)

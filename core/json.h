@@ -8,7 +8,8 @@
  *     json_key(&w, "area"); json_number(&w, 1240.5);
  *     json_end_object(&w);
  *
- * Non-finite numbers are written as null (JSON has no NaN).
+ * Numbers are written so that they read back exactly (numformat.h);
+ * non-finite numbers are written as null (JSON has no NaN).
  */
 #ifndef FACET_JSON_H
 #define FACET_JSON_H
@@ -31,7 +32,8 @@ void json_begin_array(struct json_writer *w);
 void json_end_array(struct json_writer *w);
 void json_key(struct json_writer *w, const char *key);
 void json_string(struct json_writer *w, const char *text);
-void json_number(struct json_writer *w, double number);  /* %.12g */
+/* The shortest decimal that reads back as number (number_exact). */
+void json_number(struct json_writer *w, double number);
 void json_integer(struct json_writer *w, long long number);
 void json_bool(struct json_writer *w, int truth);
 void json_null(struct json_writer *w);

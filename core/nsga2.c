@@ -16,6 +16,7 @@
 
 #include "pareto.h"
 #include "rng.h"
+#include "ties.h"
 
 void nsga2_settings_default(struct nsga2_settings *settings, size_t nvars)
 {
@@ -266,7 +267,8 @@ static void mutate(const struct nsga2_problem *problem, double probability,
 }
 
 /* Binary tournament: the lower rank wins, then the larger crowding
- * distance, then the first drawn. */
+ * distance (beyond the tolerance of ties.h: mirror-image points crowd
+ * alike but for rounding), then the first drawn. */
 static size_t tournament(const struct nsga2_population *population,
                          struct rng *rng)
 {
@@ -275,7 +277,8 @@ static size_t tournament(const struct nsga2_population *population,
     if (population->rank[b] < population->rank[a])
         return b;
     if (population->rank[b] == population->rank[a] &&
-        population->crowding[b] > population->crowding[a])
+        ties_compare_normalised(population->crowding[b],
+                                population->crowding[a]) > 0)
         return b;
     return a;
 }

@@ -5,6 +5,7 @@
 
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 void number_grouped(char *out, size_t size, double value, int decimals)
@@ -38,4 +39,23 @@ void number_grouped(char *out, size_t size, double value, int decimals)
     }
     snprintf(grouped + g, sizeof grouped - g, "%s", digits + whole);
     snprintf(out, size, "%s", grouped);
+}
+
+void number_exact(char out[NUMBER_EXACT_SIZE], double value)
+{
+    if (!isfinite(value)) {
+        snprintf(out, NUMBER_EXACT_SIZE, "%s",
+                 isnan(value) ? "nan" : value > 0 ? "inf" : "-inf");
+        return;
+    }
+    /* strtod reads in the same locale as snprintf writes, so the check is
+     * made before the decimal point becomes '.'. %.17g always reads back. */
+    for (int precision = 15; precision <= 17; precision++) {
+        snprintf(out, NUMBER_EXACT_SIZE, "%.*g", precision, value);
+        if (precision == 17 || strtod(out, NULL) == value)
+            break;
+    }
+    for (char *c = out; *c != '\0'; c++)
+        if ((*c < '0' || *c > '9') && *c != 'e' && *c != '-' && *c != '+')
+            *c = '.';
 }

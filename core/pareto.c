@@ -15,6 +15,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "ties.h"
+
 /* ---- sorting index arrays ------------------------------------------------ */
 
 /* Orders two indices: negative, zero or positive, like strcmp. */
@@ -149,6 +151,22 @@ static int out_of_memory(struct facet_error *err, const char *what)
 {
     return facet_error_set(err, FACET_EWORK, "pareto: out of memory (%s)",
                            what);
+}
+
+/* The objectives with every tie class merged into its lowest value
+ * (ties.h), in a new array the caller frees; NULL when out of memory.
+ * Every function below works on these, so that values equal within the
+ * tolerance are equal in every comparison. */
+static double *merge_ties(const double *objectives, size_t n, size_t m)
+{
+    double *merged = malloc((n * m + 1) * sizeof *merged);
+    if (merged == NULL)
+        return NULL;
+    if (ties_merge(objectives, n, m, merged) != 0) {
+        free(merged);
+        return NULL;
+    }
+    return merged;
 }
 
 /* ---- non-dominated sorting of distinct points ---------------------------- */
@@ -455,18 +473,11 @@ done:
     return fronts;
 }
 
-int pareto_rank(const double *objectives, size_t n, size_t m,
-                const double *violation, int *rank, int *nfronts,
-                struct facet_error *err)
+/* pareto_rank on checked objectives whose ties are merged. */
+static int rank_merged(const double *objectives, size_t n, size_t m,
+                       const double *violation, int *rank, int *nfronts,
+                       struct facet_error *err)
 {
-    int rc = check_objectives(objectives, n, m, err);
-    if (rc == FACET_OK)
-        rc = check_violation(violation, n, err);
-    if (rc != FACET_OK)
-        return rc;
-    if (n >= INT_MAX)
-        return facet_error_set(err, FACET_EINPUT,
-                               "pareto: %zu points are too many to rank", n);
     if (nfronts != NULL)
         *nfronts = 0;
     if (n == 0)
@@ -509,6 +520,26 @@ int pareto_rank(const double *objectives, size_t n, size_t m,
     if (nfronts != NULL)
         *nfronts = fronts;
     return FACET_OK;
+}
+
+int pareto_rank(const double *objectives, size_t n, size_t m,
+                const double *violation, int *rank, int *nfronts,
+                struct facet_error *err)
+{
+    int rc = check_objectives(objectives, n, m, err);
+    if (rc == FACET_OK)
+        rc = check_violation(violation, n, err);
+    if (rc != FACET_OK)
+        return rc;
+    if (n >= INT_MAX)
+        return facet_error_set(err, FACET_EINPUT,
+                               "pareto: %zu points are too many to rank", n);
+    double *merged = merge_ties(objectives, n, m);
+    if (merged == NULL)
+        return out_of_memory(err, "ranks");
+    rc = rank_merged(merged, n, m, violation, rank, nfronts, err);
+    free(merged);
+    return rc;
 }
 
 /* ---- crowding distance --------------------------------------------------- */
@@ -592,10 +623,12 @@ int pareto_crowding(const double *objectives, size_t n, size_t m,
     size_t *order = malloc(n * sizeof *order);
     size_t *work = malloc(n * sizeof *work);
     size_t *scratch = malloc((n / 2 + 1) * sizeof *scratch);
-    if (order == NULL || work == NULL || scratch == NULL) {
+    double *merged = merge_ties(objectives, n, m);
+    if (order == NULL || work == NULL || scratch == NULL || merged == NULL) {
         free(order);
         free(work);
         free(scratch);
+        free(merged);
         return out_of_memory(err, "crowding");
     }
     order_by_rank(rank, n, order, scratch);
@@ -603,13 +636,14 @@ int pareto_crowding(const double *objectives, size_t n, size_t m,
         size_t end = start + 1;
         while (end < n && rank[order[end]] == rank[order[start]])
             end++;
-        crowd_front(objectives, m, order + start, end - start, crowding,
+        crowd_front(merged, m, order + start, end - start, crowding,
                     NULL, work, scratch);
         start = end;
     }
     free(order);
     free(work);
     free(scratch);
+    free(merged);
     return FACET_OK;
 }
 
@@ -624,7 +658,7 @@ struct truncation {
 static int compare_copies(const void *context, size_t a, size_t b)
 {
     const struct truncation *t = context;
-    int c = compare_doubles(t->crowding[b], t->crowding[a]);
+    int c = ties_compare_normalised(t->crowding[b], t->crowding[a]);
     return c != 0 ? c : compare_index(a, b);
 }
 
@@ -708,9 +742,11 @@ static int prune_front(const double *objectives, size_t n, size_t m,
         for (size_t k = 0; k < d; k++) {
             if (!p.alive[k])
                 continue;
-            if (worst == SIZE_MAX || p.distance[k] < p.distance[worst] ||
-                (p.distance[k] == p.distance[worst] &&
-                 point[k] > point[worst]))
+            int c = worst == SIZE_MAX
+                        ? -1
+                        : ties_compare_normalised(p.distance[k],
+                                                  p.distance[worst]);
+            if (c < 0 || (c == 0 && point[k] > point[worst]))
                 worst = k;
         }
         p.alive[worst] = false;
@@ -786,6 +822,14 @@ int pareto_select(const double *objectives, size_t n, size_t m,
         return facet_error_set(err, FACET_EINPUT,
                                "pareto: cannot keep %zu of %zu points", keep,
                                n);
+    int rc = check_objectives(objectives, n, m, err);
+    if (rc == FACET_OK)
+        rc = check_violation(violation, n, err);
+    if (rc != FACET_OK)
+        return rc;
+    if (n >= INT_MAX)
+        return facet_error_set(err, FACET_EINPUT,
+                               "pareto: %zu points are too many to rank", n);
     int *rank = malloc((n + 1) * sizeof *rank);
     double *crowding = malloc((n + 1) * sizeof *crowding);
     bool *copy = malloc((n + 1) * sizeof *copy);
@@ -793,13 +837,15 @@ int pareto_select(const double *objectives, size_t n, size_t m,
     size_t *order = malloc((n + 1) * sizeof *order);
     size_t *work = malloc((n + 1) * sizeof *work);
     size_t *scratch = malloc((n / 2 + 1) * sizeof *scratch);
-    int rc;
+    double *merged = merge_ties(objectives, n, m);
     if (rank == NULL || crowding == NULL || copy == NULL || chosen == NULL ||
-        order == NULL || work == NULL || scratch == NULL) {
+        order == NULL || work == NULL || scratch == NULL || merged == NULL) {
         rc = out_of_memory(err, "selection");
         goto done;
     }
-    rc = pareto_rank(objectives, n, m, violation, rank, NULL, err);
+    /* Ranks, crowding and pruning all see the merged objectives. */
+    objectives = merged;
+    rc = rank_merged(objectives, n, m, violation, rank, NULL, err);
     if (rc != FACET_OK)
         goto done;
     order_by_rank(rank, n, order, scratch);
@@ -835,6 +881,7 @@ done:
     free(order);
     free(work);
     free(scratch);
+    free(merged);
     return rc;
 }
 
@@ -1094,11 +1141,14 @@ int pareto_knee(const double *objectives, size_t n, size_t m,
         return rc;
     double *low = malloc(m * sizeof *low);
     double *high = malloc(m * sizeof *high);
-    if (low == NULL || high == NULL) {
+    double *merged = merge_ties(objectives, n, m);
+    if (low == NULL || high == NULL || merged == NULL) {
         free(low);
         free(high);
+        free(merged);
         return out_of_memory(err, "knee");
     }
+    objectives = merged;
     size_t first = SIZE_MAX;
     for (size_t i = 0; i < n; i++) {
         if (rank[i] != 1)
@@ -1116,6 +1166,7 @@ int pareto_knee(const double *objectives, size_t n, size_t m,
     if (first == SIZE_MAX) {
         free(low);
         free(high);
+        free(merged);
         return facet_error_set(err, FACET_EINPUT,
                                "pareto: no point of rank 1 for a knee");
     }
@@ -1131,12 +1182,15 @@ int pareto_knee(const double *objectives, size_t n, size_t m,
                                  : 0.0;
             distance += d * d;
         }
-        if (distance < best) {
+        /* Options at the same distance but for rounding (mirror images)
+         * go to the lower index. */
+        if (best == INFINITY || ties_compare_normalised(distance, best) < 0) {
             best = distance;
             *knee = i;
         }
     }
     free(low);
     free(high);
+    free(merged);
     return FACET_OK;
 }

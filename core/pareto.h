@@ -9,9 +9,16 @@
  * Shapes: objectives is n x m, row-major (point i's objective j is
  * objectives[i * m + j]); violation, rank and crowding have n entries.
  *
+ * Ties: every function but the hypervolume first merges each objective's
+ * tie classes over the n points it is given (ties.h: values within a
+ * billionth of the objective's range, or of its largest magnitude, are
+ * equal), so that rounding never decides dominance, duplicates, crowding,
+ * selection or the knee. The hypervolume measures what it is given.
+ *
  * Dominance: a dominates b when a is no worse in every objective and
- * better in at least one. Identical points do not dominate each other, so
- * duplicates always share a rank.
+ * better in at least one (after merging ties). Identical points do not
+ * dominate each other, so duplicates (points equal in every objective, to
+ * the tolerance) always share a rank.
  *
  * Constraint-domination (Deb et al. 2002): with a violation array
  * (>= 0, 0 = feasible), a dominates b when a is feasible and b is not;
@@ -60,6 +67,8 @@ int pareto_rank(const double *objectives, size_t n, size_t m,
  * copy gets the distance of that one point, so a copy neither inflates
  * nor hides its neighbours. Ties in one objective are broken by the other
  * objectives, then by index, so the result does not depend on the sort.
+ * Crowding distances within TIES_RELATIVE of each other count as equal
+ * wherever they are compared (selection, NSGA-II's tournament).
  * rank values must be >= 1 (as pareto_rank gives). */
 int pareto_crowding(const double *objectives, size_t n, size_t m,
                     const int *rank, double *crowding,
@@ -116,7 +125,8 @@ int pareto_hypervolume_normalized(const double *objectives, size_t n,
 /* The knee of the first front: among the points with rank[i] == 1, the
  * one closest (Euclidean) to the ideal point after normalising each
  * objective by the front's own minimum (0) and maximum (1), the "closest
- * to ideal" compromise. Ties go to the lower index. *knee becomes that
+ * to ideal" compromise. Ties (distances within TIES_RELATIVE) go to the
+ * lower index. *knee becomes that
  * index. FACET_EINPUT when no point has rank 1 (n == 0). */
 int pareto_knee(const double *objectives, size_t n, size_t m,
                 const int *rank, size_t *knee, struct facet_error *err);

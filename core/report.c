@@ -6,6 +6,7 @@
 #include <math.h>
 
 #include "json.h"
+#include "numformat.h"
 
 static void json_totals(struct json_writer *w,
                         const struct option_totals *t,
@@ -115,12 +116,16 @@ void report_json(FILE *out, const struct report_source *source,
     json_finish(&w);
 }
 
-/* A CSV number: empty for NaN (a corner off the surface). */
-static void csv_number(FILE *out, double x, const char *format)
+/* A CSV number, written so that it reads back exactly (numformat.h):
+ * empty for NaN (a corner off the surface). */
+static void csv_number(FILE *out, double x)
 {
     fputc(',', out);
-    if (isfinite(x))
-        fprintf(out, format, x);
+    if (isfinite(x)) {
+        char text[NUMBER_EXACT_SIZE];
+        number_exact(text, x);
+        fputs(text, out);
+    }
 }
 
 void report_csv(FILE *out, const struct panelization *panels)
@@ -132,19 +137,19 @@ void report_csv(FILE *out, const struct panelization *panels)
         const struct panel *p = &panels->panels[n];
         fprintf(out, "%d,%d,%s,%s", p->i, p->j, panel_class_name(p->class),
                 panel_type_name(p->type));
-        csv_number(out, p->area, "%.9g");
-        csv_number(out, p->deviation, "%.9g");
-        csv_number(out, p->k1, "%.9g");
-        csv_number(out, p->k2, "%.9g");
-        csv_number(out, p->K, "%.9g");
-        csv_number(out, p->H, "%.9g");
-        csv_number(out, p->curvature_tol, "%.9g");
-        csv_number(out, p->p_dist, "%.9g");
-        csv_number(out, p->diameter, "%.9g");
+        csv_number(out, p->area);
+        csv_number(out, p->deviation);
+        csv_number(out, p->k1);
+        csv_number(out, p->k2);
+        csv_number(out, p->K);
+        csv_number(out, p->H);
+        csv_number(out, p->curvature_tol);
+        csv_number(out, p->p_dist);
+        csv_number(out, p->diameter);
         fprintf(out, ",%d", p->trimmed);
-        csv_number(out, p->corner_planarity, "%.9g");
-        csv_number(out, p->price, "%.2f");
-        csv_number(out, p->cost, "%.4f");
+        csv_number(out, p->corner_planarity);
+        csv_number(out, p->price);
+        csv_number(out, p->cost);
         fputc('\n', out);
     }
 }
@@ -161,23 +166,23 @@ void report_schedule_csv(FILE *out, const struct panelization *panels,
         const struct panel *p = &panels->panels[n];
         fprintf(out, "%zu,%d,%d,%s,%s", n + 1, p->i, p->j,
                 panel_type_name(p->type), panel_class_name(p->class));
-        csv_number(out, p->area, "%.9g");
-        csv_number(out, p->deviation * 1000, "%.6f");
-        csv_number(out, p->k1, "%.9g");
-        csv_number(out, p->k2, "%.9g");
-        csv_number(out, p->K, "%.9g");
-        csv_number(out, p->H, "%.9g");
-        csv_number(out, p->price, "%.2f");
-        csv_number(out, p->cost, "%.4f");
+        csv_number(out, p->area);
+        csv_number(out, p->deviation * 1000);
+        csv_number(out, p->k1);
+        csv_number(out, p->k2);
+        csv_number(out, p->K);
+        csv_number(out, p->H);
+        csv_number(out, p->price);
+        csv_number(out, p->cost);
         for (int c = 0; c < 4; c++)
             for (int d = 0; d < 3; d++)
-                csv_number(out, p->corner[c][d], "%.6f");
+                csv_number(out, p->corner[c][d]);
         fputc('\n', out);
     }
     fprintf(out, "total,,,,%zu panels", totals->panels);
-    csv_number(out, totals->area, "%.9g");
-    csv_number(out, totals->max_deviation * 1000, "%.6f");
+    csv_number(out, totals->area);
+    csv_number(out, totals->max_deviation * 1000);
     fputs(",,,,,", out);
-    csv_number(out, totals->cost, "%.4f");
+    csv_number(out, totals->cost);
     fputs(",,,,,,,,,,,,\n", out);
 }

@@ -25,6 +25,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "core/numformat.h"
 #include "core/numparse.h"
 #include "core/spelling.h"
 
@@ -748,25 +749,6 @@ static void put(struct buffer *b, const char *s)
     b->length += n;
 }
 
-/* The shortest of %.15g, %.16g, %.17g that reads back as value, with a
- * '.' for the decimal point whatever LC_NUMERIC says, so that compiling
- * filter_text again gives the same numbers. */
-static void format_number(double value, char out[32])
-{
-    for (int precision = 15; precision <= 17; precision++) {
-        snprintf(out, 32, "%.*g", precision, value);
-        for (char *c = out; *c != '\0'; c++)
-            if (!is_digit(*c) && *c != 'e' && *c != '-' && *c != '+')
-                *c = '.';
-        double back;
-        const char *stop;
-        if (numparse_double(out, out + strlen(out), &back, &stop) ==
-                NUMPARSE_OK &&
-            back == value)
-            return;
-    }
-}
-
 static int is_compound(const struct node *n)
 {
     return n->kind == NODE_NOT || n->kind == NODE_AND || n->kind == NODE_OR;
@@ -779,12 +761,12 @@ static void write_text(const struct filter *f, int k, int operand,
 {
     const struct node *n = &f->nodes[k];
     int parens = operand && n->kind != NODE_YES_NO && n->kind != NODE_PARETO;
-    char number[32];
+    char number[NUMBER_EXACT_SIZE];
     if (parens)
         put(b, "(");
     switch (n->kind) {
     case NODE_COMPARE:
-        format_number(f->params[n->param], number);
+        number_exact(number, f->params[n->param]);
         put(b, store_option_columns[n->column]);
         put(b, " ");
         put(b, op_text[n->op]);

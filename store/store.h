@@ -217,7 +217,13 @@ struct option_query {
 };
 
 /* Calls row(context, run, option) for each option that matches q, in
- * order; stops early when row returns non-zero. Unknown sort columns are
+ * order; stops early when row returns non-zero. Sorted by columns, values
+ * of a column equal but for rounding tie (core/ties.h, the column's
+ * tolerance over q's run, or over every run) and fall to the next column,
+ * then to run and number; limit and offset count in that order. (SQL
+ * orders by the exact values; each tie class of the first column is
+ * gathered from that order and ordered in C, so memory grows with the
+ * largest class, not with the rows.) Unknown sort columns are
  * FACET_EINPUT naming the column and listing the valid ones. */
 int store_options_query(struct store *store, const struct option_query *q,
                         int (*row)(void *context, int64_t run,

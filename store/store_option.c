@@ -11,6 +11,7 @@
 #include <string.h>
 #include <strings.h>
 
+#include "core/ties.h"
 #include "filter_sql.h"
 
 /* Every column of options, in the order option_bind writes them and
@@ -349,6 +350,166 @@ int store_options_sort_check(const char *sort, struct facet_error *err)
     return order_by(sort, 0, sql, sizeof sql, err);
 }
 
+/* The sort keys of a query, as store_option_columns names, with each
+ * key's tie tolerance (core/ties.h) over the options of the query's run,
+ * or of every run. */
+struct sort_keys {
+    const char *column[32];
+    double tolerance[32];
+    size_t n;
+};
+
+/* The tolerance of column over run's options (0 = every run's). */
+static int column_tolerance(struct store *store, int64_t run,
+                            const char *column, double *tolerance,
+                            struct facet_error *err)
+{
+    double ends[2] = {INFINITY, -INFINITY};
+    struct run_info *runs = NULL;
+    size_t count = 1;
+    int rc = FACET_OK;
+    if (run == 0)
+        rc = store_run_list(store, &runs, &count, err);
+    for (size_t k = 0; rc == FACET_OK && k < count; k++) {
+        double low, high;
+        rc = store_run_column_range(store, runs ? runs[k].id : run, column,
+                                    &low, &high, err);
+        if (rc == FACET_OK && !isnan(low)) {
+            ends[0] = fmin(ends[0], low);
+            ends[1] = fmax(ends[1], high);
+        }
+    }
+    free(runs);
+    *tolerance = ties_tolerance(ends, 2, 1);
+    return rc;
+}
+
+static int sort_keys_of(struct store *store, const struct option_query *q,
+                        struct sort_keys *keys, struct facet_error *err)
+{
+    keys->n = 0;
+    const char *p = q->sort ? q->sort : "";
+    while (*p != '\0') {
+        size_t n = strcspn(p, ",");
+        const char *name = p;
+        while (n > 0 && name[0] == ' ') {
+            name++;
+            n--;
+        }
+        while (n > 0 && name[n - 1] == ' ')
+            n--;
+        for (int k = 0; store_option_columns[k] != NULL; k++)
+            if (strlen(store_option_columns[k]) == n &&
+                strncasecmp(store_option_columns[k], name, n) == 0 &&
+                keys->n < 30)
+                keys->column[keys->n++] = store_option_columns[k];
+        p += strcspn(p, ",");
+        if (*p == ',')
+            p++;
+    }
+    for (size_t k = 0; k < keys->n; k++) {
+        keys->tolerance[k] = 0;
+        int rc = strcmp(keys->column[k], "run") == 0
+                     ? FACET_OK
+                     : column_tolerance(store, q->run, keys->column[k],
+                                        &keys->tolerance[k], err);
+        if (rc != FACET_OK)
+            return rc;
+    }
+    /* Then run and number, exactly, as the SQL order ends. */
+    keys->column[keys->n] = "run";
+    keys->tolerance[keys->n++] = 0;
+    keys->column[keys->n] = "number";
+    keys->tolerance[keys->n++] = 0;
+    return FACET_OK;
+}
+
+/* The rows SQL gave whose first sort key is one tie class so far (each
+ * within the tolerance of the one before), waiting to be put in order by
+ * the other keys. */
+struct tie_group {
+    const struct option_query *q;
+    const struct sort_keys *keys;
+    struct option_row *rows;
+    int64_t *run;
+    double *values;          /* n x keys->n */
+    size_t *order;
+    size_t n, capacity;
+    int64_t skipped, given;  /* for offset and limit */
+    int (*row)(void *context, int64_t run, const struct option_row *option);
+    void *context;
+    int stopped;
+};
+
+static double key_value(const struct option_row *o, int64_t run,
+                        const char *column)
+{
+    return strcmp(column, "run") == 0 ? (double)run
+                                      : store_option_value(o, column);
+}
+
+/* Hands the group's rows on in the order of their keys with ties. */
+static int flush_group(struct tie_group *g)
+{
+    size_t m = g->keys->n;
+    if (ties_order(g->values, g->n, m, g->keys->tolerance,
+                   g->q->descending, g->order) != 0)
+        return -1;
+    for (size_t k = 0; k < g->n && !g->stopped; k++) {
+        size_t i = g->order[k];
+        if (g->skipped < g->q->offset) {
+            g->skipped++;
+            continue;
+        }
+        if (g->row(g->context, g->run[i], &g->rows[i]) != 0 ||
+            (g->q->limit > 0 && ++g->given >= g->q->limit))
+            g->stopped = 1;
+    }
+    g->n = 0;
+    return 0;
+}
+
+/* Takes one row from SQL (in the order of the exact values). */
+static int group_row(struct tie_group *g, int64_t run,
+                     const struct option_row *o)
+{
+    size_t m = g->keys->n;
+    double first = key_value(o, run, g->keys->column[0]);
+    if (g->n > 0) {
+        double last = g->values[(g->n - 1) * m];
+        if (!(first == last || (isfinite(first) && isfinite(last) &&
+                                fabs(first - last) <= g->keys->tolerance[0])))
+            if (flush_group(g) != 0)
+                return -1;
+    }
+    if (g->stopped)
+        return 0;
+    if (g->n == g->capacity) {
+        size_t capacity = g->capacity ? 2 * g->capacity : 64;
+        struct option_row *rows = realloc(g->rows, capacity * sizeof *rows);
+        if (rows != NULL)
+            g->rows = rows;
+        int64_t *runs = realloc(g->run, capacity * sizeof *runs);
+        if (runs != NULL)
+            g->run = runs;
+        double *values = realloc(g->values, capacity * m * sizeof *values);
+        if (values != NULL)
+            g->values = values;
+        size_t *order = realloc(g->order, capacity * sizeof *order);
+        if (order != NULL)
+            g->order = order;
+        if (rows == NULL || runs == NULL || values == NULL || order == NULL)
+            return -1;
+        g->capacity = capacity;
+    }
+    g->rows[g->n] = *o;
+    g->run[g->n] = run;
+    for (size_t k = 0; k < m; k++)
+        g->values[g->n * m + k] = key_value(o, run, g->keys->column[k]);
+    g->n++;
+    return 0;
+}
+
 int store_options_query(struct store *store, const struct option_query *q,
                         int (*row)(void *context, int64_t run,
                                    const struct option_row *option),
@@ -373,6 +534,17 @@ int store_options_query(struct store *store, const struct option_query *q,
     if (rc == FACET_OK)
         snprintf(sql + strlen(sql), size - strlen(sql),
                  " LIMIT ?2 OFFSET ?3");
+    /* Sorted by columns, SQL orders by their exact values, and values
+     * equal but for rounding (ties.h) come out in the order of their
+     * rounding. So the rows come in SQL's order, each tie class of the
+     * first key is gathered, and put in order by the keys with ties
+     * before it is handed on; limit and offset count after that. */
+    struct sort_keys keys;
+    struct tie_group group = {.q = q, .keys = &keys, .row = row,
+                              .context = context};
+    int ties = q->sort != NULL && q->sort[0] != '\0';
+    if (rc == FACET_OK && ties)
+        rc = sort_keys_of(store, q, &keys, err);
     sqlite3_stmt *s = NULL;
     if (rc == FACET_OK)
         rc = store_prepare(store, sql, &s, "querying options", err);
@@ -380,23 +552,38 @@ int store_options_query(struct store *store, const struct option_query *q,
     if (rc != FACET_OK)
         return rc;
     sqlite3_bind_int64(s, 1, q->run);
-    sqlite3_bind_int64(s, 2, q->limit > 0 ? q->limit : -1);
-    sqlite3_bind_int64(s, 3, q->offset > 0 ? q->offset : 0);
+    sqlite3_bind_int64(s, 2, q->limit > 0 && !ties ? q->limit : -1);
+    sqlite3_bind_int64(s, 3, q->offset > 0 && !ties ? q->offset : 0);
     if (q->where != NULL)
         for (size_t k = 0; k < filter_param_count(q->where); k++)
             sqlite3_bind_double(s, 4 + (int)k, filter_param(q->where, k));
-    int step;
+    int step, out_of_memory = 0;
     struct option_row option;
     while ((step = sqlite3_step(s)) == SQLITE_ROW) {
         option_from_row(s, 1, &option);
-        if (row(context, sqlite3_column_int64(s, 0), &option) != 0) {
+        int64_t run = sqlite3_column_int64(s, 0);
+        if (ties) {
+            out_of_memory = group_row(&group, run, &option) != 0;
+            if (out_of_memory || group.stopped) {
+                step = SQLITE_DONE;
+                break;
+            }
+        } else if (row(context, run, &option) != 0) {
             step = SQLITE_DONE;
             break;
         }
     }
     if (step != SQLITE_DONE)
         rc = store_fail(store, "querying options", err);
+    else if (ties && !out_of_memory && !group.stopped)
+        out_of_memory = flush_group(&group) != 0;
+    if (rc == FACET_OK && out_of_memory)
+        rc = facet_error_set(err, FACET_EWORK, "out of memory (sorting)");
     sqlite3_finalize(s);
+    free(group.rows);
+    free(group.run);
+    free(group.values);
+    free(group.order);
     return rc;
 }
 

@@ -12,7 +12,7 @@ what is wrong on stderr and exits 1.
                             knee, best_cost, hypervolume) are equal
   listing DB FORMAT FILE SQL  the rows of `facet options` (FORMAT json or
                             csv, in FILE) are the rows of SQL, in order,
-                            every column equal
+                            every column the same double as stored
   show DB RUN OPTION SHOW.json CLASSIFY.json
                             `facet show --json` of one option has the keys
                             of classify --json, its totals are the options
@@ -45,11 +45,12 @@ def problem(text):
     sys.exit(1)
 
 
-def close(a, b, rel=1e-11):
-    """Equal to the 12 significant digits Facet prints, or both null."""
+def exact(a, b):
+    """The same double (Facet prints every double so that it reads back
+    exactly), or both null."""
     if a is None or b is None:
         return a is None and b is None
-    return abs(a - b) <= rel * max(abs(a), abs(b)) + 1e-300
+    return a == b and math.copysign(1, a) == math.copysign(1, b)
 
 
 def options_of(db, run):
@@ -72,14 +73,47 @@ def objective_values(row, objectives):
     return values
 
 
-def dominates(a, b):
-    return all(x <= y for x, y in zip(a, b)) and any(x < y for x, y in zip(a, b))
+TIE = 1e-9
+
+
+def tolerances(points):
+    """Values of an objective within a billionth of its range over the
+    run's options, or of its largest magnitude, are equal (README,
+    Decisions: ties)."""
+    tol = []
+    for j in range(len(points[0]) if points else 0):
+        v = [p[j] for p in points]
+        tol.append(TIE * max(max(v) - min(v), max(abs(x) for x in v)))
+    return tol
+
+
+def merge_ties(points):
+    """Each value replaced by the lowest of its tie class: the values of
+    an objective sorted, a gap over its tolerance starts a new class."""
+    tol = tolerances(points)
+    merged = [list(p) for p in points]
+    for j, t in enumerate(tol):
+        order = sorted(range(len(points)), key=lambda i: points[i][j])
+        low = None
+        for k, i in enumerate(order):
+            v = points[i][j]
+            if k == 0 or not v - points[order[k - 1]][j] <= t:
+                low = v
+            merged[i][j] = low
+    return merged
+
+
+def dominates(a, b, tol):
+    return all(x <= y + t for x, y, t in zip(a, b, tol)) and \
+        any(x < y - t for x, y, t in zip(a, b, tol))
 
 
 def brute_ranks(points, violation):
     """Non-dominated fronts by peeling, with Deb's constraint-domination:
-    feasible before infeasible, infeasible by smaller violation."""
+    feasible before infeasible, infeasible by smaller violation; feasible
+    ones by dominance with ties as ties (the pairwise rule)."""
     n = len(points)
+    tol = tolerances(points)
 
     def beats(i, j):
         if violation[i] == 0 and violation[j] > 0:
@@ -87,7 +121,7 @@ def brute_ranks(points, violation):
         if violation[i] > 0 and violation[j] > 0:
             return violation[i] < violation[j]
         if violation[i] == 0 and violation[j] == 0:
-            return dominates(points[i], points[j])
+            return dominates(points[i], points[j], tol)
         return False
 
     beaten_by = [[j for j in range(n) if j != i and beats(j, i)]
@@ -148,9 +182,13 @@ def check_ranks(path, run):
                 "brute): %s" % (len(wrong), len(rows), wrong[:10]))
 
     # The knee: one option, rank 1, closest to the ideal point of the
-    # first front normalised by its own range (ties: the lowest number).
+    # first front normalised by its own range (ties, to 1e-9 in normalised
+    # units: the lowest number). It and the hypervolume see values equal
+    # but for rounding as equal: an objective whose values all tie has no
+    # range.
     first = [i for i, r in enumerate(rows) if r["rank"] == 1]
     m = len(objectives)
+    points = merge_ties(points)
     low = [min(points[i][j] for i in first) for j in range(m)]
     high = [max(points[i][j] for i in first) for j in range(m)]
 
@@ -159,7 +197,7 @@ def check_ranks(path, run):
                     if high[j] > low[j] else 0.0) ** 2 for j in range(m))
     knees = [r["number"] for r in rows if r["knee"]]
     best = min(distance(i) for i in first)
-    closest = [rows[i]["number"] for i in first if distance(i) <= best + 1e-12]
+    closest = [rows[i]["number"] for i in first if distance(i) <= best + TIE]
     if knees != [closest[0]] or info["knee"] != closest[0]:
         problem("knee: options marked %s, runs.knee %s; brute force %s "
                 "(distance %g)" % (knees, info["knee"], closest[0], best))
@@ -262,7 +300,7 @@ def check_listing(path, form, listing, sql):
         for c in ["run"] + COLUMNS:
             if c == "crowding" and w[c] is None:
                 continue  # NULL (a front's end): optimize.sh checks it apart
-            if not close(g[c], w[c]):
+            if not exact(g[c], w[c]):
                 problem("row %d (option %s) %s: %r, SQL %r"
                         % (k, w["number"], c, g[c], w[c]))
 

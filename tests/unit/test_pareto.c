@@ -4,7 +4,9 @@
  * objectives), the fast 2-D / 3-D rankers against the general one on large
  * sets, crowding distances against a hand computation, exact hypervolume
  * against counting unit cells on integer grids, normalisation, survivor
- * selection and the knee.
+ * selection and the knee; and ties (values equal but for rounding, within
+ * the tolerance of core/ties.h) against a brute force with the pairwise
+ * tolerance rule, and against the unmoved values.
  */
 #include <setjmp.h>
 #include <stdarg.h>
@@ -19,6 +21,7 @@
 
 #include "core/pareto.h"
 #include "core/rng.h"
+#include "tie_oracle.h"
 
 /* ---- oracles ------------------------------------------------------------- */
 
@@ -539,6 +542,161 @@ static void test_knee_closest_to_ideal(void **state)
     assert_int_equal(pareto_knee(f, 2, 2, none, &knee, &err), FACET_EINPUT);
 }
 
+
+/* ---- ties ---------------------------------------------------------------- */
+/* Objective values equal but for rounding must compare equal (ties.h);
+ * tie_oracle.h is the brute force. */
+
+/* n x m points on a coarse lattice (many exact ties), of the size of a
+ * run's costs and areas, then each value moved by up to 1e-12 of itself,
+ * as rounding in another summation order moves it. exact gets the
+ * unmoved values. */
+static double *near_tie_points(struct rng *rng, size_t n, size_t m,
+                               int levels, double *exact)
+{
+    double *f = malloc((n * m + 1) * sizeof *f);
+    for (size_t k = 0; k < n * m; k++) {
+        double base = 1000.0 + 37.0 * (double)rng_below(rng, (uint64_t)levels);
+        exact[k] = base;
+        f[k] = base * (1 + 2e-12 * (rng_uniform(rng) - 0.5));
+    }
+    return f;
+}
+
+static void check_near_ties(struct rng *rng, size_t n, size_t m, int levels,
+                            bool constrained)
+{
+    double *exact = malloc((n * m + 1) * sizeof *exact);
+    double *f = near_tie_points(rng, n, m, levels, exact);
+    double *violation = NULL;
+    if (constrained) {
+        violation = malloc((n + 1) * sizeof *violation);
+        for (size_t i = 0; i < n; i++)
+            violation[i] = rng_below(rng, 3) == 0 ? 0.0
+                           : (double)rng_below(rng, 4) * 0.5;
+    }
+    int *rank = malloc((n + 1) * sizeof *rank);
+    int *expected = malloc((n + 1) * sizeof *expected);
+    int *unmoved = malloc((n + 1) * sizeof *unmoved);
+    struct facet_error err;
+    assert_int_equal(pareto_rank(f, n, m, violation, rank, NULL, &err),
+                     FACET_OK);
+    brute_rank_within(f, violation, n, m, expected);
+    assert_int_equal(pareto_rank(exact, n, m, violation, unmoved, NULL, &err),
+                     FACET_OK);
+    for (size_t i = 0; i < n; i++) {
+        assert_int_equal(rank[i], expected[i]);
+        assert_int_equal(rank[i], unmoved[i]);
+    }
+    free(exact);
+    free(f);
+    free(violation);
+    free(rank);
+    free(expected);
+    free(unmoved);
+}
+
+/* Every ranker (m = 1, 2, 3 and the general one) under planted near-ties,
+ * against the brute force with the same tolerance, and against the ranks
+ * of the unmoved values. */
+static void test_rank_near_ties_brute(void **state)
+{
+    (void)state;
+    struct rng rng;
+    rng_seed(&rng, 1999);
+    const size_t sizes[] = {2, 3, 7, 30, 120};
+    const int levels[] = {2, 5, 12};
+    for (size_t m = 1; m <= 5; m++)
+        for (size_t s = 0; s < sizeof sizes / sizeof *sizes; s++)
+            for (size_t l = 0; l < sizeof levels / sizeof *levels; l++) {
+                check_near_ties(&rng, sizes[s], m, levels[l], false);
+                check_near_ties(&rng, sizes[s], m, levels[l], true);
+            }
+    check_near_ties(&rng, 500, 3, 20, false);
+}
+
+/* Crowding, survivor selection and the knee do not see a move of 1e-12:
+ * they come out as for the unmoved values (crowding to 1e-9, since the
+ * gaps themselves move by that little), where exact comparisons let the
+ * rounding pick ends of fronts, order copies and choose the knee. */
+static void test_crowding_select_knee_near_ties(void **state)
+{
+    (void)state;
+    struct rng rng;
+    rng_seed(&rng, 77);
+    for (int round = 0; round < 60; round++) {
+        size_t n = 20 + (size_t)rng_below(&rng, 60);
+        size_t m = 2 + (size_t)rng_below(&rng, 2);
+        int levels = 3 + (int)rng_below(&rng, 6);
+        double *exact = malloc(n * m * sizeof *exact);
+        double *f = near_tie_points(&rng, n, m, levels, exact);
+        /* Anti-correlate the first two objectives for large fronts. */
+        for (size_t i = 0; i < n; i++) {
+            exact[i * m + 1] = 3000 - exact[i * m] + (exact[i * m + 1] - 1000)
+                               * 0.5;
+            f[i * m + 1] = exact[i * m + 1] * (1 + 2e-12 *
+                                               (rng_uniform(&rng) - 0.5));
+        }
+        int *rank = malloc(n * sizeof *rank);
+        double *crowd_f = malloc(n * sizeof *crowd_f);
+        double *crowd_exact = malloc(n * sizeof *crowd_exact);
+        struct facet_error err;
+        assert_int_equal(pareto_rank(exact, n, m, NULL, rank, NULL, &err),
+                         FACET_OK);
+        assert_int_equal(pareto_crowding(f, n, m, rank, crowd_f, &err),
+                         FACET_OK);
+        assert_int_equal(pareto_crowding(exact, n, m, rank, crowd_exact,
+                                         &err), FACET_OK);
+        for (size_t i = 0; i < n; i++) {
+            assert_int_equal(isinf(crowd_f[i]), isinf(crowd_exact[i]));
+            if (!isinf(crowd_f[i]))
+                assert_true(fabs(crowd_f[i] - crowd_exact[i]) <= 1e-9);
+        }
+        size_t knee_f, knee_exact;
+        assert_int_equal(pareto_knee(f, n, m, rank, &knee_f, &err), FACET_OK);
+        assert_int_equal(pareto_knee(exact, n, m, rank, &knee_exact, &err),
+                         FACET_OK);
+        assert_int_equal(knee_f, knee_exact);
+        size_t keep = n / 2;
+        size_t *sel_f = malloc(keep * sizeof *sel_f);
+        size_t *sel_exact = malloc(keep * sizeof *sel_exact);
+        assert_int_equal(pareto_select(f, n, m, NULL, keep, sel_f, &err),
+                         FACET_OK);
+        assert_int_equal(pareto_select(exact, n, m, NULL, keep, sel_exact,
+                                       &err), FACET_OK);
+        for (size_t k = 0; k < keep; k++)
+            assert_int_equal(sel_f[k], sel_exact[k]);
+        free(exact);
+        free(f);
+        free(rank);
+        free(crowd_f);
+        free(crowd_exact);
+        free(sel_f);
+        free(sel_exact);
+    }
+}
+
+/* The issue's case in miniature: two options of equal cost and DP area
+ * but for rounding (9e-10 USD on 1.2 million), the second flatter. The
+ * flatter one alone is Pareto-optimal. */
+static void test_rank_rounding_is_not_better(void **state)
+{
+    (void)state;
+    double f[] = {
+        1215639.0000000009, 3.620, 630.3,   /* option 286: 9e-10 cheaper? */
+        1215639.0000000018, 3.540, 630.3,   /* option 270: flatter */
+        1402103.0, 0.620, 878.3,
+        1174468.0, 4.372, 575.6,
+    };
+    int rank[4];
+    struct facet_error err;
+    assert_int_equal(pareto_rank(f, 4, 3, NULL, rank, NULL, &err), FACET_OK);
+    assert_int_equal(rank[0], 2);
+    assert_int_equal(rank[1], 1);
+    assert_int_equal(rank[2], 1);
+    assert_int_equal(rank[3], 1);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -556,6 +714,9 @@ int main(void)
         cmocka_unit_test(test_hypervolume_dimensions_agree),
         cmocka_unit_test(test_hypervolume_normalized),
         cmocka_unit_test(test_knee_closest_to_ideal),
+        cmocka_unit_test(test_rank_near_ties_brute),
+        cmocka_unit_test(test_crowding_select_knee_near_ties),
+        cmocka_unit_test(test_rank_rounding_is_not_better),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
