@@ -187,7 +187,15 @@ int study_open_surface(const struct run_info *run, struct surface *surface,
             "%s: the file has changed since run %lld was made from it "
             "(SHA-256 %.12s..., was %.12s...)", run->surface_path,
             (long long)run->id, digest, run->surface_sha256);
-    return surface_prepare(surface, flip, err);
+    /* The method the run took, not what would be chosen today: a run
+     * started by an older Facet keeps its UV. */
+    enum param_method uv = PARAM_AUTO;
+    if (run->uv_method[0] != '\0' &&
+        param_method_parse(run->uv_method, &uv) != 0)
+        return facet_error_set(err, FACET_EINPUT,
+            "run %lld: unknown UV method '%s' (made by a newer Facet?)",
+            (long long)run->id, run->uv_method);
+    return surface_prepare(surface, flip, uv, err);
 }
 
 int study_rank(struct store *store, int64_t run, struct facet_error *err)
@@ -428,7 +436,8 @@ int study_start(struct store *store, const struct study_request *request,
                       run.surface_sha256, &surface, err);
     if (rc == FACET_OK) {
         stage(hooks, "preparing the surface (UV, curvature)");
-        rc = surface_prepare(&surface, request->flip_normals, err);
+        rc = surface_prepare(&surface, request->flip_normals, request->uv,
+                             err);
     }
     if (rc != FACET_OK) {
         surface_close(&surface);
@@ -440,6 +449,8 @@ int study_start(struct store *store, const struct study_request *request,
     run.triangles = (int64_t)surface.mesh.ntriangles;
     snprintf(run.uv_method, sizeof run.uv_method, "%s",
              param_method_name(surface.param.method));
+    snprintf(run.uv, sizeof run.uv, "%s",
+             request->uv == PARAM_AUTO ? "" : param_method_name(request->uv));
     snprintf(run.method, sizeof run.method, "%s",
              optimize_method_name(s->method));
     run.seed = s->seed;

@@ -37,6 +37,8 @@ struct study_request {
     const char *surface_path;
     struct mesh_options mesh;        /* units, object, group */
     int flip_normals;
+    enum param_method uv;            /* asked for; PARAM_AUTO: the first
+                                        that applies */
     struct optimize_settings settings;
     const char *name;                /* "" for none */
 };
@@ -62,7 +64,9 @@ int study_settings(const struct run_info *run,
                    struct facet_error *err);
 
 /* Opens and prepares the surface of run, refusing a file whose content is
- * not the one the run was made from. Release with surface_close, also
+ * not the one the run was made from. The UV is the method the run took
+ * (its uv_method), so a resumed run, and every option shown later, follows
+ * the UV its first options did, even when an older Facet chose it. Release with surface_close, also
  * after a failure. */
 int study_open_surface(const struct run_info *run, struct surface *surface,
                        struct facet_error *err);

@@ -35,7 +35,7 @@ static int setup(void **state)
     struct mesh_options options = {UNITS_M, NULL, NULL};
     int rc = surface_open(path, &options, &roof, &err);
     if (rc == FACET_OK)
-        rc = surface_prepare(&roof, 0, &err);
+        rc = surface_prepare(&roof, 0, PARAM_AUTO, &err);
     unlink(path);
     return rc;
 }

@@ -38,7 +38,7 @@ static void open_example(const char *name, int res, struct surface *s)
     struct mesh_options options = {UNITS_M, NULL, NULL};
     int rc = surface_open(path, &options, s, &err);
     if (rc == FACET_OK)
-        rc = surface_prepare(s, 0, &err);
+        rc = surface_prepare(s, 0, PARAM_AUTO, &err);
     unlink(path);
     if (rc != FACET_OK)
         fail_msg("%s: %s", name, err.message);
@@ -364,7 +364,7 @@ static void open_trimmed_disc(struct surface *s)
     struct facet_error err;
     int rc = surface_open(path, &options, s, &err);
     if (rc == FACET_OK)
-        rc = surface_prepare(s, 0, &err);
+        rc = surface_prepare(s, 0, PARAM_AUTO, &err);
     unlink(path);
     if (rc != FACET_OK)
         fail_msg("disc: %s", err.message);
@@ -554,7 +554,7 @@ static void test_lattice_real_surfaces(void **state)
         struct facet_error err;
         int rc = surface_open(path, &options, &s, &err);
         if (rc == FACET_OK)
-            rc = surface_prepare(&s, 0, &err);
+            rc = surface_prepare(&s, 0, PARAM_AUTO, &err);
         if (rc != FACET_OK)
             fail_msg("%s: %s", path, err.message);
         struct panel_lattice *lattice;
