@@ -70,9 +70,9 @@ sys.exit(0 if all(abs(float(r["area_m2"]) - 25) < 1e-6 and r["type"] == "FP" for
 PY
 
 # Real surfaces: no vt, so Facet makes its own UV.
-expect "compas hypar (no vt: plane projection)" 0 "$FACET" classify "$FACET_DATA/compas_hypar.obj" --grid 5x5 --json
+expect "compas hypar (no vt: an 8x8 structured quad grid)" 0 "$FACET" classify "$FACET_DATA/compas_hypar.obj" --grid 5x5 --json
 json_check "compas hypar is all feature curves" \
-    'all(p["class"] in ("convex_feature_curve","concave_feature_curve","saddle") for p in j["panels"]) and j["surface"]["uv"]=="plane"'
+    'all(p["class"] in ("convex_feature_curve","concave_feature_curve","saddle") for p in j["panels"]) and j["surface"]["uv"]=="grid"'
 expect "hemisphere (no vt)" 0 "$FACET" classify "$FACET_DATA/hemisphere.obj" --grid 10x10 --json
 json_check "hemisphere: trimmed panels add up to its area" \
     'abs(sum(p["area"] for p in j["panels"]) - j["surface"]["area"]) < 1e-9*j["surface"]["area"]'
@@ -86,7 +86,7 @@ expect "torus without vt" 0 "$FACET" classify "$WORK/torus-novt.obj" --grid 10x1
 json_check "harmonic parameterization, every panel, areas add up" \
     'j["surface"]["uv"]=="harmonic" and j["totals"]["panels"]==120 and abs(j["totals"]["area"]-j["surface"]["area"]) < 1e-9*j["surface"]["area"]'
 expect "conical roof (no vt)" 0 "$FACET" classify "$FACET_DATA/conical1.obj" --grid 10x10 --json
-json_check "conical roof gets a UV map" 'j["surface"]["uv"] in ("plane","harmonic") and j["totals"]["panels"] > 50'
+json_check "conical roof takes its quad grid as UV" 'j["surface"]["uv"]=="grid" and j["totals"]["panels"] == 100'
 
 # Bad input.
 expect_error "unknown units" "units 'yard'" "$FACET" classify "$WORK/roof.obj" --grid 5x5 --units yard
