@@ -172,8 +172,9 @@ static int try_grid(const struct mesh *mesh, const char *name,
                     struct facet_error *err)
 {
     double *vertex_uv;
-    int rc = param_grid(mesh, &vertex_uv, &out->grid_nu, &out->grid_nv, why,
-                        size);
+    int paired;
+    int rc = param_grid(mesh, &vertex_uv, &out->grid_nu, &out->grid_nv,
+                        &paired, why, size);
     if (rc == FACET_EWORK)
         return facet_error_set(err, FACET_EWORK, "out of memory (UV)");
     if (rc != FACET_OK)
@@ -187,8 +188,9 @@ static int try_grid(const struct mesh *mesh, const char *name,
             "%s: the quad grid's (i, j) folds (%zu flipped, %zu overlapping, "
             "%zu degenerate triangles)", name, out->report.flipped,
             out->report.overlapping, out->report.degenerate);
-    snprintf(out->reason, sizeof out->reason, "%d x %d quads, structured",
-             out->grid_nu, out->grid_nv);
+    snprintf(out->reason, sizeof out->reason, "%d x %d quads, structured%s",
+             out->grid_nu, out->grid_nv,
+             paired ? ", paired from the file's triangles" : "");
     return FACET_OK;
 }
 

@@ -3,7 +3,8 @@
  * param_grid.h.
  *
  * The quads come back from the triangles: the two triangles of one OBJ
- * face (mesh->source_face) share its diagonal. From a corner quad, a walk
+ * face (mesh->source_face) share its diagonal; in a file of triangles
+ * only, two triangles whose longest edges are the one they share. From a corner quad, a walk
  * across quad edges gives each next quad the coordinates its shared edge
  * implies; the mesh is a structured grid when no vertex gets two different
  * (i, j) and the vertices fill the rectangle (NU + 1) x (NV + 1) once each.
@@ -28,50 +29,114 @@ static void quads_free(struct quads *q)
     free(q->of_triangle);
 }
 
-/* Pairs the triangles of each face into quads. Returns FACET_OK, or
- * FACET_EINPUT (why set) when a face is not a quad. */
-static int find_quads(const struct mesh *mesh, struct quads *q, char *why,
-                      size_t size)
+/* Adds the quad of triangle t and its neighbour n across t's edge k (from
+ * corner k to k + 1), in t's winding. */
+static void add_quad(const struct mesh *mesh, struct quads *q, size_t t,
+                     int k, uint32_t n)
+{
+    const uint32_t *a = mesh->triangle + 3 * t;
+    const uint32_t *b = mesh->triangle + 3 * (size_t)n;
+    uint32_t d = b[0];
+    for (int x = 0; x < 3; x++)
+        if (b[x] != a[k] && b[x] != a[(k + 1) % 3])
+            d = b[x];
+    uint32_t *c = q->corner + 4 * q->count;
+    c[0] = a[k];
+    c[1] = d;
+    c[2] = a[(k + 1) % 3];
+    c[3] = a[(k + 2) % 3];
+    q->of_triangle[t] = q->of_triangle[n] = (uint32_t)q->count;
+    q->count++;
+}
+
+/* The corner where triangle t's longest edge starts. */
+static int longest_edge(const struct mesh *mesh, size_t t)
+{
+    const uint32_t *tri = mesh->triangle + 3 * t;
+    int best = 0;
+    double longest = -1;
+    for (int k = 0; k < 3; k++) {
+        double length = vec3_distance(mesh->position + 3 * (size_t)tri[k],
+                                      mesh->position +
+                                          3 * (size_t)tri[(k + 1) % 3]);
+        if (length > longest) {
+            longest = length;
+            best = k;
+        }
+    }
+    return best;
+}
+
+/* A file of triangles only (an export that split its quads): each
+ * triangle pairs with the neighbour across its longest edge when that is
+ * the neighbour's longest edge too, the diagonal of the quad they split.
+ * Returns the triangles left unpaired. */
+static size_t pair_triangles(const struct mesh *mesh, struct quads *q)
+{
+    size_t unpaired = 0;
+    for (size_t t = 0; t < mesh->ntriangles; t++) {
+        int k = longest_edge(mesh, t);
+        uint32_t n = mesh->neighbour[3 * t + k];
+        if (n == MESH_NONE) {
+            unpaired++;
+            continue;
+        }
+        const uint32_t *a = mesh->triangle + 3 * t;
+        const uint32_t *b = mesh->triangle + 3 * (size_t)n;
+        int m = longest_edge(mesh, n);
+        if (b[m] != a[(k + 1) % 3] || b[(m + 1) % 3] != a[k]) {
+            unpaired++;
+            continue;
+        }
+        if (n > t)
+            add_quad(mesh, q, t, k, n);
+    }
+    return unpaired;
+}
+
+/* The quads: the two triangles of each four-cornered face, or, in a file
+ * of triangles only, the pairs pair_triangles finds (*paired set).
+ * Returns FACET_OK, or FACET_EINPUT (why set) when they are not all
+ * quads. */
+static int find_quads(const struct mesh *mesh, struct quads *q, int *paired,
+                      char *why, size_t size)
 {
     memset(q, 0, sizeof *q);
+    *paired = 0;
     size_t nt = mesh->ntriangles;
     q->corner = malloc(sizeof(uint32_t) * 4 * (nt / 2 + 1));
     q->of_triangle = malloc(sizeof(uint32_t) * (nt ? nt : 1));
     if (q->corner == NULL || q->of_triangle == NULL)
         return FACET_EWORK;
-    size_t other = 0;
+    size_t other = 0, single = 0, faces = 0;
     for (size_t t = 0; t < nt;) {
         size_t end = t + 1;
         while (end < nt && mesh->source_face[end] == mesh->source_face[t])
             end++;
-        if (end - t != 2) {
-            other++;
-            t = end;
-            continue;
-        }
+        faces++;
+        single += end - t == 1;
         /* The edge of t that the second triangle lies across. */
-        const uint32_t *a = mesh->triangle + 3 * t;
         int k = 0;
-        while (k < 3 && mesh->neighbour[3 * t + k] != (uint32_t)(t + 1))
+        while (end - t == 2 && k < 3 &&
+               mesh->neighbour[3 * t + k] != (uint32_t)(t + 1))
             k++;
-        if (k == 3) {
+        if (end - t != 2 || k == 3)
             other++;
-            t = end;
-            continue;
-        }
-        const uint32_t *b = mesh->triangle + 3 * (t + 1);
-        uint32_t d = b[0];
-        for (int x = 0; x < 3; x++)
-            if (b[x] != a[k] && b[x] != a[(k + 1) % 3])
-                d = b[x];
-        uint32_t *c = q->corner + 4 * q->count;
-        c[0] = a[k];
-        c[1] = d;
-        c[2] = a[(k + 1) % 3];
-        c[3] = a[(k + 2) % 3];
-        q->of_triangle[t] = q->of_triangle[t + 1] = (uint32_t)q->count;
-        q->count++;
+        else
+            add_quad(mesh, q, t, k, (uint32_t)(t + 1));
         t = end;
+    }
+    if (single == faces && faces > 0) {
+        q->count = 0;
+        *paired = 1;
+        size_t unpaired = pair_triangles(mesh, q);
+        if (unpaired > 0) {
+            snprintf(why, size, "not a quad mesh (%zu of its %zu triangles "
+                     "do not pair into quads along their longest edges)",
+                     unpaired, nt);
+            return FACET_EINPUT;
+        }
+        return FACET_OK;
     }
     if (other > 0) {
         snprintf(why, size, "not a quad mesh (%zu faces are not quads)",
@@ -229,7 +294,7 @@ static int check_valence(const struct mesh *mesh, const uint32_t *count,
 }
 
 int param_grid(const struct mesh *mesh, double **vertex_uv_out, int *nu,
-               int *nv, char *why, size_t size)
+               int *nv, int *paired, char *why, size_t size)
 {
     *vertex_uv_out = NULL;
     *nu = *nv = 0;
@@ -239,7 +304,7 @@ int param_grid(const struct mesh *mesh, double **vertex_uv_out, int *nu,
     long *ij = NULL;
     unsigned char *known = NULL, *queued = NULL;
     double *vertex_uv = NULL;
-    int rc = find_quads(mesh, &q, why, size);
+    int rc = find_quads(mesh, &q, paired, why, size);
     if (rc != FACET_OK)
         goto done;
     rc = FACET_EWORK;

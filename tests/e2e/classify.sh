@@ -79,10 +79,13 @@ json_check "hemisphere: trimmed panels add up to its area" \
 expect "bubble roof (no vt)" 0 "$FACET" classify "$FACET_DATA/botanic-garden-bubble-0.obj" --grid 20x20 --json
 expect "igloo (vt)" 0 "$FACET" classify "$FACET_DATA/igloo.obj" --grid 20x20 --json
 
-# A torus section without vt folds when projected: the harmonic map.
+# A torus section without vt folds when projected: its triangles pair into
+# a 60 x 60 quad grid, and asked for, the harmonic map applies too.
 "$FACET" example torus --res 60 -o "$WORK/torus.obj" || exit 1
 grep -v '^vt' "$WORK/torus.obj" | sed -E 's#/[0-9]+##g' >"$WORK/torus-novt.obj"
 expect "torus without vt" 0 "$FACET" classify "$WORK/torus-novt.obj" --grid 10x12 --json
+json_check "its triangles pair into a quad grid" 'j["surface"]["uv"]=="grid" and j["totals"]["panels"]==120'
+expect "torus without vt, --uv harmonic" 0 "$FACET" classify "$WORK/torus-novt.obj" --grid 10x12 --uv harmonic --json
 json_check "harmonic parameterization, every panel, areas add up" \
     'j["surface"]["uv"]=="harmonic" and j["totals"]["panels"]==120 and abs(j["totals"]["area"]-j["surface"]["area"]) < 1e-9*j["surface"]["area"]'
 expect "conical roof (no vt)" 0 "$FACET" classify "$FACET_DATA/conical1.obj" --grid 10x10 --json

@@ -110,9 +110,10 @@ static void grid_point(int i, int j, double p[3])
     p[2] = 0.2 * x * x / GRID_NU + 0.5 * sin(y);
 }
 
-/* The grid as OBJ quads, wound counter-clockwise seen from +z; rows of
- * the file along i (row_major) or along j. */
-static void write_grid(struct text *t, int row_major)
+/* The grid as OBJ quads, or as two triangles per quad (split along the
+ * diagonal from its corner (i, j)), wound counter-clockwise seen from +z;
+ * rows of the file along i (row_major) or along j. */
+static void write_grid(struct text *t, int row_major, int triangles)
 {
     for (int outer = 0; outer <= (row_major ? GRID_NV : GRID_NU); outer++)
         for (int inner = 0; inner <= (row_major ? GRID_NU : GRID_NV);
@@ -126,13 +127,18 @@ static void write_grid(struct text *t, int row_major)
         for (int i = 0; i < GRID_NU; i++) {
             int corner[4][2] = {{i, j}, {i + 1, j}, {i + 1, j + 1},
                                 {i, j + 1}};
-            add(t, "f");
+            int index[4];
             for (int k = 0; k < 4; k++) {
                 int a = corner[k][0], b = corner[k][1];
-                add(t, " %d", row_major ? b * (GRID_NU + 1) + a + 1
-                                        : a * (GRID_NV + 1) + b + 1);
+                index[k] = row_major ? b * (GRID_NU + 1) + a + 1
+                                     : a * (GRID_NV + 1) + b + 1;
             }
-            add(t, "\n");
+            if (triangles)
+                add(t, "f %d %d %d\nf %d %d %d\n", index[0], index[1],
+                    index[2], index[0], index[2], index[3]);
+            else
+                add(t, "f %d %d %d %d\n", index[0], index[1], index[2],
+                    index[3]);
         }
 }
 
@@ -152,12 +158,12 @@ static double grid_quad_area(int i, int j)
 }
 
 /* The file's rows along i: u = i, v = j, one panel per quad with its
- * area, its four corners and no deviation. */
-static void test_grid_one_panel_per_quad(void **state)
+ * area, its four corners and no deviation; the same when the file holds
+ * the quads as triangles. */
+static void check_grid(int triangles)
 {
-    (void)state;
     struct text t = {0};
-    write_grid(&t, 1);
+    write_grid(&t, 1, triangles);
     struct surface s;
     struct facet_error err;
     if (open_text(&t, PARAM_AUTO, &s, &err) != FACET_OK)
@@ -166,6 +172,7 @@ static void test_grid_one_panel_per_quad(void **state)
     assert_int_equal(s.param.grid_nu, GRID_NU);
     assert_int_equal(s.param.grid_nv, GRID_NV);
     assert_non_null(strstr(s.param.reason, "7 x 5 quads, structured"));
+    assert_int_equal(strstr(s.param.reason, "paired") != NULL, triangles);
     assert_int_equal(s.param.report.flipped, 0);
     assert_int_equal(s.param.report.overlapping, 0);
     /* The winding is kept: counter-clockwise faces, counter-clockwise UV. */
@@ -197,13 +204,25 @@ static void test_grid_one_panel_per_quad(void **state)
     surface_close(&s);
 }
 
+static void test_grid_one_panel_per_quad(void **state)
+{
+    (void)state;
+    check_grid(0);
+}
+
+static void test_grid_of_triangles(void **state)
+{
+    (void)state;
+    check_grid(1);
+}
+
 /* The file's rows along j: u follows them, so the grid is 5 x 7, still
  * one panel per quad (matched by its corners) and unmirrored. */
 static void test_grid_follows_file_rows(void **state)
 {
     (void)state;
     struct text t = {0};
-    write_grid(&t, 0);
+    write_grid(&t, 0, 0);
     struct surface s;
     struct facet_error err;
     if (open_text(&t, PARAM_AUTO, &s, &err) != FACET_OK)
@@ -583,6 +602,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_grid_one_panel_per_quad),
+        cmocka_unit_test(test_grid_of_triangles),
         cmocka_unit_test(test_grid_follows_file_rows),
         cmocka_unit_test(test_not_a_grid),
         cmocka_unit_test(test_holes_capped),
