@@ -17,7 +17,10 @@ const char classify_flags_usage[] =
     "  --sp-as-fp          price SP area as FP (the paper's MOGD)\n"
     "  --max-panel-area M2 feasibility limit (default 7.06)\n"
     "  --object NAME       only the faces of object NAME\n"
-    "  --group NAME        only the faces of group NAME\n";
+    "  --group NAME        only the faces of group NAME\n"
+    "  --uv METHOD         the UV panels follow: vt, grid (a structured\n"
+    "                      quad grid's own i, j), plane, harmonic; default\n"
+    "                      the first of these that applies\n";
 
 void classify_flags_table(struct classify_flags *f, struct arg_option *table)
 {
@@ -31,13 +34,25 @@ void classify_flags_table(struct classify_flags *f, struct arg_option *table)
         {"max-panel-area", 0, ARG_STRING, &f->max_area, NULL},
         {"object", 0, ARG_STRING, &f->object, NULL},
         {"group", 0, ARG_STRING, &f->group, NULL},
+        {"uv", 0, ARG_STRING, &f->uv, NULL},
     };
     memcpy(table, entries, sizeof entries);
 }
 
+int classify_flags_uv(const char *text, enum param_method *uv,
+                      struct facet_error *err)
+{
+    *uv = PARAM_AUTO;
+    if (text != NULL && param_method_parse(text, uv) != 0)
+        return facet_error_set(err, FACET_EINPUT,
+            "--uv: '%s' is not vt, grid, plane, harmonic or auto", text);
+    return FACET_OK;
+}
+
 int classify_flags_apply(const struct classify_flags *f,
                          struct option_params *params,
-                         struct mesh_options *mesh, struct facet_error *err)
+                         struct mesh_options *mesh, enum param_method *uv,
+                         struct facet_error *err)
 {
     memset(params, 0, sizeof *params);
     classify_defaults(&params->classify);
@@ -46,6 +61,8 @@ int classify_flags_apply(const struct classify_flags *f,
     double number;
     int rc;
     if (f->units && (rc = mesh_units_parse(f->units, &mesh->units, err)))
+        return rc;
+    if ((rc = classify_flags_uv(f->uv, uv, err)))
         return rc;
     if (f->curvature_tol) {
         if ((rc = args_double(f->curvature_tol, 1e-12, 1e6,

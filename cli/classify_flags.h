@@ -11,16 +11,17 @@
 #include "args.h"
 #include "core/mesh.h"
 #include "core/option.h"
+#include "core/param.h"
 
 /* The flags' values as given (pointing into argv), NULL when absent. */
 struct classify_flags {
     const char *units, *curvature_tol, *per_panel, *prices, *max_area;
-    const char *object, *group;
+    const char *object, *group, *uv;
     int flip_normals, sp_as_fp;
 };
 
 /* Entries classify_flags_table writes. */
-#define CLASSIFY_FLAG_COUNT 9
+#define CLASSIFY_FLAG_COUNT 10
 
 /* Writes the CLASSIFY_FLAG_COUNT arg_option entries of the flags into
  * table, pointing at *flags (which must outlive the parse). */
@@ -28,11 +29,17 @@ void classify_flags_table(struct classify_flags *flags,
                           struct arg_option *table);
 
 /* Sets params (all but grid and threshold, which it leaves at the
- * defaults' values) and mesh from the flags, starting from the paper's
- * defaults. Returns FACET_OK or FACET_EINPUT naming the bad flag. */
+ * defaults' values), mesh and the UV method asked for (PARAM_AUTO when
+ * --uv is absent) from the flags, starting from the paper's defaults.
+ * Returns FACET_OK or FACET_EINPUT naming the bad flag. */
 int classify_flags_apply(const struct classify_flags *flags,
                          struct option_params *params,
-                         struct mesh_options *mesh, struct facet_error *err);
+                         struct mesh_options *mesh, enum param_method *uv,
+                         struct facet_error *err);
+
+/* Parses the text of --uv into *uv. */
+int classify_flags_uv(const char *text, enum param_method *uv,
+                      struct facet_error *err);
 
 /* The usage lines of the flags, for a command's --help. */
 extern const char classify_flags_usage[];

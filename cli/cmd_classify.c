@@ -120,7 +120,9 @@ static int classify_run(int argc, char **argv, struct facet_error *err)
 
     struct option_params params;
     struct mesh_options mesh_options;
-    if ((rc = classify_flags_apply(&flags, &params, &mesh_options, err)))
+    enum param_method uv;
+    if ((rc = classify_flags_apply(&flags, &params, &mesh_options, &uv,
+                                   err)))
         return rc;
     if ((rc = parse_grid(grid, &params.nu, &params.nv, err)) != FACET_OK)
         return rc;
@@ -139,7 +141,7 @@ static int classify_run(int argc, char **argv, struct facet_error *err)
     memset(&panels, 0, sizeof panels);
     rc = surface_open(path[0], &mesh_options, &surface, err);
     if (rc == FACET_OK)
-        rc = surface_prepare(&surface, flip, err);
+        rc = surface_prepare(&surface, flip, uv, err);
     if (rc == FACET_OK)
         rc = option_evaluate(&surface, &params, &panels, &totals, err);
     if (rc == FACET_OK && csv != NULL)
@@ -186,7 +188,8 @@ const struct command cmd_classify = {
              "       [--curvature-tol K] [--per-panel extremes|mean] "
              "[--flip-normals]\n"
              "       [--prices FP,SP,DP] [--sp-as-fp] [--max-panel-area M2]\n"
-             "       [--json] [--csv FILE] [--object NAME] [--group NAME]",
+             "       [--json] [--csv FILE] [--object NAME] [--group NAME]\n"
+             "       [--uv vt|grid|plane|harmonic]",
     .summary = "Divide a surface into a UV grid of panels; classify, type "
                "and price them.",
     .options =

@@ -7,6 +7,7 @@
 #include <string.h>
 
 #include "args.h"
+#include "classify_flags.h"
 #include "command.h"
 #include "core/json.h"
 #include "core/surface.h"
@@ -35,7 +36,16 @@ static void print_names(const char *label, const struct obj_name *names,
     printf("\n");
 }
 
-static void print_human(const struct surface *s, const struct uv_report *uv)
+/* The UV panels would follow: the parameterization taken and why, or
+ * why none applies. */
+struct uv_choice {
+    int ok;
+    const struct parameterization *param;
+    const char *why_not;       /* the error's message when !ok */
+};
+
+static void print_human(const struct surface *s, const struct uv_report *uv,
+                        const struct uv_choice *choice)
 {
     const struct mesh *m = &s->mesh;
     const struct obj_file *o = &s->obj;
@@ -61,6 +71,12 @@ static void print_human(const struct surface *s, const struct uv_report *uv)
                uv->umin, uv->umax, uv->vmin, uv->vmax, uv->flipped,
                uv->overlapping, uv->degenerate);
     printf("\n");
+    if (choice->ok)
+        printf("%-15s %s (%s)\n", "UV map",
+               param_method_name(choice->param->method),
+               choice->param->reason);
+    else
+        printf("%-15s none: %s\n", "UV map", choice->why_not);
     printf("%-15s %zu\n", "components", m->ncomponents);
     printf("%-15s %zu\n", "boundary loops", m->nloops);
     print_names("objects", o->objects, o->nobjects);
@@ -80,7 +96,8 @@ static void json_names(struct json_writer *w, const char *key,
     json_end_array(w);
 }
 
-static void print_json(const struct surface *s, const struct uv_report *uv)
+static void print_json(const struct surface *s, const struct uv_report *uv,
+                       const struct uv_choice *choice)
 {
     const struct mesh *m = &s->mesh;
     const struct obj_file *o = &s->obj;
@@ -104,6 +121,13 @@ static void print_json(const struct surface *s, const struct uv_report *uv)
     json_key(&w, "overlapping");     json_integer(&w, (long long)uv->overlapping);
     json_key(&w, "degenerate");      json_integer(&w, (long long)uv->degenerate);
     json_end_object(&w);
+    json_key(&w, "uv_method");
+    if (choice->ok)
+        json_string(&w, param_method_name(choice->param->method));
+    else
+        json_null(&w);
+    json_key(&w, "uv_reason");
+    json_string(&w, choice->ok ? choice->param->reason : choice->why_not);
     json_key(&w, "bbox");
     json_begin_array(&w);
     json_begin_array(&w);
@@ -136,12 +160,14 @@ static void print_json(const struct surface *s, const struct uv_report *uv)
 static int info_run(int argc, char **argv, struct facet_error *err)
 {
     const char *units_text = NULL, *object = NULL, *group = NULL;
+    const char *uv_text = NULL;
     int json = 0;
     const struct arg_option options[] = {
         {"units", 0, ARG_STRING, &units_text, NULL},
         {"object", 0, ARG_STRING, &object, NULL},
         {"group", 0, ARG_STRING, &group, NULL},
         {"json", 0, ARG_FLAG, NULL, &json},
+        {"uv", 0, ARG_STRING, &uv_text, NULL},
         {NULL, 0, ARG_FLAG, NULL, NULL},
     };
     const char *path[1];
@@ -156,6 +182,9 @@ static int info_run(int argc, char **argv, struct facet_error *err)
     if (units_text != NULL &&
         (rc = mesh_units_parse(units_text, &mesh_options.units, err)) != 0)
         return rc;
+    enum param_method want;
+    if ((rc = classify_flags_uv(uv_text, &want, err)) != FACET_OK)
+        return rc;
 
     struct surface surface;
     rc = surface_open(path[0], &mesh_options, &surface, err);
@@ -163,27 +192,52 @@ static int info_run(int argc, char **argv, struct facet_error *err)
     memset(&uv, 0, sizeof uv);
     if (rc == FACET_OK && surface.mesh.has_uv)
         rc = uv_check(surface.mesh.uv, surface.mesh.ntriangles, &uv, err);
+    /* The UV a panelization would take. Without --uv, none applying is
+     * part of the description; a method asked for that cannot apply is
+     * the error. */
+    struct parameterization param;
+    struct facet_error why_not;
+    memset(&param, 0, sizeof param);
+    facet_error_clear(&why_not);
+    struct uv_choice choice = {0, &param, ""};
+    if (rc == FACET_OK) {
+        int prc = param_choose(&surface.mesh, want, surface.path, &param,
+                               &why_not);
+        if (prc == FACET_OK)
+            choice.ok = 1;
+        else if (prc == FACET_EINPUT && want == PARAM_AUTO)
+            choice.why_not = why_not.message;
+        else {
+            *err = why_not;
+            rc = prc;
+        }
+    }
     if (rc == FACET_OK) {
         if (json)
-            print_json(&surface, &uv);
+            print_json(&surface, &uv, &choice);
         else
-            print_human(&surface, &uv);
+            print_human(&surface, &uv, &choice);
     }
+    param_free(&param);
     surface_close(&surface);
     return rc;
 }
 
 const struct command cmd_info = {
     .name = "info",
-    .usage = "SURFACE.obj [--units U] [--object NAME] [--group NAME] [--json]",
+    .usage = "SURFACE.obj [--units U] [--object NAME] [--group NAME] "
+             "[--uv METHOD] [--json]",
     .summary = "Describe a surface: counts, size, area, UV, topology, "
                "warnings.",
     .options =
         "  --units U      what one OBJ unit is: m (default), cm, mm, in, ft\n"
         "  --object NAME  only the faces of object NAME (o statement)\n"
         "  --group NAME   only the faces of group NAME (g statement)\n"
+        "  --uv METHOD    whether that UV (vt, grid, plane, harmonic)\n"
+        "                 applies; default: say which is taken and why\n"
         "  --json         one JSON object: vertices, texcoords, normals,\n"
         "                 faces (as in the file), triangles, has_uv, uv_valid,\n"
+        "                 uv_method (the UV taken, or null), uv_reason,\n"
         "                 bbox [[xmin,ymin,zmin],[xmax,ymax,zmax]] (m),\n"
         "                 area (m^2), components, boundary_loops, objects,\n"
         "                 groups, materials, warnings\n",

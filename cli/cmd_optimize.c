@@ -207,7 +207,7 @@ static int optimize_main(int argc, char **argv, struct facet_error *err)
     memset(&request, 0, sizeof request);
     if (!resume) {
         if ((rc = classify_flags_apply(&flags, &request.settings.base,
-                                       &request.mesh, err)))
+                                       &request.mesh, &request.uv, err)))
             return rc;
         if ((rc = parse_search(&search, &request.settings, err)))
             return rc;

@@ -1,27 +1,36 @@
 /*
- * param.c: vt, plane projection or mean-value parameterization. See param.h.
+ * param.c: choosing the UV: vt, structured grid, plane projection or
+ * harmonic map. See param.h.
  */
 #include "param.h"
 
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
+#include "param_chart.h"
+#include "param_grid.h"
+#include "param_harmonic.h"
 #include "sym3.h"
-#include "vec3.h"
 
-#define PI 3.14159265358979323846
+static const char *const method_names[] = {"auto", "vt", "grid", "plane",
+                                           "harmonic"};
 
 const char *param_method_name(enum param_method method)
 {
-    switch (method) {
-    case PARAM_VT:
-        return "vt";
-    case PARAM_PLANE:
-        return "plane";
-    default:
-        return "harmonic";
-    }
+    return method >= PARAM_AUTO && method <= PARAM_HARMONIC
+               ? method_names[method] : "?";
+}
+
+int param_method_parse(const char *text, enum param_method *out)
+{
+    for (int m = PARAM_AUTO; m <= PARAM_HARMONIC; m++)
+        if (strcmp(text, method_names[m]) == 0) {
+            *out = (enum param_method)m;
+            return 0;
+        }
+    return -1;
 }
 
 void param_free(struct parameterization *param)
@@ -99,373 +108,221 @@ static double *plane_projection(const struct mesh *mesh)
     return vertex_uv;
 }
 
-static double edge_length(const struct mesh *mesh, uint32_t a, uint32_t b)
+/* Sets out->uv from per-vertex UV (which it frees) and checks it. */
+static int take_vertex_uv(const struct mesh *mesh, double *vertex_uv,
+                          struct parameterization *out,
+                          struct facet_error *err)
 {
-    return vec3_distance(mesh->position + 3 * (size_t)a,
-                         mesh->position + 3 * (size_t)b);
-}
-
-/* The angle of triangle t at its corner k (radians). */
-static double corner_angle(const struct mesh *mesh, size_t t, int k)
-{
-    const uint32_t *tri = mesh->triangle + 3 * t;
-    const double *a = mesh->position + 3 * (size_t)tri[k];
-    const double *b = mesh->position + 3 * (size_t)tri[(k + 1) % 3];
-    const double *c = mesh->position + 3 * (size_t)tri[(k + 2) % 3];
-    double ab[3], ac[3], n[3];
-    vec3_sub(b, a, ab);
-    vec3_sub(c, a, ac);
-    vec3_cross(ab, ac, n);
-    return atan2(vec3_length(n), vec3_dot(ab, ac));
-}
-
-/* Places the boundary loop on a rectangle when it has four clear corners
- * (vertices where the surface's angle is under 135 degrees), keeping the
- * sides' lengths, and on a circle by arc length otherwise. */
-static void place_boundary(const struct mesh *mesh, const double *angle_sum,
-                           double *vertex_uv)
-{
-    const uint32_t *loop = mesh->loop_vertices + mesh->loop_start[0];
-    size_t count = mesh->loop_start[1] - mesh->loop_start[0];
-    double perimeter = 0;
-    for (size_t k = 0; k < count; k++)
-        perimeter += edge_length(mesh, loop[k], loop[(k + 1) % count]);
-
-    /* The four sharpest boundary vertices, in loop order. */
-    size_t corner[4];
-    int ncorners = 0;
-    for (int c = 0; c < 4; c++) {
-        size_t best = count;
-        for (size_t k = 0; k < count; k++) {
-            int taken = 0;
-            for (int x = 0; x < ncorners; x++)
-                taken |= corner[x] == k;
-            if (!taken && (best == count ||
-                           angle_sum[loop[k]] < angle_sum[loop[best]]))
-                best = k;
-        }
-        if (best == count || angle_sum[loop[best]] > 0.75 * PI)
-            break;
-        corner[ncorners++] = best;
-    }
-
-    if (ncorners == 4 && count >= 4) {
-        for (int x = 0; x < 4; x++)
-            for (int y = x + 1; y < 4; y++)
-                if (corner[y] < corner[x]) {
-                    size_t swap = corner[x];
-                    corner[x] = corner[y];
-                    corner[y] = swap;
-                }
-        double side[4] = {0, 0, 0, 0};
-        for (int s = 0; s < 4; s++)
-            for (size_t k = corner[s]; k != corner[(s + 1) % 4];
-                 k = (k + 1) % count)
-                side[s] += edge_length(mesh, loop[k], loop[(k + 1) % count]);
-        double width = (side[0] + side[2]) / 2;
-        double height = (side[1] + side[3]) / 2;
-        static const double start[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
-        for (int s = 0; s < 4; s++) {
-            double along = 0;
-            const double *from = start[s], *to = start[(s + 1) % 4];
-            for (size_t k = corner[s]; k != corner[(s + 1) % 4];
-                 k = (k + 1) % count) {
-                double f = side[s] > 0 ? along / side[s] : 0;
-                vertex_uv[2 * loop[k]] = width * (from[0] + f * (to[0] - from[0]));
-                vertex_uv[2 * loop[k] + 1] =
-                    height * (from[1] + f * (to[1] - from[1]));
-                along += edge_length(mesh, loop[k], loop[(k + 1) % count]);
-            }
-        }
-        return;
-    }
-    double along = 0, radius = perimeter / (2 * PI);
-    for (size_t k = 0; k < count; k++) {
-        double a = perimeter > 0 ? 2 * PI * along / perimeter : 0;
-        vertex_uv[2 * loop[k]] = radius * cos(a);
-        vertex_uv[2 * loop[k] + 1] = radius * sin(a);
-        along += edge_length(mesh, loop[k], loop[(k + 1) % count]);
-    }
-}
-
-/* The mean-value system over the interior vertices, in compressed rows:
- * row i holds w_ij for every neighbour j (interior or boundary). */
-struct mean_value_system {
-    size_t n;
-    uint32_t *row_start;   /* n + 1 */
-    uint32_t *column;      /* neighbour vertex */
-    double *weight;        /* w_ij > 0 */
-    double *diagonal;      /* sum of the row's weights */
-};
-
-static void system_free(struct mean_value_system *s)
-{
-    free(s->row_start);
-    free(s->column);
-    free(s->weight);
-    free(s->diagonal);
-}
-
-/* Floater's weights w_ij = (tan(a/2) + tan(b/2)) / |x_i - x_j|, a and b the
- * angles at i of the two triangles beside edge ij. */
-static int build_system(const struct mesh *mesh,
-                        struct mean_value_system *s)
-{
-    size_t n = mesh->nvertices;
-    memset(s, 0, sizeof *s);
-    s->n = n;
-    s->row_start = calloc(n + 1, sizeof *s->row_start);
-    s->diagonal = calloc(n ? n : 1, sizeof *s->diagonal);
-    size_t capacity = 6 * mesh->ntriangles + 1;
-    s->column = malloc(capacity * sizeof *s->column);
-    s->weight = calloc(capacity, sizeof *s->weight);
-    if (!s->row_start || !s->diagonal || !s->column || !s->weight)
-        return FACET_EWORK;
-    size_t used = 0;
-    for (size_t v = 0; v < n; v++) {
-        s->row_start[v] = (uint32_t)used;
-        for (uint32_t k = mesh->vertex_start[v]; k < mesh->vertex_start[v + 1];
-             k++) {
-            uint32_t t = mesh->vertex_triangles[k];
-            const uint32_t *tri = mesh->triangle + 3 * (size_t)t;
-            int corner = tri[0] == v ? 0 : tri[1] == v ? 1 : 2;
-            double half = tan(corner_angle(mesh, t, corner) / 2);
-            for (int side = 1; side <= 2; side++) {
-                uint32_t j = tri[(corner + side) % 3];
-                double length = edge_length(mesh, (uint32_t)v, j);
-                double w = length > 0 ? half / length : 0;
-                size_t e = s->row_start[v];
-                while (e < used && s->column[e] != j)
-                    e++;
-                if (e == used) {
-                    s->column[used] = j;
-                    s->weight[used++] = 0;
-                }
-                s->weight[e] += w;
-                s->diagonal[v] += w;
-            }
-        }
-    }
-    s->row_start[n] = (uint32_t)used;
-    return FACET_OK;
-}
-
-/* y = A x over interior vertices: (A x)_i = d_i x_i - sum over interior
- * neighbours w_ij x_j; boundary rows are the identity. */
-static void apply(const struct mean_value_system *s,
-                  const unsigned char *fixed, const double *x, double *y)
-{
-    for (size_t i = 0; i < s->n; i++) {
-        if (fixed[i]) {
-            y[i] = x[i];
-            continue;
-        }
-        double sum = s->diagonal[i] * x[i];
-        for (uint32_t e = s->row_start[i]; e < s->row_start[i + 1]; e++)
-            if (!fixed[s->column[e]])
-                sum -= s->weight[e] * x[s->column[e]];
-        y[i] = sum;
-    }
-}
-
-static double dot_n(const double *a, const double *b, size_t n)
-{
-    double sum = 0;
-    for (size_t i = 0; i < n; i++)
-        sum += a[i] * b[i];
-    return sum;
-}
-
-/* Solves A x = b by BiCGSTAB with a Jacobi preconditioner (the mean-value
- * matrix is not symmetric). x holds the initial guess. Returns 0 when it
- * converged to a relative residual under 1e-10. */
-static int solve(const struct mean_value_system *s, const unsigned char *fixed,
-                 const double *b, double *x)
-{
-    size_t n = s->n;
-    double *work = malloc(sizeof(double) * 8 * (n ? n : 1));
-    if (work == NULL)
-        return -1;
-    double *r = work, *r0 = r + n, *p = r0 + n, *v = p + n, *sv = v + n;
-    double *ph = sv + n, *shat = ph + n, *t = shat + n;
-    apply(s, fixed, x, r);
-    for (size_t i = 0; i < n; i++)
-        r[i] = b[i] - r[i];
-    memcpy(r0, r, sizeof(double) * n);
-    memset(p, 0, sizeof(double) * n);
-    memset(v, 0, sizeof(double) * n);
-    double rho = 1, alpha = 1, omega = 1;
-    double norm_b = sqrt(dot_n(b, b, n));
-    if (norm_b == 0)
-        norm_b = 1;
-    int status = -1;
-    for (int iteration = 0; iteration < 20000; iteration++) {
-        if (sqrt(dot_n(r, r, n)) <= 1e-10 * norm_b) {
-            status = 0;
-            break;
-        }
-        double rho_next = dot_n(r0, r, n);
-        if (rho_next == 0)
-            break;
-        double beta = (rho_next / rho) * (alpha / omega);
-        rho = rho_next;
-        for (size_t i = 0; i < n; i++)
-            p[i] = r[i] + beta * (p[i] - omega * v[i]);
-        for (size_t i = 0; i < n; i++)
-            ph[i] = fixed[i] || s->diagonal[i] == 0 ? p[i]
-                                                    : p[i] / s->diagonal[i];
-        apply(s, fixed, ph, v);
-        double r0v = dot_n(r0, v, n);
-        if (r0v == 0)
-            break;
-        alpha = rho / r0v;
-        for (size_t i = 0; i < n; i++)
-            sv[i] = r[i] - alpha * v[i];
-        for (size_t i = 0; i < n; i++)
-            shat[i] = fixed[i] || s->diagonal[i] == 0 ? sv[i]
-                                                      : sv[i] / s->diagonal[i];
-        apply(s, fixed, shat, t);
-        double tt = dot_n(t, t, n);
-        omega = tt > 0 ? dot_n(t, sv, n) / tt : 0;
-        for (size_t i = 0; i < n; i++) {
-            x[i] += alpha * ph[i] + omega * shat[i];
-            r[i] = sv[i] - omega * t[i];
-        }
-        if (omega == 0) {
-            status = sqrt(dot_n(r, r, n)) <= 1e-10 * norm_b ? 0 : -1;
-            break;
-        }
-    }
-    free(work);
-    return status;
-}
-
-/* The mean-value parameterization of a disk-like mesh, per vertex. */
-static int harmonic(const struct mesh *mesh, double **vertex_uv_out)
-{
-    size_t n = mesh->nvertices;
-    double *vertex_uv = calloc(2 * (n ? n : 1), sizeof(double));
-    double *angle_sum = calloc(n ? n : 1, sizeof(double));
-    double *b = malloc(sizeof(double) * (n ? n : 1));
-    double *x = malloc(sizeof(double) * (n ? n : 1));
-    unsigned char *fixed = calloc(n ? n : 1, 1);
-    struct mean_value_system system;
-    int rc = FACET_EWORK;
-    memset(&system, 0, sizeof system);
-    if (!vertex_uv || !angle_sum || !b || !x || !fixed)
-        goto done;
-    for (size_t t = 0; t < mesh->ntriangles; t++)
-        for (int k = 0; k < 3; k++)
-            angle_sum[mesh->triangle[3 * t + k]] += corner_angle(mesh, t, k);
-    place_boundary(mesh, angle_sum, vertex_uv);
-    for (uint32_t k = mesh->loop_start[0]; k < mesh->loop_start[1]; k++)
-        fixed[mesh->loop_vertices[k]] = 1;
-    if (build_system(mesh, &system) != FACET_OK)
-        goto done;
-
-    for (int axis = 0; axis < 2; axis++) {
-        for (size_t i = 0; i < n; i++) {
-            if (fixed[i]) {
-                b[i] = x[i] = vertex_uv[2 * i + axis];
-                continue;
-            }
-            double sum = 0;
-            for (uint32_t e = system.row_start[i]; e < system.row_start[i + 1];
-                 e++)
-                if (fixed[system.column[e]])
-                    sum += system.weight[e] *
-                           vertex_uv[2 * system.column[e] + axis];
-            b[i] = sum;
-            x[i] = 0;
-        }
-        if (solve(&system, fixed, b, x) != 0) {
-            rc = FACET_EINPUT;
-            goto done;
-        }
-        for (size_t i = 0; i < n; i++)
-            vertex_uv[2 * i + axis] = x[i];
-    }
-    *vertex_uv_out = vertex_uv;
-    vertex_uv = NULL;
-    rc = FACET_OK;
-done:
-    system_free(&system);
-    free(vertex_uv);
-    free(angle_sum);
-    free(b);
-    free(x);
-    free(fixed);
-    return rc;
-}
-
-int param_choose(const struct mesh *mesh, const char *name,
-                 struct parameterization *out, struct facet_error *err)
-{
-    memset(out, 0, sizeof *out);
-    int rc;
-    if (mesh->has_uv) {
-        out->method = PARAM_VT;
-        out->uv = malloc(sizeof(double) * 6 * (mesh->ntriangles ? mesh->ntriangles : 1));
-        if (out->uv == NULL)
-            return facet_error_set(err, FACET_EWORK, "out of memory (UV)");
-        memcpy(out->uv, mesh->uv, sizeof(double) * 6 * mesh->ntriangles);
-        rc = uv_check(out->uv, mesh->ntriangles, &out->report, err);
-        if (rc != FACET_OK)
-            return rc;
-        if (folds(&out->report))
-            return facet_error_set(err, FACET_EINPUT,
-                "%s: the texture coordinates fold (%zu flipped, %zu "
-                "overlapping UV triangles); re-export the surface with its "
-                "surface parameters as UV, or select one surface with "
-                "--object", name, out->report.flipped,
-                out->report.overlapping);
-        return FACET_OK;
-    }
-
-    double *vertex_uv = plane_projection(mesh);
-    if (vertex_uv == NULL)
-        return facet_error_set(err, FACET_EWORK, "out of memory (UV)");
-    out->method = PARAM_PLANE;
-    out->uv = corners_from_vertices(mesh, vertex_uv);
-    free(vertex_uv);
-    if (out->uv == NULL)
-        return facet_error_set(err, FACET_EWORK, "out of memory (UV)");
-    rc = uv_check(out->uv, mesh->ntriangles, &out->report, err);
-    if (rc != FACET_OK)
-        return rc;
-    if (!folds(&out->report) && out->report.degenerate == 0)
-        return FACET_OK;
-
     free(out->uv);
-    out->uv = NULL;
-    if (mesh->ncomponents != 1 || mesh->nloops != 1 ||
-        mesh->nonmanifold_edges > 0)
-        return facet_error_set(err, FACET_EINPUT,
-            "%s has no texture coordinates, folds when projected onto a "
-            "plane, and is not a disk (%zu pieces, %zu boundary loops): "
-            "export it with texture coordinates (its surface parameters as "
-            "vt, e.g. Rhino's mesh export with texture coordinates)",
-            name, mesh->ncomponents, mesh->nloops);
-    out->method = PARAM_HARMONIC;
-    rc = harmonic(mesh, &vertex_uv);
-    if (rc == FACET_EINPUT)
-        return facet_error_set(err, FACET_EINPUT,
-            "%s: the harmonic parameterization did not converge; export "
-            "the surface with texture coordinates", name);
-    if (rc != FACET_OK)
-        return facet_error_set(err, FACET_EWORK, "out of memory (UV)");
     out->uv = corners_from_vertices(mesh, vertex_uv);
     free(vertex_uv);
     if (out->uv == NULL)
         return facet_error_set(err, FACET_EWORK, "out of memory (UV)");
-    rc = uv_check(out->uv, mesh->ntriangles, &out->report, err);
+    return uv_check(out->uv, mesh->ntriangles, &out->report, err);
+}
+
+/* The file's vt: refused when they fold or form several charts. */
+static int try_vt(const struct mesh *mesh, const char *name,
+                  struct parameterization *out, struct facet_error *err)
+{
+    if (!mesh->has_uv)
+        return facet_error_set(err, FACET_EINPUT,
+            "%s has no texture coordinates (vt) on every corner to take "
+            "the UV from", name);
+    out->uv = malloc(sizeof(double) * 6 * (mesh->ntriangles ? mesh->ntriangles : 1));
+    if (out->uv == NULL)
+        return facet_error_set(err, FACET_EWORK, "out of memory (UV)");
+    memcpy(out->uv, mesh->uv, sizeof(double) * 6 * mesh->ntriangles);
+    int rc = uv_check(out->uv, mesh->ntriangles, &out->report, err);
     if (rc != FACET_OK)
         return rc;
     if (folds(&out->report))
         return facet_error_set(err, FACET_EINPUT,
-            "%s: the harmonic parameterization folds (%zu flipped, %zu "
-            "overlapping triangles); export the surface with texture "
-            "coordinates", name, out->report.flipped,
+            "%s: the texture coordinates fold (%zu flipped, %zu "
+            "overlapping UV triangles); re-export the surface with its "
+            "surface parameters as UV, or select one surface with "
+            "--object", name, out->report.flipped,
             out->report.overlapping);
+    struct uv_chart chart[3];
+    long charts = param_charts(mesh, out->uv, chart, 3);
+    if (charts < 0)
+        return facet_error_set(err, FACET_EWORK, "out of memory (UV)");
+    if (charts > 1) {
+        char list[240];
+        size_t used = 0;
+        for (long c = 0; c < charts && c < 3; c++)
+            used += (size_t)snprintf(list + used, sizeof list - used,
+                "%s%zu triangles in u %.3g..%.3g, v %.3g..%.3g",
+                c ? "; " : "", chart[c].triangles, chart[c].umin,
+                chart[c].umax, chart[c].vmin, chart[c].vmax);
+        return facet_error_set(err, FACET_EINPUT,
+            "%s: the texture coordinates form %ld separate UV charts "
+            "(%s%s), and a panel must not hold pieces of two: export one "
+            "chart per object and select it with --object or --group, or "
+            "re-parameterize a disk-like surface with --uv harmonic",
+            name, charts, list, charts > 3 ? "; ..." : "");
+    }
+    snprintf(out->reason, sizeof out->reason,
+             "the file's texture coordinates, one chart");
     return FACET_OK;
+}
+
+static int try_grid(const struct mesh *mesh, const char *name,
+                    struct parameterization *out, char *why, size_t size,
+                    struct facet_error *err)
+{
+    double *vertex_uv;
+    int paired;
+    int rc = param_grid(mesh, &vertex_uv, &out->grid_nu, &out->grid_nv,
+                        &paired, why, size);
+    if (rc == FACET_EWORK)
+        return facet_error_set(err, FACET_EWORK, "out of memory (UV)");
+    if (rc != FACET_OK)
+        return facet_error_set(err, FACET_EINPUT,
+            "%s is not a structured quad grid: %s", name, why);
+    rc = take_vertex_uv(mesh, vertex_uv, out, err);
+    if (rc != FACET_OK)
+        return rc;
+    if (folds(&out->report) || out->report.degenerate > 0)
+        return facet_error_set(err, FACET_EINPUT,
+            "%s: the quad grid's (i, j) folds (%zu flipped, %zu overlapping, "
+            "%zu degenerate triangles)", name, out->report.flipped,
+            out->report.overlapping, out->report.degenerate);
+    snprintf(out->reason, sizeof out->reason, "%d x %d quads, structured%s",
+             out->grid_nu, out->grid_nv,
+             paired ? ", paired from the file's triangles" : "");
+    return FACET_OK;
+}
+
+/* The plane projection; refused when it folds or squashes a triangle,
+ * with what it did in why. */
+static int try_plane(const struct mesh *mesh, const char *name,
+                     struct parameterization *out, char *why, size_t size,
+                     struct facet_error *err)
+{
+    double *vertex_uv = plane_projection(mesh);
+    if (vertex_uv == NULL)
+        return facet_error_set(err, FACET_EWORK, "out of memory (UV)");
+    int rc = take_vertex_uv(mesh, vertex_uv, out, err);
+    if (rc != FACET_OK)
+        return rc;
+    const struct uv_report *r = &out->report;
+    if (!folds(r) && r->degenerate == 0) {
+        snprintf(out->reason, sizeof out->reason,
+                 "the projection onto the least-squares plane folds nothing");
+        return FACET_OK;
+    }
+    if (folds(r))
+        snprintf(why, size, "the plane projection folds %zu triangles "
+                 "(%zu overlapping pairs)", r->flipped, r->overlapping);
+    else
+        snprintf(why, size, "the plane projection squashes %zu triangles",
+                 r->degenerate);
+    return facet_error_set(err, FACET_EINPUT, "%s: %s", name, why);
+}
+
+static int try_harmonic(const struct mesh *mesh, const char *name,
+                        struct parameterization *out, char *why, size_t size,
+                        struct facet_error *err)
+{
+    double *vertex_uv;
+    int rc = param_harmonic(mesh, &vertex_uv, &out->holes, why, size);
+    if (rc == FACET_EWORK)
+        return facet_error_set(err, FACET_EWORK, "out of memory (UV)");
+    if (rc != FACET_OK)
+        return facet_error_set(err, FACET_EINPUT,
+            "%s: no harmonic map: %s", name, why);
+    rc = take_vertex_uv(mesh, vertex_uv, out, err);
+    if (rc != FACET_OK)
+        return rc;
+    if (folds(&out->report)) {
+        snprintf(why, size, "the harmonic parameterization folds (%zu "
+                 "flipped, %zu overlapping triangles)", out->report.flipped,
+                 out->report.overlapping);
+        return facet_error_set(err, FACET_EINPUT, "%s: %s", name, why);
+    }
+    if (out->holes > 0)
+        snprintf(out->reason, sizeof out->reason,
+                 "mean-value map, %zu holes capped", out->holes);
+    else
+        snprintf(out->reason, sizeof out->reason, "mean-value map");
+    return FACET_OK;
+}
+
+/* Appends text to the reason, after what came before. */
+static void explain(struct parameterization *out, const char *text)
+{
+    size_t used = strlen(out->reason);
+    snprintf(out->reason + used, sizeof out->reason - used, "%s%s",
+             used ? "; " : "", text);
+}
+
+int param_choose(const struct mesh *mesh, enum param_method want,
+                 const char *name, struct parameterization *out,
+                 struct facet_error *err)
+{
+    memset(out, 0, sizeof *out);
+    char why[200] = "";
+    out->method = want;
+    switch (want) {
+    case PARAM_VT:
+        return try_vt(mesh, name, out, err);
+    case PARAM_GRID:
+        return try_grid(mesh, name, out, why, sizeof why, err);
+    case PARAM_PLANE:
+        return try_plane(mesh, name, out, why, sizeof why, err);
+    case PARAM_HARMONIC:
+        return try_harmonic(mesh, name, out, why, sizeof why, err);
+    default:
+        break;
+    }
+
+    /* vt, when the file has it, is the designer's: taken or refused, never
+     * replaced by a map of Facet's own. */
+    if (mesh->has_uv) {
+        out->method = PARAM_VT;
+        return try_vt(mesh, name, out, err);
+    }
+    out->method = PARAM_GRID;
+    int rc = try_grid(mesh, name, out, why, sizeof why, err);
+    if (rc != FACET_EINPUT)
+        return rc;
+    char not_grid[240];
+    snprintf(not_grid, sizeof not_grid, "no vt; not a structured quad grid: "
+             "%s", why);
+
+    out->method = PARAM_PLANE;
+    out->reason[0] = '\0';
+    rc = try_plane(mesh, name, out, why, sizeof why, err);
+    if (rc == FACET_OK) {
+        char plane[sizeof out->reason];
+        snprintf(plane, sizeof plane, "%s", out->reason);
+        snprintf(out->reason, sizeof out->reason, "%s", not_grid);
+        explain(out, plane);
+    }
+    if (rc != FACET_EINPUT)
+        return rc;
+    char plane_fails[200];
+    snprintf(plane_fails, sizeof plane_fails, "%s", why);
+
+    free(out->uv);
+    out->uv = NULL;
+    memset(&out->report, 0, sizeof out->report);
+    out->method = PARAM_HARMONIC;
+    rc = try_harmonic(mesh, name, out, why, sizeof why, err);
+    if (rc == FACET_OK) {
+        char harmonic[sizeof out->reason];
+        snprintf(harmonic, sizeof harmonic, "%s", out->reason);
+        snprintf(out->reason, sizeof out->reason, "%s", not_grid);
+        explain(out, plane_fails);
+        explain(out, harmonic);
+        return FACET_OK;
+    }
+    if (rc != FACET_EINPUT)
+        return rc;
+    return facet_error_set(err, FACET_EINPUT,
+        "%s has no texture coordinates, is not a structured quad grid, "
+        "%s, and has no harmonic map: %s; export it with texture "
+        "coordinates (its surface parameters as vt, e.g. Rhino's mesh "
+        "export with texture coordinates)", name, plane_fails, why);
 }

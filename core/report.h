@@ -19,7 +19,7 @@ struct report_source {
     const char *units;         /* as given: m, cm, mm, in, ft */
     double area;               /* mesh area (m^2) */
     size_t triangles;
-    const char *uv_method;     /* "vt", "plane" or "harmonic" */
+    const char *uv_method;     /* "vt", "grid", "plane" or "harmonic" */
     const char *per_panel;     /* "extremes" or "mean" */
 };
 

@@ -101,12 +101,13 @@ int surface_require_single(const struct surface *surface,
 }
 
 int surface_prepare(struct surface *surface, int flip_normals,
-                    struct facet_error *err)
+                    enum param_method uv, struct facet_error *err)
 {
     int rc = surface_require_single(surface, err);
     if (rc != FACET_OK)
         return rc;
-    rc = param_choose(&surface->mesh, surface->path, &surface->param, err);
+    rc = param_choose(&surface->mesh, uv, surface->path, &surface->param,
+                      err);
     if (rc != FACET_OK)
         return rc;
     if (surface->param.report.degenerate > 0)

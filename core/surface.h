@@ -50,13 +50,14 @@ int surface_require_single(const struct surface *surface,
                            struct facet_error *err);
 
 /* Computes what every panelization of the surface shares: the UV
- * parameterization (param.h), its lookup, the vertex curvature, with the
+ * parameterization (param.h: uv, or PARAM_AUTO for the first that
+ * applies), its lookup, the vertex curvature, with the
  * normals flipped when flip_normals is set, and the sums panels_build_fast
  * starts from (panel_prep_build). Refuses a surface of several
  * unselected pieces (surface_require_single). Returns FACET_OK or the first
  * error; surface_close releases what it made. */
 int surface_prepare(struct surface *surface, int flip_normals,
-                    struct facet_error *err);
+                    enum param_method uv, struct facet_error *err);
 
 void surface_close(struct surface *surface);
 

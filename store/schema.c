@@ -150,10 +150,16 @@ static const char schema_v3[] =
     "CREATE INDEX options_by_nv ON options(run, nv);"
     "CREATE INDEX options_by_threshold ON options(run, threshold_mm);";
 
+/* Version 4: more of a run's settings, for --resume to take them again.
+ * One ALTER TABLE per column: add a column as a line of its own here. */
+static const char schema_v4[] =
+    "ALTER TABLE runs ADD COLUMN uv TEXT;";  /* --uv, NULL: automatic */
+
 static const char *const migrations[STORE_SCHEMA_VERSION] = {
     schema_v1,
     schema_v2,
     schema_v3,
+    schema_v4,
 };
 
 int store_fail(struct store *store, const char *doing,

@@ -33,7 +33,8 @@ struct run_info {
     char surface_sha256[65];   /* hex digest of the OBJ file's bytes */
     double surface_area;       /* m^2 of the selected part */
     int64_t triangles;         /* after triangulation */
-    char uv_method[12];        /* "vt", "plane" or "harmonic" */
+    char uv_method[12];        /* taken: "vt", "grid", "plane", "harmonic" */
+    char uv[12];               /* asked for (--uv), or "" for automatic */
     char units[4];             /* m, cm, mm, in, ft */
     char method[16];           /* exhaustive, random, nsga2 */
     uint64_t seed;

@@ -214,6 +214,14 @@ int study_open_surface(const struct store *store, const struct run_info *run,
     int rc = study_settings(run, &settings, &mesh, &flip, err);
     if (rc != FACET_OK)
         return rc;
+    /* The method the run took, not what would be chosen today: a run
+     * started by an older Facet keeps its UV. */
+    enum param_method uv = PARAM_AUTO;
+    if (run->uv_method[0] != '\0' &&
+        param_method_parse(run->uv_method, &uv) != 0)
+        return facet_error_set(err, FACET_EINPUT,
+            "run %lld: unknown UV method '%s' (made by a newer Facet?)",
+            (long long)run->id, run->uv_method);
     char place[3][4096];
     int nplaces = surface_candidates(store_path(store), run->surface_path,
                                      place);
@@ -228,7 +236,7 @@ int study_open_surface(const struct store *store, const struct run_info *run,
         if (rc != FACET_OK)
             return rc;
         if (strcmp(digest, run->surface_sha256) == 0)
-            return surface_prepare(surface, flip, err);
+            return surface_prepare(surface, flip, uv, err);
         if (!changed)
             facet_error_set(&first, FACET_EINPUT,
                 "%s: the file has changed since run %lld was made from it "
@@ -526,7 +534,8 @@ int study_start(struct store *store, const struct study_request *request,
                       run.surface_sha256, &surface, err);
     if (rc == FACET_OK) {
         stage(hooks, "preparing the surface (UV, curvature)");
-        rc = surface_prepare(&surface, request->flip_normals, err);
+        rc = surface_prepare(&surface, request->flip_normals, request->uv,
+                             err);
     }
     if (rc != FACET_OK) {
         surface_close(&surface);
@@ -538,6 +547,8 @@ int study_start(struct store *store, const struct study_request *request,
     run.triangles = (int64_t)surface.mesh.ntriangles;
     snprintf(run.uv_method, sizeof run.uv_method, "%s",
              param_method_name(surface.param.method));
+    snprintf(run.uv, sizeof run.uv, "%s",
+             request->uv == PARAM_AUTO ? "" : param_method_name(request->uv));
     snprintf(run.method, sizeof run.method, "%s",
              optimize_method_name(s->method));
     run.seed = s->seed;

@@ -37,6 +37,8 @@ struct study_request {
     const char *surface_path;
     struct mesh_options mesh;        /* units, object, group */
     int flip_normals;
+    enum param_method uv;            /* asked for; PARAM_AUTO: the first
+                                        that applies */
     struct optimize_settings settings;
     const char *name;                /* "" for none */
 };
@@ -65,8 +67,10 @@ int study_settings(const struct run_info *run,
  * not the one the run was made from. The surface is looked for where the
  * run recorded it, then (a relative path) against the folder of store's
  * file, then by its name in that folder; the message of a failure says how
- * to re-point the run (study_repoint_surface). Release with surface_close,
- * also after a failure. */
+ * to re-point the run (study_repoint_surface). The UV is the method the
+ * run took (its uv_method), so a resumed run, and every option shown
+ * later, follows the UV its first options did, even when an older Facet
+ * chose it. Release with surface_close, also after a failure. */
 int study_open_surface(const struct store *store, const struct run_info *run,
                        struct surface *surface, struct facet_error *err);
 

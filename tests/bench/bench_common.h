@@ -83,7 +83,7 @@ static void bench_roof(int res, const char *keep_path,
     if (keep_path == NULL)
         unlink(path);
     if (rc == FACET_OK)
-        rc = surface_prepare(surface, 0, &err);
+        rc = surface_prepare(surface, 0, PARAM_AUTO, &err);
     if (rc != FACET_OK) {
         fprintf(stderr, "bench: %s\n", err.message);
         exit(1);

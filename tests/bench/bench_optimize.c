@@ -94,7 +94,7 @@ int main(int argc, char **argv)
     struct surface again;
     struct mesh_options mesh = {UNITS_M, NULL, NULL};
     if (surface_open(obj, &mesh, &again, &err) != FACET_OK ||
-        surface_prepare(&again, 0, &err) != FACET_OK)
+        surface_prepare(&again, 0, PARAM_AUTO, &err) != FACET_OK)
         die(&err);
     double prepare = bench_now() - prepare_start;
     surface_close(&again);

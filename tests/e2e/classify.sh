@@ -71,9 +71,9 @@ PY
 
 # Real surfaces: no vt, so Facet makes its own UV.
 if have_data compas_hypar.obj hemisphere.obj botanic-garden-bubble-0.obj igloo.obj; then
-    expect "compas hypar (no vt: plane projection)" 0 "$FACET" classify "$FACET_DATA/compas_hypar.obj" --grid 5x5 --json
+    expect "compas hypar (no vt: an 8x8 structured quad grid)" 0 "$FACET" classify "$FACET_DATA/compas_hypar.obj" --grid 5x5 --json
     json_check "compas hypar is all feature curves" \
-        'all(p["class"] in ("convex_feature_curve","concave_feature_curve","saddle") for p in j["panels"]) and j["surface"]["uv"]=="plane"'
+        'all(p["class"] in ("convex_feature_curve","concave_feature_curve","saddle") for p in j["panels"]) and j["surface"]["uv"]=="grid"'
     expect "hemisphere (no vt)" 0 "$FACET" classify "$FACET_DATA/hemisphere.obj" --grid 10x10 --json
     json_check "hemisphere: trimmed panels add up to its area" \
         'abs(sum(p["area"] for p in j["panels"]) - j["surface"]["area"]) < 1e-9*j["surface"]["area"]'
@@ -81,15 +81,18 @@ if have_data compas_hypar.obj hemisphere.obj botanic-garden-bubble-0.obj igloo.o
     expect "igloo (vt)" 0 "$FACET" classify "$FACET_DATA/igloo.obj" --grid 20x20 --json
 fi
 
-# A torus section without vt folds when projected: the harmonic map.
+# A torus section without vt folds when projected: its triangles pair into
+# a 60 x 60 quad grid, and asked for, the harmonic map applies too.
 "$FACET" example torus --res 60 -o "$WORK/torus.obj" || exit 1
 grep -v '^vt' "$WORK/torus.obj" | sed -E 's#/[0-9]+##g' >"$WORK/torus-novt.obj"
 expect "torus without vt" 0 "$FACET" classify "$WORK/torus-novt.obj" --grid 10x12 --json
+json_check "its triangles pair into a quad grid" 'j["surface"]["uv"]=="grid" and j["totals"]["panels"]==120'
+expect "torus without vt, --uv harmonic" 0 "$FACET" classify "$WORK/torus-novt.obj" --grid 10x12 --uv harmonic --json
 json_check "harmonic parameterization, every panel, areas add up" \
     'j["surface"]["uv"]=="harmonic" and j["totals"]["panels"]==120 and abs(j["totals"]["area"]-j["surface"]["area"]) < 1e-9*j["surface"]["area"]'
 if have_data conical1.obj; then
     expect "conical roof (no vt)" 0 "$FACET" classify "$FACET_DATA/conical1.obj" --grid 10x10 --json
-    json_check "conical roof gets a UV map" 'j["surface"]["uv"] in ("plane","harmonic") and j["totals"]["panels"] > 50'
+    json_check "conical roof takes its quad grid as UV" 'j["surface"]["uv"]=="grid" and j["totals"]["panels"] == 100'
 fi
 
 # A mesh coarser than its panels: a dome of R = 20 m meshed with 4 x 4

@@ -105,7 +105,7 @@ static void surface_load(const char *path, struct surface *surface)
     struct facet_error err;
     struct mesh_options options = {UNITS_M, NULL, NULL};
     if (surface_open(path, &options, surface, &err) != FACET_OK ||
-        surface_prepare(surface, 0, &err) != FACET_OK)
+        surface_prepare(surface, 0, PARAM_AUTO, &err) != FACET_OK)
         fail_msg("%s: %s", path, err.message);
 }
 

@@ -45,7 +45,7 @@ static void open_surface(const char *path, struct surface *s)
     struct mesh_options options = {UNITS_M, NULL, NULL};
     int rc = surface_open(path, &options, s, &err);
     if (rc == FACET_OK)
-        rc = surface_prepare(s, 0, &err);
+        rc = surface_prepare(s, 0, PARAM_AUTO, &err);
     if (rc != FACET_OK)
         fail_msg("%s: %s", path, err.message);
 }

@@ -38,7 +38,7 @@ static int setup(void **state)
     struct mesh_options options = {UNITS_M, NULL, NULL};
     int rc = surface_open(path, &options, &roof, &err);
     if (rc == FACET_OK)
-        rc = surface_prepare(&roof, 0, &err);
+        rc = surface_prepare(&roof, 0, PARAM_AUTO, &err);
     unlink(path);
     return rc;
 }
@@ -300,7 +300,7 @@ static void test_front_ties_on_symmetric_surfaces(void **state)
         assert_int_equal(surface_open(path, &options, &surface, &err),
                          FACET_OK);
         unlink(path);
-        assert_int_equal(surface_prepare(&surface, 0, &err), FACET_OK);
+        assert_int_equal(surface_prepare(&surface, 0, PARAM_AUTO, &err), FACET_OK);
 
         struct optimize_settings s;
         settings_for(METHOD_EXHAUSTIVE, &s);

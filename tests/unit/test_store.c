@@ -363,13 +363,14 @@ static void test_queries(void **state)
 
 /* A study stopped after some batches and resumed, possibly by another
  * process, ends with the rows of one that was never stopped. */
-static void check_resume(enum optimize_method method)
+static void check_resume(enum optimize_method method, enum param_method uv)
 {
     struct facet_error err;
     struct store *store;
     assert_int_equal(store_open(fresh_db("resume"), &store, &err), FACET_OK);
     struct study_request request;
     request_for(&request, method);
+    request.uv = uv;
     int64_t whole, cut;
     enum optimize_outcome outcome;
     assert_int_equal(study_start(store, &request, NULL, &whole, &outcome,
@@ -415,19 +416,52 @@ static void check_resume(enum optimize_method method)
 static void test_resume_exhaustive(void **state)
 {
     (void)state;
-    check_resume(METHOD_EXHAUSTIVE);
+    check_resume(METHOD_EXHAUSTIVE, PARAM_AUTO);
 }
 
 static void test_resume_random(void **state)
 {
     (void)state;
-    check_resume(METHOD_RANDOM);
+    check_resume(METHOD_RANDOM, PARAM_AUTO);
 }
 
 static void test_resume_nsga2(void **state)
 {
     (void)state;
-    check_resume(METHOD_NSGA2);
+    check_resume(METHOD_NSGA2, PARAM_AUTO);
+}
+
+/* A run made with --uv plane on a surface with vt records it, and is
+ * resumed on the plane projection, not on the vt automatic choice would
+ * take: its options are those of an uninterrupted plane run, and differ
+ * from the vt run's. */
+static void test_resume_forced_uv(void **state)
+{
+    (void)state;
+    check_resume(METHOD_EXHAUSTIVE, PARAM_PLANE);
+    struct facet_error err;
+    struct store *store;
+    assert_int_equal(store_open(db_path, &store, &err), FACET_OK);
+    struct run_info info;
+    assert_int_equal(store_run_get(store, 2, &info, &err), FACET_OK);
+    assert_string_equal(info.uv, "plane");
+    assert_string_equal(info.uv_method, "plane");
+    struct study_request request;
+    int64_t automatic = finished_run(store, &request);
+    assert_int_equal(store_run_get(store, automatic, &info, &err), FACET_OK);
+    assert_string_equal(info.uv, "");
+    assert_string_equal(info.uv_method, "vt");
+    struct option_row *a, *b;
+    size_t na, nb, differ = 0;
+    get_options(store, 2, &a, &na);
+    get_options(store, automatic, &b, &nb);
+    assert_int_equal(na, nb);
+    for (size_t k = 0; k < na; k++)
+        differ += a[k].totals.cost != b[k].totals.cost;
+    assert_true(differ > 0);
+    free(a);
+    free(b);
+    store_close(store);
 }
 
 /* A run left "running" by a process that is gone reads as interrupted. */
@@ -545,8 +579,8 @@ static void test_refuses_other_files(void **state)
     assert_null(strchr(err.message, '\n'));
 }
 
-/* A file of schema version 1 (no views, no indexes) is brought up to the
- * current version (3) when opened, and keeps its runs. */
+/* A file of schema version 1 (no views, no indexes, no runs.uv) is
+ * brought up to the current version (4) when opened, and keeps its runs. */
 static void test_migrates_older_schema(void **state)
 {
     (void)state;
@@ -563,6 +597,7 @@ static void test_migrates_older_schema(void **state)
               "DROP INDEX options_by_fp_area; DROP INDEX options_by_sp_area;"
               "DROP INDEX options_by_nu; DROP INDEX options_by_nv;"
               "DROP INDEX options_by_threshold;"
+              "ALTER TABLE runs DROP COLUMN uv;"
               "PRAGMA user_version = 1;");
     assert_int_equal(store_open(path, &store, &err), FACET_OK);
     struct run_info info;
@@ -578,9 +613,56 @@ static void test_migrates_older_schema(void **state)
                      " type = 'index' AND name LIKE 'options_by_%')",
                      -1, &s, NULL), SQLITE_OK);
     assert_int_equal(sqlite3_step(s), SQLITE_ROW);
-    assert_int_equal(sqlite3_column_int(s, 0), 3);
+    assert_int_equal(sqlite3_column_int(s, 0), 4);
     assert_int_equal(sqlite3_column_int(s, 1), info.pareto_options);
     assert_int_equal(sqlite3_column_int(s, 2), 9);
+    sqlite3_finalize(s);
+    sqlite3_close(db);
+}
+
+/* A file of version 3 (as the Facet before runs.uv wrote it: the same
+ * tables without that column) gets the column, NULL on its old runs,
+ * which read back as automatic; a new run in it records its --uv. */
+static void test_migrates_v3(void **state)
+{
+    (void)state;
+    const char *path = fresh_db("migrate3");
+    struct facet_error err;
+    struct store *store;
+    assert_int_equal(store_open(path, &store, &err), FACET_OK);
+    struct study_request request;
+    int64_t old = finished_run(store, &request);
+    store_close(store);
+    sql(path, "ALTER TABLE runs DROP COLUMN uv; PRAGMA user_version = 3;");
+    assert_int_equal(store_open(path, &store, &err), FACET_OK);
+    struct run_info info;
+    assert_int_equal(store_run_get(store, old, &info, &err), FACET_OK);
+    assert_string_equal(info.uv, "");
+    assert_string_equal(info.uv_method, "vt");
+    assert_int_equal(info.options, 48);
+    request_for(&request, METHOD_EXHAUSTIVE);
+    request.uv = PARAM_PLANE;
+    int64_t run;
+    enum optimize_outcome outcome;
+    assert_int_equal(study_start(store, &request, NULL, &run, &outcome, &err),
+                     FACET_OK);
+    store_close(store);
+    sqlite3 *db;
+    assert_int_equal(sqlite3_open(path, &db), SQLITE_OK);
+    sqlite3_stmt *s;
+    assert_int_equal(sqlite3_prepare_v2(db, "SELECT (SELECT user_version"
+                     " FROM pragma_user_version), (SELECT count(*) FROM"
+                     " pragma_table_info('runs') WHERE name = 'uv'),"
+                     " (SELECT uv IS NULL FROM runs WHERE id = ?1),"
+                     " (SELECT uv FROM runs WHERE id = ?2)", -1, &s, NULL),
+                     SQLITE_OK);
+    sqlite3_bind_int64(s, 1, old);
+    sqlite3_bind_int64(s, 2, run);
+    assert_int_equal(sqlite3_step(s), SQLITE_ROW);
+    assert_int_equal(sqlite3_column_int(s, 0), 4);
+    assert_int_equal(sqlite3_column_int(s, 1), 1);
+    assert_int_equal(sqlite3_column_int(s, 2), 1);
+    assert_string_equal((const char *)sqlite3_column_text(s, 3), "plane");
     sqlite3_finalize(s);
     sqlite3_close(db);
 }
@@ -596,11 +678,13 @@ int main(void)
         cmocka_unit_test(test_orphan_is_interrupted),
         cmocka_unit_test(test_refuses_other_files),
         cmocka_unit_test(test_migrates_older_schema),
+        cmocka_unit_test(test_migrates_v3),
+        cmocka_unit_test(test_resume_forced_uv),
     };
     int failed = cmocka_run_group_tests(tests, setup, teardown);
     const char *names[] = {"roundtrip", "queries", "resume", "orphan",
                            "text", "foreign", "newer", "corrupt",
-                           "migrate"};
+                           "migrate", "migrate3"};
     for (size_t k = 0; k < sizeof names / sizeof *names; k++) {
         fresh_db(names[k]);
         unlink(db_path);
