@@ -67,6 +67,22 @@ enum {
 #define WEIGHT_SHARPNESS 2.0
 /* Relative pivot below which a fit's normal equations count as singular. */
 #define FIT_PIVOT_TOL 1e-9
+/* A cubic jet only while the neighbourhood's radius times the largest
+ * curvature (of the quadric fit) stays below this: a wider neighbourhood
+ * (a coarse mesh: a 3-ring spanning a large arc) is no longer a height field
+ * a one-sided cubic can follow, and its odd terms swing the curvature
+ * wildly (a coarse hemisphere's rim from -0.5/R to +0.5/R). */
+#define CUBIC_SPAN_MAX 0.5
+/* The osculating-surface correction (see fit) is clamped where
+ * (k d)^2 exceeds this, d the point's distance: near 1 the osculating
+ * sphere turns vertical and its height has no Taylor series left. */
+#define EXCESS_P_MAX 0.75
+enum {
+    EXCESS_ITERATIONS = 6,  /* refits for the correction, at most */
+    NORMAL_ITERATIONS = 6   /* refits about the fitted normal, at most */
+};
+/* The refits stop once the fit changes by less than this (relative). */
+#define FIT_CONVERGED 1e-13
 
 /* Work buffers shared by all vertices; allocated once per call. */
 struct workspace {
@@ -74,6 +90,7 @@ struct workspace {
     uint32_t *mark;     /* #V: the stamp of the last gather that saw it */
     uint32_t stamp;     /* the current gather's stamp, never 0 */
     uint32_t *points;   /* POINTS_MAX: the neighbourhood, centre first */
+    double *local;      /* 4 x POINTS_MAX: a fit's x, y, z and weight */
 };
 
 /* A local orthonormal frame: tangents t1, t2 and normal n, world coords. */
@@ -85,6 +102,7 @@ struct frame {
  * (fx, fy), dimensionless, and second derivatives (1/m). */
 struct jet {
     double fx, fy, fxx, fxy, fyy;
+    double radius;      /* of the neighbourhood fitted (m) */
 };
 
 /* Completes the unit vector f->n into a right-handed orthonormal frame. */
@@ -151,10 +169,59 @@ static int vertex_normal(const struct mesh *mesh, uint32_t v, double *n)
     return 0;
 }
 
+/* Adds the vertices of triangle t to the neighbourhood (unless seen or the
+ * cap is hit), returning the new count. */
+static size_t take_triangle(const struct mesh *mesh, size_t t, uint32_t stamp,
+                            struct workspace *ws, size_t count)
+{
+    const uint32_t *tri = mesh->triangle + 3 * t;
+    for (int k = 0; k < 3; k++) {
+        uint32_t w = tri[k];
+        if (ws->mark[w] == stamp || count == POINTS_MAX)
+            continue;
+        ws->mark[w] = stamp;
+        ws->points[count++] = w;
+    }
+    return count;
+}
+
+enum { FACE_TRIANGLES_MAX = 16 };  /* pieces of one OBJ face looked at */
+
+/* Adds the vertices of the OBJ face triangle t came from: t and the
+ * triangles reached from it across edges inside that face (all of a
+ * quad's, up to FACE_TRIANGLES_MAX of a larger polygon's). So the rings of
+ * a quad mesh hold whole quads and do not depend on the diagonal the
+ * triangulation chose: vertices placed symmetrically get the same rings. */
+static size_t take_face(const struct mesh *mesh, uint32_t t, uint32_t stamp,
+                        struct workspace *ws, size_t count)
+{
+    count = take_triangle(mesh, t, stamp, ws, count);
+    if (!mesh->neighbour || !mesh->source_face)
+        return count;
+    uint32_t seen[FACE_TRIANGLES_MAX];
+    size_t nseen = 1;
+    seen[0] = t;
+    for (size_t i = 0; i < nseen; i++)
+        for (int k = 0; k < 3; k++) {
+            uint32_t u = mesh->neighbour[3 * (size_t)seen[i] + k];
+            if (u == MESH_NONE || mesh->source_face[u] != mesh->source_face[t])
+                continue;
+            size_t j = 0;
+            while (j < nseen && seen[j] != u)
+                j++;
+            if (j < nseen || nseen == FACE_TRIANGLES_MAX)
+                continue;
+            seen[nseen++] = u;
+            count = take_triangle(mesh, u, stamp, ws, count);
+        }
+    return count;
+}
+
 /* Gathers into ws->points the centre v followed by its neighbours, ring by
- * ring: at least min_rings rings, more (up to RINGS_MAX) while fewer than
- * want neighbours are found, never more than POINTS_MAX points in all.
- * Returns the number of points, centre included. */
+ * ring (a ring: the vertices of the faces around the last one): at least
+ * min_rings rings, more (up to RINGS_MAX) while fewer than want neighbours
+ * are found, never more than POINTS_MAX points in all. Returns the number
+ * of points, centre included. */
 static size_t gather(const struct mesh *mesh, uint32_t v, int min_rings,
                      size_t want, struct workspace *ws)
 {
@@ -172,17 +239,9 @@ static size_t gather(const struct mesh *mesh, uint32_t v, int min_rings,
         for (size_t i = ring_begin; i < ring_end; i++) {
             uint32_t u = ws->points[i];
             for (uint32_t j = mesh->vertex_start[u];
-                 j < mesh->vertex_start[u + 1]; j++) {
-                const uint32_t *tri =
-                    mesh->triangle + 3 * (size_t)mesh->vertex_triangles[j];
-                for (int k = 0; k < 3; k++) {
-                    uint32_t w = tri[k];
-                    if (ws->mark[w] == stamp || count == POINTS_MAX)
-                        continue;
-                    ws->mark[w] = stamp;
-                    ws->points[count++] = w;
-                }
-            }
+                 j < mesh->vertex_start[u + 1]; j++)
+                count = take_face(mesh, mesh->vertex_triangles[j], stamp, ws,
+                                  count);
         }
         if (count == ring_end || count == POINTS_MAX)
             break;  /* the component is exhausted, or the cap is hit */
@@ -194,12 +253,35 @@ static size_t gather(const struct mesh *mesh, uint32_t v, int min_rings,
     return count;
 }
 
+/* The height of the osculating surface above its tangent plane, less its
+ * quadric, at the scaled point (x, y), for the scaled second-order
+ * coefficients c[0..2] (z = c0 x^2 + c1 xy + c2 y^2). The osculating
+ * surface is the one whose shape operator S is the same everywhere (a
+ * sphere, a circular cylinder, a plane): its height is
+ * q / (1 + sqrt(1 - p)) with q = X.S X and p = |S X|^2, exactly, at any
+ * distance. Its quartic and higher terms are what a quadric or cubic fit
+ * cannot follow and so folds into its curvature: on a cylinder, the x^4
+ * of the arc shows up in the straight direction's y^2 as noise. */
+static double osculating_excess(const double *c, double x, double y)
+{
+    double sx = 2 * c[0] * x + c[1] * y, sy = c[1] * x + 2 * c[2] * y;
+    double q = x * sx + y * sy, p = sx * sx + sy * sy;
+    if (p > EXCESS_P_MAX)
+        p = EXCESS_P_MAX;
+    return q / (1 + sqrt(1 - p)) - q / 2;
+}
+
 /* Fits w = f(x, y) to the points (centre first) in frame f at the centre,
- * with nterms_max terms at most (5 or 9), into *jet. Returns 1 on success,
- * 0 when the neighbourhood cannot determine even a quadric without
- * gradient (too few points, collinear, all at the centre). */
+ * with nterms_max terms at most (5 or 9), into *jet. The fit is of the
+ * points' heights less the osculating excess of the fit itself, repeated
+ * until it no longer changes: so a sphere or cylinder is fitted exactly,
+ * at any mesh size, and any other surface loses the truncation error of
+ * its constant-curvature part. Returns 1 on success, 0 when the
+ * neighbourhood cannot determine even a quadric without gradient (too few
+ * points, collinear, all at the centre). */
 static int fit(const struct mesh *mesh, const uint32_t *points, size_t count,
-               const struct frame *f, int nterms_max, struct jet *jet)
+               const struct frame *f, int nterms_max, double *local,
+               struct jet *jet)
 {
     const double *c = mesh->position + 3 * (size_t)points[0];
     double radius2 = 0;
@@ -223,10 +305,11 @@ static int fit(const struct mesh *mesh, const uint32_t *points, size_t count,
     for (size_t i = 1; i < count; i++) {
         const double *p = mesh->position + 3 * (size_t)points[i];
         double d[3] = {p[0] - c[0], p[1] - c[1], p[2] - c[2]};
-        double x = vec3_dot(d, f->t1) / radius;
-        double y = vec3_dot(d, f->t2) / radius;
-        double z = vec3_dot(d, f->n) / radius;
-        double w = exp(-WEIGHT_SHARPNESS * vec3_dot(d, d) / radius2);
+        double *l = local + 4 * i;
+        double x = l[0] = vec3_dot(d, f->t1) / radius;
+        double y = l[1] = vec3_dot(d, f->t2) / radius;
+        double z = l[2] = vec3_dot(d, f->n) / radius;
+        double w = l[3] = exp(-WEIGHT_SHARPNESS * vec3_dot(d, d) / radius2);
         double m[TERMS_MAX] = {x * x, x * y, y * y, x, y,
                                x * x * x, x * x * y, x * y * y, y * y * y};
         for (int r = 0; r < nterms_max; r++) {
@@ -239,26 +322,65 @@ static int fit(const struct mesh *mesh, const uint32_t *points, size_t count,
 
     static const int tries[3] = {9, 5, 3};
     double coef[TERMS_MAX] = {0};
-    int solved = 0;
-    for (int i = 0; i < 3 && !solved; i++) {
-        int n = tries[i];
-        if (n > nterms_max || (size_t)n >= count)
+    int n = 0;
+    for (int i = 0; i < 3 && n == 0; i++) {
+        if (tries[i] > nterms_max || (size_t)tries[i] >= count)
             continue;
-        solved = linalg_cholesky_solve(n, TERMS_MAX, ata, atb, FIT_PIVOT_TOL,
-                                       coef);
-        if (solved && n < 5)
-            coef[3] = coef[4] = 0;
+        if (linalg_cholesky_solve(tries[i], TERMS_MAX, ata, atb,
+                                  FIT_PIVOT_TOL, coef))
+            n = tries[i];
     }
-    if (!solved)
+    if (n == 0)
         return 0;
+    if (n < 5)
+        coef[3] = coef[4] = 0;
+
+    /* The osculating correction: refit the heights less the excess of the
+     * last fit (same matrix, new right-hand side). */
+    for (int it = 0; it < EXCESS_ITERATIONS; it++) {
+        double rhs[TERMS_MAX] = {0}, next[TERMS_MAX] = {0};
+        for (size_t i = 1; i < count; i++) {
+            const double *l = local + 4 * i;
+            double x = l[0], y = l[1];
+            double z = l[2] - osculating_excess(coef, x, y);
+            double m[TERMS_MAX] = {x * x, x * y, y * y, x, y,
+                                   x * x * x, x * x * y, x * y * y,
+                                   y * y * y};
+            for (int r = 0; r < n; r++)
+                rhs[r] += l[3] * m[r] * z;
+        }
+        if (!linalg_cholesky_solve(n, TERMS_MAX, ata, rhs, FIT_PIVOT_TOL,
+                                   next))
+            break;
+        double change = 0, size = 0;
+        for (int r = 0; r < 3; r++) {
+            change = fmax(change, fabs(next[r] - coef[r]));
+            size = fmax(size, fabs(next[r]));
+        }
+        memcpy(coef, next, sizeof coef);
+        if (n < 5)
+            coef[3] = coef[4] = 0;
+        if (!(change > FIT_CONVERGED * size))
+            break;
+    }
+
     /* Back to metres: z = a x^2 / radius for the scaled a. */
     jet->fxx = 2 * coef[0] / radius;
     jet->fxy = coef[1] / radius;
     jet->fyy = 2 * coef[2] / radius;
     jet->fx = coef[3];
     jet->fy = coef[4];
+    jet->radius = radius;
     return isfinite(jet->fxx) && isfinite(jet->fxy) && isfinite(jet->fyy) &&
            isfinite(jet->fx) && isfinite(jet->fy);
+}
+
+/* The largest |curvature| of the jet's Hessian (1/m). */
+static double jet_curvature_max(const struct jet *jet)
+{
+    double value[2], theta;
+    linalg_sym2_eigen(jet->fxx, jet->fxy, jet->fyy, value, &theta);
+    return fmax(fabs(value[0]), fabs(value[1]));
 }
 
 /* The unit normal of the graph of jet in frame f, in world coordinates. */
@@ -368,19 +490,51 @@ static void vertex_curvature(const struct mesh *mesh, uint32_t v,
     size_t cubic_points = on_boundary ? POINTS_CUBIC : POINTS_CUBIC_NEAR;
     if (one_sided && (on_boundary || count - 1 < cubic_points))
         count = gather(mesh, v, RINGS_BOUNDARY, cubic_points, ws);
-    int nterms = one_sided && count - 1 >= cubic_points ? 9 : 5;
+    int nterms = 5;
 
     frame_complete(&f);
-    if (!fit(mesh, ws->points, count, &f, nterms, &jet)) {
+    if (!fit(mesh, ws->points, count, &f, nterms, ws->local, &jet)) {
         store_flat(out, v, f.n);
         return;
     }
-    /* Refine: refit about the normal of the fitted graph. */
-    struct frame g;
-    struct jet refined;
-    graph_normal(&f, &jet, g.n);
-    frame_complete(&g);
-    if (fit(mesh, ws->points, count, &g, nterms, &refined)) {
+    /* The cubic only where the quadric says the neighbourhood spans a
+     * small arc (CUBIC_SPAN_MAX). A wider one-sided neighbourhood (a coarse
+     * mesh) keeps the quadric and shrinks back to the 2-ring, the smallest
+     * arc that still holds the points a quadric needs. */
+    double span = jet.radius * jet_curvature_max(&jet);
+    if (one_sided && !(span < CUBIC_SPAN_MAX)) {
+        struct jet small;
+        size_t fewer = gather(mesh, v, RINGS_INTERIOR, POINTS_WANTED, ws);
+        if (fit(mesh, ws->points, fewer, &f, 5, ws->local, &small)) {
+            jet = small;
+            count = fewer;
+        } else {
+            count = gather(mesh, v, RINGS_BOUNDARY, cubic_points, ws);
+        }
+    } else if (one_sided && count - 1 >= cubic_points) {
+        struct jet cubic;
+        if (fit(mesh, ws->points, count, &f, 9, ws->local, &cubic)) {
+            nterms = 9;
+            jet = cubic;
+        }
+    }
+    /* Refit about the normal of the fitted graph until it stays put: the
+     * result then depends on the points alone, not on the initial normal
+     * (which depends on how the faces were triangulated). A refit that
+     * tilts further from its frame than the last is not taken: on a wide
+     * one-sided neighbourhood the refits can run away from the surface
+     * (a coarse cap's corner turned its normal by 50 degrees in 5). */
+    for (int it = 0; it < NORMAL_ITERATIONS; it++) {
+        double tilt = hypot(jet.fx, jet.fy);
+        if (!(tilt > FIT_CONVERGED))
+            break;
+        struct frame g;
+        struct jet refined;
+        graph_normal(&f, &jet, g.n);
+        frame_complete(&g);
+        if (!fit(mesh, ws->points, count, &g, nterms, ws->local, &refined) ||
+            !(hypot(refined.fx, refined.fy) < tilt))
+            break;
         f = g;
         jet = refined;
     }
@@ -470,12 +624,14 @@ int curvature_at_vertices_jobs(const struct mesh *mesh, int flip_normals,
     int rc = FACET_OK, made = 0;
     for (; made < njobs; made++) {
         job[made] = (struct vertex_job){mesh, flip_normals, out, &next,
-                                        {nv, NULL, 0, NULL}};
+                                        {nv, NULL, 0, NULL, NULL}};
         job[made].ws.mark = calloc(n1, sizeof(uint32_t));
         job[made].ws.points = malloc(POINTS_MAX * sizeof(uint32_t));
-        if (!job[made].ws.mark || !job[made].ws.points) {
+        job[made].ws.local = malloc(4 * POINTS_MAX * sizeof(double));
+        if (!job[made].ws.mark || !job[made].ws.points || !job[made].ws.local) {
             free(job[made].ws.mark);
             free(job[made].ws.points);
+            free(job[made].ws.local);
             rc = facet_error_set(err, FACET_EWORK,
                                  "curvature: out of memory for %zu "
                                  "vertices", nv);
@@ -497,6 +653,7 @@ int curvature_at_vertices_jobs(const struct mesh *mesh, int flip_normals,
     for (int k = 0; k < made; k++) {
         free(job[k].ws.mark);
         free(job[k].ws.points);
+        free(job[k].ws.local);
     }
     return rc;
 }
