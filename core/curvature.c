@@ -83,6 +83,9 @@ enum {
 };
 /* The refits stop once the fit changes by less than this (relative). */
 #define FIT_CONVERGED 1e-13
+/* The refits about the normal stop once it turns by less than this (rad):
+ * symmetric vertices then agree to about 1e-12 of their curvature. */
+#define NORMAL_CONVERGED 1e-10
 
 /* Work buffers shared by all vertices; allocated once per call. */
 struct workspace {
@@ -281,7 +284,7 @@ static double osculating_excess(const double *c, double x, double y)
  * points, collinear, all at the centre). */
 static int fit(const struct mesh *mesh, const uint32_t *points, size_t count,
                const struct frame *f, int nterms_max, double *local,
-               struct jet *jet)
+               const struct jet *guess, struct jet *jet)
 {
     const double *c = mesh->position + 3 * (size_t)points[0];
     double radius2 = 0;
@@ -334,6 +337,11 @@ static int fit(const struct mesh *mesh, const uint32_t *points, size_t count,
         return 0;
     if (n < 5)
         coef[3] = coef[4] = 0;
+    if (guess) {  /* start the correction from a fit close by */
+        coef[0] = guess->fxx * radius / 2;
+        coef[1] = guess->fxy * radius;
+        coef[2] = guess->fyy * radius / 2;
+    }
 
     /* The osculating correction: refit the heights less the excess of the
      * last fit (same matrix, new right-hand side). */
@@ -493,7 +501,7 @@ static void vertex_curvature(const struct mesh *mesh, uint32_t v,
     int nterms = 5;
 
     frame_complete(&f);
-    if (!fit(mesh, ws->points, count, &f, nterms, ws->local, &jet)) {
+    if (!fit(mesh, ws->points, count, &f, nterms, ws->local, NULL, &jet)) {
         store_flat(out, v, f.n);
         return;
     }
@@ -505,7 +513,7 @@ static void vertex_curvature(const struct mesh *mesh, uint32_t v,
     if (one_sided && !(span < CUBIC_SPAN_MAX)) {
         struct jet small;
         size_t fewer = gather(mesh, v, RINGS_INTERIOR, POINTS_WANTED, ws);
-        if (fit(mesh, ws->points, fewer, &f, 5, ws->local, &small)) {
+        if (fit(mesh, ws->points, fewer, &f, 5, ws->local, NULL, &small)) {
             jet = small;
             count = fewer;
         } else {
@@ -513,7 +521,7 @@ static void vertex_curvature(const struct mesh *mesh, uint32_t v,
         }
     } else if (one_sided && count - 1 >= cubic_points) {
         struct jet cubic;
-        if (fit(mesh, ws->points, count, &f, 9, ws->local, &cubic)) {
+        if (fit(mesh, ws->points, count, &f, 9, ws->local, &jet, &cubic)) {
             nterms = 9;
             jet = cubic;
         }
@@ -526,13 +534,14 @@ static void vertex_curvature(const struct mesh *mesh, uint32_t v,
      * (a coarse cap's corner turned its normal by 50 degrees in 5). */
     for (int it = 0; it < NORMAL_ITERATIONS; it++) {
         double tilt = hypot(jet.fx, jet.fy);
-        if (!(tilt > FIT_CONVERGED))
+        if (!(tilt > NORMAL_CONVERGED))
             break;
         struct frame g;
         struct jet refined;
         graph_normal(&f, &jet, g.n);
         frame_complete(&g);
-        if (!fit(mesh, ws->points, count, &g, nterms, ws->local, &refined) ||
+        if (!fit(mesh, ws->points, count, &g, nterms, ws->local, &jet,
+                 &refined) ||
             !(hypot(refined.fx, refined.fy) < tilt))
             break;
         f = g;
