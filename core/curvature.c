@@ -83,6 +83,9 @@ enum {
 };
 /* The refits stop once the fit changes by less than this (relative). */
 #define FIT_CONVERGED 1e-13
+/* ... of at least this scaled curvature (k times the radius): below it a
+ * curvature counts as none, and its noise need not settle. */
+#define FIT_SCALE_MIN 1e-6
 /* The refits about the normal stop once it turns by less than this (rad):
  * symmetric vertices then agree to about 1e-12 of their curvature. */
 #define NORMAL_CONVERGED 1e-10
@@ -93,7 +96,9 @@ struct workspace {
     uint32_t *mark;     /* #V: the stamp of the last gather that saw it */
     uint32_t stamp;     /* the current gather's stamp, never 0 */
     uint32_t *points;   /* POINTS_MAX: the neighbourhood, centre first */
-    double *local;      /* 4 x POINTS_MAX: a fit's x, y, z and weight */
+    double *offset;     /* 3 x POINTS_MAX: the points less the centre */
+    double *weight;     /* POINTS_MAX: their weights */
+    double *local;      /* 3 x POINTS_MAX: their frame coordinates */
 };
 
 /* A local orthonormal frame: tangents t1, t2 and normal n, world coords. */
@@ -274,31 +279,64 @@ static double osculating_excess(const double *c, double x, double y)
     return q / (1 + sqrt(1 - p)) - q / 2;
 }
 
-/* Fits w = f(x, y) to the points (centre first) in frame f at the centre,
- * with nterms_max terms at most (5 or 9), into *jet. The fit is of the
- * points' heights less the osculating excess of the fit itself, repeated
- * until it no longer changes: so a sphere or cylinder is fitted exactly,
- * at any mesh size, and any other surface loses the truncation error of
- * its constant-curvature part. Returns 1 on success, 0 when the
- * neighbourhood cannot determine even a quadric without gradient (too few
- * points, collinear, all at the centre). */
-static int fit(const struct mesh *mesh, const uint32_t *points, size_t count,
-               const struct frame *f, int nterms_max, double *local,
-               const struct jet *guess, struct jet *jet)
+/* A neighbourhood ready to fit: its points' offsets from the centre,
+ * scaled by its radius, and their weights, which no frame changes. */
+struct hood {
+    size_t count;       /* points, centre first */
+    double radius;      /* the farthest point's distance (m) */
+    double *offset;     /* 3 x count, scaled by 1 / radius */
+    double *weight;     /* count */
+    double *local;      /* 3 x count: the last fit's x, y, z */
+};
+
+/* Prepares the count points (centre first) of ws->points into *h, in ws's
+ * buffers. Returns 0 when they span no distance at all. */
+static int hood_prepare(const struct mesh *mesh, size_t count,
+                        struct workspace *ws, struct hood *h)
 {
-    const double *c = mesh->position + 3 * (size_t)points[0];
+    const double *c = mesh->position + 3 * (size_t)ws->points[0];
     double radius2 = 0;
 
     for (size_t i = 1; i < count; i++) {
-        const double *p = mesh->position + 3 * (size_t)points[i];
-        double d[3] = {p[0] - c[0], p[1] - c[1], p[2] - c[2]};
+        const double *p = mesh->position + 3 * (size_t)ws->points[i];
+        double *d = ws->offset + 3 * i;
+        for (int r = 0; r < 3; r++)
+            d[r] = p[r] - c[r];
         double r2 = vec3_dot(d, d);
         if (r2 > radius2)
             radius2 = r2;
     }
     if (!(radius2 > 0) || !isfinite(radius2))
         return 0;
-    double radius = sqrt(radius2);
+    h->count = count;
+    h->radius = sqrt(radius2);
+    h->offset = ws->offset;
+    h->weight = ws->weight;
+    h->local = ws->local;
+    for (size_t i = 1; i < count; i++) {
+        double *d = ws->offset + 3 * i;
+        double r2 = vec3_dot(d, d);
+        for (int r = 0; r < 3; r++)
+            d[r] /= h->radius;
+        ws->weight[i] = exp(-WEIGHT_SHARPNESS * r2 / radius2);
+    }
+    return 1;
+}
+
+/* Fits w = f(x, y) to the neighbourhood h in frame f at its centre, with
+ * nterms_max terms at most (5 or 9), into *jet. The fit is of the
+ * points' heights less the osculating excess of the fit itself, repeated
+ * until it no longer changes (from guess's curvature, when given): so a
+ * sphere or cylinder is fitted exactly, at any mesh size, and any other
+ * surface loses the truncation error of its constant-curvature part.
+ * Returns 1 on success, 0 when the neighbourhood cannot determine even a
+ * quadric without gradient (too few points, collinear). */
+static int fit(const struct hood *h, const struct frame *f, int nterms_max,
+               const struct jet *guess, struct jet *jet)
+{
+    size_t count = h->count;
+    double radius = h->radius;
+    double *local = h->local;
 
     /* Normal equations in coordinates scaled by the radius, so every
      * monomial is O(1). Term order: x^2 xy y^2 | x y | x^3 x^2y xy^2 y^3,
@@ -306,13 +344,12 @@ static int fit(const struct mesh *mesh, const uint32_t *points, size_t count,
     double ata[TERMS_MAX * TERMS_MAX] = {0};
     double atb[TERMS_MAX] = {0};
     for (size_t i = 1; i < count; i++) {
-        const double *p = mesh->position + 3 * (size_t)points[i];
-        double d[3] = {p[0] - c[0], p[1] - c[1], p[2] - c[2]};
-        double *l = local + 4 * i;
-        double x = l[0] = vec3_dot(d, f->t1) / radius;
-        double y = l[1] = vec3_dot(d, f->t2) / radius;
-        double z = l[2] = vec3_dot(d, f->n) / radius;
-        double w = l[3] = exp(-WEIGHT_SHARPNESS * vec3_dot(d, d) / radius2);
+        const double *d = h->offset + 3 * i;
+        double *l = local + 3 * i;
+        double x = l[0] = vec3_dot(d, f->t1);
+        double y = l[1] = vec3_dot(d, f->t2);
+        double z = l[2] = vec3_dot(d, f->n);
+        double w = h->weight[i];
         double m[TERMS_MAX] = {x * x, x * y, y * y, x, y,
                                x * x * x, x * x * y, x * y * y, y * y * y};
         for (int r = 0; r < nterms_max; r++) {
@@ -345,17 +382,18 @@ static int fit(const struct mesh *mesh, const uint32_t *points, size_t count,
 
     /* The osculating correction: refit the heights less the excess of the
      * last fit (same matrix, new right-hand side). */
+    double last_change = INFINITY;
     for (int it = 0; it < EXCESS_ITERATIONS; it++) {
         double rhs[TERMS_MAX] = {0}, next[TERMS_MAX] = {0};
         for (size_t i = 1; i < count; i++) {
-            const double *l = local + 4 * i;
+            const double *l = local + 3 * i;
             double x = l[0], y = l[1];
             double z = l[2] - osculating_excess(coef, x, y);
             double m[TERMS_MAX] = {x * x, x * y, y * y, x, y,
                                    x * x * x, x * x * y, x * y * y,
                                    y * y * y};
             for (int r = 0; r < n; r++)
-                rhs[r] += l[3] * m[r] * z;
+                rhs[r] += h->weight[i] * m[r] * z;
         }
         if (!linalg_cholesky_solve(n, TERMS_MAX, ata, rhs, FIT_PIVOT_TOL,
                                    next))
@@ -368,8 +406,14 @@ static int fit(const struct mesh *mesh, const uint32_t *points, size_t count,
         memcpy(coef, next, sizeof coef);
         if (n < 5)
             coef[3] = coef[4] = 0;
-        if (!(change > FIT_CONVERGED * size))
+        /* Done when this pass, or what the passes still to come would
+         * add (a geometric series: they shrink by change / last_change),
+         * is below the tolerance. */
+        double ratio = change / last_change;
+        double rest = it > 0 && ratio < 0.5 ? 2 * ratio * change : change;
+        if (!(rest > FIT_CONVERGED * (size + FIT_SCALE_MIN)))
             break;
+        last_change = change;
     }
 
     /* Back to metres: z = a x^2 / radius for the scaled a. */
@@ -499,9 +543,11 @@ static void vertex_curvature(const struct mesh *mesh, uint32_t v,
     if (one_sided && (on_boundary || count - 1 < cubic_points))
         count = gather(mesh, v, RINGS_BOUNDARY, cubic_points, ws);
     int nterms = 5;
+    struct hood hood;
 
     frame_complete(&f);
-    if (!fit(mesh, ws->points, count, &f, nterms, ws->local, NULL, &jet)) {
+    if (!hood_prepare(mesh, count, ws, &hood) ||
+        !fit(&hood, &f, nterms, NULL, &jet)) {
         store_flat(out, v, f.n);
         return;
     }
@@ -513,15 +559,16 @@ static void vertex_curvature(const struct mesh *mesh, uint32_t v,
     if (one_sided && !(span < CUBIC_SPAN_MAX)) {
         struct jet small;
         size_t fewer = gather(mesh, v, RINGS_INTERIOR, POINTS_WANTED, ws);
-        if (fit(mesh, ws->points, fewer, &f, 5, ws->local, NULL, &small)) {
+        if (hood_prepare(mesh, fewer, ws, &hood) &&
+            fit(&hood, &f, 5, NULL, &small)) {
             jet = small;
-            count = fewer;
-        } else {
+        } else {  /* back to the wider one, which did fit */
             count = gather(mesh, v, RINGS_BOUNDARY, cubic_points, ws);
+            hood_prepare(mesh, count, ws, &hood);
         }
     } else if (one_sided && count - 1 >= cubic_points) {
         struct jet cubic;
-        if (fit(mesh, ws->points, count, &f, 9, ws->local, &jet, &cubic)) {
+        if (fit(&hood, &f, 9, &jet, &cubic)) {
             nterms = 9;
             jet = cubic;
         }
@@ -540,8 +587,7 @@ static void vertex_curvature(const struct mesh *mesh, uint32_t v,
         struct jet refined;
         graph_normal(&f, &jet, g.n);
         frame_complete(&g);
-        if (!fit(mesh, ws->points, count, &g, nterms, ws->local, &jet,
-                 &refined) ||
+        if (!fit(&hood, &g, nterms, &jet, &refined) ||
             !(hypot(refined.fx, refined.fy) < tilt))
             break;
         f = g;
@@ -633,13 +679,19 @@ int curvature_at_vertices_jobs(const struct mesh *mesh, int flip_normals,
     int rc = FACET_OK, made = 0;
     for (; made < njobs; made++) {
         job[made] = (struct vertex_job){mesh, flip_normals, out, &next,
-                                        {nv, NULL, 0, NULL, NULL}};
+                                        {nv, NULL, 0, NULL, NULL, NULL, NULL}};
         job[made].ws.mark = calloc(n1, sizeof(uint32_t));
         job[made].ws.points = malloc(POINTS_MAX * sizeof(uint32_t));
-        job[made].ws.local = malloc(4 * POINTS_MAX * sizeof(double));
-        if (!job[made].ws.mark || !job[made].ws.points || !job[made].ws.local) {
+        job[made].ws.offset = malloc(3 * POINTS_MAX * sizeof(double));
+        job[made].ws.weight = malloc(POINTS_MAX * sizeof(double));
+        job[made].ws.local = malloc(3 * POINTS_MAX * sizeof(double));
+        if (!job[made].ws.mark || !job[made].ws.points ||
+            !job[made].ws.offset || !job[made].ws.weight ||
+            !job[made].ws.local) {
             free(job[made].ws.mark);
             free(job[made].ws.points);
+            free(job[made].ws.offset);
+            free(job[made].ws.weight);
             free(job[made].ws.local);
             rc = facet_error_set(err, FACET_EWORK,
                                  "curvature: out of memory for %zu "
@@ -662,6 +714,8 @@ int curvature_at_vertices_jobs(const struct mesh *mesh, int flip_normals,
     for (int k = 0; k < made; k++) {
         free(job[k].ws.mark);
         free(job[k].ws.points);
+        free(job[k].ws.offset);
+        free(job[k].ws.weight);
         free(job[k].ws.local);
     }
     return rc;
