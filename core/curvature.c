@@ -6,18 +6,34 @@
  *      otherwise the angle-weighted sum of its face normals (from the
  *      positions, so zero-area triangles add nothing); flipped on request.
  *   2. A neighbourhood: the k-ring of v by breadth-first search over the
- *      vertex-to-triangle incidence, at least 2 rings (3 on the boundary) and
+ *      faces around each vertex, at least 2 rings (3 on the boundary) and
  *      grown ring by ring until it holds enough points. Rings follow the
- *      mesh, so the neighbourhood scales with the local edge length.
+ *      mesh, so the neighbourhood scales with the local edge length; the
+ *      triangles of one OBJ face count as one face, so a quad mesh's rings
+ *      do not depend on the diagonals its triangulation chose.
  *   3. A weighted least-squares fit, in a frame (t1, t2, n) at v, of the
- *      height w = f(x, y) of the neighbours over the tangent plane:
- *      a quadric with gradient (5 terms), or a cubic jet (9 terms) where the
- *      neighbourhood reaches the boundary (one-sided, so the odd terms no
- *      longer cancel) and is large enough, falling back to fewer terms when
- *      the points cannot determine more. Weights are Gaussian in distance
- *      relative to the neighbourhood radius.
- *   4. One refinement: the normal of the fitted graph becomes the new n and
- *      the fit is repeated, so a poor initial normal costs little.
+ *      height w = f(x, y) of the neighbours over the tangent plane, less the
+ *      osculating excess: the part of the height of the surface with the
+ *      fitted shape operator everywhere (a sphere, a circular cylinder) that
+ *      a polynomial of the fit's degree cannot follow, q / (1 + sqrt(1 - p))
+ *      - q / 2 with q = X.S X and p = |S X|^2. Refitted until the fit stays
+ *      put, so spheres and cylinders are fitted exactly at any mesh size,
+ *      and on other surfaces only the part of the quartic and higher terms
+ *      due to the curvature's change is left to alias into the fit (it was
+ *      what made a cylinder's straight direction noisy: the arc's x^4 went
+ *      into the y^2 of a fit through the vertex). The fit: a quadric with
+ *      gradient (5 terms), or a cubic jet (9 terms) where the neighbourhood
+ *      reaches the boundary (one-sided, so the odd terms no longer cancel),
+ *      is large enough, and spans a small arc (radius times the quadric's
+ *      largest |k| under CUBIC_SPAN_MAX); a one-sided neighbourhood over a
+ *      wider arc (a coarse mesh, where the 3-ring spans tens of degrees)
+ *      keeps the quadric over the 2-ring, as a one-sided cubic there swings
+ *      the curvature through zero. Weights are Gaussian in distance relative
+ *      to the neighbourhood radius.
+ *   4. Refinement: the normal of the fitted graph becomes the new n and the
+ *      fit is repeated, until the normal turns by less than 1e-10 rad (a
+ *      refit that tilts further than the last is not taken), so the result
+ *      depends on the points, not on the initial normal.
  *   5. The shape operator of the graph at the origin, I^-1 II with
  *      E = 1 + fx^2, F = fx fy, G = 1 + fy^2 and L, M, N = fxx, fxy, fyy / W,
  *      expressed in an orthonormal tangent basis; its eigenvalues are k1 >=
@@ -28,16 +44,25 @@
  * neighbourhood gets k1 = k2 = 0. Nothing here produces NaN for finite
  * input; a non-finite result is replaced by that zero answer.
  *
- * Accuracy (tests/unit/test_curvature.c, examples at 141 x 141 vertices,
- * largest relative error over the vertices): sphere 0.01 % inside and
- * 0.08 % on the boundary, cylinder 0.02 % / 0.11 %, torus 0.09 % / 0.51 %
- * (its second curvature, which passes through 0, measured against no less
- * than a tenth of the first).
- * The error grows with (edge length / radius of curvature)^2.
+ * Accuracy (tests/unit/test_curvature.c; largest relative error over the
+ * vertices, interior / boundary). Examples at 141 x 141 vertices: sphere
+ * 0.001 % / 0.002 %, cylinder under 0.001 % / 0.001 %, torus 0.31 % /
+ * 0.70 % (its second curvature, which passes through 0, measured against
+ * no less than a tenth of the first; the tube's 0.017 % / 0.009 %), hypar
+ * 0.008 % / 0.024 %. At 97 x 89 quads, against CGAL's 2-ring jet fit
+ * (Monge_via_jet_fitting, degree 2) on the same meshes: dome boundary
+ * 0.001 % (CGAL 0.055 %), cylinder 0.0001 % (0.058 %) and its zero
+ * curvature 5.7e-8 / 5.3e-8 1/m (4.9e-7 / 8.1e-7), torus 1.5 % and 0.03 %
+ * (7.2 % and 1.5 %), hypar 0.057 % (2.1 %). A 57-vertex quad hemisphere of
+ * radius 4.5 m: every k within -1.42/R .. -1/R, its rim symmetric to
+ * 1e-14. The error of what is not a sphere or cylinder grows with
+ * (edge length / radius of curvature)^2.
  *
- * Cost is O(V) for meshes of bounded valence: one pass, two small fits per
- * vertex, work buffers allocated once per thread (about 1.6 s of CPU for
- * 1M vertices, shared by the online CPUs: vertices are independent, so
+ * Cost is O(V) for meshes of bounded valence: one pass, about two to four
+ * fits per vertex (each refitted two to four times for the correction),
+ * work buffers allocated once per thread (about 2.8 s of CPU for 1M
+ * vertices, against 1.7 s without the correction and the refits to
+ * convergence, shared by the online CPUs: vertices are independent, so
  * the threads change nothing in the result).
  */
 #include <math.h>
