@@ -3,8 +3,9 @@
  *
  * For each vertex v:
  *   1. An initial normal: the sum of v's corner normals when the file has vn,
- *      otherwise the angle-weighted sum of its face normals (from the
- *      positions, so zero-area triangles add nothing); flipped on request.
+ *      otherwise the sum of the vector areas of the OBJ faces around it
+ *      (zero-area triangles add nothing; a quad counts whole, however it
+ *      was split); flipped on request.
  *   2. A neighbourhood: the k-ring of v by breadth-first search over the
  *      faces around each vertex, at least 2 rings (3 on the boundary) and
  *      grown ring by ring until it holds enough points. Rings follow the
@@ -150,9 +151,40 @@ static void frame_complete(struct frame *f)
     vec3_cross(f->n, f->t1, f->t2);
 }
 
+enum { FACE_TRIANGLES_MAX = 16 };  /* pieces of one OBJ face looked at */
+
+/* The triangles of the OBJ face triangle t came from, into face (at most
+ * FACE_TRIANGLES_MAX, t first): t and those reached from it across edges
+ * inside that face (all of a quad's). Returns how many. */
+static size_t face_triangles(const struct mesh *mesh, uint32_t t,
+                             uint32_t *face)
+{
+    size_t n = 1;
+    face[0] = t;
+    if (!mesh->neighbour || !mesh->source_face)
+        return n;
+    for (size_t i = 0; i < n; i++)
+        for (int k = 0; k < 3; k++) {
+            uint32_t u = mesh->neighbour[3 * (size_t)face[i] + k];
+            if (u == MESH_NONE || mesh->source_face[u] != mesh->source_face[t])
+                continue;
+            size_t j = 0;
+            while (j < n && face[j] != u)
+                j++;
+            if (j == n && n < FACE_TRIANGLES_MAX)
+                face[n++] = u;
+        }
+    return n;
+}
+
+enum { VERTEX_FACES_MAX = 64 };  /* faces around a vertex told apart */
+
 /* The initial unit normal of vertex v into n: the sum of its corner normals
- * when the mesh has vn, else the angle-weighted sum of its face normals.
- * Returns 0 (n = 0) when v has no triangle with a usable normal. */
+ * when the mesh has vn, else the sum of the vector areas of the OBJ faces
+ * around it, each once (a face's vector area, the sum of its triangles'
+ * cross products, does not depend on how it was triangulated, so neither
+ * does the normal of a quad mesh's vertex). Returns 0 (n = 0) when v has no
+ * face with a usable normal. */
 static int vertex_normal(const struct mesh *mesh, uint32_t v, double *n)
 {
     uint32_t begin = mesh->vertex_start[v], end = mesh->vertex_start[v + 1];
@@ -173,28 +205,37 @@ static int vertex_normal(const struct mesh *mesh, uint32_t v, double *n)
             return 1;
         n[0] = n[1] = n[2] = 0;  /* vn cancel out: use the winding */
     }
+    uint32_t seen[VERTEX_FACES_MAX];
+    size_t nseen = 0;
     for (uint32_t i = begin; i < end; i++) {
-        size_t t = mesh->vertex_triangles[i];
-        int k = 0;
-        while (k < 3 && mesh->triangle[3 * t + k] != v)
-            k++;
-        if (k == 3)
-            continue;
-        const double *p = mesh->position + 3 * (size_t)v;
-        const double *a = mesh->position + 3 * (size_t)mesh->triangle[3 * t + (k + 1) % 3];
-        const double *b = mesh->position + 3 * (size_t)mesh->triangle[3 * t + (k + 2) % 3];
-        double ea[3], eb[3], face[3];
-        for (int r = 0; r < 3; r++) {
-            ea[r] = a[r] - p[r];
-            eb[r] = b[r] - p[r];
+        uint32_t face[FACE_TRIANGLES_MAX];
+        size_t nface = face_triangles(mesh, mesh->vertex_triangles[i], face);
+        uint32_t name = face[0];  /* the face's lowest triangle names it */
+        for (size_t j = 1; j < nface; j++)
+            if (face[j] < name)
+                name = face[j];
+        size_t j = 0;
+        while (j < nseen && seen[j] != name)
+            j++;
+        if (j < nseen)
+            continue;  /* counted already */
+        if (nseen < VERTEX_FACES_MAX)
+            seen[nseen++] = name;
+        for (size_t f = 0; f < nface; f++) {
+            const uint32_t *tri = mesh->triangle + 3 * (size_t)face[f];
+            const double *a = mesh->position + 3 * (size_t)tri[0];
+            const double *b = mesh->position + 3 * (size_t)tri[1];
+            const double *c = mesh->position + 3 * (size_t)tri[2];
+            double ab[3], ac[3], cross[3];
+            for (int r = 0; r < 3; r++) {
+                ab[r] = b[r] - a[r];
+                ac[r] = c[r] - a[r];
+            }
+            vec3_cross(ab, ac, cross);
+            if (isfinite(vec3_dot(cross, cross)))
+                for (int r = 0; r < 3; r++)
+                    n[r] += cross[r];
         }
-        vec3_cross(ea, eb, face);
-        if (!vec3_normalize(face) || !vec3_normalize(ea) || !vec3_normalize(eb))
-            continue;
-        double c = vec3_dot(ea, eb);
-        double angle = acos(c < -1 ? -1 : (c > 1 ? 1 : c));
-        for (int r = 0; r < 3; r++)
-            n[r] += angle * face[r];
     }
     if (vec3_normalize(n))
         return 1;
@@ -218,35 +259,17 @@ static size_t take_triangle(const struct mesh *mesh, size_t t, uint32_t stamp,
     return count;
 }
 
-enum { FACE_TRIANGLES_MAX = 16 };  /* pieces of one OBJ face looked at */
-
-/* Adds the vertices of the OBJ face triangle t came from: t and the
- * triangles reached from it across edges inside that face (all of a
- * quad's, up to FACE_TRIANGLES_MAX of a larger polygon's). So the rings of
- * a quad mesh hold whole quads and do not depend on the diagonal the
- * triangulation chose: vertices placed symmetrically get the same rings. */
+/* Adds the vertices of the OBJ face triangle t came from (face_triangles),
+ * so the rings of a quad mesh hold whole quads and do not depend on the
+ * diagonal the triangulation chose: vertices placed symmetrically get the
+ * same rings. */
 static size_t take_face(const struct mesh *mesh, uint32_t t, uint32_t stamp,
                         struct workspace *ws, size_t count)
 {
-    count = take_triangle(mesh, t, stamp, ws, count);
-    if (!mesh->neighbour || !mesh->source_face)
-        return count;
-    uint32_t seen[FACE_TRIANGLES_MAX];
-    size_t nseen = 1;
-    seen[0] = t;
-    for (size_t i = 0; i < nseen; i++)
-        for (int k = 0; k < 3; k++) {
-            uint32_t u = mesh->neighbour[3 * (size_t)seen[i] + k];
-            if (u == MESH_NONE || mesh->source_face[u] != mesh->source_face[t])
-                continue;
-            size_t j = 0;
-            while (j < nseen && seen[j] != u)
-                j++;
-            if (j < nseen || nseen == FACE_TRIANGLES_MAX)
-                continue;
-            seen[nseen++] = u;
-            count = take_triangle(mesh, u, stamp, ws, count);
-        }
+    uint32_t face[FACE_TRIANGLES_MAX];
+    size_t nface = face_triangles(mesh, t, face);
+    for (size_t i = 0; i < nface; i++)
+        count = take_triangle(mesh, face[i], stamp, ws, count);
     return count;
 }
 
