@@ -3,21 +3,38 @@
  *
  * For each vertex v:
  *   1. An initial normal: the sum of v's corner normals when the file has vn,
- *      otherwise the angle-weighted sum of its face normals (from the
- *      positions, so zero-area triangles add nothing); flipped on request.
+ *      otherwise the sum of the vector areas of the OBJ faces around it
+ *      (zero-area triangles add nothing; a quad counts whole, however it
+ *      was split); flipped on request.
  *   2. A neighbourhood: the k-ring of v by breadth-first search over the
- *      vertex-to-triangle incidence, at least 2 rings (3 on the boundary) and
+ *      faces around each vertex, at least 2 rings (3 on the boundary) and
  *      grown ring by ring until it holds enough points. Rings follow the
- *      mesh, so the neighbourhood scales with the local edge length.
+ *      mesh, so the neighbourhood scales with the local edge length; the
+ *      triangles of one OBJ face count as one face, so a quad mesh's rings
+ *      do not depend on the diagonals its triangulation chose.
  *   3. A weighted least-squares fit, in a frame (t1, t2, n) at v, of the
- *      height w = f(x, y) of the neighbours over the tangent plane:
- *      a quadric with gradient (5 terms), or a cubic jet (9 terms) where the
- *      neighbourhood reaches the boundary (one-sided, so the odd terms no
- *      longer cancel) and is large enough, falling back to fewer terms when
- *      the points cannot determine more. Weights are Gaussian in distance
- *      relative to the neighbourhood radius.
- *   4. One refinement: the normal of the fitted graph becomes the new n and
- *      the fit is repeated, so a poor initial normal costs little.
+ *      height w = f(x, y) of the neighbours over the tangent plane, less the
+ *      osculating excess: the part of the height of the surface with the
+ *      fitted shape operator everywhere (a sphere, a circular cylinder) that
+ *      a polynomial of the fit's degree cannot follow, q / (1 + sqrt(1 - p))
+ *      - q / 2 with q = X.S X and p = |S X|^2. Refitted until the fit stays
+ *      put, so spheres and cylinders are fitted exactly at any mesh size,
+ *      and on other surfaces only the part of the quartic and higher terms
+ *      due to the curvature's change is left to alias into the fit (it was
+ *      what made a cylinder's straight direction noisy: the arc's x^4 went
+ *      into the y^2 of a fit through the vertex). The fit: a quadric with
+ *      gradient (5 terms), or a cubic jet (9 terms) where the neighbourhood
+ *      reaches the boundary (one-sided, so the odd terms no longer cancel),
+ *      is large enough, and spans a small arc (radius times the quadric's
+ *      largest |k| under CUBIC_SPAN_MAX, 1); a one-sided neighbourhood over a
+ *      wider arc (a coarse mesh, where the 3-ring spans tens of degrees)
+ *      keeps the quadric over the 2-ring, as a one-sided cubic there swings
+ *      the curvature through zero. Weights are Gaussian in distance relative
+ *      to the neighbourhood radius.
+ *   4. Refinement: the normal of the fitted graph becomes the new n and the
+ *      fit is repeated, until the normal turns by less than 1e-10 rad (a
+ *      refit that tilts further than the last is not taken), so the result
+ *      depends on the points, not on the initial normal.
  *   5. The shape operator of the graph at the origin, I^-1 II with
  *      E = 1 + fx^2, F = fx fy, G = 1 + fy^2 and L, M, N = fxx, fxy, fyy / W,
  *      expressed in an orthonormal tangent basis; its eigenvalues are k1 >=
@@ -28,17 +45,26 @@
  * neighbourhood gets k1 = k2 = 0. Nothing here produces NaN for finite
  * input; a non-finite result is replaced by that zero answer.
  *
- * Accuracy (tests/unit/test_curvature.c, examples at 141 x 141 vertices,
- * largest relative error over the vertices): sphere 0.01 % inside and
- * 0.08 % on the boundary, cylinder 0.02 % / 0.11 %, torus 0.09 % / 0.51 %
- * (its second curvature, which passes through 0, measured against no less
- * than a tenth of the first).
- * The error grows with (edge length / radius of curvature)^2.
+ * Accuracy (tests/unit/test_curvature.c; largest relative error over the
+ * vertices, interior / boundary). Examples at 141 x 141 vertices: sphere
+ * 0.001 % / 0.002 %, cylinder under 0.001 % / 0.001 %, torus 0.31 % /
+ * 0.70 % (its second curvature, which passes through 0, measured against
+ * no less than a tenth of the first; the tube's 0.017 % / 0.009 %), hypar
+ * 0.008 % / 0.024 %. At 97 x 89 quads, against CGAL's 2-ring jet fit
+ * (Monge_via_jet_fitting, degree 2) on the same meshes: dome boundary
+ * 0.001 % (CGAL 0.055 %), cylinder 0.0001 % (0.058 %) and its zero
+ * curvature 5.7e-8 / 5.3e-8 1/m (4.9e-7 / 8.1e-7), torus 1.5 % and 0.03 %
+ * (7.2 % and 1.5 %), hypar 0.057 % (2.1 %). A 57-vertex quad hemisphere of
+ * radius 4.5 m: every k within -1.42/R .. -1/R, its rim symmetric to
+ * 1e-14. The error of what is not a sphere or cylinder grows with
+ * (edge length / radius of curvature)^2.
  *
- * Cost is O(V) for meshes of bounded valence: one pass, two small fits per
- * vertex, work buffers allocated once per thread (about 1.6 s of CPU for
- * 1M vertices, shared by the online CPUs: vertices are independent, so
- * the threads change nothing in the result).
+ * Cost is O(V) for meshes of bounded valence: one pass, about two to four
+ * fits per vertex (each refitted two to four times for the correction),
+ * work buffers allocated once per thread (about 2.5 s of CPU for 1M
+ * vertices of the roof example, against 1.7 s without the correction and
+ * the refits to convergence, shared by the online CPUs: vertices are
+ * independent, so the threads change nothing in the result).
  */
 #include <math.h>
 #include <pthread.h>
@@ -67,6 +93,30 @@ enum {
 #define WEIGHT_SHARPNESS 2.0
 /* Relative pivot below which a fit's normal equations count as singular. */
 #define FIT_PIVOT_TOL 1e-9
+/* A cubic jet only while the neighbourhood's radius times the largest
+ * curvature (of the quadric fit) stays below this: a wider neighbourhood
+ * (a coarse mesh: a 3-ring spanning a large arc) is no longer a height field
+ * a one-sided cubic can follow, and its odd terms swing the curvature
+ * through zero (coarse caps' rims came out at +0.5/R with 1.5 and more).
+ * A coarse hypar's boundary, which needs the cubic, is worse with less
+ * (at 10 x 10 quads: 9 % off with 1.0, 23 % with 0.5). */
+#define CUBIC_SPAN_MAX 1.0
+/* The osculating-surface correction (see fit) is clamped where
+ * (k d)^2 exceeds this, d the point's distance: near 1 the osculating
+ * sphere turns vertical and its height has no Taylor series left. */
+#define EXCESS_P_MAX 0.75
+enum {
+    EXCESS_ITERATIONS = 6,  /* refits for the correction, at most */
+    NORMAL_ITERATIONS = 6   /* refits about the fitted normal, at most */
+};
+/* The refits stop once the fit changes by less than this (relative). */
+#define FIT_CONVERGED 1e-13
+/* ... of at least this scaled curvature (k times the radius): below it a
+ * curvature counts as none, and its noise need not settle. */
+#define FIT_SCALE_MIN 1e-6
+/* The refits about the normal stop once it turns by less than this (rad):
+ * symmetric vertices then agree to about 1e-12 of their curvature. */
+#define NORMAL_CONVERGED 1e-10
 
 /* Work buffers shared by all vertices; allocated once per call. */
 struct workspace {
@@ -74,6 +124,9 @@ struct workspace {
     uint32_t *mark;     /* #V: the stamp of the last gather that saw it */
     uint32_t stamp;     /* the current gather's stamp, never 0 */
     uint32_t *points;   /* POINTS_MAX: the neighbourhood, centre first */
+    double *offset;     /* 3 x POINTS_MAX: the points less the centre */
+    double *weight;     /* POINTS_MAX: their weights */
+    double *local;      /* 3 x POINTS_MAX: their frame coordinates */
 };
 
 /* A local orthonormal frame: tangents t1, t2 and normal n, world coords. */
@@ -85,6 +138,7 @@ struct frame {
  * (fx, fy), dimensionless, and second derivatives (1/m). */
 struct jet {
     double fx, fy, fxx, fxy, fyy;
+    double radius;      /* of the neighbourhood fitted (m) */
 };
 
 /* Completes the unit vector f->n into a right-handed orthonormal frame. */
@@ -99,9 +153,40 @@ static void frame_complete(struct frame *f)
     vec3_cross(f->n, f->t1, f->t2);
 }
 
+enum { FACE_TRIANGLES_MAX = 16 };  /* pieces of one OBJ face looked at */
+
+/* The triangles of the OBJ face triangle t came from, into face (at most
+ * FACE_TRIANGLES_MAX, t first): t and those reached from it across edges
+ * inside that face (all of a quad's). Returns how many. */
+static size_t face_triangles(const struct mesh *mesh, uint32_t t,
+                             uint32_t *face)
+{
+    size_t n = 1;
+    face[0] = t;
+    if (!mesh->neighbour || !mesh->source_face)
+        return n;
+    for (size_t i = 0; i < n; i++)
+        for (int k = 0; k < 3; k++) {
+            uint32_t u = mesh->neighbour[3 * (size_t)face[i] + k];
+            if (u == MESH_NONE || mesh->source_face[u] != mesh->source_face[t])
+                continue;
+            size_t j = 0;
+            while (j < n && face[j] != u)
+                j++;
+            if (j == n && n < FACE_TRIANGLES_MAX)
+                face[n++] = u;
+        }
+    return n;
+}
+
+enum { VERTEX_FACES_MAX = 64 };  /* faces around a vertex told apart */
+
 /* The initial unit normal of vertex v into n: the sum of its corner normals
- * when the mesh has vn, else the angle-weighted sum of its face normals.
- * Returns 0 (n = 0) when v has no triangle with a usable normal. */
+ * when the mesh has vn, else the sum of the vector areas of the OBJ faces
+ * around it, each once (a face's vector area, the sum of its triangles'
+ * cross products, does not depend on how it was triangulated, so neither
+ * does the normal of a quad mesh's vertex). Returns 0 (n = 0) when v has no
+ * face with a usable normal. */
 static int vertex_normal(const struct mesh *mesh, uint32_t v, double *n)
 {
     uint32_t begin = mesh->vertex_start[v], end = mesh->vertex_start[v + 1];
@@ -122,28 +207,37 @@ static int vertex_normal(const struct mesh *mesh, uint32_t v, double *n)
             return 1;
         n[0] = n[1] = n[2] = 0;  /* vn cancel out: use the winding */
     }
+    uint32_t seen[VERTEX_FACES_MAX];
+    size_t nseen = 0;
     for (uint32_t i = begin; i < end; i++) {
-        size_t t = mesh->vertex_triangles[i];
-        int k = 0;
-        while (k < 3 && mesh->triangle[3 * t + k] != v)
-            k++;
-        if (k == 3)
-            continue;
-        const double *p = mesh->position + 3 * (size_t)v;
-        const double *a = mesh->position + 3 * (size_t)mesh->triangle[3 * t + (k + 1) % 3];
-        const double *b = mesh->position + 3 * (size_t)mesh->triangle[3 * t + (k + 2) % 3];
-        double ea[3], eb[3], face[3];
-        for (int r = 0; r < 3; r++) {
-            ea[r] = a[r] - p[r];
-            eb[r] = b[r] - p[r];
+        uint32_t face[FACE_TRIANGLES_MAX];
+        size_t nface = face_triangles(mesh, mesh->vertex_triangles[i], face);
+        uint32_t name = face[0];  /* the face's lowest triangle names it */
+        for (size_t j = 1; j < nface; j++)
+            if (face[j] < name)
+                name = face[j];
+        size_t j = 0;
+        while (j < nseen && seen[j] != name)
+            j++;
+        if (j < nseen)
+            continue;  /* counted already */
+        if (nseen < VERTEX_FACES_MAX)
+            seen[nseen++] = name;
+        for (size_t f = 0; f < nface; f++) {
+            const uint32_t *tri = mesh->triangle + 3 * (size_t)face[f];
+            const double *a = mesh->position + 3 * (size_t)tri[0];
+            const double *b = mesh->position + 3 * (size_t)tri[1];
+            const double *c = mesh->position + 3 * (size_t)tri[2];
+            double ab[3], ac[3], cross[3];
+            for (int r = 0; r < 3; r++) {
+                ab[r] = b[r] - a[r];
+                ac[r] = c[r] - a[r];
+            }
+            vec3_cross(ab, ac, cross);
+            if (isfinite(vec3_dot(cross, cross)))
+                for (int r = 0; r < 3; r++)
+                    n[r] += cross[r];
         }
-        vec3_cross(ea, eb, face);
-        if (!vec3_normalize(face) || !vec3_normalize(ea) || !vec3_normalize(eb))
-            continue;
-        double c = vec3_dot(ea, eb);
-        double angle = acos(c < -1 ? -1 : (c > 1 ? 1 : c));
-        for (int r = 0; r < 3; r++)
-            n[r] += angle * face[r];
     }
     if (vec3_normalize(n))
         return 1;
@@ -151,10 +245,41 @@ static int vertex_normal(const struct mesh *mesh, uint32_t v, double *n)
     return 0;
 }
 
+/* Adds the vertices of triangle t to the neighbourhood (unless seen or the
+ * cap is hit), returning the new count. */
+static size_t take_triangle(const struct mesh *mesh, size_t t, uint32_t stamp,
+                            struct workspace *ws, size_t count)
+{
+    const uint32_t *tri = mesh->triangle + 3 * t;
+    for (int k = 0; k < 3; k++) {
+        uint32_t w = tri[k];
+        if (ws->mark[w] == stamp || count == POINTS_MAX)
+            continue;
+        ws->mark[w] = stamp;
+        ws->points[count++] = w;
+    }
+    return count;
+}
+
+/* Adds the vertices of the OBJ face triangle t came from (face_triangles),
+ * so the rings of a quad mesh hold whole quads and do not depend on the
+ * diagonal the triangulation chose: vertices placed symmetrically get the
+ * same rings. */
+static size_t take_face(const struct mesh *mesh, uint32_t t, uint32_t stamp,
+                        struct workspace *ws, size_t count)
+{
+    uint32_t face[FACE_TRIANGLES_MAX];
+    size_t nface = face_triangles(mesh, t, face);
+    for (size_t i = 0; i < nface; i++)
+        count = take_triangle(mesh, face[i], stamp, ws, count);
+    return count;
+}
+
 /* Gathers into ws->points the centre v followed by its neighbours, ring by
- * ring: at least min_rings rings, more (up to RINGS_MAX) while fewer than
- * want neighbours are found, never more than POINTS_MAX points in all.
- * Returns the number of points, centre included. */
+ * ring (a ring: the vertices of the faces around the last one): at least
+ * min_rings rings, more (up to RINGS_MAX) while fewer than want neighbours
+ * are found, never more than POINTS_MAX points in all. Returns the number
+ * of points, centre included. */
 static size_t gather(const struct mesh *mesh, uint32_t v, int min_rings,
                      size_t want, struct workspace *ws)
 {
@@ -172,17 +297,9 @@ static size_t gather(const struct mesh *mesh, uint32_t v, int min_rings,
         for (size_t i = ring_begin; i < ring_end; i++) {
             uint32_t u = ws->points[i];
             for (uint32_t j = mesh->vertex_start[u];
-                 j < mesh->vertex_start[u + 1]; j++) {
-                const uint32_t *tri =
-                    mesh->triangle + 3 * (size_t)mesh->vertex_triangles[j];
-                for (int k = 0; k < 3; k++) {
-                    uint32_t w = tri[k];
-                    if (ws->mark[w] == stamp || count == POINTS_MAX)
-                        continue;
-                    ws->mark[w] = stamp;
-                    ws->points[count++] = w;
-                }
-            }
+                 j < mesh->vertex_start[u + 1]; j++)
+                count = take_face(mesh, mesh->vertex_triangles[j], stamp, ws,
+                                  count);
         }
         if (count == ring_end || count == POINTS_MAX)
             break;  /* the component is exhausted, or the cap is hit */
@@ -194,26 +311,82 @@ static size_t gather(const struct mesh *mesh, uint32_t v, int min_rings,
     return count;
 }
 
-/* Fits w = f(x, y) to the points (centre first) in frame f at the centre,
- * with nterms_max terms at most (5 or 9), into *jet. Returns 1 on success,
- * 0 when the neighbourhood cannot determine even a quadric without
- * gradient (too few points, collinear, all at the centre). */
-static int fit(const struct mesh *mesh, const uint32_t *points, size_t count,
-               const struct frame *f, int nterms_max, struct jet *jet)
+/* The height of the osculating surface above its tangent plane, less its
+ * quadric, at the scaled point (x, y), for the scaled second-order
+ * coefficients c[0..2] (z = c0 x^2 + c1 xy + c2 y^2). The osculating
+ * surface is the one whose shape operator S is the same everywhere (a
+ * sphere, a circular cylinder, a plane): its height is
+ * q / (1 + sqrt(1 - p)) with q = X.S X and p = |S X|^2, exactly, at any
+ * distance. Its quartic and higher terms are what a quadric or cubic fit
+ * cannot follow and so folds into its curvature: on a cylinder, the x^4
+ * of the arc shows up in the straight direction's y^2 as noise. */
+static double osculating_excess(const double *c, double x, double y)
 {
-    const double *c = mesh->position + 3 * (size_t)points[0];
+    double sx = 2 * c[0] * x + c[1] * y, sy = c[1] * x + 2 * c[2] * y;
+    double q = x * sx + y * sy, p = sx * sx + sy * sy;
+    if (p > EXCESS_P_MAX)
+        p = EXCESS_P_MAX;
+    return q / (1 + sqrt(1 - p)) - q / 2;
+}
+
+/* A neighbourhood ready to fit: its points' offsets from the centre,
+ * scaled by its radius, and their weights, which no frame changes. */
+struct hood {
+    size_t count;       /* points, centre first */
+    double radius;      /* the farthest point's distance (m) */
+    double *offset;     /* 3 x count, scaled by 1 / radius */
+    double *weight;     /* count */
+    double *local;      /* 3 x count: the last fit's x, y, z */
+};
+
+/* Prepares the count points (centre first) of ws->points into *h, in ws's
+ * buffers. Returns 0 when they span no distance at all. */
+static int hood_prepare(const struct mesh *mesh, size_t count,
+                        struct workspace *ws, struct hood *h)
+{
+    const double *c = mesh->position + 3 * (size_t)ws->points[0];
     double radius2 = 0;
 
     for (size_t i = 1; i < count; i++) {
-        const double *p = mesh->position + 3 * (size_t)points[i];
-        double d[3] = {p[0] - c[0], p[1] - c[1], p[2] - c[2]};
+        const double *p = mesh->position + 3 * (size_t)ws->points[i];
+        double *d = ws->offset + 3 * i;
+        for (int r = 0; r < 3; r++)
+            d[r] = p[r] - c[r];
         double r2 = vec3_dot(d, d);
         if (r2 > radius2)
             radius2 = r2;
     }
     if (!(radius2 > 0) || !isfinite(radius2))
         return 0;
-    double radius = sqrt(radius2);
+    h->count = count;
+    h->radius = sqrt(radius2);
+    h->offset = ws->offset;
+    h->weight = ws->weight;
+    h->local = ws->local;
+    for (size_t i = 1; i < count; i++) {
+        double *d = ws->offset + 3 * i;
+        double r2 = vec3_dot(d, d);
+        for (int r = 0; r < 3; r++)
+            d[r] /= h->radius;
+        ws->weight[i] = exp(-WEIGHT_SHARPNESS * r2 / radius2);
+    }
+    return 1;
+}
+
+/* Fits w = f(x, y) to the neighbourhood h in frame f at its centre, with
+ * nterms_max terms at most (5 or 9), into *jet. The fit is of the
+ * points' heights less the osculating excess of the fit itself, repeated
+ * until it no longer changes (from guess's curvature, when given): so a
+ * sphere or cylinder is fitted exactly, at any mesh size, and any other
+ * surface loses the truncation error of its constant-curvature part.
+ * Returns 1 on success, 0 when the neighbourhood cannot determine even a
+ * quadric without gradient (too few points, collinear). */
+static int fit(const struct hood *h, const struct frame *f, int nterms_max,
+               const struct jet *guess, struct jet *jet)
+{
+    size_t count = h->count;
+    double radius = h->radius;
+    double *local = h->local;
 
     /* Normal equations in coordinates scaled by the radius, so every
      * monomial is O(1). Term order: x^2 xy y^2 | x y | x^3 x^2y xy^2 y^3,
@@ -221,12 +394,12 @@ static int fit(const struct mesh *mesh, const uint32_t *points, size_t count,
     double ata[TERMS_MAX * TERMS_MAX] = {0};
     double atb[TERMS_MAX] = {0};
     for (size_t i = 1; i < count; i++) {
-        const double *p = mesh->position + 3 * (size_t)points[i];
-        double d[3] = {p[0] - c[0], p[1] - c[1], p[2] - c[2]};
-        double x = vec3_dot(d, f->t1) / radius;
-        double y = vec3_dot(d, f->t2) / radius;
-        double z = vec3_dot(d, f->n) / radius;
-        double w = exp(-WEIGHT_SHARPNESS * vec3_dot(d, d) / radius2);
+        const double *d = h->offset + 3 * i;
+        double *l = local + 3 * i;
+        double x = l[0] = vec3_dot(d, f->t1);
+        double y = l[1] = vec3_dot(d, f->t2);
+        double z = l[2] = vec3_dot(d, f->n);
+        double w = h->weight[i];
         double m[TERMS_MAX] = {x * x, x * y, y * y, x, y,
                                x * x * x, x * x * y, x * y * y, y * y * y};
         for (int r = 0; r < nterms_max; r++) {
@@ -239,26 +412,77 @@ static int fit(const struct mesh *mesh, const uint32_t *points, size_t count,
 
     static const int tries[3] = {9, 5, 3};
     double coef[TERMS_MAX] = {0};
-    int solved = 0;
-    for (int i = 0; i < 3 && !solved; i++) {
-        int n = tries[i];
-        if (n > nterms_max || (size_t)n >= count)
+    int n = 0;
+    for (int i = 0; i < 3 && n == 0; i++) {
+        if (tries[i] > nterms_max || (size_t)tries[i] >= count)
             continue;
-        solved = linalg_cholesky_solve(n, TERMS_MAX, ata, atb, FIT_PIVOT_TOL,
-                                       coef);
-        if (solved && n < 5)
-            coef[3] = coef[4] = 0;
+        if (linalg_cholesky_solve(tries[i], TERMS_MAX, ata, atb,
+                                  FIT_PIVOT_TOL, coef))
+            n = tries[i];
     }
-    if (!solved)
+    if (n == 0)
         return 0;
+    if (n < 5)
+        coef[3] = coef[4] = 0;
+    if (guess) {  /* start the correction from a fit close by */
+        coef[0] = guess->fxx * radius / 2;
+        coef[1] = guess->fxy * radius;
+        coef[2] = guess->fyy * radius / 2;
+    }
+
+    /* The osculating correction: refit the heights less the excess of the
+     * last fit (same matrix, new right-hand side). */
+    double last_change = INFINITY;
+    for (int it = 0; it < EXCESS_ITERATIONS; it++) {
+        double rhs[TERMS_MAX] = {0}, next[TERMS_MAX] = {0};
+        for (size_t i = 1; i < count; i++) {
+            const double *l = local + 3 * i;
+            double x = l[0], y = l[1];
+            double z = l[2] - osculating_excess(coef, x, y);
+            double m[TERMS_MAX] = {x * x, x * y, y * y, x, y,
+                                   x * x * x, x * x * y, x * y * y,
+                                   y * y * y};
+            for (int r = 0; r < n; r++)
+                rhs[r] += h->weight[i] * m[r] * z;
+        }
+        if (!linalg_cholesky_solve(n, TERMS_MAX, ata, rhs, FIT_PIVOT_TOL,
+                                   next))
+            break;
+        double change = 0, size = 0;
+        for (int r = 0; r < 3; r++) {
+            change = fmax(change, fabs(next[r] - coef[r]));
+            size = fmax(size, fabs(next[r]));
+        }
+        memcpy(coef, next, sizeof coef);
+        if (n < 5)
+            coef[3] = coef[4] = 0;
+        /* Done when this pass, or what the passes still to come would
+         * add (a geometric series: they shrink by change / last_change),
+         * is below the tolerance. */
+        double ratio = change / last_change;
+        double rest = it > 0 && ratio < 0.5 ? 2 * ratio * change : change;
+        if (!(rest > FIT_CONVERGED * (size + FIT_SCALE_MIN)))
+            break;
+        last_change = change;
+    }
+
     /* Back to metres: z = a x^2 / radius for the scaled a. */
     jet->fxx = 2 * coef[0] / radius;
     jet->fxy = coef[1] / radius;
     jet->fyy = 2 * coef[2] / radius;
     jet->fx = coef[3];
     jet->fy = coef[4];
+    jet->radius = radius;
     return isfinite(jet->fxx) && isfinite(jet->fxy) && isfinite(jet->fyy) &&
            isfinite(jet->fx) && isfinite(jet->fy);
+}
+
+/* The largest |curvature| of the jet's Hessian (1/m). */
+static double jet_curvature_max(const struct jet *jet)
+{
+    double value[2], theta;
+    linalg_sym2_eigen(jet->fxx, jet->fxy, jet->fyy, value, &theta);
+    return fmax(fabs(value[0]), fabs(value[1]));
 }
 
 /* The unit normal of the graph of jet in frame f, in world coordinates. */
@@ -368,19 +592,54 @@ static void vertex_curvature(const struct mesh *mesh, uint32_t v,
     size_t cubic_points = on_boundary ? POINTS_CUBIC : POINTS_CUBIC_NEAR;
     if (one_sided && (on_boundary || count - 1 < cubic_points))
         count = gather(mesh, v, RINGS_BOUNDARY, cubic_points, ws);
-    int nterms = one_sided && count - 1 >= cubic_points ? 9 : 5;
+    int nterms = 5;
+    struct hood hood;
 
     frame_complete(&f);
-    if (!fit(mesh, ws->points, count, &f, nterms, &jet)) {
+    if (!hood_prepare(mesh, count, ws, &hood) ||
+        !fit(&hood, &f, nterms, NULL, &jet)) {
         store_flat(out, v, f.n);
         return;
     }
-    /* Refine: refit about the normal of the fitted graph. */
-    struct frame g;
-    struct jet refined;
-    graph_normal(&f, &jet, g.n);
-    frame_complete(&g);
-    if (fit(mesh, ws->points, count, &g, nterms, &refined)) {
+    /* The cubic only where the quadric says the neighbourhood spans a
+     * small arc (CUBIC_SPAN_MAX). A wider one-sided neighbourhood (a coarse
+     * mesh) keeps the quadric and shrinks back to the 2-ring, the smallest
+     * arc that still holds the points a quadric needs. */
+    double span = jet.radius * jet_curvature_max(&jet);
+    if (one_sided && !(span < CUBIC_SPAN_MAX)) {
+        struct jet small;
+        size_t fewer = gather(mesh, v, RINGS_INTERIOR, POINTS_WANTED, ws);
+        if (hood_prepare(mesh, fewer, ws, &hood) &&
+            fit(&hood, &f, 5, NULL, &small)) {
+            jet = small;
+        } else {  /* back to the wider one, which did fit */
+            count = gather(mesh, v, RINGS_BOUNDARY, cubic_points, ws);
+            hood_prepare(mesh, count, ws, &hood);
+        }
+    } else if (one_sided && count - 1 >= cubic_points) {
+        struct jet cubic;
+        if (fit(&hood, &f, 9, &jet, &cubic)) {
+            nterms = 9;
+            jet = cubic;
+        }
+    }
+    /* Refit about the normal of the fitted graph until it stays put: the
+     * result then depends on the points alone, not on the initial normal
+     * (which depends on how the faces were triangulated). A refit that
+     * tilts further from its frame than the last is not taken: on a wide
+     * one-sided neighbourhood the refits can run away from the surface
+     * (a coarse cap's corner turned its normal by 50 degrees in 5). */
+    for (int it = 0; it < NORMAL_ITERATIONS; it++) {
+        double tilt = hypot(jet.fx, jet.fy);
+        if (!(tilt > NORMAL_CONVERGED))
+            break;
+        struct frame g;
+        struct jet refined;
+        graph_normal(&f, &jet, g.n);
+        frame_complete(&g);
+        if (!fit(&hood, &g, nterms, &jet, &refined) ||
+            !(hypot(refined.fx, refined.fy) < tilt))
+            break;
         f = g;
         jet = refined;
     }
@@ -470,12 +729,20 @@ int curvature_at_vertices_jobs(const struct mesh *mesh, int flip_normals,
     int rc = FACET_OK, made = 0;
     for (; made < njobs; made++) {
         job[made] = (struct vertex_job){mesh, flip_normals, out, &next,
-                                        {nv, NULL, 0, NULL}};
+                                        {nv, NULL, 0, NULL, NULL, NULL, NULL}};
         job[made].ws.mark = calloc(n1, sizeof(uint32_t));
         job[made].ws.points = malloc(POINTS_MAX * sizeof(uint32_t));
-        if (!job[made].ws.mark || !job[made].ws.points) {
+        job[made].ws.offset = malloc(3 * POINTS_MAX * sizeof(double));
+        job[made].ws.weight = malloc(POINTS_MAX * sizeof(double));
+        job[made].ws.local = malloc(3 * POINTS_MAX * sizeof(double));
+        if (!job[made].ws.mark || !job[made].ws.points ||
+            !job[made].ws.offset || !job[made].ws.weight ||
+            !job[made].ws.local) {
             free(job[made].ws.mark);
             free(job[made].ws.points);
+            free(job[made].ws.offset);
+            free(job[made].ws.weight);
+            free(job[made].ws.local);
             rc = facet_error_set(err, FACET_EWORK,
                                  "curvature: out of memory for %zu "
                                  "vertices", nv);
@@ -497,6 +764,9 @@ int curvature_at_vertices_jobs(const struct mesh *mesh, int flip_normals,
     for (int k = 0; k < made; k++) {
         free(job[k].ws.mark);
         free(job[k].ws.points);
+        free(job[k].ws.offset);
+        free(job[k].ws.weight);
+        free(job[k].ws.local);
     }
     return rc;
 }

@@ -133,9 +133,13 @@ listing "options --pareto: the rank 1 options" json \
     'SELECT * FROM options WHERE rank = 1 ORDER BY run, number' --pareto
 listing "options --sort cost --limit 10" json \
     'SELECT * FROM options ORDER BY cost, run, number LIMIT 10' --sort cost --limit 10
-listing "options --sort dp_area,planarity --desc --limit 15" json \
-    'SELECT * FROM options ORDER BY dp_area DESC, planarity DESC, run DESC, number DESC LIMIT 15' \
-    --sort dp_area,planarity --desc --limit 15
+# Sorted on two keys the second of which ties to rounding (planarity 0
+# against 9e-16): the order of the tie rule (README, Decisions: ties), by a
+# brute force over the stored values, not SQL's exact ORDER BY.
+run "$FACET" options "$DB" --run 1 --sort dp_area,planarity --desc --limit 15 --json
+cp "$OUT" "$WORK/listing"
+check "options --sort dp_area,planarity --desc --limit 15: the tie rule's order" \
+    /usr/bin/python3 "$HERE/ties_check.py" order "$DB" 1 dp_area,planarity 1 "$WORK/listing" json
 WHERE='cost < 1.55e6 and dp_area <= 800 or pareto'
 WHERE_SQL='(cost < 1.55e6 AND dp_area <= 800) OR rank = 1'
 same "the --where below selects some but not all options, not only Pareto ones" \
