@@ -65,6 +65,13 @@ static void show_started(void *context, int64_t run)
         fprintf(stderr, "facet: run %lld\n", (long long)run);
 }
 
+/* One line on stderr per warning, before the progress bar starts. */
+static void show_warning(void *context, const char *text)
+{
+    (void)context;
+    fprintf(stderr, "facet: warning: %s\n", text);
+}
+
 /* Fills the design space, method and objectives of *s from the flags. */
 struct search_flags {
     const char *u, *v, *threshold, *method, *evals, *pop, *gens, *seed;
@@ -232,7 +239,7 @@ static int optimize_main(int argc, char **argv, struct facet_error *err)
     struct optimize_view view;
     memset(&view, 0, sizeof view);
     struct study_hooks hooks = {&view, show_stage, show_progress,
-                                stop_requested, show_started};
+                                stop_requested, show_started, show_warning};
     enum optimize_outcome outcome;
     int64_t run = run_number;
     if (resume && surface != NULL)

@@ -76,6 +76,18 @@ static void print_json(const struct run_info *runs,
             json_null(&w);
         json_key(&w, "elapsed"); json_number(&w, r->elapsed);
         json_key(&w, "version"); json_string(&w, r->version);
+        /* What the run warned of when it began, one string each. */
+        json_key(&w, "warnings");
+        json_begin_array(&w);
+        for (const char *line = r->warnings; *line != '\0';) {
+            const char *end = strchr(line, '\n');
+            size_t len = end ? (size_t)(end - line) : strlen(line);
+            char one[sizeof r->warnings];
+            snprintf(one, sizeof one, "%.*s", (int)len, line);
+            json_string(&w, one);
+            line += len + (end != NULL);
+        }
+        json_end_array(&w);
         /* The bounds of the design space Pareto options sit on (an
          * artefact of the range, not an optimum): [{variable, bound,
          * value, pareto}]. */
@@ -143,7 +155,15 @@ static void print_human(const struct run_info *runs,
     text_table_foot(stdout, &t);
     for (size_t k = 0; k < n; k++) {
         char note[1024];
-        char line[1100];
+        char line[1500];
+        for (const char *at = runs[k].warnings; *at != '\0';) {
+            const char *end = strchr(at, '\n');
+            size_t len = end ? (size_t)(end - at) : strlen(at);
+            snprintf(line, sizeof line, "run %lld: warning: %.*s",
+                     (long long)runs[k].id, (int)len, at);
+            text_wrap(stdout, line, text_table_width(stdout, wide));
+            at += len + (end != NULL);
+        }
         if (study_front_edge_note(&runs[k], &bounds[k], note, sizeof note)) {
             snprintf(line, sizeof line, "run %lld: %s", (long long)runs[k].id,
                      note);

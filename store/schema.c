@@ -153,7 +153,9 @@ static const char schema_v3[] =
 /* Version 4: more of a run's settings, for --resume to take them again.
  * One ALTER TABLE per column: add a column as a line of its own here. */
 static const char schema_v4[] =
-    "ALTER TABLE runs ADD COLUMN uv TEXT;";  /* --uv, NULL: automatic */
+    "ALTER TABLE runs ADD COLUMN uv TEXT;"  /* --uv, NULL: automatic */
+    /* What the designer was warned of when the run began, one per line. */
+    "ALTER TABLE runs ADD COLUMN warnings TEXT NOT NULL DEFAULT '';";
 
 static const char *const migrations[STORE_SCHEMA_VERSION] = {
     schema_v1,

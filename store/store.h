@@ -35,6 +35,10 @@ struct run_info {
     int64_t triangles;         /* after triangulation */
     char uv_method[12];        /* taken: "vt", "grid", "plane", "harmonic" */
     char uv[12];               /* asked for (--uv), or "" for automatic */
+    char warnings[1400];       /* what the run warned of when it began
+                                  (the surface's warnings and a mesh coarser
+                                  than the space's finest panels), one per
+                                  line; "" for none */
     char units[4];             /* m, cm, mm, in, ft */
     char method[16];           /* exhaustive, random, nsga2 */
     uint64_t seed;

@@ -11,6 +11,7 @@
 #include <time.h>
 #include <unistd.h>
 
+#include "core/coarse_mesh.h"
 #include "core/front.h"
 #include "core/parallel.h"
 #include "core/sha256.h"
@@ -502,6 +503,44 @@ static int study_go(struct store *store, struct run_info *run,
     return rc != FACET_OK ? rc : status_rc;
 }
 
+/* The warnings of a new run on the prepared surface: the surface's own,
+ * and a mesh coarser than the finest grid of the space's panels (by the
+ * UV's cover of its box, before any option is evaluated). Each goes to
+ * the warning hook and, one per line, into text (size bytes). */
+static void collect_warnings(const struct surface *surface,
+                             const struct design_space *space,
+                             const struct study_hooks *hooks, char *text,
+                             size_t size)
+{
+    char lines[SURFACE_MAX_WARNINGS + 1][400];
+    int n = 0;
+    for (int k = 0; k < surface->nwarnings; k++)
+        snprintf(lines[n++], sizeof lines[0], "%s", surface->warnings[k]);
+    const struct uv_report *uv = &surface->param.report;
+    double box = (uv->umax - uv->umin) * (uv->vmax - uv->vmin);
+    double fill = box > 0 ? uv->uv_area / box : 1;
+    double side = grid_panel_side(surface->mesh.area, fill, space->u_max,
+                                  space->v_max);
+    char grid[80];
+    snprintf(grid, sizeof grid, "the finest grid of the space, %d x %d",
+             space->u_max, space->v_max);
+    double facet = mesh_facet_size(&surface->mesh);
+    if (facet > 0 && coarse_mesh_warning(facet, side, grid, lines[n],
+                                         sizeof lines[0]))
+        n++;
+    size_t used = 0;
+    text[0] = '\0';
+    for (int k = 0; k < n; k++) {
+        if (hooks != NULL && hooks->warning != NULL)
+            hooks->warning(hooks->context, lines[k]);
+        int wrote = snprintf(text + used, size - used, "%s%s",
+                             used ? "\n" : "", lines[k]);
+        if (wrote < 0 || (size_t)wrote >= size - used)
+            break;
+        used += (size_t)wrote;
+    }
+}
+
 int study_start(struct store *store, const struct study_request *request,
                 const struct study_hooks *hooks, int64_t *run_id,
                 enum optimize_outcome *outcome, struct facet_error *err)
@@ -541,6 +580,8 @@ int study_start(struct store *store, const struct study_request *request,
         surface_close(&surface);
         return rc;
     }
+    collect_warnings(&surface, &s->space, hooks, run.warnings,
+                     sizeof run.warnings);
     snprintf(run.units, sizeof run.units, "%s",
              mesh_units_name(request->mesh.units));
     run.surface_area = surface.mesh.area;

@@ -30,6 +30,11 @@ struct study_hooks {
     int (*should_stop)(void *context);
     /* The run's id, once it is recorded (the TUI follows it live). */
     void (*started)(void *context, int64_t run);
+    /* One thing the designer must know before trusting the run's numbers
+     * (a surface warning, a mesh coarser than the finest panels), as it
+     * is found; the same lines are stored with the run (runs.warnings).
+     * NULL: not told. */
+    void (*warning)(void *context, const char *text);
 };
 
 /* What a new run is made of. */

@@ -55,6 +55,15 @@ static void on_started(void *context, int64_t run)
     pthread_mutex_unlock(&job->lock);
 }
 
+static void on_warning(void *context, const char *text)
+{
+    struct tui_job *job = context;
+    pthread_mutex_lock(&job->lock);
+    if (job->state.warning[0] == '\0')
+        snprintf(job->state.warning, sizeof job->state.warning, "%s", text);
+    pthread_mutex_unlock(&job->lock);
+}
+
 static void *work(void *context)
 {
     struct tui_job *job = context;
@@ -66,7 +75,7 @@ static void *work(void *context)
     int rc = store_open(job->db_path, &store, &err);
     if (rc == FACET_OK) {
         struct study_hooks hooks = {job, on_stage, on_progress,
-                                    on_should_stop, on_started};
+                                    on_should_stop, on_started, on_warning};
         if (job->resume > 0) {
             run = job->resume;
             rc = study_resume(store, run, &hooks, &outcome, &err);

@@ -20,6 +20,7 @@ struct tui_job_state {
     int64_t run;          /* the run's id once recorded, else 0 */
     int64_t done, total;  /* options */
     char stage[128];      /* "preparing the surface", ... */
+    char warning[400];    /* the run's first warning (study_hooks), or "" */
     int stopping;         /* stop was asked */
     int finished;         /* the thread has ended */
     int rc;               /* its result, when finished */

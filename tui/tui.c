@@ -344,6 +344,9 @@ static int poll_job(struct tui_app *app)
                    "facet optimize --db %s --resume %lld goes on",
                    (long long)st.run, (long long)st.done, app->db_path,
                    (long long)st.run);
+    else if (st.warning[0] != '\0')
+        tui_status(app, "run %lld done: %lld options; warning: %s",
+                   (long long)st.run, (long long)st.total, st.warning);
     else
         tui_status(app, "run %lld done: %lld options", (long long)st.run,
                    (long long)st.total);
