@@ -450,6 +450,7 @@ static void test_resume_forced_uv(void **state)
     int64_t automatic = finished_run(store, &request);
     assert_int_equal(store_run_get(store, automatic, &info, &err), FACET_OK);
     assert_string_equal(info.uv, "");
+    assert_string_equal(info.warnings, "");  /* the column's default */
     assert_string_equal(info.uv_method, "vt");
     struct option_row *a, *b;
     size_t na, nb, differ = 0;
@@ -597,7 +598,7 @@ static void test_migrates_older_schema(void **state)
               "DROP INDEX options_by_fp_area; DROP INDEX options_by_sp_area;"
               "DROP INDEX options_by_nu; DROP INDEX options_by_nv;"
               "DROP INDEX options_by_threshold;"
-              "ALTER TABLE runs DROP COLUMN uv;"
+              "ALTER TABLE runs DROP COLUMN uv; ALTER TABLE runs DROP COLUMN warnings;"
               "PRAGMA user_version = 1;");
     assert_int_equal(store_open(path, &store, &err), FACET_OK);
     struct run_info info;
@@ -633,7 +634,8 @@ static void test_migrates_v3(void **state)
     struct study_request request;
     int64_t old = finished_run(store, &request);
     store_close(store);
-    sql(path, "ALTER TABLE runs DROP COLUMN uv; PRAGMA user_version = 3;");
+    sql(path, "ALTER TABLE runs DROP COLUMN uv; ALTER TABLE runs DROP COLUMN warnings;"
+              " PRAGMA user_version = 3;");
     assert_int_equal(store_open(path, &store, &err), FACET_OK);
     struct run_info info;
     assert_int_equal(store_run_get(store, old, &info, &err), FACET_OK);
