@@ -14,6 +14,7 @@
 #include "option_text.h"
 #include "core/coarse_mesh.h"
 #include "core/option.h"
+#include "core/outfile.h"
 #include "core/report.h"
 
 /* Parses "37x49" into nu, nv. */
@@ -65,32 +66,32 @@ static void print_human(const struct surface *s,
     option_text_map(stdout, p);
 }
 
-/* Writes the CSV schedule to path through path.partial, so that a failure
- * never leaves a half-written schedule. */
+/* Writes the CSV schedule to path and the option's totals beside it
+ * (PATH less .csv, plus -totals.csv), each through FILE.partial, so that a
+ * failure never leaves a half-written schedule; both are replaced when
+ * they exist, as a schedule is remade. */
 static int write_csv(const char *path, const struct panelization *p,
-                     struct facet_error *err)
+                     const struct option_totals *t, struct facet_error *err)
 {
-    char partial[4096];
-    if (snprintf(partial, sizeof partial, "%s.partial", path) >=
-        (int)sizeof partial)
-        return facet_error_set(err, FACET_EINPUT, "--csv: path too long");
-    FILE *out = fopen(partial, "w");
-    if (out == NULL)
-        return facet_error_set(err, FACET_EINPUT, "--csv: cannot write %s: %s",
-                               path, strerror(errno));
-    report_csv(out, p);
-    int failed = ferror(out);
-    if (fclose(out) != 0 || failed) {
-        remove(partial);
-        return facet_error_set(err, FACET_EWORK, "--csv: writing %s failed",
-                               path);
-    }
-    if (rename(partial, path) != 0) {
-        remove(partial);
-        return facet_error_set(err, FACET_EWORK, "--csv: cannot write %s: %s",
-                               path, strerror(errno));
-    }
-    return FACET_OK;
+    char totals[4096];
+    int rc = outfile_sibling(path, ".csv", "-totals.csv", totals,
+                             sizeof totals, err);
+    struct outfile schedule, sums;
+    memset(&sums, 0, sizeof sums);
+    if (rc == FACET_OK)
+        rc = outfile_open(&schedule, path, 1, err);
+    if (rc == FACET_OK && (rc = outfile_open(&sums, totals, 1, err)) != 0)
+        outfile_abort(&schedule);
+    if (rc != FACET_OK)
+        return rc;
+    report_csv(schedule.out, p);
+    report_totals_csv(sums.out, t);
+    rc = outfile_commit(&schedule, err);
+    if (rc == FACET_OK)
+        rc = outfile_commit(&sums, err);
+    else
+        outfile_abort(&sums);
+    return rc;
 }
 
 static int classify_run(int argc, char **argv, struct facet_error *err)
@@ -145,7 +146,7 @@ static int classify_run(int argc, char **argv, struct facet_error *err)
     if (rc == FACET_OK)
         rc = option_evaluate(&surface, &params, &panels, &totals, err);
     if (rc == FACET_OK && csv != NULL)
-        rc = write_csv(csv, &panels, err);
+        rc = write_csv(csv, &panels, &totals, err);
     char coarse[400];
     int is_coarse = 0;
     if (rc == FACET_OK) {

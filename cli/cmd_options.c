@@ -91,8 +91,11 @@ static int list_row(void *context, int64_t run, const struct option_row *o)
             if (strcmp(store_option_columns[k], "run") == 0)
                 continue;
             double value = store_option_value(o, store_option_columns[k]);
-            char text[NUMBER_EXACT_SIZE];
-            number_exact(text, value);  /* "inf" at a front's end */
+            char text[NUMBER_EXACT_SIZE] = "";
+            /* Crowding at a front's end is infinite: an empty field, as
+             * SQL's NULL and JSON's null say it. */
+            if (isfinite(value))
+                number_exact(text, value);
             printf(",%s", text);
         }
         putchar('\n');

@@ -192,17 +192,7 @@ void export_obj_write_mtl(FILE *out)
 int export_obj_mtl_path(const char *path, char *mtl, size_t size,
                         struct facet_error *err)
 {
-    size_t length = strlen(path);
-    if (length >= 4 && path[length - 4] == '.' &&
-        tolower((unsigned char)path[length - 3]) == 'o' &&
-        tolower((unsigned char)path[length - 2]) == 'b' &&
-        tolower((unsigned char)path[length - 1]) == 'j')
-        length -= 4;
-    if (length + sizeof ".mtl" > size)
-        return facet_error_set(err, FACET_EINPUT, "path too long: %s", path);
-    memcpy(mtl, path, length);
-    memcpy(mtl + length, ".mtl", sizeof ".mtl");
-    return FACET_OK;
+    return outfile_sibling(path, ".obj", ".mtl", mtl, size, err);
 }
 
 int export_obj_save(const char *path, int force,

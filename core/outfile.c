@@ -6,6 +6,7 @@
 #include <errno.h>
 #include <stdlib.h>
 #include <string.h>
+#include <strings.h>
 #include <unistd.h>
 
 int outfile_check(const char *path, int force, struct facet_error *err)
@@ -85,4 +86,19 @@ void outfile_abort(struct outfile *f)
         remove(f->partial);
     }
     outfile_release(f);
+}
+
+int outfile_sibling(const char *path, const char *extension,
+                    const char *suffix, char *out, size_t size,
+                    struct facet_error *err)
+{
+    size_t length = strlen(path), ext = strlen(extension);
+    if (length >= ext && strcasecmp(path + length - ext, extension) == 0)
+        length -= ext;
+    size_t tail = strlen(suffix);
+    if (length + tail + 1 > size)
+        return facet_error_set(err, FACET_EINPUT, "path too long: %s", path);
+    memcpy(out, path, length);
+    memcpy(out + length, suffix, tail + 1);
+    return FACET_OK;
 }

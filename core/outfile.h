@@ -43,4 +43,11 @@ int outfile_commit(struct outfile *f, struct facet_error *err);
  * nothing on a zeroed or already released f. */
 void outfile_abort(struct outfile *f);
 
+/* The path of a file written beside path: path less a final extension
+ * (".obj", any case) plus suffix (".mtl", "-totals.csv"), into out (size
+ * bytes). Returns FACET_OK or FACET_EINPUT when it does not fit. */
+int outfile_sibling(const char *path, const char *extension,
+                    const char *suffix, char *out, size_t size,
+                    struct facet_error *err);
+
 #endif

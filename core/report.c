@@ -130,13 +130,15 @@ static void csv_number(FILE *out, double x)
 
 void report_csv(FILE *out, const struct panelization *panels)
 {
-    fputs("i,j,class,type,area_m2,deviation_m,k1,k2,K,H,eps,p_dist_m4,"
-          "diameter_m,trimmed,corner_planarity_m,price_usd_m2,cost_usd\n",
-          out);
+    fputs("id,i,j,class,type,area_m2,deviation_m,k1,k2,K,H,eps,p_dist_m4,"
+          "diameter_m,trimmed,corner_planarity_m,price_usd_m2,cost_usd", out);
+    for (int c = 0; c < 4; c++)
+        fprintf(out, ",c%d_x_m,c%d_y_m,c%d_z_m", c, c, c);
+    fputc('\n', out);
     for (size_t n = 0; n < panels->npanels; n++) {
         const struct panel *p = &panels->panels[n];
-        fprintf(out, "%d,%d,%s,%s", p->i, p->j, panel_class_name(p->class),
-                panel_type_name(p->type));
+        fprintf(out, "%zu,%d,%d,%s,%s", n + 1, p->i, p->j,
+                panel_class_name(p->class), panel_type_name(p->type));
         csv_number(out, p->area);
         csv_number(out, p->deviation);
         csv_number(out, p->k1);
@@ -150,39 +152,30 @@ void report_csv(FILE *out, const struct panelization *panels)
         csv_number(out, p->corner_planarity);
         csv_number(out, p->price);
         csv_number(out, p->cost);
-        fputc('\n', out);
-    }
-}
-
-void report_schedule_csv(FILE *out, const struct panelization *panels,
-                         const struct option_totals *totals)
-{
-    fputs("id,i,j,type,class,area_m2,deviation_mm,k1,k2,K,H,"
-          "unit_price_usd_m2,cost_usd", out);
-    for (int c = 0; c < 4; c++)
-        fprintf(out, ",c%d_x,c%d_y,c%d_z", c, c, c);
-    fputc('\n', out);
-    for (size_t n = 0; n < panels->npanels; n++) {
-        const struct panel *p = &panels->panels[n];
-        fprintf(out, "%zu,%d,%d,%s,%s", n + 1, p->i, p->j,
-                panel_type_name(p->type), panel_class_name(p->class));
-        csv_number(out, p->area);
-        csv_number(out, p->deviation * 1000);
-        csv_number(out, p->k1);
-        csv_number(out, p->k2);
-        csv_number(out, p->K);
-        csv_number(out, p->H);
-        csv_number(out, p->price);
-        csv_number(out, p->cost);
         for (int c = 0; c < 4; c++)
             for (int d = 0; d < 3; d++)
                 csv_number(out, p->corner[c][d]);
         fputc('\n', out);
     }
-    fprintf(out, "total,,,,%zu panels", totals->panels);
-    csv_number(out, totals->area);
-    csv_number(out, totals->max_deviation * 1000);
-    fputs(",,,,,", out);
-    csv_number(out, totals->cost);
-    fputs(",,,,,,,,,,,,\n", out);
+}
+
+void report_totals_csv(FILE *out, const struct option_totals *t)
+{
+    fputs("panels,fp_count,sp_count,dp_count,area_m2,fp_area_m2,sp_area_m2,"
+          "dp_area_m2,fp_cost_usd,sp_cost_usd,dp_cost_usd,cost_usd,"
+          "planarity_m,max_deviation_m,max_panel_area_m2,p_dist_m4,"
+          "feasible\n", out);
+    fprintf(out, "%zu,%zu,%zu,%zu", t->panels, t->count[TYPE_FP],
+            t->count[TYPE_SP], t->count[TYPE_DP]);
+    csv_number(out, t->area);
+    for (int k = 0; k < TYPE_COUNT; k++)
+        csv_number(out, t->area_of[k]);
+    for (int k = 0; k < TYPE_COUNT; k++)
+        csv_number(out, t->cost_of[k]);
+    csv_number(out, t->cost);
+    csv_number(out, t->planarity);
+    csv_number(out, t->max_deviation);
+    csv_number(out, t->max_panel_area);
+    csv_number(out, t->p_dist);
+    fprintf(out, ",%d\n", t->feasible != 0);
 }

@@ -30,17 +30,20 @@ void report_json(FILE *out, const struct report_source *source,
                  const struct panelization *panels,
                  const struct option_totals *totals);
 
-/* Writes the panel schedule: a header row, then one row per panel. */
+/* Writes the panel schedule, the one layout of `facet classify --csv` and
+ * `facet export --csv`: a header row, then one row per panel: id (its row
+ * number from 1), i, j, class, type, area_m2, deviation_m, k1, k2 (1/m),
+ * K (1/m^2), H, eps (1/m), p_dist_m4, diameter_m, trimmed (0/1),
+ * corner_planarity_m, price_usd_m2, cost_usd, and the four cell corners
+ * on the surface c0_x_m ... c3_z_m (empty where off it, as
+ * corner_planarity_m is unless all four are on it). One unit per column,
+ * named in its header; every number reads back exactly. */
 void report_csv(FILE *out, const struct panelization *panels);
 
-/* Writes the panel schedule a cost plan takes: a header row; one row per
- * panel (id = its row number from 1, i, j, type, class, area m^2,
- * deviation mm, k1, k2 1/m, K 1/m^2, H 1/m, unit price USD/m^2, cost USD,
- * the four cell corners on the surface, m, empty where off it); then a
- * totals row (id "total", class "N panels", the area, the largest
- * deviation among the FP and SP panels, the cost) with the numbers of
- * totals, which `facet show` prints. */
-void report_schedule_csv(FILE *out, const struct panelization *panels,
-                         const struct option_totals *totals);
+/* Writes the option's totals as a CSV of its own (a header row and one
+ * row: panels, counts, areas and costs per type, cost, planarity, largest
+ * deviation, largest panel, P_dist, feasible), the numbers `facet show`
+ * prints, so that a schedule holds panels only. */
+void report_totals_csv(FILE *out, const struct option_totals *totals);
 
 #endif

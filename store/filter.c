@@ -32,11 +32,19 @@
 const char *const store_option_columns[] = {
     "number", "generation", "nu", "nv", "threshold_mm", "panels",
     "fp_count", "sp_count", "dp_count", "fp_area", "sp_area", "dp_area",
-    "area", "cost", "planarity", "max_deviation", "max_panel_area",
-    "p_dist", "feasible", "rank", "crowding", "knee", "run", NULL,
+    "area", "fp_cost", "sp_cost", "dp_cost", "cost", "planarity",
+    "max_deviation", "max_panel_area", "p_dist", "feasible",
+    "convex_feature_curve_count", "convex_feature_curve_area",
+    "saddle_count", "saddle_area",
+    "concave_feature_curve_count", "concave_feature_curve_area",
+    "ruled_convex_count", "ruled_convex_area", "flat_count", "flat_area",
+    "ruled_concave_count", "ruled_concave_area",
+    "convex_round_count", "convex_round_area",
+    "concave_round_count", "concave_round_area",
+    "rank", "crowding", "knee", "run", NULL,
 };
 
-enum { COLUMN_COUNT = 23 };
+enum { COLUMN_COUNT = STORE_OPTION_COLUMNS };
 _Static_assert(sizeof store_option_columns / sizeof *store_option_columns ==
                    COLUMN_COUNT + 1,
                "column_example must follow store_option_columns");
@@ -47,8 +55,11 @@ _Static_assert(sizeof store_option_columns / sizeof *store_option_columns ==
 static const char *const column_example[COLUMN_COUNT] = {
     "10", "5", "30", "30", "5", "500",
     "100", "100", "100", "100", "100", "900",
-    "1200", "1e6", "0.01", "0.01", "4",
-    "0.5", NULL, "2", "0.5", NULL, "1",
+    "1200", "5e5", "5e5", "5e5", "1e6", "0.01",
+    "0.01", "4", "0.5", NULL,
+    "100", "100", "100", "100", "100", "100", "100", "100",
+    "100", "100", "100", "100", "100", "100", "100", "100",
+    "2", "0.5", NULL, "1",
 };
 
 /* Other names a user may type for a column. */
@@ -493,12 +504,24 @@ static int fail_unknown_name(struct parser *p, const struct token *t)
     if (near != NULL)
         return fail_at(p, t->at, "unknown column '%s' (did you mean %s?)",
                        shown(p, t, buf), near);
+    /* The per-class columns are named by their pattern, so the list fits
+     * one line. */
     char list[400];
     size_t used = 0;
-    for (size_t k = 0; k < n && used < sizeof list; k++)
-        used += (size_t)snprintf(list + used, sizeof list - used, "%s%s",
-                                 k == 0 ? "" : ", ", names[k]);
-    return fail_at(p, t->at, "unknown column '%s' (columns: %s)",
+    for (size_t k = 0; k < n && used < sizeof list; k++) {
+        size_t len = strlen(names[k]);
+        int per_class = 0;
+        for (int c = 0; c < CLASS_COUNT && !per_class; c++) {
+            const char *class = panel_class_name((enum panel_class)c);
+            per_class = strncmp(names[k], class, strlen(class)) == 0 &&
+                        len > strlen(class) && names[k][strlen(class)] == '_';
+        }
+        if (!per_class)
+            used += (size_t)snprintf(list + used, sizeof list - used, "%s%s",
+                                     used == 0 ? "" : ", ", names[k]);
+    }
+    return fail_at(p, t->at, "unknown column '%s' (columns: %s, and "
+                   "CLASS_count, CLASS_area for each class, e.g. saddle_area)",
                    shown(p, t, buf), list);
 }
 

@@ -246,11 +246,14 @@ int store_options_query_rows(struct store *store,
  * caller can refuse it before printing anything. */
 int store_options_sort_check(const char *sort, struct facet_error *err);
 
-/* The option columns a filter or sort may name, NULL-terminated:
+/* The option columns a filter or sort may name, NULL-terminated: every
+ * column of the options table (README), in its order but run last:
  * number, generation, nu, nv, threshold_mm, panels, fp_count, sp_count,
- * dp_count, fp_area, sp_area, dp_area, area, cost, planarity,
- * max_deviation, max_panel_area, p_dist, feasible, rank, crowding, knee,
+ * dp_count, fp_area, sp_area, dp_area, area, fp_cost, sp_cost, dp_cost,
+ * cost, planarity, max_deviation, max_panel_area, p_dist, feasible,
+ * CLASS_count and CLASS_area for the eight classes, rank, crowding, knee,
  * run. */
+#define STORE_OPTION_COLUMNS 42
 extern const char *const store_option_columns[];
 
 /* The value of column (a name of store_option_columns other than run) of

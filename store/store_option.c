@@ -5,6 +5,7 @@
  */
 #include "store_db.h"
 
+#include <assert.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -268,21 +269,28 @@ int store_options_set_pareto(struct store *store, int64_t run,
 double store_option_value(const struct option_row *o, const char *column)
 {
     const struct option_totals *t = &o->totals;
-    static const char *const names[] = {
-        "number", "generation", "nu", "nv", "threshold_mm", "panels",
-        "fp_count", "sp_count", "dp_count", "fp_area", "sp_area", "dp_area",
-        "area", "cost", "planarity", "max_deviation", "max_panel_area",
-        "p_dist", "feasible", "rank", "crowding", "knee", NULL};
-    const double values[] = {
+    /* In the order of store_option_columns. */
+    double values[STORE_OPTION_COLUMNS + 1] = {
         (double)o->number, o->generation, o->nu, o->nv, o->threshold_mm,
         (double)t->panels, (double)t->count[TYPE_FP],
         (double)t->count[TYPE_SP], (double)t->count[TYPE_DP],
         t->area_of[TYPE_FP], t->area_of[TYPE_SP], t->area_of[TYPE_DP],
-        t->area, t->cost, t->planarity, t->max_deviation, t->max_panel_area,
-        t->p_dist, t->feasible != 0, o->rank, o->crowding, o->knee != 0};
-    for (int k = 0; names[k] != NULL; k++)
-        if (strcmp(names[k], column) == 0)
-            return values[k];
+        t->area, t->cost_of[TYPE_FP], t->cost_of[TYPE_SP],
+        t->cost_of[TYPE_DP], t->cost, t->planarity, t->max_deviation,
+        t->max_panel_area, t->p_dist, t->feasible != 0};
+    int k = 22;
+    for (int c = 0; c < CLASS_COUNT; c++) {
+        values[k++] = (double)t->class_count[c];
+        values[k++] = t->class_area[c];
+    }
+    values[k++] = o->rank;
+    values[k++] = o->crowding;
+    values[k++] = o->knee != 0;
+    values[k++] = NAN;  /* run: the row does not hold it */
+    assert(k == STORE_OPTION_COLUMNS);
+    for (int c = 0; store_option_columns[c] != NULL; c++)
+        if (strcmp(store_option_columns[c], column) == 0)
+            return values[c];
     return NAN;
 }
 

@@ -98,12 +98,16 @@ int study_export(struct store *store, int64_t run, int64_t number,
     if (!r->obj && !r->csv && !r->json && !r->svg)
         return facet_error_set(err, FACET_EINPUT,
             "export: say what to write: OBJ, CSV, JSON and/or SVG");
-    char mtl[4096] = "";
+    char mtl[4096] = "", totals[4096] = "";
     int rc;
     if (r->obj && (rc = export_obj_mtl_path(r->obj, mtl, sizeof mtl, err)))
         return rc;
+    if (r->csv && (rc = outfile_sibling(r->csv, ".csv", "-totals.csv",
+                                        totals, sizeof totals, err)))
+        return rc;
     const char *target[EXPORT_FILES] = {r->obj, r->obj ? mtl : NULL, r->csv,
-                                        r->json, r->svg};
+                                        r->csv ? totals : NULL, r->json,
+                                        r->svg};
     struct outfile file[EXPORT_FILES];
     int open[EXPORT_FILES] = {0};
     if ((rc = open_all(target, r->force, file, open, err)))
@@ -118,8 +122,10 @@ int study_export(struct store *store, int64_t run, int64_t number,
                          &p.geometry, &p.panels);
         export_obj_write_mtl(file[EXPORT_MTL].out);
     }
-    if (rc == FACET_OK && r->csv)
-        report_schedule_csv(file[EXPORT_CSV].out, &p.panels, &p.totals);
+    if (rc == FACET_OK && r->csv) {
+        report_csv(file[EXPORT_CSV].out, &p.panels);
+        report_totals_csv(file[EXPORT_TOTALS].out, &p.totals);
+    }
     if (rc == FACET_OK && r->json) {
         struct report_source source;
         study_option_source(&p, &source);
@@ -138,8 +144,8 @@ int study_export(struct store *store, int64_t run, int64_t number,
     }
     /* The MTL before the OBJ: an OBJ never names a missing MTL. */
     static const int order[EXPORT_FILES] = {EXPORT_MTL, EXPORT_OBJ,
-                                            EXPORT_CSV, EXPORT_JSON,
-                                            EXPORT_SVG};
+                                            EXPORT_CSV, EXPORT_TOTALS,
+                                            EXPORT_JSON, EXPORT_SVG};
     int n = 0;
     for (int k = 0; k < EXPORT_FILES; k++) {
         int f = order[k];

@@ -45,15 +45,16 @@ void study_option_free(struct study_option *option);
 void study_option_source(const struct study_option *option,
                          struct report_source *out);
 
-enum export_file { EXPORT_OBJ, EXPORT_MTL, EXPORT_CSV, EXPORT_JSON,
-                   EXPORT_SVG, EXPORT_FILES };
+enum export_file { EXPORT_OBJ, EXPORT_MTL, EXPORT_CSV, EXPORT_TOTALS,
+                   EXPORT_JSON, EXPORT_SVG, EXPORT_FILES };
 
 struct export_request {
     const char *obj, *csv, *json, *svg;   /* paths; NULL: not wanted */
     int force;                            /* overwrite existing files */
     struct svg_map_options map;           /* view and colouring of the SVG */
     /* Set by study_export: the paths written, in the order written (the
-     * MTL is obj's name with .mtl), "" for those not wanted. */
+     * MTL is obj's name with .mtl, the CSV's totals csv's name less .csv
+     * with -totals.csv), "" for those not wanted. */
     char written[EXPORT_FILES][4096];
 };
 

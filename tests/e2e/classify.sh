@@ -58,7 +58,7 @@ json_check "flipping swaps convex and concave" \
     'all(p["class"] in ("convex_feature_curve","concave_feature_curve","saddle") for p in j["panels"])'
 
 expect "--csv schedule" 0 "$FACET" classify "$WORK/plane.obj" --grid 4x3 --csv "$WORK/plane.csv"
-if [ "$(wc -l <"$WORK/plane.csv")" -eq 13 ] && head -1 "$WORK/plane.csv" | grep -q '^i,j,class,type,area_m2'; then
+if [ "$(wc -l <"$WORK/plane.csv")" -eq 13 ] && head -1 "$WORK/plane.csv" | grep -q '^id,i,j,class,type,area_m2,deviation_m,'; then
     pass "csv has a header and one row per panel"
 else
     fail "csv has a header and one row per panel"

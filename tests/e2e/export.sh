@@ -66,8 +66,12 @@ check "obj: an object per type, full-cell FP panels as planar quads, no zero-are
     $CHECK obj_panels "$E/k.obj" "$DB" 1 "$KNEE"
 
 # --- CSV --------------------------------------------------------------------
-check "csv: header, one row per panel, totals row = options row, costs add up" \
+check "csv: the one schedule layout, one row per panel, totals beside it = options row" \
     $CHECK csv "$E/k.csv" "$DB" 1 "$KNEE"
+GRIDK=$(sqlite3 "$DB" "SELECT nu || 'x' || nv FROM options WHERE run = 1 AND number = $KNEE")
+"$FACET" classify "$WORK/roof.obj" --grid "$GRIDK" --csv "$E/classify.csv" >/dev/null 2>&1
+same "classify --csv and export --csv have one layout" "$(head -n 1 "$E/classify.csv")" "$(head -n 1 "$E/k.csv")"
+same "classify --csv writes its totals beside the schedule" "$(head -c 30 "$E/classify-totals.csv")" "$(head -c 30 "$E/k-totals.csv")"
 
 # --- JSON -------------------------------------------------------------------
 "$FACET" classify "$WORK/roof.obj" --grid "$GRID" --json >"$WORK/classify.json" 2>/dev/null

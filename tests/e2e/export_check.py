@@ -113,29 +113,51 @@ def check_obj(obj, mtl, db, run, number):
         fail("FP area %.12g, option says %.12g" % (fp, want))
 
 
+def connect_db(path):
+    return sqlite3.connect("file:%s?mode=ro" % path, uri=True)
+
+
 def check_csv(path, db, run, number):
+    """The schedule (panels only, one unit per column, named in the
+    header) and its totals beside it (PATH-totals.csv) against the
+    options row and the stored panels."""
     o = option_row(db, run, number)
-    rows = list(csv.reader(open(path, newline="")))
-    header = rows[0]
-    for col in ("i", "j", "type", "area_m2", "cost_usd"):
-        if col not in header:
-            fail("csv header lacks %s: %s" % (col, header))
-    a, c = header.index("area_m2"), header.index("cost_usd")
-    body = [r for r in rows[1:] if r and r[0] != "total"]
-    totals = [r for r in rows[1:] if r and r[0] == "total"]
-    if len(body) != o["panels"]:
-        fail("%d panel rows, want %d" % (len(body), o["panels"]))
-    if len(totals) != 1 or rows[-1][0] != "total":
-        fail("want one totals row, last: %s" % totals)
+    rows = list(csv.DictReader(open(path, newline="")))
+    want = ["id", "i", "j", "class", "type", "area_m2", "deviation_m", "k1",
+            "k2", "K", "H", "eps", "p_dist_m4", "diameter_m", "trimmed",
+            "corner_planarity_m", "price_usd_m2", "cost_usd"] + [
+            "c%d_%s_m" % (c, x) for c in range(4) for x in "xyz"]
+    header = list(rows[0].keys()) if rows else []
+    if header != want:
+        fail("csv header %s, want %s" % (header, want))
+    if len(rows) != o["panels"]:
+        fail("%d panel rows, want %d" % (len(rows), o["panels"]))
+    if any(r["id"] == "total" for r in rows):
+        fail("a totals row in the panel schedule")
+    totals_path = path[:-4] + "-totals.csv"
+    totals = list(csv.DictReader(open(totals_path, newline="")))
+    if len(totals) != 1:
+        fail("%s: %d rows, want one" % (totals_path, len(totals)))
     t = totals[0]
-    if not close(float(t[a]), o["area"], 1e-6):
-        fail("totals area %s, option %.12g" % (t[a], o["area"]))
-    if not close(float(t[c]), o["cost"], 1e-6):
-        fail("totals cost %s, option %.12g" % (t[c], o["cost"]))
-    s = sum(float(r[c]) for r in body)
-    if not close(s, float(t[c]), 1e-6):
-        fail("panel costs add to %.12g, totals row %s" % (s, t[c]))
-    if len({(r[header.index("i")], r[header.index("j")]) for r in body}) != len(body):
+    for key, col in (("area_m2", "area"), ("cost_usd", "cost"),
+                     ("fp_area_m2", "fp_area"), ("dp_cost_usd", "dp_cost"),
+                     ("planarity_m", "planarity"),
+                     ("max_deviation_m", "max_deviation"),
+                     ("panels", "panels"), ("feasible", "feasible")):
+        if float(t[key]) != o[col]:
+            fail("totals %s %s, options row %r" % (key, t[key], o[col]))
+    s = sum(float(r["cost_usd"]) for r in rows)
+    if not close(s, float(t["cost_usd"]), 1e-9):
+        fail("panel costs add to %.12g, totals %s" % (s, t["cost_usd"]))
+    stored = {(i, j): d for i, j, d in connect_db(db).execute(
+        "SELECT i, j, deviation FROM panels WHERE run = ? AND option = ?",
+        (int(run), int(number)))}
+    for r in rows:
+        d = stored.get((int(r["i"]), int(r["j"])))
+        if d is not None and float(r["deviation_m"]) != d:
+            fail("panel %s %s deviation_m %s, stored %r" % (r["i"], r["j"],
+                                                            r["deviation_m"], d))
+    if len({(r["i"], r["j"]) for r in rows}) != len(rows):
         fail("csv panel (i,j) repeated")
 
 

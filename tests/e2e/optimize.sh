@@ -163,9 +163,17 @@ run "$FACET" options "$DB" --json
 json_check "options --json: crowding null exactly where stored NULL" \
     "[o['number'] for o in j if o['crowding'] is None] == [$ENDS]"
 run "$FACET" options "$DB" --csv
-same "options --csv: crowding inf exactly where stored NULL" \
-    "$(awk -F, 'NR == 1 { for (k = 1; k <= NF; k++) if ($k == "crowding") c = k } NR > 1 && $c == "inf" { print $2 }' "$OUT" | paste -sd, -)" \
+same "options --csv: crowding empty exactly where stored NULL (as JSON's null)" \
+    "$(awk -F, 'NR == 1 { for (k = 1; k <= NF; k++) if ($k == "crowding") c = k } NR > 1 && $c == "" { print $2 }' "$OUT" | paste -sd, -)" \
     "$ENDS"
+if grep -q 'inf' "$OUT"; then fail "options --csv: no inf anywhere"; else pass "options --csv: no inf anywhere"; fi
+run "$FACET" options "$DB" --csv
+same "options --csv: every column of the options table, in its order (run first)" \
+    "$(head -n 1 "$OUT")" "$(sqlite3 "$DB" "SELECT group_concat(name) FROM (SELECT name FROM pragma_table_info('options') ORDER BY name = 'run' DESC, cid)")"
+run "$FACET" options "$DB" --json
+cols=$(sqlite3 "$DB" "SELECT group_concat(name) FROM pragma_table_info('options')")
+json_check "options --json: every column of the options table" \
+    "sorted(j[0]) == sorted('$cols'.split(','))"
 expect "options table with --where" 0 "$FACET" options "$DB" --where "$WHERE" --sort cost
 stdout_has "the table's count is the SQL count" \
     "^\($(sql "$DB" "SELECT count(*) FROM options WHERE $WHERE_SQL") options where "

@@ -27,11 +27,17 @@ import math
 import sqlite3
 import sys
 
+# Every column of the options table but run (which comes first), in the
+# table's order: what --json and --csv must carry (README).
 COLUMNS = ["number", "generation", "nu", "nv", "threshold_mm", "panels",
            "fp_count", "sp_count", "dp_count", "fp_area", "sp_area",
-           "dp_area", "area", "cost", "planarity", "max_deviation",
-           "max_panel_area", "p_dist", "feasible", "rank", "crowding",
-           "knee"]
+           "dp_area", "area", "fp_cost", "sp_cost", "dp_cost", "cost",
+           "planarity", "max_deviation", "max_panel_area", "p_dist",
+           "feasible"] + [c + s for c in (
+               "convex_feature_curve", "saddle", "concave_feature_curve",
+               "ruled_convex", "flat", "ruled_concave", "convex_round",
+               "concave_round") for s in ("_count", "_area")] + [
+           "rank", "crowding", "knee"]
 
 
 def connect(path):
@@ -286,7 +292,7 @@ def check_listing(path, form, listing, sql):
             header = next(reader)
             if header != ["run"] + COLUMNS:
                 problem("csv header %s" % header)
-            got = [{k: (None if v == "inf" else float(v))
+            got = [{k: (None if v == "" else float(v))
                     for k, v in zip(header, row)} for row in reader]
     if len(got) != len(want):
         problem("facet options gave %d rows, SQL %d" % (len(got), len(want)))

@@ -97,7 +97,7 @@ def check_order(path, run, sort, descending, listing, form):
         with open(listing, newline="") as f:
             reader = csv.reader(f)
             header = next(reader)
-            got = [{k: (math.inf if v == "inf" else float(v))
+            got = [{k: (math.inf if v == "" else float(v))
                     for k, v in zip(header, row)} for row in reader]
     numbers = [int(g["number"]) for g in got]
     if numbers != want[:len(numbers)] or not numbers:
@@ -175,11 +175,13 @@ def check_schedule(path, run, option, schedule):
     row = dict(db.execute("SELECT * FROM options WHERE run = ? AND "
                           "number = ?", (run, option)).fetchone())
     columns = {"area_m2": "area", "k1": "k1", "k2": "k2", "K": "K",
-               "H": "H", "unit_price_usd_m2": "price", "cost_usd": "cost"}
+               "H": "H", "price_usd_m2": "price", "cost_usd": "cost",
+               "deviation_m": "deviation", "eps": "eps",
+               "p_dist_m4": "p_dist", "diameter_m": "diameter"}
     with open(schedule, newline="") as f:
         reader = csv.DictReader(f)
         rows = list(reader)
-    panels = [r for r in rows if r["id"] != "total"]
+    panels = rows
     if len(panels) != len(stored):
         problem("%d panels in the schedule, %d stored"
                 % (len(panels), len(stored)))
@@ -189,10 +191,8 @@ def check_schedule(path, run, option, schedule):
             if not same_double(float(p[key]), s[col]):
                 problem("panel (%s, %s) %s: written %r, stored %r"
                         % (p["i"], p["j"], key, p[key], s[col]))
-        if not same_double(float(p["deviation_mm"]), s["deviation"] * 1000):
-            problem("panel (%s, %s) deviation_mm %s, stored %r m"
-                    % (p["i"], p["j"], p["deviation_mm"], s["deviation"]))
-    total = [r for r in rows if r["id"] == "total"][0]
+    with open(schedule[:-4] + "-totals.csv", newline="") as f:
+        total = list(csv.DictReader(f))[0]
     for key, col in (("area_m2", "area"), ("cost_usd", "cost")):
         if not same_double(float(total[key]), row[col]):
             problem("totals %s %s, options row %r" % (key, total[key],

@@ -32,8 +32,8 @@ done
 if [ -z "$(find "$WORK" -name '*.partial')" ]; then pass "no .partial left"; else fail "no .partial left"; fi
 groups=$(grep -c '^g panel_' "$WORK/$PREFIX.obj")
 same "the OBJ has one group per panel" "$groups" "$PANELS"
-same "the CSV has one row per panel and a totals row" \
-    "$(($(wc -l <"$WORK/$PREFIX.csv") - 2))" "$PANELS"
+same "the CSV has one row per panel, its totals beside it" \
+    "$(($(wc -l <"$WORK/$PREFIX.csv") - 1)) $(wc -l <"$WORK/$PREFIX-totals.csv")" "$PANELS 2"
 if xmllint --noout "$WORK/$PREFIX.svg" 2>/dev/null; then pass "the map SVG is valid"; else fail "the map SVG is valid"; fi
 same "the map SVG has one mark per panel" "$(grep -o '<path class="panel' "$WORK/$PREFIX.svg" | wc -l)" "$PANELS"
 

@@ -25,7 +25,7 @@
 #include "store/filter_sql.h"
 #include "store/store.h"
 
-enum { NCOLUMNS = 23 };
+enum { NCOLUMNS = STORE_OPTION_COLUMNS };
 
 /* ---- helpers ------------------------------------------------------------- */
 
@@ -129,8 +129,15 @@ static void test_columns_table(void **state)
     const char *expected[] = {
         "number", "generation", "nu", "nv", "threshold_mm", "panels",
         "fp_count", "sp_count", "dp_count", "fp_area", "sp_area", "dp_area",
-        "area", "cost", "planarity", "max_deviation", "max_panel_area",
-        "p_dist", "feasible", "rank", "crowding", "knee", "run",
+        "area", "fp_cost", "sp_cost", "dp_cost", "cost", "planarity",
+        "max_deviation", "max_panel_area", "p_dist", "feasible",
+        "convex_feature_curve_count", "convex_feature_curve_area",
+        "saddle_count", "saddle_area", "concave_feature_curve_count",
+        "concave_feature_curve_area", "ruled_convex_count",
+        "ruled_convex_area", "flat_count", "flat_area", "ruled_concave_count",
+        "ruled_concave_area", "convex_round_count", "convex_round_area",
+        "concave_round_count", "concave_round_area",
+        "rank", "crowding", "knee", "run",
     };
     for (int k = 0; k < NCOLUMNS; k++)
         assert_string_equal(store_option_columns[k], expected[k]);
@@ -516,9 +523,11 @@ static void test_error_positions(void **state)
     expect_error("x < 5", "--where: column 1: unknown column 'x' (columns: "
                            "number, generation, nu, nv, threshold_mm, panels, "
                            "fp_count, sp_count, dp_count, fp_area, sp_area, "
-                           "dp_area, area, cost, planarity, max_deviation, "
-                           "max_panel_area, p_dist, feasible, rank, crowding, "
-                           "knee, run, u, v, threshold, pareto)");
+                           "dp_area, area, fp_cost, sp_cost, dp_cost, cost, "
+                           "planarity, max_deviation, max_panel_area, p_dist, "
+                           "feasible, rank, crowding, knee, run, u, v, "
+                           "threshold, pareto, and CLASS_count, CLASS_area "
+                           "for each class, e.g. saddle_area)");
 }
 
 static void test_nan_and_infinity(void **state)
@@ -799,7 +808,9 @@ static bool integer_column(int k)
     for (size_t j = 0; j < sizeof integers / sizeof *integers; j++)
         if (strcmp(store_option_columns[k], integers[j]) == 0)
             return true;
-    return false;
+    const char *name = store_option_columns[k];
+    size_t n = strlen(name);
+    return n > 6 && strcmp(name + n - 6, "_count") == 0;
 }
 
 enum { NROWS = 400 };
@@ -829,6 +840,21 @@ static void random_rows(struct rng *rng, struct row *rows)
         set(r, "dp_area", (double)rng_below(rng, 2000));
         set(r, "area", 1000 + (double)rng_below(rng, 500));
         set(r, "cost", 1000 * (double)rng_below(rng, 3000));
+        set(r, "fp_cost", 1000 * (double)rng_below(rng, 1000));
+        set(r, "sp_cost", rng_below(rng, 3) == 0 ? 0 : 500 * (double)rng_below(rng, 100));
+        set(r, "dp_cost", 1000 * (double)rng_below(rng, 2000));
+        for (int k = 0; store_option_columns[k] != NULL; k++) {
+            const char *c = store_option_columns[k];
+            size_t n = strlen(c);
+            if (n > 6 && strcmp(c + n - 6, "_count") == 0 &&
+                strcmp(c, "fp_count") && strcmp(c, "sp_count") &&
+                strcmp(c, "dp_count"))
+                r->v[k] = (double)rng_below(rng, 50);
+            else if (n > 5 && strcmp(c + n - 5, "_area") == 0 &&
+                     strcmp(c, "fp_area") && strcmp(c, "sp_area") &&
+                     strcmp(c, "dp_area"))
+                r->v[k] = (double)rng_below(rng, 3000) / 10;
+        }
         set(r, "planarity", rng_below(rng, 10) == 0 ? NAN : rng_uniform(rng));
         set(r, "max_deviation",
             rng_below(rng, 10) == 0 ? NAN : rng_uniform(rng) * 0.05);
