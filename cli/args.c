@@ -4,11 +4,13 @@
 #include "args.h"
 
 #include <errno.h>
+#include <limits.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
+#include "core/numparse.h"
 #include "core/spelling.h"
 
 static const struct arg_option *find_long(const struct arg_option *options,
@@ -116,26 +118,27 @@ int args_parse(int argc, char **argv, const struct arg_option *options,
 int args_int(const char *text, long min, long max, const char *what,
              long *out, struct facet_error *err)
 {
-    char *end;
-    errno = 0;
-    long number = strtol(text, &end, 10);
-    if (end == text || *end != '\0' || errno == ERANGE)
+    const char *stop;
+    long long number;
+    int rc = numparse_whole(text, text + strlen(text), LLONG_MIN, LLONG_MAX,
+                            &number, &stop);
+    if (rc == NUMPARSE_SYNTAX || *stop != '\0')
         return facet_error_set(err, FACET_EINPUT,
             "%s: '%s' is not a whole number", what, text);
-    if (number < min || number > max)
+    if (rc == NUMPARSE_RANGE || number < min || number > max)
         return facet_error_set(err, FACET_EINPUT,
-            "%s: %ld is out of range (%ld to %ld)", what, number, min, max);
-    *out = number;
+            "%s: %s is out of range (%ld to %ld)", what, text, min, max);
+    *out = (long)number;
     return FACET_OK;
 }
 
 int args_double(const char *text, double min, double max, const char *what,
                 double *out, struct facet_error *err)
 {
-    char *end;
-    errno = 0;
-    double number = strtod(text, &end);
-    if (end == text || *end != '\0' || errno == ERANGE || !isfinite(number))
+    /* Decimal as written: 0x10 and inf are not numbers here. */
+    double number;
+    int rc = numparse_text(text, &number);
+    if (rc != NUMPARSE_OK || !isfinite(number))
         return facet_error_set(err, FACET_EINPUT,
             "%s: '%s' is not a number", what, text);
     if (number < min || number > max)

@@ -4,6 +4,7 @@
  * class, type, area, deviation and cost, and the option's totals.
  */
 #include <errno.h>
+#include <limits.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -13,26 +14,40 @@
 #include "command.h"
 #include "option_text.h"
 #include "core/coarse_mesh.h"
+#include "core/numparse.h"
 #include "core/option.h"
 #include "core/outfile.h"
 #include "core/report.h"
 
-/* Parses "37x49" into nu, nv. */
+/* Parses "37x49" into nu, nv, each side read as written (4294967297x5 is
+ * out of range, not 1x5). */
 static int parse_grid(const char *text, int *nu, int *nv,
                       struct facet_error *err)
 {
-    char extra;
     if (text == NULL)
         return facet_error_set(err, FACET_EINPUT,
             "classify: give the grid, e.g. --grid 37x49");
-    if (sscanf(text, "%dx%d%c", nu, nv, &extra) != 2 &&
-        sscanf(text, "%dX%d%c", nu, nv, &extra) != 2)
+    const char *end = text + strlen(text), *stop;
+    long long a = 0, b = 0;
+    int rc = numparse_whole(text, end, 0, LLONG_MAX, &a, &stop);
+    if (rc != NUMPARSE_SYNTAX && (*stop == 'x' || *stop == 'X'))
+        rc = rc == NUMPARSE_RANGE
+                 ? NUMPARSE_RANGE
+                 : numparse_whole(stop + 1, end, 0, LLONG_MAX, &b, &stop);
+    else if (rc == NUMPARSE_OK)
+        rc = NUMPARSE_SYNTAX;
+    if (rc == NUMPARSE_OK && stop != end)
+        rc = NUMPARSE_SYNTAX;
+    if (rc == NUMPARSE_SYNTAX)
         return facet_error_set(err, FACET_EINPUT,
             "--grid: '%s' is not NUxNV (e.g. 37x49)", text);
-    if (*nu < 1 || *nv < 1 || *nu > PANEL_MAX_GRID || *nv > PANEL_MAX_GRID)
+    if (rc == NUMPARSE_RANGE || a < 1 || b < 1 || a > PANEL_MAX_GRID ||
+        b > PANEL_MAX_GRID)
         return facet_error_set(err, FACET_EINPUT,
-            "--grid: %dx%d is out of range (each side 1 to %d)", *nu, *nv,
+            "--grid: %s is out of range (each side 1 to %d)", text,
             PANEL_MAX_GRID);
+    *nu = (int)a;
+    *nv = (int)b;
     return FACET_OK;
 }
 
@@ -73,23 +88,28 @@ static void print_human(const struct surface *s,
 static int write_csv(const char *path, const struct panelization *p,
                      const struct option_totals *t, struct facet_error *err)
 {
+    /* A schedule piped out goes alone: no place beside a stream. */
+    int beside = !outfile_is_stream(path);
     char totals[4096];
-    int rc = outfile_sibling(path, ".csv", "-totals.csv", totals,
-                             sizeof totals, err);
+    int rc = beside ? outfile_sibling(path, ".csv", "-totals.csv", totals,
+                                      sizeof totals, err)
+                    : FACET_OK;
     struct outfile schedule, sums;
     memset(&sums, 0, sizeof sums);
     if (rc == FACET_OK)
         rc = outfile_open(&schedule, path, 1, err);
-    if (rc == FACET_OK && (rc = outfile_open(&sums, totals, 1, err)) != 0)
+    if (rc == FACET_OK && beside &&
+        (rc = outfile_open(&sums, totals, 1, err)) != 0)
         outfile_abort(&schedule);
     if (rc != FACET_OK)
         return rc;
     report_csv(schedule.out, p);
-    report_totals_csv(sums.out, t);
+    if (beside)
+        report_totals_csv(sums.out, t);
     rc = outfile_commit(&schedule, err);
-    if (rc == FACET_OK)
+    if (beside && rc == FACET_OK)
         rc = outfile_commit(&sums, err);
-    else
+    else if (beside)
         outfile_abort(&sums);
     return rc;
 }

@@ -7,11 +7,24 @@
  */
 #include <stdio.h>
 #include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include "args.h"
 #include "command.h"
 #include "store/study.h"
 #include "store/study_export.h"
+
+/* Whether path is standard output: "-", or the file stdout is open on
+ * (/dev/stdout, a pipe's /proc/self/fd/1). */
+static int is_stdout(const char *path)
+{
+    if (strcmp(path, "-") == 0)
+        return 1;
+    struct stat a, b;
+    return stat(path, &a) == 0 && fstat(STDOUT_FILENO, &b) == 0 &&
+           a.st_dev == b.st_dev && a.st_ino == b.st_ino;
+}
 
 static int export_main(int argc, char **argv, struct facet_error *err)
 {
@@ -66,9 +79,14 @@ static int export_main(int argc, char **argv, struct facet_error *err)
         rc = study_repoint_surface(store, run_id, surface, err);
     if (rc == FACET_OK)
         rc = study_export(store, run_id, number, &request, err);
+    /* What was written is said on stdout, unless a file went there. */
+    FILE *say = stdout;
+    for (int k = 0; k < EXPORT_FILES; k++)
+        if (request.written[k][0] && is_stdout(request.written[k]))
+            say = stderr;
     for (int k = 0; rc == FACET_OK && k < EXPORT_FILES; k++)
         if (request.written[k][0])
-            printf("wrote %s\n", request.written[k]);
+            fprintf(say, "wrote %s\n", request.written[k]);
     store_close(store);
     return rc;
 }

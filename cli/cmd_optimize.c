@@ -6,6 +6,7 @@
  * file parses the design space and reports.
  */
 #include <errno.h>
+#include <limits.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -17,6 +18,7 @@
 #include "progress.h"
 #include "run_table.h"
 #include "signals.h"
+#include "core/infile.h"
 #include "store/study.h"
 
 /* The largest space the exhaustive method takes by default. */
@@ -130,12 +132,11 @@ static int parse_search(const struct search_flags *f,
     }
     s->seed = 1;
     if (f->seed) {
-        char *end;
-        unsigned long long seed = strtoull(f->seed, &end, 10);
-        if (end == f->seed || *end != '\0' || f->seed[0] == '-')
-            return facet_error_set(err, FACET_EINPUT,
-                "--seed: '%s' is not a whole number >= 0", f->seed);
-        s->seed = seed;
+        /* SQLite keeps a seed as a signed 64-bit integer: up to 2^63 - 1,
+         * refused beyond rather than wrapped. */
+        if ((rc = args_int(f->seed, 0, LONG_MAX, "--seed", &number, err)))
+            return rc;
+        s->seed = (uint64_t)number;
     }
     if ((rc = objectives_parse(f->objectives ? f->objectives
                                              : "cost,planarity,dp_area",
@@ -226,11 +227,12 @@ static int optimize_main(int argc, char **argv, struct facet_error *err)
     /* A surface that cannot be read is refused before the database is
      * created or touched. */
     if (!resume) {
-        FILE *file = fopen(request.surface_path, "rb");
-        if (file == NULL)
-            return facet_error_set(err, FACET_EINPUT, "%s: cannot open: %s",
-                                   request.surface_path, strerror(errno));
-        fclose(file);
+        int fd;
+        struct stat st;
+        if ((rc = study_request_check(&request, err)) ||
+            (rc = infile_open(request.surface_path, &fd, &st, err)))
+            return rc;
+        close(fd);
     }
     struct store *store;
     if ((rc = store_open(db, &store, err)) != FACET_OK)

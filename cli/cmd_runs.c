@@ -10,6 +10,7 @@
 #include "command.h"
 #include "core/json.h"
 #include "core/numformat.h"
+#include "core/text.h"
 #include "text_table.h"
 #include "store/store.h"
 #include "store/study.h"
@@ -144,8 +145,13 @@ static void print_human(const struct run_info *runs,
             number_grouped(cost, sizeof cost, r->best_cost, 0);
         if (isfinite(r->hypervolume))
             snprintf(hv, sizeof hv, "%.4f", r->hypervolume);
-        snprintf(label, sizeof label, "%s%s%s", r->name,
-                 r->name[0] ? " / " : "", r->surface_path);
+        /* Names and paths came from users and files: shown, not obeyed
+         * (no escape sequence reaches the terminal). */
+        char name[sizeof r->name], path[sizeof r->surface_path];
+        text_for_terminal(r->name, name, sizeof name);
+        text_for_terminal(r->surface_path, path, sizeof path);
+        snprintf(label, sizeof label, "%s%s%s", name, name[0] ? " / " : "",
+                 path);
         const char *cell[] = {id, r->status, r->method, options, pareto,
                               cost, hv, elapsed, r->started, label};
         text_table_row(stdout, &t, cell);

@@ -11,6 +11,7 @@
 #include "command.h"
 #include "option_text.h"
 #include "core/report.h"
+#include "core/text.h"
 #include "store/study.h"
 #include "store/study_export.h"
 
@@ -57,8 +58,9 @@ static int show_main(int argc, char **argv, struct facet_error *err)
                    (long long)run_id, (long long)number,
                    o.row.rank == 1 ? " (Pareto-optimal)" : "",
                    o.row.knee ? " (the knee)" : "");
-            printf("%-16s %s (%s)\n", "surface", o.run.surface_path,
-                   o.run.units);
+            char shown[sizeof o.run.surface_path];
+            text_for_terminal(o.run.surface_path, shown, sizeof shown);
+            printf("%-16s %s (%s)\n", "surface", shown, o.run.units);
             printf("%-16s %d x %d (%zu panels)\n", "grid", o.row.nu,
                    o.row.nv, o.totals.panels);
             printf("%-16s %g mm\n", "threshold", o.row.threshold_mm);

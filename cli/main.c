@@ -3,6 +3,7 @@
  * --help everywhere, runs it, and turns its error into one line on stderr
  * and the exit status (0 ok, 1 failure while working, 2 bad usage or input).
  */
+#include <errno.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -63,6 +64,18 @@ int main(int argc, char **argv)
         fflush(stdout);
         fprintf(stderr, "facet: %s\n",
                 err.message[0] ? err.message : "failed");
+    }
+    /* What went to stdout (a table, JSON, CSV) must have got there: a full
+     * disk, /dev/full or a closed pipe is a failure, not a silent exit 0.
+     * Closing flushes and reports the last write's error too. */
+    errno = 0;
+    int lost = ferror(stdout) != 0;
+    if (fclose(stdout) != 0)
+        lost = 1;
+    if (lost && status == 0) {
+        fprintf(stderr, "facet: writing standard output failed%s%s\n",
+                errno ? ": " : "", errno ? strerror(errno) : "");
+        status = 1;
     }
     return status;
 }

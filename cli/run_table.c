@@ -8,6 +8,7 @@
 #include <string.h>
 
 #include "core/numformat.h"
+#include "core/text.h"
 #include "core/ties.h"
 #include "store/study.h"
 #include "text_table.h"
@@ -46,9 +47,12 @@ int run_table_print(FILE *out, struct store *store, const char *db,
     char cost[64];
     number_grouped(cost, sizeof cost, info.best_cost, 0);
     char line[2400];
+    char name[sizeof info.name], path[sizeof info.surface_path];
+    text_for_terminal(info.name, name, sizeof name);
+    text_for_terminal(info.surface_path, path, sizeof path);
     snprintf(line, sizeof line, "run %lld (%s%s%s): %s, %s, %lld options in "
              "%.2f s, %lld Pareto-optimal", (long long)info.id, info.status,
-             info.name[0] ? ", " : "", info.name, info.surface_path,
+             name[0] ? ", " : "", name, path,
              info.method, (long long)info.options, info.elapsed,
              (long long)info.pareto_options);
     text_wrap(out, line, text_table_width(out, wide));

@@ -9,6 +9,7 @@
 #include <string.h>
 
 #include "exact_sum.h"
+#include "numparse.h"
 
 void classify_defaults(struct classify_options *options)
 {
@@ -228,8 +229,10 @@ int classify_prices_parse(const char *text, double price[TYPE_COUNT],
 {
     const char *p = text;
     for (int t = 0; t < TYPE_COUNT; t++) {
-        char *end;
-        price[t] = strtod(p, &end);
+        const char *end;
+        if (numparse_double(p, p + strlen(p), &price[t], &end) !=
+            NUMPARSE_OK)
+            end = p;
         while (*end == ' ')
             end++;
         if (end == p || !isfinite(price[t]) || price[t] < 0 ||

@@ -16,6 +16,7 @@
 
 #include <math.h>
 #include <stdint.h>
+#include <string.h>
 
 #define MAX_MANTISSA_DIGITS 19
 #define EXPONENT_CAP 100000  /* larger written exponents saturate here */
@@ -170,4 +171,49 @@ int numparse_double(const char *text, const char *end, double *value,
     }
     *value = negative ? -result : result;
     return NUMPARSE_OK;
+}
+
+int numparse_whole(const char *text, const char *end, long long min,
+                   long long max, long long *value, const char **stop)
+{
+    const char *p = text;
+    int negative = 0;
+    if (p < end && *p == '-' && min < 0) {
+        negative = 1;
+        p++;
+    }
+    if (p == end || *p < '0' || *p > '9')
+        return NUMPARSE_SYNTAX;
+    /* Accumulated as a magnitude, stopping at the bound: the digits that
+     * follow only make it larger. */
+    unsigned long long limit = negative ? (unsigned long long)(-(min + 1)) + 1
+                                        : (unsigned long long)(max < 0 ? 0
+                                                                       : max);
+    unsigned long long n = 0;
+    int over = 0;
+    for (; p < end && *p >= '0' && *p <= '9'; p++) {
+        unsigned digit = (unsigned)(*p - '0');
+        if (!over && n > (limit - digit) / 10)
+            over = 1;
+        if (!over)
+            n = n * 10 + digit;
+    }
+    *stop = p;
+    if (over)
+        return NUMPARSE_RANGE;
+    long long v = negative ? (n == 0 ? 0 : -(long long)(n - 1) - 1)
+                           : (long long)n;
+    if (v < min || v > max)
+        return NUMPARSE_RANGE;
+    *value = v;
+    return NUMPARSE_OK;
+}
+
+int numparse_text(const char *text, double *value)
+{
+    const char *end = text + strlen(text), *stop;
+    int rc = numparse_double(text, end, value, &stop);
+    if (rc == NUMPARSE_OK && stop != end)
+        return NUMPARSE_SYNTAX;
+    return rc;
 }

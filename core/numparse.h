@@ -1,5 +1,7 @@
 /*
- * numparse.h: reading decimal floating-point numbers out of OBJ text.
+ * numparse.h: reading decimal numbers out of OBJ text and out of the
+ * command line, strictly: a number is read as written or refused, never
+ * wrapped, rounded to an integer or read in another base.
  *
  * The OBJ loader spends most of its time here, so this is a small parser of
  * its own rather than strtod: it needs no NUL terminator (it stops at an end
@@ -29,5 +31,20 @@ enum {
  * subnormals or signed zero, as with strtod. */
 int numparse_double(const char *text, const char *end, double *value,
                     const char **stop);
+
+/* Parses the whole number that starts at text (reading no further than
+ * end): decimal digits only, with an optional leading '-' when min < 0;
+ * no blanks, no '+', no hexadecimal. On NUMPARSE_OK stores it in *value
+ * and the first character after it in *stop. NUMPARSE_RANGE when it is
+ * outside [min, max], however many digits it has (never wrapped: 4294967297
+ * is not 1); NUMPARSE_SYNTAX when no digit starts at text. */
+int numparse_whole(const char *text, const char *end, long long min,
+                   long long max, long long *value, const char **stop);
+
+/* Parses all of the NUL-terminated text as a decimal number (as
+ * numparse_double: no hexadecimal, nan or inf) into *value. Returns
+ * NUMPARSE_OK, NUMPARSE_SYNTAX (also for anything after the number) or
+ * NUMPARSE_RANGE. */
+int numparse_text(const char *text, double *value);
 
 #endif

@@ -56,6 +56,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "infile.h"
 #include "obj_part.h"
 #include "obj_table.h"
 #include "obj_tuning.h"
@@ -805,20 +806,12 @@ int obj_load_tuned(const char *path, struct obj_file *out,
 {
     struct loader ld;
     loader_start(&ld, path, out, err, tuning);
-    int fd = open(path, O_RDONLY | O_CLOEXEC);
-    if (fd < 0)
-        return facet_error_set(err, FACET_EINPUT, "%s: cannot open: %s",
-                               path, strerror(errno));
+    int fd;
     struct stat st;
-    int rc;
-    if (fstat(fd, &st) != 0)
-        rc = facet_error_set(err, FACET_EWORK, "%s: cannot stat: %s", path,
-                             strerror(errno));
-    else if (S_ISDIR(st.st_mode))
-        rc = facet_error_set(err, FACET_EINPUT,
-                             "%s: is a directory, not an OBJ file", path);
-    else
-        rc = load_windows(&ld, fd, &st, tuning);
+    int rc = infile_open(path, &fd, &st, err);
+    if (rc != FACET_OK)
+        return rc;
+    rc = load_windows(&ld, fd, &st, tuning);
     close(fd);
     if (rc == FACET_OK)
         rc = finish(&ld, out);

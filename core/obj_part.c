@@ -541,6 +541,10 @@ static int keyword_is(const char *word, size_t length, const char *name)
 static int parse_statement(struct obj_part *part, const char *p,
                            const char *end)
 {
+    /* OBJ is text: a NUL byte anywhere (past the first 4 KB the binary
+     * check reads) is data, and would cut a name short of its length. */
+    if (memchr(p, '\0', (size_t)(end - p)) != NULL)
+        return input_error(part, "a NUL byte: binary data, not OBJ text");
     p = skip_blanks(p, end);
     if (p == end || *p == '#')
         return FACET_OK;

@@ -84,7 +84,9 @@ int obj_names_find(struct obj_names *table, const char *text, size_t length,
     size_t s = name_hash(text, length) & mask;
     for (; table->slot[s] != 0; s = (s + 1) & mask) {
         const char *t = table->names[table->slot[s] - 1].text;
-        if (strncmp(t, text, length) == 0 && t[length] == '\0') {
+        /* By length first: a stored name shorter than text is never read
+         * past its end. */
+        if (strlen(t) == length && memcmp(t, text, length) == 0) {
             *index = table->slot[s] - 1;
             return 0;
         }

@@ -12,6 +12,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "numparse.h"
 #include "optimize_search.h"
 #include "rng.h"
 
@@ -57,13 +58,27 @@ uint64_t design_space_size(const struct design_space *s)
 int design_space_parse_sides(const char *text, const char *what, int *lo,
                              int *hi, struct facet_error *err)
 {
-    char extra;
-    if (sscanf(text, "%d:%d%c", lo, hi, &extra) == 2)
-        return FACET_OK;
-    if (sscanf(text, "%d%c", lo, &extra) == 1) {
-        *hi = *lo;
+    /* Read as written: 4294967297 is far out of range, not 1. */
+    const char *end = text + strlen(text), *stop;
+    long long a, b;
+    int rc = numparse_whole(text, end, 0, PANEL_MAX_GRID, &a, &stop);
+    if (rc == NUMPARSE_OK && stop == end) {
+        *lo = *hi = (int)a;
         return FACET_OK;
     }
+    if (rc == NUMPARSE_OK && *stop == ':') {
+        const char *second = stop + 1;
+        rc = numparse_whole(second, end, 0, PANEL_MAX_GRID, &b, &stop);
+        if (rc == NUMPARSE_OK && stop == end) {
+            *lo = (int)a;
+            *hi = (int)b;
+            return FACET_OK;
+        }
+    }
+    if (rc == NUMPARSE_RANGE)
+        return facet_error_set(err, FACET_EINPUT,
+            "%s: '%s' is out of range (grid sides 1 to %d)", what, text,
+            PANEL_MAX_GRID);
     return facet_error_set(err, FACET_EINPUT,
         "%s: '%s' is not a range A:B of whole numbers (e.g. 20:40)", what,
         text);
@@ -77,12 +92,13 @@ int design_space_parse_threshold(const char *text,
     int n = 0;
     const char *p = text;
     for (;;) {
-        char *end;
+        const char *end;
         if (n == 3)
             return facet_error_set(err, FACET_EINPUT,
                 "--threshold: '%s' is not MM, A:B or A:B:STEP", text);
-        value[n] = strtod(p, &end);
-        if (end == p || !isfinite(value[n]) || value[n] < 0 ||
+        /* Decimal only: 0x10 is no threshold, not 16 mm. */
+        int rc = numparse_double(p, p + strlen(p), &value[n], &end);
+        if (rc != NUMPARSE_OK || !isfinite(value[n]) || value[n] < 0 ||
             value[n] > 1e6 || (*end != ':' && *end != '\0'))
             return facet_error_set(err, FACET_EINPUT,
                 "--threshold: '%s' is not MM, A:B or A:B:STEP (mm, 0 to "
@@ -121,6 +137,18 @@ int design_space_check(const struct design_space *s, struct facet_error *err)
         return facet_error_set(err, FACET_EINPUT,
             "--threshold %g:%g:%g is not a range of lengths (mm)",
             s->t_min_mm, s->t_max_mm, s->t_step_mm);
+    /* Counted in floating point first: 1e6 / 1e-300 steps does not fit a
+     * count, and must not wrap into one. */
+    if (s->t_step_mm > 0 && s->t_max_mm > s->t_min_mm) {
+        double steps = floor((s->t_max_mm - s->t_min_mm) / s->t_step_mm +
+                             1e-3) + 1;
+        if (!(steps <= DESIGN_THRESHOLD_STEPS_MAX))
+            return facet_error_set(err, FACET_EINPUT,
+                "--threshold %g:%g:%g is %.3g steps (at most %d: take a "
+                "larger step, or a continuous range A:B with nsga2)",
+                s->t_min_mm, s->t_max_mm, s->t_step_mm, steps,
+                DESIGN_THRESHOLD_STEPS_MAX);
+    }
     return FACET_OK;
 }
 

@@ -99,6 +99,9 @@ int design_space_parse_threshold(const char *text,
 
 /* Checks ranges (1 <= min <= max <= PANEL_MAX_GRID, finite thresholds
  * >= 0, step >= 0). FACET_EINPUT names the bad range. */
+/* The most threshold steps an exhaustive space may have. */
+#define DESIGN_THRESHOLD_STEPS_MAX 1000000
+
 int design_space_check(const struct design_space *space,
                        struct facet_error *err);
 

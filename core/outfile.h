@@ -2,11 +2,16 @@
  * outfile.h: writing an output file so that a failure never leaves half of
  * it under the name the user asked for.
  *
- * Output goes to PATH.partial, which is renamed to PATH only once it is
- * complete and closed without error; any failure removes PATH.partial. An
- * existing PATH is refused unless the caller says to overwrite it. Exports
- * (OBJ + MTL, SVG) write through this; the messages name PATH, never the
- * partial file the user did not ask for.
+ * Output to a file goes to PATH.partial, which is renamed to PATH only
+ * once it is complete and closed without error; any failure removes
+ * PATH.partial. An existing regular file is refused unless the caller says
+ * to overwrite it; a symbolic link, a directory or any other special file
+ * is never replaced. A stream, "-" (stdout), a character device or a FIFO,
+ * is written straight into (nothing is replaced, so no --force is needed)
+ * and its write errors are reported as a file's are; a FIFO without a
+ * reader is refused at once, never waited on. Exports write through this;
+ * the messages name PATH, never the partial file the user did not ask
+ * for.
  */
 #ifndef FACET_OUTFILE_H
 #define FACET_OUTFILE_H
@@ -19,11 +24,19 @@ struct outfile {
     FILE *out;        /* write here between open and commit */
     char *path;       /* owned copy of the target */
     char *partial;    /* owned: path + ".partial" */
+    int direct;       /* a stream: written straight, no partial file */
 };
 
+/* 1 when path is a stream outfile_open writes straight into: "-"
+ * (stdout), a character device or a FIFO. Files written beside an output
+ * (an OBJ's MTL, a schedule's totals) have no place beside a stream. */
+int outfile_is_stream(const char *path);
+
 /* Fails with FACET_EINPUT, "PATH exists (pass --force to overwrite it)",
- * when something exists at path and force is 0; FACET_OK otherwise. For
- * writers of several files, to refuse before creating any. */
+ * when a regular file exists at path and force is 0, and whatever force
+ * is when path is a symbolic link, a directory or a special file other
+ * than a stream; FACET_OK otherwise. For writers of several files, to
+ * refuse before creating any. */
 int outfile_check(const char *path, int force, struct facet_error *err);
 
 /* Checks path (outfile_check) and opens path.partial for writing into *f

@@ -6,6 +6,9 @@
 #include <errno.h>
 #include <stdio.h>
 #include <string.h>
+#include <unistd.h>
+
+#include "infile.h"
 
 static const uint32_t round_constant[64] = {
     0x428a2f98, 0x71374491, 0xb5c0fbcf, 0xe9b5dba5, 0x3956c25b, 0x59f111f1,
@@ -115,10 +118,17 @@ void sha256_hex(struct sha256 *h, char hex[65])
 
 int sha256_file(const char *path, char hex[65], struct facet_error *err)
 {
-    FILE *in = fopen(path, "rb");
-    if (in == NULL)
-        return facet_error_set(err, FACET_EINPUT, "%s: cannot open: %s",
-                               path, strerror(errno));
+    int fd;
+    struct stat st;
+    int rc = infile_open(path, &fd, &st, err);
+    if (rc != FACET_OK)
+        return rc;
+    FILE *in = fdopen(fd, "rb");
+    if (in == NULL) {
+        close(fd);
+        return facet_error_set(err, FACET_EWORK, "%s: cannot read: %s", path,
+                               strerror(errno));
+    }
     struct sha256 h;
     sha256_init(&h);
     unsigned char buffer[1 << 16];

@@ -430,6 +430,12 @@ static int open_connection(const char *path, const char *query, int flags,
                 "%s: an SQLite database of another application, not "
                 "Facet's (use a new file)", path);
     }
+    /* Checked before anything is written: a negative version names no
+     * migration, and the file is left exactly as it is. */
+    if (rc == FACET_OK && *version < 0)
+        rc = facet_error_set(err, FACET_EINPUT,
+            "%s: schema version %d is none Facet writes (the file is "
+            "damaged or not Facet's); nothing was changed", path, *version);
     if (rc == FACET_OK && *version > STORE_SCHEMA_VERSION)
         rc = facet_error_set(err, FACET_EINPUT,
             "%s: written by a newer Facet (schema %d; this Facet %s reads "

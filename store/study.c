@@ -15,6 +15,7 @@
 #include "core/front.h"
 #include "core/parallel.h"
 #include "core/sha256.h"
+#include "core/text.h"
 
 /* What the optimiser's hooks need to reach the store. */
 struct study_state {
@@ -541,6 +542,23 @@ static void collect_warnings(const struct surface *surface,
     }
 }
 
+int study_request_check(const struct study_request *request,
+                        struct facet_error *err)
+{
+    /* Stored whole or refused: a name cut at a byte count can end inside
+     * a character, and a control character in one reaches terminals. */
+    size_t most = sizeof ((struct run_info *)0)->name - 1;
+    if (strlen(request->name) > most)
+        return facet_error_set(err, FACET_EINPUT,
+            "the run's name is %zu bytes: at most %zu", strlen(request->name),
+            most);
+    if (!text_is_clean(request->name))
+        return facet_error_set(err, FACET_EINPUT,
+            "the run's name is not clean UTF-8 text (control characters or "
+            "invalid bytes)");
+    return design_space_check(&request->settings.space, err);
+}
+
 int study_start(struct store *store, const struct study_request *request,
                 const struct study_hooks *hooks, int64_t *run_id,
                 enum optimize_outcome *outcome, struct facet_error *err)
@@ -556,6 +574,8 @@ int study_start(struct store *store, const struct study_request *request,
     double started = clock_seconds();
     struct run_info run;
     memset(&run, 0, sizeof run);
+    if ((rc = study_request_check(request, err)) != FACET_OK)
+        return rc;
     snprintf(run.name, sizeof run.name, "%s", request->name);
     /* Recorded absolute, so the run's surface is found from any folder;
      * a path realpath cannot resolve fails below, when it is read. */

@@ -48,6 +48,12 @@ struct study_request {
     const char *name;                /* "" for none */
 };
 
+/* Checks what request asks for before anything is opened or created: a
+ * name that is clean UTF-8 text of at most 127 bytes, a sound design
+ * space. FACET_EINPUT naming what is wrong. study_start checks it too. */
+int study_request_check(const struct study_request *request,
+                        struct facet_error *err);
+
 /* Runs a new study into store. *run receives its id (0 if it failed
  * before one was recorded), *outcome DONE or INTERRUPTED. Returns
  * FACET_OK, or the first error (the run, if recorded, is then "failed"). */

@@ -100,13 +100,26 @@ int study_export(struct store *store, int64_t run, int64_t number,
             "export: say what to write: OBJ, CSV, JSON and/or SVG");
     char mtl[4096] = "", totals[4096] = "";
     int rc;
+    if (r->obj && outfile_is_stream(r->obj))
+        return facet_error_set(err, FACET_EINPUT,
+            "export: %s: an OBJ needs its MTL beside it; give a file",
+            r->obj);
     if (r->obj && (rc = export_obj_mtl_path(r->obj, mtl, sizeof mtl, err)))
         return rc;
-    if (r->csv && (rc = outfile_sibling(r->csv, ".csv", "-totals.csv",
-                                        totals, sizeof totals, err)))
+    /* A schedule piped out goes alone: its totals have no place beside a
+     * stream. */
+    int totals_file = r->csv && !outfile_is_stream(r->csv);
+    if (totals_file && (rc = outfile_sibling(r->csv, ".csv", "-totals.csv",
+                                             totals, sizeof totals, err)))
         return rc;
+    int to_stdout = (r->csv && strcmp(r->csv, "-") == 0) +
+                    (r->json && strcmp(r->json, "-") == 0) +
+                    (r->svg && strcmp(r->svg, "-") == 0);
+    if (to_stdout > 1)
+        return facet_error_set(err, FACET_EINPUT,
+            "export: one file at most to standard output (-)");
     const char *target[EXPORT_FILES] = {r->obj, r->obj ? mtl : NULL, r->csv,
-                                        r->csv ? totals : NULL, r->json,
+                                        totals_file ? totals : NULL, r->json,
                                         r->svg};
     struct outfile file[EXPORT_FILES];
     int open[EXPORT_FILES] = {0};
@@ -124,7 +137,8 @@ int study_export(struct store *store, int64_t run, int64_t number,
     }
     if (rc == FACET_OK && r->csv) {
         report_csv(file[EXPORT_CSV].out, &p.panels);
-        report_totals_csv(file[EXPORT_TOTALS].out, &p.totals);
+        if (totals_file)
+            report_totals_csv(file[EXPORT_TOTALS].out, &p.totals);
     }
     if (rc == FACET_OK && r->json) {
         struct report_source source;

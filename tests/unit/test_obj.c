@@ -17,6 +17,7 @@
 #include <unistd.h>
 
 #include "core/obj.h"
+#include "core/obj_table.h"
 #include "core/obj_tuning.h"
 
 static void parse_ok(const char *text, struct obj_file *obj)
@@ -818,6 +819,65 @@ static void test_split_large_mesh(void **state)
     free(text);
 }
 
+/* A NUL byte past the 4 KB the binary check reads, inside an object, a
+ * group, a material name, a comment or a vertex: a FILE:LINE: error, the
+ * file loaded whole through the real reader (obj_load, several parts). */
+static void test_nul_past_the_binary_check(void **state)
+{
+    (void)state;
+    static const char *const lines[] = {
+        "o abc\0def\n", "g abc\0\n", "usemtl m\0x\n", "# note \0\n",
+        "v 1 2\0 3\n",
+    };
+    static const size_t line_length[] = {10, 7, 11, 9, 9};
+    for (size_t k = 0; k < sizeof lines / sizeof *lines; k++) {
+        /* 300 KB of plain statements, then the line with a NUL. */
+        size_t head = 0, size = 400000;
+        char *text = malloc(size);
+        assert_non_null(text);
+        head += (size_t)snprintf(text, size, "o abc\ng abc\nusemtl m\n");
+        size_t lines_before = 3;
+        while (head < 300000) {
+            head += (size_t)snprintf(text + head, size - head,
+                                     "v 0 0 0\nv 1 0 0\nv 0 1 0\nf -3 -2 -1\n");
+            lines_before += 4;
+        }
+        memcpy(text + head, lines[k], line_length[k]);
+        head += line_length[k];
+        head += (size_t)snprintf(text + head, size - head, "f 1 2 3\n");
+        char *path = temp_file(text, head);
+        struct obj_file obj;
+        struct facet_error err;
+        int rc = obj_load(path, &obj, &err);
+        char where[64];
+        snprintf(where, sizeof where, ":%zu: ", lines_before + 1);
+        if (rc != FACET_EINPUT || strstr(err.message, where) == NULL ||
+            strstr(err.message, "NUL byte") == NULL)
+            fail_msg("line %zu (%zu): rc %d, %s", k, lines_before + 1, rc,
+                     err.message);
+        obj_free(&obj);
+        unlink(path);
+        free(path);
+        free(text);
+    }
+}
+
+/* Names compare by their stored length: a shorter stored name is never
+ * read past its end (ASan watches), and a longer text is another name. */
+static void test_names_compare_by_length(void **state)
+{
+    (void)state;
+    struct obj_names table;
+    memset(&table, 0, sizeof table);
+    uint32_t a, b, c;
+    assert_int_equal(obj_names_find(&table, "abc", 3, &a), 0);
+    assert_int_equal(obj_names_find(&table, "abc\0def", 7, &b), 0);
+    assert_int_equal(obj_names_find(&table, "abc", 3, &c), 0);
+    assert_true(a != b);
+    assert_int_equal(a, c);
+    obj_names_free(&table);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -848,6 +908,8 @@ int main(void)
         cmocka_unit_test(test_split_errors_name_the_line),
         cmocka_unit_test(test_split_names_in_later_parts),
         cmocka_unit_test(test_split_large_mesh),
+        cmocka_unit_test(test_nul_past_the_binary_check),
+        cmocka_unit_test(test_names_compare_by_length),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -1,0 +1,118 @@
+#!/usr/bin/env bash
+# End-to-end: hostile files, special paths, full disks and overflow (issue
+# 14): every case is refused in one line with a non-zero exit, or written
+# where it should be, and nothing outside the command's own files changes.
+. "$(dirname "$0")/lib.sh"
+
+"$FACET" example plane --res 8 -o "$WORK/p.obj" || exit 1
+"$FACET" optimize "$WORK/p.obj" --db "$WORK/r.db" --u 2:3 --v 2:3 >/dev/null 2>&1 || exit 1
+
+# 1. A NUL byte in a name past the first 4 KB: FILE:LINE:, no crash.
+/usr/bin/python3 - "$WORK/nul.obj" <<'PY'
+import sys
+body = b"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n" * 20000
+open(sys.argv[1], "wb").write(b"o abc\n" + body + b"o abc\x00def\nf 1 2 3\n")
+PY
+line=$((1 + 80000 + 1))
+expect_error "NUL in an o name past 4 KB: info says FILE:LINE" "nul.obj:$line: a NUL byte" \
+    "$FACET" info "$WORK/nul.obj"
+expect_error "NUL in an o name past 4 KB: classify says FILE:LINE" "nul.obj:$line: a NUL byte" \
+    "$FACET" classify "$WORK/nul.obj" --grid 2x2
+
+# 2. Special paths as outputs.
+before=$(stat -c '%F %t:%T' /dev/full)
+run "$FACET" export "$WORK/r.db" --run 1 --option 1 --csv /dev/full --force
+same "--csv /dev/full --force: exit 1 and the write error in one line" \
+    "$STATUS $(wc -l <"$ERR") $(grep -c 'writing /dev/full failed: No space left on device' "$ERR")" "1 1 1"
+same "/dev/full is still the device" "$(stat -c '%F %t:%T' /dev/full)" "$before"
+run "$FACET" export "$WORK/r.db" --run 1 --option 1 --csv -
+same "--csv - writes the schedule to stdout" "$(head -c 8 "$OUT")" "id,i,j,c"
+if grep -q '^wrote' "$OUT"; then fail "--csv -: 'wrote' goes to stderr, not into the CSV"; else pass "--csv -: 'wrote' goes to stderr, not into the CSV"; fi
+got=$("$FACET" export "$WORK/r.db" --run 1 --option 1 --csv /dev/stdout 2>/dev/null | head -c 8)
+same "--csv /dev/stdout writes into the pipe (no --force needed)" "$got" "id,i,j,c"
+ln -s "$WORK/target.csv" "$WORK/link.csv"
+expect_error "a symbolic link is not replaced" 'link.csv is a symbolic link' \
+    "$FACET" export "$WORK/r.db" --run 1 --option 1 --csv "$WORK/link.csv" --force
+if [ -L "$WORK/link.csv" ] && [ ! -e "$WORK/target.csv" ]; then pass "the link is still a link"; else fail "the link is still a link"; fi
+mkdir "$WORK/dir.csv"
+expect_error "a directory is not replaced" 'dir.csv is a directory' \
+    "$FACET" export "$WORK/r.db" --run 1 --option 1 --csv "$WORK/dir.csv" --force
+mkfifo "$WORK/out.fifo"
+run timeout 20 "$FACET" export "$WORK/r.db" --run 1 --option 1 --csv "$WORK/out.fifo"
+same "a FIFO with no reader is refused at once" "$STATUS $(grep -c 'a FIFO with no reader' "$ERR")" "2 1"
+( cat "$WORK/out.fifo" > "$WORK/from.fifo" ) & reader=$!
+sleep 0.2
+run timeout 20 "$FACET" export "$WORK/r.db" --run 1 --option 1 --csv "$WORK/out.fifo"
+wait $reader
+same "a FIFO with a reader gets the schedule" "$STATUS $(head -c 8 "$WORK/from.fifo")" "0 id,i,j,c"
+expect_error "--obj to a stream is refused (its MTL has no place)" 'needs its MTL' \
+    "$FACET" export "$WORK/r.db" --run 1 --option 1 --obj -
+
+# 3. Inputs that never end or wait for a writer: refused, never a hang.
+mkfifo "$WORK/in.fifo"
+for input in /dev/zero /dev/urandom "$WORK/in.fifo"; do
+    for cmd in "info" "classify --grid 2x2" "optimize --db $WORK/never.db --u 2:2 --v 2:2"; do
+        # shellcheck disable=SC2086
+        run timeout 20 "$FACET" ${cmd%% *} "$input" ${cmd#* }
+        [ "$cmd" = info ] && run timeout 20 "$FACET" info "$input"
+        if [ "$STATUS" -eq 2 ] && grep -q 'not a regular file' "$ERR"; then
+            pass "$(basename "$input") as input to ${cmd%% *}: refused at once"
+        else
+            fail "$(basename "$input") as input to ${cmd%% *}: refused at once"
+        fi
+    done
+done
+if [ -e "$WORK/never.db" ]; then fail "no database made for an input refused"; else pass "no database made for an input refused"; fi
+cp "$WORK/r.db" "$WORK/moved.db"
+sqlite3 "$WORK/moved.db" "UPDATE runs SET status = 'interrupted', surface_path = '/dev/zero'"
+run timeout 20 "$FACET" optimize --db "$WORK/moved.db" --resume 1
+same "--resume of a run whose surface is /dev/zero: refused, no hang" "$STATUS" 2
+
+# 4. Write errors on stdout are failures.
+for cmd in "options $WORK/r.db --csv" "options $WORK/r.db --json" "runs $WORK/r.db" \
+           "info $WORK/p.obj --json" "show $WORK/r.db --run 1 --option 1 --json"; do
+    # shellcheck disable=SC2086
+    "$FACET" $cmd >/dev/full 2>"$ERR"
+    STATUS=$?
+    if [ "$STATUS" -eq 1 ] && grep -q 'writing standard output failed: No space left on device' "$ERR"; then
+        pass "${cmd%% *} > /dev/full: exit 1, one line"
+    else
+        fail "${cmd%% *} > /dev/full: exit 1, one line"
+    fi
+done
+"$FACET" optimize "$WORK/p.obj" --db "$WORK/full.db" --u 2:2 --v 2:2 >/dev/full 2>"$ERR"
+same "the optimize table on /dev/full: exit 1" "$?" 1
+
+# 7. Numbers as written, never wrapped or read in another base.
+expect_error "--grid 4294967297x5" 'out of range' "$FACET" classify "$WORK/p.obj" --grid 4294967297x5
+expect_error "--u 4294967297:4294967300" 'out of range' "$FACET" optimize "$WORK/p.obj" --db "$WORK/o.db" --u 4294967297:4294967300
+expect_error "--threshold 0:1e6:1e-300: the step count" 'steps \(at most 1000000' "$FACET" optimize "$WORK/p.obj" --db "$WORK/o.db" --threshold 0:1e6:1e-300
+expect_error "--threshold 0x10 (optimize)" "'0x10' is not" "$FACET" optimize "$WORK/p.obj" --db "$WORK/o.db" --threshold 0x10
+expect_error "--threshold 0x10 (classify)" "'0x10' is not a number" "$FACET" classify "$WORK/p.obj" --grid 2x2 --threshold 0x10
+expect_error "--seed past 2^63" 'out of range' "$FACET" optimize "$WORK/p.obj" --db "$WORK/o.db" --seed 18446744073709551617
+if [ -e "$WORK/o.db" ]; then fail "no database made for a bad number"; else pass "no database made for a bad number"; fi
+
+# 8. A negative user_version: refused, the file untouched.
+cp "$WORK/r.db" "$WORK/neg.db"
+sqlite3 "$WORK/neg.db" "PRAGMA user_version = -1"
+sum=$(sha256sum "$WORK/neg.db")
+expect_error "user_version -1 is refused" 'schema version -1' "$FACET" runs "$WORK/neg.db"
+expect_error "user_version -1 is refused by a writer too" 'schema version -1' "$FACET" optimize "$WORK/p.obj" --db "$WORK/neg.db"
+same "the file is untouched" "$(sha256sum "$WORK/neg.db")" "$sum"
+
+# 10, 11. Run names: escape codes never reach the terminal; a name is kept
+# whole or refused, never cut inside a character.
+expect_error "a name with an escape code is refused" 'not clean UTF-8' \
+    "$FACET" optimize "$WORK/p.obj" --db "$WORK/n.db" --name "$(printf 'a\033]0;pwned\007b')"
+expect_error "a name of 140 bytes is refused, not cut" 'at most 127' \
+    "$FACET" optimize "$WORK/p.obj" --db "$WORK/n.db" --name "$(printf 'é%.0s' $(seq 70))"
+cp "$WORK/r.db" "$WORK/esc.db"
+sqlite3 "$WORK/esc.db" "UPDATE runs SET name = 'x' || char(27) || '[2J' || char(7) || 'y', surface_path = '/tmp/' || char(27) || ']0;t' || char(7)"
+for cmd in runs "show --run 1 --option 1"; do
+    # shellcheck disable=SC2086
+    run "$FACET" ${cmd%% *} "$WORK/esc.db" ${cmd#runs}
+    if grep -q $'\033\|\007' "$OUT"; then fail "facet ${cmd%% *}: no escape code printed"; else pass "facet ${cmd%% *}: no escape code printed"; fi
+done
+run "$FACET" runs "$WORK/esc.db" --json
+json_check "runs --json: the name as stored, escaped by JSON" 'j[0]["name"] == "x\x1b[2J\x07y"'
+exit 0
