@@ -7,6 +7,7 @@
  */
 #include <errno.h>
 #include <limits.h>
+#include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -260,8 +261,11 @@ static int optimize_main(int argc, char **argv, struct facet_error *err)
         rc = run_table_print(stdout, store, db, run, rows, wide, err);
     }
     store_close(store);
+    /* 128 + the signal, as a shell reports it: 130 for Ctrl-C (or a stop
+     * without a signal), 129 for a dropped SSH session, 143 for SIGTERM. */
     if (rc == FACET_OK && outcome == OPTIMIZE_INTERRUPTED)
-        return 130;
+        return 128 + (signals_stop_requested() ? signals_stop_requested()
+                                               : SIGINT);
     return rc;
 }
 

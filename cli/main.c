@@ -59,8 +59,9 @@ int main(int argc, char **argv)
     struct facet_error err;
     facet_error_clear(&err);
     int status = cmd->run(argc - 1, argv + 1, &err);
-    /* 130 (interrupted) is not a failure: the command said what it did. */
-    if (status != 0 && status != 130) {
+    /* 128 + a signal (an interrupted run: 129, 130, 143) is not a
+     * failure: the command said what it did. */
+    if (status != 0 && status <= 128) {
         fflush(stdout);
         fprintf(stderr, "facet: %s\n",
                 err.message[0] ? err.message : "failed");

@@ -24,6 +24,9 @@ void signals_catch_stop(void)
     sigemptyset(&action.sa_mask);
     sigaction(SIGINT, &action, NULL);
     sigaction(SIGTERM, &action, NULL);
+    /* An SSH session that drops sends SIGHUP: the run stops as for
+     * Ctrl-C, resumable, rather than dying mid-batch. */
+    sigaction(SIGHUP, &action, NULL);
 }
 
 int signals_stop_requested(void)

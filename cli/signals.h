@@ -1,5 +1,5 @@
 /*
- * signals.h: SIGINT and SIGTERM as a request to stop, not a kill.
+ * signals.h: SIGINT, SIGTERM and SIGHUP as a request to stop, not a kill.
  *
  * Long commands (optimize) install the handler, check signals_stop_requested
  * between batches, commit what they have and mark the run interrupted. The
@@ -9,10 +9,11 @@
 #ifndef FACET_SIGNALS_H
 #define FACET_SIGNALS_H
 
-/* Installs handlers for SIGINT and SIGTERM that set the stop flag. */
+/* Installs handlers for SIGINT, SIGTERM and SIGHUP that set the stop
+ * flag. */
 void signals_catch_stop(void);
 
-/* Non-zero once SIGINT or SIGTERM arrived; which one is returned. */
+/* Non-zero once one of them arrived: the signal's number. */
 int signals_stop_requested(void);
 
 #endif

@@ -464,7 +464,12 @@ static int open_writer(const char *path, int create, struct store **out,
     rc = use_wal(store, err);
     if (rc == FACET_OK)
         rc = store_exec(store, "PRAGMA synchronous = NORMAL;"
-                        "PRAGMA foreign_keys = ON;", "opening", err);
+                        "PRAGMA foreign_keys = ON;"
+                        /* After each checkpoint that resets it, the WAL
+                         * shrinks back to 64 MB: a slow reader cannot
+                         * leave it at its largest for good. */
+                        "PRAGMA journal_size_limit = 67108864;",
+                        "opening", err);
     if (rc == FACET_OK && version < STORE_SCHEMA_VERSION)
         rc = store_schema_migrate(store, version, STORE_SCHEMA_VERSION, err);
     if (rc == FACET_OK)
@@ -621,9 +626,17 @@ void store_close(struct store *store)
      * (sqlite3 on the command line) that opens the file at that moment.
      * A passive checkpoint moves everything into the main file without
      * blocking anyone, and the WAL file stays. */
-    if (store->db != NULL) {
-        sqlite3_wal_checkpoint_v2(store->db, NULL, SQLITE_CHECKPOINT_PASSIVE,
-                                  NULL, NULL);
+    if (store->db != NULL && !store->read_only) {
+        /* A writer leaving empties the WAL (truncated to 0 bytes, the file
+         * kept) when no reader holds it within a moment; with a reader
+         * there, a passive checkpoint moves what it can. Either way no
+         * -wal of hundreds of MB is left behind. */
+        sqlite3_busy_timeout(store->db, 200);
+        if (sqlite3_wal_checkpoint_v2(store->db, NULL,
+                                      SQLITE_CHECKPOINT_TRUNCATE, NULL,
+                                      NULL) != SQLITE_OK)
+            sqlite3_wal_checkpoint_v2(store->db, NULL,
+                                      SQLITE_CHECKPOINT_PASSIVE, NULL, NULL);
         sqlite3_db_config(store->db, SQLITE_DBCONFIG_NO_CKPT_ON_CLOSE, 1,
                           NULL);
     }

@@ -144,6 +144,13 @@ int store_run_get(struct store *store, int64_t id, struct run_info *run,
 /* Every run, by id; *runs is malloc'ed (free()). */
 int store_run_list(struct store *store, struct run_info **runs,
                    size_t *count, struct facet_error *err);
+/* Takes run id over for --resume, in one write transaction with the
+ * checks: FACET_EINPUT when it is done, or running with its writer alive
+ * (named: pid, host); otherwise its status becomes "running" with this
+ * process as its writer, and *run holds it as it was read. */
+int store_run_claim(struct store *store, int64_t id, struct run_info *run,
+                    struct facet_error *err);
+
 /* Records path as run id's surface (study_repoint_surface checks it). */
 int store_run_set_surface(struct store *store, int64_t id, const char *path,
                           struct facet_error *err);

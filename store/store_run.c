@@ -232,6 +232,33 @@ int store_run_list(struct store *store, struct run_info **runs,
     return rc;
 }
 
+int store_run_claim(struct store *store, int64_t id, struct run_info *run,
+                    struct facet_error *err)
+{
+    /* Read and taken in one write transaction: a second process that
+     * resumes the same run waits on the lock, then sees it running. */
+    int rc = store_exec(store, "BEGIN IMMEDIATE", "claiming a run", err);
+    if (rc != FACET_OK)
+        return rc;
+    rc = store_run_get(store, id, run, err);
+    if (rc == FACET_OK && strcmp(run->status, "done") == 0)
+        rc = facet_error_set(err, FACET_EINPUT,
+            "run %lld is done: nothing to resume", (long long)id);
+    if (rc == FACET_OK && strcmp(run->status, "running") == 0 &&
+        !store_run_writer_gone(run->writer_pid, run->writer_host))
+        rc = facet_error_set(err, FACET_EINPUT,
+            "run %lld is being written by process %lld on %s: stop it "
+            "first", (long long)id, (long long)run->writer_pid,
+            run->writer_host);
+    if (rc == FACET_OK)
+        rc = store_run_set_status(store, id, "running", run->elapsed, err);
+    if (rc == FACET_OK)
+        rc = store_exec(store, "COMMIT", "claiming a run", err);
+    if (rc != FACET_OK)
+        sqlite3_exec(store->db, "ROLLBACK", NULL, NULL, NULL);
+    return rc;
+}
+
 int store_run_set_surface(struct store *store, int64_t id, const char *path,
                           struct facet_error *err)
 {

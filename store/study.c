@@ -388,14 +388,23 @@ int study_option_panels(struct store *store, const struct run_info *run,
     return rc;
 }
 
+/* Whether the user asked the study to stop (the hook, if any). */
+static int should_stop(const struct study_hooks *hooks)
+{
+    return hooks != NULL && hooks->should_stop != NULL &&
+           hooks->should_stop(hooks->context);
+}
+
 /* Stores the panels of every Pareto option of run not stored yet,
  * evaluating them on every core. */
 static int store_front_panels(struct store *store, const struct run_info *run,
                               const struct surface *surface,
                               const struct panel_lattice *lattice,
                               const struct optimize_settings *settings,
+                              const struct study_hooks *hooks, int *stopped,
                               struct facet_error *err)
 {
+    *stopped = 0;
     /* Only the front is read (by the rank index), not the whole run. */
     struct option_query q = {run->id, 1, NULL, NULL, 0, 0, 0};
     struct option_row *rows;
@@ -423,15 +432,26 @@ static int store_front_panels(struct store *store, const struct run_info *run,
         totals = malloc(nfront * sizeof *totals);
         if (panels == NULL || totals == NULL)
             rc = facet_error_set(err, FACET_EWORK, "out of memory");
-        else
+        /* In chunks, with a stop heard between them: a front of fine
+         * grids takes a while, and Ctrl-C must leave the run resumable. */
+        size_t chunk = 4 * (size_t)(settings->jobs > 0 ? settings->jobs : 1);
+        for (size_t first = 0; rc == FACET_OK && first < nfront;
+             first += chunk) {
+            if (should_stop(hooks)) {
+                *stopped = 1;
+                break;
+            }
+            size_t count = nfront - first < chunk ? nfront - first : chunk;
             rc = optimize_evaluate_panels(surface, lattice, &settings->base,
-                                          points, nfront, settings->jobs,
-                                          panels, totals, err);
-        for (size_t k = 0; rc == FACET_OK && k < nfront; k++)
-            rc = store_panels_put(store, run->id, numbers[k], &panels[k],
-                                  err);
-        for (size_t k = 0; panels != NULL && k < nfront; k++)
-            panelization_free(&panels[k]);
+                                          points + first, count,
+                                          settings->jobs, panels + first,
+                                          totals + first, err);
+            for (size_t k = first; rc == FACET_OK && k < first + count; k++)
+                rc = store_panels_put(store, run->id, numbers[k], &panels[k],
+                                      err);
+            for (size_t k = first; k < first + count; k++)
+                panelization_free(&panels[k]);
+        }
     }
     free(panels);
     free(totals);
@@ -486,10 +506,17 @@ static int study_go(struct store *store, struct run_info *run,
     }
     if (rc == FACET_OK)
         rc = store_analyze(store, err);
+    /* A stop heard after the last batch still leaves the run resumable:
+     * ranked, its front's panels stored later. */
+    if (rc == FACET_OK && *outcome == OPTIMIZE_DONE && should_stop(hooks))
+        *outcome = OPTIMIZE_INTERRUPTED;
     if (rc == FACET_OK && *outcome == OPTIMIZE_DONE) {
         stage(hooks, "storing the Pareto options' panels");
+        int stopped;
         rc = store_front_panels(store, run, surface, lattice, settings,
-                                err);
+                                hooks, &stopped, err);
+        if (stopped)
+            *outcome = OPTIMIZE_INTERRUPTED;
     }
     panel_lattice_free(lattice);
     const char *status = rc != FACET_OK ? "failed"
@@ -664,28 +691,26 @@ int study_resume(struct store *store, int64_t run_id,
     int rc = store_check(store, err);
     if (rc == FACET_OK)
         rc = store_run_get(store, run_id, &run, err);
-    if (rc != FACET_OK)
-        return rc;
-    if (strcmp(run.status, "done") == 0)
-        return facet_error_set(err, FACET_EINPUT,
-            "run %lld is done: nothing to resume", (long long)run_id);
-    if (strcmp(run.status, "running") == 0)
-        return facet_error_set(err, FACET_EINPUT,
-            "run %lld is being written by process %lld on %s: stop it "
-            "first", (long long)run_id, (long long)run.writer_pid,
-            run.writer_host);
     struct optimize_settings settings;
     struct mesh_options mesh;
     int flip;
-    rc = study_settings(&run, &settings, &mesh, &flip, err);
+    if (rc == FACET_OK)
+        rc = study_settings(&run, &settings, &mesh, &flip, err);
+    /* Claimed before the surface is read (which takes a while), so that a
+     * second --resume of the run is refused, not run twice. */
+    if (rc == FACET_OK)
+        rc = store_run_claim(store, run_id, &run, err);
     if (rc != FACET_OK)
         return rc;
     stage(hooks, "preparing the surface (UV, curvature)");
     struct surface surface;
     rc = study_open_surface(store, &run, &surface, err);
-    if (rc == FACET_OK)
-        rc = store_run_set_status(store, run_id, "running", run.elapsed,
-                                  err);
+    if (rc != FACET_OK) {
+        /* Given back as it was found, resumable once the surface is. */
+        struct facet_error ignored;
+        store_run_set_status(store, run_id, "interrupted", run.elapsed,
+                             &ignored);
+    }
     if (rc == FACET_OK) {
         if (hooks != NULL && hooks->started != NULL)
             hooks->started(hooks->context, run_id);

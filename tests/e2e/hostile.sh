@@ -115,4 +115,58 @@ for cmd in runs "show --run 1 --option 1"; do
 done
 run "$FACET" runs "$WORK/esc.db" --json
 json_check "runs --json: the name as stored, escaped by JSON" 'j[0]["name"] == "x\x1b[2J\x07y"'
+# 5. Two --resume of one run at once: one goes on, the other is refused,
+# naming the first (pid, host); the run ends with all its options.
+"$FACET" example roof --res 160 -o "$WORK/roof.obj" || exit 1
+"$FACET" optimize "$WORK/roof.obj" --db "$WORK/two.db" --u 4:9 --v 4:9 >/dev/null 2>&1 || exit 1
+total=$(sqlite3 "$WORK/two.db" "SELECT count(*) FROM options")
+sqlite3 "$WORK/two.db" "DELETE FROM options WHERE number > 10; UPDATE runs SET status = 'interrupted'"
+"$FACET" optimize --db "$WORK/two.db" --resume 1 >"$WORK/a.out" 2>"$WORK/a.err" & a=$!
+"$FACET" optimize --db "$WORK/two.db" --resume 1 >"$WORK/b.out" 2>"$WORK/b.err" & b=$!
+wait $a; sa=$?
+wait $b; sb=$?
+refused=$(cat "$WORK/a.err" "$WORK/b.err" | grep -c 'is being written by process [0-9]* on ')
+same "two resumes at once: one goes on (0), one is refused (2), naming the other" \
+    "$(printf '%s\n' $sa $sb | sort | paste -sd' ') $refused" "0 2 1"
+same "the run ends done with every option" \
+    "$(sqlite3 "$WORK/two.db" "SELECT status, options FROM runs")" "done|$total"
+# 9. A writer that ends leaves no WAL behind (truncated to 0 bytes).
+"$FACET" optimize "$WORK/p.obj" --db "$WORK/wal.db" --u 2:30 --v 2:30 >/dev/null 2>&1
+same "after a run the -wal is empty" "$(stat -c %s "$WORK/wal.db-wal")" 0
+
+# 12. Signals in every phase: SIGHUP while evaluating, SIGINT while the
+# front's panels are stored; each leaves the run resumable with 128 +
+# the signal, and the resumed run is done with its panels.
+wait_for() {  # wait_for SQL VALUE: until sqlite3 says VALUE (30 s at most)
+    for _ in $(seq 300); do
+        [ "$(sqlite3 "$WORK/sig.db" "$1" 2>/dev/null)" = "$2" ] && return 0
+        sleep 0.1
+    done
+    return 1
+}
+rm -f "$WORK/sig.db"*
+"$FACET" optimize "$WORK/roof.obj" --db "$WORK/sig.db" --u 20:200 --v 20:30 --jobs 1 >/dev/null 2>&1 & pid=$!
+wait_for "SELECT options > 0 FROM runs" 1
+kill -HUP $pid; wait $pid; status=$?
+same "SIGHUP while evaluating: exit 129, the run interrupted" \
+    "$status $(sqlite3 "$WORK/sig.db" 'SELECT status FROM runs')" "129 interrupted"
+rm -f "$WORK/sig.db"*
+# One grid at 21 thresholds: 17 Pareto options of 40,000 panels each to
+# store in the final phase, in chunks a stop is heard between.
+"$FACET" optimize "$WORK/roof.obj" --db "$WORK/sig.db" --u 200:200 --v 200:200 --threshold 0:10:0.5 --jobs 1 >/dev/null 2>&1 & pid=$!
+if wait_for "SELECT count(*) FROM options" 21; then
+    kill -INT $pid; wait $pid; status=$?
+    stored=$(sqlite3 "$WORK/sig.db" "SELECT count(*) FROM panel_sets")
+    pareto=$(sqlite3 "$WORK/sig.db" "SELECT count(*) FROM options WHERE rank = 1")
+    same "SIGINT after the last batch: exit 130, interrupted, not every front panel stored" \
+        "$status $(sqlite3 "$WORK/sig.db" 'SELECT status FROM runs') $([ "$stored" -lt "$pareto" ] && echo partial)" \
+        "130 interrupted partial"
+    expect "the interrupted final phase resumes" 0 "$FACET" optimize --db "$WORK/sig.db" --resume 1
+    same "resumed: done, every Pareto option's panels stored" \
+        "$(sqlite3 "$WORK/sig.db" "SELECT status FROM runs") $(sqlite3 "$WORK/sig.db" "SELECT count(*) FROM panel_sets") " \
+        "done $(sqlite3 "$WORK/sig.db" "SELECT count(*) FROM options WHERE rank = 1") "
+else
+    fail "the fine run reached its final phase"
+    kill $pid 2>/dev/null
+fi
 exit 0
