@@ -8,6 +8,7 @@
 #
 # Objects go to build/$(VARIANT)/; VARIANT=release (default) or san.
 
+SHELL   := /bin/bash
 CC      ?= gcc
 CXX     ?= g++
 VARIANT ?= release
@@ -16,13 +17,18 @@ VERSION := 0.1.0
 
 DEBIAN_PACKAGES := gcc g++ make pkg-config libncurses-dev libsqlite3-dev librsvg2-bin \
 	libcmocka-dev sqlite3 tmux python3 python3-tinyobjloader \
-	libtinyobjloader-dev libxml2-utils python3-deap
+	libtinyobjloader-dev libxml2-utils python3-deap clang libclang-rt-14-dev
 
 WARN    := -Wall -Wextra -Werror -Wshadow -Wstrict-prototypes -Wvla
 DEFS    := -D_POSIX_C_SOURCE=200809L -D_DEFAULT_SOURCE -DFACET_VERSION=\"$(VERSION)\"
 ifeq ($(VARIANT),san)
 OPT     := -O1 -g -fsanitize=address,undefined -fno-omit-frame-pointer \
 	-fno-sanitize-recover=all
+else ifeq ($(VARIANT),clang)
+OPT     := -O2 -g
+else ifeq ($(VARIANT),fuzz)
+OPT     := -O1 -g -fsanitize=address,undefined,fuzzer-no-link \
+	-fno-omit-frame-pointer -fno-sanitize-recover=all
 else
 OPT     := -O2 -g
 endif
@@ -37,18 +43,29 @@ CLI_SRC   := $(filter-out cli/main.c,$(wildcard cli/*.c))
 LIB_SRC   := $(CORE_SRC) $(STORE_SRC) $(TUI_SRC) $(CLI_SRC)
 LIB_OBJ   := $(LIB_SRC:%.c=$(BUILD)/%.o)
 
+SUPPORT_SRC := $(wildcard tests/support/*.c)
+SUPPORT_OBJ := $(SUPPORT_SRC:%.c=$(BUILD)/%.o)
 UNIT_SRC  := $(wildcard tests/unit/test_*.c)
 UNIT_BIN  := $(UNIT_SRC:tests/unit/%.c=$(BUILD)/tests/%)
 TOOL_SRC  := $(wildcard tests/tools/*.c)
 TOOL_BIN  := $(TOOL_SRC:tests/tools/%.c=$(BUILD)/tools/%)
+FUZZ_SRC  := $(wildcard tests/fuzz/fuzz_*.c)
+FUZZ_NAMES := $(FUZZ_SRC:tests/fuzz/fuzz_%.c=%)
+REPLAY_BIN := $(FUZZ_NAMES:%=$(BUILD)/fuzz/replay_%)
+FUZZ_BIN  := $(FUZZ_NAMES:%=$(BUILD)/fuzz/fuzz_%)
+FUZZ_SECONDS ?= 60
 BENCH_SRC := $(wildcard tests/bench/*.c)
 BENCH_BIN := $(BENCH_SRC:tests/bench/%.c=$(BUILD)/bench/%)
 
-.PHONY: all check test demo bench deps clean
+.PHONY: all check test demo bench deps clean fuzz fuzz-run
+
+# Objects built on the way (the tests' support) are kept, not removed.
+.SECONDARY:
 
 all: facet
 
-# ./facet is always the release build; the sanitizer build lives in build/san.
+# ./facet is always the release build; the sanitizer build lives in build/san,
+# clang's in build/clang, the fuzz targets' in build/fuzz.
 ifeq ($(VARIANT),release)
 facet: $(BUILD)/facet
 	cp $< $@
@@ -65,9 +82,19 @@ $(BUILD)/%.o: %.c
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS) -c -o $@ $<
 
-$(BUILD)/tests/%: tests/unit/%.c $(BUILD)/libfacet.a
+$(BUILD)/tests/%: tests/unit/%.c $(SUPPORT_OBJ) $(BUILD)/libfacet.a
 	@mkdir -p $(dir $@)
-	$(CC) $(CFLAGS) $(LDFLAGS) -o $@ $< $(BUILD)/libfacet.a -lcmocka $(LDLIBS)
+	$(CC) $(CFLAGS) $(LDFLAGS) -o $@ $< $(SUPPORT_OBJ) $(BUILD)/libfacet.a -lcmocka $(LDLIBS)
+
+# A fuzz target as a plain program that replays its corpus (make check),
+# and linked with libFuzzer (make fuzz, VARIANT=fuzz, clang).
+$(BUILD)/fuzz/replay_%: tests/fuzz/fuzz_%.c tests/fuzz/replay.c $(SUPPORT_OBJ) $(BUILD)/libfacet.a
+	@mkdir -p $(dir $@)
+	$(CC) $(CFLAGS) $(LDFLAGS) -o $@ $< tests/fuzz/replay.c $(SUPPORT_OBJ) $(BUILD)/libfacet.a $(LDLIBS)
+
+$(BUILD)/fuzz/fuzz_%: tests/fuzz/fuzz_%.c $(SUPPORT_OBJ) $(BUILD)/libfacet.a
+	@mkdir -p $(dir $@)
+	$(CC) $(CFLAGS) -fsanitize=fuzzer,address,undefined -o $@ $< $(SUPPORT_OBJ) $(BUILD)/libfacet.a $(LDLIBS)
 
 $(BUILD)/tools/%: tests/tools/%.c $(BUILD)/libfacet.a
 	@mkdir -p $(dir $@)
@@ -78,12 +105,33 @@ $(BUILD)/bench/%: tests/bench/%.c $(BUILD)/libfacet.a
 	$(CC) $(CFLAGS) $(LDFLAGS) -o $@ $< $(BUILD)/libfacet.a $(LDLIBS)
 
 # Build and run every test of one variant.
-test: $(BUILD)/facet $(UNIT_BIN) $(TOOL_BIN)
+test: $(BUILD)/facet $(UNIT_BIN) $(TOOL_BIN) $(REPLAY_BIN)
 	tests/run.sh $(BUILD)
 
 check: deps
 	$(MAKE) VARIANT=release facet test
 	$(MAKE) VARIANT=san test
+
+# Every fuzz target under libFuzzer with ASan and UBSan for FUZZ_SECONDS
+# each (default 60), from a copy of its seed corpus; a crash stops it, and
+# its input (build/fuzz/crashes/) belongs in tests/fuzz/crashes/NAME/ as a
+# regression test that make check replays.
+fuzz: deps
+	$(MAKE) VARIANT=fuzz CC=clang fuzz-run
+
+fuzz-run: $(FUZZ_BIN)
+	@mkdir -p $(BUILD)/crashes
+	@for name in $(FUZZ_NAMES); do \
+		work=$(BUILD)/work/$$name; rm -rf $$work; mkdir -p $$work; \
+		cp tests/fuzz/corpus/$$name/* $$work/ 2>/dev/null; \
+		echo "== fuzz_$$name for $(FUZZ_SECONDS) s"; \
+		$(BUILD)/fuzz/fuzz_$$name $$work -max_total_time=$(FUZZ_SECONDS) \
+			-timeout=20 -rss_limit_mb=2048 -max_len=65536 -print_final_stats=1 \
+			-artifact_prefix=$(BUILD)/crashes/$$name- 2>&1 | \
+			grep -E '^(#[0-9]+ *DONE|stat::number_of_executed_units|stat::peak_rss|==[0-9]+==ERROR|SUMMARY|artifact_prefix|Test unit written)'; \
+		status=$${PIPESTATUS[0]}; \
+		if [ $$status -ne 0 ]; then echo "fuzz_$$name FAILED (status $$status): see $(BUILD)/crashes"; exit 1; fi; \
+	done
 
 demo: deps facet
 	examples/demo.sh ./facet

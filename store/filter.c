@@ -777,13 +777,22 @@ static int is_compound(const struct node *n)
     return n->kind == NODE_NOT || n->kind == NODE_AND || n->kind == NODE_OR;
 }
 
-/* filter_text of node k; operand: it is an operand of not/and/or, so all
- * but a bare yes/no name are parenthesised. */
+/* filter_text of node k; operand: 1 when it is an operand of and/or, 2
+ * of not. All but a bare yes/no name are parenthesised, but for a not
+ * under a not ("not not knee"), so that a chain of nots reads back no
+ * deeper than it was written (text_depth counts the parentheses). */
+static int text_parens(const struct node *n, int operand)
+{
+    if (operand == 2 && n->kind == NODE_NOT)
+        return 0;
+    return operand && n->kind != NODE_YES_NO && n->kind != NODE_PARETO;
+}
+
 static void write_text(const struct filter *f, int k, int operand,
                        struct buffer *b)
 {
     const struct node *n = &f->nodes[k];
-    int parens = operand && n->kind != NODE_YES_NO && n->kind != NODE_PARETO;
+    int parens = text_parens(n, operand);
     char number[NUMBER_EXACT_SIZE];
     if (parens)
         put(b, "(");
@@ -804,7 +813,7 @@ static void write_text(const struct filter *f, int k, int operand,
         break;
     case NODE_NOT:
         put(b, "not ");
-        write_text(f, n->child, 1, b);
+        write_text(f, n->child, 2, b);
         break;
     case NODE_AND:
     case NODE_OR:
@@ -817,6 +826,24 @@ static void write_text(const struct filter *f, int k, int operand,
     }
     if (parens)
         put(b, ")");
+}
+
+/* How deep write_text's text of node k nests '(' and 'not' (operand as
+ * there): what the parser counts against FILTER_MAX_DEPTH. */
+static int text_depth(const struct filter *f, int k, int operand)
+{
+    const struct node *n = &f->nodes[k];
+    int own = text_parens(n, operand);
+    int deepest = 0;
+    if (n->kind == NODE_NOT)
+        deepest = 1 + text_depth(f, n->child, 2);
+    else if (n->kind == NODE_AND || n->kind == NODE_OR)
+        for (int c = n->child; c >= 0; c = f->nodes[c].next) {
+            int d = text_depth(f, c, 1);
+            if (d > deepest)
+                deepest = d;
+        }
+    return own + deepest;
 }
 
 /* The SQL of node k. Comparisons bind tighter than NOT, AND and OR in
@@ -919,6 +946,16 @@ int filter_compile(const char *text, struct filter **out,
             goto fail;
         if (peek(&p)->kind != TOK_END) {
             rc = fail_after_condition(&p, peek(&p));
+            goto fail;
+        }
+        /* Its text is compiled again (shown, copied, brushed): it must
+         * nest within the limit too, with the parentheses write_text
+         * puts around every operand. */
+        if (text_depth(f, f->root, 0) > FILTER_MAX_DEPTH) {
+            rc = facet_error_set(err, FACET_EINPUT,
+                "--where: nested too deeply (more than %d parentheses and "
+                "nots as Facet writes the expression back)",
+                FILTER_MAX_DEPTH);
             goto fail;
         }
         write_text(f, f->root, 0, &b);
