@@ -158,11 +158,11 @@ static int optimize_main(int argc, char **argv, struct facet_error *err)
     struct search_flags search;
     struct classify_flags flags;
     const char *db = NULL, *resume = NULL, *name = NULL, *table = NULL;
-    const char *surface = NULL;
+    const char *surface = NULL, *store_panels = NULL;
     int wide = 0;
     memset(&search, 0, sizeof search);
     memset(&flags, 0, sizeof flags);
-    struct arg_option options[CLASSIFY_FLAG_COUNT + 17] = {
+    struct arg_option options[CLASSIFY_FLAG_COUNT + 18] = {
         {"db", 0, ARG_STRING, &db, NULL},
         {"u", 0, ARG_STRING, &search.u, NULL},
         {"v", 0, ARG_STRING, &search.v, NULL},
@@ -179,9 +179,10 @@ static int optimize_main(int argc, char **argv, struct facet_error *err)
         {"table", 0, ARG_STRING, &table, NULL},
         {"surface", 0, ARG_STRING, &surface, NULL},
         {"wide", 0, ARG_FLAG, NULL, &wide},
+        {"store-panels", 0, ARG_STRING, &store_panels, NULL},
     };
-    classify_flags_table(&flags, options + 16);
-    options[CLASSIFY_FLAG_COUNT + 16] =
+    classify_flags_table(&flags, options + 17);
+    options[CLASSIFY_FLAG_COUNT + 17] =
         (struct arg_option){NULL, 0, ARG_FLAG, NULL, NULL};
     const char *path[1];
     int count;
@@ -223,6 +224,7 @@ static int optimize_main(int argc, char **argv, struct facet_error *err)
         request.surface_path = path[0];
         request.flip_normals = flags.flip_normals;
         request.name = name ? name : "";
+        request.store_panels = store_panels;
     }
 
     /* A surface that cannot be read is refused before the database is
@@ -299,6 +301,9 @@ const struct command cmd_optimize = {
         "  --surface FILE      with --resume: the run's surface has moved;\n"
         "                      record its new place (same SHA-256)\n"
         "  --name TEXT         a name for the run\n"
+        "  --store-panels W    whose panels to store at the end: front (every\n"
+        "                      Pareto option, default), knee or none; fewer\n"
+        "                      when the disk cannot hold them (said)\n"
         "  --table N           rows of the final table (default 20; 0 all)\n"
         "  --wide              every column of it, whatever the terminal\n"
         "examples:\n"

@@ -635,6 +635,19 @@ static int run_random(struct search *s, enum optimize_outcome *outcome,
     return rc;
 }
 
+int64_t optimize_total(const struct optimize_settings *settings)
+{
+    switch (settings->method) {
+    case METHOD_EXHAUSTIVE:
+        return (int64_t)design_space_size(&settings->space);
+    case METHOD_RANDOM:
+        return settings->evaluations;
+    default:
+        return (int64_t)settings->population *
+               ((int64_t)settings->generations + 1);
+    }
+}
+
 int optimize_run(const struct surface *surface,
                  const struct panel_lattice *lattice,
                  const struct optimize_settings *settings,
@@ -646,19 +659,7 @@ int optimize_run(const struct surface *surface,
     int rc = design_space_check(&settings->space, err);
     if (rc != FACET_OK)
         return rc;
-    int64_t total;
-    switch (settings->method) {
-    case METHOD_EXHAUSTIVE:
-        total = (int64_t)design_space_size(&settings->space);
-        break;
-    case METHOD_RANDOM:
-        total = settings->evaluations;
-        break;
-    default:
-        total = (int64_t)settings->population *
-                ((int64_t)settings->generations + 1);
-        break;
-    }
+    int64_t total = optimize_total(settings);
     struct search s;
     rc = search_init(&s, surface, settings, stored, nstored, hooks, total,
                      err);

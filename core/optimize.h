@@ -97,13 +97,19 @@ int design_space_parse_threshold(const char *text,
                                  struct design_space *space,
                                  struct facet_error *err);
 
-/* Checks ranges (1 <= min <= max <= PANEL_MAX_GRID, finite thresholds
- * >= 0, step >= 0). FACET_EINPUT names the bad range. */
 /* The most threshold steps an exhaustive space may have. */
 #define DESIGN_THRESHOLD_STEPS_MAX 1000000
 
+/* Checks ranges (1 <= min <= max <= PANEL_MAX_GRID, finite thresholds
+ * >= 0, step >= 0, at most DESIGN_THRESHOLD_STEPS_MAX threshold steps).
+ * FACET_EINPUT names the bad range. */
 int design_space_check(const struct design_space *space,
                        struct facet_error *err);
+
+/* The options a run of settings evaluates at most (a point met twice is
+ * evaluated once): the space for exhaustive, the evaluations for random,
+ * population x (generations + 1) for NSGA-II. */
+int64_t optimize_total(const struct optimize_settings *settings);
 
 /* Runs the search on the prepared surface, the panels of the grids
  * lattice holds (or NULL; see optimize_lattice) taken from it. stored[0..

@@ -155,7 +155,10 @@ static const char schema_v3[] =
 static const char schema_v4[] =
     "ALTER TABLE runs ADD COLUMN uv TEXT;"  /* --uv, NULL: automatic */
     /* What the designer was warned of when the run began, one per line. */
-    "ALTER TABLE runs ADD COLUMN warnings TEXT NOT NULL DEFAULT '';";
+    "ALTER TABLE runs ADD COLUMN warnings TEXT NOT NULL DEFAULT '';"
+    /* Which options' panels the run stores when it ends. */
+    "ALTER TABLE runs ADD COLUMN store_panels TEXT NOT NULL DEFAULT 'front'"
+    " CHECK (store_panels IN ('front', 'knee', 'none'));";
 
 static const char *const migrations[STORE_SCHEMA_VERSION] = {
     schema_v1,

@@ -35,6 +35,9 @@ struct run_info {
     int64_t triangles;         /* after triangulation */
     char uv_method[12];        /* taken: "vt", "grid", "plane", "harmonic" */
     char uv[12];               /* asked for (--uv), or "" for automatic */
+    char store_panels[8];      /* whose panels it stores at the end:
+                                  "front" (every Pareto option), "knee",
+                                  "none" */
     char warnings[1400];       /* what the run warned of when it began
                                   (the surface's warnings and a mesh coarser
                                   than the space's finest panels), one per

@@ -23,7 +23,7 @@
     " coalesce(writer_pid, 0), coalesce(writer_host, '')," \
     " hypervolume, coalesce(knee, 0), coalesce(pareto_options, 0)," \
     " best_cost, coalesce(surface_area, 0), coalesce(triangles, 0)," \
-    " coalesce(uv_method, ''), coalesce(uv, ''), warnings"
+    " coalesce(uv_method, ''), coalesce(uv, ''), warnings, store_panels"
 
 static void copy_text(char *to, size_t size, sqlite3_stmt *stmt, int col)
 {
@@ -81,6 +81,7 @@ static void run_from_row(const struct store *store, sqlite3_stmt *s,
     copy_text(r->uv_method, sizeof r->uv_method, s, c++);
     copy_text(r->uv, sizeof r->uv, s, c++);
     copy_text(r->warnings, sizeof r->warnings, s, c++);
+    copy_text(r->store_panels, sizeof r->store_panels, s, c++);
     /* A writer marks such runs when it opens the file; a reader cannot
      * write, so it reads them as what they are. */
     if (store->read_only && strcmp(r->status, "running") == 0 &&
@@ -108,10 +109,11 @@ int store_run_create(struct store *store, struct run_info *r,
         " max_panel_area_limit, curvature_tol, per_panel, flip_normals,"
         " objectives, population, generations, evaluations, jobs, version,"
         " writer_pid, writer_host, surface_area, triangles, uv_method, uv,"
-        " warnings)"
+        " warnings, store_panels)"
         " VALUES (?1, 'running', ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10, ?11,"
         " ?12, ?13, ?14, ?15, ?16, ?17, ?18, ?19, ?20, ?21, ?22, ?23, ?24,"
-        " ?25, ?26, ?27, ?28, ?29, ?30, ?31, ?32, ?33, ?34, ?35, ?36, ?37)",
+        " ?25, ?26, ?27, ?28, ?29, ?30, ?31, ?32, ?33, ?34, ?35, ?36, ?37,"
+        " ?38)",
         &s, "creating a run", err);
     if (rc != FACET_OK)
         return rc;
@@ -161,6 +163,8 @@ int store_run_create(struct store *store, struct run_info *r,
     sqlite3_bind_text(s, 35, r->uv_method, -1, SQLITE_TRANSIENT);
     bind_text_or_null(s, 36, r->uv);
     sqlite3_bind_text(s, 37, r->warnings, -1, SQLITE_TRANSIENT);
+    sqlite3_bind_text(s, 38, r->store_panels[0] ? r->store_panels : "front",
+                      -1, SQLITE_TRANSIENT);
     if (sqlite3_step(s) != SQLITE_DONE)
         rc = store_fail(store, "creating a run", err);
     else

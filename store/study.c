@@ -4,6 +4,7 @@
 #include "study.h"
 
 #include <errno.h>
+#include <sys/statvfs.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -388,6 +389,57 @@ int study_option_panels(struct store *store, const struct run_info *run,
     return rc;
 }
 
+/* The bytes free to the writer on the disk of the database at db_path
+ * (its folder's file system), or -1 when that cannot be told. */
+static double disk_free_bytes(const char *db_path)
+{
+    char folder[4096];
+    snprintf(folder, sizeof folder, "%s", db_path);
+    char *slash = strrchr(folder, '/');
+    if (slash == NULL)
+        snprintf(folder, sizeof folder, ".");
+    else if (slash == folder)
+        slash[1] = '\0';
+    else
+        *slash = '\0';
+    struct statvfs fs;
+    if (statvfs(folder, &fs) != 0)
+        return -1;
+    return (double)fs.f_bavail * (double)fs.f_frsize;
+}
+
+/* bytes as a person reads them: "850 kB", "12.3 MB", "4.1 GB". */
+static void format_bytes(double bytes, char *out, size_t size)
+{
+    if (bytes < 1e6)
+        snprintf(out, size, "%.0f kB", bytes / 1e3);
+    else if (bytes < 1e9)
+        snprintf(out, size, "%.1f MB", bytes / 1e6);
+    else
+        snprintf(out, size, "%.1f GB", bytes / 1e9);
+}
+
+/* Refuses, before any work, a run whose options (those not stored yet)
+ * cannot fit the free disk space of its database. */
+static int check_room(const struct store *store,
+                      const struct optimize_settings *settings,
+                      int64_t stored, struct facet_error *err)
+{
+    double free_bytes = disk_free_bytes(store_path(store));
+    int64_t left = optimize_total(settings) - stored;
+    double need = (double)(left > 0 ? left : 0) * STUDY_OPTION_BYTES;
+    if (free_bytes >= 0 && need > free_bytes) {
+        char a[32], b[32];
+        format_bytes(need, a, sizeof a);
+        format_bytes(free_bytes, b, sizeof b);
+        return facet_error_set(err, FACET_EINPUT,
+            "%s: the run's %lld options need about %s and its disk has %s "
+            "free: make room, or search a smaller space", store_path(store),
+            (long long)left, a, b);
+    }
+    return FACET_OK;
+}
+
 /* Whether the user asked the study to stop (the hook, if any). */
 static int should_stop(const struct study_hooks *hooks)
 {
@@ -409,12 +461,20 @@ static int store_front_panels(struct store *store, const struct run_info *run,
     struct option_query q = {run->id, 1, NULL, NULL, 0, 0, 0};
     struct option_row *rows;
     size_t n, nfront = 0;
+    if (strcmp(run->store_panels, "none") == 0)
+        return FACET_OK;
+    int knee_only = strcmp(run->store_panels, "knee") == 0;
     int rc = store_options_query_rows(store, &q, &rows, &n, err);
     struct design_point *points = malloc((n ? n : 1) * sizeof *points);
     int64_t *numbers = malloc((n ? n : 1) * sizeof *numbers);
     if (rc == FACET_OK && (points == NULL || numbers == NULL))
         rc = facet_error_set(err, FACET_EWORK, "out of memory");
+    int64_t knee = 0;
     for (size_t k = 0; rc == FACET_OK && k < n; k++) {
+        if (rows[k].knee)
+            knee = rows[k].number;
+        if (knee_only && !rows[k].knee)
+            continue;
         int stored = store_panels_exist(store, run->id, rows[k].number, err);
         if (stored < 0)
             rc = -stored;
@@ -425,6 +485,40 @@ static int store_front_panels(struct store *store, const struct run_info *run,
         }
     }
     free(rows);
+    /* What they take on disk, against what it has: a front of fine grids
+     * can need more than the disk holds (two 1000 x 1000 options: 611 MB).
+     * Then the knee alone, or nothing, with the reason said; facet show and
+     * export compute an option's panels when asked. */
+    double free_bytes = disk_free_bytes(store_path(store));
+    double need = 0, knee_need = 0;
+    size_t knee_at = nfront;
+    for (size_t k = 0; k < nfront; k++) {
+        need += (double)points[k].nu * points[k].nv * STUDY_PANEL_BYTES;
+        if (numbers[k] == knee) {
+            knee_at = k;
+            knee_need = (double)points[k].nu * points[k].nv *
+                        STUDY_PANEL_BYTES;
+        }
+    }
+    if (rc == FACET_OK && free_bytes >= 0 && need > free_bytes) {
+        char text[400], a[32], b[32];
+        int keep_knee = knee_at < nfront && knee_need <= free_bytes;
+        format_bytes(need, a, sizeof a);
+        format_bytes(free_bytes, b, sizeof b);
+        snprintf(text, sizeof text, "the front's panels need about %s and "
+                 "the disk has %s free: %s stored (facet show and export "
+                 "compute an option's panels when asked)", a, b,
+                 keep_knee ? "only the knee's are" : "none are");
+        if (hooks != NULL && hooks->warning != NULL)
+            hooks->warning(hooks->context, text);
+        if (keep_knee) {
+            points[0] = points[knee_at];
+            numbers[0] = numbers[knee_at];
+            nfront = 1;
+        } else {
+            nfront = 0;
+        }
+    }
     struct panelization *panels = NULL;
     struct option_totals *totals = NULL;
     if (rc == FACET_OK && nfront > 0) {
@@ -583,6 +677,11 @@ int study_request_check(const struct study_request *request,
         return facet_error_set(err, FACET_EINPUT,
             "the run's name is not clean UTF-8 text (control characters or "
             "invalid bytes)");
+    const char *keep = request->store_panels;
+    if (keep != NULL && strcmp(keep, "front") != 0 &&
+        strcmp(keep, "knee") != 0 && strcmp(keep, "none") != 0)
+        return facet_error_set(err, FACET_EINPUT,
+            "panels to store: '%s' is not front, knee or none", keep);
     return design_space_check(&request->settings.space, err);
 }
 
@@ -596,6 +695,8 @@ int study_start(struct store *store, const struct study_request *request,
     int rc = design_space_check(&s->space, err);
     if (rc == FACET_OK)
         rc = store_check(store, err);
+    if (rc == FACET_OK)
+        rc = check_room(store, s, 0, err);
     if (rc != FACET_OK)
         return rc;
     double started = clock_seconds();
@@ -604,6 +705,8 @@ int study_start(struct store *store, const struct study_request *request,
     if ((rc = study_request_check(request, err)) != FACET_OK)
         return rc;
     snprintf(run.name, sizeof run.name, "%s", request->name);
+    snprintf(run.store_panels, sizeof run.store_panels, "%s",
+             request->store_panels ? request->store_panels : "front");
     /* Recorded absolute, so the run's surface is found from any folder;
      * a path realpath cannot resolve fails below, when it is read. */
     char absolute[4096];
@@ -696,6 +799,8 @@ int study_resume(struct store *store, int64_t run_id,
     int flip;
     if (rc == FACET_OK)
         rc = study_settings(&run, &settings, &mesh, &flip, err);
+    if (rc == FACET_OK)
+        rc = check_room(store, &settings, run.options, err);
     /* Claimed before the surface is read (which takes a while), so that a
      * second --resume of the run is refused, not run twice. */
     if (rc == FACET_OK)

@@ -46,7 +46,18 @@ struct study_request {
                                         that applies */
     struct optimize_settings settings;
     const char *name;                /* "" for none */
+    const char *store_panels;        /* whose panels to store at the end:
+                                        "front" (NULL too), "knee" or
+                                        "none"; the others are computed
+                                        when shown or exported */
 };
+
+/* What storing costs on disk, as measured (a 680,000-panel front: 303
+ * bytes a panel; a million options: 350 bytes each, indexes included),
+ * with a margin: what a run checks the free space against before it
+ * starts, and before it stores its front's panels. */
+#define STUDY_PANEL_BYTES 320
+#define STUDY_OPTION_BYTES 400
 
 /* Checks what request asks for before anything is opened or created: a
  * name that is clean UTF-8 text of at most 127 bytes, a sound design

@@ -169,4 +169,45 @@ else
     fail "the fine run reached its final phase"
     kill $pid 2>/dev/null
 fi
+# 13 and a full disk: a small tmpfs (where this machine lets root mount
+# one). A run that cannot fit is refused before any work, with the
+# figures; a front's panels that cannot fit are not stored, and it says
+# so; a disk that fills mid-run fails the run in one line, the file intact
+# and resumable; an export that fills it leaves no partial file.
+disk=$WORK/disk
+mkdir -p "$disk"
+if [ "$(id -u)" -eq 0 ] && mount -t tmpfs -o size=400k tmpfs "$disk" 2>/dev/null; then
+    expect_error "a run too large for the disk is refused with the figures" \
+        "the run's 1369 options need about [0-9.]+ [kM]B and its disk has [0-9.]+ kB free" \
+        "$FACET" optimize "$WORK/p.obj" --db "$disk/big.db" --u 4:40 --v 4:40
+    rm -f "$disk"/big.db*
+    run "$FACET" optimize "$WORK/roof.obj" --db "$disk/full.db" --u 4:15 --v 4:15
+    same "a disk that fills mid-run: exit 1, one line naming it" \
+        "$STATUS $(grep -c 'database or disk is full' "$ERR")" "1 1"
+    same "the file is intact, the run failed and resumable" \
+        "$(sqlite3 "$disk/full.db" 'PRAGMA quick_check; SELECT status FROM runs')" "$(printf 'ok\nfailed')"
+    rm -f "$disk"/full.db*
+    "$FACET" optimize "$WORK/p.obj" --db "$WORK/ex.db" --u 60:60 --v 60:60 >/dev/null 2>&1
+    run "$FACET" export "$WORK/ex.db" --run 1 --option 1 --obj "$disk/x.obj"
+    same "an export that fills the disk: exit 1, no file left" \
+        "$STATUS $(ls "$disk" | wc -l)" "1 0"
+    umount "$disk"
+    if mount -t tmpfs -o size=8m tmpfs "$disk" 2>/dev/null; then
+        run "$FACET" optimize "$WORK/p.obj" --db "$disk/panels.db" --u 400:400 --v 400:402 --threshold 3
+        same "a front too large for the disk: done, said, not stored" \
+            "$STATUS $(grep -c "front's panels need about .* free: none are stored" "$ERR") $(sqlite3 "$disk/panels.db" 'SELECT status FROM runs; SELECT count(*) FROM panel_sets' | paste -sd' ')" \
+            "0 1 done 0"
+        umount "$disk"
+    fi
+else
+    skip "full-disk checks" "they need root to mount a small tmpfs"
+fi
+# 13. Storing fewer panels when asked: the knee's only, or none.
+for keep in knee none; do
+    "$FACET" optimize "$WORK/roof.obj" --db "$WORK/keep-$keep.db" --u 4:12 --v 4:12 --store-panels $keep \
+        --max-panel-area 1000 >/dev/null 2>&1
+    same "--store-panels $keep: recorded, and the panels stored are the knee's or none" \
+        "$(sqlite3 "$WORK/keep-$keep.db" "SELECT store_panels FROM runs; SELECT count(*) FROM panel_sets; SELECT count(*) FROM panel_sets s JOIN options o ON o.run = s.run AND o.number = s.option WHERE o.knee")" \
+        "$(printf '%s\n%s\n%s' $keep $([ $keep = knee ] && echo '1 1' || echo '0 0'))"
+done
 exit 0

@@ -116,7 +116,7 @@ else
 fi
 
 # A version-3 file (no runs.uv) is migrated to 4 when opened.
-sql "$db" "ALTER TABLE runs DROP COLUMN uv; ALTER TABLE runs DROP COLUMN warnings; PRAGMA user_version = 3;"
+sql "$db" "ALTER TABLE runs DROP COLUMN uv; ALTER TABLE runs DROP COLUMN warnings; ALTER TABLE runs DROP COLUMN store_panels; PRAGMA user_version = 3;"
 expect "facet runs on a v3 file" 0 "$FACET" runs "$db"
 same "migrated: version 4, runs.uv back, NULL, runs.warnings empty" \
     "$(sql "$db" "SELECT (SELECT user_version FROM pragma_user_version), (SELECT count(*) FROM runs WHERE uv IS NULL), (SELECT count(*) FROM runs WHERE warnings = '')")" "4|2|2"

@@ -598,7 +598,7 @@ static void test_migrates_older_schema(void **state)
               "DROP INDEX options_by_fp_area; DROP INDEX options_by_sp_area;"
               "DROP INDEX options_by_nu; DROP INDEX options_by_nv;"
               "DROP INDEX options_by_threshold;"
-              "ALTER TABLE runs DROP COLUMN uv; ALTER TABLE runs DROP COLUMN warnings;"
+              "ALTER TABLE runs DROP COLUMN uv; ALTER TABLE runs DROP COLUMN warnings; ALTER TABLE runs DROP COLUMN store_panels;"
               "PRAGMA user_version = 1;");
     assert_int_equal(store_open(path, &store, &err), FACET_OK);
     struct run_info info;
@@ -634,7 +634,7 @@ static void test_migrates_v3(void **state)
     struct study_request request;
     int64_t old = finished_run(store, &request);
     store_close(store);
-    sql(path, "ALTER TABLE runs DROP COLUMN uv; ALTER TABLE runs DROP COLUMN warnings;"
+    sql(path, "ALTER TABLE runs DROP COLUMN uv; ALTER TABLE runs DROP COLUMN warnings; ALTER TABLE runs DROP COLUMN store_panels;"
               " PRAGMA user_version = 3;");
     assert_int_equal(store_open(path, &store, &err), FACET_OK);
     struct run_info info;
