@@ -26,6 +26,8 @@ struct runs_screen {
     struct tui_input search;
     char last_search[TUI_INPUT_MAX];
     struct timespec last_load;
+    int64_t runs_finished;        /* app->runs_finished when last seen */
+    int rows;                     /* rows shown at the last draw */
 };
 
 static const struct tui_key_help runs_help[] = {
@@ -38,7 +40,7 @@ static const struct tui_key_help runs_help[] = {
     {"a, F7", "a new run (New run form)"},
     {"/, F3", "search names and surfaces"},
     {"n / N", "next / previous match"},
-    {"r, F5", "reload the list"},
+    {"r", "reload the list (it reloads every second by itself)"},
     {NULL, NULL},
 };
 
@@ -92,6 +94,7 @@ static void runs_draw(struct tui_screen *base, struct tui_app *app,
     tui_fill(1, 0, width, tui_attr(ROLE_HEADER));
     tui_put(1, 0, width, tui_attr(ROLE_HEADER), header);
     int rows = height - 2;
+    s->rows = rows;
     if (s->n == 0) {
         tui_put(3, 2, width - 2, A_NORMAL,
                 "No runs yet. Press a (or F7) for a new run, or run "
@@ -221,7 +224,20 @@ static enum tui_result runs_key(struct tui_screen *base, struct tui_app *app,
     case 'a': case KEY_F(7):
         tui_push(app, screen_newrun_new(app, NULL));
         return RESULT_HANDLED;
-    case 'r': case KEY_F(5):
+    case KEY_MOUSE:
+        /* a click selects a run, twice opens it; the wheel is the
+         * frame's */
+        if (app->mouse.kind != MOUSE_CLICK)
+            return RESULT_UNHANDLED;
+        if (app->mouse.y >= 2 && app->mouse.y < 2 + s->rows &&
+            s->top + (size_t)(app->mouse.y - 2) < s->n) {
+            s->selected = s->top + (size_t)(app->mouse.y - 2);
+            if (app->mouse.clicks == 2)
+                tui_push(app, screen_options_new(app,
+                                                 s->runs[s->selected].id));
+        }
+        return RESULT_HANDLED;
+    case 'r':
         load(s, app);
         return RESULT_HANDLED;
     case KEY_F(3):
@@ -278,8 +294,10 @@ static enum tui_result runs_key(struct tui_screen *base, struct tui_app *app,
 static int runs_tick(struct tui_screen *base, struct tui_app *app)
 {
     struct runs_screen *s = (struct runs_screen *)base;
-    if (tui_seconds_since(&s->last_load) < 1.0)
+    if (s->runs_finished == app->runs_finished &&
+        tui_seconds_since(&s->last_load) < 1.0)
         return 0;
+    s->runs_finished = app->runs_finished;
     return load(s, app);
 }
 
@@ -292,8 +310,8 @@ static void runs_destroy(struct tui_screen *base)
 
 static const struct tui_screen_class runs_class = {
     "Runs", runs_help,
-    {"Help", NULL, "Search", NULL, "Reload", "Resume", "New", "Delete",
-     NULL, "Quit"},
+    {"Help", NULL, "Search", NULL, NULL, "Resume", "New", "Delete", NULL,
+     "Quit"},
     runs_draw, runs_key, runs_tick, runs_destroy,
 };
 
