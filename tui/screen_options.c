@@ -312,15 +312,15 @@ static void options_draw(struct tui_screen *base, struct tui_app *app,
     sort_text(s, sort, sizeof sort);
     char shown[32];
     table_model_count_text(m, shown, sizeof shown);
-    /* the scroll position at the right: "row 12 of 336" */
+    /* the scroll position first: "row 12 of 336" (the count, "2,000+"
+     * while it is a lower bound) */
     char position[64];
-    table_model_position_text(m, position, sizeof position);
-    int pw = tui_text_width(position) + 1;
-    int room = width - pw > 0 ? width - pw : 0;
     if (m->count > 0)
-        tui_put(1, room, pw, tui_attr(ROLE_DIM), position);
-    int x = tui_putf(1, 0, room, A_NORMAL, " %s shown  sort %s", shown,
-                     sort);
+        table_model_position_text(m, position, sizeof position);
+    else
+        snprintf(position, sizeof position, "%s shown", shown);
+    int room = width;
+    int x = tui_putf(1, 0, room, A_NORMAL, " %s  sort %s", position, sort);
     const char *where = m->filter ? filter_text(m->filter) : "";
     x += tui_putf(1, x, room - x, where[0] ? tui_attr(ROLE_PARETO)
                                            : A_NORMAL,

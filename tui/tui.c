@@ -462,10 +462,19 @@ static int read_mouse(struct tui_app *app)
 
 /* Asks before quitting: always on the first screen's q/Esc, on F10 only
  * while a run works (which quitting stops, resumably). */
+static int job_working(struct tui_app *app)
+{
+    if (app->job == NULL)
+        return 0;
+    struct tui_job_state st;
+    tui_job_state(app->job, &st);
+    return !st.finished;
+}
+
 static void ask_quit(struct tui_app *app)
 {
     app->confirm_quit = 1;
-    if (app->job != NULL)
+    if (job_working(app))
         tui_error(app, "A run is working: quit and stop it (it stays "
                   "resumable)? (y/n)");
     else
@@ -484,9 +493,9 @@ static void loop(struct tui_app *app)
             break;
         struct tui_screen *s = top(app);
         if (key == ERR) {
-            if (poll_job(app))
-                dirty = 1;
             if (s->cls->tick && s->cls->tick(s, app))
+                dirty = 1;
+            if (poll_job(app))
                 dirty = 1;
             continue;
         }
@@ -550,9 +559,8 @@ static void loop(struct tui_app *app)
             /* a wheel the screen does not take: three lines as keys */
             int arrow = app->mouse.kind == MOUSE_WHEEL_UP ? KEY_UP
                                                           : KEY_DOWN;
-            for (int k = 0; k < 3 && r == RESULT_UNHANDLED; k++)
-                if (s->cls->key(s, app, arrow) != RESULT_UNHANDLED)
-                    r = RESULT_HANDLED;
+            for (int k = 0; k < 3; k++)
+                s->cls->key(s, app, arrow);
             r = RESULT_HANDLED;
         }
         if (r == RESULT_UNHANDLED && app->prompt == NULL) {
@@ -578,7 +586,7 @@ static void loop(struct tui_app *app)
             ask_quit(app);
         else if (r == RESULT_BACK)
             pop(app);
-        else if (r == RESULT_QUIT && app->job != NULL)
+        else if (r == RESULT_QUIT && job_working(app))
             ask_quit(app);
         else if (r == RESULT_QUIT)
             break;
