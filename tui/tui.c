@@ -283,23 +283,66 @@ static const struct tui_key_help global_help[] = {
     {NULL, NULL},
 };
 
-/* The help's lines: the screen's keys, a heading, the global keys. */
+/* The help's lines: the screen's keys, a heading, the global keys; a
+ * description wider than what_width goes on under its keys, cut at
+ * blanks, so that nothing is cut at the screen's edge. */
 struct help_line {
-    const char *keys, *what;  /* keys NULL: a heading (what) */
+    const char *keys;  /* NULL: a heading (text); "": a continuation */
+    char text[128];
 };
 
+static int help_add(struct help_line *out, int n, int max, const char *keys,
+                    const char *what, int what_width)
+{
+    if (what_width < 20)
+        what_width = 20;
+    if (what_width > 127)
+        what_width = 127;
+    const char *p = what;
+    int first = 1;
+    while (n < max) {
+        int len = (int)strlen(p), cut = len;
+        if (tui_text_width(p) > what_width) {
+            /* the last blank within what_width code points */
+            int columns = 0, k = 0;
+            cut = 0;
+            for (; p[k] && columns < what_width; k++) {
+                if (((unsigned char)p[k] & 0xc0) != 0x80)
+                    columns++;
+                if (p[k] == ' ')
+                    cut = k;
+            }
+            if (cut == 0)
+                cut = k;
+        }
+        out[n].keys = first ? keys : "";
+        snprintf(out[n].text, sizeof out[n].text, "%.*s", cut, p);
+        n++;
+        first = 0;
+        p += cut;
+        while (*p == ' ')
+            p++;
+        if (*p == '\0')
+            break;
+    }
+    return n;
+}
+
 static int help_lines(const struct tui_screen *s, struct help_line *out,
-                      int max)
+                      int max, int what_width)
 {
     int n = 0;
     for (const struct tui_key_help *h = s->cls->help; h->keys && n < max;
          h++)
-        out[n++] = (struct help_line){h->keys, h->what};
-    if (n < max)
-        out[n++] = (struct help_line){NULL, "Everywhere"};
+        n = help_add(out, n, max, h->keys, h->what, what_width);
+    if (n < max) {
+        out[n].keys = NULL;
+        snprintf(out[n].text, sizeof out[n].text, "Everywhere");
+        n++;
+    }
     for (const struct tui_key_help *h = global_help; h->keys && n < max;
          h++)
-        out[n++] = (struct help_line){h->keys, h->what};
+        n = help_add(out, n, max, h->keys, h->what, what_width);
     return n;
 }
 
@@ -309,10 +352,19 @@ static int help_lines(const struct tui_screen *s, struct help_line *out,
 static void draw_help(struct tui_app *app, int height, int width)
 {
     const struct tui_screen *s = top(app);
-    struct help_line lines[96];
-    int n = help_lines(s, lines, 96);
+    static struct help_line lines[128];
+    /* two columns need 2 x 78 + 3: the width of one decides the wrap */
+    int two = width >= 2 * 78 + 3;
+    int cw = two ? (width - 1) / 2 : width;
+    int n = help_lines(s, lines, 128, cw - 19);
     struct tui_help_page page;
     tui_help_layout(n, height, width, 78, app->help_top, &page);
+    if (page.columns == 1 && two) {
+        /* one column after all: wrapped for the whole width */
+        cw = width;
+        n = help_lines(s, lines, 128, cw - 19);
+        tui_help_layout(n, height, width, 78, app->help_top, &page);
+    }
     app->help_top = page.top;
     for (int y = 0; y < height; y++)
         tui_fill(y, 0, width, tui_attr(ROLE_NORMAL));
@@ -327,17 +379,16 @@ static void draw_help(struct tui_app *app, int height, int width)
     int ww = tui_text_width(where);
     if (ww < width - 20)
         tui_put(0, width - ww, ww, tui_attr(ROLE_TITLE), where);
-    int cw = page.columns == 2 ? (width - 1) / 2 : width;
     for (int k = page.top; k < last; k++) {
         int col = (k - page.top) / page.per_page;
         int y = 2 + (k - page.top) % page.per_page;
         int x0 = col * (cw + 1);
         if (lines[k].keys == NULL) {
-            tui_put(y, x0 + 1, cw - 2, tui_attr(ROLE_HEADER), lines[k].what);
+            tui_put(y, x0 + 1, cw - 2, tui_attr(ROLE_HEADER), lines[k].text);
             continue;
         }
         tui_put(y, x0 + 1, 16, tui_attr(ROLE_PARETO), lines[k].keys);
-        tui_put(y, x0 + 18, cw - 19, A_NORMAL, lines[k].what);
+        tui_put(y, x0 + 18, cw - 19, A_NORMAL, lines[k].text);
     }
     tui_put(height - 1, 1, width - 2, tui_attr(ROLE_DIM),
             n > shown ? "j/k or PgUp/PgDn scroll; any other key closes"
