@@ -95,6 +95,12 @@ struct tui_app {
      * draws it, and the options table of that run refreshes when
      * job_samples moves, so the two show one moment. */
     int64_t job_run, job_done, job_total, job_samples;
+    int64_t job_stored;           /* its options stored, at the sample */
+    int job_sampling;             /* a sample was taken this round: the
+                                     ticks read the run in its snapshot */
+    int job_snapshot;             /* the sample's read transaction is open
+                                     (store/snapshot.h) until the ticks
+                                     have read the run too */
     struct timespec job_sampled;
 };
 

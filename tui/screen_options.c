@@ -756,14 +756,24 @@ static int options_tick(struct tui_screen *base, struct tui_app *app)
     /* this workbench's own run: at the gauge's sample; another
      * process's: every second */
     int own = app->job != NULL && app->job_run == s->run.id;
-    int due = own ? app->job_samples != s->job_samples
+    int due = own ? app->job_sampling && app->job_samples != s->job_samples
                   : tui_seconds_since(&s->last_refresh) >= 1.0;
     if (finished || (live && due)) {
         s->runs_finished = app->runs_finished;
         s->job_samples = app->job_samples;
         clock_gettime(CLOCK_MONOTONIC, &s->last_refresh);
+        struct table_model *m = &s->model;
         if (store_run_get(app->store, s->run.id, &s->run, &err) != FACET_OK ||
-            table_model_refresh(&s->model, &err) != FACET_OK)
+            table_model_refresh(m, &err) != FACET_OK) {
+            tui_error(app, "%s", err.message);
+            return 1;
+        }
+        /* without a filter the count is the run's index, cheap even for a
+         * million options: counted whole now, so that the title, the
+         * count and the gauge are one moment's (a step between samples
+         * ran ahead of the gauge) */
+        if (m->filter == NULL && !m->browse.pareto_only &&
+            table_model_count_step(m, 0, &err) < 0)
             tui_error(app, "%s", err.message);
         return 1;
     }

@@ -14,6 +14,7 @@
 #include "input.h"
 #include "job.h"
 #include "keys.h"
+#include "layout.h"
 
 struct runs_screen {
     struct tui_screen base;
@@ -112,13 +113,21 @@ static void runs_draw(struct tui_screen *base, struct tui_app *app,
             tui_fmt_number(cost, sizeof cost, run->best_cost, 0, 1);
         tui_fmt_elapsed(elapsed, sizeof elapsed, run->elapsed);
         tui_fmt_started(started, sizeof started, run->started);
-        snprintf(line, sizeof line,
-                 "%4lld %-11s %-10s %8lld %6lld %11s %9s %s%s%s%s%s",
-                 (long long)run->id, run->status, run->method,
-                 (long long)run->options, (long long)run->pareto_options,
-                 cost, elapsed, wide ? started : "", wide ? "  " : "",
-                 run->name, run->name[0] ? " / " : "",
-                 base_name(run->surface_path));
+        int n = snprintf(line, sizeof line,
+                         "%4lld %-11s %-10s %8lld %6lld %11s %9s %s%s",
+                         (long long)run->id, run->status, run->method,
+                         (long long)run->options,
+                         (long long)run->pareto_options, cost, elapsed,
+                         wide ? started : "", wide ? "  " : "");
+        /* the name, and the surface when it fits too (the name is the
+         * one the user gave) */
+        const struct tui_field names[] = {
+            {"", run->name, 0},
+            {run->name[0] ? " / " : "", base_name(run->surface_path), 1},
+        };
+        if (n > 0 && (size_t)n < sizeof line)
+            tui_fit_fields(line + n, sizeof line - (size_t)n, width - n,
+                           names, 2);
         attr_t attr = k == s->selected ? tui_attr(ROLE_SELECTION)
                       : strcmp(run->status, "running") == 0
                           ? tui_attr(ROLE_PARETO)

@@ -26,6 +26,7 @@
 #include "job.h"
 #include "keys.h"
 #include "layout.h"
+#include "store/snapshot.h"
 
 #define CTRL(c) ((c) & 0x1f)
 
@@ -206,7 +207,7 @@ static void draw_job(struct tui_app *app, int y, int width)
     char text[160];
     int x = tui_putf(y, 0, width, tui_attr(ROLE_STATUS), "run %lld %s ",
                      (long long)st.run, st.stopping ? "stopping" : st.stage);
-    int gauge = width - x - 40;
+    int gauge = width - x - 46;
     if (gauge > 30)
         gauge = 30;
     /* the sampled numbers, not the live ones: the table of the run shows
@@ -220,12 +221,10 @@ static void draw_job(struct tui_app *app, int y, int width)
                                             : tui_attr(ROLE_DIM),
                          k < full ? app->glyphs->gauge_full
                                   : app->glyphs->gauge_empty);
-        char done[32], total[32];
-        tui_fmt_number(done, sizeof done, (double)st.done, 0, 1);
-        tui_fmt_number(total, sizeof total, (double)st.total, 0, 1);
-        snprintf(text, sizeof text, " %s/%s evaluated (%d%%) Ctrl-X stops",
-                 done, total,
-                 (int)(100.0 * (double)st.done / (double)st.total));
+        char stored[32];
+        tui_fmt_number(stored, sizeof stored, (double)app->job_stored, 0, 1);
+        snprintf(text, sizeof text, " %d%% %s options stored  Ctrl-X stops",
+                 (int)(100.0 * (double)st.done / (double)st.total), stored);
     } else {
         snprintf(text, sizeof text, " Ctrl-X stops");
     }
@@ -413,23 +412,50 @@ static void draw(struct tui_app *app)
     refresh();
 }
 
-/* Reports a finished background run and releases it. */
+/* Samples the background run once a second, before the screens' ticks:
+ * its progress, and its options stored as of a snapshot of the database
+ * that stays open through the ticks (end_sample), so that the gauge and
+ * the run's table (title, count, rows) are read at one moment. */
+static int sample_job(struct tui_app *app)
+{
+    if (app->job == NULL)
+        return 0;
+    if (app->job_samples > 0 && tui_seconds_since(&app->job_sampled) < 1.0)
+        return 0;
+    struct tui_job_state st;
+    tui_job_state(app->job, &st);
+    clock_gettime(CLOCK_MONOTONIC, &app->job_sampled);
+    app->job_run = st.run;
+    app->job_done = st.done;
+    app->job_total = st.total;
+    app->job_samples++;
+    app->job_sampling = 1;
+    app->job_snapshot = store_snapshot_begin(app->store);
+    struct run_info info;
+    struct facet_error ignored;
+    if (st.run > 0 &&
+        store_run_get(app->store, st.run, &info, &ignored) == FACET_OK)
+        app->job_stored = info.options;
+    return 1;  /* the gauge moves */
+}
+
+static void end_sample(struct tui_app *app)
+{
+    store_snapshot_end(app->store, app->job_snapshot);
+    app->job_snapshot = 0;
+    app->job_sampling = 0;
+}
+
+/* Reports a finished background run and releases it, after the screens'
+ * ticks (the New run form opens the run's table from the job). */
 static int poll_job(struct tui_app *app)
 {
     if (app->job == NULL)
         return 0;
     struct tui_job_state st;
     tui_job_state(app->job, &st);
-    if (!st.finished) {
-        if (app->job_samples > 0 && tui_seconds_since(&app->job_sampled) < 1.0)
-            return 0;
-        clock_gettime(CLOCK_MONOTONIC, &app->job_sampled);
-        app->job_run = st.run;
-        app->job_done = st.done;
-        app->job_total = st.total;
-        app->job_samples++;
-        return 1;  /* the gauge moves */
-    }
+    if (!st.finished)
+        return 0;
     app->job_samples = 0;
     tui_job_free(app->job);
     app->job = NULL;
@@ -544,8 +570,11 @@ static void loop(struct tui_app *app)
             break;
         struct tui_screen *s = top(app);
         if (key == ERR) {
+            if (sample_job(app))
+                dirty = 1;
             if (s->cls->tick && s->cls->tick(s, app))
                 dirty = 1;
+            end_sample(app);
             if (poll_job(app))
                 dirty = 1;
             continue;
