@@ -67,6 +67,7 @@ struct tui_mouse {
     enum tui_mouse_kind kind;
     int y, x;              /* screen cell */
     int clicks;            /* 1, or 2 for a double click */
+    struct timespec at;    /* when the last click came */
 };
 
 struct tui_job;  /* a New run working in a thread (job.h) */

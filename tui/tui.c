@@ -351,7 +351,7 @@ static int help_lines(const struct tui_screen *s, struct help_line *out,
 static void draw_help(struct tui_app *app, int height, int width)
 {
     const struct tui_screen *s = top(app);
-    static struct help_line lines[128];
+    struct help_line lines[128];
     /* two columns need 2 x 78 + 3: the width of one decides the wrap */
     int two = width >= 2 * 78 + 3;
     int cw = two ? (width - 1) / 2 : width;
@@ -522,11 +522,10 @@ static int read_mouse(struct tui_app *app)
     } else if (event.bstate & BUTTON5_PRESSED) {
         m->kind = MOUSE_WHEEL_DOWN;
     } else if (event.bstate & (BUTTON1_PRESSED | BUTTON1_CLICKED)) {
-        static struct timespec last;
         int again = m->kind == MOUSE_CLICK && m->y == event.y &&
                     m->x == event.x && m->clicks == 1 &&
-                    tui_seconds_since(&last) < double_click;
-        clock_gettime(CLOCK_MONOTONIC, &last);
+                    tui_seconds_since(&m->at) < double_click;
+        clock_gettime(CLOCK_MONOTONIC, &m->at);
         m->kind = MOUSE_CLICK;
         m->clicks = again ? 2 : 1;
     } else {

@@ -74,6 +74,9 @@ bytes() { keys -H $(printf "$1" | od -An -tx1); }
 # click X Y: a press and release of the first button at column X, row Y
 # (1-based, as the terminal reports them: SGR 1006).
 click() { bytes "\033[<0;$1;$2M\033[<0;$1;$2m"; }
+# dclick X Y: two clicks there, as two writes (as a terminal sends them;
+# curses drops a second press that comes in the same read as the first)
+dclick() { click "$1" "$2"; click "$1" "$2"; }
 # no_labels_run_together NAME: on the bar, a label is followed by a blank
 # before the next key ("F3FilterF4Pareto" ran together).
 no_labels_run_together() {
@@ -111,7 +114,8 @@ start 80 24 -- demo.db
 check "runs screen" '^ +1 done +exhaustive +336 '
 check "the run's name shows whole at 80 columns (the surface goes)" '^ +1 done +exhaustive +336 .* paper space$'
 no_labels_run_together "Runs: the function-key labels stand apart"
-keys Enter
+dclick 10 3
+check "a double click on a run opens it" '^ Run 1 '
 check "the title keeps the knee whole at 80 columns (knee $KNEE)" "^ Run 1 .*knee $KNEE *\$"
 check "the table shows row n of N" "^ row 1 of $N  sort cost asc"
 check_line "cheapest first" 5 "^ +$CHEAPEST "
@@ -156,6 +160,10 @@ bytes '\033[<65;20;10M'
 check "the wheel scrolls down three rows" "^ row 4 of $N "
 bytes '\033[<64;20;10M'
 check "and up" "^ row 1 of $N "
+dclick 10 6
+check "a double click on a row opens its panel map" '^ Panel map: option [0-9]+ of run 1'
+keys q
+check "back on the table, on that row (2)" "^ row 2 of $N "
 click 34 24
 check "a click on F5Plot on the bar opens the scatter" '^ Scatter:'
 no_labels_run_together "Scatter: the function-key labels stand apart"
