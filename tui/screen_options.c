@@ -403,7 +403,7 @@ static void apply_sort(struct options_screen *s, struct tui_app *app)
      * screen row hid the new first rows). */
     s->top = 0;
     if (s->model.selected >= s->rows || s->model.estimated)
-        report(app, table_model_select(&s->model, 0, &err), &err);
+        report(app, table_model_select_first(&s->model, &err), &err);
 }
 
 /* s: the cursor's column becomes the primary key, or is reversed. */

@@ -453,6 +453,15 @@ static int reload(struct table_model *m, const struct option_row *keep,
     return table_model_select(m, position, err);
 }
 
+int table_model_select_first(struct table_model *m, struct facet_error *err)
+{
+    m->nrows = 0;
+    m->base = 0;
+    m->estimated = 0;
+    m->selected = 0;
+    return table_model_select(m, 0, err);
+}
+
 int table_model_select_number(struct table_model *m, int64_t number,
                               int *found, struct facet_error *err)
 {

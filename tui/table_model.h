@@ -75,6 +75,11 @@ int table_model_fetch(struct table_model *m, int64_t from, int64_t n,
 int table_model_select(struct table_model *m, int64_t position,
                        struct facet_error *err);
 
+/* Selects the first row of the order, exactly: the window is read again
+ * from the start (positions kept as estimates are dropped), as a new
+ * sort shows its top. */
+int table_model_select_first(struct table_model *m, struct facet_error *err);
+
 /* Moves the selection to option number when the table shows it; *found
  * tells whether it does (the selection stays otherwise). */
 int table_model_select_number(struct table_model *m, int64_t number,

@@ -380,6 +380,37 @@ static void test_count_step_stops(void **state)
     drop_store(store);
 }
 
+/* A new sort shows its top: after a re-sort kept an option deeper than
+ * the position cap (positions estimated), selecting the first row gives
+ * the order's first option at position 0 and exact positions after it
+ * (the oracle's). */
+static void test_select_first(void **state)
+{
+    (void)state;
+    int64_t run;
+    struct store *store = make_store(&run);
+    struct table_model m;
+    struct facet_error err;
+    assert_int_equal(table_model_open(&m, store, run, &err), FACET_OK);
+    const struct browse_key keys[2] = {{"planarity", 1}, {"cost", 0}};
+    static struct option_row want[N];
+    oracle(NULL, 0, keys, 2, want);
+    int found;
+    assert_int_equal(table_model_select_number(&m, want[N - 10].number,
+                                               &found, &err), FACET_OK);
+    assert_int_equal(table_model_set_sort(&m, keys, 2, &err), FACET_OK);
+    assert_true(m.estimated);
+    assert_int_equal(table_model_select_first(&m, &err), FACET_OK);
+    assert_false(m.estimated);
+    assert_int_equal(m.selected, 0);
+    for (int64_t p = 0; p < 450; p++) {
+        assert_int_equal(table_model_select(&m, p, &err), FACET_OK);
+        assert_int_equal(table_model_selection(&m)->number, want[p].number);
+    }
+    table_model_close(&m);
+    drop_store(store);
+}
+
 static void test_scroll(void **state)
 {
     (void)state;
@@ -400,6 +431,7 @@ int main(void)
         cmocka_unit_test(test_store_browse),
         cmocka_unit_test(test_scroll),
         cmocka_unit_test(test_count_step_stops),
+        cmocka_unit_test(test_select_first),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
