@@ -109,13 +109,13 @@ check "Esc on the first screen asks too" 'Quit Facet\? \(y/n\)'
 keys y
 check_exit "y quits"
 
-# --- items 2, 6, 10, 12 on the demo's run ---
+# --- items 2, 6, 10 on the demo's run, from the keyboard ---
 start 80 24 -- demo.db
 check "runs screen" '^ +1 done +exhaustive +336 '
 check "the run's name shows whole at 80 columns (the surface goes)" '^ +1 done +exhaustive +336 .* paper space$'
 no_labels_run_together "Runs: the function-key labels stand apart"
-dclick 10 3
-check "a double click on a run opens it" '^ Run 1 '
+keys Enter
+check "Enter opens the run" '^ Run 1 '
 check "the title keeps the knee whole at 80 columns (knee $KNEE)" "^ Run 1 .*knee $KNEE *\$"
 check "the table shows row n of N" "^ row 1 of $N  sort cost asc"
 check_line "cheapest first" 5 "^ +$CHEAPEST "
@@ -146,26 +146,8 @@ keys j j j j j j j j j j j j j j j j j j j j j j j j j j j j j j j j
 check "help scrolls to its last line" 'mouse wheel +scroll'
 keys x
 check "any other key closes help" "^ row [0-9]+ of $N "
-# --- item 12: the mouse ---
-keys g
-check "back at the top" "^ row 1 of $N "
-click 10 8
-check "a click on a row selects it (row 4)" "^ row 4 of $N "
-click 15 3
-check "a click on a header sorts by its column" '^ row [0-9]+ of [0-9]+  sort planarity asc'
-check_line "and shows the top" 5 "^ +$LEAST_PLANARITY "
-click 15 3
-check "a second click reverses it" 'sort planarity desc'
-bytes '\033[<65;20;10M'
-check "the wheel scrolls down three rows" "^ row 4 of $N "
-bytes '\033[<64;20;10M'
-check "and up" "^ row 1 of $N "
-dclick 10 6
-check "a double click on a row opens its panel map" '^ Panel map: option [0-9]+ of run 1'
-keys q
-check "back on the table, on that row (2)" "^ row 2 of $N "
-click 34 24
-check "a click on F5Plot on the bar opens the scatter" '^ Scatter:'
+keys x
+check "x opens the scatter" '^ Scatter:'
 no_labels_run_together "Scatter: the function-key labels stand apart"
 check "the scatter exports on F9" 'F9Export'
 keys q '|'
@@ -188,10 +170,37 @@ keys F2
 check "F2 shows the differences alone" '^ Compare 2 options of run 1 \| differences to the first'
 keys q q
 check "back on the runs" '^ Facet runs'
-# --- item 5: escape sequences under a mismatched TERM ---
 keys F10
 check_exit "F10 quits at once when no run works"
 
+# --- item 12: the mouse, in a session of its own ---
+start 80 24 -- demo.db
+check "mouse: runs screen" '^ +1 done +exhaustive +336 '
+dclick 10 3
+check "a double click on a run opens it" '^ Run 1 '
+keys g
+check "back at the top" "^ row 1 of $N "
+click 10 8
+check "a click on a row selects it (row 4)" "^ row 4 of $N "
+click 15 3
+check "a click on a header sorts by its column" '^ row [0-9]+ of [0-9]+  sort planarity asc'
+check_line "and shows the top" 5 "^ +$LEAST_PLANARITY "
+click 15 3
+check "a second click reverses it" 'sort planarity desc'
+bytes '\033[<65;20;10M'
+check "the wheel scrolls down three rows" "^ row 4 of $N "
+bytes '\033[<64;20;10M'
+check "and up" "^ row 1 of $N "
+dclick 10 6
+check "a double click on a row opens its panel map" '^ Panel map: option [0-9]+ of run 1'
+keys q
+check "back on the table, on that row (2)" "^ row 2 of $N "
+click 34 24
+check "a click on F5Plot on the bar opens the scatter" '^ Scatter:'
+keys F10
+check_exit "mouse: F10 quits"
+
+# --- item 5: escape sequences under a mismatched TERM ---
 start 80 24 TERM=vt100 -- demo.db
 check "vt100: runs screen" '^ +1 done +exhaustive'
 keys Enter
@@ -201,7 +210,7 @@ bytes '\033[<0;5;5M'
 bytes '\033[200~'
 bytes 'j'
 check "vt100: unknown sequences do nothing (the next key still acts)" "^ row 2 of $N "
-check_not "vt100: an unknown sequence is not Esc (still on the table)" '^ Facet runs'
+check "vt100: an unknown sequence is not Esc (still on the table)" '^ Run 1 '
 bytes '\033[15~'
 check "vt100: xterm's F5 still opens the scatter" '^ Scatter:'
 bytes '\033[21~'
