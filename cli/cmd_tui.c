@@ -25,8 +25,8 @@ const struct command cmd_tui = {
     .summary = "The terminal workbench: browse, filter, compare and start "
                "runs.",
     .options =
-        "  DB                  the result store (default facet.db here,\n"
-        "                      created if missing)\n"
+        "  DB                  the result store (default facet.db here;\n"
+        "                      a missing one is created after a y/n)\n"
         "  SURFACE.obj         open the New run form for this surface\n"
         "                      (into facet.db)\n",
     .run = tui_main,

@@ -25,7 +25,9 @@ struct tui_app;
 struct tui_screen;
 
 enum tui_result {
-    RESULT_UNHANDLED,  /* not this screen's key: the global keys apply */
+    RESULT_UNHANDLED,  /* not this screen's key: the global keys apply
+                          (a mouse wheel left unhandled scrolls as Up and
+                          Down do) */
     RESULT_HANDLED,    /* done; redraw */
     RESULT_BACK,       /* close this screen */
     RESULT_QUIT        /* leave the workbench */
@@ -57,6 +59,17 @@ struct tui_screen {
 
 #define TUI_STACK_MAX 12
 
+/* The mouse event a screen gets with KEY_MOUSE (tui_app.mouse), where the
+ * terminal reports one: a press of the first button (clicks 2: the
+ * second on the same cell within 0.4 s), or the wheel one step. */
+enum tui_mouse_kind { MOUSE_CLICK, MOUSE_WHEEL_UP, MOUSE_WHEEL_DOWN };
+struct tui_mouse {
+    enum tui_mouse_kind kind;
+    int y, x;              /* screen cell */
+    int clicks;            /* 1, or 2 for a double click */
+    struct timespec at;    /* when the last click came */
+};
+
 struct tui_job;  /* a New run working in a thread (job.h) */
 
 struct tui_app {
@@ -73,6 +86,23 @@ struct tui_app {
     int help_open, help_top;
     struct tui_job *job;          /* NULL when no run works */
     struct tui_column_set columns;/* the options table's, for the session */
+    int confirm_quit;             /* "Quit? (y/n)" is asked */
+    struct tui_mouse mouse;       /* the event of the last KEY_MOUSE */
+    int fkey_x[10], fkey_width[10];  /* the bar as drawn (clicks on it) */
+    /* Bumped when a background run ends: screens showing runs refresh
+     * (header, counts and ranks) when it moves. */
+    int64_t runs_finished;
+    /* The background run as last sampled (once a second): the gauge
+     * draws it, and the options table of that run refreshes when
+     * job_samples moves, so the two show one moment. */
+    int64_t job_run, job_done, job_total, job_samples;
+    int64_t job_stored;           /* its options stored, at the sample */
+    int job_sampling;             /* a sample was taken this round: the
+                                     ticks read the run in its snapshot */
+    int job_snapshot;             /* the sample's read transaction is open
+                                     (store/snapshot.h) until the ticks
+                                     have read the run too */
+    struct timespec job_sampled;
 };
 
 /* Pushes screen (NULL: nothing, the constructor reported its error). */

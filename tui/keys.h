@@ -31,6 +31,20 @@ enum tui_action {
  * key that has none. */
 enum tui_action tui_key_action(int key);
 
+/* What an Esc from getch begins. Under a TERM that does not match the
+ * terminal, curses does not know a key's sequence and hands it over byte
+ * by byte, Esc first: acting on those bytes made F5 go back and F10 quit.
+ * next(context) gives the next byte already sent (or -1 when none follows
+ * within the escape delay). Returns the key a common xterm/VT sequence
+ * stands for (KEY_F(n), arrows, Home/End, PgUp/PgDn, Insert/Delete, with
+ * any modifier dropped), TUI_KEY_NONE for any other sequence (read to its
+ * end and ignored: mouse reports, Alt-keys, unknown CSI/SS3), or 27 for an
+ * Esc on its own. *pushback is a key read past the Esc that is not part of
+ * it (a second Esc), for the caller to handle next, or -1. */
+#define TUI_KEY_NONE (-2)
+int tui_key_escape(int (*next)(void *context), void *context,
+                   int *pushback);
+
 /* The name of a key for the help screen and messages: "F5", "Enter",
  * "Up", "Space", "Ctrl-L", or the character itself. */
 const char *tui_key_name(int key, char buffer[16]);

@@ -32,8 +32,8 @@ struct compare_screen {
 
 static const struct tui_key_help compare_help[] = {
     {"j/k, Up/Down", "scroll the metrics"},
-    {"d, F4", "values with differences, or the differences alone"},
-    {"m, F5", "show / hide the small panel maps under the metrics"},
+    {"d, F2", "values with differences, or the differences alone"},
+    {"m, F8", "show / hide the small panel maps under the metrics"},
     {"(maps)", "one character per panel (or block): F FP, S SP, D DP"},
     {"1-4", "panel map of the first, second, ... option"},
     {NULL, NULL},
@@ -201,10 +201,10 @@ static enum tui_result compare_key(struct tui_screen *base,
         return RESULT_HANDLED;
     }
     switch (key) {
-    case 'm': case KEY_F(5):
+    case 'm': case KEY_F(8):
         s->maps = !s->maps;
         return RESULT_HANDLED;
-    case 'd': case KEY_F(4):
+    case 'd': case KEY_F(2):
         s->differences = !s->differences;
         return RESULT_HANDLED;
     default:
@@ -274,7 +274,7 @@ static void load_maps(struct compare_screen *s, struct tui_app *app)
 
 static const struct tui_screen_class compare_class = {
     "Compare", compare_help,
-    {"Help", NULL, NULL, "Diff", "Maps", NULL, NULL, NULL, NULL, "Quit"},
+    {"Help", "Diffs", NULL, NULL, NULL, NULL, NULL, "Maps", NULL, "Quit"},
     compare_draw, compare_key, NULL, compare_destroy,
 };
 

@@ -38,9 +38,9 @@ static const struct tui_key_help map_help[] = {
     {"PgUp/PgDn", "a page up / down"},
     {"g / G", "first / last panel"},
     {"0 / $", "start / end of the row"},
-    {"c, F4", "colour by type (FP/SP/DP) or by class"},
-    {"z, F5", "zoom: one or two columns per panel"},
-    {"e, F6", "export: PREFIX.obj (+ .mtl), PREFIX.csv and PREFIX.svg; "
+    {"c, F2", "colour by type (FP/SP/DP) or by class"},
+    {"z", "zoom: one or two columns per panel"},
+    {"e, F9", "export: PREFIX.obj (+ .mtl), PREFIX.csv and PREFIX.svg; "
               "end the prefix with ! to overwrite"},
     {NULL, NULL},
 };
@@ -243,7 +243,7 @@ static enum tui_result map_key(struct tui_screen *base, struct tui_app *app,
     if (s->exporting)
         return export_key(s, app, key);
     switch (key) {
-    case 'e': case KEY_F(6): {
+    case 'e': case KEY_F(9): {
         char prefix[128];
         snprintf(prefix, sizeof prefix, "facet-run%lld-option%lld",
                  (long long)s->run.id, (long long)s->option.number);
@@ -252,10 +252,10 @@ static enum tui_result map_key(struct tui_screen *base, struct tui_app *app,
         tui_prompt(app, "Export to (prefix):", &s->export_to);
         return RESULT_HANDLED;
     }
-    case 'c': case KEY_F(4):
+    case 'c': case KEY_F(2):
         s->by_class = !s->by_class;
         return RESULT_HANDLED;
-    case 'z': case KEY_F(5):
+    case 'z':
         s->zoom = s->zoom == 1 ? 2 : 1;
         return RESULT_HANDLED;
     case '0':
@@ -298,7 +298,7 @@ static void map_destroy(struct tui_screen *base)
 
 static const struct tui_screen_class map_class = {
     "Panel map", map_help,
-    {"Help", NULL, NULL, "Colour", "Zoom", "Export", NULL, NULL, NULL,
+    {"Help", "Colour", NULL, NULL, NULL, NULL, NULL, NULL, "Export",
      "Quit"},
     map_draw, map_key, NULL, map_destroy,
 };

@@ -18,6 +18,7 @@
 #include "format.h"
 #include "input.h"
 #include "keys.h"
+#include "layout.h"
 
 struct options_screen {
     struct tui_screen base;
@@ -39,6 +40,8 @@ struct options_screen {
     int nmarks;
     int detail;                  /* the detail pane is shown */
     struct timespec last_refresh;
+    int64_t runs_finished;       /* app->runs_finished when last seen */
+    int64_t job_samples;         /* app->job_samples when last seen */
 };
 
 static const struct tui_key_help options_help[] = {
@@ -58,7 +61,7 @@ static const struct tui_key_help options_help[] = {
     {"c, F7", "compare the marked options (2 to 4)"},
     {"Enter, m, F8", "panel map of the option"},
     {"x, F5", "scatter plot (planarity vs cost)"},
-    {"|, a, F9", "parallel coordinates (brushing sets the filter)"},
+    {"|, a", "parallel coordinates (brushing sets the filter)"},
     {"C, F2", "column chooser: show, hide and reorder the columns"},
     {"  j/k, Space", "  (chooser) move; show / hide the column"},
     {"  J/K, +/-", "  (chooser) move the column down / up the order"},
@@ -258,36 +261,75 @@ static void draw_chooser(struct options_screen *s, struct tui_app *app,
     tui_fill(y0 + 2 + rows, x0, w, tui_attr(ROLE_NORMAL));
 }
 
+/* The run's title: fields that do not fit go, the least needed first
+ * (the name, the method, the Pareto count), rather than a number being
+ * cut at the edge ("knee 3" for knee 324). While the run works and the
+ * table shows every option, its count is the table's own, so the two
+ * agree. */
+static void draw_title(struct options_screen *s, int width)
+{
+    const struct table_model *m = &s->model;
+    const char *surface = strrchr(s->run.surface_path, '/');
+    surface = surface ? surface + 1 : s->run.surface_path;
+    int64_t options = s->run.options;
+    if (m->count_exact && m->filter == NULL && !m->browse.pareto_only)
+        options = m->count;
+    char run[32], count[48], pareto[48], knee[48], number[32];
+    snprintf(run, sizeof run, " Run %lld", (long long)s->run.id);
+    tui_fmt_number(number, sizeof number, (double)options, 0, 1);
+    snprintf(count, sizeof count, "%s options", number);
+    snprintf(pareto, sizeof pareto, "%lld Pareto",
+             (long long)s->run.pareto_options);
+    if (s->run.knee > 0)
+        snprintf(knee, sizeof knee, "knee %lld", (long long)s->run.knee);
+    else
+        knee[0] = '\0';
+    const struct tui_field fields[] = {
+        {"", run, 0},
+        {" ", s->run.name, 4},
+        {" ", surface, 3},
+        {" | ", s->run.method, 2},
+        {" | ", s->run.status, 0},
+        {" | ", count, 0},
+        {", ", pareto, 1},
+        {", ", knee, 0},
+    };
+    char title[512];
+    tui_fit_fields(title, sizeof title, width, fields,
+                   (int)(sizeof fields / sizeof fields[0]));
+    tui_fill(0, 0, width, tui_attr(ROLE_TITLE));
+    tui_put(0, 0, width, tui_attr(ROLE_TITLE), title);
+}
+
 static void options_draw(struct tui_screen *base, struct tui_app *app,
                          int height, int width)
 {
     struct options_screen *s = (struct options_screen *)base;
     struct table_model *m = &s->model;
     columns_update(s, app);
-    const char *surface = strrchr(s->run.surface_path, '/');
-    surface = surface ? surface + 1 : s->run.surface_path;
-    tui_fill(0, 0, width, tui_attr(ROLE_TITLE));
-    tui_putf(0, 0, width, tui_attr(ROLE_TITLE),
-             " Run %lld %s%s%s | %s | %s | %lld options, %lld Pareto, "
-             "knee %lld", (long long)s->run.id, s->run.name,
-             s->run.name[0] ? " " : "", surface, s->run.method,
-             s->run.status, (long long)s->run.options,
-             (long long)s->run.pareto_options, (long long)s->run.knee);
+    draw_title(s, width);
     char sort[160];
     sort_text(s, sort, sizeof sort);
     char shown[32];
     table_model_count_text(m, shown, sizeof shown);
-    int x = tui_putf(1, 0, width, A_NORMAL, " %s shown  sort %s", shown,
-                     sort);
+    /* the scroll position first: "row 12 of 336" (the count, "2,000+"
+     * while it is a lower bound) */
+    char position[64];
+    if (m->count > 0)
+        table_model_position_text(m, position, sizeof position);
+    else
+        snprintf(position, sizeof position, "%s shown", shown);
+    int room = width;
+    int x = tui_putf(1, 0, room, A_NORMAL, " %s  sort %s", position, sort);
     const char *where = m->filter ? filter_text(m->filter) : "";
-    x += tui_putf(1, x, width - x, where[0] ? tui_attr(ROLE_PARETO)
-                                            : A_NORMAL,
+    x += tui_putf(1, x, room - x, where[0] ? tui_attr(ROLE_PARETO)
+                                           : A_NORMAL,
                   "  filter %s", where[0] ? where : "none");
     if (m->browse.pareto_only)
-        x += tui_put(1, x, width - x, tui_attr(ROLE_PARETO),
+        x += tui_put(1, x, room - x, tui_attr(ROLE_PARETO),
                      "  Pareto only");
     if (s->nmarks)
-        tui_putf(1, x, width - x, tui_attr(ROLE_MARKED), "  %d marked",
+        tui_putf(1, x, room - x, tui_attr(ROLE_MARKED), "  %d marked",
                  s->nmarks);
 
     int columns = tui_columns_width(&app->columns);
@@ -352,9 +394,16 @@ static void report(struct tui_app *app, int rc, const struct facet_error *e)
 static void apply_sort(struct options_screen *s, struct tui_app *app)
 {
     struct facet_error err;
-    report(app, table_model_set_sort(&s->model, s->keys, s->nkeys, &err),
-           &err);
-    s->top = s->model.selected - s->rows / 2;
+    int rc = table_model_set_sort(&s->model, s->keys, s->nkeys, &err);
+    report(app, rc, &err);
+    if (rc != FACET_OK)
+        return;
+    /* A new order starts at its top: the selected option stays selected
+     * only when it is among the rows the top page shows (keeping its
+     * screen row hid the new first rows). */
+    s->top = 0;
+    if (s->model.selected >= s->rows || s->model.estimated)
+        report(app, table_model_select_first(&s->model, &err), &err);
 }
 
 /* s: the cursor's column becomes the primary key, or is reversed. */
@@ -454,18 +503,25 @@ static void toggle_mark(struct options_screen *s, struct tui_app *app)
     const struct option_row *o = table_model_selection(&s->model);
     if (o == NULL)
         return;
+    int64_t number = o->number;
     for (int k = 0; k < s->nmarks; k++)
-        if (s->marks[k] == o->number) {
+        if (s->marks[k] == number) {
             memmove(s->marks + k, s->marks + k + 1,
                     (size_t)(s->nmarks - k - 1) * sizeof s->marks[0]);
             s->nmarks--;
+            /* said, so that Space on an option marked before (the knee
+             * after K) is not a silent unmark */
+            tui_status(app, "unmarked No. %lld (%d marked; Space marks it "
+                       "again)", (long long)number, s->nmarks);
             return;
         }
     if (s->nmarks == 64) {
         tui_error(app, "at most 64 marks");
         return;
     }
-    s->marks[s->nmarks++] = o->number;
+    s->marks[s->nmarks++] = number;
+    tui_status(app, "marked No. %lld (%d marked%s)", (long long)number,
+               s->nmarks, s->nmarks >= 2 ? "; c compares" : "");
     struct facet_error err;
     table_model_select(&s->model, s->model.selected + 1, &err);
 }
@@ -523,6 +579,37 @@ static enum tui_result chooser_key(struct options_screen *s,
     return RESULT_HANDLED;
 }
 
+/* A click on a header sorts by its column (again: the other way); on a
+ * row selects it, twice opens its panel map. The wheel is the frame's
+ * (three rows, as the arrows). */
+static enum tui_result options_mouse(struct options_screen *s,
+                                     struct tui_app *app)
+{
+    const struct tui_mouse *ev = &app->mouse;
+    struct facet_error err;
+    if (ev->kind != MOUSE_CLICK)
+        return RESULT_UNHANDLED;
+    int widths[TUI_COLUMNS_MAX];
+    for (int v = 0; v < s->nvis; v++)
+        widths[v] = tui_option_columns[s->vis[v]].width;
+    if (ev->y == 2 || ev->y == 3) {
+        int v = tui_column_at(widths, s->nvis, ev->x);
+        if (v < 0)
+            return RESULT_HANDLED;
+        s->column = s->vis[v];
+        sort_primary(s, app);
+        return RESULT_HANDLED;
+    }
+    int64_t position = s->top + (ev->y - 4);
+    if (ev->y < 4 || ev->y >= 4 + s->rows || position >= s->model.count)
+        return RESULT_HANDLED;
+    report(app, table_model_select(&s->model, position, &err), &err);
+    const struct option_row *o = table_model_selection(&s->model);
+    if (ev->clicks == 2 && o != NULL)
+        tui_push(app, screen_map_new(app, s->run.id, o->number));
+    return RESULT_HANDLED;
+}
+
 static enum tui_result options_key(struct tui_screen *base,
                                    struct tui_app *app, int key)
 {
@@ -536,6 +623,8 @@ static enum tui_result options_key(struct tui_screen *base,
     if (s->choosing)
         return chooser_key(s, app, key);
     switch (key) {
+    case KEY_MOUSE:
+        return options_mouse(s, app);
     case 's': case KEY_F(6):
         sort_primary(s, app);
         return RESULT_HANDLED;
@@ -566,7 +655,7 @@ static enum tui_result options_key(struct tui_screen *base,
     case 'K':
         jump_knee(s, app);
         return RESULT_HANDLED;
-    case '|': case 'a': case KEY_F(9):
+    case '|': case 'a':
         tui_push(app, screen_parallel_new(app, m));
         return RESULT_HANDLED;
     case 'C': case KEY_F(2):
@@ -577,6 +666,8 @@ static enum tui_result options_key(struct tui_screen *base,
         toggle_mark(s, app);
         return RESULT_HANDLED;
     case 'u':
+        tui_status(app, "%d mark%s cleared", s->nmarks,
+                   s->nmarks == 1 ? "" : "s");
         s->nmarks = 0;
         return RESULT_HANDLED;
     case 'c': case KEY_F(7):
@@ -651,27 +742,47 @@ static enum tui_result options_key(struct tui_screen *base,
     return RESULT_HANDLED;
 }
 
-/* A count that is a lower bound goes on between keys; a running run:
- * count and refetch every second, so the table fills in as options are
- * committed. */
+/* A running run: the run and the table are read again every second, so
+ * the table fills in as options are committed; when the run ends (seen
+ * here, or a run of this workbench finishing) once more, so that the
+ * header, the count and the ranks are the finished run's. Between, a
+ * count that is a lower bound goes on counting, and stops once exact. */
 static int options_tick(struct tui_screen *base, struct tui_app *app)
 {
     struct options_screen *s = (struct options_screen *)base;
+    struct facet_error err;
+    int live = strcmp(s->run.status, "running") == 0;
+    int finished = s->runs_finished != app->runs_finished;
+    /* this workbench's own run: at the gauge's sample; another
+     * process's: every second */
+    int own = app->job != NULL && app->job_run == s->run.id;
+    int due = own ? app->job_sampling && app->job_samples != s->job_samples
+                  : tui_seconds_since(&s->last_refresh) >= 1.0;
+    if (finished || (live && due)) {
+        s->runs_finished = app->runs_finished;
+        s->job_samples = app->job_samples;
+        clock_gettime(CLOCK_MONOTONIC, &s->last_refresh);
+        struct table_model *m = &s->model;
+        if (store_run_get(app->store, s->run.id, &s->run, &err) != FACET_OK ||
+            table_model_refresh(m, &err) != FACET_OK) {
+            tui_error(app, "%s", err.message);
+            return 1;
+        }
+        /* without a filter the count is the run's index, cheap even for a
+         * million options: counted whole now, so that the title, the
+         * count and the gauge are one moment's (a step between samples
+         * ran ahead of the gauge) */
+        if (m->filter == NULL && !m->browse.pareto_only &&
+            table_model_count_step(m, 0, &err) < 0)
+            tui_error(app, "%s", err.message);
+        return 1;
+    }
     if (!s->model.count_exact) {
-        struct facet_error err;
         if (table_model_count_step(&s->model, 200000, &err) < 0)
             tui_error(app, "%s", err.message);
         return 1;
     }
-    if (strcmp(s->run.status, "running") != 0 ||
-        tui_seconds_since(&s->last_refresh) < 1.0)
-        return 0;
-    clock_gettime(CLOCK_MONOTONIC, &s->last_refresh);
-    struct facet_error err;
-    if (store_run_get(app->store, s->run.id, &s->run, &err) != FACET_OK ||
-        table_model_refresh(&s->model, &err) != FACET_OK)
-        tui_error(app, "%s", err.message);
-    return 1;
+    return 0;
 }
 
 static void options_destroy(struct tui_screen *base)
@@ -683,8 +794,8 @@ static void options_destroy(struct tui_screen *base)
 
 static const struct tui_screen_class options_class = {
     "Options", options_help,
-    {"Help", "Cols", "Filter", "Pareto", "Plot", "Sort", "Diff", "Map",
-     "PCoord", "Quit"},
+    {"Help", "Cols", "Filter", "Pareto", "Plot", "Sort", "Compare", "Map",
+     NULL, "Quit"},
     options_draw, options_key, options_tick, options_destroy,
 };
 
@@ -697,6 +808,7 @@ struct tui_screen *screen_options_new(struct tui_app *app, int64_t run)
         return NULL;
     }
     s->base.cls = &options_class;
+    s->runs_finished = app->runs_finished;
     s->detail = 1;
     s->column = 4;  /* cost */
     s->keys[0].column = "cost";  /* the paper's Table 2: cheapest first */

@@ -54,11 +54,11 @@ static const struct tui_key_help parallel_help[] = {
     {"] / }", "lower / raise the high edge of the axis's brush"},
     {"e, =, F3", "type the axis's range: LO:HI (1.1M:1.2M, :900, 20:)"},
     {"x, Backspace", "clear the axis's brush"},
-    {"X, F5", "clear every brush (the rest of the filter stays)"},
+    {"X", "clear every brush (the rest of the filter stays)"},
     {"j/k, Up/Down", "select the next / previous option (table order)"},
     {"g/G", "select the first / last option"},
     {"p, F4", "Pareto-optimal options only (toggle)"},
-    {"c, F6", "show / hide the options the filter hides (dimmed)"},
+    {"c, F2", "show / hide the options the filter hides (dimmed)"},
     {"Enter, m, F8", "panel map of the selected option"},
     {"r", "reload from the database"},
     {"(brushes)", "are the table's filter: q shows the filtered table"},
@@ -440,7 +440,7 @@ static enum tui_result parallel_key(struct tui_screen *base,
         s->st.brush[s->axis].active = 0;
         apply(s, app);
         return RESULT_HANDLED;
-    case 'X': case KEY_F(5):
+    case 'X':
         memset(s->st.brush, 0, sizeof s->st.brush);
         apply(s, app);
         return RESULT_HANDLED;
@@ -450,7 +450,7 @@ static enum tui_result parallel_key(struct tui_screen *base,
             tui_error(app, "%s", err.message);
         reload_shown(s, app);
         return RESULT_HANDLED;
-    case 'c': case KEY_F(6):
+    case 'c': case KEY_F(2):
         s->hide_context = !s->hide_context;
         return RESULT_HANDLED;
     case 'm': case KEY_F(8): case '\r': case '\n': case KEY_ENTER: {
@@ -521,7 +521,7 @@ static void parallel_destroy(struct tui_screen *base)
 
 static const struct tui_screen_class parallel_class = {
     "Parallel coordinates", parallel_help,
-    {"Help", NULL, "Range", "Pareto", "Clear", "Dim", NULL, "Map", NULL,
+    {"Help", "Dim", "Range", "Pareto", NULL, NULL, NULL, "Map", NULL,
      "Quit"},
     parallel_draw, parallel_key, parallel_tick, parallel_destroy,
 };

@@ -14,6 +14,7 @@
 #include "input.h"
 #include "job.h"
 #include "keys.h"
+#include "layout.h"
 
 struct runs_screen {
     struct tui_screen base;
@@ -26,6 +27,8 @@ struct runs_screen {
     struct tui_input search;
     char last_search[TUI_INPUT_MAX];
     struct timespec last_load;
+    int64_t runs_finished;        /* app->runs_finished when last seen */
+    int rows;                     /* rows shown at the last draw */
 };
 
 static const struct tui_key_help runs_help[] = {
@@ -38,7 +41,7 @@ static const struct tui_key_help runs_help[] = {
     {"a, F7", "a new run (New run form)"},
     {"/, F3", "search names and surfaces"},
     {"n / N", "next / previous match"},
-    {"r, F5", "reload the list"},
+    {"r", "reload the list (it reloads every second by itself)"},
     {NULL, NULL},
 };
 
@@ -92,6 +95,7 @@ static void runs_draw(struct tui_screen *base, struct tui_app *app,
     tui_fill(1, 0, width, tui_attr(ROLE_HEADER));
     tui_put(1, 0, width, tui_attr(ROLE_HEADER), header);
     int rows = height - 2;
+    s->rows = rows;
     if (s->n == 0) {
         tui_put(3, 2, width - 2, A_NORMAL,
                 "No runs yet. Press a (or F7) for a new run, or run "
@@ -109,13 +113,21 @@ static void runs_draw(struct tui_screen *base, struct tui_app *app,
             tui_fmt_number(cost, sizeof cost, run->best_cost, 0, 1);
         tui_fmt_elapsed(elapsed, sizeof elapsed, run->elapsed);
         tui_fmt_started(started, sizeof started, run->started);
-        snprintf(line, sizeof line,
-                 "%4lld %-11s %-10s %8lld %6lld %11s %9s %s%s%s%s%s",
-                 (long long)run->id, run->status, run->method,
-                 (long long)run->options, (long long)run->pareto_options,
-                 cost, elapsed, wide ? started : "", wide ? "  " : "",
-                 run->name, run->name[0] ? " / " : "",
-                 base_name(run->surface_path));
+        int n = snprintf(line, sizeof line,
+                         "%4lld %-11s %-10s %8lld %6lld %11s %9s %s%s",
+                         (long long)run->id, run->status, run->method,
+                         (long long)run->options,
+                         (long long)run->pareto_options, cost, elapsed,
+                         wide ? started : "", wide ? "  " : "");
+        /* the name, and the surface when it fits too (the name is the
+         * one the user gave) */
+        const struct tui_field names[] = {
+            {"", run->name, 0},
+            {run->name[0] ? " / " : "", base_name(run->surface_path), 1},
+        };
+        if (n > 0 && (size_t)n < sizeof line)
+            tui_fit_fields(line + n, sizeof line - (size_t)n, width - n,
+                           names, 2);
         attr_t attr = k == s->selected ? tui_attr(ROLE_SELECTION)
                       : strcmp(run->status, "running") == 0
                           ? tui_attr(ROLE_PARETO)
@@ -221,7 +233,20 @@ static enum tui_result runs_key(struct tui_screen *base, struct tui_app *app,
     case 'a': case KEY_F(7):
         tui_push(app, screen_newrun_new(app, NULL));
         return RESULT_HANDLED;
-    case 'r': case KEY_F(5):
+    case KEY_MOUSE:
+        /* a click selects a run, twice opens it; the wheel is the
+         * frame's */
+        if (app->mouse.kind != MOUSE_CLICK)
+            return RESULT_UNHANDLED;
+        if (app->mouse.y >= 2 && app->mouse.y < 2 + s->rows &&
+            s->top + (size_t)(app->mouse.y - 2) < s->n) {
+            s->selected = s->top + (size_t)(app->mouse.y - 2);
+            if (app->mouse.clicks == 2)
+                tui_push(app, screen_options_new(app,
+                                                 s->runs[s->selected].id));
+        }
+        return RESULT_HANDLED;
+    case 'r':
         load(s, app);
         return RESULT_HANDLED;
     case KEY_F(3):
@@ -278,8 +303,10 @@ static enum tui_result runs_key(struct tui_screen *base, struct tui_app *app,
 static int runs_tick(struct tui_screen *base, struct tui_app *app)
 {
     struct runs_screen *s = (struct runs_screen *)base;
-    if (tui_seconds_since(&s->last_load) < 1.0)
+    if (s->runs_finished == app->runs_finished &&
+        tui_seconds_since(&s->last_load) < 1.0)
         return 0;
+    s->runs_finished = app->runs_finished;
     return load(s, app);
 }
 
@@ -292,8 +319,8 @@ static void runs_destroy(struct tui_screen *base)
 
 static const struct tui_screen_class runs_class = {
     "Runs", runs_help,
-    {"Help", NULL, "Search", NULL, "Reload", "Resume", "New", "Delete",
-     NULL, "Quit"},
+    {"Help", NULL, "Search", NULL, NULL, "Resume", "New", "Delete", NULL,
+     "Quit"},
     runs_draw, runs_key, runs_tick, runs_destroy,
 };
 

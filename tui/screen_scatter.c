@@ -58,7 +58,7 @@ static const struct tui_key_help scatter_help[] = {
     {"p, F4", "Pareto-optimal options only (shared with the table)"},
     {"/, F3", "filter (shared with the table)"},
     {"K", "the knee option"},
-    {"e, F6", "write the run's scatter as SVG with these axes (every "
+    {"e, F9", "write the run's scatter as SVG with these axes (every "
               "option); end the name with ! to overwrite"},
     {NULL, NULL},
 };
@@ -320,7 +320,7 @@ static enum tui_result scatter_key(struct tui_screen *base,
         }
         return RESULT_HANDLED;
     }
-    if (key == 'e' || key == KEY_F(6)) {
+    if (key == 'e' || key == KEY_F(9)) {
         char name[128];
         snprintf(name, sizeof name, "facet-run%lld-plot.svg",
                  (long long)s->model->browse.run);
@@ -411,7 +411,7 @@ static void scatter_destroy(struct tui_screen *base)
 
 static const struct tui_screen_class scatter_class = {
     "Scatter", scatter_help,
-    {"Help", NULL, "Filter", "Pareto", NULL, "Export", NULL, NULL, NULL,
+    {"Help", NULL, "Filter", "Pareto", NULL, NULL, NULL, NULL, "Export",
      "Quit"},
     scatter_draw, scatter_key, NULL, scatter_destroy,
 };

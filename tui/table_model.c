@@ -208,6 +208,9 @@ int table_model_fetch(struct table_model *m, int64_t from, int64_t n,
     return rc;
 }
 
+static int window_around(struct table_model *m, const struct option_row *keep,
+                         int64_t position, struct facet_error *err);
+
 /* Counts TABLE_COUNT_CAP options past the last row held, so that the
  * count grows as far as the user scrolls. */
 static int count_further(struct table_model *m, struct facet_error *err)
@@ -285,15 +288,40 @@ int table_model_count_step(struct table_model *m, int64_t rows,
                                      err);
     if (rc != FACET_OK)
         return -1;
-    if (done && !m->estimated) {
-        m->count = m->count_sofar;
-        m->count_exact = 1;
-        if (m->selected >= m->count)
-            m->selected = m->count > 0 ? m->count - 1 : 0;
-    } else if (m->count_sofar > m->count) {
-        m->count = m->count_sofar;
+    if (!done) {
+        if (m->count_sofar > m->count)
+            m->count = m->count_sofar;
+        return 0;
     }
-    return done;
+    /* The count is exact now, estimated positions or not: stepping on
+     * from the end would add the last slice again at every step (a
+     * 6,355-option run counted past ten million). Estimated positions are
+     * made exact here too, from the selected option's own position. */
+    m->count = m->count_sofar;
+    m->count_exact = 1;
+    m->count_from = m->count_sofar = 0;
+    if (m->estimated) {
+        const struct option_row *selection = table_model_selection(m);
+        struct option_row keep;
+        int64_t position = 0;
+        m->estimated = 0;
+        if (selection != NULL) {
+            keep = *selection;
+            m->fetches++;
+            rc = store_browse_position(m->store, &m->browse, &keep,
+                                       &position, err);
+            m->nrows = 0;
+            m->base = 0;
+            if (rc == FACET_OK)
+                rc = window_around(m, &keep, position, err);
+            if (rc != FACET_OK)
+                return -1;
+            m->selected = position;
+        }
+    }
+    if (m->selected >= m->count)
+        m->selected = m->count > 0 ? m->count - 1 : 0;
+    return 1;
 }
 
 void table_model_count_text(const struct table_model *m, char *out,
@@ -302,6 +330,16 @@ void table_model_count_text(const struct table_model *m, char *out,
     char number[32];
     tui_fmt_number(number, sizeof number, (double)m->count, 0, 1);
     snprintf(out, size, "%s%s", number, m->count_exact ? "" : "+");
+}
+
+void table_model_position_text(const struct table_model *m, char *out,
+                               size_t size)
+{
+    char row[32], count[40];
+    tui_fmt_number(row, sizeof row, (double)(m->selected + 1), 0, 1);
+    table_model_count_text(m, count, sizeof count);
+    snprintf(out, size, "row %s%s of %s", row, m->estimated ? "+" : "",
+             count);
 }
 
 /* filter_match's view of an option's columns. */
@@ -413,6 +451,15 @@ static int reload(struct table_model *m, const struct option_row *keep,
             return rc;
     }
     return table_model_select(m, position, err);
+}
+
+int table_model_select_first(struct table_model *m, struct facet_error *err)
+{
+    m->nrows = 0;
+    m->base = 0;
+    m->estimated = 0;
+    m->selected = 0;
+    return table_model_select(m, 0, err);
 }
 
 int table_model_select_number(struct table_model *m, int64_t number,

@@ -75,6 +75,11 @@ int table_model_fetch(struct table_model *m, int64_t from, int64_t n,
 int table_model_select(struct table_model *m, int64_t position,
                        struct facet_error *err);
 
+/* Selects the first row of the order, exactly: the window is read again
+ * from the start (positions kept as estimates are dropped), as a new
+ * sort shows its top. */
+int table_model_select_first(struct table_model *m, struct facet_error *err);
+
 /* Moves the selection to option number when the table shows it; *found
  * tells whether it does (the selection stays otherwise). */
 int table_model_select_number(struct table_model *m, int64_t number,
@@ -105,13 +110,21 @@ int table_model_refresh(struct table_model *m, struct facet_error *err);
 void table_model_count_text(const struct table_model *m, char *out,
                             size_t size);
 
+/* Where the selection is, as a table shows it: "row 12 of 336", "row 12
+ * of 2,000+" while the count is a lower bound, "row 2,001+ of 9,000" while
+ * positions are (after a re-sort kept a deep option). */
+void table_model_position_text(const struct table_model *m, char *out,
+                               size_t size);
+
 /* Counts exactly now (reads every option of the run with a filter, the
  * run's index without one). */
 int table_model_count_exact(struct table_model *m, struct facet_error *err);
 
 /* One bounded step of an exact count (at most rows options looked at),
  * for a screen to call between keystrokes; returns 1 when the count is
- * exact, 0 when more steps are needed, < 0 on error (err filled). */
+ * exact (then every later step returns 1 at once, and estimated
+ * positions have been made exact), 0 when more steps are needed, < 0 on
+ * error (err filled). */
 int table_model_count_step(struct table_model *m, int64_t rows,
                            struct facet_error *err);
 

@@ -16,6 +16,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <strings.h>
+#include <sys/stat.h>
 #include <time.h>
 #include <unistd.h>
 
@@ -24,6 +25,8 @@
 #include "input.h"
 #include "job.h"
 #include "keys.h"
+#include "layout.h"
+#include "store/snapshot.h"
 
 #define CTRL(c) ((c) & 0x1f)
 
@@ -204,9 +207,13 @@ static void draw_job(struct tui_app *app, int y, int width)
     char text[160];
     int x = tui_putf(y, 0, width, tui_attr(ROLE_STATUS), "run %lld %s ",
                      (long long)st.run, st.stopping ? "stopping" : st.stage);
-    int gauge = width - x - 34;
+    int gauge = width - x - 46;
     if (gauge > 30)
         gauge = 30;
+    /* the sampled numbers, not the live ones: the table of the run shows
+     * the same moment */
+    st.done = app->job_done;
+    st.total = app->job_total;
     if (st.total > 0 && gauge > 4) {
         int full = (int)((double)st.done / (double)st.total * gauge);
         for (int k = 0; k < gauge; k++)
@@ -214,9 +221,10 @@ static void draw_job(struct tui_app *app, int y, int width)
                                             : tui_attr(ROLE_DIM),
                          k < full ? app->glyphs->gauge_full
                                   : app->glyphs->gauge_empty);
-        snprintf(text, sizeof text, " %lld/%lld options (%d%%) Ctrl-X stops",
-                 (long long)st.done, (long long)st.total,
-                 (int)(100.0 * (double)st.done / (double)st.total));
+        char stored[32];
+        tui_fmt_number(stored, sizeof stored, (double)app->job_stored, 0, 1);
+        snprintf(text, sizeof text, " %d%% %s options stored  Ctrl-X stops",
+                 (int)(100.0 * (double)st.done / (double)st.total), stored);
     } else {
         snprintf(text, sizeof text, " Ctrl-X stops");
     }
@@ -244,67 +252,146 @@ static void draw_status(struct tui_app *app, int y, int width)
         draw_job(app, y, width);
 }
 
-/* htop's bar: "F1" then the label on a coloured field of 6 columns. */
-static void draw_fkeys(const struct tui_screen *s, int y, int width)
+/* htop's bar: "F1" then the label on a coloured field, a blank after
+ * each so that the labels never run together (layout.h). */
+static void draw_fkeys(struct tui_app *app, const struct tui_screen *s,
+                       int y, int width)
 {
-    tui_fill(y, 0, width, tui_attr(ROLE_FKEY_LABEL));
-    int x = 0;
-    for (int k = 0; k < 10 && x < width; k++) {
-        const char *label = s->cls->fkeys[k];
-        if (label == NULL || label[0] == '\0')
+    tui_fill(y, 0, width, A_NORMAL);
+    tui_fkey_layout(s->cls->fkeys, width, app->fkey_x, app->fkey_width);
+    for (int k = 0; k < 10; k++) {
+        int x = app->fkey_x[k];
+        if (x < 0 || x >= width)
             continue;
         x += tui_putf(y, x, width - x, tui_attr(ROLE_FKEY), "F%d", k + 1);
-        char field[16];
-        snprintf(field, sizeof field, "%-6.6s", label);
-        x += tui_put(y, x, width - x, tui_attr(ROLE_FKEY_LABEL), field);
+        tui_fill(y, x, app->fkey_width[k], tui_attr(ROLE_FKEY_LABEL));
+        tui_put(y, x, app->fkey_width[k], tui_attr(ROLE_FKEY_LABEL),
+                s->cls->fkeys[k]);
     }
 }
 
 static const struct tui_key_help global_help[] = {
-    {"?, F1", "this help (j/k scroll it, any other key closes it)"},
-    {"q, Esc", "back to the previous screen (quits on the first)"},
-    {"F10", "quit"},
+    {"?, F1", "this help (j/k, PgUp/PgDn scroll it, any other key closes)"},
+    {"q, Esc", "back to the previous screen (on the first: asks, then "
+               "quits)"},
+    {"F10", "quit (asks only while a run is working)"},
     {"Ctrl-X", "stop the run working in the background (resumable)"},
     {"Ctrl-L", "redraw the screen"},
+    {"mouse click", "select (twice: open); a header: sort; the bar: its key"},
+    {"mouse wheel", "scroll"},
     {NULL, NULL},
 };
 
+/* The help's lines: the screen's keys, a heading, the global keys; a
+ * description wider than what_width goes on under its keys, cut at
+ * blanks, so that nothing is cut at the screen's edge. */
+struct help_line {
+    const char *keys;  /* NULL: a heading (text); "": a continuation */
+    char text[128];
+};
+
+static int help_add(struct help_line *out, int n, int max, const char *keys,
+                    const char *what, int what_width)
+{
+    if (what_width < 20)
+        what_width = 20;
+    if (what_width > 127)
+        what_width = 127;
+    const char *p = what;
+    int first = 1;
+    while (n < max) {
+        int len = (int)strlen(p), cut = len;
+        if (tui_text_width(p) > what_width) {
+            /* the last blank within what_width code points */
+            int columns = 0, k = 0;
+            cut = 0;
+            for (; p[k] && columns < what_width; k++) {
+                if (((unsigned char)p[k] & 0xc0) != 0x80)
+                    columns++;
+                if (p[k] == ' ')
+                    cut = k;
+            }
+            if (cut == 0)
+                cut = k;
+        }
+        out[n].keys = first ? keys : "";
+        snprintf(out[n].text, sizeof out[n].text, "%.*s", cut, p);
+        n++;
+        first = 0;
+        p += cut;
+        while (*p == ' ')
+            p++;
+        if (*p == '\0')
+            break;
+    }
+    return n;
+}
+
+static int help_lines(const struct tui_screen *s, struct help_line *out,
+                      int max, int what_width)
+{
+    int n = 0;
+    for (const struct tui_key_help *h = s->cls->help; h->keys && n < max;
+         h++)
+        n = help_add(out, n, max, h->keys, h->what, what_width);
+    if (n < max) {
+        out[n].keys = NULL;
+        snprintf(out[n].text, sizeof out[n].text, "Everywhere");
+        n++;
+    }
+    for (const struct tui_key_help *h = global_help; h->keys && n < max;
+         h++)
+        n = help_add(out, n, max, h->keys, h->what, what_width);
+    return n;
+}
+
+/* The help over the whole screen above the status line, in two columns
+ * when it is wide and the keys do not fit one; scrolls by lines, and
+ * says which lines show. */
 static void draw_help(struct tui_app *app, int height, int width)
 {
     const struct tui_screen *s = top(app);
-    const struct tui_key_help *sets[2] = {s->cls->help, global_help};
-    int lines = 0;
-    for (int k = 0; k < 2; k++)
-        for (const struct tui_key_help *h = sets[k]; h->keys; h++)
-            lines++;
-    lines += 1;
-    int w = width - 4 < 76 ? width - 4 : 76, h = height - 2;
-    int x0 = (width - w) / 2, y0 = 1;
-    int visible = h - 3;
-    if (app->help_top > lines - visible)
-        app->help_top = lines - visible > 0 ? lines - visible : 0;
-    for (int y = 0; y < h; y++)
-        tui_fill(y0 + y, x0, w, tui_attr(ROLE_NORMAL));
-    tui_fill(y0, x0, w, tui_attr(ROLE_TITLE));
-    tui_putf(y0, x0, w, tui_attr(ROLE_TITLE),
-             " Help: %s keys (j/k scroll, any other key closes)",
-             s->cls->name);
-    int row = 0, y = y0 + 2;
-    for (int k = 0; k < 2; k++) {
-        if (k == 1) {
-            if (row >= app->help_top && y < y0 + h)
-                tui_put(y++, x0 + 1, w - 2, tui_attr(ROLE_HEADER),
-                        "Everywhere");
-            row++;
-        }
-        for (const struct tui_key_help *e = sets[k]; e->keys; e++, row++) {
-            if (row < app->help_top || y >= y0 + h)
-                continue;
-            tui_putf(y, x0 + 1, 16, tui_attr(ROLE_PARETO), "%s", e->keys);
-            tui_put(y, x0 + 18, w - 19, A_NORMAL, e->what);
-            y++;
-        }
+    struct help_line lines[128];
+    /* two columns need 2 x 78 + 3: the width of one decides the wrap */
+    int two = width >= 2 * 78 + 3;
+    int cw = two ? (width - 1) / 2 : width;
+    int n = help_lines(s, lines, 128, cw - 19);
+    struct tui_help_page page;
+    tui_help_layout(n, height, width, 78, app->help_top, &page);
+    if (page.columns == 1 && two) {
+        /* one column after all: wrapped for the whole width */
+        cw = width;
+        n = help_lines(s, lines, 128, cw - 19);
+        tui_help_layout(n, height, width, 78, app->help_top, &page);
     }
+    app->help_top = page.top;
+    for (int y = 0; y < height; y++)
+        tui_fill(y, 0, width, tui_attr(ROLE_NORMAL));
+    tui_fill(0, 0, width, tui_attr(ROLE_TITLE));
+    tui_putf(0, 0, width, tui_attr(ROLE_TITLE), " Help: %s keys",
+             s->cls->name);
+    int shown = page.per_page * page.columns;
+    int last = page.top + shown < n ? page.top + shown : n;
+    char where[96];
+    snprintf(where, sizeof where, "lines %d-%d of %d%s ", page.top + 1, last,
+             n, n > shown ? ", j/k scroll" : "");
+    int ww = tui_text_width(where);
+    if (ww < width - 20)
+        tui_put(0, width - ww, ww, tui_attr(ROLE_TITLE), where);
+    for (int k = page.top; k < last; k++) {
+        int col = (k - page.top) / page.per_page;
+        int y = 2 + (k - page.top) % page.per_page;
+        int x0 = col * (cw + 1);
+        if (lines[k].keys == NULL) {
+            tui_put(y, x0 + 1, cw - 2, tui_attr(ROLE_HEADER), lines[k].text);
+            continue;
+        }
+        tui_put(y, x0 + 1, 16, tui_attr(ROLE_PARETO), lines[k].keys);
+        tui_put(y, x0 + 18, cw - 19, A_NORMAL, lines[k].text);
+    }
+    tui_put(height - 1, 1, width - 2, tui_attr(ROLE_DIM),
+            n > shown ? "j/k or PgUp/PgDn scroll; any other key closes"
+                      : "any key closes");
 }
 
 static void draw(struct tui_app *app)
@@ -320,12 +407,47 @@ static void draw(struct tui_app *app)
     s->cls->draw(s, app, height - 2, width);
     if (app->help_open)
         draw_help(app, height - 2, width);
-    draw_fkeys(s, height - 1, width);
+    draw_fkeys(app, s, height - 1, width);
     draw_status(app, height - 2, width);
     refresh();
 }
 
-/* Reports a finished background run and releases it. */
+/* Samples the background run once a second, before the screens' ticks:
+ * its progress, and its options stored as of a snapshot of the database
+ * that stays open through the ticks (end_sample), so that the gauge and
+ * the run's table (title, count, rows) are read at one moment. */
+static int sample_job(struct tui_app *app)
+{
+    if (app->job == NULL)
+        return 0;
+    if (app->job_samples > 0 && tui_seconds_since(&app->job_sampled) < 1.0)
+        return 0;
+    struct tui_job_state st;
+    tui_job_state(app->job, &st);
+    clock_gettime(CLOCK_MONOTONIC, &app->job_sampled);
+    app->job_run = st.run;
+    app->job_done = st.done;
+    app->job_total = st.total;
+    app->job_samples++;
+    app->job_sampling = 1;
+    app->job_snapshot = store_snapshot_begin(app->store);
+    struct run_info info;
+    struct facet_error ignored;
+    if (st.run > 0 &&
+        store_run_get(app->store, st.run, &info, &ignored) == FACET_OK)
+        app->job_stored = info.options;
+    return 1;  /* the gauge moves */
+}
+
+static void end_sample(struct tui_app *app)
+{
+    store_snapshot_end(app->store, app->job_snapshot);
+    app->job_snapshot = 0;
+    app->job_sampling = 0;
+}
+
+/* Reports a finished background run and releases it, after the screens'
+ * ticks (the New run form opens the run's table from the job). */
 static int poll_job(struct tui_app *app)
 {
     if (app->job == NULL)
@@ -333,9 +455,11 @@ static int poll_job(struct tui_app *app)
     struct tui_job_state st;
     tui_job_state(app->job, &st);
     if (!st.finished)
-        return 1;  /* the gauge moves */
+        return 0;
+    app->job_samples = 0;
     tui_job_free(app->job);
     app->job = NULL;
+    app->runs_finished++;  /* every screen of it refreshes */
     if (st.rc != FACET_OK)
         tui_error(app, "run %lld failed: %s", (long long)st.run,
                   st.err.message);
@@ -359,6 +483,83 @@ static int is_surface(const char *path)
     return n > 4 && strcasecmp(path + n - 4, ".obj") == 0;
 }
 
+/* The next byte of an escape sequence, if one was sent with it. */
+static int next_byte(void *context)
+{
+    (void)context;
+    timeout(30);
+    int c = getch();
+    timeout(250);
+    /* the mouse where the terminal reports it: presses (no click
+     * resolution, which would delay them) and the wheel */
+    mouseinterval(0);
+    mousemask(BUTTON1_PRESSED | BUTTON4_PRESSED | BUTTON5_PRESSED, NULL);
+    return c == ERR ? -1 : c;
+}
+
+/* A key from getch with unknown escape sequences read whole and ignored
+ * (keys.h); ERR when none came. */
+static int read_key(void)
+{
+    int key = getch();
+    if (key != 27)
+        return key;
+    int pushback;
+    key = tui_key_escape(next_byte, NULL, &pushback);
+    if (pushback >= 0)
+        ungetch(pushback);
+    return key;
+}
+
+/* Turns the KEY_MOUSE curses has into app->mouse; returns 0 for an event
+ * Facet does not use (a release, another button). */
+static int read_mouse(struct tui_app *app)
+{
+    MEVENT event;
+    if (getmouse(&event) != OK)
+        return 0;
+    static const double double_click = 0.4;
+    struct tui_mouse *m = &app->mouse;
+    if (event.bstate & BUTTON4_PRESSED) {
+        m->kind = MOUSE_WHEEL_UP;
+    } else if (event.bstate & BUTTON5_PRESSED) {
+        m->kind = MOUSE_WHEEL_DOWN;
+    } else if (event.bstate & (BUTTON1_PRESSED | BUTTON1_CLICKED)) {
+        int again = m->kind == MOUSE_CLICK && m->y == event.y &&
+                    m->x == event.x && m->clicks == 1 &&
+                    tui_seconds_since(&m->at) < double_click;
+        clock_gettime(CLOCK_MONOTONIC, &m->at);
+        m->kind = MOUSE_CLICK;
+        m->clicks = again ? 2 : 1;
+    } else {
+        return 0;
+    }
+    m->y = event.y;
+    m->x = event.x;
+    return 1;
+}
+
+/* Asks before quitting: always on the first screen's q/Esc, on F10 only
+ * while a run works (which quitting stops, resumably). */
+static int job_working(struct tui_app *app)
+{
+    if (app->job == NULL)
+        return 0;
+    struct tui_job_state st;
+    tui_job_state(app->job, &st);
+    return !st.finished;
+}
+
+static void ask_quit(struct tui_app *app)
+{
+    app->confirm_quit = 1;
+    if (job_working(app))
+        tui_error(app, "A run is working: quit and stop it (it stays "
+                  "resumable)? (y/n)");
+    else
+        tui_error(app, "Quit Facet? (y/n)");
+}
+
 static void loop(struct tui_app *app)
 {
     int dirty = 1;
@@ -366,26 +567,61 @@ static void loop(struct tui_app *app)
         if (dirty)
             draw(app);
         dirty = 0;
-        int key = getch();
+        int key = read_key();
         if (stop_signal)
             break;
         struct tui_screen *s = top(app);
         if (key == ERR) {
+            if (sample_job(app))
+                dirty = 1;
             if (s->cls->tick && s->cls->tick(s, app))
                 dirty = 1;
+            end_sample(app);
             if (poll_job(app))
                 dirty = 1;
             continue;
         }
+        if (key == TUI_KEY_NONE)
+            continue;  /* a sequence Facet does not know: nothing */
         dirty = 1;
         if (key == KEY_RESIZE)
             continue;
+        if (key == KEY_MOUSE) {
+            if (!read_mouse(app))
+                continue;
+            if (app->mouse.kind == MOUSE_CLICK && app->mouse.y == LINES - 1 &&
+                !app->help_open && app->prompt == NULL) {
+                int f = tui_fkey_at(app->fkey_x, app->fkey_width,
+                                    app->mouse.x);
+                if (f == 0)
+                    continue;
+                key = KEY_F(f);  /* a click on the bar presses the key */
+            }
+        }
+        if (app->confirm_quit) {
+            app->confirm_quit = 0;
+            app->status[0] = '\0';
+            app->status_error = 0;
+            if (key == 'y' || key == 'Y')
+                break;
+            tui_status(app, "not quitting");
+            continue;
+        }
         if (app->help_open) {
             enum tui_action a = tui_key_action(key);
+            if (key == KEY_MOUSE)
+                a = app->mouse.kind == MOUSE_WHEEL_UP ? ACTION_UP
+                    : app->mouse.kind == MOUSE_WHEEL_DOWN ? ACTION_DOWN
+                                                          : ACTION_NONE;
             if (a == ACTION_DOWN)
                 app->help_top++;
             else if (a == ACTION_UP && app->help_top > 0)
                 app->help_top--;
+            else if (a == ACTION_PAGE_DOWN)
+                app->help_top += LINES / 2;
+            else if (a == ACTION_PAGE_UP)
+                app->help_top = app->help_top > LINES / 2
+                                    ? app->help_top - LINES / 2 : 0;
             else
                 app->help_open = 0;
             continue;
@@ -400,6 +636,15 @@ static void loop(struct tui_app *app)
             continue;
         }
         enum tui_result r = s->cls->key(s, app, key);
+        if (r == RESULT_UNHANDLED && key == KEY_MOUSE &&
+            app->mouse.kind != MOUSE_CLICK) {
+            /* a wheel the screen does not take: three lines as keys */
+            int arrow = app->mouse.kind == MOUSE_WHEEL_UP ? KEY_UP
+                                                          : KEY_DOWN;
+            for (int k = 0; k < 3; k++)
+                s->cls->key(s, app, arrow);
+            r = RESULT_HANDLED;
+        }
         if (r == RESULT_UNHANDLED && app->prompt == NULL) {
             switch (tui_key_action(key)) {
             case ACTION_HELP:
@@ -419,11 +664,32 @@ static void loop(struct tui_app *app)
                 break;
             }
         }
-        if (r == RESULT_BACK)
+        if (r == RESULT_BACK && app->depth == 1)
+            ask_quit(app);
+        else if (r == RESULT_BACK)
             pop(app);
+        else if (r == RESULT_QUIT && job_working(app))
+            ask_quit(app);
         else if (r == RESULT_QUIT)
             break;
     }
+}
+
+/* facet tui on a file that does not exist: asks on the terminal, before
+ * curses starts, whether to create it (a typo must not leave a database
+ * behind). Returns 1 to go on. */
+static int may_create(const char *path)
+{
+    struct stat st;
+    if (stat(path, &st) == 0)
+        return 1;
+    printf("%s does not exist. Create a new result database there? (y/n) ",
+           path);
+    fflush(stdout);
+    char line[64];
+    if (fgets(line, sizeof line, stdin) == NULL)
+        return 0;
+    return line[0] == 'y' || line[0] == 'Y';
 }
 
 int tui_run(const char *path, struct facet_error *err)
@@ -438,6 +704,11 @@ int tui_run(const char *path, struct facet_error *err)
         return facet_error_set(err, FACET_EWORK, "out of memory");
     snprintf(app->db_path, sizeof app->db_path, "%s",
              path && !surface ? path : "facet.db");
+    if (!may_create(app->db_path)) {
+        printf("nothing created\n");
+        free(app);
+        return FACET_OK;
+    }
     int rc = store_open(app->db_path, &app->store, err);
     if (rc != FACET_OK) {
         free(app);
@@ -466,6 +737,10 @@ int tui_run(const char *path, struct facet_error *err)
     set_escdelay(25);
     curs_set(0);
     timeout(250);
+    /* the mouse where the terminal reports it: presses (no click
+     * resolution, which would delay them) and the wheel */
+    mouseinterval(0);
+    mousemask(BUTTON1_PRESSED | BUTTON4_PRESSED | BUTTON5_PRESSED, NULL);
     app->colour = tui_theme_init(getenv("NO_COLOR") == NULL);
 
     tui_push(app, screen_runs_new(app));

@@ -21,7 +21,7 @@ check "options table" '^ Run 1 roof\.obj'
 keys K
 keys Enter
 check "the knee's panel map" "Panel map: option $KNEE of run 1"
-check "the bar offers Export" 'F6Export'
+check "the bar offers Export on F9" 'F9Export'
 keys e
 check "export asks for a prefix, offering one" "Export to \\(prefix\\): *$PREFIX"
 keys Enter

@@ -41,6 +41,64 @@ static void test_actions(void **state)
         assert_int_equal(tui_key_action(map[k].key), map[k].action);
 }
 
+/* Bytes after an Esc, as curses hands them over for a sequence its TERM
+ * does not know. */
+struct bytes {
+    const char *text;
+    size_t at;
+};
+
+static int next_byte(void *context)
+{
+    struct bytes *b = context;
+    if (b->text[b->at] == '\0')
+        return -1;
+    return (unsigned char)b->text[b->at++];
+}
+
+/* Every sequence is read to its end (nothing of it is left to act as a
+ * key: under a mismatched TERM, F5's "[15~" after the Esc went back and
+ * F10's quit), the common ones are their keys, the rest nothing. */
+static void test_escape(void **state)
+{
+    (void)state;
+    const struct { const char *after_esc; int key; } map[] = {
+        {"[15~", KEY_F(5)}, {"[21~", KEY_F(10)}, {"[11~", KEY_F(1)},
+        {"[24~", KEY_F(12)}, {"[17~", KEY_F(6)}, {"OP", KEY_F(1)},
+        {"OS", KEY_F(4)}, {"[[A", KEY_F(1)}, {"[[E", KEY_F(5)},
+        {"[A", KEY_UP}, {"[B", KEY_DOWN}, {"OC", KEY_RIGHT},
+        {"[1;5D", KEY_LEFT}, {"[15;2~", KEY_F(5)}, {"[H", KEY_HOME},
+        {"[4~", KEY_END}, {"[5~", KEY_PPAGE}, {"[6~", KEY_NPAGE},
+        {"[3~", KEY_DC},
+        /* unknown: ignored whole */
+        {"[99~", TUI_KEY_NONE}, {"[<0;10;5M", TUI_KEY_NONE},
+        {"[M !!", TUI_KEY_NONE}, {"[200~", TUI_KEY_NONE},
+        {"[?1;2c", TUI_KEY_NONE}, {"x", TUI_KEY_NONE},
+        {"[~", TUI_KEY_NONE}, {"O", TUI_KEY_NONE}, {"[12", TUI_KEY_NONE},
+        /* an Esc alone */
+        {"", 27},
+    };
+    for (size_t k = 0; k < sizeof map / sizeof map[0]; k++) {
+        struct bytes b = {map[k].after_esc, 0};
+        int pushback;
+        int key = tui_key_escape(next_byte, &b, &pushback);
+        if (key != map[k].key)
+            fail_msg("ESC %s: key %d, want %d", map[k].after_esc, key,
+                     map[k].key);
+        assert_int_equal(pushback, -1);
+        assert_int_equal(b.at, strlen(map[k].after_esc));
+    }
+    /* Esc Esc: one back, and the second Esc is the next key */
+    struct bytes b = {"\033", 0};
+    int pushback;
+    assert_int_equal(tui_key_escape(next_byte, &b, &pushback), 27);
+    assert_int_equal(pushback, 27);
+    /* what follows a sequence is not read */
+    struct bytes c = {"[15~q", 0};
+    assert_int_equal(tui_key_escape(next_byte, &c, &pushback), KEY_F(5));
+    assert_int_equal(c.at, 4);
+}
+
 static void test_names(void **state)
 {
     (void)state;
@@ -133,6 +191,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_actions),
         cmocka_unit_test(test_names),
+        cmocka_unit_test(test_escape),
         cmocka_unit_test(test_input),
         cmocka_unit_test(test_prompt),
     };
