@@ -112,6 +112,10 @@ enum {
     EXCESS_ITERATIONS = 6,  /* refits for the correction, at most */
     NORMAL_ITERATIONS = 6   /* refits about the fitted normal, at most */
 };
+/* The osculating correction takes Newton steps where the excess's p may
+ * exceed this (see fit); below it, repeating the fit converges by a
+ * factor of about p / 4 a pass. */
+#define NEWTON_P_MIN 0.01
 /* The refits stop once the fit changes by less than this (relative). */
 #define FIT_CONVERGED 1e-13
 /* ... of at least this scaled curvature (k times the radius): below it a
@@ -331,14 +335,15 @@ static double osculating_excess(const double *c, double x, double y,
     int clamped = p > EXCESS_P_MAX;
     if (clamped)
         p = EXCESS_P_MAX;
-    double root = sqrt(1 - p);
-    /* d/dq and d/dp of q / (1 + root) - q / 2 */
-    double by_q = 1 / (1 + root) - 0.5;
-    double by_p = clamped ? 0 : q / (2 * root * (1 + root) * (1 + root));
-    grad[0] = by_q * 2 * x * x + by_p * 4 * x * sx;
-    grad[1] = by_q * 2 * x * y + by_p * 2 * (sx * y + sy * x);
-    grad[2] = by_q * 2 * y * y + by_p * 4 * y * sy;
-    return q / (1 + root) - q / 2;
+    double root = sqrt(1 - p), lift = 1 / (1 + root);
+    if (grad) {  /* by c, through q and p */
+        double by_q = lift - 0.5;
+        double by_p = clamped ? 0 : q * lift * lift / (2 * root);
+        grad[0] = by_q * 2 * x * x + by_p * 4 * x * sx;
+        grad[1] = by_q * 2 * x * y + by_p * 2 * (sx * y + sy * x);
+        grad[2] = by_q * 2 * y * y + by_p * 4 * y * sy;
+    }
+    return q * lift - q / 2;
 }
 
 /* Solves the 3 x 3 system a x = b (a row-major) by Cramer's rule. Returns
@@ -481,6 +486,39 @@ static void model_solve(const struct model *model, const double *b,
         coef[model->term[r]] = x[r];
 }
 
+/* One pass of the osculating correction (see fit): the coefficients
+ * next = F(c) of the factored model for the heights of h's points less the
+ * excess of the curvature terms c, and when slope is not NULL F's
+ * derivative by c (TERMS_MAX x 3, row-major). */
+static void excess_pass(const struct hood *h, const struct model *model,
+                        const double *c, double *next, double *slope)
+{
+    double rhs[4][TERMS_MAX] = {{0}};
+    int rows = slope ? 4 : 1;
+    for (size_t i = 1; i < h->count; i++) {
+        const double *l = h->local + 3 * i;
+        double m[TERMS_MAX], grad[3];
+        double z = l[2] - osculating_excess(c, l[0], l[1],
+                                            slope ? grad : NULL);
+        double w = h->weight[i];
+        monomials(l[0], l[1], m);
+        for (int r = 0; r < model->n; r++) {
+            int t = model->term[r];
+            double wm = w * m[t];
+            rhs[0][t] += wm * z;
+            for (int j = 1; j < rows; j++)
+                rhs[j][t] -= wm * grad[j - 1];
+        }
+    }
+    model_solve(model, rhs[0], next);
+    for (int j = 1; j < rows; j++) {
+        double column[TERMS_MAX];
+        model_solve(model, rhs[j], column);
+        for (int r = 0; r < TERMS_MAX; r++)
+            slope[3 * r + j - 1] = column[r];
+    }
+}
+
 /* Fits w = f(x, y) to the neighbourhood h in frame f at its centre, with
  * nterms_max terms at most (5 or 9), into *jet. The fit is of the
  * points' heights less the osculating excess of the fit itself, repeated
@@ -593,52 +631,51 @@ static int fit(const struct hood *h, const struct frame *f, int nterms_max,
 
     /* The osculating correction: refit the heights less the excess of the
      * fit (same matrix, new right-hand side), for the fit that reproduces
-     * itself: c = F(c) over its three curvature terms c. Solved by
-     * Newton's method with the derivative of the first pass (from the
-     * excess's: three more right-hand sides), halving a step that leaves
-     * F(c) - c larger; plain repetition, c <- F(c), converged slowly or
-     * not at all where the fit is ill-conditioned (a coarse one-sided
-     * cubic, each refit swinging the curvature the other way). The answer
-     * is F(c) for the c that came closest. */
+     * itself: c = F(c) over its three curvature terms c. Where the
+     * excess is small (p under NEWTON_P_MIN everywhere: a fine mesh),
+     * repeating c <- F(c) converges in a few passes. Where it is not, it
+     * converged slowly or not at all on an ill-conditioned fit (a coarse
+     * one-sided cubic, each refit swinging the curvature the other way),
+     * so there the passes take Newton steps, F's derivative from the
+     * excess's (three more right-hand sides), taken anew while they
+     * converge slowly; a step that leaves the miss |F(c) - c| larger is
+     * halved. The answer is F(c) for the c that came closest. */
     double best[TERMS_MAX], best_miss = INFINITY, step = 1;
     double c3[3] = {coef[0], coef[1], coef[2]}, base[3] = {0}, dir[3] = {0};
     double slope[TERMS_MAX * 3];  /* dF/dc, all terms by the three */
-    int sloped = 0;
+    double value[2], theta;
+    linalg_sym2_eigen(c3[0], c3[1] / 2, c3[2], value, &theta);
+    double big = fmax(fabs(value[0]), fabs(value[1]));
+    int newton = 4 * big * big > NEWTON_P_MIN;  /* p <= |2 c|^2 |X|^2 */
+    int need_slope = newton;
     memcpy(best, coef, sizeof best);
     for (int it = 0; it < EXCESS_ITERATIONS; it++) {
-        double rhs[4][TERMS_MAX] = {{0}}, next[TERMS_MAX];
-        int rows = sloped ? 1 : 4;
-        for (size_t i = 1; i < count; i++) {
-            const double *l = local + 3 * i;
-            double x = l[0], y = l[1], m[TERMS_MAX], grad[3];
-            double z = l[2] - osculating_excess(c3, x, y, grad);
-            double w = h->weight[i];
-            monomials(x, y, m);
-            for (int r = 0; r < model.n; r++) {
-                int t = model.term[r];
-                double wm = w * m[t];
-                rhs[0][t] += wm * z;
-                for (int j = 1; j < rows; j++)
-                    rhs[j][t] -= wm * grad[j - 1];
-            }
-        }
-        model_solve(&model, rhs[0], next);
-        if (!sloped) {
-            for (int j = 0; j < 3; j++) {
-                double column[TERMS_MAX];
-                model_solve(&model, rhs[1 + j], column);
-                for (int r = 0; r < TERMS_MAX; r++)
-                    slope[3 * r + j] = column[r];
-            }
-            sloped = 1;
-        }
+        double next[TERMS_MAX];
+        excess_pass(h, &model, c3, next, need_slope ? slope : NULL);
+        need_slope = 0;
         double miss = 0, size = 0, g[3];
         for (int r = 0; r < 3; r++) {
             g[r] = next[r] - c3[r];
             miss = fmax(miss, fabs(g[r]));
             size = fmax(size, fabs(next[r]));
         }
+        if (!newton) {  /* c <- F(c) */
+            /* Done when this pass, or what the passes still to come
+             * would add (a geometric series: they shrink by the ratio of
+             * the last two), is below the tolerance. */
+            double ratio = miss / best_miss;
+            double rest = it > 0 && ratio < 0.5 ? 2 * ratio * miss : miss;
+            best_miss = miss;
+            memcpy(best, next, sizeof best);
+            memcpy(c3, next, sizeof c3);
+            if (!(rest > FIT_CONVERGED * (size + FIT_SCALE_MIN)))
+                break;
+            continue;
+        }
         if (miss < best_miss) {  /* closer: take it, Newton step from it */
+            /* a derivative that no longer brings the miss down fast is
+             * taken anew at the next pass */
+            need_slope = !(miss < best_miss / 4);
             best_miss = miss;
             memcpy(best, next, sizeof best);
             if (!(miss > FIT_CONVERGED * (size + FIT_SCALE_MIN)))
