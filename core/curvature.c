@@ -8,7 +8,8 @@
  *      was split); flipped on request.
  *   2. A neighbourhood: the k-ring of v by breadth-first search over the
  *      faces around each vertex, at least 2 rings (3 on the boundary) and
- *      grown ring by ring until it holds enough points. Rings follow the
+ *      grown ring by ring until it holds enough points (except where it
+ *      falls back to the 2-ring, below). Rings follow the
  *      mesh, so the neighbourhood scales with the local edge length; the
  *      triangles of one OBJ face count as one face, so a quad mesh's rings
  *      do not depend on the diagonals its triangulation chose.
@@ -18,7 +19,10 @@
  *      fitted shape operator everywhere (a sphere, a circular cylinder) that
  *      a polynomial of the fit's degree cannot follow, q / (1 + sqrt(1 - p))
  *      - q / 2 with q = X.S X and p = |S X|^2. Refitted until the fit stays
- *      put, so spheres and cylinders are fitted exactly at any mesh size,
+ *      put (c = F(c) for its curvature terms c: by repeating the fit where
+ *      the excess is small, by Newton steps where it is not, as repeating
+ *      swung back and forth on coarse one-sided fits), so spheres and
+ *      cylinders are fitted exactly at any mesh size,
  *      and on other surfaces only the part of the quartic and higher terms
  *      due to the curvature's change is left to alias into the fit (it was
  *      what made a cylinder's straight direction noisy: the arc's x^4 went
@@ -26,11 +30,18 @@
  *      gradient (5 terms), or a cubic jet (9 terms) where the neighbourhood
  *      reaches the boundary (one-sided, so the odd terms no longer cancel),
  *      is large enough, and spans a small arc (radius times the quadric's
- *      largest |k| under CUBIC_SPAN_MAX, 1); a one-sided neighbourhood over a
- *      wider arc (a coarse mesh, where the 3-ring spans tens of degrees)
- *      keeps the quadric over the 2-ring, as a one-sided cubic there swings
- *      the curvature through zero. Weights are Gaussian in distance relative
- *      to the neighbourhood radius.
+ *      largest |k| under CUBIC_SPAN_MAX, 0.866); a one-sided neighbourhood
+ *      over a wider arc (a coarse mesh, where the 3-ring spans tens of
+ *      degrees) keeps the quadric over the 2-ring, not grown for more
+ *      points, as a one-sided cubic there swings the curvature through zero
+ *      and a strip's 2-ring grown for points runs along the strip round
+ *      the arc. A thin neighbourhood, whose quadric is ill-conditioned
+ *      (relative pivot under FIT_THIN_TOL, 1e-3: a strip one face wide,
+ *      its points on two lines across, where y^2 is a multiple of y), is
+ *      fitted in its principal axes by the terms of degree <= 1 across,
+ *      straight across as the mesh is there: its curvature across is 0.
+ *      Weights are Gaussian in distance relative to the neighbourhood
+ *      radius.
  *   4. Refinement: the normal of the fitted graph becomes the new n and the
  *      fit is repeated, until the normal turns by less than 1e-10 rad (a
  *      refit that tilts further than the last is not taken), so the result
@@ -55,16 +66,21 @@
  * 0.001 % (CGAL 0.055 %), cylinder 0.0001 % (0.058 %) and its zero
  * curvature 5.7e-8 / 5.3e-8 1/m (4.9e-7 / 8.1e-7), torus 1.5 % and 0.03 %
  * (7.2 % and 1.5 %), hypar 0.057 % (2.1 %). A 57-vertex quad hemisphere of
- * radius 4.5 m: every k within -1.42/R .. -1/R, its rim symmetric to
- * 1e-14. The error of what is not a sphere or cylinder grows with
- * (edge length / radius of curvature)^2.
+ * radius 4.5 m: every k within -1.025/R .. -0.998/R (-1.42/R .. -1/R
+ * before the Newton steps), its rim symmetric to 4e-14. A strip wrapped
+ * on a cylinder of R = 4 m or 8 m, one 1.5 m quad wide, every vertex on
+ * the boundary (test_curvature_coarse's maze): along the rulings |k| <=
+ * 3.2e-6 1/m, across within 0.035 % of 1/R, the same turned in space
+ * (before the thin fits: 0.33 1/m and 144 %). The error of what is not a
+ * sphere or cylinder grows with (edge length / radius of curvature)^2.
  *
  * Cost is O(V) for meshes of bounded valence: one pass, about two to four
  * fits per vertex (each refitted two to four times for the correction),
- * work buffers allocated once per thread (about 2.5 s of CPU for 1M
- * vertices of the roof example, against 1.7 s without the correction and
- * the refits to convergence, shared by the online CPUs: vertices are
- * independent, so the threads change nothing in the result).
+ * work buffers allocated once per thread (about 3.0 s of CPU for 1M
+ * vertices of the roof example, one thread, against 2.7 s in the same run
+ * before the thin fits and the Newton steps, and 1.7 s measured before the
+ * correction; shared by the online CPUs: vertices are independent, so the
+ * threads change nothing in the result).
  */
 #include <math.h>
 #include <pthread.h>
@@ -83,6 +99,7 @@ enum {
     RINGS_BOUNDARY = 3,     /* rings gathered at least, on the boundary */
     RINGS_MAX = 6,          /* never more rings than this */
     POINTS_WANTED = 12,     /* grow the neighbourhood until this many */
+    POINTS_QUADRIC = 5,     /* the least a quadric with gradient needs */
     POINTS_CUBIC = 18,      /* a cubic jet needs this many on the boundary */
     POINTS_CUBIC_NEAR = 14, /* and this many near it (neighbours all round) */
     POINTS_MAX = 1024,      /* neighbourhood size cap (high valence) */
@@ -101,8 +118,12 @@ enum {
  * (a coarse mesh: a 3-ring spanning a large arc) is no longer a height field
  * a one-sided cubic can follow, and its odd terms swing the curvature
  * through zero (coarse caps' rims came out at +0.5/R with 1.5 and more).
- * A coarse hypar's boundary, which needs the cubic, is worse with less
- * (at 10 x 10 quads: 9 % off with 1.0, 23 % with 0.5). */
+ * It is sqrt(EXCESS_P_MAX), so that no point of a cubic's neighbourhood
+ * lies beyond the osculating correction's range (with 1.0, the maze of
+ * test_curvature_coarse on R = 8 m, cells one quad wide, was off by 0.05
+ * 1/m along its rulings). A coarse hypar's boundary, which needs the
+ * cubic, is worse with less (at 10 x 10 quads: 9 % off with 0.866 or 1.0,
+ * 23 % with 0.5). */
 #define CUBIC_SPAN_MAX 0.866
 /* The osculating-surface correction (see fit) is clamped where
  * (k d)^2 exceeds this, d the point's distance: near 1 the osculating
@@ -563,7 +584,8 @@ static int fit(const struct hood *h, const struct frame *f, int nterms_max,
     double coef[TERMS_MAX] = {0};
     struct model model;
     model.n = 0;
-    double rot_c = 1, rot_s = 0;  /* x' = c x + s y, y' = -s x + c y */
+    /* A thin fit's axes: x' = c x + s y, y' = -s x + c y, X' = Q X. */
+    double rot_c = 1, rot_s = 0;
     int thin = 0;
     if (nterms_max >= 5 && count > 5) {
         double probe[5 * 5];
@@ -594,14 +616,16 @@ static int fit(const struct hood *h, const struct frame *f, int nterms_max,
             l[1] = -rot_s * x + rot_c * y;
         }
         normal_equations(h, TERMS_MAX, ata, atb);
+        /* x'^2 x'y' x' y' | x'^3 x'^2y' */
         static const int straight[6] = {0, 1, 3, 4, 5, 6};
-        model.n = nterms_max == 9 && count > 7 ? 6 : 4;
+        model.n = nterms_max == 9 && count > 6 ? 6 : 4;
         memcpy(model.term, straight, sizeof straight);
         if (model_factor(&model, ata))
             model_solve(&model, atb, coef);
         else
-            model.n = 0;
-    } else {
+            model.n = thin = 0;  /* not even that: as any other */
+    }
+    if (!thin) {
         static const int tries[3] = {9, 5, 3};
         for (int i = 0; i < 3 && model.n == 0; i++) {
             if (tries[i] > nterms_max || (size_t)tries[i] >= count)
@@ -838,11 +862,14 @@ static void vertex_curvature(const struct mesh *mesh, uint32_t v,
     /* The cubic only where the quadric says the neighbourhood spans a
      * small arc (CUBIC_SPAN_MAX). A wider one-sided neighbourhood (a coarse
      * mesh) keeps the quadric and shrinks back to the 2-ring, the smallest
-     * arc that still holds the points a quadric needs. */
+     * arc that still holds the points a quadric needs, and is not grown
+     * for more: on a strip one face wide the 2-ring has 9 points, and
+     * growing it to POINTS_WANTED took it along the strip over 60 degrees
+     * and more of arc, beyond the osculating correction's range. */
     double span = jet.radius * jet_curvature_max(&jet);
     if (one_sided && !(span < CUBIC_SPAN_MAX)) {
         struct jet small;
-        size_t fewer = gather(mesh, v, RINGS_INTERIOR, 5, ws);
+        size_t fewer = gather(mesh, v, RINGS_INTERIOR, POINTS_QUADRIC, ws);
         if (hood_prepare(mesh, fewer, ws, &hood) &&
             fit(&hood, &f, 5, NULL, &small)) {
             jet = small;
