@@ -39,7 +39,8 @@
  *      (relative pivot under FIT_THIN_TOL, 1e-3: a strip one face wide,
  *      its points on two lines across, where y^2 is a multiple of y), is
  *      fitted in its principal axes by the terms of degree <= 1 across,
- *      straight across as the mesh is there: its curvature across is 0.
+ *      straight across as the mesh is there: its curvature across is 0
+ *      (a strip one face wide on a sphere reads as single-curved).
  *      Weights are Gaussian in distance relative to the neighbourhood
  *      radius.
  *   4. Refinement: the normal of the fitted graph becomes the new n and the
