@@ -8,7 +8,8 @@
  *      was split); flipped on request.
  *   2. A neighbourhood: the k-ring of v by breadth-first search over the
  *      faces around each vertex, at least 2 rings (3 on the boundary) and
- *      grown ring by ring until it holds enough points. Rings follow the
+ *      grown ring by ring until it holds enough points (except where it
+ *      falls back to the 2-ring, below). Rings follow the
  *      mesh, so the neighbourhood scales with the local edge length; the
  *      triangles of one OBJ face count as one face, so a quad mesh's rings
  *      do not depend on the diagonals its triangulation chose.
@@ -18,7 +19,10 @@
  *      fitted shape operator everywhere (a sphere, a circular cylinder) that
  *      a polynomial of the fit's degree cannot follow, q / (1 + sqrt(1 - p))
  *      - q / 2 with q = X.S X and p = |S X|^2. Refitted until the fit stays
- *      put, so spheres and cylinders are fitted exactly at any mesh size,
+ *      put (c = F(c) for its curvature terms c: by repeating the fit where
+ *      the excess is small, by Newton steps where it is not, as repeating
+ *      swung back and forth on coarse one-sided fits), so spheres and
+ *      cylinders are fitted exactly at any mesh size,
  *      and on other surfaces only the part of the quartic and higher terms
  *      due to the curvature's change is left to alias into the fit (it was
  *      what made a cylinder's straight direction noisy: the arc's x^4 went
@@ -26,11 +30,19 @@
  *      gradient (5 terms), or a cubic jet (9 terms) where the neighbourhood
  *      reaches the boundary (one-sided, so the odd terms no longer cancel),
  *      is large enough, and spans a small arc (radius times the quadric's
- *      largest |k| under CUBIC_SPAN_MAX, 1); a one-sided neighbourhood over a
- *      wider arc (a coarse mesh, where the 3-ring spans tens of degrees)
- *      keeps the quadric over the 2-ring, as a one-sided cubic there swings
- *      the curvature through zero. Weights are Gaussian in distance relative
- *      to the neighbourhood radius.
+ *      largest |k| under CUBIC_SPAN_MAX, 0.866); a one-sided neighbourhood
+ *      over a wider arc (a coarse mesh, where the 3-ring spans tens of
+ *      degrees) keeps the quadric over the 2-ring, not grown for more
+ *      points, as a one-sided cubic there swings the curvature through zero
+ *      and a strip's 2-ring grown for points runs along the strip round
+ *      the arc. A thin neighbourhood, whose quadric is ill-conditioned
+ *      (relative pivot under FIT_THIN_TOL, 1e-3: a strip one face wide,
+ *      its points on two lines across, where y^2 is a multiple of y), is
+ *      fitted in its principal axes by the terms of degree <= 1 across,
+ *      straight across as the mesh is there: its curvature across is 0
+ *      (a strip one face wide on a sphere reads as single-curved).
+ *      Weights are Gaussian in distance relative to the neighbourhood
+ *      radius.
  *   4. Refinement: the normal of the fitted graph becomes the new n and the
  *      fit is repeated, until the normal turns by less than 1e-10 rad (a
  *      refit that tilts further than the last is not taken), so the result
@@ -55,16 +67,21 @@
  * 0.001 % (CGAL 0.055 %), cylinder 0.0001 % (0.058 %) and its zero
  * curvature 5.7e-8 / 5.3e-8 1/m (4.9e-7 / 8.1e-7), torus 1.5 % and 0.03 %
  * (7.2 % and 1.5 %), hypar 0.057 % (2.1 %). A 57-vertex quad hemisphere of
- * radius 4.5 m: every k within -1.42/R .. -1/R, its rim symmetric to
- * 1e-14. The error of what is not a sphere or cylinder grows with
- * (edge length / radius of curvature)^2.
+ * radius 4.5 m: every k within -1.025/R .. -0.998/R (-1.42/R .. -1/R
+ * before the Newton steps), its rim symmetric to 4e-14. A strip wrapped
+ * on a cylinder of R = 4 m or 8 m, one 1.5 m quad wide, every vertex on
+ * the boundary (test_curvature_coarse's maze): along the rulings |k| <=
+ * 3.2e-6 1/m, across within 0.035 % of 1/R, the same turned in space
+ * (before the thin fits: 0.33 1/m and 144 %). The error of what is not a
+ * sphere or cylinder grows with (edge length / radius of curvature)^2.
  *
  * Cost is O(V) for meshes of bounded valence: one pass, about two to four
  * fits per vertex (each refitted two to four times for the correction),
- * work buffers allocated once per thread (about 2.5 s of CPU for 1M
- * vertices of the roof example, against 1.7 s without the correction and
- * the refits to convergence, shared by the online CPUs: vertices are
- * independent, so the threads change nothing in the result).
+ * work buffers allocated once per thread (about 3.0 s of CPU for 1M
+ * vertices of the roof example, one thread, against 2.7 s in the same run
+ * before the thin fits and the Newton steps, and 1.7 s measured before the
+ * correction; shared by the online CPUs: vertices are independent, so the
+ * threads change nothing in the result).
  */
 #include <math.h>
 #include <pthread.h>
@@ -83,6 +100,7 @@ enum {
     RINGS_BOUNDARY = 3,     /* rings gathered at least, on the boundary */
     RINGS_MAX = 6,          /* never more rings than this */
     POINTS_WANTED = 12,     /* grow the neighbourhood until this many */
+    POINTS_QUADRIC = 5,     /* the least a quadric with gradient needs */
     POINTS_CUBIC = 18,      /* a cubic jet needs this many on the boundary */
     POINTS_CUBIC_NEAR = 14, /* and this many near it (neighbours all round) */
     POINTS_MAX = 1024,      /* neighbourhood size cap (high valence) */
@@ -93,14 +111,21 @@ enum {
 #define WEIGHT_SHARPNESS 2.0
 /* Relative pivot below which a fit's normal equations count as singular. */
 #define FIT_PIVOT_TOL 1e-9
+/* Relative pivot of the quadric's normal equations below which a
+ * neighbourhood counts as thin (see fit). */
+#define FIT_THIN_TOL 1e-3
 /* A cubic jet only while the neighbourhood's radius times the largest
  * curvature (of the quadric fit) stays below this: a wider neighbourhood
  * (a coarse mesh: a 3-ring spanning a large arc) is no longer a height field
  * a one-sided cubic can follow, and its odd terms swing the curvature
  * through zero (coarse caps' rims came out at +0.5/R with 1.5 and more).
- * A coarse hypar's boundary, which needs the cubic, is worse with less
- * (at 10 x 10 quads: 9 % off with 1.0, 23 % with 0.5). */
-#define CUBIC_SPAN_MAX 1.0
+ * It is sqrt(EXCESS_P_MAX), so that no point of a cubic's neighbourhood
+ * lies beyond the osculating correction's range (with 1.0, the maze of
+ * test_curvature_coarse on R = 8 m, cells one quad wide, was off by 0.05
+ * 1/m along its rulings). A coarse hypar's boundary, which needs the
+ * cubic, is worse with less (at 10 x 10 quads: 9 % off with 0.866 or 1.0,
+ * 23 % with 0.5). */
+#define CUBIC_SPAN_MAX 0.866
 /* The osculating-surface correction (see fit) is clamped where
  * (k d)^2 exceeds this, d the point's distance: near 1 the osculating
  * sphere turns vertical and its height has no Taylor series left. */
@@ -109,6 +134,10 @@ enum {
     EXCESS_ITERATIONS = 6,  /* refits for the correction, at most */
     NORMAL_ITERATIONS = 6   /* refits about the fitted normal, at most */
 };
+/* The osculating correction takes Newton steps where the excess's p may
+ * exceed this (see fit); below it, repeating the fit converges by a
+ * factor of about p / 4 a pass. */
+#define NEWTON_P_MIN 0.01
 /* The refits stop once the fit changes by less than this (relative). */
 #define FIT_CONVERGED 1e-13
 /* ... of at least this scaled curvature (k times the radius): below it a
@@ -320,13 +349,45 @@ static size_t gather(const struct mesh *mesh, uint32_t v, int min_rings,
  * distance. Its quartic and higher terms are what a quadric or cubic fit
  * cannot follow and so folds into its curvature: on a cylinder, the x^4
  * of the arc shows up in the straight direction's y^2 as noise. */
-static double osculating_excess(const double *c, double x, double y)
+static double osculating_excess(const double *c, double x, double y,
+                                double *grad)
 {
     double sx = 2 * c[0] * x + c[1] * y, sy = c[1] * x + 2 * c[2] * y;
     double q = x * sx + y * sy, p = sx * sx + sy * sy;
-    if (p > EXCESS_P_MAX)
+    int clamped = p > EXCESS_P_MAX;
+    if (clamped)
         p = EXCESS_P_MAX;
-    return q / (1 + sqrt(1 - p)) - q / 2;
+    double root = sqrt(1 - p), lift = 1 / (1 + root);
+    if (grad) {  /* by c, through q and p */
+        double by_q = lift - 0.5;
+        double by_p = clamped ? 0 : q * lift * lift / (2 * root);
+        grad[0] = by_q * 2 * x * x + by_p * 4 * x * sx;
+        grad[1] = by_q * 2 * x * y + by_p * 2 * (sx * y + sy * x);
+        grad[2] = by_q * 2 * y * y + by_p * 4 * y * sy;
+    }
+    return q * lift - q / 2;
+}
+
+/* Solves the 3 x 3 system a x = b (a row-major) by Cramer's rule. Returns
+ * 0 when a is singular to rounding. */
+static int solve3(const double *a, const double *b, double *x)
+{
+    double c0 = a[4] * a[8] - a[5] * a[7];
+    double c1 = a[5] * a[6] - a[3] * a[8];
+    double c2 = a[3] * a[7] - a[4] * a[6];
+    double det = a[0] * c0 + a[1] * c1 + a[2] * c2;
+    double scale = 0;
+    for (int i = 0; i < 9; i++)
+        scale = fmax(scale, fabs(a[i]));
+    if (!(fabs(det) > 1e-12 * scale * scale * scale))
+        return 0;
+    x[0] = (b[0] * c0 + a[1] * (a[5] * b[2] - b[1] * a[8]) +
+            a[2] * (b[1] * a[7] - a[4] * b[2])) / det;
+    x[1] = (a[0] * (b[1] * a[8] - a[5] * b[2]) + b[0] * c1 +
+            a[2] * (a[3] * b[2] - b[1] * a[6])) / det;
+    x[2] = (a[0] * (a[4] * b[2] - b[1] * a[7]) +
+            a[1] * (b[1] * a[6] - a[3] * b[2]) + b[0] * c2) / det;
+    return 1;
 }
 
 /* A neighbourhood ready to fit: its points' offsets from the centre,
@@ -373,12 +434,132 @@ static int hood_prepare(const struct mesh *mesh, size_t count,
     return 1;
 }
 
+/* The monomials of the fit at the scaled point (x, y), in term order:
+ * x^2 xy y^2 | x y | x^3 x^2y xy^2 y^3. */
+static void monomials(double x, double y, double *m)
+{
+    m[0] = x * x;
+    m[1] = x * y;
+    m[2] = y * y;
+    m[3] = x;
+    m[4] = y;
+    m[5] = x * x * x;
+    m[6] = x * x * y;
+    m[7] = x * y * y;
+    m[8] = y * y * y;
+}
+
+/* The weighted normal equations of the first nterms monomials over h's
+ * points at their coordinates in h->local: ata's lower triangle (row
+ * stride TERMS_MAX) and atb. */
+static void normal_equations(const struct hood *h, int nterms, double *ata,
+                             double *atb)
+{
+    memset(ata, 0, TERMS_MAX * TERMS_MAX * sizeof(double));
+    memset(atb, 0, TERMS_MAX * sizeof(double));
+    for (size_t i = 1; i < h->count; i++) {
+        const double *l = h->local + 3 * i;
+        double w = h->weight[i], m[TERMS_MAX];
+        monomials(l[0], l[1], m);
+        for (int r = 0; r < nterms; r++) {
+            double wm = w * m[r];
+            atb[r] += wm * l[2];
+            for (int s = 0; s <= r; s++)
+                ata[r * TERMS_MAX + s] += wm * m[s];
+        }
+    }
+}
+
+/* A fit's terms, which monomials (indices into the term order) and how
+ * many, with the Cholesky factor of their normal equations. */
+struct model {
+    int n;
+    int term[TERMS_MAX];
+    double factor[TERMS_MAX * TERMS_MAX];
+};
+
+/* Restricts the normal equations ata (all monomials) to the model's terms
+ * and factors them. Returns 0 when they are singular to within
+ * FIT_PIVOT_TOL. */
+static int model_factor(struct model *model, const double *ata)
+{
+    double a[TERMS_MAX * TERMS_MAX];
+    for (int r = 0; r < model->n; r++)
+        for (int s = 0; s <= r; s++) {
+            int p = model->term[r], q = model->term[s];
+            a[r * TERMS_MAX + s] = p >= q ? ata[p * TERMS_MAX + q]
+                                          : ata[q * TERMS_MAX + p];
+        }
+    return linalg_cholesky_factor(model->n, TERMS_MAX, a, FIT_PIVOT_TOL,
+                                  model->factor);
+}
+
+/* The monomial coefficients coef (those not in the model 0) for the
+ * right-hand side b (all monomials) of the factored model. */
+static void model_solve(const struct model *model, const double *b,
+                        double *coef)
+{
+    double rhs[TERMS_MAX], x[TERMS_MAX];
+    for (int r = 0; r < model->n; r++)
+        rhs[r] = b[model->term[r]];
+    linalg_cholesky_apply(model->n, model->factor, rhs, x);
+    memset(coef, 0, TERMS_MAX * sizeof(double));
+    for (int r = 0; r < model->n; r++)
+        coef[model->term[r]] = x[r];
+}
+
+/* One pass of the osculating correction (see fit): the coefficients
+ * next = F(c) of the factored model for the heights of h's points less the
+ * excess of the curvature terms c, and when slope is not NULL F's
+ * derivative by c (TERMS_MAX x 3, row-major). */
+static void excess_pass(const struct hood *h, const struct model *model,
+                        const double *c, double *next, double *slope)
+{
+    double rhs[4][TERMS_MAX] = {{0}};
+    int rows = slope ? 4 : 1;
+    for (size_t i = 1; i < h->count; i++) {
+        const double *l = h->local + 3 * i;
+        double m[TERMS_MAX], grad[3];
+        double z = l[2] - osculating_excess(c, l[0], l[1],
+                                            slope ? grad : NULL);
+        double w = h->weight[i];
+        monomials(l[0], l[1], m);
+        for (int r = 0; r < model->n; r++) {
+            int t = model->term[r];
+            double wm = w * m[t];
+            rhs[0][t] += wm * z;
+            for (int j = 1; j < rows; j++)
+                rhs[j][t] -= wm * grad[j - 1];
+        }
+    }
+    model_solve(model, rhs[0], next);
+    for (int j = 1; j < rows; j++) {
+        double column[TERMS_MAX];
+        model_solve(model, rhs[j], column);
+        for (int r = 0; r < TERMS_MAX; r++)
+            slope[3 * r + j - 1] = column[r];
+    }
+}
+
 /* Fits w = f(x, y) to the neighbourhood h in frame f at its centre, with
  * nterms_max terms at most (5 or 9), into *jet. The fit is of the
  * points' heights less the osculating excess of the fit itself, repeated
  * until it no longer changes (from guess's curvature, when given): so a
  * sphere or cylinder is fitted exactly, at any mesh size, and any other
  * surface loses the truncation error of its constant-curvature part.
+ *
+ * A thin neighbourhood (a strip one or two faces wide, whose points lie on
+ * two or three lines across) cannot tell a height's curvature across the
+ * strip from its slope there: for points on the lines y = 0 and y = 1,
+ * y^2 is y. Its fit is then ill-conditioned (the quadric's relative pivot
+ * under FIT_THIN_TOL) and the curvature across comes out of rounding and
+ * of the far points' aliasing. Such a neighbourhood is fitted in the
+ * frame of its principal axes (x' along the strip, y' across) by the
+ * terms of degree at most 1 in y': the height is taken as straight across,
+ * which is what the mesh itself is there (its faces span the strip with
+ * straight edges), so its curvature across is 0 and a strip of a
+ * developable surface stays developable.
+ *
  * Returns 1 on success, 0 when the neighbourhood cannot determine even a
  * quadric without gradient (too few points, collinear). */
 static int fit(const struct hood *h, const struct frame *f, int nterms_max,
@@ -388,90 +569,168 @@ static int fit(const struct hood *h, const struct frame *f, int nterms_max,
     double radius = h->radius;
     double *local = h->local;
 
-    /* Normal equations in coordinates scaled by the radius, so every
-     * monomial is O(1). Term order: x^2 xy y^2 | x y | x^3 x^2y xy^2 y^3,
-     * so the leading 3, 5 and 9 terms are the fits tried in turn. */
-    double ata[TERMS_MAX * TERMS_MAX] = {0};
-    double atb[TERMS_MAX] = {0};
+    /* Coordinates scaled by the radius, so every monomial is O(1). */
     for (size_t i = 1; i < count; i++) {
         const double *d = h->offset + 3 * i;
         double *l = local + 3 * i;
-        double x = l[0] = vec3_dot(d, f->t1);
-        double y = l[1] = vec3_dot(d, f->t2);
-        double z = l[2] = vec3_dot(d, f->n);
-        double w = h->weight[i];
-        double m[TERMS_MAX] = {x * x, x * y, y * y, x, y,
-                               x * x * x, x * x * y, x * y * y, y * y * y};
-        for (int r = 0; r < nterms_max; r++) {
-            double wm = w * m[r];
-            atb[r] += wm * z;
-            for (int s = 0; s <= r; s++)
-                ata[r * TERMS_MAX + s] += wm * m[s];
+        l[0] = vec3_dot(d, f->t1);
+        l[1] = vec3_dot(d, f->t2);
+        l[2] = vec3_dot(d, f->n);
+    }
+    double ata[TERMS_MAX * TERMS_MAX], atb[TERMS_MAX];
+    normal_equations(h, nterms_max, ata, atb);
+
+    /* The leading 9, 5 and 3 terms are the fits tried in turn, unless the
+     * neighbourhood is thin. */
+    double coef[TERMS_MAX] = {0};
+    struct model model;
+    model.n = 0;
+    /* A thin fit's axes: x' = c x + s y, y' = -s x + c y, X' = Q X. */
+    double rot_c = 1, rot_s = 0;
+    int thin = 0;
+    if (nterms_max >= 5 && count > 5) {
+        double probe[5 * 5];
+        thin = !linalg_cholesky_factor(5, TERMS_MAX, ata, FIT_THIN_TOL, probe);
+    }
+    if (thin) {
+        /* Principal axes of the points' spread about their centroid
+         * (the centre included, weight 1). */
+        double sw = 1, sx = 0, sy = 0, sxx = 0, sxy = 0, syy = 0;
+        for (size_t i = 1; i < count; i++) {
+            const double *l = local + 3 * i;
+            double w = h->weight[i];
+            sw += w;
+            sx += w * l[0];
+            sy += w * l[1];
+            sxx += w * l[0] * l[0];
+            sxy += w * l[0] * l[1];
+            syy += w * l[1] * l[1];
+        }
+        double mx = sx / sw, my = sy / sw, value[2], theta;
+        linalg_sym2_eigen(sxx / sw - mx * mx, sxy / sw - mx * my,
+                          syy / sw - my * my, value, &theta);
+        rot_c = cos(theta);
+        rot_s = sin(theta);
+        for (size_t i = 1; i < count; i++) {
+            double *l = local + 3 * i, x = l[0], y = l[1];
+            l[0] = rot_c * x + rot_s * y;
+            l[1] = -rot_s * x + rot_c * y;
+        }
+        normal_equations(h, TERMS_MAX, ata, atb);
+        /* x'^2 x'y' x' y' | x'^3 x'^2y' */
+        static const int straight[6] = {0, 1, 3, 4, 5, 6};
+        model.n = nterms_max == 9 && count > 6 ? 6 : 4;
+        memcpy(model.term, straight, sizeof straight);
+        if (model_factor(&model, ata))
+            model_solve(&model, atb, coef);
+        else
+            model.n = thin = 0;  /* not even that: as any other */
+    }
+    if (!thin) {
+        static const int tries[3] = {9, 5, 3};
+        for (int i = 0; i < 3 && model.n == 0; i++) {
+            if (tries[i] > nterms_max || (size_t)tries[i] >= count)
+                continue;
+            model.n = tries[i];
+            for (int r = 0; r < model.n; r++)
+                model.term[r] = r;
+            if (model_factor(&model, ata))
+                model_solve(&model, atb, coef);
+            else
+                model.n = 0;
         }
     }
-
-    static const int tries[3] = {9, 5, 3};
-    double coef[TERMS_MAX] = {0};
-    int n = 0;
-    for (int i = 0; i < 3 && n == 0; i++) {
-        if (tries[i] > nterms_max || (size_t)tries[i] >= count)
-            continue;
-        if (linalg_cholesky_solve(tries[i], TERMS_MAX, ata, atb,
-                                  FIT_PIVOT_TOL, coef))
-            n = tries[i];
-    }
-    if (n == 0)
+    if (model.n == 0)
         return 0;
-    if (n < 5)
-        coef[3] = coef[4] = 0;
-    if (guess) {  /* start the correction from a fit close by */
-        coef[0] = guess->fxx * radius / 2;
-        coef[1] = guess->fxy * radius;
-        coef[2] = guess->fyy * radius / 2;
+    if (guess) {  /* start the correction from a fit close by, turned */
+        double c = rot_c, s = rot_s;
+        double hxx = guess->fxx, hxy = guess->fxy, hyy = guess->fyy;
+        /* H' = Q H Q^T, Q = [[c, s], [-s, c]] */
+        double pxx = c * c * hxx + 2 * c * s * hxy + s * s * hyy;
+        double pxy = (c * c - s * s) * hxy + c * s * (hyy - hxx);
+        double pyy = s * s * hxx - 2 * c * s * hxy + c * c * hyy;
+        coef[0] = pxx * radius / 2;
+        coef[1] = pxy * radius;
+        coef[2] = thin ? 0 : pyy * radius / 2;
     }
 
     /* The osculating correction: refit the heights less the excess of the
-     * last fit (same matrix, new right-hand side). */
-    double last_change = INFINITY;
+     * fit (same matrix, new right-hand side), for the fit that reproduces
+     * itself: c = F(c) over its three curvature terms c. Where the
+     * excess is small (p under NEWTON_P_MIN everywhere: a fine mesh),
+     * repeating c <- F(c) converges in a few passes. Where it is not, it
+     * converged slowly or not at all on an ill-conditioned fit (a coarse
+     * one-sided cubic, each refit swinging the curvature the other way),
+     * so there the passes take Newton steps, F's derivative from the
+     * excess's (three more right-hand sides), taken anew while they
+     * converge slowly; a step that leaves the miss |F(c) - c| larger is
+     * halved. The answer is F(c) for the c that came closest. */
+    double best[TERMS_MAX], best_miss = INFINITY, step = 1;
+    double c3[3] = {coef[0], coef[1], coef[2]}, base[3] = {0}, dir[3] = {0};
+    double slope[TERMS_MAX * 3];  /* dF/dc, all terms by the three */
+    double value[2], theta;
+    linalg_sym2_eigen(c3[0], c3[1] / 2, c3[2], value, &theta);
+    double big = fmax(fabs(value[0]), fabs(value[1]));
+    int newton = 4 * big * big > NEWTON_P_MIN;  /* p <= |2 c|^2 |X|^2 */
+    int need_slope = newton;
+    memcpy(best, coef, sizeof best);
     for (int it = 0; it < EXCESS_ITERATIONS; it++) {
-        double rhs[TERMS_MAX] = {0}, next[TERMS_MAX] = {0};
-        for (size_t i = 1; i < count; i++) {
-            const double *l = local + 3 * i;
-            double x = l[0], y = l[1];
-            double z = l[2] - osculating_excess(coef, x, y);
-            double m[TERMS_MAX] = {x * x, x * y, y * y, x, y,
-                                   x * x * x, x * x * y, x * y * y,
-                                   y * y * y};
-            for (int r = 0; r < n; r++)
-                rhs[r] += h->weight[i] * m[r] * z;
-        }
-        if (!linalg_cholesky_solve(n, TERMS_MAX, ata, rhs, FIT_PIVOT_TOL,
-                                   next))
-            break;
-        double change = 0, size = 0;
+        double next[TERMS_MAX];
+        excess_pass(h, &model, c3, next, need_slope ? slope : NULL);
+        need_slope = 0;
+        double miss = 0, size = 0, g[3];
         for (int r = 0; r < 3; r++) {
-            change = fmax(change, fabs(next[r] - coef[r]));
+            g[r] = next[r] - c3[r];
+            miss = fmax(miss, fabs(g[r]));
             size = fmax(size, fabs(next[r]));
         }
-        memcpy(coef, next, sizeof coef);
-        if (n < 5)
-            coef[3] = coef[4] = 0;
-        /* Done when this pass, or what the passes still to come would
-         * add (a geometric series: they shrink by change / last_change),
-         * is below the tolerance. */
-        double ratio = change / last_change;
-        double rest = it > 0 && ratio < 0.5 ? 2 * ratio * change : change;
-        if (!(rest > FIT_CONVERGED * (size + FIT_SCALE_MIN)))
-            break;
-        last_change = change;
+        if (!newton) {  /* c <- F(c) */
+            /* Done when this pass, or what the passes still to come
+             * would add (a geometric series: they shrink by the ratio of
+             * the last two), is below the tolerance. */
+            double ratio = miss / best_miss;
+            double rest = it > 0 && ratio < 0.5 ? 2 * ratio * miss : miss;
+            best_miss = miss;
+            memcpy(best, next, sizeof best);
+            memcpy(c3, next, sizeof c3);
+            if (!(rest > FIT_CONVERGED * (size + FIT_SCALE_MIN)))
+                break;
+            continue;
+        }
+        if (miss < best_miss) {  /* closer: take it, Newton step from it */
+            /* a derivative that no longer brings the miss down fast is
+             * taken anew at the next pass */
+            need_slope = !(miss < best_miss / 4);
+            best_miss = miss;
+            memcpy(best, next, sizeof best);
+            if (!(miss > FIT_CONVERGED * (size + FIT_SCALE_MIN)))
+                break;
+            double a[9];
+            for (int r = 0; r < 3; r++)
+                for (int j = 0; j < 3; j++)
+                    a[3 * r + j] = (r == j) - slope[3 * r + j];
+            memcpy(base, c3, sizeof base);
+            if (!solve3(a, g, dir))  /* (I - dF) dir = F(c) - c */
+                memcpy(dir, g, sizeof dir);  /* no Newton step: repeat */
+            step = 1;
+        } else {  /* farther: back along the last step */
+            step /= 2;
+        }
+        for (int r = 0; r < 3; r++)
+            c3[r] = base[r] + step * dir[r];
     }
+    memcpy(coef, best, sizeof coef);
 
-    /* Back to metres: z = a x^2 / radius for the scaled a. */
-    jet->fxx = 2 * coef[0] / radius;
-    jet->fxy = coef[1] / radius;
-    jet->fyy = 2 * coef[2] / radius;
-    jet->fx = coef[3];
-    jet->fy = coef[4];
+    /* Back to metres (z = a x^2 / radius for the scaled a) and, for a thin
+     * fit, to the frame's axes: gradient Q^T g', Hessian Q^T H' Q. */
+    double gx = coef[3], gy = coef[4];
+    double pxx = 2 * coef[0] / radius, pxy = coef[1] / radius;
+    double pyy = 2 * coef[2] / radius, c = rot_c, s = rot_s;
+    jet->fx = c * gx - s * gy;
+    jet->fy = s * gx + c * gy;
+    jet->fxx = c * c * pxx - 2 * c * s * pxy + s * s * pyy;
+    jet->fxy = (c * c - s * s) * pxy + c * s * (pxx - pyy);
+    jet->fyy = s * s * pxx + 2 * c * s * pxy + c * c * pyy;
     jet->radius = radius;
     return isfinite(jet->fxx) && isfinite(jet->fxy) && isfinite(jet->fyy) &&
            isfinite(jet->fx) && isfinite(jet->fy);
@@ -604,11 +863,14 @@ static void vertex_curvature(const struct mesh *mesh, uint32_t v,
     /* The cubic only where the quadric says the neighbourhood spans a
      * small arc (CUBIC_SPAN_MAX). A wider one-sided neighbourhood (a coarse
      * mesh) keeps the quadric and shrinks back to the 2-ring, the smallest
-     * arc that still holds the points a quadric needs. */
+     * arc that still holds the points a quadric needs, and is not grown
+     * for more: on a strip one face wide the 2-ring has 9 points, and
+     * growing it to POINTS_WANTED took it along the strip over 60 degrees
+     * and more of arc, beyond the osculating correction's range. */
     double span = jet.radius * jet_curvature_max(&jet);
     if (one_sided && !(span < CUBIC_SPAN_MAX)) {
         struct jet small;
-        size_t fewer = gather(mesh, v, RINGS_INTERIOR, POINTS_WANTED, ws);
+        size_t fewer = gather(mesh, v, RINGS_INTERIOR, POINTS_QUADRIC, ws);
         if (hood_prepare(mesh, fewer, ws, &hood) &&
             fit(&hood, &f, 5, NULL, &small)) {
             jet = small;

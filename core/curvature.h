@@ -6,8 +6,9 @@
  * the boundary and spans a small arc) to each vertex's neighbourhood in a
  * local frame, over a neighbourhood scaled to the local edge length (its 2-
  * or 3-ring), with the higher terms of the osculating sphere or cylinder
- * taken out, and reads the shape operator off the fit; see curvature.c for
- * the details and the accuracy it reaches.
+ * taken out (straight across a strip one face wide, which cannot tell its
+ * curvature across from its slope), and reads the shape operator off the
+ * fit; see curvature.c for the details and the accuracy it reaches.
  *
  * Sign convention (DESIGN.md): curvature is negative where the surface bends
  * away from its normal, so a dome seen from outside, with the normal

@@ -21,6 +21,14 @@
 int linalg_cholesky_solve(int n, int lda, const double *a, const double *b,
                           double rel_tol, double *x);
 
+/* linalg_cholesky_solve in two steps, for one matrix and several right-hand
+ * sides: _factor writes the factor of a (as _solve tests it; returns 0 when
+ * it is not safely positive definite) into l, n x n with row stride n, and
+ * _apply solves l l^T x = b with it. */
+int linalg_cholesky_factor(int n, int lda, const double *a, double rel_tol,
+                           double *l);
+void linalg_cholesky_apply(int n, const double *l, const double *b, double *x);
+
 /* Eigen-decomposition of the symmetric matrix [[p, q], [q, r]]: value[0] >=
  * value[1], and the unit eigenvector of value[0] is (cos theta, sin theta),
  * that of value[1] is (-sin theta, cos theta); *theta is returned in
