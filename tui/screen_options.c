@@ -201,9 +201,9 @@ static int detail_lines(const struct option_row *o, char lines[][160])
              "DP %zu %.1f m^2", t->panels, area, t->count[TYPE_FP],
              t->area_of[TYPE_FP], t->count[TYPE_SP], t->area_of[TYPE_SP],
              t->count[TYPE_DP], t->area_of[TYPE_DP]);
-    snprintf(lines[3], 160, "planarity %.4f m, max deviation %.4f m, "
+    snprintf(lines[3], 160, "planarity %.4f m, max deviation %.2f mm, "
              "P_dist %.3g m^4, crowding %.3g", t->planarity,
-             t->max_deviation, t->p_dist, o->crowding);
+             t->max_deviation * 1000, t->p_dist, o->crowding);
     return 4;
 }
 
