@@ -199,13 +199,18 @@ static int load_points(struct store *store, int64_t run,
 {
     struct run_info info;
     int rc = store_run_get(store, run, &info, err);
+    struct option_query q = {run, r->pareto_only, r->where, NULL, 0, 0, 0};
     if (rc == FACET_OK)
-        rc = store_options_get(store, run, &p->rows, &p->n, err);
+        rc = r->where || r->pareto_only
+                 ? store_options_query_rows(store, &q, &p->rows, &p->n, err)
+                 : store_options_get(store, run, &p->rows, &p->n, err);
     if (rc != FACET_OK)
         return rc;
     if (p->n == 0)
         return facet_error_set(err, FACET_EINPUT, "run %lld has no options "
-                               "to plot", (long long)run);
+                               "to plot%s", (long long)run,
+                               r->where || r->pareto_only
+                                   ? " (the filter passes none)" : "");
     p->x = malloc(p->n * sizeof *p->x);
     p->y = malloc(p->n * sizeof *p->y);
     p->size = malloc(p->n * sizeof *p->size);

@@ -73,6 +73,9 @@ struct plot_request {
     const char *size;       /* bubble size column, or NULL for dots */
     const char *title;      /* or NULL */
     int force;
+    const struct filter *where;  /* the options of each run to plot; NULL:
+                                    every one */
+    int pareto_only;        /* rank 1 only */
 };
 
 #define PLOT_MAX_RUNS 8

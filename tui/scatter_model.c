@@ -28,6 +28,37 @@ int scatter_level(double z, double min, double max, int levels)
     return !(max > min) || level < 0 ? 0 : level;
 }
 
+int scatter_ticks(double min, double max, int max_ticks, double *ticks,
+                  double *step)
+{
+    *step = 0;
+    if (!isfinite(min) || !isfinite(max) || max_ticks < 1 || max < min)
+        return 0;
+    if (!(max > min)) {
+        ticks[0] = min;
+        return 1;
+    }
+    static const double mantissa[3] = {1, 2, 5};
+    double raw = (max - min) / max_ticks;
+    int e = (int)floor(log10(raw)) - 1;
+    for (;; e++)
+        for (int k = 0; k < 3; k++) {
+            double d = mantissa[k] * pow(10, e);
+            double first = ceil(min / d - 1e-9), last = floor(max / d + 1e-9);
+            if (last - first + 1 > max_ticks)
+                continue;
+            int n = 0;
+            for (double t = first; t <= last && n < max_ticks; t++) {
+                double v = t * d;
+                /* a multiple by a rounding error outside the range, or a
+                 * -0, is the range's end */
+                ticks[n++] = fabs(v) < d * 1e-9 ? 0 : v;
+            }
+            *step = d;
+            return n;
+        }
+}
+
 void scatter_range(const struct scatter_point *points, size_t n, int axis,
                    double *min, double *max)
 {

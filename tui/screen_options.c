@@ -35,8 +35,6 @@ struct options_screen {
     int nkeys;
     int editing;                 /* the filter line is open */
     struct tui_input filter;
-    int64_t marks[64];           /* options marked for Compare */
-    int nmarks;
     int detail;                  /* the detail pane is shown */
     struct timespec last_refresh;
 };
@@ -90,10 +88,7 @@ static int cursor_place(const struct options_screen *s)
 
 static int is_marked(const struct options_screen *s, int64_t number)
 {
-    for (int k = 0; k < s->nmarks; k++)
-        if (s->marks[k] == number)
-            return 1;
-    return 0;
+    return table_model_marked(&s->model, number);
 }
 
 /* --- drawing --- */
@@ -286,9 +281,9 @@ static void options_draw(struct tui_screen *base, struct tui_app *app,
     if (m->browse.pareto_only)
         x += tui_put(1, x, width - x, tui_attr(ROLE_PARETO),
                      "  Pareto only");
-    if (s->nmarks)
+    if (m->nmarks)
         tui_putf(1, x, width - x, tui_attr(ROLE_MARKED), "  %d marked",
-                 s->nmarks);
+                 m->nmarks);
 
     int columns = tui_columns_width(&app->columns);
     if (columns < 80)
@@ -454,18 +449,14 @@ static void toggle_mark(struct options_screen *s, struct tui_app *app)
     const struct option_row *o = table_model_selection(&s->model);
     if (o == NULL)
         return;
-    for (int k = 0; k < s->nmarks; k++)
-        if (s->marks[k] == o->number) {
-            memmove(s->marks + k, s->marks + k + 1,
-                    (size_t)(s->nmarks - k - 1) * sizeof s->marks[0]);
-            s->nmarks--;
-            return;
-        }
-    if (s->nmarks == 64) {
-        tui_error(app, "at most 64 marks");
+    if (table_model_marked(&s->model, o->number)) {
+        table_model_set_mark(&s->model, o->number, 0);
         return;
     }
-    s->marks[s->nmarks++] = o->number;
+    if (table_model_set_mark(&s->model, o->number, 1) < 0) {
+        tui_error(app, "at most %d marks", TABLE_MARKS_MAX);
+        return;
+    }
     struct facet_error err;
     table_model_select(&s->model, s->model.selected + 1, &err);
 }
@@ -577,15 +568,15 @@ static enum tui_result options_key(struct tui_screen *base,
         toggle_mark(s, app);
         return RESULT_HANDLED;
     case 'u':
-        s->nmarks = 0;
+        m->nmarks = 0;
         return RESULT_HANDLED;
     case 'c': case KEY_F(7):
-        if (s->nmarks < 2) {
+        if (m->nmarks < 2) {
             tui_error(app, "mark 2 to 4 options with Space first");
             return RESULT_HANDLED;
         }
-        tui_push(app, screen_compare_new(app, s->run.id, s->marks,
-                                         s->nmarks > 4 ? 4 : s->nmarks));
+        tui_push(app, screen_compare_new(app, s->run.id, m->marks,
+                                         m->nmarks > 4 ? 4 : m->nmarks));
         return RESULT_HANDLED;
     case 'm': case KEY_F(8): case '\r': case '\n': case KEY_ENTER:
         if (o != NULL)
