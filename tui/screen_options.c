@@ -18,6 +18,7 @@
 #include "format.h"
 #include "input.h"
 #include "keys.h"
+#include "store/study_export.h"
 
 struct options_screen {
     struct tui_screen base;
@@ -36,6 +37,8 @@ struct options_screen {
     int editing;                 /* the filter line is open */
     struct tui_input filter;
     int detail;                  /* the detail pane is shown */
+    int exporting;               /* the marked options' CSV line is open */
+    struct tui_input export_to;
     struct timespec last_refresh;
 };
 
@@ -61,6 +64,11 @@ static const struct tui_key_help options_help[] = {
     {"  j/k, Space", "  (chooser) move; show / hide the column"},
     {"  J/K, +/-", "  (chooser) move the column down / up the order"},
     {"  r, Enter/q", "  (chooser) default columns; close"},
+    {"t", "statistics of the options shown: min/median/max/mean, per U, "
+          "V, t, class"},
+    {"T", "per generation: options and the best found so far (NSGA-II)"},
+    {"L", "like this: a New run around the option (narrower space)"},
+    {"E", "export the marked options (every column) as CSV"},
     {"d", "show / hide the detail pane"},
     {"r", "reload from the database"},
     {NULL, NULL},
@@ -461,6 +469,46 @@ static void toggle_mark(struct options_screen *s, struct tui_app *app)
     table_model_select(&s->model, s->model.selected + 1, &err);
 }
 
+/* E: the marked options (or the selected one) to a CSV file. */
+static void export_marks_open(struct options_screen *s, struct tui_app *app)
+{
+    if (s->model.nmarks == 0) {
+        tui_error(app, "export: mark options with Space first");
+        return;
+    }
+    char name[128];
+    snprintf(name, sizeof name, "facet-run%lld-marked.csv",
+             (long long)s->run.id);
+    tui_input_set(&s->export_to, name);
+    s->exporting = 1;
+    tui_prompt(app, "Export marked to (CSV):", &s->export_to);
+}
+
+static enum tui_result export_marks_key(struct options_screen *s,
+                                        struct tui_app *app, int key)
+{
+    if (tui_prompt_key(app, &s->export_to, &s->exporting, key) !=
+        INPUT_DONE)
+        return RESULT_HANDLED;
+    char path[TUI_INPUT_MAX];
+    snprintf(path, sizeof path, "%s", s->export_to.text);
+    size_t n = strlen(path);
+    int force = n > 0 && path[n - 1] == '!';
+    if (force)
+        path[--n] = '\0';
+    struct facet_error err;
+    if (n == 0)
+        tui_error(app, "export: give a file name");
+    else if (study_export_options_csv(app->store, s->run.id, s->model.marks,
+                                      (size_t)s->model.nmarks, path, force,
+                                      &err) != FACET_OK)
+        tui_error(app, "export: %s", err.message);
+    else
+        tui_status(app, "wrote %d marked options to %s", s->model.nmarks,
+                   path);
+    return RESULT_HANDLED;
+}
+
 static enum tui_result filter_key(struct options_screen *s,
                                   struct tui_app *app, int key)
 {
@@ -524,6 +572,8 @@ static enum tui_result options_key(struct tui_screen *base,
     columns_update(s, app);
     if (s->editing)
         return filter_key(s, app, key);
+    if (s->exporting)
+        return export_marks_key(s, app, key);
     if (s->choosing)
         return chooser_key(s, app, key);
     switch (key) {
@@ -584,6 +634,16 @@ static enum tui_result options_key(struct tui_screen *base,
         return RESULT_HANDLED;
     case 'x': case KEY_F(5):
         tui_push(app, screen_scatter_new(app, m));
+        return RESULT_HANDLED;
+    case 't': case 'T':
+        tui_push(app, screen_stats_new(app, m, key == 'T' ? 5 : 0));
+        return RESULT_HANDLED;
+    case 'L':
+        if (o != NULL)
+            tui_push(app, screen_newrun_like(app, &s->run, o));
+        return RESULT_HANDLED;
+    case 'E':
+        export_marks_open(s, app);
         return RESULT_HANDLED;
     case 'd':
         s->detail = !s->detail;
