@@ -253,8 +253,9 @@ static void scatter_draw(struct tui_screen *base, struct tui_app *app,
     if (m->nmarks)
         snprintf(marked, sizeof marked, " | %d marked", m->nmarks);
     tui_putf(0, 0, width, tui_attr(ROLE_TITLE),
-             " Scatter: %s vs %s | %zu points%s%s%s%s%s", axis_name(s, 1),
-             axis_name(s, 0), s->n, s->sampled ? " (sampled)" : "",
+             " Scatter: %s vs %s, size %s | %zu points%s%s%s%s%s",
+             axis_name(s, 1), axis_name(s, 0), axis_name(s, 2), s->n,
+             s->sampled ? " (sampled)" : "",
              m->browse.pareto_only ? " | Pareto only" : "", marked,
              where[0] ? " | filter " : "", where);
     /* the legend: the glyphs as drawn */

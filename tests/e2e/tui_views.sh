@@ -86,7 +86,7 @@ keys q u
 
 # --- 9. scatter ---
 keys x
-check "9: the scatter opens" '^ Scatter: cost vs planarity \| 336 points'
+check "9: the scatter opens" '^ Scatter: cost vs planarity, size dp_area \| 336 points'
 check "9: the legend names the glyphs drawn" '◆ Pareto ★ knee ✓ marked'
 plot() { screen | sed -n '3,20p'; }
 if plot | grep -q '◆' && plot | grep -q '★'; then
