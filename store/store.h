@@ -314,13 +314,23 @@ struct column_stats {
                                        middle values */
 };
 
-/* The statistics of columns[0..n) (names of store_option_columns other
- * than run) over the options b sees into out[0..n): count, min, max and
- * mean in one aggregate query over b's rows, each median by the middle
- * row(s) of that column's order. Unknown columns are FACET_EINPUT. */
+/* The count, min, max and mean of columns[0..n) (names of
+ * store_option_columns other than run) over the options b sees into
+ * out[0..n), in one aggregate query over b's rows (one read of the run);
+ * the medians are left NaN for store_browse_median. Unknown columns are
+ * FACET_EINPUT. */
 int store_browse_stats(struct store *store, const struct option_browse *b,
                        const char *const *columns, int n,
                        struct column_stats *out, struct facet_error *err);
+
+/* The median of column over the options b sees, count of which have a
+ * value (store_browse_stats), into *median: the middle value, or the mean
+ * of the two middle ones. Without a filter a column with an index is read
+ * from the middle of its index (0.03 s on a million options); otherwise
+ * b's rows are read once and sorted (0.7 s for 420,000 of a million). */
+int store_browse_median(struct store *store, const struct option_browse *b,
+                        const char *column, int64_t count, double *median,
+                        struct facet_error *err);
 
 /* The options of b that share one value of a column (a frequency table's
  * row). */
@@ -337,7 +347,9 @@ struct option_group {
 
 /* The options b sees grouped by column's value (bin > 0: by
  * floor(value / bin) x bin), by value ascending, NULLs left out, into
- * *groups (malloc'ed, free()), *n of them. */
+ * *groups (malloc'ed, free()), *n of them. b's rows are read once in
+ * the table's order and sorted by the group (0.8 s for a million
+ * options; walking the column's index would look each row up). */
 int store_browse_groups(struct store *store, const struct option_browse *b,
                         const char *column, double bin,
                         struct option_group **groups, size_t *n,

@@ -551,35 +551,51 @@ int store_browse_stats(struct store *store, const struct option_browse *b,
     else
         rc = store_fail(store, "measuring options", err);
     sqlite3_finalize(stmt);
-    /* each median: the middle one or two values in the column's order */
-    for (int k = 0; k < n && rc == FACET_OK; k++) {
-        if (out[k].count == 0)
-            continue;
-        key_sql(&plain, columns[k], expr, sizeof expr);
-        struct sql_text m = {0};
-        sql_add(&m, "SELECT %s", expr);
-        add_from(&m, &plain, 0);
-        sql_add(&m, " AND %s IS NOT NULL ORDER BY %s LIMIT ?2 OFFSET ?3",
-                expr, expr);
-        rc = prepare(store, &m, &plain, NULL, &stmt, "measuring options",
+    return rc;
+}
+
+int store_browse_median(struct store *store, const struct option_browse *b,
+                        const char *column, int64_t count, double *median,
+                        struct facet_error *err)
+{
+    *median = NAN;
+    if (column == NULL || key_expr(column) == NULL)
+        return facet_error_set(err, FACET_EINPUT, "unknown column '%s'",
+                               column ? column : "(none)");
+    if (count <= 0)
+        return FACET_OK;
+    /* Without a filter the column's own index holds the values in order
+     * (no row is looked up); with one, every row would be looked up from
+     * the index, so the rows are read in the table's order and sorted:
+     * the unary plus of filter_first keeps the planner off the index. */
+    struct option_browse order = *b;
+    order.filter_first = b->where != NULL || b->pareto_only;
+    char expr[160];
+    key_sql(&order, column, expr, sizeof expr);
+    struct sql_text m = {0};
+    sql_add(&m, "SELECT %s", expr);
+    order.filter_first = 0;
+    add_from(&m, &order, 1);
+    sql_add(&m, " AND %s IS NOT NULL ORDER BY %s LIMIT ?2 OFFSET ?3", expr,
+            expr);
+    sqlite3_stmt *stmt;
+    int rc = prepare(store, &m, &order, NULL, &stmt, "measuring options",
                      err);
-        if (rc != FACET_OK)
-            break;
-        int64_t c = out[k].count;
-        sqlite3_bind_int64(stmt, 2, c % 2 ? 1 : 2);
-        sqlite3_bind_int64(stmt, 3, (c - 1) / 2);
-        double sum = 0;
-        int got = 0;
-        while ((step = sqlite3_step(stmt)) == SQLITE_ROW) {
-            sum += sqlite3_column_double(stmt, 0);
-            got++;
-        }
-        if (step != SQLITE_DONE)
-            rc = store_fail(store, "measuring options", err);
-        else if (got > 0)
-            out[k].median = got == 2 ? sum / 2 : sum;
-        sqlite3_finalize(stmt);
+    if (rc != FACET_OK)
+        return rc;
+    sqlite3_bind_int64(stmt, 2, count % 2 ? 1 : 2);
+    sqlite3_bind_int64(stmt, 3, (count - 1) / 2);
+    double sum = 0;
+    int got = 0, step;
+    while ((step = sqlite3_step(stmt)) == SQLITE_ROW) {
+        sum += sqlite3_column_double(stmt, 0);
+        got++;
     }
+    if (step != SQLITE_DONE)
+        rc = store_fail(store, "measuring options", err);
+    else if (got > 0)
+        *median = got == 2 ? sum / 2 : sum;
+    sqlite3_finalize(stmt);
     return rc;
 }
 
@@ -594,9 +610,13 @@ int store_browse_groups(struct store *store, const struct option_browse *b,
         return facet_error_set(err, FACET_EINPUT, "unknown column '%s'",
                                column ? column : "(none)");
     struct option_browse plain = *b;
-    plain.filter_first = 0;
+    /* "+column": read the rows in the table's order and sort them, not
+     * walk the column's index and look every row up (2.3 s against 0.8 s
+     * on a million options) */
+    plain.filter_first = 1;
     char expr[160], group[600];
     key_sql(&plain, column, expr, sizeof expr);
+    plain.filter_first = 0;
     /* floor without SQLite's optional math functions: CAST truncates
      * toward zero, one less below it */
     if (bin > 0)

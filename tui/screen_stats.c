@@ -5,9 +5,11 @@
  * U, per V, per threshold (in bins when it takes many values) and per
  * panel class; and, per generation, the options an NSGA-II run met with
  * the best cost, planarity and DP area found so far (the search's
- * progress). Every figure comes from one SQL query per table in store/
- * (store_browse_stats, _groups, _classes), so a filtered million-option
- * run is summed by SQLite, not read row by row here.
+ * progress). Every figure comes from SQL in store/ (store_browse_stats,
+ * _median, _groups, _classes), so a filtered million-option run is summed
+ * by SQLite, not read row by row here. A table is computed when its
+ * section is first shown, and the medians one a tick while no key comes,
+ * so the screen answers keys at once even where a median takes 0.7 s.
  */
 #include <math.h>
 #include <stdio.h>
@@ -42,6 +44,8 @@ struct stats_screen {
     size_t ngroups[SEC_COUNT];
     double bin[SEC_COUNT];         /* the bin of a binned table, or 0 */
     struct class_frequency classes[CLASS_COUNT];
+    int loaded[SEC_COUNT];         /* the section's table is computed */
+    int medians;                   /* medians computed: stat_columns[0..) */
     int64_t options;               /* the options summed */
 };
 
@@ -73,35 +77,81 @@ static double round_bin(double min, double max)
     return (m <= 1 ? 1 : m <= 2 ? 2 : m <= 5 ? 5 : 10) * e;
 }
 
+/* Computes the table of section when it is not yet. */
+static int load_section(struct stats_screen *s, struct tui_app *app,
+                        int section)
+{
+    if (s->loaded[section])
+        return FACET_OK;
+    struct facet_error err;
+    const struct option_browse *b = &s->model->browse;
+    int rc = FACET_OK;
+    if (section == SEC_CLASS) {
+        rc = store_browse_classes(app->store, b, s->classes, &err);
+    } else if (group_column[section] != NULL) {
+        /* more values than rows to show: bins, known before the query
+         * from the range and the column's step (1 for U, V and the
+         * generation, the run's for t; a continuous t takes any value) */
+        int c = section == SEC_T ? 8 : section == SEC_U ? 6
+                : section == SEC_V ? 7 : 15;
+        double min = s->stats[c].min, max = s->stats[c].max, step = 1;
+        if (section == SEC_T) {
+            struct run_info run;
+            step = store_run_get(app->store, b->run, &run, &err) == FACET_OK
+                       ? run.threshold_step_mm : 0;
+        }
+        int many = max > min && (step > 0 ? (max - min) / step + 1 > 60 : 1);
+        s->bin[section] = many ? round_bin(min, max) : 0;
+        rc = store_browse_groups(app->store, b, group_column[section],
+                                 s->bin[section], &s->groups[section],
+                                 &s->ngroups[section], &err);
+    }
+    if (rc != FACET_OK)
+        tui_error(app, "statistics: %s", err.message);
+    else
+        s->loaded[section] = 1;
+    return rc;
+}
+
+/* Starts over: the counts, minima, maxima and means at once, the
+ * section's table, and the medians from the next tick on. */
 static int load(struct stats_screen *s, struct tui_app *app)
 {
     struct facet_error err;
-    const struct option_browse *b = &s->model->browse;
     release(s);
-    int rc = store_browse_stats(app->store, b, stat_columns, STATS, s->stats,
-                                &err);
+    memset(s->loaded, 0, sizeof s->loaded);
+    s->medians = 0;
+    int rc = store_browse_stats(app->store, &s->model->browse, stat_columns,
+                                STATS, s->stats, &err);
     s->options = rc == FACET_OK ? s->stats[0].count : 0;
-    for (int k = 0; k < SEC_COUNT && rc == FACET_OK; k++) {
-        if (group_column[k] == NULL)
-            continue;
-        s->bin[k] = 0;
-        rc = store_browse_groups(app->store, b, group_column[k], 0,
-                                 &s->groups[k], &s->ngroups[k], &err);
-        /* a continuous threshold takes a value per option: bin it */
-        if (rc == FACET_OK && s->ngroups[k] > 60) {
-            int c = k == SEC_T ? 8 : k == SEC_U ? 6 : k == SEC_V ? 7 : 15;
-            s->bin[k] = round_bin(s->stats[c].min, s->stats[c].max);
-            free(s->groups[k]);
-            rc = store_browse_groups(app->store, b, group_column[k],
-                                     s->bin[k], &s->groups[k],
-                                     &s->ngroups[k], &err);
-        }
-    }
-    if (rc == FACET_OK)
-        rc = store_browse_classes(app->store, b, s->classes, &err);
-    if (rc != FACET_OK)
+    if (rc != FACET_OK) {
         tui_error(app, "statistics: %s", err.message);
-    return rc;
+        return rc;
+    }
+    s->loaded[SEC_COLUMNS] = 1;
+    return load_section(s, app, s->section);
+}
+
+/* One median a tick while any is left. */
+static int stats_tick(struct tui_screen *base, struct tui_app *app)
+{
+    struct stats_screen *s = (struct stats_screen *)base;
+    if (s->medians >= STATS)
+        return 0;
+    struct facet_error err;
+    int k = s->medians++;
+    if (store_browse_median(app->store, &s->model->browse, stat_columns[k],
+                            s->stats[k].count, &s->stats[k].median, &err) !=
+        FACET_OK)
+        tui_error(app, "statistics: %s", err.message);
+    return 1;
+}
+
+static void show(struct stats_screen *s, struct tui_app *app, int section)
+{
+    s->section = (section + SEC_COUNT) % SEC_COUNT;
+    s->top = 0;
+    load_section(s, app, s->section);
 }
 
 static void fmt(char *out, size_t size, const char *column, double value)
@@ -143,9 +193,12 @@ static void stats_draw(struct tui_screen *base, struct tui_app *app,
     static const char *const note[SEC_COUNT] = {
         "", " | least of each group", " | least of each group",
         " | least of each group", "", " | best found so far"};
+    char bins[48] = "";
+    if (s->bin[s->section] > 0)
+        snprintf(bins, sizeof bins, ", in bins of %g", s->bin[s->section]);
     tui_putf(0, 0, width, tui_attr(ROLE_TITLE),
-             " Statistics: run %lld | %s options%s%s%s%s",
-             (long long)m->browse.run, count, note[s->section],
+             " Statistics: run %lld | %s options%s%s%s%s%s",
+             (long long)m->browse.run, count, note[s->section], bins,
              m->browse.pareto_only ? " | Pareto only" : "",
              where[0] ? " | filter " : "", where);
     int x = 0;
@@ -172,7 +225,10 @@ static void stats_draw(struct tui_screen *base, struct tui_app *app,
             const struct tui_column *col = tui_metric_column(stat_columns[k]);
             const struct column_stats *st = &s->stats[k];
             fmt(a, sizeof a, stat_columns[k], st->min);
-            fmt(b2, sizeof b2, stat_columns[k], st->median);
+            if (k < s->medians)
+                fmt(b2, sizeof b2, stat_columns[k], st->median);
+            else
+                snprintf(b2, sizeof b2, "...");
             fmt(c, sizeof c, stat_columns[k], st->max);
             fmt(d, sizeof d, stat_columns[k], st->mean);
             tui_fmt_number(e, sizeof e, (double)st->count, 0, 1);
@@ -218,12 +274,6 @@ static void stats_draw(struct tui_screen *base, struct tui_app *app,
                                    ? "t mm" : column[1] == 'u' ? "U" : "V",
              gen ? "best USD" : "least USD", "planar. m", "DP m^2");
     tui_put(2, 0, width, tui_attr(ROLE_HEADER), head);
-    if (s->bin[s->section] > 0) {
-        char bin[64];
-        snprintf(bin, sizeof bin, "bins of %g ", s->bin[s->section]);
-        tui_put(2, width - (int)strlen(bin), (int)strlen(bin),
-                tui_attr(ROLE_HEADER), bin);
-    }
     if (ng == 0)
         tui_put(4, 2, width - 2, tui_attr(ROLE_DIM), "no option to count");
     /* per generation: the best found up to each generation, which is what
@@ -258,19 +308,16 @@ static enum tui_result stats_key(struct tui_screen *base, struct tui_app *app,
 {
     struct stats_screen *s = (struct stats_screen *)base;
     if (key >= '1' && key < '1' + SEC_COUNT) {
-        s->section = key - '1';
-        s->top = 0;
+        show(s, app, key - '1');
         return RESULT_HANDLED;
     }
     int page = LINES - 6 > 1 ? LINES - 6 : 1;
     switch (key) {
     case '\t':
-        s->section = (s->section + 1) % SEC_COUNT;
-        s->top = 0;
+        show(s, app, s->section + 1);
         return RESULT_HANDLED;
     case KEY_BTAB:
-        s->section = (s->section + SEC_COUNT - 1) % SEC_COUNT;
-        s->top = 0;
+        show(s, app, s->section - 1);
         return RESULT_HANDLED;
     case 'r':
         load(s, app);
@@ -280,12 +327,10 @@ static enum tui_result stats_key(struct tui_screen *base, struct tui_app *app,
     }
     switch (tui_key_action(key)) {
     case ACTION_RIGHT:
-        s->section = (s->section + 1) % SEC_COUNT;
-        s->top = 0;
+        show(s, app, s->section + 1);
         return RESULT_HANDLED;
     case ACTION_LEFT:
-        s->section = (s->section + SEC_COUNT - 1) % SEC_COUNT;
-        s->top = 0;
+        show(s, app, s->section - 1);
         return RESULT_HANDLED;
     case ACTION_UP: s->top--; return RESULT_HANDLED;
     case ACTION_DOWN: s->top++; return RESULT_HANDLED;
@@ -308,7 +353,7 @@ static void stats_destroy(struct tui_screen *base)
 static const struct tui_screen_class stats_class = {
     "Statistics", stats_help,
     {"Help", NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL, "Quit"},
-    stats_draw, stats_key, NULL, stats_destroy,
+    stats_draw, stats_key, stats_tick, stats_destroy,
 };
 
 struct tui_screen *screen_stats_new(struct tui_app *app,
