@@ -41,7 +41,8 @@ void scatter_range(const struct scatter_point *points, size_t n, int axis,
 
 /* Writes into front the indexes of the points no other point beats on
  * both x and y (both minimised; of equal points, the first), by x
- * ascending, and returns how many. front has room for n. */
+ * ascending, and returns how many (0 when out of memory). front has
+ * room for n. */
 size_t scatter_front(const struct scatter_point *points, size_t n,
                      size_t *front);
 
