@@ -54,7 +54,8 @@ static int plot_main(int argc, char **argv, struct facet_error *err)
             return rc;
         ids[nruns++] = id;
     }
-    struct plot_request request = {ids, nruns, x, y, size, title, force};
+    struct plot_request request = {ids, nruns, x, y, size, title, force,
+                                   NULL, 0};
     struct store *store;
     if ((rc = store_open_read(path[0], &store, err)) != FACET_OK)
         return rc;

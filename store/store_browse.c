@@ -510,3 +510,195 @@ int store_browse_sample(struct store *store, const struct option_browse *b,
     return deliver(store, b, stmt, limit, row, context, "sampling options",
                    err);
 }
+
+/* --- statistics and frequency tables (the Statistics screen) --- */
+
+int store_browse_stats(struct store *store, const struct option_browse *b,
+                       const char *const *columns, int n,
+                       struct column_stats *out, struct facet_error *err)
+{
+    struct option_browse plain = *b;
+    plain.filter_first = 0;  /* an aggregate reads every row it passes */
+    char expr[160];
+    struct sql_text s = {0};
+    sql_add(&s, "SELECT count(*)");
+    for (int k = 0; k < n; k++) {
+        out[k].count = 0;
+        out[k].min = out[k].median = out[k].max = out[k].mean = NAN;
+        if (columns[k] == NULL || key_expr(columns[k]) == NULL) {
+            free(s.text);
+            return facet_error_set(err, FACET_EINPUT, "unknown column '%s'",
+                                   columns[k] ? columns[k] : "(none)");
+        }
+        key_sql(&plain, columns[k], expr, sizeof expr);
+        sql_add(&s, ", count(%s), min(%s), max(%s), avg(%s)", expr, expr,
+                expr, expr);
+    }
+    add_from(&s, &plain, 1);
+    sqlite3_stmt *stmt;
+    int rc = prepare(store, &s, &plain, NULL, &stmt, "measuring options",
+                     err);
+    if (rc != FACET_OK)
+        return rc;
+    int step = sqlite3_step(stmt);
+    if (step == SQLITE_ROW)
+        for (int k = 0; k < n; k++) {
+            out[k].count = sqlite3_column_int64(stmt, 1 + 4 * k);
+            out[k].min = store_column_or_nan(stmt, 2 + 4 * k);
+            out[k].max = store_column_or_nan(stmt, 3 + 4 * k);
+            out[k].mean = store_column_or_nan(stmt, 4 + 4 * k);
+        }
+    else
+        rc = store_fail(store, "measuring options", err);
+    sqlite3_finalize(stmt);
+    return rc;
+}
+
+int store_browse_median(struct store *store, const struct option_browse *b,
+                        const char *column, int64_t count, double *median,
+                        struct facet_error *err)
+{
+    *median = NAN;
+    if (column == NULL || key_expr(column) == NULL)
+        return facet_error_set(err, FACET_EINPUT, "unknown column '%s'",
+                               column ? column : "(none)");
+    if (count <= 0)
+        return FACET_OK;
+    /* Without a filter the column's own index holds the values in order
+     * (no row is looked up); with one, every row would be looked up from
+     * the index, so the rows are read in the table's order and sorted:
+     * the unary plus of filter_first keeps the planner off the index. */
+    struct option_browse order = *b;
+    order.filter_first = b->where != NULL || b->pareto_only;
+    char expr[160];
+    key_sql(&order, column, expr, sizeof expr);
+    struct sql_text m = {0};
+    sql_add(&m, "SELECT %s", expr);
+    order.filter_first = 0;
+    add_from(&m, &order, 1);
+    sql_add(&m, " AND %s IS NOT NULL ORDER BY %s LIMIT ?2 OFFSET ?3", expr,
+            expr);
+    sqlite3_stmt *stmt;
+    int rc = prepare(store, &m, &order, NULL, &stmt, "measuring options",
+                     err);
+    if (rc != FACET_OK)
+        return rc;
+    sqlite3_bind_int64(stmt, 2, count % 2 ? 1 : 2);
+    sqlite3_bind_int64(stmt, 3, (count - 1) / 2);
+    double sum = 0;
+    int got = 0, step;
+    while ((step = sqlite3_step(stmt)) == SQLITE_ROW) {
+        sum += sqlite3_column_double(stmt, 0);
+        got++;
+    }
+    if (step != SQLITE_DONE)
+        rc = store_fail(store, "measuring options", err);
+    else if (got > 0)
+        *median = got == 2 ? sum / 2 : sum;
+    sqlite3_finalize(stmt);
+    return rc;
+}
+
+int store_browse_groups(struct store *store, const struct option_browse *b,
+                        const char *column, double bin,
+                        struct option_group **groups, size_t *n,
+                        struct facet_error *err)
+{
+    *groups = NULL;
+    *n = 0;
+    if (column == NULL || key_expr(column) == NULL)
+        return facet_error_set(err, FACET_EINPUT, "unknown column '%s'",
+                               column ? column : "(none)");
+    struct option_browse plain = *b;
+    /* "+column": read the rows in the table's order and sort them, not
+     * walk the column's index and look every row up (2.3 s against 0.8 s
+     * on a million options) */
+    plain.filter_first = 1;
+    char expr[160], group[600];
+    key_sql(&plain, column, expr, sizeof expr);
+    plain.filter_first = 0;
+    /* floor without SQLite's optional math functions: CAST truncates
+     * toward zero, one less below it */
+    if (bin > 0)
+        snprintf(group, sizeof group, "((CAST(%s / ?2 AS INTEGER) - (%s / ?2"
+                 " < CAST(%s / ?2 AS INTEGER))) * ?2)", expr, expr, expr);
+    else
+        snprintf(group, sizeof group, "%s", expr);
+    struct sql_text s = {0};
+    sql_add(&s, "SELECT %s AS g, count(*), sum(%s = 1), sum(feasible <> 0),"
+                " min(cost), min(planarity), min(dp_area)", group,
+            store_rank_sql);
+    add_from(&s, &plain, 1);
+    sql_add(&s, " AND %s IS NOT NULL GROUP BY g ORDER BY g", expr);
+    sqlite3_stmt *stmt;
+    int rc = prepare(store, &s, &plain, NULL, &stmt, "counting options",
+                     err);
+    if (rc != FACET_OK)
+        return rc;
+    if (bin > 0)
+        sqlite3_bind_double(stmt, 2, bin);
+    size_t capacity = 0;
+    int step;
+    while ((step = sqlite3_step(stmt)) == SQLITE_ROW) {
+        if (*n == capacity) {
+            capacity = capacity ? 2 * capacity : 32;
+            struct option_group *grown = realloc(*groups,
+                                                 capacity * sizeof **groups);
+            if (grown == NULL) {
+                rc = facet_error_set(err, FACET_EWORK, "out of memory");
+                break;
+            }
+            *groups = grown;
+        }
+        struct option_group *g = &(*groups)[(*n)++];
+        g->value = sqlite3_column_double(stmt, 0);
+        g->options = sqlite3_column_int64(stmt, 1);
+        g->pareto = sqlite3_column_int64(stmt, 2);
+        g->feasible = sqlite3_column_int64(stmt, 3);
+        g->min_cost = store_column_or_nan(stmt, 4);
+        g->min_planarity = store_column_or_nan(stmt, 5);
+        g->min_dp_area = store_column_or_nan(stmt, 6);
+    }
+    if (rc == FACET_OK && step != SQLITE_DONE)
+        rc = store_fail(store, "counting options", err);
+    sqlite3_finalize(stmt);
+    if (rc != FACET_OK) {
+        free(*groups);
+        *groups = NULL;
+        *n = 0;
+    }
+    return rc;
+}
+
+int store_browse_classes(struct store *store, const struct option_browse *b,
+                         struct class_frequency out[CLASS_COUNT],
+                         struct facet_error *err)
+{
+    struct option_browse plain = *b;
+    plain.filter_first = 0;
+    struct sql_text s = {0};
+    sql_add(&s, "SELECT count(*)");
+    for (int c = 0; c < CLASS_COUNT; c++) {
+        const char *name = panel_class_name((enum panel_class)c);
+        sql_add(&s, ", sum(\"%s_count\" > 0), sum(\"%s_count\"),"
+                    " sum(\"%s_area\")", name, name, name);
+        out[c].options = out[c].panels = 0;
+        out[c].area = 0;
+    }
+    add_from(&s, &plain, 1);
+    sqlite3_stmt *stmt;
+    int rc = prepare(store, &s, &plain, NULL, &stmt, "counting options",
+                     err);
+    if (rc != FACET_OK)
+        return rc;
+    if (sqlite3_step(stmt) == SQLITE_ROW)
+        for (int c = 0; c < CLASS_COUNT; c++) {
+            out[c].options = sqlite3_column_int64(stmt, 1 + 3 * c);
+            out[c].panels = sqlite3_column_int64(stmt, 2 + 3 * c);
+            out[c].area = sqlite3_column_double(stmt, 3 + 3 * c);
+        }
+    else
+        rc = store_fail(store, "counting options", err);
+    sqlite3_finalize(stmt);
+    return rc;
+}

@@ -219,13 +219,18 @@ static int load_points(struct store *store, int64_t run,
 {
     struct run_info info;
     int rc = store_run_get(store, run, &info, err);
+    struct option_query q = {run, r->pareto_only, r->where, NULL, 0, 0, 0};
     if (rc == FACET_OK)
-        rc = store_options_get(store, run, &p->rows, &p->n, err);
+        rc = r->where || r->pareto_only
+                 ? store_options_query_rows(store, &q, &p->rows, &p->n, err)
+                 : store_options_get(store, run, &p->rows, &p->n, err);
     if (rc != FACET_OK)
         return rc;
     if (p->n == 0)
         return facet_error_set(err, FACET_EINPUT, "run %lld has no options "
-                               "to plot", (long long)run);
+                               "to plot%s", (long long)run,
+                               r->where || r->pareto_only
+                                   ? " (the filter passes none)" : "");
     p->x = malloc(p->n * sizeof *p->x);
     p->y = malloc(p->n * sizeof *p->y);
     p->size = malloc(p->n * sizeof *p->size);
@@ -295,4 +300,57 @@ int study_plot(struct store *store, const struct plot_request *r,
         free(points[k].rank);
     }
     return rc;
+}
+
+int study_export_options_csv(struct store *store, int64_t run,
+                             const int64_t *numbers, size_t n,
+                             const char *path, int force,
+                             struct facet_error *err)
+{
+    struct option_row *rows = malloc((n ? n : 1) * sizeof *rows);
+    if (rows == NULL)
+        return facet_error_set(err, FACET_EWORK, "out of memory");
+    int rc = FACET_OK;
+    for (size_t k = 0; k < n && rc == FACET_OK; k++)
+        rc = store_option_get(store, run, numbers[k], &rows[k], err);
+    struct outfile f;
+    if (rc == FACET_OK)
+        rc = outfile_open(&f, path, force, err);
+    if (rc != FACET_OK) {
+        free(rows);
+        return rc;
+    }
+    fprintf(f.out, "run");
+    for (int c = 0; store_option_columns[c] != NULL; c++)
+        if (strcmp(store_option_columns[c], "run") != 0)
+            fprintf(f.out, ",%s", store_option_columns[c]);
+    fprintf(f.out, ",fp_cost,sp_cost,dp_cost");
+    for (int c = 0; c < CLASS_COUNT; c++)
+        fprintf(f.out, ",%s_count,%s_area",
+                panel_class_name((enum panel_class)c),
+                panel_class_name((enum panel_class)c));
+    fprintf(f.out, "\n");
+    for (size_t k = 0; k < n; k++) {
+        const struct option_row *o = &rows[k];
+        fprintf(f.out, "%lld", (long long)run);
+        for (int c = 0; store_option_columns[c] != NULL; c++) {
+            if (strcmp(store_option_columns[c], "run") == 0)
+                continue;
+            double v = store_option_value(o, store_option_columns[c]);
+            if (!isfinite(v))
+                fprintf(f.out, ",");  /* crowding at a front's end */
+            else if (v == floor(v) && fabs(v) < 1e15)
+                fprintf(f.out, ",%.0f", v);
+            else
+                fprintf(f.out, ",%.17g", v);
+        }
+        for (int t = 0; t < TYPE_COUNT; t++)
+            fprintf(f.out, ",%.17g", o->totals.cost_of[t]);
+        for (int c = 0; c < CLASS_COUNT; c++)
+            fprintf(f.out, ",%zu,%.17g", o->totals.class_count[c],
+                    o->totals.class_area[c]);
+        fprintf(f.out, "\n");
+    }
+    free(rows);
+    return outfile_commit(&f, err);
 }

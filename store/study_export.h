@@ -74,6 +74,9 @@ struct plot_request {
     const char *size;       /* bubble size column, or NULL for dots */
     const char *title;      /* or NULL */
     int force;
+    const struct filter *where;  /* the options of each run to plot; NULL:
+                                    every one */
+    int pareto_only;        /* rank 1 only */
 };
 
 #define PLOT_MAX_RUNS 8
@@ -84,6 +87,17 @@ struct plot_request {
  * run without options, a path that exists or cannot be written. */
 int study_plot(struct store *store, const struct plot_request *request,
                const char *path, struct facet_error *err);
+
+/* Writes options numbers[0..n) of run to path as CSV, one row each in
+ * the order given, with a header: run, then every option column of
+ * store_option_columns, the cost per type (fp_cost, sp_cost, dp_cost)
+ * and the count and area per class (CLASS_count, CLASS_area), as the
+ * options table holds them (crowding empty where infinite). A path that
+ * exists is refused unless force. FACET_EINPUT for an unknown option. */
+int study_export_options_csv(struct store *store, int64_t run,
+                             const int64_t *numbers, size_t n,
+                             const char *path, int force,
+                             struct facet_error *err);
 
 /* The unit of an option column ("USD", "m", "m^2", "mm", "" for counts). */
 const char *study_column_unit(const char *column);

@@ -155,5 +155,15 @@ struct tui_screen *screen_compare_new(struct tui_app *app, int64_t run,
                                       const int64_t *options, int n);
 struct tui_screen *screen_newrun_new(struct tui_app *app,
                                      const char *surface_path);
+/* New run "like this": the form filled in from run's settings with a
+ * design space narrowed around option (U and V +-2, the threshold +-
+ * one step, or +-0.5 mm, in quarter steps). */
+struct tui_screen *screen_newrun_like(struct tui_app *app,
+                                      const struct run_info *run,
+                                      const struct option_row *option);
+/* Statistics of model's options (borrowed: its filter applies), opened
+ * at section (0 the columns, 5 the generations; screen_stats.c). */
+struct tui_screen *screen_stats_new(struct tui_app *app,
+                                    struct table_model *model, int section);
 
 #endif

@@ -52,55 +52,55 @@ void tui_fmt_started(char *out, size_t size, const char *iso)
 }
 
 const struct tui_column tui_option_columns[] = {
-    {"number", "No.", "", 7, 0, 0, COLUMN_NUMBER},
-    {"rank", "P", "", 1, 0, 0, COLUMN_PARETO},
-    {"planarity", "planarity", "m", 9, 3, 0, COLUMN_NUMBER},
-    {"dp_area", "DP area", "m^2", 8, 1, 0, COLUMN_NUMBER},
-    {"cost", "cost", "USD", 10, 0, 1, COLUMN_NUMBER},
-    {"fp_area", "FP area", "m^2", 8, 1, 0, COLUMN_NUMBER},
-    {"sp_area", "SP area", "m^2", 8, 1, 0, COLUMN_NUMBER},
-    {"nu", "U", "", 3, 0, 0, COLUMN_NUMBER},
-    {"nv", "V", "", 3, 0, 0, COLUMN_NUMBER},
-    {"threshold_mm", "t", "mm", 5, 2, 0, COLUMN_NUMBER},
-    {"feasible", "ok", "", 3, 0, 0, COLUMN_YESNO},
-    {"rank", "rank", "", 4, 0, 0, COLUMN_NUMBER},
+    {"number", "No.", "", 7, 0, 0, COLUMN_NUMBER, 1},
+    {"rank", "P", "", 1, 0, 0, COLUMN_PARETO, 1},
+    {"planarity", "planarity", "m", 9, 3, 0, COLUMN_NUMBER, 1},
+    {"dp_area", "DP area", "m^2", 8, 1, 0, COLUMN_NUMBER, 1},
+    {"cost", "cost", "USD", 10, 0, 1, COLUMN_NUMBER, 1},
+    {"fp_area", "FP area", "m^2", 8, 1, 0, COLUMN_NUMBER, 1},
+    {"sp_area", "SP area", "m^2", 8, 1, 0, COLUMN_NUMBER, 1},
+    {"nu", "U", "", 3, 0, 0, COLUMN_NUMBER, 1},
+    {"nv", "V", "", 3, 0, 0, COLUMN_NUMBER, 1},
+    {"threshold_mm", "t", "mm", 5, 2, 0, COLUMN_NUMBER, 1},
+    {"feasible", "ok", "", 3, 0, 0, COLUMN_YESNO, 1},
+    {"rank", "rank", "", 4, 0, 0, COLUMN_NUMBER, 1},
     /* hidden until the column chooser shows them */
-    {"area", "area", "m^2", 8, 1, 0, COLUMN_NUMBER},
-    {"panels", "panels", "", 6, 0, 0, COLUMN_NUMBER},
-    {"dp_count", "DP n", "", 5, 0, 0, COLUMN_NUMBER},
-    {"max_panel_area", "max pan", "m^2", 7, 2, 0, COLUMN_NUMBER},
-    {"max_deviation", "max dev", "m", 7, 4, 0, COLUMN_NUMBER},
-    {"p_dist", "P_dist", "m^4", 9, 4, 0, COLUMN_NUMBER},
-    {"crowding", "crowd", "", 6, 3, 0, COLUMN_NUMBER},
-    {"generation", "gen", "", 4, 0, 0, COLUMN_NUMBER},
+    {"area", "area", "m^2", 8, 1, 0, COLUMN_NUMBER, 1},
+    {"panels", "panels", "", 6, 0, 0, COLUMN_NUMBER, 1},
+    {"dp_count", "DP n", "", 5, 0, 0, COLUMN_NUMBER, 1},
+    {"max_panel_area", "max pan", "m^2", 7, 2, 0, COLUMN_NUMBER, 1},
+    {"max_deviation", "max dev", "mm", 7, 2, 0, COLUMN_NUMBER, 1000},
+    {"p_dist", "P_dist", "m^4", 9, 4, 0, COLUMN_NUMBER, 1},
+    {"crowding", "crowd", "", 6, 3, 0, COLUMN_NUMBER, 1},
+    {"generation", "gen", "", 4, 0, 0, COLUMN_NUMBER, 1},
 };
 const int tui_option_column_default_count = 12;
 const int tui_option_column_count =
     (int)(sizeof tui_option_columns / sizeof tui_option_columns[0]);
 
 const struct tui_column tui_metric_columns[] = {
-    {"number", "No.", "", 7, 0, 0, COLUMN_NUMBER},
-    {"cost", "cost", "USD", 12, 0, 1, COLUMN_NUMBER},
-    {"planarity", "planarity", "m", 10, 4, 0, COLUMN_NUMBER},
-    {"dp_area", "DP area", "m^2", 10, 2, 0, COLUMN_NUMBER},
-    {"fp_area", "FP area", "m^2", 10, 2, 0, COLUMN_NUMBER},
-    {"sp_area", "SP area", "m^2", 10, 2, 0, COLUMN_NUMBER},
-    {"area", "area", "m^2", 10, 2, 0, COLUMN_NUMBER},
-    {"nu", "U", "", 5, 0, 0, COLUMN_NUMBER},
-    {"nv", "V", "", 5, 0, 0, COLUMN_NUMBER},
-    {"threshold_mm", "threshold", "mm", 8, 2, 0, COLUMN_NUMBER},
-    {"panels", "panels", "", 7, 0, 0, COLUMN_NUMBER},
-    {"fp_count", "FP panels", "", 7, 0, 0, COLUMN_NUMBER},
-    {"sp_count", "SP panels", "", 7, 0, 0, COLUMN_NUMBER},
-    {"dp_count", "DP panels", "", 7, 0, 0, COLUMN_NUMBER},
-    {"max_deviation", "max deviation", "m", 10, 4, 0, COLUMN_NUMBER},
-    {"max_panel_area", "max panel area", "m^2", 10, 2, 0, COLUMN_NUMBER},
-    {"p_dist", "P_dist", "m^4", 12, 6, 0, COLUMN_NUMBER},
-    {"feasible", "feasible", "", 4, 0, 0, COLUMN_YESNO},
-    {"rank", "rank", "", 5, 0, 0, COLUMN_NUMBER},
-    {"crowding", "crowding", "", 8, 3, 0, COLUMN_NUMBER},
-    {"knee", "knee", "", 4, 0, 0, COLUMN_YESNO},
-    {"generation", "generation", "", 5, 0, 0, COLUMN_NUMBER},
+    {"number", "No.", "", 7, 0, 0, COLUMN_NUMBER, 1},
+    {"cost", "cost", "USD", 12, 0, 1, COLUMN_NUMBER, 1},
+    {"planarity", "planarity", "m", 10, 4, 0, COLUMN_NUMBER, 1},
+    {"dp_area", "DP area", "m^2", 10, 2, 0, COLUMN_NUMBER, 1},
+    {"fp_area", "FP area", "m^2", 10, 2, 0, COLUMN_NUMBER, 1},
+    {"sp_area", "SP area", "m^2", 10, 2, 0, COLUMN_NUMBER, 1},
+    {"area", "area", "m^2", 10, 2, 0, COLUMN_NUMBER, 1},
+    {"nu", "U", "", 5, 0, 0, COLUMN_NUMBER, 1},
+    {"nv", "V", "", 5, 0, 0, COLUMN_NUMBER, 1},
+    {"threshold_mm", "threshold", "mm", 8, 2, 0, COLUMN_NUMBER, 1},
+    {"panels", "panels", "", 7, 0, 0, COLUMN_NUMBER, 1},
+    {"fp_count", "FP panels", "", 7, 0, 0, COLUMN_NUMBER, 1},
+    {"sp_count", "SP panels", "", 7, 0, 0, COLUMN_NUMBER, 1},
+    {"dp_count", "DP panels", "", 7, 0, 0, COLUMN_NUMBER, 1},
+    {"max_deviation", "max deviation", "mm", 10, 2, 0, COLUMN_NUMBER, 1000},
+    {"max_panel_area", "max panel area", "m^2", 10, 2, 0, COLUMN_NUMBER, 1},
+    {"p_dist", "P_dist", "m^4", 12, 6, 0, COLUMN_NUMBER, 1},
+    {"feasible", "feasible", "", 4, 0, 0, COLUMN_YESNO, 1},
+    {"rank", "rank", "", 5, 0, 0, COLUMN_NUMBER, 1},
+    {"crowding", "crowding", "", 8, 3, 0, COLUMN_NUMBER, 1},
+    {"knee", "knee", "", 4, 0, 0, COLUMN_YESNO, 1},
+    {"generation", "generation", "", 5, 0, 0, COLUMN_NUMBER, 1},
 };
 const int tui_metric_column_count =
     (int)(sizeof tui_metric_columns / sizeof tui_metric_columns[0]);
@@ -122,7 +122,8 @@ void tui_fmt_value(char *out, size_t size, const struct tui_column *c,
     else if (c->kind == COLUMN_PARETO)
         snprintf(out, size, "%s", value == 1 ? "*" : "");
     else
-        tui_fmt_number(out, size, value, c->decimals, c->thousands);
+        tui_fmt_number(out, size, value * c->scale, c->decimals,
+                       c->thousands);
 }
 
 void tui_fmt_cell(char *out, size_t size, const struct tui_column *c,

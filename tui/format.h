@@ -32,6 +32,9 @@ struct tui_column {
     int decimals;
     int thousands;        /* 1,000 separators */
     enum tui_column_kind kind;
+    double scale;         /* shown = stored x scale: a deviation is
+                             stored in m and shown in mm (1000), as the
+                             threshold it is held to; 1 otherwise */
 };
 
 /* The options table's columns: first the ones it shows by default, in
@@ -57,7 +60,8 @@ const struct tui_column *tui_metric_column(const char *column);
 void tui_fmt_cell(char *out, size_t size, const struct tui_column *c,
                   const struct option_row *option);
 
-/* value as column c formats it, not padded. */
+/* value (as stored, in the store's unit) as column c formats it, in the
+ * column's unit (times c->scale), not padded. */
 void tui_fmt_value(char *out, size_t size, const struct tui_column *c,
                    double value);
 

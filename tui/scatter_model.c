@@ -28,6 +28,37 @@ int scatter_level(double z, double min, double max, int levels)
     return !(max > min) || level < 0 ? 0 : level;
 }
 
+int scatter_ticks(double min, double max, int max_ticks, double *ticks,
+                  double *step)
+{
+    *step = 0;
+    if (!isfinite(min) || !isfinite(max) || max_ticks < 1 || max < min)
+        return 0;
+    if (!(max > min)) {
+        ticks[0] = min;
+        return 1;
+    }
+    static const double mantissa[3] = {1, 2, 5};
+    double raw = (max - min) / max_ticks;
+    int e = (int)floor(log10(raw)) - 1;
+    for (;; e++)
+        for (int k = 0; k < 3; k++) {
+            double d = mantissa[k] * pow(10, e);
+            double first = ceil(min / d - 1e-9), last = floor(max / d + 1e-9);
+            if (last - first + 1 > max_ticks)
+                continue;
+            int n = 0;
+            for (double t = first; t <= last && n < max_ticks; t++) {
+                double v = t * d;
+                /* a multiple by a rounding error outside the range, or a
+                 * -0, is the range's end */
+                ticks[n++] = fabs(v) < d * 1e-9 ? 0 : v;
+            }
+            *step = d;
+            return n;
+        }
+}
+
 void scatter_range(const struct scatter_point *points, size_t n, int axis,
                    double *min, double *max)
 {
@@ -44,39 +75,44 @@ void scatter_range(const struct scatter_point *points, size_t n, int axis,
     }
 }
 
-static const struct scatter_point *sort_points;
+/* A point's place in the front's order: its x, y and index, so that
+ * qsort needs no pointer to the points beside it. */
+struct front_key {
+    double x, y;
+    size_t k;
+};
 
 static int by_x_then_y(const void *a, const void *b)
 {
-    const struct scatter_point *p = &sort_points[*(const size_t *)a];
-    const struct scatter_point *q = &sort_points[*(const size_t *)b];
+    const struct front_key *p = a, *q = b;
     if (p->x != q->x)
         return p->x < q->x ? -1 : 1;
     if (p->y != q->y)
         return p->y < q->y ? -1 : 1;
-    return *(const size_t *)a < *(const size_t *)b ? -1 : 1;
+    return p->k < q->k ? -1 : p->k > q->k;
 }
 
 size_t scatter_front(const struct scatter_point *points, size_t n,
                      size_t *front)
 {
+    struct front_key *keys = malloc((n ? n : 1) * sizeof *keys);
+    if (keys == NULL)
+        return 0;  /* no front drawn rather than a wrong one */
     size_t m = 0;
     for (size_t k = 0; k < n; k++)
         if (isfinite(points[k].x) && isfinite(points[k].y))
-            front[m++] = k;
-    sort_points = points;
-    qsort(front, m, sizeof *front, by_x_then_y);
+            keys[m++] = (struct front_key){points[k].x, points[k].y, k};
+    qsort(keys, m, sizeof *keys, by_x_then_y);
     /* by x ascending: a point is on the front when its y is below every
      * y before it */
     size_t kept = 0;
     double best = INFINITY;
-    for (size_t k = 0; k < m; k++) {
-        const struct scatter_point *p = &points[front[k]];
-        if (p->y < best) {
-            best = p->y;
-            front[kept++] = front[k];
+    for (size_t k = 0; k < m; k++)
+        if (keys[k].y < best) {
+            best = keys[k].y;
+            front[kept++] = keys[k].k;
         }
-    }
+    free(keys);
     return kept;
 }
 

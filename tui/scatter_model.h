@@ -25,6 +25,15 @@ int scatter_cell(double value, double min, double max, int cells);
  * no extent or z is not finite). */
 int scatter_level(double z, double min, double max, int levels);
 
+/* Round tick values for an axis from min to max: every multiple of a
+ * step of 1, 2 or 5 times a power of ten that lies in [min, max], the
+ * smallest such step that gives at most max_ticks of them, ascending,
+ * into ticks (room for max_ticks) and the step into *step. Returns how
+ * many: 0 when min or max is not finite or max_ticks < 1, 1 (min itself,
+ * step 0) when the range has no extent. */
+int scatter_ticks(double min, double max, int max_ticks, double *ticks,
+                  double *step);
+
 /* The least and greatest finite x (axis 0), y (1) or z (2) of points into
  * *min, *max (NaN when there is none). */
 void scatter_range(const struct scatter_point *points, size_t n, int axis,
@@ -32,7 +41,8 @@ void scatter_range(const struct scatter_point *points, size_t n, int axis,
 
 /* Writes into front the indexes of the points no other point beats on
  * both x and y (both minimised; of equal points, the first), by x
- * ascending, and returns how many. front has room for n. */
+ * ascending, and returns how many (0 when out of memory). front has
+ * room for n. */
 size_t scatter_front(const struct scatter_point *points, size_t n,
                      size_t *front);
 

@@ -15,11 +15,15 @@
 #include "app.h"
 #include "format.h"
 #include "keys.h"
+#include "map_model.h"
+#include "core/metric.h"
 #include "store/study.h"
 
 struct compare_screen {
     struct tui_screen base;
     int64_t run;
+    struct objective objectives[OBJECTIVES_MAX];
+    int nobjectives;
     struct option_row options[4];
     int n;
     int differences;   /* show the differences only */
@@ -28,54 +32,42 @@ struct compare_screen {
     struct panelization panels[4];
     int has_map[4];
     char map_error[4][600];
+    double width_m, height_m;  /* the surface's extent, for the aspect */
 };
 
 static const struct tui_key_help compare_help[] = {
     {"j/k, Up/Down", "scroll the metrics"},
     {"d, F2", "values with differences, or the differences alone"},
     {"m, F8", "show / hide the small panel maps under the metrics"},
-    {"(maps)", "one character per panel (or block): F FP, S SP, D DP"},
+    {"(maps)", "one scale, the surface's aspect: F FP, S SP, D DP (a "
+               "character shows the type covering most of it)"},
+    {"(colours)", "a difference in an objective: better (v) or worse (x)"},
     {"1-4", "panel map of the first, second, ... option"},
     {NULL, NULL},
 };
 
-/* The type a character shows for the block of panels [i0, i0 + f) x
- * [j0, j0 + f): the most common, ties going to the dearer type; -1 when
- * the block has no panel. */
-static int block_type(const struct panelization *p, int i0, int j0, int f)
+/* The column widths: the labels, then one column per option, as wide as
+ * the terminal allows (up to 64). */
+static int column_width(const struct compare_screen *s, int width, int lw)
 {
-    int count[TYPE_COUNT] = {0};
-    for (int j = j0; j < j0 + f && j < p->nv; j++)
-        for (int i = i0; i < i0 + f && i < p->nu; i++) {
-            int k = p->cell_panel[(size_t)j * (size_t)p->nu + (size_t)i];
-            if (k >= 0)
-                count[p->panels[k].type]++;
-        }
-    int best = -1;
-    for (int t = 0; t < TYPE_COUNT; t++)
-        if (count[t] > 0 && (best < 0 || count[t] >= count[best]))
-            best = t;
-    return best;
+    int cw = (width - lw - 6) / s->n;
+    return cw > 64 ? 64 : cw;
 }
 
-/* Rows the maps take: a caption and the tallest map, leaving the metrics
- * at least 6 rows. */
-static int map_height(const struct compare_screen *s, int height)
+/* The box every map is drawn in: the largest at the surface's aspect
+ * within a column and the rows left to the maps. */
+static void map_box(const struct compare_screen *s, int cw, int max_rows,
+                    int *cols, int *rows)
 {
-    int tallest = 1;
-    for (int k = 0; k < s->n; k++)
-        if (s->has_map[k] && s->panels[k].nv > tallest)
-            tallest = s->panels[k].nv;
-    int room = height - 2 - 6;
-    int rows = tallest + 2;
-    return rows < room ? rows : room < 3 ? 0 : room;
+    map_fit_box(s->width_m, s->height_m, cw - 2, max_rows, MAP_CELL_ASPECT,
+                cols, rows);
 }
 
 static void draw_maps(struct compare_screen *s, struct tui_app *app, int y0,
                       int rows, int x0, int cw)
 {
     tui_fill(y0, 0, x0 + s->n * cw, tui_attr(ROLE_HEADER));
-    tui_put(y0, 0, x0, tui_attr(ROLE_HEADER), " panel maps");
+    tui_put(y0, 0, x0, tui_attr(ROLE_HEADER), " panel maps, one scale");
     for (int t = 0; t < TYPE_COUNT; t++) {
         const char *name = panel_type_name((enum panel_type)t);
         char letter[2] = {name[0], 0};
@@ -84,9 +76,8 @@ static void draw_maps(struct compare_screen *s, struct tui_app *app, int y0,
             tui_putf(y0 + 1 + t, 2, x0 - 3, A_NORMAL, " %s", name);
         }
     }
-    int map_h = rows - 1, map_w = cw - 2;
-    if (map_w < 1 || map_h < 1)
-        return;
+    int box_w, box_h;
+    map_box(s, cw, rows - 1, &box_w, &box_h);
     for (int k = 0; k < s->n; k++) {
         int x = x0 + k * cw + 1;
         if (!s->has_map[k]) {
@@ -95,63 +86,84 @@ static void draw_maps(struct compare_screen *s, struct tui_app *app, int y0,
             continue;
         }
         const struct panelization *p = &s->panels[k];
-        int f = 1;
-        while ((p->nu + f - 1) / f > map_w || (p->nv + f - 1) / f > map_h)
-            f++;
-        char caption[48];
-        if (f > 1)
-            snprintf(caption, sizeof caption, "%d x %d, 1:%d", p->nu, p->nv,
-                     f);
-        else
-            snprintf(caption, sizeof caption, "%d x %d", p->nu, p->nv);
-        tui_putf(y0, x - 1, cw, tui_attr(ROLE_HEADER), "%*s", cw - 1,
-                 caption);
-        int cols = (p->nu + f - 1) / f, lines = (p->nv + f - 1) / f;
-        x = x0 + (k + 1) * cw - 1 - cols;  /* right-aligned, as the values */
-        /* v's top row first, as the panel map reads */
-        for (int r = 0; r < lines; r++) {
-            int j0 = (lines - 1 - r) * f;
-            for (int c = 0; c < cols; c++) {
-                int t = block_type(p, c * f, j0, f);
+        tui_putf(y0, x - 1, cw, tui_attr(ROLE_HEADER), "%*s", cw - 1, "");
+        tui_putf(y0, x - 1, cw, tui_attr(ROLE_HEADER), "%*d x %d", cw - 6 -
+                 (p->nv >= 10) - (p->nv >= 100), p->nu, p->nv);
+        x = x0 + (k + 1) * cw - 1 - box_w;  /* right-aligned, as values */
+        for (int r = 0; r < box_h; r++)
+            for (int c = 0; c < box_w; c++) {
+                int t = map_cell_value(p, box_w, box_h, c, r, 0);
                 char text[8];
-                if (t < 0)
+                if (t < 0) {
                     tui_put(y0 + 1 + r, x + c, 1, tui_attr(ROLE_DIM),
                             app->glyphs->empty);
-                else {
-                    snprintf(text, sizeof text, "%c",
-                             panel_type_name((enum panel_type)t)[0]);
-                    tui_put(y0 + 1 + r, x + c, 1, tui_attr(tui_type_role(t)),
-                            text);
+                    continue;
                 }
+                snprintf(text, sizeof text, "%c",
+                         panel_type_name((enum panel_type)t)[0]);
+                tui_put(y0 + 1 + r, x + c, 1, tui_attr(tui_type_role(t)),
+                        text);
             }
-        }
     }
+}
+
+/* Whether column's difference means anything: not for the numbering and
+ * the search's bookkeeping. */
+static int has_difference(const char *column)
+{
+    static const char *const none[] = {"number", "generation", "crowding",
+                                       "knee", "feasible"};
+    for (size_t k = 0; k < sizeof none / sizeof none[0]; k++)
+        if (strcmp(column, none[k]) == 0)
+            return 0;
+    return 1;
+}
+
+/* +1 when a larger value of column is better, -1 when a smaller one is,
+ * 0 when column is not one of the run's objectives. */
+static int direction(const struct compare_screen *s, const char *column)
+{
+    for (int k = 0; k < s->nobjectives; k++)
+        if (strcmp(metric_name(s->objectives[k].metric), column) == 0)
+            return s->objectives[k].maximise ? 1 : -1;
+    return 0;
 }
 
 static void compare_draw(struct tui_screen *base, struct tui_app *app,
                          int height, int width)
 {
     struct compare_screen *s = (struct compare_screen *)base;
-    (void)app;
+    const struct tui_glyphs *g = app->glyphs;
     tui_fill(0, 0, width, tui_attr(ROLE_TITLE));
     tui_putf(0, 0, width, tui_attr(ROLE_TITLE),
              " Compare %d options of run %lld | %s", s->n, (long long)s->run,
              s->differences ? "differences to the first" : "values (and "
                                                           "difference)");
-    int lw = 16, cw = (width - lw - 6) / s->n;
-    if (cw > 26)
-        cw = 26;
+    int lw = 18, cw = column_width(s, width, lw);
     tui_fill(1, 0, width, tui_attr(ROLE_HEADER));
-    tui_put(1, 0, lw, tui_attr(ROLE_HEADER), " metric");
+    tui_put(1, 0, lw + 6, tui_attr(ROLE_HEADER), " metric         unit obj");
     for (int k = 0; k < s->n; k++) {
-        char title[32];
-        snprintf(title, sizeof title, "No. %lld",
-                 (long long)s->options[k].number);
-        tui_putf(1, lw + 6 + k * cw, cw, tui_attr(ROLE_HEADER), "%*s",
-                 cw - 1, title);
+        const struct option_row *o = &s->options[k];
+        char title[64];
+        snprintf(title, sizeof title, "No. %lld %s", (long long)o->number,
+                 o->knee ? "knee" : o->rank == 1 ? "Pareto" : "");
+        int x = lw + 6 + k * cw, n = (int)strlen(title);
+        tui_putf(1, x, cw, tui_attr(ROLE_HEADER), "%*s", cw - 1, title);
+        /* the knee's and the Pareto options' glyph before the title */
+        if (o->rank == 1 && cw - 3 - n >= 0)
+            tui_put(1, x + cw - 3 - n, 1, tui_attr(o->knee ? ROLE_KNEE
+                                                           : ROLE_PARETO),
+                    o->knee ? g->knee : g->pareto);
     }
-    int map_rows = s->maps ? map_height(s, height) : 0;
+    int map_rows = 0;
+    if (s->maps) {
+        int box_w, box_h, room = height - 2 - 7;
+        map_box(s, cw, room - 1, &box_w, &box_h);
+        map_rows = room >= 3 ? box_h + 1 : 0;
+    }
     int rows = height - 2 - map_rows;
+    if (rows > tui_metric_column_count)
+        rows = tui_metric_column_count;
     if (map_rows > 0)
         draw_maps(s, app, 2 + rows, map_rows, lw + 6, cw);
     if (s->top > tui_metric_column_count - rows)
@@ -159,8 +171,9 @@ static void compare_draw(struct tui_screen *base, struct tui_app *app,
                      ? tui_metric_column_count - rows : 0;
     for (int r = 0; r < rows && s->top + r < tui_metric_column_count; r++) {
         const struct tui_column *c = &tui_metric_columns[s->top + r];
-        int y = 2 + r;
-        tui_putf(y, 0, lw + 6, A_NORMAL, " %-15s %-5s", c->title, c->unit);
+        int y = 2 + r, dir = direction(s, c->column);
+        tui_putf(y, 0, lw + 6, A_NORMAL, " %-14s %-4s %s", c->title,
+                 c->unit, dir < 0 ? "min" : dir > 0 ? "max" : "");
         double first = store_option_value(&s->options[0], c->column);
         for (int k = 0; k < s->n; k++) {
             double v = store_option_value(&s->options[k], c->column);
@@ -168,25 +181,35 @@ static void compare_draw(struct tui_screen *base, struct tui_app *app,
             tui_fmt_value(value, sizeof value, c, v);
             diff[0] = '\0';
             if (k > 0 && c->kind == COLUMN_NUMBER && v != first &&
-                isfinite(v) && isfinite(first)) {
+                has_difference(c->column) && isfinite(v) &&
+                isfinite(first)) {
                 char d[40];
-                tui_fmt_number(d, sizeof d, v - first, c->decimals,
-                               c->thousands);
+                tui_fmt_value(d, sizeof d, c, v - first);
                 /* a difference that rounds to nothing is no difference */
                 if (strspn(d, "-0.,") != strlen(d))
                     snprintf(diff, sizeof diff, "%s%s", v > first ? "+" : "",
                              d);
             }
+            /* better or worse, by the objective's direction */
+            int verdict = diff[0] && dir != 0
+                              ? ((v > first) == (dir > 0) ? 1 : -1) : 0;
+            const char *mark = verdict > 0 ? g->better : verdict < 0
+                                                             ? g->worse : "";
             if (s->differences && k > 0)
-                snprintf(cell, sizeof cell, "%s", diff[0] ? diff : "=");
-            else if (diff[0] && (int)(strlen(value) + strlen(diff) + 3) < cw)
-                snprintf(cell, sizeof cell, "%s (%s)", value, diff);
+                snprintf(cell, sizeof cell, "%s%s%s", diff[0] ? diff : "=",
+                         mark[0] ? " " : "", mark);
+            else if (diff[0] && (int)(strlen(value) + strlen(diff) + 3 +
+                                      (mark[0] ? 2 : 0)) <= cw - 1)
+                snprintf(cell, sizeof cell, "%s (%s)%s%s", value, diff,
+                         mark[0] ? " " : "", mark);
             else
-                snprintf(cell, sizeof cell, "%s", value);
-            attr_t attr = A_NORMAL;
-            if (diff[0])
-                attr = tui_attr(ROLE_PARETO);
-            tui_putf(y, lw + 6 + k * cw, cw, attr, "%*s", cw - 1, cell);
+                snprintf(cell, sizeof cell, "%s%s%s", value,
+                         mark[0] ? " " : "", mark);
+            attr_t attr = verdict > 0 ? tui_attr(ROLE_BETTER)
+                          : verdict < 0 ? tui_attr(ROLE_WORSE) : A_NORMAL;
+            /* a UTF-8 mark is one column of several bytes */
+            int pad = cw - 1 + (int)(strlen(mark) > 1 ? strlen(mark) - 1 : 0);
+            tui_putf(y, lw + 6 + k * cw, cw, attr, "%*s", pad, cell);
         }
     }
 }
@@ -302,7 +325,17 @@ struct tui_screen *screen_compare_new(struct tui_app *app, int64_t run,
             return NULL;
         }
     }
+    struct run_info info;
+    struct facet_error err;
+    if (store_run_get(app->store, run, &info, &err) != FACET_OK ||
+        objectives_parse(info.objectives, s->objectives, &s->nobjectives,
+                         &err) != FACET_OK)
+        s->nobjectives = 0;  /* no verdicts, the values still show */
     s->maps = 1;
     load_maps(s, app);
+    s->width_m = s->height_m = 1;
+    for (int k = n - 1; k >= 0; k--)
+        if (s->has_map[k])
+            map_surface_size(&s->panels[k], &s->width_m, &s->height_m);
     return &s->base;
 }

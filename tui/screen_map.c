@@ -3,9 +3,12 @@
  * each panel coloured by type (FP/SP/DP) or by class (c toggles), a legend
  * with counts and areas, and a cursor over the panels that shows one
  * panel's class, type, k1, k2, K, H, area, deviation and cost. The view
- * pans with the cursor over grids larger than the screen, and z zooms
- * between one and two columns per panel. Panels come from
- * study_option_panels, which evaluates and stores them when missing.
+ * opens fitted to the screen: the whole grid at the surface's true aspect,
+ * a character standing for the panels it covers (map_model.h); z and Z
+ * zoom to one and two columns per panel, where the view pans with the
+ * cursor, and back. Deviations are in mm, as the threshold. Panels come
+ * from study_option_panels, which evaluates and stores them when
+ * missing.
  */
 #include <math.h>
 #include <stdio.h>
@@ -16,6 +19,7 @@
 #include "format.h"
 #include "keys.h"
 #include "input.h"
+#include "map_model.h"
 #include "store/study.h"
 #include "store/study_export.h"
 
@@ -26,7 +30,9 @@ struct map_screen {
     struct panelization panels;
     struct option_totals totals;
     int by_class;
-    int zoom;            /* columns per panel: 1 or 2; 0 = choose */
+    int zoom;            /* 0: fit the whole grid; 1, 2: columns per
+                            panel, one row per panel */
+    double width_m, height_m;  /* the surface's extent (map_model.h) */
     int ci, cj;          /* cursor cell */
     int left, top;       /* first column (i) and row (from v's top) shown */
     int exporting;       /* the export line is open */
@@ -39,7 +45,8 @@ static const struct tui_key_help map_help[] = {
     {"g / G", "first / last panel"},
     {"0 / $", "start / end of the row"},
     {"c, F2", "colour by type (FP/SP/DP) or by class"},
-    {"z", "zoom: one or two columns per panel"},
+    {"z", "zoom in: fit the screen, 1, then 2 columns per panel"},
+    {"Z", "zoom out, back to the whole grid fitted to the screen"},
     {"e, F9", "export: PREFIX.obj (+ .mtl), PREFIX.csv and PREFIX.svg; "
               "end the prefix with ! to overwrite"},
     {NULL, NULL},
@@ -91,8 +98,10 @@ static void draw_legend(struct map_screen *s, int y, int x, int width)
              t->area);
     y++;
     tui_putf(y++, x, width, A_NORMAL, " cost      %s USD", cost);
-    tui_putf(y++, x, width, A_NORMAL, " planarity %.4f m", t->planarity);
-    tui_putf(y++, x, width, A_NORMAL, " max dev.  %.4f m", t->max_deviation);
+    tui_putf(y++, x, width, A_NORMAL, " planarity %.4f m (sum)",
+             t->planarity);
+    tui_putf(y++, x, width, A_NORMAL, " max dev.  %.2f mm",
+             t->max_deviation * 1000);
     tui_putf(y++, x, width, A_NORMAL, " largest   %.2f m^2 (%s)",
              t->max_panel_area, t->feasible ? "feasible" : "infeasible");
 }
@@ -108,53 +117,83 @@ static void map_draw(struct tui_screen *base, struct tui_app *app,
              "| by %s", (long long)s->option.number, (long long)s->run.id,
              nu, nv, s->option.threshold_mm, s->by_class ? "class" : "type");
     int legend = width >= 70 ? 36 : 0;
-    int map_w = width - legend - 1, map_h = height - 5;
+    int map_w = width - legend - 2, map_h = height - 5;
     if (map_h < 1)
         map_h = 1;
-    int zoom = s->zoom ? s->zoom : nu * 2 <= map_w ? 2 : 1;
-    int cols = map_w / zoom;
-    if (cols < 1)
-        cols = 1;
-    /* pan so the cursor shows: rows count down from v's top */
-    int crow = nv - 1 - s->cj;
-    s->left = (int)table_model_scroll(s->left, s->ci, cols, nu);
-    s->top = (int)table_model_scroll(s->top, crow, map_h, nv);
-    for (int r = 0; r < map_h && s->top + r < nv; r++) {
-        int j = nv - 1 - (s->top + r);
-        for (int c = 0; c < cols && s->left + c < nu; c++) {
-            int i = s->left + c;
-            const struct panel *p = panel_at(s, i, j);
+    if (map_w < 1)
+        map_w = 1;
+    /* the picture: cols x lines characters; in the fit view each stands
+     * for its share of the grid, zoomed in each is a panel's column */
+    int cols, lines, zoom = s->zoom;
+    if (zoom == 0) {
+        map_fit_box(s->width_m, s->height_m, map_w, map_h, MAP_CELL_ASPECT,
+                    &cols, &lines);
+        s->left = s->top = 0;
+    } else {
+        cols = map_w / zoom < nu ? map_w / zoom : nu;
+        lines = map_h < nv ? map_h : nv;
+        if (cols < 1)
+            cols = 1;
+        /* pan so the cursor shows: rows count down from v's top */
+        s->left = (int)table_model_scroll(s->left, s->ci, cols, nu);
+        s->top = (int)table_model_scroll(s->top, nv - 1 - s->cj, lines, nv);
+    }
+    int cursor_c = -1, cursor_r = -1;
+    if (zoom == 0)
+        map_cell_of(&s->panels, cols, lines, s->ci, s->cj, &cursor_c,
+                    &cursor_r);
+    for (int r = 0; r < lines; r++) {
+        for (int c = 0; c < cols; c++) {
+            int value, here;
+            if (zoom == 0) {
+                value = map_cell_value(&s->panels, cols, lines, c, r,
+                                       s->by_class);
+                here = c == cursor_c && r == cursor_r;
+            } else {
+                int i = s->left + c, j = nv - 1 - (s->top + r);
+                const struct panel *p = panel_at(s, i, j);
+                value = p == NULL ? -1 : s->by_class ? (int)p->class
+                                                     : (int)p->type;
+                here = i == s->ci && j == s->cj;
+            }
             char text[8];
             attr_t attr;
-            if (p == NULL) {
+            if (value < 0) {
                 snprintf(text, sizeof text, "%s", app->glyphs->empty);
                 attr = tui_attr(ROLE_DIM);
             } else if (s->by_class) {
-                snprintf(text, sizeof text, "%c", class_letter[p->class]);
-                attr = tui_attr(ROLE_CLASS0 + (int)p->class);
+                snprintf(text, sizeof text, "%c", class_letter[value]);
+                attr = tui_attr(ROLE_CLASS0 + value);
             } else {
                 snprintf(text, sizeof text, "%c",
-                         panel_type_name(p->type)[0]);
-                attr = tui_attr(tui_type_role((int)p->type));
+                         panel_type_name((enum panel_type)value)[0]);
+                attr = tui_attr(tui_type_role(value));
             }
-            if (i == s->ci && j == s->cj)
+            if (here)
                 attr = A_REVERSE | A_BOLD;
-            int x = 1 + c * zoom;
+            int x = 1 + c * (zoom ? zoom : 1);
             tui_put(1 + r, x, 1, attr, text);
             if (zoom == 2)
-                tui_put(1 + r, x + 1, 1, attr, p == NULL ? " " : text);
+                tui_put(1 + r, x + 1, 1, attr, value < 0 ? " " : text);
         }
     }
+    /* what the view shows of the grid */
+    int shown_u = zoom ? cols : nu, shown_v = zoom ? lines : nv;
     if (legend)
         draw_legend(s, 1, width - legend, legend);
     /* the cursor's panel */
     int y = height - 4;
     tui_fill(y, 0, width, tui_attr(ROLE_DIM));
+    char scale[48];
+    if (zoom == 0)
+        snprintf(scale, sizeof scale, "fit, %.1fx%.1f panels/char",
+                 (double)nu / cols, (double)nv / lines);
+    else
+        snprintf(scale, sizeof scale, "%d char%s/panel", zoom,
+                 zoom > 1 ? "s" : "");
     tui_putf(y, 0, width, tui_attr(ROLE_HEADER),
-             " Panel (%d, %d)  u %d-%d of %d, v %d-%d of %d shown ", s->ci,
-             s->cj, s->left, (s->left + cols < nu ? s->left + cols : nu) - 1,
-             nu, nv - (s->top + map_h < nv ? s->top + map_h : nv),
-             nv - 1 - s->top, nv);
+             " Panel (%d, %d) | rows %d of %d, cols %d of %d shown | %s ",
+             s->ci, s->cj, shown_v, nv, shown_u, nu, scale);
     const struct panel *p = panel_at(s, s->ci, s->cj);
     if (p == NULL) {
         tui_put(y + 1, 1, width - 1, A_NORMAL,
@@ -256,7 +295,18 @@ static enum tui_result map_key(struct tui_screen *base, struct tui_app *app,
         s->by_class = !s->by_class;
         return RESULT_HANDLED;
     case 'z':
-        s->zoom = s->zoom == 1 ? 2 : 1;
+        if (s->zoom == 2)
+            tui_status(app, "zoom: 2 chars a panel is the closest; Z "
+                       "zooms out");
+        else
+            s->zoom++;
+        return RESULT_HANDLED;
+    case 'Z':
+        if (s->zoom == 0)
+            tui_status(app, "zoom: the whole grid shows already (fit); z "
+                       "zooms in");
+        else
+            s->zoom--;
         return RESULT_HANDLED;
     case '0':
         s->ci = 0;
@@ -328,5 +378,6 @@ struct tui_screen *screen_map_new(struct tui_app *app, int64_t run,
         return NULL;
     }
     s->cj = s->panels.nv - 1;  /* top left, as the map reads */
+    map_surface_size(&s->panels, &s->width_m, &s->height_m);
     return &s->base;
 }

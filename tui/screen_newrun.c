@@ -6,7 +6,11 @@
  * OBJ files, complete.h). F5 (or Enter on the last field) starts the
  * study in a worker thread (job.h) and opens the run's options table,
  * which fills in live while the status line shows a progress gauge.
- * Ctrl-X stops the run (it stays resumable). The other classification
+ * Under the form, before it starts: how many options the run will
+ * evaluate and about how long that takes at the rate of the earlier runs
+ * in the file. Ctrl-X stops the run (it stays resumable). "Like this"
+ * (screen_newrun_like) fills the form from a run and one of its options,
+ * with the space narrowed around the option. The other classification
  * settings are the paper's defaults; facet optimize takes them all.
  */
 #include <ctype.h>
@@ -18,6 +22,7 @@
 
 #include "app.h"
 #include "complete.h"
+#include "format.h"
 #include "input.h"
 #include "job.h"
 #include "keys.h"
@@ -48,6 +53,9 @@ struct newrun_screen {
     int64_t opened;    /* the run whose table was opened */
     struct tui_completion completion;  /* the last Tab's candidates */
     int listing;       /* they show under the form */
+    double rate;       /* options a second of earlier runs of the file
+                          (of this surface when there are), 0 unknown */
+    int rate_runs;     /* the runs it was taken from */
 };
 
 static const struct tui_key_help newrun_help[] = {
@@ -61,6 +69,8 @@ static const struct tui_key_help newrun_help[] = {
     {"(typing)", "edits the field; Ctrl-U clears it"},
     {NULL, NULL},
 };
+
+static void estimate_text(struct newrun_screen *s, char *out, size_t size);
 
 static void newrun_draw(struct tui_screen *base, struct tui_app *app,
                         int height, int width)
@@ -82,9 +92,11 @@ static void newrun_draw(struct tui_screen *base, struct tui_app *app,
     }
     int y = 3 + F_COUNT;
     tui_put(y, 1, width - 2, tui_attr(ROLE_DIM), field_hint[s->focus]);
+    char estimate[256];
+    estimate_text(s, estimate, sizeof estimate);
     tui_put(y + 1, 1, width - 2, tui_attr(ROLE_PARETO),
             app->job ? "A run is working (see the gauge below)."
-                     : "F5 starts the run.");
+                     : estimate);
     if (s->listing && s->focus == F_SURFACE) {
         const struct tui_completion *c = &s->completion;
         int top = y + 3, colw = 1;
@@ -223,6 +235,78 @@ static int build(struct newrun_screen *s, struct study_request *r,
     return FACET_OK;
 }
 
+/* The options the request will evaluate: the whole space for the
+ * exhaustive method, the population times the generations for NSGA-II
+ * (at most: a repeated option is not evaluated again), the evaluations
+ * asked of the random one. */
+static uint64_t options_of(const struct study_request *r)
+{
+    const struct optimize_settings *o = &r->settings;
+    switch (o->method) {
+    case METHOD_EXHAUSTIVE: return design_space_size(&o->space);
+    case METHOD_NSGA2:
+        return (uint64_t)o->population * (uint64_t)o->generations;
+    default: return (uint64_t)o->evaluations;
+    }
+}
+
+/* "336 options (exhaustive), about 0.6 s at 560/s (2 earlier runs)", or
+ * why the form cannot start. */
+static void estimate_text(struct newrun_screen *s, char *out, size_t size)
+{
+    struct study_request r;
+    struct facet_error err;
+    if (build(s, &r, &err) != FACET_OK) {
+        snprintf(out, size, "Not ready: %.200s", err.message);
+        return;
+    }
+    uint64_t n = options_of(&r);
+    char count[32], time[32];
+    tui_fmt_number(count, sizeof count, (double)n, 0, 1);
+    const char *method = r.settings.method == METHOD_EXHAUSTIVE
+                             ? "exhaustive"
+                             : r.settings.method == METHOD_NSGA2
+                                   ? "nsga2, at most" : "random";
+    if (s->rate > 0) {
+        tui_fmt_elapsed(time, sizeof time, (double)n / s->rate);
+        snprintf(out, size, "F5 starts: %s options (%s), about %s at %.0f/s "
+                 "(%d earlier run%s)", count, method, time, s->rate,
+                 s->rate_runs, s->rate_runs == 1 ? "" : "s");
+    } else {
+        snprintf(out, size, "F5 starts: %s options (%s); no earlier run in "
+                 "this file to time them by", count, method);
+    }
+}
+
+/* The rate of the file's finished runs, of this surface where there are
+ * any. */
+static void measure_rate(struct newrun_screen *s, struct tui_app *app,
+                         const char *surface)
+{
+    struct run_info *runs;
+    size_t n;
+    struct facet_error err;
+    s->rate = 0;
+    s->rate_runs = 0;
+    if (store_run_list(app->store, &runs, &n, &err) != FACET_OK)
+        return;
+    for (int same = 1; same >= 0 && s->rate_runs == 0; same--) {
+        double options = 0, seconds = 0;
+        for (size_t k = 0; k < n; k++) {
+            if (runs[k].elapsed <= 0 || runs[k].options <= 0 ||
+                (same && (surface == NULL ||
+                          strcmp(runs[k].surface_path, surface) != 0)))
+                continue;
+            options += (double)runs[k].options;
+            seconds += runs[k].elapsed;
+            s->rate_runs++;
+        }
+        if (seconds > 0)
+            s->rate = options / seconds;
+    }
+    free(runs);
+}
+
 static void start(struct newrun_screen *s, struct tui_app *app)
 {
     if (app->job != NULL) {
@@ -331,6 +415,7 @@ struct tui_screen *screen_newrun_new(struct tui_app *app,
         c.sp_as_fp ? "yes" : "no", area, ""};
     for (int f = 0; f < F_COUNT; f++)
         tui_input_set(&s->field[f], defaults[f]);
+    measure_rate(s, app, surface_path);
     if (surface_path) {
         tui_input_set(&s->field[F_SURFACE], surface_path);
         s->focus = F_UNITS;
@@ -338,4 +423,46 @@ struct tui_screen *screen_newrun_new(struct tui_app *app,
             tui_error(app, "%s: cannot read it", surface_path);
     }
     return &s->base;
+}
+
+struct tui_screen *screen_newrun_like(struct tui_app *app,
+                                      const struct run_info *run,
+                                      const struct option_row *option)
+{
+    struct tui_screen *base = screen_newrun_new(app, run->surface_path);
+    if (base == NULL)
+        return NULL;
+    struct newrun_screen *s = (struct newrun_screen *)base;
+    char text[128];
+    tui_input_set(&s->field[F_UNITS], run->units);
+    /* the grid two panels either way, never below one panel */
+    int u0 = option->nu - 2 > 1 ? option->nu - 2 : 1;
+    int v0 = option->nv - 2 > 1 ? option->nv - 2 : 1;
+    snprintf(text, sizeof text, "%d:%d", u0, option->nu + 2);
+    tui_input_set(&s->field[F_U], text);
+    snprintf(text, sizeof text, "%d:%d", v0, option->nv + 2);
+    tui_input_set(&s->field[F_V], text);
+    /* the threshold one step of the run either way (0.5 mm when it had
+     * none), in quarter steps */
+    double t = option->threshold_mm;
+    double step = run->threshold_step_mm > 0 ? run->threshold_step_mm : 0.5;
+    double lo = t - step > 0 ? t - step : 0;
+    snprintf(text, sizeof text, "%g:%g:%g", lo, t + step, step / 4);
+    tui_input_set(&s->field[F_THRESHOLD], text);
+    tui_input_set(&s->field[F_METHOD], "auto");
+    snprintf(text, sizeof text, "%llu", (unsigned long long)run->seed);
+    tui_input_set(&s->field[F_SEED], text);
+    snprintf(text, sizeof text, "%g,%g,%g", run->price[TYPE_FP],
+             run->price[TYPE_SP], run->price[TYPE_DP]);
+    tui_input_set(&s->field[F_PRICES], text);
+    tui_input_set(&s->field[F_SP_AS_FP], run->sp_as_fp ? "yes" : "no");
+    snprintf(text, sizeof text, "%g", run->max_panel_area);
+    tui_input_set(&s->field[F_MAX_AREA], text);
+    snprintf(text, sizeof text, "like No. %lld of run %lld",
+             (long long)option->number, (long long)run->id);
+    tui_input_set(&s->field[F_NAME], text);
+    s->focus = F_U;
+    tui_status(app, "like No. %lld: U, V and t narrowed around it; F5 "
+               "starts", (long long)option->number);
+    return base;
 }

@@ -19,6 +19,7 @@
 #include "input.h"
 #include "keys.h"
 #include "layout.h"
+#include "store/study_export.h"
 
 struct options_screen {
     struct tui_screen base;
@@ -36,9 +37,9 @@ struct options_screen {
     int nkeys;
     int editing;                 /* the filter line is open */
     struct tui_input filter;
-    int64_t marks[64];           /* options marked for Compare */
-    int nmarks;
     int detail;                  /* the detail pane is shown */
+    int exporting;               /* the marked options' CSV line is open */
+    struct tui_input export_to;
     struct timespec last_refresh;
     int64_t runs_finished;       /* app->runs_finished when last seen */
     int64_t job_samples;         /* app->job_samples when last seen */
@@ -66,6 +67,11 @@ static const struct tui_key_help options_help[] = {
     {"  j/k, Space", "  (chooser) move; show / hide the column"},
     {"  J/K, +/-", "  (chooser) move the column down / up the order"},
     {"  r, Enter/q", "  (chooser) default columns; close"},
+    {"t", "statistics of the options shown: min/median/max/mean, per U, "
+          "V, t, class"},
+    {"T", "per generation: options and the best found so far (NSGA-II)"},
+    {"L", "like this: a New run around the option (narrower space)"},
+    {"E", "export the marked options (every column) as CSV"},
     {"d", "show / hide the detail pane"},
     {"r", "reload from the database"},
     {NULL, NULL},
@@ -93,10 +99,7 @@ static int cursor_place(const struct options_screen *s)
 
 static int is_marked(const struct options_screen *s, int64_t number)
 {
-    for (int k = 0; k < s->nmarks; k++)
-        if (s->marks[k] == number)
-            return 1;
-    return 0;
+    return table_model_marked(&s->model, number);
 }
 
 /* --- drawing --- */
@@ -204,9 +207,9 @@ static int detail_lines(const struct option_row *o, char lines[][160])
              "DP %zu %.1f m^2", t->panels, area, t->count[TYPE_FP],
              t->area_of[TYPE_FP], t->count[TYPE_SP], t->area_of[TYPE_SP],
              t->count[TYPE_DP], t->area_of[TYPE_DP]);
-    snprintf(lines[3], 160, "planarity %.4f m, max deviation %.4f m, "
+    snprintf(lines[3], 160, "planarity %.4f m, max deviation %.2f mm, "
              "P_dist %.3g m^4, crowding %.3g", t->planarity,
-             t->max_deviation, t->p_dist, o->crowding);
+             t->max_deviation * 1000, t->p_dist, o->crowding);
     return 4;
 }
 
@@ -328,9 +331,9 @@ static void options_draw(struct tui_screen *base, struct tui_app *app,
     if (m->browse.pareto_only)
         x += tui_put(1, x, room - x, tui_attr(ROLE_PARETO),
                      "  Pareto only");
-    if (s->nmarks)
+    if (m->nmarks)
         tui_putf(1, x, room - x, tui_attr(ROLE_MARKED), "  %d marked",
-                 s->nmarks);
+                 m->nmarks);
 
     int columns = tui_columns_width(&app->columns);
     if (columns < 80)
@@ -504,26 +507,62 @@ static void toggle_mark(struct options_screen *s, struct tui_app *app)
     if (o == NULL)
         return;
     int64_t number = o->number;
-    for (int k = 0; k < s->nmarks; k++)
-        if (s->marks[k] == number) {
-            memmove(s->marks + k, s->marks + k + 1,
-                    (size_t)(s->nmarks - k - 1) * sizeof s->marks[0]);
-            s->nmarks--;
-            /* said, so that Space on an option marked before (the knee
-             * after K) is not a silent unmark */
-            tui_status(app, "unmarked No. %lld (%d marked; Space marks it "
-                       "again)", (long long)number, s->nmarks);
-            return;
-        }
-    if (s->nmarks == 64) {
-        tui_error(app, "at most 64 marks");
+    if (table_model_marked(&s->model, number)) {
+        table_model_set_mark(&s->model, number, 0);
+        /* said, so that Space on an option marked before (the knee
+         * after K) is not a silent unmark */
+        tui_status(app, "unmarked No. %lld (%d marked; Space marks it "
+                   "again)", (long long)number, s->model.nmarks);
         return;
     }
-    s->marks[s->nmarks++] = number;
+    if (table_model_set_mark(&s->model, number, 1) < 0) {
+        tui_error(app, "at most %d marks", TABLE_MARKS_MAX);
+        return;
+    }
     tui_status(app, "marked No. %lld (%d marked%s)", (long long)number,
-               s->nmarks, s->nmarks >= 2 ? "; c compares" : "");
+               s->model.nmarks, s->model.nmarks >= 2 ? "; c compares" : "");
     struct facet_error err;
     table_model_select(&s->model, s->model.selected + 1, &err);
+}
+
+/* E: the marked options (or the selected one) to a CSV file. */
+static void export_marks_open(struct options_screen *s, struct tui_app *app)
+{
+    if (s->model.nmarks == 0) {
+        tui_error(app, "export: mark options with Space first");
+        return;
+    }
+    char name[128];
+    snprintf(name, sizeof name, "facet-run%lld-marked.csv",
+             (long long)s->run.id);
+    tui_input_set(&s->export_to, name);
+    s->exporting = 1;
+    tui_prompt(app, "Export marked to (CSV):", &s->export_to);
+}
+
+static enum tui_result export_marks_key(struct options_screen *s,
+                                        struct tui_app *app, int key)
+{
+    if (tui_prompt_key(app, &s->export_to, &s->exporting, key) !=
+        INPUT_DONE)
+        return RESULT_HANDLED;
+    char path[TUI_INPUT_MAX];
+    snprintf(path, sizeof path, "%s", s->export_to.text);
+    size_t n = strlen(path);
+    int force = n > 0 && path[n - 1] == '!';
+    if (force)
+        path[--n] = '\0';
+    struct facet_error err;
+    if (n == 0)
+        tui_error(app, "export: give a file name");
+    else if (study_export_options_csv(app->store, s->run.id, s->model.marks,
+                                      (size_t)s->model.nmarks, path, force,
+                                      &err) != FACET_OK)
+        tui_error(app, "export: %s", err.message);
+    else
+        tui_status(app, "wrote %d marked options to %s", s->model.nmarks,
+                   path);
+    return RESULT_HANDLED;
 }
 
 static enum tui_result filter_key(struct options_screen *s,
@@ -620,6 +659,8 @@ static enum tui_result options_key(struct tui_screen *base,
     columns_update(s, app);
     if (s->editing)
         return filter_key(s, app, key);
+    if (s->exporting)
+        return export_marks_key(s, app, key);
     if (s->choosing)
         return chooser_key(s, app, key);
     switch (key) {
@@ -666,17 +707,17 @@ static enum tui_result options_key(struct tui_screen *base,
         toggle_mark(s, app);
         return RESULT_HANDLED;
     case 'u':
-        tui_status(app, "%d mark%s cleared", s->nmarks,
-                   s->nmarks == 1 ? "" : "s");
-        s->nmarks = 0;
+        tui_status(app, "%d mark%s cleared", m->nmarks,
+                   m->nmarks == 1 ? "" : "s");
+        m->nmarks = 0;
         return RESULT_HANDLED;
     case 'c': case KEY_F(7):
-        if (s->nmarks < 2) {
+        if (m->nmarks < 2) {
             tui_error(app, "mark 2 to 4 options with Space first");
             return RESULT_HANDLED;
         }
-        tui_push(app, screen_compare_new(app, s->run.id, s->marks,
-                                         s->nmarks > 4 ? 4 : s->nmarks));
+        tui_push(app, screen_compare_new(app, s->run.id, m->marks,
+                                         m->nmarks > 4 ? 4 : m->nmarks));
         return RESULT_HANDLED;
     case 'm': case KEY_F(8): case '\r': case '\n': case KEY_ENTER:
         if (o != NULL)
@@ -684,6 +725,16 @@ static enum tui_result options_key(struct tui_screen *base,
         return RESULT_HANDLED;
     case 'x': case KEY_F(5):
         tui_push(app, screen_scatter_new(app, m));
+        return RESULT_HANDLED;
+    case 't': case 'T':
+        tui_push(app, screen_stats_new(app, m, key == 'T' ? 5 : 0));
+        return RESULT_HANDLED;
+    case 'L':
+        if (o != NULL)
+            tui_push(app, screen_newrun_like(app, &s->run, o));
+        return RESULT_HANDLED;
+    case 'E':
+        export_marks_open(s, app);
         return RESULT_HANDLED;
     case 'd':
         s->detail = !s->detail;

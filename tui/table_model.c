@@ -37,6 +37,33 @@ void table_model_close(struct table_model *m)
     memset(m, 0, sizeof *m);
 }
 
+int table_model_marked(const struct table_model *m, int64_t number)
+{
+    for (int k = 0; k < m->nmarks; k++)
+        if (m->marks[k] == number)
+            return 1;
+    return 0;
+}
+
+int table_model_set_mark(struct table_model *m, int64_t number, int on)
+{
+    for (int k = 0; k < m->nmarks; k++)
+        if (m->marks[k] == number) {
+            if (on)
+                return 1;
+            memmove(m->marks + k, m->marks + k + 1,
+                    (size_t)(m->nmarks - k - 1) * sizeof m->marks[0]);
+            m->nmarks--;
+            return 0;
+        }
+    if (!on)
+        return 0;
+    if (m->nmarks == TABLE_MARKS_MAX)
+        return -1;
+    m->marks[m->nmarks++] = number;
+    return 1;
+}
+
 const struct option_row *table_model_row(const struct table_model *m,
                                          int64_t position)
 {

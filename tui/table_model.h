@@ -29,6 +29,9 @@
 #define TABLE_POSITION_CAP 2000
 #define TABLE_FILTER_FIRST 2000
 
+/* Options a table can hold marked (for Compare and export). */
+#define TABLE_MARKS_MAX 64
+
 struct table_model {
     struct store *store;          /* borrowed */
     struct option_browse browse;  /* run, Pareto-only, filter, keys */
@@ -46,6 +49,10 @@ struct table_model {
     struct option_row *rows;      /* rows[0..nrows): window */
     int64_t nrows;
     int64_t fetches;              /* store queries made (tests, bench) */
+    int64_t marks[TABLE_MARKS_MAX];  /* marked option numbers, in the
+                                        order marked: the table's and the
+                                        scatter's, one set */
+    int nmarks;
 };
 
 /* Opens the model on run of store (by number, no filter) with the
@@ -127,6 +134,14 @@ int table_model_count_exact(struct table_model *m, struct facet_error *err);
  * error (err filled). */
 int table_model_count_step(struct table_model *m, int64_t rows,
                            struct facet_error *err);
+
+/* Whether option number is marked. */
+int table_model_marked(const struct table_model *m, int64_t number);
+
+/* Marks option number (on non-zero) or unmarks it. Returns 1 when it is
+ * marked afterwards, 0 when not, -1 when the marks are full
+ * (TABLE_MARKS_MAX) and it could not be marked. */
+int table_model_set_mark(struct table_model *m, int64_t number, int on);
 
 /* Whether option passes the model's filter and Pareto-only setting. */
 int table_model_shows(const struct table_model *m,

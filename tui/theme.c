@@ -36,6 +36,15 @@ static const struct role_style styles[ROLE_COUNT] = {
     [ROLE_CLASS0 + 6] = {COLOR_WHITE, COLOR_RED, 0, 0},
     [ROLE_CLASS0 + 7] = {COLOR_RED, COLOR_WHITE, 0, 0},
     [ROLE_GAUGE] = {COLOR_BLACK, COLOR_GREEN, 0, A_REVERSE},
+    /* better and worse in blue and yellow, which readers who cannot tell
+     * red from green tell apart; the glyphs say it without colour */
+    [ROLE_BETTER] = {COLOR_CYAN, -1, A_BOLD, A_BOLD},
+    [ROLE_WORSE] = {COLOR_YELLOW, -1, 0, A_UNDERLINE},
+    /* a sequential scale, dark blue to yellow as viridis runs */
+    [ROLE_SCALE0 + 0] = {COLOR_BLUE, -1, A_BOLD, A_DIM},
+    [ROLE_SCALE0 + 1] = {COLOR_CYAN, -1, 0, A_NORMAL},
+    [ROLE_SCALE0 + 2] = {COLOR_GREEN, -1, A_BOLD, A_NORMAL},
+    [ROLE_SCALE0 + 3] = {COLOR_YELLOW, -1, A_BOLD, A_BOLD},
 };
 
 static attr_t attrs[ROLE_COUNT];
@@ -70,12 +79,12 @@ enum tui_role tui_type_role(int type)
 static const struct tui_glyphs utf8_glyphs = {
     "\u25c6", "\u2605", "\u2713", "\u25b2", "\u25bc",
     {"\u00b7", "\u2022", "\u25cf"}, "\u2500", "\u2500", "\u2502", "\u2514",
-    "\u2588", "\u2591", "\u00b7",
+    "\u2588", "\u2591", "\u00b7", "\u2713", "\u2717",
 };
 
 static const struct tui_glyphs ascii_glyphs = {
     "*", "K", "+", "^", "v", {".", "o", "O"}, "-", "-", "|", "+", "#", ".",
-    " ",
+    " ", "v", "x",
 };
 
 const struct tui_glyphs *tui_glyphs_for(int utf8)

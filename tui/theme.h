@@ -27,7 +27,10 @@ enum tui_role {
     ROLE_DIM,          /* axes, grid, hidden things */
     ROLE_CLASS0,       /* the 8 panel classes, ROLE_CLASS0 + class */
     ROLE_GAUGE = ROLE_CLASS0 + 8,
-    ROLE_COUNT
+    ROLE_BETTER,       /* a difference for the better (Compare) */
+    ROLE_WORSE,        /* ... for the worse */
+    ROLE_SCALE0,       /* 4 levels of a colour scale, low to high */
+    ROLE_COUNT = ROLE_SCALE0 + 4
 };
 
 /* Sets the roles up for this terminal: colours when colour is non-zero
@@ -52,6 +55,7 @@ struct tui_glyphs {
     const char *hline, *vline, *corner;
     const char *gauge_full, *gauge_empty;
     const char *empty;      /* a grid cell with no panel */
+    const char *better, *worse;  /* a difference's direction (Compare) */
 };
 
 /* The glyphs for a UTF-8 locale (utf8 non-zero) or plain ASCII. */

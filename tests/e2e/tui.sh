@@ -136,10 +136,17 @@ check "c colours by class" 'by class'
 check "class legend" 'concave feature +40 '
 keys q g Space Space c
 check "Space marks and c compares" '^ Compare 2 options of run 1'
-check "compare shows differences to the first" 'cost +USD +1,551,317 +1,551,317'
-check "compare shows the panel maps under the metrics" '^ panel maps +8 x 8 +8 x 8'
-check "the maps are drawn one character per panel" '^ F FP +[FSD]{8} +[FSD]{8}$'
+check "compare shows differences to the first" 'cost +USD +min +1,551,317 +1,551,317'
+check "compare shows the panel maps under the metrics" '^ panel maps, one scale +8 x 8 +8 x 8'
+maps=$(screen | grep -E '^ F FP +[FSD]+ +[FSD]+ *$' | awk '{print length($3), length($4)}')
+if [ -n "$maps" ] && [ "$(echo $maps | tr ' ' '\n' | sort -u | wc -l)" = 1 ]; then
+    pass "the maps are drawn at one size ($maps)"
+else
+    echo "not ok - the maps are drawn at one size ($maps)"
+    screen | sed 's/^/  screen: /'
+fi
 keys m
+check "m hides the maps: the metrics take the room" '^ crowding '
 check_not "m hides the maps" '^ panel maps'
 keys m
 keys q
@@ -170,7 +177,7 @@ check "200x60: [ raises the low edge of cost" '^ filter cost >= 1[0-9]{6}$'
 keys q C G Space Enter
 check "200x60: a chosen column shows beside the default ones" 'rank +gen'
 keys g Space j Space c
-check "200x60: compare shows every metric and the maps" '^ panel maps +[0-9]+ x [0-9]+ +[0-9]+ x [0-9]+'
+check "200x60: compare shows every metric and the maps" '^ panel maps, one scale +[0-9]+ x [0-9]+ +[0-9]+ x [0-9]+'
 i=0; while [ ! -s "$WORK/pid" ] && [ $i -lt $POLLS ]; do sleep 0.05; i=$((i + 1)); done
 kill -TERM "$(cat "$WORK/pid")"
 check_exit "SIGTERM ends it with the terminal restored"

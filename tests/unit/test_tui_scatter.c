@@ -101,9 +101,70 @@ static void test_steps(void **state)
     assert_true(isnan(lo) && isnan(hi));
 }
 
+/* The next smaller step of the 1-2-5 series. */
+static double smaller_step(double d)
+{
+    double e = pow(10, floor(log10(d) + 1e-9)), m = d / e;
+    return m > 4 ? 2 * e : m > 1.5 ? e : 0.5 * e;
+}
+
+/* How many multiples of d lie in [min, max], counted one by one. */
+static int multiples(double min, double max, double d)
+{
+    int n = 0;
+    for (double t = floor(min / d) - 1; t * d <= max + d; t++) {
+        double v = t * d;
+        if (v >= min - fabs(d) * 1e-9 && v <= max + fabs(d) * 1e-9)
+            n++;
+    }
+    return n;
+}
+
+static void test_ticks(void **state)
+{
+    (void)state;
+    double ticks[16], step;
+    /* the demo's cost axis: 1,045,215 .. 1,316,466 in at most 6 ticks */
+    int n = scatter_ticks(1045215, 1316466, 6, ticks, &step);
+    assert_int_equal(n, 6);
+    assert_true(step == 50000);
+    assert_true(ticks[0] == 1050000 && ticks[5] == 1300000);
+    assert_int_equal(scatter_ticks(3, 3, 5, ticks, &step), 1);
+    assert_true(ticks[0] == 3 && step == 0);
+    assert_int_equal(scatter_ticks(NAN, 3, 5, ticks, &step), 0);
+    srand(7);
+    for (int k = 0; k < 3000; k++) {
+        double a = (rand() / (double)RAND_MAX - 0.3) *
+                   pow(10, rand() % 12 - 5);
+        double b = a + rand() / (double)RAND_MAX * pow(10, rand() % 10 - 4);
+        int max = 1 + rand() % 15;
+        n = scatter_ticks(a, b, max, ticks, &step);
+        if (!(b > a))
+            continue;
+        assert_true(n >= 0 && n <= max);
+        /* a step of the 1-2-5 series */
+        double e = pow(10, floor(log10(step) + 1e-9)), m = step / e;
+        assert_true(fabs(m - 1) < 1e-9 || fabs(m - 2) < 1e-9 ||
+                    fabs(m - 5) < 1e-9);
+        /* every multiple in the range, once, ascending */
+        assert_int_equal(n, multiples(a, b, step));
+        for (int t = 0; t < n; t++) {
+            /* rounding of a multiple far from 0: a few ulps of it */
+            double tol = step * 1e-6 + fabs(ticks[t]) * 1e-12;
+            assert_true(ticks[t] >= a - tol && ticks[t] <= b + tol);
+            assert_true(fabs(ticks[t] - round(ticks[t] / step) * step) < tol);
+            if (t > 0)
+                assert_true(fabs(ticks[t] - ticks[t - 1] - step) < tol);
+        }
+        /* the smallest such step: the next smaller gives too many */
+        assert_true(multiples(a, b, smaller_step(step)) > max);
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_ticks),
         cmocka_unit_test(test_cells),
         cmocka_unit_test(test_front),
         cmocka_unit_test(test_steps),

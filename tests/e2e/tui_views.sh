@@ -1,0 +1,197 @@
+#!/usr/bin/env bash
+# End-to-end: the workbench's views of issue 12 (items 7, 8, 9, 11), driven
+# in tmux at 80x24 over the paper's space on the example roof (336
+# options, knee 324 at 40 x 38) and a small NSGA-II run: the panel map
+# fitted to the screen and its zoom levels, deviations in mm; Compare's
+# one-scale maps, verdicts and flags; the scatter's glyphs, ticks, metric
+# picker, colour, marks and filtered export; the Statistics screen against
+# sqlite3 and sort, per generation; New run's option count, "like this";
+# the marked options' CSV. Figures are checked against sqlite3 and
+# arithmetic, never against Facet's own earlier output. Every step polls
+# the captured screen (no fixed sleeps).
+. "$(dirname "$0")/lib.sh"
+
+. "$(dirname "$0")/tui_lib.sh"
+
+if ! command -v sqlite3 >/dev/null; then
+    echo "skip - every view check (sqlite3 is not installed)"
+    exit 0
+fi
+"$FACET" example roof -o "$WORK/roof.obj" >/dev/null || exit 1
+"$FACET" optimize "$WORK/roof.obj" --db "$WORK/v.db" --u 20:40 --v 35:50 \
+    --threshold 3 --sp-as-fp --max-panel-area 1.92 >/dev/null 2>&1 || exit 1
+"$FACET" optimize "$WORK/roof.obj" --db "$WORK/v.db" --method nsga2 \
+    --pop 24 --gens 8 --u 20:40 --v 35:50 --threshold 1:5 --sp-as-fp \
+    --max-panel-area 1.92 >/dev/null 2>&1 || exit 1
+q() { sqlite3 "$WORK/v.db" "$1"; }
+knee=$(q "select number from options where run = 1 and knee")
+grid=$(q "select nu || ' x ' || nv from options where run = 1 and knee")
+rows=$(q "select nv from options where run = 1 and knee")
+cols=$(q "select nu from options where run = 1 and knee")
+# thousands separators, as the workbench writes money
+money() { python3 -c "import sys; print(f'{round(float(sys.argv[1])):,}')" "$1"; }
+# check_not NAME PATTERN: the screen (already settled) lacks PATTERN.
+check_not() {
+    if screen | grep -qE -- "$2"; then
+        echo "not ok - $1 (screen has: $2)"
+        screen | sed 's/^/  screen: /'
+    else
+        pass "$1"
+    fi
+}
+# check_file NAME TEST...: passes when the test command succeeds.
+check_file() {
+    local name=$1
+    shift
+    if "$@"; then pass "$name"; else echo "not ok - $name"; fi
+}
+
+start 80 24 -- v.db
+check "the runs list both runs" '^ +2 done +nsga2'
+keys g Enter
+check "run 1 opens" "^ Run 1 .*knee $knee"
+
+# --- 8. panel map: the whole grid at 80x24, zoom levels, mm ---
+keys K Enter
+check "the map opens on the knee ($grid)" "^ Panel map: option $knee of run 1 \| grid $grid"
+check "8: the map fits the whole grid at 80x24 ($rows of $rows rows)" "rows $rows of $rows, cols $cols of $cols shown \| fit"
+maxdev=$(q "select printf('%.2f', max_deviation * 1000) from options where run = 1 and number = $knee")
+check "8: the legend's max deviation is in mm ($maxdev mm)" "max dev\. +$maxdev mm"
+check "8: the panel's deviation is in mm too" 'deviation [0-9.]+ mm'
+keys z
+check "8: z zooms to one character a panel (17 rows show)" "rows 17 of $rows, cols $cols of $cols shown \| 1 char/panel"
+keys z
+check "8: z again: two characters a panel" "rows 17 of $rows, cols [0-9]+ of $cols shown \| 2 chars/panel"
+keys z
+check "8: a zoom that cannot go further says so" 'zoom: 2 chars a panel is the closest'
+keys Z Z Z
+check "8: nor can the fit view zoom out" 'zoom: the whole grid shows already \(fit\)'
+keys q
+
+# --- 7. compare: one scale, verdicts, flags, no meaningless difference ---
+keys K Space Space Space c
+check "7: the knee is flagged in its header" "No\. $knee knee"
+check "7: the option number has no difference" "^ No\. +$knee +[0-9]+ +[0-9]+ *$"
+second=$(screen | sed -n 's/^ No\. *[0-9]* *\([0-9]*\) .*/\1/p')
+c2=$(money "$(q "select cost from options where run = 1 and number = $second")")
+check "7: a dearer option is marked worse on cost (No. $second, $c2 USD)" "^ cost +USD +min .*$c2( \([-+0-9,]+\))? ✗"
+check "7: the objectives are named with their direction" '^ planarity +m +min '
+check_not "7: a metric that is not an objective gets no verdict" '^ FP area .*[✓✗]'
+maps=$(screen | grep -E '^ F FP +[FSD]+ +[FSD]+ +[FSD]+ *$' | awk '{print length($3), length($4), length($5)}')
+check_file "7: the three maps are drawn at one scale ($maps)" \
+    test -n "$maps" -a "$(echo "$maps" | tr ' ' '\n' | sort -u | wc -l)" = 1
+keys d
+check "7: d shows the differences alone" '^ cost +USD +min +[0-9,]+ +\+[0-9,]+ ✗'
+keys q u
+
+# --- 9. scatter ---
+keys x
+check "9: the scatter opens" '^ Scatter: cost vs planarity, size dp_area \| 336 points'
+check "9: the legend names the glyphs drawn" '◆ Pareto ★ knee ✓ marked'
+plot() { screen | sed -n '3,20p'; }
+if plot | grep -q '◆' && plot | grep -q '★'; then
+    pass "9: Pareto points are drawn as the legend's ◆ and the knee as ★"
+else
+    echo "not ok - 9: Pareto points are drawn as the legend's ◆ and the knee as ★"
+    screen | sed 's/^/  screen: /'
+fi
+check "9: the cost axis has round ticks" '^ 1,[0-9]{2}0,000 \+'
+check "9: the planarity axis has round ticks" '^m +8 +10 +12 +14 +16 +18'
+keys M j j j j j y
+check "9: the metric picker puts max deviation on the y axis" '^ Scatter: max_deviation vs planarity'
+keys k k k x
+check "9: ... and, still open, DP area on the x axis" '^ Scatter: max_deviation vs dp_area'
+keys k y q
+check "9: cost back on y, the picker closed" '^ Scatter: cost vs dp_area'
+check_not "9: the picker is closed" 'Metrics: j/k choose'
+keys c
+check "9: c colours the points by a fourth metric" 'colour planarity [0-9.]+ +[0-9.]+'
+keys K
+check "9: K goes to the knee" "^ No\. $knee "
+keys Space
+check "9: Space marks the option, as in the table" "option $knee marked \(1 marked\)"
+check "9: the title counts the marks" '\| 1 marked'
+keys / C-u 'cost < 1.1M' Enter
+want=$(q "select count(*) from options where run = 1 and cost < 1100000")
+check "9: the filter narrows the plot ($want points)" "\| $want points"
+keys e C-u "$WORK/filtered.svg" Enter
+check "9: e writes the plot" "wrote $WORK/filtered.svg"
+got=$(grep -c '<circle' "$WORK/filtered.svg")
+check_file "9: the SVG holds the filtered options only ($got circles, want $want)" \
+    test "$got" = "$want"
+keys q
+check "9: the table shows the scatter's mark" '1 marked'
+keys / C-u Enter
+
+# --- 11. statistics, per generation, like this, export of the marks ---
+keys / C-u 'nu >= 30' Enter t
+n=$(q "select count(*) from options where run = 1 and nu >= 30")
+check "11: t opens the statistics of the filtered options ($n)" "^ Statistics: run 1 \| $n options .*filter nu >= 30"
+med=$(q "select planarity from options where run = 1 and nu >= 30" | sort -g |
+      awk '{v[NR] = $1} END {m = NR % 2 ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2; printf "%.4f", m}')
+lo=$(q "select planarity from options where run = 1 and nu >= 30" | sort -g | head -1 | awk '{printf "%.4f", $1}')
+hi=$(q "select planarity from options where run = 1 and nu >= 30" | sort -g | tail -1 | awk '{printf "%.4f", $1}')
+check "11: planarity min/median/max of the filtered set ($lo $med $hi)" "^ planarity +m +$n +$lo +$med +$hi "
+cmin=$(money "$(q "select cost from options where run = 1 and nu >= 30" | sort -g | head -1)")
+check "11: cost's least value ($cmin)" "^ cost +USD +$n +$cmin "
+keys 2
+p40=$(q "select count(*) from options where run = 1 and nu = 40 and rank = 1")
+o40=$(q "select count(*) from options where run = 1 and nu = 40")
+check "11: options per U: U = 40 has $o40, $p40 of them Pareto" "^ 40 +$o40 .* $p40 +$o40 "
+keys 5
+flat=$(q "select count(*) from options where run = 1 and nu >= 30 and flat_count > 0")
+check "11: per class: $flat options have a flat panel" "^ flat +$flat "
+keys q / C-u Enter q
+check "back on the runs" '^ Facet runs'
+keys j Enter T
+g0=$(q "select count(*) from options where run = 2 and generation = 0")
+ng=$(q "select count(distinct generation) from options where run = 2")
+check "11: T shows the NSGA-II run per generation ($g0 in generation 0)" "^ 0 +$g0 "
+last=$((ng - 1))
+best=$(money "$(q "select min(cost) from options where run = 2")")
+check "11: the last generation holds the run's best cost ($best)" "^ $last +[0-9]+ .* $best "
+keys q q g Enter K L
+u=$(q "select (nu - 2) || ':' || (nu + 2) from options where run = 1 and knee")
+v=$(q "select (nv - 2) || ':' || (nv + 2) from options where run = 1 and knee")
+check "11: L opens a New run like the knee, U $u" "U \(panels\) +$u"
+check "11: ... V $v" "V \(panels\) +$v"
+check "11: ... threshold 3 +- 0.5 mm" 'Threshold \(mm\) +2\.5:3\.5:0\.125'
+check "11: the form counts the options before it starts (5 x 5 x 9 = 225)" 'F5 starts: 225 options \(exhaustive\), about [0-9.]+ (s|m)'
+# (one Esc at a time: Esc and a key at once read as Alt and that key)
+keys Escape
+check "Esc leaves the form" '^ Run 1 '
+keys Escape
+check "Esc again: the runs" '^ Facet runs'
+keys a
+check "11: the blank form says what it lacks" 'Not ready: name the surface'
+keys roof.obj
+check "11: the form counts the paper's space (21 x 16 = 336)" 'F5 starts: 336 options \(exhaustive\), about [0-9.]+ (s|m)'
+keys Escape
+check "Esc leaves the blank form" '^ Facet runs'
+keys g Enter Space Space E C-u "$WORK/marked.csv" Enter
+check "11: E writes the marked options" "wrote 2 marked options to $WORK/marked.csv"
+m1=$(q "select number from options where run = 1 order by cost, number limit 1")
+m2=$(q "select number from options where run = 1 order by cost, number limit 1 offset 1")
+got=$(cut -d, -f2 "$WORK/marked.csv" | tail -n +2 | tr '\n' ' ')
+check_file "11: the CSV holds the two marked options ($m1 $m2: got $got)" \
+    test "$got" = "$m1 $m2 "
+cols_csv=$(head -1 "$WORK/marked.csv" | tr ',' '\n' | wc -l)
+check_file "11: the CSV has every column of the options table ($cols_csv)" \
+    test "$cols_csv" -ge 40
+keys F10
+check_exit "quits cleanly"
+
+# --- without colours or UTF-8: the glyphs still tell Pareto and knee ---
+start 80 24 LC_ALL=C NO_COLOR=1 -- v.db
+keys g Enter x
+check "9 (ASCII): the scatter opens" '^ Scatter: cost vs planarity'
+if screen | sed -n '3,20p' | grep -q '\*' && screen | sed -n '3,20p' | grep -q 'K'; then
+    pass "9 (ASCII, no colour): Pareto points are * and the knee K in the plot"
+else
+    echo "not ok - 9 (ASCII, no colour): Pareto points are * and the knee K in the plot"
+    screen | sed 's/^/  screen: /'
+fi
+keys c
+check "9 (no colour): the colour encoding says it has no colours" 'colour planarity \(no colours here\)'
+keys q q F10
+check_exit "the ASCII session quits cleanly"

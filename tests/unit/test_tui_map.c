@@ -1,0 +1,181 @@
+/*
+ * test_tui_map.c: the panel maps' arithmetic (map_model.h): a surface's
+ * extent from its panels' corners against a plane of known sides, the
+ * fitted picture's aspect, and what a character shows when it covers
+ * several panels or part of one, against a brute force that samples each
+ * character's share of the grid finely and counts.
+ */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <cmocka.h>
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "core/classify.h"
+#include "tui/map_model.h"
+
+/* An nu x nv grid over a plane w x h (m) at z = 0, every cell a panel of
+ * a type drawn from seed, a hole where the draw gives -1. */
+static void grid(struct panelization *p, int nu, int nv, double w, double h,
+                 unsigned seed, int holes)
+{
+    memset(p, 0, sizeof *p);
+    p->nu = nu;
+    p->nv = nv;
+    p->umax = p->vmax = 1;
+    p->panels = calloc((size_t)nu * (size_t)nv, sizeof *p->panels);
+    p->cell_panel = calloc((size_t)nu * (size_t)nv, sizeof *p->cell_panel);
+    assert_non_null(p->panels);
+    assert_non_null(p->cell_panel);
+    srand(seed);
+    for (int j = 0; j < nv; j++)
+        for (int i = 0; i < nu; i++) {
+            int cell = j * nu + i;
+            if (holes && rand() % 7 == 0) {
+                p->cell_panel[cell] = -1;
+                continue;
+            }
+            struct panel *q = &p->panels[p->npanels];
+            q->i = i;
+            q->j = j;
+            q->type = (enum panel_type)(rand() % TYPE_COUNT);
+            q->class = (enum panel_class)(rand() % CLASS_COUNT);
+            double x0 = w * i / nu, x1 = w * (i + 1) / nu;
+            double y0 = h * j / nv, y1 = h * (j + 1) / nv;
+            double c[4][2] = {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};
+            for (int k = 0; k < 4; k++) {
+                q->corner[k][0] = c[k][0];
+                q->corner[k][1] = c[k][1];
+                q->corner[k][2] = 0;
+            }
+            p->cell_panel[cell] = (int)p->npanels++;
+        }
+}
+
+static void grid_free(struct panelization *p)
+{
+    free(p->panels);
+    free(p->cell_panel);
+}
+
+static void test_surface_size(void **state)
+{
+    (void)state;
+    struct panelization p;
+    grid(&p, 40, 38, 36.0, 24.0, 1, 0);
+    double w, h;
+    map_surface_size(&p, &w, &h);
+    assert_true(fabs(w - 36.0) < 1e-9);
+    assert_true(fabs(h - 24.0) < 1e-9);
+    grid_free(&p);
+}
+
+static void test_fit_box(void **state)
+{
+    (void)state;
+    int cols, rows;
+    /* 36 m x 24 m in at most 43 x 17 characters twice as tall as wide:
+     * 17 rows, 17 x 1.5 x 2 = 51 columns > 43, so 43 columns, 14 rows */
+    map_fit_box(36, 24, 43, 17, 2.0, &cols, &rows);
+    assert_int_equal(cols, 43);
+    assert_int_equal(rows, 14);
+    /* a tall surface fills the rows */
+    map_fit_box(10, 40, 43, 17, 2.0, &cols, &rows);
+    assert_int_equal(rows, 17);
+    assert_int_equal(cols, 9);  /* 17 x 0.25 x 2 = 8.5, rounded */
+    /* every box fits, and its aspect is the surface's to a character */
+    for (int k = 1; k < 200; k++) {
+        double w = k * 0.37, h = 50.0 / k;
+        map_fit_box(w, h, 60, 20, 2.0, &cols, &rows);
+        assert_true(cols >= 1 && cols <= 60 && rows >= 1 && rows <= 20);
+        assert_true(cols == 60 || rows == 20 || cols == 1 || rows == 1);
+        if (cols > 1 && rows > 1)
+            assert_true(fabs(cols / (rows * 2.0) - w / h) <=
+                        (w / h) / rows + 1.0 / (rows * 2.0));
+    }
+}
+
+/* The brute force: sample the character's share of the grid on a fine
+ * lattice, count the value under each sample. */
+static int brute_cell(const struct panelization *p, int cols, int rows,
+                      int c, int r, int by_class, double *margin)
+{
+    enum { S = 240 };
+    double count[CLASS_COUNT + 1] = {0};
+    for (int a = 0; a < S; a++)
+        for (int b = 0; b < S; b++) {
+            double u = (c + (a + 0.5) / S) / cols * p->nu;
+            double v = (rows - 1 - r + (b + 0.5) / S) / rows * p->nv;
+            int i = (int)floor(u), j = (int)floor(v);
+            int k = p->cell_panel[j * p->nu + i];
+            int value = k < 0 ? CLASS_COUNT
+                        : by_class ? (int)p->panels[k].class
+                                   : (int)p->panels[k].type;
+            count[value]++;
+        }
+    int values = by_class ? CLASS_COUNT : TYPE_COUNT, best = -1;
+    for (int k = 0; k < values; k++)
+        if (count[k] > 0 && (best < 0 || count[k] >= count[best]))
+            best = k;
+    /* how clear the decision is: the gap to the nearest competitor */
+    double second = count[CLASS_COUNT];
+    for (int k = 0; k < values; k++)
+        if (k != best && count[k] > second)
+            second = count[k];
+    *margin = best < 0 ? S * S : fabs(count[best] - second) / (S * S);
+    return best >= 0 && count[best] >= count[CLASS_COUNT] ? best : -1;
+}
+
+static void test_cell_value(void **state)
+{
+    (void)state;
+    int checked = 0;
+    for (unsigned seed = 1; seed <= 6; seed++) {
+        struct panelization p;
+        int nu = 20 + (int)seed * 7, nv = 15 + (int)seed * 5;
+        grid(&p, nu, nv, 30, 20, seed, seed % 2);
+        int sizes[][2] = {{nu, nv}, {nu / 2, nv / 3}, {13, 9}, {57, 41},
+                          {7, 5}};
+        for (size_t z = 0; z < sizeof sizes / sizeof sizes[0]; z++) {
+            int cols = sizes[z][0], rows = sizes[z][1];
+            for (int by = 0; by < 2; by++)
+                for (int r = 0; r < rows; r++)
+                    for (int c = 0; c < cols; c++) {
+                        double margin;
+                        int want = brute_cell(&p, cols, rows, c, r, by,
+                                              &margin);
+                        if (margin < 0.01)
+                            continue;  /* too close for the sampling */
+                        assert_int_equal(map_cell_value(&p, cols, rows, c,
+                                                        r, by), want);
+                        checked++;
+                    }
+        }
+        /* one character per panel shows each panel's own type */
+        for (int j = 0; j < nv; j++)
+            for (int i = 0; i < nu; i++) {
+                int k = p.cell_panel[j * nu + i], c, r;
+                map_cell_of(&p, nu, nv, i, j, &c, &r);
+                assert_int_equal(c, i);
+                assert_int_equal(r, nv - 1 - j);
+                assert_int_equal(map_cell_value(&p, nu, nv, c, r, 0),
+                                 k < 0 ? -1 : (int)p.panels[k].type);
+            }
+        grid_free(&p);
+    }
+    assert_true(checked > 10000);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_surface_size),
+        cmocka_unit_test(test_fit_box),
+        cmocka_unit_test(test_cell_value),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}

@@ -1,0 +1,132 @@
+/*
+ * map_model.c: scaling panel maps. See map_model.h.
+ */
+#include "map_model.h"
+
+#include <math.h>
+
+#include "core/classify.h"
+
+static const struct panel *panel_at(const struct panelization *p, int i,
+                                    int j)
+{
+    if (i < 0 || j < 0 || i >= p->nu || j >= p->nv)
+        return NULL;
+    int k = p->cell_panel[(size_t)j * (size_t)p->nu + (size_t)i];
+    return k >= 0 ? &p->panels[k] : NULL;
+}
+
+static double edge(const double a[3], const double b[3])
+{
+    double dx = b[0] - a[0], dy = b[1] - a[1], dz = b[2] - a[2];
+    return sqrt(dx * dx + dy * dy + dz * dz);
+}
+
+/* The mean, over the grid lines that have any, of the summed edge
+ * lengths along u (along_u) or v. */
+static double extent(const struct panelization *p, int along_u)
+{
+    int lines = along_u ? p->nv : p->nu, cells = along_u ? p->nu : p->nv;
+    double sum = 0;
+    int counted = 0;
+    for (int l = 0; l < lines; l++) {
+        double length = 0;
+        int edges = 0;
+        for (int k = 0; k < cells; k++) {
+            const struct panel *q = along_u ? panel_at(p, k, l)
+                                            : panel_at(p, l, k);
+            if (q == NULL)
+                continue;
+            /* corners (i,j), (i+1,j), (i+1,j+1), (i,j+1) */
+            const double *a = q->corner[0];
+            const double *b = along_u ? q->corner[1] : q->corner[3];
+            double e = edge(a, b);
+            if (isfinite(e)) {
+                length += e;
+                edges++;
+            }
+        }
+        if (edges > 0) {
+            /* a line with cells off the surface is as long as its
+             * panels reach */
+            sum += length;
+            counted++;
+        }
+    }
+    return counted > 0 ? sum / counted : NAN;
+}
+
+void map_surface_size(const struct panelization *p, double *width,
+                      double *height)
+{
+    *width = extent(p, 1);
+    *height = extent(p, 0);
+    if (!(*width > 0) || !(*height > 0)) {
+        *width = p->umax - p->umin;
+        *height = p->vmax - p->vmin;
+    }
+    if (!(*width > 0) || !(*height > 0))
+        *width = *height = 1;
+}
+
+void map_fit_box(double width, double height, int max_cols, int max_rows,
+                 double cell_aspect, int *cols, int *rows)
+{
+    if (max_cols < 1)
+        max_cols = 1;
+    if (max_rows < 1)
+        max_rows = 1;
+    /* characters across per character down at the true aspect */
+    double per_row = width / height * cell_aspect;
+    if (!(per_row > 0) || !isfinite(per_row))
+        per_row = cell_aspect;
+    int r = max_rows, c = (int)floor(r * per_row + 0.5);
+    if (c > max_cols) {
+        c = max_cols;
+        r = (int)floor(c / per_row + 0.5);
+    }
+    *cols = c < 1 ? 1 : c > max_cols ? max_cols : c;
+    *rows = r < 1 ? 1 : r > max_rows ? max_rows : r;
+}
+
+int map_cell_value(const struct panelization *p, int cols, int rows, int c,
+                   int r, int by_class)
+{
+    double weight[(int)CLASS_COUNT + (int)TYPE_COUNT] = {0};
+    int values = by_class ? CLASS_COUNT : TYPE_COUNT;
+    double empty = 0;
+    /* the character's share of the grid, in cells: u along i, and v
+     * along j counted up from the bottom row */
+    double u0 = (double)c * p->nu / cols, u1 = (double)(c + 1) * p->nu / cols;
+    int rb = rows - 1 - r;
+    double v0 = (double)rb * p->nv / rows;
+    double v1 = (double)(rb + 1) * p->nv / rows;
+    for (int j = (int)floor(v0); j < p->nv && j < v1; j++) {
+        double wj = fmin(v1, j + 1) - fmax(v0, j);
+        if (wj <= 0)
+            continue;
+        for (int i = (int)floor(u0); i < p->nu && i < u1; i++) {
+            double w = (fmin(u1, i + 1) - fmax(u0, i)) * wj;
+            if (w <= 0)
+                continue;
+            const struct panel *q = panel_at(p, i, j);
+            if (q == NULL)
+                empty += w;
+            else
+                weight[by_class ? (int)q->class : (int)q->type] += w;
+        }
+    }
+    int best = -1;
+    for (int k = 0; k < values; k++)
+        if (weight[k] > 0 && (best < 0 || weight[k] >= weight[best]))
+            best = k;
+    return best >= 0 && weight[best] >= empty ? best : -1;
+}
+
+void map_cell_of(const struct panelization *p, int cols, int rows, int i,
+                 int j, int *c, int *r)
+{
+    *c = (int)floor((i + 0.5) * cols / p->nu);
+    int rb = (int)floor((j + 0.5) * rows / p->nv);
+    *r = rows - 1 - rb;
+}

@@ -1,0 +1,45 @@
+/*
+ * map_model.h: the arithmetic of the small and large panel maps, without
+ * curses: the surface's true size along u and v, the largest picture of
+ * it at its true aspect that fits a box of characters, and what one
+ * character of such a picture shows when it covers several panels (or
+ * part of one). The panel map's fit view and Compare's mini-maps draw
+ * through it, so every map of one surface has one scale and one aspect.
+ */
+#ifndef FACET_TUI_MAP_MODEL_H
+#define FACET_TUI_MAP_MODEL_H
+
+#include "core/panel.h"
+
+/* A terminal character is about twice as tall as it is wide. */
+#define MAP_CELL_ASPECT 2.0
+
+/* The surface's extent in m along u (*width) and v (*height): the mean
+ * over the grid's rows of the summed lengths of the panels' edges along
+ * u, and likewise along v (corners off the surface left out). Falls back
+ * to the UV box's sides when no edge has both corners on the surface. */
+void map_surface_size(const struct panelization *p, double *width,
+                      double *height);
+
+/* The largest picture, *cols x *rows characters within max_cols x
+ * max_rows, that shows a surface width x height (m) at its true aspect,
+ * a character being cell_aspect times as tall as it is wide; at least
+ * 1 x 1. */
+void map_fit_box(double width, double height, int max_cols, int max_rows,
+                 double cell_aspect, int *cols, int *rows);
+
+/* What character (c, r) of a cols x rows picture of the whole grid shows
+ * (r counted from v's top row, as a map reads): the panel type (by_class
+ * 0) or class (1) that covers most of the character's share of the grid,
+ * every panel weighted by the part of its cell inside the share; ties go
+ * to the later type (the dearer) or class. -1 when cells without a panel
+ * cover more of it than any type or class does. */
+int map_cell_value(const struct panelization *p, int cols, int rows, int c,
+                   int r, int by_class);
+
+/* The character (*c, *r) of a cols x rows picture that the centre of
+ * cell (i, j) falls in (r from v's top). */
+void map_cell_of(const struct panelization *p, int cols, int rows, int i,
+                 int j, int *c, int *r);
+
+#endif
