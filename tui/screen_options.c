@@ -19,6 +19,7 @@
 #include "input.h"
 #include "keys.h"
 #include "layout.h"
+#include "store/study.h"
 #include "store/study_export.h"
 
 struct options_screen {
@@ -850,6 +851,24 @@ static const struct tui_screen_class options_class = {
     options_draw, options_key, options_tick, options_destroy,
 };
 
+/* What a designer must see on opening a run: its first warning (a mesh
+ * coarser than its panels, ...), else a front on a bound of its space. */
+static void say_run_notes(struct tui_app *app, const struct run_info *run)
+{
+    if (run->warnings[0] != '\0') {
+        const char *end = strchr(run->warnings, '\n');
+        int n = end ? (int)(end - run->warnings) : (int)strlen(run->warnings);
+        tui_error(app, "warning: %.*s", n, run->warnings);
+        return;
+    }
+    struct front_bounds bounds;
+    struct facet_error err;
+    char note[1024];
+    if (store_front_bounds(app->store, run->id, &bounds, &err) == FACET_OK &&
+        study_front_edge_note(run, &bounds, note, sizeof note))
+        tui_status(app, "note: %s", note);
+}
+
 struct tui_screen *screen_options_new(struct tui_app *app, int64_t run)
 {
     struct options_screen *s = calloc(1, sizeof *s);
@@ -875,5 +894,6 @@ struct tui_screen *screen_options_new(struct tui_app *app, int64_t run)
         free(s);
         return NULL;
     }
+    say_run_notes(app, &s->run);
     return &s->base;
 }

@@ -1,0 +1,29 @@
+#!/usr/bin/env bash
+# End-to-end: what the workbench says on opening a run (issue 11 item 8,
+# issue 12 item 18), at 80x24: a run on a mesh coarser than its finest
+# panels warns in the status line; a run whose Pareto options sit on a
+# bound of its space names the bound; a run with neither says nothing.
+. "$(dirname "$0")/lib.sh"
+
+. "$(dirname "$0")/tui_lib.sh"
+
+"$FACET" example dome --res 4 -o "$WORK/dome4.obj" || exit 1
+"$FACET" example roof --res 40 -o "$WORK/roof.obj" || exit 1
+"$FACET" optimize "$WORK/dome4.obj" --db "$WORK/n.db" --u 10:50 --v 10:50 --threshold 3 >/dev/null 2>&1 || exit 1
+"$FACET" optimize "$WORK/roof.obj" --db "$WORK/n.db" --u 3:9 --v 3:9 --threshold 3 --max-panel-area 1000 >/dev/null 2>&1 || exit 1
+pareto=$(sqlite3 "$WORK/n.db" "SELECT count(*) FROM options WHERE run = 2 AND rank = 1")
+
+start 80 24 -- n.db
+check "the runs list" 'runs'
+# The list is newest first: run 2, then run 1.
+keys Enter
+check "run 2 opens naming a bound its front sits on (of its $pareto Pareto options)" \
+    "note: [0-9]+ of $pareto Pareto options sit at [UV] = [0-9]+, the (top|bottom) of its range"
+keys Escape
+check "back on the runs list" 'runs'
+keys Down Enter
+check "run 1 opens with its warning in the status line" 'warning: the mesh is coarse for the finest'
+keys Escape
+keys F10
+check_exit "quit"
+exit 0
