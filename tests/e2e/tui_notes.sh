@@ -15,15 +15,16 @@ pareto=$(sqlite3 "$WORK/n.db" "SELECT count(*) FROM options WHERE run = 2 AND ra
 
 start 80 24 -- n.db
 check "the runs list" 'runs'
-# The list is newest first: run 2, then run 1.
+# The list opens on the newest run, run 2; run 1 is the row above it.
 keys Enter
 check "run 2 opens naming a bound its front sits on (of its $pareto Pareto options)" \
     "note: [0-9]+ of $pareto Pareto options sit at [UV] = [0-9]+, the (top|bottom) of its range"
 keys Escape
 check "back on the runs list" 'runs'
-keys Down Enter
+keys Up Enter
 check "run 1 opens with its warning in the status line" 'warning: the mesh is coarse for the finest'
 keys Escape
+check "back on the runs list again" 'runs'
 keys F10
 check_exit "quit"
 exit 0
