@@ -3,10 +3,14 @@
  */
 #include "surface.h"
 
+#include <math.h>
+
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+
+#include "coarse_mesh.h"
 
 static void warn(struct surface *surface, const char *fmt, ...)
     __attribute__((format(printf, 2, 3)));
@@ -20,6 +24,32 @@ static void warn(struct surface *surface, const char *fmt, ...)
     vsnprintf(surface->warnings[surface->nwarnings++],
               sizeof surface->warnings[0], fmt, ap);
     va_end(ap);
+}
+
+/* Refuses a surface whose coordinates are so far from the origin, for the
+ * size of its facets, that doubles cannot hold its shape: a double keeps
+ * 16 digits, so at 7e14 m a point is known to 0.1 m and a 1 m panel's
+ * area to a few percent. Facet's sums promise 1e-9 of a panel's scale;
+ * past a ratio of 1e9 between the farthest coordinate and the typical
+ * facet (UTM northings of 5e6 m with 5 mm facets are well within), the
+ * rounding of positions alone comes near it. */
+static int check_precision(const struct surface *s, struct facet_error *err)
+{
+    const struct mesh *m = &s->mesh;
+    if (m->ntriangles == 0)
+        return FACET_OK;
+    double far = 0;
+    for (int k = 0; k < 3; k++)
+        far = fmax(far, fmax(fabs(m->bbox_min[k]), fabs(m->bbox_max[k])));
+    double facet = mesh_facet_size(m);
+    if (!(facet > 0) || far <= 1e9 * facet)
+        return FACET_OK;
+    return facet_error_set(err, FACET_EINPUT,
+        "%s: coordinates reach %.3g m, %.3g times the facets' size (%.3g "
+        "m): at that distance from the origin doubles keep the points to "
+        "%.2g m, too coarse for panels; move the surface near the origin "
+        "(subtract the site's offset) and export again", s->path, far,
+        far / facet, facet, far * 0x1p-52);
 }
 
 int surface_open(const char *path, const struct mesh_options *options,
@@ -42,6 +72,8 @@ int surface_open(const char *path, const struct mesh_options *options,
         return facet_error_set(err, rc, "%s: %s", path, message);
     }
 
+    if ((rc = check_precision(out, err)) != FACET_OK)
+        return rc;
     char text[256];
     if (mesh_units_warning(&out->mesh, options->units, text, sizeof text))
         warn(out, "%s", text);

@@ -210,4 +210,26 @@ for keep in knee none; do
         "$(sqlite3 "$WORK/keep-$keep.db" "SELECT store_panels FROM runs; SELECT count(*) FROM panel_sets; SELECT count(*) FROM panel_sets s JOIN options o ON o.run = s.run AND o.number = s.option WHERE o.knee")" \
         "$(printf '%s\n%s\n%s' $keep $([ $keep = knee ] && echo '1 1' || echo '0 0'))"
 done
+# 14. Absurd coordinates: a surface at 7e14 m is refused with the reason;
+# one at UTM-like site coordinates (5e5, 5e6 m, 0.1 m facets) is panelized
+# with its areas adding up to 1e-9.
+/usr/bin/python3 - "$WORK" <<'PY'
+import sys
+def grid(path, x0, y0, h):
+    with open(path, "w") as f:
+        for j in range(11):
+            for i in range(11):
+                f.write("v %.17g %.17g 0\n" % (x0 + i * h, y0 + j * h))
+        for j in range(10):
+            for i in range(10):
+                a = j * 11 + i + 1
+                f.write("f %d %d %d %d\n" % (a, a + 1, a + 12, a + 11))
+grid(sys.argv[1] + "/far.obj", 7e14, 7e14, 1.0)
+grid(sys.argv[1] + "/site.obj", 5e5, 5e6, 0.1)
+PY
+expect_error "a surface at 7e14 m is refused with the reason" \
+    'coordinates reach 7e\+14 m.*move the surface near the origin' "$FACET" classify "$WORK/far.obj" --grid 3x3
+expect "a surface at site coordinates is panelized" 0 "$FACET" classify "$WORK/site.obj" --grid 7x7 --json
+json_check "site coordinates: panel areas add up to the mesh's (1e-9)" \
+    'abs(sum(p["area"] for p in j["panels"]) - j["surface"]["area"]) < 1e-9 * j["surface"]["area"]'
 exit 0
