@@ -232,4 +232,27 @@ expect_error "a surface at 7e14 m is refused with the reason" \
 expect "a surface at site coordinates is panelized" 0 "$FACET" classify "$WORK/site.obj" --grid 7x7 --json
 json_check "site coordinates: panel areas add up to the mesh's (1e-9)" \
     'abs(sum(p["area"] for p in j["panels"]) - j["surface"]["area"]) < 1e-9 * j["surface"]["area"]'
+# Repeated kill -9 at random moments: every resume goes on, and the run
+# ends with exactly the options of an uninterrupted one (compared with
+# sqlite3: every column of every option but the run's id).
+"$FACET" optimize "$WORK/roof.obj" --db "$WORK/whole.db" --u 4:40 --v 4:40 --jobs 1 >/dev/null 2>&1
+stored() { sqlite3 "$WORK/killed.db" "SELECT count(*) FROM options" 2>/dev/null || echo 0; }
+kills=0
+"$FACET" optimize "$WORK/roof.obj" --db "$WORK/killed.db" --u 4:40 --v 4:40 --jobs 1 >/dev/null 2>&1 & pid=$!
+for k in 1 2 3 4 5 6 7 8; do
+    before=$(stored)
+    for _ in $(seq 100); do [ "$(stored)" -gt "$before" ] && break; sleep 0.05; done
+    sleep "0.$((RANDOM % 3))$((RANDOM % 10))"
+    kill -KILL $pid 2>/dev/null && kills=$((kills + 1))
+    wait $pid 2>/dev/null
+    [ "$(sqlite3 "$WORK/killed.db" 'SELECT status FROM runs')" = done ] && break
+    "$FACET" optimize --db "$WORK/killed.db" --resume 1 >/dev/null 2>&1 & pid=$!
+done
+wait $pid 2>/dev/null
+[ "$(sqlite3 "$WORK/killed.db" 'SELECT status FROM runs')" = done ] ||
+    "$FACET" optimize --db "$WORK/killed.db" --resume 1 >/dev/null 2>&1
+dump() { sqlite3 "$1" "SELECT * FROM options ORDER BY number" | cut -d'|' -f2- | sha256sum; }
+same "after $kills kill -9s and resumes the run equals an uninterrupted one" \
+    "$(sqlite3 "$WORK/killed.db" 'PRAGMA quick_check; SELECT status FROM runs' | paste -sd' ') $(dump "$WORK/killed.db")" \
+    "ok done $(dump "$WORK/whole.db")"
 exit 0
