@@ -27,7 +27,10 @@ struct filter;
  * nested parentheses and nots, is FACET_EINPUT. */
 enum {
     FILTER_MAX_LENGTH = 4096,  /* bytes of text */
-    FILTER_MAX_DEPTH = 64      /* '(' and 'not' open at once */
+    FILTER_MAX_DEPTH = 24      /* '(' and 'not' open at once: the SQL
+                                  of any filter that deep still fits
+                                  SQLite's parser stack (an or-and chain
+                                  overflows it past 30 levels) */
 };
 
 /* Compiles text into *out (caller-owned, released with filter_free).

@@ -26,7 +26,7 @@
 #include "store/store.h"
 #include "tests/support/filter_oracle.h"
 
-enum { NCOLUMNS = STORE_OPTION_COLUMNS };
+enum { NCOLUMNS = STORE_OPTION_COLUMNS, NROWS = 400 };
 
 /* ---- helpers ------------------------------------------------------------- */
 
@@ -587,6 +587,56 @@ static void test_text_compiles_again(void **state)
         }
 }
 
+/* Every filter that compiles gives SQL that SQLite parses: at the depth
+ * limit, the shapes that take most of its parser stack (an or-and chain,
+ * a chain of not ( ... ), plain parentheses, their mix) all run against
+ * the oracle table. Found by fuzz_where: 48 nots gave SQL SQLite refused
+ * ("parser stack overflow"), an or-and chain overflows past 30 levels. */
+static void test_deepest_sql_parses(void **state)
+{
+    (void)state;
+    struct rng rng;
+    rng_seed(&rng, 3);
+    struct oracle_row *rows = malloc(NROWS * sizeof *rows);
+    assert_non_null(rows);
+    oracle_random_rows(&rng, rows, NROWS);
+    sqlite3 *db = oracle_database(rows, NROWS);
+    assert_non_null(db);
+    for (int shape = 0; shape < 4; shape++) {
+        char text[4096] = "";
+        int opened = 0, used = 0;
+        for (int k = 0;; k++) {
+            char part[64];
+            int cost = 1;  /* what the parser counts: each ( and not */
+            if (shape == 0 || (shape == 3 && k % 2)) {
+                snprintf(part, sizeof part, "nu > %d %s (", k,
+                         k % 2 ? "or" : "and");
+            } else if (shape == 1 || shape == 3) {
+                snprintf(part, sizeof part, "not (");
+                cost = 2;
+            } else {
+                snprintf(part, sizeof part, "(");
+            }
+            if (used + cost > FILTER_MAX_DEPTH)
+                break;
+            strcat(text, part);
+            used += cost;
+            opened++;
+        }
+        strcat(text, "cost < 1e6");
+        for (int k = 0; k < opened; k++)
+            strcat(text, ")");
+        struct filter *f = compile_ok(text);
+        char why[1024];
+        if (oracle_compare(db, rows, NROWS, f, why, sizeof why) < 0)
+            fail_msg("shape %d at depth %d: %s", shape, FILTER_MAX_DEPTH,
+                     why);
+        filter_free(f);
+    }
+    sqlite3_close(db);
+    free(rows);
+}
+
 static void test_hostile_nesting(void **state)
 {
     (void)state;
@@ -818,8 +868,6 @@ static void test_null_is_unknown(void **state)
 
 /* ---- the SQLite oracle --------------------------------------------------- */
 
-enum { NROWS = 400 };
-
 /* Runs text through SQLite and through filter_match (filter_oracle.h)
  * and fails on any option where they differ. The caller's own parameters
  * ?1 and ?2 come first when first_param is 3. Returns how many options
@@ -967,6 +1015,7 @@ int main(void)
         cmocka_unit_test(test_nan_and_infinity),
         cmocka_unit_test(test_hostile_nesting),
         cmocka_unit_test(test_text_compiles_again),
+        cmocka_unit_test(test_deepest_sql_parses),
         cmocka_unit_test(test_hostile_length),
         cmocka_unit_test(test_garbage_bytes),
         cmocka_unit_test(test_null_is_unknown),
