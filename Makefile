@@ -54,6 +54,7 @@ FUZZ_NAMES := $(FUZZ_SRC:tests/fuzz/fuzz_%.c=%)
 REPLAY_BIN := $(FUZZ_NAMES:%=$(BUILD)/fuzz/replay_%)
 FUZZ_BIN  := $(FUZZ_NAMES:%=$(BUILD)/fuzz/fuzz_%)
 FUZZ_SECONDS ?= 60
+FUZZ_SEED ?= 1
 BENCH_SRC := $(wildcard tests/bench/*.c)
 BENCH_BIN := $(BENCH_SRC:tests/bench/%.c=$(BUILD)/bench/%)
 
@@ -113,7 +114,8 @@ check: deps
 	$(MAKE) VARIANT=san test
 
 # Every fuzz target under libFuzzer with ASan and UBSan for FUZZ_SECONDS
-# each (default 60), from a copy of its seed corpus; a crash stops it, and
+# each (default 60), from a copy of its seed corpus, with the mutations of
+# FUZZ_SEED (default 1, so a run is repeatable; FUZZ_SEED=0 picks one); a crash stops it, and
 # its input (build/fuzz/crashes/) belongs in tests/fuzz/crashes/NAME/ as a
 # regression test that make check replays.
 fuzz: deps
@@ -125,7 +127,7 @@ fuzz-run: $(FUZZ_BIN)
 		work=$(BUILD)/work/$$name; rm -rf $$work; mkdir -p $$work; \
 		cp tests/fuzz/corpus/$$name/* $$work/ 2>/dev/null; \
 		echo "== fuzz_$$name for $(FUZZ_SECONDS) s"; \
-		$(BUILD)/fuzz/fuzz_$$name $$work -max_total_time=$(FUZZ_SECONDS) \
+		$(BUILD)/fuzz/fuzz_$$name $$work -max_total_time=$(FUZZ_SECONDS) -seed=$(FUZZ_SEED) \
 			-timeout=20 -rss_limit_mb=2048 -max_len=65536 -print_final_stats=1 \
 			-artifact_prefix=$(BUILD)/crashes/$$name- 2>&1 | \
 			grep -E '^(#[0-9]+ *DONE|stat::number_of_executed_units|stat::peak_rss|==[0-9]+==ERROR|SUMMARY|artifact_prefix|Test unit written)'; \

@@ -464,6 +464,15 @@ int mesh_build(const struct obj_file *obj, const struct mesh_options *options,
     if (out->ntriangles == 0)
         return facet_error_set(err, FACET_EINPUT,
             "every triangle is degenerate (its corners weld together)");
+    /* Finite coordinates can still overflow once multiplied: a surface
+     * whose extent or area is not a number has no panels to give. */
+    double extent = 0;
+    for (int k = 0; k < 3; k++)
+        extent = fmax(extent, out->bbox_max[k] - out->bbox_min[k]);
+    if (!isfinite(out->area) || !isfinite(extent) || extent > 1e15)
+        return facet_error_set(err, FACET_EINPUT,
+            "the surface's size overflows (it spans %.3g m, an area of %g "
+            "m^2): check the coordinates and --units", extent, out->area);
 
     if (build_adjacency(out) != FACET_OK || build_incidence(out) != FACET_OK ||
         build_loops(out) != FACET_OK || build_components(out) != FACET_OK)
