@@ -964,6 +964,15 @@ int filter_compile(const char *text, struct filter **out,
     }
     if (b.failed)
         goto out_of_memory;
+    /* Its text is compiled again: it must fit the length limit too
+     * ("!" is written back as "not "). */
+    if (b.length > FILTER_MAX_LENGTH) {
+        free(b.data);
+        rc = facet_error_set(err, FACET_EINPUT,
+            "--where: the expression is longer than %d bytes as Facet "
+            "writes it back (%zu)", FILTER_MAX_LENGTH, b.length);
+        goto fail;
+    }
     f->text = b.data;
     free(p.tokens);
     facet_error_clear(err);

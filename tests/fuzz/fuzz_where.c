@@ -43,8 +43,11 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         }
         /* The text shown back is the same filter. */
         struct filter *again = NULL;
-        if (filter_compile(filter_text(f), &again, &err) != FACET_OK)
+        if (filter_compile(filter_text(f), &again, &err) != FACET_OK) {
+            fprintf(stderr, "fuzz_where: its text does not compile: %s\n",
+                    err.message);
             abort();
+        }
         int first = oracle_compare(table, table_rows, ROWS, f, why,
                                    sizeof why);
         int second = oracle_compare(table, table_rows, ROWS, again, why,
