@@ -2,7 +2,7 @@
  * cmd_optimize.c: `facet optimize SURFACE.obj --db FILE`, the paper's MOGD:
  * search grid sizes and flatness thresholds for the Pareto-optimal
  * trade-offs, every option committed to SQLite as it is evaluated, and the
- * paper's Table 2 for the run at the end. The work is store/study.h's; this
+ * paper's Table 2 for the run at the end. The work is study/study.h's; this
  * file parses the design space and reports.
  */
 #include <errno.h>
@@ -20,7 +20,7 @@
 #include "run_table.h"
 #include "signals.h"
 #include "core/infile.h"
-#include "store/study.h"
+#include "study/study.h"
 
 /* The largest space the exhaustive method takes by default. */
 #define EXHAUSTIVE_DEFAULT_LIMIT 100000

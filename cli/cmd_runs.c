@@ -13,7 +13,7 @@
 #include "core/text.h"
 #include "text_table.h"
 #include "store/store.h"
-#include "store/study.h"
+#include "study/study.h"
 
 static void print_json(const struct run_info *runs,
                        const struct front_bounds *bounds, size_t n)

@@ -12,8 +12,8 @@
 #include "option_text.h"
 #include "core/report.h"
 #include "core/text.h"
-#include "store/study.h"
-#include "store/study_export.h"
+#include "study/study.h"
+#include "study/study_export.h"
 
 static int show_main(int argc, char **argv, struct facet_error *err)
 {

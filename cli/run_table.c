@@ -10,7 +10,7 @@
 #include "core/numformat.h"
 #include "core/text.h"
 #include "core/ties.h"
-#include "store/study.h"
+#include "study/study.h"
 #include "text_table.h"
 
 /* The listed options cheapest first, costs equal but for rounding

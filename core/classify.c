@@ -2,14 +2,14 @@
  * classify.c: Table 1, panel types, the threshold rule, cost and totals.
  * See classify.h.
  */
-#include "classify.h"
+#include "core/classify.h"
 
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
-#include "exact_sum.h"
-#include "numparse.h"
+#include "core/exact_sum.h"
+#include "core/numparse.h"
 
 void classify_defaults(struct classify_options *options)
 {

@@ -27,8 +27,8 @@
 
 #include <stddef.h>
 
-#include "error.h"
-#include "panel.h"
+#include "core/error.h"
+#include "core/panel.h"
 
 /* The rounding allowance of every limit a panel is held to: a computed
  * measure within 1e-9 of its panel's scale of the limit meets it. The three

@@ -1,7 +1,7 @@
 /*
  * coarse_mesh.c: facet size, panel size and the warning. See coarse_mesh.h.
  */
-#include "coarse_mesh.h"
+#include "core/coarse_mesh.h"
 
 #include <math.h>
 #include <stdio.h>

@@ -14,8 +14,8 @@
 
 #include <stddef.h>
 
-#include "mesh.h"
-#include "panel.h"
+#include "core/mesh.h"
+#include "core/panel.h"
 
 /* A panel is coarse-meshed when the facets are at least this fraction of
  * its side: fewer than two facets across it. */

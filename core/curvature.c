@@ -91,9 +91,9 @@
 #include <string.h>
 #include <unistd.h>
 
-#include "curvature.h"
-#include "linalg.h"
-#include "vec3.h"
+#include "core/curvature.h"
+#include "core/linalg.h"
+#include "core/vec3.h"
 
 enum {
     RINGS_INTERIOR = 2,     /* rings gathered at least, interior vertex */

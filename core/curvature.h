@@ -21,8 +21,8 @@
 
 #include <stddef.h>
 
-#include "error.h"
-#include "mesh.h"
+#include "core/error.h"
+#include "core/mesh.h"
 
 struct curvature {
     size_t nvertices;

@@ -1,7 +1,7 @@
 /*
  * error.c: filling struct facet_error. See error.h.
  */
-#include "error.h"
+#include "core/error.h"
 
 #include <stdarg.h>
 #include <stdio.h>

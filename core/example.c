@@ -24,7 +24,7 @@
  *             faded in by a smoothstep over 0.6 L..0.7 L: double-curved.
  *             About 1,240 m^2, the area of the paper's case study.
  */
-#include "example.h"
+#include "core/example.h"
 
 #include <math.h>
 #include <string.h>

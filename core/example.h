@@ -16,7 +16,7 @@
 
 #include <stdio.h>
 
-#include "error.h"
+#include "core/error.h"
 
 /* The example names, NULL-terminated, in the order --help lists them. */
 extern const char *const example_names[];

@@ -1,7 +1,7 @@
 /*
  * export_obj.c: OBJ + MTL of an evaluated option. See export_obj.h.
  */
-#include "export_obj.h"
+#include "core/export_obj.h"
 
 #include <ctype.h>
 #include <math.h>
@@ -9,10 +9,10 @@
 #include <string.h>
 #include <unistd.h>
 
-#include "classify.h"
-#include "outfile.h"
-#include "svg.h"
-#include "vec3.h"
+#include "core/classify.h"
+#include "core/outfile.h"
+#include "core/svg.h"
+#include "core/vec3.h"
 
 /* Twelve significant digits: a micrometre at a kilometre from the origin,
  * and areas exact to far below what the tests ask (1e-6). */

@@ -33,9 +33,9 @@
 #include <stddef.h>
 #include <stdio.h>
 
-#include "error.h"
-#include "panel.h"
-#include "panel_geometry.h"
+#include "core/error.h"
+#include "core/panel.h"
+#include "core/panel_geometry.h"
 
 /* Writes the OBJ text of panels (classified: types set) with geometry g
  * (built from the same panelization) to out, referencing mtl_name (a file

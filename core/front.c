@@ -1,15 +1,15 @@
 /*
  * front.c: ranks, crowding, hypervolume and knee of a run. See front.h.
  */
-#include "front.h"
+#include "core/front.h"
 
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
-#include "classify.h"
-#include "pareto.h"
-#include "ties.h"
+#include "core/classify.h"
+#include "core/pareto.h"
+#include "core/ties.h"
 
 void front_free(struct front *front)
 {

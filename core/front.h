@@ -14,8 +14,8 @@
 
 #include <stddef.h>
 
-#include "metric.h"
-#include "optimize.h"
+#include "core/metric.h"
+#include "core/optimize.h"
 
 struct front {
     size_t n;

@@ -1,7 +1,7 @@
 /*
  * infile.c: regular files only, opened without waiting. See infile.h.
  */
-#include "infile.h"
+#include "core/infile.h"
 
 #include <errno.h>
 #include <fcntl.h>

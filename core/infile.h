@@ -12,7 +12,7 @@
 
 #include <sys/stat.h>
 
-#include "error.h"
+#include "core/error.h"
 
 /* Opens path for reading into *fd (the caller closes it) with its status
  * in *st. FACET_EINPUT, naming path, when it cannot be opened, is a

@@ -1,11 +1,11 @@
 /*
  * json.c: the JSON writer. See json.h.
  */
-#include "json.h"
+#include "core/json.h"
 
 #include <math.h>
 
-#include "numformat.h"
+#include "core/numformat.h"
 
 void json_init(struct json_writer *w, FILE *out)
 {

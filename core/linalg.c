@@ -5,7 +5,7 @@
  */
 #include <math.h>
 
-#include "linalg.h"
+#include "core/linalg.h"
 
 int linalg_cholesky_factor(int n, int lda, const double *a, double rel_tol,
                            double *l)

@@ -8,14 +8,14 @@
  * areas; edge adjacency by sorting half-edges; vertex-to-triangle
  * incidence; boundary loops; components; area and bounding box.
  */
-#include "mesh.h"
+#include "core/mesh.h"
 
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
-#include "vec3.h"
+#include "core/vec3.h"
 
 double mesh_units_scale(enum mesh_units u)
 {

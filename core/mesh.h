@@ -18,8 +18,8 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#include "error.h"
-#include "obj.h"
+#include "core/error.h"
+#include "core/obj.h"
 
 #define MESH_NONE UINT32_MAX  /* no neighbour across a boundary edge */
 

@@ -1,7 +1,7 @@
 /*
  * metric.c: metric names and values, and objective lists. See metric.h.
  */
-#include "metric.h"
+#include "core/metric.h"
 
 #include <stdio.h>
 #include <string.h>

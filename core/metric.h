@@ -9,8 +9,8 @@
 #ifndef FACET_METRIC_H
 #define FACET_METRIC_H
 
-#include "classify.h"
-#include "error.h"
+#include "core/classify.h"
+#include "core/error.h"
 
 enum metric {
     METRIC_COST,            /* USD */

@@ -8,15 +8,15 @@
  * crossover draws, then the per-variable mutation draws of each child), so
  * a seed fixes the run.
  */
-#include "nsga2.h"
+#include "core/nsga2.h"
 
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
-#include "pareto.h"
-#include "rng.h"
-#include "ties.h"
+#include "core/pareto.h"
+#include "core/rng.h"
+#include "core/ties.h"
 
 void nsga2_settings_default(struct nsga2_settings *settings, size_t nvars)
 {

@@ -42,7 +42,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#include "error.h"
+#include "core/error.h"
 
 /* Evaluates count design points: vars is count x nvars (row-major), and
  * the evaluator fills objectives (count x nobjectives, all minimised,

@@ -1,7 +1,7 @@
 /*
  * numformat.c: grouped numbers. See numformat.h.
  */
-#include "numformat.h"
+#include "core/numformat.h"
 
 #include <math.h>
 #include <stdio.h>

@@ -12,7 +12,7 @@
  * value. On a platform where long double is just double the slow path can be
  * off by a few ulps; the fast path is exact everywhere.
  */
-#include "numparse.h"
+#include "core/numparse.h"
 
 #include <math.h>
 #include <stdint.h>

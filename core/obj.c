@@ -46,7 +46,7 @@
  * Nothing is allocated per line (only per part, per array growth and per
  * new o/g/usemtl name). Not here: units, welding, objects (mesh.c), .mtl.
  */
-#include "obj.h"
+#include "core/obj.h"
 
 #include <errno.h>
 #include <fcntl.h>
@@ -56,11 +56,11 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include "infile.h"
-#include "obj_part.h"
-#include "obj_table.h"
-#include "obj_tuning.h"
-#include "parallel.h"
+#include "core/infile.h"
+#include "core/obj_part.h"
+#include "core/obj_table.h"
+#include "core/obj_tuning.h"
+#include "core/parallel.h"
 
 #define BINARY_SAMPLE 4096               /* bytes that tell text from data */
 #define DEFAULT_PART_BYTES ((size_t)1 << 20)

@@ -23,7 +23,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#include "error.h"
+#include "core/error.h"
 
 #define OBJ_NONE UINT32_MAX  /* an absent vt or vn index */
 

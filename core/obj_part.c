@@ -12,14 +12,14 @@
  * the part's base), else listed in part->before for the merge to resolve.
  * Triangulation waits for obj_part_emit, when every position is known.
  */
-#include "obj_part.h"
+#include "core/obj_part.h"
 
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
-#include "numparse.h"
+#include "core/numparse.h"
 
 #define MAX_VERTEX_NUMBERS 7      /* x y z w r g b */
 #define NOT_AN_INDEX (-1)         /* read_index found no digits */

@@ -18,10 +18,10 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#include "error.h"
-#include "obj.h"
-#include "obj_table.h"
-#include "triangulate.h"
+#include "core/error.h"
+#include "core/obj.h"
+#include "core/obj_table.h"
+#include "core/triangulate.h"
 
 #define OBJ_INHERITED UINT32_MAX  /* name id: current where the part starts */
 

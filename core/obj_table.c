@@ -3,7 +3,7 @@
  * obj_table.h. Names are hashed with FNV-1a into an open-addressing table
  * that is rebuilt at twice the size when it would become half full.
  */
-#include "obj_table.h"
+#include "core/obj_table.h"
 
 #include <stdlib.h>
 #include <string.h>

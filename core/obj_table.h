@@ -13,7 +13,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#include "obj.h"
+#include "core/obj.h"
 
 #define OBJ_MAX_INDEX ((uint64_t)UINT32_MAX - 1)  /* largest 0-based index */
 

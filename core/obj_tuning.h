@@ -10,7 +10,7 @@
 
 #include <stddef.h>
 
-#include "obj.h"
+#include "core/obj.h"
 
 struct obj_tuning {
     unsigned nthreads;     /* threads at most; default online CPUs, <= 8 */

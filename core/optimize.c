@@ -3,7 +3,7 @@
  * batch evaluation, and the exhaustive and random methods. NSGA-II's
  * generations come through the same batches (optimize_nsga2.c).
  */
-#include "optimize.h"
+#include "core/optimize.h"
 
 #include <math.h>
 #include <pthread.h>
@@ -12,9 +12,9 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "numparse.h"
-#include "optimize_search.h"
-#include "rng.h"
+#include "core/numparse.h"
+#include "core/optimize_search.h"
+#include "core/rng.h"
 
 const char *optimize_method_name(enum optimize_method method)
 {

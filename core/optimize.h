@@ -23,8 +23,8 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#include "metric.h"
-#include "option.h"
+#include "core/metric.h"
+#include "core/option.h"
 
 struct design_space {
     int u_min, u_max;         /* grid sides, inclusive */

@@ -13,9 +13,9 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "classify.h"
-#include "nsga2.h"
-#include "optimize_search.h"
+#include "core/classify.h"
+#include "core/nsga2.h"
+#include "core/optimize_search.h"
 
 struct nsga2_context {
     struct search *search;

@@ -6,7 +6,7 @@
 #ifndef FACET_OPTIMIZE_SEARCH_H
 #define FACET_OPTIMIZE_SEARCH_H
 
-#include "optimize.h"
+#include "core/optimize.h"
 
 struct search {
     const struct surface *surface;

@@ -1,7 +1,7 @@
 /*
  * option.c: evaluating one design option. See option.h.
  */
-#include "option.h"
+#include "core/option.h"
 
 #include <string.h>
 

@@ -10,10 +10,10 @@
 #ifndef FACET_OPTION_H
 #define FACET_OPTION_H
 
-#include "classify.h"
-#include "panel.h"
-#include "panel_lattice.h"
-#include "surface.h"
+#include "core/classify.h"
+#include "core/panel.h"
+#include "core/panel_lattice.h"
+#include "core/surface.h"
 
 struct option_params {
     int nu, nv;                          /* grid */

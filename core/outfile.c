@@ -1,7 +1,7 @@
 /*
  * outfile.c: output through PATH.partial and rename. See outfile.h.
  */
-#include "outfile.h"
+#include "core/outfile.h"
 
 #include <errno.h>
 #include <fcntl.h>

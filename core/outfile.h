@@ -18,7 +18,7 @@
 
 #include <stdio.h>
 
-#include "error.h"
+#include "core/error.h"
 
 struct outfile {
     FILE *out;        /* write here between open and commit */

@@ -12,15 +12,15 @@
  * panels_build is the oracle it is tested against. Fitting the planes and
  * finishing the panels from the two passes' sums is here, for both.
  */
-#include "panel.h"
+#include "core/panel.h"
 
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
-#include "panel_sums.h"
-#include "sym3.h"
-#include "vec3.h"
+#include "core/panel_sums.h"
+#include "core/sym3.h"
+#include "core/vec3.h"
 
 const double panel_extent_direction[13][3] = {
     {1, 0, 0}, {0, 1, 0}, {0, 0, 1},

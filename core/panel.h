@@ -19,10 +19,10 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#include "curvature.h"
-#include "error.h"
-#include "mesh.h"
-#include "uv_index.h"
+#include "core/curvature.h"
+#include "core/error.h"
+#include "core/mesh.h"
+#include "core/uv_index.h"
 
 /* The paper's classes (Table 1), by the signs of K and H. */
 enum panel_class {

@@ -17,13 +17,13 @@
  * the triangles are clipped at is sampled with its triangles instead, as
  * panels_build takes it, so that rounding never moves it to the wrong side.
  */
-#include "panel.h"
+#include "core/panel.h"
 
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
-#include "panel_sums.h"
+#include "core/panel_sums.h"
 
 int panel_prep_build(const struct mesh *mesh, const struct uv_index *index,
                      const struct curvature *curvature,

@@ -14,14 +14,14 @@
  *      boundary, UV seam. Chained head to tail they form the loops.
  * No tolerance enters step 3: it works on the merged vertex numbers.
  */
-#include "panel_geometry.h"
+#include "core/panel_geometry.h"
 
 #include <float.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
-#include "vec3.h"
+#include "core/vec3.h"
 
 /* The raw pieces as the walk gives them, grouped by panel. */
 struct raw {

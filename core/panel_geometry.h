@@ -35,10 +35,10 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#include "error.h"
-#include "mesh.h"
-#include "panel.h"
-#include "uv_index.h"
+#include "core/error.h"
+#include "core/mesh.h"
+#include "core/panel.h"
+#include "core/uv_index.h"
 
 struct panel_geometry {
     size_t npanels;             /* as the panelization; panel n of the

@@ -17,7 +17,7 @@
  * lines in the cells on both sides, and each crossing of two of the
  * grid's lines on the surface in the four cells around it.
  */
-#include "panel_lattice_data.h"
+#include "core/panel_lattice_data.h"
 
 #include <math.h>
 #include <stdlib.h>

@@ -24,8 +24,8 @@
 #ifndef FACET_PANEL_LATTICE_H
 #define FACET_PANEL_LATTICE_H
 
-#include "error.h"
-#include "panel.h"
+#include "core/error.h"
+#include "core/panel.h"
 
 #define PANEL_LATTICE_MAX_NODES 600000
 

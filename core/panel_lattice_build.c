@@ -8,13 +8,13 @@
  * noted on the way. The cuts of mesh edges by the lines are found edge by
  * edge, and the running sums made last. Each part runs on every core.
  */
-#include "panel_lattice_data.h"
+#include "core/panel_lattice_data.h"
 
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
-#include "parallel.h"
+#include "core/parallel.h"
 
 /* The number of lines at or below x. */
 static size_t line_rank_above(const double *line, size_t n, double x)

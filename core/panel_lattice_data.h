@@ -16,8 +16,8 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#include "panel_lattice.h"
-#include "panel_sums.h"
+#include "core/panel_lattice.h"
+#include "core/panel_sums.h"
 
 /* Raw moments about the lattice's origin, summed over fine cells. */
 struct lattice_sums {

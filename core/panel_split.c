@@ -5,7 +5,7 @@
 #include <math.h>
 #include <string.h>
 
-#include "panel_sums.h"
+#include "core/panel_sums.h"
 
 static inline void split_push(struct split_vertex *out, int *n,
                               const struct split_vertex *x)

@@ -20,7 +20,7 @@
 #include <stdint.h>
 #include <string.h>
 
-#include "panel.h"
+#include "core/panel.h"
 
 /* The grid of one panelization. */
 struct panel_grid {

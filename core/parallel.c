@@ -1,7 +1,7 @@
 /*
  * parallel.c: running a few jobs at once. See parallel.h.
  */
-#include "parallel.h"
+#include "core/parallel.h"
 
 #include <pthread.h>
 #include <unistd.h>

@@ -2,17 +2,17 @@
  * param.c: choosing the UV: vt, structured grid, plane projection or
  * harmonic map. See param.h.
  */
-#include "param.h"
+#include "core/param.h"
 
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
-#include "param_chart.h"
-#include "param_grid.h"
-#include "param_harmonic.h"
-#include "sym3.h"
+#include "core/param_chart.h"
+#include "core/param_grid.h"
+#include "core/param_harmonic.h"
+#include "core/sym3.h"
 
 static const char *const method_names[] = {"auto", "vt", "grid", "plane",
                                            "harmonic"};

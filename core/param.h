@@ -20,9 +20,9 @@
 #ifndef FACET_PARAM_H
 #define FACET_PARAM_H
 
-#include "error.h"
-#include "mesh.h"
-#include "uv_index.h"
+#include "core/error.h"
+#include "core/mesh.h"
+#include "core/uv_index.h"
 
 /* PARAM_AUTO (0, what a zeroed request asks for) takes the order above. */
 enum param_method {

@@ -2,7 +2,7 @@
  * param_chart.c: the charts of a UV map, by union-find over the edges
  * where UV is continuous. See param_chart.h.
  */
-#include "param_chart.h"
+#include "core/param_chart.h"
 
 #include <math.h>
 #include <stdlib.h>

@@ -14,7 +14,7 @@
 
 #include <stddef.h>
 
-#include "mesh.h"
+#include "core/mesh.h"
 
 struct uv_chart {
     size_t triangles;

@@ -9,13 +9,13 @@
  * implies; the mesh is a structured grid when no vertex gets two different
  * (i, j) and the vertices fill the rectangle (NU + 1) x (NV + 1) once each.
  */
-#include "param_grid.h"
+#include "core/param_grid.h"
 
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
-#include "vec3.h"
+#include "core/vec3.h"
 
 struct quads {
     size_t count;

@@ -18,7 +18,7 @@
 
 #include <stddef.h>
 
-#include "mesh.h"
+#include "core/mesh.h"
 
 /* Finds the grid of mesh. Returns FACET_OK with *vertex_uv (#V x 2,
  * malloc'ed, the caller's to free), the quads along u and v in *nu, *nv

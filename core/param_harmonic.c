@@ -2,14 +2,14 @@
  * param_harmonic.c: the mean-value map of a disk with capped holes. See
  * param_harmonic.h.
  */
-#include "param_harmonic.h"
+#include "core/param_harmonic.h"
 
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
-#include "vec3.h"
+#include "core/vec3.h"
 
 #define PI 3.14159265358979323846
 

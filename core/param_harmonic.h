@@ -17,7 +17,7 @@
 
 #include <stddef.h>
 
-#include "mesh.h"
+#include "core/mesh.h"
 
 /* Computes per-vertex (u, v) for mesh into *vertex_uv (#V x 2, malloc'ed,
  * the caller's to free) and the number of holes capped into *holes.

@@ -6,7 +6,7 @@
  * end with the index, so results never depend on a library sort's order of
  * equal elements (qsort is neither stable nor given a context in C11).
  */
-#include "pareto.h"
+#include "core/pareto.h"
 
 #include <limits.h>
 #include <math.h>
@@ -15,7 +15,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "ties.h"
+#include "core/ties.h"
 
 /* ---- sorting index arrays ------------------------------------------------ */
 

@@ -34,7 +34,7 @@
 
 #include <stddef.h>
 
-#include "error.h"
+#include "core/error.h"
 
 /* The reference point of pareto_hypervolume_normalized, on every axis. */
 #define PARETO_NORMALIZED_REFERENCE 1.1

@@ -1,12 +1,12 @@
 /*
  * report.c: JSON and CSV of an evaluated option. See report.h.
  */
-#include "report.h"
+#include "core/report.h"
 
 #include <math.h>
 
-#include "json.h"
-#include "numformat.h"
+#include "core/json.h"
+#include "core/numformat.h"
 
 static void json_totals(struct json_writer *w,
                         const struct option_totals *t,

@@ -10,8 +10,8 @@
 
 #include <stdio.h>
 
-#include "classify.h"
-#include "panel.h"
+#include "core/classify.h"
+#include "core/panel.h"
 
 /* What the option was computed from. */
 struct report_source {

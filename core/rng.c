@@ -4,7 +4,7 @@
  * Written from the published descriptions of both generators; the output
  * sequence is pinned by tests/unit/test_nsga2.c.
  */
-#include "rng.h"
+#include "core/rng.h"
 
 #define GOLDEN_GAMMA 0x9E3779B97F4A7C15u
 

@@ -1,14 +1,14 @@
 /*
  * sha256.c: SHA-256 as FIPS 180-4 defines it. See sha256.h.
  */
-#include "sha256.h"
+#include "core/sha256.h"
 
 #include <errno.h>
 #include <stdio.h>
 #include <string.h>
 #include <unistd.h>
 
-#include "infile.h"
+#include "core/infile.h"
 
 static const uint32_t round_constant[64] = {
     0x428a2f98, 0x71374491, 0xb5c0fbcf, 0xe9b5dba5, 0x3956c25b, 0x59f111f1,

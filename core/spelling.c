@@ -1,7 +1,7 @@
 /*
  * spelling.c: the nearest known word. See spelling.h.
  */
-#include "spelling.h"
+#include "core/spelling.h"
 
 #include <string.h>
 

@@ -1,7 +1,7 @@
 /*
  * surface.c: loading a surface and collecting its warnings. See surface.h.
  */
-#include "surface.h"
+#include "core/surface.h"
 
 #include <math.h>
 
@@ -10,7 +10,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "coarse_mesh.h"
+#include "core/coarse_mesh.h"
 
 static void warn(struct surface *surface, const char *fmt, ...)
     __attribute__((format(printf, 2, 3)));

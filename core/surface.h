@@ -10,12 +10,12 @@
 #ifndef FACET_SURFACE_H
 #define FACET_SURFACE_H
 
-#include "curvature.h"
-#include "mesh.h"
-#include "obj.h"
-#include "panel.h"
-#include "param.h"
-#include "uv_index.h"
+#include "core/curvature.h"
+#include "core/mesh.h"
+#include "core/obj.h"
+#include "core/panel.h"
+#include "core/param.h"
+#include "core/uv_index.h"
 
 #define SURFACE_MAX_WARNINGS 8
 

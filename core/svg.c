@@ -2,7 +2,7 @@
  * svg.c: SVG documents, numbers, escaping and the export palette. See
  * svg.h.
  */
-#include "svg.h"
+#include "core/svg.h"
 
 #include <math.h>
 #include <stdarg.h>

@@ -20,7 +20,7 @@
 #include <stddef.h>
 #include <stdio.h>
 
-#include "panel.h"
+#include "core/panel.h"
 
 struct svg {
     FILE *out;

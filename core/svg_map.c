@@ -1,15 +1,15 @@
 /*
  * svg_map.c: the panel map as SVG. See svg_map.h.
  */
-#include "svg_map.h"
+#include "core/svg_map.h"
 
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
-#include "outfile.h"
-#include "numformat.h"
-#include "svg.h"
+#include "core/outfile.h"
+#include "core/numformat.h"
+#include "core/svg.h"
 
 #define MARGIN 16.0
 #define TITLE_HEIGHT 66.0

@@ -23,10 +23,10 @@
 
 #include <stdio.h>
 
-#include "classify.h"
-#include "error.h"
-#include "panel.h"
-#include "panel_geometry.h"
+#include "core/classify.h"
+#include "core/error.h"
+#include "core/panel.h"
+#include "core/panel_geometry.h"
 
 enum svg_map_view { SVG_MAP_UV, SVG_MAP_TOP, SVG_MAP_FRONT, SVG_MAP_SIDE };
 

@@ -1,16 +1,16 @@
 /*
  * svg_plot.c: the design-option scatter plot as SVG. See svg_plot.h.
  */
-#include "svg_plot.h"
+#include "core/svg_plot.h"
 
 #include <ctype.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
-#include "outfile.h"
-#include "numformat.h"
-#include "svg.h"
+#include "core/outfile.h"
+#include "core/numformat.h"
+#include "core/svg.h"
 
 /* Plot area inside the page (px). */
 #define PLOT_LEFT 96.0

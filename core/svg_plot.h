@@ -25,7 +25,7 @@
 #include <stdint.h>
 #include <stdio.h>
 
-#include "error.h"
+#include "core/error.h"
 
 struct svg_plot_series {
     const char *label;    /* legend text (a run's name), or NULL */

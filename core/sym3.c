@@ -1,7 +1,7 @@
 /*
  * sym3.c: cyclic Jacobi for symmetric 3x3 matrices. See sym3.h.
  */
-#include "sym3.h"
+#include "core/sym3.h"
 
 #include <math.h>
 #include <string.h>

@@ -1,7 +1,7 @@
 /*
  * text.c: clean text for terminals and stores. See text.h.
  */
-#include "text.h"
+#include "core/text.h"
 
 #include <string.h>
 

@@ -1,7 +1,7 @@
 /*
  * ties.c: tie classes of objective values. See ties.h.
  */
-#include "ties.h"
+#include "core/ties.h"
 
 #include <math.h>
 #include <stdlib.h>

@@ -11,13 +11,13 @@
  * cut off (a zero-area triangle, harmless); when there is none, the rest is
  * fanned.
  */
-#include "triangulate.h"
+#include "core/triangulate.h"
 
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
-#include "vec3.h"
+#include "core/vec3.h"
 
 void triangulate_scratch_free(struct triangulate_scratch *scratch)
 {

@@ -2,7 +2,7 @@
  * uv_index.c: the UV bucket grid, point location and the UV map check.
  * See uv_index.h.
  */
-#include "uv_index.h"
+#include "core/uv_index.h"
 
 #include <math.h>
 #include <pthread.h>

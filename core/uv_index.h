@@ -15,7 +15,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#include "error.h"
+#include "core/error.h"
 
 struct uv_index {
     const double *uv;          /* #T x 3 x 2 per-corner (u, v), borrowed */

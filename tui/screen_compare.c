@@ -17,7 +17,7 @@
 #include "keys.h"
 #include "map_model.h"
 #include "core/metric.h"
-#include "store/study.h"
+#include "study/study.h"
 
 struct compare_screen {
     struct tui_screen base;

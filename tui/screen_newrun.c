@@ -26,7 +26,7 @@
 #include "input.h"
 #include "job.h"
 #include "keys.h"
-#include "store/study.h"
+#include "study/study.h"
 
 enum field { F_SURFACE, F_UNITS, F_U, F_V, F_THRESHOLD, F_METHOD, F_SEED,
              F_PRICES, F_SP_AS_FP, F_MAX_AREA, F_NAME, F_COUNT };

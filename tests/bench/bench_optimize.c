@@ -21,7 +21,7 @@
 #include <string.h>
 
 #include "bench_common.h"
-#include "store/study.h"
+#include "study/study.h"
 
 static void fresh(const char *path)
 {

@@ -20,7 +20,7 @@
 
 #include "core/example.h"
 #include "store/filter.h"
-#include "store/study.h"
+#include "study/study.h"
 
 static char surface_path[64];
 static char db_path[64];

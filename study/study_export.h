@@ -16,7 +16,7 @@
 #include "core/report.h"
 #include "core/surface.h"
 #include "core/svg_map.h"
-#include "store.h"
+#include "store/store.h"
 
 /* A stored option with what showing or exporting it needs. */
 struct study_option {

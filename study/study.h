@@ -18,7 +18,7 @@
 #include "core/mesh.h"
 #include "core/optimize.h"
 #include "core/surface.h"
-#include "store.h"
+#include "store/store.h"
 
 struct study_hooks {
     void *context;
