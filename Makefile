@@ -36,7 +36,7 @@ CFLAGS  := -std=c11 $(WARN) $(DEFS) $(OPT) -MMD -MP -I.
 LDLIBS  := -lsqlite3 $(shell pkg-config --libs ncursesw 2>/dev/null || echo -lncursesw) -lpthread -lm
 LDFLAGS := $(filter -fsanitize=%,$(OPT))
 
-CORE_SRC  := $(wildcard core/*.c)
+CORE_SRC  := $(wildcard core/*/*.c)
 STORE_SRC := $(wildcard store/*.c)
 STUDY_SRC := $(wildcard study/*.c)
 TUI_SRC   := $(wildcard tui/*.c)

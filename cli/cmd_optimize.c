@@ -19,7 +19,7 @@
 #include "progress.h"
 #include "run_table.h"
 #include "signals.h"
-#include "core/infile.h"
+#include "core/obj/infile.h"
 #include "study/study.h"
 
 /* The largest space the exhaustive method takes by default. */

@@ -8,9 +8,9 @@
 
 #include "args.h"
 #include "command.h"
-#include "core/json.h"
-#include "core/numformat.h"
-#include "core/text.h"
+#include "core/out/json.h"
+#include "core/base/numformat.h"
+#include "core/base/text.h"
 #include "text_table.h"
 #include "store/store.h"
 #include "study/study.h"

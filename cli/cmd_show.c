@@ -10,8 +10,8 @@
 #include "args.h"
 #include "command.h"
 #include "option_text.h"
-#include "core/report.h"
-#include "core/text.h"
+#include "core/out/report.h"
+#include "core/base/text.h"
 #include "study/study.h"
 #include "study/study_export.h"
 

@@ -12,11 +12,11 @@
 #include <time.h>
 #include <unistd.h>
 
-#include "core/coarse_mesh.h"
-#include "core/front.h"
-#include "core/parallel.h"
-#include "core/sha256.h"
-#include "core/text.h"
+#include "core/surface/coarse_mesh.h"
+#include "core/search/front.h"
+#include "core/base/parallel.h"
+#include "core/base/sha256.h"
+#include "core/base/text.h"
 
 /* What the optimiser's hooks need to reach the store. */
 struct study_state {

@@ -3,8 +3,8 @@
  * store: what `facet optimize` and the TUI's New run both do.
  *
  * A study opens and prepares the surface, records the run, lets the
- * optimiser (core/optimize.h) evaluate the design space and commits every
- * batch as soon as it is evaluated, then ranks the options (core/front.h),
+ * optimiser (core/search/optimize.h) evaluate the design space and commits every
+ * batch as soon as it is evaluated, then ranks the options (core/search/front.h),
  * stores the panels of the Pareto options, and marks the run done. When the
  * stop hook fires it ranks what was stored and marks the run interrupted;
  * on an error, failed. Resuming reads the run back, checks that the surface
@@ -15,9 +15,9 @@
 #ifndef FACET_STUDY_H
 #define FACET_STUDY_H
 
-#include "core/mesh.h"
-#include "core/optimize.h"
-#include "core/surface.h"
+#include "core/surface/mesh.h"
+#include "core/search/optimize.h"
+#include "core/surface/surface.h"
 #include "store/store.h"
 
 struct study_hooks {

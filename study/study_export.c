@@ -9,11 +9,11 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "core/export_obj.h"
-#include "core/outfile.h"
-#include "core/panel_geometry.h"
-#include "core/report.h"
-#include "core/svg_plot.h"
+#include "core/out/export_obj.h"
+#include "core/out/outfile.h"
+#include "core/panel/panel_geometry.h"
+#include "core/out/report.h"
+#include "core/out/svg_plot.h"
 #include "study.h"
 
 /* Opens every wanted file as FILE.partial; on failure none is left. */

@@ -2,9 +2,9 @@
  * study_export.h: a stored option or run out of Facet, as files: what
  * `facet export`, `facet plot` and the TUI's export keys all do.
  *
- * An option goes out as OBJ + MTL (core/export_obj.h), a CSV panel
- * schedule and JSON (core/report.h) and an SVG panel map (core/svg_map.h);
- * a run as an SVG scatter (core/svg_plot.h). Every file is opened (as
+ * An option goes out as OBJ + MTL (core/out/export_obj.h), a CSV panel
+ * schedule and JSON (core/out/report.h) and an SVG panel map (core/out/svg_map.h);
+ * a run as an SVG scatter (core/out/svg_plot.h). Every file is opened (as
  * FILE.partial) before any work and renamed into place only when all of
  * them are written, so an export that fails leaves no file behind, new or
  * old; an existing file is refused unless force is set.
@@ -12,10 +12,10 @@
 #ifndef FACET_STUDY_EXPORT_H
 #define FACET_STUDY_EXPORT_H
 
-#include "core/panel_geometry.h"
-#include "core/report.h"
-#include "core/surface.h"
-#include "core/svg_map.h"
+#include "core/panel/panel_geometry.h"
+#include "core/out/report.h"
+#include "core/surface/surface.h"
+#include "core/out/svg_map.h"
 #include "store/store.h"
 
 /* A stored option with what showing or exporting it needs. */

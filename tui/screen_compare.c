@@ -16,7 +16,7 @@
 #include "format.h"
 #include "keys.h"
 #include "map_model.h"
-#include "core/metric.h"
+#include "core/search/metric.h"
 #include "study/study.h"
 
 struct compare_screen {

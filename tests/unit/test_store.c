@@ -18,7 +18,7 @@
 #include <string.h>
 #include <unistd.h>
 
-#include "core/example.h"
+#include "core/surface/example.h"
 #include "store/filter.h"
 #include "study/study.h"
 
