@@ -14,8 +14,8 @@
 #include "text_table.h"
 
 /* The listed options cheapest first, costs equal but for rounding
- * (core/search/ties.h) by planarity, then DP area, then No.: into order. Returns
- * 0, or -1 when out of memory. */
+ * (core/search/ties.h) by planarity, then DP area, then No.: into order.
+ * Returns 0, or -1 when out of memory. */
 static int order_by_cost(const struct option_row *listed, size_t n,
                          size_t *order)
 {

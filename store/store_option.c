@@ -359,8 +359,8 @@ int store_options_sort_check(const char *sort, struct facet_error *err)
 }
 
 /* The sort keys of a query, as store_option_columns names, with each
- * key's tie tolerance (core/search/ties.h) over the options of the query's run,
- * or of every run. */
+ * key's tie tolerance (core/search/ties.h) over the options of the query's
+ * run, or of every run. */
 struct sort_keys {
     const char *column[32];
     double tolerance[32];

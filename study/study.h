@@ -3,14 +3,14 @@
  * store: what `facet optimize` and the TUI's New run both do.
  *
  * A study opens and prepares the surface, records the run, lets the
- * optimiser (core/search/optimize.h) evaluate the design space and commits every
- * batch as soon as it is evaluated, then ranks the options (core/search/front.h),
- * stores the panels of the Pareto options, and marks the run done. When the
- * stop hook fires it ranks what was stored and marks the run interrupted;
- * on an error, failed. Resuming reads the run back, checks that the surface
- * file is the one the run was made from, and goes on: nothing stored is
- * evaluated again, and the finished run has the options an uninterrupted
- * one would have.
+ * optimiser (core/search/optimize.h) evaluate the design space and commits
+ * every batch as soon as it is evaluated, then ranks the options
+ * (core/search/front.h), stores the panels of the Pareto options, and marks
+ * the run done. When the stop hook fires it ranks what was stored and marks
+ * the run interrupted; on an error, failed. Resuming reads the run back,
+ * checks that the surface file is the one the run was made from, and goes
+ * on: nothing stored is evaluated again, and the finished run has the
+ * options an uninterrupted one would have.
  */
 #ifndef FACET_STUDY_H
 #define FACET_STUDY_H

@@ -3,11 +3,11 @@
  * `facet export`, `facet plot` and the TUI's export keys all do.
  *
  * An option goes out as OBJ + MTL (core/out/export_obj.h), a CSV panel
- * schedule and JSON (core/out/report.h) and an SVG panel map (core/out/svg_map.h);
- * a run as an SVG scatter (core/out/svg_plot.h). Every file is opened (as
- * FILE.partial) before any work and renamed into place only when all of
- * them are written, so an export that fails leaves no file behind, new or
- * old; an existing file is refused unless force is set.
+ * schedule and JSON (core/out/report.h) and an SVG panel map
+ * (core/out/svg_map.h); a run as an SVG scatter (core/out/svg_plot.h). Every
+ * file is opened (as FILE.partial) before any work and renamed into place
+ * only when all of them are written, so an export that fails leaves no file
+ * behind, new or old; an existing file is refused unless force is set.
  */
 #ifndef FACET_STUDY_EXPORT_H
 #define FACET_STUDY_EXPORT_H

@@ -1,6 +1,6 @@
 /*
- * obj_tuning_internal.h: the OBJ reader's knobs for how it splits and streams a
- * file, so that tests can force many small parts and windows.
+ * obj_tuning_internal.h: the OBJ reader's knobs for how it splits and
+ * streams a file, so that tests can force many small parts and windows.
  *
  * Internal (tests and obj.c only); callers use obj.h. Every field 0 means
  * the default obj_load and obj_parse use.
