@@ -19,6 +19,7 @@
 #include "progress.h"
 #include "run_table.h"
 #include "signals.h"
+#include "core/base/parallel.h"
 #include "core/obj/infile.h"
 #include "study/study.h"
 
@@ -143,8 +144,7 @@ static int parse_search(const struct search_flags *f,
                                              : "cost,planarity,dp_area",
                                s->objectives, &s->nobjectives, err)))
         return rc;
-    long cores = sysconf(_SC_NPROCESSORS_ONLN);
-    s->jobs = cores > 0 ? (int)(cores < 64 ? cores : 64) : 1;
+    s->jobs = parallel_cpus(PARALLEL_MAX);
     if (f->jobs) {
         if ((rc = args_int(f->jobs, 1, 64, "--jobs", &number, err)))
             return rc;

@@ -596,9 +596,7 @@ static void loader_start(struct loader *ld, const char *name,
     facet_error_clear(err);
     ld->name = name;
     ld->err = err;
-    long online = sysconf(_SC_NPROCESSORS_ONLN);
-    ld->nthreads = online < 1 ? 1 : online > MAX_THREADS ? MAX_THREADS
-                 : (unsigned)online;
+    ld->nthreads = (unsigned)parallel_cpus(MAX_THREADS);
     ld->part_bytes = DEFAULT_PART_BYTES;
     if (tuning != NULL && tuning->nthreads > 0)
         ld->nthreads = tuning->nthreads < MAX_THREADS ? tuning->nthreads

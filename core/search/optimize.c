@@ -6,13 +6,13 @@
 #include "core/search/optimize.h"
 
 #include <math.h>
-#include <pthread.h>
 #include <stdatomic.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "core/base/numparse.h"
+#include "core/base/parallel.h"
 #include "core/search/optimize_internal.h"
 #include "core/base/rng.h"
 
@@ -180,7 +180,7 @@ struct evaluation_job {
 /* Evaluates groups until none is left or one fails. A group's grid is
  * panelized once: its other points (only the threshold differs) have the
  * same panels, which are only classified anew. */
-static void *evaluation_thread(void *argument)
+static void evaluation_thread(void *argument)
 {
     struct evaluation_job *job = argument;
     struct evaluation_plan *plan = job->plan;
@@ -220,7 +220,6 @@ static void *evaluation_thread(void *argument)
             break;
         }
     }
-    return NULL;
 }
 
 /* A point's place in the order of evaluation: by grid, then index. */
@@ -239,8 +238,6 @@ static int compare_by_grid(const void *a, const void *b)
     return p->index < q->index ? -1 : p->index > q->index;
 }
 
-#define MAX_JOBS 64
-
 /* optimize_evaluate, and with keep, optimize_evaluate_panels. */
 static int evaluate(const struct surface *surface,
                     const struct panel_lattice *lattice,
@@ -251,8 +248,8 @@ static int evaluate(const struct surface *surface,
 {
     if (jobs < 1)
         jobs = 1;
-    if (jobs > MAX_JOBS)
-        jobs = MAX_JOBS;
+    if (jobs > PARALLEL_MAX)
+        jobs = PARALLEL_MAX;
     /* Points that share a grid make one group, panelized once for all
      * their thresholds. Already ordered (exhaustive: thresholds innermost)
      * is kept as is. */
@@ -291,21 +288,10 @@ static int evaluate(const struct surface *surface,
     struct evaluation_plan plan = {surface, lattice, base, points, order,
                                    group, ngroups, 0, totals, keep};
     atomic_init(&plan.next, 0);
-    struct evaluation_job job[MAX_JOBS];
-    pthread_t thread[MAX_JOBS];
-    int started[MAX_JOBS];
-    for (int k = 0; k < jobs; k++) {
+    struct evaluation_job job[PARALLEL_MAX];
+    for (int k = 0; k < jobs; k++)
         job[k] = (struct evaluation_job){&plan, FACET_OK, {0, ""}};
-        /* The calling thread is the last job itself. */
-        started[k] = k + 1 < jobs &&
-            pthread_create(&thread[k], NULL, evaluation_thread, &job[k]) == 0;
-    }
-    for (int k = 0; k < jobs; k++)
-        if (!started[k])
-            evaluation_thread(&job[k]);
-    for (int k = 0; k < jobs; k++)
-        if (started[k])
-            pthread_join(thread[k], NULL);
+    parallel_run(job, sizeof job[0], jobs, evaluation_thread);
     free(order);
     free(group);
     for (int k = 0; k < jobs; k++)

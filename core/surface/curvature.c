@@ -84,15 +84,14 @@
  * threads change nothing in the result).
  */
 #include <math.h>
-#include <pthread.h>
 #include <stdatomic.h>
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
-#include <unistd.h>
 
 #include "core/surface/curvature.h"
 #include "core/base/linalg.h"
+#include "core/base/parallel.h"
 #include "core/base/vec3.h"
 
 enum {
@@ -929,7 +928,7 @@ struct vertex_job {
 
 enum { VERTEX_CHUNK = 512, VERTEX_THREADS_MAX = 8 };
 
-static void *vertex_job_run(void *argument)
+static void vertex_job_run(void *argument)
 {
     struct vertex_job *job = argument;
     size_t nv = job->mesh->nvertices;
@@ -942,17 +941,14 @@ static void *vertex_job_run(void *argument)
             vertex_curvature(job->mesh, (uint32_t)v, job->flip_normals,
                              &job->ws, job->out);
     }
-    return NULL;
 }
 
 int curvature_at_vertices(const struct mesh *mesh, int flip_normals,
                           struct curvature *out, struct facet_error *err)
 {
-    /* The online CPUs, at most VERTEX_THREADS_MAX. */
-    long cpus = sysconf(_SC_NPROCESSORS_ONLN);
-    int jobs = cpus < 1 ? 1
-               : cpus > VERTEX_THREADS_MAX ? VERTEX_THREADS_MAX : (int)cpus;
-    return curvature_at_vertices_jobs(mesh, flip_normals, jobs, out, err);
+    return curvature_at_vertices_jobs(mesh, flip_normals,
+                                      parallel_cpus(VERTEX_THREADS_MAX), out,
+                                      err);
 }
 
 int curvature_at_vertices_jobs(const struct mesh *mesh, int flip_normals,
@@ -1012,16 +1008,9 @@ int curvature_at_vertices_jobs(const struct mesh *mesh, int flip_normals,
         }
     }
     if (rc == FACET_OK) {
-        /* Job 0 runs here; one whose thread cannot start runs here too. */
-        pthread_t thread[VERTEX_THREADS_MAX];
-        int started[VERTEX_THREADS_MAX] = {0};
-        for (int k = 1; k < njobs; k++)
-            started[k] = pthread_create(&thread[k], NULL, vertex_job_run,
-                                        &job[k]) == 0;
-        vertex_job_run(&job[0]);
-        for (int k = 1; k < njobs; k++)
-            if (started[k])
-                pthread_join(thread[k], NULL);
+        /* Job 0 runs here; one whose thread cannot start runs here after
+         * it, and finds every chunk claimed. */
+        parallel_run(job, sizeof job[0], njobs, vertex_job_run);
     }
     for (int k = 0; k < made; k++) {
         free(job[k].ws.mark);

@@ -5,10 +5,10 @@
 #include "core/surface/uv_index.h"
 
 #include <math.h>
-#include <pthread.h>
 #include <stdlib.h>
 #include <string.h>
-#include <unistd.h>
+
+#include "core/base/parallel.h"
 
 /* Cells per triangle: about one keeps buckets short without wasting memory. */
 #define MAX_CELLS_PER_AXIS 4096
@@ -269,7 +269,7 @@ struct overlap_job {
 
 enum { OVERLAP_THREADS_MAX = 8, OVERLAP_THREADS_FROM = 20000 };
 
-static void *overlap_rows(void *argument)
+static void overlap_rows(void *argument)
 {
     struct overlap_job *job = argument;
     const struct uv_index *index = job->index;
@@ -307,7 +307,6 @@ static void *overlap_rows(void *argument)
                 }
             }
         }
-    return NULL;
 }
 
 int uv_check(const double *uv, size_t ntriangles, struct uv_report *report,
@@ -347,29 +346,17 @@ int uv_check(const double *uv, size_t ntriangles, struct uv_report *report,
      * Rows of cells are shared among the online CPUs (at most 8) when
      * there are enough triangles to pay for threads. */
     struct overlap_job job[OVERLAP_THREADS_MAX];
-    long cpus = sysconf(_SC_NPROCESSORS_ONLN);
-    int njobs = ntriangles < OVERLAP_THREADS_FROM || cpus < 2 ? 1
-                : cpus < OVERLAP_THREADS_MAX ? (int)cpus : OVERLAP_THREADS_MAX;
+    int njobs = ntriangles < OVERLAP_THREADS_FROM
+                ? 1 : parallel_cpus(OVERLAP_THREADS_MAX);
     if (njobs > index.ncells_v)
         njobs = index.ncells_v;
-    pthread_t thread[OVERLAP_THREADS_MAX];
-    int started[OVERLAP_THREADS_MAX] = {0};
-    for (int k = 0; k < njobs; k++) {
+    for (int k = 0; k < njobs; k++)
         job[k] = (struct overlap_job){&index, uv, tiny_area, tolerance,
             (int)((long)index.ncells_v * k / njobs),
             (int)((long)index.ncells_v * (k + 1) / njobs), 0};
-        if (k > 0)
-            started[k] = pthread_create(&thread[k], NULL, overlap_rows,
-                                        &job[k]) == 0;
-    }
-    overlap_rows(&job[0]);
-    for (int k = 1; k < njobs; k++) {
-        if (started[k])
-            pthread_join(thread[k], NULL);
-        else
-            overlap_rows(&job[k]);
+    parallel_run(job, sizeof job[0], njobs, overlap_rows);
+    for (int k = 1; k < njobs; k++)
         job[0].overlapping += job[k].overlapping;
-    }
     report->overlapping = job[0].overlapping;
     uv_index_free(&index);
     return FACET_OK;
