@@ -36,11 +36,12 @@ CFLAGS  := -std=c11 $(WARN) $(DEFS) $(OPT) -MMD -MP -I.
 LDLIBS  := -lsqlite3 $(shell pkg-config --libs ncursesw 2>/dev/null || echo -lncursesw) -lpthread -lm
 LDFLAGS := $(filter -fsanitize=%,$(OPT))
 
-CORE_SRC  := $(wildcard core/*.c)
+CORE_SRC  := $(wildcard core/*/*.c)
 STORE_SRC := $(wildcard store/*.c)
+STUDY_SRC := $(wildcard study/*.c)
 TUI_SRC   := $(wildcard tui/*.c)
 CLI_SRC   := $(filter-out cli/main.c,$(wildcard cli/*.c))
-LIB_SRC   := $(CORE_SRC) $(STORE_SRC) $(TUI_SRC) $(CLI_SRC)
+LIB_SRC   := $(CORE_SRC) $(STORE_SRC) $(STUDY_SRC) $(TUI_SRC) $(CLI_SRC)
 LIB_OBJ   := $(LIB_SRC:%.c=$(BUILD)/%.o)
 
 SUPPORT_SRC := $(wildcard tests/support/*.c)

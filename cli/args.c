@@ -10,8 +10,8 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "core/numparse.h"
-#include "core/spelling.h"
+#include "core/base/numparse.h"
+#include "core/base/spelling.h"
 
 static const struct arg_option *find_long(const struct arg_option *options,
                                           const char *name, size_t length)

@@ -9,7 +9,7 @@
 #ifndef FACET_ARGS_H
 #define FACET_ARGS_H
 
-#include "core/error.h"
+#include "core/base/error.h"
 
 enum arg_kind {
     ARG_FLAG,    /* no value: sets *flag to 1 */

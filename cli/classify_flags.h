@@ -9,9 +9,9 @@
 #define FACET_CLASSIFY_FLAGS_H
 
 #include "args.h"
-#include "core/mesh.h"
-#include "core/option.h"
-#include "core/param.h"
+#include "core/surface/mesh.h"
+#include "core/classify/option.h"
+#include "core/surface/param.h"
 
 /* The flags' values as given (pointing into argv), NULL when absent. */
 struct classify_flags {

@@ -13,11 +13,11 @@
 #include "classify_flags.h"
 #include "command.h"
 #include "option_text.h"
-#include "core/coarse_mesh.h"
-#include "core/numparse.h"
-#include "core/option.h"
-#include "core/outfile.h"
-#include "core/report.h"
+#include "core/surface/coarse_mesh.h"
+#include "core/base/numparse.h"
+#include "core/classify/option.h"
+#include "core/out/outfile.h"
+#include "core/out/report.h"
 
 /* Parses "37x49" into nu, nv, each side read as written (4294967297x5 is
  * out of range, not 1x5). */

@@ -13,10 +13,10 @@
 
 #include "args.h"
 #include "command.h"
-#include "core/curvature.h"
-#include "core/json.h"
-#include "core/outfile.h"
-#include "core/surface.h"
+#include "core/surface/curvature.h"
+#include "core/out/json.h"
+#include "core/out/outfile.h"
+#include "core/surface/surface.h"
 
 static const char csv_header[] =
     "v,x,y,z,k1,k2,K,H,normal_x,normal_y,normal_z,boundary\n";

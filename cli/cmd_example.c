@@ -9,7 +9,7 @@
 
 #include "args.h"
 #include "command.h"
-#include "core/example.h"
+#include "core/surface/example.h"
 
 static int example_run(int argc, char **argv, struct facet_error *err)
 {

@@ -12,8 +12,8 @@
 
 #include "args.h"
 #include "command.h"
-#include "store/study.h"
-#include "store/study_export.h"
+#include "study/study.h"
+#include "study/study_export.h"
 
 /* Whether path is standard output: "-", or the file stdout is open on
  * (/dev/stdout, a pipe's /proc/self/fd/1). */

@@ -9,9 +9,9 @@
 #include "args.h"
 #include "classify_flags.h"
 #include "command.h"
-#include "core/json.h"
-#include "core/surface.h"
-#include "core/uv_index.h"
+#include "core/out/json.h"
+#include "core/surface/surface.h"
+#include "core/surface/uv_index.h"
 
 static const char *uv_verdict(const struct mesh *mesh,
                               const struct uv_report *uv)

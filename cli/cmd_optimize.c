@@ -2,7 +2,7 @@
  * cmd_optimize.c: `facet optimize SURFACE.obj --db FILE`, the paper's MOGD:
  * search grid sizes and flatness thresholds for the Pareto-optimal
  * trade-offs, every option committed to SQLite as it is evaluated, and the
- * paper's Table 2 for the run at the end. The work is store/study.h's; this
+ * paper's Table 2 for the run at the end. The work is study/study.h's; this
  * file parses the design space and reports.
  */
 #include <errno.h>
@@ -19,8 +19,9 @@
 #include "progress.h"
 #include "run_table.h"
 #include "signals.h"
-#include "core/infile.h"
-#include "store/study.h"
+#include "core/base/parallel.h"
+#include "core/obj/infile.h"
+#include "study/study.h"
 
 /* The largest space the exhaustive method takes by default. */
 #define EXHAUSTIVE_DEFAULT_LIMIT 100000
@@ -143,8 +144,7 @@ static int parse_search(const struct search_flags *f,
                                              : "cost,planarity,dp_area",
                                s->objectives, &s->nobjectives, err)))
         return rc;
-    long cores = sysconf(_SC_NPROCESSORS_ONLN);
-    s->jobs = cores > 0 ? (int)(cores < 64 ? cores : 64) : 1;
+    s->jobs = parallel_cpus(PARALLEL_MAX);
     if (f->jobs) {
         if ((rc = args_int(f->jobs, 1, 64, "--jobs", &number, err)))
             return rc;

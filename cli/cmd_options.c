@@ -10,8 +10,8 @@
 
 #include "args.h"
 #include "command.h"
-#include "core/json.h"
-#include "core/numformat.h"
+#include "core/out/json.h"
+#include "core/base/numformat.h"
 #include "text_table.h"
 #include "store/filter.h"
 #include "store/store.h"

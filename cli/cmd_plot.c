@@ -8,7 +8,7 @@
 
 #include "args.h"
 #include "command.h"
-#include "store/study_export.h"
+#include "study/study_export.h"
 
 static int plot_main(int argc, char **argv, struct facet_error *err)
 {

@@ -8,12 +8,12 @@
 
 #include "args.h"
 #include "command.h"
-#include "core/json.h"
-#include "core/numformat.h"
-#include "core/text.h"
+#include "core/out/json.h"
+#include "core/base/numformat.h"
+#include "core/base/text.h"
 #include "text_table.h"
 #include "store/store.h"
-#include "store/study.h"
+#include "study/study.h"
 
 static void print_json(const struct run_info *runs,
                        const struct front_bounds *bounds, size_t n)

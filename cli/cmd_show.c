@@ -10,10 +10,10 @@
 #include "args.h"
 #include "command.h"
 #include "option_text.h"
-#include "core/report.h"
-#include "core/text.h"
-#include "store/study.h"
-#include "store/study_export.h"
+#include "core/out/report.h"
+#include "core/base/text.h"
+#include "study/study.h"
+#include "study/study_export.h"
 
 static int show_main(int argc, char **argv, struct facet_error *err)
 {

@@ -8,7 +8,7 @@
 #include <string.h>
 
 #include "command.h"
-#include "core/spelling.h"
+#include "core/base/spelling.h"
 
 static int wants_help(int argc, char **argv)
 {

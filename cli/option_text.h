@@ -8,8 +8,8 @@
 
 #include <stdio.h>
 
-#include "core/classify.h"
-#include "core/panel.h"
+#include "core/classify/classify.h"
+#include "core/panel/panel.h"
 
 /* The totals tables: per type, planarity and sizes, per class. */
 void option_text_totals(FILE *out, const struct option_totals *totals,

@@ -7,15 +7,15 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "core/numformat.h"
-#include "core/text.h"
-#include "core/ties.h"
-#include "store/study.h"
+#include "core/base/numformat.h"
+#include "core/base/text.h"
+#include "core/search/ties.h"
+#include "study/study.h"
 #include "text_table.h"
 
 /* The listed options cheapest first, costs equal but for rounding
- * (core/ties.h) by planarity, then DP area, then No.: into order. Returns
- * 0, or -1 when out of memory. */
+ * (core/search/ties.h) by planarity, then DP area, then No.: into order.
+ * Returns 0, or -1 when out of memory. */
 static int order_by_cost(const struct option_row *listed, size_t n,
                          size_t *order)
 {

@@ -16,7 +16,7 @@
  */
 #include "store/filter.h"
 #include "store/filter_sql.h"
-#include "store/store_db.h"
+#include "store/store_internal.h"
 #include "store/store.h"
 
 #include <math.h>
@@ -25,9 +25,9 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "core/numformat.h"
-#include "core/numparse.h"
-#include "core/spelling.h"
+#include "core/base/numformat.h"
+#include "core/base/numparse.h"
+#include "core/base/spelling.h"
 
 const char *const store_option_columns[] = {
     "number", "generation", "nu", "nv", "threshold_mm", "panels",

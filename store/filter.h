@@ -19,7 +19,7 @@
 #ifndef FACET_FILTER_H
 #define FACET_FILTER_H
 
-#include "core/error.h"
+#include "core/base/error.h"
 
 struct filter;
 

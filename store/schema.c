@@ -4,7 +4,7 @@
  * share, and noticing runs whose writer is gone. README.md ("The result
  * store") documents every table, column and unit defined here.
  */
-#include "store_db.h"
+#include "store_internal.h"
 
 #include <errno.h>
 #include <math.h>

@@ -19,9 +19,9 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#include "core/classify.h"
-#include "core/error.h"
-#include "core/panel.h"
+#include "core/classify/classify.h"
+#include "core/base/error.h"
+#include "core/panel/panel.h"
 
 struct store;  /* an open database */
 
@@ -233,7 +233,7 @@ struct option_query {
 
 /* Calls row(context, run, option) for each option that matches q, in
  * order; stops early when row returns non-zero. Sorted by columns, values
- * of a column equal but for rounding tie (core/ties.h, the column's
+ * of a column equal but for rounding tie (core/search/ties.h, the column's
  * tolerance over q's run, or over every run) and fall to the next column,
  * then to run and number; limit and offset count in that order. (SQL
  * orders by the exact values; each tie class of the first column is
@@ -429,7 +429,7 @@ int store_browse_classes(struct store *store, const struct option_browse *b,
                          struct class_frequency out[CLASS_COUNT],
                          struct facet_error *err);
 
-/* --- the workbench's newer screens (store_tui2.c) --- */
+/* --- the extent of a column over a run (store_column_range.c) --- */
 
 /* The least and greatest value of column (a name of store_option_columns
  * other than run) over every option of run, NULLs left out, each read

@@ -11,7 +11,7 @@
  * with store_option_get, so this file has no second copy of the options
  * table's column list. Not here: writing options (store_option.c).
  */
-#include "store_db.h"
+#include "store_internal.h"
 
 #include <math.h>
 #include <stdarg.h>

@@ -3,7 +3,7 @@
  * options, reading a run's options back, writing the Pareto analysis, and
  * the sorted, filtered queries of `facet options` and the TUI. See store.h.
  */
-#include "store_db.h"
+#include "store_internal.h"
 
 #include <assert.h>
 #include <math.h>
@@ -12,7 +12,7 @@
 #include <string.h>
 #include <strings.h>
 
-#include "core/ties.h"
+#include "core/search/ties.h"
 #include "filter_sql.h"
 
 /* Every column of options, in the order option_bind writes them and
@@ -359,8 +359,8 @@ int store_options_sort_check(const char *sort, struct facet_error *err)
 }
 
 /* The sort keys of a query, as store_option_columns names, with each
- * key's tie tolerance (core/ties.h) over the options of the query's run,
- * or of every run. */
+ * key's tie tolerance (core/search/ties.h) over the options of the query's
+ * run, or of every run. */
 struct sort_keys {
     const char *column[32];
     double tolerance[32];

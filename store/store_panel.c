@@ -2,7 +2,7 @@
  * store_panel.c: the panels of the options a designer looks at (the
  * panel_sets and panels tables). See store.h.
  */
-#include "store_db.h"
+#include "store_internal.h"
 
 #include <math.h>
 #include <stdlib.h>

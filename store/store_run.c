@@ -2,7 +2,7 @@
  * store_run.c: the runs table: creating a run, reading it back, its status
  * as it goes, deleting it. See store.h.
  */
-#include "store_db.h"
+#include "store_internal.h"
 
 #include <math.h>
 #include <stdio.h>

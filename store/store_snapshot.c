@@ -4,7 +4,7 @@
  */
 #include "snapshot.h"
 
-#include "store_db.h"
+#include "store_internal.h"
 
 int store_snapshot_begin(struct store *store)
 {

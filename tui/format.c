@@ -7,7 +7,7 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "core/numformat.h"
+#include "core/base/numformat.h"
 
 void tui_fmt_number(char *out, size_t size, double value, int decimals,
                     int thousands)

@@ -11,7 +11,7 @@
 
 #include <stdint.h>
 
-#include "store/study.h"
+#include "study/study.h"
 
 struct tui_job;
 

@@ -5,7 +5,7 @@
 
 #include <math.h>
 
-#include "core/classify.h"
+#include "core/classify/classify.h"
 
 static const struct panel *panel_at(const struct panelization *p, int i,
                                     int j)

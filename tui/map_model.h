@@ -9,7 +9,7 @@
 #ifndef FACET_TUI_MAP_MODEL_H
 #define FACET_TUI_MAP_MODEL_H
 
-#include "core/panel.h"
+#include "core/panel/panel.h"
 
 /* A terminal character is about twice as tall as it is wide. */
 #define MAP_CELL_ASPECT 2.0

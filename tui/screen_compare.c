@@ -16,8 +16,8 @@
 #include "format.h"
 #include "keys.h"
 #include "map_model.h"
-#include "core/metric.h"
-#include "store/study.h"
+#include "core/search/metric.h"
+#include "study/study.h"
 
 struct compare_screen {
     struct tui_screen base;

@@ -20,8 +20,8 @@
 #include "keys.h"
 #include "input.h"
 #include "map_model.h"
-#include "store/study.h"
-#include "store/study_export.h"
+#include "study/study.h"
+#include "study/study_export.h"
 
 struct map_screen {
     struct tui_screen base;

@@ -26,7 +26,8 @@
 #include "input.h"
 #include "job.h"
 #include "keys.h"
-#include "store/study.h"
+#include "core/base/parallel.h"
+#include "study/study.h"
 
 enum field { F_SURFACE, F_UNITS, F_U, F_V, F_THRESHOLD, F_METHOD, F_SEED,
              F_PRICES, F_SP_AS_FP, F_MAX_AREA, F_NAME, F_COUNT };
@@ -230,8 +231,7 @@ static int build(struct newrun_screen *s, struct study_request *r,
             "max panel: '%s' is not an area > 0 (m^2)", area);
     if ((rc = classify_check_options(c, err)))
         return rc;
-    long cores = sysconf(_SC_NPROCESSORS_ONLN);
-    o->jobs = cores > 0 ? (int)(cores < 64 ? cores : 64) : 1;
+    o->jobs = parallel_cpus(PARALLEL_MAX);
     return FACET_OK;
 }
 

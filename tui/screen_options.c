@@ -19,8 +19,8 @@
 #include "input.h"
 #include "keys.h"
 #include "layout.h"
-#include "store/study.h"
-#include "store/study_export.h"
+#include "study/study.h"
+#include "study/study_export.h"
 
 struct options_screen {
     struct tui_screen base;

@@ -25,7 +25,7 @@
 #include "input.h"
 #include "keys.h"
 #include "scatter_model.h"
-#include "store/study_export.h"
+#include "study/study_export.h"
 
 #define SCATTER_POINTS 8000
 

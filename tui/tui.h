@@ -8,7 +8,7 @@
 #ifndef FACET_TUI_H
 #define FACET_TUI_H
 
-#include "core/error.h"
+#include "core/base/error.h"
 
 /* Runs the workbench until the user quits. path is a result database
  * (opened, or created when missing; NULL for facet.db in the current

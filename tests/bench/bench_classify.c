@@ -20,7 +20,7 @@
 #include <unistd.h>
 
 #include "bench_common.h"
-#include "core/option.h"
+#include "core/classify/option.h"
 
 int main(int argc, char **argv)
 {

@@ -13,8 +13,8 @@
 #include <time.h>
 #include <unistd.h>
 
-#include "core/example.h"
-#include "core/surface.h"
+#include "core/surface/example.h"
+#include "core/surface/surface.h"
 
 static double bench_now(void)
 {

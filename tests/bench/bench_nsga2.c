@@ -21,8 +21,8 @@
 #include <string.h>
 #include <time.h>
 
-#include "core/nsga2.h"
-#include "core/pareto.h"
+#include "core/search/nsga2.h"
+#include "core/search/pareto.h"
 
 #define PI 3.14159265358979323846
 #define NVARS 30

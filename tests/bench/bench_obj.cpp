@@ -19,7 +19,7 @@
 #include <tiny_obj_loader.h>
 
 extern "C" {
-#include "core/obj.h"
+#include "core/obj/obj.h"
 }
 
 static double seconds_since(std::chrono::steady_clock::time_point start)

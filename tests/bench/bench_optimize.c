@@ -21,7 +21,8 @@
 #include <string.h>
 
 #include "bench_common.h"
-#include "store/study.h"
+#include "core/base/parallel.h"
+#include "study/study.h"
 
 static void fresh(const char *path)
 {
@@ -43,8 +44,7 @@ int main(int argc, char **argv)
 {
     int res = argc > 1 ? atoi(argv[1]) : 224;
     long bulk = argc > 2 ? atol(argv[2]) : 1000000;
-    long cores = sysconf(_SC_NPROCESSORS_ONLN);
-    int jobs = cores > 0 ? (int)cores : 1;
+    int jobs = parallel_cpus(PARALLEL_MAX);
     struct facet_error err;
     char obj[] = "/tmp/facet_bench_optimize.obj";
     char db[] = "/tmp/facet_bench_optimize.db";

@@ -5,8 +5,8 @@
 #include <assert.h>
 #include <string.h>
 
-#include "core/mesh.h"
-#include "core/obj.h"
+#include "core/surface/mesh.h"
+#include "core/obj/obj.h"
 #include "fuzz.h"
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)

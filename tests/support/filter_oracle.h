@@ -16,7 +16,7 @@
 #include <sqlite3.h>
 #include <stddef.h>
 
-#include "core/rng.h"
+#include "core/base/rng.h"
 #include "store/filter.h"
 #include "store/store.h"
 

@@ -14,7 +14,7 @@
  */
 #include <stdio.h>
 
-#include "core/obj.h"
+#include "core/obj/obj.h"
 
 static unsigned long long one_based(uint32_t index)
 {

@@ -12,8 +12,8 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "core/classify.h"
-#include "core/sym3.h"
+#include "core/classify/classify.h"
+#include "core/base/sym3.h"
 
 static void test_table_one(void **state)
 {

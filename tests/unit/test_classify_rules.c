@@ -22,10 +22,10 @@
 #include <string.h>
 #include <unistd.h>
 
-#include "core/classify.h"
-#include "core/example.h"
-#include "core/option.h"
-#include "core/surface.h"
+#include "core/classify/classify.h"
+#include "core/surface/example.h"
+#include "core/classify/option.h"
+#include "core/surface/surface.h"
 
 /* ---- Analytic surfaces, written as OBJ with vt = their parameters ---- */
 

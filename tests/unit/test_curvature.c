@@ -18,11 +18,11 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "core/curvature.h"
-#include "core/example.h"
-#include "core/linalg.h"
-#include "core/mesh.h"
-#include "core/obj.h"
+#include "core/surface/curvature.h"
+#include "core/surface/example.h"
+#include "core/base/linalg.h"
+#include "core/surface/mesh.h"
+#include "core/obj/obj.h"
 
 /* ---- Helpers ------------------------------------------------------------ */
 

@@ -18,7 +18,7 @@
 #include <string.h>
 #include <unistd.h>
 
-#include "core/option.h"
+#include "core/classify/option.h"
 
 /* Opens and prepares the OBJ text as a surface (through a temporary
  * file, as a designer's file would be read). */

@@ -13,8 +13,8 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "core/example.h"
-#include "core/mesh.h"
+#include "core/surface/example.h"
+#include "core/surface/mesh.h"
 
 #define PI 3.14159265358979323846
 

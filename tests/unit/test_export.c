@@ -20,15 +20,15 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include "core/example.h"
-#include "core/export_obj.h"
-#include "core/option.h"
-#include "core/panel_geometry.h"
-#include "core/pareto.h"
-#include "core/numformat.h"
-#include "core/svg.h"
-#include "core/svg_map.h"
-#include "core/svg_plot.h"
+#include "core/surface/example.h"
+#include "core/out/export_obj.h"
+#include "core/classify/option.h"
+#include "core/panel/panel_geometry.h"
+#include "core/search/pareto.h"
+#include "core/base/numformat.h"
+#include "core/out/svg.h"
+#include "core/out/svg_map.h"
+#include "core/out/svg_plot.h"
 
 /* An evaluated option with its geometry. */
 struct fixture {

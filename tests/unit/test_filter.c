@@ -20,7 +20,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "core/rng.h"
+#include "core/base/rng.h"
 #include "store/filter.h"
 #include "store/filter_sql.h"
 #include "store/store.h"

@@ -14,8 +14,8 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "core/json.h"
-#include "core/rng.h"
+#include "core/out/json.h"
+#include "core/base/rng.h"
 
 static void test_nested_document(void **state)
 {

@@ -26,9 +26,9 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "core/nsga2.h"
-#include "core/pareto.h"
-#include "core/rng.h"
+#include "core/search/nsga2.h"
+#include "core/search/pareto.h"
+#include "core/base/rng.h"
 
 #define PI 3.14159265358979323846
 

@@ -14,7 +14,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "core/numparse.h"
+#include "core/base/numparse.h"
 
 static int parse(const char *text, double *value, const char **stop)
 {

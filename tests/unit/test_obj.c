@@ -16,9 +16,9 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include "core/obj.h"
-#include "core/obj_table.h"
-#include "core/obj_tuning.h"
+#include "core/obj/obj.h"
+#include "core/obj/obj_table.h"
+#include "core/obj/obj_tuning_internal.h"
 
 static void parse_ok(const char *text, struct obj_file *obj)
 {

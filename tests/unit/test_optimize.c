@@ -17,10 +17,10 @@
 #include <string.h>
 #include <unistd.h>
 
-#include "core/example.h"
-#include "core/front.h"
-#include "core/optimize.h"
-#include "core/panel_lattice.h"
+#include "core/surface/example.h"
+#include "core/search/front.h"
+#include "core/search/optimize.h"
+#include "core/panel/panel_lattice.h"
 #include "tie_oracle.h"
 
 static struct surface roof;

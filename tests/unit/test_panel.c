@@ -17,10 +17,10 @@
 #include <string.h>
 #include <unistd.h>
 
-#include "core/example.h"
-#include "core/optimize.h"
-#include "core/option.h"
-#include "core/panel_lattice.h"
+#include "core/surface/example.h"
+#include "core/search/optimize.h"
+#include "core/classify/option.h"
+#include "core/panel/panel_lattice.h"
 
 #define PI 3.14159265358979323846
 

@@ -22,9 +22,9 @@
 #include <string.h>
 #include <unistd.h>
 
-#include "core/option.h"
-#include "core/surface.h"
-#include "core/vec3.h"
+#include "core/classify/option.h"
+#include "core/surface/surface.h"
+#include "core/base/vec3.h"
 
 #define PI 3.14159265358979323846
 

@@ -5,7 +5,7 @@
  * sets, crowding distances against a hand computation, exact hypervolume
  * against counting unit cells on integer grids, normalisation, survivor
  * selection and the knee; and ties (values equal but for rounding, within
- * the tolerance of core/ties.h) against a brute force with the pairwise
+ * the tolerance of core/search/ties.h) against a brute force with the pairwise
  * tolerance rule, and against the unmoved values.
  */
 #include <setjmp.h>
@@ -19,8 +19,8 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "core/pareto.h"
-#include "core/rng.h"
+#include "core/search/pareto.h"
+#include "core/base/rng.h"
 #include "tie_oracle.h"
 
 /* ---- oracles ------------------------------------------------------------- */

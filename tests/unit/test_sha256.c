@@ -13,7 +13,7 @@
 #include <string.h>
 #include <unistd.h>
 
-#include "core/sha256.h"
+#include "core/base/sha256.h"
 
 static void digest(const char *text, size_t repeat, char hex[65])
 {

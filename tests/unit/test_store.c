@@ -18,9 +18,9 @@
 #include <string.h>
 #include <unistd.h>
 
-#include "core/example.h"
+#include "core/surface/example.h"
 #include "store/filter.h"
-#include "store/study.h"
+#include "study/study.h"
 
 static char surface_path[64];
 static char db_path[64];

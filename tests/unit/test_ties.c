@@ -1,5 +1,5 @@
 /*
- * test_ties.c: the tie rule of core/ties.h on hand-made columns: the
+ * test_ties.c: the tie rule of core/search/ties.h on hand-made columns: the
  * tolerance (a billionth of the range or of the largest magnitude), tie
  * classes by single linkage (a chain ties as a whole, a gap over the
  * tolerance splits), infinities, idempotence, and the comparison of
@@ -13,7 +13,7 @@
 
 #include <math.h>
 
-#include "core/ties.h"
+#include "core/search/ties.h"
 
 static void test_tolerance(void **state)
 {

@@ -13,7 +13,7 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "core/mesh.h"
+#include "core/surface/mesh.h"
 
 /* Parses text and builds its mesh with units and selection; fails the test
  * on any error. */

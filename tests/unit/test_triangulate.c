@@ -14,7 +14,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "core/triangulate.h"
+#include "core/obj/triangulate.h"
 
 /* Places 2D outline (x, y) pairs into 3D on a tilted plane. */
 static double *lift(const double *xy, size_t n)

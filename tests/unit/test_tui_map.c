@@ -15,7 +15,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "core/classify.h"
+#include "core/classify/classify.h"
 #include "tui/map_model.h"
 
 /* An nu x nv grid over a plane w x h (m) at z = 0, every cell a panel of

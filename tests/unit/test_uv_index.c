@@ -12,7 +12,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "core/uv_index.h"
+#include "core/surface/uv_index.h"
 
 /* n x n unit-square grid split into 2 n^2 counter-clockwise triangles. */
 static double *grid_uv(int n, size_t *ntriangles)

@@ -2,7 +2,8 @@
  * tie_oracle.h: the brute force that ranks with ties, for the unit tests
  * (include after cmocka.h).
  *
- * Objective values equal but for rounding must compare equal (core/ties.h):
+ * Objective values equal but for rounding must compare equal
+ * (core/search/ties.h):
  * tol_j = 1e-9 x max(range, largest magnitude) of objective j over the
  * points. The oracle is the pairwise rule, straight from that definition,
  * with the tolerance computed here on its own: a dominates b when

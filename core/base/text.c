@@ -1,0 +1,76 @@
+/*
+ * text.c: clean text for terminals and stores. See text.h.
+ */
+#include "core/base/text.h"
+
+#include <string.h>
+
+/* The length of the valid UTF-8 character at s (1 to 4), or 0 when the
+ * bytes there are not one. */
+static size_t utf8_length(const unsigned char *s)
+{
+    if (s[0] < 0x80)
+        return 1;
+    size_t n;
+    unsigned min;
+    unsigned code;
+    if ((s[0] & 0xe0) == 0xc0) {
+        n = 2, min = 0x80, code = s[0] & 0x1f;
+    } else if ((s[0] & 0xf0) == 0xe0) {
+        n = 3, min = 0x800, code = s[0] & 0x0f;
+    } else if ((s[0] & 0xf8) == 0xf0) {
+        n = 4, min = 0x10000, code = s[0] & 0x07;
+    } else {
+        return 0;
+    }
+    for (size_t k = 1; k < n; k++) {
+        if ((s[k] & 0xc0) != 0x80)
+            return 0;
+        code = (code << 6) | (s[k] & 0x3f);
+    }
+    if (code < min || code > 0x10ffff || (code >= 0xd800 && code <= 0xdfff))
+        return 0;
+    return n;
+}
+
+/* Whether the character of length n at s is a control character: C0,
+ * DEL, or C1 (U+0080 to U+009F, encoded C2 80 to C2 9F). */
+static int is_control(const unsigned char *s, size_t n)
+{
+    if (n == 1)
+        return s[0] < 0x20 || s[0] == 0x7f;
+    return n == 2 && s[0] == 0xc2 && s[1] < 0xa0;
+}
+
+int text_is_clean(const char *text)
+{
+    const unsigned char *s = (const unsigned char *)text;
+    while (*s != '\0') {
+        size_t n = utf8_length(s);
+        if (n == 0 || is_control(s, n))
+            return 0;
+        s += n;
+    }
+    return 1;
+}
+
+void text_for_terminal(const char *text, char *out, size_t size)
+{
+    const unsigned char *s = (const unsigned char *)text;
+    size_t used = 0;
+    while (*s != '\0') {
+        size_t n = utf8_length(s);
+        int bad = n == 0 || is_control(s, n);
+        size_t take = bad ? 1 : n;
+        if (used + (bad ? 1 : n) + 1 > size)
+            break;  /* on a character boundary */
+        if (bad) {
+            out[used++] = '?';
+        } else {
+            memcpy(out + used, s, n);
+            used += n;
+        }
+        s += take;
+    }
+    out[used] = '\0';
+}

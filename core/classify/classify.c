@@ -1,0 +1,246 @@
+/*
+ * classify.c: Table 1, panel types, the threshold rule, cost and totals.
+ * See classify.h.
+ */
+#include "core/classify/classify.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "core/base/exact_sum.h"
+#include "core/base/numparse.h"
+
+void classify_defaults(struct classify_options *options)
+{
+    options->threshold = 0.003;
+    options->curvature_tol = 0;
+    options->price[TYPE_FP] = 701;
+    options->price[TYPE_SP] = 766;
+    options->price[TYPE_DP] = 1518;
+    options->sp_as_fp = 0;
+    options->max_panel_area = 7.06;
+}
+
+/* The sign of a curvature, 0 within the zero tolerance eps widened by
+ * rounding: a value computed as eps (1 + 1e-15) is eps. An exact 0 is
+ * always 0, whatever eps. */
+static int sign_of(double x, double eps)
+{
+    if (fabs(x) <= eps * (1 + CLASSIFY_ROUNDING))
+        return 0;
+    return x > 0 ? 1 : -1;
+}
+
+enum panel_class classify_curvature(double k1, double k2, double eps)
+{
+    int s1 = sign_of(k1, eps), s2 = sign_of(k2, eps);
+
+    /* K = 0: one curvature at most is non-zero, and H takes its sign, as
+     * k1 + k2 does after zeroing. No test of |H| here: a ruled panel with
+     * eps < |k1| < 2 eps has |H| < eps and would turn flat. */
+    if (s1 == 0 || s2 == 0) {
+        int s = s1 ? s1 : s2;
+        return s < 0 ? CLASS_RULED_CONVEX
+             : s > 0 ? CLASS_RULED_CONCAVE : CLASS_FLAT;
+    }
+    /* K > 0: both curvatures non-zero and of one sign, which H shares. */
+    if (s1 == s2)
+        return s1 < 0 ? CLASS_CONVEX_ROUND : CLASS_CONCAVE_ROUND;
+    /* K < 0, the saddle rule: a saddle when the two curvatures cancel to
+     * within the zero tolerance (|k1 + k2| / 2 <= eps), else a feature
+     * curve on the side of the larger curvature. */
+    int sign_h = sign_of((k1 + k2) / 2, eps);
+    return sign_h < 0 ? CLASS_CONVEX_FEATURE_CURVE
+         : sign_h > 0 ? CLASS_CONCAVE_FEATURE_CURVE : CLASS_SADDLE;
+}
+
+enum panel_type panel_type_of_class(enum panel_class class)
+{
+    switch (class) {
+    case CLASS_FLAT:
+        return TYPE_FP;
+    case CLASS_RULED_CONVEX:
+    case CLASS_RULED_CONCAVE:
+        return TYPE_SP;
+    default:
+        return TYPE_DP;
+    }
+}
+
+const char *panel_class_name(enum panel_class class)
+{
+    static const char *const names[CLASS_COUNT] = {
+        "convex_feature_curve", "saddle", "concave_feature_curve",
+        "ruled_convex", "flat", "ruled_concave",
+        "convex_round", "concave_round",
+    };
+    return (unsigned)class < CLASS_COUNT ? names[class] : "?";
+}
+
+const char *panel_type_name(enum panel_type type)
+{
+    static const char *const names[TYPE_COUNT] = {"FP", "SP", "DP"};
+    return (unsigned)type < TYPE_COUNT ? names[type] : "?";
+}
+
+double classify_tolerance(const struct classify_options *options,
+                          const struct panel *panel)
+{
+    if (options->curvature_tol > 0)
+        return options->curvature_tol;
+    if (!(panel->diameter > 0))
+        return INFINITY;
+    /* Never below the curvature of a sag of rounding size, so that t = 0
+     * still leaves a plane flat: its fitted curvature is rounding noise,
+     * and 8 * 0 / d^2 would call every sign of that noise a curvature. */
+    double sag = fmax(options->threshold, CLASSIFY_ROUNDING * panel->diameter);
+    return 8 * sag / (panel->diameter * panel->diameter);
+}
+
+int classify_within_threshold(const struct classify_options *options,
+                              const struct panel *panel)
+{
+    double rounding = CLASSIFY_ROUNDING *
+                      (isfinite(panel->diameter) ? panel->diameter : 0);
+    return panel->deviation <= options->threshold + rounding;
+}
+
+size_t classify_fp_over_threshold(const struct panelization *p,
+                                  const struct classify_options *options,
+                                  double *worst)
+{
+    size_t count = 0;
+    double largest = 0;
+    for (size_t n = 0; n < p->npanels; n++) {
+        const struct panel *panel = &p->panels[n];
+        if (panel->type == TYPE_FP &&
+            !classify_within_threshold(options, panel)) {
+            count++;
+            largest = fmax(largest, panel->deviation);
+        }
+    }
+    if (worst != NULL)
+        *worst = largest;
+    return count;
+}
+
+double classify_area_excess(double max_panel_area, double limit)
+{
+    if (max_panel_area <= limit * (1 + CLASSIFY_ROUNDING))
+        return 0;
+    return max_panel_area - limit;
+}
+
+void classify_panels(struct panelization *p,
+                     const struct classify_options *options,
+                     struct option_totals *totals)
+{
+    memset(totals, 0, sizeof *totals);
+    totals->feasible = 1;
+    /* Sums independent of the panels' order (exact_sum.h), so that options
+     * equal in exact arithmetic get bit-equal totals. */
+    struct exact_sum area_of[TYPE_COUNT], class_area[CLASS_COUNT];
+    struct exact_sum area, planarity, p_dist;
+    for (int t = 0; t < TYPE_COUNT; t++)
+        exact_sum_init(&area_of[t]);
+    for (int c = 0; c < CLASS_COUNT; c++)
+        exact_sum_init(&class_area[c]);
+    exact_sum_init(&area);
+    exact_sum_init(&planarity);
+    exact_sum_init(&p_dist);
+    for (size_t n = 0; n < p->npanels; n++) {
+        struct panel *panel = &p->panels[n];
+        panel->K = panel->k1 * panel->k2;
+        panel->H = (panel->k1 + panel->k2) / 2;
+        panel->curvature_tol = classify_tolerance(options, panel);
+        panel->class = classify_curvature(panel->k1, panel->k2,
+                                          panel->curvature_tol);
+        panel->type = panel_type_of_class(panel->class);
+        if (classify_within_threshold(options, panel))
+            panel->type = TYPE_FP;
+        enum panel_type priced_as = panel->type;
+        if (options->sp_as_fp && priced_as == TYPE_SP)
+            priced_as = TYPE_FP;
+        panel->price = options->price[priced_as];
+        panel->cost = panel->area * panel->price;
+
+        totals->panels++;
+        totals->count[panel->type]++;
+        exact_sum_add(&area_of[panel->type], panel->area);
+        totals->class_count[panel->class]++;
+        exact_sum_add(&class_area[panel->class], panel->area);
+        exact_sum_add(&area, panel->area);
+        if (panel->type != TYPE_DP) {
+            exact_sum_add(&planarity, panel->deviation);
+            exact_sum_add(&p_dist, panel->p_dist);
+            totals->max_deviation = fmax(totals->max_deviation,
+                                         panel->deviation);
+        }
+        totals->max_panel_area = fmax(totals->max_panel_area, panel->area);
+    }
+    for (int t = 0; t < TYPE_COUNT; t++)
+        totals->area_of[t] = exact_sum_value(&area_of[t]);
+    for (int c = 0; c < CLASS_COUNT; c++)
+        totals->class_area[c] = exact_sum_value(&class_area[c]);
+    totals->area = exact_sum_value(&area);
+    totals->planarity = exact_sum_value(&planarity);
+    totals->p_dist = exact_sum_value(&p_dist);
+    /* Cost from the areas per type, not from the panels one by one: two
+     * options whose type areas are equal then cost the same to the bit,
+     * whatever order their panels were summed in. */
+    for (int t = 0; t < TYPE_COUNT; t++) {
+        enum panel_type priced_as = (enum panel_type)t;
+        if (options->sp_as_fp && priced_as == TYPE_SP)
+            priced_as = TYPE_FP;
+        totals->cost_of[t] = totals->area_of[t] * options->price[priced_as];
+    }
+    totals->cost = totals->cost_of[TYPE_FP] + totals->cost_of[TYPE_SP] +
+                   totals->cost_of[TYPE_DP];
+    totals->feasible = classify_area_excess(totals->max_panel_area,
+                                            options->max_panel_area) == 0;
+}
+
+int classify_check_options(const struct classify_options *options,
+                           struct facet_error *err)
+{
+    if (!isfinite(options->threshold) || options->threshold < 0)
+        return facet_error_set(err, FACET_EINPUT,
+            "threshold %g mm is not a length (give 0 or more)",
+            options->threshold * 1000);
+    if (!isfinite(options->curvature_tol) || options->curvature_tol < 0)
+        return facet_error_set(err, FACET_EINPUT,
+            "curvature tolerance %g 1/m must be 0 or more",
+            options->curvature_tol);
+    for (int t = 0; t < TYPE_COUNT; t++)
+        if (!isfinite(options->price[t]) || options->price[t] < 0)
+            return facet_error_set(err, FACET_EINPUT,
+                "price of %s %g USD/m^2 must be 0 or more",
+                panel_type_name((enum panel_type)t), options->price[t]);
+    if (!isfinite(options->max_panel_area) || options->max_panel_area <= 0)
+        return facet_error_set(err, FACET_EINPUT,
+            "maximum panel area %g m^2 must be more than 0",
+            options->max_panel_area);
+    return FACET_OK;
+}
+
+int classify_prices_parse(const char *text, double price[TYPE_COUNT],
+                          struct facet_error *err)
+{
+    const char *p = text;
+    for (int t = 0; t < TYPE_COUNT; t++) {
+        const char *end;
+        if (numparse_double(p, p + strlen(p), &price[t], &end) !=
+            NUMPARSE_OK)
+            end = p;
+        while (*end == ' ')
+            end++;
+        if (end == p || !isfinite(price[t]) || price[t] < 0 ||
+            price[t] > 1e9 || *end != (t + 1 < TYPE_COUNT ? ',' : '\0'))
+            return facet_error_set(err, FACET_EINPUT,
+                "--prices: '%s' is not FP,SP,DP in USD/m^2 (e.g. "
+                "701,766,1518)", text);
+        p = end + 1;
+    }
+    return FACET_OK;
+}

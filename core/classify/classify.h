@@ -1,0 +1,127 @@
+/*
+ * classify.h: naming, typing and pricing panels, and the option totals.
+ *
+ * The paper's CPMGC (Table 1) and MOGD rules, as DESIGN.md defines them:
+ *   - a curvature counts as zero when |k| <= eps (widened by rounding, see
+ *     CLASSIFY_ROUNDING); eps is fixed by the user or, by default, the
+ *     curvature at which a panel of diameter d sags by the flatness
+ *     threshold t: eps = 8 t / d^2 (never below 8 * 1e-9 / d, a sag of
+ *     rounding size, so that t = 0 leaves a plane flat);
+ *   - the signs of K and H come from k1 and k2 after that zeroing: K = 0
+ *     when either is zero, H then has the sign of the other (so a ruled
+ *     panel never turns flat), and K > 0 gives H the common sign (so the
+ *     "umbilic noise" cell of Table 1, K > 0 with H = 0, cannot occur);
+ *   - the saddle rule: K < 0 and |k1 + k2| / 2 <= eps, the two curvatures
+ *     cancelling to within the zero tolerance; other K < 0 panels are
+ *     feature curves on the side of the sign of k1 + k2;
+ *   - flat -> FP, ruled -> SP, every other class -> DP; then a panel whose
+ *     deviation from its best-fit plane is within t (plus rounding) is made
+ *     FP whatever its class;
+ *   - cost = area x price of the type; in the paper's MOGD mode SP area is
+ *     priced as FP. An option's cost is summed from its areas per type, so
+ *     that equal areas give bit-equal costs.
+ * Every total a user sees is computed here, once.
+ */
+#ifndef FACET_CLASSIFY_H
+#define FACET_CLASSIFY_H
+
+#include <stddef.h>
+
+#include "core/base/error.h"
+#include "core/panel/panel.h"
+
+/* The rounding allowance of every limit a panel is held to: a computed
+ * measure within 1e-9 of its panel's scale of the limit meets it. The three
+ * ways of building panels agree to that (README: "Same panels, three
+ * ways"), so a panel is never typed or judged by the order its sums were
+ * taken in. Applied as:
+ *   - the threshold rule: deviation <= t + 1e-9 d (d the panel's diameter);
+ *   - the zero test: |k| <= eps (1 + 1e-9);
+ *   - the size limit: largest panel <= limit (1 + 1e-9), so a 2 m x 2 m
+ *     panel summed as 4.000000000000003 m^2 meets a 4 m^2 limit. */
+#define CLASSIFY_ROUNDING 1e-9
+
+struct classify_options {
+    double threshold;          /* flatness threshold t (m); paper 0.003 */
+    double curvature_tol;      /* eps (1/m); 0 means 8 t / d^2 per panel */
+    double price[TYPE_COUNT];  /* USD/m^2 of FP, SP, DP */
+    int sp_as_fp;              /* price SP area as FP (the paper's MOGD) */
+    double max_panel_area;     /* feasibility limit (m^2) */
+};
+
+/* The paper's defaults: t = 3 mm, eps = 8 t / d^2, prices 701, 766, 1518,
+ * SP priced as SP, the general 7.06 m^2 panel size limit. */
+void classify_defaults(struct classify_options *options);
+
+struct option_totals {
+    size_t panels;
+    size_t count[TYPE_COUNT];        /* panels per type */
+    double area_of[TYPE_COUNT];      /* area per type (m^2) */
+    double cost_of[TYPE_COUNT];      /* cost per type (USD) */
+    size_t class_count[CLASS_COUNT];
+    double class_area[CLASS_COUNT];  /* m^2 */
+    double area;                     /* m^2, equals the mesh area */
+    double cost;                     /* USD */
+    double planarity;                /* sum of the deviations of the panels
+                                        that are not DP (m): a DP panel is
+                                        moulded to the design */
+    double max_deviation;            /* largest of those deviations (m) */
+    double max_panel_area;           /* m^2 */
+    double p_dist;                   /* sum of the non-DP panels' P_dist
+                                        (m^4) */
+    int feasible;                    /* every panel within max_panel_area */
+};
+
+/* The class of curvatures k1 >= k2 (1/m) with zero tolerance eps (1/m). */
+enum panel_class classify_curvature(double k1, double k2, double eps);
+
+/* FP for flat, SP for ruled, DP for every other class. */
+enum panel_type panel_type_of_class(enum panel_class class);
+
+/* "convex_feature_curve", "saddle", ..., as classify --json writes them. */
+const char *panel_class_name(enum panel_class class);
+
+/* "FP", "SP", "DP". */
+const char *panel_type_name(enum panel_type type);
+
+/* The zero tolerance for a panel: options->curvature_tol when set, else
+ * 8 t / d^2 with d the panel's diameter (1/m). */
+double classify_tolerance(const struct classify_options *options,
+                          const struct panel *panel);
+
+/* 1 when panel's deviation is within options->threshold, rounding
+ * allowed (CLASSIFY_ROUNDING): the threshold rule. */
+int classify_within_threshold(const struct classify_options *options,
+                              const struct panel *panel);
+
+/* How far (m^2) a largest panel of max_panel_area exceeds the size limit:
+ * 0 when within it, rounding allowed (CLASSIFY_ROUNDING). Feasibility and
+ * constraint-domination both read it. */
+double classify_area_excess(double max_panel_area, double limit);
+
+/* The FP panels of p that deviate more than options->threshold (rounding
+ * allowed): flat by curvature, not by deviation, as on a mesh coarser than
+ * its panels (coarse_mesh.h) or, with the mean shape operator, across an
+ * inflection. *worst (when not NULL) receives the largest such deviation
+ * (m, 0 when none). */
+size_t classify_fp_over_threshold(const struct panelization *p,
+                                  const struct classify_options *options,
+                                  double *worst);
+
+/* Classifies, types and prices every panel of p (K, H, curvature_tol,
+ * class, type, price, cost) and sums the option's totals into *totals. */
+void classify_panels(struct panelization *p,
+                     const struct classify_options *options,
+                     struct option_totals *totals);
+
+/* Parses "701,766,1518", the prices of FP, SP and DP (USD/m^2, finite,
+ * 0 to 1e9), into price. FACET_EINPUT names the text. */
+int classify_prices_parse(const char *text, double price[TYPE_COUNT],
+                          struct facet_error *err);
+
+/* Checks options for values no facade has (negative or non-finite
+ * threshold, prices, limits). Returns FACET_OK or FACET_EINPUT. */
+int classify_check_options(const struct classify_options *options,
+                           struct facet_error *err);
+
+#endif

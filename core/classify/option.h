@@ -1,0 +1,43 @@
+/*
+ * option.h: one design option, evaluated.
+ *
+ * A design option is a grid size and the classification settings; its
+ * evaluation panelizes a prepared surface (surface_prepare) and classifies,
+ * types and prices the panels. This is the one function that turns design
+ * variables into the numbers a designer compares, used alike by
+ * `facet classify` and by the optimiser.
+ */
+#ifndef FACET_OPTION_H
+#define FACET_OPTION_H
+
+#include "core/classify/classify.h"
+#include "core/panel/panel.h"
+#include "core/panel/panel_lattice.h"
+#include "core/surface/surface.h"
+
+struct option_params {
+    int nu, nv;                          /* grid */
+    enum panel_curvature_mode mode;      /* how panels take curvature */
+    struct classify_options classify;    /* threshold, eps, prices, limit */
+};
+
+/* Evaluates params on the prepared surface: fills *panels (caller-owned,
+ * released with panelization_free, also after a failure) and *totals.
+ * Returns FACET_OK, FACET_EINPUT for a bad grid or option value,
+ * FACET_EWORK when out of memory. */
+int option_evaluate(const struct surface *surface,
+                    const struct option_params *params,
+                    struct panelization *panels,
+                    struct option_totals *totals, struct facet_error *err);
+
+/* option_evaluate with the panels taken from lattice (NULL: none) when it
+ * holds the grid and params ask for PANEL_EXTREMES: the same panels, to
+ * rounding, in a fraction of the time. */
+int option_evaluate_lattice(const struct surface *surface,
+                            const struct panel_lattice *lattice,
+                            const struct option_params *params,
+                            struct panelization *panels,
+                            struct option_totals *totals,
+                            struct facet_error *err);
+
+#endif

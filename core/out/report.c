@@ -1,0 +1,181 @@
+/*
+ * report.c: JSON and CSV of an evaluated option. See report.h.
+ */
+#include "core/out/report.h"
+
+#include <math.h>
+
+#include "core/out/json.h"
+#include "core/base/numformat.h"
+
+static void json_totals(struct json_writer *w,
+                        const struct option_totals *t,
+                        size_t fp_over_threshold)
+{
+    json_begin_object(w);
+    json_key(w, "panels");         json_integer(w, (long long)t->panels);
+    json_key(w, "fp_count");       json_integer(w, (long long)t->count[TYPE_FP]);
+    json_key(w, "sp_count");       json_integer(w, (long long)t->count[TYPE_SP]);
+    json_key(w, "dp_count");       json_integer(w, (long long)t->count[TYPE_DP]);
+    json_key(w, "fp_area");        json_number(w, t->area_of[TYPE_FP]);
+    json_key(w, "sp_area");        json_number(w, t->area_of[TYPE_SP]);
+    json_key(w, "dp_area");        json_number(w, t->area_of[TYPE_DP]);
+    json_key(w, "area");           json_number(w, t->area);
+    json_key(w, "cost");           json_number(w, t->cost);
+    json_key(w, "planarity");      json_number(w, t->planarity);
+    json_key(w, "max_deviation");  json_number(w, t->max_deviation);
+    json_key(w, "max_panel_area"); json_number(w, t->max_panel_area);
+    json_key(w, "p_dist");         json_number(w, t->p_dist);
+    json_key(w, "feasible");       json_bool(w, t->feasible);
+    json_key(w, "fp_over_threshold");
+    json_integer(w, (long long)fp_over_threshold);
+    json_key(w, "classes");
+    json_begin_object(w);
+    for (int c = 0; c < CLASS_COUNT; c++) {
+        json_key(w, panel_class_name((enum panel_class)c));
+        json_begin_object(w);
+        json_key(w, "count");
+        json_integer(w, (long long)t->class_count[c]);
+        json_key(w, "area");
+        json_number(w, t->class_area[c]);
+        json_end_object(w);
+    }
+    json_end_object(w);
+    json_end_object(w);
+}
+
+void report_json(FILE *out, const struct report_source *source,
+                 const struct classify_options *options,
+                 const struct panelization *panels,
+                 const struct option_totals *totals)
+{
+    struct json_writer w;
+    json_init(&w, out);
+    json_begin_object(&w);
+    json_key(&w, "surface");
+    json_begin_object(&w);
+    json_key(&w, "file");      json_string(&w, source->file);
+    json_key(&w, "units");     json_string(&w, source->units);
+    json_key(&w, "area");      json_number(&w, source->area);
+    json_key(&w, "triangles"); json_integer(&w, (long long)source->triangles);
+    json_key(&w, "uv");        json_string(&w, source->uv_method);
+    json_end_object(&w);
+    json_key(&w, "grid");
+    json_begin_object(&w);
+    json_key(&w, "nu");        json_integer(&w, panels->nu);
+    json_key(&w, "nv");        json_integer(&w, panels->nv);
+    json_end_object(&w);
+    json_key(&w, "threshold_mm");
+    json_number(&w, options->threshold * 1000);
+    /* null: the tolerance is 8 t / d^2 per panel (each panel's "eps"). */
+    json_key(&w, "curvature_tol");
+    if (options->curvature_tol > 0)
+        json_number(&w, options->curvature_tol);
+    else
+        json_null(&w);
+    json_key(&w, "per_panel");  json_string(&w, source->per_panel);
+    json_key(&w, "prices");
+    json_begin_object(&w);
+    json_key(&w, "FP");         json_number(&w, options->price[TYPE_FP]);
+    json_key(&w, "SP");         json_number(&w, options->price[TYPE_SP]);
+    json_key(&w, "DP");         json_number(&w, options->price[TYPE_DP]);
+    json_key(&w, "sp_as_fp");   json_bool(&w, options->sp_as_fp);
+    json_end_object(&w);
+    json_key(&w, "max_panel_area_limit");
+    json_number(&w, options->max_panel_area);
+
+    json_key(&w, "panels");
+    json_begin_array(&w);
+    for (size_t n = 0; n < panels->npanels; n++) {
+        const struct panel *p = &panels->panels[n];
+        json_begin_object(&w);
+        json_key(&w, "i");         json_integer(&w, p->i);
+        json_key(&w, "j");         json_integer(&w, p->j);
+        json_key(&w, "class");     json_string(&w, panel_class_name(p->class));
+        json_key(&w, "type");      json_string(&w, panel_type_name(p->type));
+        json_key(&w, "area");      json_number(&w, p->area);
+        json_key(&w, "deviation"); json_number(&w, p->deviation);
+        json_key(&w, "k1");        json_number(&w, p->k1);
+        json_key(&w, "k2");        json_number(&w, p->k2);
+        json_key(&w, "K");         json_number(&w, p->K);
+        json_key(&w, "H");         json_number(&w, p->H);
+        json_key(&w, "eps");       json_number(&w, p->curvature_tol);
+        json_key(&w, "p_dist");    json_number(&w, p->p_dist);
+        json_key(&w, "diameter");  json_number(&w, p->diameter);
+        json_key(&w, "trimmed");   json_bool(&w, p->trimmed);
+        json_key(&w, "corner_planarity");
+        json_number(&w, p->corner_planarity);
+        json_key(&w, "cost");      json_number(&w, p->cost);
+        json_end_object(&w);
+    }
+    json_end_array(&w);
+    json_key(&w, "totals");
+    json_totals(&w, totals,
+                classify_fp_over_threshold(panels, options, NULL));
+    json_end_object(&w);
+    json_finish(&w);
+}
+
+/* A CSV number, written so that it reads back exactly (numformat.h):
+ * empty for NaN (a corner off the surface). */
+static void csv_number(FILE *out, double x)
+{
+    fputc(',', out);
+    if (isfinite(x)) {
+        char text[NUMBER_EXACT_SIZE];
+        number_exact(text, x);
+        fputs(text, out);
+    }
+}
+
+void report_csv(FILE *out, const struct panelization *panels)
+{
+    fputs("id,i,j,class,type,area_m2,deviation_m,k1,k2,K,H,eps,p_dist_m4,"
+          "diameter_m,trimmed,corner_planarity_m,price_usd_m2,cost_usd", out);
+    for (int c = 0; c < 4; c++)
+        fprintf(out, ",c%d_x_m,c%d_y_m,c%d_z_m", c, c, c);
+    fputc('\n', out);
+    for (size_t n = 0; n < panels->npanels; n++) {
+        const struct panel *p = &panels->panels[n];
+        fprintf(out, "%zu,%d,%d,%s,%s", n + 1, p->i, p->j,
+                panel_class_name(p->class), panel_type_name(p->type));
+        csv_number(out, p->area);
+        csv_number(out, p->deviation);
+        csv_number(out, p->k1);
+        csv_number(out, p->k2);
+        csv_number(out, p->K);
+        csv_number(out, p->H);
+        csv_number(out, p->curvature_tol);
+        csv_number(out, p->p_dist);
+        csv_number(out, p->diameter);
+        fprintf(out, ",%d", p->trimmed);
+        csv_number(out, p->corner_planarity);
+        csv_number(out, p->price);
+        csv_number(out, p->cost);
+        for (int c = 0; c < 4; c++)
+            for (int d = 0; d < 3; d++)
+                csv_number(out, p->corner[c][d]);
+        fputc('\n', out);
+    }
+}
+
+void report_totals_csv(FILE *out, const struct option_totals *t)
+{
+    fputs("panels,fp_count,sp_count,dp_count,area_m2,fp_area_m2,sp_area_m2,"
+          "dp_area_m2,fp_cost_usd,sp_cost_usd,dp_cost_usd,cost_usd,"
+          "planarity_m,max_deviation_m,max_panel_area_m2,p_dist_m4,"
+          "feasible\n", out);
+    fprintf(out, "%zu,%zu,%zu,%zu", t->panels, t->count[TYPE_FP],
+            t->count[TYPE_SP], t->count[TYPE_DP]);
+    csv_number(out, t->area);
+    for (int k = 0; k < TYPE_COUNT; k++)
+        csv_number(out, t->area_of[k]);
+    for (int k = 0; k < TYPE_COUNT; k++)
+        csv_number(out, t->cost_of[k]);
+    csv_number(out, t->cost);
+    csv_number(out, t->planarity);
+    csv_number(out, t->max_deviation);
+    csv_number(out, t->max_panel_area);
+    csv_number(out, t->p_dist);
+    fprintf(out, ",%d\n", t->feasible != 0);
+}

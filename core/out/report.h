@@ -1,0 +1,49 @@
+/*
+ * report.h: writing an evaluated option as JSON or as a CSV panel schedule.
+ *
+ * The JSON is the format of `facet classify --json` (keys in README.md);
+ * the CSV has one row per panel and a header row, for a spreadsheet. Units:
+ * lengths m, areas m^2, curvatures 1/m (K 1/m^2), money USD.
+ */
+#ifndef FACET_REPORT_H
+#define FACET_REPORT_H
+
+#include <stdio.h>
+
+#include "core/classify/classify.h"
+#include "core/panel/panel.h"
+
+/* What the option was computed from. */
+struct report_source {
+    const char *file;          /* the surface's path */
+    const char *units;         /* as given: m, cm, mm, in, ft */
+    double area;               /* mesh area (m^2) */
+    size_t triangles;
+    const char *uv_method;     /* "vt", "grid", "plane" or "harmonic" */
+    const char *per_panel;     /* "extremes" or "mean" */
+};
+
+/* Writes one JSON object: surface, grid, threshold_mm, curvature_tol,
+ * prices, panels, totals. */
+void report_json(FILE *out, const struct report_source *source,
+                 const struct classify_options *options,
+                 const struct panelization *panels,
+                 const struct option_totals *totals);
+
+/* Writes the panel schedule, the one layout of `facet classify --csv` and
+ * `facet export --csv`: a header row, then one row per panel: id (its row
+ * number from 1), i, j, class, type, area_m2, deviation_m, k1, k2 (1/m),
+ * K (1/m^2), H, eps (1/m), p_dist_m4, diameter_m, trimmed (0/1),
+ * corner_planarity_m, price_usd_m2, cost_usd, and the four cell corners
+ * on the surface c0_x_m ... c3_z_m (empty where off it, as
+ * corner_planarity_m is unless all four are on it). One unit per column,
+ * named in its header; every number reads back exactly. */
+void report_csv(FILE *out, const struct panelization *panels);
+
+/* Writes the option's totals as a CSV of its own (a header row and one
+ * row: panels, counts, areas and costs per type, cost, planarity, largest
+ * deviation, largest panel, P_dist, feasible), the numbers `facet show`
+ * prints, so that a schedule holds panels only. */
+void report_totals_csv(FILE *out, const struct option_totals *totals);
+
+#endif

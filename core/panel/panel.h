@@ -1,0 +1,189 @@
+/*
+ * panel.h: dividing a surface into the panels of a UV grid, exactly.
+ *
+ * The grid nu x nv covers the UV bounding box; panel (i, j) is the part of
+ * the surface inside UV cell (i, j), i along u, j along v. Every mesh
+ * triangle is clipped to the cells it touches (in UV) and the clipped pieces
+ * are mapped to 3D with the triangle's affine map, so a panel's area, its
+ * best-fit plane and its deviation from that plane are exact for the mesh.
+ * Cells the surface does not reach are no panels; boundary cells are
+ * trimmed panels with their real area, and the panel areas add up to the
+ * mesh area.
+ *
+ * This module measures geometry and samples curvature; naming a panel's
+ * class and type and pricing it is classify.h's job.
+ */
+#ifndef FACET_PANEL_H
+#define FACET_PANEL_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "core/surface/curvature.h"
+#include "core/base/error.h"
+#include "core/surface/mesh.h"
+#include "core/surface/uv_index.h"
+
+/* The paper's classes (Table 1), by the signs of K and H. */
+enum panel_class {
+    CLASS_CONVEX_FEATURE_CURVE,   /* K < 0, H < 0 */
+    CLASS_SADDLE,                 /* K < 0, H = 0 */
+    CLASS_CONCAVE_FEATURE_CURVE,  /* K < 0, H > 0 */
+    CLASS_RULED_CONVEX,           /* K = 0, H < 0 */
+    CLASS_FLAT,                   /* K = 0, H = 0 */
+    CLASS_RULED_CONCAVE,          /* K = 0, H > 0 */
+    CLASS_CONVEX_ROUND,           /* K > 0, H < 0 */
+    CLASS_CONCAVE_ROUND,          /* K > 0, H > 0 */
+    CLASS_COUNT
+};
+
+/* What the panel is made as: flat, single-curved or double-curved. */
+enum panel_type { TYPE_FP, TYPE_SP, TYPE_DP, TYPE_COUNT };
+
+/* How a panel's k1 and k2 come from its samples. */
+enum panel_curvature_mode {
+    PANEL_EXTREMES,  /* the paper's: k1 = max, k2 = min over the samples */
+    PANEL_MEAN       /* eigenvalues of the area-weighted mean shape operator */
+};
+
+struct panel {
+    int i, j;                 /* the UV cell: i along u, j along v */
+    double area;              /* m^2 */
+    double uv_area;           /* UV area covered (UV units^2) */
+    int trimmed;              /* the surface covers only part of the cell */
+    double centroid[3];       /* area centroid (m) */
+    double normal[3];         /* unit normal of the area-weighted
+                                 least-squares plane (the paper's Eq. 1),
+                                 on the side of the surface normal */
+    double deviation;         /* largest distance of the panel's surface
+                                 from that plane (m) */
+    double p_dist;            /* the paper's P_dist (Eq. 2) as the area
+                                 integral of the squared distance to the
+                                 plane (m^4) */
+    double diameter;          /* the longer 3D diagonal; for a trimmed
+                                 panel, the diameter of its outline (m) */
+    int ncorners;             /* cell corners that lie on the surface */
+    double corner[4][3];      /* corners (i,j), (i+1,j), (i+1,j+1), (i,j+1)
+                                 on the surface (m); NaN where off it */
+    double corner_planarity;  /* distance between the quad's two diagonals
+                                 (m): 0 for a planar quad; NaN unless all
+                                 four corners lie on the surface */
+    /* Curvature, set by panels_build from the vertex curvature: */
+    double k1, k2;            /* 1/m, k1 >= k2 */
+    /* Set by classify_panels: */
+    double K, H;              /* Gaussian (1/m^2) and mean (1/m) curvature */
+    double curvature_tol;     /* the zero tolerance eps used (1/m) */
+    enum panel_class class;
+    enum panel_type type;
+    double price;             /* USD/m^2 of its type */
+    double cost;              /* area x price (USD) */
+};
+
+struct panelization {
+    int nu, nv;               /* grid size */
+    double umin, vmin;        /* the UV box the grid covers */
+    double umax, vmax;
+    size_t npanels;
+    struct panel *panels;     /* the cells the surface reaches, in order of
+                                 j then i */
+    int *cell_panel;          /* nu x nv: index into panels of cell (i, j)
+                                 at [j * nu + i], or -1 when no panel */
+};
+
+/* The largest grid side panels_build accepts. */
+#define PANEL_MAX_GRID 2000
+
+/* Divides mesh into the panels of an nu x nv grid over the UV box of index
+ * by clipping every triangle to the cells it touches: the straightforward
+ * computation, kept as the oracle panels_build_fast is tested against.
+ *   mesh       the surface (m)
+ *   index      UV lookup built over the per-corner UV the panels follow
+ *              (#T x 3 x 2, mesh->uv or a computed parameterization)
+ *   curvature  vertex curvature of mesh, sampled at the mesh vertices inside
+ *              each cell and where the cell's border cuts mesh edges
+ *   mode       how samples become the panel's k1, k2
+ * Fills *out (caller-owned, released with panelization_free, also after a
+ * failure). Returns FACET_OK, FACET_EINPUT for a grid side outside
+ * 1..PANEL_MAX_GRID, FACET_EWORK when out of memory. */
+int panels_build(const struct mesh *mesh, const struct uv_index *index,
+                 const struct curvature *curvature,
+                 enum panel_curvature_mode mode, int nu, int nv,
+                 struct panelization *out, struct facet_error *err);
+
+void panelization_free(struct panelization *panelization);
+
+/* What does not depend on the grid, computed once per surface by
+ * panel_prep_build so that every panelization of it (panels_build_fast)
+ * adds a triangle that lies inside one cell in O(1) and clips only the
+ * triangles that cross a cell line. */
+struct panel_prep_point;     /* a point's position and curvature */
+struct panel_prep_triangle;  /* a triangle's area, UV area, centroid,
+                                central second moment and area-weighted
+                                normal */
+struct panel_prep {
+    const struct mesh *mesh;            /* borrowed, as are index and */
+    const struct uv_index *index;       /* curvature: they must outlive */
+    const struct curvature *curvature;  /* the prep and not change */
+    size_t npoints;                     /* distinct (vertex, UV) corners */
+    double *point_uv;                   /* npoints x 2 */
+    struct panel_prep_point *point;     /* npoints */
+    uint32_t *corner;                   /* #T x 3: the points of each
+                                           triangle's corners */
+    struct panel_prep_triangle *triangle;  /* #T */
+};
+
+/* Computes the per-surface sums of mesh, whose UV lookup is index and
+ * vertex curvature curvature (the arguments panels_build takes), into *out
+ * (caller-owned, released with panel_prep_free, also after a failure).
+ * Returns FACET_OK, FACET_EINPUT for 2^31 corners or more, FACET_EWORK when
+ * out of memory. */
+int panel_prep_build(const struct mesh *mesh, const struct uv_index *index,
+                     const struct curvature *curvature,
+                     struct panel_prep *out, struct facet_error *err);
+
+void panel_prep_free(struct panel_prep *prep);
+
+/* panels_build for prep's mesh, index and curvature: the same panels, to
+ * rounding (tested against it), in a fraction of the time. Same returns. */
+int panels_build_fast(const struct panel_prep *prep,
+                      enum panel_curvature_mode mode, int nu, int nv,
+                      struct panelization *out, struct facet_error *err);
+
+/* The pieces themselves, for code that needs a panel's exact geometry
+ * (panel_geometry.h) rather than its measures: panels_build walks them
+ * without storing them, and so does panels_walk_pieces, one at a time. */
+
+/* A vertex of a piece: its UV and its barycentric coordinates in the
+ * triangle it was cut from (which carry 3D position and curvature). */
+struct panel_piece_vertex {
+    double u, v;
+    double b[3];
+};
+
+/* A piece has at most 3 + 4 vertices: each of the four cell sides adds
+ * one. */
+#define PANEL_PIECE_MAX 8
+
+/* Receives one piece: the convex polygon piece[0..count) (count >= 3, in
+ * the winding of the triangle) cut from mesh triangle triangle by grid
+ * cell cell = j * nu + i. A piece may have zero area when a triangle only
+ * touches a cell line. */
+typedef void (*panel_piece_visitor)(void *context, size_t cell,
+                                    uint32_t triangle,
+                                    const struct panel_piece_vertex *piece,
+                                    int count);
+
+/* Calls visit for every piece of the nu x nv grid over the UV box of
+ * index, exactly the pieces panels_build measures for the same mesh, index
+ * and grid (cells in the order of triangles, then j, then i). Visits
+ * nothing for a grid side below 1 or a UV box without extent. */
+void panels_walk_pieces(const struct mesh *mesh,
+                        const struct uv_index *index, int nu, int nv,
+                        panel_piece_visitor visit, void *context);
+
+/* The 3D position (m) of piece vertex p of mesh triangle t, by the
+ * triangle's affine map. */
+void panel_piece_point(const struct mesh *mesh, uint32_t t,
+                       const struct panel_piece_vertex *p, double out[3]);
+
+#endif

@@ -1,0 +1,507 @@
+/*
+ * panel_geometry.c: keeping the pieces of every panel and tracing its
+ * outline. See panel_geometry.h.
+ *
+ * The pieces come from panels_walk_pieces, so there is one clipping
+ * implementation. Two walks: the first counts the pieces of each panel, the
+ * second stores them grouped by panel. Then, panel by panel:
+ *   1. merge piece vertices whose UV agree to within the tolerance (the
+ *      same point cut from two triangles differs by rounding);
+ *   2. drop what collapses (pieces of a triangle that only touches a cell
+ *      line keep fewer than three distinct vertices);
+ *   3. the outline's edges are the piece edges not cancelled by the same
+ *      edge the other way round in a neighbouring piece: cell border, mesh
+ *      boundary, UV seam. Chained head to tail they form the loops.
+ * No tolerance enters step 3: it works on the merged vertex numbers.
+ */
+#include "core/panel/panel_geometry.h"
+
+#include <float.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "core/base/vec3.h"
+
+/* The raw pieces as the walk gives them, grouped by panel. */
+struct raw {
+    const struct mesh *mesh;
+    const int *cell_panel;
+    size_t *piece_count;         /* npanels: pieces (first walk) */
+    size_t *vertex_count;        /* npanels: piece vertices (first walk) */
+    size_t *piece_cursor;        /* npanels: next free piece (second walk) */
+    size_t *vertex_cursor;       /* npanels: next free vertex */
+    size_t *piece_vertex_start;  /* raw pieces + 1 */
+    uint32_t *piece_triangle;    /* raw pieces */
+    double *uv;                  /* raw vertices x 2 */
+    double *position;            /* raw vertices x 3 */
+};
+
+static void count_piece(void *context, size_t cell, uint32_t triangle,
+                        const struct panel_piece_vertex *piece, int count)
+{
+    struct raw *r = context;
+    (void)triangle;
+    (void)piece;
+    int n = r->cell_panel[cell];
+    if (n < 0)
+        return;
+    r->piece_count[n]++;
+    r->vertex_count[n] += (size_t)count;
+}
+
+static void store_piece(void *context, size_t cell, uint32_t triangle,
+                        const struct panel_piece_vertex *piece, int count)
+{
+    struct raw *r = context;
+    int n = r->cell_panel[cell];
+    if (n < 0)
+        return;
+    size_t p = r->piece_cursor[n]++;
+    size_t v = r->vertex_cursor[n];
+    r->vertex_cursor[n] += (size_t)count;
+    r->piece_vertex_start[p] = v;
+    r->piece_vertex_start[p + 1] = v + (size_t)count;
+    r->piece_triangle[p] = triangle;
+    for (int k = 0; k < count; k++) {
+        r->uv[2 * (v + k)] = piece[k].u;
+        r->uv[2 * (v + k) + 1] = piece[k].v;
+        panel_piece_point(r->mesh, triangle, &piece[k],
+                          &r->position[3 * (v + k)]);
+    }
+}
+
+/* A raw vertex under its tolerance bucket, for merging. */
+struct bucket_key {
+    int64_t qu, qv;
+    size_t k;          /* raw vertex */
+};
+
+static int compare_bucket(const void *a, const void *b)
+{
+    const struct bucket_key *x = a, *y = b;
+    if (x->qu != y->qu)
+        return x->qu < y->qu ? -1 : 1;
+    if (x->qv != y->qv)
+        return x->qv < y->qv ? -1 : 1;
+    return x->k < y->k ? -1 : x->k > y->k;
+}
+
+/* The first key at or after (qu, qv) in keys[0..n). */
+static size_t lower_bound(const struct bucket_key *keys, size_t n,
+                          int64_t qu, int64_t qv)
+{
+    size_t lo = 0, hi = n;
+    while (lo < hi) {
+        size_t mid = lo + (hi - lo) / 2;
+        if (keys[mid].qu < qu || (keys[mid].qu == qu && keys[mid].qv < qv))
+            lo = mid + 1;
+        else
+            hi = mid;
+    }
+    return lo;
+}
+
+/* A directed edge between merged vertices. */
+struct edge {
+    size_t a, b;
+};
+
+static int compare_edge(const void *x, const void *y)
+{
+    const struct edge *e = x, *f = y;
+    if (e->a != f->a)
+        return e->a < f->a ? -1 : 1;
+    return e->b < f->b ? -1 : e->b > f->b;
+}
+
+/* How many of edges[0..n) (sorted) are (a, b). */
+static size_t edge_count(const struct edge *edges, size_t n, size_t a,
+                         size_t b)
+{
+    size_t lo = 0, hi = n;
+    while (lo < hi) {
+        size_t mid = lo + (hi - lo) / 2;
+        if (edges[mid].a < a || (edges[mid].a == a && edges[mid].b < b))
+            lo = mid + 1;
+        else
+            hi = mid;
+    }
+    size_t count = 0;
+    while (lo + count < n && edges[lo + count].a == a &&
+           edges[lo + count].b == b)
+        count++;
+    return count;
+}
+
+/* Working memory reused from panel to panel, sized for the largest. */
+struct scratch {
+    struct bucket_key *keys;  /* panel's raw vertices */
+    size_t *root;             /* raw vertex -> its cluster's first member
+                                 in sorted order */
+    size_t *number;           /* cluster root -> merged number */
+    size_t *merged;           /* raw vertex -> merged number in the panel */
+    size_t *first;            /* merged number -> first raw vertex */
+    struct edge *edges;       /* panel's piece edges */
+    struct edge *boundary;    /* edges left uncancelled */
+    unsigned char *used;      /* boundary edges already in a loop */
+};
+
+/* Merges the raw vertices [v0, v1) of one panel whose UV agree within
+ * tolerance: merged[k - v0] becomes a number 0.. in order of first
+ * occurrence and first[] the first raw vertex (less v0) of each number;
+ * returns how many numbers there are. */
+static size_t merge_vertices(const struct raw *r, size_t v0, size_t v1,
+                             double umin, double vmin, double tolerance,
+                             struct scratch *s)
+{
+    size_t m = v1 - v0;
+    for (size_t k = 0; k < m; k++) {
+        const double *uv = &r->uv[2 * (v0 + k)];
+        s->keys[k].qu = (int64_t)floor((uv[0] - umin) / tolerance);
+        s->keys[k].qv = (int64_t)floor((uv[1] - vmin) / tolerance);
+        s->keys[k].k = k;
+        s->root[k] = SIZE_MAX;
+        s->number[k] = SIZE_MAX;
+    }
+    qsort(s->keys, m, sizeof *s->keys, compare_bucket);
+    /* Each vertex joins the cluster of a vertex already seen within
+     * tolerance in its own or a neighbouring bucket, or starts one. A
+     * root's label is itself, so labels never chain. */
+    for (size_t x = 0; x < m; x++) {
+        size_t k = s->keys[x].k;
+        const double *uv = &r->uv[2 * (v0 + k)];
+        size_t root = k;
+        for (int64_t d = -1; d <= 1 && root == k; d++) {
+            size_t y = lower_bound(s->keys, m, s->keys[x].qu + d,
+                                   s->keys[x].qv - 1);
+            for (; y < m && s->keys[y].qu == s->keys[x].qu + d &&
+                   s->keys[y].qv <= s->keys[x].qv + 1; y++) {
+                size_t other = s->keys[y].k;
+                if (s->root[other] == SIZE_MAX)
+                    continue;
+                const double *o = &r->uv[2 * (v0 + other)];
+                if (fabs(o[0] - uv[0]) <= tolerance &&
+                    fabs(o[1] - uv[1]) <= tolerance) {
+                    root = s->root[other];
+                    break;
+                }
+            }
+        }
+        s->root[k] = root;
+    }
+    /* Number the clusters in order of first occurrence, so that output
+     * vertices follow the pieces. */
+    size_t count = 0;
+    for (size_t k = 0; k < m; k++) {
+        size_t root = s->root[k];
+        if (s->number[root] == SIZE_MAX) {
+            s->number[root] = count;
+            s->first[count++] = k;
+        }
+        s->merged[k] = s->number[root];
+    }
+    return count;
+}
+
+void panel_geometry_free(struct panel_geometry *g)
+{
+    free(g->position);
+    free(g->uv);
+    free(g->panel_vertex);
+    free(g->panel_piece);
+    free(g->piece_start);
+    free(g->corner);
+    free(g->piece_triangle);
+    free(g->panel_loop);
+    free(g->loop_start);
+    free(g->outline);
+    free(g->outline_plane);
+    memset(g, 0, sizeof *g);
+}
+
+static void raw_free(struct raw *r)
+{
+    free(r->piece_count);
+    free(r->vertex_count);
+    free(r->piece_cursor);
+    free(r->vertex_cursor);
+    free(r->piece_vertex_start);
+    free(r->piece_triangle);
+    free(r->uv);
+    free(r->position);
+}
+
+static void scratch_free(struct scratch *s)
+{
+    free(s->keys);
+    free(s->root);
+    free(s->number);
+    free(s->merged);
+    free(s->first);
+    free(s->edges);
+    free(s->boundary);
+    free(s->used);
+}
+
+/* Traces the outline loops of panel n from its kept pieces, appending to
+ * g->loop_start, g->outline and g->nloops. */
+static void trace_outline(struct panel_geometry *g, size_t n,
+                          struct scratch *s)
+{
+    size_t nedges = 0;
+    for (size_t p = g->panel_piece[n]; p < g->panel_piece[n + 1]; p++) {
+        size_t c0 = g->piece_start[p], c1 = g->piece_start[p + 1];
+        for (size_t c = c0; c < c1; c++) {
+            s->edges[nedges].a = g->corner[c];
+            s->edges[nedges].b = g->corner[c + 1 < c1 ? c + 1 : c0];
+            nedges++;
+        }
+    }
+    qsort(s->edges, nedges, sizeof *s->edges, compare_edge);
+    /* An edge is on the outline as often as it is not matched the other
+     * way round by a neighbouring piece. */
+    size_t nboundary = 0;
+    for (size_t e = 0; e < nedges;) {
+        size_t same = 1;
+        while (e + same < nedges && s->edges[e + same].a == s->edges[e].a &&
+               s->edges[e + same].b == s->edges[e].b)
+            same++;
+        size_t reverse = edge_count(s->edges, nedges, s->edges[e].b,
+                                    s->edges[e].a);
+        for (size_t k = reverse; k < same; k++)
+            s->boundary[nboundary++] = s->edges[e];
+        e += same;
+    }
+    memset(s->used, 0, nboundary);
+    /* Boundary edges are sorted by start: chain each to an unused edge
+     * starting where it ends, closing a loop as soon as it returns to its
+     * first vertex (at a pinch, the other way out starts another loop). */
+    size_t *out = g->outline + g->loop_start[g->nloops];
+    for (size_t e0 = 0; e0 < nboundary; e0++) {
+        if (s->used[e0])
+            continue;
+        size_t length = 0, e = e0;
+        for (;;) {
+            s->used[e] = 1;
+            out[length++] = s->boundary[e].a;
+            size_t to = s->boundary[e].b;
+            if (to == s->boundary[e0].a)
+                break;
+            size_t lo = 0, hi = nboundary;
+            while (lo < hi) {
+                size_t mid = lo + (hi - lo) / 2;
+                if (s->boundary[mid].a < to)
+                    lo = mid + 1;
+                else
+                    hi = mid;
+            }
+            while (lo < nboundary && s->boundary[lo].a == to && s->used[lo])
+                lo++;
+            if (lo >= nboundary || s->boundary[lo].a != to)
+                break;  /* open chain: only a non-manifold mesh does this */
+            e = lo;
+        }
+        if (length < 3)
+            continue;  /* a back-and-forth sliver, not a boundary */
+        out += length;
+        g->loop_start[g->nloops + 1] = g->loop_start[g->nloops] + length;
+        g->nloops++;
+    }
+}
+
+int panel_geometry_build(const struct mesh *mesh,
+                         const struct uv_index *index,
+                         const struct panelization *panels,
+                         struct panel_geometry *out,
+                         struct facet_error *err)
+{
+    memset(out, 0, sizeof *out);
+    if (panels->nu < 1 || panels->nv < 1 || panels->umin != index->umin ||
+        panels->vmin != index->vmin || panels->umax != index->umax ||
+        panels->vmax != index->vmax)
+        return facet_error_set(err, FACET_EINPUT,
+            "panel geometry: the %dx%d panelization was not built over this "
+            "surface's UV", panels->nu, panels->nv);
+
+    size_t np = panels->npanels;
+    struct raw r;
+    memset(&r, 0, sizeof r);
+    r.mesh = mesh;
+    r.cell_panel = panels->cell_panel;
+    r.piece_count = calloc(np + 1, sizeof *r.piece_count);
+    r.vertex_count = calloc(np + 1, sizeof *r.vertex_count);
+    r.piece_cursor = calloc(np + 1, sizeof *r.piece_cursor);
+    r.vertex_cursor = calloc(np + 1, sizeof *r.vertex_cursor);
+    out->npanels = np;
+    out->panel_vertex = calloc(np + 1, sizeof *out->panel_vertex);
+    out->panel_piece = calloc(np + 1, sizeof *out->panel_piece);
+    out->panel_loop = calloc(np + 1, sizeof *out->panel_loop);
+    if (!r.piece_count || !r.vertex_count || !r.piece_cursor ||
+        !r.vertex_cursor || !out->panel_vertex || !out->panel_piece ||
+        !out->panel_loop) {
+        raw_free(&r);
+        return facet_error_set(err, FACET_EWORK,
+                               "out of memory (panel geometry)");
+    }
+    panels_walk_pieces(mesh, index, panels->nu, panels->nv, count_piece, &r);
+
+    size_t raw_pieces = 0, raw_vertices = 0, largest = 0;
+    for (size_t n = 0; n < np; n++) {
+        r.piece_cursor[n] = raw_pieces;
+        r.vertex_cursor[n] = raw_vertices;
+        raw_pieces += r.piece_count[n];
+        raw_vertices += r.vertex_count[n];
+        if (r.vertex_count[n] > largest)
+            largest = r.vertex_count[n];
+    }
+    r.piece_vertex_start = calloc(raw_pieces + 1,
+                                  sizeof *r.piece_vertex_start);
+    r.piece_triangle = malloc((raw_pieces + 1) * sizeof *r.piece_triangle);
+    r.uv = malloc((raw_vertices + 1) * 2 * sizeof *r.uv);
+    r.position = malloc((raw_vertices + 1) * 3 * sizeof *r.position);
+    /* Every output array is at most its raw size: merging only shrinks. */
+    out->position = malloc((raw_vertices + 1) * 3 * sizeof *out->position);
+    out->uv = malloc((raw_vertices + 1) * 2 * sizeof *out->uv);
+    out->piece_start = calloc(raw_pieces + 1, sizeof *out->piece_start);
+    out->corner = malloc((raw_vertices + 1) * sizeof *out->corner);
+    out->piece_triangle = malloc((raw_pieces + 1) *
+                                 sizeof *out->piece_triangle);
+    out->loop_start = calloc(raw_vertices + 1, sizeof *out->loop_start);
+    out->outline = malloc((raw_vertices + 1) * sizeof *out->outline);
+    struct scratch s = {
+        malloc((largest + 1) * sizeof *s.keys),
+        malloc((largest + 1) * sizeof *s.root),
+        malloc((largest + 1) * sizeof *s.number),
+        malloc((largest + 1) * sizeof *s.merged),
+        malloc((largest + 1) * sizeof *s.first),
+        malloc((largest + 1) * sizeof *s.edges),
+        malloc((largest + 1) * sizeof *s.boundary),
+        malloc(largest + 1),
+    };
+    if (!r.piece_vertex_start || !r.piece_triangle || !r.uv ||
+        !r.position || !out->position || !out->uv || !out->piece_start ||
+        !out->corner || !out->piece_triangle || !out->loop_start ||
+        !out->outline || !s.keys || !s.root || !s.number || !s.merged ||
+        !s.first || !s.edges || !s.boundary || !s.used) {
+        raw_free(&r);
+        scratch_free(&s);
+        return facet_error_set(err, FACET_EWORK,
+                               "out of memory (panel geometry)");
+    }
+    panels_walk_pieces(mesh, index, panels->nu, panels->nv, store_piece, &r);
+
+    /* The tolerance: far above rounding in the UV's own magnitude, far
+     * below any feature a cell can hold. */
+    double du = (panels->umax - panels->umin) / panels->nu;
+    double dv = (panels->vmax - panels->vmin) / panels->nv;
+    double magnitude = fmax(fmax(fabs(panels->umin), fabs(panels->umax)),
+                            fmax(fabs(panels->vmin), fabs(panels->vmax)));
+    double tolerance = fmax(1e-9 * fmax(du, dv),
+                            64 * DBL_EPSILON * magnitude);
+
+    /* Raw pieces and their vertices lie panel after panel, so
+     * piece_vertex_start is a prefix array over all of them. */
+    size_t p0 = 0;
+    for (size_t n = 0; n < np; n++) {
+        size_t p1 = p0 + r.piece_count[n];
+        size_t v0 = r.piece_vertex_start[p0];
+        size_t v1 = r.piece_vertex_start[p1];
+        size_t base = out->nvertices;
+        size_t count = merge_vertices(&r, v0, v1, panels->umin, panels->vmin,
+                                      tolerance, &s);
+        for (size_t k = 0; k < count; k++) {
+            memcpy(&out->position[3 * (base + k)],
+                   &r.position[3 * (v0 + s.first[k])], 3 * sizeof(double));
+            memcpy(&out->uv[2 * (base + k)], &r.uv[2 * (v0 + s.first[k])],
+                   2 * sizeof(double));
+        }
+        out->nvertices += count;
+        out->panel_vertex[n + 1] = out->nvertices;
+
+        for (size_t p = p0; p < p1; p++) {
+            /* The piece's corners, merged, without repeats. */
+            size_t start = out->piece_start[out->npieces], length = 0;
+            for (size_t c = r.piece_vertex_start[p];
+                 c < r.piece_vertex_start[p + 1]; c++) {
+                size_t id = base + s.merged[c - v0];
+                if (length == 0 || out->corner[start + length - 1] != id)
+                    out->corner[start + length++] = id;
+            }
+            while (length > 1 &&
+                   out->corner[start + length - 1] == out->corner[start])
+                length--;
+            if (length < 3)
+                continue;  /* collapsed: it only touched a cell line */
+            out->piece_triangle[out->npieces] = r.piece_triangle[p];
+            out->npieces++;
+            out->piece_start[out->npieces] = start + length;
+        }
+        out->panel_piece[n + 1] = out->npieces;
+
+        trace_outline(out, n, &s);
+        out->panel_loop[n + 1] = out->nloops;
+        p0 = p1;
+    }
+    raw_free(&r);
+    scratch_free(&s);
+
+    size_t npoints = out->loop_start[out->nloops];
+    out->outline_plane = malloc((npoints + 1) * 3 *
+                                sizeof *out->outline_plane);
+    if (out->outline_plane == NULL)
+        return facet_error_set(err, FACET_EWORK,
+                               "out of memory (panel geometry)");
+    for (size_t n = 0; n < np; n++)
+        for (size_t k = out->loop_start[out->panel_loop[n]];
+             k < out->loop_start[out->panel_loop[n + 1]]; k++)
+            panel_geometry_project(&panels->panels[n],
+                                   &out->position[3 * out->outline[k]],
+                                   &out->outline_plane[3 * k]);
+    return FACET_OK;
+}
+
+void panel_geometry_project(const struct panel *panel, const double x[3],
+                            double out[3])
+{
+    double d[3];
+    vec3_sub(x, panel->centroid, d);
+    double along = vec3_dot(d, panel->normal);
+    for (int c = 0; c < 3; c++)
+        out[c] = x[c] - along * panel->normal[c];
+}
+
+double panel_geometry_piece_area(const struct panel_geometry *g, size_t p)
+{
+    size_t c0 = g->piece_start[p], c1 = g->piece_start[p + 1];
+    const double *a = &g->position[3 * g->corner[c0]];
+    double area = 0;
+    for (size_t c = c0 + 1; c + 1 < c1; c++) {
+        double ab[3], ac[3], n[3];
+        vec3_sub(&g->position[3 * g->corner[c]], a, ab);
+        vec3_sub(&g->position[3 * g->corner[c + 1]], a, ac);
+        vec3_cross(ab, ac, n);
+        area += 0.5 * vec3_length(n);
+    }
+    return area;
+}
+
+double panel_geometry_loop_area(const struct panel_geometry *g, size_t l,
+                                const double normal[3])
+{
+    size_t k0 = g->loop_start[l], k1 = g->loop_start[l + 1];
+    if (k1 - k0 < 3)
+        return 0;
+    /* Newell's sum about the first point, dotted with the normal. */
+    const double *o = &g->outline_plane[3 * k0];
+    double sum[3] = {0, 0, 0};
+    for (size_t k = k0 + 1; k + 1 < k1; k++) {
+        double a[3], b[3], n[3];
+        vec3_sub(&g->outline_plane[3 * k], o, a);
+        vec3_sub(&g->outline_plane[3 * (k + 1)], o, b);
+        vec3_cross(a, b, n);
+        for (int c = 0; c < 3; c++)
+            sum[c] += n[c];
+    }
+    return 0.5 * vec3_dot(sum, normal);
+}

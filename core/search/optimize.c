@@ -1,0 +1,692 @@
+/*
+ * optimize.c: the search driver: design space, the point cache, parallel
+ * batch evaluation, and the exhaustive and random methods. NSGA-II's
+ * generations come through the same batches (optimize_nsga2.c).
+ */
+#include "core/search/optimize.h"
+
+#include <math.h>
+#include <stdatomic.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "core/base/numparse.h"
+#include "core/base/parallel.h"
+#include "core/search/optimize_internal.h"
+#include "core/base/rng.h"
+
+const char *optimize_method_name(enum optimize_method method)
+{
+    switch (method) {
+    case METHOD_EXHAUSTIVE: return "exhaustive";
+    case METHOD_RANDOM:     return "random";
+    default:                return "nsga2";
+    }
+}
+
+int optimize_method_parse(const char *text, enum optimize_method *out,
+                          struct facet_error *err)
+{
+    static const enum optimize_method all[] = {METHOD_EXHAUSTIVE,
+                                               METHOD_RANDOM, METHOD_NSGA2};
+    for (int k = 0; k < 3; k++)
+        if (strcmp(text, optimize_method_name(all[k])) == 0) {
+            *out = all[k];
+            return FACET_OK;
+        }
+    return facet_error_set(err, FACET_EINPUT,
+        "--method: '%s' unknown (choose exhaustive, random or nsga2)", text);
+}
+
+/* Threshold steps of an exhaustive space: t_min, t_min + step, ... up to
+ * t_max, forgiving a thousandth of a step of rounding. */
+static uint64_t threshold_steps(const struct design_space *s)
+{
+    if (!(s->t_step_mm > 0) || s->t_max_mm <= s->t_min_mm)
+        return 1;
+    return (uint64_t)floor((s->t_max_mm - s->t_min_mm) / s->t_step_mm +
+                           1e-3) + 1;
+}
+
+uint64_t design_space_size(const struct design_space *s)
+{
+    return (uint64_t)(s->u_max - s->u_min + 1) *
+           (uint64_t)(s->v_max - s->v_min + 1) * threshold_steps(s);
+}
+
+int design_space_parse_sides(const char *text, const char *what, int *lo,
+                             int *hi, struct facet_error *err)
+{
+    /* Read as written: 4294967297 is far out of range, not 1. */
+    const char *end = text + strlen(text), *stop;
+    long long a, b;
+    int rc = numparse_whole(text, end, 0, PANEL_MAX_GRID, &a, &stop);
+    if (rc == NUMPARSE_OK && stop == end) {
+        *lo = *hi = (int)a;
+        return FACET_OK;
+    }
+    if (rc == NUMPARSE_OK && *stop == ':') {
+        const char *second = stop + 1;
+        rc = numparse_whole(second, end, 0, PANEL_MAX_GRID, &b, &stop);
+        if (rc == NUMPARSE_OK && stop == end) {
+            *lo = (int)a;
+            *hi = (int)b;
+            return FACET_OK;
+        }
+    }
+    if (rc == NUMPARSE_RANGE)
+        return facet_error_set(err, FACET_EINPUT,
+            "%s: '%s' is out of range (grid sides 1 to %d)", what, text,
+            PANEL_MAX_GRID);
+    return facet_error_set(err, FACET_EINPUT,
+        "%s: '%s' is not a range A:B of whole numbers (e.g. 20:40)", what,
+        text);
+}
+
+int design_space_parse_threshold(const char *text,
+                                 struct design_space *space,
+                                 struct facet_error *err)
+{
+    double value[3] = {0, 0, 0};
+    int n = 0;
+    const char *p = text;
+    for (;;) {
+        const char *end;
+        if (n == 3)
+            return facet_error_set(err, FACET_EINPUT,
+                "--threshold: '%s' is not MM, A:B or A:B:STEP", text);
+        /* Decimal only: 0x10 is no threshold, not 16 mm. */
+        int rc = numparse_double(p, p + strlen(p), &value[n], &end);
+        if (rc != NUMPARSE_OK || !isfinite(value[n]) || value[n] < 0 ||
+            value[n] > 1e6 || (*end != ':' && *end != '\0'))
+            return facet_error_set(err, FACET_EINPUT,
+                "--threshold: '%s' is not MM, A:B or A:B:STEP (mm, 0 to "
+                "1e6)", text);
+        n++;
+        if (*end == '\0')
+            break;
+        p = end + 1;
+    }
+    space->t_min_mm = value[0];
+    space->t_max_mm = n >= 2 ? value[1] : value[0];
+    space->t_step_mm = n == 3 ? value[2] : 0;
+    if (space->t_max_mm < space->t_min_mm)
+        return facet_error_set(err, FACET_EINPUT,
+            "--threshold: %g:%g runs backwards", space->t_min_mm,
+            space->t_max_mm);
+    if (n == 3 && !(space->t_step_mm > 0))
+        return facet_error_set(err, FACET_EINPUT,
+            "--threshold: the step of '%s' must be above 0", text);
+    return FACET_OK;
+}
+
+int design_space_check(const struct design_space *s, struct facet_error *err)
+{
+    if (s->u_min < 1 || s->u_max < s->u_min || s->u_max > PANEL_MAX_GRID)
+        return facet_error_set(err, FACET_EINPUT,
+            "--u %d:%d is not a range within 1..%d", s->u_min, s->u_max,
+            PANEL_MAX_GRID);
+    if (s->v_min < 1 || s->v_max < s->v_min || s->v_max > PANEL_MAX_GRID)
+        return facet_error_set(err, FACET_EINPUT,
+            "--v %d:%d is not a range within 1..%d", s->v_min, s->v_max,
+            PANEL_MAX_GRID);
+    if (!isfinite(s->t_min_mm) || !isfinite(s->t_max_mm) ||
+        s->t_min_mm < 0 || s->t_max_mm < s->t_min_mm ||
+        !isfinite(s->t_step_mm) || s->t_step_mm < 0)
+        return facet_error_set(err, FACET_EINPUT,
+            "--threshold %g:%g:%g is not a range of lengths (mm)",
+            s->t_min_mm, s->t_max_mm, s->t_step_mm);
+    /* Counted in floating point first: 1e6 / 1e-300 steps does not fit a
+     * count, and must not wrap into one. */
+    if (s->t_step_mm > 0 && s->t_max_mm > s->t_min_mm) {
+        double steps = floor((s->t_max_mm - s->t_min_mm) / s->t_step_mm +
+                             1e-3) + 1;
+        if (!(steps <= DESIGN_THRESHOLD_STEPS_MAX))
+            return facet_error_set(err, FACET_EINPUT,
+                "--threshold %g:%g:%g is %.3g steps (at most %d: take a "
+                "larger step, or a continuous range A:B with nsga2)",
+                s->t_min_mm, s->t_max_mm, s->t_step_mm, steps,
+                DESIGN_THRESHOLD_STEPS_MAX);
+    }
+    return FACET_OK;
+}
+
+/* --- parallel evaluation --- */
+
+/* The points of a batch in the order they are evaluated (by grid), cut
+ * into groups of one grid each, which the jobs take in turn. */
+struct evaluation_plan {
+    const struct surface *surface;
+    const struct panel_lattice *lattice;  /* or NULL */
+    const struct option_params *base;
+    const struct design_point *points;
+    const size_t *order;            /* the points by grid */
+    const size_t *group;            /* ngroups + 1: group g is
+                                       order[group[g] .. group[g + 1]) */
+    size_t ngroups;
+    atomic_size_t next;             /* the next group not taken */
+    struct option_totals *totals;
+    struct panelization *keep;      /* NULL, or every point's panels (its
+                                       own group each) */
+};
+
+struct evaluation_job {
+    struct evaluation_plan *plan;
+    int rc;
+    struct facet_error err;
+};
+
+/* Evaluates groups until none is left or one fails. A group's grid is
+ * panelized once: its other points (only the threshold differs) have the
+ * same panels, which are only classified anew. */
+static void evaluation_thread(void *argument)
+{
+    struct evaluation_job *job = argument;
+    struct evaluation_plan *plan = job->plan;
+    for (;;) {
+        size_t g = atomic_fetch_add(&plan->next, 1);
+        if (g >= plan->ngroups)
+            break;
+        struct panelization panels;
+        for (size_t x = plan->group[g]; x < plan->group[g + 1]; x++) {
+            size_t k = plan->order[x];
+            struct option_params params = *plan->base;
+            params.nu = plan->points[k].nu;
+            params.nv = plan->points[k].nv;
+            params.classify.threshold = plan->points[k].threshold_mm / 1000;
+            if (x == plan->group[g]) {
+                job->rc = option_evaluate_lattice(plan->surface,
+                                                  plan->lattice, &params,
+                                                  &panels, &plan->totals[k],
+                                                  &job->err);
+            } else {
+                job->rc = classify_check_options(&params.classify,
+                                                 &job->err);
+                if (job->rc == FACET_OK)
+                    classify_panels(&panels, &params.classify,
+                                    &plan->totals[k]);
+            }
+            if (job->rc != FACET_OK)
+                break;
+        }
+        if (plan->keep != NULL && job->rc == FACET_OK) {
+            plan->keep[plan->order[plan->group[g]]] = panels;
+            memset(&panels, 0, sizeof panels);
+        }
+        panelization_free(&panels);
+        if (job->rc != FACET_OK) {
+            atomic_store(&plan->next, plan->ngroups);  /* the others stop */
+            break;
+        }
+    }
+}
+
+/* A point's place in the order of evaluation: by grid, then index. */
+struct grid_key {
+    int nu, nv;
+    size_t index;
+};
+
+static int compare_by_grid(const void *a, const void *b)
+{
+    const struct grid_key *p = a, *q = b;
+    if (p->nu != q->nu)
+        return p->nu < q->nu ? -1 : 1;
+    if (p->nv != q->nv)
+        return p->nv < q->nv ? -1 : 1;
+    return p->index < q->index ? -1 : p->index > q->index;
+}
+
+/* optimize_evaluate, and with keep, optimize_evaluate_panels. */
+static int evaluate(const struct surface *surface,
+                    const struct panel_lattice *lattice,
+                    const struct option_params *base,
+                    const struct design_point *points, size_t n, int jobs,
+                    struct option_totals *totals, struct panelization *keep,
+                    struct facet_error *err)
+{
+    if (jobs < 1)
+        jobs = 1;
+    if (jobs > PARALLEL_MAX)
+        jobs = PARALLEL_MAX;
+    /* Points that share a grid make one group, panelized once for all
+     * their thresholds. Already ordered (exhaustive: thresholds innermost)
+     * is kept as is. */
+    size_t *order = malloc((n ? n : 1) * sizeof *order);
+    size_t *group = malloc((n + 1) * sizeof *group);
+    struct grid_key *key = malloc((n ? n : 1) * sizeof *key);
+    if (order == NULL || group == NULL || key == NULL) {
+        free(order);
+        free(group);
+        free(key);
+        return facet_error_set(err, FACET_EWORK, "out of memory");
+    }
+    int sorted = 1;
+    for (size_t k = 0; k < n; k++) {
+        key[k] = (struct grid_key){points[k].nu, points[k].nv, k};
+        if (k > 0 && compare_by_grid(&key[k - 1], &key[k]) > 0)
+            sorted = 0;
+    }
+    if (!sorted && keep == NULL)
+        qsort(key, n, sizeof *key, compare_by_grid);
+    size_t ngroups = 0;
+    for (size_t k = 0; k < n; k++) {
+        order[k] = key[k].index;
+        /* Kept panels are each point's own: one group a point. */
+        if (k == 0 || keep != NULL || key[k].nu != key[k - 1].nu ||
+            key[k].nv != key[k - 1].nv)
+            group[ngroups++] = k;
+    }
+    group[ngroups] = n;
+    free(key);
+    if ((size_t)jobs > ngroups)
+        jobs = ngroups > 0 ? (int)ngroups : 1;
+
+    if (keep != NULL && n > 0)
+        memset(keep, 0, n * sizeof *keep);
+    struct evaluation_plan plan = {surface, lattice, base, points, order,
+                                   group, ngroups, 0, totals, keep};
+    atomic_init(&plan.next, 0);
+    struct evaluation_job job[PARALLEL_MAX];
+    for (int k = 0; k < jobs; k++)
+        job[k] = (struct evaluation_job){&plan, FACET_OK, {0, ""}};
+    parallel_run(job, sizeof job[0], jobs, evaluation_thread);
+    free(order);
+    free(group);
+    for (int k = 0; k < jobs; k++)
+        if (job[k].rc != FACET_OK) {
+            if (err != NULL)
+                *err = job[k].err;
+            for (size_t p = 0; keep != NULL && p < n; p++)
+                panelization_free(&keep[p]);
+            return job[k].rc;
+        }
+    return FACET_OK;
+}
+
+int optimize_evaluate(const struct surface *surface,
+                      const struct panel_lattice *lattice,
+                      const struct option_params *base,
+                      const struct design_point *points, size_t n, int jobs,
+                      struct option_totals *totals, struct facet_error *err)
+{
+    return evaluate(surface, lattice, base, points, n, jobs, totals, NULL,
+                    err);
+}
+
+int optimize_evaluate_panels(const struct surface *surface,
+                             const struct panel_lattice *lattice,
+                             const struct option_params *base,
+                             const struct design_point *points, size_t n,
+                             int jobs, struct panelization *panels,
+                             struct option_totals *totals,
+                             struct facet_error *err)
+{
+    return evaluate(surface, lattice, base, points, n, jobs, totals, panels,
+                    err);
+}
+
+/* --- the point cache and batches --- */
+
+static uint64_t point_key_hash(const struct design_point *p)
+{
+    uint64_t h = (uint64_t)p->nu * 0x9E3779B97F4A7C15ull;
+    h ^= (uint64_t)p->nv * 0xC2B2AE3D27D4EB4Full + (h << 6);
+    h ^= (uint64_t)llround(p->threshold_mm * 1000) * 0x165667B19E3779F9ull;
+    return h ^ (h >> 31);
+}
+
+static int same_point(const struct design_point *a,
+                      const struct design_point *b)
+{
+    return a->nu == b->nu && a->nv == b->nv &&
+           llround(a->threshold_mm * 1000) == llround(b->threshold_mm * 1000);
+}
+
+int search_init(struct search *s, const struct surface *surface,
+                const struct optimize_settings *settings,
+                const struct evaluated_option *stored, size_t nstored,
+                const struct optimize_hooks *hooks, int64_t total,
+                struct facet_error *err)
+{
+    memset(s, 0, sizeof *s);
+    s->surface = surface;
+    s->settings = settings;
+    s->hooks = hooks;
+    s->total = total;
+    s->capacity = 1024;
+    while (s->capacity < 2 * (nstored + 1))
+        s->capacity *= 2;
+    s->slot = malloc(s->capacity * sizeof *s->slot);
+    s->known_capacity = nstored + 256;
+    s->known = malloc(s->known_capacity * sizeof *s->known);
+    s->met = calloc(s->known_capacity, 1);
+    if (s->slot == NULL || s->known == NULL || s->met == NULL)
+        return facet_error_set(err, FACET_EWORK, "out of memory (search)");
+    for (size_t k = 0; k < s->capacity; k++)
+        s->slot[k] = SIZE_MAX;
+    for (size_t k = 0; k < nstored; k++) {
+        s->known[s->nknown] = stored[k];
+        size_t h = point_key_hash(&stored[k].point) & (s->capacity - 1);
+        while (s->slot[h] != SIZE_MAX)
+            h = (h + 1) & (s->capacity - 1);
+        s->slot[h] = s->nknown++;
+    }
+    return FACET_OK;
+}
+
+void search_free(struct search *s)
+{
+    free(s->slot);
+    free(s->known);
+    free(s->met);
+    memset(s, 0, sizeof *s);
+}
+
+/* The index into known of point p, or SIZE_MAX. */
+static size_t search_find(const struct search *s, const struct design_point *p)
+{
+    size_t h = point_key_hash(p) & (s->capacity - 1);
+    while (s->slot[h] != SIZE_MAX) {
+        if (same_point(&s->known[s->slot[h]].point, p))
+            return s->slot[h];
+        h = (h + 1) & (s->capacity - 1);
+    }
+    return SIZE_MAX;
+}
+
+int search_met(const struct search *s, const struct design_point *point)
+{
+    size_t found = search_find(s, point);
+    return found != SIZE_MAX && s->met[found];
+}
+
+/* Makes room for more known options and keeps the hash under half full. */
+static int search_grow(struct search *s, size_t more, struct facet_error *err)
+{
+    if (s->nknown + more > s->known_capacity) {
+        size_t capacity = 2 * (s->nknown + more);
+        struct evaluated_option *known = realloc(s->known,
+                                                 capacity * sizeof *known);
+        if (known != NULL)
+            s->known = known;
+        unsigned char *met = realloc(s->met, capacity);
+        if (known == NULL || met == NULL)
+            return facet_error_set(err, FACET_EWORK, "out of memory");
+        memset(met + s->known_capacity, 0, capacity - s->known_capacity);
+        s->met = met;
+        s->known_capacity = capacity;
+    }
+    if (2 * (s->nknown + more) > s->capacity) {
+        size_t capacity = s->capacity;
+        while (2 * (s->nknown + more) > capacity)
+            capacity *= 2;
+        size_t *slot = malloc(capacity * sizeof *slot);
+        if (slot == NULL)
+            return facet_error_set(err, FACET_EWORK, "out of memory");
+        for (size_t k = 0; k < capacity; k++)
+            slot[k] = SIZE_MAX;
+        for (size_t k = 0; k < s->nknown; k++) {
+            size_t h = point_key_hash(&s->known[k].point) & (capacity - 1);
+            while (slot[h] != SIZE_MAX)
+                h = (h + 1) & (capacity - 1);
+            slot[h] = k;
+        }
+        free(s->slot);
+        s->slot = slot;
+        s->capacity = capacity;
+    }
+    return FACET_OK;
+}
+
+int search_batch(struct search *s, const struct design_point *points,
+                 size_t n, int generation, size_t *index,
+                 struct facet_error *err)
+{
+    int rc = search_grow(s, n, err);
+    if (rc != FACET_OK)
+        return rc;
+    size_t first_new = s->nknown;
+    for (size_t k = 0; k < n; k++) {
+        size_t found = search_find(s, &points[k]);
+        if (found == SIZE_MAX) {
+            struct evaluated_option *o = &s->known[s->nknown];
+            memset(o, 0, sizeof *o);
+            o->point = points[k];
+            o->generation = generation;
+            size_t h = point_key_hash(&points[k]) & (s->capacity - 1);
+            while (s->slot[h] != SIZE_MAX)
+                h = (h + 1) & (s->capacity - 1);
+            s->slot[h] = found = s->nknown++;
+        }
+        if (!s->met[found]) {
+            /* The k-th distinct point met is option k, in a resumed pass
+             * as in the first: a stored option keeps the number it got. */
+            s->met[found] = 1;
+            s->distinct_met++;
+            if (found >= first_new)
+                s->known[found].number = s->distinct_met;
+        }
+        index[k] = found;
+    }
+    size_t fresh = s->nknown - first_new;
+    if (fresh > 0) {
+        struct design_point *points_new = malloc(fresh * sizeof *points_new);
+        struct option_totals *totals = malloc(fresh * sizeof *totals);
+        if (points_new == NULL || totals == NULL) {
+            free(points_new);
+            free(totals);
+            return facet_error_set(err, FACET_EWORK, "out of memory");
+        }
+        for (size_t k = 0; k < fresh; k++)
+            points_new[k] = s->known[first_new + k].point;
+        rc = optimize_evaluate(s->surface, s->lattice, &s->settings->base,
+                               points_new, fresh, s->settings->jobs, totals,
+                               err);
+        for (size_t k = 0; rc == FACET_OK && k < fresh; k++)
+            s->known[first_new + k].totals = totals[k];
+        free(points_new);
+        free(totals);
+        if (rc == FACET_OK && s->hooks->store != NULL)
+            rc = s->hooks->store(s->hooks->context, s->known + first_new,
+                                 fresh, err);
+        if (rc != FACET_OK)
+            return rc;
+    }
+    s->done += (int64_t)n;
+    if (s->hooks->progress != NULL)
+        s->hooks->progress(s->hooks->context,
+                           s->done < s->total ? s->done : s->total, s->total);
+    return FACET_OK;
+}
+
+/* --- exhaustive and random --- */
+
+/* Points per batch: enough to keep every thread busy, few enough that an
+ * interruption loses little and progress moves. */
+static size_t batch_size(const struct optimize_settings *settings)
+{
+    size_t size = 8 * (size_t)(settings->jobs > 0 ? settings->jobs : 1);
+    return size < 16 ? 16 : size;
+}
+
+static int stop_requested(const struct optimize_hooks *hooks)
+{
+    return hooks->should_stop != NULL && hooks->should_stop(hooks->context);
+}
+
+static void point_of_index(const struct design_space *space, uint64_t index,
+                           struct design_point *p)
+{
+    uint64_t steps = threshold_steps(space);
+    uint64_t nv = (uint64_t)(space->v_max - space->v_min + 1);
+    p->threshold_mm = space->t_min_mm + (double)(index % steps) *
+                                            space->t_step_mm;
+    if (p->threshold_mm > space->t_max_mm)
+        p->threshold_mm = space->t_max_mm;
+    index /= steps;
+    p->nv = space->v_min + (int)(index % nv);
+    p->nu = space->u_min + (int)(index / nv);
+}
+
+static int run_exhaustive(struct search *s, enum optimize_outcome *outcome,
+                          struct facet_error *err)
+{
+    const struct optimize_settings *settings = s->settings;
+    uint64_t total = design_space_size(&settings->space);
+    size_t size = batch_size(settings);
+    struct design_point *points = malloc(size * sizeof *points);
+    size_t *index = malloc(size * sizeof *index);
+    int rc = FACET_OK;
+    if (points == NULL || index == NULL)
+        rc = facet_error_set(err, FACET_EWORK, "out of memory");
+    for (uint64_t start = 0; rc == FACET_OK && start < total;
+         start += size) {
+        if (stop_requested(s->hooks)) {
+            *outcome = OPTIMIZE_INTERRUPTED;
+            break;
+        }
+        size_t n = total - start < size ? (size_t)(total - start) : size;
+        for (size_t k = 0; k < n; k++)
+            point_of_index(&settings->space, start + k, &points[k]);
+        rc = search_batch(s, points, n, 0, index, err);
+    }
+    free(points);
+    free(index);
+    return rc;
+}
+
+/* A random point of the space; a continuous threshold is drawn to a
+ * thousandth of a millimetre, the resolution points are told apart by. */
+static void random_point(const struct design_space *space, struct rng *rng,
+                         struct design_point *p)
+{
+    p->nu = space->u_min + (int)rng_below(rng, (uint64_t)(space->u_max -
+                                                          space->u_min + 1));
+    p->nv = space->v_min + (int)rng_below(rng, (uint64_t)(space->v_max -
+                                                          space->v_min + 1));
+    if (space->t_step_mm > 0) {
+        uint64_t steps = threshold_steps(space);
+        p->threshold_mm = space->t_min_mm +
+                          (double)rng_below(rng, steps) * space->t_step_mm;
+    } else {
+        double t = space->t_min_mm +
+                   rng_uniform(rng) * (space->t_max_mm - space->t_min_mm);
+        p->threshold_mm = round(t * 1000) / 1000;
+    }
+}
+
+static int run_random(struct search *s, enum optimize_outcome *outcome,
+                      struct facet_error *err)
+{
+    const struct optimize_settings *settings = s->settings;
+    struct rng rng;
+    rng_seed(&rng, settings->seed);
+    size_t size = batch_size(settings);
+    struct design_point *points = malloc(size * sizeof *points);
+    size_t *index = malloc(size * sizeof *index);
+    int rc = FACET_OK;
+    if (points == NULL || index == NULL)
+        rc = facet_error_set(err, FACET_EWORK, "out of memory");
+    /* Distinct points only; give up drawing when the space seems spent. */
+    int64_t misses = 0, wanted = settings->evaluations;
+    while (rc == FACET_OK && s->distinct_met < wanted) {
+        if (stop_requested(s->hooks)) {
+            *outcome = OPTIMIZE_INTERRUPTED;
+            break;
+        }
+        size_t n = 0;
+        while (n < size && s->distinct_met + (int64_t)n < wanted &&
+               misses < 100 * wanted + 1000) {
+            struct design_point p;
+            random_point(&settings->space, &rng, &p);
+            int repeated = search_met(s, &p);
+            for (size_t k = 0; k < n && !repeated; k++)
+                repeated = p.nu == points[k].nu && p.nv == points[k].nv &&
+                           llround(p.threshold_mm * 1000) ==
+                               llround(points[k].threshold_mm * 1000);
+            if (repeated) {
+                misses++;
+                continue;
+            }
+            points[n++] = p;
+        }
+        if (n == 0)
+            break;
+        rc = search_batch(s, points, n, 0, index, err);
+    }
+    free(points);
+    free(index);
+    return rc;
+}
+
+int64_t optimize_total(const struct optimize_settings *settings)
+{
+    switch (settings->method) {
+    case METHOD_EXHAUSTIVE:
+        return (int64_t)design_space_size(&settings->space);
+    case METHOD_RANDOM:
+        return settings->evaluations;
+    default:
+        return (int64_t)settings->population *
+               ((int64_t)settings->generations + 1);
+    }
+}
+
+int optimize_run(const struct surface *surface,
+                 const struct panel_lattice *lattice,
+                 const struct optimize_settings *settings,
+                 const struct evaluated_option *stored, size_t nstored,
+                 const struct optimize_hooks *hooks,
+                 enum optimize_outcome *outcome, struct facet_error *err)
+{
+    *outcome = OPTIMIZE_DONE;
+    int rc = design_space_check(&settings->space, err);
+    if (rc != FACET_OK)
+        return rc;
+    int64_t total = optimize_total(settings);
+    struct search s;
+    rc = search_init(&s, surface, settings, stored, nstored, hooks, total,
+                     err);
+    s.lattice = lattice;
+    if (rc == FACET_OK) {
+        if (settings->method == METHOD_EXHAUSTIVE)
+            rc = run_exhaustive(&s, outcome, err);
+        else if (settings->method == METHOD_RANDOM)
+            rc = run_random(&s, outcome, err);
+        else
+            rc = run_nsga2(&s, outcome, err);
+    }
+    search_free(&s);
+    return rc;
+}
+
+/* A lattice costs about as much to build as 15 grids on their own. */
+#define LATTICE_MIN_GRIDS 30
+
+int optimize_lattice(const struct surface *surface,
+                     const struct optimize_settings *settings,
+                     struct panel_lattice **out, struct facet_error *err)
+{
+    *out = NULL;
+    const struct design_space *space = &settings->space;
+    int rc = design_space_check(space, err);
+    if (rc != FACET_OK)
+        return rc;
+    /* The grids the run evaluates, at most, from the settings alone. */
+    double grids = (double)(space->u_max - space->u_min + 1) *
+                   (double)(space->v_max - space->v_min + 1);
+    double evaluations =
+        settings->method == METHOD_RANDOM ? (double)settings->evaluations
+        : settings->method == METHOD_NSGA2
+            ? (double)settings->population * (settings->generations + 1)
+            : grids;
+    if (evaluations < grids)
+        grids = evaluations;
+    if (settings->base.mode != PANEL_EXTREMES || grids < LATTICE_MIN_GRIDS)
+        return FACET_OK;
+    return panel_lattice_build(&surface->panels, space->u_min, space->u_max,
+                               space->v_min, space->v_max, settings->jobs,
+                               out, err);
+}

@@ -1,0 +1,157 @@
+/*
+ * optimize.h: searching the design space of a prepared surface.
+ *
+ * A design point is a grid (nu x nv) and a flatness threshold; the design
+ * space is their ranges. Three methods, named after Refinery's study types:
+ *   exhaustive  the cross product, u outermost, then v, then threshold:
+ *               the exact Pareto front when the space is small;
+ *   random      --evals distinct points drawn with the seed;
+ *   nsga2       Deb et al. 2002 (nsga2.h) with --pop and --gens.
+ * Options are numbered in the order the method first meets them, which the
+ * seed fixes, so a run and its resumption number them alike.
+ *
+ * Evaluation runs on `jobs` threads in batches; after each batch the caller's
+ * store hook receives the new options (to commit them) and its stop hook may
+ * end the run. A design point met twice is evaluated once. Resuming: pass
+ * the options already stored; the method runs again from its start with
+ * them as a cache (nothing stored is evaluated or stored again), so the
+ * finished run has exactly the options of an uninterrupted one.
+ */
+#ifndef FACET_OPTIMIZE_H
+#define FACET_OPTIMIZE_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "core/search/metric.h"
+#include "core/classify/option.h"
+
+struct design_space {
+    int u_min, u_max;         /* grid sides, inclusive */
+    int v_min, v_max;
+    double t_min_mm, t_max_mm;/* flatness threshold (mm), inclusive */
+    double t_step_mm;         /* exhaustive step; 0 = the single value
+                                 t_min (exhaustive) or a continuous range
+                                 (random, nsga2) */
+};
+
+struct design_point {
+    int nu, nv;
+    double threshold_mm;
+};
+
+enum optimize_method { METHOD_EXHAUSTIVE, METHOD_RANDOM, METHOD_NSGA2 };
+
+struct optimize_settings {
+    enum optimize_method method;
+    struct design_space space;
+    struct option_params base;          /* everything but grid and t */
+    struct objective objectives[OBJECTIVES_MAX];
+    int nobjectives;
+    uint64_t seed;
+    int64_t evaluations;                /* random */
+    int population, generations;        /* nsga2 */
+    int jobs;                           /* threads, >= 1 */
+};
+
+struct evaluated_option {
+    int64_t number;                     /* 1-based, in order met */
+    int generation;                     /* nsga2 generation, else 0 */
+    struct design_point point;
+    struct option_totals totals;
+};
+
+struct optimize_hooks {
+    void *context;
+    /* Commits n new options; a non-zero return ends the run with that
+     * error. */
+    int (*store)(void *context, const struct evaluated_option *options,
+                 size_t n, struct facet_error *err);
+    /* Reports progress: options done (stored or reused) of total. */
+    void (*progress)(void *context, int64_t done, int64_t total);
+    /* Non-zero when the user asked to stop (checked between batches). */
+    int (*should_stop)(void *context);
+};
+
+enum optimize_outcome { OPTIMIZE_DONE, OPTIMIZE_INTERRUPTED };
+
+/* Names: "exhaustive", "random", "nsga2". */
+const char *optimize_method_name(enum optimize_method method);
+int optimize_method_parse(const char *text, enum optimize_method *out,
+                          struct facet_error *err);
+
+/* Number of points of the exhaustive cross product (threshold steps from
+ * t_min to t_max inclusive, to within a thousandth of a step). */
+uint64_t design_space_size(const struct design_space *space);
+
+/* Parses a grid range as a designer writes it, "20:40" or "30", into
+ * *lo, *hi. what names the field in the error ("--u"). */
+int design_space_parse_sides(const char *text, const char *what, int *lo,
+                             int *hi, struct facet_error *err);
+
+/* Parses a threshold as a designer writes it (mm): "3" (one value), "1:5"
+ * (a continuous range) or "1:5:0.5" (stepped), into space's t_min_mm,
+ * t_max_mm and t_step_mm. FACET_EINPUT for anything else, a backward
+ * range, a negative or non-finite value, or a step that is not above 0. */
+int design_space_parse_threshold(const char *text,
+                                 struct design_space *space,
+                                 struct facet_error *err);
+
+/* The most threshold steps an exhaustive space may have. */
+#define DESIGN_THRESHOLD_STEPS_MAX 1000000
+
+/* Checks ranges (1 <= min <= max <= PANEL_MAX_GRID, finite thresholds
+ * >= 0, step >= 0, at most DESIGN_THRESHOLD_STEPS_MAX threshold steps).
+ * FACET_EINPUT names the bad range. */
+int design_space_check(const struct design_space *space,
+                       struct facet_error *err);
+
+/* The options a run of settings evaluates at most (a point met twice is
+ * evaluated once): the space for exhaustive, the evaluations for random,
+ * population x (generations + 1) for NSGA-II. */
+int64_t optimize_total(const struct optimize_settings *settings);
+
+/* Runs the search on the prepared surface, the panels of the grids
+ * lattice holds (or NULL; see optimize_lattice) taken from it. stored[0..
+ * nstored) are the options of the run already committed (resume), else
+ * NULL/0. *outcome is OPTIMIZE_DONE or OPTIMIZE_INTERRUPTED (the stop hook
+ * fired; everything evaluated was stored). Returns FACET_OK, or the first
+ * error of an evaluation or of the store hook. */
+int optimize_run(const struct surface *surface,
+                 const struct panel_lattice *lattice,
+                 const struct optimize_settings *settings,
+                 const struct evaluated_option *stored, size_t nstored,
+                 const struct optimize_hooks *hooks,
+                 enum optimize_outcome *outcome, struct facet_error *err);
+
+/* Evaluates points[0..n) on up to jobs threads into totals[0..n), the
+ * panels of the grids lattice holds from it (NULL: none; see
+ * option_evaluate_lattice). */
+int optimize_evaluate(const struct surface *surface,
+                      const struct panel_lattice *lattice,
+                      const struct option_params *base,
+                      const struct design_point *points, size_t n, int jobs,
+                      struct option_totals *totals, struct facet_error *err);
+
+/* Like optimize_evaluate, keeping every point's panels: panels[0..n)
+ * (caller-owned, each released with panelization_free; all released
+ * already when it fails). */
+int optimize_evaluate_panels(const struct surface *surface,
+                             const struct panel_lattice *lattice,
+                             const struct option_params *base,
+                             const struct design_point *points, size_t n,
+                             int jobs, struct panelization *panels,
+                             struct option_totals *totals,
+                             struct facet_error *err);
+
+/* The lattice a run with settings takes its panels from
+ * (panel_lattice_build, on settings->jobs threads), when it evaluates
+ * enough grids that share enough lines to pay for one; else NULL, with
+ * FACET_OK. The choice depends on the settings alone, so that a resumed
+ * run takes its panels the same way as the run it resumes and its options
+ * come out the same to the bit. */
+int optimize_lattice(const struct surface *surface,
+                     const struct optimize_settings *settings,
+                     struct panel_lattice **out, struct facet_error *err);
+
+#endif

@@ -1,0 +1,48 @@
+/*
+ * optimize_internal.h: the state every search method shares (internal to
+ * optimize*.c): the options the run knows, a hash of their design points,
+ * and the batch step that evaluates what is new and hands it to the store.
+ */
+#ifndef FACET_OPTIMIZE_INTERNAL_H
+#define FACET_OPTIMIZE_INTERNAL_H
+
+#include "core/search/optimize.h"
+
+struct search {
+    const struct surface *surface;
+    const struct optimize_settings *settings;
+    const struct optimize_hooks *hooks;
+    const struct panel_lattice *lattice;  /* or NULL: see optimize_lattice */
+    struct evaluated_option *known;  /* stored at start, then new ones */
+    unsigned char *met;              /* known[k] met in this pass */
+    size_t nknown, known_capacity;
+    size_t *slot;                    /* open-addressing hash into known */
+    size_t capacity;                 /* slots, a power of two */
+    int64_t distinct_met;            /* distinct points met so far */
+    int64_t done, total;             /* for progress */
+};
+
+/* Sets up *s with the run's stored options. Release with search_free. */
+int search_init(struct search *s, const struct surface *surface,
+                const struct optimize_settings *settings,
+                const struct evaluated_option *stored, size_t nstored,
+                const struct optimize_hooks *hooks, int64_t total,
+                struct facet_error *err);
+void search_free(struct search *s);
+
+/* Meets points[0..n) in order: a point met for the first time gets the
+ * next option number; those the run does not have yet are evaluated (in
+ * parallel) and stored through the hook. index[k] receives the position in
+ * s->known of points[k], whose totals are then valid. */
+int search_batch(struct search *s, const struct design_point *points,
+                 size_t n, int generation, size_t *index,
+                 struct facet_error *err);
+
+/* Whether points[k] has been met before in this pass. */
+int search_met(const struct search *s, const struct design_point *point);
+
+/* NSGA-II over the design space (optimize_nsga2.c). */
+int run_nsga2(struct search *s, enum optimize_outcome *outcome,
+              struct facet_error *err);
+
+#endif

@@ -1,0 +1,77 @@
+/*
+ * coarse_mesh.c: facet size, panel size and the warning. See coarse_mesh.h.
+ */
+#include "core/surface/coarse_mesh.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+
+static int compare_doubles(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+/* The median of values[0..n), which it reorders; n > 0. */
+static double median(double *values, size_t n)
+{
+    qsort(values, n, sizeof *values, compare_doubles);
+    return n % 2 ? values[n / 2] : (values[n / 2 - 1] + values[n / 2]) / 2;
+}
+
+double mesh_facet_size(const struct mesh *mesh)
+{
+    if (mesh->ntriangles == 0)
+        return 0;
+    double *side = malloc(mesh->ntriangles * sizeof *side);
+    if (side == NULL)
+        return -1;
+    for (size_t t = 0; t < mesh->ntriangles; t++)
+        side[t] = sqrt(2 * mesh->face_area[t]);
+    double size = median(side, mesh->ntriangles);
+    free(side);
+    return size;
+}
+
+double panels_typical_side(const struct panelization *p)
+{
+    if (p->npanels == 0)
+        return 0;
+    double *area = malloc(p->npanels * sizeof *area);
+    if (area == NULL)
+        return -1;
+    size_t n = 0;
+    for (size_t k = 0; k < p->npanels; k++)
+        if (!p->panels[k].trimmed)
+            area[n++] = p->panels[k].area;
+    if (n == 0)
+        for (size_t k = 0; k < p->npanels; k++)
+            area[n++] = p->panels[k].area;
+    double side = sqrt(median(area, n));
+    free(area);
+    return side;
+}
+
+double grid_panel_side(double area, double fill, int nu, int nv)
+{
+    if (!(fill > 0) || fill > 1)
+        fill = 1;
+    return sqrt(area / (fill * (double)nu * (double)nv));
+}
+
+int coarse_mesh_warning(double facet_size, double panel_side,
+                        const char *grid, char *warning, size_t size)
+{
+    if (!(facet_size > 0) || !(panel_side > 0) ||
+        facet_size < COARSE_MESH_RATIO * panel_side)
+        return 0;
+    snprintf(warning, size,
+             "the mesh is coarse for %s: its facets (%.3g m) are %.1f times "
+             "the panels' side (%.3g m), so curvature is the smooth "
+             "surface's and deviation the facets' folds; FP panels may "
+             "deviate more than the threshold (refine the mesh or use "
+             "fewer panels)",
+             grid, facet_size, facet_size / panel_side, panel_side);
+    return 1;
+}

@@ -1,0 +1,1035 @@
+/*
+ * curvature.c: principal curvatures at every vertex by local jet fitting.
+ *
+ * For each vertex v:
+ *   1. An initial normal: the sum of v's corner normals when the file has vn,
+ *      otherwise the sum of the vector areas of the OBJ faces around it
+ *      (zero-area triangles add nothing; a quad counts whole, however it
+ *      was split); flipped on request.
+ *   2. A neighbourhood: the k-ring of v by breadth-first search over the
+ *      faces around each vertex, at least 2 rings (3 on the boundary) and
+ *      grown ring by ring until it holds enough points (except where it
+ *      falls back to the 2-ring, below). Rings follow the
+ *      mesh, so the neighbourhood scales with the local edge length; the
+ *      triangles of one OBJ face count as one face, so a quad mesh's rings
+ *      do not depend on the diagonals its triangulation chose.
+ *   3. A weighted least-squares fit, in a frame (t1, t2, n) at v, of the
+ *      height w = f(x, y) of the neighbours over the tangent plane, less the
+ *      osculating excess: the part of the height of the surface with the
+ *      fitted shape operator everywhere (a sphere, a circular cylinder) that
+ *      a polynomial of the fit's degree cannot follow, q / (1 + sqrt(1 - p))
+ *      - q / 2 with q = X.S X and p = |S X|^2. Refitted until the fit stays
+ *      put (c = F(c) for its curvature terms c: by repeating the fit where
+ *      the excess is small, by Newton steps where it is not, as repeating
+ *      swung back and forth on coarse one-sided fits), so spheres and
+ *      cylinders are fitted exactly at any mesh size,
+ *      and on other surfaces only the part of the quartic and higher terms
+ *      due to the curvature's change is left to alias into the fit (it was
+ *      what made a cylinder's straight direction noisy: the arc's x^4 went
+ *      into the y^2 of a fit through the vertex). The fit: a quadric with
+ *      gradient (5 terms), or a cubic jet (9 terms) where the neighbourhood
+ *      reaches the boundary (one-sided, so the odd terms no longer cancel),
+ *      is large enough, and spans a small arc (radius times the quadric's
+ *      largest |k| under CUBIC_SPAN_MAX, 0.866); a one-sided neighbourhood
+ *      over a wider arc (a coarse mesh, where the 3-ring spans tens of
+ *      degrees) keeps the quadric over the 2-ring, not grown for more
+ *      points, as a one-sided cubic there swings the curvature through zero
+ *      and a strip's 2-ring grown for points runs along the strip round
+ *      the arc. A thin neighbourhood, whose quadric is ill-conditioned
+ *      (relative pivot under FIT_THIN_TOL, 1e-3: a strip one face wide,
+ *      its points on two lines across, where y^2 is a multiple of y), is
+ *      fitted in its principal axes by the terms of degree <= 1 across,
+ *      straight across as the mesh is there: its curvature across is 0
+ *      (a strip one face wide on a sphere reads as single-curved).
+ *      Weights are Gaussian in distance relative to the neighbourhood
+ *      radius.
+ *   4. Refinement: the normal of the fitted graph becomes the new n and the
+ *      fit is repeated, until the normal turns by less than 1e-10 rad (a
+ *      refit that tilts further than the last is not taken), so the result
+ *      depends on the points, not on the initial normal.
+ *   5. The shape operator of the graph at the origin, I^-1 II with
+ *      E = 1 + fx^2, F = fx fy, G = 1 + fy^2 and L, M, N = fxx, fxy, fyy / W,
+ *      expressed in an orthonormal tangent basis; its eigenvalues are k1 >=
+ *      k2 and its eigenvectors the principal directions.
+ *
+ * Sign: k = <r'', n>, negative where the surface bends away from the normal
+ * (a sphere with outward normal has k = -1/R). A vertex with no usable
+ * neighbourhood gets k1 = k2 = 0. Nothing here produces NaN for finite
+ * input; a non-finite result is replaced by that zero answer.
+ *
+ * Accuracy (tests/unit/test_curvature.c; largest relative error over the
+ * vertices, interior / boundary). Examples at 141 x 141 vertices: sphere
+ * 0.001 % / 0.002 %, cylinder under 0.001 % / 0.001 %, torus 0.31 % /
+ * 0.70 % (its second curvature, which passes through 0, measured against
+ * no less than a tenth of the first; the tube's 0.017 % / 0.009 %), hypar
+ * 0.008 % / 0.024 %. At 97 x 89 quads, against CGAL's 2-ring jet fit
+ * (Monge_via_jet_fitting, degree 2) on the same meshes: dome boundary
+ * 0.001 % (CGAL 0.055 %), cylinder 0.0001 % (0.058 %) and its zero
+ * curvature 5.7e-8 / 5.3e-8 1/m (4.9e-7 / 8.1e-7), torus 1.5 % and 0.03 %
+ * (7.2 % and 1.5 %), hypar 0.057 % (2.1 %). A 57-vertex quad hemisphere of
+ * radius 4.5 m: every k within -1.025/R .. -0.998/R (-1.42/R .. -1/R
+ * before the Newton steps), its rim symmetric to 4e-14. A strip wrapped
+ * on a cylinder of R = 4 m or 8 m, one 1.5 m quad wide, every vertex on
+ * the boundary (test_curvature_coarse's maze): along the rulings |k| <=
+ * 3.2e-6 1/m, across within 0.035 % of 1/R, the same turned in space
+ * (before the thin fits: 0.33 1/m and 144 %). The error of what is not a
+ * sphere or cylinder grows with (edge length / radius of curvature)^2.
+ *
+ * Cost is O(V) for meshes of bounded valence: one pass, about two to four
+ * fits per vertex (each refitted two to four times for the correction),
+ * work buffers allocated once per thread (about 3.0 s of CPU for 1M
+ * vertices of the roof example, one thread, against 2.7 s in the same run
+ * before the thin fits and the Newton steps, and 1.7 s measured before the
+ * correction; shared by the online CPUs: vertices are independent, so the
+ * threads change nothing in the result).
+ */
+#include <math.h>
+#include <stdatomic.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "core/surface/curvature.h"
+#include "core/base/linalg.h"
+#include "core/base/parallel.h"
+#include "core/base/vec3.h"
+
+enum {
+    RINGS_INTERIOR = 2,     /* rings gathered at least, interior vertex */
+    RINGS_BOUNDARY = 3,     /* rings gathered at least, on the boundary */
+    RINGS_MAX = 6,          /* never more rings than this */
+    POINTS_WANTED = 12,     /* grow the neighbourhood until this many */
+    POINTS_QUADRIC = 5,     /* the least a quadric with gradient needs */
+    POINTS_CUBIC = 18,      /* a cubic jet needs this many on the boundary */
+    POINTS_CUBIC_NEAR = 14, /* and this many near it (neighbours all round) */
+    POINTS_MAX = 1024,      /* neighbourhood size cap (high valence) */
+    TERMS_MAX = 9           /* x^2 xy y^2 x y x^3 x^2y xy^2 y^3 */
+};
+
+/* Gaussian weight exp(-WEIGHT_SHARPNESS (d / radius)^2). */
+#define WEIGHT_SHARPNESS 2.0
+/* Relative pivot below which a fit's normal equations count as singular. */
+#define FIT_PIVOT_TOL 1e-9
+/* Relative pivot of the quadric's normal equations below which a
+ * neighbourhood counts as thin (see fit). */
+#define FIT_THIN_TOL 1e-3
+/* A cubic jet only while the neighbourhood's radius times the largest
+ * curvature (of the quadric fit) stays below this: a wider neighbourhood
+ * (a coarse mesh: a 3-ring spanning a large arc) is no longer a height field
+ * a one-sided cubic can follow, and its odd terms swing the curvature
+ * through zero (coarse caps' rims came out at +0.5/R with 1.5 and more).
+ * It is sqrt(EXCESS_P_MAX), so that no point of a cubic's neighbourhood
+ * lies beyond the osculating correction's range (with 1.0, the maze of
+ * test_curvature_coarse on R = 8 m, cells one quad wide, was off by 0.05
+ * 1/m along its rulings). A coarse hypar's boundary, which needs the
+ * cubic, is worse with less (at 10 x 10 quads: 9 % off with 0.866 or 1.0,
+ * 23 % with 0.5). */
+#define CUBIC_SPAN_MAX 0.866
+/* The osculating-surface correction (see fit) is clamped where
+ * (k d)^2 exceeds this, d the point's distance: near 1 the osculating
+ * sphere turns vertical and its height has no Taylor series left. */
+#define EXCESS_P_MAX 0.75
+enum {
+    EXCESS_ITERATIONS = 6,  /* refits for the correction, at most */
+    NORMAL_ITERATIONS = 6   /* refits about the fitted normal, at most */
+};
+/* The osculating correction takes Newton steps where the excess's p may
+ * exceed this (see fit); below it, repeating the fit converges by a
+ * factor of about p / 4 a pass. */
+#define NEWTON_P_MIN 0.01
+/* The refits stop once the fit changes by less than this (relative). */
+#define FIT_CONVERGED 1e-13
+/* ... of at least this scaled curvature (k times the radius): below it a
+ * curvature counts as none, and its noise need not settle. */
+#define FIT_SCALE_MIN 1e-6
+/* The refits about the normal stop once it turns by less than this (rad):
+ * symmetric vertices then agree to about 1e-12 of their curvature. */
+#define NORMAL_CONVERGED 1e-10
+
+/* Work buffers shared by all vertices; allocated once per call. */
+struct workspace {
+    size_t nvertices;
+    uint32_t *mark;     /* #V: the stamp of the last gather that saw it */
+    uint32_t stamp;     /* the current gather's stamp, never 0 */
+    uint32_t *points;   /* POINTS_MAX: the neighbourhood, centre first */
+    double *offset;     /* 3 x POINTS_MAX: the points less the centre */
+    double *weight;     /* POINTS_MAX: their weights */
+    double *local;      /* 3 x POINTS_MAX: their frame coordinates */
+};
+
+/* A local orthonormal frame: tangents t1, t2 and normal n, world coords. */
+struct frame {
+    double t1[3], t2[3], n[3];
+};
+
+/* The result of fitting w = f(x, y) in a frame, in metres: gradient
+ * (fx, fy), dimensionless, and second derivatives (1/m). */
+struct jet {
+    double fx, fy, fxx, fxy, fyy;
+    double radius;      /* of the neighbourhood fitted (m) */
+};
+
+/* Completes the unit vector f->n into a right-handed orthonormal frame. */
+static void frame_complete(struct frame *f)
+{
+    /* Start from the world axis least aligned with n. */
+    double axis[3] = {0, 0, 0};
+    double ax = fabs(f->n[0]), ay = fabs(f->n[1]), az = fabs(f->n[2]);
+    axis[ax <= ay && ax <= az ? 0 : (ay <= az ? 1 : 2)] = 1;
+    vec3_cross(f->n, axis, f->t1);
+    vec3_normalize(f->t1);
+    vec3_cross(f->n, f->t1, f->t2);
+}
+
+enum { FACE_TRIANGLES_MAX = 16 };  /* pieces of one OBJ face looked at */
+
+/* The triangles of the OBJ face triangle t came from, into face (at most
+ * FACE_TRIANGLES_MAX, t first): t and those reached from it across edges
+ * inside that face (all of a quad's). Returns how many. */
+static size_t face_triangles(const struct mesh *mesh, uint32_t t,
+                             uint32_t *face)
+{
+    size_t n = 1;
+    face[0] = t;
+    if (!mesh->neighbour || !mesh->source_face)
+        return n;
+    for (size_t i = 0; i < n; i++)
+        for (int k = 0; k < 3; k++) {
+            uint32_t u = mesh->neighbour[3 * (size_t)face[i] + k];
+            if (u == MESH_NONE || mesh->source_face[u] != mesh->source_face[t])
+                continue;
+            size_t j = 0;
+            while (j < n && face[j] != u)
+                j++;
+            if (j == n && n < FACE_TRIANGLES_MAX)
+                face[n++] = u;
+        }
+    return n;
+}
+
+enum { VERTEX_FACES_MAX = 64 };  /* faces around a vertex told apart */
+
+/* The initial unit normal of vertex v into n: the sum of its corner normals
+ * when the mesh has vn, else the sum of the vector areas of the OBJ faces
+ * around it, each once (a face's vector area, the sum of its triangles'
+ * cross products, does not depend on how it was triangulated, so neither
+ * does the normal of a quad mesh's vertex). Returns 0 (n = 0) when v has no
+ * face with a usable normal. */
+static int vertex_normal(const struct mesh *mesh, uint32_t v, double *n)
+{
+    uint32_t begin = mesh->vertex_start[v], end = mesh->vertex_start[v + 1];
+
+    n[0] = n[1] = n[2] = 0;
+    if (mesh->has_normals && mesh->corner_normal) {
+        for (uint32_t i = begin; i < end; i++) {
+            size_t t = mesh->vertex_triangles[i];
+            for (int k = 0; k < 3; k++)
+                if (mesh->triangle[3 * t + k] == v) {
+                    const double *c = mesh->corner_normal + 9 * t + 3 * k;
+                    if (isfinite(c[0]) && isfinite(c[1]) && isfinite(c[2]))
+                        for (int r = 0; r < 3; r++)
+                            n[r] += c[r];
+                }
+        }
+        if (vec3_normalize(n))
+            return 1;
+        n[0] = n[1] = n[2] = 0;  /* vn cancel out: use the winding */
+    }
+    uint32_t seen[VERTEX_FACES_MAX];
+    size_t nseen = 0;
+    for (uint32_t i = begin; i < end; i++) {
+        uint32_t face[FACE_TRIANGLES_MAX];
+        size_t nface = face_triangles(mesh, mesh->vertex_triangles[i], face);
+        uint32_t name = face[0];  /* the face's lowest triangle names it */
+        for (size_t j = 1; j < nface; j++)
+            if (face[j] < name)
+                name = face[j];
+        size_t j = 0;
+        while (j < nseen && seen[j] != name)
+            j++;
+        if (j < nseen)
+            continue;  /* counted already */
+        if (nseen < VERTEX_FACES_MAX)
+            seen[nseen++] = name;
+        for (size_t f = 0; f < nface; f++) {
+            const uint32_t *tri = mesh->triangle + 3 * (size_t)face[f];
+            const double *a = mesh->position + 3 * (size_t)tri[0];
+            const double *b = mesh->position + 3 * (size_t)tri[1];
+            const double *c = mesh->position + 3 * (size_t)tri[2];
+            double ab[3], ac[3], cross[3];
+            for (int r = 0; r < 3; r++) {
+                ab[r] = b[r] - a[r];
+                ac[r] = c[r] - a[r];
+            }
+            vec3_cross(ab, ac, cross);
+            if (isfinite(vec3_dot(cross, cross)))
+                for (int r = 0; r < 3; r++)
+                    n[r] += cross[r];
+        }
+    }
+    if (vec3_normalize(n))
+        return 1;
+    n[0] = n[1] = n[2] = 0;
+    return 0;
+}
+
+/* Adds the vertices of triangle t to the neighbourhood (unless seen or the
+ * cap is hit), returning the new count. */
+static size_t take_triangle(const struct mesh *mesh, size_t t, uint32_t stamp,
+                            struct workspace *ws, size_t count)
+{
+    const uint32_t *tri = mesh->triangle + 3 * t;
+    for (int k = 0; k < 3; k++) {
+        uint32_t w = tri[k];
+        if (ws->mark[w] == stamp || count == POINTS_MAX)
+            continue;
+        ws->mark[w] = stamp;
+        ws->points[count++] = w;
+    }
+    return count;
+}
+
+/* Adds the vertices of the OBJ face triangle t came from (face_triangles),
+ * so the rings of a quad mesh hold whole quads and do not depend on the
+ * diagonal the triangulation chose: vertices placed symmetrically get the
+ * same rings. */
+static size_t take_face(const struct mesh *mesh, uint32_t t, uint32_t stamp,
+                        struct workspace *ws, size_t count)
+{
+    uint32_t face[FACE_TRIANGLES_MAX];
+    size_t nface = face_triangles(mesh, t, face);
+    for (size_t i = 0; i < nface; i++)
+        count = take_triangle(mesh, face[i], stamp, ws, count);
+    return count;
+}
+
+/* Gathers into ws->points the centre v followed by its neighbours, ring by
+ * ring (a ring: the vertices of the faces around the last one): at least
+ * min_rings rings, more (up to RINGS_MAX) while fewer than want neighbours
+ * are found, never more than POINTS_MAX points in all. Returns the number
+ * of points, centre included. */
+static size_t gather(const struct mesh *mesh, uint32_t v, int min_rings,
+                     size_t want, struct workspace *ws)
+{
+    size_t count = 1, ring_begin = 0, ring_end = 1;
+
+    if (++ws->stamp == 0) {  /* wrapped: forget every old mark */
+        memset(ws->mark, 0, ws->nvertices * sizeof(uint32_t));
+        ws->stamp = 1;
+    }
+    uint32_t stamp = ws->stamp;
+
+    ws->points[0] = v;
+    ws->mark[v] = stamp;
+    for (int ring = 1; ring <= RINGS_MAX; ring++) {
+        for (size_t i = ring_begin; i < ring_end; i++) {
+            uint32_t u = ws->points[i];
+            for (uint32_t j = mesh->vertex_start[u];
+                 j < mesh->vertex_start[u + 1]; j++)
+                count = take_face(mesh, mesh->vertex_triangles[j], stamp, ws,
+                                  count);
+        }
+        if (count == ring_end || count == POINTS_MAX)
+            break;  /* the component is exhausted, or the cap is hit */
+        ring_begin = ring_end;
+        ring_end = count;
+        if (ring >= min_rings && count - 1 >= want)
+            break;
+    }
+    return count;
+}
+
+/* The height of the osculating surface above its tangent plane, less its
+ * quadric, at the scaled point (x, y), for the scaled second-order
+ * coefficients c[0..2] (z = c0 x^2 + c1 xy + c2 y^2). The osculating
+ * surface is the one whose shape operator S is the same everywhere (a
+ * sphere, a circular cylinder, a plane): its height is
+ * q / (1 + sqrt(1 - p)) with q = X.S X and p = |S X|^2, exactly, at any
+ * distance. Its quartic and higher terms are what a quadric or cubic fit
+ * cannot follow and so folds into its curvature: on a cylinder, the x^4
+ * of the arc shows up in the straight direction's y^2 as noise. */
+static double osculating_excess(const double *c, double x, double y,
+                                double *grad)
+{
+    double sx = 2 * c[0] * x + c[1] * y, sy = c[1] * x + 2 * c[2] * y;
+    double q = x * sx + y * sy, p = sx * sx + sy * sy;
+    int clamped = p > EXCESS_P_MAX;
+    if (clamped)
+        p = EXCESS_P_MAX;
+    double root = sqrt(1 - p), lift = 1 / (1 + root);
+    if (grad) {  /* by c, through q and p */
+        double by_q = lift - 0.5;
+        double by_p = clamped ? 0 : q * lift * lift / (2 * root);
+        grad[0] = by_q * 2 * x * x + by_p * 4 * x * sx;
+        grad[1] = by_q * 2 * x * y + by_p * 2 * (sx * y + sy * x);
+        grad[2] = by_q * 2 * y * y + by_p * 4 * y * sy;
+    }
+    return q * lift - q / 2;
+}
+
+/* Solves the 3 x 3 system a x = b (a row-major) by Cramer's rule. Returns
+ * 0 when a is singular to rounding. */
+static int solve3(const double *a, const double *b, double *x)
+{
+    double c0 = a[4] * a[8] - a[5] * a[7];
+    double c1 = a[5] * a[6] - a[3] * a[8];
+    double c2 = a[3] * a[7] - a[4] * a[6];
+    double det = a[0] * c0 + a[1] * c1 + a[2] * c2;
+    double scale = 0;
+    for (int i = 0; i < 9; i++)
+        scale = fmax(scale, fabs(a[i]));
+    if (!(fabs(det) > 1e-12 * scale * scale * scale))
+        return 0;
+    x[0] = (b[0] * c0 + a[1] * (a[5] * b[2] - b[1] * a[8]) +
+            a[2] * (b[1] * a[7] - a[4] * b[2])) / det;
+    x[1] = (a[0] * (b[1] * a[8] - a[5] * b[2]) + b[0] * c1 +
+            a[2] * (a[3] * b[2] - b[1] * a[6])) / det;
+    x[2] = (a[0] * (a[4] * b[2] - b[1] * a[7]) +
+            a[1] * (b[1] * a[6] - a[3] * b[2]) + b[0] * c2) / det;
+    return 1;
+}
+
+/* A neighbourhood ready to fit: its points' offsets from the centre,
+ * scaled by its radius, and their weights, which no frame changes. */
+struct hood {
+    size_t count;       /* points, centre first */
+    double radius;      /* the farthest point's distance (m) */
+    double *offset;     /* 3 x count, scaled by 1 / radius */
+    double *weight;     /* count */
+    double *local;      /* 3 x count: the last fit's x, y, z */
+};
+
+/* Prepares the count points (centre first) of ws->points into *h, in ws's
+ * buffers. Returns 0 when they span no distance at all. */
+static int hood_prepare(const struct mesh *mesh, size_t count,
+                        struct workspace *ws, struct hood *h)
+{
+    const double *c = mesh->position + 3 * (size_t)ws->points[0];
+    double radius2 = 0;
+
+    for (size_t i = 1; i < count; i++) {
+        const double *p = mesh->position + 3 * (size_t)ws->points[i];
+        double *d = ws->offset + 3 * i;
+        for (int r = 0; r < 3; r++)
+            d[r] = p[r] - c[r];
+        double r2 = vec3_dot(d, d);
+        if (r2 > radius2)
+            radius2 = r2;
+    }
+    if (!(radius2 > 0) || !isfinite(radius2))
+        return 0;
+    h->count = count;
+    h->radius = sqrt(radius2);
+    h->offset = ws->offset;
+    h->weight = ws->weight;
+    h->local = ws->local;
+    for (size_t i = 1; i < count; i++) {
+        double *d = ws->offset + 3 * i;
+        double r2 = vec3_dot(d, d);
+        for (int r = 0; r < 3; r++)
+            d[r] /= h->radius;
+        ws->weight[i] = exp(-WEIGHT_SHARPNESS * r2 / radius2);
+    }
+    return 1;
+}
+
+/* The monomials of the fit at the scaled point (x, y), in term order:
+ * x^2 xy y^2 | x y | x^3 x^2y xy^2 y^3. */
+static void monomials(double x, double y, double *m)
+{
+    m[0] = x * x;
+    m[1] = x * y;
+    m[2] = y * y;
+    m[3] = x;
+    m[4] = y;
+    m[5] = x * x * x;
+    m[6] = x * x * y;
+    m[7] = x * y * y;
+    m[8] = y * y * y;
+}
+
+/* The weighted normal equations of the first nterms monomials over h's
+ * points at their coordinates in h->local: ata's lower triangle (row
+ * stride TERMS_MAX) and atb. */
+static void normal_equations(const struct hood *h, int nterms, double *ata,
+                             double *atb)
+{
+    memset(ata, 0, TERMS_MAX * TERMS_MAX * sizeof(double));
+    memset(atb, 0, TERMS_MAX * sizeof(double));
+    for (size_t i = 1; i < h->count; i++) {
+        const double *l = h->local + 3 * i;
+        double w = h->weight[i], m[TERMS_MAX];
+        monomials(l[0], l[1], m);
+        for (int r = 0; r < nterms; r++) {
+            double wm = w * m[r];
+            atb[r] += wm * l[2];
+            for (int s = 0; s <= r; s++)
+                ata[r * TERMS_MAX + s] += wm * m[s];
+        }
+    }
+}
+
+/* A fit's terms, which monomials (indices into the term order) and how
+ * many, with the Cholesky factor of their normal equations. */
+struct model {
+    int n;
+    int term[TERMS_MAX];
+    double factor[TERMS_MAX * TERMS_MAX];
+};
+
+/* Restricts the normal equations ata (all monomials) to the model's terms
+ * and factors them. Returns 0 when they are singular to within
+ * FIT_PIVOT_TOL. */
+static int model_factor(struct model *model, const double *ata)
+{
+    double a[TERMS_MAX * TERMS_MAX];
+    for (int r = 0; r < model->n; r++)
+        for (int s = 0; s <= r; s++) {
+            int p = model->term[r], q = model->term[s];
+            a[r * TERMS_MAX + s] = p >= q ? ata[p * TERMS_MAX + q]
+                                          : ata[q * TERMS_MAX + p];
+        }
+    return linalg_cholesky_factor(model->n, TERMS_MAX, a, FIT_PIVOT_TOL,
+                                  model->factor);
+}
+
+/* The monomial coefficients coef (those not in the model 0) for the
+ * right-hand side b (all monomials) of the factored model. */
+static void model_solve(const struct model *model, const double *b,
+                        double *coef)
+{
+    double rhs[TERMS_MAX], x[TERMS_MAX];
+    for (int r = 0; r < model->n; r++)
+        rhs[r] = b[model->term[r]];
+    linalg_cholesky_apply(model->n, model->factor, rhs, x);
+    memset(coef, 0, TERMS_MAX * sizeof(double));
+    for (int r = 0; r < model->n; r++)
+        coef[model->term[r]] = x[r];
+}
+
+/* One pass of the osculating correction (see fit): the coefficients
+ * next = F(c) of the factored model for the heights of h's points less the
+ * excess of the curvature terms c, and when slope is not NULL F's
+ * derivative by c (TERMS_MAX x 3, row-major). */
+static void excess_pass(const struct hood *h, const struct model *model,
+                        const double *c, double *next, double *slope)
+{
+    double rhs[4][TERMS_MAX] = {{0}};
+    int rows = slope ? 4 : 1;
+    for (size_t i = 1; i < h->count; i++) {
+        const double *l = h->local + 3 * i;
+        double m[TERMS_MAX], grad[3];
+        double z = l[2] - osculating_excess(c, l[0], l[1],
+                                            slope ? grad : NULL);
+        double w = h->weight[i];
+        monomials(l[0], l[1], m);
+        for (int r = 0; r < model->n; r++) {
+            int t = model->term[r];
+            double wm = w * m[t];
+            rhs[0][t] += wm * z;
+            for (int j = 1; j < rows; j++)
+                rhs[j][t] -= wm * grad[j - 1];
+        }
+    }
+    model_solve(model, rhs[0], next);
+    for (int j = 1; j < rows; j++) {
+        double column[TERMS_MAX];
+        model_solve(model, rhs[j], column);
+        for (int r = 0; r < TERMS_MAX; r++)
+            slope[3 * r + j - 1] = column[r];
+    }
+}
+
+/* Fits w = f(x, y) to the neighbourhood h in frame f at its centre, with
+ * nterms_max terms at most (5 or 9), into *jet. The fit is of the
+ * points' heights less the osculating excess of the fit itself, repeated
+ * until it no longer changes (from guess's curvature, when given): so a
+ * sphere or cylinder is fitted exactly, at any mesh size, and any other
+ * surface loses the truncation error of its constant-curvature part.
+ *
+ * A thin neighbourhood (a strip one or two faces wide, whose points lie on
+ * two or three lines across) cannot tell a height's curvature across the
+ * strip from its slope there: for points on the lines y = 0 and y = 1,
+ * y^2 is y. Its fit is then ill-conditioned (the quadric's relative pivot
+ * under FIT_THIN_TOL) and the curvature across comes out of rounding and
+ * of the far points' aliasing. Such a neighbourhood is fitted in the
+ * frame of its principal axes (x' along the strip, y' across) by the
+ * terms of degree at most 1 in y': the height is taken as straight across,
+ * which is what the mesh itself is there (its faces span the strip with
+ * straight edges), so its curvature across is 0 and a strip of a
+ * developable surface stays developable.
+ *
+ * Returns 1 on success, 0 when the neighbourhood cannot determine even a
+ * quadric without gradient (too few points, collinear). */
+static int fit(const struct hood *h, const struct frame *f, int nterms_max,
+               const struct jet *guess, struct jet *jet)
+{
+    size_t count = h->count;
+    double radius = h->radius;
+    double *local = h->local;
+
+    /* Coordinates scaled by the radius, so every monomial is O(1). */
+    for (size_t i = 1; i < count; i++) {
+        const double *d = h->offset + 3 * i;
+        double *l = local + 3 * i;
+        l[0] = vec3_dot(d, f->t1);
+        l[1] = vec3_dot(d, f->t2);
+        l[2] = vec3_dot(d, f->n);
+    }
+    double ata[TERMS_MAX * TERMS_MAX], atb[TERMS_MAX];
+    normal_equations(h, nterms_max, ata, atb);
+
+    /* The leading 9, 5 and 3 terms are the fits tried in turn, unless the
+     * neighbourhood is thin. */
+    double coef[TERMS_MAX] = {0};
+    struct model model;
+    model.n = 0;
+    /* A thin fit's axes: x' = c x + s y, y' = -s x + c y, X' = Q X. */
+    double rot_c = 1, rot_s = 0;
+    int thin = 0;
+    if (nterms_max >= 5 && count > 5) {
+        double probe[5 * 5];
+        thin = !linalg_cholesky_factor(5, TERMS_MAX, ata, FIT_THIN_TOL, probe);
+    }
+    if (thin) {
+        /* Principal axes of the points' spread about their centroid
+         * (the centre included, weight 1). */
+        double sw = 1, sx = 0, sy = 0, sxx = 0, sxy = 0, syy = 0;
+        for (size_t i = 1; i < count; i++) {
+            const double *l = local + 3 * i;
+            double w = h->weight[i];
+            sw += w;
+            sx += w * l[0];
+            sy += w * l[1];
+            sxx += w * l[0] * l[0];
+            sxy += w * l[0] * l[1];
+            syy += w * l[1] * l[1];
+        }
+        double mx = sx / sw, my = sy / sw, value[2], theta;
+        linalg_sym2_eigen(sxx / sw - mx * mx, sxy / sw - mx * my,
+                          syy / sw - my * my, value, &theta);
+        rot_c = cos(theta);
+        rot_s = sin(theta);
+        for (size_t i = 1; i < count; i++) {
+            double *l = local + 3 * i, x = l[0], y = l[1];
+            l[0] = rot_c * x + rot_s * y;
+            l[1] = -rot_s * x + rot_c * y;
+        }
+        normal_equations(h, TERMS_MAX, ata, atb);
+        /* x'^2 x'y' x' y' | x'^3 x'^2y' */
+        static const int straight[6] = {0, 1, 3, 4, 5, 6};
+        model.n = nterms_max == 9 && count > 6 ? 6 : 4;
+        memcpy(model.term, straight, sizeof straight);
+        if (model_factor(&model, ata))
+            model_solve(&model, atb, coef);
+        else
+            model.n = thin = 0;  /* not even that: as any other */
+    }
+    if (!thin) {
+        static const int tries[3] = {9, 5, 3};
+        for (int i = 0; i < 3 && model.n == 0; i++) {
+            if (tries[i] > nterms_max || (size_t)tries[i] >= count)
+                continue;
+            model.n = tries[i];
+            for (int r = 0; r < model.n; r++)
+                model.term[r] = r;
+            if (model_factor(&model, ata))
+                model_solve(&model, atb, coef);
+            else
+                model.n = 0;
+        }
+    }
+    if (model.n == 0)
+        return 0;
+    if (guess) {  /* start the correction from a fit close by, turned */
+        double c = rot_c, s = rot_s;
+        double hxx = guess->fxx, hxy = guess->fxy, hyy = guess->fyy;
+        /* H' = Q H Q^T, Q = [[c, s], [-s, c]] */
+        double pxx = c * c * hxx + 2 * c * s * hxy + s * s * hyy;
+        double pxy = (c * c - s * s) * hxy + c * s * (hyy - hxx);
+        double pyy = s * s * hxx - 2 * c * s * hxy + c * c * hyy;
+        coef[0] = pxx * radius / 2;
+        coef[1] = pxy * radius;
+        coef[2] = thin ? 0 : pyy * radius / 2;
+    }
+
+    /* The osculating correction: refit the heights less the excess of the
+     * fit (same matrix, new right-hand side), for the fit that reproduces
+     * itself: c = F(c) over its three curvature terms c. Where the
+     * excess is small (p under NEWTON_P_MIN everywhere: a fine mesh),
+     * repeating c <- F(c) converges in a few passes. Where it is not, it
+     * converged slowly or not at all on an ill-conditioned fit (a coarse
+     * one-sided cubic, each refit swinging the curvature the other way),
+     * so there the passes take Newton steps, F's derivative from the
+     * excess's (three more right-hand sides), taken anew while they
+     * converge slowly; a step that leaves the miss |F(c) - c| larger is
+     * halved. The answer is F(c) for the c that came closest. */
+    double best[TERMS_MAX], best_miss = INFINITY, step = 1;
+    double c3[3] = {coef[0], coef[1], coef[2]}, base[3] = {0}, dir[3] = {0};
+    double slope[TERMS_MAX * 3];  /* dF/dc, all terms by the three */
+    double value[2], theta;
+    linalg_sym2_eigen(c3[0], c3[1] / 2, c3[2], value, &theta);
+    double big = fmax(fabs(value[0]), fabs(value[1]));
+    int newton = 4 * big * big > NEWTON_P_MIN;  /* p <= |2 c|^2 |X|^2 */
+    int need_slope = newton;
+    memcpy(best, coef, sizeof best);
+    for (int it = 0; it < EXCESS_ITERATIONS; it++) {
+        double next[TERMS_MAX];
+        excess_pass(h, &model, c3, next, need_slope ? slope : NULL);
+        need_slope = 0;
+        double miss = 0, size = 0, g[3];
+        for (int r = 0; r < 3; r++) {
+            g[r] = next[r] - c3[r];
+            miss = fmax(miss, fabs(g[r]));
+            size = fmax(size, fabs(next[r]));
+        }
+        if (!newton) {  /* c <- F(c) */
+            /* Done when this pass, or what the passes still to come
+             * would add (a geometric series: they shrink by the ratio of
+             * the last two), is below the tolerance. */
+            double ratio = miss / best_miss;
+            double rest = it > 0 && ratio < 0.5 ? 2 * ratio * miss : miss;
+            best_miss = miss;
+            memcpy(best, next, sizeof best);
+            memcpy(c3, next, sizeof c3);
+            if (!(rest > FIT_CONVERGED * (size + FIT_SCALE_MIN)))
+                break;
+            continue;
+        }
+        if (miss < best_miss) {  /* closer: take it, Newton step from it */
+            /* a derivative that no longer brings the miss down fast is
+             * taken anew at the next pass */
+            need_slope = !(miss < best_miss / 4);
+            best_miss = miss;
+            memcpy(best, next, sizeof best);
+            if (!(miss > FIT_CONVERGED * (size + FIT_SCALE_MIN)))
+                break;
+            double a[9];
+            for (int r = 0; r < 3; r++)
+                for (int j = 0; j < 3; j++)
+                    a[3 * r + j] = (r == j) - slope[3 * r + j];
+            memcpy(base, c3, sizeof base);
+            if (!solve3(a, g, dir))  /* (I - dF) dir = F(c) - c */
+                memcpy(dir, g, sizeof dir);  /* no Newton step: repeat */
+            step = 1;
+        } else {  /* farther: back along the last step */
+            step /= 2;
+        }
+        for (int r = 0; r < 3; r++)
+            c3[r] = base[r] + step * dir[r];
+    }
+    memcpy(coef, best, sizeof coef);
+
+    /* Back to metres (z = a x^2 / radius for the scaled a) and, for a thin
+     * fit, to the frame's axes: gradient Q^T g', Hessian Q^T H' Q. */
+    double gx = coef[3], gy = coef[4];
+    double pxx = 2 * coef[0] / radius, pxy = coef[1] / radius;
+    double pyy = 2 * coef[2] / radius, c = rot_c, s = rot_s;
+    jet->fx = c * gx - s * gy;
+    jet->fy = s * gx + c * gy;
+    jet->fxx = c * c * pxx - 2 * c * s * pxy + s * s * pyy;
+    jet->fxy = (c * c - s * s) * pxy + c * s * (pxx - pyy);
+    jet->fyy = s * s * pxx + 2 * c * s * pxy + c * c * pyy;
+    jet->radius = radius;
+    return isfinite(jet->fxx) && isfinite(jet->fxy) && isfinite(jet->fyy) &&
+           isfinite(jet->fx) && isfinite(jet->fy);
+}
+
+/* The largest |curvature| of the jet's Hessian (1/m). */
+static double jet_curvature_max(const struct jet *jet)
+{
+    double value[2], theta;
+    linalg_sym2_eigen(jet->fxx, jet->fxy, jet->fyy, value, &theta);
+    return fmax(fabs(value[0]), fabs(value[1]));
+}
+
+/* The unit normal of the graph of jet in frame f, in world coordinates. */
+static void graph_normal(const struct frame *f, const struct jet *jet,
+                         double *n)
+{
+    for (int r = 0; r < 3; r++)
+        n[r] = f->n[r] - jet->fx * f->t1[r] - jet->fy * f->t2[r];
+    vec3_normalize(n);  /* length >= 1: always succeeds for finite jet */
+}
+
+/* Principal curvatures and directions of the graph of jet at the origin of
+ * frame f: *k1 >= *k2 (1/m), unit directions d1, d2 and unit normal n
+ * (world coordinates, 3 each). */
+static void shape_operator(const struct frame *f, const struct jet *jet,
+                           double *k1, double *k2, double *d1, double *d2,
+                           double *n)
+{
+    double xu[3], xv[3], e1[3], e2[3];
+
+    graph_normal(f, jet, n);
+    /* Tangents of the graph X(x, y) = x t1 + y t2 + f(x, y) n. */
+    for (int r = 0; r < 3; r++) {
+        xu[r] = f->t1[r] + jet->fx * f->n[r];
+        xv[r] = f->t2[r] + jet->fy * f->n[r];
+    }
+    for (int r = 0; r < 3; r++)
+        e1[r] = xu[r];
+    vec3_normalize(e1);
+    vec3_cross(n, e1, e2);
+
+    /* A maps parameter vectors to coordinates in the orthonormal basis
+     * (e1, e2): A = [[a11, a12], [0, a22]]. The second fundamental form
+     * in that basis is A^-T II A^-1, with II = [[fxx, fxy], [fxy, fyy]] / W
+     * and W = sqrt(1 + fx^2 + fy^2). */
+    double a11 = vec3_dot(e1, xu), a12 = vec3_dot(e1, xv), a22 = vec3_dot(e2, xv);
+    double w = sqrt(1 + jet->fx * jet->fx + jet->fy * jet->fy);
+    double l = jet->fxx / w, m = jet->fxy / w, nn = jet->fyy / w;
+    /* B = inv^T II inv, inv = A^-1 = [[i11, i12], [0, i22]]. */
+    double i11 = 1 / a11, i22 = 1 / a22, i12 = -a12 / (a11 * a22);
+    double b11 = i11 * i11 * l;
+    double b12 = i11 * (l * i12 + m * i22);
+    double b22 = i12 * i12 * l + 2 * i12 * i22 * m + i22 * i22 * nn;
+
+    double value[2], theta;
+    linalg_sym2_eigen(b11, b12, b22, value, &theta);
+    double c = cos(theta), s = sin(theta);
+    *k1 = value[0];
+    *k2 = value[1];
+    for (int r = 0; r < 3; r++) {
+        d1[r] = c * e1[r] + s * e2[r];
+        d2[r] = -s * e1[r] + c * e2[r];
+    }
+}
+
+/* Writes vertex v's answer into out: curvatures, directions and normal. */
+static void store(struct curvature *out, uint32_t v, double k1, double k2,
+                  const double *d1, const double *d2, const double *n)
+{
+    out->k1[v] = k1;
+    out->k2[v] = k2;
+    memcpy(out->dir1 + 3 * (size_t)v, d1, 3 * sizeof(double));
+    memcpy(out->dir2 + 3 * (size_t)v, d2, 3 * sizeof(double));
+    memcpy(out->normal + 3 * (size_t)v, n, 3 * sizeof(double));
+}
+
+/* The zero answer for a vertex without a usable neighbourhood: k = 0, the
+ * unit normal n0 (+z if n0 is zero), and tangent directions around it. */
+static void store_flat(struct curvature *out, uint32_t v, const double *n0)
+{
+    struct frame f;
+    memcpy(f.n, n0, sizeof f.n);
+    if (!vec3_normalize(f.n)) {
+        f.n[0] = f.n[1] = 0;
+        f.n[2] = 1;
+    }
+    frame_complete(&f);
+    store(out, v, 0, 0, f.t1, f.t2, f.n);
+}
+
+/* Estimates vertex v (see the file comment) into out. */
+static void vertex_curvature(const struct mesh *mesh, uint32_t v,
+                             int flip_normals, struct workspace *ws,
+                             struct curvature *out)
+{
+    struct frame f;
+    struct jet jet;
+
+    if (!vertex_normal(mesh, v, f.n)) {
+        f.n[2] = flip_normals ? -1 : 1;  /* no normal: say +z (or -z) */
+        store_flat(out, v, f.n);
+        return;
+    }
+    if (flip_normals)
+        for (int r = 0; r < 3; r++)
+            f.n[r] = -f.n[r];
+
+    /* A neighbourhood that reaches the boundary is one-sided: the odd terms
+     * of the surface no longer cancel, so fit them too (a cubic jet). Near
+     * the boundary the 2-ring is enough for that, if it is large; on it
+     * the fit needs 3 rings to stay well conditioned. */
+    size_t count = gather(mesh, v, RINGS_INTERIOR, POINTS_WANTED, ws);
+    int one_sided = 0;
+    for (size_t i = 0; mesh->on_boundary && i < count && !one_sided; i++)
+        one_sided = mesh->on_boundary[ws->points[i]];
+    int on_boundary = one_sided && mesh->on_boundary[v];
+    size_t cubic_points = on_boundary ? POINTS_CUBIC : POINTS_CUBIC_NEAR;
+    if (one_sided && (on_boundary || count - 1 < cubic_points))
+        count = gather(mesh, v, RINGS_BOUNDARY, cubic_points, ws);
+    int nterms = 5;
+    struct hood hood;
+
+    frame_complete(&f);
+    if (!hood_prepare(mesh, count, ws, &hood) ||
+        !fit(&hood, &f, nterms, NULL, &jet)) {
+        store_flat(out, v, f.n);
+        return;
+    }
+    /* The cubic only where the quadric says the neighbourhood spans a
+     * small arc (CUBIC_SPAN_MAX). A wider one-sided neighbourhood (a coarse
+     * mesh) keeps the quadric and shrinks back to the 2-ring, the smallest
+     * arc that still holds the points a quadric needs, and is not grown
+     * for more: on a strip one face wide the 2-ring has 9 points, and
+     * growing it to POINTS_WANTED took it along the strip over 60 degrees
+     * and more of arc, beyond the osculating correction's range. */
+    double span = jet.radius * jet_curvature_max(&jet);
+    if (one_sided && !(span < CUBIC_SPAN_MAX)) {
+        struct jet small;
+        size_t fewer = gather(mesh, v, RINGS_INTERIOR, POINTS_QUADRIC, ws);
+        if (hood_prepare(mesh, fewer, ws, &hood) &&
+            fit(&hood, &f, 5, NULL, &small)) {
+            jet = small;
+        } else {  /* back to the wider one, which did fit */
+            count = gather(mesh, v, RINGS_BOUNDARY, cubic_points, ws);
+            hood_prepare(mesh, count, ws, &hood);
+        }
+    } else if (one_sided && count - 1 >= cubic_points) {
+        struct jet cubic;
+        if (fit(&hood, &f, 9, &jet, &cubic)) {
+            nterms = 9;
+            jet = cubic;
+        }
+    }
+    /* Refit about the normal of the fitted graph until it stays put: the
+     * result then depends on the points alone, not on the initial normal
+     * (which depends on how the faces were triangulated). A refit that
+     * tilts further from its frame than the last is not taken: on a wide
+     * one-sided neighbourhood the refits can run away from the surface
+     * (a coarse cap's corner turned its normal by 50 degrees in 5). */
+    for (int it = 0; it < NORMAL_ITERATIONS; it++) {
+        double tilt = hypot(jet.fx, jet.fy);
+        if (!(tilt > NORMAL_CONVERGED))
+            break;
+        struct frame g;
+        struct jet refined;
+        graph_normal(&f, &jet, g.n);
+        frame_complete(&g);
+        if (!fit(&hood, &g, nterms, &jet, &refined) ||
+            !(hypot(refined.fx, refined.fy) < tilt))
+            break;
+        f = g;
+        jet = refined;
+    }
+
+    double k1, k2, d1[3], d2[3], n[3];
+    shape_operator(&f, &jet, &k1, &k2, d1, d2, n);
+    if (!isfinite(k1) || !isfinite(k2) || !isfinite(vec3_dot(d1, d1)) ||
+        !isfinite(vec3_dot(d2, d2)) || !isfinite(vec3_dot(n, n))) {
+        store_flat(out, v, f.n);
+        return;
+    }
+    store(out, v, k1, k2, d1, d2, n);
+}
+
+/* One thread's share of curvature_at_vertices: the vertices of every
+ * chunk it claims, with a workspace of its own, so that each vertex's
+ * result is the same whichever thread computes it. */
+struct vertex_job {
+    const struct mesh *mesh;
+    int flip_normals;
+    struct curvature *out;
+    atomic_size_t *next;         /* the next chunk's first vertex */
+    struct workspace ws;
+};
+
+enum { VERTEX_CHUNK = 512, VERTEX_THREADS_MAX = 8 };
+
+static void vertex_job_run(void *argument)
+{
+    struct vertex_job *job = argument;
+    size_t nv = job->mesh->nvertices;
+    for (;;) {
+        size_t first = atomic_fetch_add(job->next, VERTEX_CHUNK);
+        if (first >= nv)
+            break;
+        size_t last = nv - first < VERTEX_CHUNK ? nv : first + VERTEX_CHUNK;
+        for (size_t v = first; v < last; v++)
+            vertex_curvature(job->mesh, (uint32_t)v, job->flip_normals,
+                             &job->ws, job->out);
+    }
+}
+
+int curvature_at_vertices(const struct mesh *mesh, int flip_normals,
+                          struct curvature *out, struct facet_error *err)
+{
+    return curvature_at_vertices_jobs(mesh, flip_normals,
+                                      parallel_cpus(VERTEX_THREADS_MAX), out,
+                                      err);
+}
+
+int curvature_at_vertices_jobs(const struct mesh *mesh, int flip_normals,
+                               int jobs, struct curvature *out,
+                               struct facet_error *err)
+{
+    size_t nv = mesh->nvertices;
+
+    memset(out, 0, sizeof *out);
+    facet_error_clear(err);
+    if (nv >= UINT32_MAX)
+        return facet_error_set(err, FACET_EINPUT,
+                               "curvature: %zu vertices is too many", nv);
+    out->nvertices = nv;
+    size_t n1 = nv ? nv : 1;
+    out->k1 = malloc(n1 * sizeof(double));
+    out->k2 = malloc(n1 * sizeof(double));
+    out->dir1 = malloc(3 * n1 * sizeof(double));
+    out->dir2 = malloc(3 * n1 * sizeof(double));
+    out->normal = malloc(3 * n1 * sizeof(double));
+    if (!out->k1 || !out->k2 || !out->dir1 || !out->dir2 || !out->normal)
+        return facet_error_set(err, FACET_EWORK,
+                               "curvature: out of memory for %zu vertices",
+                               nv);
+
+    /* Every vertex is estimated on its own: the jobs share them in
+     * chunks, one workspace each. */
+    int njobs = jobs < 1 ? 1 : jobs > VERTEX_THREADS_MAX ? VERTEX_THREADS_MAX
+                                                         : jobs;
+    size_t chunks = (nv + VERTEX_CHUNK - 1) / VERTEX_CHUNK;
+    if ((size_t)njobs > chunks)
+        njobs = chunks > 0 ? (int)chunks : 1;
+    atomic_size_t next;
+    atomic_init(&next, 0);
+    struct vertex_job job[VERTEX_THREADS_MAX];
+    int rc = FACET_OK, made = 0;
+    for (; made < njobs; made++) {
+        job[made] = (struct vertex_job){mesh, flip_normals, out, &next,
+                                        {nv, NULL, 0, NULL, NULL, NULL, NULL}};
+        job[made].ws.mark = calloc(n1, sizeof(uint32_t));
+        job[made].ws.points = malloc(POINTS_MAX * sizeof(uint32_t));
+        job[made].ws.offset = malloc(3 * POINTS_MAX * sizeof(double));
+        job[made].ws.weight = malloc(POINTS_MAX * sizeof(double));
+        job[made].ws.local = malloc(3 * POINTS_MAX * sizeof(double));
+        if (!job[made].ws.mark || !job[made].ws.points ||
+            !job[made].ws.offset || !job[made].ws.weight ||
+            !job[made].ws.local) {
+            free(job[made].ws.mark);
+            free(job[made].ws.points);
+            free(job[made].ws.offset);
+            free(job[made].ws.weight);
+            free(job[made].ws.local);
+            rc = facet_error_set(err, FACET_EWORK,
+                                 "curvature: out of memory for %zu "
+                                 "vertices", nv);
+            break;
+        }
+    }
+    if (rc == FACET_OK) {
+        /* Job 0 runs here; one whose thread cannot start runs here after
+         * it, and finds every chunk claimed. */
+        parallel_run(job, sizeof job[0], njobs, vertex_job_run);
+    }
+    for (int k = 0; k < made; k++) {
+        free(job[k].ws.mark);
+        free(job[k].ws.points);
+        free(job[k].ws.offset);
+        free(job[k].ws.weight);
+        free(job[k].ws.local);
+    }
+    return rc;
+}
+
+void curvature_free(struct curvature *curvature)
+{
+    if (!curvature)
+        return;
+    free(curvature->k1);
+    free(curvature->k2);
+    free(curvature->dir1);
+    free(curvature->dir2);
+    free(curvature->normal);
+    memset(curvature, 0, sizeof *curvature);
+}

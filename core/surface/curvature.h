@@ -1,0 +1,54 @@
+/*
+ * curvature.h: principal curvatures at every vertex of a surface.
+ *
+ * Computed once per surface, independent of any panel grid. The estimator
+ * fits a quadric (a degree-2 jet; degree 3 where the neighbourhood reaches
+ * the boundary and spans a small arc) to each vertex's neighbourhood in a
+ * local frame, over a neighbourhood scaled to the local edge length (its 2-
+ * or 3-ring), with the higher terms of the osculating sphere or cylinder
+ * taken out (straight across a strip one face wide, which cannot tell its
+ * curvature across from its slope), and reads the shape operator off the
+ * fit; see curvature.c for the details and the accuracy it reaches.
+ *
+ * Sign convention (DESIGN.md): curvature is negative where the surface bends
+ * away from its normal, so a dome seen from outside, with the normal
+ * pointing out, has k1, k2 < 0 ("convex"). The normal is the vertex normal
+ * from vn when the file has normals, otherwise from the face winding;
+ * flip_normals reverses it (and so every sign).
+ */
+#ifndef FACET_CURVATURE_H
+#define FACET_CURVATURE_H
+
+#include <stddef.h>
+
+#include "core/base/error.h"
+#include "core/surface/mesh.h"
+
+struct curvature {
+    size_t nvertices;
+    double *k1;        /* #V maximum principal curvature (1/m) */
+    double *k2;        /* #V minimum principal curvature (1/m), k2 <= k1 */
+    double *dir1;      /* #V x 3 unit principal direction of k1 */
+    double *dir2;      /* #V x 3 unit principal direction of k2 */
+    double *normal;    /* #V x 3 unit vertex normal that fixes the sign */
+};
+
+/* Estimates curvature at every vertex of mesh into *out (caller-owned,
+ * released with curvature_free, also after a failure). Returns FACET_OK,
+ * FACET_EWORK when out of memory (FACET_EINPUT for 2^32 - 1 vertices or
+ * more). Isolated or degenerate vertices (no neighbourhood a quadric can be
+ * fitted to) get k1 = k2 = 0; one with no normal at all gets +z (-z when
+ * flipped). Every value is finite. */
+int curvature_at_vertices(const struct mesh *mesh, int flip_normals,
+                          struct curvature *out, struct facet_error *err);
+
+/* curvature_at_vertices on jobs threads (1 to 8; clamped), which is what
+ * that does with the online CPUs: each vertex is estimated on its own, so
+ * the result is the same, bit for bit, whatever jobs is. */
+int curvature_at_vertices_jobs(const struct mesh *mesh, int flip_normals,
+                               int jobs, struct curvature *out,
+                               struct facet_error *err);
+
+void curvature_free(struct curvature *curvature);
+
+#endif

@@ -1,0 +1,174 @@
+/*
+ * surface.c: loading a surface and collecting its warnings. See surface.h.
+ */
+#include "core/surface/surface.h"
+
+#include <math.h>
+
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "core/surface/coarse_mesh.h"
+
+static void warn(struct surface *surface, const char *fmt, ...)
+    __attribute__((format(printf, 2, 3)));
+
+static void warn(struct surface *surface, const char *fmt, ...)
+{
+    if (surface->nwarnings >= SURFACE_MAX_WARNINGS)
+        return;
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(surface->warnings[surface->nwarnings++],
+              sizeof surface->warnings[0], fmt, ap);
+    va_end(ap);
+}
+
+/* Refuses a surface whose coordinates are so far from the origin, for the
+ * size of its facets, that doubles cannot hold its shape: a double keeps
+ * 16 digits, so at 7e14 m a point is known to 0.1 m and a 1 m panel's
+ * area to a few percent. Facet's sums promise 1e-9 of a panel's scale;
+ * past a ratio of 1e9 between the farthest coordinate and the typical
+ * facet (UTM northings of 5e6 m with 5 mm facets are well within), the
+ * rounding of positions alone comes near it. */
+static int check_precision(const struct surface *s, struct facet_error *err)
+{
+    const struct mesh *m = &s->mesh;
+    if (m->ntriangles == 0)
+        return FACET_OK;
+    double far = 0;
+    for (int k = 0; k < 3; k++)
+        far = fmax(far, fmax(fabs(m->bbox_min[k]), fabs(m->bbox_max[k])));
+    double facet = mesh_facet_size(m);
+    if (!(facet > 0) || far <= 1e9 * facet)
+        return FACET_OK;
+    return facet_error_set(err, FACET_EINPUT,
+        "%s: coordinates reach %.3g m, %.3g times the facets' size (%.3g "
+        "m): at that distance from the origin doubles keep the points to "
+        "%.2g m, too coarse for panels; move the surface near the origin "
+        "(subtract the site's offset) and export again", s->path, far,
+        far / facet, facet, far * 0x1p-52);
+}
+
+int surface_open(const char *path, const struct mesh_options *options,
+                 struct surface *out, struct facet_error *err)
+{
+    memset(out, 0, sizeof *out);
+    out->units = options->units;
+    out->selected = options->object != NULL || options->group != NULL;
+    out->path = strdup(path);
+    if (out->path == NULL)
+        return facet_error_set(err, FACET_EWORK, "out of memory");
+    int rc = obj_load(path, &out->obj, err);
+    if (rc != FACET_OK)
+        return rc;
+    rc = mesh_build(&out->obj, options, &out->mesh, err);
+    if (rc != FACET_OK) {
+        /* mesh errors do not know the file name; add it. */
+        char message[sizeof err->message];
+        snprintf(message, sizeof message, "%s", err->message);
+        return facet_error_set(err, rc, "%s: %s", path, message);
+    }
+
+    if ((rc = check_precision(out, err)) != FACET_OK)
+        return rc;
+    char text[256];
+    if (mesh_units_warning(&out->mesh, options->units, text, sizeof text))
+        warn(out, "%s", text);
+    if (!out->selected && out->mesh.ncomponents > 1) {
+        char names[200];
+        if (out->obj.nobjects > 2) {
+            obj_names_list(out->obj.objects, out->obj.nobjects, names,
+                       sizeof names);
+            warn(out, "the file holds %zu separate surfaces; objects: %s "
+                 "(select one with --object NAME)",
+                 out->mesh.ncomponents, names);
+        } else if (out->obj.ngroups > 2) {
+            obj_names_list(out->obj.groups, out->obj.ngroups, names,
+                       sizeof names);
+            warn(out, "the file holds %zu separate surfaces; groups: %s "
+                 "(select one with --group NAME)",
+                 out->mesh.ncomponents, names);
+        } else {
+            warn(out, "the file holds %zu separate surfaces in one object "
+                 "(export the surface to panelize on its own)",
+                 out->mesh.ncomponents);
+        }
+    }
+    if (out->mesh.nonmanifold_edges > 0)
+        warn(out, "%zu edges are shared by more than two triangles "
+             "(non-manifold)", out->mesh.nonmanifold_edges);
+    if (out->mesh.ndegenerate > 0)
+        warn(out, "%zu triangles dropped: their corners weld into fewer "
+             "than three vertices", out->mesh.ndegenerate);
+    return FACET_OK;
+}
+
+int surface_require_single(const struct surface *surface,
+                           struct facet_error *err)
+{
+    if (surface->mesh.ncomponents <= 1 || surface->selected)
+        return FACET_OK;
+    char names[200];
+    if (surface->obj.nobjects > 2) {
+        obj_names_list(surface->obj.objects, surface->obj.nobjects, names,
+                   sizeof names);
+        return facet_error_set(err, FACET_EINPUT,
+            "%s holds %zu separate surfaces; select one with --object NAME "
+            "(objects: %s)", surface->path, surface->mesh.ncomponents,
+            names);
+    }
+    if (surface->obj.ngroups > 2) {
+        obj_names_list(surface->obj.groups, surface->obj.ngroups, names,
+                   sizeof names);
+        return facet_error_set(err, FACET_EINPUT,
+            "%s holds %zu separate surfaces; select one with --group NAME "
+            "(groups: %s)", surface->path, surface->mesh.ncomponents, names);
+    }
+    return facet_error_set(err, FACET_EINPUT,
+        "%s holds %zu separate surfaces in one object; export the surface "
+        "to panelize on its own", surface->path, surface->mesh.ncomponents);
+}
+
+int surface_prepare(struct surface *surface, int flip_normals,
+                    enum param_method uv, struct facet_error *err)
+{
+    int rc = surface_require_single(surface, err);
+    if (rc != FACET_OK)
+        return rc;
+    rc = param_choose(&surface->mesh, uv, surface->path, &surface->param,
+                      err);
+    if (rc != FACET_OK)
+        return rc;
+    if (surface->param.report.degenerate > 0)
+        warn(surface, "%zu triangles have no extent in UV and add no area "
+             "to any panel", surface->param.report.degenerate);
+    rc = uv_index_build(surface->param.uv, surface->mesh.ntriangles,
+                        &surface->uv, err);
+    if (rc != FACET_OK)
+        return rc;
+    rc = curvature_at_vertices(&surface->mesh, flip_normals,
+                               &surface->curvature, err);
+    if (rc != FACET_OK)
+        return rc;
+    rc = panel_prep_build(&surface->mesh, &surface->uv, &surface->curvature,
+                          &surface->panels, err);
+    if (rc != FACET_OK)
+        return rc;
+    surface->prepared = 1;
+    return FACET_OK;
+}
+
+void surface_close(struct surface *surface)
+{
+    panel_prep_free(&surface->panels);
+    uv_index_free(&surface->uv);
+    param_free(&surface->param);
+    curvature_free(&surface->curvature);
+    free(surface->path);
+    obj_free(&surface->obj);
+    mesh_free(&surface->mesh);
+    memset(surface, 0, sizeof *surface);
+}

@@ -1,0 +1,64 @@
+/*
+ * surface.h: a designer's surface, loaded and checked, ready to panelize.
+ *
+ * Wraps the two load steps every command repeats (read the OBJ, build the
+ * mesh in metres) and collects the warnings a facade engineer should see
+ * before trusting any number: units that look wrong, several surfaces in one
+ * file with none selected, edges shared by more than two triangles,
+ * triangles dropped because their corners were welded together.
+ */
+#ifndef FACET_SURFACE_H
+#define FACET_SURFACE_H
+
+#include "core/surface/curvature.h"
+#include "core/surface/mesh.h"
+#include "core/obj/obj.h"
+#include "core/panel/panel.h"
+#include "core/surface/param.h"
+#include "core/surface/uv_index.h"
+
+#define SURFACE_MAX_WARNINGS 8
+
+struct surface {
+    char *path;                 /* owned copy of the file's path */
+    enum mesh_units units;
+    struct obj_file obj;        /* the file as read (names, counts) */
+    struct mesh mesh;           /* the selected part, in metres */
+    int selected;               /* --object or --group was given */
+    int nwarnings;
+    char warnings[SURFACE_MAX_WARNINGS][320];
+
+    /* What does not depend on the grid, set by surface_prepare and shared
+     * by every option evaluated on the surface: */
+    int prepared;
+    struct parameterization param;  /* the UV the panels follow */
+    struct uv_index uv;             /* lookup over param.uv */
+    struct curvature curvature;     /* vertex curvature */
+    struct panel_prep panels;       /* per-triangle sums every grid adds */
+};
+
+/* Loads path with options into *out. Returns FACET_OK, or the loader's or
+ * mesh builder's error. The caller releases *out with surface_close, also
+ * after a failure. */
+int surface_open(const char *path, const struct mesh_options *options,
+                 struct surface *out, struct facet_error *err);
+
+/* Fails with FACET_EINPUT when the surface is several disconnected pieces
+ * and none was selected, listing the objects or groups to choose from, so
+ * that a panelization never silently mixes two surfaces. */
+int surface_require_single(const struct surface *surface,
+                           struct facet_error *err);
+
+/* Computes what every panelization of the surface shares: the UV
+ * parameterization (param.h: uv, or PARAM_AUTO for the first that
+ * applies), its lookup, the vertex curvature, with the
+ * normals flipped when flip_normals is set, and the sums panels_build_fast
+ * starts from (panel_prep_build). Refuses a surface of several
+ * unselected pieces (surface_require_single). Returns FACET_OK or the first
+ * error; surface_close releases what it made. */
+int surface_prepare(struct surface *surface, int flip_normals,
+                    enum param_method uv, struct facet_error *err);
+
+void surface_close(struct surface *surface);
+
+#endif

@@ -1,0 +1,74 @@
+/*
+ * uv_index.h: finding triangles by their position in the UV plane.
+ *
+ * A bucket grid over the UV bounding box: each cell lists the triangles
+ * whose UV bounding box touches it. With about one triangle per cell, a
+ * point lookup costs O(1) on average, and so does finding the triangles
+ * that may overlap a given one, which is how uv_check finds folds.
+ *
+ * The index borrows the caller's per-corner UV array; it must outlive the
+ * index and not change while the index is in use.
+ */
+#ifndef FACET_UV_INDEX_H
+#define FACET_UV_INDEX_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "core/base/error.h"
+
+struct uv_index {
+    const double *uv;          /* #T x 3 x 2 per-corner (u, v), borrowed */
+    size_t ntriangles;
+    double umin, vmin;         /* UV bounding box */
+    double umax, vmax;
+    int ncells_u, ncells_v;    /* bucket grid size */
+    double cell_u, cell_v;     /* bucket size in UV */
+    uint32_t *cell_start;      /* ncells_u * ncells_v + 1 */
+    uint32_t *cell_triangles;  /* triangles of cell c: [cell_start[c],
+                                  cell_start[c+1]) */
+};
+
+/* Builds the index over ntriangles triangles with per-corner UV uv. Returns
+ * FACET_OK, FACET_EINPUT when a UV value is not finite, FACET_EWORK when
+ * out of memory. Release with uv_index_free, also after a failure. */
+int uv_index_build(const double *uv, size_t ntriangles, struct uv_index *out,
+                   struct facet_error *err);
+
+/* The triangle whose UV triangle contains (u, v), with the barycentric
+ * coordinates of the point in it, or UINT32_MAX when no triangle does.
+ * Points on a shared edge go to either triangle. tolerance widens each
+ * triangle by that much in barycentric terms (0 for exact). */
+uint32_t uv_index_locate(const struct uv_index *index, double u, double v,
+                         double tolerance, double barycentric[3]);
+
+/* Calls visit(triangle, context) once for every triangle listed in a cell
+ * that the box [u0,u1] x [v0,v1] touches (a triangle may be listed in
+ * several such cells and is then visited once per cell; callers that care
+ * deduplicate). Stops early when visit returns non-zero, and returns that
+ * value; returns 0 otherwise. */
+int uv_index_visit_box(const struct uv_index *index, double u0, double v0,
+                       double u1, double v1,
+                       int (*visit)(uint32_t triangle, void *context),
+                       void *context);
+
+void uv_index_free(struct uv_index *index);
+
+/* What uv_check found in a UV map. */
+struct uv_report {
+    size_t triangles;
+    size_t degenerate;   /* UV area zero (to rounding) */
+    size_t flipped;      /* UV winding opposite to the majority */
+    size_t overlapping;  /* pairs of triangles whose UV interiors overlap */
+    double uv_area;      /* sum of |UV triangle areas| */
+    double umin, vmin, umax, vmax;
+};
+
+/* Checks a per-corner UV map for degenerate, flipped and overlapping
+ * triangles. A valid map for panelization has none of them. Returns
+ * FACET_OK (whatever it finds: the findings are in *report), FACET_EINPUT
+ * for a non-finite UV value, FACET_EWORK when out of memory. */
+int uv_check(const double *uv, size_t ntriangles, struct uv_report *report,
+             struct facet_error *err);
+
+#endif

@@ -1,0 +1,68 @@
+/*
+ * store_internal.h: what the store's own files share (internal to store/): the
+ * open database and the helpers that turn SQLite's result codes into
+ * Facet's one-line errors. Nothing outside store/ includes this header.
+ */
+#ifndef FACET_STORE_INTERNAL_H
+#define FACET_STORE_INTERNAL_H
+
+#include <sqlite3.h>
+
+#include "store.h"
+
+/* The schema this Facet writes (PRAGMA user_version) and the
+ * application_id that marks a file as Facet's: "FCET". */
+#define STORE_SCHEMA_VERSION 4
+#define STORE_APPLICATION_ID 0x46434554
+
+struct store {
+    sqlite3 *db;
+    char *path;                 /* owned copy, for messages */
+    sqlite3_stmt *option_insert;/* prepared once, reused by every batch */
+    int read_only;              /* opened by store_open_read */
+};
+
+/* Whether the process that wrote a run is gone (same host, no such
+ * pid): a run left "running" by it reads as interrupted. */
+int store_run_writer_gone(int64_t pid, const char *host);
+
+/* The SQL that reads the crowding column as an option_row holds it:
+ * NULL at a front's ends, where it is infinite, reads as +infinity
+ * (SQLite's 1e999) in a ranked option and as 0 in one not ranked yet.
+ * Sorting, filtering and paging all compare crowding through it. */
+extern const char store_crowding_sql[];
+
+/* The SQL that reads the rank column as an option_row holds it: NULL
+ * until the run is ranked, read as 0. */
+extern const char store_rank_sql[];
+
+/* Fills err from the connection's last error: "FILE: what (while DOING)".
+ * A corrupt or non-database file is FACET_EINPUT (the user can act on it),
+ * anything else FACET_EWORK. Returns the code. */
+int store_fail(struct store *store, const char *doing,
+               struct facet_error *err);
+
+/* Runs sql (no parameters, no rows wanted). */
+int store_exec(struct store *store, const char *sql, const char *doing,
+               struct facet_error *err);
+
+/* Prepares sql; on failure fills err. */
+int store_prepare(struct store *store, const char *sql, sqlite3_stmt **out,
+                  const char *doing, struct facet_error *err);
+
+/* Binds value to parameter col, or NULL when it is not finite (SQL has
+ * no NaN or infinity). */
+void store_bind_or_null(sqlite3_stmt *stmt, int col, double value);
+
+/* Column col of the current row, NaN when it is NULL. */
+double store_column_or_nan(sqlite3_stmt *stmt, int col);
+
+/* Brings a database at schema version `from` (0 = empty) up to `to`,
+ * one migration at a time, each in its own transaction. */
+int store_schema_migrate(struct store *store, int from, int to,
+                         struct facet_error *err);
+
+/* The current UTC time as ISO 8601 ("2026-11-25T01:30:00Z"). */
+void store_now(char out[32]);
+
+#endif

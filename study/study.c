@@ -1,0 +1,859 @@
+/*
+ * study.c: an optimisation run written through the store. See study.h.
+ */
+#include "study.h"
+
+#include <errno.h>
+#include <sys/statvfs.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+#include <unistd.h>
+
+#include "core/surface/coarse_mesh.h"
+#include "core/search/front.h"
+#include "core/base/parallel.h"
+#include "core/base/sha256.h"
+#include "core/base/text.h"
+
+/* What the optimiser's hooks need to reach the store. */
+struct study_state {
+    struct store *store;
+    int64_t run;
+    const struct study_hooks *hooks;
+    struct option_row *rows;     /* conversion buffer for a batch */
+    size_t capacity;
+};
+
+/* Monotonic seconds, for the run's elapsed time. */
+static double clock_seconds(void)
+{
+    struct timespec t;
+    clock_gettime(CLOCK_MONOTONIC, &t);
+    return (double)t.tv_sec + (double)t.tv_nsec * 1e-9;
+}
+
+static void stage(const struct study_hooks *hooks, const char *what)
+{
+    if (hooks != NULL && hooks->stage != NULL)
+        hooks->stage(hooks->context, what);
+}
+
+static void option_row_of(const struct evaluated_option *e,
+                          struct option_row *row)
+{
+    memset(row, 0, sizeof *row);
+    row->number = e->number;
+    row->generation = e->generation;
+    row->nu = e->point.nu;
+    row->nv = e->point.nv;
+    row->threshold_mm = e->point.threshold_mm;
+    row->totals = e->totals;
+}
+
+static void evaluated_of(const struct option_row *row,
+                         struct evaluated_option *e)
+{
+    memset(e, 0, sizeof *e);
+    e->number = row->number;
+    e->generation = row->generation;
+    e->point.nu = row->nu;
+    e->point.nv = row->nv;
+    e->point.threshold_mm = row->threshold_mm;
+    e->totals = row->totals;
+}
+
+static int store_batch(void *context, const struct evaluated_option *options,
+                       size_t n, struct facet_error *err)
+{
+    struct study_state *state = context;
+    if (n > state->capacity) {
+        struct option_row *grown = realloc(state->rows, n * sizeof *grown);
+        if (grown == NULL)
+            return facet_error_set(err, FACET_EWORK, "out of memory");
+        state->rows = grown;
+        state->capacity = n;
+    }
+    for (size_t k = 0; k < n; k++)
+        option_row_of(&options[k], &state->rows[k]);
+    return store_options_put(state->store, state->run, state->rows, n, err);
+}
+
+static void report_progress(void *context, int64_t done, int64_t total)
+{
+    struct study_state *state = context;
+    if (state->hooks != NULL && state->hooks->progress != NULL)
+        state->hooks->progress(state->hooks->context, done, total);
+}
+
+static int stop_requested(void *context)
+{
+    struct study_state *state = context;
+    return state->hooks != NULL && state->hooks->should_stop != NULL &&
+           state->hooks->should_stop(state->hooks->context);
+}
+
+int study_settings(const struct run_info *run,
+                   struct optimize_settings *s, struct mesh_options *mesh,
+                   int *flip_normals, struct facet_error *err)
+{
+    memset(s, 0, sizeof *s);
+    int rc = optimize_method_parse(run->method, &s->method, err);
+    if (rc == FACET_OK)
+        rc = objectives_parse(run->objectives, s->objectives,
+                              &s->nobjectives, err);
+    if (rc == FACET_OK)
+        rc = mesh_units_parse(run->units, &mesh->units, err);
+    if (rc != FACET_OK)
+        return rc;
+    s->space = (struct design_space){run->u_min, run->u_max, run->v_min,
+                                     run->v_max, run->threshold_min_mm,
+                                     run->threshold_max_mm,
+                                     run->threshold_step_mm};
+    classify_defaults(&s->base.classify);
+    s->base.mode = strcmp(run->per_panel, "mean") == 0 ? PANEL_MEAN
+                                                       : PANEL_EXTREMES;
+    s->base.classify.threshold = run->threshold_min_mm / 1000;
+    s->base.classify.curvature_tol = run->curvature_tol;
+    memcpy(s->base.classify.price, run->price, sizeof run->price);
+    s->base.classify.sp_as_fp = run->sp_as_fp;
+    s->base.classify.max_panel_area = run->max_panel_area;
+    s->seed = run->seed;
+    s->evaluations = run->evaluations;
+    s->population = run->population;
+    s->generations = run->generations;
+    s->jobs = run->jobs > 0 ? run->jobs : 1;
+    mesh->object = run->object[0] ? run->object : NULL;
+    mesh->group = run->group[0] ? run->group : NULL;
+    *flip_normals = run->flip_normals;
+    return design_space_check(&s->space, err);
+}
+
+/* Reading a surface: its SHA-256 and the surface itself at once, the
+ * hash on a thread of its own (it is a quarter of reading a
+ * 100,000-triangle OBJ). */
+struct read_job {
+    const char *path;
+    const struct mesh_options *mesh;  /* NULL: the hash's job */
+    char *digest;                     /* 65 bytes: the hash in hex */
+    struct surface *surface;
+    int rc;
+    struct facet_error err;
+};
+
+static void read_run(void *argument)
+{
+    struct read_job *job = argument;
+    if (job->mesh == NULL)
+        job->rc = sha256_file(job->path, job->digest, &job->err);
+    else
+        job->rc = surface_open(job->path, job->mesh, job->surface,
+                               &job->err);
+}
+
+/* The SHA-256 of path into digest and the surface it holds into *surface
+ * (the caller's to release with surface_close, also after a failure).
+ * The hash's error comes first: it names the file as it was read. */
+static int read_surface(const char *path, const struct mesh_options *mesh,
+                        char digest[65], struct surface *surface,
+                        struct facet_error *err)
+{
+    struct read_job job[2] = {
+        {path, NULL, digest, NULL, FACET_OK, {0, ""}},
+        {path, mesh, NULL, surface, FACET_OK, {0, ""}},
+    };
+    parallel_run(job, sizeof *job, 2, read_run);
+    for (int k = 0; k < 2; k++)
+        if (job[k].rc != FACET_OK) {
+            *err = job[k].err;
+            return job[k].rc;
+        }
+    return FACET_OK;
+}
+
+/* The places a run's surface may be, first first: as stored (absolute
+ * since runs record it so; relative to the working folder in older files),
+ * then a relative path against the database's folder, then the file's name
+ * in the database's folder (a database copied with its surface beside
+ * it). Returns how many it wrote into place[]. */
+static int surface_candidates(const char *db_path, const char *stored,
+                              char place[3][4096])
+{
+    int n = 0;
+    snprintf(place[n++], sizeof place[0], "%s", stored);
+    char folder[4096];
+    snprintf(folder, sizeof folder, "%s", db_path);
+    char *slash = strrchr(folder, '/');
+    if (slash != NULL)
+        slash[1] = '\0';
+    else
+        snprintf(folder, sizeof folder, "./");
+    const char *name = strrchr(stored, '/');
+    name = name ? name + 1 : stored;
+    const char *tail[2] = {stored[0] != '/' ? stored : NULL, name};
+    for (int k = 0; k < 2; k++) {
+        if (tail[k] == NULL)
+            continue;
+        size_t a = strlen(folder), b = strlen(tail[k]);
+        if (a + b >= sizeof place[0])
+            continue;  /* too long to be a file anyway */
+        memcpy(place[n], folder, a);
+        memcpy(place[n] + a, tail[k], b + 1);
+        if (strcmp(place[n], place[n - 1]) != 0)
+            n++;
+    }
+    return n;
+}
+
+int study_open_surface(const struct store *store, const struct run_info *run,
+                       struct surface *surface, struct facet_error *err)
+{
+    struct optimize_settings settings;
+    struct mesh_options mesh;
+    int flip;
+    memset(surface, 0, sizeof *surface);
+    int rc = study_settings(run, &settings, &mesh, &flip, err);
+    if (rc != FACET_OK)
+        return rc;
+    /* The method the run took, not what would be chosen today: a run
+     * started by an older Facet keeps its UV. */
+    enum param_method uv = PARAM_AUTO;
+    if (run->uv_method[0] != '\0' &&
+        param_method_parse(run->uv_method, &uv) != 0)
+        return facet_error_set(err, FACET_EINPUT,
+            "run %lld: unknown UV method '%s' (made by a newer Facet?)",
+            (long long)run->id, run->uv_method);
+    char place[3][4096];
+    int nplaces = surface_candidates(store_path(store), run->surface_path,
+                                     place);
+    int changed = 0;
+    struct facet_error first;
+    facet_error_clear(&first);
+    for (int k = 0; k < nplaces; k++) {
+        if (access(place[k], F_OK) != 0)
+            continue;
+        char digest[65];
+        rc = read_surface(place[k], &mesh, digest, surface, err);
+        if (rc != FACET_OK)
+            return rc;
+        if (strcmp(digest, run->surface_sha256) == 0)
+            return surface_prepare(surface, flip, uv, err);
+        if (!changed)
+            facet_error_set(&first, FACET_EINPUT,
+                "%s: the file has changed since run %lld was made from it "
+                "(SHA-256 %.12s..., was %.12s...); give the original with "
+                "--surface FILE", place[k], (long long)run->id, digest,
+                run->surface_sha256);
+        changed = 1;
+        surface_close(surface);
+        memset(surface, 0, sizeof *surface);
+    }
+    if (changed) {
+        *err = first;
+        return FACET_EINPUT;
+    }
+    return facet_error_set(err, FACET_EINPUT,
+        "%s: no such file (run %lld's surface, nor beside the database); if "
+        "it has moved, give its new place with --surface FILE (SHA-256 "
+        "%.12s...)", run->surface_path, (long long)run->id,
+        run->surface_sha256);
+}
+
+int study_repoint_surface(struct store *store, int64_t run_id,
+                          const char *path, struct facet_error *err)
+{
+    struct run_info run;
+    int rc = store_run_get(store, run_id, &run, err);
+    if (rc != FACET_OK)
+        return rc;
+    char digest[65];
+    if ((rc = sha256_file(path, digest, err)) != FACET_OK)
+        return rc;
+    if (strcmp(digest, run.surface_sha256) != 0)
+        return facet_error_set(err, FACET_EINPUT,
+            "--surface %s: not run %lld's surface (SHA-256 %.12s..., the "
+            "run's is %.12s...)", path, (long long)run_id, digest,
+            run.surface_sha256);
+    char absolute[4096];
+    if (realpath(path, absolute) == NULL)
+        return facet_error_set(err, FACET_EINPUT, "--surface %s: %s", path,
+                               strerror(errno));
+    if (strlen(absolute) >= sizeof run.surface_path)
+        return facet_error_set(err, FACET_EINPUT,
+                               "--surface %.200s...: path too long", path);
+    if (store_read_only(store))
+        return facet_error_set(err, FACET_EINPUT,
+            "--surface: %s is read-only here, so run %lld cannot be "
+            "re-pointed; copy the database where it can be written",
+            store_path(store), (long long)run_id);
+    return store_run_set_surface(store, run_id, absolute, err);
+}
+
+int study_rank(struct store *store, int64_t run, struct facet_error *err)
+{
+    struct run_info info;
+    struct optimize_settings settings;
+    struct mesh_options mesh;
+    int flip;
+    int rc = store_run_get(store, run, &info, err);
+    if (rc == FACET_OK)
+        rc = study_settings(&info, &settings, &mesh, &flip, err);
+    if (rc != FACET_OK)
+        return rc;
+    struct option_row *rows;
+    size_t n;
+    rc = store_options_get(store, run, &rows, &n, err);
+    if (rc != FACET_OK)
+        return rc;
+    struct evaluated_option *options = malloc((n ? n : 1) * sizeof *options);
+    int64_t *numbers = malloc((n ? n : 1) * sizeof *numbers);
+    struct front front;
+    memset(&front, 0, sizeof front);
+    if (options == NULL || numbers == NULL)
+        rc = facet_error_set(err, FACET_EWORK, "out of memory");
+    for (size_t k = 0; rc == FACET_OK && k < n; k++) {
+        evaluated_of(&rows[k], &options[k]);
+        numbers[k] = rows[k].number;
+    }
+    if (rc == FACET_OK)
+        rc = front_analyse(options, n, settings.objectives,
+                           settings.nobjectives,
+                           settings.base.classify.max_panel_area, &front,
+                           err);
+    if (rc == FACET_OK)
+        rc = store_options_set_pareto(store, run, numbers, front.rank,
+                                      front.crowding, n,
+                                      front.knee < n ? numbers[front.knee]
+                                                     : 0,
+                                      front.hypervolume, err);
+    front_free(&front);
+    free(options);
+    free(numbers);
+    free(rows);
+    return rc;
+}
+
+/* Evaluates option on surface with the run's settings. */
+static int evaluate_option(const struct run_info *run,
+                           const struct surface *surface,
+                           const struct option_row *option,
+                           struct panelization *panels,
+                           struct option_totals *totals,
+                           struct facet_error *err)
+{
+    struct optimize_settings settings;
+    struct mesh_options mesh;
+    int flip;
+    int rc = study_settings(run, &settings, &mesh, &flip, err);
+    if (rc != FACET_OK)
+        return rc;
+    struct option_params params = settings.base;
+    params.nu = option->nu;
+    params.nv = option->nv;
+    params.classify.threshold = option->threshold_mm / 1000;
+    return option_evaluate(surface, &params, panels, totals, err);
+}
+
+int study_option_panels(struct store *store, const struct run_info *run,
+                        const struct surface *surface, int64_t number,
+                        struct panelization *panels,
+                        struct option_totals *totals,
+                        struct facet_error *err)
+{
+    memset(panels, 0, sizeof *panels);
+    struct option_row option;
+    int rc = store_option_get(store, run->id, number, &option, err);
+    if (rc != FACET_OK)
+        return rc;
+    *totals = option.totals;
+    int stored = store_panels_exist(store, run->id, number, err);
+    if (stored < 0)
+        return -stored;
+    if (stored)
+        return store_panels_get(store, run->id, number, panels, err);
+    struct surface own;
+    memset(&own, 0, sizeof own);
+    if (surface == NULL) {
+        rc = study_open_surface(store, run, &own, err);
+        surface = &own;
+    }
+    if (rc == FACET_OK)
+        rc = evaluate_option(run, surface, &option, panels, totals, err);
+    /* Stored for the next look, when the file may be written. */
+    if (rc == FACET_OK && !store_read_only(store))
+        rc = store_panels_put(store, run->id, number, panels, err);
+    if (surface == &own)
+        surface_close(&own);
+    return rc;
+}
+
+/* The bytes free to the writer on the disk of the database at db_path
+ * (its folder's file system), or -1 when that cannot be told. */
+static double disk_free_bytes(const char *db_path)
+{
+    char folder[4096];
+    snprintf(folder, sizeof folder, "%s", db_path);
+    char *slash = strrchr(folder, '/');
+    if (slash == NULL)
+        snprintf(folder, sizeof folder, ".");
+    else if (slash == folder)
+        slash[1] = '\0';
+    else
+        *slash = '\0';
+    struct statvfs fs;
+    if (statvfs(folder, &fs) != 0)
+        return -1;
+    return (double)fs.f_bavail * (double)fs.f_frsize;
+}
+
+/* bytes as a person reads them: "850 kB", "12.3 MB", "4.1 GB". */
+static void format_bytes(double bytes, char *out, size_t size)
+{
+    if (bytes < 1e6)
+        snprintf(out, size, "%.0f kB", bytes / 1e3);
+    else if (bytes < 1e9)
+        snprintf(out, size, "%.1f MB", bytes / 1e6);
+    else
+        snprintf(out, size, "%.1f GB", bytes / 1e9);
+}
+
+/* Refuses, before any work, a run whose options (those not stored yet)
+ * cannot fit the free disk space of its database. */
+static int check_room(const struct store *store,
+                      const struct optimize_settings *settings,
+                      int64_t stored, struct facet_error *err)
+{
+    double free_bytes = disk_free_bytes(store_path(store));
+    int64_t left = optimize_total(settings) - stored;
+    double need = (double)(left > 0 ? left : 0) * STUDY_OPTION_BYTES;
+    if (free_bytes >= 0 && need > free_bytes) {
+        char a[32], b[32];
+        format_bytes(need, a, sizeof a);
+        format_bytes(free_bytes, b, sizeof b);
+        return facet_error_set(err, FACET_EINPUT,
+            "%s: the run's %lld options need about %s and its disk has %s "
+            "free: make room, or search a smaller space", store_path(store),
+            (long long)left, a, b);
+    }
+    return FACET_OK;
+}
+
+/* Whether the user asked the study to stop (the hook, if any). */
+static int should_stop(const struct study_hooks *hooks)
+{
+    return hooks != NULL && hooks->should_stop != NULL &&
+           hooks->should_stop(hooks->context);
+}
+
+/* Stores the panels of every Pareto option of run not stored yet,
+ * evaluating them on every core. */
+static int store_front_panels(struct store *store, const struct run_info *run,
+                              const struct surface *surface,
+                              const struct panel_lattice *lattice,
+                              const struct optimize_settings *settings,
+                              const struct study_hooks *hooks, int *stopped,
+                              struct facet_error *err)
+{
+    *stopped = 0;
+    /* Only the front is read (by the rank index), not the whole run. */
+    struct option_query q = {run->id, 1, NULL, NULL, 0, 0, 0};
+    struct option_row *rows;
+    size_t n, nfront = 0;
+    if (strcmp(run->store_panels, "none") == 0)
+        return FACET_OK;
+    int knee_only = strcmp(run->store_panels, "knee") == 0;
+    int rc = store_options_query_rows(store, &q, &rows, &n, err);
+    struct design_point *points = malloc((n ? n : 1) * sizeof *points);
+    int64_t *numbers = malloc((n ? n : 1) * sizeof *numbers);
+    if (rc == FACET_OK && (points == NULL || numbers == NULL))
+        rc = facet_error_set(err, FACET_EWORK, "out of memory");
+    int64_t knee = 0;
+    for (size_t k = 0; rc == FACET_OK && k < n; k++) {
+        if (rows[k].knee)
+            knee = rows[k].number;
+        if (knee_only && !rows[k].knee)
+            continue;
+        int stored = store_panels_exist(store, run->id, rows[k].number, err);
+        if (stored < 0)
+            rc = -stored;
+        else if (!stored) {
+            points[nfront] = (struct design_point){rows[k].nu, rows[k].nv,
+                                                   rows[k].threshold_mm};
+            numbers[nfront++] = rows[k].number;
+        }
+    }
+    free(rows);
+    /* What they take on disk, against what it has: a front of fine grids
+     * can need more than the disk holds (two 1000 x 1000 options: 611 MB).
+     * Then the knee alone, or nothing, with the reason said; facet show and
+     * export compute an option's panels when asked. */
+    double free_bytes = disk_free_bytes(store_path(store));
+    double need = 0, knee_need = 0;
+    size_t knee_at = nfront;
+    for (size_t k = 0; k < nfront; k++) {
+        need += (double)points[k].nu * points[k].nv * STUDY_PANEL_BYTES;
+        if (numbers[k] == knee) {
+            knee_at = k;
+            knee_need = (double)points[k].nu * points[k].nv *
+                        STUDY_PANEL_BYTES;
+        }
+    }
+    if (rc == FACET_OK && free_bytes >= 0 && need > free_bytes) {
+        char text[400], a[32], b[32];
+        int keep_knee = knee_at < nfront && knee_need <= free_bytes;
+        format_bytes(need, a, sizeof a);
+        format_bytes(free_bytes, b, sizeof b);
+        snprintf(text, sizeof text, "the front's panels need about %s and "
+                 "the disk has %s free: %s stored (facet show and export "
+                 "compute an option's panels when asked)", a, b,
+                 keep_knee ? "only the knee's are" : "none are");
+        if (hooks != NULL && hooks->warning != NULL)
+            hooks->warning(hooks->context, text);
+        if (keep_knee) {
+            points[0] = points[knee_at];
+            numbers[0] = numbers[knee_at];
+            nfront = 1;
+        } else {
+            nfront = 0;
+        }
+    }
+    struct panelization *panels = NULL;
+    struct option_totals *totals = NULL;
+    if (rc == FACET_OK && nfront > 0) {
+        panels = calloc(nfront, sizeof *panels);
+        totals = malloc(nfront * sizeof *totals);
+        if (panels == NULL || totals == NULL)
+            rc = facet_error_set(err, FACET_EWORK, "out of memory");
+        /* In chunks, with a stop heard between them: a front of fine
+         * grids takes a while, and Ctrl-C must leave the run resumable. */
+        size_t chunk = 4 * (size_t)(settings->jobs > 0 ? settings->jobs : 1);
+        for (size_t first = 0; rc == FACET_OK && first < nfront;
+             first += chunk) {
+            if (should_stop(hooks)) {
+                *stopped = 1;
+                break;
+            }
+            size_t count = nfront - first < chunk ? nfront - first : chunk;
+            rc = optimize_evaluate_panels(surface, lattice, &settings->base,
+                                          points + first, count,
+                                          settings->jobs, panels + first,
+                                          totals + first, err);
+            for (size_t k = first; rc == FACET_OK && k < first + count; k++)
+                rc = store_panels_put(store, run->id, numbers[k], &panels[k],
+                                      err);
+            for (size_t k = first; k < first + count; k++)
+                panelization_free(&panels[k]);
+        }
+    }
+    free(panels);
+    free(totals);
+    free(points);
+    free(numbers);
+    return rc;
+}
+
+/* Runs the optimiser for run (recorded, status running) on the prepared
+ * surface, then ranks and finishes it. elapsed_before: seconds of earlier
+ * sessions. */
+static int study_go(struct store *store, struct run_info *run,
+                    const struct surface *surface,
+                    const struct optimize_settings *settings,
+                    const struct study_hooks *hooks, double started,
+                    enum optimize_outcome *outcome, struct facet_error *err)
+{
+    struct study_state state = {store, run->id, hooks, NULL, 0};
+    struct optimize_hooks optimize_hooks = {&state, store_batch,
+                                            report_progress, stop_requested};
+    struct option_row *rows = NULL;
+    struct evaluated_option *stored = NULL;
+    size_t nstored = 0;
+    int rc = store_options_get(store, run->id, &rows, &nstored, err);
+    if (rc == FACET_OK && nstored > 0) {
+        stored = malloc(nstored * sizeof *stored);
+        if (stored == NULL)
+            rc = facet_error_set(err, FACET_EWORK, "out of memory");
+        for (size_t k = 0; rc == FACET_OK && k < nstored; k++)
+            evaluated_of(&rows[k], &stored[k]);
+    }
+    free(rows);
+    /* The panels of the run and of its front from one lattice, so that
+     * the stored panels add up to their options' totals. */
+    struct panel_lattice *lattice = NULL;
+    if (rc == FACET_OK) {
+        stage(hooks, "dividing the surface along the space's grid lines");
+        rc = optimize_lattice(surface, settings, &lattice, err);
+    }
+    stage(hooks, "evaluating options");
+    if (rc == FACET_OK)
+        rc = optimize_run(surface, lattice, settings, stored, nstored,
+                          &optimize_hooks, outcome, err);
+    free(stored);
+    free(state.rows);
+
+    struct facet_error later;
+    facet_error_clear(&later);
+    if (rc == FACET_OK) {
+        stage(hooks, "ranking options");
+        rc = study_rank(store, run->id, err);
+    }
+    if (rc == FACET_OK)
+        rc = store_analyze(store, err);
+    /* A stop heard after the last batch still leaves the run resumable:
+     * ranked, its front's panels stored later. */
+    if (rc == FACET_OK && *outcome == OPTIMIZE_DONE && should_stop(hooks))
+        *outcome = OPTIMIZE_INTERRUPTED;
+    if (rc == FACET_OK && *outcome == OPTIMIZE_DONE) {
+        stage(hooks, "storing the Pareto options' panels");
+        int stopped;
+        rc = store_front_panels(store, run, surface, lattice, settings,
+                                hooks, &stopped, err);
+        if (stopped)
+            *outcome = OPTIMIZE_INTERRUPTED;
+    }
+    panel_lattice_free(lattice);
+    const char *status = rc != FACET_OK ? "failed"
+                         : *outcome == OPTIMIZE_DONE ? "done"
+                                                     : "interrupted";
+    /* The status is written even after a failure, with its own error
+     * kept apart so the first error is the one reported. */
+    int status_rc = store_run_set_status(store, run->id, status,
+                                         run->elapsed + clock_seconds() -
+                                             started,
+                                         rc == FACET_OK ? err : &later);
+    return rc != FACET_OK ? rc : status_rc;
+}
+
+/* The warnings of a new run on the prepared surface: the surface's own,
+ * and a mesh coarser than the finest grid of the space's panels (by the
+ * UV's cover of its box, before any option is evaluated). Each goes to
+ * the warning hook and, one per line, into text (size bytes). */
+static void collect_warnings(const struct surface *surface,
+                             const struct design_space *space,
+                             const struct study_hooks *hooks, char *text,
+                             size_t size)
+{
+    char lines[SURFACE_MAX_WARNINGS + 1][400];
+    int n = 0;
+    for (int k = 0; k < surface->nwarnings; k++)
+        snprintf(lines[n++], sizeof lines[0], "%s", surface->warnings[k]);
+    const struct uv_report *uv = &surface->param.report;
+    double box = (uv->umax - uv->umin) * (uv->vmax - uv->vmin);
+    double fill = box > 0 ? uv->uv_area / box : 1;
+    double side = grid_panel_side(surface->mesh.area, fill, space->u_max,
+                                  space->v_max);
+    char grid[80];
+    snprintf(grid, sizeof grid, "the finest grid of the space, %d x %d",
+             space->u_max, space->v_max);
+    double facet = mesh_facet_size(&surface->mesh);
+    if (facet > 0 && coarse_mesh_warning(facet, side, grid, lines[n],
+                                         sizeof lines[0]))
+        n++;
+    size_t used = 0;
+    text[0] = '\0';
+    for (int k = 0; k < n; k++) {
+        if (hooks != NULL && hooks->warning != NULL)
+            hooks->warning(hooks->context, lines[k]);
+        int wrote = snprintf(text + used, size - used, "%s%s",
+                             used ? "\n" : "", lines[k]);
+        if (wrote < 0 || (size_t)wrote >= size - used)
+            break;
+        used += (size_t)wrote;
+    }
+}
+
+int study_request_check(const struct study_request *request,
+                        struct facet_error *err)
+{
+    /* Stored whole or refused: a name cut at a byte count can end inside
+     * a character, and a control character in one reaches terminals. */
+    size_t most = sizeof ((struct run_info *)0)->name - 1;
+    if (strlen(request->name) > most)
+        return facet_error_set(err, FACET_EINPUT,
+            "the run's name is %zu bytes: at most %zu", strlen(request->name),
+            most);
+    if (!text_is_clean(request->name))
+        return facet_error_set(err, FACET_EINPUT,
+            "the run's name is not clean UTF-8 text (control characters or "
+            "invalid bytes)");
+    const char *keep = request->store_panels;
+    if (keep != NULL && strcmp(keep, "front") != 0 &&
+        strcmp(keep, "knee") != 0 && strcmp(keep, "none") != 0)
+        return facet_error_set(err, FACET_EINPUT,
+            "panels to store: '%s' is not front, knee or none", keep);
+    return design_space_check(&request->settings.space, err);
+}
+
+int study_start(struct store *store, const struct study_request *request,
+                const struct study_hooks *hooks, int64_t *run_id,
+                enum optimize_outcome *outcome, struct facet_error *err)
+{
+    *run_id = 0;
+    *outcome = OPTIMIZE_INTERRUPTED;
+    const struct optimize_settings *s = &request->settings;
+    int rc = design_space_check(&s->space, err);
+    if (rc == FACET_OK)
+        rc = store_check(store, err);
+    if (rc == FACET_OK)
+        rc = check_room(store, s, 0, err);
+    if (rc != FACET_OK)
+        return rc;
+    double started = clock_seconds();
+    struct run_info run;
+    memset(&run, 0, sizeof run);
+    if ((rc = study_request_check(request, err)) != FACET_OK)
+        return rc;
+    snprintf(run.name, sizeof run.name, "%s", request->name);
+    snprintf(run.store_panels, sizeof run.store_panels, "%s",
+             request->store_panels ? request->store_panels : "front");
+    /* Recorded absolute, so the run's surface is found from any folder;
+     * a path realpath cannot resolve fails below, when it is read. */
+    char absolute[4096];
+    const char *recorded = realpath(request->surface_path, absolute)
+                               ? absolute : request->surface_path;
+    if (strlen(recorded) >= sizeof run.surface_path)
+        return facet_error_set(err, FACET_EINPUT, "%.200s...: path too long",
+                               recorded);
+    memcpy(run.surface_path, recorded, strlen(recorded) + 1);
+    stage(hooks, "reading the surface");
+    struct surface surface;
+    memset(&surface, 0, sizeof surface);
+    rc = read_surface(request->surface_path, &request->mesh,
+                      run.surface_sha256, &surface, err);
+    if (rc == FACET_OK) {
+        stage(hooks, "preparing the surface (UV, curvature)");
+        rc = surface_prepare(&surface, request->flip_normals, request->uv,
+                             err);
+    }
+    if (rc != FACET_OK) {
+        surface_close(&surface);
+        return rc;
+    }
+    collect_warnings(&surface, &s->space, hooks, run.warnings,
+                     sizeof run.warnings);
+    snprintf(run.units, sizeof run.units, "%s",
+             mesh_units_name(request->mesh.units));
+    run.surface_area = surface.mesh.area;
+    run.triangles = (int64_t)surface.mesh.ntriangles;
+    snprintf(run.uv_method, sizeof run.uv_method, "%s",
+             param_method_name(surface.param.method));
+    snprintf(run.uv, sizeof run.uv, "%s",
+             request->uv == PARAM_AUTO ? "" : param_method_name(request->uv));
+    snprintf(run.method, sizeof run.method, "%s",
+             optimize_method_name(s->method));
+    run.seed = s->seed;
+    run.u_min = s->space.u_min;
+    run.u_max = s->space.u_max;
+    run.v_min = s->space.v_min;
+    run.v_max = s->space.v_max;
+    run.threshold_min_mm = s->space.t_min_mm;
+    run.threshold_max_mm = s->space.t_max_mm;
+    run.threshold_step_mm = s->space.t_step_mm;
+    memcpy(run.price, s->base.classify.price, sizeof run.price);
+    run.sp_as_fp = s->base.classify.sp_as_fp;
+    run.max_panel_area = s->base.classify.max_panel_area;
+    run.curvature_tol = s->base.classify.curvature_tol;
+    snprintf(run.per_panel, sizeof run.per_panel, "%s",
+             s->base.mode == PANEL_MEAN ? "mean" : "extremes");
+    run.flip_normals = request->flip_normals;
+    snprintf(run.object, sizeof run.object, "%s",
+             request->mesh.object ? request->mesh.object : "");
+    snprintf(run.group, sizeof run.group, "%s",
+             request->mesh.group ? request->mesh.group : "");
+    size_t len = 0;
+    for (int k = 0; k < s->nobjectives; k++)
+        len += (size_t)snprintf(run.objectives + len,
+                                sizeof run.objectives - len, "%s%s%s",
+                                k ? "," : "",
+                                s->objectives[k].maximise ? "max:" : "",
+                                metric_name(s->objectives[k].metric));
+    run.population = s->method == METHOD_NSGA2 ? s->population : 0;
+    run.generations = s->method == METHOD_NSGA2 ? s->generations : 0;
+    run.evaluations = s->method == METHOD_RANDOM ? s->evaluations : 0;
+    run.jobs = s->jobs;
+    rc = store_run_create(store, &run, err);
+    if (rc == FACET_OK) {
+        *run_id = run.id;
+        if (hooks != NULL && hooks->started != NULL)
+            hooks->started(hooks->context, run.id);
+        rc = study_go(store, &run, &surface, s, hooks, started, outcome,
+                      err);
+    }
+    surface_close(&surface);
+    return rc;
+}
+
+int study_resume(struct store *store, int64_t run_id,
+                 const struct study_hooks *hooks,
+                 enum optimize_outcome *outcome, struct facet_error *err)
+{
+    *outcome = OPTIMIZE_INTERRUPTED;
+    double started = clock_seconds();
+    struct run_info run;
+    int rc = store_check(store, err);
+    if (rc == FACET_OK)
+        rc = store_run_get(store, run_id, &run, err);
+    struct optimize_settings settings;
+    struct mesh_options mesh;
+    int flip;
+    if (rc == FACET_OK)
+        rc = study_settings(&run, &settings, &mesh, &flip, err);
+    if (rc == FACET_OK)
+        rc = check_room(store, &settings, run.options, err);
+    /* Claimed before the surface is read (which takes a while), so that a
+     * second --resume of the run is refused, not run twice. */
+    if (rc == FACET_OK)
+        rc = store_run_claim(store, run_id, &run, err);
+    if (rc != FACET_OK)
+        return rc;
+    stage(hooks, "preparing the surface (UV, curvature)");
+    struct surface surface;
+    rc = study_open_surface(store, &run, &surface, err);
+    if (rc != FACET_OK) {
+        /* Given back as it was found, resumable once the surface is. */
+        struct facet_error ignored;
+        store_run_set_status(store, run_id, "interrupted", run.elapsed,
+                             &ignored);
+    }
+    if (rc == FACET_OK) {
+        if (hooks != NULL && hooks->started != NULL)
+            hooks->started(hooks->context, run_id);
+        rc = study_go(store, &run, &surface, &settings, hooks, started,
+                      outcome, err);
+    }
+    surface_close(&surface);
+    return rc;
+}
+
+int study_front_edge_note(const struct run_info *run,
+                          const struct front_bounds *b, char *text,
+                          size_t size)
+{
+    static const char *const variable[3] = {"U", "V", "the threshold"};
+    static const char *const unit[3] = {"", "", " mm"};
+    double low[3] = {run->u_min, run->v_min, run->threshold_min_mm};
+    double high[3] = {run->u_max, run->v_max, run->threshold_max_mm};
+    size_t used = 0;
+    text[0] = '\0';
+    for (int k = 0; k < FRONT_BOUNDS; k++) {
+        int v = k / 2, top = k % 2;
+        if (b->at[k] == 0 || !(high[v] > low[v]))
+            continue;
+        int wrote = snprintf(text + used, size - used,
+            "%s%lld of %lld Pareto options sit at %s = %g%s, the %s of its "
+            "range %g:%g", used ? "; " : "", (long long)b->at[k],
+            (long long)b->pareto, variable[v], top ? high[v] : low[v],
+            unit[v], top ? "top" : "bottom", low[v], high[v]);
+        if (wrote < 0 || (size_t)wrote >= size - used)
+            break;
+        used += (size_t)wrote;
+    }
+    if (used == 0)
+        return 0;
+    if (used < size)
+        snprintf(text + used, size - used,
+                 ": the front may go on beyond it; widen the range there "
+                 "before taking the bound for an optimum");
+    return 1;
+}

@@ -1,0 +1,129 @@
+/*
+ * study.h: an optimisation run from start to finish, written through the
+ * store: what `facet optimize` and the TUI's New run both do.
+ *
+ * A study opens and prepares the surface, records the run, lets the
+ * optimiser (core/search/optimize.h) evaluate the design space and commits
+ * every batch as soon as it is evaluated, then ranks the options
+ * (core/search/front.h), stores the panels of the Pareto options, and marks
+ * the run done. When the stop hook fires it ranks what was stored and marks
+ * the run interrupted; on an error, failed. Resuming reads the run back,
+ * checks that the surface file is the one the run was made from, and goes
+ * on: nothing stored is evaluated again, and the finished run has the
+ * options an uninterrupted one would have.
+ */
+#ifndef FACET_STUDY_H
+#define FACET_STUDY_H
+
+#include "core/surface/mesh.h"
+#include "core/search/optimize.h"
+#include "core/surface/surface.h"
+#include "store/store.h"
+
+struct study_hooks {
+    void *context;
+    /* What the study is doing now ("preparing the surface", ...). */
+    void (*stage)(void *context, const char *what);
+    /* Options done (stored or reused) of total. */
+    void (*progress)(void *context, int64_t done, int64_t total);
+    /* Non-zero when the user asked to stop; checked between batches. */
+    int (*should_stop)(void *context);
+    /* The run's id, once it is recorded (the TUI follows it live). */
+    void (*started)(void *context, int64_t run);
+    /* One thing the designer must know before trusting the run's numbers
+     * (a surface warning, a mesh coarser than the finest panels), as it
+     * is found; the same lines are stored with the run (runs.warnings).
+     * NULL: not told. */
+    void (*warning)(void *context, const char *text);
+};
+
+/* What a new run is made of. */
+struct study_request {
+    const char *surface_path;
+    struct mesh_options mesh;        /* units, object, group */
+    int flip_normals;
+    enum param_method uv;            /* asked for; PARAM_AUTO: the first
+                                        that applies */
+    struct optimize_settings settings;
+    const char *name;                /* "" for none */
+    const char *store_panels;        /* whose panels to store at the end:
+                                        "front" (NULL too), "knee" or
+                                        "none"; the others are computed
+                                        when shown or exported */
+};
+
+/* What storing costs on disk, as measured (a 680,000-panel front: 303
+ * bytes a panel; a million options: 350 bytes each, indexes included),
+ * with a margin: what a run checks the free space against before it
+ * starts, and before it stores its front's panels. */
+#define STUDY_PANEL_BYTES 320
+#define STUDY_OPTION_BYTES 400
+
+/* Checks what request asks for before anything is opened or created: a
+ * name that is clean UTF-8 text of at most 127 bytes, a sound design
+ * space. FACET_EINPUT naming what is wrong. study_start checks it too. */
+int study_request_check(const struct study_request *request,
+                        struct facet_error *err);
+
+/* Runs a new study into store. *run receives its id (0 if it failed
+ * before one was recorded), *outcome DONE or INTERRUPTED. Returns
+ * FACET_OK, or the first error (the run, if recorded, is then "failed"). */
+int study_start(struct store *store, const struct study_request *request,
+                const struct study_hooks *hooks, int64_t *run,
+                enum optimize_outcome *outcome, struct facet_error *err);
+
+/* Goes on with run (status interrupted or failed; a running run whose
+ * writer is alive is refused, a done one too). */
+int study_resume(struct store *store, int64_t run,
+                 const struct study_hooks *hooks,
+                 enum optimize_outcome *outcome, struct facet_error *err);
+
+/* The optimiser settings, mesh options and normal flip a run was made
+ * with. */
+int study_settings(const struct run_info *run,
+                   struct optimize_settings *settings,
+                   struct mesh_options *mesh, int *flip_normals,
+                   struct facet_error *err);
+
+/* Opens and prepares the surface of run, refusing a file whose content is
+ * not the one the run was made from. The surface is looked for where the
+ * run recorded it, then (a relative path) against the folder of store's
+ * file, then by its name in that folder; the message of a failure says how
+ * to re-point the run (study_repoint_surface). The UV is the method the
+ * run took (its uv_method), so a resumed run, and every option shown
+ * later, follows the UV its first options did, even when an older Facet
+ * chose it. Release with surface_close, also after a failure. */
+int study_open_surface(const struct store *store, const struct run_info *run,
+                       struct surface *surface, struct facet_error *err);
+
+/* Records path (made absolute) as run's surface, after checking that its
+ * SHA-256 is the run's: what --surface FILE does for a surface that has
+ * moved. FACET_EINPUT for another file or a read-only store. */
+int study_repoint_surface(struct store *store, int64_t run,
+                          const char *path, struct facet_error *err);
+
+/* The panels and totals of option number of run: read from the store when
+ * stored, else evaluated on surface (opened by study_open_surface when
+ * surface is NULL) and stored. *panels is caller-owned (panelization_free,
+ * also after a failure). */
+int study_option_panels(struct store *store, const struct run_info *run,
+                        const struct surface *surface, int64_t option,
+                        struct panelization *panels,
+                        struct option_totals *totals,
+                        struct facet_error *err);
+
+/* Ranks every stored option of run and stores ranks, crowding, knee and
+ * hypervolume. */
+int study_rank(struct store *store, int64_t run, struct facet_error *err);
+
+/* Writes into text (size bytes) what a designer must know when run's
+ * Pareto options sit on a bound of its design space (bounds, read with
+ * store_front_bounds): each such bound, how many options sit there, and
+ * that widening the range there shows whether the front goes on, instead
+ * of taking the bound for an optimum. Bounds of a range of one value are
+ * not edges. Returns 1 when it wrote a note, 0 (text "") otherwise. */
+int study_front_edge_note(const struct run_info *run,
+                          const struct front_bounds *bounds, char *text,
+                          size_t size);
+
+#endif

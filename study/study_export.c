@@ -1,0 +1,356 @@
+/*
+ * study_export.c: options and runs out as files. See study_export.h.
+ */
+#include "study_export.h"
+
+#include <math.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "core/out/export_obj.h"
+#include "core/out/outfile.h"
+#include "core/panel/panel_geometry.h"
+#include "core/out/report.h"
+#include "core/out/svg_plot.h"
+#include "study.h"
+
+/* Opens every wanted file as FILE.partial; on failure none is left. */
+static int open_all(const char *const target[EXPORT_FILES], int force,
+                    struct outfile file[EXPORT_FILES],
+                    int open[EXPORT_FILES], struct facet_error *err)
+{
+    int rc = FACET_OK;
+    for (int k = 0; k < EXPORT_FILES; k++)
+        if (target[k] && (rc = outfile_check(target[k], force, err)))
+            return rc;
+    for (int k = 0; k < EXPORT_FILES && rc == FACET_OK; k++)
+        if (target[k]) {
+            rc = outfile_open(&file[k], target[k], force, err);
+            open[k] = rc == FACET_OK;
+        }
+    if (rc != FACET_OK)
+        for (int k = 0; k < EXPORT_FILES; k++)
+            if (open[k]) {
+                outfile_abort(&file[k]);
+                open[k] = 0;
+            }
+    return rc;
+}
+
+int study_option_load(struct store *store, int64_t run, int64_t number,
+                      int geometry, struct study_option *p,
+                      struct facet_error *err)
+{
+    memset(p, 0, sizeof *p);
+    struct optimize_settings settings;
+    struct mesh_options mesh;
+    int flip;
+    int rc = store_run_get(store, run, &p->run, err);
+    if (rc == FACET_OK)
+        rc = store_option_get(store, run, number, &p->row, err);
+    if (rc == FACET_OK)
+        rc = study_settings(&p->run, &settings, &mesh, &flip, err);
+    if (rc != FACET_OK)
+        return rc;
+    p->classify = settings.base.classify;
+    p->classify.threshold = p->row.threshold_mm / 1000;
+    if (geometry) {
+        rc = study_open_surface(store, &p->run, &p->surface, err);
+        p->have_surface = 1;
+    }
+    if (rc == FACET_OK)
+        rc = study_option_panels(store, &p->run,
+                                 p->have_surface ? &p->surface : NULL,
+                                 number, &p->panels, &p->totals, err);
+    if (rc == FACET_OK && geometry) {
+        rc = panel_geometry_build(&p->surface.mesh, &p->surface.uv,
+                                  &p->panels, &p->geometry, err);
+        p->have_geometry = rc == FACET_OK;
+    }
+    return rc;
+}
+
+void study_option_free(struct study_option *p)
+{
+    if (p->have_geometry)
+        panel_geometry_free(&p->geometry);
+    panelization_free(&p->panels);
+    if (p->have_surface)
+        surface_close(&p->surface);
+    memset(p, 0, sizeof *p);
+}
+
+void study_option_source(const struct study_option *p,
+                         struct report_source *out)
+{
+    *out = (struct report_source){p->run.surface_path, p->run.units,
+                                  p->run.surface_area,
+                                  (size_t)p->run.triangles,
+                                  p->run.uv_method, p->run.per_panel};
+}
+
+int study_export(struct store *store, int64_t run, int64_t number,
+                 struct export_request *r, struct facet_error *err)
+{
+    memset(r->written, 0, sizeof r->written);
+    if (!r->obj && !r->csv && !r->json && !r->svg)
+        return facet_error_set(err, FACET_EINPUT,
+            "export: say what to write: OBJ, CSV, JSON and/or SVG");
+    char mtl[4096] = "", totals[4096] = "";
+    int rc;
+    if (r->obj && outfile_is_stream(r->obj))
+        return facet_error_set(err, FACET_EINPUT,
+            "export: %s: an OBJ needs its MTL beside it; give a file",
+            r->obj);
+    if (r->obj && (rc = export_obj_mtl_path(r->obj, mtl, sizeof mtl, err)))
+        return rc;
+    /* A schedule piped out goes alone: its totals have no place beside a
+     * stream. */
+    int totals_file = r->csv && !outfile_is_stream(r->csv);
+    if (totals_file && (rc = outfile_sibling(r->csv, ".csv", "-totals.csv",
+                                             totals, sizeof totals, err)))
+        return rc;
+    int to_stdout = (r->csv && strcmp(r->csv, "-") == 0) +
+                    (r->json && strcmp(r->json, "-") == 0) +
+                    (r->svg && strcmp(r->svg, "-") == 0);
+    if (to_stdout > 1)
+        return facet_error_set(err, FACET_EINPUT,
+            "export: one file at most to standard output (-)");
+    const char *target[EXPORT_FILES] = {r->obj, r->obj ? mtl : NULL, r->csv,
+                                        totals_file ? totals : NULL, r->json,
+                                        r->svg};
+    struct outfile file[EXPORT_FILES];
+    int open[EXPORT_FILES] = {0};
+    if ((rc = open_all(target, r->force, file, open, err)))
+        return rc;
+
+    struct study_option p;
+    rc = study_option_load(store, run, number, r->obj || r->svg, &p, err);
+    if (rc == FACET_OK && r->obj) {
+        /* mtllib is relative to the OBJ: the MTL's own name. */
+        const char *slash = strrchr(mtl, '/');
+        export_obj_write(file[EXPORT_OBJ].out, slash ? slash + 1 : mtl,
+                         &p.geometry, &p.panels);
+        export_obj_write_mtl(file[EXPORT_MTL].out);
+    }
+    if (rc == FACET_OK && r->csv) {
+        report_csv(file[EXPORT_CSV].out, &p.panels);
+        if (totals_file)
+            report_totals_csv(file[EXPORT_TOTALS].out, &p.totals);
+    }
+    if (rc == FACET_OK && r->json) {
+        struct report_source source;
+        study_option_source(&p, &source);
+        report_json(file[EXPORT_JSON].out, &source, &p.classify, &p.panels,
+                    &p.totals);
+    }
+    if (rc == FACET_OK && r->svg) {
+        char title[256];
+        snprintf(title, sizeof title, "Run %lld, option %lld: %d x %d, "
+                 "%g mm", (long long)run, (long long)number, p.row.nu,
+                 p.row.nv, p.row.threshold_mm);
+        struct svg_map_options map = r->map;
+        map.title = title;
+        svg_map_write(file[EXPORT_SVG].out, &p.geometry, &p.panels,
+                      &p.totals, &map);
+    }
+    /* The MTL before the OBJ: an OBJ never names a missing MTL. */
+    static const int order[EXPORT_FILES] = {EXPORT_MTL, EXPORT_OBJ,
+                                            EXPORT_CSV, EXPORT_TOTALS,
+                                            EXPORT_JSON, EXPORT_SVG};
+    int n = 0;
+    for (int k = 0; k < EXPORT_FILES; k++) {
+        int f = order[k];
+        if (!open[f])
+            continue;
+        if (rc == FACET_OK)
+            rc = outfile_commit(&file[f], err);
+        else
+            outfile_abort(&file[f]);
+        if (rc == FACET_OK)
+            snprintf(r->written[n++], sizeof r->written[0], "%s",
+                     target[f]);
+    }
+    study_option_free(&p);
+    return rc;
+}
+
+const char *study_column_unit(const char *column)
+{
+    static const char *const unit[][2] = {
+        {"cost", "USD"}, {"planarity", "m"}, {"max_deviation", "m"},
+        {"fp_area", "m^2"}, {"sp_area", "m^2"}, {"dp_area", "m^2"},
+        {"area", "m^2"}, {"max_panel_area", "m^2"}, {"p_dist", "m^4"},
+        {"threshold_mm", "mm"},
+    };
+    for (size_t k = 0; k < sizeof unit / sizeof *unit; k++)
+        if (strcmp(unit[k][0], column) == 0)
+            return unit[k][1];
+    return "";
+}
+
+static int check_column(const char *what, const char *column,
+                        struct facet_error *err)
+{
+    for (int k = 0; store_option_columns[k] != NULL; k++)
+        if (strcmp(store_option_columns[k], column) == 0 &&
+            strcmp(column, "run") != 0)
+            return FACET_OK;
+    return facet_error_set(err, FACET_EINPUT,
+        "%s: '%s' is not an option column (e.g. cost, planarity, dp_area, "
+        "fp_area, nu, threshold_mm)", what, column);
+}
+
+/* One run's points, owned. */
+struct run_points {
+    struct option_row *rows;
+    size_t n;
+    double *x, *y, *size;
+    int *rank;
+    char label[160];
+};
+
+static int load_points(struct store *store, int64_t run,
+                       const struct plot_request *r, struct run_points *p,
+                       struct svg_plot_series *series,
+                       struct facet_error *err)
+{
+    struct run_info info;
+    int rc = store_run_get(store, run, &info, err);
+    struct option_query q = {run, r->pareto_only, r->where, NULL, 0, 0, 0};
+    if (rc == FACET_OK)
+        rc = r->where || r->pareto_only
+                 ? store_options_query_rows(store, &q, &p->rows, &p->n, err)
+                 : store_options_get(store, run, &p->rows, &p->n, err);
+    if (rc != FACET_OK)
+        return rc;
+    if (p->n == 0)
+        return facet_error_set(err, FACET_EINPUT, "run %lld has no options "
+                               "to plot%s", (long long)run,
+                               r->where || r->pareto_only
+                                   ? " (the filter passes none)" : "");
+    p->x = malloc(p->n * sizeof *p->x);
+    p->y = malloc(p->n * sizeof *p->y);
+    p->size = malloc(p->n * sizeof *p->size);
+    p->rank = malloc(p->n * sizeof *p->rank);
+    if (!p->x || !p->y || !p->size || !p->rank)
+        return facet_error_set(err, FACET_EWORK, "out of memory");
+    size_t knee = SIZE_MAX;
+    for (size_t k = 0; k < p->n; k++) {
+        p->x[k] = store_option_value(&p->rows[k], r->x);
+        p->y[k] = store_option_value(&p->rows[k], r->y);
+        p->size[k] = r->size
+            ? fmax(0, store_option_value(&p->rows[k], r->size)) : 0;
+        p->rank[k] = p->rows[k].rank;
+        if (p->rows[k].knee)
+            knee = k;
+    }
+    /* The legend has room for about 24 characters. */
+    if (info.name[0])
+        snprintf(p->label, sizeof p->label, "run %lld %.16s%s",
+                 (long long)run, info.name,
+                 strlen(info.name) > 16 ? "..." : "");
+    else
+        snprintf(p->label, sizeof p->label, "run %lld (%s)", (long long)run,
+                 info.method);
+    *series = (struct svg_plot_series){p->label, NULL, p->n, p->x, p->y,
+                                       r->size ? p->size : NULL, p->rank,
+                                       knee};
+    return FACET_OK;
+}
+
+int study_plot(struct store *store, const struct plot_request *r,
+               const char *path, struct facet_error *err)
+{
+    int rc;
+    if (r->nruns < 1 || r->nruns > PLOT_MAX_RUNS)
+        return facet_error_set(err, FACET_EINPUT,
+            "plot: 1 to %d runs in one plot", PLOT_MAX_RUNS);
+    if ((rc = check_column("--x", r->x, err)) ||
+        (rc = check_column("--y", r->y, err)) ||
+        (r->size && (rc = check_column("--size", r->size, err))) ||
+        (rc = outfile_check(path, r->force, err)))
+        return rc;
+    struct run_points points[PLOT_MAX_RUNS];
+    struct svg_plot_series series[PLOT_MAX_RUNS];
+    memset(points, 0, sizeof points);
+    for (int k = 0; k < r->nruns && rc == FACET_OK; k++)
+        rc = load_points(store, r->runs[k], r, &points[k], &series[k], err);
+    if (rc == FACET_OK) {
+        struct svg_plot plot;
+        svg_plot_defaults(&plot);
+        plot.title = r->title;
+        plot.x_name = r->x;
+        plot.x_unit = study_column_unit(r->x);
+        plot.y_name = r->y;
+        plot.y_unit = study_column_unit(r->y);
+        plot.size_name = r->size;
+        plot.size_unit = r->size ? study_column_unit(r->size) : NULL;
+        plot.series = series;
+        plot.nseries = (size_t)r->nruns;
+        rc = svg_plot_save(path, r->force, &plot, err);
+    }
+    for (int k = 0; k < r->nruns; k++) {
+        free(points[k].rows);
+        free(points[k].x);
+        free(points[k].y);
+        free(points[k].size);
+        free(points[k].rank);
+    }
+    return rc;
+}
+
+int study_export_options_csv(struct store *store, int64_t run,
+                             const int64_t *numbers, size_t n,
+                             const char *path, int force,
+                             struct facet_error *err)
+{
+    struct option_row *rows = malloc((n ? n : 1) * sizeof *rows);
+    if (rows == NULL)
+        return facet_error_set(err, FACET_EWORK, "out of memory");
+    int rc = FACET_OK;
+    for (size_t k = 0; k < n && rc == FACET_OK; k++)
+        rc = store_option_get(store, run, numbers[k], &rows[k], err);
+    struct outfile f;
+    if (rc == FACET_OK)
+        rc = outfile_open(&f, path, force, err);
+    if (rc != FACET_OK) {
+        free(rows);
+        return rc;
+    }
+    fprintf(f.out, "run");
+    for (int c = 0; store_option_columns[c] != NULL; c++)
+        if (strcmp(store_option_columns[c], "run") != 0)
+            fprintf(f.out, ",%s", store_option_columns[c]);
+    fprintf(f.out, ",fp_cost,sp_cost,dp_cost");
+    for (int c = 0; c < CLASS_COUNT; c++)
+        fprintf(f.out, ",%s_count,%s_area",
+                panel_class_name((enum panel_class)c),
+                panel_class_name((enum panel_class)c));
+    fprintf(f.out, "\n");
+    for (size_t k = 0; k < n; k++) {
+        const struct option_row *o = &rows[k];
+        fprintf(f.out, "%lld", (long long)run);
+        for (int c = 0; store_option_columns[c] != NULL; c++) {
+            if (strcmp(store_option_columns[c], "run") == 0)
+                continue;
+            double v = store_option_value(o, store_option_columns[c]);
+            if (!isfinite(v))
+                fprintf(f.out, ",");  /* crowding at a front's end */
+            else if (v == floor(v) && fabs(v) < 1e15)
+                fprintf(f.out, ",%.0f", v);
+            else
+                fprintf(f.out, ",%.17g", v);
+        }
+        for (int t = 0; t < TYPE_COUNT; t++)
+            fprintf(f.out, ",%.17g", o->totals.cost_of[t]);
+        for (int c = 0; c < CLASS_COUNT; c++)
+            fprintf(f.out, ",%zu,%.17g", o->totals.class_count[c],
+                    o->totals.class_area[c]);
+        fprintf(f.out, "\n");
+    }
+    free(rows);
+    return outfile_commit(&f, err);
+}

@@ -1,0 +1,105 @@
+/*
+ * study_export.h: a stored option or run out of Facet, as files: what
+ * `facet export`, `facet plot` and the TUI's export keys all do.
+ *
+ * An option goes out as OBJ + MTL (core/out/export_obj.h), a CSV panel
+ * schedule and JSON (core/out/report.h) and an SVG panel map
+ * (core/out/svg_map.h); a run as an SVG scatter (core/out/svg_plot.h). Every
+ * file is opened (as FILE.partial) before any work and renamed into place
+ * only when all of them are written, so an export that fails leaves no file
+ * behind, new or old; an existing file is refused unless force is set.
+ */
+#ifndef FACET_STUDY_EXPORT_H
+#define FACET_STUDY_EXPORT_H
+
+#include "core/panel/panel_geometry.h"
+#include "core/out/report.h"
+#include "core/surface/surface.h"
+#include "core/out/svg_map.h"
+#include "store/store.h"
+
+/* A stored option with what showing or exporting it needs. */
+struct study_option {
+    struct run_info run;
+    struct option_row row;
+    struct classify_options classify;  /* the run's, at the option's
+                                          threshold */
+    struct panelization panels;
+    struct option_totals totals;
+    /* With geometry only (the surface file is opened for it): */
+    struct surface surface;
+    struct panel_geometry geometry;
+    int have_surface, have_geometry;
+};
+
+/* Reads option number of run into *out (caller-owned, released with
+ * study_option_free, also after a failure): its run, row and classify
+ * settings, its panels (computed and stored first when not stored), and
+ * with geometry set the panels' surface patches too. */
+int study_option_load(struct store *store, int64_t run, int64_t number,
+                      int geometry, struct study_option *out,
+                      struct facet_error *err);
+void study_option_free(struct study_option *option);
+
+/* What report_json writes about the option's surface. */
+void study_option_source(const struct study_option *option,
+                         struct report_source *out);
+
+enum export_file { EXPORT_OBJ, EXPORT_MTL, EXPORT_CSV, EXPORT_TOTALS,
+                   EXPORT_JSON, EXPORT_SVG, EXPORT_FILES };
+
+struct export_request {
+    const char *obj, *csv, *json, *svg;   /* paths; NULL: not wanted */
+    int force;                            /* overwrite existing files */
+    struct svg_map_options map;           /* view and colouring of the SVG */
+    /* Set by study_export: the paths written, in the order written (the
+     * MTL is obj's name with .mtl, the CSV's totals csv's name less .csv
+     * with -totals.csv), "" for those not wanted. */
+    char written[EXPORT_FILES][4096];
+};
+
+/* Writes the files request asks for of option number of run. Panels not
+ * stored yet are computed and stored first (study_option_panels); the OBJ
+ * and the SVG need the surface file, which must be unchanged. Returns
+ * FACET_OK, FACET_EINPUT (no such run or option, a file that exists, a
+ * path that cannot be written, no file asked for) or FACET_EWORK. */
+int study_export(struct store *store, int64_t run, int64_t number,
+                 struct export_request *request, struct facet_error *err);
+
+/* What a scatter of runs shows: option columns (store_option_columns) */
+struct plot_request {
+    const int64_t *runs;    /* the runs to overlay, one colour each */
+    int nruns;              /* 1 to PLOT_MAX_RUNS */
+    const char *x, *y;      /* columns across and up */
+    const char *size;       /* bubble size column, or NULL for dots */
+    const char *title;      /* or NULL */
+    int force;
+    const struct filter *where;  /* the options of each run to plot; NULL:
+                                    every one */
+    int pareto_only;        /* rank 1 only */
+};
+
+#define PLOT_MAX_RUNS 8
+
+/* Writes the scatter of the request's runs to path: one circle per
+ * option, Pareto options highlighted and joined by the front, the knee
+ * marked, axes with units. FACET_EINPUT for an unknown run or column, a
+ * run without options, a path that exists or cannot be written. */
+int study_plot(struct store *store, const struct plot_request *request,
+               const char *path, struct facet_error *err);
+
+/* Writes options numbers[0..n) of run to path as CSV, one row each in
+ * the order given, with a header: run, then every option column of
+ * store_option_columns, the cost per type (fp_cost, sp_cost, dp_cost)
+ * and the count and area per class (CLASS_count, CLASS_area), as the
+ * options table holds them (crowding empty where infinite). A path that
+ * exists is refused unless force. FACET_EINPUT for an unknown option. */
+int study_export_options_csv(struct store *store, int64_t run,
+                             const int64_t *numbers, size_t n,
+                             const char *path, int force,
+                             struct facet_error *err);
+
+/* The unit of an option column ("USD", "m", "m^2", "mm", "" for counts). */
+const char *study_column_unit(const char *column);
+
+#endif

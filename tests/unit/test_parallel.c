@@ -1,0 +1,64 @@
+/*
+ * test_parallel.c: the one CPU count and the one thread fan-out of Facet
+ * (core/base/parallel.h), which curvature, the UV check, the OBJ reader,
+ * `facet optimize` and the TUI's New run all use: the count is the online
+ * CPUs as sysconf reports them, clamped to [1, limit]; every job runs
+ * exactly once, job 0 on the calling thread.
+ */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <cmocka.h>
+
+#include <pthread.h>
+#include <unistd.h>
+
+#include "core/base/parallel.h"
+
+static void test_cpus_clamped(void **state)
+{
+    (void)state;
+    long online = sysconf(_SC_NPROCESSORS_ONLN);
+    assert_int_equal(parallel_cpus(1), 1);
+    for (int limit = 1; limit <= 2 * PARALLEL_MAX; limit++) {
+        long expect = online < 1 ? 1 : online < limit ? online : limit;
+        assert_int_equal(parallel_cpus(limit), expect);
+    }
+}
+
+struct job {
+    int runs;
+    pthread_t thread;
+};
+
+static void run_job(void *argument)
+{
+    struct job *job = argument;
+    job->runs++;
+    job->thread = pthread_self();
+}
+
+static void test_every_job_once(void **state)
+{
+    (void)state;
+    static const int counts[] = {0, 1, 2, 7, PARALLEL_MAX};
+    for (size_t c = 0; c < sizeof counts / sizeof counts[0]; c++) {
+        struct job job[PARALLEL_MAX + 1] = {{0}};
+        parallel_run(job, sizeof job[0], counts[c], run_job);
+        for (int k = 0; k < counts[c]; k++)
+            assert_int_equal(job[k].runs, 1);
+        assert_int_equal(job[counts[c]].runs, 0);
+        if (counts[c] > 0)
+            assert_true(pthread_equal(job[0].thread, pthread_self()));
+    }
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_cpus_clamped),
+        cmocka_unit_test(test_every_job_once),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
