@@ -23,9 +23,6 @@
 #include "core/obj/infile.h"
 #include "study/study.h"
 
-/* The largest space the exhaustive method takes by default. */
-#define EXHAUSTIVE_DEFAULT_LIMIT 100000
-
 /* --- what the user sees while it runs --- */
 
 struct optimize_view {
@@ -105,9 +102,7 @@ static int parse_search(const struct search_flags *f,
         if ((rc = optimize_method_parse(f->method, &s->method, err)))
             return rc;
     } else {
-        s->method = !continuous && design_space_size(&s->space) <=
-                                       EXHAUSTIVE_DEFAULT_LIMIT
-                        ? METHOD_EXHAUSTIVE : METHOD_NSGA2;
+        s->method = study_auto_method(&s->space);
     }
     if (s->method == METHOD_EXHAUSTIVE && continuous)
         return facet_error_set(err, FACET_EINPUT,

@@ -3,7 +3,7 @@
  *
  * Text is lexed into tokens, parsed by recursive descent into a small tree
  * held in one array, and that tree is written back three ways: the text
- * Facet shows (filter_text), the SQL fragment store.c runs (filter_sql),
+ * Facet shows (filter_text), the SQL fragment the store runs (filter_sql, in store_browse.c and store_option.c),
  * and an in-memory evaluator (filter_match) that follows SQL's three-valued
  * logic so that both always select the same options. The option columns a
  * filter or sort may name are defined here too (store_option_columns).

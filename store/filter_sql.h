@@ -1,7 +1,7 @@
 /*
  * filter_sql.h: a compiled --where filter as SQL, for store/ only.
  *
- * store.c appends the fragment to its own WHERE clause and binds the
+ * The store (store_browse.c, store_option.c) appends the fragment to its own WHERE clause and binds the
  * filter's numbers as parameters; no text the user typed reaches SQL (the
  * column names come from store_option_columns, the numbers are bound).
  * A column that is NULL makes a comparison unknown, with SQL's usual

@@ -663,6 +663,14 @@ static void collect_warnings(const struct surface *surface,
     }
 }
 
+enum optimize_method study_auto_method(const struct design_space *space)
+{
+    int continuous = space->t_max_mm > space->t_min_mm &&
+                     space->t_step_mm == 0;
+    return !continuous && design_space_size(space) <= STUDY_EXHAUSTIVE_LIMIT
+               ? METHOD_EXHAUSTIVE : METHOD_NSGA2;
+}
+
 int study_request_check(const struct study_request *request,
                         struct facet_error *err)
 {

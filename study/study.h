@@ -59,6 +59,15 @@ struct study_request {
 #define STUDY_PANEL_BYTES 320
 #define STUDY_OPTION_BYTES 400
 
+/* The largest space the automatic method searches exhaustively; a larger
+ * one, or a continuous threshold range, goes to NSGA-II. */
+#define STUDY_EXHAUSTIVE_LIMIT 100000
+
+/* The method "auto" (or no method given) means for space: exhaustive up
+ * to STUDY_EXHAUSTIVE_LIMIT points with a stepped (or single) threshold,
+ * NSGA-II otherwise. The CLI and the TUI's New run both ask this. */
+enum optimize_method study_auto_method(const struct design_space *space);
+
 /* Checks what request asks for before anything is opened or created: a
  * name that is clean UTF-8 text of at most 127 bytes, a sound design
  * space. FACET_EINPUT naming what is wrong. study_start checks it too. */

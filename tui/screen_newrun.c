@@ -190,8 +190,7 @@ static int build(struct newrun_screen *s, struct study_request *r,
                      o->space.t_step_mm == 0;
     const char *method = s->field[F_METHOD].text;
     if (strcmp(method, "auto") == 0 || method[0] == '\0')
-        o->method = !continuous && design_space_size(&o->space) <= 100000
-                        ? METHOD_EXHAUSTIVE : METHOD_NSGA2;
+        o->method = study_auto_method(&o->space);
     else if ((rc = optimize_method_parse(method, &o->method, err)))
         return rc;
     if (o->method == METHOD_EXHAUSTIVE && continuous)

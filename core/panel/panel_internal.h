@@ -1,6 +1,7 @@
 /*
- * panel_internal.h: what the two ways of measuring panels share (internal to
- * panel.c and panel_fast.c; not part of Facet's interface).
+ * panel_internal.h: what the three ways of measuring panels share (the
+ * straightforward clipping, the single-grid way and the lattice; internal
+ * to core/panel/, not part of Facet's interface).
  *
  * A panelization is measured in two passes over the surface. Pass 1 sums
  * each cell's area and moments (struct cell_moments); panels_fit turns them
