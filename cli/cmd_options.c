@@ -12,71 +12,60 @@
 #include "command.h"
 #include "core/out/json.h"
 #include "core/base/numformat.h"
+#include "option_table.h"
 #include "text_table.h"
 #include "store/filter.h"
 #include "store/store.h"
 
 enum listing_format { LISTING_TABLE, LISTING_JSON, LISTING_CSV };
 
+/* The human table: the objectives and the design variables stay longest,
+ * the FP and SP areas go first on a narrow terminal; the knee is marked
+ * last. */
+static const struct option_table_column listed[] = {
+    {"run", 4, 2},
+    {"number", 6, 0},
+    {NULL, 1, 0},
+    {"planarity", 11, 9},
+    {"dp_area", 10, 9},
+    {"cost", 14, 9},
+    {"fp_area", 10, 3},
+    {"sp_area", 10, 3},
+    {"nu", 4, 8},
+    {"nv", 4, 8},
+    {"threshold_mm", 7, 7},
+    {"rank", 4, 5},
+    {"feasible", 3, 4},
+};
+enum { LISTED = sizeof listed / sizeof listed[0] };
+
 struct listing {
     enum listing_format format;
     struct json_writer json;
+    struct text_column heads[LISTED + 1];  /* listed, then the knee mark */
     struct text_table table;
     int64_t rows;
 };
-
-/* The human table: the objectives and the design variables stay longest,
- * the FP and SP areas go first on a narrow terminal. */
-static const struct text_column option_columns[] = {
-    {"run", "", 4, 0, 2, 0},
-    {"No.", "", 6, 0, 0, 0},
-    {"", "", 1, 0, 0, 0},
-    {"planarity", "m", 11, 0, 9, 0},
-    {"DP area", "m^2", 10, 0, 9, 0},
-    {"total cost", "USD", 14, 0, 9, 0},
-    {"FP area", "m^2", 10, 0, 3, 0},
-    {"SP area", "m^2", 10, 0, 3, 0},
-    {"U", "", 4, 0, 8, 0},
-    {"V", "", 4, 0, 8, 0},
-    {"t", "mm", 7, 0, 7, 0},
-    {"rank", "", 4, 0, 5, 0},
-    {"ok", "", 3, 0, 4, 0},
-    {"", "", 4, 1, 6, 0},
-};
-enum { OPTION_COLUMNS = sizeof option_columns / sizeof option_columns[0] };
 
 static int list_row(void *context, int64_t run, const struct option_row *o)
 {
     struct listing *l = context;
     if (l->format == LISTING_TABLE) {
-        char cost[64], id[24], number[24], planarity[32], dp[32], fp[32];
-        char sp[32], u[16], v[16], t[32], rank[16];
-        number_grouped(cost, sizeof cost, o->totals.cost, 0);
-        snprintf(id, sizeof id, "%lld", (long long)run);
-        snprintf(number, sizeof number, "%lld", (long long)o->number);
-        snprintf(planarity, sizeof planarity, "%.4f", o->totals.planarity);
-        snprintf(dp, sizeof dp, "%.2f", o->totals.area_of[TYPE_DP]);
-        snprintf(fp, sizeof fp, "%.2f", o->totals.area_of[TYPE_FP]);
-        snprintf(sp, sizeof sp, "%.2f", o->totals.area_of[TYPE_SP]);
-        snprintf(u, sizeof u, "%d", o->nu);
-        snprintf(v, sizeof v, "%d", o->nv);
-        snprintf(t, sizeof t, "%.2f", o->threshold_mm);
-        snprintf(rank, sizeof rank, "%d", o->rank);
-        const char *cell[OPTION_COLUMNS] = {
-            id, number, o->rank == 1 ? "*" : "", planarity, dp, cost, fp, sp,
-            u, v, t, rank, o->totals.feasible ? "yes" : "no",
-            o->knee ? "knee" : ""};
+        char text[LISTED][OPTION_TABLE_CELL];
+        const char *cell[LISTED + 1];
+        option_table_cells(listed, LISTED, run, o, text, cell);
+        cell[LISTED] = o->knee ? "knee" : "";
         text_table_row(stdout, &l->table, cell);
     } else if (l->format == LISTING_JSON) {
         json_begin_object(&l->json);
         json_key(&l->json, "run");
         json_integer(&l->json, run);
-        for (int k = 0; store_option_columns[k] != NULL; k++) {
-            const char *name = store_option_columns[k];
-            if (strcmp(name, "run") == 0)
+        for (int k = 0; k < STORE_OPTION_COLUMNS; k++) {
+            const struct option_column *c = &store_option_columns[k];
+            if (c->writer == WRITTEN_AS_KEY)
                 continue;
-            double value = store_option_value(o, name);
-            json_key(&l->json, name);
+            double value = store_option_column_value(c, o);
+            json_key(&l->json, c->name);
             if (!isfinite(value))
                 json_null(&l->json);  /* crowding at a front's end */
             else if (value == floor(value) && fabs(value) < 1e15)
@@ -87,10 +76,11 @@ static int list_row(void *context, int64_t run, const struct option_row *o)
         json_end_object(&l->json);
     } else {
         printf("%lld", (long long)run);
-        for (int k = 0; store_option_columns[k] != NULL; k++) {
-            if (strcmp(store_option_columns[k], "run") == 0)
+        for (int k = 0; k < STORE_OPTION_COLUMNS; k++) {
+            const struct option_column *c = &store_option_columns[k];
+            if (c->writer == WRITTEN_AS_KEY)
                 continue;
-            double value = store_option_value(o, store_option_columns[k]);
+            double value = store_option_column_value(c, o);
             char text[NUMBER_EXACT_SIZE] = "";
             /* Crowding at a front's end is infinite: an empty field, as
              * SQL's NULL and JSON's null say it. */
@@ -155,8 +145,10 @@ static int options_main(int argc, char **argv, struct facet_error *err)
     listing.format = json ? LISTING_JSON : csv ? LISTING_CSV : LISTING_TABLE;
     if (rc == FACET_OK) {
         if (listing.format == LISTING_TABLE) {
-            listing.table = (struct text_table){option_columns,
-                                                OPTION_COLUMNS, {0}, 0, 0};
+            option_table_heads(listed, LISTED, listing.heads);
+            listing.heads[LISTED] = (struct text_column){"", "", 4, 1, 6, 0};
+            listing.table = (struct text_table){listing.heads, LISTED + 1,
+                                                {0}, 0, 0};
             text_table_fit(&listing.table, text_table_width(stdout, wide));
             text_table_head(stdout, &listing.table);
         } else if (listing.format == LISTING_JSON) {
@@ -164,9 +156,9 @@ static int options_main(int argc, char **argv, struct facet_error *err)
             json_begin_array(&listing.json);
         } else {
             printf("run");
-            for (int k = 0; store_option_columns[k] != NULL; k++)
-                if (strcmp(store_option_columns[k], "run") != 0)
-                    printf(",%s", store_option_columns[k]);
+            for (int k = 0; k < STORE_OPTION_COLUMNS; k++)
+                if (store_option_columns[k].writer != WRITTEN_AS_KEY)
+                    printf(",%s", store_option_columns[k].name);
             putchar('\n');
         }
         struct option_query q = {run_id, pareto, filter, sort, desc, rows, 0};

@@ -11,6 +11,7 @@
 #include "core/base/text.h"
 #include "core/search/ties.h"
 #include "study/study.h"
+#include "option_table.h"
 #include "text_table.h"
 
 /* The listed options cheapest first, costs equal but for rounding
@@ -36,6 +37,22 @@ static int order_by_cost(const struct option_row *listed, size_t n,
     free(keys);
     return rc;
 }
+
+/* The paper's Table 2, then the knee and infeasible marks. */
+static const struct option_table_column table_columns[] = {
+    {"number", 6, 0},
+    {NULL, 1, 0},
+    {"planarity", 11, 9},
+    {"dp_area", 10, 9},
+    {"cost", 14, 9},
+    {"fp_area", 10, 3},
+    {"sp_area", 10, 2},
+    {"nu", 4, 8},
+    {"nv", 4, 8},
+    {"threshold_mm", 7, 7},
+    {"rank", 4, 5},
+};
+enum { TABLE_COLUMNS = sizeof table_columns / sizeof table_columns[0] };
 
 int run_table_print(FILE *out, struct store *store, const char *db,
                     int64_t run, long rows, int wide, struct facet_error *err)
@@ -82,44 +99,22 @@ int run_table_print(FILE *out, struct store *store, const char *db,
         free(listed);
         return facet_error_set(err, FACET_EWORK, "out of memory (table)");
     }
-    static const struct text_column columns[] = {
-        {"No.", "", 6, 0, 0, 0},
-        {"", "", 1, 0, 0, 0},
-        {"planarity", "m", 11, 0, 9, 0},
-        {"DP area", "m^2", 10, 0, 9, 0},
-        {"total cost", "USD", 14, 0, 9, 0},
-        {"FP area", "m^2", 10, 0, 3, 0},
-        {"SP area", "m^2", 10, 0, 2, 0},
-        {"U", "", 4, 0, 8, 0},
-        {"V", "", 4, 0, 8, 0},
-        {"t", "mm", 7, 0, 7, 0},
-        {"rank", "", 4, 0, 5, 0},
-        {"", "", 15, 1, 9, 0},
-    };
-    struct text_table t = {columns, sizeof columns / sizeof columns[0],
-                           {0}, 0, 0};
+    struct text_column heads[TABLE_COLUMNS + 1];
+    option_table_heads(table_columns, TABLE_COLUMNS, heads);
+    heads[TABLE_COLUMNS] = (struct text_column){"", "", 15, 1, 9, 0};
+    struct text_table t = {heads, TABLE_COLUMNS + 1, {0}, 0, 0};
     text_table_fit(&t, text_table_width(out, wide));
     fputc('\n', out);
     text_table_head(out, &t);
     for (size_t k = 0; k < n; k++) {
         const struct option_row *o = &listed[order[k]];
-        char number[24], planarity[32], dp[32], fp[32], sp[32], u[16], v[16];
-        char th[32], rank[16], marks[32];
-        number_grouped(cost, sizeof cost, o->totals.cost, 0);
-        snprintf(number, sizeof number, "%lld", (long long)o->number);
-        snprintf(planarity, sizeof planarity, "%.3f", o->totals.planarity);
-        snprintf(dp, sizeof dp, "%.1f", o->totals.area_of[TYPE_DP]);
-        snprintf(fp, sizeof fp, "%.1f", o->totals.area_of[TYPE_FP]);
-        snprintf(sp, sizeof sp, "%.1f", o->totals.area_of[TYPE_SP]);
-        snprintf(u, sizeof u, "%d", o->nu);
-        snprintf(v, sizeof v, "%d", o->nv);
-        snprintf(th, sizeof th, "%.2f", o->threshold_mm);
-        snprintf(rank, sizeof rank, "%d", o->rank);
+        char text[TABLE_COLUMNS][OPTION_TABLE_CELL], marks[32];
+        const char *cell[TABLE_COLUMNS + 1];
+        option_table_cells(table_columns, TABLE_COLUMNS, run, o, text, cell);
         snprintf(marks, sizeof marks, "%s%s%s", o->knee ? "knee" : "",
                  o->knee && !o->totals.feasible ? " " : "",
                  o->totals.feasible ? "" : "infeasible");
-        const char *cell[] = {number, o->rank == 1 ? "*" : "", planarity,
-                              dp, cost, fp, sp, u, v, th, rank, marks};
+        cell[TABLE_COLUMNS] = marks;
         text_table_row(out, &t, cell);
     }
     if ((int64_t)n < info.options) {

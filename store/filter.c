@@ -5,10 +5,9 @@
  * held in one array, and that tree is written back three ways: the text
  * Facet shows (filter_text), the SQL fragment the store runs (filter_sql, in store_browse.c and store_option.c),
  * and an in-memory evaluator (filter_match) that follows SQL's three-valued
- * logic so that both always select the same options. The option columns a
- * filter or sort may name are defined here too (store_option_columns).
- * This file runs no SQL and knows nothing of what the columns mean beyond
- * which of them are yes/no.
+ * logic so that both always select the same options. The columns a filter
+ * may name, which of them are yes/no and a number to compare each with are
+ * the registry's (store/option_column.h). This file runs no SQL.
  *
  * Hostile text is bounded before any work: at most FILTER_MAX_LENGTH bytes,
  * at most FILTER_MAX_DEPTH nested '(' and 'not' (recursion depth), and
@@ -29,38 +28,7 @@
 #include "core/base/numparse.h"
 #include "core/base/spelling.h"
 
-const char *const store_option_columns[] = {
-    "number", "generation", "nu", "nv", "threshold_mm", "panels",
-    "fp_count", "sp_count", "dp_count", "fp_area", "sp_area", "dp_area",
-    "area", "fp_cost", "sp_cost", "dp_cost", "cost", "planarity",
-    "max_deviation", "max_panel_area", "p_dist", "feasible",
-    "convex_feature_curve_count", "convex_feature_curve_area",
-    "saddle_count", "saddle_area",
-    "concave_feature_curve_count", "concave_feature_curve_area",
-    "ruled_convex_count", "ruled_convex_area", "flat_count", "flat_area",
-    "ruled_concave_count", "ruled_concave_area",
-    "convex_round_count", "convex_round_area",
-    "concave_round_count", "concave_round_area",
-    "rank", "crowding", "knee", "run", NULL,
-};
-
 enum { COLUMN_COUNT = STORE_OPTION_COLUMNS };
-_Static_assert(sizeof store_option_columns / sizeof *store_option_columns ==
-                   COLUMN_COUNT + 1,
-               "column_example must follow store_option_columns");
-
-/* A plausible number to compare each column with, for the message that
- * tells a user to compare a column that is not yes/no; NULL marks the
- * yes/no columns, which may stand alone. */
-static const char *const column_example[COLUMN_COUNT] = {
-    "10", "5", "30", "30", "5", "500",
-    "100", "100", "100", "100", "100", "900",
-    "1200", "5e5", "5e5", "5e5", "1e6", "0.01",
-    "0.01", "4", "0.5", NULL,
-    "100", "100", "100", "100", "100", "100", "100", "100",
-    "100", "100", "100", "100", "100", "100", "100", "100",
-    "2", "0.5", NULL, "1",
-};
 
 /* Other names a user may type for a column. */
 static const struct {
@@ -463,7 +431,7 @@ static int new_node(struct parser *p, enum node_kind kind)
 static int column_index(const char *name)
 {
     for (int k = 0; k < COLUMN_COUNT; k++)
-        if (strcmp(store_option_columns[k], name) == 0)
+        if (strcmp(store_option_columns[k].name, name) == 0)
             return k;
     return COLUMN_UNKNOWN;
 }
@@ -474,7 +442,7 @@ static int resolve(const struct parser *p, const struct token *t)
 {
     const char *s = p->text + t->at;
     for (int k = 0; k < COLUMN_COUNT; k++)
-        if (word_is(s, t->length, store_option_columns[k]))
+        if (word_is(s, t->length, store_option_columns[k].name))
             return k;
     for (size_t k = 0; k < ALIAS_COUNT; k++)
         if (word_is(s, t->length, aliases[k].name))
@@ -496,7 +464,7 @@ static int fail_unknown_name(struct parser *p, const struct token *t)
     const char *names[COLUMN_COUNT + ALIAS_COUNT + 1];
     size_t n = 0;
     for (int k = 0; k < COLUMN_COUNT; k++)
-        names[n++] = store_option_columns[k];
+        names[n++] = store_option_columns[k].name;
     for (size_t k = 0; k < ALIAS_COUNT; k++)
         names[n++] = aliases[k].name;
     names[n++] = "pareto";
@@ -618,12 +586,14 @@ static int parse_term(struct parser *p, int *out)
         }
         int ends = op->kind == TOK_END || op->kind == TOK_AND ||
                    op->kind == TOK_OR || op->kind == TOK_RPAREN;
-        int yes_no = column == COLUMN_PARETO || column_example[column] == NULL;
+        int yes_no = column == COLUMN_PARETO ||
+                     store_option_columns[column].yes_no;
         if (!yes_no && ends)
             return fail_at(p, t->at, "'%s' is not a yes/no column; compare "
                                      "it, e.g. %s < %s",
-                           shown(p, t, buf), store_option_columns[column],
-                           column_example[column]);
+                           shown(p, t, buf),
+                           store_option_columns[column].name,
+                           store_option_columns[column].example);
         if (!yes_no)
             return fail_at(p, op->at, "expected a comparison (<, <=, >, >=, "
                                       "=, !=) after '%s'",
@@ -799,14 +769,14 @@ static void write_text(const struct filter *f, int k, int operand,
     switch (n->kind) {
     case NODE_COMPARE:
         number_exact(number, f->params[n->param]);
-        put(b, store_option_columns[n->column]);
+        put(b, store_option_columns[n->column].name);
         put(b, " ");
         put(b, op_text[n->op]);
         put(b, " ");
         put(b, number);
         break;
     case NODE_YES_NO:
-        put(b, store_option_columns[n->column]);
+        put(b, store_option_columns[n->column].name);
         break;
     case NODE_PARETO:
         put(b, "pareto");
@@ -854,29 +824,28 @@ static void write_sql(const struct filter *f, int k, int first_param,
 {
     const char *plus = scan ? "+" : "";
     const struct node *n = &f->nodes[k];
+    const char *column = n->column >= 0 ? store_option_columns[n->column].name
+                                        : NULL;
     char text[192];
     switch (n->kind) {
     case NODE_COMPARE:
         /* crowding is stored NULL at a front's ends, where it is
          * infinite, and rank NULL until the run is ranked: compare them
          * as the values an option's row holds (filter_match's). */
-        if (strcmp(store_option_columns[n->column], "crowding") == 0 ||
-            strcmp(store_option_columns[n->column], "rank") == 0)
+        if (strcmp(column, "crowding") == 0 || strcmp(column, "rank") == 0)
             snprintf(text, sizeof text, "%s %s ?%lld",
-                     strcmp(store_option_columns[n->column], "rank") == 0
-                         ? store_rank_sql
-                         : store_crowding_sql,
+                     strcmp(column, "rank") == 0 ? store_rank_sql
+                                                 : store_crowding_sql,
                      op_text[n->op],
                      (long long)first_param + (long long)n->param);
         else
-            snprintf(text, sizeof text, "%s\"%s\" %s ?%lld", plus,
-                     store_option_columns[n->column], op_text[n->op],
+            snprintf(text, sizeof text, "%s\"%s\" %s ?%lld", plus, column,
+                     op_text[n->op],
                      (long long)first_param + (long long)n->param);
         put(b, text);
         break;
     case NODE_YES_NO:
-        snprintf(text, sizeof text, "%s\"%s\" != 0", plus,
-                 store_option_columns[n->column]);
+        snprintf(text, sizeof text, "%s\"%s\" != 0", plus, column);
         put(b, text);
         break;
     case NODE_PARETO:
@@ -1066,15 +1035,14 @@ static enum truth compare(enum op op, double a, double b)
 static enum truth evaluate(const struct match *m, int k)
 {
     const struct node *n = &m->filter->nodes[k];
+    const char *column = n->column >= 0 ? store_option_columns[n->column].name
+                                        : NULL;
     switch (n->kind) {
     case NODE_COMPARE:
-        return compare(n->op,
-                       m->value(m->context, store_option_columns[n->column]),
+        return compare(n->op, m->value(m->context, column),
                        m->filter->params[n->param]);
     case NODE_YES_NO:
-        return compare(OP_NE,
-                       m->value(m->context, store_option_columns[n->column]),
-                       0);
+        return compare(OP_NE, m->value(m->context, column), 0);
     case NODE_PARETO:
         return compare(OP_EQ, m->value(m->context, "rank"), 1);
     case NODE_NOT: {

@@ -22,6 +22,7 @@
 #include "core/classify/classify.h"
 #include "core/base/error.h"
 #include "core/panel/panel.h"
+#include "store/option_column.h"
 
 struct store;  /* an open database */
 
@@ -256,21 +257,9 @@ int store_options_query_rows(struct store *store,
  * caller can refuse it before printing anything. */
 int store_options_sort_check(const char *sort, struct facet_error *err);
 
-/* The option columns a filter or sort may name, NULL-terminated: every
- * column of the options table (README), in its order but run last:
- * number, generation, nu, nv, threshold_mm, panels, fp_count, sp_count,
- * dp_count, fp_area, sp_area, dp_area, area, fp_cost, sp_cost, dp_cost,
- * cost, planarity, max_deviation, max_panel_area, p_dist, feasible,
- * CLASS_count and CLASS_area for the eight classes, rank, crowding, knee,
- * run. */
-#define STORE_OPTION_COLUMNS 42
-extern const char *const store_option_columns[];
-
-/* The value of column (a name of store_option_columns other than run) of
- * option, booleans as 0 or 1; NAN for a name it does not know. The TUI and
- * the CLI read option columns by name through this one function. */
-double store_option_value(const struct option_row *option,
-                          const char *column);
+/* The columns of an option (their names, what a sort or filter may name,
+ * how each is shown, and store_option_value) are the registry of
+ * store/option_column.h, which this header includes. */
 
 /* --- browsing one run (the TUI): keyset pages, counts, ranges ---
  * These serve a table that shows a page of a million options at a time:

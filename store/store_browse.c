@@ -41,9 +41,9 @@ static const char *key_expr(const char *column)
     for (size_t k = 0; k < sizeof special / sizeof special[0]; k++)
         if (strcmp(column, special[k][0]) == 0)
             return special[k][1];
-    for (int k = 0; store_option_columns[k] != NULL; k++)
-        if (strcmp(store_option_columns[k], "run") != 0 &&
-            strcmp(store_option_columns[k], column) == 0)
+    for (int k = 0; k < STORE_OPTION_COLUMNS; k++)
+        if (strcmp(store_option_columns[k].name, "run") != 0 &&
+            strcmp(store_option_columns[k].name, column) == 0)
             return "";  /* a plain column: key_sql quotes it */
     return NULL;
 }

@@ -15,90 +15,87 @@
 #include "core/search/ties.h"
 #include "filter_sql.h"
 
-/* Every column of options, in the order option_bind writes them and
- * option_from_row reads them (after run). */
-#define OPTION_COLUMNS \
-    "number, generation, nu, nv, threshold_mm, panels, fp_count," \
-    " sp_count, dp_count, fp_area, sp_area, dp_area, area, fp_cost," \
-    " sp_cost, dp_cost, cost, planarity, max_deviation, max_panel_area," \
-    " p_dist, feasible, convex_feature_curve_count," \
-    " convex_feature_curve_area, saddle_count, saddle_area," \
-    " concave_feature_curve_count, concave_feature_curve_area," \
-    " ruled_convex_count, ruled_convex_area, flat_count, flat_area," \
-    " ruled_concave_count, ruled_concave_area, convex_round_count," \
-    " convex_round_area, concave_round_count, concave_round_area," \
-    " coalesce(rank, 0), crowding, knee"
-#define OPTION_VALUES 38  /* columns an insert binds (not rank..knee) */
+/* The SQL of the columns an option_row holds, from the registry
+ * (option_column.h) in its order, into sql (size bytes): "number,
+ * generation, ..., rank, crowding, knee" for a SELECT, with rank as
+ * store_rank_sql (0 until ranked); insert: only the columns written with
+ * the option, for an INSERT. Returns how many. */
+static int option_columns_sql(char *sql, size_t size, int insert)
+{
+    size_t len = 0;
+    int n = 0;
+    sql[0] = '\0';
+    for (int k = 0; k < STORE_OPTION_COLUMNS; k++) {
+        const struct option_column *c = &store_option_columns[k];
+        if (c->writer == WRITTEN_AS_KEY ||
+            (insert && c->writer != WRITTEN_WITH_OPTION))
+            continue;
+        const char *sql_of = !insert && strcmp(c->name, "rank") == 0
+                                 ? store_rank_sql : c->name;
+        len += (size_t)snprintf(sql + len, size - len, "%s%s",
+                                n ? ", " : "", sql_of);
+        assert(len < size);
+        n++;
+    }
+    return n;
+}
 
-/* Binds run and row's values to ?1..?(1 + OPTION_VALUES). */
+/* Room for the SQL of every column, with room to grow. */
+#define OPTION_COLUMNS_SQL 4096
+
+/* Binds run to ?1 and row's values of the columns written with the option
+ * to ?2.. in the order of option_columns_sql. */
 static void option_bind(sqlite3_stmt *s, int64_t run,
                         const struct option_row *o)
 {
-    const struct option_totals *t = &o->totals;
-    int c = 1;
-    sqlite3_bind_int64(s, c++, run);
-    sqlite3_bind_int64(s, c++, o->number);
-    sqlite3_bind_int(s, c++, o->generation);
-    sqlite3_bind_int(s, c++, o->nu);
-    sqlite3_bind_int(s, c++, o->nv);
-    sqlite3_bind_double(s, c++, o->threshold_mm);
-    sqlite3_bind_int64(s, c++, (sqlite3_int64)t->panels);
-    for (int k = 0; k < TYPE_COUNT; k++)
-        sqlite3_bind_int64(s, c++, (sqlite3_int64)t->count[k]);
-    for (int k = 0; k < TYPE_COUNT; k++)
-        sqlite3_bind_double(s, c++, t->area_of[k]);
-    sqlite3_bind_double(s, c++, t->area);
-    for (int k = 0; k < TYPE_COUNT; k++)
-        sqlite3_bind_double(s, c++, t->cost_of[k]);
-    sqlite3_bind_double(s, c++, t->cost);
-    sqlite3_bind_double(s, c++, t->planarity);
-    sqlite3_bind_double(s, c++, t->max_deviation);
-    sqlite3_bind_double(s, c++, t->max_panel_area);
-    sqlite3_bind_double(s, c++, t->p_dist);
-    sqlite3_bind_int(s, c++, t->feasible);
-    for (int k = 0; k < CLASS_COUNT; k++) {
-        sqlite3_bind_int64(s, c++, (sqlite3_int64)t->class_count[k]);
-        sqlite3_bind_double(s, c++, t->class_area[k]);
+    int p = 1;
+    sqlite3_bind_int64(s, p++, run);
+    for (int k = 0; k < STORE_OPTION_COLUMNS; k++) {
+        const struct option_column *c = &store_option_columns[k];
+        if (c->writer != WRITTEN_WITH_OPTION)
+            continue;
+        const void *field = (const char *)o + c->offset;
+        if (c->field == FIELD_DOUBLE)
+            sqlite3_bind_double(s, p++, *(const double *)field);
+        else if (c->field == FIELD_INT)
+            sqlite3_bind_int(s, p++, *(const int *)field);
+        else if (c->field == FIELD_INT64)
+            sqlite3_bind_int64(s, p++, *(const int64_t *)field);
+        else
+            sqlite3_bind_int64(s, p++,
+                               (sqlite3_int64)*(const size_t *)field);
     }
 }
 
-/* Reads a row of OPTION_COLUMNS starting at column first. */
+/* Reads a row of the columns of option_columns_sql (SELECT) starting at
+ * result column first. */
 static void option_from_row(sqlite3_stmt *s, int first,
                             struct option_row *o)
 {
-    struct option_totals *t = &o->totals;
     memset(o, 0, sizeof *o);
-    int c = first;
-    o->number = sqlite3_column_int64(s, c++);
-    o->generation = sqlite3_column_int(s, c++);
-    o->nu = sqlite3_column_int(s, c++);
-    o->nv = sqlite3_column_int(s, c++);
-    o->threshold_mm = sqlite3_column_double(s, c++);
-    t->panels = (size_t)sqlite3_column_int64(s, c++);
-    for (int k = 0; k < TYPE_COUNT; k++)
-        t->count[k] = (size_t)sqlite3_column_int64(s, c++);
-    for (int k = 0; k < TYPE_COUNT; k++)
-        t->area_of[k] = sqlite3_column_double(s, c++);
-    t->area = sqlite3_column_double(s, c++);
-    for (int k = 0; k < TYPE_COUNT; k++)
-        t->cost_of[k] = sqlite3_column_double(s, c++);
-    t->cost = sqlite3_column_double(s, c++);
-    t->planarity = sqlite3_column_double(s, c++);
-    t->max_deviation = sqlite3_column_double(s, c++);
-    t->max_panel_area = sqlite3_column_double(s, c++);
-    t->p_dist = sqlite3_column_double(s, c++);
-    t->feasible = sqlite3_column_int(s, c++);
-    for (int k = 0; k < CLASS_COUNT; k++) {
-        t->class_count[k] = (size_t)sqlite3_column_int64(s, c++);
-        t->class_area[k] = sqlite3_column_double(s, c++);
+    int c = first, crowding = -1;
+    for (int k = 0; k < STORE_OPTION_COLUMNS; k++) {
+        const struct option_column *col = &store_option_columns[k];
+        if (col->writer == WRITTEN_AS_KEY)
+            continue;
+        void *field = (char *)o + col->offset;
+        if (col->field == FIELD_DOUBLE)
+            *(double *)field = sqlite3_column_double(s, c);
+        else if (col->field == FIELD_INT)
+            *(int *)field = sqlite3_column_int(s, c);
+        else if (col->field == FIELD_INT64)
+            *(int64_t *)field = sqlite3_column_int64(s, c);
+        else
+            *(size_t *)field = (size_t)sqlite3_column_int64(s, c);
+        if (strcmp(col->name, "crowding") == 0)
+            crowding = c;
+        c++;
     }
-    o->rank = sqlite3_column_int(s, c++);
     /* Crowding is stored as NULL for +infinity: SQLite has no infinity
      * literal a user could compare against. */
-    o->crowding = sqlite3_column_type(s, c) == SQLITE_NULL && o->rank > 0
-                      ? INFINITY : sqlite3_column_double(s, c);
-    c++;
-    o->knee = sqlite3_column_int(s, c++);
+    assert(crowding >= 0);
+    if (sqlite3_column_type(s, crowding) == SQLITE_NULL && o->rank > 0)
+        o->crowding = INFINITY;
 }
 
 /* Runs the statement to completion, for statements without rows. */
@@ -118,13 +115,12 @@ int store_options_put(struct store *store, int64_t run,
 {
     int rc = FACET_OK;
     if (store->option_insert == NULL) {
-        char sql[2048];
+        char columns[OPTION_COLUMNS_SQL], sql[2 * OPTION_COLUMNS_SQL];
+        int values = option_columns_sql(columns, sizeof columns, 1);
         int len = snprintf(sql, sizeof sql,
-                           "INSERT OR IGNORE INTO options (run, %.*s)"
-                           " VALUES (?1", (int)(strstr(OPTION_COLUMNS,
-                           ", coalesce(rank") - OPTION_COLUMNS),
-                           OPTION_COLUMNS);
-        for (int k = 2; k <= 1 + OPTION_VALUES; k++)
+                           "INSERT OR IGNORE INTO options (run, %s)"
+                           " VALUES (?1", columns);
+        for (int k = 2; k <= 1 + values; k++)
             len += snprintf(sql + len, sizeof sql - (size_t)len, ", ?%d", k);
         snprintf(sql + len, sizeof sql - (size_t)len, ")");
         rc = store_prepare(store, sql, &store->option_insert,
@@ -172,10 +168,12 @@ int store_options_get(struct store *store, int64_t run,
 int store_option_get(struct store *store, int64_t run, int64_t number,
                      struct option_row *row, struct facet_error *err)
 {
+    char columns[OPTION_COLUMNS_SQL], sql[OPTION_COLUMNS_SQL + 64];
+    option_columns_sql(columns, sizeof columns, 0);
+    snprintf(sql, sizeof sql, "SELECT %s FROM options"
+             " WHERE run = ?1 AND number = ?2", columns);
     sqlite3_stmt *s;
-    int rc = store_prepare(store, "SELECT " OPTION_COLUMNS
-                           " FROM options WHERE run = ?1 AND number = ?2",
-                           &s, "reading an option", err);
+    int rc = store_prepare(store, sql, &s, "reading an option", err);
     if (rc != FACET_OK)
         return rc;
     sqlite3_bind_int64(s, 1, run);
@@ -266,34 +264,6 @@ int store_options_set_pareto(struct store *store, int64_t run,
     return rc;
 }
 
-double store_option_value(const struct option_row *o, const char *column)
-{
-    const struct option_totals *t = &o->totals;
-    /* In the order of store_option_columns. */
-    double values[STORE_OPTION_COLUMNS + 1] = {
-        (double)o->number, o->generation, o->nu, o->nv, o->threshold_mm,
-        (double)t->panels, (double)t->count[TYPE_FP],
-        (double)t->count[TYPE_SP], (double)t->count[TYPE_DP],
-        t->area_of[TYPE_FP], t->area_of[TYPE_SP], t->area_of[TYPE_DP],
-        t->area, t->cost_of[TYPE_FP], t->cost_of[TYPE_SP],
-        t->cost_of[TYPE_DP], t->cost, t->planarity, t->max_deviation,
-        t->max_panel_area, t->p_dist, t->feasible != 0};
-    int k = 22;
-    for (int c = 0; c < CLASS_COUNT; c++) {
-        values[k++] = (double)t->class_count[c];
-        values[k++] = t->class_area[c];
-    }
-    values[k++] = o->rank;
-    values[k++] = o->crowding;
-    values[k++] = o->knee != 0;
-    values[k++] = NAN;  /* run: the row does not hold it */
-    assert(k == STORE_OPTION_COLUMNS);
-    for (int c = 0; store_option_columns[c] != NULL; c++)
-        if (strcmp(store_option_columns[c], column) == 0)
-            return values[c];
-    return NAN;
-}
-
 /* --- queries --- */
 
 const char store_rank_sql[] = "ifnull(\"rank\", 0)";
@@ -302,14 +272,16 @@ const char store_crowding_sql[] =
     "ifnull(\"crowding\", CASE WHEN ifnull(\"rank\", 0) > 0 THEN 1e999"
     " ELSE 0 END)";
 
-/* Whether name is a column of store_option_columns. */
-static int known_column(const char *name, size_t length)
+/* The column of store_option_columns named by the length bytes at name,
+ * in any case, or NULL. */
+static const struct option_column *sort_column(const char *name,
+                                               size_t length)
 {
-    for (int k = 0; store_option_columns[k] != NULL; k++)
-        if (strlen(store_option_columns[k]) == length &&
-            strncasecmp(store_option_columns[k], name, length) == 0)
-            return 1;
-    return 0;
+    for (int k = 0; k < STORE_OPTION_COLUMNS; k++)
+        if (strlen(store_option_columns[k].name) == length &&
+            strncasecmp(store_option_columns[k].name, name, length) == 0)
+            return &store_option_columns[k];
+    return NULL;
 }
 
 /* Appends the ORDER BY list for sort ("cost,dp_area") to sql. */
@@ -327,11 +299,11 @@ static int order_by(const char *sort, int descending, char *sql,
         }
         while (n > 0 && p[n - 1] == ' ')
             n--;
-        if (n == 0 || !known_column(p, n)) {
-            char list[512] = "";
-            for (int k = 0; store_option_columns[k] != NULL; k++)
+        if (n == 0 || sort_column(p, n) == NULL) {
+            char list[1024] = "";
+            for (int k = 0; k < STORE_OPTION_COLUMNS; k++)
                 snprintf(list + strlen(list), sizeof list - strlen(list),
-                         "%s%s", k ? ", " : "", store_option_columns[k]);
+                         "%s%s", k ? ", " : "", store_option_columns[k].name);
             return facet_error_set(err, FACET_EINPUT,
                 "--sort: unknown column '%.*s' (choose from %s)", (int)n, p,
                 list);
@@ -406,11 +378,9 @@ static int sort_keys_of(struct store *store, const struct option_query *q,
         }
         while (n > 0 && name[n - 1] == ' ')
             n--;
-        for (int k = 0; store_option_columns[k] != NULL; k++)
-            if (strlen(store_option_columns[k]) == n &&
-                strncasecmp(store_option_columns[k], name, n) == 0 &&
-                keys->n < 30)
-                keys->column[keys->n++] = store_option_columns[k];
+        const struct option_column *c = sort_column(name, n);
+        if (c != NULL && keys->n < 30)
+            keys->column[keys->n++] = c->name;
         p += strcspn(p, ",");
         if (*p == ',')
             p++;
@@ -527,16 +497,19 @@ int store_options_query(struct store *store, const struct option_query *q,
     char *where = NULL;
     if (q->where != NULL && (where = filter_sql(q->where, 4)) == NULL)
         return facet_error_set(err, FACET_EWORK, "out of memory");
-    size_t size = 1024 + (where ? strlen(where) : 0) +
+    size_t size = OPTION_COLUMNS_SQL + 1024 + (where ? strlen(where) : 0) +
                   (q->sort ? 4 * strlen(q->sort) : 0);
     char *sql = malloc(size);
     if (sql == NULL) {
         free(where);
         return facet_error_set(err, FACET_EWORK, "out of memory");
     }
-    snprintf(sql, size, "SELECT run, " OPTION_COLUMNS " FROM options"
+    char columns[OPTION_COLUMNS_SQL];
+    option_columns_sql(columns, sizeof columns, 0);
+    snprintf(sql, size, "SELECT run, %s FROM options"
              " WHERE (?1 = 0 OR run = ?1)%s AND (%s) ORDER BY ",
-             q->pareto_only ? " AND rank = 1" : "", where ? where : "1");
+             columns, q->pareto_only ? " AND rank = 1" : "",
+             where ? where : "1");
     free(where);
     int rc = order_by(q->sort, q->descending, sql, size, err);
     if (rc == FACET_OK)

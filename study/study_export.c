@@ -194,8 +194,8 @@ const char *study_column_unit(const char *column)
 static int check_column(const char *what, const char *column,
                         struct facet_error *err)
 {
-    for (int k = 0; store_option_columns[k] != NULL; k++)
-        if (strcmp(store_option_columns[k], column) == 0 &&
+    for (int k = 0; k < STORE_OPTION_COLUMNS; k++)
+        if (strcmp(store_option_columns[k].name, column) == 0 &&
             strcmp(column, "run") != 0)
             return FACET_OK;
     return facet_error_set(err, FACET_EINPUT,
@@ -321,9 +321,9 @@ int study_export_options_csv(struct store *store, int64_t run,
         return rc;
     }
     fprintf(f.out, "run");
-    for (int c = 0; store_option_columns[c] != NULL; c++)
-        if (strcmp(store_option_columns[c], "run") != 0)
-            fprintf(f.out, ",%s", store_option_columns[c]);
+    for (int c = 0; c < STORE_OPTION_COLUMNS; c++)
+        if (strcmp(store_option_columns[c].name, "run") != 0)
+            fprintf(f.out, ",%s", store_option_columns[c].name);
     fprintf(f.out, ",fp_cost,sp_cost,dp_cost");
     for (int c = 0; c < CLASS_COUNT; c++)
         fprintf(f.out, ",%s_count,%s_area",
@@ -333,10 +333,10 @@ int study_export_options_csv(struct store *store, int64_t run,
     for (size_t k = 0; k < n; k++) {
         const struct option_row *o = &rows[k];
         fprintf(f.out, "%lld", (long long)run);
-        for (int c = 0; store_option_columns[c] != NULL; c++) {
-            if (strcmp(store_option_columns[c], "run") == 0)
+        for (int c = 0; c < STORE_OPTION_COLUMNS; c++) {
+            if (strcmp(store_option_columns[c].name, "run") == 0)
                 continue;
-            double v = store_option_value(o, store_option_columns[c]);
+            double v = store_option_value(o, store_option_columns[c].name);
             if (!isfinite(v))
                 fprintf(f.out, ",");  /* crowding at a front's end */
             else if (v == floor(v) && fabs(v) < 1e15)

@@ -3,27 +3,16 @@
  */
 #include "format.h"
 
+#include <assert.h>
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
 
-#include "core/base/numformat.h"
 
 void tui_fmt_number(char *out, size_t size, double value, int decimals,
                     int thousands)
 {
-    if (size == 0)
-        return;
-    if (thousands && !(fabs(value) >= 1e18)) {
-        number_grouped(out, size, value, decimals);
-        return;
-    }
-    if (isnan(value))
-        snprintf(out, size, "-");
-    else if (isinf(value))
-        snprintf(out, size, value > 0 ? "inf" : "-inf");
-    else
-        snprintf(out, size, "%.*f", decimals, value);
+    store_number_text(out, size, value, decimals, thousands);
 }
 
 void tui_fmt_elapsed(char *out, size_t size, double seconds)
@@ -52,91 +41,76 @@ void tui_fmt_started(char *out, size_t size, const char *iso)
 }
 
 const struct tui_column tui_option_columns[] = {
-    {"number", "No.", "", 7, 0, 0, COLUMN_NUMBER, 1},
-    {"rank", "P", "", 1, 0, 0, COLUMN_PARETO, 1},
-    {"planarity", "planarity", "m", 9, 3, 0, COLUMN_NUMBER, 1},
-    {"dp_area", "DP area", "m^2", 8, 1, 0, COLUMN_NUMBER, 1},
-    {"cost", "cost", "USD", 10, 0, 1, COLUMN_NUMBER, 1},
-    {"fp_area", "FP area", "m^2", 8, 1, 0, COLUMN_NUMBER, 1},
-    {"sp_area", "SP area", "m^2", 8, 1, 0, COLUMN_NUMBER, 1},
-    {"nu", "U", "", 3, 0, 0, COLUMN_NUMBER, 1},
-    {"nv", "V", "", 3, 0, 0, COLUMN_NUMBER, 1},
-    {"threshold_mm", "t", "mm", 5, 2, 0, COLUMN_NUMBER, 1},
-    {"feasible", "ok", "", 3, 0, 0, COLUMN_YESNO, 1},
-    {"rank", "rank", "", 4, 0, 0, COLUMN_NUMBER, 1},
+    {"number", 7, 0},
+    {"rank", 1, 1},
+    {"planarity", 9, 0},
+    {"dp_area", 8, 0},
+    {"cost", 10, 0},
+    {"fp_area", 8, 0},
+    {"sp_area", 8, 0},
+    {"nu", 3, 0},
+    {"nv", 3, 0},
+    {"threshold_mm", 5, 0},
+    {"feasible", 3, 0},
+    {"rank", 4, 0},
     /* hidden until the column chooser shows them */
-    {"area", "area", "m^2", 8, 1, 0, COLUMN_NUMBER, 1},
-    {"panels", "panels", "", 6, 0, 0, COLUMN_NUMBER, 1},
-    {"dp_count", "DP n", "", 5, 0, 0, COLUMN_NUMBER, 1},
-    {"max_panel_area", "max pan", "m^2", 7, 2, 0, COLUMN_NUMBER, 1},
-    {"max_deviation", "max dev", "mm", 7, 2, 0, COLUMN_NUMBER, 1000},
-    {"p_dist", "P_dist", "m^4", 9, 4, 0, COLUMN_NUMBER, 1},
-    {"crowding", "crowd", "", 6, 3, 0, COLUMN_NUMBER, 1},
-    {"generation", "gen", "", 4, 0, 0, COLUMN_NUMBER, 1},
+    {"area", 8, 0},
+    {"panels", 6, 0},
+    {"dp_count", 5, 0},
+    {"max_panel_area", 7, 0},
+    {"max_deviation", 7, 0},
+    {"p_dist", 9, 0},
+    {"crowding", 6, 0},
+    {"generation", 4, 0},
 };
 const int tui_option_column_default_count = 12;
 const int tui_option_column_count =
     (int)(sizeof tui_option_columns / sizeof tui_option_columns[0]);
 
-const struct tui_column tui_metric_columns[] = {
-    {"number", "No.", "", 7, 0, 0, COLUMN_NUMBER, 1},
-    {"cost", "cost", "USD", 12, 0, 1, COLUMN_NUMBER, 1},
-    {"planarity", "planarity", "m", 10, 4, 0, COLUMN_NUMBER, 1},
-    {"dp_area", "DP area", "m^2", 10, 2, 0, COLUMN_NUMBER, 1},
-    {"fp_area", "FP area", "m^2", 10, 2, 0, COLUMN_NUMBER, 1},
-    {"sp_area", "SP area", "m^2", 10, 2, 0, COLUMN_NUMBER, 1},
-    {"area", "area", "m^2", 10, 2, 0, COLUMN_NUMBER, 1},
-    {"nu", "U", "", 5, 0, 0, COLUMN_NUMBER, 1},
-    {"nv", "V", "", 5, 0, 0, COLUMN_NUMBER, 1},
-    {"threshold_mm", "threshold", "mm", 8, 2, 0, COLUMN_NUMBER, 1},
-    {"panels", "panels", "", 7, 0, 0, COLUMN_NUMBER, 1},
-    {"fp_count", "FP panels", "", 7, 0, 0, COLUMN_NUMBER, 1},
-    {"sp_count", "SP panels", "", 7, 0, 0, COLUMN_NUMBER, 1},
-    {"dp_count", "DP panels", "", 7, 0, 0, COLUMN_NUMBER, 1},
-    {"max_deviation", "max deviation", "mm", 10, 2, 0, COLUMN_NUMBER, 1000},
-    {"max_panel_area", "max panel area", "m^2", 10, 2, 0, COLUMN_NUMBER, 1},
-    {"p_dist", "P_dist", "m^4", 12, 6, 0, COLUMN_NUMBER, 1},
-    {"feasible", "feasible", "", 4, 0, 0, COLUMN_YESNO, 1},
-    {"rank", "rank", "", 5, 0, 0, COLUMN_NUMBER, 1},
-    {"crowding", "crowding", "", 8, 3, 0, COLUMN_NUMBER, 1},
-    {"knee", "knee", "", 4, 0, 0, COLUMN_YESNO, 1},
-    {"generation", "generation", "", 5, 0, 0, COLUMN_NUMBER, 1},
+const char *const tui_metric_columns[] = {
+    "number", "cost", "planarity", "dp_area", "fp_area", "sp_area", "area",
+    "nu", "nv", "threshold_mm", "panels", "fp_count", "sp_count",
+    "dp_count", "max_deviation", "max_panel_area", "p_dist", "feasible",
+    "rank", "crowding", "knee", "generation",
 };
 const int tui_metric_column_count =
     (int)(sizeof tui_metric_columns / sizeof tui_metric_columns[0]);
 
-const struct tui_column *tui_metric_column(const char *column)
+const struct option_column *tui_column_of(const struct tui_column *c)
 {
-    for (int k = 0; k < tui_metric_column_count; k++)
-        if (strcmp(tui_metric_columns[k].column, column) == 0)
-            return &tui_metric_columns[k];
-    return NULL;
+    const struct option_column *column = store_option_column(c->column);
+    assert(column != NULL);
+    return column;
 }
 
-void tui_fmt_value(char *out, size_t size, const struct tui_column *c,
+const char *tui_column_title(const struct tui_column *c)
+{
+    return c->pareto_mark ? "P" : tui_column_of(c)->heading;
+}
+
+const char *tui_column_unit(const struct tui_column *c)
+{
+    return c->pareto_mark ? "" : tui_column_of(c)->unit;
+}
+
+void tui_fmt_value(char *out, size_t size, const struct option_column *c,
                    double value)
 {
-    if (c->kind == COLUMN_YESNO)
-        snprintf(out, size, "%s", isnan(value) ? "-" : value != 0 ? "yes"
-                                                                  : "no");
-    else if (c->kind == COLUMN_PARETO)
-        snprintf(out, size, "%s", value == 1 ? "*" : "");
-    else
-        tui_fmt_number(out, size, value * c->scale, c->decimals,
-                       c->thousands);
+    store_option_text(out, size, c, value, c->decimals);
 }
 
 void tui_fmt_cell(char *out, size_t size, const struct tui_column *c,
                   const struct option_row *option)
 {
+    const struct option_column *column = tui_column_of(c);
+    double value = store_option_column_value(column, option);
     char text[64];
-    double value = store_option_value(option, c->column);
-    if (c->kind == COLUMN_NUMBER && strcmp(c->column, "rank") == 0 &&
-        value == 0)
+    if (c->pareto_mark)
+        text[0] = '\0';  /* the caller draws the glyph */
+    else if (strcmp(column->name, "rank") == 0 && value == 0)
         snprintf(text, sizeof text, "-");  /* not ranked yet */
     else
-        tui_fmt_value(text, sizeof text, c, value);
-    if (c->kind == COLUMN_PARETO)
-        text[0] = '\0';  /* the caller draws the glyph */
+        store_option_text(text, sizeof text, column, value,
+                          column->list_decimals);
     snprintf(out, size, "%*s", c->width, text);
 }

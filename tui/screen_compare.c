@@ -170,18 +170,19 @@ static void compare_draw(struct tui_screen *base, struct tui_app *app,
         s->top = tui_metric_column_count - rows > 0
                      ? tui_metric_column_count - rows : 0;
     for (int r = 0; r < rows && s->top + r < tui_metric_column_count; r++) {
-        const struct tui_column *c = &tui_metric_columns[s->top + r];
-        int y = 2 + r, dir = direction(s, c->column);
-        tui_putf(y, 0, lw + 6, A_NORMAL, " %-14s %-4s %s", c->title,
+        const struct option_column *c =
+            store_option_column(tui_metric_columns[s->top + r]);
+        int y = 2 + r, dir = direction(s, c->name);
+        tui_putf(y, 0, lw + 6, A_NORMAL, " %-14s %-4s %s", c->label,
                  c->unit, dir < 0 ? "min" : dir > 0 ? "max" : "");
-        double first = store_option_value(&s->options[0], c->column);
+        double first = store_option_column_value(c, &s->options[0]);
         for (int k = 0; k < s->n; k++) {
-            double v = store_option_value(&s->options[k], c->column);
+            double v = store_option_column_value(c, &s->options[k]);
             char value[48], diff[48], cell[100];
             tui_fmt_value(value, sizeof value, c, v);
             diff[0] = '\0';
-            if (k > 0 && c->kind == COLUMN_NUMBER && v != first &&
-                has_difference(c->column) && isfinite(v) &&
+            if (k > 0 && !c->yes_no && v != first &&
+                has_difference(c->name) && isfinite(v) &&
                 isfinite(first)) {
                 char d[40];
                 tui_fmt_value(d, sizeof d, c, v - first);

@@ -143,12 +143,14 @@ static void draw_header(struct options_screen *s, struct tui_app *app,
                                  : tui_attr(ROLE_HEADER);
         tui_fill(y, x, col->width, attr);
         tui_fill(y + 1, x, col->width, attr);
-        tui_putf(y, x, width - x, attr, "%*s", col->width, col->title);
-        tui_putf(y + 1, x, width - x, attr, "%*s", col->width, col->unit);
+        const char *unit = tui_column_unit(col);
+        tui_putf(y, x, width - x, attr, "%*s", col->width,
+                 tui_column_title(col));
+        tui_putf(y + 1, x, width - x, attr, "%*s", col->width, unit);
         if (key >= 0) {
             /* the direction just left of the unit; "2" marks the
              * secondary key */
-            int at = x + col->width - (int)strlen(col->unit) - 1 - key;
+            int at = x + col->width - (int)strlen(unit) - 1 - key;
             if (at < x)
                 at = x;
             tui_put(y + 1, at, 1, attr, s->keys[key].descending
@@ -174,10 +176,11 @@ static void draw_row(struct options_screen *s, struct tui_app *app, int y,
         const struct tui_column *col = &tui_option_columns[c];
         tui_fmt_cell(cell, sizeof cell, col, o);
         attr_t attr = base;
-        if (!selected && col->kind == COLUMN_YESNO && !o->totals.feasible)
+        if (!selected && !col->pareto_mark && tui_column_of(col)->yes_no &&
+            !o->totals.feasible)
             attr = tui_attr(ROLE_DIM);
         tui_put(y, x, width - x, attr, cell);
-        if (col->kind == COLUMN_PARETO && o->rank == 1)
+        if (col->pareto_mark && o->rank == 1)
             tui_put(y, x, 1, selected ? base : tui_attr(o->knee ? ROLE_KNEE
                                                                 : ROLE_PARETO),
                     o->knee ? app->glyphs->knee : app->glyphs->pareto);
@@ -220,11 +223,12 @@ static void draw_detail_side(const struct option_row *o, int y, int x,
     tui_put(y, x, width, tui_attr(ROLE_HEADER), " Selected option");
     tui_fill(y, x + 16, width - 16, tui_attr(ROLE_HEADER));
     for (int k = 0; k < tui_metric_column_count && k + 1 < height; k++) {
-        const struct tui_column *c = &tui_metric_columns[k];
+        const struct option_column *c =
+            store_option_column(tui_metric_columns[k]);
         char value[64];
-        tui_fmt_value(value, sizeof value, c, store_option_value(o,
-                                                                 c->column));
-        tui_putf(y + 1 + k, x, width, A_NORMAL, " %-15s %14s %s", c->title,
+        tui_fmt_value(value, sizeof value, c,
+                      store_option_column_value(c, o));
+        tui_putf(y + 1 + k, x, width, A_NORMAL, " %-15s %14s %s", c->label,
                  value, c->unit);
     }
 }
@@ -259,8 +263,8 @@ static void draw_chooser(struct options_screen *s, struct tui_app *app,
             tui_fill(y0 + 2 + r, x0, w, attr);
         tui_putf(y0 + 2 + r, x0, w, attr, " %s %-10s %-4s %s",
                  set->shown[k] ? "[x]" : "[ ]",
-                 c->kind == COLUMN_PARETO ? "P (mark)" : c->title, c->unit,
-                 c->column);
+                 c->pareto_mark ? "P (mark)" : tui_column_title(c),
+                 tui_column_unit(c), c->column);
     }
     tui_fill(y0 + 2 + rows, x0, w, tui_attr(ROLE_NORMAL));
 }

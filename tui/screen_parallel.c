@@ -187,7 +187,7 @@ static void apply(struct parallel_screen *s, struct tui_app *app)
 static void axis_label(char *out, size_t size, int axis, double value,
                        int width)
 {
-    const struct tui_column *c = tui_metric_column(pc_axes[axis].column);
+    const struct option_column *c = store_option_column(pc_axes[axis].column);
     if (c)
         tui_fmt_value(out, size, c, value);
     else

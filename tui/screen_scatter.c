@@ -172,7 +172,7 @@ static void follow(struct scatter_screen *s, struct tui_app *app)
 
 static void label(char *out, size_t size, const char *column, double value)
 {
-    const struct tui_column *c = tui_metric_column(column);
+    const struct option_column *c = store_option_column(column);
     if (c)
         tui_fmt_value(out, size, c, value);
     else
@@ -184,7 +184,7 @@ static void label(char *out, size_t size, const char *column, double value)
 static void tick_label(char *out, size_t size, const char *column,
                        double value, double step)
 {
-    const struct tui_column *c = tui_metric_column(column);
+    const struct option_column *c = store_option_column(column);
     double scale = c ? c->scale : 1;
     int decimals = step * scale > 0 ? (int)ceil(-log10(step * scale) - 1e-9)
                                     : 0;
@@ -198,7 +198,7 @@ static void tick_label(char *out, size_t size, const char *column,
 static void compact(char *out, size_t size, const char *column,
                     double value)
 {
-    const struct tui_column *c = tui_metric_column(column);
+    const struct option_column *c = store_option_column(column);
     double v = value * (c ? c->scale : 1);
     if (fabs(v) >= 1e6)
         snprintf(out, size, "%.3gM", v / 1e6);
@@ -210,7 +210,7 @@ static void compact(char *out, size_t size, const char *column,
 
 static const char *unit_of(const char *column)
 {
-    const struct tui_column *c = tui_metric_column(column);
+    const struct option_column *c = store_option_column(column);
     return c && c->unit[0] ? c->unit : "";
 }
 

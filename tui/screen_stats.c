@@ -156,7 +156,7 @@ static void show(struct stats_screen *s, struct tui_app *app, int section)
 
 static void fmt(char *out, size_t size, const char *column, double value)
 {
-    const struct tui_column *c = tui_metric_column(column);
+    const struct option_column *c = store_option_column(column);
     if (c)
         tui_fmt_value(out, size, c, value);
     else
@@ -222,7 +222,8 @@ static void stats_draw(struct tui_screen *base, struct tui_app *app,
                 "         max        mean");
         for (int r = 0; r < rows && s->top + r < STATS; r++) {
             int k = s->top + r;
-            const struct tui_column *col = tui_metric_column(stat_columns[k]);
+            const struct option_column *col =
+                store_option_column(stat_columns[k]);
             const struct column_stats *st = &s->stats[k];
             fmt(a, sizeof a, stat_columns[k], st->min);
             if (k < s->medians)
@@ -234,7 +235,7 @@ static void stats_draw(struct tui_screen *base, struct tui_app *app,
             tui_fmt_number(e, sizeof e, (double)st->count, 0, 1);
             tui_putf(3 + r, 0, width, A_NORMAL,
                      " %-15s %-4s %7s %11s %11s %11s %11s",
-                     col ? col->title : stat_columns[k],
+                     col ? col->label : stat_columns[k],
                      col ? col->unit : "", e, a, b2, c, d);
         }
         return;

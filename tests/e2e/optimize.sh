@@ -93,7 +93,7 @@ stdout_has "final table: the run, its method and options" \
     '^run 1 \(done, small\): .*exhaustive, 144 options'
 stdout_has "final table: the Pareto legend" '^\* Pareto-optimal$'
 same "final table: --table 0 prints every option" \
-    "$(grep -cE '^ +[0-9]+ [ *] +[0-9]+\.[0-9]{3} ' "$WORK/small.table")" 144
+    "$(grep -cE '^ +[0-9]+ [ *] +[0-9]+\.[0-9]{4} ' "$WORK/small.table")" 144
 same "final table: the starred options are the rank 1 ones" \
     "$(grep -E '^ +[0-9]+ \* ' "$WORK/small.table" | awk '{print $1}' | sort -n | tr '\n' ' ')" \
     "$(sql "$DB" 'SELECT number FROM options WHERE rank = 1 ORDER BY number' | tr '\n' ' ')"

@@ -132,14 +132,13 @@ static void test_columns_table(void **state)
         "rank", "crowding", "knee", "run",
     };
     for (int k = 0; k < NCOLUMNS; k++)
-        assert_string_equal(store_option_columns[k], expected[k]);
-    assert_null(store_option_columns[NCOLUMNS]);
+        assert_string_equal(store_option_columns[k].name, expected[k]);
 
     /* Every column can be compared; only feasible and knee stand alone. */
     char text[64];
     struct facet_error err;
     for (int k = 0; k < NCOLUMNS; k++) {
-        const char *c = store_option_columns[k];
+        const char *c = store_option_columns[k].name;
         snprintf(text, sizeof text, "%s >= 2", c);
         struct filter *f = compile_ok(text);
         char expected_sql[160];
@@ -919,7 +918,7 @@ static void random_expression(struct rng *rng, int depth, char *out,
     size_t n = strlen(out);
     uint64_t kind = depth >= 3 ? rng_below(rng, 3) : rng_below(rng, 7);
     if (kind == 0) {
-        const char *c = store_option_columns[rng_below(rng, NCOLUMNS)];
+        const char *c = store_option_columns[rng_below(rng, NCOLUMNS)].name;
         if (strcmp(c, "nu") == 0 && rng_below(rng, 2))
             c = "u";
         if (strcmp(c, "nv") == 0 && rng_below(rng, 2))

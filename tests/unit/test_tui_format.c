@@ -78,18 +78,21 @@ static void test_cells(void **state)
         char cell[64];
         tui_fmt_cell(cell, sizeof cell, col, &o);
         assert_int_equal((int)strlen(cell), col->width);  /* aligned */
-        assert_true(col->width >= (int)strlen(col->title));
-        assert_true(col->width >= (int)strlen(col->unit));
-        if (strcmp(col->title, "cost") == 0)
+        const char *title = tui_column_title(col);
+        assert_true(col->width >= (int)strlen(title));
+        assert_true(col->width >= (int)strlen(tui_column_unit(col)));
+        if (strcmp(title, "cost") == 0)
             assert_string_equal(cell, " 1,551,317");
-        if (strcmp(col->title, "planarity") == 0)
+        if (strcmp(title, "planarity") == 0)
             assert_string_equal(cell, "    2.522");
-        if (strcmp(col->title, "ok") == 0)
+        if (strcmp(title, "ok") == 0)
             assert_string_equal(cell, " no");
-        if (strcmp(col->title, "rank") == 0)
+        if (strcmp(title, "rank") == 0)
             assert_string_equal(cell, "   -");  /* not ranked yet */
-        if (strcmp(col->title, "t") == 0)
+        if (strcmp(title, "t") == 0)
             assert_string_equal(cell, " 2.00");
+        if (col->pareto_mark)
+            assert_string_equal(cell, " ");  /* the caller draws it */
         if (c < tui_option_column_default_count)
             total += col->width + 1;
         /* every column the chooser offers is a store column */
@@ -98,10 +101,18 @@ static void test_cells(void **state)
     assert_true(total - 1 <= 80);  /* the default table fits 80 columns */
     /* every metric the tables show is a store column */
     for (int c = 0; c < tui_metric_column_count; c++)
-        assert_false(isnan(store_option_value(&o,
-                                              tui_metric_columns[c].column)));
-    assert_non_null(tui_metric_column("cost"));
-    assert_null(tui_metric_column("nosuch"));
+        assert_non_null(store_option_column(tui_metric_columns[c]));
+    /* on its own a value has the registry's decimals and unit scale */
+    char out[64];
+    o.totals.max_deviation = 0.03758;
+    tui_fmt_value(out, sizeof out, store_option_column("max_deviation"),
+                  o.totals.max_deviation);
+    assert_string_equal(out, "37.58");
+    tui_fmt_value(out, sizeof out, store_option_column("planarity"),
+                  o.totals.planarity);
+    assert_string_equal(out, "2.5217");
+    tui_fmt_value(out, sizeof out, store_option_column("knee"), 1);
+    assert_string_equal(out, "yes");
 }
 
 int main(void)

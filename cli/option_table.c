@@ -1,0 +1,41 @@
+/*
+ * option_table.c: an option's cells in the CLI's tables. See
+ * option_table.h.
+ */
+#include "option_table.h"
+
+#include <assert.h>
+#include <stdio.h>
+#include <string.h>
+
+void option_table_heads(const struct option_table_column *columns, int n,
+                        struct text_column *heads)
+{
+    for (int k = 0; k < n; k++) {
+        const struct option_column *c =
+            columns[k].column ? store_option_column(columns[k].column)
+                              : NULL;
+        assert(columns[k].column == NULL || c != NULL);
+        heads[k] = (struct text_column){c ? c->heading : "",
+                                        c ? c->unit : "", columns[k].width,
+                                        0, columns[k].rank, 0};
+    }
+}
+
+void option_table_cells(const struct option_table_column *columns, int n,
+                        int64_t run, const struct option_row *option,
+                        char (*text)[OPTION_TABLE_CELL], const char **cell)
+{
+    for (int k = 0; k < n; k++) {
+        cell[k] = text[k];
+        if (columns[k].column == NULL) {
+            snprintf(text[k], OPTION_TABLE_CELL, "%s",
+                     option->rank == 1 ? "*" : "");
+            continue;
+        }
+        const struct option_column *c = store_option_column(columns[k].column);
+        double value = c->writer == WRITTEN_AS_KEY
+                           ? (double)run : store_option_column_value(c, option);
+        store_option_text(text[k], OPTION_TABLE_CELL, c, value, c->decimals);
+    }
+}

@@ -1,0 +1,36 @@
+/*
+ * option_table.h: the columns of a design option in the CLI's tables
+ * (`facet options`, a run's Table 2). Each is a column of the registry
+ * (store/option_column.h), which gives its heading, unit and format, in
+ * a width and with a rank (text_table.h) the table chooses.
+ */
+#ifndef FACET_OPTION_TABLE_H
+#define FACET_OPTION_TABLE_H
+
+#include <stdint.h>
+
+#include "store/store.h"
+#include "text_table.h"
+
+struct option_table_column {
+    const char *column;   /* store_option_columns name; NULL for the
+                             Pareto mark ("*" for rank 1) */
+    int width;            /* characters, right-aligned */
+    int rank;             /* higher stays longer; 0: never dropped */
+};
+
+/* The longest cell text, with its terminator. */
+#define OPTION_TABLE_CELL 64
+
+/* The text_table columns of columns[0..n) into heads[0..n): the
+ * registry's heading and unit. */
+void option_table_heads(const struct option_table_column *columns, int n,
+                        struct text_column *heads);
+
+/* The cells of option, of run, for columns[0..n): the value as the
+ * registry shows it with its decimals, into text[k], and cell[k] = text[k]. */
+void option_table_cells(const struct option_table_column *columns, int n,
+                        int64_t run, const struct option_row *option,
+                        char (*text)[OPTION_TABLE_CELL], const char **cell);
+
+#endif

@@ -1,0 +1,400 @@
+/*
+ * test_option_column.c: the registry of an option's columns
+ * (store/option_column.h) against the truth it describes: the options
+ * table SQLite creates (pragma_table_info: names, order, types), the
+ * fields of struct option_row (written here by hand, field by field), the
+ * values SQLite holds under each column's name after a store, and the
+ * rows SQLite counts and orders for a --where and a --sort on every
+ * column.
+ */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <cmocka.h>
+
+#include <math.h>
+#include <sqlite3.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "store/filter.h"
+#include "store/store.h"
+
+enum { ROWS = 6 };
+
+static char db_path[64];
+
+/* A fresh store with one run, path in db_path. */
+static struct store *fresh_store(int64_t *run_id)
+{
+    snprintf(db_path, sizeof db_path, "/tmp/facet_test_option_column_%d.db",
+             (int)getpid());
+    unlink(db_path);
+    struct facet_error err;
+    struct store *store;
+    assert_int_equal(store_open(db_path, &store, &err), FACET_OK);
+    struct run_info run;
+    memset(&run, 0, sizeof run);
+    snprintf(run.surface_path, sizeof run.surface_path, "x.obj");
+    snprintf(run.units, sizeof run.units, "m");
+    snprintf(run.method, sizeof run.method, "exhaustive");
+    snprintf(run.per_panel, sizeof run.per_panel, "extremes");
+    snprintf(run.objectives, sizeof run.objectives, "cost");
+    run.u_min = run.u_max = run.v_min = run.v_max = 1;
+    run.jobs = 1;
+    assert_int_equal(store_run_create(store, &run, &err), FACET_OK);
+    *run_id = run.id;
+    return store;
+}
+
+static void remove_store(void)
+{
+    char side[80];
+    unlink(db_path);
+    snprintf(side, sizeof side, "%s-wal", db_path);
+    unlink(side);
+    snprintf(side, sizeof side, "%s-shm", db_path);
+    unlink(side);
+}
+
+/* Option k of ROWS: every field a value no other field has. */
+static struct option_row option_k(int k)
+{
+    struct option_row o;
+    memset(&o, 0, sizeof o);
+    struct option_totals *t = &o.totals;
+    o.number = k + 1;
+    o.generation = 10 + k;
+    o.nu = 20 + k;
+    o.nv = 30 + k;
+    o.threshold_mm = 1.25 + k;
+    t->panels = (size_t)(40 + k);
+    for (int j = 0; j < TYPE_COUNT; j++) {
+        t->count[j] = (size_t)(50 + 10 * j + k);
+        t->area_of[j] = 80.5 + 10 * j + k;
+        t->cost_of[j] = 1100.25 + 100 * j + k;
+    }
+    t->area = 120.75 + k;
+    t->cost = 1500.5 + k;
+    t->planarity = 0.0625 + k;
+    t->max_deviation = 0.003 + 0.001 * k;
+    t->max_panel_area = 2.5 + k;
+    t->p_dist = 0.0078125 + k;
+    t->feasible = k % 2;
+    for (int c = 0; c < CLASS_COUNT; c++) {
+        t->class_count[c] = (size_t)(200 + 10 * c + k);
+        t->class_area[c] = 300.5 + 10 * c + k;
+    }
+    return o;
+}
+
+/* The value of column name of o, read from the fields by hand: the truth
+ * the registry's offsets and types are held to. */
+static double by_hand(const struct option_row *o, const char *name)
+{
+    const struct option_totals *t = &o->totals;
+    const struct {
+        const char *name;
+        double value;
+    } fields[] = {
+        {"number", (double)o->number}, {"generation", o->generation},
+        {"nu", o->nu}, {"nv", o->nv}, {"threshold_mm", o->threshold_mm},
+        {"panels", (double)t->panels},
+        {"fp_count", (double)t->count[TYPE_FP]},
+        {"sp_count", (double)t->count[TYPE_SP]},
+        {"dp_count", (double)t->count[TYPE_DP]},
+        {"fp_area", t->area_of[TYPE_FP]}, {"sp_area", t->area_of[TYPE_SP]},
+        {"dp_area", t->area_of[TYPE_DP]}, {"area", t->area},
+        {"fp_cost", t->cost_of[TYPE_FP]}, {"sp_cost", t->cost_of[TYPE_SP]},
+        {"dp_cost", t->cost_of[TYPE_DP]}, {"cost", t->cost},
+        {"planarity", t->planarity}, {"max_deviation", t->max_deviation},
+        {"max_panel_area", t->max_panel_area}, {"p_dist", t->p_dist},
+        {"feasible", t->feasible},
+        {"rank", o->rank}, {"crowding", o->crowding}, {"knee", o->knee},
+    };
+    for (size_t k = 0; k < sizeof fields / sizeof fields[0]; k++)
+        if (strcmp(fields[k].name, name) == 0)
+            return fields[k].value;
+    for (int c = 0; c < CLASS_COUNT; c++) {
+        char count[64], area[64];
+        const char *class = panel_class_name((enum panel_class)c);
+        snprintf(count, sizeof count, "%s_count", class);
+        snprintf(area, sizeof area, "%s_area", class);
+        if (strcmp(name, count) == 0)
+            return (double)t->class_count[c];
+        if (strcmp(name, area) == 0)
+            return t->class_area[c];
+    }
+    fail_msg("no field for column %s", name);
+    return NAN;
+}
+
+/* The registry is the options table of a freshly created store: the same
+ * columns in the same order (run, first in the table, last in the
+ * registry), integers and reals alike. */
+static void test_registry_is_the_table(void **state)
+{
+    (void)state;
+    int64_t run;
+    struct store *store = fresh_store(&run);
+    store_close(store);
+    sqlite3 *db;
+    assert_int_equal(sqlite3_open(db_path, &db), SQLITE_OK);
+    sqlite3_stmt *s;
+    assert_int_equal(sqlite3_prepare_v2(db,
+        "SELECT name, type FROM pragma_table_info('options') ORDER BY cid",
+        -1, &s, NULL), SQLITE_OK);
+    int n = 0;
+    while (sqlite3_step(s) == SQLITE_ROW) {
+        const char *name = (const char *)sqlite3_column_text(s, 0);
+        const char *type = (const char *)sqlite3_column_text(s, 1);
+        /* run is the table's first column and the registry's last */
+        int k = n == 0 ? STORE_OPTION_COLUMNS - 1 : n - 1;
+        assert_true(k < STORE_OPTION_COLUMNS);
+        const struct option_column *c = &store_option_columns[k];
+        if (strcmp(c->name, name) != 0)
+            fail_msg("table column %d is %s, registry row %d is %s", n,
+                     name, k, c->name);
+        assert_string_equal(type, c->field == FIELD_DOUBLE ? "REAL"
+                                                           : "INTEGER");
+        n++;
+    }
+    sqlite3_finalize(s);
+    sqlite3_close(db);
+    if (n != STORE_OPTION_COLUMNS)
+        fail_msg("the options table has %d columns, the registry %d: a row"
+                 " without its migration (store/schema.c), or a column"
+                 " without its row", n, STORE_OPTION_COLUMNS);
+    remove_store();
+
+    /* Every row says what it needs to be shown and filtered. */
+    for (int k = 0; k < STORE_OPTION_COLUMNS; k++) {
+        const struct option_column *c = &store_option_columns[k];
+        assert_ptr_equal(store_option_column(c->name), c);
+        assert_non_null(c->label);
+        assert_non_null(c->heading);
+        assert_non_null(c->unit);
+        assert_true(c->scale > 0);
+        assert_true(c->decimals >= 0 && c->list_decimals >= 0);
+        assert_true((c->example == NULL) == (c->yes_no != 0));
+        assert_true((c->field == FIELD_NONE) ==
+                    (c->writer == WRITTEN_AS_KEY));
+    }
+    assert_null(store_option_column("nosuch"));
+}
+
+/* Each column reads its own field of an option_row. */
+static void test_values_read_the_row(void **state)
+{
+    (void)state;
+    struct option_row o = option_k(3);
+    o.rank = 2;
+    o.crowding = 0.375;
+    o.knee = 1;
+    for (int k = 0; k < STORE_OPTION_COLUMNS; k++) {
+        const struct option_column *c = &store_option_columns[k];
+        double v = store_option_column_value(c, &o);
+        if (c->writer == WRITTEN_AS_KEY) {
+            assert_true(isnan(v));
+            continue;
+        }
+        if (v != by_hand(&o, c->name))
+            fail_msg("%s reads %g, its field holds %g", c->name, v,
+                     by_hand(&o, c->name));
+        assert_true(v == store_option_value(&o, c->name));
+    }
+    assert_true(isnan(store_option_value(&o, "nosuch")));
+}
+
+/* Stores ROWS options, ranks them (rank k % 3 + 1, crowding infinite on
+ * the first option, the knee on the second) and returns the rows as
+ * stored. */
+static void put_ranked(struct store *store, int64_t run,
+                       struct option_row rows[ROWS])
+{
+    struct facet_error err;
+    int64_t numbers[ROWS];
+    int rank[ROWS];
+    double crowding[ROWS];
+    for (int k = 0; k < ROWS; k++) {
+        rows[k] = option_k(k);
+        numbers[k] = rows[k].number;
+        rows[k].rank = rank[k] = k % 3 + 1;
+        rows[k].crowding = crowding[k] = k == 0 ? INFINITY : 0.125 * k;
+        rows[k].knee = k == 1;
+    }
+    assert_int_equal(store_options_put(store, run, rows, ROWS, &err),
+                     FACET_OK);
+    assert_int_equal(store_options_set_pareto(store, run, numbers, rank,
+                                              crowding, ROWS, 2, 0.5, &err),
+                     FACET_OK);
+}
+
+/* What SQLite holds under each column's name is the field of the row
+ * stored, and reading the option back gives every field again. */
+static void test_store_round_trip(void **state)
+{
+    (void)state;
+    int64_t run;
+    struct store *store = fresh_store(&run);
+    struct option_row rows[ROWS];
+    put_ranked(store, run, rows);
+    sqlite3 *db;
+    assert_int_equal(sqlite3_open(db_path, &db), SQLITE_OK);
+    for (int k = 0; k < STORE_OPTION_COLUMNS; k++) {
+        const char *name = store_option_columns[k].name;
+        if (store_option_columns[k].writer == WRITTEN_AS_KEY)
+            continue;
+        char sql[160];
+        snprintf(sql, sizeof sql, "SELECT \"%s\" FROM options"
+                 " WHERE run = ?1 ORDER BY number", name);
+        sqlite3_stmt *s;
+        assert_int_equal(sqlite3_prepare_v2(db, sql, -1, &s, NULL),
+                         SQLITE_OK);
+        sqlite3_bind_int64(s, 1, run);
+        for (int r = 0; r < ROWS; r++) {
+            assert_int_equal(sqlite3_step(s), SQLITE_ROW);
+            double want = by_hand(&rows[r], name);
+            /* crowding: NULL stands for infinity (README) */
+            double got = sqlite3_column_type(s, 0) == SQLITE_NULL
+                             ? INFINITY : sqlite3_column_double(s, 0);
+            if (got != want)
+                fail_msg("option %d: column %s holds %g, the row %g", r + 1,
+                         name, got, want);
+        }
+        sqlite3_finalize(s);
+    }
+    sqlite3_close(db);
+    struct facet_error err;
+    for (int r = 0; r < ROWS; r++) {
+        struct option_row back;
+        assert_int_equal(store_option_get(store, run, r + 1, &back, &err),
+                         FACET_OK);
+        for (int k = 0; k < STORE_OPTION_COLUMNS; k++)
+            if (store_option_columns[k].writer != WRITTEN_AS_KEY)
+                assert_true(by_hand(&back, store_option_columns[k].name) ==
+                            by_hand(&rows[r], store_option_columns[k].name));
+    }
+    store_close(store);
+    remove_store();
+}
+
+struct gathered {
+    int64_t numbers[ROWS];
+    int n;
+};
+
+static int gather(void *context, int64_t run, const struct option_row *o)
+{
+    (void)run;
+    struct gathered *g = context;
+    if (g->n < ROWS)
+        g->numbers[g->n] = o->number;
+    g->n++;
+    return 0;
+}
+
+static int gather_browsed(void *context, const struct option_row *o)
+{
+    return gather(context, 0, o);
+}
+
+/* Every column can be named in a --where and a --sort: the filter
+ * compiles, SQLite accepts the query, it passes the options SQLite counts
+ * by hand, and the sort puts them in the column's order. */
+static void test_every_column_filters_and_sorts(void **state)
+{
+    (void)state;
+    int64_t run;
+    struct store *store = fresh_store(&run);
+    struct option_row rows[ROWS];
+    put_ranked(store, run, rows);
+    sqlite3 *db;
+    assert_int_equal(sqlite3_open(db_path, &db), SQLITE_OK);
+    struct facet_error err;
+    for (int k = 0; k < STORE_OPTION_COLUMNS; k++) {
+        const struct option_column *c = &store_option_columns[k];
+        /* a value the third option has, so some pass and some do not */
+        double middle = c->writer == WRITTEN_AS_KEY
+                            ? (double)run : by_hand(&rows[2], c->name);
+        char where[128], sql[256];
+        if (c->yes_no)
+            snprintf(where, sizeof where, "%s", c->name);
+        else
+            snprintf(where, sizeof where, "%s >= %.17g", c->name, middle);
+        struct filter *f;
+        if (filter_compile(where, &f, &err) != FACET_OK)
+            fail_msg("--where '%s': %s", where, err.message);
+        /* crowding: NULL is infinite (README) */
+        snprintf(sql, sizeof sql, "SELECT count(*) FROM options"
+                 " WHERE run = ?1 AND %s%s%s%s",
+                 strcmp(c->name, "crowding") == 0 ? "ifnull(crowding, 1e999)"
+                                                  : "\"",
+                 strcmp(c->name, "crowding") == 0 ? "" : c->name,
+                 strcmp(c->name, "crowding") == 0 ? "" : "\"",
+                 c->yes_no ? " != 0" : " >= ?2");
+        sqlite3_stmt *s;
+        assert_int_equal(sqlite3_prepare_v2(db, sql, -1, &s, NULL),
+                         SQLITE_OK);
+        sqlite3_bind_int64(s, 1, run);
+        sqlite3_bind_double(s, 2, middle);
+        assert_int_equal(sqlite3_step(s), SQLITE_ROW);
+        int want = sqlite3_column_int(s, 0);
+        sqlite3_finalize(s);
+        assert_true(c->writer == WRITTEN_AS_KEY ||
+                    (want > 0 && want < ROWS));
+
+        struct option_query q = {run, 0, f, c->name, 0, 0, 0};
+        struct gathered g = {{0}, 0};
+        if (store_options_query(store, &q, gather, &g, &err) != FACET_OK)
+            fail_msg("--where '%s' --sort %s: %s", where, c->name,
+                     err.message);
+        if (g.n != want)
+            fail_msg("--where '%s': %d options, SQLite counts %d", where,
+                     g.n, want);
+        assert_int_equal(store_options_sort_check(c->name, &err), FACET_OK);
+
+        /* sorted by the column alone: in its order, every option */
+        q.where = NULL;
+        g.n = 0;
+        assert_int_equal(store_options_query(store, &q, gather, &g, &err),
+                         FACET_OK);
+        assert_int_equal(g.n, ROWS);
+        for (int r = 1; r < ROWS && c->writer != WRITTEN_AS_KEY; r++)
+            assert_true(by_hand(&rows[g.numbers[r - 1] - 1], c->name) <=
+                        by_hand(&rows[g.numbers[r] - 1], c->name));
+
+        /* the workbench's browse takes it as a key and a filter */
+        if (c->writer != WRITTEN_AS_KEY) {
+            struct option_browse b;
+            memset(&b, 0, sizeof b);
+            b.run = run;
+            b.where = f;
+            b.keys[0] = (struct browse_key){c->name, 1};
+            b.nkeys = 1;
+            g.n = 0;
+            if (store_browse_page(store, &b, NULL, 0, ROWS, gather_browsed,
+                                  &g, &err) != FACET_OK)
+                fail_msg("browse by %s: %s", c->name, err.message);
+            assert_int_equal(g.n, want);
+        }
+        filter_free(f);
+    }
+    sqlite3_close(db);
+    store_close(store);
+    remove_store();
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_registry_is_the_table),
+        cmocka_unit_test(test_values_read_the_row),
+        cmocka_unit_test(test_store_round_trip),
+        cmocka_unit_test(test_every_column_filters_and_sorts),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
