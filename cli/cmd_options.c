@@ -19,29 +19,14 @@
 
 enum listing_format { LISTING_TABLE, LISTING_JSON, LISTING_CSV };
 
-/* The human table: the objectives and the design variables stay longest,
- * the FP and SP areas go first on a narrow terminal; the knee is marked
- * last. */
-static const struct option_table_column listed[] = {
-    {"run", 4, 2},
-    {"number", 6, 0},
-    {NULL, 1, 0},
-    {"planarity", 11, 9},
-    {"dp_area", 10, 9},
-    {"cost", 14, 9},
-    {"fp_area", 10, 3},
-    {"sp_area", 10, 3},
-    {"nu", 4, 8},
-    {"nv", 4, 8},
-    {"threshold_mm", 7, 7},
-    {"rank", 4, 5},
-    {"feasible", 3, 4},
-};
-enum { LISTED = sizeof listed / sizeof listed[0] };
+/* The human table: the run, Table 2's columns (option_table.h), whether
+ * the option is feasible, and the knee's mark. */
+enum { LISTED = 1 + OPTION_TABLE_PAPER + 1 };
 
 struct listing {
     enum listing_format format;
     struct json_writer json;
+    struct option_table_column listed[LISTED];
     struct text_column heads[LISTED + 1];  /* listed, then the knee mark */
     struct text_table table;
     int64_t rows;
@@ -53,7 +38,7 @@ static int list_row(void *context, int64_t run, const struct option_row *o)
     if (l->format == LISTING_TABLE) {
         char text[LISTED][OPTION_TABLE_CELL];
         const char *cell[LISTED + 1];
-        option_table_cells(listed, LISTED, run, o, text, cell);
+        option_table_cells(l->listed, LISTED, run, o, text, cell);
         cell[LISTED] = o->knee ? "knee" : "";
         text_table_row(stdout, &l->table, cell);
     } else if (l->format == LISTING_JSON) {
@@ -145,7 +130,12 @@ static int options_main(int argc, char **argv, struct facet_error *err)
     listing.format = json ? LISTING_JSON : csv ? LISTING_CSV : LISTING_TABLE;
     if (rc == FACET_OK) {
         if (listing.format == LISTING_TABLE) {
-            option_table_heads(listed, LISTED, listing.heads);
+            listing.listed[0] = (struct option_table_column){"run", 4, 2};
+            memcpy(listing.listed + 1, option_table_paper,
+                   sizeof option_table_paper);
+            listing.listed[LISTED - 1] =
+                (struct option_table_column){"feasible", 3, 4};
+            option_table_heads(listing.listed, LISTED, listing.heads);
             listing.heads[LISTED] = (struct text_column){"", "", 4, 1, 6, 0};
             listing.table = (struct text_table){listing.heads, LISTED + 1,
                                                 {0}, 0, 0};

@@ -8,6 +8,20 @@
 #include <stdio.h>
 #include <string.h>
 
+const struct option_table_column option_table_paper[] = {
+    {"number", 6, 0},
+    {NULL, 1, 0},
+    {"planarity", 11, 9},
+    {"dp_area", 10, 9},
+    {"cost", 14, 9},
+    {"fp_area", 10, 3},
+    {"sp_area", 10, 3},
+    {"nu", 4, 8},
+    {"nv", 4, 8},
+    {"threshold_mm", 7, 7},
+    {"rank", 4, 5},
+};
+
 void option_table_heads(const struct option_table_column *columns, int n,
                         struct text_column *heads)
 {

@@ -19,6 +19,13 @@ struct option_table_column {
     int rank;             /* higher stays longer; 0: never dropped */
 };
 
+/* The paper's Table 2: No., the Pareto mark, planarity, DP area, cost, FP
+ * area, SP area, U, V, threshold, rank; the objectives and the design
+ * variables stay longest, the FP and SP areas go first on a narrow
+ * terminal. Both CLI tables show them. */
+#define OPTION_TABLE_PAPER 11
+extern const struct option_table_column option_table_paper[OPTION_TABLE_PAPER];
+
 /* The longest cell text, with its terminator. */
 #define OPTION_TABLE_CELL 64
 

@@ -38,22 +38,6 @@ static int order_by_cost(const struct option_row *listed, size_t n,
     return rc;
 }
 
-/* The paper's Table 2, then the knee and infeasible marks. */
-static const struct option_table_column table_columns[] = {
-    {"number", 6, 0},
-    {NULL, 1, 0},
-    {"planarity", 11, 9},
-    {"dp_area", 10, 9},
-    {"cost", 14, 9},
-    {"fp_area", 10, 3},
-    {"sp_area", 10, 2},
-    {"nu", 4, 8},
-    {"nv", 4, 8},
-    {"threshold_mm", 7, 7},
-    {"rank", 4, 5},
-};
-enum { TABLE_COLUMNS = sizeof table_columns / sizeof table_columns[0] };
-
 int run_table_print(FILE *out, struct store *store, const char *db,
                     int64_t run, long rows, int wide, struct facet_error *err)
 {
@@ -99,22 +83,23 @@ int run_table_print(FILE *out, struct store *store, const char *db,
         free(listed);
         return facet_error_set(err, FACET_EWORK, "out of memory (table)");
     }
-    struct text_column heads[TABLE_COLUMNS + 1];
-    option_table_heads(table_columns, TABLE_COLUMNS, heads);
-    heads[TABLE_COLUMNS] = (struct text_column){"", "", 15, 1, 9, 0};
-    struct text_table t = {heads, TABLE_COLUMNS + 1, {0}, 0, 0};
+    struct text_column heads[OPTION_TABLE_PAPER + 1];
+    option_table_heads(option_table_paper, OPTION_TABLE_PAPER, heads);
+    heads[OPTION_TABLE_PAPER] = (struct text_column){"", "", 15, 1, 9, 0};
+    struct text_table t = {heads, OPTION_TABLE_PAPER + 1, {0}, 0, 0};
     text_table_fit(&t, text_table_width(out, wide));
     fputc('\n', out);
     text_table_head(out, &t);
     for (size_t k = 0; k < n; k++) {
         const struct option_row *o = &listed[order[k]];
-        char text[TABLE_COLUMNS][OPTION_TABLE_CELL], marks[32];
-        const char *cell[TABLE_COLUMNS + 1];
-        option_table_cells(table_columns, TABLE_COLUMNS, run, o, text, cell);
+        char text[OPTION_TABLE_PAPER][OPTION_TABLE_CELL], marks[32];
+        const char *cell[OPTION_TABLE_PAPER + 1];
+        option_table_cells(option_table_paper, OPTION_TABLE_PAPER, run, o,
+                           text, cell);
         snprintf(marks, sizeof marks, "%s%s%s", o->knee ? "knee" : "",
                  o->knee && !o->totals.feasible ? " " : "",
                  o->totals.feasible ? "" : "infeasible");
-        cell[TABLE_COLUMNS] = marks;
+        cell[OPTION_TABLE_PAPER] = marks;
         text_table_row(out, &t, cell);
     }
     if ((int64_t)n < info.options) {
