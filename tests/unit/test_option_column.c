@@ -22,6 +22,7 @@
 
 #include "store/filter.h"
 #include "store/store.h"
+#include "tests/support/store_fixture.h"
 
 enum { ROWS = 6 };
 
@@ -32,32 +33,15 @@ static struct store *fresh_store(int64_t *run_id)
 {
     snprintf(db_path, sizeof db_path, "/tmp/facet_test_option_column_%d.db",
              (int)getpid());
-    unlink(db_path);
+    store_fixture_remove(db_path);
     struct facet_error err;
     struct store *store;
     assert_int_equal(store_open(db_path, &store, &err), FACET_OK);
     struct run_info run;
-    memset(&run, 0, sizeof run);
-    snprintf(run.surface_path, sizeof run.surface_path, "x.obj");
-    snprintf(run.units, sizeof run.units, "m");
-    snprintf(run.method, sizeof run.method, "exhaustive");
-    snprintf(run.per_panel, sizeof run.per_panel, "extremes");
-    snprintf(run.objectives, sizeof run.objectives, "cost");
-    run.u_min = run.u_max = run.v_min = run.v_max = 1;
-    run.jobs = 1;
+    store_fixture_run(&run);
     assert_int_equal(store_run_create(store, &run, &err), FACET_OK);
     *run_id = run.id;
     return store;
-}
-
-static void remove_store(void)
-{
-    char side[80];
-    unlink(db_path);
-    snprintf(side, sizeof side, "%s-wal", db_path);
-    unlink(side);
-    snprintf(side, sizeof side, "%s-shm", db_path);
-    unlink(side);
 }
 
 /* Option k of ROWS: every field a value no other field has. */
@@ -168,7 +152,7 @@ static void test_registry_is_the_table(void **state)
         fail_msg("the options table has %d columns, the registry %d: a row"
                  " without its migration (store/schema.c), or a column"
                  " without its row", n, STORE_OPTION_COLUMNS);
-    remove_store();
+    store_fixture_remove(db_path);
 
     /* Every row says what it needs to be shown and filtered. */
     for (int k = 0; k < STORE_OPTION_COLUMNS; k++) {
@@ -209,12 +193,14 @@ static void test_values_read_the_row(void **state)
     assert_true(isnan(store_option_value(&o, "nosuch")));
 }
 
-/* Stores ROWS options, ranks them (rank k % 3 + 1, crowding infinite on
- * the first option, the knee on the second) and returns the rows as
- * stored. */
-static void put_ranked(struct store *store, int64_t run,
-                       struct option_row rows[ROWS])
+/* A fresh store with ROWS options of one run, ranked (rank k % 3 + 1,
+ * crowding infinite on the first option, the knee on the second): the
+ * rows as stored into rows, the run into *run, and SQLite's own handle
+ * on the file into *db. */
+static struct store *ranked_store(int64_t *run, struct option_row rows[ROWS],
+                                  sqlite3 **db)
 {
+    struct store *store = fresh_store(run);
     struct facet_error err;
     int64_t numbers[ROWS];
     int rank[ROWS];
@@ -226,11 +212,13 @@ static void put_ranked(struct store *store, int64_t run,
         rows[k].crowding = crowding[k] = k == 0 ? INFINITY : 0.125 * k;
         rows[k].knee = k == 1;
     }
-    assert_int_equal(store_options_put(store, run, rows, ROWS, &err),
+    assert_int_equal(store_options_put(store, *run, rows, ROWS, &err),
                      FACET_OK);
-    assert_int_equal(store_options_set_pareto(store, run, numbers, rank,
+    assert_int_equal(store_options_set_pareto(store, *run, numbers, rank,
                                               crowding, ROWS, 2, 0.5, &err),
                      FACET_OK);
+    assert_int_equal(sqlite3_open(db_path, db), SQLITE_OK);
+    return store;
 }
 
 /* What SQLite holds under each column's name is the field of the row
@@ -239,11 +227,9 @@ static void test_store_round_trip(void **state)
 {
     (void)state;
     int64_t run;
-    struct store *store = fresh_store(&run);
     struct option_row rows[ROWS];
-    put_ranked(store, run, rows);
     sqlite3 *db;
-    assert_int_equal(sqlite3_open(db_path, &db), SQLITE_OK);
+    struct store *store = ranked_store(&run, rows, &db);
     for (int k = 0; k < STORE_OPTION_COLUMNS; k++) {
         const char *name = store_option_columns[k].name;
         if (store_option_columns[k].writer == WRITTEN_AS_KEY)
@@ -279,7 +265,7 @@ static void test_store_round_trip(void **state)
                             by_hand(&rows[r], store_option_columns[k].name));
     }
     store_close(store);
-    remove_store();
+    store_fixture_remove(db_path);
 }
 
 struct gathered {
@@ -309,11 +295,9 @@ static void test_every_column_filters_and_sorts(void **state)
 {
     (void)state;
     int64_t run;
-    struct store *store = fresh_store(&run);
     struct option_row rows[ROWS];
-    put_ranked(store, run, rows);
     sqlite3 *db;
-    assert_int_equal(sqlite3_open(db_path, &db), SQLITE_OK);
+    struct store *store = ranked_store(&run, rows, &db);
     struct facet_error err;
     for (int k = 0; k < STORE_OPTION_COLUMNS; k++) {
         const struct option_column *c = &store_option_columns[k];
@@ -385,7 +369,7 @@ static void test_every_column_filters_and_sorts(void **state)
     }
     sqlite3_close(db);
     store_close(store);
-    remove_store();
+    store_fixture_remove(db_path);
 }
 
 int main(void)

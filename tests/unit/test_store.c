@@ -21,6 +21,7 @@
 #include "core/surface/example.h"
 #include "store/filter.h"
 #include "study/study.h"
+#include "tests/support/store_fixture.h"
 
 static char surface_path[64];
 static char db_path[64];
@@ -50,12 +51,7 @@ static const char *fresh_db(const char *name)
 {
     snprintf(db_path, sizeof db_path, "/tmp/facet_test_%s_%d.db", name,
              (int)getpid());
-    char side[80];
-    unlink(db_path);
-    snprintf(side, sizeof side, "%s-wal", db_path);
-    unlink(side);
-    snprintf(side, sizeof side, "%s-shm", db_path);
-    unlink(side);
+    store_fixture_remove(db_path);
     return db_path;
 }
 
@@ -473,14 +469,7 @@ static void test_orphan_is_interrupted(void **state)
     struct store *store;
     assert_int_equal(store_open(fresh_db("orphan"), &store, &err), FACET_OK);
     struct run_info run;
-    memset(&run, 0, sizeof run);
-    snprintf(run.surface_path, sizeof run.surface_path, "x.obj");
-    snprintf(run.units, sizeof run.units, "m");
-    snprintf(run.method, sizeof run.method, "exhaustive");
-    snprintf(run.per_panel, sizeof run.per_panel, "extremes");
-    snprintf(run.objectives, sizeof run.objectives, "cost");
-    run.u_min = run.u_max = run.v_min = run.v_max = 1;
-    run.jobs = 1;
+    store_fixture_run(&run);
     assert_int_equal(store_run_create(store, &run, &err), FACET_OK);
     store_close(store);
 

@@ -1,0 +1,30 @@
+/*
+ * store_fixture.c: a run for tests. See store_fixture.h.
+ */
+#include "store_fixture.h"
+
+#include <stdio.h>
+#include <string.h>
+#include <unistd.h>
+
+void store_fixture_run(struct run_info *run)
+{
+    memset(run, 0, sizeof *run);
+    snprintf(run->surface_path, sizeof run->surface_path, "x.obj");
+    snprintf(run->units, sizeof run->units, "m");
+    snprintf(run->method, sizeof run->method, "exhaustive");
+    snprintf(run->per_panel, sizeof run->per_panel, "extremes");
+    snprintf(run->objectives, sizeof run->objectives, "cost");
+    run->u_min = run->u_max = run->v_min = run->v_max = 1;
+    run->jobs = 1;
+}
+
+void store_fixture_remove(const char *path)
+{
+    char side[1024];
+    unlink(path);
+    snprintf(side, sizeof side, "%s-wal", path);
+    unlink(side);
+    snprintf(side, sizeof side, "%s-shm", path);
+    unlink(side);
+}
