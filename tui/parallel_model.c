@@ -9,16 +9,18 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "store/option_column.h"
+
 const struct pc_axis pc_axes[PC_AXES] = {
-    {"nu", "U", "", 1},
-    {"nv", "V", "", 1},
-    {"threshold_mm", "t", "mm", 0},
-    {"planarity", "planarity", "m", 0},
-    {"dp_area", "DP area", "m^2", 0},
-    {"cost", "cost", "USD", 0},
-    {"fp_area", "FP area", "m^2", 0},
-    {"sp_area", "SP area", "m^2", 0},
+    {"nu"}, {"nv"}, {"threshold_mm"}, {"planarity"}, {"dp_area"}, {"cost"},
+    {"fp_area"}, {"sp_area"},
 };
+
+/* Whether axis takes whole numbers only. */
+static int whole_numbers(int axis)
+{
+    return store_option_column(pc_axes[axis].column)->field != FIELD_DOUBLE;
+}
 
 int pc_axis_dot(double value, double min, double max, int dots)
 {
@@ -45,7 +47,7 @@ double pc_step(const struct pc_state *st, int axis)
     if (!has_range(st, axis) || !(st->max[axis] > st->min[axis]))
         return 1;
     double step = (st->max[axis] - st->min[axis]) / PC_STEPS;
-    if (pc_axes[axis].integer)
+    if (whole_numbers(axis))
         step = step < 1 ? 1 : round(step);
     return step;
 }
@@ -55,7 +57,7 @@ double pc_step(const struct pc_state *st, int axis)
 static double round_edge(const struct pc_state *st, int axis, double value,
                          int up)
 {
-    if (pc_axes[axis].integer)
+    if (whole_numbers(axis))
         return up ? ceil(value - 1e-9) : floor(value + 1e-9);
     double range = st->max[axis] - st->min[axis];
     if (!(range > 0))

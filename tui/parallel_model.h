@@ -11,12 +11,11 @@
 
 #include <stddef.h>
 
-/* One vertical axis. */
+/* One vertical axis: a column of the registry (store/option_column.h),
+ * titled with its heading and unit; a column held as an integer (the grid
+ * sides) is brushed in whole numbers. */
 struct pc_axis {
     const char *column;   /* store_option_columns name */
-    const char *title;    /* above the axis */
-    const char *unit;
-    int integer;          /* whole numbers only (grid sides) */
 };
 
 /* U, V, threshold, planarity, DP area, cost, FP area, SP area. */

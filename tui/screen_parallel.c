@@ -335,7 +335,8 @@ static void parallel_draw(struct tui_screen *base, struct tui_app *app,
         }
         char title[32], hi[32], lo[32];
         snprintf(title, sizeof title, "%s%s%s%s", current ? "[" : "",
-                 pc_axes[a].title, b->active ? "*" : "", current ? "]" : "");
+                 store_option_column(pc_axes[a].column)->heading,
+                 b->active ? "*" : "", current ? "]" : "");
         put_centred(2, ax[a], width, current ? tui_attr(ROLE_COLUMN)
                                              : tui_attr(ROLE_HEADER),
                     title);
@@ -346,7 +347,8 @@ static void parallel_draw(struct tui_screen *base, struct tui_app *app,
     }
 
     /* the current axis's brush, and the selected option */
-    const struct pc_axis *cur = &pc_axes[s->axis];
+    const struct option_column *cur =
+        store_option_column(pc_axes[s->axis].column);
     const struct pc_brush *b = &st->brush[s->axis];
     char lo[32], hi[32];
     int y = bottom + 1;
@@ -355,11 +357,11 @@ static void parallel_draw(struct tui_screen *base, struct tui_app *app,
         axis_label(hi, sizeof hi, s->axis, b->hi, 20);
         tui_putf(y, 0, width, tui_attr(ROLE_MARKED),
                  " %s %s: brush %s .. %s %s  ([ ] { } move, e types, x "
-                 "clears)", cur->title, cur->unit, lo, hi, cur->unit);
+                 "clears)", cur->heading, cur->unit, lo, hi, cur->unit);
     } else {
         tui_putf(y, 0, width, A_NORMAL,
                  " %s %s: no brush  ([ raises the low edge, ] lowers the "
-                 "high one, e types)", cur->title, cur->unit);
+                 "high one, e types)", cur->heading, cur->unit);
     }
     if (sel != NULL) {
         char cost[32];
