@@ -3,9 +3,9 @@
  * (store/option_column.h) against the truth it describes: the options
  * table SQLite creates (pragma_table_info: names, order, types), the
  * fields of struct option_row (written here by hand, field by field), the
- * values SQLite holds under each column's name after a store, and the
- * rows SQLite counts and orders for a --where and a --sort on every
- * column.
+ * search's metrics (core/search/metric.h), the values SQLite holds under
+ * each column's name after a store, and the rows SQLite counts and
+ * orders for a --where and a --sort on every column.
  */
 #include <setjmp.h>
 #include <stdarg.h>
@@ -20,6 +20,7 @@
 #include <string.h>
 #include <unistd.h>
 
+#include "core/search/metric.h"
 #include "store/filter.h"
 #include "store/store.h"
 #include "tests/support/store_fixture.h"
@@ -191,6 +192,23 @@ static void test_values_read_the_row(void **state)
         assert_true(v == store_option_value(&o, c->name));
     }
     assert_true(isnan(store_option_value(&o, "nosuch")));
+}
+
+/* The objectives a search may take (core/search/metric.h) are columns,
+ * and a metric's value is its column's: the front a run ranks by is the
+ * front the tables show. */
+static void test_metrics_are_columns(void **state)
+{
+    (void)state;
+    struct option_row o = option_k(4);
+    for (int m = 0; m < METRIC_COUNT; m++) {
+        const struct option_column *c =
+            store_option_column(metric_name((enum metric)m));
+        if (c == NULL)
+            fail_msg("metric %s is no column", metric_name((enum metric)m));
+        assert_true(metric_value(&o.totals, (enum metric)m) ==
+                    store_option_column_value(c, &o));
+    }
 }
 
 /* A fresh store with ROWS options of one run, ranked (rank k % 3 + 1,
@@ -377,6 +395,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_registry_is_the_table),
         cmocka_unit_test(test_values_read_the_row),
+        cmocka_unit_test(test_metrics_are_columns),
         cmocka_unit_test(test_store_round_trip),
         cmocka_unit_test(test_every_column_filters_and_sorts),
     };
