@@ -2,11 +2,15 @@
  * store_option.c: the options table: committing a batch of evaluated
  * options, reading a run's options back, writing the Pareto analysis, and
  * the sorted, filtered queries of `facet options` and the TUI. See store.h.
+ * Which columns an option has, and where its row holds each, is the
+ * registry's (option_column.h): the INSERT and SELECT lists and the
+ * binding and reading of a row are built from it.
  */
 #include "store_internal.h"
 
 #include <assert.h>
 #include <math.h>
+#include <stddef.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -87,7 +91,7 @@ static void option_from_row(sqlite3_stmt *s, int first,
             *(int64_t *)field = sqlite3_column_int64(s, c);
         else
             *(size_t *)field = (size_t)sqlite3_column_int64(s, c);
-        if (strcmp(col->name, "crowding") == 0)
+        if (col->offset == offsetof(struct option_row, crowding))
             crowding = c;
         c++;
     }
