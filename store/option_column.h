@@ -14,12 +14,15 @@
  *   2. one row of store_option_columns (option_column.c), after knee and
  *      before run: the table's order, as ALTER TABLE appends;
  *   3. the schema migration that adds it (store/schema.c) and its line in
- *      the README's options table.
+ *      the README's options table;
+ *   4. its field in by_hand of tests/unit/test_option_column.c, the
+ *      test's own reading of a row.
  * test_option_column fails until the registry and the table agree
  * (pragma_table_info), and checks that --where and --sort take the new
  * column. Nothing else needs to learn its name: it is stored, read back,
  * filtered, sorted and written to --json and --csv; to show it in a table
- * add its name to that table's list (tui/format.c, cli/).
+ * add its name to that table's list (tui/format.c, cli/option_table.c,
+ * cli/cmd_options.c).
  *
  * No SQL and no curses here: store/ holds the registry because its SQL
  * uses the names; tui/ and cli/ read it.

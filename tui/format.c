@@ -8,7 +8,6 @@
 #include <stdio.h>
 #include <string.h>
 
-
 void tui_fmt_number(char *out, size_t size, double value, int decimals,
                     int thousands)
 {

@@ -9,9 +9,11 @@
 
 #include <stddef.h>
 
+#include "store/option_column.h"
 #include "store/store.h"
 
-/* value with decimals places and thousands separators ("1,551,317.25");
+/* value with decimals places and thousands separators ("1,551,317.25")
+ * (store_number_text);
  * "-" for NaN, "inf"/"-inf" for infinities. */
 void tui_fmt_number(char *out, size_t size, double value, int decimals,
                     int thousands);
