@@ -12,9 +12,8 @@
 #include "store/option_column.h"
 #include "store/store.h"
 
-/* value with decimals places and thousands separators ("1,551,317.25")
- * (store_number_text);
- * "-" for NaN, "inf"/"-inf" for infinities. */
+/* value with decimals places and thousands separators ("1,551,317.25");
+ * "-" for NaN, "inf"/"-inf" for infinities: store_number_text. */
 void tui_fmt_number(char *out, size_t size, double value, int decimals,
                     int thousands);
 
