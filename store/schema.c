@@ -624,6 +624,7 @@ void store_close(struct store *store)
     if (store == NULL)
         return;
     sqlite3_finalize(store->option_insert);
+    sqlite3_finalize(store->option_get);
     /* Closing the last connection would checkpoint and delete the WAL
      * under an exclusive lock, failing a reader without a busy timeout
      * (sqlite3 on the command line) that opens the file at that moment.

@@ -19,6 +19,7 @@ struct store {
     sqlite3 *db;
     char *path;                 /* owned copy, for messages */
     sqlite3_stmt *option_insert;/* prepared once, reused by every batch */
+    sqlite3_stmt *option_get;   /* store_option_get's, prepared once */
     int read_only;              /* opened by store_open_read */
 };
 

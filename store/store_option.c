@@ -172,14 +172,19 @@ int store_options_get(struct store *store, int64_t run,
 int store_option_get(struct store *store, int64_t run, int64_t number,
                      struct option_row *row, struct facet_error *err)
 {
-    char columns[OPTION_COLUMNS_SQL], sql[OPTION_COLUMNS_SQL + 64];
-    option_columns_sql(columns, sizeof columns, 0);
-    snprintf(sql, sizeof sql, "SELECT %s FROM options"
-             " WHERE run = ?1 AND number = ?2", columns);
-    sqlite3_stmt *s;
-    int rc = store_prepare(store, sql, &s, "reading an option", err);
-    if (rc != FACET_OK)
-        return rc;
+    /* Prepared once: the workbench reads every row of a page here. */
+    if (store->option_get == NULL) {
+        char columns[OPTION_COLUMNS_SQL], sql[OPTION_COLUMNS_SQL + 64];
+        option_columns_sql(columns, sizeof columns, 0);
+        snprintf(sql, sizeof sql, "SELECT %s FROM options"
+                 " WHERE run = ?1 AND number = ?2", columns);
+        int rc = store_prepare(store, sql, &store->option_get,
+                               "reading an option", err);
+        if (rc != FACET_OK)
+            return rc;
+    }
+    sqlite3_stmt *s = store->option_get;
+    int rc = FACET_OK;
     sqlite3_bind_int64(s, 1, run);
     sqlite3_bind_int64(s, 2, number);
     int step = sqlite3_step(s);
@@ -191,7 +196,7 @@ int store_option_get(struct store *store, int64_t run, int64_t number,
             (long long)number);
     else
         rc = store_fail(store, "reading an option", err);
-    sqlite3_finalize(s);
+    sqlite3_reset(s);  /* holds no read transaction between calls */
     return rc;
 }
 
