@@ -236,7 +236,12 @@ keys G
 i=0 samples=0 agree=0 gauged=0 gauge_agree=0
 while [ $i -lt $((POLLS * 8)) ]; do
     [ "$(sqlite3 "$WORK/demo.db" 'SELECT status FROM runs WHERE id = 2' 2>/dev/null)" = done ] && break
+    # A screen caught while the terminal is still taking a redraw shows
+    # new lines above old ones: only a screen that holds still for 50 ms
+    # (the counts change once a second) is judged.
     shot=$(screen)
+    sleep 0.05
+    [ "$(screen)" = "$shot" ] || { i=$((i + 1)); continue; }
     t=$(echo "$shot" | sed -n 1p | grep -oE 'running \| [0-9,]+ options' | grep -oE '[0-9,]+')
     c=$(echo "$shot" | sed -n 2p | grep -oE ' of [0-9,]+  ' | grep -oE '[0-9,]+')
     g=$(echo "$shot" | sed -n 23p | grep -oE '[0-9,]+ options stored' | grep -oE '^[0-9,]+')
