@@ -57,10 +57,9 @@ int front_analyse(const struct evaluated_option *options, size_t n,
     /* Values equal within the run's tolerance (ties.h) are made equal
      * once, here, so that the ranks, the crowding, the knee and the
      * hypervolume's ideal and nadir all see the same ties. */
-    if (ties_merge(value, n, m, value) != 0) {
-        rc = facet_error_set(err, FACET_EWORK, "out of memory (front)");
+    rc = ties_merge(value, n, m, value, err);
+    if (rc != FACET_OK)
         goto done;
-    }
     for (size_t i = 0; i < n; i++)
         for (size_t j = 0; j < m; j++)
             if (violation[i] == 0) {

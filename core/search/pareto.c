@@ -162,7 +162,7 @@ static double *merge_ties(const double *objectives, size_t n, size_t m)
     double *merged = malloc((n * m + 1) * sizeof *merged);
     if (merged == NULL)
         return NULL;
-    if (ties_merge(objectives, n, m, merged) != 0) {
+    if (ties_merge(objectives, n, m, merged, NULL) != FACET_OK) {
         free(merged);
         return NULL;
     }
