@@ -173,11 +173,11 @@ static int classify_run(int argc, char **argv, struct facet_error *err)
         char grid_name[64];
         snprintf(grid_name, sizeof grid_name, "%d x %d panels", params.nu,
                  params.nv);
-        double facet = mesh_facet_size(&surface.mesh);
-        double side = panels_typical_side(&panels);
-        if (facet < 0 || side < 0)
-            rc = facet_error_set(err, FACET_EWORK, "out of memory");
-        else
+        double facet, side;
+        rc = mesh_facet_size(&surface.mesh, &facet, err);
+        if (rc == FACET_OK)
+            rc = panels_typical_side(&panels, &side, err);
+        if (rc == FACET_OK)
             is_coarse = coarse_mesh_warning(facet, side, grid_name, coarse,
                                             sizeof coarse);
     }

@@ -647,8 +647,9 @@ static void collect_warnings(const struct surface *surface,
     char grid[80];
     snprintf(grid, sizeof grid, "the finest grid of the space, %d x %d",
              space->u_max, space->v_max);
-    double facet = mesh_facet_size(&surface->mesh);
-    if (facet > 0 && coarse_mesh_warning(facet, side, grid, lines[n],
+    double facet;
+    if (mesh_facet_size(&surface->mesh, &facet, NULL) == FACET_OK &&
+        facet > 0 && coarse_mesh_warning(facet, side, grid, lines[n],
                                          sizeof lines[0]))
         n++;
     size_t used = 0;
