@@ -498,7 +498,9 @@ static int parallel_tick(struct tui_screen *base, struct tui_app *app)
     struct parallel_screen *s = (struct parallel_screen *)base;
     struct facet_error err;
     if (!s->model->count_exact) {
-        if (table_model_count_step(s->model, 200000, &err) < 0)
+        int exact;
+        if (table_model_count_step(s->model, 200000, &exact, &err) !=
+            FACET_OK)
             tui_error(app, "%s", err.message);
         return 1;
     }
