@@ -204,10 +204,16 @@ static int append(char *out, size_t size, size_t *used, const char *text)
     return 0;
 }
 
-int pc_filter_text(const struct pc_state *st, char *out, size_t size)
+static int too_long(struct facet_error *err)
+{
+    return facet_error_set(err, FACET_EINPUT, "the filter is too long");
+}
+
+int pc_filter_text(const struct pc_state *st, char *out, size_t size,
+                   struct facet_error *err)
 {
     if (size == 0)
-        return -1;
+        return too_long(err);
     out[0] = '\0';
     size_t used = 0;
     char term[1100];
@@ -218,7 +224,7 @@ int pc_filter_text(const struct pc_state *st, char *out, size_t size)
         else
             snprintf(term, sizeof term, "%s", st->base);
         if (append(out, size, &used, term))
-            return -1;
+            return too_long(err);
     }
     for (int a = 0; a < PC_AXES; a++) {
         const struct pc_brush *b = &st->brush[a];
@@ -228,16 +234,16 @@ int pc_filter_text(const struct pc_state *st, char *out, size_t size)
             snprintf(term, sizeof term, "%s >= %.15g", pc_axes[a].column,
                      b->lo);
             if (append(out, size, &used, term))
-                return -1;
+                return too_long(err);
         }
         if (b->hi < st->max[a]) {
             snprintf(term, sizeof term, "%s <= %.15g", pc_axes[a].column,
                      b->hi);
             if (append(out, size, &used, term))
-                return -1;
+                return too_long(err);
         }
     }
-    return (int)used;
+    return FACET_OK;
 }
 
 /* The axis of column, or -1. */
@@ -334,22 +340,26 @@ void pc_from_filter(struct pc_state *st, const char *filter)
     }
 }
 
-int pc_canvas_init(struct pc_canvas *c, int width, int height)
+int pc_canvas_init(struct pc_canvas *c, int width, int height,
+                   struct facet_error *err)
 {
     memset(c, 0, sizeof *c);
     if (width < 1 || height < 1)
-        return -1;
+        return facet_error_set(err, FACET_EINPUT,
+                               "no room for a %d x %d canvas", width, height);
     size_t n = (size_t)width * (size_t)height;
     c->dots = calloc(n, 1);
     c->level = calloc(n, 1);
     c->slope = calloc(n, 1);
     if (!c->dots || !c->level || !c->slope) {
         pc_canvas_free(c);
-        return -1;
+        return facet_error_set(err, FACET_EWORK,
+                               "out of memory (a %d x %d canvas)", width,
+                               height);
     }
     c->width = width;
     c->height = height;
-    return 0;
+    return FACET_OK;
 }
 
 void pc_canvas_free(struct pc_canvas *c)

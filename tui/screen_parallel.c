@@ -164,8 +164,8 @@ static void apply(struct parallel_screen *s, struct tui_app *app)
 {
     char text[2048];
     struct facet_error err;
-    if (pc_filter_text(&s->st, text, sizeof text) < 0) {
-        tui_error(app, "the filter is too long");
+    if (pc_filter_text(&s->st, text, sizeof text, &err) != FACET_OK) {
+        tui_error(app, "%s", err.message);
         return;
     }
     if (table_model_set_filter(s->model, text, &err) != FACET_OK) {
@@ -270,7 +270,8 @@ static void parallel_draw(struct tui_screen *base, struct tui_app *app,
 
     /* the polylines */
     struct pc_canvas c;
-    if (pc_canvas_init(&c, width, plot_h) == 0) {
+    struct facet_error canvas_err;  /* no canvas: the axes alone */
+    if (pc_canvas_init(&c, width, plot_h, &canvas_err) == FACET_OK) {
         if (!s->hide_context)
             for (size_t k = 0; k < s->context.n; k++)
                 if (!table_model_shows(m, &s->context.rows[k]))

@@ -57,7 +57,9 @@ static void test_brush_steps(void **state)
     struct pc_state st;
     ranges(&st);
     char text[512];
-    assert_int_equal(pc_filter_text(&st, text, sizeof text), 0);
+    struct facet_error err;
+    assert_int_equal(pc_filter_text(&st, text, sizeof text, &err),
+                     FACET_OK);
     assert_string_equal(text, "");
     /* the high edge of cost down two steps: 1/20 of the range each,
      * rounded up to a thousand (a hundredth of the range's magnitude) */
@@ -68,12 +70,12 @@ static void test_brush_steps(void **state)
     assert_true(st.brush[COST].hi >= 1742720.4 - 2 * step);
     assert_true(st.brush[COST].hi < 1742720.4 - 2 * step + 1000);
     assert_true(fmod(st.brush[COST].hi, 1000) == 0);
-    pc_filter_text(&st, text, sizeof text);
+    pc_filter_text(&st, text, sizeof text, &err);
     assert_string_equal(text, "cost <= 1724000");
     /* integer axes step by whole numbers */
     pc_brush_move(&st, U, 0, 1);
     assert_true(st.brush[U].lo == 5);
-    pc_filter_text(&st, text, sizeof text);
+    pc_filter_text(&st, text, sizeof text, &err);
     assert_string_equal(text, "nu >= 5 and cost <= 1724000");
     /* edges never cross, and stay in the range */
     pc_brush_move(&st, U, 0, 100);
@@ -86,17 +88,20 @@ static void test_brush_steps(void **state)
     /* back out to the whole range: the brush goes */
     pc_brush_move(&st, COST, 1, 5);
     assert_false(st.brush[COST].active);
-    assert_int_equal(pc_filter_text(&st, text, sizeof text), 0);
+    assert_int_equal(pc_filter_text(&st, text, sizeof text, &err),
+                     FACET_OK);
+    assert_string_equal(text, "");
     /* a small metric rounds to hundredths */
     pc_brush_move(&st, PLANARITY, 0, 3);
-    pc_filter_text(&st, text, sizeof text);
+    pc_filter_text(&st, text, sizeof text, &err);
     assert_string_equal(text, "planarity >= 0.37");
     /* no range (no options): nothing happens */
     st.min[DP] = st.max[DP] = NAN;
     pc_brush_move(&st, DP, 0, 1);
     assert_false(st.brush[DP].active);
     /* too small a buffer */
-    assert_int_equal(pc_filter_text(&st, text, 5), -1);
+    assert_int_equal(pc_filter_text(&st, text, 5, &err), FACET_EINPUT);
+    assert_string_equal(err.message, "the filter is too long");
 }
 
 static void test_typed_range(void **state)
@@ -139,11 +144,12 @@ static void test_filter_round_trip(void **state)
     pc_brush_set(&st, COST, 1.6e6, 1.7e6);
     pc_brush_set(&st, V, 5, 8);
     char text[512];
-    assert_true(pc_filter_text(&st, text, sizeof text) > 0);
+    struct facet_error err;
+    assert_int_equal(pc_filter_text(&st, text, sizeof text, &err),
+                     FACET_OK);
     assert_string_equal(text, "pareto and nv >= 5 and cost >= 1600000 and "
                               "cost <= 1700000");
     struct filter *f;
-    struct facet_error err;
     assert_int_equal(filter_compile(text, &f, &err), FACET_OK);
     struct pc_state back;
     ranges(&back);
@@ -174,7 +180,7 @@ static void test_filter_round_trip(void **state)
     filter_free(f);
     assert_false(back.brush[COST].active);
     pc_brush_set(&back, U, 6, 8);
-    pc_filter_text(&back, text, sizeof text);
+    pc_filter_text(&back, text, sizeof text, &err);
     assert_string_equal(text, "((cost <= 1600000) or pareto) and nu >= 6");
     assert_int_equal(filter_compile(text, &f, &err), FACET_OK);
     filter_free(f);
@@ -192,7 +198,8 @@ static void test_canvas(void **state)
 {
     (void)state;
     struct pc_canvas c;
-    assert_int_equal(pc_canvas_init(&c, 4, 2), 0);
+    struct facet_error err;
+    assert_int_equal(pc_canvas_init(&c, 4, 2, &err), FACET_OK);
     /* a horizontal line along the top dot row of both cell rows' first */
     pc_canvas_line(&c, 0, 0, 7, 0, 1);
     for (int x = 0; x < 4; x++) {
@@ -215,7 +222,8 @@ static void test_canvas(void **state)
     pc_canvas_line(&c, 2, 7, 5, 1, 5);
     assert_int_equal(c.slope[5], '/');
     pc_canvas_free(&c);
-    assert_int_equal(pc_canvas_init(&c, 0, 3), -1);
+    assert_int_equal(pc_canvas_init(&c, 0, 3, &err), FACET_EINPUT);
+    pc_canvas_free(&c);
     char glyph[4];
     pc_braille(0, glyph);
     assert_string_equal(glyph, "\u2800");
