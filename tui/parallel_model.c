@@ -147,8 +147,14 @@ static int parse_number(const char *text, const char *end, double *out)
     return 0;
 }
 
+static int not_a_range(const char *text, struct facet_error *err)
+{
+    return facet_error_set(err, FACET_EINPUT, "range: '%s' is not LO:HI "
+                           "(e.g. 1.1M:1.2M, :900, 20:)", text);
+}
+
 int pc_parse_range(const char *text, double min, double max, double *lo,
-                   double *hi)
+                   double *hi, struct facet_error *err)
 {
     const char *sep = strstr(text, "..");
     size_t width = 2;
@@ -164,17 +170,17 @@ int pc_parse_range(const char *text, double min, double max, double *lo,
         sep = strchr(p, ' ');
         width = 1;
         if (sep == NULL)
-            return -1;
+            return not_a_range(text, err);
     }
     int a = parse_number(text, sep, lo);
     int b = parse_number(sep + width, sep + strlen(sep), hi);
     if (a < 0 || b < 0 || (a == 1 && b == 1))
-        return -1;
+        return not_a_range(text, err);
     if (a == 1)
         *lo = min;
     if (b == 1)
         *hi = max;
-    return 0;
+    return FACET_OK;
 }
 
 /* Whether the parenthesis at text[0] closes at text's last character. */

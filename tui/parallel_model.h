@@ -63,9 +63,10 @@ void pc_brush_set(struct pc_state *st, int axis, double lo, double hi);
 
 /* Reads "LO:HI", "LO..HI" or "LO HI" (numbers with an optional k or M
  * suffix; either side may be empty for the axis's end) into *lo, *hi.
- * Returns 0, or -1 for text that is none of these. */
+ * Returns FACET_OK, or FACET_EINPUT for text that is none of these ("range:
+ * 'TEXT' is not LO:HI" with examples). */
 int pc_parse_range(const char *text, double min, double max, double *lo,
-                   double *hi);
+                   double *hi, struct facet_error *err);
 
 /* The filter that base and the brushes make, in the --where language:
  * "cost >= 1100000 and cost <= 1200000" (an edge at its axis's end is

@@ -400,15 +400,15 @@ static enum tui_result range_key(struct parallel_screen *s,
         return RESULT_HANDLED;
     int a = s->axis;
     double lo, hi;
+    struct facet_error err;
     const char *t = s->range.text;
     while (*t == ' ')
         t++;
     if (*t == '\0') {
         s->st.brush[a].active = 0;
-    } else if (pc_parse_range(t, s->st.min[a], s->st.max[a], &lo, &hi) !=
-               0) {
-        tui_error(app, "range: '%s' is not LO:HI (e.g. 1.1M:1.2M, :900, "
-                  "20:)", s->range.text);
+    } else if (pc_parse_range(t, s->st.min[a], s->st.max[a], &lo, &hi,
+                              &err) != FACET_OK) {
+        tui_error(app, "%s", err.message);
         return RESULT_HANDLED;
     } else {
         pc_brush_set(&s->st, a, lo, hi);

@@ -108,22 +108,35 @@ static void test_typed_range(void **state)
 {
     (void)state;
     double lo, hi;
-    assert_int_equal(pc_parse_range("1.1M:1.2M", 0, 9e9, &lo, &hi), 0);
+    struct facet_error err;
+    assert_int_equal(pc_parse_range("1.1M:1.2M", 0, 9e9, &lo, &hi, &err),
+                     FACET_OK);
     assert_true(lo == 1.1e6 && hi == 1.2e6);
-    assert_int_equal(pc_parse_range("1.5e6..1.6e6", 0, 9e9, &lo, &hi), 0);
+    assert_int_equal(pc_parse_range("1.5e6..1.6e6", 0, 9e9, &lo, &hi, &err),
+                     FACET_OK);
     assert_true(lo == 1.5e6 && hi == 1.6e6);
-    assert_int_equal(pc_parse_range(":900", 826, 1069, &lo, &hi), 0);
+    assert_int_equal(pc_parse_range(":900", 826, 1069, &lo, &hi, &err),
+                     FACET_OK);
     assert_true(lo == 826 && hi == 900);
-    assert_int_equal(pc_parse_range("20: ", 4, 60, &lo, &hi), 0);
+    assert_int_equal(pc_parse_range("20: ", 4, 60, &lo, &hi, &err),
+                     FACET_OK);
     assert_true(lo == 20 && hi == 60);
-    assert_int_equal(pc_parse_range("2 3", 0, 9, &lo, &hi), 0);
+    assert_int_equal(pc_parse_range("2 3", 0, 9, &lo, &hi, &err),
+                     FACET_OK);
     assert_true(lo == 2 && hi == 3);
-    assert_int_equal(pc_parse_range("800k:", 0, 9e9, &lo, &hi), 0);
+    assert_int_equal(pc_parse_range("800k:", 0, 9e9, &lo, &hi, &err),
+                     FACET_OK);
     assert_true(lo == 8e5);
-    assert_int_equal(pc_parse_range(":", 0, 9, &lo, &hi), -1);
-    assert_int_equal(pc_parse_range("abc:3", 0, 9, &lo, &hi), -1);
-    assert_int_equal(pc_parse_range("3", 0, 9, &lo, &hi), -1);
-    assert_int_equal(pc_parse_range("1:nan", 0, 9, &lo, &hi), -1);
+    assert_int_equal(pc_parse_range(":", 0, 9, &lo, &hi, &err),
+                     FACET_EINPUT);
+    assert_int_equal(pc_parse_range("abc:3", 0, 9, &lo, &hi, &err),
+                     FACET_EINPUT);
+    assert_int_equal(pc_parse_range("3", 0, 9, &lo, &hi, &err),
+                     FACET_EINPUT);
+    assert_int_equal(pc_parse_range("1:nan", 0, 9, &lo, &hi, &err),
+                     FACET_EINPUT);
+    assert_string_equal(err.message, "range: '1:nan' is not LO:HI (e.g. "
+                                     "1.1M:1.2M, :900, 20:)");
     /* a set range is ordered and clamped */
     struct pc_state st;
     ranges(&st);
