@@ -3,6 +3,7 @@
  */
 #include "core/search/front.h"
 
+#include <assert.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -23,6 +24,9 @@ int front_analyse(const struct evaluated_option *options, size_t n,
                   double max_panel_area, struct front *out,
                   struct facet_error *err)
 {
+    /* ideal and nadir below hold OBJECTIVES_MAX: the run's objectives
+     * were parsed against that limit (objectives_parse). */
+    assert(nobjectives >= 1 && nobjectives <= OBJECTIVES_MAX);
     memset(out, 0, sizeof *out);
     out->n = n;
     out->knee = SIZE_MAX;

@@ -8,6 +8,7 @@
  */
 #include "core/search/pareto.h"
 
+#include <assert.h>
 #include <limits.h>
 #include <math.h>
 #include <stdbool.h>
@@ -187,6 +188,7 @@ static double *merge_ties(const double *objectives, size_t n, size_t m)
 static int rank_two(const struct point_set *set, const size_t *point,
                     size_t u, int *rank)
 {
+    assert(set->m == 2 && u < INT_MAX);
     double *low = malloc((u + 1) * sizeof *low);
     if (low == NULL)
         return -1;
@@ -334,6 +336,7 @@ static size_t dense_ranks(const double *values, size_t u, size_t *sorted,
 static int rank_three(const struct point_set *set, const size_t *point,
                       size_t u, int *rank)
 {
+    assert(set->m == 3 && u < INT_MAX);
     struct sweep3 s = {.u = u};
     double *values = malloc(u * sizeof *values);
     s.y = malloc(u * sizeof *s.y);
@@ -379,6 +382,7 @@ done:
 static int rank_many(const struct point_set *set, const size_t *point,
                      size_t u, int *rank)
 {
+    assert(set->m >= 4 && u < INT_MAX);
     size_t *head = malloc((u + 1) * sizeof *head);
     size_t *tail = malloc((u + 1) * sizeof *tail);
     size_t *next = malloc((u + 1) * sizeof *next);
@@ -429,6 +433,9 @@ static int rank_many(const struct point_set *set, const size_t *point,
 static int rank_subset(const double *objectives, size_t m, size_t *subset,
                        size_t count, int offset, int *rank)
 {
+    /* Ranks are ints: pareto_rank refuses n >= INT_MAX. */
+    assert(m >= 1 && count < INT_MAX && offset >= 0 &&
+           count <= (size_t)(INT_MAX - offset));
     if (count == 0)
         return 0;
     struct point_set set = {.objectives = objectives, .m = m};
@@ -897,6 +904,7 @@ static int volume_of(const double *points, size_t count, size_t dims,
 static int volume_two(const double *points, size_t count,
                       const double *reference, double *volume)
 {
+    assert(count >= 1);
     size_t *order = malloc(count * sizeof *order);
     size_t *scratch = malloc((count / 2 + 1) * sizeof *scratch);
     if (order == NULL || scratch == NULL) {
@@ -1011,6 +1019,7 @@ done:
 static int volume_sliced(const double *points, size_t count, size_t dims,
                          const double *reference, double *volume)
 {
+    assert(dims >= 4 && count >= 1);
     size_t *order = malloc(count * sizeof *order);
     size_t *scratch = malloc((count / 2 + 1) * sizeof *scratch);
     double *slice = malloc(count * (dims - 1) * sizeof *slice);
@@ -1099,6 +1108,7 @@ int pareto_hypervolume(const double *objectives, size_t n, size_t m,
 void pareto_normalize(const double *objectives, size_t n, size_t m,
                       const double *ideal, const double *nadir, double *out)
 {
+    assert(m >= 1 || n == 0);
     for (size_t i = 0; i < n; i++)
         for (size_t j = 0; j < m; j++) {
             double range = nadir[j] - ideal[j];
