@@ -131,14 +131,11 @@ static int curvature_run(int argc, char **argv, struct facet_error *err)
         {"force", 'f', ARG_FLAG, NULL, &force},
         {NULL, 0, ARG_FLAG, NULL, NULL},
     };
-    const char *path[1];
-    int count;
-    int rc = args_parse(argc, argv, options, path, 1, &count, err);
+    const char *path;
+    int rc = args_parse_one(argc, argv, options, &path,
+            "curvature: name one OBJ file (facet curvature FILE.obj)", err);
     if (rc != FACET_OK)
         return rc;
-    if (count != 1)
-        return facet_error_set(err, FACET_EINPUT,
-            "curvature: name one OBJ file (facet curvature FILE.obj)");
     if (csv != NULL && json)
         return facet_error_set(err, FACET_EINPUT,
             "curvature: give --csv FILE or --json, not both");
@@ -153,7 +150,7 @@ static int curvature_run(int argc, char **argv, struct facet_error *err)
     struct surface surface;
     struct curvature curvature;
     memset(&curvature, 0, sizeof curvature);
-    rc = surface_open(path[0], &mesh_options, &surface, err);
+    rc = surface_open(path, &mesh_options, &surface, err);
     if (rc == FACET_OK)
         rc = curvature_at_vertices(&surface.mesh, flip, &curvature, err);
     if (rc == FACET_OK) {

@@ -170,14 +170,11 @@ static int info_run(int argc, char **argv, struct facet_error *err)
         {"uv", 0, ARG_STRING, &uv_text, NULL},
         {NULL, 0, ARG_FLAG, NULL, NULL},
     };
-    const char *path[1];
-    int count;
-    int rc = args_parse(argc, argv, options, path, 1, &count, err);
+    const char *path;
+    int rc = args_parse_one(argc, argv, options, &path,
+            "info: name one OBJ file (facet info FILE.obj)", err);
     if (rc != FACET_OK)
         return rc;
-    if (count != 1)
-        return facet_error_set(err, FACET_EINPUT,
-                               "info: name one OBJ file (facet info FILE.obj)");
     struct mesh_options mesh_options = {UNITS_M, object, group};
     if (units_text != NULL &&
         (rc = mesh_units_parse(units_text, &mesh_options.units, err)) != 0)
@@ -187,7 +184,7 @@ static int info_run(int argc, char **argv, struct facet_error *err)
         return rc;
 
     struct surface surface;
-    rc = surface_open(path[0], &mesh_options, &surface, err);
+    rc = surface_open(path, &mesh_options, &surface, err);
     struct uv_report uv;
     memset(&uv, 0, sizeof uv);
     if (rc == FACET_OK && surface.mesh.has_uv)

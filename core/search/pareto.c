@@ -148,6 +148,20 @@ static int check_violation(const double *violation, size_t n,
     return FACET_OK;
 }
 
+/* The input of the functions that rank: objectives, violation, and few
+ * enough points for an int rank. */
+static int check_ranked(const double *objectives, size_t n, size_t m,
+                        const double *violation, struct facet_error *err)
+{
+    int rc = check_objectives(objectives, n, m, err);
+    if (rc == FACET_OK)
+        rc = check_violation(violation, n, err);
+    if (rc == FACET_OK && n >= INT_MAX)
+        rc = facet_error_set(err, FACET_EINPUT,
+                             "pareto: %zu points are too many to rank", n);
+    return rc;
+}
+
 static int out_of_memory(struct facet_error *err, const char *what)
 {
     return facet_error_set(err, FACET_EWORK, "pareto: out of memory (%s)",
@@ -533,14 +547,9 @@ int pareto_rank(const double *objectives, size_t n, size_t m,
                 const double *violation, int *rank, int *nfronts,
                 struct facet_error *err)
 {
-    int rc = check_objectives(objectives, n, m, err);
-    if (rc == FACET_OK)
-        rc = check_violation(violation, n, err);
+    int rc = check_ranked(objectives, n, m, violation, err);
     if (rc != FACET_OK)
         return rc;
-    if (n >= INT_MAX)
-        return facet_error_set(err, FACET_EINPUT,
-                               "pareto: %zu points are too many to rank", n);
     double *merged = merge_ties(objectives, n, m);
     if (merged == NULL)
         return out_of_memory(err, "ranks");
@@ -829,14 +838,9 @@ int pareto_select(const double *objectives, size_t n, size_t m,
         return facet_error_set(err, FACET_EINPUT,
                                "pareto: cannot keep %zu of %zu points", keep,
                                n);
-    int rc = check_objectives(objectives, n, m, err);
-    if (rc == FACET_OK)
-        rc = check_violation(violation, n, err);
+    int rc = check_ranked(objectives, n, m, violation, err);
     if (rc != FACET_OK)
         return rc;
-    if (n >= INT_MAX)
-        return facet_error_set(err, FACET_EINPUT,
-                               "pareto: %zu points are too many to rank", n);
     int *rank = malloc((n + 1) * sizeof *rank);
     double *crowding = malloc((n + 1) * sizeof *crowding);
     bool *copy = malloc((n + 1) * sizeof *copy);
