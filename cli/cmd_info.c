@@ -159,25 +159,22 @@ static void print_json(const struct surface *s, const struct uv_report *uv,
 
 static int info_run(int argc, char **argv, struct facet_error *err)
 {
-    const char *units_text = NULL, *object = NULL, *group = NULL;
+    struct surface_flags which = {NULL, NULL, NULL};
     const char *uv_text = NULL;
     int json = 0;
-    const struct arg_option options[] = {
-        {"units", 0, ARG_STRING, &units_text, NULL},
-        {"object", 0, ARG_STRING, &object, NULL},
-        {"group", 0, ARG_STRING, &group, NULL},
-        {"json", 0, ARG_FLAG, NULL, &json},
+    /* The surface's flags first; the zeroed last entry ends the table. */
+    struct arg_option options[SURFACE_FLAG_COUNT + 3] = {
+        [SURFACE_FLAG_COUNT] = {"json", 0, ARG_FLAG, NULL, &json},
         {"uv", 0, ARG_STRING, &uv_text, NULL},
-        {NULL, 0, ARG_FLAG, NULL, NULL},
     };
+    surface_flags_table(&which, options);
     const char *path;
     int rc = args_parse_one(argc, argv, options, &path,
             "info: name one OBJ file (facet info FILE.obj)", err);
     if (rc != FACET_OK)
         return rc;
-    struct mesh_options mesh_options = {UNITS_M, object, group};
-    if (units_text != NULL &&
-        (rc = mesh_units_parse(units_text, &mesh_options.units, err)) != 0)
+    struct mesh_options mesh_options;
+    if ((rc = surface_flags_apply(&which, &mesh_options, err)) != FACET_OK)
         return rc;
     enum param_method want;
     if ((rc = classify_flags_uv(uv_text, &want, err)) != FACET_OK)
