@@ -32,6 +32,8 @@ OPT     := -O1 -g -fsanitize=address,undefined,fuzzer-no-link \
 else
 OPT     := -O2 -g
 endif
+# No -DNDEBUG in any variant: assert() states Facet's invariants and stays
+# live in the release build (core/base/error.c refuses to build without).
 CFLAGS  := -std=c11 $(WARN) $(DEFS) $(OPT) -MMD -MP -I.
 LDLIBS  := -lsqlite3 $(shell pkg-config --libs ncursesw 2>/dev/null || echo -lncursesw) -lpthread -lm
 LDFLAGS := $(filter -fsanitize=%,$(OPT))

@@ -115,6 +115,17 @@ int args_parse(int argc, char **argv, const struct arg_option *options,
     return FACET_OK;
 }
 
+int args_parse_one(int argc, char **argv, const struct arg_option *options,
+                   const char **positional, const char *missing,
+                   struct facet_error *err)
+{
+    int count;
+    int rc = args_parse(argc, argv, options, positional, 1, &count, err);
+    if (rc == FACET_OK && count != 1)
+        rc = facet_error_set(err, FACET_EINPUT, "%s", missing);
+    return rc;
+}
+
 int args_int(const char *text, long min, long max, const char *what,
              long *out, struct facet_error *err)
 {

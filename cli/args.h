@@ -33,6 +33,15 @@ int args_parse(int argc, char **argv, const struct arg_option *options,
                const char **positional, int max, int *count,
                struct facet_error *err);
 
+/* args_parse for a command of exactly one positional argument (the
+ * surface or the database) into *positional. Returns FACET_OK, or
+ * FACET_EINPUT as args_parse does, or with the one-line reminder missing
+ * ("runs: name the result database (facet runs runs.db)") when the
+ * argument is not given. */
+int args_parse_one(int argc, char **argv, const struct arg_option *options,
+                   const char **positional, const char *missing,
+                   struct facet_error *err);
+
 /* Parses text as an integer in [min, max] into *out. what names the value in
  * the error ("--res"). Returns FACET_OK or FACET_EINPUT. */
 int args_int(const char *text, long min, long max, const char *what,

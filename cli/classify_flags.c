@@ -22,18 +22,38 @@ const char classify_flags_usage[] =
     "                      quad grid's own i, j), plane, harmonic; default\n"
     "                      the first of these that applies\n";
 
+void surface_flags_table(struct surface_flags *f, struct arg_option *table)
+{
+    const struct arg_option entries[SURFACE_FLAG_COUNT] = {
+        {"units", 0, ARG_STRING, &f->units, NULL},
+        {"object", 0, ARG_STRING, &f->object, NULL},
+        {"group", 0, ARG_STRING, &f->group, NULL},
+    };
+    memcpy(table, entries, sizeof entries);
+}
+
+int surface_flags_apply(const struct surface_flags *f,
+                        struct mesh_options *mesh, struct facet_error *err)
+{
+    *mesh = (struct mesh_options){UNITS_M, f->object, f->group};
+    if (f->units != NULL)
+        return mesh_units_parse(f->units, &mesh->units, err);
+    return FACET_OK;
+}
+
 void classify_flags_table(struct classify_flags *f, struct arg_option *table)
 {
+    /* In the order of the usage lines, the surface's flags among them. */
     const struct arg_option entries[CLASSIFY_FLAG_COUNT] = {
-        {"units", 0, ARG_STRING, &f->units, NULL},
+        {"units", 0, ARG_STRING, &f->surface.units, NULL},
         {"curvature-tol", 0, ARG_STRING, &f->curvature_tol, NULL},
         {"per-panel", 0, ARG_STRING, &f->per_panel, NULL},
         {"flip-normals", 0, ARG_FLAG, NULL, &f->flip_normals},
         {"prices", 0, ARG_STRING, &f->prices, NULL},
         {"sp-as-fp", 0, ARG_FLAG, NULL, &f->sp_as_fp},
         {"max-panel-area", 0, ARG_STRING, &f->max_area, NULL},
-        {"object", 0, ARG_STRING, &f->object, NULL},
-        {"group", 0, ARG_STRING, &f->group, NULL},
+        {"object", 0, ARG_STRING, &f->surface.object, NULL},
+        {"group", 0, ARG_STRING, &f->surface.group, NULL},
         {"uv", 0, ARG_STRING, &f->uv, NULL},
     };
     memcpy(table, entries, sizeof entries);
@@ -57,10 +77,9 @@ int classify_flags_apply(const struct classify_flags *f,
     memset(params, 0, sizeof *params);
     classify_defaults(&params->classify);
     params->mode = PANEL_EXTREMES;
-    *mesh = (struct mesh_options){UNITS_M, f->object, f->group};
     double number;
     int rc;
-    if (f->units && (rc = mesh_units_parse(f->units, &mesh->units, err)))
+    if ((rc = surface_flags_apply(&f->surface, mesh, err)))
         return rc;
     if ((rc = classify_flags_uv(f->uv, uv, err)))
         return rc;

@@ -13,10 +13,31 @@
 #include "core/classify/option.h"
 #include "core/surface/param.h"
 
+/* The flags that pick the surface of a file and its units (--units,
+ * --object, --group), as given (pointing into argv), NULL when absent:
+ * what every command that reads a surface takes. */
+struct surface_flags {
+    const char *units, *object, *group;
+};
+
+/* Entries surface_flags_table writes. */
+#define SURFACE_FLAG_COUNT 3
+
+/* Writes the SURFACE_FLAG_COUNT arg_option entries of the flags (units,
+ * object, group) into table, pointing at *flags (which must outlive the
+ * parse). */
+void surface_flags_table(struct surface_flags *flags,
+                         struct arg_option *table);
+
+/* Sets *mesh from the flags (metres, the whole file, when absent).
+ * Returns FACET_OK or FACET_EINPUT naming a bad --units. */
+int surface_flags_apply(const struct surface_flags *flags,
+                        struct mesh_options *mesh, struct facet_error *err);
+
 /* The flags' values as given (pointing into argv), NULL when absent. */
 struct classify_flags {
-    const char *units, *curvature_tol, *per_panel, *prices, *max_area;
-    const char *object, *group, *uv;
+    struct surface_flags surface;
+    const char *curvature_tol, *per_panel, *prices, *max_area, *uv;
     int flip_normals, sp_as_fp;
 };
 

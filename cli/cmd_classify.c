@@ -129,15 +129,12 @@ static int classify_run(int argc, char **argv, struct facet_error *err)
     classify_flags_table(&flags, options + 4);
     options[CLASSIFY_FLAG_COUNT + 4] = (struct arg_option){NULL, 0, ARG_FLAG,
                                                            NULL, NULL};
-    const char *path[1];
-    int count;
-    int rc = args_parse(argc, argv, options, path, 1, &count, err);
+    const char *path;
+    int rc = args_parse_one(argc, argv, options, &path,
+            "classify: name one OBJ file (facet classify FILE.obj --grid "
+            "37x49)", err);
     if (rc != FACET_OK)
         return rc;
-    if (count != 1)
-        return facet_error_set(err, FACET_EINPUT,
-            "classify: name one OBJ file (facet classify FILE.obj --grid "
-            "37x49)");
 
     struct option_params params;
     struct mesh_options mesh_options;
@@ -160,7 +157,7 @@ static int classify_run(int argc, char **argv, struct facet_error *err)
     struct panelization panels;
     struct option_totals totals;
     memset(&panels, 0, sizeof panels);
-    rc = surface_open(path[0], &mesh_options, &surface, err);
+    rc = surface_open(path, &mesh_options, &surface, err);
     if (rc == FACET_OK)
         rc = surface_prepare(&surface, flip, uv, err);
     if (rc == FACET_OK)
@@ -173,11 +170,11 @@ static int classify_run(int argc, char **argv, struct facet_error *err)
         char grid_name[64];
         snprintf(grid_name, sizeof grid_name, "%d x %d panels", params.nu,
                  params.nv);
-        double facet = mesh_facet_size(&surface.mesh);
-        double side = panels_typical_side(&panels);
-        if (facet < 0 || side < 0)
-            rc = facet_error_set(err, FACET_EWORK, "out of memory");
-        else
+        double facet, side;
+        rc = mesh_facet_size(&surface.mesh, &facet, err);
+        if (rc == FACET_OK)
+            rc = panels_typical_side(&panels, &side, err);
+        if (rc == FACET_OK)
             is_coarse = coarse_mesh_warning(facet, side, grid_name, coarse,
                                             sizeof coarse);
     }

@@ -12,6 +12,7 @@
 #include <string.h>
 
 #include "args.h"
+#include "classify_flags.h"
 #include "command.h"
 #include "core/surface/curvature.h"
 #include "core/out/json.h"
@@ -118,33 +119,27 @@ static void print_summary(const struct surface *s, const struct curvature *c)
 
 static int curvature_run(int argc, char **argv, struct facet_error *err)
 {
-    const char *units_text = NULL, *object = NULL, *group = NULL;
+    struct surface_flags which = {NULL, NULL, NULL};
     const char *csv = NULL;
     int json = 0, flip = 0, force = 0;
-    const struct arg_option options[] = {
-        {"units", 0, ARG_STRING, &units_text, NULL},
-        {"object", 0, ARG_STRING, &object, NULL},
-        {"group", 0, ARG_STRING, &group, NULL},
-        {"csv", 0, ARG_STRING, &csv, NULL},
+    /* The surface's flags first; the zeroed last entry ends the table. */
+    struct arg_option options[SURFACE_FLAG_COUNT + 5] = {
+        [SURFACE_FLAG_COUNT] = {"csv", 0, ARG_STRING, &csv, NULL},
         {"json", 0, ARG_FLAG, NULL, &json},
         {"flip-normals", 0, ARG_FLAG, NULL, &flip},
         {"force", 'f', ARG_FLAG, NULL, &force},
-        {NULL, 0, ARG_FLAG, NULL, NULL},
     };
-    const char *path[1];
-    int count;
-    int rc = args_parse(argc, argv, options, path, 1, &count, err);
+    surface_flags_table(&which, options);
+    const char *path;
+    int rc = args_parse_one(argc, argv, options, &path,
+            "curvature: name one OBJ file (facet curvature FILE.obj)", err);
     if (rc != FACET_OK)
         return rc;
-    if (count != 1)
-        return facet_error_set(err, FACET_EINPUT,
-            "curvature: name one OBJ file (facet curvature FILE.obj)");
     if (csv != NULL && json)
         return facet_error_set(err, FACET_EINPUT,
             "curvature: give --csv FILE or --json, not both");
-    struct mesh_options mesh_options = {UNITS_M, object, group};
-    if (units_text != NULL &&
-        (rc = mesh_units_parse(units_text, &mesh_options.units, err)) != 0)
+    struct mesh_options mesh_options;
+    if ((rc = surface_flags_apply(&which, &mesh_options, err)) != FACET_OK)
         return rc;
     /* Refuse an existing CSV before the work, not after it. */
     if (csv != NULL && (rc = outfile_check(csv, force, err)) != FACET_OK)
@@ -153,7 +148,7 @@ static int curvature_run(int argc, char **argv, struct facet_error *err)
     struct surface surface;
     struct curvature curvature;
     memset(&curvature, 0, sizeof curvature);
-    rc = surface_open(path[0], &mesh_options, &surface, err);
+    rc = surface_open(path, &mesh_options, &surface, err);
     if (rc == FACET_OK)
         rc = curvature_at_vertices(&surface.mesh, flip, &curvature, err);
     if (rc == FACET_OK) {

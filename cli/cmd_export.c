@@ -48,15 +48,15 @@ static int export_main(int argc, char **argv, struct facet_error *err)
         {"force", 'f', ARG_FLAG, NULL, &request.force},
         {NULL, 0, ARG_FLAG, NULL, NULL},
     };
-    const char *path[1];
-    int count;
-    int rc = args_parse(argc, argv, options, path, 1, &count, err);
+    const char *path;
+    const char *missing =
+        "export: give the database, the run and the option (facet "
+        "export runs.db --run 1 --option 12 --obj knee.obj)";
+    int rc = args_parse_one(argc, argv, options, &path, missing, err);
     if (rc != FACET_OK)
         return rc;
-    if (count != 1 || run == NULL || option == NULL)
-        return facet_error_set(err, FACET_EINPUT,
-            "export: give the database, the run and the option (facet "
-            "export runs.db --run 1 --option 12 --obj knee.obj)");
+    if (run == NULL || option == NULL)
+        return facet_error_set(err, FACET_EINPUT, "%s", missing);
     if (!request.obj && !request.csv && !request.json && !request.svg)
         return facet_error_set(err, FACET_EINPUT,
             "export: say what to write: --obj, --csv, --json and/or --svg");
@@ -73,7 +73,7 @@ static int export_main(int argc, char **argv, struct facet_error *err)
         return rc;
     request.map.triangles = triangles;
     struct store *store;
-    if ((rc = store_open_existing(path[0], &store, err)) != FACET_OK)
+    if ((rc = store_open_existing(path, &store, err)) != FACET_OK)
         return rc;
     if (surface != NULL)
         rc = study_repoint_surface(store, run_id, surface, err);

@@ -159,35 +159,29 @@ static void print_json(const struct surface *s, const struct uv_report *uv,
 
 static int info_run(int argc, char **argv, struct facet_error *err)
 {
-    const char *units_text = NULL, *object = NULL, *group = NULL;
+    struct surface_flags which = {NULL, NULL, NULL};
     const char *uv_text = NULL;
     int json = 0;
-    const struct arg_option options[] = {
-        {"units", 0, ARG_STRING, &units_text, NULL},
-        {"object", 0, ARG_STRING, &object, NULL},
-        {"group", 0, ARG_STRING, &group, NULL},
-        {"json", 0, ARG_FLAG, NULL, &json},
+    /* The surface's flags first; the zeroed last entry ends the table. */
+    struct arg_option options[SURFACE_FLAG_COUNT + 3] = {
+        [SURFACE_FLAG_COUNT] = {"json", 0, ARG_FLAG, NULL, &json},
         {"uv", 0, ARG_STRING, &uv_text, NULL},
-        {NULL, 0, ARG_FLAG, NULL, NULL},
     };
-    const char *path[1];
-    int count;
-    int rc = args_parse(argc, argv, options, path, 1, &count, err);
+    surface_flags_table(&which, options);
+    const char *path;
+    int rc = args_parse_one(argc, argv, options, &path,
+            "info: name one OBJ file (facet info FILE.obj)", err);
     if (rc != FACET_OK)
         return rc;
-    if (count != 1)
-        return facet_error_set(err, FACET_EINPUT,
-                               "info: name one OBJ file (facet info FILE.obj)");
-    struct mesh_options mesh_options = {UNITS_M, object, group};
-    if (units_text != NULL &&
-        (rc = mesh_units_parse(units_text, &mesh_options.units, err)) != 0)
+    struct mesh_options mesh_options;
+    if ((rc = surface_flags_apply(&which, &mesh_options, err)) != FACET_OK)
         return rc;
     enum param_method want;
     if ((rc = classify_flags_uv(uv_text, &want, err)) != FACET_OK)
         return rc;
 
     struct surface surface;
-    rc = surface_open(path[0], &mesh_options, &surface, err);
+    rc = surface_open(path, &mesh_options, &surface, err);
     struct uv_report uv;
     memset(&uv, 0, sizeof uv);
     if (rc == FACET_OK && surface.mesh.has_uv)

@@ -95,14 +95,11 @@ static int options_main(int argc, char **argv, struct facet_error *err)
         {"wide", 0, ARG_FLAG, NULL, &wide},
         {NULL, 0, ARG_FLAG, NULL, NULL},
     };
-    const char *path[1];
-    int count;
-    int rc = args_parse(argc, argv, options, path, 1, &count, err);
+    const char *path;
+    int rc = args_parse_one(argc, argv, options, &path,
+            "options: name the result database (facet options runs.db)", err);
     if (rc != FACET_OK)
         return rc;
-    if (count != 1)
-        return facet_error_set(err, FACET_EINPUT,
-            "options: name the result database (facet options runs.db)");
     if (json && csv)
         return facet_error_set(err, FACET_EINPUT,
             "options: choose one of --json and --csv");
@@ -117,7 +114,7 @@ static int options_main(int argc, char **argv, struct facet_error *err)
     if (where && (rc = filter_compile(where, &filter, err)))
         return rc;
     struct store *store;
-    if ((rc = store_open_read(path[0], &store, err)) != FACET_OK) {
+    if ((rc = store_open_read(path, &store, err)) != FACET_OK) {
         filter_free(filter);
         return rc;
     }

@@ -28,15 +28,15 @@ static int plot_main(int argc, char **argv, struct facet_error *err)
         {"force", 'f', ARG_FLAG, NULL, &force},
         {NULL, 0, ARG_FLAG, NULL, NULL},
     };
-    const char *path[1];
-    int count;
-    int rc = args_parse(argc, argv, options, path, 1, &count, err);
+    const char *path;
+    const char *missing =
+        "plot: give the database, --run N (or --runs N,M) and -o "
+        "FILE.svg";
+    int rc = args_parse_one(argc, argv, options, &path, missing, err);
     if (rc != FACET_OK)
         return rc;
-    if (count != 1 || (run == NULL) == (runs == NULL) || output == NULL)
-        return facet_error_set(err, FACET_EINPUT,
-            "plot: give the database, --run N (or --runs N,M) and -o "
-            "FILE.svg");
+    if ((run == NULL) == (runs == NULL) || output == NULL)
+        return facet_error_set(err, FACET_EINPUT, "%s", missing);
     if (no_size)
         size = NULL;
     int64_t ids[PLOT_MAX_RUNS];
@@ -57,7 +57,7 @@ static int plot_main(int argc, char **argv, struct facet_error *err)
     struct plot_request request = {ids, nruns, x, y, size, title, force,
                                    NULL, 0};
     struct store *store;
-    if ((rc = store_open_read(path[0], &store, err)) != FACET_OK)
+    if ((rc = store_open_read(path, &store, err)) != FACET_OK)
         return rc;
     rc = study_plot(store, &request, output, err);
     if (rc == FACET_OK)

@@ -186,16 +186,13 @@ static int runs_main(int argc, char **argv, struct facet_error *err)
         {"wide", 0, ARG_FLAG, NULL, &wide},
         {NULL, 0, ARG_FLAG, NULL, NULL},
     };
-    const char *path[1];
-    int count;
-    int rc = args_parse(argc, argv, options, path, 1, &count, err);
+    const char *path;
+    int rc = args_parse_one(argc, argv, options, &path,
+            "runs: name the result database (facet runs runs.db)", err);
     if (rc != FACET_OK)
         return rc;
-    if (count != 1)
-        return facet_error_set(err, FACET_EINPUT,
-            "runs: name the result database (facet runs runs.db)");
     struct store *store;
-    if ((rc = store_open_read(path[0], &store, err)) != FACET_OK)
+    if ((rc = store_open_read(path, &store, err)) != FACET_OK)
         return rc;
     struct run_info *runs = NULL;
     size_t n = 0;

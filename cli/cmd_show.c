@@ -26,21 +26,21 @@ static int show_main(int argc, char **argv, struct facet_error *err)
         {"surface", 0, ARG_STRING, &surface, NULL},
         {NULL, 0, ARG_FLAG, NULL, NULL},
     };
-    const char *path[1];
-    int count;
-    int rc = args_parse(argc, argv, options, path, 1, &count, err);
+    const char *path;
+    const char *missing =
+        "show: give the database, the run and the option (facet show "
+        "runs.db --run 1 --option 12)";
+    int rc = args_parse_one(argc, argv, options, &path, missing, err);
     if (rc != FACET_OK)
         return rc;
-    if (count != 1 || run == NULL || option == NULL)
-        return facet_error_set(err, FACET_EINPUT,
-            "show: give the database, the run and the option (facet show "
-            "runs.db --run 1 --option 12)");
+    if (run == NULL || option == NULL)
+        return facet_error_set(err, FACET_EINPUT, "%s", missing);
     long run_id, number;
     if ((rc = args_int(run, 1, 1L << 62, "--run", &run_id, err)) ||
         (rc = args_int(option, 1, 1L << 62, "--option", &number, err)))
         return rc;
     struct store *store;
-    if ((rc = store_open_existing(path[0], &store, err)) != FACET_OK)
+    if ((rc = store_open_existing(path, &store, err)) != FACET_OK)
         return rc;
     struct study_option o;
     memset(&o, 0, sizeof o);

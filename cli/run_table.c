@@ -16,7 +16,7 @@
 
 /* The listed options cheapest first, costs equal but for rounding
  * (core/search/ties.h) by planarity, then DP area, then No.: into order.
- * Returns 0, or -1 when out of memory. */
+ * Returns 0, or non-zero when out of memory. */
 static int order_by_cost(const struct option_row *listed, size_t n,
                          size_t *order)
 {
@@ -33,7 +33,7 @@ static int order_by_cost(const struct option_row *listed, size_t n,
     double tolerance[KEYS] = {0, 0, 0, 0};
     for (int j = 0; j < 3; j++)
         tolerance[j] = ties_tolerance(keys + j, n, KEYS);
-    int rc = ties_order(keys, n, KEYS, tolerance, 0, order);
+    int rc = ties_order(keys, n, KEYS, tolerance, 0, order, NULL);
     free(keys);
     return rc;
 }

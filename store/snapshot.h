@@ -12,10 +12,13 @@
 
 #include "store.h"
 
-/* Begins the snapshot; returns 1 when it began one (to end), 0 when the
- * connection was already in a transaction (nothing to end) or could not
- * begin (the reads then go on, each its own moment). */
-int store_snapshot_begin(struct store *store);
+/* Begins the snapshot: *began becomes 1 when it began one (to end), 0
+ * when the connection was already in a transaction (nothing to end).
+ * Returns FACET_OK, or the FACET_E* of SQLite refusing BEGIN with err
+ * filled and *began 0: a caller may then go on reading, each read its own
+ * moment. */
+int store_snapshot_begin(struct store *store, int *began,
+                         struct facet_error *err);
 
 /* Ends a snapshot that store_snapshot_begin returned 1 for. */
 void store_snapshot_end(struct store *store, int began);

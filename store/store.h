@@ -208,9 +208,11 @@ int store_options_set_pareto(struct store *store, int64_t run,
 int store_panels_put(struct store *store, int64_t run, int64_t option,
                      const struct panelization *panels,
                      struct facet_error *err);
-/* Whether panels of that option are stored (1) or not (0); < 0 on error. */
+/* Sets *stored to 1 when panels of that option are stored, 0 when not.
+ * Returns FACET_OK, or FACET_EINPUT (a damaged or busy file) or FACET_EWORK
+ * with err naming the file and what SQLite refused (*stored is then 0). */
 int store_panels_exist(struct store *store, int64_t run, int64_t option,
-                       struct facet_error *err);
+                       int *stored, struct facet_error *err);
 /* Reads the stored panels back into *panels (nu, nv, cell_panel and the
  * panel fields the panels table holds); release with panelization_free. */
 int store_panels_get(struct store *store, int64_t run, int64_t option,

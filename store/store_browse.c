@@ -278,6 +278,33 @@ static int deliver(struct store *store, const struct option_browse *b,
     return rc;
 }
 
+/* Prepares select, the options of b after `after` (all of them when it
+ * is NULL) in b's order or against it (backward), ordered so when ordered
+ * is set, then end (" LIMIT ?2 ..."); binds ?2 to limit (no limit for
+ * <= 0). The paging and counting queries differ only in these. */
+static int prepare_after(struct store *store, const struct option_browse *b,
+                         const struct option_row *after, int backward,
+                         const char *select, int ordered, const char *end,
+                         int64_t limit, sqlite3_stmt **stmt,
+                         const char *doing, struct facet_error *err)
+{
+    int rc = check_keys(b, err);
+    if (rc != FACET_OK)
+        return rc;
+    struct sql_text s = {0};
+    sql_add(&s, "%s", select);
+    add_from(&s, b, 0);
+    if (after != NULL)
+        add_keyset(&s, b, backward);
+    if (ordered)
+        add_order(&s, b, backward);
+    sql_add(&s, "%s", end);
+    rc = prepare(store, &s, b, after, stmt, doing, err);
+    if (rc == FACET_OK)
+        sqlite3_bind_int64(*stmt, 2, limit > 0 ? limit : -1);
+    return rc;
+}
+
 int store_browse_page(struct store *store, const struct option_browse *b,
                       const struct option_row *after, int backward,
                       int64_t limit,
@@ -285,21 +312,12 @@ int store_browse_page(struct store *store, const struct option_browse *b,
                                  const struct option_row *option),
                       void *context, struct facet_error *err)
 {
-    int rc = check_keys(b, err);
-    if (rc != FACET_OK)
-        return rc;
-    struct sql_text s = {0};
-    sql_add(&s, "SELECT number");
-    add_from(&s, b, 0);
-    if (after != NULL)
-        add_keyset(&s, b, backward);
-    add_order(&s, b, backward);
-    sql_add(&s, " LIMIT ?2");
     sqlite3_stmt *stmt;
-    rc = prepare(store, &s, b, after, &stmt, "browsing options", err);
+    int rc = prepare_after(store, b, after, backward, "SELECT number", 1,
+                           " LIMIT ?2", limit, &stmt, "browsing options",
+                           err);
     if (rc != FACET_OK)
         return rc;
-    sqlite3_bind_int64(stmt, 2, limit > 0 ? limit : -1);
     return deliver(store, b, stmt, limit, row, context, "browsing options",
                    err);
 }
@@ -310,19 +328,12 @@ int store_browse_offset(struct store *store, const struct option_browse *b,
                                    const struct option_row *option),
                         void *context, struct facet_error *err)
 {
-    int rc = check_keys(b, err);
-    if (rc != FACET_OK)
-        return rc;
-    struct sql_text s = {0};
-    sql_add(&s, "SELECT number");
-    add_from(&s, b, 0);
-    add_order(&s, b, 0);
-    sql_add(&s, " LIMIT ?2 OFFSET ?3");
     sqlite3_stmt *stmt;
-    rc = prepare(store, &s, b, NULL, &stmt, "browsing options", err);
+    int rc = prepare_after(store, b, NULL, 0, "SELECT number", 1,
+                           " LIMIT ?2 OFFSET ?3", limit, &stmt,
+                           "browsing options", err);
     if (rc != FACET_OK)
         return rc;
-    sqlite3_bind_int64(stmt, 2, limit > 0 ? limit : -1);
     sqlite3_bind_int64(stmt, 3, offset > 0 ? offset : 0);
     return deliver(store, b, stmt, limit, row, context, "browsing options",
                    err);
@@ -373,20 +384,12 @@ int store_browse_count_capped(struct store *store,
                               struct facet_error *err)
 {
     *count = 0;
-    int rc = check_keys(b, err);
-    if (rc != FACET_OK)
-        return rc;
-    struct sql_text s = {0};
-    sql_add(&s, "SELECT count(*) FROM (SELECT 1");
-    add_from(&s, b, 0);
-    if (after != NULL)
-        add_keyset(&s, b, backward);
-    sql_add(&s, " LIMIT ?2)");
     sqlite3_stmt *stmt;
-    rc = prepare(store, &s, b, after, &stmt, "counting options", err);
+    int rc = prepare_after(store, b, after, backward,
+                           "SELECT count(*) FROM (SELECT 1", 0, " LIMIT ?2)",
+                           cap, &stmt, "counting options", err);
     if (rc != FACET_OK)
         return rc;
-    sqlite3_bind_int64(stmt, 2, cap > 0 ? cap : -1);
     return single_row(store, stmt, count, NULL, NULL, "counting options",
                       err);
 }

@@ -440,7 +440,7 @@ static int flush_group(struct tie_group *g)
 {
     size_t m = g->keys->n;
     if (ties_order(g->values, g->n, m, g->keys->tolerance,
-                   g->q->descending, g->order) != 0)
+                   g->q->descending, g->order, NULL) != 0)
         return -1;
     for (size_t k = 0; k < g->n && !g->stopped; k++) {
         size_t i = g->order[k];

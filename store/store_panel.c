@@ -92,22 +92,23 @@ int store_panels_put(struct store *store, int64_t run, int64_t option,
 }
 
 int store_panels_exist(struct store *store, int64_t run, int64_t option,
-                       struct facet_error *err)
+                       int *stored, struct facet_error *err)
 {
+    *stored = 0;
     sqlite3_stmt *s;
     int rc = store_prepare(store, "SELECT 1 FROM panel_sets WHERE run = ?1"
                            " AND option = ?2", &s, "reading panels", err);
     if (rc != FACET_OK)
-        return -rc;
+        return rc;
     sqlite3_bind_int64(s, 1, run);
     sqlite3_bind_int64(s, 2, option);
     int step = sqlite3_step(s);
     sqlite3_finalize(s);
     if (step == SQLITE_ROW)
-        return 1;
-    if (step == SQLITE_DONE)
-        return 0;
-    return -store_fail(store, "reading panels", err);
+        *stored = 1;
+    else if (step != SQLITE_DONE)
+        return store_fail(store, "reading panels", err);
+    return FACET_OK;
 }
 
 /* The enum value whose name is text, or -1. */

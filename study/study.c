@@ -368,9 +368,10 @@ int study_option_panels(struct store *store, const struct run_info *run,
     if (rc != FACET_OK)
         return rc;
     *totals = option.totals;
-    int stored = store_panels_exist(store, run->id, number, err);
-    if (stored < 0)
-        return -stored;
+    int stored;
+    rc = store_panels_exist(store, run->id, number, &stored, err);
+    if (rc != FACET_OK)
+        return rc;
     if (stored)
         return store_panels_get(store, run->id, number, panels, err);
     struct surface own;
@@ -475,10 +476,10 @@ static int store_front_panels(struct store *store, const struct run_info *run,
             knee = rows[k].number;
         if (knee_only && !rows[k].knee)
             continue;
-        int stored = store_panels_exist(store, run->id, rows[k].number, err);
-        if (stored < 0)
-            rc = -stored;
-        else if (!stored) {
+        int stored;
+        rc = store_panels_exist(store, run->id, rows[k].number, &stored,
+                                err);
+        if (rc == FACET_OK && !stored) {
             points[nfront] = (struct design_point){rows[k].nu, rows[k].nv,
                                                    rows[k].threshold_mm};
             numbers[nfront++] = rows[k].number;
@@ -646,8 +647,9 @@ static void collect_warnings(const struct surface *surface,
     char grid[80];
     snprintf(grid, sizeof grid, "the finest grid of the space, %d x %d",
              space->u_max, space->v_max);
-    double facet = mesh_facet_size(&surface->mesh);
-    if (facet > 0 && coarse_mesh_warning(facet, side, grid, lines[n],
+    double facet;
+    if (mesh_facet_size(&surface->mesh, &facet, NULL) == FACET_OK &&
+        facet > 0 && coarse_mesh_warning(facet, side, grid, lines[n],
                                          sizeof lines[0]))
         n++;
     size_t used = 0;

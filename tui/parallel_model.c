@@ -149,8 +149,14 @@ static int parse_number(const char *text, const char *end, double *out)
     return 0;
 }
 
+static int not_a_range(const char *text, struct facet_error *err)
+{
+    return facet_error_set(err, FACET_EINPUT, "range: '%s' is not LO:HI "
+                           "(e.g. 1.1M:1.2M, :900, 20:)", text);
+}
+
 int pc_parse_range(const char *text, double min, double max, double *lo,
-                   double *hi)
+                   double *hi, struct facet_error *err)
 {
     const char *sep = strstr(text, "..");
     size_t width = 2;
@@ -166,17 +172,17 @@ int pc_parse_range(const char *text, double min, double max, double *lo,
         sep = strchr(p, ' ');
         width = 1;
         if (sep == NULL)
-            return -1;
+            return not_a_range(text, err);
     }
     int a = parse_number(text, sep, lo);
     int b = parse_number(sep + width, sep + strlen(sep), hi);
     if (a < 0 || b < 0 || (a == 1 && b == 1))
-        return -1;
+        return not_a_range(text, err);
     if (a == 1)
         *lo = min;
     if (b == 1)
         *hi = max;
-    return 0;
+    return FACET_OK;
 }
 
 /* Whether the parenthesis at text[0] closes at text's last character. */
@@ -206,10 +212,16 @@ static int append(char *out, size_t size, size_t *used, const char *text)
     return 0;
 }
 
-int pc_filter_text(const struct pc_state *st, char *out, size_t size)
+static int too_long(struct facet_error *err)
+{
+    return facet_error_set(err, FACET_EINPUT, "the filter is too long");
+}
+
+int pc_filter_text(const struct pc_state *st, char *out, size_t size,
+                   struct facet_error *err)
 {
     if (size == 0)
-        return -1;
+        return too_long(err);
     out[0] = '\0';
     size_t used = 0;
     char term[1100];
@@ -220,7 +232,7 @@ int pc_filter_text(const struct pc_state *st, char *out, size_t size)
         else
             snprintf(term, sizeof term, "%s", st->base);
         if (append(out, size, &used, term))
-            return -1;
+            return too_long(err);
     }
     for (int a = 0; a < PC_AXES; a++) {
         const struct pc_brush *b = &st->brush[a];
@@ -230,16 +242,16 @@ int pc_filter_text(const struct pc_state *st, char *out, size_t size)
             snprintf(term, sizeof term, "%s >= %.15g", pc_axes[a].column,
                      b->lo);
             if (append(out, size, &used, term))
-                return -1;
+                return too_long(err);
         }
         if (b->hi < st->max[a]) {
             snprintf(term, sizeof term, "%s <= %.15g", pc_axes[a].column,
                      b->hi);
             if (append(out, size, &used, term))
-                return -1;
+                return too_long(err);
         }
     }
-    return (int)used;
+    return FACET_OK;
 }
 
 /* The axis of column, or -1. */
@@ -336,22 +348,26 @@ void pc_from_filter(struct pc_state *st, const char *filter)
     }
 }
 
-int pc_canvas_init(struct pc_canvas *c, int width, int height)
+int pc_canvas_init(struct pc_canvas *c, int width, int height,
+                   struct facet_error *err)
 {
     memset(c, 0, sizeof *c);
     if (width < 1 || height < 1)
-        return -1;
+        return facet_error_set(err, FACET_EINPUT,
+                               "no room for a %d x %d canvas", width, height);
     size_t n = (size_t)width * (size_t)height;
     c->dots = calloc(n, 1);
     c->level = calloc(n, 1);
     c->slope = calloc(n, 1);
     if (!c->dots || !c->level || !c->slope) {
         pc_canvas_free(c);
-        return -1;
+        return facet_error_set(err, FACET_EWORK,
+                               "out of memory (a %d x %d canvas)", width,
+                               height);
     }
     c->width = width;
     c->height = height;
-    return 0;
+    return FACET_OK;
 }
 
 void pc_canvas_free(struct pc_canvas *c)

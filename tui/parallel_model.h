@@ -11,6 +11,8 @@
 
 #include <stddef.h>
 
+#include "core/base/error.h"
+
 /* One vertical axis: a column of the registry (store/option_column.h),
  * titled with its heading and unit; a column held as an integer (the grid
  * sides) is brushed in whole numbers. */
@@ -60,15 +62,18 @@ void pc_brush_set(struct pc_state *st, int axis, double lo, double hi);
 
 /* Reads "LO:HI", "LO..HI" or "LO HI" (numbers with an optional k or M
  * suffix; either side may be empty for the axis's end) into *lo, *hi.
- * Returns 0, or -1 for text that is none of these. */
+ * Returns FACET_OK, or FACET_EINPUT for text that is none of these ("range:
+ * 'TEXT' is not LO:HI" with examples). */
 int pc_parse_range(const char *text, double min, double max, double *lo,
-                   double *hi);
+                   double *hi, struct facet_error *err);
 
 /* The filter that base and the brushes make, in the --where language:
  * "cost >= 1100000 and cost <= 1200000" (an edge at its axis's end is
- * left out). "" when nothing filters. Returns the length, or -1 when it
- * does not fit in size. */
-int pc_filter_text(const struct pc_state *st, char *out, size_t size);
+ * left out), into out (size bytes); "" when nothing filters. Returns
+ * FACET_OK, or FACET_EINPUT ("the filter is too long") when it does not
+ * fit in size. */
+int pc_filter_text(const struct pc_state *st, char *out, size_t size,
+                   struct facet_error *err);
 
 /* Reads filter (filter_text's canonical form, "" for none) back into the
  * brushes and base: every top-level "COLUMN >= N" or "COLUMN <= N" on an
@@ -87,9 +92,11 @@ struct pc_canvas {
     unsigned char *slope;   /* '-', '/', '\\' or '|' */
 };
 
-/* Allocates a clear canvas; returns -1 when out of memory. Release with
- * pc_canvas_free. */
-int pc_canvas_init(struct pc_canvas *c, int width, int height);
+/* Allocates a clear canvas. Returns FACET_OK, FACET_EINPUT for a side
+ * below 1 cell, FACET_EWORK when out of memory. Release with
+ * pc_canvas_free, also after a failure. */
+int pc_canvas_init(struct pc_canvas *c, int width, int height,
+                   struct facet_error *err);
 void pc_canvas_free(struct pc_canvas *c);
 
 /* Draws a line between dots (x0, y0) and (x1, y1) (x in 0..2 width - 1,

@@ -271,8 +271,9 @@ static void load_maps(struct compare_screen *s, struct tui_app *app)
     memset(&surface, 0, sizeof surface);
     for (int k = 0; k < s->n; k++) {
         int64_t number = s->options[k].number;
-        int stored = store_panels_exist(app->store, s->run, number, &err);
-        int rc = stored < 0 ? FACET_EWORK : FACET_OK;
+        int stored;
+        int rc = store_panels_exist(app->store, s->run, number, &stored,
+                                    &err);
         if (rc == FACET_OK && stored == 0 && !opened && !open_failed) {
             rc = study_open_surface(app->store, &run, &surface, &err);
             if (rc == FACET_OK)

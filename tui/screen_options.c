@@ -513,20 +513,20 @@ static void toggle_mark(struct options_screen *s, struct tui_app *app)
         return;
     int64_t number = o->number;
     if (table_model_marked(&s->model, number)) {
-        table_model_set_mark(&s->model, number, 0);
+        table_model_set_mark(&s->model, number, 0, NULL);
         /* said, so that Space on an option marked before (the knee
          * after K) is not a silent unmark */
         tui_status(app, "unmarked No. %lld (%d marked; Space marks it "
                    "again)", (long long)number, s->model.nmarks);
         return;
     }
-    if (table_model_set_mark(&s->model, number, 1) < 0) {
-        tui_error(app, "at most %d marks", TABLE_MARKS_MAX);
+    struct facet_error err;
+    if (table_model_set_mark(&s->model, number, 1, &err) != FACET_OK) {
+        tui_error(app, "%s", err.message);
         return;
     }
     tui_status(app, "marked No. %lld (%d marked%s)", (long long)number,
                s->model.nmarks, s->model.nmarks >= 2 ? "; c compares" : "");
-    struct facet_error err;
     table_model_select(&s->model, s->model.selected + 1, &err);
 }
 
@@ -828,13 +828,16 @@ static int options_tick(struct tui_screen *base, struct tui_app *app)
          * million options: counted whole now, so that the title, the
          * count and the gauge are one moment's (a step between samples
          * ran ahead of the gauge) */
+        int exact;
         if (m->filter == NULL && !m->browse.pareto_only &&
-            table_model_count_step(m, 0, &err) < 0)
+            table_model_count_step(m, 0, &exact, &err) != FACET_OK)
             tui_error(app, "%s", err.message);
         return 1;
     }
     if (!s->model.count_exact) {
-        if (table_model_count_step(&s->model, 200000, &err) < 0)
+        int exact;
+        if (table_model_count_step(&s->model, 200000, &exact, &err) !=
+            FACET_OK)
             tui_error(app, "%s", err.message);
         return 1;
     }

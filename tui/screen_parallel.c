@@ -164,8 +164,8 @@ static void apply(struct parallel_screen *s, struct tui_app *app)
 {
     char text[2048];
     struct facet_error err;
-    if (pc_filter_text(&s->st, text, sizeof text) < 0) {
-        tui_error(app, "the filter is too long");
+    if (pc_filter_text(&s->st, text, sizeof text, &err) != FACET_OK) {
+        tui_error(app, "%s", err.message);
         return;
     }
     if (table_model_set_filter(s->model, text, &err) != FACET_OK) {
@@ -270,7 +270,8 @@ static void parallel_draw(struct tui_screen *base, struct tui_app *app,
 
     /* the polylines */
     struct pc_canvas c;
-    if (pc_canvas_init(&c, width, plot_h) == 0) {
+    struct facet_error canvas_err;  /* no canvas: the axes alone */
+    if (pc_canvas_init(&c, width, plot_h, &canvas_err) == FACET_OK) {
         if (!s->hide_context)
             for (size_t k = 0; k < s->context.n; k++)
                 if (!table_model_shows(m, &s->context.rows[k]))
@@ -401,15 +402,15 @@ static enum tui_result range_key(struct parallel_screen *s,
         return RESULT_HANDLED;
     int a = s->axis;
     double lo, hi;
+    struct facet_error err;
     const char *t = s->range.text;
     while (*t == ' ')
         t++;
     if (*t == '\0') {
         s->st.brush[a].active = 0;
-    } else if (pc_parse_range(t, s->st.min[a], s->st.max[a], &lo, &hi) !=
-               0) {
-        tui_error(app, "range: '%s' is not LO:HI (e.g. 1.1M:1.2M, :900, "
-                  "20:)", s->range.text);
+    } else if (pc_parse_range(t, s->st.min[a], s->st.max[a], &lo, &hi,
+                              &err) != FACET_OK) {
+        tui_error(app, "%s", err.message);
         return RESULT_HANDLED;
     } else {
         pc_brush_set(&s->st, a, lo, hi);
@@ -500,7 +501,9 @@ static int parallel_tick(struct tui_screen *base, struct tui_app *app)
     struct parallel_screen *s = (struct parallel_screen *)base;
     struct facet_error err;
     if (!s->model->count_exact) {
-        if (table_model_count_step(s->model, 200000, &err) < 0)
+        int exact;
+        if (table_model_count_step(s->model, 200000, &exact, &err) !=
+            FACET_OK)
             tui_error(app, "%s", err.message);
         return 1;
     }

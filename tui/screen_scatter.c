@@ -526,12 +526,11 @@ static enum tui_result scatter_key(struct tui_screen *base,
         if (s->n > 0) {
             int64_t number = s->points[s->cursor].number;
             int on = !table_model_marked(s->model, number);
-            int r = table_model_set_mark(s->model, number, on);
-            if (r < 0)
-                tui_error(app, "at most %d marks", TABLE_MARKS_MAX);
+            if (table_model_set_mark(s->model, number, on, &err) != FACET_OK)
+                tui_error(app, "%s", err.message);
             else
                 tui_status(app, "option %lld %s (%d marked)",
-                           (long long)number, r ? "marked" : "unmarked",
+                           (long long)number, on ? "marked" : "unmarked",
                            s->model->nmarks);
         }
         return RESULT_HANDLED;

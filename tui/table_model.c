@@ -45,23 +45,25 @@ int table_model_marked(const struct table_model *m, int64_t number)
     return 0;
 }
 
-int table_model_set_mark(struct table_model *m, int64_t number, int on)
+int table_model_set_mark(struct table_model *m, int64_t number, int on,
+                         struct facet_error *err)
 {
     for (int k = 0; k < m->nmarks; k++)
         if (m->marks[k] == number) {
-            if (on)
-                return 1;
-            memmove(m->marks + k, m->marks + k + 1,
-                    (size_t)(m->nmarks - k - 1) * sizeof m->marks[0]);
-            m->nmarks--;
-            return 0;
+            if (!on) {
+                memmove(m->marks + k, m->marks + k + 1,
+                        (size_t)(m->nmarks - k - 1) * sizeof m->marks[0]);
+                m->nmarks--;
+            }
+            return FACET_OK;
         }
     if (!on)
-        return 0;
+        return FACET_OK;
     if (m->nmarks == TABLE_MARKS_MAX)
-        return -1;
+        return facet_error_set(err, FACET_EINPUT, "at most %d marks",
+                               TABLE_MARKS_MAX);
     m->marks[m->nmarks++] = number;
-    return 1;
+    return FACET_OK;
 }
 
 const struct option_row *table_model_row(const struct table_model *m,
@@ -303,22 +305,23 @@ int table_model_count_exact(struct table_model *m, struct facet_error *err)
     return FACET_OK;
 }
 
-int table_model_count_step(struct table_model *m, int64_t rows,
+int table_model_count_step(struct table_model *m, int64_t rows, int *exact,
                            struct facet_error *err)
 {
+    *exact = m->count_exact;
     if (m->count_exact)
-        return 1;
+        return FACET_OK;
     int done;
     m->fetches++;
     int rc = store_browse_count_step(m->store, &m->browse, rows,
                                      &m->count_from, &m->count_sofar, &done,
                                      err);
     if (rc != FACET_OK)
-        return -1;
+        return rc;
     if (!done) {
         if (m->count_sofar > m->count)
             m->count = m->count_sofar;
-        return 0;
+        return FACET_OK;
     }
     /* The count is exact now, estimated positions or not: stepping on
      * from the end would add the last slice again at every step (a
@@ -342,13 +345,14 @@ int table_model_count_step(struct table_model *m, int64_t rows,
             if (rc == FACET_OK)
                 rc = window_around(m, &keep, position, err);
             if (rc != FACET_OK)
-                return -1;
+                return rc;
             m->selected = position;
         }
     }
     if (m->selected >= m->count)
         m->selected = m->count > 0 ? m->count - 1 : 0;
-    return 1;
+    *exact = 1;
+    return FACET_OK;
 }
 
 void table_model_count_text(const struct table_model *m, char *out,

@@ -128,20 +128,21 @@ void table_model_position_text(const struct table_model *m, char *out,
 int table_model_count_exact(struct table_model *m, struct facet_error *err);
 
 /* One bounded step of an exact count (at most rows options looked at),
- * for a screen to call between keystrokes; returns 1 when the count is
- * exact (then every later step returns 1 at once, and estimated
- * positions have been made exact), 0 when more steps are needed, < 0 on
- * error (err filled). */
-int table_model_count_step(struct table_model *m, int64_t rows,
+ * for a screen to call between keystrokes: *exact becomes 1 when the
+ * count is exact (then every later step says so at once, and estimated
+ * positions have been made exact), 0 when more steps are needed. Returns
+ * FACET_OK, or FACET_E* with err filled (*exact is then 0). */
+int table_model_count_step(struct table_model *m, int64_t rows, int *exact,
                            struct facet_error *err);
 
 /* Whether option number is marked. */
 int table_model_marked(const struct table_model *m, int64_t number);
 
-/* Marks option number (on non-zero) or unmarks it. Returns 1 when it is
- * marked afterwards, 0 when not, -1 when the marks are full
- * (TABLE_MARKS_MAX) and it could not be marked. */
-int table_model_set_mark(struct table_model *m, int64_t number, int on);
+/* Marks option number (on non-zero) or unmarks it. Returns FACET_OK, or
+ * FACET_EINPUT ("at most TABLE_MARKS_MAX marks") when the marks are full
+ * and it could not be marked. */
+int table_model_set_mark(struct table_model *m, int64_t number, int on,
+                         struct facet_error *err);
 
 /* Whether option passes the model's filter and Pareto-only setting. */
 int table_model_shows(const struct table_model *m,

@@ -430,9 +430,9 @@ static int sample_job(struct tui_app *app)
     app->job_total = st.total;
     app->job_samples++;
     app->job_sampling = 1;
-    app->job_snapshot = store_snapshot_begin(app->store);
+    struct facet_error ignored;  /* without a snapshot the reads go on */
+    store_snapshot_begin(app->store, &app->job_snapshot, &ignored);
     struct run_info info;
-    struct facet_error ignored;
     if (st.run > 0 &&
         store_run_get(app->store, st.run, &info, &ignored) == FACET_OK)
         app->job_stored = info.options;

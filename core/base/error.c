@@ -6,6 +6,13 @@
 #include <stdarg.h>
 #include <stdio.h>
 
+/* Facet states its internal invariants as assert()s and keeps them in the
+ * optimised build (a broken invariant stops the program instead of
+ * printing a wrong number); the Makefile never defines NDEBUG. */
+#ifdef NDEBUG
+#error "build Facet without NDEBUG: its invariants are assert()s"
+#endif
+
 void facet_error_clear(struct facet_error *err)
 {
     if (err == NULL)

@@ -3,6 +3,7 @@
  *
  * No allocation and no global state; see linalg.h for the contracts.
  */
+#include <assert.h>
 #include <math.h>
 
 #include "core/base/linalg.h"
@@ -10,8 +11,9 @@
 int linalg_cholesky_factor(int n, int lda, const double *a, double rel_tol,
                            double *l)
 {
-    if (n < 1 || n > LINALG_MAX || lda < n)
-        return 0;
+    /* The sizes are the caller's code, not its data: a wrong one is a
+     * bug, not a matrix that fails to be positive definite. */
+    assert(n >= 1 && n <= LINALG_MAX && lda >= n);
     /* Factor a = l l^T, column by column. */
     for (int j = 0; j < n; j++) {
         double diag = a[j * lda + j];
@@ -34,6 +36,7 @@ int linalg_cholesky_factor(int n, int lda, const double *a, double rel_tol,
 void linalg_cholesky_apply(int n, const double *l, const double *b, double *x)
 {
     double y[LINALG_MAX];
+    assert(n >= 1 && n <= LINALG_MAX);
 
     /* Forward substitution l y = b, then back substitution l^T x = y. */
     for (int i = 0; i < n; i++) {

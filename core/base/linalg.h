@@ -13,18 +13,19 @@
 
 /* Solves a x = b for the leading n x n block of the symmetric matrix a
  * (row-major with row stride lda >= n; only the lower triangle is read; a and
- * b are not modified). Returns 1 and fills x[0..n) on success; returns 0 and
- * leaves x untouched when n is out of 1..LINALG_MAX or the block is not
- * safely positive definite, that is when a pivot falls below
- * rel_tol times the diagonal entry it came from (rel_tol ~1e-10 rejects
- * rank-deficient fits, such as a quadric through collinear points). */
+ * b are not modified). n must be in 1..LINALG_MAX (asserted). It cannot
+ * fail otherwise: it answers whether the block is safely positive
+ * definite, 1 with x[0..n) filled, or 0 with x untouched when a pivot
+ * falls below rel_tol times the diagonal entry it came from (rel_tol
+ * ~1e-10 rejects rank-deficient fits, such as a quadric through collinear
+ * points). */
 int linalg_cholesky_solve(int n, int lda, const double *a, const double *b,
                           double rel_tol, double *x);
 
 /* linalg_cholesky_solve in two steps, for one matrix and several right-hand
  * sides: _factor writes the factor of a (as _solve tests it; returns 0 when
  * it is not safely positive definite) into l, n x n with row stride n, and
- * _apply solves l l^T x = b with it. */
+ * _apply solves l l^T x = b with it. Sizes as _solve. */
 int linalg_cholesky_factor(int n, int lda, const double *a, double rel_tol,
                            double *l);
 void linalg_cholesky_apply(int n, const double *l, const double *b, double *x);

@@ -3,6 +3,7 @@
  */
 #include "core/base/parallel.h"
 
+#include <assert.h>
 #include <pthread.h>
 #include <unistd.h>
 
@@ -20,8 +21,8 @@ static void *call_thread(void *argument)
 
 void parallel_run(void *jobs, size_t size, int n, void (*run)(void *job))
 {
-    if (n > PARALLEL_MAX)
-        n = PARALLEL_MAX;
+    /* Jobs past PARALLEL_MAX would silently not run. */
+    assert(n <= PARALLEL_MAX);
     pthread_t thread[PARALLEL_MAX];
     int started[PARALLEL_MAX] = {0};
     struct call call[PARALLEL_MAX];

@@ -16,8 +16,8 @@
 /* The most jobs parallel_run runs at once. */
 #define PARALLEL_MAX 64
 
-/* Runs run(jobs + k * size) for k in 0..n-1 (n at most PARALLEL_MAX) and
- * returns when all are done. */
+/* Runs run(jobs + k * size) for k in 0..n-1 (n at most PARALLEL_MAX,
+ * asserted) and returns when all are done. */
 void parallel_run(void *jobs, size_t size, int n, void (*run)(void *job));
 
 /* Threads worth starting for work on the online CPUs: at least 1, at most

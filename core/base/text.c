@@ -3,6 +3,7 @@
  */
 #include "core/base/text.h"
 
+#include <assert.h>
 #include <string.h>
 
 /* The length of the valid UTF-8 character at s (1 to 4), or 0 when the
@@ -56,6 +57,7 @@ int text_is_clean(const char *text)
 
 void text_for_terminal(const char *text, char *out, size_t size)
 {
+    assert(size >= 1);
     const unsigned char *s = (const unsigned char *)text;
     size_t used = 0;
     while (*s != '\0') {

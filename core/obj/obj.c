@@ -48,6 +48,7 @@
  */
 #include "core/obj/obj.h"
 
+#include <assert.h>
 #include <errno.h>
 #include <fcntl.h>
 #include <stdio.h>
@@ -200,6 +201,18 @@ struct job {
     struct obj_part_error error;
 };
 
+/* Makes jobs[0..njobs) copies of like, numbered 0..njobs: the job
+ * functions split their work by index and njobs, the rest is shared. */
+static void jobs_like(struct job *jobs, unsigned njobs, const struct job *like)
+{
+    assert(njobs <= MAX_THREADS);
+    for (unsigned t = 0; t < njobs; t++) {
+        jobs[t] = *like;
+        jobs[t].index = t;
+        jobs[t].njobs = njobs;
+    }
+}
+
 /* Runs jobs[0..n) with run (parallel.h). */
 static void run_jobs(struct job *jobs, unsigned n, void (*run)(void *job))
 {
@@ -314,22 +327,26 @@ static int parse_window(struct loader *ld, const char *text, size_t length)
 
     unsigned njobs = n < ld->nthreads ? (unsigned)n : ld->nthreads;
     struct job jobs[MAX_THREADS];
-    for (unsigned t = 0; t < njobs; t++) {
-        memset(&jobs[t], 0, sizeof jobs[t]);
-        jobs[t].ld = ld;
-        jobs[t].index = t;
-        jobs[t].njobs = njobs;
-        jobs[t].text = text;
-        jobs[t].cut = cut;
-        jobs[t].first_part = first;
-        jobs[t].window_parts = n;
-    }
+    jobs_like(jobs, njobs, &(struct job){.ld = ld, .text = text, .cut = cut,
+                                         .first_part = first,
+                                         .window_parts = n});
     run_jobs(jobs, njobs, parse_job);
     free(cut);
     return merge_bases(ld);
 }
 
 /* ---- phase 2: merging and writing ------------------------------------- */
+
+/* obj_names_find into a merged table, its error naming the file. */
+static int merged_name(struct loader *ld, struct obj_names *table,
+                       const char *text, uint32_t *index)
+{
+    struct facet_error err;
+    int rc = obj_names_find(table, text, strlen(text), index, &err);
+    if (rc != FACET_OK)
+        facet_error_set(ld->err, rc, "%s: %s", ld->name, err.message);
+    return rc;
+}
 
 /* Folds the parts' name tables into obj's, in file order, and points each
  * part at its maps from part-local to merged ids. */
@@ -350,8 +367,7 @@ static int merge_names(struct loader *ld, struct obj_file *obj)
     if (ld->map == NULL || (nmtllibs && obj->mtllibs == NULL))
         rc = out_of_memory(ld);
     for (int k = 0; k < 3 && rc == FACET_OK; k++)
-        if (obj_names_find(&table[k], "", 0, &unnamed) != 0)
-            rc = out_of_memory(ld);
+        rc = merged_name(ld, &table[k], "", &unnamed);
     uint32_t *map = ld->map;
     for (size_t p = 0; p < ld->nparts && rc == FACET_OK; p++) {
         struct obj_part *part = &ld->part[p];
@@ -363,9 +379,7 @@ static int merge_names(struct loader *ld, struct obj_file *obj)
         for (int k = 0; k < 3 && rc == FACET_OK; k++) {
             for (size_t i = 0; i < local[k]->count && rc == FACET_OK; i++) {
                 const char *text = local[k]->names[i].text;
-                if (obj_names_find(&table[k], text, strlen(text),
-                                   &map[i]) != 0)
-                    rc = out_of_memory(ld);
+                rc = merged_name(ld, &table[k], text, &map[i]);
             }
             ids[k] = map;
             map += local[k]->count;
@@ -569,13 +583,7 @@ static int finish(struct loader *ld, struct obj_file *obj)
     if (ld->nparts < njobs)
         njobs = (unsigned)ld->nparts;
     struct job jobs[MAX_THREADS];
-    for (unsigned t = 0; t < njobs; t++) {
-        memset(&jobs[t], 0, sizeof jobs[t]);
-        jobs[t].ld = ld;
-        jobs[t].index = t;
-        jobs[t].njobs = njobs;
-        jobs[t].obj = obj;
-    }
+    jobs_like(jobs, njobs, &(struct job){.ld = ld, .obj = obj});
     run_jobs(jobs, njobs, copy_job);
     run_jobs(jobs, njobs, emit_job);
     for (unsigned t = 0; t < njobs; t++)
@@ -701,15 +709,8 @@ static int read_whole(struct loader *ld, int fd, char *buffer, size_t size)
     size_t n = size / ld->part_bytes;
     unsigned njobs = n < ld->nthreads ? (n ? (unsigned)n : 1) : ld->nthreads;
     struct job jobs[MAX_THREADS];
-    for (unsigned t = 0; t < njobs; t++) {
-        memset(&jobs[t], 0, sizeof jobs[t]);
-        jobs[t].ld = ld;
-        jobs[t].index = t;
-        jobs[t].njobs = njobs;
-        jobs[t].fd = fd;
-        jobs[t].buffer = buffer;
-        jobs[t].size = size;
-    }
+    jobs_like(jobs, njobs, &(struct job){.ld = ld, .fd = fd,
+                                         .buffer = buffer, .size = size});
     run_jobs(jobs, njobs, read_job);
     size_t total = 0;
     for (unsigned t = 0; t < njobs; t++) {

@@ -507,8 +507,10 @@ static int statement_name(struct obj_part *part, const char *p,
     int rc = read_rest(part, p, end, &length);
     if (rc != FACET_OK)
         return rc;
-    if (obj_names_find(table, part->text, length, current) != 0)
-        return out_of_memory(part);
+    struct facet_error err;
+    rc = obj_names_find(table, part->text, length, current, &err);
+    if (rc != FACET_OK)
+        return set_error(&part->error, rc, part->line, "%s", err.message);
     return FACET_OK;
 }
 

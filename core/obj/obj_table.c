@@ -73,12 +73,12 @@ static int rehash(struct obj_names *table, size_t nslots)
 }
 
 int obj_names_find(struct obj_names *table, const char *text, size_t length,
-                   uint32_t *index)
+                   uint32_t *index, struct facet_error *err)
 {
     if (table->nslots < 2 * (table->count + 1)) {
         size_t nslots = table->nslots ? 2 * table->nslots : 16;
         if (rehash(table, nslots) != 0)
-            return -1;
+            return facet_error_set(err, FACET_EWORK, "out of memory");
     }
     size_t mask = table->nslots - 1;
     size_t s = name_hash(text, length) & mask;
@@ -88,25 +88,26 @@ int obj_names_find(struct obj_names *table, const char *text, size_t length,
          * past its end. */
         if (strlen(t) == length && memcmp(t, text, length) == 0) {
             *index = table->slot[s] - 1;
-            return 0;
+            return FACET_OK;
         }
     }
     if (table->count >= OBJ_MAX_INDEX)
-        return -1;
+        return facet_error_set(err, FACET_EINPUT, "more than %llu names",
+                               (unsigned long long)OBJ_MAX_INDEX);
     struct obj_name *names = obj_grow(table->names, &table->capacity,
                                       table->count + 1, sizeof *names);
     if (names == NULL)
-        return -1;
+        return facet_error_set(err, FACET_EWORK, "out of memory");
     table->names = names;
     char *copy = malloc(length + 1);
     if (copy == NULL)
-        return -1;
+        return facet_error_set(err, FACET_EWORK, "out of memory");
     memcpy(copy, text, length);
     copy[length] = '\0';
     names[table->count].text = copy;
     table->slot[s] = (uint32_t)(table->count + 1);
     *index = (uint32_t)table->count++;
-    return 0;
+    return FACET_OK;
 }
 
 void obj_names_release(struct obj_names *table, struct obj_name **names,

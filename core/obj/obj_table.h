@@ -13,6 +13,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "core/base/error.h"
 #include "core/obj/obj.h"
 
 #define OBJ_MAX_INDEX ((uint64_t)UINT32_MAX - 1)  /* largest 0-based index */
@@ -38,10 +39,12 @@ void *obj_grow(void *array, size_t *capacity, size_t needed, size_t size);
 void obj_advise_huge(void *p, size_t bytes);
 
 /* Finds text (length bytes, no NUL needed) in the table, adding a copy of
- * it if it is new, and stores its index in *index. Returns 0, or -1 when
- * out of memory or the table is full. A zeroed table is an empty one. */
+ * it if it is new, and stores its index in *index. Returns FACET_OK,
+ * FACET_EINPUT when the table is full (more than OBJ_MAX_INDEX names) or
+ * FACET_EWORK when out of memory, with err saying which (the caller adds
+ * the file and line). A zeroed table is an empty one. */
 int obj_names_find(struct obj_names *table, const char *text, size_t length,
-                   uint32_t *index);
+                   uint32_t *index, struct facet_error *err);
 
 /* Hands the names over to the caller (*names, *count) and empties table. */
 void obj_names_release(struct obj_names *table, struct obj_name **names,

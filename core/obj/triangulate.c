@@ -13,6 +13,7 @@
  */
 #include "core/obj/triangulate.h"
 
+#include <assert.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -167,6 +168,7 @@ int triangulate_polygon(const double *point, size_t n, uint32_t *triangle,
                         struct triangulate_scratch *scratch,
                         struct facet_error *err)
 {
+    assert(n >= 3 && n < UINT32_MAX);
     if (n == 3) {
         triangle[0] = 0;
         triangle[1] = 1;

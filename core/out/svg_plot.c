@@ -3,6 +3,7 @@
  */
 #include "core/out/svg_plot.h"
 
+#include <assert.h>
 #include <ctype.h>
 #include <math.h>
 #include <stdlib.h>
@@ -47,6 +48,7 @@ void svg_plot_defaults(struct svg_plot *plot)
 void svg_plot_axis(double lo, double hi, double pad, int ticks,
                    struct svg_axis *axis)
 {
+    assert(isfinite(lo) && isfinite(hi));
     if (hi < lo) {
         double t = lo;
         lo = hi;

@@ -16,6 +16,7 @@
 #ifndef FACET_PANEL_INTERNAL_H
 #define FACET_PANEL_INTERNAL_H
 
+#include <assert.h>
 #include <math.h>
 #include <stddef.h>
 #include <stdint.h>
@@ -39,10 +40,12 @@ int panel_grid_init(struct panel_grid *g, const struct mesh *mesh,
                     struct panelization *out, struct facet_error *err);
 
 /* The cell of coordinate x along one grid axis: floor((x - origin) / step)
- * clamped to 0..count-1, so the outermost lines cut nothing. */
+ * clamped to 0..count-1, so the outermost lines cut nothing. count >= 1
+ * and step > 0 (panel_grid_init checks both). */
 static inline int panel_cell_coordinate(double x, double origin, double step,
                                         int count)
 {
+    assert(count >= 1 && step > 0);
     double f = floor((x - origin) / step);
     if (!(f > 0))
         return 0;
@@ -73,9 +76,10 @@ struct piece_moments {
 };
 
 /* Adds the triangle with corners a, b, c (m, relative to the point the
- * moments are about) and area area (m^2) to the first and second moments
- * of p: the integral of x x^T over it is area/12 (a a^T + b b^T + c c^T +
- * s s^T), s = a + b + c. */
+ * moments are about) and area area (m^2, not negative: an unsigned area,
+ * whatever the corners' order) to the first and second moments of p: the
+ * integral of x x^T over it is area/12 (a a^T + b b^T + c c^T + s s^T),
+ * s = a + b + c. */
 __attribute__((always_inline))
 static inline void piece_moments_add_triangle(struct piece_moments *p,
                                               const double a[3],
@@ -83,6 +87,7 @@ static inline void piece_moments_add_triangle(struct piece_moments *p,
                                               const double c[3],
                                               double area)
 {
+    assert(!(area < 0));
     double s[3] = {a[0] + b[0] + c[0], a[1] + b[1] + c[1],
                    a[2] + b[2] + c[2]};
     double w = area * (1.0 / 12), f = area * (1.0 / 3);
@@ -104,12 +109,13 @@ static inline void piece_moments_add_triangle(struct piece_moments *p,
 }
 
 /* Adds p, whose moments are about g (m), to cell m; the first part added
- * to a cell sets its reference point to g. */
+ * to a cell sets its reference point to g. p's areas are not negative. */
 __attribute__((always_inline))
 static inline void cell_moments_add(struct cell_moments *m,
                                     const double g[3],
                                     const struct piece_moments *p)
 {
+    assert(!(p->area < 0) && !(p->uv_area < 0));
     if (!m->has_reference) {
         m->reference[0] = g[0];
         m->reference[1] = g[1];
@@ -163,10 +169,11 @@ struct split_vertex {
  * that would exceed it drops the excess, which convex input never has. */
 #define SPLIT_MAX 16
 
-/* Splits the convex polygon in (count vertices) at coordinate axis (0 u,
- * 1 v) = limit into low (coordinate <= limit) and high (>= limit), as two
- * clip_half calls of panel.c would, the cut points snapped to the line:
- * a vertex on the line goes to both sides. */
+/* Splits the convex polygon in (count vertices, at most SPLIT_MAX) at
+ * coordinate axis (0 u, 1 v) = limit into low (coordinate <= limit) and
+ * high (>= limit), each SPLIT_MAX vertices, as two clip_half calls of
+ * panel.c would, the cut points snapped to the line: a vertex on the line
+ * goes to both sides. */
 void panel_split(const struct split_vertex *in, int count, int axis,
                  double limit, struct split_vertex *low, int *nlow,
                  struct split_vertex *high, int *nhigh);
@@ -192,7 +199,8 @@ typedef int (*split_piece_visitor)(void *context, size_t column, size_t row,
                                    int count);
 
 /* Splits triangle t of prep, whose corners span columns c0..c1 and rows
- * r0..r1, row by row along v_line and then cell by cell along u_line
+ * r0..r1 (c0 <= c1, r0 <= r1; u_line holds c1 - c0 lines from index c0 on,
+ * v_line r1 - r0 from r0), row by row along v_line and then cell by cell along u_line
  * (column c lies below u_line[c], row r below v_line[r]), and hands every
  * piece of three or more vertices in rows row_lo..row_hi-1 to visit,
  * rows in order, columns in order within a row. Returns 0 or visit's
@@ -207,6 +215,7 @@ static inline int panel_split_cells(const struct panel_prep *prep,
                                     size_t row_hi, split_piece_visitor visit,
                                     void *context)
 {
+    assert(c0 <= c1 && r0 <= r1 && row_lo <= row_hi);
     const uint32_t *point = prep->corner + 3 * (size_t)t;
     /* Buffers taken in turn rather than copied: the rest of the triangle
      * (two), the row split off it, the rest of the row (two), the piece
@@ -285,6 +294,7 @@ void panel_piece_moments(const struct panel_prep_triangle *T,
 static inline void cell_moments_add_triangle(
     struct cell_moments *m, const struct panel_prep_triangle *T)
 {
+    assert(!(T->area < 0) && !(T->uv_area < 0));
     if (!m->has_reference) {
         memcpy(m->reference, T->centroid, sizeof m->reference);
         m->has_reference = 1;
@@ -343,6 +353,7 @@ extern const double panel_extent_direction[13][3];
 static inline int outline_wins(double along, const double p[3], double best,
                                const double best_point[3], double sign)
 {
+    assert(sign == 1 || sign == -1);
     if (isinf(best))
         return 1;
     double tolerance = 1e-12 * fmax(fabs(along), fabs(best));

@@ -2,6 +2,7 @@
  * panel_split.c: cutting a triangle along grid lines into the pieces of
  * the cells it crosses, and a piece's moments. See panel_internal.h.
  */
+#include <assert.h>
 #include <math.h>
 #include <string.h>
 
@@ -18,6 +19,7 @@ void panel_split(const struct split_vertex *in, int count, int axis,
                  double limit, struct split_vertex *low, int *nlow,
                   struct split_vertex *high, int *nhigh)
 {
+    assert(count >= 0 && count <= SPLIT_MAX && (axis == 0 || axis == 1));
     *nlow = *nhigh = 0;
     for (int k = 0; k < count; k++) {
         const struct split_vertex *p = &in[k];

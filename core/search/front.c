@@ -3,6 +3,7 @@
  */
 #include "core/search/front.h"
 
+#include <assert.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -23,6 +24,9 @@ int front_analyse(const struct evaluated_option *options, size_t n,
                   double max_panel_area, struct front *out,
                   struct facet_error *err)
 {
+    /* ideal and nadir below hold OBJECTIVES_MAX: the run's objectives
+     * were parsed against that limit (objectives_parse). */
+    assert(nobjectives >= 1 && nobjectives <= OBJECTIVES_MAX);
     memset(out, 0, sizeof *out);
     out->n = n;
     out->knee = SIZE_MAX;
@@ -57,10 +61,9 @@ int front_analyse(const struct evaluated_option *options, size_t n,
     /* Values equal within the run's tolerance (ties.h) are made equal
      * once, here, so that the ranks, the crowding, the knee and the
      * hypervolume's ideal and nadir all see the same ties. */
-    if (ties_merge(value, n, m, value) != 0) {
-        rc = facet_error_set(err, FACET_EWORK, "out of memory (front)");
+    rc = ties_merge(value, n, m, value, err);
+    if (rc != FACET_OK)
         goto done;
-    }
     for (size_t i = 0; i < n; i++)
         for (size_t j = 0; j < m; j++)
             if (violation[i] == 0) {

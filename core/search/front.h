@@ -28,8 +28,9 @@ struct front {
     size_t pareto;          /* options of rank 1 */
 };
 
-/* Analyses options[0..n) under the objectives, with max_panel_area the
- * feasibility limit (m^2). Fills *out (release with front_free). */
+/* Analyses options[0..n) under the objectives (nobjectives in
+ * 1..OBJECTIVES_MAX, asserted), with max_panel_area the feasibility limit
+ * (m^2). Fills *out (release with front_free). */
 int front_analyse(const struct evaluated_option *options, size_t n,
                   const struct objective *objectives, int nobjectives,
                   double max_panel_area, struct front *out,

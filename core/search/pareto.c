@@ -8,6 +8,7 @@
  */
 #include "core/search/pareto.h"
 
+#include <assert.h>
 #include <limits.h>
 #include <math.h>
 #include <stdbool.h>
@@ -147,6 +148,20 @@ static int check_violation(const double *violation, size_t n,
     return FACET_OK;
 }
 
+/* The input of the functions that rank: objectives, violation, and few
+ * enough points for an int rank. */
+static int check_ranked(const double *objectives, size_t n, size_t m,
+                        const double *violation, struct facet_error *err)
+{
+    int rc = check_objectives(objectives, n, m, err);
+    if (rc == FACET_OK)
+        rc = check_violation(violation, n, err);
+    if (rc == FACET_OK && n >= INT_MAX)
+        rc = facet_error_set(err, FACET_EINPUT,
+                             "pareto: %zu points are too many to rank", n);
+    return rc;
+}
+
 static int out_of_memory(struct facet_error *err, const char *what)
 {
     return facet_error_set(err, FACET_EWORK, "pareto: out of memory (%s)",
@@ -162,7 +177,7 @@ static double *merge_ties(const double *objectives, size_t n, size_t m)
     double *merged = malloc((n * m + 1) * sizeof *merged);
     if (merged == NULL)
         return NULL;
-    if (ties_merge(objectives, n, m, merged) != 0) {
+    if (ties_merge(objectives, n, m, merged, NULL) != FACET_OK) {
         free(merged);
         return NULL;
     }
@@ -187,6 +202,7 @@ static double *merge_ties(const double *objectives, size_t n, size_t m)
 static int rank_two(const struct point_set *set, const size_t *point,
                     size_t u, int *rank)
 {
+    assert(set->m == 2 && u < INT_MAX);
     double *low = malloc((u + 1) * sizeof *low);
     if (low == NULL)
         return -1;
@@ -334,6 +350,7 @@ static size_t dense_ranks(const double *values, size_t u, size_t *sorted,
 static int rank_three(const struct point_set *set, const size_t *point,
                       size_t u, int *rank)
 {
+    assert(set->m == 3 && u < INT_MAX);
     struct sweep3 s = {.u = u};
     double *values = malloc(u * sizeof *values);
     s.y = malloc(u * sizeof *s.y);
@@ -379,6 +396,7 @@ done:
 static int rank_many(const struct point_set *set, const size_t *point,
                      size_t u, int *rank)
 {
+    assert(set->m >= 4 && u < INT_MAX);
     size_t *head = malloc((u + 1) * sizeof *head);
     size_t *tail = malloc((u + 1) * sizeof *tail);
     size_t *next = malloc((u + 1) * sizeof *next);
@@ -429,6 +447,9 @@ static int rank_many(const struct point_set *set, const size_t *point,
 static int rank_subset(const double *objectives, size_t m, size_t *subset,
                        size_t count, int offset, int *rank)
 {
+    /* Ranks are ints: pareto_rank refuses n >= INT_MAX. */
+    assert(m >= 1 && count < INT_MAX && offset >= 0 &&
+           count <= (size_t)(INT_MAX - offset));
     if (count == 0)
         return 0;
     struct point_set set = {.objectives = objectives, .m = m};
@@ -526,14 +547,9 @@ int pareto_rank(const double *objectives, size_t n, size_t m,
                 const double *violation, int *rank, int *nfronts,
                 struct facet_error *err)
 {
-    int rc = check_objectives(objectives, n, m, err);
-    if (rc == FACET_OK)
-        rc = check_violation(violation, n, err);
+    int rc = check_ranked(objectives, n, m, violation, err);
     if (rc != FACET_OK)
         return rc;
-    if (n >= INT_MAX)
-        return facet_error_set(err, FACET_EINPUT,
-                               "pareto: %zu points are too many to rank", n);
     double *merged = merge_ties(objectives, n, m);
     if (merged == NULL)
         return out_of_memory(err, "ranks");
@@ -822,14 +838,9 @@ int pareto_select(const double *objectives, size_t n, size_t m,
         return facet_error_set(err, FACET_EINPUT,
                                "pareto: cannot keep %zu of %zu points", keep,
                                n);
-    int rc = check_objectives(objectives, n, m, err);
-    if (rc == FACET_OK)
-        rc = check_violation(violation, n, err);
+    int rc = check_ranked(objectives, n, m, violation, err);
     if (rc != FACET_OK)
         return rc;
-    if (n >= INT_MAX)
-        return facet_error_set(err, FACET_EINPUT,
-                               "pareto: %zu points are too many to rank", n);
     int *rank = malloc((n + 1) * sizeof *rank);
     double *crowding = malloc((n + 1) * sizeof *crowding);
     bool *copy = malloc((n + 1) * sizeof *copy);
@@ -897,6 +908,7 @@ static int volume_of(const double *points, size_t count, size_t dims,
 static int volume_two(const double *points, size_t count,
                       const double *reference, double *volume)
 {
+    assert(count >= 1);
     size_t *order = malloc(count * sizeof *order);
     size_t *scratch = malloc((count / 2 + 1) * sizeof *scratch);
     if (order == NULL || scratch == NULL) {
@@ -1011,6 +1023,7 @@ done:
 static int volume_sliced(const double *points, size_t count, size_t dims,
                          const double *reference, double *volume)
 {
+    assert(dims >= 4 && count >= 1);
     size_t *order = malloc(count * sizeof *order);
     size_t *scratch = malloc((count / 2 + 1) * sizeof *scratch);
     double *slice = malloc(count * (dims - 1) * sizeof *slice);
@@ -1099,6 +1112,7 @@ int pareto_hypervolume(const double *objectives, size_t n, size_t m,
 void pareto_normalize(const double *objectives, size_t n, size_t m,
                       const double *ideal, const double *nadir, double *out)
 {
+    assert(m >= 1 || n == 0);
     for (size_t i = 0; i < n; i++)
         for (size_t j = 0; j < m; j++) {
             double range = nadir[j] - ideal[j];

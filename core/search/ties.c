@@ -3,6 +3,7 @@
  */
 #include "core/search/ties.h"
 
+#include <assert.h>
 #include <math.h>
 #include <stdlib.h>
 
@@ -39,14 +40,17 @@ static int compare_keyed(const void *a, const void *b)
 }
 
 int ties_merge_column(const double *values, size_t n, size_t stride,
-                      double tolerance, double *out)
+                      double tolerance, double *out, struct facet_error *err)
 {
+    assert(tolerance >= 0);
     if (n == 0)
-        return 0;
+        return FACET_OK;
     struct keyed *sorted = malloc(n * sizeof *sorted);
     if (sorted == NULL)
-        return -1;
+        return facet_error_set(err, FACET_EWORK,
+                               "out of memory (ties of %zu values)", n);
     for (size_t k = 0; k < n; k++) {
+        assert(!isnan(values[k * stride]));
         sorted[k].value = values[k * stride];
         sorted[k].index = k;
     }
@@ -62,17 +66,20 @@ int ties_merge_column(const double *values, size_t n, size_t stride,
         out[sorted[k].index * stride] = lowest;
     }
     free(sorted);
-    return 0;
+    return FACET_OK;
 }
 
-int ties_merge(const double *objectives, size_t n, size_t m, double *out)
+int ties_merge(const double *objectives, size_t n, size_t m, double *out,
+               struct facet_error *err)
 {
     for (size_t j = 0; j < m; j++) {
         double tolerance = ties_tolerance(objectives + j, n, m);
-        if (ties_merge_column(objectives + j, n, m, tolerance, out + j) != 0)
-            return -1;
+        int rc = ties_merge_column(objectives + j, n, m, tolerance, out + j,
+                                   err);
+        if (rc != FACET_OK)
+            return rc;
     }
-    return 0;
+    return FACET_OK;
 }
 
 int ties_compare_normalised(double a, double b)
@@ -104,26 +111,28 @@ static int compare_rows(const void *a, const void *b)
 }
 
 int ties_order(const double *keys, size_t n, size_t nkeys,
-               const double *tolerance, int descending, size_t *order)
+               const double *tolerance, int descending, size_t *order,
+               struct facet_error *err)
 {
     if (n == 0)
-        return 0;
+        return FACET_OK;
     double *merged = malloc(n * nkeys * sizeof *merged + 1);
     struct ordered_row *rows = malloc(n * sizeof *rows);
-    int rc = -1;
+    int rc = FACET_OK;
     if (merged == NULL || rows == NULL)
+        rc = facet_error_set(err, FACET_EWORK,
+                             "out of memory (ordering %zu rows)", n);
+    for (size_t k = 0; rc == FACET_OK && k < nkeys; k++)
+        rc = ties_merge_column(keys + k, n, nkeys, tolerance[k], merged + k,
+                               err);
+    if (rc != FACET_OK)
         goto done;
-    for (size_t k = 0; k < nkeys; k++)
-        if (ties_merge_column(keys + k, n, nkeys, tolerance[k],
-                              merged + k) != 0)
-            goto done;
     for (size_t i = 0; i < n; i++)
         rows[i] = (struct ordered_row){merged + i * nkeys, nkeys, i,
                                        descending};
     qsort(rows, n, sizeof *rows, compare_rows);
     for (size_t i = 0; i < n; i++)
         order[i] = rows[i].index;
-    rc = 0;
 done:
     free(merged);
     free(rows);

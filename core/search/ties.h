@@ -43,6 +43,8 @@
 
 #include <stddef.h>
 
+#include "core/base/error.h"
+
 /* The relative tolerance: a fraction of an objective's range. */
 #define TIES_RELATIVE 1e-9
 
@@ -53,15 +55,16 @@ double ties_tolerance(const double *values, size_t n, size_t stride);
 /* Replaces each of values[k * stride], k < n, by the lowest value of its
  * tie class under tolerance (>= 0) into out[k * stride]; out may alias
  * values. Infinite values tie only with themselves; NaN is not allowed.
- * Returns 0, or -1 when out of memory (out untouched). */
+ * Returns FACET_OK, or FACET_EWORK when out of memory (out untouched). */
 int ties_merge_column(const double *values, size_t n, size_t stride,
-                      double tolerance, double *out);
+                      double tolerance, double *out, struct facet_error *err);
 
 /* ties_merge_column on every objective of the n x m row-major array, each
  * with its own ties_tolerance over the n points. out may alias
- * objectives. Returns 0 or -1 (out of memory). Idempotent: merging merged
- * values changes nothing. */
-int ties_merge(const double *objectives, size_t n, size_t m, double *out);
+ * objectives. Returns FACET_OK or FACET_EWORK (out of memory). Idempotent:
+ * merging merged values changes nothing. */
+int ties_merge(const double *objectives, size_t n, size_t m, double *out,
+               struct facet_error *err);
 
 /* Orders two dimensionless numbers (normalised units): 0 when they differ
  * by at most TIES_RELATIVE (equal infinities tie), else -1 or 1 like
@@ -74,9 +77,10 @@ int ties_compare_normalised(double a, double b);
  * receives the rows sorted by key 0's tie classes over the n rows (each
  * class read as its lowest value), then key 1's, and so on, then by row
  * index; descending reverses every comparison, the index's too. Keys
- * may be +-INFINITY; NaN is not allowed. Returns 0,
- * or -1 when out of memory (order untouched). */
+ * may be +-INFINITY; NaN is not allowed. Returns FACET_OK, or FACET_EWORK
+ * when out of memory (order untouched). */
 int ties_order(const double *keys, size_t n, size_t nkeys,
-               const double *tolerance, int descending, size_t *order);
+               const double *tolerance, int descending, size_t *order,
+               struct facet_error *err);
 
 #endif

@@ -3,6 +3,7 @@
  */
 #include "core/surface/coarse_mesh.h"
 
+#include <assert.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -16,31 +17,40 @@ static int compare_doubles(const void *a, const void *b)
 /* The median of values[0..n), which it reorders; n > 0. */
 static double median(double *values, size_t n)
 {
+    assert(n > 0);
     qsort(values, n, sizeof *values, compare_doubles);
     return n % 2 ? values[n / 2] : (values[n / 2 - 1] + values[n / 2]) / 2;
 }
 
-double mesh_facet_size(const struct mesh *mesh)
+int mesh_facet_size(const struct mesh *mesh, double *size,
+                    struct facet_error *err)
 {
+    *size = 0;
     if (mesh->ntriangles == 0)
-        return 0;
+        return FACET_OK;
     double *side = malloc(mesh->ntriangles * sizeof *side);
     if (side == NULL)
-        return -1;
+        return facet_error_set(err, FACET_EWORK,
+                               "out of memory (facet size of %zu triangles)",
+                               mesh->ntriangles);
     for (size_t t = 0; t < mesh->ntriangles; t++)
         side[t] = sqrt(2 * mesh->face_area[t]);
-    double size = median(side, mesh->ntriangles);
+    *size = median(side, mesh->ntriangles);
     free(side);
-    return size;
+    return FACET_OK;
 }
 
-double panels_typical_side(const struct panelization *p)
+int panels_typical_side(const struct panelization *p, double *side,
+                        struct facet_error *err)
 {
+    *side = 0;
     if (p->npanels == 0)
-        return 0;
+        return FACET_OK;
     double *area = malloc(p->npanels * sizeof *area);
     if (area == NULL)
-        return -1;
+        return facet_error_set(err, FACET_EWORK,
+                               "out of memory (side of %zu panels)",
+                               p->npanels);
     size_t n = 0;
     for (size_t k = 0; k < p->npanels; k++)
         if (!p->panels[k].trimmed)
@@ -48,9 +58,9 @@ double panels_typical_side(const struct panelization *p)
     if (n == 0)
         for (size_t k = 0; k < p->npanels; k++)
             area[n++] = p->panels[k].area;
-    double side = sqrt(median(area, n));
+    *side = sqrt(median(area, n));
     free(area);
-    return side;
+    return FACET_OK;
 }
 
 double grid_panel_side(double area, double fill, int nu, int nv)

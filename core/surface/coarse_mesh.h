@@ -14,6 +14,7 @@
 
 #include <stddef.h>
 
+#include "core/base/error.h"
 #include "core/surface/mesh.h"
 #include "core/panel/panel.h"
 
@@ -22,14 +23,18 @@
 #define COARSE_MESH_RATIO 0.5
 
 /* The typical facet of mesh (m): the median over its triangles of
- * sqrt(2 x area), the side of the quad a triangle is half of. 0 for a mesh
- * without triangles. Returns -1 when out of memory. */
-double mesh_facet_size(const struct mesh *mesh);
+ * sqrt(2 x area), the side of the quad a triangle is half of, into *size;
+ * 0 for a mesh without triangles. Returns FACET_OK, or FACET_EWORK when out
+ * of memory (*size is then 0). */
+int mesh_facet_size(const struct mesh *mesh, double *size,
+                    struct facet_error *err);
 
 /* The typical side of p's panels (m): the square root of the median area
- * of the panels that are not trimmed (of all panels when every one is). 0
- * for no panels. Returns -1 when out of memory. */
-double panels_typical_side(const struct panelization *p);
+ * of the panels that are not trimmed (of all panels when every one is),
+ * into *side; 0 for no panels. Returns FACET_OK, or FACET_EWORK when out
+ * of memory (*side is then 0). */
+int panels_typical_side(const struct panelization *p, double *side,
+                        struct facet_error *err);
 
 /* The side (m) of a full panel of an nu x nv grid over a surface of area
  * (m^2) whose UV covers fill (0 to 1) of its UV box: what a run's finest

@@ -144,9 +144,11 @@ static int try_vt(const struct mesh *mesh, const char *name,
             "--object", name, out->report.flipped,
             out->report.overlapping);
     struct uv_chart chart[3];
-    long charts = param_charts(mesh, out->uv, chart, 3);
-    if (charts < 0)
-        return facet_error_set(err, FACET_EWORK, "out of memory (UV)");
+    size_t found;
+    rc = param_charts(mesh, out->uv, chart, 3, &found, err);
+    if (rc != FACET_OK)
+        return rc;
+    long charts = (long)found;
     if (charts > 1) {
         char list[240];
         size_t used = 0;

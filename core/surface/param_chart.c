@@ -34,12 +34,21 @@ static int corner_of(const uint32_t *tri, uint32_t vertex)
     return -1;
 }
 
-long param_charts(const struct mesh *mesh, const double *uv,
-                  struct uv_chart *chart, size_t max)
+static int out_of_memory(struct facet_error *err, size_t ntriangles)
 {
+    return facet_error_set(err, FACET_EWORK,
+                           "out of memory (UV charts of %zu triangles)",
+                           ntriangles);
+}
+
+int param_charts(const struct mesh *mesh, const double *uv,
+                 struct uv_chart *chart, size_t max, size_t *count,
+                 struct facet_error *err)
+{
+    *count = 0;
     size_t nt = mesh->ntriangles;
     if (nt == 0)
-        return 0;
+        return FACET_OK;
     double umin = INFINITY, umax = -INFINITY, vmin = INFINITY,
            vmax = -INFINITY;
     for (size_t c = 0; c < 3 * nt; c++) {
@@ -54,7 +63,7 @@ long param_charts(const struct mesh *mesh, const double *uv,
     if (parent == NULL || index == NULL) {
         free(parent);
         free(index);
-        return -1;
+        return out_of_memory(err, nt);
     }
     for (size_t t = 0; t < nt; t++)
         parent[t] = (uint32_t)t;
@@ -77,17 +86,17 @@ long param_charts(const struct mesh *mesh, const double *uv,
         }
     }
     /* Number the charts, then fill their sizes and boxes. */
-    size_t count = 0;
+    size_t charts = 0;
     for (size_t t = 0; t < nt; t++)
         if (find_root(parent, (uint32_t)t) == t)
-            index[t] = (uint32_t)count++;
-    struct uv_chart *all = calloc(count, sizeof *all);
+            index[t] = (uint32_t)charts++;
+    struct uv_chart *all = calloc(charts, sizeof *all);
     if (all == NULL) {
         free(parent);
         free(index);
-        return -1;
+        return out_of_memory(err, nt);
     }
-    for (size_t c = 0; c < count; c++) {
+    for (size_t c = 0; c < charts; c++) {
         all[c].umin = all[c].vmin = INFINITY;
         all[c].umax = all[c].vmax = -INFINITY;
     }
@@ -102,9 +111,9 @@ long param_charts(const struct mesh *mesh, const double *uv,
         }
     }
     /* The largest first (a selection: max is small). */
-    for (size_t k = 0; k < max && k < count; k++) {
+    for (size_t k = 0; k < max && k < charts; k++) {
         size_t best = k;
-        for (size_t c = k + 1; c < count; c++)
+        for (size_t c = k + 1; c < charts; c++)
             if (all[c].triangles > all[best].triangles)
                 best = c;
         struct uv_chart swap = all[k];
@@ -115,5 +124,6 @@ long param_charts(const struct mesh *mesh, const double *uv,
     free(all);
     free(parent);
     free(index);
-    return (long)count;
+    *count = charts;
+    return FACET_OK;
 }

@@ -14,6 +14,7 @@
 
 #include <stddef.h>
 
+#include "core/base/error.h"
 #include "core/surface/mesh.h"
 
 struct uv_chart {
@@ -21,10 +22,12 @@ struct uv_chart {
     double umin, vmin, umax, vmax;   /* its UV box */
 };
 
-/* Finds the charts of the per-corner UV map uv (#T x 3 x 2) over mesh.
- * Returns the number of charts and writes the largest (most triangles
- * first) into chart[0 .. max), or -1 when out of memory. */
-long param_charts(const struct mesh *mesh, const double *uv,
-                  struct uv_chart *chart, size_t max);
+/* Finds the charts of the per-corner UV map uv (#T x 3 x 2) over mesh:
+ * their number into *count and the largest (most triangles first) into
+ * chart[0 .. min(max, *count)). Returns FACET_OK, or FACET_EWORK when out
+ * of memory (*count is then 0). */
+int param_charts(const struct mesh *mesh, const double *uv,
+                 struct uv_chart *chart, size_t max, size_t *count,
+                 struct facet_error *err);
 
 #endif

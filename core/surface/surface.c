@@ -41,7 +41,10 @@ static int check_precision(const struct surface *s, struct facet_error *err)
     double far = 0;
     for (int k = 0; k < 3; k++)
         far = fmax(far, fmax(fabs(m->bbox_min[k]), fabs(m->bbox_max[k])));
-    double facet = mesh_facet_size(m);
+    double facet;
+    int rc = mesh_facet_size(m, &facet, err);
+    if (rc != FACET_OK)
+        return rc;
     if (!(facet > 0) || far <= 1e9 * facet)
         return FACET_OK;
     return facet_error_set(err, FACET_EINPUT,

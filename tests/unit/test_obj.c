@@ -870,9 +870,9 @@ static void test_names_compare_by_length(void **state)
     struct obj_names table;
     memset(&table, 0, sizeof table);
     uint32_t a, b, c;
-    assert_int_equal(obj_names_find(&table, "abc", 3, &a), 0);
-    assert_int_equal(obj_names_find(&table, "abc\0def", 7, &b), 0);
-    assert_int_equal(obj_names_find(&table, "abc", 3, &c), 0);
+    assert_int_equal(obj_names_find(&table, "abc", 3, &a, NULL), 0);
+    assert_int_equal(obj_names_find(&table, "abc\0def", 7, &b, NULL), 0);
+    assert_int_equal(obj_names_find(&table, "abc", 3, &c, NULL), 0);
     assert_true(a != b);
     assert_int_equal(a, c);
     obj_names_free(&table);

@@ -3,7 +3,8 @@
  * (core/base/parallel.h), which curvature, the UV check, the OBJ reader,
  * `facet optimize` and the TUI's New run all use: the count is the online
  * CPUs as sysconf reports them, clamped to [1, limit]; every job runs
- * exactly once, job 0 on the calling thread.
+ * exactly once, job 0 on the calling thread; more jobs than PARALLEL_MAX
+ * stop the program (they were silently left undone).
  */
 #include <setjmp.h>
 #include <stdarg.h>
@@ -11,7 +12,10 @@
 #include <stdint.h>
 #include <cmocka.h>
 
+#include <fcntl.h>
 #include <pthread.h>
+#include <signal.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include "core/base/parallel.h"
@@ -54,11 +58,33 @@ static void test_every_job_once(void **state)
     }
 }
 
+/* PARALLEL_MAX + 1 jobs: the assert stops a child process with SIGABRT
+ * rather than running 64 of them and returning as if all were done. */
+static void test_too_many_jobs_stop(void **state)
+{
+    (void)state;
+    pid_t child = fork();
+    assert_true(child >= 0);
+    if (child == 0) {
+        int null = open("/dev/null", O_WRONLY);
+        if (null >= 0)
+            dup2(null, STDERR_FILENO);
+        struct job job[PARALLEL_MAX + 1] = {{0}};
+        parallel_run(job, sizeof job[0], PARALLEL_MAX + 1, run_job);
+        _exit(job[PARALLEL_MAX].runs == 1 ? 0 : 3);
+    }
+    int status;
+    assert_int_equal(waitpid(child, &status, 0), child);
+    assert_true(WIFSIGNALED(status));
+    assert_int_equal(WTERMSIG(status), SIGABRT);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_cpus_clamped),
         cmocka_unit_test(test_every_job_once),
+        cmocka_unit_test(test_too_many_jobs_stop),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

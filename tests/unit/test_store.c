@@ -168,8 +168,10 @@ static void test_run_roundtrip(void **state)
         if (rows[k].rank == 1) {
             /* The Pareto options' panels are stored and read back as
              * they were computed. */
+            int exists = 0;
             assert_int_equal(store_panels_exist(store, run, rows[k].number,
-                                                &err), 1);
+                                                &exists, &err), FACET_OK);
+            assert_int_equal(exists, 1);
             struct panelization stored;
             assert_int_equal(store_panels_get(store, run, rows[k].number,
                                               &stored, &err), FACET_OK);
@@ -192,8 +194,10 @@ static void test_run_roundtrip(void **state)
             panelization_free(&stored);
             panelization_free(&panels);
         } else {
+            int exists = 1;
             assert_int_equal(store_panels_exist(store, run, rows[k].number,
-                                                &err), 0);
+                                                &exists, &err), FACET_OK);
+            assert_int_equal(exists, 0);
         }
     }
     assert_int_equal(knees, 1);
@@ -520,6 +524,34 @@ static void sql(const char *path, const char *statements)
     sqlite3_close(db);
 }
 
+/* A database whose panel table is gone answers "are the panels stored?"
+ * with an error that names the file, not with a "no" that would send the
+ * caller off to recompute them; the answer is left at 0. */
+static void test_panels_exist_error(void **state)
+{
+    (void)state;
+    struct facet_error err;
+    struct store *store;
+    assert_int_equal(store_open(fresh_db("panels_exist"), &store, &err),
+                     FACET_OK);
+    int stored = 1;
+    assert_int_equal(store_panels_exist(store, 1, 1, &stored, &err),
+                     FACET_OK);
+    assert_int_equal(stored, 0);
+    /* SQLite itself, over a second connection, removes the table. */
+    sql(db_path, "DROP TABLE panel_sets");
+    stored = 1;
+    facet_error_clear(&err);
+    int rc = store_panels_exist(store, 1, 1, &stored, &err);
+    assert_true(rc == FACET_EWORK || rc == FACET_EINPUT);
+    assert_int_equal(err.code, rc);
+    assert_int_equal(stored, 0);
+    if (strstr(err.message, "panel_sets") == NULL ||
+        strstr(err.message, db_path) == NULL)
+        fail_msg("message '%s' names neither table nor file", err.message);
+    store_close(store);
+}
+
 static void test_refuses_other_files(void **state)
 {
     (void)state;
@@ -668,6 +700,7 @@ int main(void)
         cmocka_unit_test(test_resume_nsga2),
         cmocka_unit_test(test_orphan_is_interrupted),
         cmocka_unit_test(test_refuses_other_files),
+        cmocka_unit_test(test_panels_exist_error),
         cmocka_unit_test(test_migrates_older_schema),
         cmocka_unit_test(test_migrates_v3),
         cmocka_unit_test(test_resume_forced_uv),

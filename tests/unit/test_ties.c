@@ -37,13 +37,13 @@ static void test_classes(void **state)
      * apart; 2.3 is 1.1 from 1.2 and starts a class; 3.3 joins it. */
     double v[] = {1.2, 3.3, 0.6, 2.3, 0, INFINITY, INFINITY, -INFINITY};
     double out[8];
-    assert_int_equal(ties_merge_column(v, 8, 1, 1.0, out), 0);
+    assert_int_equal(ties_merge_column(v, 8, 1, 1.0, out, NULL), 0);
     const double expected[] = {0, 2.3, 0, 2.3, 0, INFINITY, INFINITY,
                                -INFINITY};
     for (int k = 0; k < 8; k++)
         assert_true(out[k] == expected[k]);
     /* In place, and again: nothing moves. */
-    assert_int_equal(ties_merge_column(v, 8, 1, 1.0, v), 0);
+    assert_int_equal(ties_merge_column(v, 8, 1, 1.0, v, NULL), 0);
     for (int k = 0; k < 8; k++)
         assert_true(v[k] == expected[k]);
 }
@@ -57,12 +57,12 @@ static void test_merge_columns(void **state)
     double f[] = {1215639.0000000009, 630.3,
                   1215639.0000000018, 630.301,
                   1300000.0, 900.0};
-    assert_int_equal(ties_merge(f, 3, 2, f), 0);
+    assert_int_equal(ties_merge(f, 3, 2, f, NULL), 0);
     assert_true(f[0] == f[2]);
     assert_true(f[0] == 1215639.0000000009);
     assert_true(f[1] == 630.3 && f[3] == 630.301);
     double again[6];
-    assert_int_equal(ties_merge(f, 3, 2, again), 0);
+    assert_int_equal(ties_merge(f, 3, 2, again, NULL), 0);
     for (int k = 0; k < 6; k++)
         assert_true(again[k] == f[k]);
 }

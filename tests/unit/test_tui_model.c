@@ -354,14 +354,17 @@ static void test_count_step_stops(void **state)
     assert_false(m.count_exact);
     int done = 0, steps = 0;
     while (!done && steps < 100) {
-        done = table_model_count_step(&m, 300, &err);
-        assert_true(done >= 0);
+        assert_int_equal(table_model_count_step(&m, 300, &done, &err),
+                         FACET_OK);
         steps++;
     }
     assert_int_equal(done, 1);
     assert_int_equal(m.count, N);
     for (int k = 0; k < 20; k++) {
-        assert_int_equal(table_model_count_step(&m, 300, &err), 1);
+        done = 0;
+        assert_int_equal(table_model_count_step(&m, 300, &done, &err),
+                         FACET_OK);
+        assert_int_equal(done, 1);
         assert_int_equal(m.count, N);
     }
     char text[32];
@@ -422,6 +425,33 @@ static void test_scroll(void **state)
     assert_int_equal(table_model_scroll(7, 0, 0, 3), 0);
 }
 
+/* Marks: the 65th is refused with a message and leaves the 64 as they
+ * were; marking twice keeps one mark; unmarking makes room again. */
+static void test_marks_full(void **state)
+{
+    (void)state;
+    struct table_model m;
+    memset(&m, 0, sizeof m);
+    struct facet_error err;
+    for (int64_t k = 1; k <= TABLE_MARKS_MAX; k++)
+        assert_int_equal(table_model_set_mark(&m, k, 1, &err), FACET_OK);
+    assert_int_equal(table_model_set_mark(&m, 1, 1, &err), FACET_OK);
+    assert_int_equal(m.nmarks, TABLE_MARKS_MAX);
+    facet_error_clear(&err);
+    assert_int_equal(table_model_set_mark(&m, 1000, 1, &err), FACET_EINPUT);
+    assert_int_equal(err.code, FACET_EINPUT);
+    char want[64];
+    snprintf(want, sizeof want, "at most %d marks", TABLE_MARKS_MAX);
+    assert_string_equal(err.message, want);
+    assert_false(table_model_marked(&m, 1000));
+    assert_int_equal(m.nmarks, TABLE_MARKS_MAX);
+    assert_int_equal(table_model_set_mark(&m, 7, 0, &err), FACET_OK);
+    assert_false(table_model_marked(&m, 7));
+    assert_int_equal(table_model_set_mark(&m, 1000, 1, &err), FACET_OK);
+    assert_true(table_model_marked(&m, 1000));
+    assert_int_equal(m.nmarks, TABLE_MARKS_MAX);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -432,6 +462,7 @@ int main(void)
         cmocka_unit_test(test_scroll),
         cmocka_unit_test(test_count_step_stops),
         cmocka_unit_test(test_select_first),
+        cmocka_unit_test(test_marks_full),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

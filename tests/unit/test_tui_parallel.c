@@ -57,7 +57,9 @@ static void test_brush_steps(void **state)
     struct pc_state st;
     ranges(&st);
     char text[512];
-    assert_int_equal(pc_filter_text(&st, text, sizeof text), 0);
+    struct facet_error err;
+    assert_int_equal(pc_filter_text(&st, text, sizeof text, &err),
+                     FACET_OK);
     assert_string_equal(text, "");
     /* the high edge of cost down two steps: 1/20 of the range each,
      * rounded up to a thousand (a hundredth of the range's magnitude) */
@@ -68,12 +70,12 @@ static void test_brush_steps(void **state)
     assert_true(st.brush[COST].hi >= 1742720.4 - 2 * step);
     assert_true(st.brush[COST].hi < 1742720.4 - 2 * step + 1000);
     assert_true(fmod(st.brush[COST].hi, 1000) == 0);
-    pc_filter_text(&st, text, sizeof text);
+    pc_filter_text(&st, text, sizeof text, &err);
     assert_string_equal(text, "cost <= 1724000");
     /* integer axes step by whole numbers */
     pc_brush_move(&st, U, 0, 1);
     assert_true(st.brush[U].lo == 5);
-    pc_filter_text(&st, text, sizeof text);
+    pc_filter_text(&st, text, sizeof text, &err);
     assert_string_equal(text, "nu >= 5 and cost <= 1724000");
     /* edges never cross, and stay in the range */
     pc_brush_move(&st, U, 0, 100);
@@ -86,39 +88,55 @@ static void test_brush_steps(void **state)
     /* back out to the whole range: the brush goes */
     pc_brush_move(&st, COST, 1, 5);
     assert_false(st.brush[COST].active);
-    assert_int_equal(pc_filter_text(&st, text, sizeof text), 0);
+    assert_int_equal(pc_filter_text(&st, text, sizeof text, &err),
+                     FACET_OK);
+    assert_string_equal(text, "");
     /* a small metric rounds to hundredths */
     pc_brush_move(&st, PLANARITY, 0, 3);
-    pc_filter_text(&st, text, sizeof text);
+    pc_filter_text(&st, text, sizeof text, &err);
     assert_string_equal(text, "planarity >= 0.37");
     /* no range (no options): nothing happens */
     st.min[DP] = st.max[DP] = NAN;
     pc_brush_move(&st, DP, 0, 1);
     assert_false(st.brush[DP].active);
     /* too small a buffer */
-    assert_int_equal(pc_filter_text(&st, text, 5), -1);
+    assert_int_equal(pc_filter_text(&st, text, 5, &err), FACET_EINPUT);
+    assert_string_equal(err.message, "the filter is too long");
 }
 
 static void test_typed_range(void **state)
 {
     (void)state;
     double lo, hi;
-    assert_int_equal(pc_parse_range("1.1M:1.2M", 0, 9e9, &lo, &hi), 0);
+    struct facet_error err;
+    assert_int_equal(pc_parse_range("1.1M:1.2M", 0, 9e9, &lo, &hi, &err),
+                     FACET_OK);
     assert_true(lo == 1.1e6 && hi == 1.2e6);
-    assert_int_equal(pc_parse_range("1.5e6..1.6e6", 0, 9e9, &lo, &hi), 0);
+    assert_int_equal(pc_parse_range("1.5e6..1.6e6", 0, 9e9, &lo, &hi, &err),
+                     FACET_OK);
     assert_true(lo == 1.5e6 && hi == 1.6e6);
-    assert_int_equal(pc_parse_range(":900", 826, 1069, &lo, &hi), 0);
+    assert_int_equal(pc_parse_range(":900", 826, 1069, &lo, &hi, &err),
+                     FACET_OK);
     assert_true(lo == 826 && hi == 900);
-    assert_int_equal(pc_parse_range("20: ", 4, 60, &lo, &hi), 0);
+    assert_int_equal(pc_parse_range("20: ", 4, 60, &lo, &hi, &err),
+                     FACET_OK);
     assert_true(lo == 20 && hi == 60);
-    assert_int_equal(pc_parse_range("2 3", 0, 9, &lo, &hi), 0);
+    assert_int_equal(pc_parse_range("2 3", 0, 9, &lo, &hi, &err),
+                     FACET_OK);
     assert_true(lo == 2 && hi == 3);
-    assert_int_equal(pc_parse_range("800k:", 0, 9e9, &lo, &hi), 0);
+    assert_int_equal(pc_parse_range("800k:", 0, 9e9, &lo, &hi, &err),
+                     FACET_OK);
     assert_true(lo == 8e5);
-    assert_int_equal(pc_parse_range(":", 0, 9, &lo, &hi), -1);
-    assert_int_equal(pc_parse_range("abc:3", 0, 9, &lo, &hi), -1);
-    assert_int_equal(pc_parse_range("3", 0, 9, &lo, &hi), -1);
-    assert_int_equal(pc_parse_range("1:nan", 0, 9, &lo, &hi), -1);
+    assert_int_equal(pc_parse_range(":", 0, 9, &lo, &hi, &err),
+                     FACET_EINPUT);
+    assert_int_equal(pc_parse_range("abc:3", 0, 9, &lo, &hi, &err),
+                     FACET_EINPUT);
+    assert_int_equal(pc_parse_range("3", 0, 9, &lo, &hi, &err),
+                     FACET_EINPUT);
+    assert_int_equal(pc_parse_range("1:nan", 0, 9, &lo, &hi, &err),
+                     FACET_EINPUT);
+    assert_string_equal(err.message, "range: '1:nan' is not LO:HI (e.g. "
+                                     "1.1M:1.2M, :900, 20:)");
     /* a set range is ordered and clamped */
     struct pc_state st;
     ranges(&st);
@@ -139,11 +157,12 @@ static void test_filter_round_trip(void **state)
     pc_brush_set(&st, COST, 1.6e6, 1.7e6);
     pc_brush_set(&st, V, 5, 8);
     char text[512];
-    assert_true(pc_filter_text(&st, text, sizeof text) > 0);
+    struct facet_error err;
+    assert_int_equal(pc_filter_text(&st, text, sizeof text, &err),
+                     FACET_OK);
     assert_string_equal(text, "pareto and nv >= 5 and cost >= 1600000 and "
                               "cost <= 1700000");
     struct filter *f;
-    struct facet_error err;
     assert_int_equal(filter_compile(text, &f, &err), FACET_OK);
     struct pc_state back;
     ranges(&back);
@@ -174,7 +193,7 @@ static void test_filter_round_trip(void **state)
     filter_free(f);
     assert_false(back.brush[COST].active);
     pc_brush_set(&back, U, 6, 8);
-    pc_filter_text(&back, text, sizeof text);
+    pc_filter_text(&back, text, sizeof text, &err);
     assert_string_equal(text, "((cost <= 1600000) or pareto) and nu >= 6");
     assert_int_equal(filter_compile(text, &f, &err), FACET_OK);
     filter_free(f);
@@ -192,7 +211,8 @@ static void test_canvas(void **state)
 {
     (void)state;
     struct pc_canvas c;
-    assert_int_equal(pc_canvas_init(&c, 4, 2), 0);
+    struct facet_error err;
+    assert_int_equal(pc_canvas_init(&c, 4, 2, &err), FACET_OK);
     /* a horizontal line along the top dot row of both cell rows' first */
     pc_canvas_line(&c, 0, 0, 7, 0, 1);
     for (int x = 0; x < 4; x++) {
@@ -215,7 +235,8 @@ static void test_canvas(void **state)
     pc_canvas_line(&c, 2, 7, 5, 1, 5);
     assert_int_equal(c.slope[5], '/');
     pc_canvas_free(&c);
-    assert_int_equal(pc_canvas_init(&c, 0, 3), -1);
+    assert_int_equal(pc_canvas_init(&c, 0, 3, &err), FACET_EINPUT);
+    pc_canvas_free(&c);
     char glyph[4];
     pc_braille(0, glyph);
     assert_string_equal(glyph, "\u2800");
