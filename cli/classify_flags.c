@@ -54,9 +54,7 @@ int classify_flags_apply(const struct classify_flags *f,
                          struct mesh_options *mesh, enum param_method *uv,
                          struct facet_error *err)
 {
-    memset(params, 0, sizeof *params);
-    classify_defaults(&params->classify);
-    params->mode = PANEL_EXTREMES;
+    option_params_defaults(params);
     *mesh = (struct mesh_options){UNITS_M, f->object, f->group};
     double number;
     int rc;

@@ -152,7 +152,7 @@ static int classify_run(int argc, char **argv, struct facet_error *err)
         if ((rc = args_double(threshold, 0, 1e6, "--threshold", &number,
                               err)))
             return rc;
-        params.classify.threshold = number / 1000;
+        params = option_params_at(&params, params.nu, params.nv, number);
     }
     int flip = flags.flip_normals;
 

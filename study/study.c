@@ -112,10 +112,10 @@ int study_settings(const struct run_info *run,
                                      run->v_max, run->threshold_min_mm,
                                      run->threshold_max_mm,
                                      run->threshold_step_mm};
-    classify_defaults(&s->base.classify);
+    option_params_defaults(&s->base);
     s->base.mode = strcmp(run->per_panel, "mean") == 0 ? PANEL_MEAN
                                                        : PANEL_EXTREMES;
-    s->base.classify.threshold = run->threshold_min_mm / 1000;
+    s->base = option_params_at(&s->base, 0, 0, run->threshold_min_mm);
     s->base.classify.curvature_tol = run->curvature_tol;
     memcpy(s->base.classify.price, run->price, sizeof run->price);
     s->base.classify.sp_as_fp = run->sp_as_fp;
@@ -349,10 +349,8 @@ static int evaluate_option(const struct run_info *run,
     int rc = study_settings(run, &settings, &mesh, &flip, err);
     if (rc != FACET_OK)
         return rc;
-    struct option_params params = settings.base;
-    params.nu = option->nu;
-    params.nv = option->nv;
-    params.classify.threshold = option->threshold_mm / 1000;
+    struct option_params params = option_params_at(
+        &settings.base, option->nu, option->nv, option->threshold_mm);
     return option_evaluate(surface, &params, panels, totals, err);
 }
 

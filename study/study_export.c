@@ -54,8 +54,8 @@ int study_option_load(struct store *store, int64_t run, int64_t number,
         rc = study_settings(&p->run, &settings, &mesh, &flip, err);
     if (rc != FACET_OK)
         return rc;
-    p->classify = settings.base.classify;
-    p->classify.threshold = p->row.threshold_mm / 1000;
+    p->classify = option_params_at(&settings.base, p->row.nu, p->row.nv,
+                                   p->row.threshold_mm).classify;
     if (geometry) {
         rc = study_open_surface(store, &p->run, &p->surface, err);
         p->have_surface = 1;

@@ -191,10 +191,9 @@ static void evaluation_thread(void *argument)
         struct panelization panels;
         for (size_t x = plan->group[g]; x < plan->group[g + 1]; x++) {
             size_t k = plan->order[x];
-            struct option_params params = *plan->base;
-            params.nu = plan->points[k].nu;
-            params.nv = plan->points[k].nv;
-            params.classify.threshold = plan->points[k].threshold_mm / 1000;
+            struct option_params params = option_params_at(
+                plan->base, plan->points[k].nu, plan->points[k].nv,
+                plan->points[k].threshold_mm);
             if (x == plan->group[g]) {
                 job->rc = option_evaluate_lattice(plan->surface,
                                                   plan->lattice, &params,
