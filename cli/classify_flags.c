@@ -22,9 +22,10 @@ const char classify_flags_usage[] =
     "                      quad grid's own i, j), plane, harmonic; default\n"
     "                      the first of these that applies\n";
 
-void classify_flags_table(struct classify_flags *f, struct arg_option *table)
+void classify_flags_init(struct classify_flags *f)
 {
-    const struct arg_option entries[CLASSIFY_FLAG_COUNT] = {
+    memset(f, 0, sizeof *f);
+    const struct arg_option entries[] = {
         {"units", 0, ARG_STRING, &f->units, NULL},
         {"curvature-tol", 0, ARG_STRING, &f->curvature_tol, NULL},
         {"per-panel", 0, ARG_STRING, &f->per_panel, NULL},
@@ -35,8 +36,11 @@ void classify_flags_table(struct classify_flags *f, struct arg_option *table)
         {"object", 0, ARG_STRING, &f->object, NULL},
         {"group", 0, ARG_STRING, &f->group, NULL},
         {"uv", 0, ARG_STRING, &f->uv, NULL},
+        {NULL, 0, ARG_FLAG, NULL, NULL},
     };
-    memcpy(table, entries, sizeof entries);
+    _Static_assert(sizeof entries == sizeof f->table,
+                   "the table holds every flag and its end");
+    memcpy(f->table, entries, sizeof entries);
 }
 
 int classify_flags_uv(const char *text, enum param_method *uv,

@@ -13,20 +13,18 @@
 #include "core/classify/option.h"
 #include "core/surface/param.h"
 
-/* The flags' values as given (pointing into argv), NULL when absent. */
+/* The flags' values as given (pointing into argv), NULL when absent, and
+ * the table that parses them (args_parse_shared), pointing at them. */
 struct classify_flags {
     const char *units, *curvature_tol, *per_panel, *prices, *max_area;
     const char *object, *group, *uv;
     int flip_normals, sp_as_fp;
+    struct arg_option table[11];  /* the ten flags, then the end */
 };
 
-/* Entries classify_flags_table writes. */
-#define CLASSIFY_FLAG_COUNT 10
-
-/* Writes the CLASSIFY_FLAG_COUNT arg_option entries of the flags into
- * table, pointing at *flags (which must outlive the parse). */
-void classify_flags_table(struct classify_flags *flags,
-                          struct arg_option *table);
+/* Clears flags and fills flags->table, pointing at flags itself (which
+ * must not move before the parse). */
+void classify_flags_init(struct classify_flags *flags);
 
 /* Sets params (all but grid and threshold, which it leaves at the
  * defaults' values), mesh and the UV method asked for (PARAM_AUTO when

@@ -119,19 +119,18 @@ static int classify_run(int argc, char **argv, struct facet_error *err)
     const char *grid = NULL, *threshold = NULL, *csv = NULL;
     int json = 0;
     struct classify_flags flags;
-    memset(&flags, 0, sizeof flags);
-    struct arg_option options[CLASSIFY_FLAG_COUNT + 5] = {
+    classify_flags_init(&flags);
+    const struct arg_option options[] = {
         {"grid", 0, ARG_STRING, &grid, NULL},
         {"threshold", 0, ARG_STRING, &threshold, NULL},
         {"json", 0, ARG_FLAG, NULL, &json},
         {"csv", 0, ARG_STRING, &csv, NULL},
+        {NULL, 0, ARG_FLAG, NULL, NULL},
     };
-    classify_flags_table(&flags, options + 4);
-    options[CLASSIFY_FLAG_COUNT + 4] = (struct arg_option){NULL, 0, ARG_FLAG,
-                                                           NULL, NULL};
     const char *path[1];
     int count;
-    int rc = args_parse(argc, argv, options, path, 1, &count, err);
+    int rc = args_parse_shared(argc, argv, options, flags.table, path, 1,
+                               &count, err);
     if (rc != FACET_OK)
         return rc;
     if (count != 1)

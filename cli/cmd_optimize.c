@@ -156,8 +156,8 @@ static int optimize_main(int argc, char **argv, struct facet_error *err)
     const char *surface = NULL, *store_panels = NULL;
     int wide = 0;
     memset(&search, 0, sizeof search);
-    memset(&flags, 0, sizeof flags);
-    struct arg_option options[CLASSIFY_FLAG_COUNT + 18] = {
+    classify_flags_init(&flags);
+    const struct arg_option options[] = {
         {"db", 0, ARG_STRING, &db, NULL},
         {"u", 0, ARG_STRING, &search.u, NULL},
         {"v", 0, ARG_STRING, &search.v, NULL},
@@ -175,13 +175,12 @@ static int optimize_main(int argc, char **argv, struct facet_error *err)
         {"surface", 0, ARG_STRING, &surface, NULL},
         {"wide", 0, ARG_FLAG, NULL, &wide},
         {"store-panels", 0, ARG_STRING, &store_panels, NULL},
+        {NULL, 0, ARG_FLAG, NULL, NULL},
     };
-    classify_flags_table(&flags, options + 17);
-    options[CLASSIFY_FLAG_COUNT + 17] =
-        (struct arg_option){NULL, 0, ARG_FLAG, NULL, NULL};
     const char *path[1];
     int count;
-    int rc = args_parse(argc, argv, options, path, 1, &count, err);
+    int rc = args_parse_shared(argc, argv, options, flags.table, path, 1,
+                               &count, err);
     if (rc != FACET_OK)
         return rc;
     if (db == NULL)
