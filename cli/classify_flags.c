@@ -62,7 +62,8 @@ int classify_flags_apply(const struct classify_flags *f,
     *mesh = (struct mesh_options){UNITS_M, f->object, f->group};
     double number;
     int rc;
-    if (f->units && (rc = mesh_units_parse(f->units, &mesh->units, err)))
+    if (f->units &&
+        (rc = mesh_units_parse(f->units, "--units", &mesh->units, err)))
         return rc;
     if ((rc = classify_flags_uv(f->uv, uv, err)))
         return rc;
@@ -72,15 +73,11 @@ int classify_flags_apply(const struct classify_flags *f,
             return rc;
         params->classify.curvature_tol = number;
     }
-    if (f->per_panel) {
-        if (strcmp(f->per_panel, "mean") == 0)
-            params->mode = PANEL_MEAN;
-        else if (strcmp(f->per_panel, "extremes") != 0)
-            return facet_error_set(err, FACET_EINPUT,
-                "--per-panel: '%s' is not extremes or mean", f->per_panel);
-    }
+    if (f->per_panel && (rc = panel_mode_parse(f->per_panel, "--per-panel",
+                                               &params->mode, err)))
+        return rc;
     if (f->prices &&
-        (rc = classify_prices_parse(f->prices, params->classify.price,
+        (rc = classify_prices_parse(f->prices, "--prices", params->classify.price,
                                     err)))
         return rc;
     params->classify.sp_as_fp = f->sp_as_fp;

@@ -190,7 +190,7 @@ static int classify_run(int argc, char **argv, struct facet_error *err)
                 surface.path, mesh_units_name(surface.units),
                 surface.mesh.area, surface.mesh.ntriangles,
                 param_method_name(surface.param.method),
-                params.mode == PANEL_MEAN ? "mean" : "extremes",
+                panel_mode_name(params.mode),
             };
             report_json(stdout, &source, &params.classify, &panels, &totals);
         } else {

@@ -144,7 +144,8 @@ static int curvature_run(int argc, char **argv, struct facet_error *err)
             "curvature: give --csv FILE or --json, not both");
     struct mesh_options mesh_options = {UNITS_M, object, group};
     if (units_text != NULL &&
-        (rc = mesh_units_parse(units_text, &mesh_options.units, err)) != 0)
+        (rc = mesh_units_parse(units_text, "--units", &mesh_options.units,
+                              err)) != 0)
         return rc;
     /* Refuse an existing CSV before the work, not after it. */
     if (csv != NULL && (rc = outfile_check(csv, force, err)) != FACET_OK)

@@ -180,7 +180,8 @@ static int info_run(int argc, char **argv, struct facet_error *err)
                                "info: name one OBJ file (facet info FILE.obj)");
     struct mesh_options mesh_options = {UNITS_M, object, group};
     if (units_text != NULL &&
-        (rc = mesh_units_parse(units_text, &mesh_options.units, err)) != 0)
+        (rc = mesh_units_parse(units_text, "--units", &mesh_options.units,
+                              err)) != 0)
         return rc;
     enum param_method want;
     if ((rc = classify_flags_uv(uv_text, &want, err)) != FACET_OK)

@@ -19,7 +19,6 @@
 #include "progress.h"
 #include "run_table.h"
 #include "signals.h"
-#include "core/base/parallel.h"
 #include "core/obj/infile.h"
 #include "study/study.h"
 
@@ -73,18 +72,23 @@ static void show_warning(void *context, const char *text)
     fprintf(stderr, "facet: warning: %s\n", text);
 }
 
-/* Fills the design space, method and objectives of *s from the flags. */
+/* The search flags as given (pointing into argv), NULL when absent. */
 struct search_flags {
     const char *u, *v, *threshold, *method, *evals, *pop, *gens, *seed;
     const char *objectives, *jobs;
 };
 
+/* The flags' names in the messages of the design space's checks. */
+static const struct design_space_names flag_names = {"--u", "--v",
+                                                      "--threshold"};
+
+/* Sets the design space, method and the rest of *s that the flags give
+ * over the defaults already in *s (study_request_defaults). */
 static int parse_search(const struct search_flags *f,
                         struct optimize_settings *s, struct facet_error *err)
 {
     int rc;
     long number;
-    s->space = (struct design_space){20, 40, 35, 50, 3, 3, 0};
     if (f->u && (rc = design_space_parse_sides(f->u, "--u", &s->space.u_min,
                                       &s->space.u_max, err)))
         return rc;
@@ -92,26 +96,20 @@ static int parse_search(const struct search_flags *f,
                                       &s->space.v_max, err)))
         return rc;
     if (f->threshold &&
-        (rc = design_space_parse_threshold(f->threshold, &s->space, err)))
+        (rc = design_space_parse_threshold(f->threshold, "--threshold",
+                                           &s->space, err)))
         return rc;
-    if ((rc = design_space_check(&s->space, err)))
+    if ((rc = design_space_check(&s->space, &flag_names, err)))
         return rc;
-    int continuous = s->space.t_max_mm > s->space.t_min_mm &&
-                     s->space.t_step_mm == 0;
     if (f->method) {
-        if ((rc = optimize_method_parse(f->method, &s->method, err)))
+        if ((rc = optimize_method_parse(f->method, "--method", &s->method,
+                                        err)))
             return rc;
     } else {
         s->method = study_auto_method(&s->space);
     }
-    if (s->method == METHOD_EXHAUSTIVE && continuous)
-        return facet_error_set(err, FACET_EINPUT,
-            "--threshold %g:%g: the exhaustive method needs a step "
-            "(e.g. --threshold %g:%g:0.5)", s->space.t_min_mm,
-            s->space.t_max_mm, s->space.t_min_mm, s->space.t_max_mm);
-    s->evaluations = 1000;
-    s->population = 100;
-    s->generations = 50;
+    if ((rc = optimize_method_check(s->method, &s->space, &flag_names, err)))
+        return rc;
     if (f->evals) {
         if ((rc = args_int(f->evals, 1, 100000000, "--evals", &number, err)))
             return rc;
@@ -127,7 +125,6 @@ static int parse_search(const struct search_flags *f,
             return rc;
         s->generations = (int)number;
     }
-    s->seed = 1;
     if (f->seed) {
         /* SQLite keeps a seed as a signed 64-bit integer: up to 2^63 - 1,
          * refused beyond rather than wrapped. */
@@ -135,11 +132,10 @@ static int parse_search(const struct search_flags *f,
             return rc;
         s->seed = (uint64_t)number;
     }
-    if ((rc = objectives_parse(f->objectives ? f->objectives
-                                             : "cost,planarity,dp_area",
-                               s->objectives, &s->nobjectives, err)))
+    if (f->objectives &&
+        (rc = objectives_parse(f->objectives, "--objectives", s->objectives,
+                               &s->nobjectives, err)))
         return rc;
-    s->jobs = parallel_cpus(PARALLEL_MAX);
     if (f->jobs) {
         if ((rc = args_int(f->jobs, 1, 64, "--jobs", &number, err)))
             return rc;
@@ -208,17 +204,20 @@ static int optimize_main(int argc, char **argv, struct facet_error *err)
     }
 
     struct study_request request;
-    memset(&request, 0, sizeof request);
+    study_request_defaults(&request);
     if (!resume) {
         if ((rc = classify_flags_apply(&flags, &request.settings.base,
                                        &request.mesh, &request.uv, err)))
             return rc;
         if ((rc = parse_search(&search, &request.settings, err)))
             return rc;
+        if (store_panels &&
+            (rc = study_keep_panels_parse(store_panels, "--store-panels",
+                                          &request.store_panels, err)))
+            return rc;
         request.surface_path = path[0];
         request.flip_normals = flags.flip_normals;
         request.name = name ? name : "";
-        request.store_panels = store_panels;
     }
 
     /* A surface that cannot be read is refused before the database is

@@ -314,7 +314,7 @@ static int reap_orphans(struct store *store, struct facet_error *err)
         struct run_info run;
         rc = store_run_get(store, orphan[k], &run, err);
         if (rc == FACET_OK)
-            rc = store_run_set_status(store, orphan[k], "interrupted",
+            rc = store_run_set_status(store, orphan[k], RUN_INTERRUPTED,
                                       run.elapsed, err);
     }
     return rc;

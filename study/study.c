@@ -95,26 +95,72 @@ static int stop_requested(void *context)
            state->hooks->should_stop(state->hooks->context);
 }
 
+static const char *const keep_names[] = {
+    [KEEP_FRONT] = "front", [KEEP_KNEE] = "knee", [KEEP_NONE] = "none"};
+
+const char *study_keep_panels_name(enum study_keep_panels keep)
+{
+    return keep_names[keep];
+}
+
+int study_keep_panels_parse(const char *text, const char *what,
+                            enum study_keep_panels *out,
+                            struct facet_error *err)
+{
+    for (int k = 0; k < (int)(sizeof keep_names / sizeof *keep_names); k++)
+        if (strcmp(text, keep_names[k]) == 0) {
+            *out = (enum study_keep_panels)k;
+            return FACET_OK;
+        }
+    return facet_error_set(err, FACET_EINPUT,
+                           "%s: '%s' is not front, knee or none", what, text);
+}
+
+void study_request_defaults(struct study_request *r)
+{
+    memset(r, 0, sizeof *r);
+    r->name = "";
+    r->mesh = (struct mesh_options){UNITS_M, NULL, NULL};
+    r->uv = PARAM_AUTO;
+    r->store_panels = KEEP_FRONT;
+    struct optimize_settings *s = &r->settings;
+    s->space = (struct design_space){20, 40, 35, 50, 3, 3, 0};
+    s->method = study_auto_method(&s->space);
+    option_params_defaults(&s->base);
+    s->objectives[0] = (struct objective){METRIC_COST, 0};
+    s->objectives[1] = (struct objective){METRIC_PLANARITY, 0};
+    s->objectives[2] = (struct objective){METRIC_DP_AREA, 0};
+    s->nobjectives = 3;
+    s->seed = 1;
+    s->evaluations = 1000;
+    s->population = 100;
+    s->generations = 50;
+    s->jobs = parallel_cpus(PARALLEL_MAX);
+}
+
 int study_settings(const struct run_info *run,
                    struct optimize_settings *s, struct mesh_options *mesh,
                    int *flip_normals, struct facet_error *err)
 {
     memset(s, 0, sizeof *s);
-    int rc = optimize_method_parse(run->method, &s->method, err);
+    option_params_defaults(&s->base);
+    int rc = optimize_method_parse(run->method, "the run's method",
+                                   &s->method, err);
     if (rc == FACET_OK)
-        rc = objectives_parse(run->objectives, s->objectives,
-                              &s->nobjectives, err);
+        rc = objectives_parse(run->objectives, "the run's objectives",
+                              s->objectives, &s->nobjectives, err);
     if (rc == FACET_OK)
-        rc = mesh_units_parse(run->units, &mesh->units, err);
+        rc = mesh_units_parse(run->units, "the run's units", &mesh->units,
+                              err);
+    if (rc == FACET_OK)
+        rc = panel_mode_parse(run->per_panel, "the run's per-panel mode",
+                              &s->base.mode, err);
     if (rc != FACET_OK)
         return rc;
     s->space = (struct design_space){run->u_min, run->u_max, run->v_min,
                                      run->v_max, run->threshold_min_mm,
                                      run->threshold_max_mm,
                                      run->threshold_step_mm};
-    option_params_defaults(&s->base);
-    s->base.mode = strcmp(run->per_panel, "mean") == 0 ? PANEL_MEAN
-                                                       : PANEL_EXTREMES;
     s->base = option_params_at(&s->base, 0, 0, run->threshold_min_mm);
     s->base.classify.curvature_tol = run->curvature_tol;
     memcpy(s->base.classify.price, run->price, sizeof run->price);
@@ -128,7 +174,7 @@ int study_settings(const struct run_info *run,
     mesh->object = run->object[0] ? run->object : NULL;
     mesh->group = run->group[0] ? run->group : NULL;
     *flip_normals = run->flip_normals;
-    return design_space_check(&s->space, err);
+    return design_space_check(&s->space, NULL, err);
 }
 
 /* Reading a surface: its SHA-256 and the surface itself at once, the
@@ -459,10 +505,14 @@ static int store_front_panels(struct store *store, const struct run_info *run,
     struct option_query q = {run->id, 1, NULL, NULL, 0, 0, 0};
     struct option_row *rows;
     size_t n, nfront = 0;
-    if (strcmp(run->store_panels, "none") == 0)
-        return FACET_OK;
-    int knee_only = strcmp(run->store_panels, "knee") == 0;
-    int rc = store_options_query_rows(store, &q, &rows, &n, err);
+    enum study_keep_panels keep = KEEP_FRONT;
+    int rc = study_keep_panels_parse(run->store_panels,
+                                     "the run's panels to store", &keep,
+                                     err);
+    if (rc != FACET_OK || keep == KEEP_NONE)
+        return rc;
+    int knee_only = keep == KEEP_KNEE;
+    rc = store_options_query_rows(store, &q, &rows, &n, err);
     struct design_point *points = malloc((n ? n : 1) * sizeof *points);
     int64_t *numbers = malloc((n ? n : 1) * sizeof *numbers);
     if (rc == FACET_OK && (points == NULL || numbers == NULL))
@@ -611,9 +661,9 @@ static int study_go(struct store *store, struct run_info *run,
             *outcome = OPTIMIZE_INTERRUPTED;
     }
     panel_lattice_free(lattice);
-    const char *status = rc != FACET_OK ? "failed"
-                         : *outcome == OPTIMIZE_DONE ? "done"
-                                                     : "interrupted";
+    enum run_status status = rc != FACET_OK ? RUN_FAILED
+                             : *outcome == OPTIMIZE_DONE ? RUN_DONE
+                                                         : RUN_INTERRUPTED;
     /* The status is written even after a failure, with its own error
      * kept apart so the first error is the one reported. */
     int status_rc = store_run_set_status(store, run->id, status,
@@ -683,12 +733,7 @@ int study_request_check(const struct study_request *request,
         return facet_error_set(err, FACET_EINPUT,
             "the run's name is not clean UTF-8 text (control characters or "
             "invalid bytes)");
-    const char *keep = request->store_panels;
-    if (keep != NULL && strcmp(keep, "front") != 0 &&
-        strcmp(keep, "knee") != 0 && strcmp(keep, "none") != 0)
-        return facet_error_set(err, FACET_EINPUT,
-            "panels to store: '%s' is not front, knee or none", keep);
-    return design_space_check(&request->settings.space, err);
+    return design_space_check(&request->settings.space, NULL, err);
 }
 
 int study_start(struct store *store, const struct study_request *request,
@@ -698,7 +743,7 @@ int study_start(struct store *store, const struct study_request *request,
     *run_id = 0;
     *outcome = OPTIMIZE_INTERRUPTED;
     const struct optimize_settings *s = &request->settings;
-    int rc = design_space_check(&s->space, err);
+    int rc = design_space_check(&s->space, NULL, err);
     if (rc == FACET_OK)
         rc = store_check(store, err);
     if (rc == FACET_OK)
@@ -712,7 +757,7 @@ int study_start(struct store *store, const struct study_request *request,
         return rc;
     snprintf(run.name, sizeof run.name, "%s", request->name);
     snprintf(run.store_panels, sizeof run.store_panels, "%s",
-             request->store_panels ? request->store_panels : "front");
+             study_keep_panels_name(request->store_panels));
     /* Recorded absolute, so the run's surface is found from any folder;
      * a path realpath cannot resolve fails below, when it is read. */
     char absolute[4096];
@@ -761,7 +806,7 @@ int study_start(struct store *store, const struct study_request *request,
     run.max_panel_area = s->base.classify.max_panel_area;
     run.curvature_tol = s->base.classify.curvature_tol;
     snprintf(run.per_panel, sizeof run.per_panel, "%s",
-             s->base.mode == PANEL_MEAN ? "mean" : "extremes");
+             panel_mode_name(s->base.mode));
     run.flip_normals = request->flip_normals;
     snprintf(run.object, sizeof run.object, "%s",
              request->mesh.object ? request->mesh.object : "");
@@ -819,7 +864,7 @@ int study_resume(struct store *store, int64_t run_id,
     if (rc != FACET_OK) {
         /* Given back as it was found, resumable once the surface is. */
         struct facet_error ignored;
-        store_run_set_status(store, run_id, "interrupted", run.elapsed,
+        store_run_set_status(store, run_id, RUN_INTERRUPTED, run.elapsed,
                              &ignored);
     }
     if (rc == FACET_OK) {

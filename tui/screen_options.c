@@ -293,7 +293,7 @@ static void draw_title(struct options_screen *s, int width)
         {" ", s->run.name, 4},
         {" ", surface, 3},
         {" | ", s->run.method, 2},
-        {" | ", s->run.status, 0},
+        {" | ", run_status_name(s->run.status), 0},
         {" | ", count, 0},
         {", ", pareto, 1},
         {", ", knee, 0},
@@ -803,7 +803,7 @@ static int options_tick(struct tui_screen *base, struct tui_app *app)
 {
     struct options_screen *s = (struct options_screen *)base;
     struct facet_error err;
-    int live = strcmp(s->run.status, "running") == 0;
+    int live = s->run.status == RUN_RUNNING;
     int finished = s->runs_finished != app->runs_finished;
     /* this workbench's own run: at the gauge's sample; another
      * process's: every second */

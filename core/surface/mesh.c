@@ -39,8 +39,8 @@ const char *mesh_units_name(enum mesh_units u)
     }
 }
 
-int mesh_units_parse(const char *text, enum mesh_units *out,
-                     struct facet_error *err)
+int mesh_units_parse(const char *text, const char *what,
+                     enum mesh_units *out, struct facet_error *err)
 {
     static const enum mesh_units all[] = {UNITS_M, UNITS_CM, UNITS_MM,
                                           UNITS_IN, UNITS_FT};
@@ -50,7 +50,7 @@ int mesh_units_parse(const char *text, enum mesh_units *out,
             return FACET_OK;
         }
     return facet_error_set(err, FACET_EINPUT,
-        "--units: units '%s' unknown (choose m, cm, mm, in or ft)", text);
+        "%s: units '%s' unknown (choose m, cm, mm, in or ft)", what, text);
 }
 
 void mesh_free(struct mesh *mesh)

@@ -204,9 +204,9 @@ static void test_units_and_warning(void **state)
     assert_true(mesh_units_scale(UNITS_FT) == 0.3048);
     enum mesh_units units;
     struct facet_error err;
-    assert_int_equal(mesh_units_parse("ft", &units, &err), FACET_OK);
+    assert_int_equal(mesh_units_parse("ft", "units", &units, &err), FACET_OK);
     assert_int_equal(units, UNITS_FT);
-    assert_int_equal(mesh_units_parse("yd", &units, &err), FACET_EINPUT);
+    assert_int_equal(mesh_units_parse("yd", "units", &units, &err), FACET_EINPUT);
 }
 
 static void test_selection(void **state)
