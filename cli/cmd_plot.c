@@ -54,8 +54,9 @@ static int plot_main(int argc, char **argv, struct facet_error *err)
             return rc;
         ids[nruns++] = id;
     }
+    static const char *const flags[3] = {"--x", "--y", "--size"};
     struct plot_request request = {ids, nruns, x, y, size, title, force,
-                                   NULL, 0};
+                                   NULL, 0, flags};
     struct store *store;
     if ((rc = store_open_read(path[0], &store, err)) != FACET_OK)
         return rc;

@@ -207,8 +207,8 @@ static int read_surface(const char *path, const struct mesh_options *mesh,
                         struct facet_error *err)
 {
     struct read_job job[2] = {
-        {path, NULL, digest, NULL, FACET_OK, {0, ""}},
-        {path, mesh, NULL, surface, FACET_OK, {0, ""}},
+        {path, NULL, digest, NULL, FACET_OK, {0, FACET_SETTING_NONE, ""}},
+        {path, mesh, NULL, surface, FACET_OK, {0, FACET_SETTING_NONE, ""}},
     };
     parallel_run(job, sizeof *job, 2, read_run);
     for (int k = 0; k < 2; k++)
@@ -287,10 +287,10 @@ int study_open_surface(const struct store *store, const struct run_info *run,
         if (strcmp(digest, run->surface_sha256) == 0)
             return surface_prepare(surface, flip, uv, err);
         if (!changed)
-            facet_error_set(&first, FACET_EINPUT,
+            facet_error_about(&first, FACET_SETTING_SURFACE, FACET_EINPUT,
                 "%s: the file has changed since run %lld was made from it "
-                "(SHA-256 %.12s..., was %.12s...); give the original with "
-                "--surface FILE", place[k], (long long)run->id, digest,
+                "(SHA-256 %.12s..., was %.12s...); give the original's "
+                "place", place[k], (long long)run->id, digest,
                 run->surface_sha256);
         changed = 1;
         surface_close(surface);
@@ -300,11 +300,10 @@ int study_open_surface(const struct store *store, const struct run_info *run,
         *err = first;
         return FACET_EINPUT;
     }
-    return facet_error_set(err, FACET_EINPUT,
-        "%s: no such file (run %lld's surface, nor beside the database); if "
-        "it has moved, give its new place with --surface FILE (SHA-256 "
-        "%.12s...)", run->surface_path, (long long)run->id,
-        run->surface_sha256);
+    return facet_error_about(err, FACET_SETTING_SURFACE, FACET_EINPUT,
+        "%s: no such file (run %lld's surface, SHA-256 %.12s..., nor "
+        "beside the database); if it has moved, give its new place",
+        run->surface_path, (long long)run->id, run->surface_sha256);
 }
 
 int study_repoint_surface(struct store *store, int64_t run_id,
@@ -319,19 +318,19 @@ int study_repoint_surface(struct store *store, int64_t run_id,
         return rc;
     if (strcmp(digest, run.surface_sha256) != 0)
         return facet_error_set(err, FACET_EINPUT,
-            "--surface %s: not run %lld's surface (SHA-256 %.12s..., the "
+            "%s: not run %lld's surface (SHA-256 %.12s..., the "
             "run's is %.12s...)", path, (long long)run_id, digest,
             run.surface_sha256);
     char absolute[4096];
     if (realpath(path, absolute) == NULL)
-        return facet_error_set(err, FACET_EINPUT, "--surface %s: %s", path,
+        return facet_error_set(err, FACET_EINPUT, "%s: %s", path,
                                strerror(errno));
     if (strlen(absolute) >= sizeof run.surface_path)
         return facet_error_set(err, FACET_EINPUT,
-                               "--surface %.200s...: path too long", path);
+                               "%.200s...: path too long", path);
     if (store_read_only(store))
         return facet_error_set(err, FACET_EINPUT,
-            "--surface: %s is read-only here, so run %lld cannot be "
+            "%s is read-only here, so run %lld cannot be "
             "re-pointed; copy the database where it can be written",
             store_path(store), (long long)run_id);
     return store_run_set_surface(store, run_id, absolute, err);

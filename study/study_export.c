@@ -268,9 +268,11 @@ int study_plot(struct store *store, const struct plot_request *r,
     if (r->nruns < 1 || r->nruns > PLOT_MAX_RUNS)
         return facet_error_set(err, FACET_EINPUT,
             "plot: 1 to %d runs in one plot", PLOT_MAX_RUNS);
-    if ((rc = check_column("--x", r->x, err)) ||
-        (rc = check_column("--y", r->y, err)) ||
-        (r->size && (rc = check_column("--size", r->size, err))) ||
+    static const char *const plain[3] = {"x", "y", "size"};
+    const char *const *name = r->axis_names ? r->axis_names : plain;
+    if ((rc = check_column(name[0], r->x, err)) ||
+        (rc = check_column(name[1], r->y, err)) ||
+        (r->size && (rc = check_column(name[2], r->size, err))) ||
         (rc = outfile_check(path, r->force, err)))
         return rc;
     struct run_points points[PLOT_MAX_RUNS];

@@ -387,12 +387,13 @@ static void report(struct tui_app *app, int rc, const struct facet_error *e)
 {
     if (rc == FACET_OK)
         return;
-    /* filter_compile speaks of --where; here it is the filter line */
-    const char *m = e->message;
-    if (strncmp(m, "--where: ", 9) == 0)
-        tui_error(app, "filter: %s", m + 9);
+    /* an error of the filter line or the sort says which it is */
+    if (e->setting == FACET_SETTING_FILTER)
+        tui_error(app, "filter: %s", e->message);
+    else if (e->setting == FACET_SETTING_SORT)
+        tui_error(app, "sort: %s", e->message);
     else
-        tui_error(app, "%s", m);
+        tui_error(app, "%s", e->message);
 }
 
 static void apply_sort(struct options_screen *s, struct tui_app *app)

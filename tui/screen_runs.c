@@ -98,8 +98,8 @@ static void runs_draw(struct tui_screen *base, struct tui_app *app,
     s->rows = rows;
     if (s->n == 0) {
         tui_put(3, 2, width - 2, A_NORMAL,
-                "No runs yet. Press a (or F7) for a new run, or run "
-                "facet optimize SURFACE.obj --db FILE.");
+                "No runs yet. Press a (or F7) for a new run, or start "
+                "one with facet optimize from the shell.");
         return;
     }
     s->top = (size_t)table_model_scroll((int64_t)s->top,

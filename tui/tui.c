@@ -464,10 +464,9 @@ static int poll_job(struct tui_app *app)
         tui_error(app, "run %lld failed: %s", (long long)st.run,
                   st.err.message);
     else if (st.outcome == OPTIMIZE_INTERRUPTED)
-        tui_status(app, "run %lld stopped with %lld options stored; "
-                   "facet optimize --db %s --resume %lld goes on",
-                   (long long)st.run, (long long)st.done, app->db_path,
-                   (long long)st.run);
+        tui_status(app, "run %lld stopped with %lld options stored; R on "
+                   "the Runs screen goes on with it", (long long)st.run,
+                   (long long)st.done);
     else if (st.warning[0] != '\0')
         tui_status(app, "run %lld done: %lld options; warning: %s",
                    (long long)st.run, (long long)st.total, st.warning);

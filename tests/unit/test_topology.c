@@ -193,7 +193,7 @@ static void test_units_and_warning(void **state)
           NULL, &m);
     assert_int_equal(mesh_units_warning(&m, UNITS_M, warning,
                                         sizeof warning), 1);
-    assert_non_null(strstr(warning, "--units mm"));
+    assert_non_null(strstr(warning, "set its units to mm"));
     mesh_free(&m);
     build("v 0 0 0\nv 0.02 0 0\nv 0 0.03 0\nf 1 2 3\n", UNITS_M, NULL, NULL,
           &m);
