@@ -101,13 +101,9 @@ static int parse_search(const struct search_flags *f,
         return rc;
     if ((rc = design_space_check(&s->space, &flag_names, err)))
         return rc;
-    if (f->method) {
-        if ((rc = optimize_method_parse(f->method, "--method", &s->method,
-                                        err)))
-            return rc;
-    } else {
-        s->method = study_auto_method(&s->space);
-    }
+    if ((rc = study_method_parse(f->method ? f->method : "auto",
+                                 "--method", &s->space, &s->method, err)))
+        return rc;
     if ((rc = optimize_method_check(s->method, &s->space, &flag_names, err)))
         return rc;
     if (f->evals) {
@@ -268,7 +264,7 @@ const struct command cmd_optimize = {
     .name = "optimize",
     .usage = "SURFACE.obj --db FILE [--u A:B] [--v A:B] "
              "[--threshold MM|A:B[:STEP]]\n"
-             "       [--method exhaustive|random|nsga2] [--evals N] "
+             "       [--method auto|exhaustive|random|nsga2] [--evals N] "
              "[--pop N] [--gens N]\n"
              "       [--seed S] [--objectives LIST] [--jobs N] [--name TEXT]"
              " [--table N]\n"
@@ -282,8 +278,9 @@ const struct command cmd_optimize = {
         "  --v A:B             panels along v (default 35:50, the paper's)\n"
         "  --threshold T       flatness threshold in mm: one value (default\n"
         "                      3), a range A:B, or A:B:STEP for exhaustive\n"
-        "  --method M          exhaustive (default up to 100,000 points),\n"
-        "                      random, or nsga2 (default above)\n"
+        "  --method M          auto (default: exhaustive up to 100,000\n"
+        "                      points, nsga2 above), exhaustive, random\n"
+        "                      or nsga2\n"
         "  --evals N           random: points to draw (default 1000)\n"
         "  --pop N, --gens N   nsga2: population (100), generations (50)\n"
         "  --seed S            the same seed gives the same options (1)\n"

@@ -718,6 +718,21 @@ enum optimize_method study_auto_method(const struct design_space *space)
                ? METHOD_EXHAUSTIVE : METHOD_NSGA2;
 }
 
+int study_method_parse(const char *text, const char *what,
+                       const struct design_space *space,
+                       enum optimize_method *out, struct facet_error *err)
+{
+    if (strcmp(text, "auto") == 0) {
+        *out = study_auto_method(space);
+        return FACET_OK;
+    }
+    if (optimize_method_parse(text, what, out, NULL) == FACET_OK)
+        return FACET_OK;
+    return facet_error_set(err, FACET_EINPUT,
+        "%s: '%s' unknown (choose auto, exhaustive, random or nsga2)", what,
+        text);
+}
+
 int study_request_check(const struct study_request *request,
                         struct facet_error *err)
 {

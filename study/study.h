@@ -92,6 +92,13 @@ void study_request_defaults(struct study_request *request);
  * NSGA-II otherwise. The CLI and the TUI's New run both ask this. */
 enum optimize_method study_auto_method(const struct design_space *space);
 
+/* The method text names for space: "auto" is study_auto_method's, any
+ * other name optimize_method_parse's (FACET_EINPUT naming the field what,
+ * the caller's name for it). */
+int study_method_parse(const char *text, const char *what,
+                       const struct design_space *space,
+                       enum optimize_method *out, struct facet_error *err);
+
 /* Checks what request asks for before anything is opened or created: a
  * name that is clean UTF-8 text of at most 127 bytes, a sound design
  * space. FACET_EINPUT naming what is wrong. study_start checks it too. */

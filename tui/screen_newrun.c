@@ -189,10 +189,9 @@ static int build(struct newrun_screen *s, struct study_request *r,
     if (rc != FACET_OK)
         return rc;
     const char *method = s->field[F_METHOD].text;
-    if (strcmp(method, "auto") == 0 || method[0] == '\0')
-        o->method = study_auto_method(&o->space);
-    else if ((rc = optimize_method_parse(method, field_label[F_METHOD],
-                                         &o->method, err)))
+    if ((rc = study_method_parse(method[0] ? method : "auto",
+                                 field_label[F_METHOD], &o->space,
+                                 &o->method, err)))
         return rc;
     if ((rc = optimize_method_check(o->method, &o->space, &form_names, err)))
         return rc;
@@ -239,10 +238,11 @@ static void estimate_text(struct newrun_screen *s, char *out, size_t size)
     uint64_t n = (uint64_t)optimize_total(&r.settings);
     char count[32], time[32];
     tui_fmt_number(count, sizeof count, (double)n, 0, 1);
-    const char *method = r.settings.method == METHOD_EXHAUSTIVE
-                             ? "exhaustive"
-                             : r.settings.method == METHOD_NSGA2
-                                   ? "nsga2, at most" : "random";
+    /* NSGA-II evaluates a point met twice once: at most so many */
+    char method[32];
+    snprintf(method, sizeof method, "%s%s",
+             optimize_method_name(r.settings.method),
+             r.settings.method == METHOD_NSGA2 ? ", at most" : "");
     if (s->rate > 0) {
         tui_fmt_elapsed(time, sizeof time, (double)n / s->rate);
         snprintf(out, size, "F5 starts: %s options (%s), about %s at %.0f/s "
