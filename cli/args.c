@@ -13,36 +13,47 @@
 #include "core/base/numparse.h"
 #include "core/base/spelling.h"
 
-static const struct arg_option *find_long(const struct arg_option *options,
+/* The tables a command parses against: its own and the shared ones
+ * (NULL when none), each ending with a NULL name. */
+struct arg_tables {
+    const struct arg_option *table[2];
+};
+
+static const struct arg_option *find_long(const struct arg_tables *tables,
                                           const char *name, size_t length)
 {
-    for (; options->name != NULL; options++)
-        if (strlen(options->name) == length &&
-            memcmp(options->name, name, length) == 0)
-            return options;
+    for (int t = 0; t < 2; t++)
+        for (const struct arg_option *o = tables->table[t];
+             o != NULL && o->name != NULL; o++)
+            if (strlen(o->name) == length &&
+                memcmp(o->name, name, length) == 0)
+                return o;
     return NULL;
 }
 
-static const struct arg_option *find_alias(const struct arg_option *options,
+static const struct arg_option *find_alias(const struct arg_tables *tables,
                                            char alias)
 {
-    for (; options->name != NULL; options++)
-        if (options->alias != 0 && options->alias == alias)
-            return options;
+    for (int t = 0; t < 2; t++)
+        for (const struct arg_option *o = tables->table[t];
+             o != NULL && o->name != NULL; o++)
+            if (o->alias != 0 && o->alias == alias)
+                return o;
     return NULL;
 }
 
 /* The error for an unknown --name (length bytes of name), with the
  * nearest flag of the table when one is close. */
 static int unknown_long(const char *command,
-                        const struct arg_option *options, const char *name,
+                        const struct arg_tables *tables, const char *name,
                         size_t length, struct facet_error *err)
 {
     const char *names[128];
     size_t n = 0;
-    for (const struct arg_option *o = options; o->name != NULL && n < 128;
-         o++)
-        names[n++] = o->name;
+    for (int t = 0; t < 2; t++)
+        for (const struct arg_option *o = tables->table[t];
+             o != NULL && o->name != NULL && n < 128; o++)
+            names[n++] = o->name;
     const char *near = spelling_closest(name, length, names, n);
     if (near != NULL)
         return facet_error_set(err, FACET_EINPUT,
@@ -57,6 +68,17 @@ int args_parse(int argc, char **argv, const struct arg_option *options,
                const char **positional, int max, int *count,
                struct facet_error *err)
 {
+    return args_parse_shared(argc, argv, options, NULL, positional, max,
+                             count, err);
+}
+
+int args_parse_shared(int argc, char **argv,
+                      const struct arg_option *options,
+                      const struct arg_option *shared,
+                      const char **positional, int max, int *count,
+                      struct facet_error *err)
+{
+    const struct arg_tables tables = {{options, shared}};
     int only_positional = 0;
     *count = 0;
     for (int i = 1; i < argc; i++) {
@@ -72,9 +94,9 @@ int args_parse(int argc, char **argv, const struct arg_option *options,
             const char *name = word + 2;
             const char *equals = strchr(name, '=');
             size_t length = equals ? (size_t)(equals - name) : strlen(name);
-            option = find_long(options, name, length);
+            option = find_long(&tables, name, length);
             if (option == NULL)
-                return unknown_long(argv[0], options, name, length, err);
+                return unknown_long(argv[0], &tables, name, length, err);
             if (equals != NULL) {
                 if (option->kind == ARG_FLAG)
                     return facet_error_set(err, FACET_EINPUT,
@@ -83,8 +105,8 @@ int args_parse(int argc, char **argv, const struct arg_option *options,
                 value = equals + 1;
             }
         } else if (!only_positional && word[0] == '-' && word[1] != '\0' &&
-                   word[2] == '\0' && find_alias(options, word[1]) != NULL) {
-            option = find_alias(options, word[1]);
+                   word[2] == '\0' && find_alias(&tables, word[1]) != NULL) {
+            option = find_alias(&tables, word[1]);
         } else if (!only_positional && word[0] == '-' && word[1] != '\0' &&
                    !(word[1] >= '0' && word[1] <= '9') && word[1] != '.') {
             return facet_error_set(err, FACET_EINPUT,
@@ -116,11 +138,12 @@ int args_parse(int argc, char **argv, const struct arg_option *options,
 }
 
 int args_parse_one(int argc, char **argv, const struct arg_option *options,
-                   const char **positional, const char *missing,
-                   struct facet_error *err)
+                   const struct arg_option *shared, const char **positional,
+                   const char *missing, struct facet_error *err)
 {
     int count;
-    int rc = args_parse(argc, argv, options, positional, 1, &count, err);
+    int rc = args_parse_shared(argc, argv, options, shared, positional, 1,
+                               &count, err);
     if (rc == FACET_OK && count != 1)
         rc = facet_error_set(err, FACET_EINPUT, "%s", missing);
     return rc;

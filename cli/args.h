@@ -33,14 +33,24 @@ int args_parse(int argc, char **argv, const struct arg_option *options,
                const char **positional, int max, int *count,
                struct facet_error *err);
 
-/* args_parse for a command of exactly one positional argument (the
- * surface or the database) into *positional. Returns FACET_OK, or
- * FACET_EINPUT as args_parse does, or with the one-line reminder missing
- * ("runs: name the result database (facet runs runs.db)") when the
- * argument is not given. */
+/* args_parse against two tables at once: the command's own options and
+ * shared (NULL: none), a table of flags several commands take (such as
+ * classify_flags.h's), each ending with an entry whose name is NULL. Kept
+ * apart, neither table is copied into the other at an offset. */
+int args_parse_shared(int argc, char **argv,
+                      const struct arg_option *options,
+                      const struct arg_option *shared,
+                      const char **positional, int max, int *count,
+                      struct facet_error *err);
+
+/* args_parse_shared for a command of exactly one positional argument
+ * (the surface or the database) into *positional; shared as there (NULL:
+ * none). Returns FACET_OK, or FACET_EINPUT as args_parse does, or with
+ * the one-line reminder missing ("runs: name the result database (facet
+ * runs runs.db)") when the argument is not given. */
 int args_parse_one(int argc, char **argv, const struct arg_option *options,
-                   const char **positional, const char *missing,
-                   struct facet_error *err);
+                   const struct arg_option *shared, const char **positional,
+                   const char *missing, struct facet_error *err);
 
 /* Parses text as an integer in [min, max] into *out. what names the value in
  * the error ("--res"). Returns FACET_OK or FACET_EINPUT. */

@@ -22,14 +22,18 @@ const char classify_flags_usage[] =
     "                      quad grid's own i, j), plane, harmonic; default\n"
     "                      the first of these that applies\n";
 
-void surface_flags_table(struct surface_flags *f, struct arg_option *table)
+void surface_flags_init(struct surface_flags *f)
 {
-    const struct arg_option entries[SURFACE_FLAG_COUNT] = {
+    memset(f, 0, sizeof *f);
+    const struct arg_option entries[] = {
         {"units", 0, ARG_STRING, &f->units, NULL},
         {"object", 0, ARG_STRING, &f->object, NULL},
         {"group", 0, ARG_STRING, &f->group, NULL},
+        {NULL, 0, ARG_FLAG, NULL, NULL},
     };
-    memcpy(table, entries, sizeof entries);
+    _Static_assert(sizeof entries == sizeof f->table,
+                   "the table holds every flag and its end");
+    memcpy(f->table, entries, sizeof entries);
 }
 
 int surface_flags_apply(const struct surface_flags *f,
@@ -37,14 +41,15 @@ int surface_flags_apply(const struct surface_flags *f,
 {
     *mesh = (struct mesh_options){UNITS_M, f->object, f->group};
     if (f->units != NULL)
-        return mesh_units_parse(f->units, &mesh->units, err);
+        return mesh_units_parse(f->units, "--units", &mesh->units, err);
     return FACET_OK;
 }
 
-void classify_flags_table(struct classify_flags *f, struct arg_option *table)
+void classify_flags_init(struct classify_flags *f)
 {
+    memset(f, 0, sizeof *f);
     /* In the order of the usage lines, the surface's flags among them. */
-    const struct arg_option entries[CLASSIFY_FLAG_COUNT] = {
+    const struct arg_option entries[] = {
         {"units", 0, ARG_STRING, &f->surface.units, NULL},
         {"curvature-tol", 0, ARG_STRING, &f->curvature_tol, NULL},
         {"per-panel", 0, ARG_STRING, &f->per_panel, NULL},
@@ -55,8 +60,11 @@ void classify_flags_table(struct classify_flags *f, struct arg_option *table)
         {"object", 0, ARG_STRING, &f->surface.object, NULL},
         {"group", 0, ARG_STRING, &f->surface.group, NULL},
         {"uv", 0, ARG_STRING, &f->uv, NULL},
+        {NULL, 0, ARG_FLAG, NULL, NULL},
     };
-    memcpy(table, entries, sizeof entries);
+    _Static_assert(sizeof entries == sizeof f->table,
+                   "the table holds every flag and its end");
+    memcpy(f->table, entries, sizeof entries);
 }
 
 int classify_flags_uv(const char *text, enum param_method *uv,
@@ -74,9 +82,7 @@ int classify_flags_apply(const struct classify_flags *f,
                          struct mesh_options *mesh, enum param_method *uv,
                          struct facet_error *err)
 {
-    memset(params, 0, sizeof *params);
-    classify_defaults(&params->classify);
-    params->mode = PANEL_EXTREMES;
+    option_params_defaults(params);
     double number;
     int rc;
     if ((rc = surface_flags_apply(&f->surface, mesh, err)))
@@ -89,15 +95,11 @@ int classify_flags_apply(const struct classify_flags *f,
             return rc;
         params->classify.curvature_tol = number;
     }
-    if (f->per_panel) {
-        if (strcmp(f->per_panel, "mean") == 0)
-            params->mode = PANEL_MEAN;
-        else if (strcmp(f->per_panel, "extremes") != 0)
-            return facet_error_set(err, FACET_EINPUT,
-                "--per-panel: '%s' is not extremes or mean", f->per_panel);
-    }
+    if (f->per_panel && (rc = panel_mode_parse(f->per_panel, "--per-panel",
+                                               &params->mode, err)))
+        return rc;
     if (f->prices &&
-        (rc = classify_prices_parse(f->prices, params->classify.price,
+        (rc = classify_prices_parse(f->prices, "--prices", params->classify.price,
                                     err)))
         return rc;
     params->classify.sp_as_fp = f->sp_as_fp;

@@ -15,39 +15,35 @@
 
 /* The flags that pick the surface of a file and its units (--units,
  * --object, --group), as given (pointing into argv), NULL when absent:
- * what every command that reads a surface takes. */
+ * what every command that reads a surface takes; and the table that parses
+ * them (args_parse_shared), pointing at them. */
 struct surface_flags {
     const char *units, *object, *group;
+    struct arg_option table[4];  /* the three flags, then the end */
 };
 
-/* Entries surface_flags_table writes. */
-#define SURFACE_FLAG_COUNT 3
-
-/* Writes the SURFACE_FLAG_COUNT arg_option entries of the flags (units,
- * object, group) into table, pointing at *flags (which must outlive the
- * parse). */
-void surface_flags_table(struct surface_flags *flags,
-                         struct arg_option *table);
+/* Clears flags and fills flags->table, pointing at flags itself (which
+ * must not move before the parse). */
+void surface_flags_init(struct surface_flags *flags);
 
 /* Sets *mesh from the flags (metres, the whole file, when absent).
  * Returns FACET_OK or FACET_EINPUT naming a bad --units. */
 int surface_flags_apply(const struct surface_flags *flags,
                         struct mesh_options *mesh, struct facet_error *err);
 
-/* The flags' values as given (pointing into argv), NULL when absent. */
+/* The classification flags' values as given (pointing into argv), NULL
+ * when absent, the surface's among them, and the table that parses them
+ * all (args_parse_shared), pointing at them. */
 struct classify_flags {
     struct surface_flags surface;
     const char *curvature_tol, *per_panel, *prices, *max_area, *uv;
     int flip_normals, sp_as_fp;
+    struct arg_option table[11];  /* the ten flags, then the end */
 };
 
-/* Entries classify_flags_table writes. */
-#define CLASSIFY_FLAG_COUNT 10
-
-/* Writes the CLASSIFY_FLAG_COUNT arg_option entries of the flags into
- * table, pointing at *flags (which must outlive the parse). */
-void classify_flags_table(struct classify_flags *flags,
-                          struct arg_option *table);
+/* Clears flags and fills flags->table, pointing at flags itself (which
+ * must not move before the parse). */
+void classify_flags_init(struct classify_flags *flags);
 
 /* Sets params (all but grid and threshold, which it leaves at the
  * defaults' values), mesh and the UV method asked for (PARAM_AUTO when

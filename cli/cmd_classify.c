@@ -119,18 +119,16 @@ static int classify_run(int argc, char **argv, struct facet_error *err)
     const char *grid = NULL, *threshold = NULL, *csv = NULL;
     int json = 0;
     struct classify_flags flags;
-    memset(&flags, 0, sizeof flags);
-    struct arg_option options[CLASSIFY_FLAG_COUNT + 5] = {
+    classify_flags_init(&flags);
+    const struct arg_option options[] = {
         {"grid", 0, ARG_STRING, &grid, NULL},
         {"threshold", 0, ARG_STRING, &threshold, NULL},
         {"json", 0, ARG_FLAG, NULL, &json},
         {"csv", 0, ARG_STRING, &csv, NULL},
+        {NULL, 0, ARG_FLAG, NULL, NULL},
     };
-    classify_flags_table(&flags, options + 4);
-    options[CLASSIFY_FLAG_COUNT + 4] = (struct arg_option){NULL, 0, ARG_FLAG,
-                                                           NULL, NULL};
     const char *path;
-    int rc = args_parse_one(argc, argv, options, &path,
+    int rc = args_parse_one(argc, argv, options, flags.table, &path,
             "classify: name one OBJ file (facet classify FILE.obj --grid "
             "37x49)", err);
     if (rc != FACET_OK)
@@ -149,7 +147,7 @@ static int classify_run(int argc, char **argv, struct facet_error *err)
         if ((rc = args_double(threshold, 0, 1e6, "--threshold", &number,
                               err)))
             return rc;
-        params.classify.threshold = number / 1000;
+        params = option_params_at(&params, params.nu, params.nv, number);
     }
     int flip = flags.flip_normals;
 
@@ -188,7 +186,7 @@ static int classify_run(int argc, char **argv, struct facet_error *err)
                 surface.path, mesh_units_name(surface.units),
                 surface.mesh.area, surface.mesh.ntriangles,
                 param_method_name(surface.param.method),
-                params.mode == PANEL_MEAN ? "mean" : "extremes",
+                panel_mode_name(params.mode),
             };
             report_json(stdout, &source, &params.classify, &panels, &totals);
         } else {

@@ -119,19 +119,19 @@ static void print_summary(const struct surface *s, const struct curvature *c)
 
 static int curvature_run(int argc, char **argv, struct facet_error *err)
 {
-    struct surface_flags which = {NULL, NULL, NULL};
+    struct surface_flags which;
+    surface_flags_init(&which);
     const char *csv = NULL;
     int json = 0, flip = 0, force = 0;
-    /* The surface's flags first; the zeroed last entry ends the table. */
-    struct arg_option options[SURFACE_FLAG_COUNT + 5] = {
-        [SURFACE_FLAG_COUNT] = {"csv", 0, ARG_STRING, &csv, NULL},
+    const struct arg_option options[] = {
+        {"csv", 0, ARG_STRING, &csv, NULL},
         {"json", 0, ARG_FLAG, NULL, &json},
         {"flip-normals", 0, ARG_FLAG, NULL, &flip},
         {"force", 'f', ARG_FLAG, NULL, &force},
+        {NULL, 0, ARG_FLAG, NULL, NULL},
     };
-    surface_flags_table(&which, options);
     const char *path;
-    int rc = args_parse_one(argc, argv, options, &path,
+    int rc = args_parse_one(argc, argv, options, which.table, &path,
             "curvature: name one OBJ file (facet curvature FILE.obj)", err);
     if (rc != FACET_OK)
         return rc;

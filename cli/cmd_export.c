@@ -52,7 +52,7 @@ static int export_main(int argc, char **argv, struct facet_error *err)
     const char *missing =
         "export: give the database, the run and the option (facet "
         "export runs.db --run 1 --option 12 --obj knee.obj)";
-    int rc = args_parse_one(argc, argv, options, &path, missing, err);
+    int rc = args_parse_one(argc, argv, options, NULL, &path, missing, err);
     if (rc != FACET_OK)
         return rc;
     if (run == NULL || option == NULL)

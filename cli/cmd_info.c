@@ -159,17 +159,17 @@ static void print_json(const struct surface *s, const struct uv_report *uv,
 
 static int info_run(int argc, char **argv, struct facet_error *err)
 {
-    struct surface_flags which = {NULL, NULL, NULL};
+    struct surface_flags which;
+    surface_flags_init(&which);
     const char *uv_text = NULL;
     int json = 0;
-    /* The surface's flags first; the zeroed last entry ends the table. */
-    struct arg_option options[SURFACE_FLAG_COUNT + 3] = {
-        [SURFACE_FLAG_COUNT] = {"json", 0, ARG_FLAG, NULL, &json},
+    const struct arg_option options[] = {
+        {"json", 0, ARG_FLAG, NULL, &json},
         {"uv", 0, ARG_STRING, &uv_text, NULL},
+        {NULL, 0, ARG_FLAG, NULL, NULL},
     };
-    surface_flags_table(&which, options);
     const char *path;
-    int rc = args_parse_one(argc, argv, options, &path,
+    int rc = args_parse_one(argc, argv, options, which.table, &path,
             "info: name one OBJ file (facet info FILE.obj)", err);
     if (rc != FACET_OK)
         return rc;

@@ -19,7 +19,6 @@
 #include "progress.h"
 #include "run_table.h"
 #include "signals.h"
-#include "core/base/parallel.h"
 #include "core/obj/infile.h"
 #include "study/study.h"
 
@@ -73,18 +72,23 @@ static void show_warning(void *context, const char *text)
     fprintf(stderr, "facet: warning: %s\n", text);
 }
 
-/* Fills the design space, method and objectives of *s from the flags. */
+/* The search flags as given (pointing into argv), NULL when absent. */
 struct search_flags {
     const char *u, *v, *threshold, *method, *evals, *pop, *gens, *seed;
     const char *objectives, *jobs;
 };
 
+/* The flags' names in the messages of the design space's checks. */
+static const struct design_space_names flag_names = {"--u", "--v",
+                                                      "--threshold"};
+
+/* Sets the design space, method and the rest of *s that the flags give
+ * over the defaults already in *s (study_request_defaults). */
 static int parse_search(const struct search_flags *f,
                         struct optimize_settings *s, struct facet_error *err)
 {
     int rc;
     long number;
-    s->space = (struct design_space){20, 40, 35, 50, 3, 3, 0};
     if (f->u && (rc = design_space_parse_sides(f->u, "--u", &s->space.u_min,
                                       &s->space.u_max, err)))
         return rc;
@@ -92,26 +96,16 @@ static int parse_search(const struct search_flags *f,
                                       &s->space.v_max, err)))
         return rc;
     if (f->threshold &&
-        (rc = design_space_parse_threshold(f->threshold, &s->space, err)))
+        (rc = design_space_parse_threshold(f->threshold, "--threshold",
+                                           &s->space, err)))
         return rc;
-    if ((rc = design_space_check(&s->space, err)))
+    if ((rc = design_space_check(&s->space, &flag_names, err)))
         return rc;
-    int continuous = s->space.t_max_mm > s->space.t_min_mm &&
-                     s->space.t_step_mm == 0;
-    if (f->method) {
-        if ((rc = optimize_method_parse(f->method, &s->method, err)))
-            return rc;
-    } else {
-        s->method = study_auto_method(&s->space);
-    }
-    if (s->method == METHOD_EXHAUSTIVE && continuous)
-        return facet_error_set(err, FACET_EINPUT,
-            "--threshold %g:%g: the exhaustive method needs a step "
-            "(e.g. --threshold %g:%g:0.5)", s->space.t_min_mm,
-            s->space.t_max_mm, s->space.t_min_mm, s->space.t_max_mm);
-    s->evaluations = 1000;
-    s->population = 100;
-    s->generations = 50;
+    if ((rc = study_method_parse(f->method ? f->method : "auto",
+                                 "--method", &s->space, &s->method, err)))
+        return rc;
+    if ((rc = optimize_method_check(s->method, &s->space, &flag_names, err)))
+        return rc;
     if (f->evals) {
         if ((rc = args_int(f->evals, 1, 100000000, "--evals", &number, err)))
             return rc;
@@ -127,7 +121,6 @@ static int parse_search(const struct search_flags *f,
             return rc;
         s->generations = (int)number;
     }
-    s->seed = 1;
     if (f->seed) {
         /* SQLite keeps a seed as a signed 64-bit integer: up to 2^63 - 1,
          * refused beyond rather than wrapped. */
@@ -135,11 +128,10 @@ static int parse_search(const struct search_flags *f,
             return rc;
         s->seed = (uint64_t)number;
     }
-    if ((rc = objectives_parse(f->objectives ? f->objectives
-                                             : "cost,planarity,dp_area",
-                               s->objectives, &s->nobjectives, err)))
+    if (f->objectives &&
+        (rc = objectives_parse(f->objectives, "--objectives", s->objectives,
+                               &s->nobjectives, err)))
         return rc;
-    s->jobs = parallel_cpus(PARALLEL_MAX);
     if (f->jobs) {
         if ((rc = args_int(f->jobs, 1, 64, "--jobs", &number, err)))
             return rc;
@@ -156,8 +148,8 @@ static int optimize_main(int argc, char **argv, struct facet_error *err)
     const char *surface = NULL, *store_panels = NULL;
     int wide = 0;
     memset(&search, 0, sizeof search);
-    memset(&flags, 0, sizeof flags);
-    struct arg_option options[CLASSIFY_FLAG_COUNT + 18] = {
+    classify_flags_init(&flags);
+    const struct arg_option options[] = {
         {"db", 0, ARG_STRING, &db, NULL},
         {"u", 0, ARG_STRING, &search.u, NULL},
         {"v", 0, ARG_STRING, &search.v, NULL},
@@ -175,13 +167,12 @@ static int optimize_main(int argc, char **argv, struct facet_error *err)
         {"surface", 0, ARG_STRING, &surface, NULL},
         {"wide", 0, ARG_FLAG, NULL, &wide},
         {"store-panels", 0, ARG_STRING, &store_panels, NULL},
+        {NULL, 0, ARG_FLAG, NULL, NULL},
     };
-    classify_flags_table(&flags, options + 17);
-    options[CLASSIFY_FLAG_COUNT + 17] =
-        (struct arg_option){NULL, 0, ARG_FLAG, NULL, NULL};
     const char *path[1];
     int count;
-    int rc = args_parse(argc, argv, options, path, 1, &count, err);
+    int rc = args_parse_shared(argc, argv, options, flags.table, path, 1,
+                               &count, err);
     if (rc != FACET_OK)
         return rc;
     if (db == NULL)
@@ -209,17 +200,20 @@ static int optimize_main(int argc, char **argv, struct facet_error *err)
     }
 
     struct study_request request;
-    memset(&request, 0, sizeof request);
+    study_request_defaults(&request);
     if (!resume) {
         if ((rc = classify_flags_apply(&flags, &request.settings.base,
                                        &request.mesh, &request.uv, err)))
             return rc;
         if ((rc = parse_search(&search, &request.settings, err)))
             return rc;
+        if (store_panels &&
+            (rc = study_keep_panels_parse(store_panels, "--store-panels",
+                                          &request.store_panels, err)))
+            return rc;
         request.surface_path = path[0];
         request.flip_normals = flags.flip_normals;
         request.name = name ? name : "";
-        request.store_panels = store_panels;
     }
 
     /* A surface that cannot be read is refused before the database is
@@ -270,7 +264,7 @@ const struct command cmd_optimize = {
     .name = "optimize",
     .usage = "SURFACE.obj --db FILE [--u A:B] [--v A:B] "
              "[--threshold MM|A:B[:STEP]]\n"
-             "       [--method exhaustive|random|nsga2] [--evals N] "
+             "       [--method auto|exhaustive|random|nsga2] [--evals N] "
              "[--pop N] [--gens N]\n"
              "       [--seed S] [--objectives LIST] [--jobs N] [--name TEXT]"
              " [--table N]\n"
@@ -284,8 +278,9 @@ const struct command cmd_optimize = {
         "  --v A:B             panels along v (default 35:50, the paper's)\n"
         "  --threshold T       flatness threshold in mm: one value (default\n"
         "                      3), a range A:B, or A:B:STEP for exhaustive\n"
-        "  --method M          exhaustive (default up to 100,000 points),\n"
-        "                      random, or nsga2 (default above)\n"
+        "  --method M          auto (default: exhaustive up to 100,000\n"
+        "                      points, nsga2 above), exhaustive, random\n"
+        "                      or nsga2\n"
         "  --evals N           random: points to draw (default 1000)\n"
         "  --pop N, --gens N   nsga2: population (100), generations (50)\n"
         "  --seed S            the same seed gives the same options (1)\n"

@@ -96,7 +96,7 @@ static int options_main(int argc, char **argv, struct facet_error *err)
         {NULL, 0, ARG_FLAG, NULL, NULL},
     };
     const char *path;
-    int rc = args_parse_one(argc, argv, options, &path,
+    int rc = args_parse_one(argc, argv, options, NULL, &path,
             "options: name the result database (facet options runs.db)", err);
     if (rc != FACET_OK)
         return rc;

@@ -32,7 +32,7 @@ static int plot_main(int argc, char **argv, struct facet_error *err)
     const char *missing =
         "plot: give the database, --run N (or --runs N,M) and -o "
         "FILE.svg";
-    int rc = args_parse_one(argc, argv, options, &path, missing, err);
+    int rc = args_parse_one(argc, argv, options, NULL, &path, missing, err);
     if (rc != FACET_OK)
         return rc;
     if ((run == NULL) == (runs == NULL) || output == NULL)
@@ -54,8 +54,9 @@ static int plot_main(int argc, char **argv, struct facet_error *err)
             return rc;
         ids[nruns++] = id;
     }
+    static const char *const flags[3] = {"--x", "--y", "--size"};
     struct plot_request request = {ids, nruns, x, y, size, title, force,
-                                   NULL, 0};
+                                   NULL, 0, flags};
     struct store *store;
     if ((rc = store_open_read(path, &store, err)) != FACET_OK)
         return rc;

@@ -29,7 +29,7 @@ static void print_json(const struct run_info *runs,
         json_begin_object(&w);
         json_key(&w, "id"); json_integer(&w, r->id);
         json_key(&w, "name"); json_string(&w, r->name);
-        json_key(&w, "status"); json_string(&w, r->status);
+        json_key(&w, "status"); json_string(&w, run_status_name(r->status));
         json_key(&w, "surface"); json_string(&w, r->surface_path);
         json_key(&w, "surface_sha256"); json_string(&w, r->surface_sha256);
         json_key(&w, "units"); json_string(&w, r->units);
@@ -152,7 +152,7 @@ static void print_human(const struct run_info *runs,
         text_for_terminal(r->surface_path, path, sizeof path);
         snprintf(label, sizeof label, "%s%s%s", name, name[0] ? " / " : "",
                  path);
-        const char *cell[] = {id, r->status, r->method, options, pareto,
+        const char *cell[] = {id, run_status_name(r->status), r->method, options, pareto,
                               cost, hv, elapsed, r->started, label};
         text_table_row(stdout, &t, cell);
     }
@@ -187,7 +187,7 @@ static int runs_main(int argc, char **argv, struct facet_error *err)
         {NULL, 0, ARG_FLAG, NULL, NULL},
     };
     const char *path;
-    int rc = args_parse_one(argc, argv, options, &path,
+    int rc = args_parse_one(argc, argv, options, NULL, &path,
             "runs: name the result database (facet runs runs.db)", err);
     if (rc != FACET_OK)
         return rc;

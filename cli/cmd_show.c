@@ -30,7 +30,7 @@ static int show_main(int argc, char **argv, struct facet_error *err)
     const char *missing =
         "show: give the database, the run and the option (facet show "
         "runs.db --run 1 --option 12)";
-    int rc = args_parse_one(argc, argv, options, &path, missing, err);
+    int rc = args_parse_one(argc, argv, options, NULL, &path, missing, err);
     if (rc != FACET_OK)
         return rc;
     if (run == NULL || option == NULL)

@@ -10,6 +10,34 @@
 #include "command.h"
 #include "core/base/spelling.h"
 
+/* The CLI's words for the setting an error is about (core/base/error.h):
+ * its flag, before the message or after it. */
+static const struct {
+    const char *before, *after;
+} setting_words[FACET_SETTING_COUNT] = {
+    [FACET_SETTING_NONE] = {"", ""},
+    [FACET_SETTING_OVERWRITE] = {"", " (pass --force to overwrite it)"},
+    [FACET_SETTING_OBJECT] = {"", " with --object NAME"},
+    [FACET_SETTING_GROUP] = {"", " with --group NAME"},
+    [FACET_SETTING_CHART] = {"", " (--object NAME or --group NAME, or "
+                                 "--uv harmonic)"},
+    [FACET_SETTING_UNITS] = {"", " (--units)"},
+    [FACET_SETTING_SURFACE] = {"", " with --surface FILE"},
+    [FACET_SETTING_STORE] = {"", "; facet optimize --db FILE makes one"},
+    [FACET_SETTING_FILTER] = {"--where: ", ""},
+    [FACET_SETTING_SORT] = {"--sort: ", ""},
+};
+
+static void print_error(const struct facet_error *err)
+{
+    enum facet_setting s = err->setting;
+    if ((unsigned)s >= FACET_SETTING_COUNT || setting_words[s].before == NULL)
+        s = FACET_SETTING_NONE;
+    fprintf(stderr, "facet: %s%s%s\n", setting_words[s].before,
+            err->message[0] ? err->message : "failed",
+            setting_words[s].after);
+}
+
 static int wants_help(int argc, char **argv)
 {
     for (int i = 1; i < argc; i++) {
@@ -63,8 +91,7 @@ int main(int argc, char **argv)
      * failure: the command said what it did. */
     if (status != 0 && status <= 128) {
         fflush(stdout);
-        fprintf(stderr, "facet: %s\n",
-                err.message[0] ? err.message : "failed");
+        print_error(&err);
     }
     /* What went to stdout (a table, JSON, CSV) must have got there: a full
      * disk, /dev/full or a closed pipe is a failure, not a silent exit 0.

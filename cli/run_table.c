@@ -52,7 +52,7 @@ int run_table_print(FILE *out, struct store *store, const char *db,
     text_for_terminal(info.name, name, sizeof name);
     text_for_terminal(info.surface_path, path, sizeof path);
     snprintf(line, sizeof line, "run %lld (%s%s%s): %s, %s, %lld options in "
-             "%.2f s, %lld Pareto-optimal", (long long)info.id, info.status,
+             "%.2f s, %lld Pareto-optimal", (long long)info.id, run_status_name(info.status),
              name[0] ? ", " : "", name, path,
              info.method, (long long)info.options, info.elapsed,
              (long long)info.pareto_options);

@@ -161,8 +161,8 @@ static size_t column_of(const char *text, size_t at)
     return column;
 }
 
-/* Sets p->err to "--where: column N: WHAT", N the column of byte offset at.
- * Returns FACET_EINPUT. */
+/* Sets p->err to "column N: WHAT" about the filter, N the column of byte
+ * offset at. Returns FACET_EINPUT. */
 static int fail_at(struct parser *p, size_t at, const char *fmt, ...)
     __attribute__((format(printf, 3, 4)));
 
@@ -173,8 +173,8 @@ static int fail_at(struct parser *p, size_t at, const char *fmt, ...)
     va_start(ap, fmt);
     vsnprintf(what, sizeof what, fmt, ap);
     va_end(ap);
-    return facet_error_set(p->err, FACET_EINPUT, "--where: column %zu: %s",
-                           column_of(p->text, at), what);
+    return facet_error_about(p->err, FACET_SETTING_FILTER, FACET_EINPUT,
+                             "column %zu: %s", column_of(p->text, at), what);
 }
 
 /* The token as the user wrote it, cut to SHOWN_MAX bytes, for quoting in
@@ -277,8 +277,8 @@ static int lex_number(struct parser *p, size_t i, struct token *t)
         size_t n = j - 1 - i;
         char *scaled = malloc(n + 3);
         if (scaled == NULL)
-            return facet_error_set(p->err, FACET_EWORK,
-                                   "--where: out of memory");
+            return facet_error_about(p->err, FACET_SETTING_FILTER,
+                                     FACET_EWORK, "out of memory");
         memcpy(scaled, s + i, n);
         scaled[n] = 'e';
         scaled[n + 1] = (char)('0' + scale);
@@ -886,9 +886,9 @@ int filter_compile(const char *text, struct filter **out,
         text = "";
     size_t length = strnlen(text, (size_t)FILTER_MAX_LENGTH + 1);
     if (length > FILTER_MAX_LENGTH)
-        return facet_error_set(err, FACET_EINPUT,
-                               "--where: column %zu: the expression is "
-                               "longer than %d bytes",
+        return facet_error_about(err, FACET_SETTING_FILTER, FACET_EINPUT,
+                                 "column %zu: the expression is longer "
+                                 "than %d bytes",
                                column_of(text, FILTER_MAX_LENGTH),
                                FILTER_MAX_LENGTH);
 
@@ -921,8 +921,8 @@ int filter_compile(const char *text, struct filter **out,
          * nest within the limit too, with the parentheses write_text
          * puts around every operand. */
         if (text_depth(f, f->root, 0) > FILTER_MAX_DEPTH) {
-            rc = facet_error_set(err, FACET_EINPUT,
-                "--where: nested too deeply (more than %d parentheses and "
+            rc = facet_error_about(err, FACET_SETTING_FILTER, FACET_EINPUT,
+                "nested too deeply (more than %d parentheses and "
                 "nots as Facet writes the expression back)",
                 FILTER_MAX_DEPTH);
             goto fail;
@@ -937,8 +937,8 @@ int filter_compile(const char *text, struct filter **out,
      * ("!" is written back as "not "). */
     if (b.length > FILTER_MAX_LENGTH) {
         free(b.data);
-        rc = facet_error_set(err, FACET_EINPUT,
-            "--where: the expression is longer than %d bytes as Facet "
+        rc = facet_error_about(err, FACET_SETTING_FILTER, FACET_EINPUT,
+            "the expression is longer than %d bytes as Facet "
             "writes it back (%zu)", FILTER_MAX_LENGTH, b.length);
         goto fail;
     }
@@ -949,7 +949,8 @@ int filter_compile(const char *text, struct filter **out,
     return FACET_OK;
 
 out_of_memory:
-    rc = facet_error_set(err, FACET_EWORK, "--where: out of memory");
+    rc = facet_error_about(err, FACET_SETTING_FILTER, FACET_EWORK,
+                           "out of memory");
 fail:
     free(p.tokens);
     filter_free(f);

@@ -35,8 +35,9 @@ enum {
 
 /* Compiles text into *out (caller-owned, released with filter_free).
  * Empty or all-blank text (or NULL) compiles to a filter matching every
- * option. Returns FACET_OK; FACET_EINPUT ("--where: column 12: unknown
- * column 'dp_aera' (did you mean dp_area?)"), the column being the 1-based
+ * option. Returns FACET_OK; FACET_EINPUT ("column 12: unknown column
+ * 'dp_aera' (did you mean dp_area?)", about FACET_SETTING_FILTER: each
+ * front-end says which of its fields it is), the column being the 1-based
  * character (UTF-8 code point) position of the mistake; or FACET_EWORK
  * when out of memory. *out is NULL on failure. */
 int filter_compile(const char *text, struct filter **out,

@@ -314,7 +314,7 @@ static int reap_orphans(struct store *store, struct facet_error *err)
         struct run_info run;
         rc = store_run_get(store, orphan[k], &run, err);
         if (rc == FACET_OK)
-            rc = store_run_set_status(store, orphan[k], "interrupted",
+            rc = store_run_set_status(store, orphan[k], RUN_INTERRUPTED,
                                       run.elapsed, err);
     }
     return rc;
@@ -490,10 +490,12 @@ static int require_file(const char *path, struct facet_error *err)
 {
     struct stat st;
     if (stat(path, &st) != 0)
-        return facet_error_set(err, FACET_EINPUT, "%s: %s%s", path,
-            strerror(errno),
-            errno == ENOENT ? " (no such database; facet optimize --db "
-                              "FILE makes one)" : "");
+        return facet_error_about(err, errno == ENOENT ? FACET_SETTING_STORE
+                                                      : FACET_SETTING_NONE,
+                                 FACET_EINPUT, "%s: %s%s", path,
+                                 strerror(errno),
+                                 errno == ENOENT ? " (no such database)"
+                                                 : "");
     if (!S_ISREG(st.st_mode))
         return facet_error_set(err, FACET_EINPUT,
                                "%s: not a regular file, not a database",

@@ -26,6 +26,17 @@
 
 struct store;  /* an open database */
 
+/* How a run stands: being written, finished, stopped (resumable) or
+ * failed (resumable). Kept as text in runs.status, whose CHECK lists the
+ * names run_status_name gives; the text is read and written only here, at
+ * the SQL boundary, and compared nowhere else. */
+enum run_status { RUN_RUNNING, RUN_DONE, RUN_INTERRUPTED, RUN_FAILED };
+
+/* "running", "done", "interrupted", "failed". */
+const char *run_status_name(enum run_status status);
+/* The status named text into *out: 0, or -1 when text names none. */
+int run_status_parse(const char *text, enum run_status *out);
+
 /* What produced a run, and how it went. Text fields are NUL-terminated. */
 struct run_info {
     int64_t id;
@@ -65,7 +76,7 @@ struct run_info {
     int64_t evaluations;       /* random: --evals */
     int jobs;
     char version[16];          /* Facet's version */
-    char status[16];           /* running, done, interrupted, failed */
+    enum run_status status;
     char started[32];          /* UTC, ISO 8601 */
     char finished[32];         /* "" while running */
     int64_t options;           /* options evaluated and stored */
@@ -138,7 +149,7 @@ int store_check(struct store *store, struct facet_error *err);
 
 /* --- runs --- */
 
-/* Inserts run (id, started, status "running", writer pid/host are set here
+/* Inserts run (id, started, status RUN_RUNNING, writer pid/host are set here
  * and written back into *run). */
 int store_run_create(struct store *store, struct run_info *run,
                      struct facet_error *err);
@@ -150,7 +161,7 @@ int store_run_list(struct store *store, struct run_info **runs,
                    size_t *count, struct facet_error *err);
 /* Takes run id over for --resume, in one write transaction with the
  * checks: FACET_EINPUT when it is done, or running with its writer alive
- * (named: pid, host); otherwise its status becomes "running" with this
+ * (named: pid, host); otherwise its status becomes RUN_RUNNING with this
  * process as its writer, and *run holds it as it was read. */
 int store_run_claim(struct store *store, int64_t id, struct run_info *run,
                     struct facet_error *err);
@@ -159,10 +170,11 @@ int store_run_claim(struct store *store, int64_t id, struct run_info *run,
 int store_run_set_surface(struct store *store, int64_t id, const char *path,
                           struct facet_error *err);
 
-/* Sets status (and finished when not "running"), elapsed and the options
- * count. Taking a run over for --resume: status "running" with this
+/* Sets status (and finished when not RUN_RUNNING), elapsed and the
+ * options count. Taking a run over to resume it: RUN_RUNNING with this
  * process as its writer. */
-int store_run_set_status(struct store *store, int64_t id, const char *status,
+int store_run_set_status(struct store *store, int64_t id,
+                         enum run_status status,
                          double elapsed, struct facet_error *err);
 /* Deletes a run with its options and panels. */
 int store_run_delete(struct store *store, int64_t id,

@@ -313,9 +313,8 @@ static int order_by(const char *sort, int descending, char *sql,
             for (int k = 0; k < STORE_OPTION_COLUMNS; k++)
                 snprintf(list + strlen(list), sizeof list - strlen(list),
                          "%s%s", k ? ", " : "", store_option_columns[k].name);
-            return facet_error_set(err, FACET_EINPUT,
-                "--sort: unknown column '%.*s' (choose from %s)", (int)n, p,
-                list);
+            return facet_error_about(err, FACET_SETTING_SORT, FACET_EINPUT,
+                "unknown column '%.*s' (choose from %s)", (int)n, p, list);
         }
         if (n == 8 && strncasecmp(p, "crowding", 8) == 0)
             len += (size_t)snprintf(sql + len, size - len, "%s%s, ",
@@ -324,7 +323,8 @@ static int order_by(const char *sort, int descending, char *sql,
             len += (size_t)snprintf(sql + len, size - len, "\"%.*s\"%s, ",
                                     (int)n, p, direction);
         if (len >= size)
-            return facet_error_set(err, FACET_EINPUT, "--sort: too long");
+            return facet_error_about(err, FACET_SETTING_SORT, FACET_EINPUT,
+                                     "too long");
         p += strcspn(p, ",");
         if (*p == ',')
             p++;

@@ -4,6 +4,7 @@
  */
 #include "store_internal.h"
 
+#include <assert.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -31,6 +32,27 @@ static void copy_text(char *to, size_t size, sqlite3_stmt *stmt, int col)
     snprintf(to, size, "%s", text ? (const char *)text : "");
 }
 
+static const char *const run_status_names[] = {
+    [RUN_RUNNING] = "running", [RUN_DONE] = "done",
+    [RUN_INTERRUPTED] = "interrupted", [RUN_FAILED] = "failed"};
+enum { RUN_STATUS_COUNT = sizeof run_status_names / sizeof *run_status_names };
+
+const char *run_status_name(enum run_status status)
+{
+    assert((unsigned)status < RUN_STATUS_COUNT);
+    return run_status_names[status];
+}
+
+int run_status_parse(const char *text, enum run_status *out)
+{
+    for (int k = 0; k < RUN_STATUS_COUNT; k++)
+        if (strcmp(text, run_status_names[k]) == 0) {
+            *out = (enum run_status)k;
+            return 0;
+        }
+    return -1;
+}
+
 static void run_from_row(const struct store *store, sqlite3_stmt *s,
                          struct run_info *r)
 {
@@ -38,7 +60,12 @@ static void run_from_row(const struct store *store, sqlite3_stmt *s,
     int c = 0;
     r->id = sqlite3_column_int64(s, c++);
     copy_text(r->name, sizeof r->name, s, c++);
-    copy_text(r->status, sizeof r->status, s, c++);
+    const unsigned char *status = sqlite3_column_text(s, c++);
+    /* runs.status CHECKs the names; a file that holds another (written
+     * by hand) reads as failed: resumable, never taken for done. */
+    if (status == NULL ||
+        run_status_parse((const char *)status, &r->status) != 0)
+        r->status = RUN_FAILED;
     copy_text(r->started, sizeof r->started, s, c++);
     copy_text(r->finished, sizeof r->finished, s, c++);
     r->elapsed = sqlite3_column_double(s, c++);
@@ -84,9 +111,9 @@ static void run_from_row(const struct store *store, sqlite3_stmt *s,
     copy_text(r->store_panels, sizeof r->store_panels, s, c++);
     /* A writer marks such runs when it opens the file; a reader cannot
      * write, so it reads them as what they are. */
-    if (store->read_only && strcmp(r->status, "running") == 0 &&
+    if (store->read_only && r->status == RUN_RUNNING &&
         store_run_writer_gone(r->writer_pid, r->writer_host))
-        snprintf(r->status, sizeof r->status, "interrupted");
+        r->status = RUN_INTERRUPTED;
 }
 
 static void bind_text_or_null(sqlite3_stmt *s, int col, const char *text)
@@ -118,7 +145,7 @@ int store_run_create(struct store *store, struct run_info *r,
     if (rc != FACET_OK)
         return rc;
     store_now(r->started);
-    snprintf(r->status, sizeof r->status, "running");
+    r->status = RUN_RUNNING;
     r->finished[0] = '\0';
     r->writer_pid = (int64_t)getpid();
     memset(r->writer_host, 0, sizeof r->writer_host);
@@ -245,17 +272,17 @@ int store_run_claim(struct store *store, int64_t id, struct run_info *run,
     if (rc != FACET_OK)
         return rc;
     rc = store_run_get(store, id, run, err);
-    if (rc == FACET_OK && strcmp(run->status, "done") == 0)
+    if (rc == FACET_OK && run->status == RUN_DONE)
         rc = facet_error_set(err, FACET_EINPUT,
             "run %lld is done: nothing to resume", (long long)id);
-    if (rc == FACET_OK && strcmp(run->status, "running") == 0 &&
+    if (rc == FACET_OK && run->status == RUN_RUNNING &&
         !store_run_writer_gone(run->writer_pid, run->writer_host))
         rc = facet_error_set(err, FACET_EINPUT,
             "run %lld is being written by process %lld on %s: stop it "
             "first", (long long)id, (long long)run->writer_pid,
             run->writer_host);
     if (rc == FACET_OK)
-        rc = store_run_set_status(store, id, "running", run->elapsed, err);
+        rc = store_run_set_status(store, id, RUN_RUNNING, run->elapsed, err);
     if (rc == FACET_OK)
         rc = store_exec(store, "COMMIT", "claiming a run", err);
     if (rc != FACET_OK)
@@ -283,11 +310,12 @@ int store_run_set_surface(struct store *store, int64_t id, const char *path,
     return rc;
 }
 
-int store_run_set_status(struct store *store, int64_t id, const char *status,
-                         double elapsed, struct facet_error *err)
+int store_run_set_status(struct store *store, int64_t id,
+                         enum run_status status, double elapsed,
+                         struct facet_error *err)
 {
     sqlite3_stmt *s;
-    int running = strcmp(status, "running") == 0;
+    int running = status == RUN_RUNNING;
     int rc = store_prepare(store,
         "UPDATE runs SET status = ?2, elapsed = ?3,"
         " finished = CASE WHEN ?2 = 'running' THEN NULL ELSE ?4 END,"
@@ -302,7 +330,7 @@ int store_run_set_status(struct store *store, int64_t id, const char *status,
     store_now(now);
     gethostname(host, sizeof host - 1);
     sqlite3_bind_int64(s, 1, id);
-    sqlite3_bind_text(s, 2, status, -1, SQLITE_TRANSIENT);
+    sqlite3_bind_text(s, 2, run_status_name(status), -1, SQLITE_STATIC);
     sqlite3_bind_double(s, 3, elapsed);
     sqlite3_bind_text(s, 4, now, -1, SQLITE_TRANSIENT);
     sqlite3_bind_int64(s, 5, running ? (int64_t)getpid() : 0);

@@ -95,27 +95,73 @@ static int stop_requested(void *context)
            state->hooks->should_stop(state->hooks->context);
 }
 
+static const char *const keep_names[] = {
+    [KEEP_FRONT] = "front", [KEEP_KNEE] = "knee", [KEEP_NONE] = "none"};
+
+const char *study_keep_panels_name(enum study_keep_panels keep)
+{
+    return keep_names[keep];
+}
+
+int study_keep_panels_parse(const char *text, const char *what,
+                            enum study_keep_panels *out,
+                            struct facet_error *err)
+{
+    for (int k = 0; k < (int)(sizeof keep_names / sizeof *keep_names); k++)
+        if (strcmp(text, keep_names[k]) == 0) {
+            *out = (enum study_keep_panels)k;
+            return FACET_OK;
+        }
+    return facet_error_set(err, FACET_EINPUT,
+                           "%s: '%s' is not front, knee or none", what, text);
+}
+
+void study_request_defaults(struct study_request *r)
+{
+    memset(r, 0, sizeof *r);
+    r->name = "";
+    r->mesh = (struct mesh_options){UNITS_M, NULL, NULL};
+    r->uv = PARAM_AUTO;
+    r->store_panels = KEEP_FRONT;
+    struct optimize_settings *s = &r->settings;
+    s->space = (struct design_space){20, 40, 35, 50, 3, 3, 0};
+    s->method = study_auto_method(&s->space);
+    option_params_defaults(&s->base);
+    s->objectives[0] = (struct objective){METRIC_COST, 0};
+    s->objectives[1] = (struct objective){METRIC_PLANARITY, 0};
+    s->objectives[2] = (struct objective){METRIC_DP_AREA, 0};
+    s->nobjectives = 3;
+    s->seed = 1;
+    s->evaluations = 1000;
+    s->population = 100;
+    s->generations = 50;
+    s->jobs = parallel_cpus(PARALLEL_MAX);
+}
+
 int study_settings(const struct run_info *run,
                    struct optimize_settings *s, struct mesh_options *mesh,
                    int *flip_normals, struct facet_error *err)
 {
     memset(s, 0, sizeof *s);
-    int rc = optimize_method_parse(run->method, &s->method, err);
+    option_params_defaults(&s->base);
+    int rc = optimize_method_parse(run->method, "the run's method",
+                                   &s->method, err);
     if (rc == FACET_OK)
-        rc = objectives_parse(run->objectives, s->objectives,
-                              &s->nobjectives, err);
+        rc = objectives_parse(run->objectives, "the run's objectives",
+                              s->objectives, &s->nobjectives, err);
     if (rc == FACET_OK)
-        rc = mesh_units_parse(run->units, &mesh->units, err);
+        rc = mesh_units_parse(run->units, "the run's units", &mesh->units,
+                              err);
+    if (rc == FACET_OK)
+        rc = panel_mode_parse(run->per_panel, "the run's per-panel mode",
+                              &s->base.mode, err);
     if (rc != FACET_OK)
         return rc;
     s->space = (struct design_space){run->u_min, run->u_max, run->v_min,
                                      run->v_max, run->threshold_min_mm,
                                      run->threshold_max_mm,
                                      run->threshold_step_mm};
-    classify_defaults(&s->base.classify);
-    s->base.mode = strcmp(run->per_panel, "mean") == 0 ? PANEL_MEAN
-                                                       : PANEL_EXTREMES;
-    s->base.classify.threshold = run->threshold_min_mm / 1000;
+    s->base = option_params_at(&s->base, 0, 0, run->threshold_min_mm);
     s->base.classify.curvature_tol = run->curvature_tol;
     memcpy(s->base.classify.price, run->price, sizeof run->price);
     s->base.classify.sp_as_fp = run->sp_as_fp;
@@ -128,7 +174,7 @@ int study_settings(const struct run_info *run,
     mesh->object = run->object[0] ? run->object : NULL;
     mesh->group = run->group[0] ? run->group : NULL;
     *flip_normals = run->flip_normals;
-    return design_space_check(&s->space, err);
+    return design_space_check(&s->space, NULL, err);
 }
 
 /* Reading a surface: its SHA-256 and the surface itself at once, the
@@ -161,8 +207,8 @@ static int read_surface(const char *path, const struct mesh_options *mesh,
                         struct facet_error *err)
 {
     struct read_job job[2] = {
-        {path, NULL, digest, NULL, FACET_OK, {0, ""}},
-        {path, mesh, NULL, surface, FACET_OK, {0, ""}},
+        {path, NULL, digest, NULL, FACET_OK, {0, FACET_SETTING_NONE, ""}},
+        {path, mesh, NULL, surface, FACET_OK, {0, FACET_SETTING_NONE, ""}},
     };
     parallel_run(job, sizeof *job, 2, read_run);
     for (int k = 0; k < 2; k++)
@@ -241,10 +287,10 @@ int study_open_surface(const struct store *store, const struct run_info *run,
         if (strcmp(digest, run->surface_sha256) == 0)
             return surface_prepare(surface, flip, uv, err);
         if (!changed)
-            facet_error_set(&first, FACET_EINPUT,
+            facet_error_about(&first, FACET_SETTING_SURFACE, FACET_EINPUT,
                 "%s: the file has changed since run %lld was made from it "
-                "(SHA-256 %.12s..., was %.12s...); give the original with "
-                "--surface FILE", place[k], (long long)run->id, digest,
+                "(SHA-256 %.12s..., was %.12s...); give the original's "
+                "place", place[k], (long long)run->id, digest,
                 run->surface_sha256);
         changed = 1;
         surface_close(surface);
@@ -254,11 +300,10 @@ int study_open_surface(const struct store *store, const struct run_info *run,
         *err = first;
         return FACET_EINPUT;
     }
-    return facet_error_set(err, FACET_EINPUT,
-        "%s: no such file (run %lld's surface, nor beside the database); if "
-        "it has moved, give its new place with --surface FILE (SHA-256 "
-        "%.12s...)", run->surface_path, (long long)run->id,
-        run->surface_sha256);
+    return facet_error_about(err, FACET_SETTING_SURFACE, FACET_EINPUT,
+        "%s: no such file (run %lld's surface, SHA-256 %.12s..., nor "
+        "beside the database); if it has moved, give its new place",
+        run->surface_path, (long long)run->id, run->surface_sha256);
 }
 
 int study_repoint_surface(struct store *store, int64_t run_id,
@@ -273,19 +318,19 @@ int study_repoint_surface(struct store *store, int64_t run_id,
         return rc;
     if (strcmp(digest, run.surface_sha256) != 0)
         return facet_error_set(err, FACET_EINPUT,
-            "--surface %s: not run %lld's surface (SHA-256 %.12s..., the "
+            "%s: not run %lld's surface (SHA-256 %.12s..., the "
             "run's is %.12s...)", path, (long long)run_id, digest,
             run.surface_sha256);
     char absolute[4096];
     if (realpath(path, absolute) == NULL)
-        return facet_error_set(err, FACET_EINPUT, "--surface %s: %s", path,
+        return facet_error_set(err, FACET_EINPUT, "%s: %s", path,
                                strerror(errno));
     if (strlen(absolute) >= sizeof run.surface_path)
         return facet_error_set(err, FACET_EINPUT,
-                               "--surface %.200s...: path too long", path);
+                               "%.200s...: path too long", path);
     if (store_read_only(store))
         return facet_error_set(err, FACET_EINPUT,
-            "--surface: %s is read-only here, so run %lld cannot be "
+            "%s is read-only here, so run %lld cannot be "
             "re-pointed; copy the database where it can be written",
             store_path(store), (long long)run_id);
     return store_run_set_surface(store, run_id, absolute, err);
@@ -349,10 +394,8 @@ static int evaluate_option(const struct run_info *run,
     int rc = study_settings(run, &settings, &mesh, &flip, err);
     if (rc != FACET_OK)
         return rc;
-    struct option_params params = settings.base;
-    params.nu = option->nu;
-    params.nv = option->nv;
-    params.classify.threshold = option->threshold_mm / 1000;
+    struct option_params params = option_params_at(
+        &settings.base, option->nu, option->nv, option->threshold_mm);
     return option_evaluate(surface, &params, panels, totals, err);
 }
 
@@ -462,10 +505,14 @@ static int store_front_panels(struct store *store, const struct run_info *run,
     struct option_query q = {run->id, 1, NULL, NULL, 0, 0, 0};
     struct option_row *rows;
     size_t n, nfront = 0;
-    if (strcmp(run->store_panels, "none") == 0)
-        return FACET_OK;
-    int knee_only = strcmp(run->store_panels, "knee") == 0;
-    int rc = store_options_query_rows(store, &q, &rows, &n, err);
+    enum study_keep_panels keep = KEEP_FRONT;
+    int rc = study_keep_panels_parse(run->store_panels,
+                                     "the run's panels to store", &keep,
+                                     err);
+    if (rc != FACET_OK || keep == KEEP_NONE)
+        return rc;
+    int knee_only = keep == KEEP_KNEE;
+    rc = store_options_query_rows(store, &q, &rows, &n, err);
     struct design_point *points = malloc((n ? n : 1) * sizeof *points);
     int64_t *numbers = malloc((n ? n : 1) * sizeof *numbers);
     if (rc == FACET_OK && (points == NULL || numbers == NULL))
@@ -614,9 +661,9 @@ static int study_go(struct store *store, struct run_info *run,
             *outcome = OPTIMIZE_INTERRUPTED;
     }
     panel_lattice_free(lattice);
-    const char *status = rc != FACET_OK ? "failed"
-                         : *outcome == OPTIMIZE_DONE ? "done"
-                                                     : "interrupted";
+    enum run_status status = rc != FACET_OK ? RUN_FAILED
+                             : *outcome == OPTIMIZE_DONE ? RUN_DONE
+                                                         : RUN_INTERRUPTED;
     /* The status is written even after a failure, with its own error
      * kept apart so the first error is the one reported. */
     int status_rc = store_run_set_status(store, run->id, status,
@@ -673,6 +720,21 @@ enum optimize_method study_auto_method(const struct design_space *space)
                ? METHOD_EXHAUSTIVE : METHOD_NSGA2;
 }
 
+int study_method_parse(const char *text, const char *what,
+                       const struct design_space *space,
+                       enum optimize_method *out, struct facet_error *err)
+{
+    if (strcmp(text, "auto") == 0) {
+        *out = study_auto_method(space);
+        return FACET_OK;
+    }
+    if (optimize_method_parse(text, what, out, NULL) == FACET_OK)
+        return FACET_OK;
+    return facet_error_set(err, FACET_EINPUT,
+        "%s: '%s' unknown (choose auto, exhaustive, random or nsga2)", what,
+        text);
+}
+
 int study_request_check(const struct study_request *request,
                         struct facet_error *err)
 {
@@ -687,12 +749,7 @@ int study_request_check(const struct study_request *request,
         return facet_error_set(err, FACET_EINPUT,
             "the run's name is not clean UTF-8 text (control characters or "
             "invalid bytes)");
-    const char *keep = request->store_panels;
-    if (keep != NULL && strcmp(keep, "front") != 0 &&
-        strcmp(keep, "knee") != 0 && strcmp(keep, "none") != 0)
-        return facet_error_set(err, FACET_EINPUT,
-            "panels to store: '%s' is not front, knee or none", keep);
-    return design_space_check(&request->settings.space, err);
+    return design_space_check(&request->settings.space, NULL, err);
 }
 
 int study_start(struct store *store, const struct study_request *request,
@@ -702,7 +759,7 @@ int study_start(struct store *store, const struct study_request *request,
     *run_id = 0;
     *outcome = OPTIMIZE_INTERRUPTED;
     const struct optimize_settings *s = &request->settings;
-    int rc = design_space_check(&s->space, err);
+    int rc = design_space_check(&s->space, NULL, err);
     if (rc == FACET_OK)
         rc = store_check(store, err);
     if (rc == FACET_OK)
@@ -716,7 +773,7 @@ int study_start(struct store *store, const struct study_request *request,
         return rc;
     snprintf(run.name, sizeof run.name, "%s", request->name);
     snprintf(run.store_panels, sizeof run.store_panels, "%s",
-             request->store_panels ? request->store_panels : "front");
+             study_keep_panels_name(request->store_panels));
     /* Recorded absolute, so the run's surface is found from any folder;
      * a path realpath cannot resolve fails below, when it is read. */
     char absolute[4096];
@@ -765,7 +822,7 @@ int study_start(struct store *store, const struct study_request *request,
     run.max_panel_area = s->base.classify.max_panel_area;
     run.curvature_tol = s->base.classify.curvature_tol;
     snprintf(run.per_panel, sizeof run.per_panel, "%s",
-             s->base.mode == PANEL_MEAN ? "mean" : "extremes");
+             panel_mode_name(s->base.mode));
     run.flip_normals = request->flip_normals;
     snprintf(run.object, sizeof run.object, "%s",
              request->mesh.object ? request->mesh.object : "");
@@ -823,7 +880,7 @@ int study_resume(struct store *store, int64_t run_id,
     if (rc != FACET_OK) {
         /* Given back as it was found, resumable once the surface is. */
         struct facet_error ignored;
-        store_run_set_status(store, run_id, "interrupted", run.elapsed,
+        store_run_set_status(store, run_id, RUN_INTERRUPTED, run.elapsed,
                              &ignored);
     }
     if (rc == FACET_OK) {

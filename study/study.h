@@ -37,6 +37,22 @@ struct study_hooks {
     void (*warning)(void *context, const char *text);
 };
 
+/* Whose panels a run stores at the end; the others are computed when
+ * shown or exported. */
+enum study_keep_panels {
+    KEEP_FRONT,  /* every Pareto option's */
+    KEEP_KNEE,   /* the knee's alone */
+    KEEP_NONE
+};
+
+/* "front", "knee", "none", as runs.store_panels keeps them. */
+const char *study_keep_panels_name(enum study_keep_panels keep);
+/* The choice named text into *out; FACET_EINPUT naming the field what
+ * (the caller's name for it) and the choices. */
+int study_keep_panels_parse(const char *text, const char *what,
+                            enum study_keep_panels *out,
+                            struct facet_error *err);
+
 /* What a new run is made of. */
 struct study_request {
     const char *surface_path;
@@ -46,11 +62,19 @@ struct study_request {
                                         that applies */
     struct optimize_settings settings;
     const char *name;                /* "" for none */
-    const char *store_panels;        /* whose panels to store at the end:
-                                        "front" (NULL too), "knee" or
-                                        "none"; the others are computed
-                                        when shown or exported */
+    enum study_keep_panels store_panels;
 };
+
+/* What a new run takes when its user does not say, the one policy of
+ * `facet optimize` and the TUI's New run: the paper's design space (u
+ * 20:40, v 35:50 panels, a 3 mm threshold), the method study_auto_method
+ * gives for it, seed 1, 1000 random evaluations, NSGA-II with 100 x 50
+ * generations, the objectives cost, planarity and dp_area, the paper's
+ * classification and prices (option_params_defaults), metres, UV the
+ * first that applies, every core, the front's panels stored, no name and
+ * no surface. A caller that changes the space asks study_auto_method
+ * again when its user left the method to it. */
+void study_request_defaults(struct study_request *request);
 
 /* What storing costs on disk, as measured (a 680,000-panel front: 303
  * bytes a panel; a million options: 350 bytes each, indexes included),
@@ -67,6 +91,13 @@ struct study_request {
  * to STUDY_EXHAUSTIVE_LIMIT points with a stepped (or single) threshold,
  * NSGA-II otherwise. The CLI and the TUI's New run both ask this. */
 enum optimize_method study_auto_method(const struct design_space *space);
+
+/* The method text names for space: "auto" is study_auto_method's, any
+ * other name optimize_method_parse's (FACET_EINPUT naming the field what,
+ * the caller's name for it). */
+int study_method_parse(const char *text, const char *what,
+                       const struct design_space *space,
+                       enum optimize_method *out, struct facet_error *err);
 
 /* Checks what request asks for before anything is opened or created: a
  * name that is clean UTF-8 text of at most 127 bytes, a sound design

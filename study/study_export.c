@@ -54,8 +54,8 @@ int study_option_load(struct store *store, int64_t run, int64_t number,
         rc = study_settings(&p->run, &settings, &mesh, &flip, err);
     if (rc != FACET_OK)
         return rc;
-    p->classify = settings.base.classify;
-    p->classify.threshold = p->row.threshold_mm / 1000;
+    p->classify = option_params_at(&settings.base, p->row.nu, p->row.nv,
+                                   p->row.threshold_mm).classify;
     if (geometry) {
         rc = study_open_surface(store, &p->run, &p->surface, err);
         p->have_surface = 1;
@@ -268,9 +268,11 @@ int study_plot(struct store *store, const struct plot_request *r,
     if (r->nruns < 1 || r->nruns > PLOT_MAX_RUNS)
         return facet_error_set(err, FACET_EINPUT,
             "plot: 1 to %d runs in one plot", PLOT_MAX_RUNS);
-    if ((rc = check_column("--x", r->x, err)) ||
-        (rc = check_column("--y", r->y, err)) ||
-        (r->size && (rc = check_column("--size", r->size, err))) ||
+    static const char *const plain[3] = {"x", "y", "size"};
+    const char *const *name = r->axis_names ? r->axis_names : plain;
+    if ((rc = check_column(name[0], r->x, err)) ||
+        (rc = check_column(name[1], r->y, err)) ||
+        (r->size && (rc = check_column(name[2], r->size, err))) ||
         (rc = outfile_check(path, r->force, err)))
         return rc;
     struct run_points points[PLOT_MAX_RUNS];

@@ -77,6 +77,10 @@ struct plot_request {
     const struct filter *where;  /* the options of each run to plot; NULL:
                                     every one */
     int pareto_only;        /* rank 1 only */
+    const char *const *axis_names;  /* how the caller's user names x, y
+                                       and size, for the message of an
+                                       unknown column (the CLI's "--x");
+                                       NULL: "x", "y", "size" */
 };
 
 #define PLOT_MAX_RUNS 8

@@ -330,8 +330,8 @@ struct tui_screen *screen_compare_new(struct tui_app *app, int64_t run,
     struct run_info info;
     struct facet_error err;
     if (store_run_get(app->store, run, &info, &err) != FACET_OK ||
-        objectives_parse(info.objectives, s->objectives, &s->nobjectives,
-                         &err) != FACET_OK)
+        objectives_parse(info.objectives, "the run's objectives",
+                         s->objectives, &s->nobjectives, &err) != FACET_OK)
         s->nobjectives = 0;  /* no verdicts, the values still show */
     s->maps = 1;
     load_maps(s, app);

@@ -26,7 +26,6 @@
 #include "input.h"
 #include "job.h"
 #include "keys.h"
-#include "core/base/parallel.h"
 #include "study/study.h"
 
 enum field { F_SURFACE, F_UNITS, F_U, F_V, F_THRESHOLD, F_METHOD, F_SEED,
@@ -153,11 +152,16 @@ static void complete(struct newrun_screen *s, struct tui_app *app)
     s->listing = 1;
 }
 
-/* The request the form describes; FACET_EINPUT names the bad field. */
+/* The form's labels in the messages of the design space's checks. */
+static const struct design_space_names form_names = {
+    "U (panels)", "V (panels)", "Threshold (mm)"};
+
+/* The request the form describes, over study_request_defaults;
+ * FACET_EINPUT names the bad field by its label. */
 static int build(struct newrun_screen *s, struct study_request *r,
                  struct facet_error *err)
 {
-    memset(r, 0, sizeof *r);
+    study_request_defaults(r);
     const char *path = s->field[F_SURFACE].text;
     if (path[0] == '\0')
         return facet_error_set(err, FACET_EINPUT, "name the surface's OBJ "
@@ -167,50 +171,39 @@ static int build(struct newrun_screen *s, struct study_request *r,
                                path);
     r->surface_path = path;
     r->name = s->field[F_NAME].text;
-    memset(&r->settings.base, 0, sizeof r->settings.base);
-    classify_defaults(&r->settings.base.classify);
-    r->settings.base.mode = PANEL_EXTREMES;
-    r->mesh.units = UNITS_M;
-    int rc = mesh_units_parse(s->field[F_UNITS].text, &r->mesh.units, err);
+    int rc = mesh_units_parse(s->field[F_UNITS].text, field_label[F_UNITS],
+                              &r->mesh.units, err);
     struct optimize_settings *o = &r->settings;
     if (rc == FACET_OK)
-        rc = design_space_parse_sides(s->field[F_U].text, "U", &o->space.u_min,
-                         &o->space.u_max, err);
+        rc = design_space_parse_sides(s->field[F_U].text, field_label[F_U],
+                                      &o->space.u_min, &o->space.u_max, err);
     if (rc == FACET_OK)
-        rc = design_space_parse_sides(s->field[F_V].text, "V", &o->space.v_min,
-                         &o->space.v_max, err);
+        rc = design_space_parse_sides(s->field[F_V].text, field_label[F_V],
+                                      &o->space.v_min, &o->space.v_max, err);
     if (rc == FACET_OK)
         rc = design_space_parse_threshold(s->field[F_THRESHOLD].text,
+                                          field_label[F_THRESHOLD],
                                           &o->space, err);
     if (rc == FACET_OK)
-        rc = design_space_check(&o->space, err);
+        rc = design_space_check(&o->space, &form_names, err);
     if (rc != FACET_OK)
         return rc;
-    int continuous = o->space.t_max_mm > o->space.t_min_mm &&
-                     o->space.t_step_mm == 0;
     const char *method = s->field[F_METHOD].text;
-    if (strcmp(method, "auto") == 0 || method[0] == '\0')
-        o->method = study_auto_method(&o->space);
-    else if ((rc = optimize_method_parse(method, &o->method, err)))
+    if ((rc = study_method_parse(method[0] ? method : "auto",
+                                 field_label[F_METHOD], &o->space,
+                                 &o->method, err)))
         return rc;
-    if (o->method == METHOD_EXHAUSTIVE && continuous)
-        return facet_error_set(err, FACET_EINPUT,
-            "threshold %g:%g: the exhaustive method needs a step (A:B:STEP)",
-            o->space.t_min_mm, o->space.t_max_mm);
+    if ((rc = optimize_method_check(o->method, &o->space, &form_names, err)))
+        return rc;
     char *end;
     const char *seed = s->field[F_SEED].text;
     o->seed = strtoull(seed, &end, 10);
     if (end == seed || *end != '\0' || seed[0] == '-')
         return facet_error_set(err, FACET_EINPUT,
-            "seed: '%s' is not a whole number >= 0", seed);
-    o->evaluations = 1000;
-    o->population = 100;
-    o->generations = 50;
-    if ((rc = objectives_parse("cost,planarity,dp_area", o->objectives,
-                               &o->nobjectives, err)))
-        return rc;
+            "%s: '%s' is not a whole number >= 0", field_label[F_SEED], seed);
     struct classify_options *c = &o->base.classify;
-    if ((rc = classify_prices_parse(s->field[F_PRICES].text, c->price, err)))
+    if ((rc = classify_prices_parse(s->field[F_PRICES].text,
+                                    field_label[F_PRICES], c->price, err)))
         return rc;
     const char *yes = s->field[F_SP_AS_FP].text;
     if (strcmp(yes, "yes") == 0 || strcmp(yes, "y") == 0 ||
@@ -221,32 +214,15 @@ static int build(struct newrun_screen *s, struct study_request *r,
         c->sp_as_fp = 0;
     else
         return facet_error_set(err, FACET_EINPUT,
-            "SP priced as FP: '%s' is not yes or no", yes);
+            "%s: '%s' is not yes or no", field_label[F_SP_AS_FP], yes);
     const char *area = s->field[F_MAX_AREA].text;
     c->max_panel_area = strtod(area, &end);
     if (end == area || *end != '\0' || !(c->max_panel_area > 0) ||
         !isfinite(c->max_panel_area))
         return facet_error_set(err, FACET_EINPUT,
-            "max panel: '%s' is not an area > 0 (m^2)", area);
-    if ((rc = classify_check_options(c, err)))
-        return rc;
-    o->jobs = parallel_cpus(PARALLEL_MAX);
-    return FACET_OK;
-}
-
-/* The options the request will evaluate: the whole space for the
- * exhaustive method, the population times the generations for NSGA-II
- * (at most: a repeated option is not evaluated again), the evaluations
- * asked of the random one. */
-static uint64_t options_of(const struct study_request *r)
-{
-    const struct optimize_settings *o = &r->settings;
-    switch (o->method) {
-    case METHOD_EXHAUSTIVE: return design_space_size(&o->space);
-    case METHOD_NSGA2:
-        return (uint64_t)o->population * (uint64_t)o->generations;
-    default: return (uint64_t)o->evaluations;
-    }
+            "%s: '%s' is not an area > 0 (m^2)", field_label[F_MAX_AREA],
+            area);
+    return classify_check_options(c, err);
 }
 
 /* "336 options (exhaustive), about 0.6 s at 560/s (2 earlier runs)", or
@@ -259,13 +235,14 @@ static void estimate_text(struct newrun_screen *s, char *out, size_t size)
         snprintf(out, size, "Not ready: %.200s", err.message);
         return;
     }
-    uint64_t n = options_of(&r);
+    uint64_t n = (uint64_t)optimize_total(&r.settings);
     char count[32], time[32];
     tui_fmt_number(count, sizeof count, (double)n, 0, 1);
-    const char *method = r.settings.method == METHOD_EXHAUSTIVE
-                             ? "exhaustive"
-                             : r.settings.method == METHOD_NSGA2
-                                   ? "nsga2, at most" : "random";
+    /* NSGA-II evaluates a point met twice once: at most so many */
+    char method[32];
+    snprintf(method, sizeof method, "%s%s",
+             optimize_method_name(r.settings.method),
+             r.settings.method == METHOD_NSGA2 ? ", at most" : "");
     if (s->rate > 0) {
         tui_fmt_elapsed(time, sizeof time, (double)n / s->rate);
         snprintf(out, size, "F5 starts: %s options (%s), about %s at %.0f/s "
@@ -403,15 +380,22 @@ struct tui_screen *screen_newrun_new(struct tui_app *app,
         return NULL;
     }
     s->base.cls = &newrun_class;
-    struct classify_options c;
-    classify_defaults(&c);
-    char prices[96], area[32];
-    snprintf(prices, sizeof prices, "%g,%g,%g", c.price[TYPE_FP],
-             c.price[TYPE_SP], c.price[TYPE_DP]);
-    snprintf(area, sizeof area, "%g", c.max_panel_area);
+    /* the form opens on the defaults `facet optimize` takes too */
+    struct study_request r;
+    study_request_defaults(&r);
+    const struct design_space *d = &r.settings.space;
+    const struct classify_options *c = &r.settings.base.classify;
+    char u[32], v[32], t[32], seed[32], prices[96], area[32];
+    snprintf(u, sizeof u, "%d:%d", d->u_min, d->u_max);
+    snprintf(v, sizeof v, "%d:%d", d->v_min, d->v_max);
+    snprintf(t, sizeof t, "%g", d->t_min_mm);
+    snprintf(seed, sizeof seed, "%llu", (unsigned long long)r.settings.seed);
+    snprintf(prices, sizeof prices, "%g,%g,%g", c->price[TYPE_FP],
+             c->price[TYPE_SP], c->price[TYPE_DP]);
+    snprintf(area, sizeof area, "%g", c->max_panel_area);
     const char *const defaults[F_COUNT] = {
-        "", "m", "20:40", "35:50", "3", "auto", "1", prices,
-        c.sp_as_fp ? "yes" : "no", area, ""};
+        "", mesh_units_name(r.mesh.units), u, v, t, "auto", seed, prices,
+        c->sp_as_fp ? "yes" : "no", area, r.name};
     for (int f = 0; f < F_COUNT; f++)
         tui_input_set(&s->field[f], defaults[f]);
     measure_rate(s, app, surface_path);

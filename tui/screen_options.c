@@ -297,7 +297,7 @@ static void draw_title(struct options_screen *s, int width)
         {" ", s->run.name, 4},
         {" ", surface, 3},
         {" | ", s->run.method, 2},
-        {" | ", s->run.status, 0},
+        {" | ", run_status_name(s->run.status), 0},
         {" | ", count, 0},
         {", ", pareto, 1},
         {", ", knee, 0},
@@ -391,12 +391,13 @@ static void report(struct tui_app *app, int rc, const struct facet_error *e)
 {
     if (rc == FACET_OK)
         return;
-    /* filter_compile speaks of --where; here it is the filter line */
-    const char *m = e->message;
-    if (strncmp(m, "--where: ", 9) == 0)
-        tui_error(app, "filter: %s", m + 9);
+    /* an error of the filter line or the sort says which it is */
+    if (e->setting == FACET_SETTING_FILTER)
+        tui_error(app, "filter: %s", e->message);
+    else if (e->setting == FACET_SETTING_SORT)
+        tui_error(app, "sort: %s", e->message);
     else
-        tui_error(app, "%s", m);
+        tui_error(app, "%s", e->message);
 }
 
 static void apply_sort(struct options_screen *s, struct tui_app *app)
@@ -807,7 +808,7 @@ static int options_tick(struct tui_screen *base, struct tui_app *app)
 {
     struct options_screen *s = (struct options_screen *)base;
     struct facet_error err;
-    int live = strcmp(s->run.status, "running") == 0;
+    int live = s->run.status == RUN_RUNNING;
     int finished = s->runs_finished != app->runs_finished;
     /* this workbench's own run: at the gauge's sample; another
      * process's: every second */

@@ -507,7 +507,7 @@ static int parallel_tick(struct tui_screen *base, struct tui_app *app)
             tui_error(app, "%s", err.message);
         return 1;
     }
-    if (strcmp(s->run.status, "running") != 0 ||
+    if (s->run.status != RUN_RUNNING ||
         tui_seconds_since(&s->last_load) < 2.0)
         return 0;
     if (table_model_refresh(s->model, &err) != FACET_OK)

@@ -60,7 +60,7 @@ static int load(struct runs_screen *s, struct tui_app *app)
     for (size_t k = 0; k < n && !changed; k++)
         changed = runs[k].id != s->runs[k].id ||
                   runs[k].options != s->runs[k].options ||
-                  strcmp(runs[k].status, s->runs[k].status) != 0 ||
+                  runs[k].status != s->runs[k].status ||
                   runs[k].elapsed != s->runs[k].elapsed;
     int64_t keep = s->n > 0 ? s->runs[s->selected].id : 0;
     free(s->runs);
@@ -98,8 +98,8 @@ static void runs_draw(struct tui_screen *base, struct tui_app *app,
     s->rows = rows;
     if (s->n == 0) {
         tui_put(3, 2, width - 2, A_NORMAL,
-                "No runs yet. Press a (or F7) for a new run, or run "
-                "facet optimize SURFACE.obj --db FILE.");
+                "No runs yet. Press a (or F7) for a new run, or start "
+                "one with facet optimize from the shell.");
         return;
     }
     s->top = (size_t)table_model_scroll((int64_t)s->top,
@@ -115,7 +115,7 @@ static void runs_draw(struct tui_screen *base, struct tui_app *app,
         tui_fmt_started(started, sizeof started, run->started);
         int n = snprintf(line, sizeof line,
                          "%4lld %-11s %-10s %8lld %6lld %11s %9s %s%s",
-                         (long long)run->id, run->status, run->method,
+                         (long long)run->id, run_status_name(run->status), run->method,
                          (long long)run->options,
                          (long long)run->pareto_options, cost, elapsed,
                          wide ? started : "", wide ? "  " : "");
@@ -129,7 +129,7 @@ static void runs_draw(struct tui_screen *base, struct tui_app *app,
             tui_fit_fields(line + n, sizeof line - (size_t)n, width - n,
                            names, 2);
         attr_t attr = k == s->selected ? tui_attr(ROLE_SELECTION)
-                      : strcmp(run->status, "running") == 0
+                      : run->status == RUN_RUNNING
                           ? tui_attr(ROLE_PARETO)
                           : A_NORMAL;
         if (k == s->selected)
@@ -152,7 +152,7 @@ static void search_step(struct runs_screen *s, struct tui_app *app, int dir)
         if (strstr(s->runs[k].name, s->last_search) ||
             strstr(s->runs[k].surface_path, s->last_search) ||
             strstr(s->runs[k].method, s->last_search) ||
-            strstr(s->runs[k].status, s->last_search)) {
+            strstr(run_status_name(s->runs[k].status), s->last_search)) {
             s->selected = k;
             return;
         }
@@ -171,10 +171,9 @@ static void resume(struct runs_screen *s, struct tui_app *app)
         tui_error(app, "a run is already working; Ctrl-X stops it");
         return;
     }
-    if (strcmp(run->status, "interrupted") != 0 &&
-        strcmp(run->status, "failed") != 0) {
+    if (run->status != RUN_INTERRUPTED && run->status != RUN_FAILED) {
         tui_error(app, "run %lld is %s; only an interrupted or failed run "
-                  "resumes", (long long)run->id, run->status);
+                  "resumes", (long long)run->id, run_status_name(run->status));
         return;
     }
     struct facet_error err;
@@ -223,7 +222,7 @@ static enum tui_result runs_key(struct tui_screen *base, struct tui_app *app,
     case 'd': case KEY_F(8):
         if (s->n == 0)
             return RESULT_HANDLED;
-        if (strcmp(s->runs[s->selected].status, "running") == 0) {
+        if (s->runs[s->selected].status == RUN_RUNNING) {
             tui_error(app, "run %lld is running; stop it first",
                       (long long)s->runs[s->selected].id);
             return RESULT_HANDLED;

@@ -440,7 +440,7 @@ static void write_plot(struct scatter_screen *s, struct tui_app *app)
     struct plot_request request = {&run, 1, axis_name(s, 0), axis_name(s, 1),
                                    axis_name(s, 2), NULL, force,
                                    s->model->filter,
-                                   s->model->browse.pareto_only};
+                                   s->model->browse.pareto_only, NULL};
     struct facet_error err;
     if (study_plot(app->store, &request, path, &err) != FACET_OK)
         tui_error(app, "plot: %s", err.message);
@@ -480,9 +480,7 @@ static enum tui_result scatter_key(struct tui_screen *base,
             if (r == INPUT_DONE) {
                 if (table_model_set_filter(s->model, s->filter.text, &err) !=
                     FACET_OK)
-                    tui_error(app, "filter: %s",
-                              strncmp(err.message, "--where: ", 9) == 0
-                                  ? err.message + 9 : err.message);
+                    tui_error(app, "filter: %s", err.message);
                 else
                     load(s, app);
             }

@@ -15,7 +15,6 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <strings.h>
 #include <sys/stat.h>
 #include <time.h>
 #include <unistd.h>
@@ -464,10 +463,9 @@ static int poll_job(struct tui_app *app)
         tui_error(app, "run %lld failed: %s", (long long)st.run,
                   st.err.message);
     else if (st.outcome == OPTIMIZE_INTERRUPTED)
-        tui_status(app, "run %lld stopped with %lld options stored; "
-                   "facet optimize --db %s --resume %lld goes on",
-                   (long long)st.run, (long long)st.done, app->db_path,
-                   (long long)st.run);
+        tui_status(app, "run %lld stopped with %lld options stored; R on "
+                   "the Runs screen goes on with it", (long long)st.run,
+                   (long long)st.done);
     else if (st.warning[0] != '\0')
         tui_status(app, "run %lld done: %lld options; warning: %s",
                    (long long)st.run, (long long)st.total, st.warning);
@@ -475,12 +473,6 @@ static int poll_job(struct tui_app *app)
         tui_status(app, "run %lld done: %lld options", (long long)st.run,
                    (long long)st.total);
     return 1;
-}
-
-static int is_surface(const char *path)
-{
-    size_t n = strlen(path);
-    return n > 4 && strcasecmp(path + n - 4, ".obj") == 0;
 }
 
 /* The next byte of an escape sequence, if one was sent with it. */
@@ -692,18 +684,22 @@ static int may_create(const char *path)
     return line[0] == 'y' || line[0] == 'Y';
 }
 
-int tui_run(const char *path, struct facet_error *err)
+int tui_run(const char *db_path, const char *surface,
+            struct facet_error *err)
 {
     if (!isatty(STDIN_FILENO) || !isatty(STDOUT_FILENO))
         return facet_error_set(err, FACET_EINPUT,
             "tui: needs a terminal on stdin and stdout (for scripts use "
             "facet runs / facet options)");
-    const char *surface = path && is_surface(path) ? path : NULL;
     struct tui_app *app = calloc(1, sizeof *app);
     if (app == NULL)
         return facet_error_set(err, FACET_EWORK, "out of memory");
-    snprintf(app->db_path, sizeof app->db_path, "%s",
-             path && !surface ? path : "facet.db");
+    if (strlen(db_path) >= sizeof app->db_path) {
+        free(app);
+        return facet_error_set(err, FACET_EINPUT, "%.200s...: path too long",
+                               db_path);
+    }
+    snprintf(app->db_path, sizeof app->db_path, "%s", db_path);
     if (!may_create(app->db_path)) {
         printf("nothing created\n");
         free(app);

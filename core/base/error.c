@@ -18,7 +18,16 @@ void facet_error_clear(struct facet_error *err)
     if (err == NULL)
         return;
     err->code = FACET_OK;
+    err->setting = FACET_SETTING_NONE;
     err->message[0] = '\0';
+}
+
+static void set(struct facet_error *err, enum facet_setting setting,
+                int code, const char *fmt, va_list ap)
+{
+    vsnprintf(err->message, sizeof err->message, fmt, ap);
+    err->code = code;
+    err->setting = setting;
 }
 
 int facet_error_set(struct facet_error *err, int code, const char *fmt, ...)
@@ -26,9 +35,20 @@ int facet_error_set(struct facet_error *err, int code, const char *fmt, ...)
     if (err != NULL) {
         va_list ap;
         va_start(ap, fmt);
-        vsnprintf(err->message, sizeof err->message, fmt, ap);
+        set(err, FACET_SETTING_NONE, code, fmt, ap);
         va_end(ap);
-        err->code = code;
+    }
+    return code;
+}
+
+int facet_error_about(struct facet_error *err, enum facet_setting setting,
+                      int code, const char *fmt, ...)
+{
+    if (err != NULL) {
+        va_list ap;
+        va_start(ap, fmt);
+        set(err, setting, code, fmt, ap);
+        va_end(ap);
     }
     return code;
 }

@@ -224,8 +224,8 @@ int classify_check_options(const struct classify_options *options,
     return FACET_OK;
 }
 
-int classify_prices_parse(const char *text, double price[TYPE_COUNT],
-                          struct facet_error *err)
+int classify_prices_parse(const char *text, const char *what,
+                          double price[TYPE_COUNT], struct facet_error *err)
 {
     const char *p = text;
     for (int t = 0; t < TYPE_COUNT; t++) {
@@ -238,8 +238,8 @@ int classify_prices_parse(const char *text, double price[TYPE_COUNT],
         if (end == p || !isfinite(price[t]) || price[t] < 0 ||
             price[t] > 1e9 || *end != (t + 1 < TYPE_COUNT ? ',' : '\0'))
             return facet_error_set(err, FACET_EINPUT,
-                "--prices: '%s' is not FP,SP,DP in USD/m^2 (e.g. "
-                "701,766,1518)", text);
+                "%s: '%s' is not FP,SP,DP in USD/m^2 (e.g. "
+                "701,766,1518)", what, text);
         p = end + 1;
     }
     return FACET_OK;

@@ -115,9 +115,10 @@ void classify_panels(struct panelization *p,
                      struct option_totals *totals);
 
 /* Parses "701,766,1518", the prices of FP, SP and DP (USD/m^2, finite,
- * 0 to 1e9), into price. FACET_EINPUT names the text. */
-int classify_prices_parse(const char *text, double price[TYPE_COUNT],
-                          struct facet_error *err);
+ * 0 to 1e9), into price. FACET_EINPUT names the field what (the
+ * caller's name for it) and the text. */
+int classify_prices_parse(const char *text, const char *what,
+                          double price[TYPE_COUNT], struct facet_error *err);
 
 /* Checks options for values no facade has (negative or non-finite
  * threshold, prices, limits). Returns FACET_OK or FACET_EINPUT. */

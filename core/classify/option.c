@@ -5,6 +5,23 @@
 
 #include <string.h>
 
+void option_params_defaults(struct option_params *params)
+{
+    memset(params, 0, sizeof *params);
+    classify_defaults(&params->classify);
+    params->mode = PANEL_EXTREMES;
+}
+
+struct option_params option_params_at(const struct option_params *base,
+                                      int nu, int nv, double threshold_mm)
+{
+    struct option_params params = *base;
+    params.nu = nu;
+    params.nv = nv;
+    params.classify.threshold = threshold_mm / 1000;
+    return params;
+}
+
 int option_evaluate(const struct surface *surface,
                     const struct option_params *params,
                     struct panelization *panels,

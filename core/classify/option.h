@@ -21,6 +21,17 @@ struct option_params {
     struct classify_options classify;    /* threshold, eps, prices, limit */
 };
 
+/* The paper's defaults: classify_defaults, panels taking the extremes of
+ * their samples, no grid (0 x 0: set it with option_params_at). */
+void option_params_defaults(struct option_params *params);
+
+/* base with the grid nu x nv and the flatness threshold threshold_mm, a
+ * length in millimetres as the designer, the design space and the store
+ * write it, set in classify's metres (threshold_mm / 1000): the one place
+ * a design point becomes the parameters its evaluation takes. */
+struct option_params option_params_at(const struct option_params *base,
+                                      int nu, int nv, double threshold_mm);
+
 /* Evaluates params on the prepared surface: fills *panels (caller-owned,
  * released with panelization_free, also after a failure) and *totals.
  * Returns FACET_OK, FACET_EINPUT for a bad grid or option value,

@@ -46,9 +46,8 @@ int outfile_check(const char *path, int force, struct facet_error *err)
                                "%s is not a regular file: not replaced",
                                path);
     if (!force)
-        return facet_error_set(err, FACET_EINPUT,
-                               "%s exists (pass --force to overwrite it)",
-                               path);
+        return facet_error_about(err, FACET_SETTING_OVERWRITE, FACET_EINPUT,
+                                 "%s exists", path);
     return FACET_OK;
 }
 

@@ -32,8 +32,8 @@ struct outfile {
  * (an OBJ's MTL, a schedule's totals) have no place beside a stream. */
 int outfile_is_stream(const char *path);
 
-/* Fails with FACET_EINPUT, "PATH exists (pass --force to overwrite it)",
- * when a regular file exists at path and force is 0, and whatever force
+/* Fails with FACET_EINPUT, "PATH exists" about FACET_SETTING_OVERWRITE
+ * (error.h), when a regular file exists at path and force is 0, and whatever force
  * is when path is a symbolic link, a directory or a special file other
  * than a stream; FACET_OK otherwise. For writers of several files, to
  * refuse before creating any. */

@@ -22,6 +22,25 @@
 #include "core/base/sym3.h"
 #include "core/base/vec3.h"
 
+const char *panel_mode_name(enum panel_curvature_mode mode)
+{
+    return mode == PANEL_MEAN ? "mean" : "extremes";
+}
+
+int panel_mode_parse(const char *text, const char *what,
+                     enum panel_curvature_mode *out, struct facet_error *err)
+{
+    static const enum panel_curvature_mode all[] = {PANEL_EXTREMES,
+                                                    PANEL_MEAN};
+    for (size_t k = 0; k < sizeof all / sizeof all[0]; k++)
+        if (strcmp(text, panel_mode_name(all[k])) == 0) {
+            *out = all[k];
+            return FACET_OK;
+        }
+    return facet_error_set(err, FACET_EINPUT,
+                           "%s: '%s' is not extremes or mean", what, text);
+}
+
 const double panel_extent_direction[13][3] = {
     {1, 0, 0}, {0, 1, 0}, {0, 0, 1},
     {1, 1, 0}, {1, -1, 0}, {1, 0, 1}, {1, 0, -1}, {0, 1, 1}, {0, 1, -1},

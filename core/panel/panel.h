@@ -46,6 +46,15 @@ enum panel_curvature_mode {
     PANEL_MEAN       /* eigenvalues of the area-weighted mean shape operator */
 };
 
+/* "extremes", "mean": how the store, the JSON report and the per-panel
+ * setting name the modes. */
+const char *panel_mode_name(enum panel_curvature_mode mode);
+/* The mode named text into *out; FACET_EINPUT naming the field what (the
+ * caller's name for it) and the choices. */
+int panel_mode_parse(const char *text, const char *what,
+                     enum panel_curvature_mode *out,
+                     struct facet_error *err);
+
 struct panel {
     int i, j;                 /* the UV cell: i along u, j along v */
     double area;              /* m^2 */

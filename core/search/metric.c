@@ -43,8 +43,9 @@ double objective_value(const struct option_totals *totals,
     return o->maximise ? -value : value;
 }
 
-int objectives_parse(const char *text, struct objective *objectives,
-                     int *count, struct facet_error *err)
+int objectives_parse(const char *text, const char *what,
+                     struct objective *objectives, int *count,
+                     struct facet_error *err)
 {
     char list[256] = "";
     for (int m = 0; m < METRIC_COUNT; m++) {
@@ -71,15 +72,15 @@ int objectives_parse(const char *text, struct objective *objectives,
                 found = m;
         if (found < 0)
             return facet_error_set(err, FACET_EINPUT,
-                "--objectives: unknown metric '%.*s' (choose from %s)",
+                "%s: unknown metric '%.*s' (choose from %s)", what,
                 (int)length, p, list);
         for (int k = 0; k < *count; k++)
             if ((int)objectives[k].metric == found)
                 return facet_error_set(err, FACET_EINPUT,
-                    "--objectives: '%s' is named twice", names[found]);
+                    "%s: '%s' is named twice", what, names[found]);
         if (*count >= OBJECTIVES_MAX)
             return facet_error_set(err, FACET_EINPUT,
-                "--objectives: at most %d objectives", OBJECTIVES_MAX);
+                "%s: at most %d objectives", what, OBJECTIVES_MAX);
         objectives[*count].metric = (enum metric)found;
         objectives[*count].maximise = maximise;
         (*count)++;
@@ -89,6 +90,6 @@ int objectives_parse(const char *text, struct objective *objectives,
     }
     if (*count == 0)
         return facet_error_set(err, FACET_EINPUT,
-            "--objectives: name at least one metric (%s)", list);
+            "%s: name at least one metric (%s)", what, list);
     return FACET_OK;
 }

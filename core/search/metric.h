@@ -43,10 +43,11 @@ double metric_value(const struct option_totals *totals, enum metric metric);
 
 /* Parses "cost,planarity,dp_area" (each optionally "max:NAME") into
  * objectives[0..*count). Returns FACET_OK or FACET_EINPUT naming the
- * unknown metric and listing the valid ones, a repeated one, or more than
+ * field what (the caller's name for it), the unknown metric and listing the valid ones, a repeated one, or more than
  * OBJECTIVES_MAX. */
-int objectives_parse(const char *text, struct objective *objectives,
-                     int *count, struct facet_error *err);
+int objectives_parse(const char *text, const char *what,
+                     struct objective *objectives, int *count,
+                     struct facet_error *err);
 
 /* The value to minimise for objective o: the metric, negated when it is
  * maximised. */

@@ -25,7 +25,8 @@ const char *optimize_method_name(enum optimize_method method)
     }
 }
 
-int optimize_method_parse(const char *text, enum optimize_method *out,
+int optimize_method_parse(const char *text, const char *what,
+                          enum optimize_method *out,
                           struct facet_error *err)
 {
     static const enum optimize_method all[] = {METHOD_EXHAUSTIVE,
@@ -36,7 +37,8 @@ int optimize_method_parse(const char *text, enum optimize_method *out,
             return FACET_OK;
         }
     return facet_error_set(err, FACET_EINPUT,
-        "--method: '%s' unknown (choose exhaustive, random or nsga2)", text);
+        "%s: '%s' unknown (choose exhaustive, random or nsga2)", what,
+        text);
 }
 
 /* Threshold steps of an exhaustive space: t_min, t_min + step, ... up to
@@ -84,7 +86,7 @@ int design_space_parse_sides(const char *text, const char *what, int *lo,
         text);
 }
 
-int design_space_parse_threshold(const char *text,
+int design_space_parse_threshold(const char *text, const char *what,
                                  struct design_space *space,
                                  struct facet_error *err)
 {
@@ -95,14 +97,14 @@ int design_space_parse_threshold(const char *text,
         const char *end;
         if (n == 3)
             return facet_error_set(err, FACET_EINPUT,
-                "--threshold: '%s' is not MM, A:B or A:B:STEP", text);
+                "%s: '%s' is not MM, A:B or A:B:STEP", what, text);
         /* Decimal only: 0x10 is no threshold, not 16 mm. */
         int rc = numparse_double(p, p + strlen(p), &value[n], &end);
         if (rc != NUMPARSE_OK || !isfinite(value[n]) || value[n] < 0 ||
             value[n] > 1e6 || (*end != ':' && *end != '\0'))
             return facet_error_set(err, FACET_EINPUT,
-                "--threshold: '%s' is not MM, A:B or A:B:STEP (mm, 0 to "
-                "1e6)", text);
+                "%s: '%s' is not MM, A:B or A:B:STEP (mm, 0 to 1e6)",
+                what, text);
         n++;
         if (*end == '\0')
             break;
@@ -113,30 +115,39 @@ int design_space_parse_threshold(const char *text,
     space->t_step_mm = n == 3 ? value[2] : 0;
     if (space->t_max_mm < space->t_min_mm)
         return facet_error_set(err, FACET_EINPUT,
-            "--threshold: %g:%g runs backwards", space->t_min_mm,
+            "%s: %g:%g runs backwards", what, space->t_min_mm,
             space->t_max_mm);
     if (n == 3 && !(space->t_step_mm > 0))
         return facet_error_set(err, FACET_EINPUT,
-            "--threshold: the step of '%s' must be above 0", text);
+            "%s: the step of '%s' must be above 0", what, text);
     return FACET_OK;
 }
 
-int design_space_check(const struct design_space *s, struct facet_error *err)
+static const struct design_space_names plain_names = {"u", "v",
+                                                       "threshold"};
+
+int design_space_check(const struct design_space *s,
+                       const struct design_space_names *names,
+                       struct facet_error *err)
 {
+    if (names == NULL)
+        names = &plain_names;
     if (s->u_min < 1 || s->u_max < s->u_min || s->u_max > PANEL_MAX_GRID)
         return facet_error_set(err, FACET_EINPUT,
-            "--u %d:%d is not a range within 1..%d", s->u_min, s->u_max,
+            "%s %d:%d is not a range within 1..%d", names->u, s->u_min,
+            s->u_max,
             PANEL_MAX_GRID);
     if (s->v_min < 1 || s->v_max < s->v_min || s->v_max > PANEL_MAX_GRID)
         return facet_error_set(err, FACET_EINPUT,
-            "--v %d:%d is not a range within 1..%d", s->v_min, s->v_max,
+            "%s %d:%d is not a range within 1..%d", names->v, s->v_min,
+            s->v_max,
             PANEL_MAX_GRID);
     if (!isfinite(s->t_min_mm) || !isfinite(s->t_max_mm) ||
         s->t_min_mm < 0 || s->t_max_mm < s->t_min_mm ||
         !isfinite(s->t_step_mm) || s->t_step_mm < 0)
         return facet_error_set(err, FACET_EINPUT,
-            "--threshold %g:%g:%g is not a range of lengths (mm)",
-            s->t_min_mm, s->t_max_mm, s->t_step_mm);
+            "%s %g:%g:%g is not a range of lengths (mm)",
+            names->threshold, s->t_min_mm, s->t_max_mm, s->t_step_mm);
     /* Counted in floating point first: 1e6 / 1e-300 steps does not fit a
      * count, and must not wrap into one. */
     if (s->t_step_mm > 0 && s->t_max_mm > s->t_min_mm) {
@@ -144,11 +155,27 @@ int design_space_check(const struct design_space *s, struct facet_error *err)
                              1e-3) + 1;
         if (!(steps <= DESIGN_THRESHOLD_STEPS_MAX))
             return facet_error_set(err, FACET_EINPUT,
-                "--threshold %g:%g:%g is %.3g steps (at most %d: take a "
+                "%s %g:%g:%g is %.3g steps (at most %d: take a "
                 "larger step, or a continuous range A:B with nsga2)",
-                s->t_min_mm, s->t_max_mm, s->t_step_mm, steps,
+                names->threshold, s->t_min_mm, s->t_max_mm, s->t_step_mm, steps,
                 DESIGN_THRESHOLD_STEPS_MAX);
     }
+    return FACET_OK;
+}
+
+int optimize_method_check(enum optimize_method method,
+                          const struct design_space *s,
+                          const struct design_space_names *names,
+                          struct facet_error *err)
+{
+    if (names == NULL)
+        names = &plain_names;
+    if (method == METHOD_EXHAUSTIVE && s->t_max_mm > s->t_min_mm &&
+        s->t_step_mm == 0)
+        return facet_error_set(err, FACET_EINPUT,
+            "%s %g:%g: the exhaustive method needs a step (e.g. %g:%g:0.5)",
+            names->threshold, s->t_min_mm, s->t_max_mm, s->t_min_mm,
+            s->t_max_mm);
     return FACET_OK;
 }
 
@@ -191,10 +218,9 @@ static void evaluation_thread(void *argument)
         struct panelization panels;
         for (size_t x = plan->group[g]; x < plan->group[g + 1]; x++) {
             size_t k = plan->order[x];
-            struct option_params params = *plan->base;
-            params.nu = plan->points[k].nu;
-            params.nv = plan->points[k].nv;
-            params.classify.threshold = plan->points[k].threshold_mm / 1000;
+            struct option_params params = option_params_at(
+                plan->base, plan->points[k].nu, plan->points[k].nv,
+                plan->points[k].threshold_mm);
             if (x == plan->group[g]) {
                 job->rc = option_evaluate_lattice(plan->surface,
                                                   plan->lattice, &params,
@@ -290,7 +316,7 @@ static int evaluate(const struct surface *surface,
     atomic_init(&plan.next, 0);
     struct evaluation_job job[PARALLEL_MAX];
     for (int k = 0; k < jobs; k++)
-        job[k] = (struct evaluation_job){&plan, FACET_OK, {0, ""}};
+        job[k] = (struct evaluation_job){&plan, FACET_OK, {0, FACET_SETTING_NONE, ""}};
     parallel_run(job, sizeof job[0], jobs, evaluation_thread);
     free(order);
     free(group);
@@ -642,7 +668,7 @@ int optimize_run(const struct surface *surface,
                  enum optimize_outcome *outcome, struct facet_error *err)
 {
     *outcome = OPTIMIZE_DONE;
-    int rc = design_space_check(&settings->space, err);
+    int rc = design_space_check(&settings->space, NULL, err);
     if (rc != FACET_OK)
         return rc;
     int64_t total = optimize_total(settings);
@@ -671,7 +697,7 @@ int optimize_lattice(const struct surface *surface,
 {
     *out = NULL;
     const struct design_space *space = &settings->space;
-    int rc = design_space_check(space, err);
+    int rc = design_space_check(space, NULL, err);
     if (rc != FACET_OK)
         return rc;
     /* The grids the run evaluates, at most, from the settings alone. */

@@ -75,9 +75,19 @@ struct optimize_hooks {
 
 enum optimize_outcome { OPTIMIZE_DONE, OPTIMIZE_INTERRUPTED };
 
+/* How the caller's user names the fields of a design space, for the
+ * messages of the parsers and checks below: the CLI's flags ("--u"), the
+ * New-run form's labels ("U (panels)"). NULL: "u", "v", "threshold". */
+struct design_space_names {
+    const char *u, *v, *threshold;
+};
+
 /* Names: "exhaustive", "random", "nsga2". */
 const char *optimize_method_name(enum optimize_method method);
-int optimize_method_parse(const char *text, enum optimize_method *out,
+/* The method named text into *out; FACET_EINPUT naming the field what
+ * (the caller's name for it) and the choices. */
+int optimize_method_parse(const char *text, const char *what,
+                          enum optimize_method *out,
                           struct facet_error *err);
 
 /* Number of points of the exhaustive cross product (threshold steps from
@@ -91,9 +101,10 @@ int design_space_parse_sides(const char *text, const char *what, int *lo,
 
 /* Parses a threshold as a designer writes it (mm): "3" (one value), "1:5"
  * (a continuous range) or "1:5:0.5" (stepped), into space's t_min_mm,
- * t_max_mm and t_step_mm. FACET_EINPUT for anything else, a backward
- * range, a negative or non-finite value, or a step that is not above 0. */
-int design_space_parse_threshold(const char *text,
+ * t_max_mm and t_step_mm. FACET_EINPUT naming the field what for anything
+ * else, a backward range, a negative or non-finite value, or a step that
+ * is not above 0. */
+int design_space_parse_threshold(const char *text, const char *what,
                                  struct design_space *space,
                                  struct facet_error *err);
 
@@ -102,9 +113,18 @@ int design_space_parse_threshold(const char *text,
 
 /* Checks ranges (1 <= min <= max <= PANEL_MAX_GRID, finite thresholds
  * >= 0, step >= 0, at most DESIGN_THRESHOLD_STEPS_MAX threshold steps).
- * FACET_EINPUT names the bad range. */
+ * FACET_EINPUT names the bad range as names (NULL: plain words) do. */
 int design_space_check(const struct design_space *space,
+                       const struct design_space_names *names,
                        struct facet_error *err);
+
+/* Checks that method can search space: the exhaustive method needs a
+ * stepped (or single) threshold. FACET_EINPUT naming the threshold as
+ * names do. */
+int optimize_method_check(enum optimize_method method,
+                          const struct design_space *space,
+                          const struct design_space_names *names,
+                          struct facet_error *err);
 
 /* The options a run of settings evaluates at most (a point met twice is
  * evaluated once): the space for exhaustive, the evaluations for random,

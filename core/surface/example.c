@@ -144,7 +144,7 @@ int example_write(const char *name, int res, FILE *out,
         res = DEFAULT_RES;
     if (res < 1 || res > 4096)
         return facet_error_set(err, FACET_EINPUT,
-            "--res %d is out of range (1 to 4096)", res);
+            "resolution %d is out of range (1 to 4096)", res);
 
     fprintf(out, "# Facet example '%s': %s\n", name, descriptions[which]);
     fprintf(out, "# units: metres; vt = surface parameters (s, t); "

@@ -39,8 +39,8 @@ const char *mesh_units_name(enum mesh_units u)
     }
 }
 
-int mesh_units_parse(const char *text, enum mesh_units *out,
-                     struct facet_error *err)
+int mesh_units_parse(const char *text, const char *what,
+                     enum mesh_units *out, struct facet_error *err)
 {
     static const enum mesh_units all[] = {UNITS_M, UNITS_CM, UNITS_MM,
                                           UNITS_IN, UNITS_FT};
@@ -50,7 +50,7 @@ int mesh_units_parse(const char *text, enum mesh_units *out,
             return FACET_OK;
         }
     return facet_error_set(err, FACET_EINPUT,
-        "--units: units '%s' unknown (choose m, cm, mm, in or ft)", text);
+        "%s: units '%s' unknown (choose m, cm, mm, in or ft)", what, text);
 }
 
 void mesh_free(struct mesh *mesh)
@@ -470,9 +470,9 @@ int mesh_build(const struct obj_file *obj, const struct mesh_options *options,
     for (int k = 0; k < 3; k++)
         extent = fmax(extent, out->bbox_max[k] - out->bbox_min[k]);
     if (!isfinite(out->area) || !isfinite(extent) || extent > 1e15)
-        return facet_error_set(err, FACET_EINPUT,
+        return facet_error_about(err, FACET_SETTING_UNITS, FACET_EINPUT,
             "the surface's size overflows (it spans %.3g m, an area of %g "
-            "m^2): check the coordinates and --units", extent, out->area);
+            "m^2): check the coordinates and the units", extent, out->area);
 
     if (build_adjacency(out) != FACET_OK || build_incidence(out) != FACET_OK ||
         build_loops(out) != FACET_OK || build_components(out) != FACET_OK)
@@ -492,14 +492,14 @@ int mesh_units_warning(const struct mesh *mesh, enum mesh_units units,
     if (diagonal > 2000) {
         snprintf(warning, size,
                  "the surface is %.1f km across in %s; if the file is in "
-                 "millimetres, pass --units mm", diagonal / 1000,
+                 "millimetres, set its units to mm", diagonal / 1000,
                  mesh_units_name(units));
         return 1;
     }
     if (diagonal > 0 && diagonal < 0.05) {
         snprintf(warning, size,
                  "the surface is %.1f mm across in %s; if the file is in "
-                 "metres, pass --units m", diagonal * 1000,
+                 "metres, set its units to m", diagonal * 1000,
                  mesh_units_name(units));
         return 1;
     }

@@ -78,9 +78,10 @@ struct mesh {
 double mesh_units_scale(enum mesh_units u);
 
 /* Parses "m", "cm", "mm", "in" or "ft" into *out. Returns FACET_OK or
- * FACET_EINPUT with err naming the bad text. */
-int mesh_units_parse(const char *text, enum mesh_units *out,
-                     struct facet_error *err);
+ * FACET_EINPUT with err naming the field what (the caller's name for it)
+ * and the bad text. */
+int mesh_units_parse(const char *text, const char *what,
+                     enum mesh_units *out, struct facet_error *err);
 
 /* The name of u, as mesh_units_parse accepts it. */
 const char *mesh_units_name(enum mesh_units u);

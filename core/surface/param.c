@@ -137,11 +137,11 @@ static int try_vt(const struct mesh *mesh, const char *name,
     if (rc != FACET_OK)
         return rc;
     if (folds(&out->report))
-        return facet_error_set(err, FACET_EINPUT,
+        return facet_error_about(err, FACET_SETTING_OBJECT, FACET_EINPUT,
             "%s: the texture coordinates fold (%zu flipped, %zu "
             "overlapping UV triangles); re-export the surface with its "
-            "surface parameters as UV, or select one surface with "
-            "--object", name, out->report.flipped,
+            "surface parameters as UV, or select one object", name,
+            out->report.flipped,
             out->report.overlapping);
     struct uv_chart chart[3];
     size_t found;
@@ -157,11 +157,11 @@ static int try_vt(const struct mesh *mesh, const char *name,
                 "%s%zu triangles in u %.3g..%.3g, v %.3g..%.3g",
                 c ? "; " : "", chart[c].triangles, chart[c].umin,
                 chart[c].umax, chart[c].vmin, chart[c].vmax);
-        return facet_error_set(err, FACET_EINPUT,
+        return facet_error_about(err, FACET_SETTING_CHART, FACET_EINPUT,
             "%s: the texture coordinates form %ld separate UV charts "
             "(%s%s), and a panel must not hold pieces of two: export one "
-            "chart per object and select it with --object or --group, or "
-            "re-parameterize a disk-like surface with --uv harmonic",
+            "chart per object and select its object or group, or "
+            "re-parameterize a disk-like surface with the harmonic UV",
             name, charts, list, charts > 3 ? "; ..." : "");
     }
     snprintf(out->reason, sizeof out->reason,

@@ -86,13 +86,13 @@ int surface_open(const char *path, const struct mesh_options *options,
             obj_names_list(out->obj.objects, out->obj.nobjects, names,
                        sizeof names);
             warn(out, "the file holds %zu separate surfaces; objects: %s "
-                 "(select one with --object NAME)",
+                 "(select one by its object name)",
                  out->mesh.ncomponents, names);
         } else if (out->obj.ngroups > 2) {
             obj_names_list(out->obj.groups, out->obj.ngroups, names,
                        sizeof names);
             warn(out, "the file holds %zu separate surfaces; groups: %s "
-                 "(select one with --group NAME)",
+                 "(select one by its group name)",
                  out->mesh.ncomponents, names);
         } else {
             warn(out, "the file holds %zu separate surfaces in one object "
@@ -118,17 +118,16 @@ int surface_require_single(const struct surface *surface,
     if (surface->obj.nobjects > 2) {
         obj_names_list(surface->obj.objects, surface->obj.nobjects, names,
                    sizeof names);
-        return facet_error_set(err, FACET_EINPUT,
-            "%s holds %zu separate surfaces; select one with --object NAME "
-            "(objects: %s)", surface->path, surface->mesh.ncomponents,
-            names);
+        return facet_error_about(err, FACET_SETTING_OBJECT, FACET_EINPUT,
+            "%s holds %zu separate surfaces (objects: %s); select one "
+            "object", surface->path, surface->mesh.ncomponents, names);
     }
     if (surface->obj.ngroups > 2) {
         obj_names_list(surface->obj.groups, surface->obj.ngroups, names,
                    sizeof names);
-        return facet_error_set(err, FACET_EINPUT,
-            "%s holds %zu separate surfaces; select one with --group NAME "
-            "(groups: %s)", surface->path, surface->mesh.ncomponents, names);
+        return facet_error_about(err, FACET_SETTING_GROUP, FACET_EINPUT,
+            "%s holds %zu separate surfaces (groups: %s); select one group",
+            surface->path, surface->mesh.ncomponents, names);
     }
     return facet_error_set(err, FACET_EINPUT,
         "%s holds %zu separate surfaces in one object; export the surface "

@@ -65,7 +65,7 @@ int main(int argc, char **argv)
     s->space = (struct design_space){20, 40, 35, 50, 3, 3, 0};
     s->seed = 1;
     s->jobs = jobs;
-    if (objectives_parse("cost,planarity,dp_area", s->objectives,
+    if (objectives_parse("cost,planarity,dp_area", "objectives", s->objectives,
                          &s->nobjectives, &err) != FACET_OK)
         die(&err);
 

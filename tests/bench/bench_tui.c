@@ -194,7 +194,7 @@ static int64_t generate(struct store *store, int64_t n)
     if (store_options_set_pareto(store, info.id, numbers, rank, crowding,
                                  front, front ? numbers[front / 2] : 0, NAN,
                                  &err) != FACET_OK ||
-        store_run_set_status(store, info.id, "done", put, &err) != FACET_OK ||
+        store_run_set_status(store, info.id, RUN_DONE, put, &err) != FACET_OK ||
         store_analyze(store, &err) != FACET_OK)  /* as a run's end does */
         die("ranking", &err);
     printf("generated %lld options in %.1f s (%.0f rows/s, batches of %d);"
@@ -224,7 +224,7 @@ static int64_t find_run(struct store *store, int64_t n)
     int64_t id = 0;
     for (size_t k = 0; k < count; k++)
         if (strcmp(runs[k].name, name) == 0 && runs[k].options == n &&
-            strcmp(runs[k].status, "done") == 0)
+            runs[k].status == RUN_DONE)
             id = runs[k].id;
     free(runs);
     return id;

@@ -12,6 +12,10 @@
 # its spelling. Of the system headers, <sqlite3.h> belongs to store/ and
 # <curses.h> (<ncurses.h>, <term.h>) to tui/ alone.
 #
+# Below cli/, no string literal names a command-line flag ("--threshold"):
+# the same message reaches the TUI's forms, and core/base/error.h says how
+# a caller names its fields instead. Comments may name flags.
+#
 # Prints one "ok - ..." or "not ok - ..." line per floor, with the
 # offending lines below a failure; tests/run.sh counts them. Reads only the
 # sources: it needs no build.
@@ -82,6 +86,53 @@ for floor in core store study tui cli; do
     else
         echo "not ok - $floor/ includes only from {$(may_use "$floor")}"
         printf '  %s\n' "${bad[@]}"
+        status=1
+    fi
+done
+# String literals below cli/ that hold a --flag word: a C lexer that
+# skips comments and reads strings, char constants and escapes as the
+# compiler does (adjacent literals are checked one by one, which a flag
+# split across two of them would slip past; none is written so).
+flag_literals() {
+    python3 - "$@" <<'PY'
+import re, sys
+flag = re.compile(r'(?<![-\w])--[a-z]')
+for path in sys.argv[1:]:
+    text = open(path, encoding='utf-8', errors='replace').read()
+    i, n, line = 0, len(text), 1
+    while i < n:
+        c = text[i]
+        if c == '\n':
+            line += 1
+            i += 1
+        elif text.startswith('//', i):
+            while i < n and text[i] != '\n':
+                i += 1
+        elif text.startswith('/*', i):
+            end = text.find('*/', i + 2)
+            end = n if end < 0 else end + 2
+            line += text.count('\n', i, end)
+            i = end
+        elif c == '"' or c == "'":
+            j, start = i + 1, line
+            while j < n and text[j] != c and text[j] != '\n':
+                j += 2 if text[j] == '\\' else 1
+            if c == '"' and flag.search(text[i + 1:j]):
+                print('%s:%d: %s' % (path, start, text[i:j + 1]))
+            i = j + 1
+        else:
+            i += 1
+PY
+}
+
+for floor in core store study tui; do
+    [ -d "$floor" ] || continue
+    found=$(flag_literals $(find "$floor" -name '*.[ch]' | sort))
+    if [ -z "$found" ]; then
+        echo "ok - no string of $floor/ names a command-line flag"
+    else
+        echo "not ok - no string of $floor/ names a command-line flag"
+        printf '%s\n' "$found" | sed 's/^/  /'
         status=1
     fi
 done

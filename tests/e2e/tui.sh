@@ -250,7 +250,7 @@ check "Tab completes a file" 'Surface \(OBJ\) +roof\.obj *$'
 keys Tab
 check "Tab on a complete path goes to the next field" 'm, cm, mm, in or ft'
 keys Down Down Down Down Down Down C-u abc F5
-check "a bad price is refused, naming the field" "prices: 'abc' is not FP,SP,DP"
+check "a bad price is refused, naming the field" "new run: Prices FP,SP,DP: 'abc' is not FP,SP,DP"
 keys C-u 700,766,1518 Down C-u yes Down C-u 9.5 Up Up Up Up Up Up Up Up
 keys Down C-u 4:5 Down C-u 4:6 F5
 check "F5 starts the run and opens its table" '^ Run 1 roof\.obj \| exhaustive'
@@ -272,6 +272,24 @@ keys j R
 check_slow "R resumes the run stopped from the UI to the end" '^ +2 done +exhaustive +4107 '
 keys F10
 check_exit "quits after a New run"
+# the database and the surface named both, or by flag, whatever their names
+cp "$WORK/roof.obj" "$WORK/roof.mesh"
+start 80 24 -- two.db roof.obj
+check "DB SURFACE: a missing DB is asked about" '^two\.db does not exist\. Create'
+keys y Enter
+check "DB SURFACE opens the New run form into DB" '^ New run into two\.db'
+check "DB SURFACE: the form holds the surface" 'Surface \(OBJ\) +roof\.obj'
+keys Escape
+check "DB SURFACE: Esc goes back to the runs" '^ Facet runs +two\.db'
+keys F10
+check_exit "quits (DB SURFACE)"
+start 80 24 -- --db two.db --surface roof.mesh
+check "--db and --surface: the form, whatever the surface's name" 'Surface \(OBJ\) +roof\.mesh'
+check "--db and --surface: into the DB given" '^ New run into two\.db'
+keys Escape
+check "--db and --surface: Esc goes back to the runs" '^ Facet runs +two\.db'
+keys F10
+check_exit "quits (--db --surface)"
 # (read after the workbench quits: see the note on store_open in the
 # report: another process closing the database while the workbench runs
 # a job can leave the workbench on a stale view)

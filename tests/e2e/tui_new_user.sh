@@ -216,6 +216,34 @@ check "vt100: xterm's F5 still opens the scatter" '^ Scatter:'
 bytes '\033[21~'
 check_exit "vt100: xterm's F10 quits"
 
+# --- the New-run form names its own fields, never a command-line flag ---
+start 80 24 -- demo.db
+check "runs (form words)" '^ +1 done'
+keys a
+check "the New run form (form words)" '^ New run into demo\.db'
+keys roof.obj Down Down C-u 0:5
+check "a bad U range names the form's field" 'Not ready: U \(panels\) 0:5 is not a range within 1\.\.'
+keys C-u 20:40 Down Down C-u 5:1
+check "a backward threshold names the form's field" 'Not ready: Threshold \(mm\): 5:1 runs backwards'
+keys F5
+check "F5 refuses it, naming the field" 'new run: Threshold \(mm\): 5:1 runs backwards'
+if screen | grep -E 'Not ready|new run:' | grep -qE -- '--[a-z]'; then
+    echo "not ok - the form's messages name no command-line flag"
+    screen | sed 's/^/  screen: /'
+else
+    pass "the form's messages name no command-line flag"
+fi
+keys C-u 1:5 Down C-u exhaustive
+check "exhaustive over a continuous threshold names the field" 'Not ready: Threshold \(mm\) 1:5: the exhaustive method needs a step'
+# NSGA-II evaluates its first population and then one per generation:
+# 100 x (50 + 1) points at most, the count optimize_total gives a run
+keys C-u nsga2
+check "the estimate of NSGA-II counts its first generation too" 'F5 starts: 5,100 options \(nsga2, at most\)'
+keys Escape
+check "back to the runs" '^ +1 done'
+keys F10
+check_exit "F10 quits (form words)"
+
 # --- item 3: a run watched from its table ends refreshed; F10 asks while
 # it works ---
 start 80 24 -- demo.db

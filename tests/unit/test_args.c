@@ -87,11 +87,45 @@ static void test_numbers(void **state)
     assert_int_equal(args_double("-1", 0, 10, "--t", &x, &err), FACET_EINPUT);
 }
 
+/* A command's own table and a shared one parse as one: each flag lands
+ * where its own table points, and a misspelling is matched against both. */
+static void test_shared_table(void **state)
+{
+    (void)state;
+    const char *grid = NULL, *units = NULL;
+    int flip = 0;
+    const struct arg_option own[] = {
+        {"grid", 'g', ARG_STRING, &grid, NULL},
+        {NULL, 0, ARG_FLAG, NULL, NULL},
+    };
+    const struct arg_option shared[] = {
+        {"units", 'u', ARG_STRING, &units, NULL},
+        {"flip-normals", 0, ARG_FLAG, NULL, &flip},
+        {NULL, 0, ARG_FLAG, NULL, NULL},
+    };
+    char *argv[] = {"classify", "-u", "mm", "a.obj", "--grid", "3x4",
+                    "--flip-normals"};
+    const char *positional[1];
+    int count;
+    struct facet_error err;
+    assert_int_equal(args_parse_shared(7, argv, own, shared, positional, 1,
+                                       &count, &err), FACET_OK);
+    assert_string_equal(grid, "3x4");
+    assert_string_equal(units, "mm");
+    assert_int_equal(flip, 1);
+    assert_string_equal(positional[0], "a.obj");
+    char *typo[] = {"classify", "--flip-normal"};
+    assert_int_equal(args_parse_shared(2, typo, own, shared, positional, 1,
+                                       &count, &err), FACET_EINPUT);
+    assert_non_null(strstr(err.message, "did you mean --flip-normals?"));
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_forms),
         cmocka_unit_test(test_errors),
+        cmocka_unit_test(test_shared_table),
         cmocka_unit_test(test_numbers),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

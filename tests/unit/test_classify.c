@@ -13,6 +13,7 @@
 #include <string.h>
 
 #include "core/classify/classify.h"
+#include "core/classify/option.h"
 #include "core/base/sym3.h"
 
 static void test_table_one(void **state)
@@ -255,10 +256,38 @@ static void test_sym3(void **state)
     assert_true(value[0] == -1 && value[1] == 0 && value[2] == 2);
 }
 
+/* A design point's threshold is written in mm and classified in m: a
+ * panel 2.5 mm off its plane is within a 3 mm threshold and outside a
+ * 2 mm one, and a 3 mm sag over a 2 m diagonal is the curvature
+ * k = 8 s / d^2 = 0.006 1/m (the sagitta of a circular arc) that the
+ * default tolerance takes. */
+static void test_design_point_threshold_in_metres(void **state)
+{
+    (void)state;
+    struct option_params base;
+    option_params_defaults(&base);
+    base.classify.price[TYPE_DP] = 1234;
+    struct option_params p = option_params_at(&base, 12, 34, 3);
+    assert_int_equal(p.nu, 12);
+    assert_int_equal(p.nv, 34);
+    assert_true(p.classify.price[TYPE_DP] == 1234);  /* the rest kept */
+    assert_true(fabs(p.classify.threshold - 0.003) < 1e-15);
+    struct panel panel;
+    memset(&panel, 0, sizeof panel);
+    panel.diameter = 2;
+    panel.deviation = 0.0025;
+    assert_true(classify_within_threshold(&p.classify, &panel));
+    struct option_params tight = option_params_at(&base, 12, 34, 2);
+    assert_false(classify_within_threshold(&tight.classify, &panel));
+    assert_true(fabs(classify_tolerance(&p.classify, &panel) - 0.006) <
+                1e-12);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_table_one),
+        cmocka_unit_test(test_design_point_threshold_in_metres),
         cmocka_unit_test(test_zero_tolerance),
         cmocka_unit_test(test_types),
         cmocka_unit_test(test_threshold_cost_and_totals),

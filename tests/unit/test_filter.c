@@ -87,6 +87,8 @@ static void expect_error(const char *text, const char *message)
         fail_msg("'%s' compiled (rc %d), expected: %s", text, rc, message);
     assert_null(f);
     assert_int_equal(err.code, FACET_EINPUT);
+    /* about the filter: each front-end names its own field for it */
+    assert_int_equal(err.setting, FACET_SETTING_FILTER);
     assert_string_equal(err.message, message);
 }
 
@@ -424,94 +426,94 @@ static void test_error_positions(void **state)
         const char *text, *message;
     } cases[] = {
         {"cost < 1.5e6 and dp_aera <= 900",
-         "--where: column 18: unknown column 'dp_aera' (did you mean "
+         "column 18: unknown column 'dp_aera' (did you mean "
          "dp_area?)"},
-        {"cost <", "--where: column 7: expected a number after '<'"},
+        {"cost <", "column 7: expected a number after '<'"},
         {"cost <= feasible",
-         "--where: column 9: expected a number after '<='"},
-        {"cost < 5 or (knee))", "--where: column 19: unexpected ')'"},
-        {")", "--where: column 1: unexpected ')'"},
+         "column 9: expected a number after '<='"},
+        {"cost < 5 or (knee))", "column 19: unexpected ')'"},
+        {")", "column 1: unexpected ')'"},
         {"nu > 2 and (cost < 5",
-         "--where: column 21: missing ')' for the '(' at column 12"},
-        {"  (cost < 5", "--where: column 12: missing ')' for the '(' at "
+         "column 21: missing ')' for the '(' at column 12"},
+        {"  (cost < 5", "column 12: missing ')' for the '(' at "
                         "column 3"},
-        {"((knee)", "--where: column 8: missing ')' for the '(' at column 1"},
-        {"cost 5", "--where: column 6: expected a comparison (<, <=, >, >=, "
+        {"((knee)", "column 8: missing ')' for the '(' at column 1"},
+        {"cost 5", "column 6: expected a comparison (<, <=, >, >=, "
                    "=, !=) after 'cost'"},
-        {"dp_area cost", "--where: column 9: expected a comparison (<, <=, "
+        {"dp_area cost", "column 9: expected a comparison (<, <=, "
                          ">, >=, =, !=) after 'dp_area'"},
-        {"cost !< 5", "--where: column 6: expected a comparison (<, <=, >, "
+        {"cost !< 5", "column 6: expected a comparison (<, <=, >, "
                       ">=, =, !=) after 'cost'"},
-        {"5 and knee", "--where: column 3: expected a comparison (<, <=, >, "
+        {"5 and knee", "column 3: expected a comparison (<, <=, >, "
                        ">=, =, !=) after '5'"},
-        {"not cost", "--where: column 5: 'cost' is not a yes/no column; "
+        {"not cost", "column 5: 'cost' is not a yes/no column; "
                      "compare it, e.g. cost < 1e6"},
-        {"\t\tcost", "--where: column 3: 'cost' is not a yes/no column; "
+        {"\t\tcost", "column 3: 'cost' is not a yes/no column; "
                      "compare it, e.g. cost < 1e6"},
-        {"knee and U or pareto", "--where: column 10: 'U' is not a yes/no "
+        {"knee and U or pareto", "column 10: 'U' is not a yes/no "
                                  "column; compare it, e.g. nu < 30"},
-        {"pareto = 1", "--where: column 1: 'pareto' is yes/no and cannot be "
+        {"pareto = 1", "column 1: 'pareto' is yes/no and cannot be "
                        "compared; write pareto, or compare rank, e.g. rank "
                        "<= 2"},
-        {"1 = Pareto", "--where: column 5: 'Pareto' is yes/no and cannot be "
+        {"1 = Pareto", "column 5: 'Pareto' is yes/no and cannot be "
                        "compared; write pareto, or compare rank, e.g. rank "
                        "<= 2"},
-        {"5 < 6", "--where: column 5: expected a column after '<'"},
-        {"5 <", "--where: column 4: expected a column after '<'"},
+        {"5 < 6", "column 5: expected a column after '<'"},
+        {"5 <", "column 4: expected a column after '<'"},
         {"cost < 5 adn nu > 3",
-         "--where: column 10: unexpected 'adn' (did you mean and?)"},
+         "column 10: unexpected 'adn' (did you mean and?)"},
         {"cost < 5 nu > 3",
-         "--where: column 10: unexpected 'nu'; join conditions with and / "
+         "column 10: unexpected 'nu'; join conditions with and / "
          "or"},
         {"feasible 1",
-         "--where: column 10: unexpected '1'; join conditions with and / "
+         "column 10: unexpected '1'; join conditions with and / "
          "or"},
         {"(cost < 5 knee)",
-         "--where: column 11: unexpected 'knee'; join conditions with and / "
+         "column 11: unexpected 'knee'; join conditions with and / "
          "or"},
         {"cost < 5 < 6",
-         "--where: column 10: unexpected '<'; compare one column with one "
+         "column 10: unexpected '<'; compare one column with one "
          "number at a time, e.g. cost > 5 and cost < 10"},
-        {"()", "--where: column 2: expected a condition after '(', not ')'"},
-        {"cost < 5 and", "--where: column 13: expected a condition after "
+        {"()", "column 2: expected a condition after '(', not ')'"},
+        {"cost < 5 and", "column 13: expected a condition after "
                          "'and'"},
-        {"knee or or pareto", "--where: column 9: expected a condition after "
+        {"knee or or pareto", "column 9: expected a condition after "
                               "'or', not 'or'"},
-        {"not", "--where: column 4: expected a condition after 'not'"},
-        {"and knee", "--where: column 1: unexpected 'and'; a condition "
+        {"not", "column 4: expected a condition after 'not'"},
+        {"and knee", "column 1: unexpected 'and'; a condition "
                      "starts with a column, a number, not or '('"},
-        {"<= 5", "--where: column 1: unexpected '<='; a condition starts "
+        {"<= 5", "column 1: unexpected '<='; a condition starts "
                  "with a column, a number, not or '('"},
-        {"cost & 5", "--where: column 6: '&' is not an operator; write and "
+        {"cost & 5", "column 6: '&' is not an operator; write and "
                      "(or &&)"},
-        {"knee | pareto", "--where: column 6: '|' is not an operator; write "
+        {"knee | pareto", "column 6: '|' is not an operator; write "
                           "or (or ||)"},
-        {"cost < 5 # x", "--where: column 10: unexpected '#'"},
-        {"cost < 5 and é", "--where: column 14: unexpected character 'é'"},
-        {"cöst < 5", "--where: column 2: unexpected character 'ö'"},
-        {"cost < 5m", "--where: column 9: 'm' after a number is ambiguous; "
+        {"cost < 5 # x", "column 10: unexpected '#'"},
+        {"cost < 5 and é", "column 14: unexpected character 'é'"},
+        {"cöst < 5", "column 2: unexpected character 'ö'"},
+        {"cost < 5m", "column 9: 'm' after a number is ambiguous; "
                       "write k (thousand) or M (million)"},
-        {"1e6and", "--where: column 1: malformed number '1e6and'"},
-        {"cost < 1.2.3", "--where: column 8: malformed number '1.2.3'"},
-        {"cost < 5kg", "--where: column 8: malformed number '5kg'"},
-        {"cost < 1e3k", "--where: column 8: number '1e3k' has both an "
+        {"1e6and", "column 1: malformed number '1e6and'"},
+        {"cost < 1.2.3", "column 8: malformed number '1.2.3'"},
+        {"cost < 5kg", "column 8: malformed number '5kg'"},
+        {"cost < 1e3k", "column 8: number '1e3k' has both an "
                         "exponent and a k/M suffix; write one"},
-        {"cost < 1e999", "--where: column 8: number '1e999' is out of "
+        {"cost < 1e999", "column 8: number '1e999' is out of "
                          "range"},
-        {"cost < -1e999", "--where: column 8: number '-1e999' is out of "
+        {"cost < -1e999", "column 8: number '-1e999' is out of "
                           "range"},
-        {"thresold < 3", "--where: column 1: unknown column 'thresold' (did "
+        {"thresold < 3", "column 1: unknown column 'thresold' (did "
                          "you mean threshold?)"},
-        {"paerto", "--where: column 1: unknown column 'paerto' (did you "
+        {"paerto", "column 1: unknown column 'paerto' (did you "
                    "mean pareto?)"},
-        {"knee and 3 < crowdnig", "--where: column 14: unknown column "
+        {"knee and 3 < crowdnig", "column 14: unknown column "
                                   "'crowdnig' (did you mean crowding?)"},
     };
     for (size_t k = 0; k < sizeof cases / sizeof *cases; k++)
         expect_error(cases[k].text, cases[k].message);
 
     /* With nothing near, the message lists the names instead. */
-    expect_error("x < 5", "--where: column 1: unknown column 'x' (columns: "
+    expect_error("x < 5", "column 1: unknown column 'x' (columns: "
                            "number, generation, nu, nv, threshold_mm, panels, "
                            "fp_count, sp_count, dp_count, fp_area, sp_area, "
                            "dp_area, area, fp_cost, sp_cost, dp_cost, cost, "
@@ -529,20 +531,20 @@ static void test_nan_and_infinity(void **state)
         "cost < +INF", "nan > cost",  "cost < Infinity", "knee or -nan < 1",
     };
     for (size_t k = 0; k < sizeof texts / sizeof *texts; k++)
-        expect_error_parts(texts[k], "--where: column ",
+        expect_error_parts(texts[k], "column ",
                            "NaN and infinity are not allowed; write a finite "
                            "number");
-    expect_error("cost < nan", "--where: column 8: NaN and infinity are not "
+    expect_error("cost < nan", "column 8: NaN and infinity are not "
                                "allowed; write a finite number");
-    expect_error("knee or -nan < 1", "--where: column 9: NaN and infinity "
+    expect_error("knee or -nan < 1", "column 9: NaN and infinity "
                                      "are not allowed; write a finite number");
     /* Numbers too large for a double, written or reached with a suffix. */
     char big[400];
     memset(big, '9', 330);
     strcpy(big + 330, "M > cost");
-    expect_error_parts(big, "--where: column 1: number '999",
+    expect_error_parts(big, "column 1: number '999",
                        "...' is out of range");
-    expect_error("cost < 1e308k", "--where: column 8: number '1e308k' has "
+    expect_error("cost < 1e308k", "column 8: number '1e308k' has "
                                   "both an exponent and a k/M suffix; write "
                                   "one");
 }
@@ -668,7 +670,7 @@ static void test_hostile_nesting(void **state)
 
     text = nested(FILTER_MAX_DEPTH + 1, "knee");
     snprintf(expected, sizeof expected,
-             "--where: column %d: nested too deeply (more than %d "
+             "column %d: nested too deeply (more than %d "
              "parentheses and nots)",
              FILTER_MAX_DEPTH + 1, FILTER_MAX_DEPTH);
     expect_error(text, expected);
@@ -698,14 +700,14 @@ static void test_hostile_nesting(void **state)
         strcat(text, "!");
     strcat(text, "knee");
     snprintf(expected, sizeof expected,
-             "--where: column %d: nested too deeply (more than %d "
+             "column %d: nested too deeply (more than %d "
              "parentheses and nots)",
              FILTER_MAX_DEPTH + 1, FILTER_MAX_DEPTH);
     expect_error(text, expected);
     text[0] = '\0';
     for (int k = 0; k < 1000; k++)
         strcat(text, "(!");
-    expect_error_parts(text, "--where: column ", "nested too deeply");
+    expect_error_parts(text, "column ", "nested too deeply");
     free(text);
 
     /* Long and/or chains are flat, not deep: 300 terms at depth 1 (as
@@ -732,7 +734,7 @@ static void test_hostile_length(void **state)
     (void)state;
     char expected[128];
     snprintf(expected, sizeof expected,
-             "--where: column %d: the expression is longer than %d bytes",
+             "column %d: the expression is longer than %d bytes",
              FILTER_MAX_LENGTH + 1, FILTER_MAX_LENGTH);
 
     /* Exactly the limit is fine; one byte more is not. */
@@ -760,7 +762,7 @@ static void test_hostile_length(void **state)
     text = malloc(FILTER_MAX_LENGTH + 1);
     memset(text, 'q', 4000);
     strcpy(text + 4000, " < 1");
-    expect_error_parts(text, "--where: column 1: unknown column 'qqq",
+    expect_error_parts(text, "column 1: unknown column 'qqq",
                        "...' (columns: number,");
     free(text);
 
@@ -769,7 +771,7 @@ static void test_hostile_length(void **state)
     strcpy(text, "cost < ");
     memset(text + 7, '1', 3000);
     strcpy(text + 3007, "x");
-    expect_error_parts(text, "--where: column 8: malformed number '111",
+    expect_error_parts(text, "column 8: malformed number '111",
                        NULL);
     free(text);
 
@@ -796,7 +798,7 @@ static void check_any_text(const char *text)
         assert_int_equal(rc, FACET_EINPUT);
         assert_null(f);
         unsigned long column = 0;
-        if (sscanf(err.message, "--where: column %lu: ", &column) != 1)
+        if (sscanf(err.message, "column %lu: ", &column) != 1)
             fail_msg("'%s': bad message '%s'", text, err.message);
         size_t characters = 0;
         for (const char *c = text; *c != '\0'; c++)

@@ -461,7 +461,8 @@ static void test_charts(void **state)
     assert_non_null(strstr(err.message, "2 separate UV charts"));
     assert_non_null(strstr(err.message, "2 triangles in u 0..0.5"));
     assert_non_null(strstr(err.message, "2 triangles in u 0.6..1"));
-    assert_non_null(strstr(err.message, "--object"));
+    assert_non_null(strstr(err.message, "select its object or group"));
+    assert_int_equal(err.setting, FACET_SETTING_CHART);
     assert_null(strchr(err.message, '\n'));
     surface_close(&s);
 

@@ -73,7 +73,7 @@ static void request_for(struct study_request *r, enum optimize_method method)
     s->generations = 4;
     s->jobs = 2;
     struct facet_error err;
-    assert_int_equal(objectives_parse("cost,planarity,dp_area",
+    assert_int_equal(objectives_parse("cost,planarity,dp_area", "objectives",
                                       s->objectives, &s->nobjectives, &err),
                      FACET_OK);
 }
@@ -129,7 +129,7 @@ static void test_run_roundtrip(void **state)
 
     struct run_info info;
     assert_int_equal(store_run_get(store, run, &info, &err), FACET_OK);
-    assert_string_equal(info.status, "done");
+    assert_int_equal(info.status, RUN_DONE);
     assert_string_equal(info.method, "exhaustive");
     assert_int_equal(info.options, 4 * 4 * 3);
     assert_int_equal(info.u_min, 4);
@@ -383,7 +383,7 @@ static void check_resume(enum optimize_method method, enum param_method uv)
     assert_int_equal(outcome, OPTIMIZE_INTERRUPTED);
     struct run_info info;
     assert_int_equal(store_run_get(store, cut, &info, &err), FACET_OK);
-    assert_string_equal(info.status, "interrupted");
+    assert_int_equal(info.status, RUN_INTERRUPTED);
     assert_true(info.options > 0);
     store_close(store);
 
@@ -480,7 +480,7 @@ static void test_orphan_is_interrupted(void **state)
     /* Still ours: this process is alive. */
     assert_int_equal(store_open(db_path, &store, &err), FACET_OK);
     assert_int_equal(store_run_get(store, run.id, &run, &err), FACET_OK);
-    assert_string_equal(run.status, "running");
+    assert_int_equal(run.status, RUN_RUNNING);
     store_close(store);
 
     sqlite3 *db;
@@ -491,7 +491,7 @@ static void test_orphan_is_interrupted(void **state)
     sqlite3_close(db);
     assert_int_equal(store_open(db_path, &store, &err), FACET_OK);
     assert_int_equal(store_run_get(store, run.id, &run, &err), FACET_OK);
-    assert_string_equal(run.status, "interrupted");
+    assert_int_equal(run.status, RUN_INTERRUPTED);
     store_close(store);
 }
 

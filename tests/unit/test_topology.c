@@ -193,7 +193,7 @@ static void test_units_and_warning(void **state)
           NULL, &m);
     assert_int_equal(mesh_units_warning(&m, UNITS_M, warning,
                                         sizeof warning), 1);
-    assert_non_null(strstr(warning, "--units mm"));
+    assert_non_null(strstr(warning, "set its units to mm"));
     mesh_free(&m);
     build("v 0 0 0\nv 0.02 0 0\nv 0 0.03 0\nf 1 2 3\n", UNITS_M, NULL, NULL,
           &m);
@@ -204,9 +204,9 @@ static void test_units_and_warning(void **state)
     assert_true(mesh_units_scale(UNITS_FT) == 0.3048);
     enum mesh_units units;
     struct facet_error err;
-    assert_int_equal(mesh_units_parse("ft", &units, &err), FACET_OK);
+    assert_int_equal(mesh_units_parse("ft", "units", &units, &err), FACET_OK);
     assert_int_equal(units, UNITS_FT);
-    assert_int_equal(mesh_units_parse("yd", &units, &err), FACET_EINPUT);
+    assert_int_equal(mesh_units_parse("yd", "units", &units, &err), FACET_EINPUT);
 }
 
 static void test_selection(void **state)
