@@ -90,6 +90,19 @@ static void cap(const struct shape *shape, double s, double t, double p[3])
     p[2] = sqrt(400 - p[0] * p[0] - p[1] * p[1]);
 }
 
+/* z = 2 sin(x') (t + t^2 / 2), x' = 2.4 s - 1.2: turning it half a turn
+ * about the y axis, (x, y, z) -> (-x, y, -z), maps it onto itself, cell
+ * (0, j) onto cell (1, j) of a 2 x nv grid with its other face out; the
+ * cells have no symmetry of their own. */
+static void turned(const struct shape *shape, double s, double t,
+                   double p[3])
+{
+    (void)shape;
+    p[0] = 3 * (2.4 * s - 1.2);
+    p[1] = 3 * t;
+    p[2] = 2 * sin(2.4 * s - 1.2) * (t + t * t / 2);
+}
+
 static void plane(const struct shape *shape, double s, double t,
                   double p[3])
 {
@@ -398,6 +411,50 @@ static void test_cap_orbits(void **state)
     }
 }
 
+/* A panel turned over comes off the same mould (a proper move with the
+ * corner order reversed); its mirror image does too when mirrors share, but
+ * the rows here are not mirror images of each other. */
+static void test_turned_over(void **state)
+{
+    (void)state;
+    struct shape s = {turned, 1, 0, 0, NULL};
+    struct built b;
+    build(&s, 1, 2, 3, 4, NULL, &b);
+    assert_all_of_type(&b, TYPE_DP);
+    int row[6];
+    for (size_t n = 0; n < b.panels.npanels; n++)
+        row[n] = b.panels.panels[n].j;
+    for (int mirror = 0; mirror <= 1; mirror++) {
+        struct mould_families f;
+        families(&b, 0, mirror, &f);
+        assert_int_equal(f.count[TYPE_DP], 3);
+        assert_partition(&f, row);
+        mould_families_free(&f);
+    }
+    built_free(&b);
+}
+
+/* SP and DP panels never share a family, however loose the tolerance: a
+ * cylinder beside the DP surface of test_turned_over, at 100 m. */
+static void test_types_apart(void **state)
+{
+    (void)state;
+    struct shape s[2] = {{cylinder, 1, 0, 0, NULL},
+                         {turned, 1, 40, 0, NULL}};
+    struct built b;
+    build(s, 2, 2, 3, 4, NULL, &b);
+    struct mould_families f;
+    families(&b, 100, 1, &f);
+    assert_int_equal(f.count[TYPE_SP], 1);
+    assert_int_equal(f.count[TYPE_DP], 1);
+    for (size_t n = 0; n < f.npanels; n++)
+        assert_int_equal(b.panels.panels[n].type,
+                         b.panels.panels[n].i < 2 ? TYPE_SP : TYPE_DP);
+    assert_int_equal(f.largest, 6);
+    mould_families_free(&f);
+    built_free(&b);
+}
+
 static void test_plane_no_moulds(void **state)
 {
     (void)state;
@@ -458,11 +515,12 @@ static void test_tolerance_merges(void **state)
     built_free(&b);
 }
 
-/* A hole in the middle of cell (1, 1): that panel is trimmed and has a
- * family of its own, the rest one. */
+/* A hole of one mesh quad inside cell (1, 1), between its lattice points,
+ * which all stay on the surface: that panel is trimmed, and has a family
+ * of its own although its samples are those of every other cell. */
 static int hole(int i, int j)
 {
-    return i >= 4 && i < 6 && j >= 4 && j < 6;
+    return i == 5 && j == 5;
 }
 
 static void test_trimmed_own_family(void **state)
@@ -818,6 +876,8 @@ int main(void)
         cmocka_unit_test(test_example_cylinder),
         cmocka_unit_test(test_torus_rows),
         cmocka_unit_test(test_cap_orbits),
+        cmocka_unit_test(test_turned_over),
+        cmocka_unit_test(test_types_apart),
         cmocka_unit_test(test_plane_no_moulds),
         cmocka_unit_test(test_tolerance_merges),
         cmocka_unit_test(test_trimmed_own_family),
