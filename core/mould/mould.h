@@ -10,6 +10,10 @@
  *
  *   deviation <= tolerance + CLASSIFY_ROUNDING x d
  *
+ * The 25 samples stand for the panel's surface: between them two panels
+ * of one family may differ by a little more, by what a quarter of the cell
+ * hides.
+ *
  * with d the larger of the two panels' diameters: the rounding allowance
  * of every limit a panel is held to (classify.h), so that panels equal up
  * to rounding are congruent even at a tolerance of 0. A proper move may
@@ -63,7 +67,8 @@ struct mould_families {
     size_t largest;            /* members of the largest family, 0 when
                                   there is none */
     size_t singletons;         /* families of one panel */
-    size_t trimmed;            /* families of a trimmed panel */
+    size_t trimmed;            /* families of a panel the lattice cannot
+                                  sample (a trimmed one): each its own */
     double worst;              /* largest deviation of a member from its
                                   representative (m) */
     size_t fits;               /* exact tests made (the descriptor spares
