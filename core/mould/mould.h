@@ -10,15 +10,14 @@
  *
  *   deviation <= tolerance + CLASSIFY_ROUNDING x d
  *
- * The 25 samples stand for the panel's surface: between them two panels
- * of one family may differ by a little more, by what a quarter of the cell
- * hides.
- *
  * with d the larger of the two panels' diameters: the rounding allowance
  * of every limit a panel is held to (classify.h), so that panels equal up
  * to rounding are congruent even at a tolerance of 0. A proper move may
  * turn a panel over (install it with its other face out); a mirror image
  * shares the mould only when options->mirror is set (mould_fit.h says why).
+ * The 25 samples stand for the panel's surface: between them two panels
+ * of one family may differ by a little more, by what a quarter of the cell
+ * hides.
  *
  * Families. FP panels need no mould (family -1). SP and DP panels are
  * taken in panel order, each type on its own (a single-curved mould is not
@@ -31,8 +30,8 @@
  *
  * The count is an upper bound. Congruence within a tolerance is not
  * transitive, so finding the fewest families is a covering problem; the
- * greedy count can exceed the least possible, never fall below it (every
- * family it reports is a real mould), and trimmed panels add to it.
+ * greedy count can exceed the least possible, never fall below it (it
+ * counts one valid division into families), and trimmed panels add to it.
  *
  * Speed: each panel is tested exactly only against the representatives
  * whose rotation-invariant descriptor (diagonals, sides, spread and bulge
