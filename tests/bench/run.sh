@@ -15,6 +15,9 @@ echo
 echo "== The paper's whole space (336 grids) on the 100k-triangle roof, into SQLite"
 "$build/bench/bench_optimize"
 echo
+echo "== Mould families of one design option: the 37x49 roof option at the 3 mm flatness threshold"
+"$build/bench/bench_mould"
+echo
 echo "== NSGA-II: Facet against DEAP on ZDT1 (population 100 x 250 generations)"
 tests/bench/bench_nsga2.sh "$build"
 echo

@@ -1,0 +1,98 @@
+/*
+ * mould.h: the mould families of a panelization.
+ *
+ * Mould cost often dominates the cost of a curved panel (Eigensatz et al.
+ * 2010), so curved panels that are congruent within a tolerance share one
+ * mould. Two panels are congruent when one, moved rigidly onto the other
+ * by the least-squares fit of their samples (its corners and surface
+ * points at fixed places of its cell: mould_sample.h, mould_fit.h),
+ * deviates from it by at most the tolerance at every sample:
+ *
+ *   deviation <= tolerance + CLASSIFY_ROUNDING x d
+ *
+ * with d the larger of the two panels' diameters: the rounding allowance
+ * of every limit a panel is held to (classify.h), so that panels equal up
+ * to rounding are congruent even at a tolerance of 0. A proper move may
+ * turn a panel over (install it with its other face out); a mirror image
+ * shares the mould only when options->mirror is set (mould_fit.h says why).
+ * The 25 samples stand for the panel's surface: between them two panels
+ * of one family may differ by a little more, by what a quarter of the cell
+ * hides.
+ *
+ * Families. FP panels need no mould (family -1). SP and DP panels are
+ * taken in panel order, each type on its own (a single-curved mould is not
+ * a double-curved one): each panel joins the first family (in the order
+ * families were started) whose representative, the family's first panel,
+ * it is congruent to, or starts a family. So every member lies within the
+ * tolerance of its family's representative, and no representative is
+ * congruent to an earlier one. A trimmed panel, whose outline the samples
+ * do not see, gets a family of its own.
+ *
+ * The count is an upper bound. Congruence within a tolerance is not
+ * transitive, so finding the fewest families is a covering problem; the
+ * greedy count can exceed the least possible, never fall below it (it
+ * counts one valid division into families), and trimmed panels add to it.
+ *
+ * Speed: each panel is tested exactly only against the representatives
+ * whose rotation-invariant descriptor (diagonals, sides, spread and bulge
+ * of the samples) is within what the tolerance allows, found in a hash
+ * grid, so that the work grows with the panels, not with panels x
+ * families.
+ */
+#ifndef FACET_MOULD_H
+#define FACET_MOULD_H
+
+#include <stddef.h>
+
+#include "core/base/error.h"
+#include "core/panel/panel.h"
+#include "core/surface/mesh.h"
+#include "core/surface/uv_index.h"
+
+struct mould_options {
+    double tolerance;  /* largest deviation within a family (m), >= 0 */
+    int mirror;        /* mirror images may share a mould */
+};
+
+struct mould_families {
+    size_t npanels;            /* as the panelization */
+    int *family;               /* npanels: the family of each panel,
+                                  0..nfamilies-1, or -1 for an FP panel */
+    size_t nfamilies;
+    size_t *representative;    /* nfamilies: the panel each family's
+                                  members are held to (its first) */
+    size_t *size;              /* nfamilies: its members */
+    size_t count[TYPE_COUNT];  /* families per type; count[TYPE_FP] = 0 */
+    size_t largest;            /* members of the largest family, 0 when
+                                  there is none */
+    size_t singletons;         /* families of one panel */
+    size_t trimmed;            /* families of a panel the lattice cannot
+                                  sample (a trimmed one): each its own */
+    double worst;              /* largest deviation of a member from its
+                                  representative (m) */
+    size_t fits;               /* exact tests made (the descriptor spares
+                                  the others) */
+};
+
+/* Finds the mould families of panels, built by panels_build (or _fast, or
+ * the lattice) over mesh and index (for a prepared surface s: &s->mesh,
+ * &s->uv) and classified (classify_panels: the types are read).
+ * Fills *out (caller-owned, released with mould_families_free, also after
+ * a failure). Returns FACET_OK, FACET_EINPUT for a tolerance that is
+ * negative or not finite or panels not built over index's UV box,
+ * FACET_EWORK when out of memory. */
+int mould_families_build(const struct mesh *mesh,
+                         const struct uv_index *index,
+                         const struct panelization *panels,
+                         const struct mould_options *options,
+                         struct mould_families *out,
+                         struct facet_error *err);
+
+void mould_families_free(struct mould_families *families);
+
+/* The deviation two panels of diameters da and db (m) may have and be
+ * congruent under options: tolerance + CLASSIFY_ROUNDING max(da, db). */
+double mould_limit(const struct mould_options *options, double da,
+                   double db);
+
+#endif
