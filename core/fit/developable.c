@@ -11,17 +11,23 @@
 #include "core/fit/developable.h"
 
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "core/base/linalg.h"
+#include "core/base/sym3.h"
 #include "core/base/vec3.h"
 
-#define FIT_MAX_ITERATIONS 30
+#define FIT_MAX_ITERATIONS 100
+#define PI 3.14159265358979323846
 
-/* A fit has converged when a step lowers the sum of squares by less than
- * this fraction of it: its root mean square then moves by 5e-5 of itself,
- * well under a micrometre on a panel whose samples are millimetres off. */
-#define FIT_CONVERGED 1e-4
+/* A fit has converged when its next (Gauss-Newton) step would move the
+ * surface by less than this at the points (root mean square, m): a tenth
+ * of a micrometre, so that deviations of millimetres come out the same to
+ * a micrometre however the surface is placed. Converging by distance rather than by parameters
+ * ends a fit whose parameters wander along a valley that hardly moves the
+ * surface (the apex of a nearly cylindrical cone). */
+#define FIT_STEP 1e-7
 
 /* Two unit vectors completing axis to an orthonormal frame. */
 static void frame(const double axis[3], double e1[3], double e2[3])
@@ -167,6 +173,52 @@ static double linearize(const struct developable *d, const double *points,
     return sum;
 }
 
+/* Sets d's radius and slope to the best for its axis: in the half-plane
+ * through the axis each point is (h, rho), and the cone is the line rho =
+ * radius + slope h there, at distance (rho - radius - slope h) / sqrt(1 +
+ * slope^2) from it; the line minimising the sum of squares of those is the
+ * principal axis of the points (h, rho) (total least squares). Solving
+ * these two exactly at every step keeps a cone fit from crawling along the
+ * valley where slope and axis trade off. Leaves d alone when the line is
+ * steeper than 60 degrees from the axis (the points give no cone). */
+static void best_line(struct developable *d, const double *points, size_t n)
+{
+    double mh = 0, mr = 0, hh = 0, hr = 0, rr = 0;
+    for (size_t k = 0; k < n; k++) {
+        double q[3];
+        vec3_sub(points + 3 * k, d->base, q);
+        double h = vec3_dot(q, d->axis);
+        double rho = sqrt(fmax(vec3_dot(q, q) - h * h, 0));
+        mh += h;
+        mr += rho;
+        hh += h * h;
+        hr += h * rho;
+        rr += rho * rho;
+    }
+    mh /= (double)n;
+    mr /= (double)n;
+    hh = hh / (double)n - mh * mh;
+    hr = hr / (double)n - mh * mr;
+    rr = rr / (double)n - mr * mr;
+    double value[2], theta;
+    linalg_sym2_eigen(hh, hr, rr, value, &theta);
+    if (!(fabs(theta) < PI / 3))
+        return;
+    d->slope = tan(theta);
+    d->radius = mr - d->slope * mh;
+}
+
+/* x.m.x for the symmetric m (6 x 6, lower triangle of the leading np x np
+ * block). */
+static double quadratic(const double m[36], const double x[6], int np)
+{
+    double sum = 0;
+    for (int r = 0; r < np; r++)
+        for (int c = 0; c < np; c++)
+            sum += x[r] * x[c] * m[r > c ? r * 6 + c : c * 6 + r];
+    return sum;
+}
+
 /* Levenberg-Marquardt on d over np parameters (5: cylinder, 6: cone).
  * Each trial step is linearised where it lands, so that an accepted step
  * (the usual case) costs one pass over the points. Returns 0, or -1 when
@@ -177,55 +229,65 @@ static int refine(struct developable *d, const double *points, size_t n,
     double centroid[3], e1[3], e2[3], jtj[36], jtr[6];
     centroid_of(points, n, centroid);
     recentre(d, centroid);
+    if (np == 6)
+        best_line(d, points, n);
     frame(d->axis, e1, e2);
     double cost = linearize(d, points, n, np, e1, e2, jtj, jtr);
-    double lambda = 1e-6;
+    /* Damping as Nielsen's: scaled by how well the linearisation
+     * predicted the last decrease, doubling its growth on each miss. */
+    double lambda = 1e-6, grow = 2;
     for (int iteration = 0; iteration < FIT_MAX_ITERATIONS; iteration++) {
-        int accepted = 0;
-        double previous = cost;
-        while (!accepted && lambda < 1e12) {
-            double a[36], b[6], step[6] = {0};
-            memcpy(a, jtj, sizeof a);
-            for (int r = 0; r < np; r++) {
-                a[r * 6 + r] += lambda * jtj[r * 6 + r];
-                b[r] = -jtr[r];
-            }
-            struct developable trial;
-            double te1[3], te2[3], tjtj[36], tjtr[6];
-            if (linalg_cholesky_solve(np, 6, a, b, 1e-14, step)) {
-                /* The decrease the linearisation predicts for the step
-                 * (b.step - step.jtj.step / 2): when even that is below
-                 * convergence for a step barely damped, the fit is done
-                 * without trying it. */
-                double predicted = 0;
-                for (int r = 0; r < np; r++) {
-                    double row = 0;
-                    for (int c = 0; c < np; c++)
-                        row += jtj[r > c ? r * 6 + c : c * 6 + r] * step[c];
-                    predicted += step[r] * (b[r] - 0.5 * row);
-                }
-                if (lambda <= 1e-3 && predicted <= FIT_CONVERGED * cost)
-                    break;
-                apply_step(d, e1, e2, step, np, centroid, &trial);
-                frame(trial.axis, te1, te2);
-                double trial_cost = linearize(&trial, points, n, np, te1,
-                                              te2, tjtj, tjtr);
-                if (isfinite(trial_cost) && trial_cost < cost) {
-                    *d = trial;
-                    cost = trial_cost;
-                    memcpy(e1, te1, sizeof te1);
-                    memcpy(e2, te2, sizeof te2);
-                    memcpy(jtj, tjtj, sizeof tjtj);
-                    memcpy(jtr, tjtr, sizeof tjtr);
-                    lambda = fmax(lambda * 0.1, 1e-12);
-                    accepted = 1;
-                    continue;
-                }
-            }
-            lambda *= 10;
-        }
-        if (!accepted || previous - cost <= FIT_CONVERGED * previous)
+        double b[6], step[6] = {0};
+        for (int r = 0; r < np; r++)
+            b[r] = -jtr[r];
+        /* Converged when the undamped (Gauss-Newton) step would move the
+         * surface at the points by less than FIT_STEP: |J step|^2 =
+         * step.jtj.step. */
+        if (linalg_cholesky_solve(np, 6, jtj, b, 1e-14, step) &&
+            quadratic(jtj, step, np) <= (double)n * FIT_STEP * FIT_STEP)
             break;
+        double a[36];
+        memcpy(a, jtj, sizeof a);
+        for (int r = 0; r < np; r++)
+            a[r * 6 + r] += lambda * jtj[r * 6 + r];
+        if (!linalg_cholesky_solve(np, 6, a, b, 1e-14, step)) {
+            lambda *= grow;
+            grow *= 2;
+            if (lambda > 1e12)
+                break;
+            continue;
+        }
+        double along = 0, moved = quadratic(jtj, step, np);
+        for (int r = 0; r < np; r++)
+            along += b[r] * step[r];
+        struct developable trial;
+        double te1[3], te2[3], tjtj[36], tjtr[6];
+        apply_step(d, e1, e2, step, np, centroid, &trial);
+        if (np == 6)
+            best_line(&trial, points, n);
+        frame(trial.axis, te1, te2);
+        double trial_cost = linearize(&trial, points, n, np, te1, te2, tjtj,
+                                      tjtr);
+        /* The decrease the linearisation promises: 2 b.step - |J step|^2. */
+        double promised = 2 * along - moved;
+        if (isfinite(trial_cost) && trial_cost < cost && promised > 0) {
+            double rho = (cost - trial_cost) / promised;
+            double t = 2 * rho - 1;
+            lambda *= fmax(1.0 / 3, 1 - t * t * t);
+            lambda = fmax(lambda, 1e-12);
+            grow = 2;
+            *d = trial;
+            cost = trial_cost;
+            memcpy(e1, te1, sizeof te1);
+            memcpy(e2, te2, sizeof te2);
+            memcpy(jtj, tjtj, sizeof tjtj);
+            memcpy(jtr, tjtr, sizeof tjtr);
+        } else {
+            lambda *= grow;
+            grow *= 2;
+            if (lambda > 1e12)
+                break;
+        }
     }
     if (!isfinite(d->radius) || !isfinite(d->slope) || !(d->radius > 0))
         return -1;
@@ -278,6 +340,76 @@ int developable_fit_cylinder(const double *points, size_t n,
     return 0;
 }
 
+#define CONE_FAR 20
+
+int developable_cone_start(const double *points, size_t n, const double *at,
+                           const double *ruling, size_t nrulings,
+                           struct developable *out)
+{
+    if (nrulings < 2)
+        return -1;
+    /* The apex minimises sum |(I - r r^T)(apex - p)|^2. */
+    double a[9] = {0}, b[3] = {0}, apex[3];
+    for (size_t k = 0; k < nrulings; k++) {
+        const double *r = ruling + 3 * k, *p = at + 3 * k;
+        for (int x = 0; x < 3; x++)
+            for (int y = 0; y < 3; y++) {
+                double m = (x == y) - r[x] * r[y];
+                a[3 * x + y] += m;
+                b[x] += m * p[y];
+            }
+    }
+    if (!linalg_cholesky_solve(3, 3, a, b, 1e-6, apex))
+        return -1;
+    /* The directions to the points lie on a circle of the unit sphere; the
+     * axis is the normal of its plane (least spread), pointing to them. */
+    double mean[3] = {0, 0, 0}, cov[9] = {0}, value[3], vector[3][3];
+    double *w = malloc(n * 3 * sizeof *w);
+    if (w == NULL)
+        return -1;
+    for (size_t k = 0; k < n; k++) {
+        vec3_sub(points + 3 * k, apex, w + 3 * k);
+        if (!vec3_normalize(w + 3 * k)) {
+            free(w);
+            return -1;
+        }
+        for (int x = 0; x < 3; x++)
+            mean[x] += w[3 * k + x] / (double)n;
+    }
+    for (size_t k = 0; k < n; k++)
+        for (int x = 0; x < 3; x++)
+            for (int y = 0; y < 3; y++)
+                cov[3 * x + y] += (w[3 * k + x] - mean[x]) *
+                                  (w[3 * k + y] - mean[y]);
+    free(w);
+    sym3_eigen(cov, value, vector);
+    double axis[3] = {vector[0][0], vector[0][1], vector[0][2]};
+    if (vec3_dot(axis, mean) < 0)
+        for (int x = 0; x < 3; x++)
+            axis[x] = -axis[x];
+    double cosine = vec3_dot(axis, mean);
+    if (!(cosine > 0 && cosine < 1))
+        return -1;
+    double centroid[3], q[3], extent = 0;
+    centroid_of(points, n, centroid);
+    for (size_t k = 0; k < n; k++)
+        extent = fmax(extent, vec3_distance(points + 3 * k, centroid));
+    vec3_sub(centroid, apex, q);
+    /* Rulings that meet farther off than CONE_FAR extents of the points
+     * are parallel to within the estimate's noise: the cylinder start
+     * covers that cone, and a start there only creeps back to it. */
+    if (vec3_length(q) > CONE_FAR * extent)
+        return -1;
+    double h = vec3_dot(q, axis);
+    out->shape = DEVELOPABLE_CONE;
+    memcpy(out->axis, axis, sizeof out->axis);
+    for (int x = 0; x < 3; x++)
+        out->base[x] = apex[x] + h * axis[x];
+    out->slope = sqrt(1 - cosine * cosine) / cosine;
+    out->radius = h * out->slope;
+    return isfinite(out->radius) && out->radius > 0 ? 0 : -1;
+}
+
 int developable_fit_cone(const double *points, size_t n,
                          const struct developable *start,
                          struct developable *out)
@@ -287,6 +419,17 @@ int developable_fit_cone(const double *points, size_t n,
     struct developable d = *start;
     d.shape = DEVELOPABLE_CONE;
     if (refine(&d, points, n, 6) != 0)
+        return -1;
+    /* A cone whose apex lies among the points is no panel one can roll
+     * (its curvature grows without bound there), and the fit that finds
+     * one is a nearly flat cone wandering about a nearly flat patch. */
+    double centroid[3], apex[3], extent = 0;
+    centroid_of(points, n, centroid);
+    for (size_t k = 0; k < n; k++)
+        extent = fmax(extent, vec3_distance(points + 3 * k, centroid));
+    for (int x = 0; x < 3; x++)
+        apex[x] = d.base[x] - d.radius / d.slope * d.axis[x];
+    if (!(vec3_distance(apex, centroid) > extent))
         return -1;
     *out = d;
     return 0;

@@ -50,12 +50,29 @@ int developable_fit_cylinder(const double *points, size_t n,
                              struct developable *out);
 
 /* Fits a circular cone to points (n x 3, m) in the least-squares sense,
- * starting from start (a fitted cylinder: the cone whose rulings are
- * parallel) and refining axis, position, radius and slope together. Returns
- * 0 and fills *out, or -1 when fewer than 6 points or the fit diverges. */
+ * refining axis, position, radius and slope together from start: a fitted
+ * cylinder (the cone whose rulings are parallel) or a cone_start. At every
+ * step radius and slope are the best for the axis (a line fit in the
+ * half-plane through the axis), which keeps the fit from crawling along the
+ * valley where they trade off against the axis. Returns 0 and fills *out,
+ * or -1 when fewer than 6 points, the fit leaves the finite or its apex
+ * lies among the points (no panel one can roll: not farther from their
+ * centroid than the farthest of them). */
 int developable_fit_cone(const double *points, size_t n,
                          const struct developable *start,
                          struct developable *out);
+
+/* A start for a cone fit: the cone whose apex is where the rulings
+ * converge, the point nearest (least squares) the lines through at[k]
+ * along ruling[k] (nrulings x 3 each, rulings unit), its axis the normal of
+ * the plane the directions from the apex to points (n x 3) lie on (a
+ * cone's directions from its apex make one angle with its axis). Returns
+ * 0 and fills *out, or -1 when the rulings do not meet within 20 times the
+ * points' extent (parallel to within their noise: a cylinder's case) or the
+ * points give no axis. */
+int developable_cone_start(const double *points, size_t n, const double *at,
+                           const double *ruling, size_t nrulings,
+                           struct developable *out);
 
 /* The largest |distance| (m) of points (n x 3) from d. */
 double developable_max_distance(const struct developable *d,

@@ -12,6 +12,10 @@
 #include "core/base/vec3.h"
 #include "core/classify/classify.h"
 
+/* Of a panel's side samples, every FIT_SIDE_STRIDE-th joins the fit (the
+ * corners and side midpoints); all count in its deviation. */
+#define FIT_SIDE_STRIDE 4
+
 /* A point within this fraction of a cell of a cell line lies on it. */
 #define ON_LINE 1e-9
 
@@ -90,18 +94,15 @@ static int point_panels(const struct fit_points *points, size_t p,
     return n;
 }
 
-/* Appends the on-surface samples first, first + stride, ... up to last
- * of side s to xyz at *n. */
-static void add_side(const struct cell_sides *sides, size_t s, int first,
-                     int last, int stride, double *xyz, size_t *n)
+/* Appends sample k of side s to xyz at *n when it is on the surface. */
+static void add_sample(const struct cell_sides *sides, size_t s, int k,
+                       double *xyz, size_t *n)
 {
-    for (int k = first; k <= last; k += stride) {
-        size_t at = s * CELL_SIDE_SAMPLES + (size_t)k;
-        if (!sides->on[at])
-            continue;
-        memcpy(xyz + 3 * *n, sides->point + 3 * at, 3 * sizeof *xyz);
-        (*n)++;
-    }
+    size_t at = s * CELL_SIDE_SAMPLES + (size_t)k;
+    if (!sides->on[at])
+        return;
+    memcpy(xyz + 3 * *n, sides->point + 3 * at, 3 * sizeof *xyz);
+    (*n)++;
 }
 
 /* The direction of the largest extent of n points (unit). */
@@ -122,13 +123,17 @@ static void longest_extent(const double *xyz, size_t n, double out[3])
 }
 
 /* Fits the first nfit of panel's samples xyz (n) with the axis guess
- * axis, and measures the fit's deviation on all n; fills *b. */
+ * axis, and measures the fit's deviation on all n; the first nrulings
+ * samples carry the rulings ruling (nrulings x 3), for a cone. Fills
+ * *b. */
 static void fit_panel(const struct panel *panel, const double *xyz,
-                      size_t nfit, size_t n, const double axis[3],
+                      size_t nfit, size_t n, const double *ruling,
+                      size_t nrulings, const double axis[3],
                       double threshold, struct built_panel *b)
 {
     double limit = threshold + CLASSIFY_ROUNDING * panel->diameter;
     struct developable cylinder, cone;
+    memset(&b->fit, 0, sizeof b->fit);
     b->best_cylinder = b->best_cone = NAN;
     int have_cylinder = developable_fit_cylinder(xyz, nfit, axis,
                                                  &cylinder) == 0;
@@ -140,14 +145,26 @@ static void fit_panel(const struct panel *panel, const double *xyz,
             b->sp_deviation = b->best_cylinder;
             return;
         }
-        if (developable_fit_cone(xyz, nfit, &cylinder, &cone) == 0) {
-            b->best_cone = developable_max_distance(&cone, xyz, n);
-            if (b->best_cone <= limit) {
-                b->fitted = 1;
+        /* From the cylinder and from where the rulings converge; the one
+         * nearer the samples is kept (two least-squares cones can tie
+         * where their largest distances do not). */
+        struct developable start[2];
+        start[0] = cylinder;
+        int starts = 1 + (developable_cone_start(xyz, nfit, xyz, ruling,
+                                                 nrulings, &start[1]) == 0);
+        for (int k = 0; k < starts; k++) {
+            if (developable_fit_cone(xyz, nfit, &start[k], &cone) != 0)
+                continue;
+            double deviation = developable_max_distance(&cone, xyz, n);
+            if (isfinite(deviation) && !(deviation >= b->best_cone)) {
+                b->best_cone = deviation;
                 b->fit = cone;
-                b->sp_deviation = b->best_cone;
-                return;
             }
+        }
+        if (b->best_cone <= limit) {
+            b->fitted = 1;
+            b->sp_deviation = b->best_cone;
+            return;
         }
     }
     b->type = TYPE_DP;
@@ -167,7 +184,7 @@ int built_option_fit(const struct mesh *mesh, const struct fit_points *points,
     out->panels = calloc(np + 1, sizeof *out->panels);
     size_t *start = calloc(np + 2, sizeof *start);
     uint32_t *member = NULL;
-    double *xyz = NULL;
+    double *xyz = NULL, *ruling = NULL;
     if (out->panels == NULL || start == NULL)
         goto out_of_memory;
     double du = (panels->umax - panels->umin) / panels->nu;
@@ -187,7 +204,8 @@ int built_option_fit(const struct mesh *mesh, const struct fit_points *points,
     }
     member = malloc((start[np + 1] + 1) * sizeof *member);
     xyz = malloc((largest + 4 * CELL_SIDE_SAMPLES) * 3 * sizeof *xyz);
-    if (member == NULL || xyz == NULL)
+    ruling = malloc((largest + 1) * 3 * sizeof *ruling);
+    if (member == NULL || xyz == NULL || ruling == NULL)
         goto out_of_memory;
     for (size_t p = 0; p < points->npoints; p++) {
         int32_t holder[4];
@@ -214,24 +232,24 @@ int built_option_fit(const struct mesh *mesh, const struct fit_points *points,
                     outer[3 * a + c] += r[a] * r[c];
             memcpy(xyz + 3 * n, mesh->position + 3 * (size_t)points->vertex[p],
                    3 * sizeof *xyz);
+            memcpy(ruling + 3 * n, r, 3 * sizeof *ruling);
             n++;
         }
-        /* The sides' even samples (corners included once) join the fit;
-         * the odd ones only the deviation. */
+        /* Every FIT_SIDE_STRIDE-th sample of the sides (corners included,
+         * once) joins the fit; the others only the deviation. The first
+         * two sides start at a corner, the last two end at one. */
         int i = panel->i, j = panel->j;
         size_t around[4] = {
             cell_side_v(sides, i, j), cell_side_u(sides, i + 1, j),
             cell_side_v(sides, i, j + 1), cell_side_u(sides, i, j)};
         size_t nfit = 0;
         for (int pass = 0; pass < 2; pass++) {
-            for (int e = 0; e < 4; e++) {
-                /* The first two sides start at a corner, the last two end
-                 * at one. */
-                int first = e < 2 ? pass : 1 + !pass;
-                int last = e < 2 ? CELL_SIDE_SEGMENTS - 1
-                                 : CELL_SIDE_SEGMENTS - pass;
-                add_side(sides, around[e], first, last, 2, xyz, &n);
-            }
+            for (int e = 0; e < 4; e++)
+                for (int step = 0; step < CELL_SIDE_SEGMENTS; step++) {
+                    int at = e < 2 ? step : step + 1;
+                    if ((at % FIT_SIDE_STRIDE == 0) == (pass == 0))
+                        add_sample(sides, around[e], at, xyz, &n);
+                }
             if (pass == 0)
                 nfit = n;
         }
@@ -243,7 +261,8 @@ int built_option_fit(const struct mesh *mesh, const struct fit_points *points,
         } else {
             longest_extent(xyz, n, axis);
         }
-        fit_panel(panel, xyz, nfit, n, axis, threshold, b);
+        fit_panel(panel, xyz, nfit, n, ruling, start[k + 1] - start[k], axis,
+                  threshold, b);
         if (b->fitted)
             out->sp_fitted++;
         else
@@ -252,12 +271,14 @@ int built_option_fit(const struct mesh *mesh, const struct fit_points *points,
     free(start);
     free(member);
     free(xyz);
+    free(ruling);
     return FACET_OK;
 
 out_of_memory:
     free(start);
     free(member);
     free(xyz);
+    free(ruling);
     built_option_free(out);
     return facet_error_set(err, FACET_EWORK,
                            "out of memory fitting %zu panels", np);

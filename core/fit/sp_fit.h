@@ -10,7 +10,7 @@
  *     line belongs to the panels on both sides) and the surface sampled
  *     along its four sides (cell_sides.h), ends included once;
  *   - a cylinder is fitted by least squares (developable_fit_cylinder) to
- *     the points inside and every other side sample (corners included),
+ *     the points inside, the corners and the sides' midpoints,
  *     the axis starting along the mean ruling of the points inside: at each
  *     mesh point the principal direction of the smaller |curvature|,
  *     averaged as the major axis of their outer products (directions have
@@ -20,8 +20,10 @@
  *     surface. It is not the mesh's own facet sag: samples lie on the mesh,
  *     whose vertices lie on the designer's surface and whose facets may sag
  *     from it, so a panel of a true cylinder reads up to that sag;
- *   - when the cylinder misses by more than t, a cone is fitted starting
- *     from it (the cylinder is the cone whose rulings meet at infinity);
+ *   - when the cylinder misses by more than t, a cone is fitted, from the
+ *     cylinder (the cone whose rulings meet at infinity) and from the apex
+ *     where the rulings of the points inside converge, the one nearer the
+ *     samples (largest distance) kept;
  *   - when neither is within t (rounding allowed as classify.h's threshold
  *     rule), the panel is built DP: a misfit, whose best cylinder and cone
  *     deviations say why (built_panel_reason).
