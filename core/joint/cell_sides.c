@@ -58,19 +58,28 @@ static uint32_t locate_near(const struct mesh *mesh,
     return uv_index_locate(index, u, v, LOCATE_TOLERANCE, b);
 }
 
-static void sample_at(const struct mesh *mesh,
-                      const struct curvature *curvature, uint32_t t,
-                      const double b[3], double point[3], double normal[3])
+/* The point of triangle t at barycentric b, by its affine map. */
+static void point_at(const struct mesh *mesh, uint32_t t, const double b[3],
+                     double point[3])
 {
     const uint32_t *tri = mesh->triangle + 3 * (size_t)t;
-    for (int x = 0; x < 3; x++) {
-        point[x] = 0;
-        normal[x] = 0;
-        for (int c = 0; c < 3; c++) {
-            point[x] += b[c] * mesh->position[3 * (size_t)tri[c] + x];
-            normal[x] += b[c] * curvature->normal[3 * (size_t)tri[c] + x];
-        }
-    }
+    for (int x = 0; x < 3; x++)
+        point[x] = b[0] * mesh->position[3 * (size_t)tri[0] + x] +
+                   b[1] * mesh->position[3 * (size_t)tri[1] + x] +
+                   b[2] * mesh->position[3 * (size_t)tri[2] + x];
+}
+
+/* The unit surface normal in triangle t at barycentric b: the vertex
+ * normals interpolated, on the side of the face normal. */
+static void normal_at(const struct mesh *mesh,
+                      const struct curvature *curvature, uint32_t t,
+                      const double b[3], double normal[3])
+{
+    const uint32_t *tri = mesh->triangle + 3 * (size_t)t;
+    for (int x = 0; x < 3; x++)
+        normal[x] = b[0] * curvature->normal[3 * (size_t)tri[0] + x] +
+                    b[1] * curvature->normal[3 * (size_t)tri[1] + x] +
+                    b[2] * curvature->normal[3 * (size_t)tri[2] + x];
     const double *face = mesh->face_normal + 3 * (size_t)t;
     if (!vec3_normalize(normal))
         memcpy(normal, face, 3 * sizeof *normal);
@@ -92,11 +101,12 @@ int cell_sides_sample(const struct mesh *mesh, const struct uv_index *index,
                   (size_t)nu * (size_t)(nv + 1);
     size_t nsamples = out->nsides * CELL_SIDE_SAMPLES;
     out->point = malloc(nsamples * 3 * sizeof *out->point);
-    out->normal = malloc(nsamples * 3 * sizeof *out->normal);
+    out->normal = malloc((out->nsides + 1) * 3 * sizeof *out->normal);
+    out->middle = malloc(out->nsides + 1);
     out->on = malloc(nsamples);
     out->sampled = calloc(out->nsides + 1, 1);
     if (out->point == NULL || out->normal == NULL || out->on == NULL ||
-        out->sampled == NULL) {
+        out->sampled == NULL || out->middle == NULL) {
         cell_sides_free(out);
         return facet_error_set(err, FACET_EWORK,
                                "out of memory sampling %zu cell sides",
@@ -132,34 +142,49 @@ int cell_sides_sample(const struct mesh *mesh, const struct uv_index *index,
                 continue;
             if (before != SIZE_MAX && !out->sampled[before])
                 before = SIZE_MAX;
+            uint32_t triangle[CELL_SIDE_SAMPLES];
+            double bary[CELL_SIDE_SAMPLES][3];
+            int middle = -1;
             for (int k = 0; k < CELL_SIDE_SAMPLES; k++) {
                 size_t at = s * CELL_SIDE_SAMPLES + (size_t)k;
+                triangle[k] = UINT32_MAX;
                 if (k == 0 && before != SIZE_MAX) {
                     size_t from = before * CELL_SIDE_SAMPLES +
                                   CELL_SIDE_SEGMENTS;
                     out->on[at] = out->on[from];
                     memcpy(out->point + 3 * at, out->point + 3 * from,
                            3 * sizeof *out->point);
-                    memcpy(out->normal + 3 * at, out->normal + 3 * from,
-                           3 * sizeof *out->normal);
-                    continue;
+                } else {
+                    double f = (double)k / CELL_SIDE_SEGMENTS;
+                    double u = panels->umin + (i + (along_v ? 0 : f)) * du;
+                    double v = panels->vmin + (j + (along_v ? f : 0)) * dv;
+                    triangle[k] = locate_near(mesh, index, hint, u, v,
+                                              bary[k]);
+                    out->on[at] = triangle[k] != UINT32_MAX;
+                    if (triangle[k] == UINT32_MAX) {
+                        for (int x = 0; x < 3; x++)
+                            out->point[3 * at + x] = NAN;
+                        continue;
+                    }
+                    hint = triangle[k];
+                    point_at(mesh, triangle[k], bary[k], out->point + 3 * at);
                 }
-                double f = (double)k / CELL_SIDE_SEGMENTS;
-                double u = panels->umin + (i + (along_v ? 0 : f)) * du;
-                double v = panels->vmin + (j + (along_v ? f : 0)) * dv;
-                double b[3];
-                uint32_t t = locate_near(mesh, index, hint, u, v, b);
-                out->on[at] = t != UINT32_MAX;
-                if (t == UINT32_MAX) {
-                    for (int x = 0; x < 3; x++)
-                        out->point[3 * at + x] = out->normal[3 * at + x] =
-                            NAN;
-                    continue;
-                }
-                hint = t;
-                sample_at(mesh, curvature, t, b, out->point + 3 * at,
-                          out->normal + 3 * at);
+                if (out->on[at] && triangle[k] != UINT32_MAX &&
+                    (middle < 0 || abs(2 * k - CELL_SIDE_SEGMENTS) <
+                                       abs(2 * middle - CELL_SIDE_SEGMENTS)))
+                    middle = k;
             }
+            /* The normal at the middle, or at the located sample nearest
+             * it (a side's first sample is copied, not located, and is
+             * never its middle unless the rest is off the surface). */
+            out->middle[s] = (signed char)middle;
+            if (middle < 0) {
+                for (int x = 0; x < 3; x++)
+                    out->normal[3 * s + x] = NAN;
+                continue;
+            }
+            normal_at(mesh, curvature, triangle[middle], bary[middle],
+                      out->normal + 3 * s);
         }
     }
     return FACET_OK;
@@ -173,6 +198,7 @@ int cell_sides_flat_quad(const struct panel *panel)
 void cell_sides_free(struct cell_sides *sides)
 {
     free(sides->sampled);
+    free(sides->middle);
     free(sides->point);
     free(sides->normal);
     free(sides->on);

@@ -49,13 +49,17 @@ struct cell_sides {
     size_t nsides;        /* (nu + 1) nv + nu (nv + 1) */
     double *point;        /* nsides x CELL_SIDE_SAMPLES x 3 (m); NaN off
                              the surface */
-    double *normal;       /* same shape: unit surface normal, the vertex
-                             normals interpolated in the triangle, on the
-                             side of its face normal (the side panel
-                             normals are on); NaN off the surface */
+    signed char *middle;  /* nsides: the sample nearest the side's middle
+                             that lies on the surface (of those located on
+                             it), or -1 when none does */
+    double *normal;       /* nsides x 3: the unit surface normal at that
+                             sample, the vertex normals interpolated in its
+                             triangle, on the side of the face normal (the
+                             side panel normals are on); NaN without one */
     unsigned char *on;    /* nsides x CELL_SIDE_SAMPLES: 1 on the surface */
     unsigned char *sampled;  /* nsides: 1 when the side was sampled; point,
-                                normal and on are unset otherwise */
+                                on, middle and normal are unset
+                                otherwise */
 };
 
 static inline size_t cell_side_u(const struct cell_sides *s, int i, int j)

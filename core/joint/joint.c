@@ -108,25 +108,25 @@ static int measure(const struct cell_sides *sides, size_t side,
         edge->kink = angle_between(a->panel->normal, b->panel->normal);
         return 1;
     }
-    int middle = -1;
+    int any = 0;
     for (int k = 0; k < CELL_SIDE_SAMPLES; k++) {
         size_t at = side * CELL_SIDE_SAMPLES + (size_t)k;
         if (!sides->on[at])
             continue;
-        if (middle < 0 || abs(2 * k - CELL_SIDE_SEGMENTS) <
-                              abs(2 * middle - CELL_SIDE_SEGMENTS))
-            middle = k;
+        any = 1;
         double pa[3], pb[3];
         place_of(a, sides->point + 3 * at, pa);
         place_of(b, sides->point + 3 * at, pb);
         edge->gap = fmax(edge->gap, vec3_distance(pa, pb));
     }
-    if (middle < 0)
+    int middle = sides->middle[side];
+    if (!any || middle < 0)
         return 0;
-    size_t at = side * CELL_SIDE_SAMPLES + (size_t)middle;
+    const double *x = sides->point + 3 * (side * CELL_SIDE_SAMPLES +
+                                          (size_t)middle);
     double na[3], nb[3];
-    normal_of(a, sides->point + 3 * at, sides->normal + 3 * at, na);
-    normal_of(b, sides->point + 3 * at, sides->normal + 3 * at, nb);
+    normal_of(a, x, sides->normal + 3 * side, na);
+    normal_of(b, x, sides->normal + 3 * side, nb);
     edge->kink = angle_between(na, nb);
     return 1;
 }
