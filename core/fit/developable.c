@@ -117,6 +117,20 @@ static void centroid_of(const double *points, size_t n, double out[3])
         out[x] /= (double)n;
 }
 
+void developable_principal_axes(const double *points, size_t n,
+                                double mean[3], double value[3],
+                                double vector[3][3])
+{
+    double cov[9] = {0};
+    centroid_of(points, n, mean);
+    for (size_t k = 0; k < n; k++)
+        for (int r = 0; r < 3; r++)
+            for (int c = 0; c < 3; c++)
+                cov[3 * r + c] += (points[3 * k + r] - mean[r]) *
+                                  (points[3 * k + c] - mean[c]);
+    sym3_eigen(cov, value, vector);
+}
+
 /* d moved by step (base across the axis by step[0], step[1] along e1, e2;
  * axis tilted by step[2], step[3]; radius by step[4]; slope by step[5]
  * when np is 6). */
@@ -363,7 +377,7 @@ int developable_cone_start(const double *points, size_t n, const double *at,
         return -1;
     /* The directions to the points lie on a circle of the unit sphere; the
      * axis is the normal of its plane (least spread), pointing to them. */
-    double mean[3] = {0, 0, 0}, cov[9] = {0}, value[3], vector[3][3];
+    double mean[3], value[3], vector[3][3];
     double *w = malloc(n * 3 * sizeof *w);
     if (w == NULL)
         return -1;
@@ -373,16 +387,9 @@ int developable_cone_start(const double *points, size_t n, const double *at,
             free(w);
             return -1;
         }
-        for (int x = 0; x < 3; x++)
-            mean[x] += w[3 * k + x] / (double)n;
     }
-    for (size_t k = 0; k < n; k++)
-        for (int x = 0; x < 3; x++)
-            for (int y = 0; y < 3; y++)
-                cov[3 * x + y] += (w[3 * k + x] - mean[x]) *
-                                  (w[3 * k + y] - mean[y]);
+    developable_principal_axes(w, n, mean, value, vector);
     free(w);
-    sym3_eigen(cov, value, vector);
     double axis[3] = {vector[0][0], vector[0][1], vector[0][2]};
     if (vec3_dot(axis, mean) < 0)
         for (int x = 0; x < 3; x++)

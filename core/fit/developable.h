@@ -74,6 +74,15 @@ int developable_cone_start(const double *points, size_t n, const double *at,
                            const double *ruling, size_t nrulings,
                            struct developable *out);
 
+/* The spread of points (n x 3, n >= 1): their mean into mean, and the
+ * eigenvalues value[0] <= value[1] <= value[2] of their scatter matrix
+ * (the sum of (x - mean)(x - mean)^T) with unit eigenvectors vector[k]:
+ * vector[2] along their longest extent, vector[0] normal to the plane they
+ * lie nearest. */
+void developable_principal_axes(const double *points, size_t n,
+                                double mean[3], double value[3],
+                                double vector[3][3]);
+
 /* The largest |distance| (m) of points (n x 3) from d. */
 double developable_max_distance(const struct developable *d,
                                 const double *points, size_t n);

@@ -105,23 +105,6 @@ static void add_sample(const struct cell_sides *sides, size_t s, int k,
     (*n)++;
 }
 
-/* The direction of the largest extent of n points (unit). */
-static void longest_extent(const double *xyz, size_t n, double out[3])
-{
-    double mean[3] = {0, 0, 0}, cov[9] = {0};
-    for (size_t k = 0; k < n; k++)
-        for (int x = 0; x < 3; x++)
-            mean[x] += xyz[3 * k + x] / (double)n;
-    for (size_t k = 0; k < n; k++)
-        for (int r = 0; r < 3; r++)
-            for (int c = 0; c < 3; c++)
-                cov[3 * r + c] += (xyz[3 * k + r] - mean[r]) *
-                                  (xyz[3 * k + c] - mean[c]);
-    double value[3], vector[3][3];
-    sym3_eigen(cov, value, vector);
-    memcpy(out, vector[2], 3 * sizeof *out);
-}
-
 /* Fits the first nfit of panel's samples xyz (n) with the axis guess
  * axis, and measures the fit's deviation on all n; the first nrulings
  * samples carry the rulings ruling (nrulings x 3), for a cone. Fills
@@ -259,7 +242,10 @@ int built_option_fit(const struct mesh *mesh, const struct fit_points *points,
             sym3_eigen(outer, value, vector);
             memcpy(axis, vector[2], sizeof axis);
         } else {
-            longest_extent(xyz, n, axis);
+            /* No point inside: the longest extent of the samples. */
+            double mean[3], value[3], vector[3][3];
+            developable_principal_axes(xyz, n, mean, value, vector);
+            memcpy(axis, vector[2], sizeof axis);
         }
         fit_panel(panel, xyz, nfit, n, ruling, start[k + 1] - start[k], axis,
                   threshold, b);

@@ -221,6 +221,15 @@ static void cylinder(double s, double t, double p[3])
     p[2] = CYL_R * cos(a);
 }
 
+/* The cylinder in nu x nv panels at threshold t, built and measured. */
+static void cylinder_option(int nu, int nv, double t, struct surface *s,
+                            struct option *o)
+{
+    open_surface(cylinder, CYL_NS, CYL_NT, &identity, NULL, s);
+    panelize(s, nu, nv, t, o);
+    build(s, t, o);
+}
+
 /* The sag of one facet of the cylinder mesh from the true cylinder (m). */
 static double cylinder_chord_error(void)
 {
@@ -254,10 +263,8 @@ static void test_cylinder_fp_gap_and_kink(void **state)
     (void)state;
     int nu = 10, nv = 2;
     struct surface s;
-    open_surface(cylinder, CYL_NS, CYL_NT, &identity, NULL, &s);
     struct option o;
-    panelize(&s, nu, nv, 0.02, &o);
-    build(&s, 0.02, &o);
+    cylinder_option(nu, nv, 0.02, &s, &o);
     double alpha = CYL_THETA / (2 * nu);
     double delta = CYL_R * (sin(alpha) / alpha - cos(alpha));
     double gap = 2 * delta * sin(alpha), kink = CYL_THETA / nu;
@@ -316,10 +323,8 @@ static void test_cylinder_sp_fit(void **state)
     (void)state;
     int nu = 10, nv = 2;
     struct surface s;
-    open_surface(cylinder, CYL_NS, CYL_NT, &identity, NULL, &s);
     struct option o;
-    panelize(&s, nu, nv, 0.003, &o);
-    build(&s, 0.003, &o);
+    cylinder_option(nu, nv, 0.003, &s, &o);
     double e = cylinder_chord_error();
     double w = 2 * CYL_R * sin(CYL_THETA / (2 * nu));
     assert_int_equal(o.totals.count[TYPE_SP], o.panels.npanels);
