@@ -10,16 +10,17 @@
  *     line belongs to the panels on both sides) and the surface sampled
  *     along its four sides (cell_sides.h), ends included once;
  *   - a cylinder is fitted by least squares (developable_fit_cylinder) to
- *     the points inside, the corners and the sides' midpoints,
- *     the axis starting along the mean ruling of the points inside: at each
+ *     the points inside, the corners and the sides' midpoints, the axis
+ *     starting along the mean ruling of the points inside: at each
  *     mesh point the principal direction of the smaller |curvature|,
  *     averaged as the major axis of their outer products (directions have
  *     no sign); a panel with no point inside starts from the longest
  *     extent of its samples;
  *   - sp_deviation is the largest distance of the samples from the fitted
- *     surface. It is not the mesh's own facet sag: samples lie on the mesh,
- *     whose vertices lie on the designer's surface and whose facets may sag
- *     from it, so a panel of a true cylinder reads up to that sag;
+ *     surface. It includes the mesh's own facet sag: the samples lie on
+ *     the mesh, whose vertices lie on the designer's surface and whose
+ *     facets may sag from it, so a panel of a true cylinder reads up to
+ *     that sag (a coarse mesh can make misfits of panels that fit);
  *   - when the cylinder misses by more than t, a cone is fitted, from the
  *     cylinder (the cone whose rulings meet at infinity) and from the apex
  *     where the rulings of the points inside converge, the one nearer the

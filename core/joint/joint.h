@@ -21,7 +21,9 @@
  *   - DP (and an SP misfit): x itself, the panel follows the surface.
  * The gap is the largest distance between the two places of the same
  * point, over the samples on the surface (m). Between samples the edge is
- * not looked at; CELL_SIDE_SEGMENTS + 1 samples per side.
+ * not looked at; CELL_SIDE_SEGMENTS + 1 samples per side, and for a joint
+ * between two FP quads its two ends (joint.c says why that is exact to
+ * micrometres).
  *
  * The kink is the angle between the two panels' unit normals at the
  * edge's middle sample (the on-surface sample nearest the middle when it
