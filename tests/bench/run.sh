@@ -12,6 +12,9 @@ echo
 echo "== One design option: a 37x49 evaluation of the 100k-triangle roof"
 "$build/bench/bench_classify"
 echo
+echo "== Panels as built: the SP fit, gaps and kinks of one 37x49 option of the 100k-triangle roof"
+"$build/bench/bench_joint"
+echo
 echo "== The paper's whole space (336 grids) on the 100k-triangle roof, into SQLite"
 "$build/bench/bench_optimize"
 echo

@@ -1,0 +1,109 @@
+/*
+ * sp_fit.h: single-curved panels as they would be built.
+ *
+ * Classification calls a panel SP from the signs of its curvatures; this
+ * module checks that a panel so typed can be made: a circular cylinder or
+ * a circular cone (developable.h) must fit its surface within the flatness
+ * threshold t. For every SP panel of a classified panelization:
+ *
+ *   - its samples are the mesh points inside its UV cell (a point on a cell
+ *     line belongs to the panels on both sides) and the surface sampled
+ *     along its four sides (cell_sides.h), ends included once;
+ *   - a cylinder is fitted by least squares (developable_fit_cylinder) to
+ *     the points inside, the corners and the sides' midpoints, the axis
+ *     starting along the mean ruling of the points inside: at each
+ *     mesh point the principal direction of the smaller |curvature|,
+ *     averaged as the major axis of their outer products (directions have
+ *     no sign); a panel with no point inside starts from the longest
+ *     extent of its samples;
+ *   - sp_deviation is the largest distance of the samples from the fitted
+ *     surface. It includes the mesh's own facet sag: the samples lie on
+ *     the mesh, whose vertices lie on the designer's surface and whose
+ *     facets may sag from it, so a panel of a true cylinder reads up to
+ *     that sag (a coarse mesh can make misfits of panels that fit);
+ *   - when the cylinder misses by more than t, a cone is fitted, from the
+ *     cylinder (the cone whose rulings meet at infinity) and from the apex
+ *     where the rulings of the points inside converge, the one nearer the
+ *     samples (largest distance) kept;
+ *   - when neither is within t (rounding allowed as classify.h's threshold
+ *     rule), the panel is built DP: a misfit, whose best cylinder and cone
+ *     deviations say why (built_panel_reason).
+ * Other panels are built as typed: FP the planar quad of their corners on
+ * the best-fit plane (joint.h), DP moulded to the surface.
+ */
+#ifndef FACET_SP_FIT_H
+#define FACET_SP_FIT_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "core/base/error.h"
+#include "core/fit/developable.h"
+#include "core/joint/cell_sides.h"
+#include "core/panel/panel.h"
+#include "core/surface/curvature.h"
+#include "core/surface/mesh.h"
+
+/* The mesh points with their UV, gathered once per surface: each distinct
+ * (vertex, UV) pair of the panels' parameterization, so that a vertex on a
+ * UV seam is a sample of the panels on both sides of it. */
+struct fit_points {
+    size_t npoints;
+    const double *uv;          /* npoints x 2, borrowed from the prep */
+    uint32_t *vertex;          /* npoints: the mesh vertex of each */
+    double *ruling;            /* npoints x 3: unit principal direction of
+                                  the smaller |curvature| at it */
+};
+
+/* Builds *out from prep (the panel_prep of the surface; it must outlive
+ * *out). Release with fit_points_free, also after a failure. Returns
+ * FACET_OK or FACET_EWORK when out of memory. */
+int fit_points_build(const struct panel_prep *prep, struct fit_points *out,
+                     struct facet_error *err);
+
+void fit_points_free(struct fit_points *points);
+
+struct built_panel {
+    enum panel_type type;      /* as built: the classified type, except DP
+                                  for an SP panel no cylinder or cone fits */
+    int fitted;                /* 1: built SP on the surface fit */
+    int misfit;                /* 1: typed SP, but no cylinder or cone fits
+                                  within t: built DP */
+    struct developable fit;    /* the cylinder or cone, when fitted */
+    double sp_deviation;       /* largest distance of the samples from fit
+                                  (m); for a misfit the smaller of the best
+                                  cylinder's and cone's; NaN for a panel
+                                  not typed SP */
+    double best_cylinder;      /* the fitted cylinder's deviation (m); NaN
+                                  when not tried or none fits the samples */
+    double best_cone;          /* the fitted cone's (m), NaN likewise */
+};
+
+struct built_option {
+    size_t npanels;            /* as the panelization */
+    struct built_panel *panels;
+    size_t sp_fitted;          /* SP panels built on a cylinder or cone */
+    size_t sp_misfits;         /* SP panels no cylinder or cone fits within
+                                  t, built DP */
+    double threshold;          /* t (m) the fits were held to */
+};
+
+/* Builds every panel of panels (classified) as above, from the mesh, the
+ * surface's fit points and the cell sides of this
+ * panelization, with flatness threshold threshold (m). Fills *out (release
+ * with built_option_free, also after a failure). Returns FACET_OK or
+ * FACET_EWORK when out of memory. */
+int built_option_fit(const struct mesh *mesh, const struct fit_points *points,
+                     const struct panelization *panels,
+                     const struct cell_sides *sides, double threshold,
+                     struct built_option *out, struct facet_error *err);
+
+void built_option_free(struct built_option *built);
+
+/* Why a misfit is built DP, in one line into text (size bytes), e.g. "no
+ * cylinder or cone within t = 3.0 mm: best cylinder 4.2 mm, best cone 3.9
+ * mm"; the empty string for any other panel. */
+void built_panel_reason(const struct built_option *built, size_t panel,
+                        char *text, size_t size);
+
+#endif

@@ -1,0 +1,206 @@
+/*
+ * cell_sides.c: the surface along every cell side. See cell_sides.h.
+ *
+ * Consecutive samples along a grid line lie in the same mesh triangle or a
+ * few triangles on, so each is first looked for by walking there and only
+ * then through the UV lookup: a few barycentric tests per sample.
+ */
+#include "core/joint/cell_sides.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "core/base/vec3.h"
+
+/* The barycentric tolerance of panels_build's corner lookup, so that a side's
+ * ends are the panels' corners. */
+#define LOCATE_TOLERANCE 1e-9
+
+/* The barycentric coordinates of (u, v) in triangle t's UV triangle;
+ * returns 1 when it holds the point (to LOCATE_TOLERANCE). */
+static int uv_barycentric(const struct uv_index *index, uint32_t t, double u,
+                          double v, double b[3])
+{
+    const double *c = index->uv + 6 * (size_t)t;
+    double x1 = c[2] - c[0], y1 = c[3] - c[1];
+    double x2 = c[4] - c[0], y2 = c[5] - c[1];
+    double det = x1 * y2 - x2 * y1;
+    if (det == 0) {
+        b[0] = b[1] = b[2] = 0;
+        return 0;
+    }
+    double px = u - c[0], py = v - c[1];
+    b[1] = (px * y2 - x2 * py) / det;
+    b[2] = (x1 * py - px * y1) / det;
+    b[0] = 1 - b[1] - b[2];
+    return b[0] >= -LOCATE_TOLERANCE && b[1] >= -LOCATE_TOLERANCE &&
+           b[2] >= -LOCATE_TOLERANCE;
+}
+
+/* The triangle holding (u, v), found by walking from hint across the edge
+ * the point lies beyond (a few steps, as consecutive samples are close),
+ * else by the lookup; UINT32_MAX when none holds it. */
+static uint32_t locate_near(const struct mesh *mesh,
+                            const struct uv_index *index, uint32_t hint,
+                            double u, double v, double b[3])
+{
+    uint32_t t = hint;
+    for (int step = 0; step < 4 && t != UINT32_MAX; step++) {
+        if (uv_barycentric(index, t, u, v, b))
+            return t;
+        /* Across the edge opposite the most negative coordinate: edge e
+         * of triangle t runs from corner e to corner e + 1. */
+        int k = b[0] < b[1] ? (b[0] < b[2] ? 0 : 2) : (b[1] < b[2] ? 1 : 2);
+        uint32_t next = mesh->neighbour[3 * (size_t)t + (size_t)(k + 1) % 3];
+        t = next == MESH_NONE ? UINT32_MAX : next;
+    }
+    return uv_index_locate(index, u, v, LOCATE_TOLERANCE, b);
+}
+
+/* The point of triangle t at barycentric b, by its affine map. */
+static void point_at(const struct mesh *mesh, uint32_t t, const double b[3],
+                     double point[3])
+{
+    const uint32_t *tri = mesh->triangle + 3 * (size_t)t;
+    for (int x = 0; x < 3; x++)
+        point[x] = b[0] * mesh->position[3 * (size_t)tri[0] + x] +
+                   b[1] * mesh->position[3 * (size_t)tri[1] + x] +
+                   b[2] * mesh->position[3 * (size_t)tri[2] + x];
+}
+
+/* The unit surface normal in triangle t at barycentric b: the vertex
+ * normals interpolated, on the side of the face normal. */
+static void normal_at(const struct mesh *mesh,
+                      const struct curvature *curvature, uint32_t t,
+                      const double b[3], double normal[3])
+{
+    const uint32_t *tri = mesh->triangle + 3 * (size_t)t;
+    for (int x = 0; x < 3; x++)
+        normal[x] = b[0] * curvature->normal[3 * (size_t)tri[0] + x] +
+                    b[1] * curvature->normal[3 * (size_t)tri[1] + x] +
+                    b[2] * curvature->normal[3 * (size_t)tri[2] + x];
+    const double *face = mesh->face_normal + 3 * (size_t)t;
+    if (!vec3_normalize(normal))
+        memcpy(normal, face, 3 * sizeof *normal);
+    if (vec3_dot(normal, face) < 0)
+        for (int x = 0; x < 3; x++)
+            normal[x] = -normal[x];
+}
+
+int cell_sides_sample(const struct mesh *mesh, const struct uv_index *index,
+                      const struct curvature *curvature,
+                      const struct panelization *panels,
+                      struct cell_sides *out, struct facet_error *err)
+{
+    memset(out, 0, sizeof *out);
+    int nu = panels->nu, nv = panels->nv;
+    out->nu = nu;
+    out->nv = nv;
+    out->nsides = (size_t)(nu + 1) * (size_t)nv +
+                  (size_t)nu * (size_t)(nv + 1);
+    size_t nsamples = out->nsides * CELL_SIDE_SAMPLES;
+    out->point = malloc(nsamples * 3 * sizeof *out->point);
+    out->normal = malloc((out->nsides + 1) * 3 * sizeof *out->normal);
+    out->middle = malloc(out->nsides + 1);
+    out->on = malloc(nsamples);
+    out->sampled = calloc(out->nsides + 1, 1);
+    if (out->point == NULL || out->normal == NULL || out->on == NULL ||
+        out->sampled == NULL || out->middle == NULL) {
+        cell_sides_free(out);
+        return facet_error_set(err, FACET_EWORK,
+                               "out of memory sampling %zu cell sides",
+                               out->nsides);
+    }
+    /* The sides to sample: those of every panel that is not a flat quad. */
+    for (size_t p = 0; p < panels->npanels; p++) {
+        const struct panel *panel = &panels->panels[p];
+        if (cell_sides_flat_quad(panel))
+            continue;
+        out->sampled[cell_side_u(out, panel->i, panel->j)] = 1;
+        out->sampled[cell_side_u(out, panel->i + 1, panel->j)] = 1;
+        out->sampled[cell_side_v(out, panel->i, panel->j)] = 1;
+        out->sampled[cell_side_v(out, panel->i, panel->j + 1)] = 1;
+    }
+    double du = (panels->umax - panels->umin) / nu;
+    double dv = (panels->vmax - panels->vmin) / nv;
+    /* Along each grid line in turn, so that the walk from sample to sample
+     * stays in neighbouring triangles (and in the cache); the first sample
+     * of a side is the last of the one before it on the line. */
+    uint32_t hint = UINT32_MAX;
+    for (int line = 0; line < (nu + 1) + (nv + 1); line++) {
+        int along_v = line <= nu;
+        int count = along_v ? nv : nu;
+        for (int step = 0; step < count; step++) {
+            int i = along_v ? line : step;
+            int j = along_v ? step : line - (nu + 1);
+            size_t s = along_v ? cell_side_u(out, i, j) : cell_side_v(out, i, j);
+            size_t before = step == 0 ? SIZE_MAX
+                            : along_v ? cell_side_u(out, i, j - 1)
+                                      : cell_side_v(out, i - 1, j);
+            if (!out->sampled[s])
+                continue;
+            if (before != SIZE_MAX && !out->sampled[before])
+                before = SIZE_MAX;
+            uint32_t triangle[CELL_SIDE_SAMPLES];
+            double bary[CELL_SIDE_SAMPLES][3];
+            int middle = -1;
+            for (int k = 0; k < CELL_SIDE_SAMPLES; k++) {
+                size_t at = s * CELL_SIDE_SAMPLES + (size_t)k;
+                triangle[k] = UINT32_MAX;
+                if (k == 0 && before != SIZE_MAX) {
+                    size_t from = before * CELL_SIDE_SAMPLES +
+                                  CELL_SIDE_SEGMENTS;
+                    out->on[at] = out->on[from];
+                    memcpy(out->point + 3 * at, out->point + 3 * from,
+                           3 * sizeof *out->point);
+                } else {
+                    double f = (double)k / CELL_SIDE_SEGMENTS;
+                    double u = panels->umin + (i + (along_v ? 0 : f)) * du;
+                    double v = panels->vmin + (j + (along_v ? f : 0)) * dv;
+                    triangle[k] = locate_near(mesh, index, hint, u, v,
+                                              bary[k]);
+                    out->on[at] = triangle[k] != UINT32_MAX;
+                    if (triangle[k] == UINT32_MAX) {
+                        for (int x = 0; x < 3; x++)
+                            out->point[3 * at + x] = NAN;
+                        continue;
+                    }
+                    hint = triangle[k];
+                    point_at(mesh, triangle[k], bary[k], out->point + 3 * at);
+                }
+                if (out->on[at] && triangle[k] != UINT32_MAX &&
+                    (middle < 0 || abs(2 * k - CELL_SIDE_SEGMENTS) <
+                                       abs(2 * middle - CELL_SIDE_SEGMENTS)))
+                    middle = k;
+            }
+            /* The normal at the middle, or at the located sample nearest
+             * it (a side's first sample is copied, not located, and is
+             * never its middle unless the rest is off the surface). */
+            out->middle[s] = (signed char)middle;
+            if (middle < 0) {
+                for (int x = 0; x < 3; x++)
+                    out->normal[3 * s + x] = NAN;
+                continue;
+            }
+            normal_at(mesh, curvature, triangle[middle], bary[middle],
+                      out->normal + 3 * s);
+        }
+    }
+    return FACET_OK;
+}
+
+int cell_sides_flat_quad(const struct panel *panel)
+{
+    return panel->type == TYPE_FP && !panel->trimmed && panel->ncorners == 4;
+}
+
+void cell_sides_free(struct cell_sides *sides)
+{
+    free(sides->sampled);
+    free(sides->middle);
+    free(sides->point);
+    free(sides->normal);
+    free(sides->on);
+    memset(sides, 0, sizeof *sides);
+}

@@ -1,0 +1,91 @@
+/*
+ * cell_sides.h: the surface along every side of a panel grid's cells.
+ *
+ * Two neighbouring panels meet along the side their UV cells share; a
+ * panel's outline is its four sides. This module samples the surface along
+ * every cell side of a panelization once, so that the fit of single-curved
+ * panels (sp_fit.h) and the gaps and kinks between panels (joint.h) read
+ * the same points.
+ *
+ * Only the sides a panel that is not a flat quad touches are sampled: the
+ * sides of SP and DP panels, trimmed panels and panels with a corner off
+ * the surface (by their classified type). A side between two FP quads
+ * needs only its ends, the panels' corners (joint.h says why).
+ *
+ * A sampled side s is sampled at CELL_SIDE_SEGMENTS + 1 points evenly spaced in UV,
+ * ends included (the cell corners, located as panels_build locates them).
+ * A sample is the surface point at that UV by the affine map of the mesh
+ * triangle holding it, so the samples lie on the mesh, and the piecewise
+ * linear curve through them follows the mesh's own to within the sag of
+ * one sample spacing. Where the UV point is off the surface (a trimmed
+ * panel's side), the sample is marked off.
+ *
+ * Sides are numbered: the side on the line u = umin + i du between rows j
+ * and j + 1 is cell_side_u(sides, i, j), i = 0..nu, j = 0..nv-1; the side
+ * on v = vmin + j dv between columns i and i + 1 is cell_side_v(sides, i,
+ * j), i = 0..nu-1, j = 0..nv. Sample k of side s lies at fraction k /
+ * CELL_SIDE_SEGMENTS from the side's first end (lower v, resp. lower u).
+ *
+ * Ownership: cell_sides_sample fills a caller-owned struct; every array is
+ * allocated by it and released by cell_sides_free.
+ */
+#ifndef FACET_CELL_SIDES_H
+#define FACET_CELL_SIDES_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "core/base/error.h"
+#include "core/panel/panel.h"
+#include "core/surface/curvature.h"
+#include "core/surface/mesh.h"
+#include "core/surface/uv_index.h"
+
+#define CELL_SIDE_SEGMENTS 8
+#define CELL_SIDE_SAMPLES (CELL_SIDE_SEGMENTS + 1)
+
+struct cell_sides {
+    int nu, nv;
+    size_t nsides;        /* (nu + 1) nv + nu (nv + 1) */
+    double *point;        /* nsides x CELL_SIDE_SAMPLES x 3 (m); NaN off
+                             the surface */
+    signed char *middle;  /* nsides: the sample nearest the side's middle
+                             that lies on the surface (of those located on
+                             it), or -1 when none does */
+    double *normal;       /* nsides x 3: the unit surface normal at that
+                             sample, the vertex normals interpolated in its
+                             triangle, on the side of the face normal (the
+                             side panel normals are on); NaN without one */
+    unsigned char *on;    /* nsides x CELL_SIDE_SAMPLES: 1 on the surface */
+    unsigned char *sampled;  /* nsides: 1 when the side was sampled; point,
+                                on, middle and normal are unset
+                                otherwise */
+};
+
+static inline size_t cell_side_u(const struct cell_sides *s, int i, int j)
+{
+    return (size_t)j * (size_t)(s->nu + 1) + (size_t)i;
+}
+
+static inline size_t cell_side_v(const struct cell_sides *s, int i, int j)
+{
+    return (size_t)(s->nu + 1) * (size_t)s->nv +
+           (size_t)j * (size_t)s->nu + (size_t)i;
+}
+
+/* 1 when panel is built as the planar quad of its four corners: typed FP,
+ * not trimmed, every corner on the surface. */
+int cell_sides_flat_quad(const struct panel *panel);
+
+/* Samples the sides of panels' grid (classified) over the surface mesh with UV lookup
+ * index (the index panels was built over) and vertex normals from
+ * curvature. Fills *out (release with cell_sides_free, also after a
+ * failure). Returns FACET_OK or FACET_EWORK when out of memory. */
+int cell_sides_sample(const struct mesh *mesh, const struct uv_index *index,
+                      const struct curvature *curvature,
+                      const struct panelization *panels,
+                      struct cell_sides *out, struct facet_error *err);
+
+void cell_sides_free(struct cell_sides *sides);
+
+#endif
