@@ -2,7 +2,8 @@
  * bench_common.h: what every C benchmark shares: a monotonic clock, the
  * example roof at a given resolution, prepared, and the bare pass over its
  * triangles that serves as the baseline the figures are ratios against.
- * Header-only (static functions) because each benchmark is one file.
+ * Header-only (static inline functions, each benchmark taking what it
+ * needs) because each benchmark is one file.
  */
 #ifndef FACET_BENCH_COMMON_H
 #define FACET_BENCH_COMMON_H
@@ -16,16 +17,38 @@
 #include "core/surface/example.h"
 #include "core/surface/surface.h"
 
-static double bench_now(void)
+static inline double bench_now(void)
 {
     struct timespec t;
     clock_gettime(CLOCK_MONOTONIC, &t);
     return (double)t.tv_sec + (double)t.tv_nsec * 1e-9;
 }
 
+/* The calling thread's CPU time (s): on a machine shared with other work,
+ * wall time counts their turns too. */
+static inline double bench_cpu_now(void)
+{
+    struct timespec t;
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+    return (double)t.tv_sec + (double)t.tv_nsec * 1e-9;
+}
+
+static inline int bench_compare_doubles(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+/* The median of t[0..n) (n >= 1), which it sorts. */
+static inline double bench_median(double *t, int n)
+{
+    qsort(t, (size_t)n, sizeof *t, bench_compare_doubles);
+    return t[n / 2];
+}
+
 /* Sums the triangle areas from the positions: the least any evaluation
  * must do. */
-static double bench_bare_pass(const struct mesh *mesh)
+static inline double bench_bare_pass(const struct mesh *mesh)
 {
     double area = 0;
     for (size_t t = 0; t < mesh->ntriangles; t++) {
@@ -43,7 +66,7 @@ static double bench_bare_pass(const struct mesh *mesh)
 }
 
 /* Best time of a bare pass over runs repetitions (seconds). */
-static double bench_bare_best(const struct mesh *mesh, int runs)
+static inline double bench_bare_best(const struct mesh *mesh, int runs)
 {
     volatile double sink = 0;
     double best = INFINITY;
@@ -59,7 +82,7 @@ static double bench_bare_best(const struct mesh *mesh, int runs)
 /* Writes the example roof at res x res quads to path (kept when path is
  * not NULL, else a temporary file) and opens and prepares it. Exits on
  * failure: a benchmark without its surface has nothing to say. */
-static void bench_roof(int res, const char *keep_path,
+static inline void bench_roof(int res, const char *keep_path,
                        struct surface *surface)
 {
     char temporary[] = "/tmp/facet_bench_roof_XXXXXX";

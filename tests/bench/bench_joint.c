@@ -31,25 +31,6 @@
 #define RUNS 21
 #define TARGET_MS 10.0
 
-static double cpu_now(void)
-{
-    struct timespec t;
-    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-    return (double)t.tv_sec + (double)t.tv_nsec * 1e-9;
-}
-
-static int by_value(const void *a, const void *b)
-{
-    double x = *(const double *)a, y = *(const double *)b;
-    return (x > y) - (x < y);
-}
-
-static double median(double *t, int n)
-{
-    qsort(t, (size_t)n, sizeof *t, by_value);
-    return t[n / 2];
-}
-
 static void fail(const struct facet_error *err)
 {
     fprintf(stderr, "bench_joint: %s\n", err->message);
@@ -80,30 +61,30 @@ int main(int argc, char **argv)
     memset(&joints, 0, sizeof joints);
     for (int run = 0; run < RUNS; run++) {
         struct panelization panels;
-        start = cpu_now();
+        start = bench_cpu_now();
         if (panels_build_fast(&surface.panels, PANEL_EXTREMES, 37, 49,
                               &panels, &err) != FACET_OK)
             fail(&err);
         classify_panels(&panels, &options, &totals);
-        base[run] = cpu_now() - start;
+        base[run] = bench_cpu_now() - start;
 
         built_option_free(&built);
         joints_free(&joints);
         struct cell_sides sides;
-        double t0 = cpu_now();
+        double t0 = bench_cpu_now();
         if (cell_sides_sample(&surface.mesh, &surface.uv,
                               &surface.curvature, &panels, &sides,
                               &err) != FACET_OK)
             fail(&err);
-        double t1 = cpu_now();
+        double t1 = bench_cpu_now();
         if (built_option_fit(&surface.mesh, &points, &panels, &sides,
                              options.threshold, &built, &err) != FACET_OK)
             fail(&err);
-        double t2 = cpu_now();
+        double t2 = bench_cpu_now();
         if (joints_measure(&panels, &built, &sides, max_gap, max_kink,
                            &joints, &err) != FACET_OK)
             fail(&err);
-        double t3 = cpu_now();
+        double t3 = bench_cpu_now();
         joint[run] = t3 - t0;
         stage[0][run] = t1 - t0;
         stage[1][run] = t2 - t1;
@@ -111,9 +92,9 @@ int main(int argc, char **argv)
         cell_sides_free(&sides);
         panelization_free(&panels);
     }
-    double base_ms = median(base, RUNS) * 1e3;
+    double base_ms = bench_median(base, RUNS) * 1e3;
     double bare_ms = bench_bare_best(&surface.mesh, 50) * 1e3;
-    double joint_ms = median(joint, RUNS) * 1e3;
+    double joint_ms = bench_median(joint, RUNS) * 1e3;
 
     printf("surface: roof, %zu triangles, %zu vertices, %.1f m^2\n",
            surface.mesh.ntriangles, surface.mesh.nvertices,
@@ -130,8 +111,9 @@ int main(int argc, char **argv)
            joint_ms / base_ms, joint_ms <= TARGET_MS ? "met" : "not met",
            TARGET_MS);
     printf("  of which: cell sides %.3f ms, SP fit %.3f ms, joints %.3f ms "
-           "(medians)\n", median(stage[0], RUNS) * 1e3,
-           median(stage[1], RUNS) * 1e3, median(stage[2], RUNS) * 1e3);
+           "(medians)\n", bench_median(stage[0], RUNS) * 1e3,
+           bench_median(stage[1], RUNS) * 1e3,
+           bench_median(stage[2], RUNS) * 1e3);
     printf("joints: %zu; gap max %.2f mm, mean %.2f mm, %zu over %.0f mm; "
            "kink max %.2f deg, mean %.2f deg, %zu over %.0f deg\n",
            joints.nedges, joints.max_gap * 1e3, joints.mean_gap * 1e3,

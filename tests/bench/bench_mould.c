@@ -26,26 +26,6 @@
 
 #define RUNS 31
 
-/* The calling thread's CPU time (s). */
-static double cpu_now(void)
-{
-    struct timespec t;
-    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-    return (double)t.tv_sec + (double)t.tv_nsec * 1e-9;
-}
-
-static int compare_doubles(const void *a, const void *b)
-{
-    double x = *(const double *)a, y = *(const double *)b;
-    return x < y ? -1 : x > y;
-}
-
-static double median(double *t, int n)
-{
-    qsort(t, (size_t)n, sizeof *t, compare_doubles);
-    return t[n / 2];
-}
-
 /* The median wall and CPU times (s) of the families of p under options;
  * *out keeps the last run's. */
 static void time_families(const struct surface *s,
@@ -59,16 +39,16 @@ static void time_families(const struct surface *s,
     for (int run = 0; run < RUNS; run++) {
         if (run > 0)
             mould_families_free(out);
-        double start = bench_now(), start_cpu = cpu_now();
+        double start = bench_now(), start_cpu = bench_cpu_now();
         if (mould_families_build(&s->mesh, &s->uv, p, options, out, &err)) {
             fprintf(stderr, "bench_mould: %s\n", err.message);
             exit(1);
         }
         t[run] = bench_now() - start;
-        c[run] = cpu_now() - start_cpu;
+        c[run] = bench_cpu_now() - start_cpu;
     }
-    *wall = median(t, RUNS);
-    *cpu = median(c, RUNS);
+    *wall = bench_median(t, RUNS);
+    *cpu = bench_median(c, RUNS);
 }
 
 static const char *verdict(double seconds)
@@ -104,7 +84,7 @@ int main(int argc, char **argv)
     for (int run = 0; run < RUNS; run++) {
         if (run > 0)
             panelization_free(&panels);
-        double start = bench_now(), start_cpu = cpu_now();
+        double start = bench_now(), start_cpu = bench_cpu_now();
         if (panels_build_fast(&surface.panels, PANEL_EXTREMES, 37, 49,
                               &panels, &err) != FACET_OK) {
             fprintf(stderr, "bench_mould: %s\n", err.message);
@@ -112,9 +92,10 @@ int main(int argc, char **argv)
         }
         classify_panels(&panels, &classify, &totals);
         t[run] = bench_now() - start;
-        c[run] = cpu_now() - start_cpu;
+        c[run] = bench_cpu_now() - start_cpu;
     }
-    double baseline = median(t, RUNS), baseline_cpu = median(c, RUNS);
+    double baseline = bench_median(t, RUNS);
+    double baseline_cpu = bench_median(c, RUNS);
     double bare = bench_bare_best(&surface.mesh, 50);
     double load[1] = {-1};
     getloadavg(load, 1);

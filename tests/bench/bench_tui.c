@@ -28,6 +28,7 @@
 #include <time.h>
 #include <unistd.h>
 
+#include "bench_common.h"
 #include "store/filter.h"
 #include "store/store.h"
 #include "tui/table_model.h"
@@ -35,13 +36,6 @@
 #define BATCH 10000
 #define TARGET_MS 50.0
 #define MAX_REPS 50
-
-static double bench_now(void)
-{
-    struct timespec t;
-    clock_gettime(CLOCK_MONOTONIC, &t);
-    return (double)t.tv_sec + (double)t.tv_nsec * 1e-9;
-}
 
 static void die(const char *what, const struct facet_error *err)
 {
