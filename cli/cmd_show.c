@@ -60,7 +60,8 @@ static int show_main(int argc, char **argv, struct facet_error *err)
                    o.row.knee ? " (the knee)" : "");
             char shown[sizeof o.run.surface_path];
             text_for_terminal(o.run.surface_path, shown, sizeof shown);
-            printf("%-16s %s (%s)\n", "surface", shown, o.run.units);
+            printf("%-16s %s (%s)\n", "surface", shown,
+                   store_run_setting_text(&o.run, RUN_SETTING_UNITS));
             printf("%-16s %d x %d (%zu panels)\n", "grid", o.row.nu,
                    o.row.nv, o.totals.panels);
             printf("%-16s %g mm\n", "threshold", o.row.threshold_mm);

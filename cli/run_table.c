@@ -54,7 +54,8 @@ int run_table_print(FILE *out, struct store *store, const char *db,
     snprintf(line, sizeof line, "run %lld (%s%s%s): %s, %s, %lld options in "
              "%.2f s, %lld Pareto-optimal", (long long)info.id, run_status_name(info.status),
              name[0] ? ", " : "", name, path,
-             info.method, (long long)info.options, info.elapsed,
+             store_run_setting_text(&info, RUN_SETTING_METHOD),
+             (long long)info.options, info.elapsed,
              (long long)info.pareto_options);
     text_wrap(out, line, text_table_width(out, wide));
     char hypervolume[32] = "- (no feasible option)";

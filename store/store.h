@@ -22,6 +22,9 @@
 #include "core/classify/classify.h"
 #include "core/base/error.h"
 #include "core/panel/panel.h"
+#include "core/search/optimize.h"
+#include "core/surface/mesh.h"
+#include "core/surface/param.h"
 #include "store/option_column.h"
 
 struct store;  /* an open database */
@@ -37,6 +40,33 @@ const char *run_status_name(enum run_status status);
 /* The status named text into *out: 0, or -1 when text names none. */
 int run_status_parse(const char *text, enum run_status *out);
 
+/* Whose panels a run stores at the end; the others are computed when
+ * shown or exported. Here, not in study/, because the store records it. */
+enum study_keep_panels {
+    KEEP_FRONT,  /* every Pareto option's */
+    KEEP_KNEE,   /* the knee's alone */
+    KEEP_NONE
+};
+
+/* "front", "knee", "none", as runs.store_panels keeps them. */
+const char *study_keep_panels_name(enum study_keep_panels keep);
+/* The choice named text into *out; FACET_EINPUT naming the field what
+ * (the caller's name for it) and the choices. */
+int study_keep_panels_parse(const char *text, const char *what,
+                            enum study_keep_panels *out,
+                            struct facet_error *err);
+
+/* The settings runs keeps by name (its columns units, method, per_panel,
+ * uv_method, uv, store_panels). The names are turned into the enums of
+ * struct run_info here, in the store, and nowhere else. A column whose
+ * text names nothing this Facet knows (a newer Facet's name, or one
+ * written by hand) is not guessed: run_info.unknown keeps its text. */
+enum run_setting {
+    RUN_SETTING_UNITS, RUN_SETTING_METHOD, RUN_SETTING_PER_PANEL,
+    RUN_SETTING_UV_METHOD, RUN_SETTING_UV, RUN_SETTING_STORE_PANELS,
+    RUN_SETTINGS
+};
+
 /* What produced a run, and how it went. Text fields are NUL-terminated. */
 struct run_info {
     int64_t id;
@@ -45,17 +75,21 @@ struct run_info {
     char surface_sha256[65];   /* hex digest of the OBJ file's bytes */
     double surface_area;       /* m^2 of the selected part */
     int64_t triangles;         /* after triangulation */
-    char uv_method[12];        /* taken: "vt", "grid", "plane", "harmonic" */
-    char uv[12];               /* asked for (--uv), or "" for automatic */
-    char store_panels[8];      /* whose panels it stores at the end:
-                                  "front" (every Pareto option), "knee",
-                                  "none" */
+    enum param_method uv_method; /* taken; PARAM_AUTO for a run of a
+                                  Facet that did not record it */
+    enum param_method uv;      /* asked for; PARAM_AUTO for automatic */
+    enum study_keep_panels store_panels; /* whose panels it stores at the
+                                  end */
+    /* Per enum run_setting: the column's text when it names nothing this
+     * Facet knows (the field then holds its first value, which must not
+     * be used: store_run_setting_check), "" when it was read. */
+    char unknown[RUN_SETTINGS][32];
     char warnings[1400];       /* what the run warned of when it began
                                   (the surface's warnings and a mesh coarser
                                   than the space's finest panels), one per
                                   line; "" for none */
-    char units[4];             /* m, cm, mm, in, ft */
-    char method[16];           /* exhaustive, random, nsga2 */
+    enum mesh_units units;     /* what one OBJ unit is */
+    enum optimize_method method;
     uint64_t seed;
     int u_min, u_max;          /* design space: grid sides */
     int v_min, v_max;
@@ -66,7 +100,7 @@ struct run_info {
     int sp_as_fp;
     double max_panel_area;     /* m^2 */
     double curvature_tol;      /* 1/m; 0 for 8 t / d^2 */
-    char per_panel[12];        /* extremes or mean */
+    enum panel_curvature_mode per_panel;
     int flip_normals;
     char object[128];          /* --object, or "" */
     char group[128];           /* --group, or "" */
@@ -89,6 +123,20 @@ struct run_info {
     int64_t pareto_options;    /* options of rank 1 */
     double best_cost;          /* lowest cost of a feasible option (USD) */
 };
+
+/* FACET_OK when run's setting was read from the file; FACET_EINPUT when
+ * its column names nothing this Facet knows, with a one-line message
+ * naming the run, the column and the value. A run is neither resumed nor
+ * evaluated with a setting guessed in its place. */
+int store_run_setting_check(const struct run_info *run,
+                            enum run_setting setting,
+                            struct facet_error *err);
+
+/* How run's setting reads in a listing: its name as the column holds it
+ * ("" for an automatic UV), or the column's own text when that names
+ * nothing this Facet knows (a listing still shows every run). */
+const char *store_run_setting_text(const struct run_info *run,
+                                   enum run_setting setting);
 
 /* One design option of a run: its variables and metrics. */
 struct option_row {

@@ -53,6 +53,110 @@ int run_status_parse(const char *text, enum run_status *out)
     return -1;
 }
 
+static const char *const keep_names[] = {
+    [KEEP_FRONT] = "front", [KEEP_KNEE] = "knee", [KEEP_NONE] = "none"};
+
+const char *study_keep_panels_name(enum study_keep_panels keep)
+{
+    return keep_names[keep];
+}
+
+int study_keep_panels_parse(const char *text, const char *what,
+                            enum study_keep_panels *out,
+                            struct facet_error *err)
+{
+    for (int k = 0; k < (int)(sizeof keep_names / sizeof *keep_names); k++)
+        if (strcmp(text, keep_names[k]) == 0) {
+            *out = (enum study_keep_panels)k;
+            return FACET_OK;
+        }
+    return facet_error_set(err, FACET_EINPUT,
+                           "%s: '%s' is not front, knee or none", what, text);
+}
+
+/* The columns of runs that hold the settings, by enum run_setting. */
+static const char *const setting_column[RUN_SETTINGS] = {
+    [RUN_SETTING_UNITS] = "units", [RUN_SETTING_METHOD] = "method",
+    [RUN_SETTING_PER_PANEL] = "per_panel",
+    [RUN_SETTING_UV_METHOD] = "uv_method", [RUN_SETTING_UV] = "uv",
+    [RUN_SETTING_STORE_PANELS] = "store_panels"};
+
+/* An automatic UV is "" in the file (NULL for uv): a run of a Facet that
+ * did not record the UV it took, or one that asked for none. */
+static const char *uv_text(enum param_method method)
+{
+    return method == PARAM_AUTO ? "" : param_method_name(method);
+}
+
+/* Reads the setting column col holds into its field of *r; text that
+ * names nothing is kept in r->unknown instead. */
+static void setting_from_row(sqlite3_stmt *s, int col,
+                             enum run_setting setting, struct run_info *r)
+{
+    const unsigned char *column = sqlite3_column_text(s, col);
+    const char *text = column ? (const char *)column : "";
+    struct facet_error ignored;
+    int rc = 0;
+    switch (setting) {
+    case RUN_SETTING_UNITS:
+        rc = mesh_units_parse(text, "", &r->units, &ignored);
+        break;
+    case RUN_SETTING_METHOD:
+        rc = optimize_method_parse(text, "", &r->method, &ignored);
+        break;
+    case RUN_SETTING_PER_PANEL:
+        rc = panel_mode_parse(text, "", &r->per_panel, &ignored);
+        break;
+    case RUN_SETTING_UV_METHOD:
+        rc = param_method_parse(text[0] ? text : "auto", &r->uv_method);
+        break;
+    case RUN_SETTING_UV:
+        rc = param_method_parse(text[0] ? text : "auto", &r->uv);
+        break;
+    case RUN_SETTING_STORE_PANELS:
+        rc = study_keep_panels_parse(text, "", &r->store_panels, &ignored);
+        break;
+    case RUN_SETTINGS:
+        assert(0);
+    }
+    if (rc != 0)
+        snprintf(r->unknown[setting], sizeof r->unknown[setting], "%s",
+                 text[0] ? text : "(empty)");
+}
+
+int store_run_setting_check(const struct run_info *run,
+                            enum run_setting setting,
+                            struct facet_error *err)
+{
+    assert((unsigned)setting < RUN_SETTINGS);
+    if (run->unknown[setting][0] == '\0')
+        return FACET_OK;
+    return facet_error_set(err, FACET_EINPUT,
+        "run %lld: runs.%s holds '%s', which this Facet does not know "
+        "(written by a newer Facet?)", (long long)run->id,
+        setting_column[setting], run->unknown[setting]);
+}
+
+const char *store_run_setting_text(const struct run_info *run,
+                                   enum run_setting setting)
+{
+    assert((unsigned)setting < RUN_SETTINGS);
+    if (run->unknown[setting][0] != '\0')
+        return run->unknown[setting];
+    switch (setting) {
+    case RUN_SETTING_UNITS: return mesh_units_name(run->units);
+    case RUN_SETTING_METHOD: return optimize_method_name(run->method);
+    case RUN_SETTING_PER_PANEL: return panel_mode_name(run->per_panel);
+    case RUN_SETTING_UV_METHOD: return uv_text(run->uv_method);
+    case RUN_SETTING_UV: return uv_text(run->uv);
+    case RUN_SETTING_STORE_PANELS:
+        return study_keep_panels_name(run->store_panels);
+    case RUN_SETTINGS: break;
+    }
+    assert(0);
+    return "";
+}
+
 static void run_from_row(const struct store *store, sqlite3_stmt *s,
                          struct run_info *r)
 {
@@ -71,10 +175,10 @@ static void run_from_row(const struct store *store, sqlite3_stmt *s,
     r->elapsed = sqlite3_column_double(s, c++);
     copy_text(r->surface_path, sizeof r->surface_path, s, c++);
     copy_text(r->surface_sha256, sizeof r->surface_sha256, s, c++);
-    copy_text(r->units, sizeof r->units, s, c++);
+    setting_from_row(s, c++, RUN_SETTING_UNITS, r);
     copy_text(r->object, sizeof r->object, s, c++);
     copy_text(r->group, sizeof r->group, s, c++);
-    copy_text(r->method, sizeof r->method, s, c++);
+    setting_from_row(s, c++, RUN_SETTING_METHOD, r);
     r->seed = (uint64_t)sqlite3_column_int64(s, c++);
     r->u_min = sqlite3_column_int(s, c++);
     r->u_max = sqlite3_column_int(s, c++);
@@ -88,7 +192,7 @@ static void run_from_row(const struct store *store, sqlite3_stmt *s,
     r->sp_as_fp = sqlite3_column_int(s, c++);
     r->max_panel_area = sqlite3_column_double(s, c++);
     r->curvature_tol = sqlite3_column_double(s, c++);
-    copy_text(r->per_panel, sizeof r->per_panel, s, c++);
+    setting_from_row(s, c++, RUN_SETTING_PER_PANEL, r);
     r->flip_normals = sqlite3_column_int(s, c++);
     copy_text(r->objectives, sizeof r->objectives, s, c++);
     r->population = sqlite3_column_int(s, c++);
@@ -105,10 +209,10 @@ static void run_from_row(const struct store *store, sqlite3_stmt *s,
     r->best_cost = store_column_or_nan(s, c++);
     r->surface_area = sqlite3_column_double(s, c++);
     r->triangles = sqlite3_column_int64(s, c++);
-    copy_text(r->uv_method, sizeof r->uv_method, s, c++);
-    copy_text(r->uv, sizeof r->uv, s, c++);
+    setting_from_row(s, c++, RUN_SETTING_UV_METHOD, r);
+    setting_from_row(s, c++, RUN_SETTING_UV, r);
     copy_text(r->warnings, sizeof r->warnings, s, c++);
-    copy_text(r->store_panels, sizeof r->store_panels, s, c++);
+    setting_from_row(s, c++, RUN_SETTING_STORE_PANELS, r);
     /* A writer marks such runs when it opens the file; a reader cannot
      * write, so it reads them as what they are. */
     if (store->read_only && r->status == RUN_RUNNING &&
@@ -154,10 +258,11 @@ int store_run_create(struct store *store, struct run_info *r,
     sqlite3_bind_text(s, 2, r->started, -1, SQLITE_TRANSIENT);
     sqlite3_bind_text(s, 3, r->surface_path, -1, SQLITE_TRANSIENT);
     sqlite3_bind_text(s, 4, r->surface_sha256, -1, SQLITE_TRANSIENT);
-    sqlite3_bind_text(s, 5, r->units, -1, SQLITE_TRANSIENT);
+    sqlite3_bind_text(s, 5, mesh_units_name(r->units), -1, SQLITE_STATIC);
     bind_text_or_null(s, 6, r->object);
     bind_text_or_null(s, 7, r->group);
-    sqlite3_bind_text(s, 8, r->method, -1, SQLITE_TRANSIENT);
+    sqlite3_bind_text(s, 8, optimize_method_name(r->method), -1,
+                      SQLITE_STATIC);
     sqlite3_bind_int64(s, 9, (sqlite3_int64)r->seed);
     sqlite3_bind_int(s, 10, r->u_min);
     sqlite3_bind_int(s, 11, r->u_max);
@@ -172,7 +277,8 @@ int store_run_create(struct store *store, struct run_info *r,
     sqlite3_bind_double(s, 21, r->max_panel_area);
     if (r->curvature_tol > 0)
         sqlite3_bind_double(s, 22, r->curvature_tol);
-    sqlite3_bind_text(s, 23, r->per_panel, -1, SQLITE_TRANSIENT);
+    sqlite3_bind_text(s, 23, panel_mode_name(r->per_panel), -1,
+                      SQLITE_STATIC);
     sqlite3_bind_int(s, 24, r->flip_normals);
     sqlite3_bind_text(s, 25, r->objectives, -1, SQLITE_TRANSIENT);
     if (r->population > 0)
@@ -187,11 +293,11 @@ int store_run_create(struct store *store, struct run_info *r,
     sqlite3_bind_text(s, 32, r->writer_host, -1, SQLITE_TRANSIENT);
     sqlite3_bind_double(s, 33, r->surface_area);
     sqlite3_bind_int64(s, 34, r->triangles);
-    sqlite3_bind_text(s, 35, r->uv_method, -1, SQLITE_TRANSIENT);
-    bind_text_or_null(s, 36, r->uv);
+    sqlite3_bind_text(s, 35, uv_text(r->uv_method), -1, SQLITE_STATIC);
+    bind_text_or_null(s, 36, uv_text(r->uv));
     sqlite3_bind_text(s, 37, r->warnings, -1, SQLITE_TRANSIENT);
-    sqlite3_bind_text(s, 38, r->store_panels[0] ? r->store_panels : "front",
-                      -1, SQLITE_TRANSIENT);
+    sqlite3_bind_text(s, 38, study_keep_panels_name(r->store_panels), -1,
+                      SQLITE_STATIC);
     if (sqlite3_step(s) != SQLITE_DONE)
         rc = store_fail(store, "creating a run", err);
     else

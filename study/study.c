@@ -95,27 +95,6 @@ static int stop_requested(void *context)
            state->hooks->should_stop(state->hooks->context);
 }
 
-static const char *const keep_names[] = {
-    [KEEP_FRONT] = "front", [KEEP_KNEE] = "knee", [KEEP_NONE] = "none"};
-
-const char *study_keep_panels_name(enum study_keep_panels keep)
-{
-    return keep_names[keep];
-}
-
-int study_keep_panels_parse(const char *text, const char *what,
-                            enum study_keep_panels *out,
-                            struct facet_error *err)
-{
-    for (int k = 0; k < (int)(sizeof keep_names / sizeof *keep_names); k++)
-        if (strcmp(text, keep_names[k]) == 0) {
-            *out = (enum study_keep_panels)k;
-            return FACET_OK;
-        }
-    return facet_error_set(err, FACET_EINPUT,
-                           "%s: '%s' is not front, knee or none", what, text);
-}
-
 void study_request_defaults(struct study_request *r)
 {
     memset(r, 0, sizeof *r);
@@ -144,19 +123,19 @@ int study_settings(const struct run_info *run,
 {
     memset(s, 0, sizeof *s);
     option_params_defaults(&s->base);
-    int rc = optimize_method_parse(run->method, "the run's method",
-                                   &s->method, err);
+    int rc = store_run_setting_check(run, RUN_SETTING_METHOD, err);
     if (rc == FACET_OK)
         rc = objectives_parse(run->objectives, "the run's objectives",
                               s->objectives, &s->nobjectives, err);
     if (rc == FACET_OK)
-        rc = mesh_units_parse(run->units, "the run's units", &mesh->units,
-                              err);
+        rc = store_run_setting_check(run, RUN_SETTING_UNITS, err);
     if (rc == FACET_OK)
-        rc = panel_mode_parse(run->per_panel, "the run's per-panel mode",
-                              &s->base.mode, err);
+        rc = store_run_setting_check(run, RUN_SETTING_PER_PANEL, err);
     if (rc != FACET_OK)
         return rc;
+    s->method = run->method;
+    mesh->units = run->units;
+    s->base.mode = run->per_panel;
     s->space = (struct design_space){run->u_min, run->u_max, run->v_min,
                                      run->v_max, run->threshold_min_mm,
                                      run->threshold_max_mm,
@@ -265,12 +244,9 @@ int study_open_surface(const struct store *store, const struct run_info *run,
         return rc;
     /* The method the run took, not what would be chosen today: a run
      * started by an older Facet keeps its UV. */
-    enum param_method uv = PARAM_AUTO;
-    if (run->uv_method[0] != '\0' &&
-        param_method_parse(run->uv_method, &uv) != 0)
-        return facet_error_set(err, FACET_EINPUT,
-            "run %lld: unknown UV method '%s' (made by a newer Facet?)",
-            (long long)run->id, run->uv_method);
+    if ((rc = store_run_setting_check(run, RUN_SETTING_UV_METHOD, err)))
+        return rc;
+    enum param_method uv = run->uv_method;
     char place[3][4096];
     int nplaces = surface_candidates(store_path(store), run->surface_path,
                                      place);
@@ -505,13 +481,10 @@ static int store_front_panels(struct store *store, const struct run_info *run,
     struct option_query q = {run->id, 1, NULL, NULL, 0, 0, 0};
     struct option_row *rows;
     size_t n, nfront = 0;
-    enum study_keep_panels keep = KEEP_FRONT;
-    int rc = study_keep_panels_parse(run->store_panels,
-                                     "the run's panels to store", &keep,
-                                     err);
-    if (rc != FACET_OK || keep == KEEP_NONE)
+    int rc = store_run_setting_check(run, RUN_SETTING_STORE_PANELS, err);
+    if (rc != FACET_OK || run->store_panels == KEEP_NONE)
         return rc;
-    int knee_only = keep == KEEP_KNEE;
+    int knee_only = run->store_panels == KEEP_KNEE;
     rc = store_options_query_rows(store, &q, &rows, &n, err);
     struct design_point *points = malloc((n ? n : 1) * sizeof *points);
     int64_t *numbers = malloc((n ? n : 1) * sizeof *numbers);
@@ -772,8 +745,7 @@ int study_start(struct store *store, const struct study_request *request,
     if ((rc = study_request_check(request, err)) != FACET_OK)
         return rc;
     snprintf(run.name, sizeof run.name, "%s", request->name);
-    snprintf(run.store_panels, sizeof run.store_panels, "%s",
-             study_keep_panels_name(request->store_panels));
+    run.store_panels = request->store_panels;
     /* Recorded absolute, so the run's surface is found from any folder;
      * a path realpath cannot resolve fails below, when it is read. */
     char absolute[4096];
@@ -799,16 +771,12 @@ int study_start(struct store *store, const struct study_request *request,
     }
     collect_warnings(&surface, &s->space, hooks, run.warnings,
                      sizeof run.warnings);
-    snprintf(run.units, sizeof run.units, "%s",
-             mesh_units_name(request->mesh.units));
+    run.units = request->mesh.units;
     run.surface_area = surface.mesh.area;
     run.triangles = (int64_t)surface.mesh.ntriangles;
-    snprintf(run.uv_method, sizeof run.uv_method, "%s",
-             param_method_name(surface.param.method));
-    snprintf(run.uv, sizeof run.uv, "%s",
-             request->uv == PARAM_AUTO ? "" : param_method_name(request->uv));
-    snprintf(run.method, sizeof run.method, "%s",
-             optimize_method_name(s->method));
+    run.uv_method = surface.param.method;
+    run.uv = request->uv;
+    run.method = s->method;
     run.seed = s->seed;
     run.u_min = s->space.u_min;
     run.u_max = s->space.u_max;
@@ -821,8 +789,7 @@ int study_start(struct store *store, const struct study_request *request,
     run.sp_as_fp = s->base.classify.sp_as_fp;
     run.max_panel_area = s->base.classify.max_panel_area;
     run.curvature_tol = s->base.classify.curvature_tol;
-    snprintf(run.per_panel, sizeof run.per_panel, "%s",
-             panel_mode_name(s->base.mode));
+    run.per_panel = s->base.mode;
     run.flip_normals = request->flip_normals;
     snprintf(run.object, sizeof run.object, "%s",
              request->mesh.object ? request->mesh.object : "");

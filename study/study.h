@@ -37,22 +37,6 @@ struct study_hooks {
     void (*warning)(void *context, const char *text);
 };
 
-/* Whose panels a run stores at the end; the others are computed when
- * shown or exported. */
-enum study_keep_panels {
-    KEEP_FRONT,  /* every Pareto option's */
-    KEEP_KNEE,   /* the knee's alone */
-    KEEP_NONE
-};
-
-/* "front", "knee", "none", as runs.store_panels keeps them. */
-const char *study_keep_panels_name(enum study_keep_panels keep);
-/* The choice named text into *out; FACET_EINPUT naming the field what
- * (the caller's name for it) and the choices. */
-int study_keep_panels_parse(const char *text, const char *what,
-                            enum study_keep_panels *out,
-                            struct facet_error *err);
-
 /* What a new run is made of. */
 struct study_request {
     const char *surface_path;

@@ -85,10 +85,12 @@ void study_option_free(struct study_option *p)
 void study_option_source(const struct study_option *p,
                          struct report_source *out)
 {
-    *out = (struct report_source){p->run.surface_path, p->run.units,
-                                  p->run.surface_area,
-                                  (size_t)p->run.triangles,
-                                  p->run.uv_method, p->run.per_panel};
+    const struct run_info *r = &p->run;
+    *out = (struct report_source){
+        r->surface_path, store_run_setting_text(r, RUN_SETTING_UNITS),
+        r->surface_area, (size_t)r->triangles,
+        store_run_setting_text(r, RUN_SETTING_UV_METHOD),
+        store_run_setting_text(r, RUN_SETTING_PER_PANEL)};
 }
 
 int study_export(struct store *store, int64_t run, int64_t number,
@@ -254,7 +256,7 @@ static int load_points(struct store *store, int64_t run,
                  strlen(info.name) > 16 ? "..." : "");
     else
         snprintf(p->label, sizeof p->label, "run %lld (%s)", (long long)run,
-                 info.method);
+                 store_run_setting_text(&info, RUN_SETTING_METHOD));
     *series = (struct svg_plot_series){p->label, NULL, p->n, p->x, p->y,
                                        r->size ? p->size : NULL, p->rank,
                                        knee};

@@ -417,7 +417,8 @@ struct tui_screen *screen_newrun_like(struct tui_app *app,
         return NULL;
     struct newrun_screen *s = (struct newrun_screen *)base;
     char text[128];
-    tui_input_set(&s->field[F_UNITS], run->units);
+    tui_input_set(&s->field[F_UNITS],
+                  store_run_setting_text(run, RUN_SETTING_UNITS));
     /* the grid two panels either way, never below one panel */
     int u0 = option->nu - 2 > 1 ? option->nu - 2 : 1;
     int v0 = option->nv - 2 > 1 ? option->nv - 2 : 1;

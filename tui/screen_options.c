@@ -296,7 +296,7 @@ static void draw_title(struct options_screen *s, int width)
         {"", run, 0},
         {" ", s->run.name, 4},
         {" ", surface, 3},
-        {" | ", s->run.method, 2},
+        {" | ", store_run_setting_text(&s->run, RUN_SETTING_METHOD), 2},
         {" | ", run_status_name(s->run.status), 0},
         {" | ", count, 0},
         {", ", pareto, 1},

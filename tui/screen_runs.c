@@ -115,7 +115,8 @@ static void runs_draw(struct tui_screen *base, struct tui_app *app,
         tui_fmt_started(started, sizeof started, run->started);
         int n = snprintf(line, sizeof line,
                          "%4lld %-11s %-10s %8lld %6lld %11s %9s %s%s",
-                         (long long)run->id, run_status_name(run->status), run->method,
+                         (long long)run->id, run_status_name(run->status),
+                         store_run_setting_text(run, RUN_SETTING_METHOD),
                          (long long)run->options,
                          (long long)run->pareto_options, cost, elapsed,
                          wide ? started : "", wide ? "  " : "");
@@ -151,7 +152,8 @@ static void search_step(struct runs_screen *s, struct tui_app *app, int dir)
         size_t k = (s->selected + s->n + (size_t)dir * step) % s->n;
         if (strstr(s->runs[k].name, s->last_search) ||
             strstr(s->runs[k].surface_path, s->last_search) ||
-            strstr(s->runs[k].method, s->last_search) ||
+            strstr(store_run_setting_text(&s->runs[k], RUN_SETTING_METHOD),
+                   s->last_search) ||
             strstr(run_status_name(s->runs[k].status), s->last_search)) {
             s->selected = k;
             return;

@@ -126,10 +126,10 @@ static int64_t generate(struct store *store, int64_t n)
     snprintf(info.name, sizeof info.name, "bench_tui %lld", (long long)n);
     snprintf(info.surface_path, sizeof info.surface_path, "synthetic.obj");
     snprintf(info.surface_sha256, sizeof info.surface_sha256, "0");
-    snprintf(info.uv_method, sizeof info.uv_method, "vt");
-    snprintf(info.units, sizeof info.units, "m");
-    snprintf(info.method, sizeof info.method, "random");
-    snprintf(info.per_panel, sizeof info.per_panel, "extremes");
+    info.uv_method = PARAM_VT;
+    info.units = UNITS_M;
+    info.method = METHOD_RANDOM;
+    info.per_panel = PANEL_EXTREMES;
     snprintf(info.objectives, sizeof info.objectives, "cost,planarity");
     info.u_min = info.v_min = 1;
     info.u_max = info.v_max = 1000;

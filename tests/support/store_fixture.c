@@ -11,9 +11,9 @@ void store_fixture_run(struct run_info *run)
 {
     memset(run, 0, sizeof *run);
     snprintf(run->surface_path, sizeof run->surface_path, "x.obj");
-    snprintf(run->units, sizeof run->units, "m");
-    snprintf(run->method, sizeof run->method, "exhaustive");
-    snprintf(run->per_panel, sizeof run->per_panel, "extremes");
+    run->units = UNITS_M;
+    run->method = METHOD_EXHAUSTIVE;
+    run->per_panel = PANEL_EXTREMES;
     snprintf(run->objectives, sizeof run->objectives, "cost");
     run->u_min = run->u_max = run->v_min = run->v_max = 1;
     run->jobs = 1;

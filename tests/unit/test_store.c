@@ -21,6 +21,7 @@
 #include "core/surface/example.h"
 #include "store/filter.h"
 #include "study/study.h"
+#include "study/study_export.h"
 #include "tests/support/store_fixture.h"
 
 static char surface_path[64];
@@ -130,7 +131,7 @@ static void test_run_roundtrip(void **state)
     struct run_info info;
     assert_int_equal(store_run_get(store, run, &info, &err), FACET_OK);
     assert_int_equal(info.status, RUN_DONE);
-    assert_string_equal(info.method, "exhaustive");
+    assert_int_equal(info.method, METHOD_EXHAUSTIVE);
     assert_int_equal(info.options, 4 * 4 * 3);
     assert_int_equal(info.u_min, 4);
     assert_int_equal(info.v_max, 8);
@@ -444,14 +445,14 @@ static void test_resume_forced_uv(void **state)
     assert_int_equal(store_open(db_path, &store, &err), FACET_OK);
     struct run_info info;
     assert_int_equal(store_run_get(store, 2, &info, &err), FACET_OK);
-    assert_string_equal(info.uv, "plane");
-    assert_string_equal(info.uv_method, "plane");
+    assert_int_equal(info.uv, PARAM_PLANE);
+    assert_int_equal(info.uv_method, PARAM_PLANE);
     struct study_request request;
     int64_t automatic = finished_run(store, &request);
     assert_int_equal(store_run_get(store, automatic, &info, &err), FACET_OK);
-    assert_string_equal(info.uv, "");
+    assert_int_equal(info.uv, PARAM_AUTO);
     assert_string_equal(info.warnings, "");  /* the column's default */
-    assert_string_equal(info.uv_method, "vt");
+    assert_int_equal(info.uv_method, PARAM_VT);
     struct option_row *a, *b;
     size_t na, nb, differ = 0;
     get_options(store, 2, &a, &na);
@@ -660,8 +661,8 @@ static void test_migrates_v3(void **state)
     assert_int_equal(store_open(path, &store, &err), FACET_OK);
     struct run_info info;
     assert_int_equal(store_run_get(store, old, &info, &err), FACET_OK);
-    assert_string_equal(info.uv, "");
-    assert_string_equal(info.uv_method, "vt");
+    assert_int_equal(info.uv, PARAM_AUTO);
+    assert_int_equal(info.uv_method, PARAM_VT);
     assert_int_equal(info.options, 48);
     request_for(&request, METHOD_EXHAUSTIVE);
     request.uv = PARAM_PLANE;
@@ -690,10 +691,154 @@ static void test_migrates_v3(void **state)
     sqlite3_close(db);
 }
 
+
+/* Each name a runs column may hold, written by SQLite itself (not by the
+ * store), reads back as its enum; the expected values are written here by
+ * hand, not taken from the name functions. */
+static void test_run_settings_by_name(void **state)
+{
+    (void)state;
+    struct facet_error err;
+    struct store *store;
+    const char *path = fresh_db("settings_by_name");
+    assert_int_equal(store_open(path, &store, &err), FACET_OK);
+    struct study_request request;
+    int64_t run = finished_run(store, &request);
+    store_close(store);
+    static const struct {
+        const char *column, *text;
+        enum run_setting setting;
+        int value;
+    } named[] = {
+        {"units", "m", RUN_SETTING_UNITS, UNITS_M},
+        {"units", "cm", RUN_SETTING_UNITS, UNITS_CM},
+        {"units", "mm", RUN_SETTING_UNITS, UNITS_MM},
+        {"units", "in", RUN_SETTING_UNITS, UNITS_IN},
+        {"units", "ft", RUN_SETTING_UNITS, UNITS_FT},
+        {"method", "exhaustive", RUN_SETTING_METHOD, METHOD_EXHAUSTIVE},
+        {"method", "random", RUN_SETTING_METHOD, METHOD_RANDOM},
+        {"method", "nsga2", RUN_SETTING_METHOD, METHOD_NSGA2},
+        {"per_panel", "extremes", RUN_SETTING_PER_PANEL, PANEL_EXTREMES},
+        {"per_panel", "mean", RUN_SETTING_PER_PANEL, PANEL_MEAN},
+        {"uv_method", "vt", RUN_SETTING_UV_METHOD, PARAM_VT},
+        {"uv_method", "grid", RUN_SETTING_UV_METHOD, PARAM_GRID},
+        {"uv_method", "plane", RUN_SETTING_UV_METHOD, PARAM_PLANE},
+        {"uv_method", "harmonic", RUN_SETTING_UV_METHOD, PARAM_HARMONIC},
+        {"uv_method", "", RUN_SETTING_UV_METHOD, PARAM_AUTO},
+        {"uv", "vt", RUN_SETTING_UV, PARAM_VT},
+        {"uv", "grid", RUN_SETTING_UV, PARAM_GRID},
+        {"uv", "plane", RUN_SETTING_UV, PARAM_PLANE},
+        {"uv", "harmonic", RUN_SETTING_UV, PARAM_HARMONIC},
+        {"store_panels", "front", RUN_SETTING_STORE_PANELS, KEEP_FRONT},
+        {"store_panels", "knee", RUN_SETTING_STORE_PANELS, KEEP_KNEE},
+        {"store_panels", "none", RUN_SETTING_STORE_PANELS, KEEP_NONE},
+    };
+    for (size_t k = 0; k < sizeof named / sizeof *named; k++) {
+        char statement[256];
+        snprintf(statement, sizeof statement,
+                 "UPDATE runs SET %s = '%s' WHERE id = %lld",
+                 named[k].column, named[k].text, (long long)run);
+        sql(path, statement);
+        assert_int_equal(store_open_read(path, &store, &err), FACET_OK);
+        struct run_info info;
+        assert_int_equal(store_run_get(store, run, &info, &err), FACET_OK);
+        const int got[RUN_SETTINGS] = {
+            [RUN_SETTING_UNITS] = (int)info.units,
+            [RUN_SETTING_METHOD] = (int)info.method,
+            [RUN_SETTING_PER_PANEL] = (int)info.per_panel,
+            [RUN_SETTING_UV_METHOD] = (int)info.uv_method,
+            [RUN_SETTING_UV] = (int)info.uv,
+            [RUN_SETTING_STORE_PANELS] = (int)info.store_panels};
+        if (got[named[k].setting] != named[k].value)
+            fail_msg("%s '%s' read as %d", named[k].column, named[k].text,
+                     got[named[k].setting]);
+        assert_int_equal(store_run_setting_check(&info, named[k].setting,
+                                                 &err), FACET_OK);
+        assert_string_equal(store_run_setting_text(&info, named[k].setting),
+                            named[k].text);
+        store_close(store);
+    }
+    sql(path, "UPDATE runs SET uv = NULL");
+    assert_int_equal(store_open_read(path, &store, &err), FACET_OK);
+    struct run_info info;
+    assert_int_equal(store_run_get(store, run, &info, &err), FACET_OK);
+    assert_int_equal(info.uv, PARAM_AUTO);
+    store_close(store);
+}
+
+/* A setting column that names nothing this Facet knows is not guessed:
+ * (store_panels has a CHECK: a file holding another name is damaged)
+ * the run still lists (with the file's text), but resuming it or
+ * evaluating its options is refused with one line naming the run, the
+ * column and the value. */
+static void test_run_setting_unknown(void **state)
+{
+    (void)state;
+    static const struct {
+        const char *column, *text;
+    } bad[] = {
+        {"units", "yd"}, {"method", "simplex"},
+        {"per_panel", "median"}, {"uv_method", "conformal"},
+    };
+    for (size_t k = 0; k < sizeof bad / sizeof *bad; k++) {
+        struct facet_error err;
+        struct store *store;
+        const char *path = fresh_db("setting_unknown");
+        assert_int_equal(store_open(path, &store, &err), FACET_OK);
+        struct study_request request;
+        int64_t run = finished_run(store, &request);
+        store_close(store);
+        char statement[256];
+        snprintf(statement, sizeof statement,
+                 "UPDATE runs SET %s = '%s', status = 'interrupted'"
+                 " WHERE id = %lld", bad[k].column, bad[k].text,
+                 (long long)run);
+        sql(path, statement);
+        char words[3][64];
+        snprintf(words[0], sizeof words[0], "run %lld", (long long)run);
+        snprintf(words[1], sizeof words[1], "runs.%s", bad[k].column);
+        snprintf(words[2], sizeof words[2], "'%s'", bad[k].text);
+
+        assert_int_equal(store_open(path, &store, &err), FACET_OK);
+        struct run_info *runs;
+        size_t n;
+        assert_int_equal(store_run_list(store, &runs, &n, &err), FACET_OK);
+        assert_int_equal(n, 1);
+        int shown = 0;
+        for (int s = 0; s < RUN_SETTINGS; s++)
+            shown += strcmp(store_run_setting_text(&runs[0], s),
+                            bad[k].text) == 0;
+        assert_int_equal(shown, 1);
+        free(runs);
+
+        enum optimize_outcome outcome;
+        assert_int_equal(study_resume(store, run, NULL, &outcome, &err),
+                         FACET_EINPUT);
+        for (int w = 0; w < 3; w++)
+            if (strstr(err.message, words[w]) == NULL)
+                fail_msg("'%s' lacks '%s'", err.message, words[w]);
+        assert_null(strchr(err.message, '\n'));
+        struct run_info info;
+        assert_int_equal(store_run_get(store, run, &info, &err), FACET_OK);
+        assert_int_equal(info.status, RUN_INTERRUPTED);  /* not claimed */
+
+        struct study_option option;
+        int rc = study_option_load(store, run, 1, 1, &option, &err);
+        study_option_free(&option);
+        assert_int_equal(rc, FACET_EINPUT);
+        for (int w = 0; w < 3; w++)
+            if (strstr(err.message, words[w]) == NULL)
+                fail_msg("'%s' lacks '%s'", err.message, words[w]);
+        store_close(store);
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_run_roundtrip),
+        cmocka_unit_test(test_run_settings_by_name),
+        cmocka_unit_test(test_run_setting_unknown),
         cmocka_unit_test(test_queries),
         cmocka_unit_test(test_resume_exhaustive),
         cmocka_unit_test(test_resume_random),

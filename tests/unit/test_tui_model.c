@@ -41,9 +41,9 @@ static struct store *make_store(int64_t *run)
     memset(&info, 0, sizeof info);
     snprintf(info.surface_path, sizeof info.surface_path, "synthetic.obj");
     snprintf(info.surface_sha256, sizeof info.surface_sha256, "0");
-    snprintf(info.units, sizeof info.units, "m");
-    snprintf(info.method, sizeof info.method, "random");
-    snprintf(info.per_panel, sizeof info.per_panel, "extremes");
+    info.units = UNITS_M;
+    info.method = METHOD_RANDOM;
+    info.per_panel = PANEL_EXTREMES;
     snprintf(info.objectives, sizeof info.objectives, "cost,planarity");
     info.u_min = info.v_min = 1;
     info.u_max = info.v_max = 20;
