@@ -3,24 +3,45 @@
  */
 #include "classify_flags.h"
 
+#include <stdio.h>
 #include <string.h>
 
-const char classify_flags_usage[] =
-    "  --units U           m (default), cm, mm, in, ft\n"
-    "  --curvature-tol K   |k| < K (1/m) counts as zero (default\n"
-    "                      8 t / d^2, d the panel's diagonal)\n"
-    "  --per-panel MODE    extremes: k1 = max, k2 = min over the panel's\n"
-    "                      samples (the paper's, default); mean: the\n"
-    "                      area-weighted mean shape operator\n"
-    "  --flip-normals      reverse the surface normal (and every sign)\n"
-    "  --prices FP,SP,DP   USD/m^2 (default 701,766,1518)\n"
-    "  --sp-as-fp          price SP area as FP (the paper's MOGD)\n"
-    "  --max-panel-area M2 feasibility limit (default 7.06)\n"
-    "  --object NAME       only the faces of object NAME\n"
-    "  --group NAME        only the faces of group NAME\n"
-    "  --uv METHOD         the UV panels follow: vt, grid (a structured\n"
-    "                      quad grid's own i, j), plane, harmonic; default\n"
-    "                      the first of these that applies\n";
+void classify_flags_usage(FILE *out)
+{
+    struct option_params p;
+    option_params_defaults(&p);
+    const struct classify_options *c = &p.classify;
+    struct surface_flags none;
+    struct mesh_options mesh;
+    struct facet_error ignored;
+    surface_flags_init(&none);
+    surface_flags_apply(&none, &mesh, &ignored);
+    fprintf(out,
+        "  --units U           m, cm, mm, in, ft (default %s)\n"
+        "  --curvature-tol K   |k| < K (1/m) counts as zero (default\n",
+        mesh_units_name(mesh.units));
+    if (c->curvature_tol > 0)
+        fprintf(out, "                      %g)\n", c->curvature_tol);
+    else
+        fputs("                      8 t / d^2, d the panel's diagonal)\n",
+              out);
+    fprintf(out,
+        "  --per-panel MODE    extremes: k1 = max, k2 = min over the panel's\n"
+        "                      samples (the paper's); mean: the\n"
+        "                      area-weighted mean shape operator (default\n"
+        "                      %s)\n"
+        "  --flip-normals      reverse the surface normal (and every sign)\n"
+        "  --prices FP,SP,DP   USD/m^2 (default %g,%g,%g)\n"
+        "  --sp-as-fp          price SP area as FP (the paper's MOGD)\n"
+        "  --max-panel-area M2 feasibility limit (default %g)\n"
+        "  --object NAME       only the faces of object NAME\n"
+        "  --group NAME        only the faces of group NAME\n"
+        "  --uv METHOD         the UV panels follow: vt, grid (a structured\n"
+        "                      quad grid's own i, j), plane, harmonic; default\n"
+        "                      the first of these that applies\n",
+        panel_mode_name(p.mode), c->price[TYPE_FP], c->price[TYPE_SP],
+        c->price[TYPE_DP], c->max_panel_area);
+}
 
 void surface_flags_init(struct surface_flags *f)
 {

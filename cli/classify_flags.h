@@ -8,6 +8,8 @@
 #ifndef FACET_CLASSIFY_FLAGS_H
 #define FACET_CLASSIFY_FLAGS_H
 
+#include <stdio.h>
+
 #include "args.h"
 #include "core/surface/mesh.h"
 #include "core/classify/option.h"
@@ -59,6 +61,6 @@ int classify_flags_uv(const char *text, enum param_method *uv,
                       struct facet_error *err);
 
 /* The usage lines of the flags, for a command's --help. */
-extern const char classify_flags_usage[];
+void classify_flags_usage(FILE *out);
 
 #endif

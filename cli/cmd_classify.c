@@ -198,6 +198,17 @@ static int classify_run(int argc, char **argv, struct facet_error *err)
     return rc;
 }
 
+/* The threshold line, its default option_params_defaults's. */
+static void classify_options_print(FILE *out)
+{
+    struct option_params p;
+    option_params_defaults(&p);
+    fprintf(out,
+        "  --threshold MM      flatness threshold t: a panel within t of its\n"
+        "                      best-fit plane is made flat (default %g)\n",
+        p.classify.threshold * 1000);
+}
+
 const struct command cmd_classify = {
     .name = "classify",
     .usage = "SURFACE.obj --grid NUxNV [--threshold MM] [--units U]\n"
@@ -210,10 +221,9 @@ const struct command cmd_classify = {
                "and price them.",
     .options =
         "  --grid NUxNV        panels along u and v (e.g. 37x49, the paper's)\n"
-        "  --threshold MM      flatness threshold t: a panel within t of its\n"
-        "                      best-fit plane is made flat (default 3)\n"
         "  --json              one JSON object (see README)\n"
         "  --csv FILE          the panel schedule, one row per panel\n",
+    .options_print = classify_options_print,
     .shared_options = classify_flags_usage,
     .run = classify_run,
 };

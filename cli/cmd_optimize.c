@@ -19,8 +19,12 @@
 #include "progress.h"
 #include "run_table.h"
 #include "signals.h"
+#include "core/base/numformat.h"
 #include "core/obj/infile.h"
 #include "study/study.h"
+
+/* Rows of the table a run ends with, unless --table says. */
+#define TABLE_ROWS 20
 
 /* --- what the user sees while it runs --- */
 
@@ -178,7 +182,7 @@ static int optimize_main(int argc, char **argv, struct facet_error *err)
     if (db == NULL)
         return facet_error_set(err, FACET_EINPUT,
             "optimize: name the result database, e.g. --db runs.db");
-    long rows = 20, run_number = 0;
+    long rows = TABLE_ROWS, run_number = 0;
     if (table && (rc = args_int(table, 0, 1000000000, "--table", &rows, err)))
         return rc;
     if (resume) {
@@ -260,6 +264,51 @@ static int optimize_main(int argc, char **argv, struct facet_error *err)
     return rc;
 }
 
+/* The option lines, their defaults study_request_defaults's. */
+static void optimize_options_print(FILE *out)
+{
+    struct study_request r;
+    study_request_defaults(&r);
+    const struct optimize_settings *s = &r.settings;
+    char grouped[32], objectives[128];
+    number_grouped(grouped, sizeof grouped, STUDY_EXHAUSTIVE_LIMIT, 0);
+    objectives_format(objectives, sizeof objectives, s->objectives,
+                      s->nobjectives);
+    fprintf(out,
+        "  --db FILE           the SQLite result store (created if missing)\n"
+        "  --u A:B             panels along u (default %d:%d, the paper's)\n"
+        "  --v A:B             panels along v (default %d:%d, the paper's)\n"
+        "  --threshold T       flatness threshold in mm: one value (default\n"
+        "                      %g), a range A:B, or A:B:STEP for exhaustive\n"
+        "  --method M          auto (default: exhaustive up to %s\n"
+        "                      points, nsga2 above), exhaustive, random\n"
+        "                      or nsga2\n"
+        "  --evals N           random: points to draw (default %lld)\n"
+        "  --pop N, --gens N   nsga2: population (%d), generations (%d)\n"
+        "  --seed S            the same seed gives the same options (%llu)\n"
+        "  --objectives LIST   metrics to minimise, max:NAME to maximise\n"
+        "                      (default %s)\n"
+        "  --jobs N, -j N      threads (default: every core)\n"
+        "  --resume RUN        go on with an interrupted run\n"
+        "  --surface FILE      with --resume: the run's surface has moved;\n"
+        "                      record its new place (same SHA-256)\n"
+        "  --name TEXT         a name for the run\n"
+        "  --store-panels W    whose panels to store at the end: front (every\n"
+        "                      Pareto option), knee or none (default %s);\n"
+        "                      fewer when the disk cannot hold them (said)\n"
+        "  --table N           rows of the final table (default %d; 0 all)\n"
+        "  --wide              every column of it, whatever the terminal\n"
+        "examples:\n"
+        "  facet optimize roof.obj --db runs.db --sp-as-fp "
+        "--max-panel-area 1.92\n"
+        "  facet optimize roof.obj --db runs.db --threshold 1:10 --method "
+        "nsga2 --seed 7\n",
+        s->space.u_min, s->space.u_max, s->space.v_min, s->space.v_max,
+        s->space.t_min_mm, grouped, (long long)s->evaluations,
+        s->population, s->generations, (unsigned long long)s->seed,
+        objectives, study_keep_panels_name(r.store_panels), TABLE_ROWS);
+}
+
 const struct command cmd_optimize = {
     .name = "optimize",
     .usage = "SURFACE.obj --db FILE [--u A:B] [--v A:B] "
@@ -272,35 +321,8 @@ const struct command cmd_optimize = {
              "   or: facet optimize --db FILE --resume RUN [--surface FILE]",
     .summary = "Search grid sizes and thresholds for the Pareto-optimal "
                "options; store them.",
-    .options =
-        "  --db FILE           the SQLite result store (created if missing)\n"
-        "  --u A:B             panels along u (default 20:40, the paper's)\n"
-        "  --v A:B             panels along v (default 35:50, the paper's)\n"
-        "  --threshold T       flatness threshold in mm: one value (default\n"
-        "                      3), a range A:B, or A:B:STEP for exhaustive\n"
-        "  --method M          auto (default: exhaustive up to 100,000\n"
-        "                      points, nsga2 above), exhaustive, random\n"
-        "                      or nsga2\n"
-        "  --evals N           random: points to draw (default 1000)\n"
-        "  --pop N, --gens N   nsga2: population (100), generations (50)\n"
-        "  --seed S            the same seed gives the same options (1)\n"
-        "  --objectives LIST   metrics to minimise, max:NAME to maximise\n"
-        "                      (default cost,planarity,dp_area)\n"
-        "  --jobs N, -j N      threads (default: every core)\n"
-        "  --resume RUN        go on with an interrupted run\n"
-        "  --surface FILE      with --resume: the run's surface has moved;\n"
-        "                      record its new place (same SHA-256)\n"
-        "  --name TEXT         a name for the run\n"
-        "  --store-panels W    whose panels to store at the end: front (every\n"
-        "                      Pareto option, default), knee or none; fewer\n"
-        "                      when the disk cannot hold them (said)\n"
-        "  --table N           rows of the final table (default 20; 0 all)\n"
-        "  --wide              every column of it, whatever the terminal\n"
-        "examples:\n"
-        "  facet optimize roof.obj --db runs.db --sp-as-fp "
-        "--max-panel-area 1.92\n"
-        "  facet optimize roof.obj --db runs.db --threshold 1:10 --method "
-        "nsga2 --seed 7\n",
+    .options = "",
+    .options_print = optimize_options_print,
     .shared_options = classify_flags_usage,
     .run = optimize_main,
 };

@@ -33,9 +33,14 @@ void command_print_usage(const struct command *cmd, FILE *out)
 {
     fprintf(out, "usage: facet %s %s\n\n%s\n", cmd->name, cmd->usage,
             cmd->summary);
-    if (cmd->options[0] != '\0' || cmd->shared_options != NULL)
-        fprintf(out, "\noptions:\n%s%s", cmd->options,
-                cmd->shared_options ? cmd->shared_options : "");
+    if (cmd->options[0] == '\0' && cmd->options_print == NULL &&
+        cmd->shared_options == NULL)
+        return;
+    fprintf(out, "\noptions:\n%s", cmd->options);
+    if (cmd->options_print != NULL)
+        cmd->options_print(out);
+    if (cmd->shared_options != NULL)
+        cmd->shared_options(out);
 }
 
 void command_print_overview(FILE *out)

@@ -17,8 +17,14 @@ struct command {
     const char *usage;    /* arguments after the name, one line */
     const char *summary;  /* what it does, one line */
     const char *options;  /* one option per line, "  --flag X  what", or "" */
-    const char *shared_options;  /* option lines shared with other commands
-                                    (classify_flags_usage), or NULL */
+    /* Prints the option lines that state defaults, formatted at run time
+     * from the defaults the command takes (study_request_defaults,
+     * option_params_defaults), so that the help cannot drift from them;
+     * after options. NULL: none. */
+    void (*options_print)(FILE *out);
+    /* Prints the option lines shared with other commands
+     * (classify_flags_usage), or NULL. */
+    void (*shared_options)(FILE *out);
     /* Runs the command on argv[0..argc) (argv[0] is the command's name).
      * Returns the exit code: 0 success, 1 failure while working, 2 bad
      * usage or bad input, with err filled for 1 and 2. */

@@ -795,13 +795,8 @@ int study_start(struct store *store, const struct study_request *request,
              request->mesh.object ? request->mesh.object : "");
     snprintf(run.group, sizeof run.group, "%s",
              request->mesh.group ? request->mesh.group : "");
-    size_t len = 0;
-    for (int k = 0; k < s->nobjectives; k++)
-        len += (size_t)snprintf(run.objectives + len,
-                                sizeof run.objectives - len, "%s%s%s",
-                                k ? "," : "",
-                                s->objectives[k].maximise ? "max:" : "",
-                                metric_name(s->objectives[k].metric));
+    objectives_format(run.objectives, sizeof run.objectives, s->objectives,
+                      s->nobjectives);
     run.population = s->method == METHOD_NSGA2 ? s->population : 0;
     run.generations = s->method == METHOD_NSGA2 ? s->generations : 0;
     run.evaluations = s->method == METHOD_RANDOM ? s->evaluations : 0;

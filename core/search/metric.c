@@ -93,3 +93,15 @@ int objectives_parse(const char *text, const char *what,
             "%s: name at least one metric (%s)", what, list);
     return FACET_OK;
 }
+
+void objectives_format(char *out, size_t size,
+                       const struct objective *objectives, int count)
+{
+    size_t len = 0;
+    out[0] = '\0';
+    for (int k = 0; k < count && len < size; k++)
+        len += (size_t)snprintf(out + len, size - len, "%s%s%s",
+                                k ? "," : "",
+                                objectives[k].maximise ? "max:" : "",
+                                metric_name(objectives[k].metric));
+}

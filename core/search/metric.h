@@ -49,6 +49,11 @@ int objectives_parse(const char *text, const char *what,
                      struct objective *objectives, int *count,
                      struct facet_error *err);
 
+/* objectives[0..count) as objectives_parse reads them, into out
+ * ("cost,planarity,max:dp_area"), cut short at size. */
+void objectives_format(char *out, size_t size,
+                       const struct objective *objectives, int count);
+
 /* The value to minimise for objective o: the metric, negated when it is
  * maximised. */
 double objective_value(const struct option_totals *totals,

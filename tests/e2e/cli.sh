@@ -114,4 +114,81 @@ if have_data acj_spot.obj compas_hypar.obj; then
     run "$FACET" info "$FACET_DATA/compas_hypar.obj" --json
     json_check "hypar: no UV, one loop" 'not j["has_uv"] and j["boundary_loops"]==1'
 fi
+
+# The defaults the help states are the ones a run takes: each run below
+# gives no flag but --method, and SQLite's own runs row is read against
+# the numbers parsed out of `facet optimize --help`.
+"$FACET" example plane -o "$WORK/defaults.obj" >/dev/null 2>&1
+for method in auto random nsga2; do
+    run "$FACET" optimize "$WORK/defaults.obj" --db "$WORK/defaults.db" \
+        --method "$method" --table 0
+    [ "$STATUS" -eq 0 ] || fail "optimize with the defaults, --method $method"
+done
+"$FACET" optimize --help >"$WORK/help.txt" 2>&1
+sqlite3 -batch -json "$WORK/defaults.db" "SELECT units, method, seed, u_min,
+    u_max, v_min, v_max, threshold_min_mm, threshold_max_mm, price_fp,
+    price_sp, price_dp, max_panel_area_limit, per_panel, objectives,
+    store_panels, evaluations, population, generations, curvature_tol
+    FROM runs ORDER BY id" >"$WORK/runs.json"
+if /usr/bin/python3 - "$WORK/help.txt" "$WORK/runs.json" >"$WORK/defaults.out" 2>&1 <<'PY'
+import json, re, sys
+help = " ".join(open(sys.argv[1]).read().split())
+auto, random, nsga2 = json.load(open(sys.argv[2]))
+def said(pattern):
+    m = re.search(pattern, help)
+    if not m:
+        sys.exit("the help lacks " + pattern)
+    return m.groups()
+u = said(r"--u A:B panels along u \(default (\d+):(\d+)")
+v = said(r"--v A:B panels along v \(default (\d+):(\d+)")
+t, = said(r"--threshold T flatness threshold in mm: one value \(default ([\d.]+)\)")
+limit, = said(r"--method M auto \(default: exhaustive up to ([\d,]+) points")
+evals, = said(r"--evals N random: points to draw \(default (\d+)\)")
+pop, gens = said(r"population \((\d+)\), generations \((\d+)\)")
+seed, = said(r"the same seed gives the same options \((\d+)\)")
+objectives, = said(r"max:NAME to maximise \(default ([a-z_:,]+)\)")
+keep, = said(r"knee or none \(default (\w+)\)")
+units, = said(r"--units U m, cm, mm, in, ft \(default (\w+)\)")
+tol = said(r"counts as zero \(default (8 t / d\^2)")
+mode, = said(r"shape operator \(default (\w+)\)")
+prices = said(r"USD/m\^2 \(default ([\d.]+),([\d.]+),([\d.]+)\)")
+area, = said(r"feasibility limit \(default ([\d.]+)\)")
+space = (int(u[1]) - int(u[0]) + 1) * (int(v[1]) - int(v[0]) + 1)
+want = {
+    "units": units, "seed": int(seed), "u_min": int(u[0]),
+    "u_max": int(u[1]), "v_min": int(v[0]), "v_max": int(v[1]),
+    "threshold_min_mm": float(t), "threshold_max_mm": float(t),
+    "price_fp": float(prices[0]), "price_sp": float(prices[1]),
+    "price_dp": float(prices[2]), "max_panel_area_limit": float(area),
+    "per_panel": mode, "objectives": objectives, "store_panels": keep,
+    "curvature_tol": None,
+}
+bad = []
+for name, row in (("auto", auto), ("random", random), ("nsga2", nsga2)):
+    for key, value in want.items():
+        if row[key] != value:
+            bad.append("%s: %s is %r, the help says %r" % (name, key, row[key], value))
+# auto: exhaustive up to the limit with one threshold (the space is smaller)
+if space <= int(limit.replace(",", "")) and auto["method"] != "exhaustive":
+    bad.append("auto took %s for %d points" % (auto["method"], space))
+if random["evaluations"] != int(evals):
+    bad.append("random drew %r, the help says %s" % (random["evaluations"], evals))
+if (nsga2["population"], nsga2["generations"]) != (int(pop), int(gens)):
+    bad.append("nsga2 ran %r x %r, the help says %s x %s" % (nsga2["population"], nsga2["generations"], pop, gens))
+if bad:
+    sys.exit("\n".join(bad))
+PY
+then
+    pass "optimize --help states the defaults a run records"
+else
+    echo "not ok - optimize --help states the defaults a run records"
+    sed 's/^/  /' "$WORK/defaults.out"
+fi
+
+# classify --help's threshold is the one a classification takes.
+run "$FACET" classify --help
+t=$(tr -s ' \n' ' ' <"$OUT" | grep -oE 'best-fit plane is made flat \(default [0-9.]+\)' | grep -oE '[0-9.]+')
+run "$FACET" classify "$WORK/defaults.obj" --grid 4x4 --json
+json_check "classify --help states the threshold it takes ($t mm)" \
+    "abs(j['threshold_mm'] - float('${t:-nan}')) < 1e-12"
 exit 0
