@@ -32,8 +32,10 @@ static void print_json(const struct run_info *runs,
         json_key(&w, "status"); json_string(&w, run_status_name(r->status));
         json_key(&w, "surface"); json_string(&w, r->surface_path);
         json_key(&w, "surface_sha256"); json_string(&w, r->surface_sha256);
-        json_key(&w, "units"); json_string(&w, store_run_setting_text(r, RUN_SETTING_UNITS));
-        json_key(&w, "method"); json_string(&w, store_run_setting_text(r, RUN_SETTING_METHOD));
+        json_key(&w, "units");
+        json_string(&w, store_run_setting_text(r, RUN_SETTING_UNITS));
+        json_key(&w, "method");
+        json_string(&w, store_run_setting_text(r, RUN_SETTING_METHOD));
         json_key(&w, "seed"); json_integer(&w, (long long)r->seed);
         json_key(&w, "u");
         json_begin_array(&w);
@@ -153,7 +155,8 @@ static void print_human(const struct run_info *runs,
         snprintf(label, sizeof label, "%s%s%s", name, name[0] ? " / " : "",
                  path);
         const char *cell[] = {id, run_status_name(r->status),
-                              store_run_setting_text(r, RUN_SETTING_METHOD), options, pareto,
+                              store_run_setting_text(r, RUN_SETTING_METHOD),
+                              options, pareto,
                               cost, hv, elapsed, r->started, label};
         text_table_row(stdout, &t, cell);
     }

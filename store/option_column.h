@@ -57,6 +57,8 @@ struct option_column {
                               "max deviation" */
     const char *heading;   /* the same in a narrow table's header: "max dev" */
     const char *unit;      /* of the value as shown ("mm"), "" for none */
+    const char *stored_unit; /* of the value as stored and plotted ("m"),
+                              "" for none: unit when scale is 1 */
     double scale;          /* shown = stored x scale: a deviation is stored
                               in m and shown in mm (1000), as the threshold
                               it is held to; 1 otherwise */

@@ -181,16 +181,8 @@ int study_export(struct store *store, int64_t run, int64_t number,
 
 const char *study_column_unit(const char *column)
 {
-    static const char *const unit[][2] = {
-        {"cost", "USD"}, {"planarity", "m"}, {"max_deviation", "m"},
-        {"fp_area", "m^2"}, {"sp_area", "m^2"}, {"dp_area", "m^2"},
-        {"area", "m^2"}, {"max_panel_area", "m^2"}, {"p_dist", "m^4"},
-        {"threshold_mm", "mm"},
-    };
-    for (size_t k = 0; k < sizeof unit / sizeof *unit; k++)
-        if (strcmp(unit[k][0], column) == 0)
-            return unit[k][1];
-    return "";
+    const struct option_column *c = store_option_column(column);
+    return c != NULL ? c->stored_unit : "";
 }
 
 static int check_column(const char *what, const char *column,

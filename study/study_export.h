@@ -103,7 +103,8 @@ int study_export_options_csv(struct store *store, int64_t run,
                              const char *path, int force,
                              struct facet_error *err);
 
-/* The unit of an option column ("USD", "m", "m^2", "mm", "" for counts). */
+/* The unit an option column is stored and plotted in (the registry's
+ * stored_unit: "USD", "m", "m^2", "mm", "" for counts and unknown names). */
 const char *study_column_unit(const char *column);
 
 #endif

@@ -23,6 +23,7 @@
 #include "core/search/metric.h"
 #include "store/filter.h"
 #include "store/store.h"
+#include "study/study_export.h"
 #include "tests/support/store_fixture.h"
 
 enum { ROWS = 6 };
@@ -390,6 +391,84 @@ static void test_every_column_filters_and_sorts(void **state)
     store_fixture_remove(db_path);
 }
 
+
+/* The unit a column is stored in, by the README's rule (lengths m, areas
+ * m^2, money USD, the threshold mm) read off its name: the test's own
+ * reading, not the registry's. */
+static const char *stored_unit_by_name(const char *name)
+{
+    size_t n = strlen(name);
+    if (strcmp(name, "threshold_mm") == 0)
+        return "mm";
+    if (n >= 4 && strcmp(name + n - 4, "cost") == 0)
+        return "USD";
+    if (n >= 4 && strcmp(name + n - 4, "area") == 0)
+        return "m^2";
+    if (strcmp(name, "planarity") == 0 || strcmp(name, "max_deviation") == 0)
+        return "m";
+    if (strcmp(name, "p_dist") == 0)
+        return "m^4";
+    return "";
+}
+
+/* Every column's stored unit is the one its name says, and the one a plot
+ * writes on an axis that shows it (the plot draws stored values: a
+ * deviation in m, though the tables show it in mm). */
+static void test_plot_axis_units(void **state)
+{
+    (void)state;
+    int64_t run;
+    struct option_row rows[ROWS];
+    sqlite3 *db;
+    struct store *store = ranked_store(&run, rows, &db);
+    sqlite3_close(db);
+    char svg_path[80];
+    snprintf(svg_path, sizeof svg_path, "/tmp/facet_test_axis_%d.svg",
+             (int)getpid());
+    for (int k = 0; k < STORE_OPTION_COLUMNS; k++) {
+        const struct option_column *c = &store_option_columns[k];
+        if (c->writer == WRITTEN_AS_KEY)
+            continue;
+        const char *want = stored_unit_by_name(c->name);
+        if (strcmp(c->stored_unit, want) != 0)
+            fail_msg("%s is stored in '%s', the registry says '%s'",
+                     c->name, want, c->stored_unit);
+        if (c->scale == 1 && strcmp(c->unit, c->stored_unit) != 0)
+            fail_msg("%s is shown as stored, in '%s' not '%s'", c->name,
+                     c->unit, c->stored_unit);
+        /* A front's ends have an infinite crowding, which a plot refuses
+         * (study_plot: "a non-finite value"). */
+        if (strcmp(c->name, "crowding") == 0)
+            continue;
+        struct plot_request r;
+        memset(&r, 0, sizeof r);
+        r.runs = &run;
+        r.nruns = 1;
+        r.x = c->name;
+        r.y = "cost";
+        r.force = 1;
+        struct facet_error err;
+        if (study_plot(store, &r, svg_path, &err) != FACET_OK)
+            fail_msg("plot of %s: %s", c->name, err.message);
+        FILE *f = fopen(svg_path, "r");
+        assert_non_null(f);
+        static char svg[1 << 20];
+        size_t n = fread(svg, 1, sizeof svg - 1, f);
+        svg[n] = '\0';
+        fclose(f);
+        char label[128];
+        if (want[0] != '\0')
+            snprintf(label, sizeof label, ">%s (%s)<", c->name, want);
+        else
+            snprintf(label, sizeof label, ">%s<", c->name);
+        if (strstr(svg, label) == NULL)
+            fail_msg("the plot of %s has no axis %s", c->name, label);
+    }
+    unlink(svg_path);
+    store_close(store);
+    store_fixture_remove(db_path);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -397,6 +476,7 @@ int main(void)
         cmocka_unit_test(test_values_read_the_row),
         cmocka_unit_test(test_metrics_are_columns),
         cmocka_unit_test(test_store_round_trip),
+        cmocka_unit_test(test_plot_axis_units),
         cmocka_unit_test(test_every_column_filters_and_sorts),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
