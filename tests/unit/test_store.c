@@ -692,6 +692,18 @@ static void test_migrates_v3(void **state)
 }
 
 
+/* A fresh file (db_path) holding the finished test study; its id. */
+static int64_t finished_run_closed(const char *name)
+{
+    struct facet_error err;
+    struct store *store;
+    assert_int_equal(store_open(fresh_db(name), &store, &err), FACET_OK);
+    struct study_request request;
+    int64_t run = finished_run(store, &request);
+    store_close(store);
+    return run;
+}
+
 /* Each name a runs column may hold, written by SQLite itself (not by the
  * store), reads back as its enum; the expected values are written here by
  * hand, not taken from the name functions. */
@@ -700,11 +712,8 @@ static void test_run_settings_by_name(void **state)
     (void)state;
     struct facet_error err;
     struct store *store;
-    const char *path = fresh_db("settings_by_name");
-    assert_int_equal(store_open(path, &store, &err), FACET_OK);
-    struct study_request request;
-    int64_t run = finished_run(store, &request);
-    store_close(store);
+    int64_t run = finished_run_closed("settings_by_name");
+    const char *path = db_path;
     static const struct {
         const char *column, *text;
         enum run_setting setting;
@@ -783,11 +792,8 @@ static void test_run_setting_unknown(void **state)
     for (size_t k = 0; k < sizeof bad / sizeof *bad; k++) {
         struct facet_error err;
         struct store *store;
-        const char *path = fresh_db("setting_unknown");
-        assert_int_equal(store_open(path, &store, &err), FACET_OK);
-        struct study_request request;
-        int64_t run = finished_run(store, &request);
-        store_close(store);
+        int64_t run = finished_run_closed("setting_unknown");
+        const char *path = db_path;
         char statement[256];
         snprintf(statement, sizeof statement,
                  "UPDATE runs SET %s = '%s', status = 'interrupted'"
