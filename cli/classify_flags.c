@@ -16,6 +16,14 @@ const char classify_flags_usage[] =
     "  --prices FP,SP,DP   USD/m^2 (default 701,766,1518)\n"
     "  --sp-as-fp          price SP area as FP (the paper's MOGD)\n"
     "  --max-panel-area M2 feasibility limit (default 7.06)\n"
+    "  --panel-cost USD    per panel, whatever its type (default 0)\n"
+    "  --joint-cost USD    per metre of joint (default 0)\n"
+    "  --mould-cost SP,DP  USD per mould: a bending jig for SP, a mould for\n"
+    "                      DP (default 0,0); 0 everywhere is the paper's\n"
+    "                      model, area alone\n"
+    "  --mould-tol MM      curved panels within MM of each other share a\n"
+    "                      mould (default: the flatness threshold)\n"
+    "  --mould-mirror      mirror images share a mould too\n"
     "  --object NAME       only the faces of object NAME\n"
     "  --group NAME        only the faces of group NAME\n"
     "  --uv METHOD         the UV panels follow: vt, grid (a structured\n"
@@ -57,6 +65,11 @@ void classify_flags_init(struct classify_flags *f)
         {"prices", 0, ARG_STRING, &f->prices, NULL},
         {"sp-as-fp", 0, ARG_FLAG, NULL, &f->sp_as_fp},
         {"max-panel-area", 0, ARG_STRING, &f->max_area, NULL},
+        {"panel-cost", 0, ARG_STRING, &f->panel_cost, NULL},
+        {"joint-cost", 0, ARG_STRING, &f->joint_cost, NULL},
+        {"mould-cost", 0, ARG_STRING, &f->mould_cost, NULL},
+        {"mould-tol", 0, ARG_STRING, &f->mould_tol, NULL},
+        {"mould-mirror", 0, ARG_FLAG, NULL, &f->mould_mirror},
         {"object", 0, ARG_STRING, &f->surface.object, NULL},
         {"group", 0, ARG_STRING, &f->surface.group, NULL},
         {"uv", 0, ARG_STRING, &f->uv, NULL},
@@ -109,5 +122,24 @@ int classify_flags_apply(const struct classify_flags *f,
             return rc;
         params->classify.max_panel_area = number;
     }
+    if (f->panel_cost &&
+        (rc = args_double(f->panel_cost, 0, 1e9, "--panel-cost",
+                          &params->classify.panel_cost, err)))
+        return rc;
+    if (f->joint_cost &&
+        (rc = args_double(f->joint_cost, 0, 1e9, "--joint-cost",
+                          &params->classify.joint_cost, err)))
+        return rc;
+    if (f->mould_cost &&
+        (rc = classify_mould_costs_parse(f->mould_cost, "--mould-cost",
+                                         params->classify.mould_cost, err)))
+        return rc;
+    if (f->mould_tol) {
+        if ((rc = args_double(f->mould_tol, 0, 1e6, "--mould-tol", &number,
+                              err)))
+            return rc;
+        params->mould_tol = number / 1000;
+    }
+    params->mould_mirror = f->mould_mirror;
     return FACET_OK;
 }

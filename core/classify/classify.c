@@ -209,7 +209,7 @@ void classify_price_terms(const struct classify_options *options,
     totals->joint_cost = totals->joint_length * options->joint_cost;
     totals->mould_cost = 0;
     for (int t = 0; t < TYPE_COUNT; t++)
-        totals->mould_cost += (double)totals->moulds[t] *
+        totals->mould_cost += (double)totals->moulds_of[t] *
                               options->mould_cost[t];
     totals->cost = totals->area_cost + totals->panel_cost +
                    totals->joint_cost + totals->mould_cost;

@@ -81,8 +81,9 @@ struct option_totals {
     int feasible;                    /* every panel within max_panel_area */
     /* Set by option_evaluate (option.h), 0 from classify_panels alone: */
     double joint_length;             /* m (joint_length.h) */
-    size_t moulds[TYPE_COUNT];       /* mould families per type (mould.h),
+    size_t moulds;                   /* mould families, SP and DP (mould.h):
                                         an upper bound on the fewest */
+    size_t moulds_of[TYPE_COUNT];    /* the same per type (FP: 0) */
     size_t largest_family;           /* panels of the largest family */
     size_t singleton_families;       /* families of one panel */
     /* The cost, term by term (USD); cost is their sum: */

@@ -86,7 +86,8 @@ int option_classify(const struct surface *surface,
         for (size_t k = 0; k < panels->npanels; k++)
             panels->panels[k].mould = families.family[k];
         for (int t = 0; t < TYPE_COUNT; t++)
-            totals->moulds[t] = families.count[t];
+            totals->moulds_of[t] = families.count[t];
+        totals->moulds = families.nfamilies;
         totals->largest_family = families.largest;
         totals->singleton_families = families.singletons;
         totals->joint_length = joints;

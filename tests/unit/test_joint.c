@@ -698,7 +698,7 @@ static void test_cost_terms_plane(void **state)
     double joints = 6 * h + 4 * w + 2 * (w + h);
     assert_int_equal(totals.panels, 35);
     assert_int_equal(totals.count[TYPE_FP], 35);
-    assert_int_equal(totals.moulds[TYPE_SP] + totals.moulds[TYPE_DP], 0);
+    assert_int_equal(totals.moulds, 0);
     assert_float_equal(totals.joint_length, joints, 1e-9 * joints);
     assert_true(totals.panel_cost == 35 * 250.0);
     assert_true(totals.joint_cost == totals.joint_length * 40);
@@ -739,8 +739,8 @@ static void test_cost_terms_cylinder_moulds(void **state)
     if (option_evaluate(&s, &params, &panels, &totals, &err) != FACET_OK)
         fail_msg("%s", err.message);
     assert_int_equal(totals.count[TYPE_SP], 15);
-    assert_int_equal(totals.moulds[TYPE_SP], 1);
-    assert_int_equal(totals.moulds[TYPE_DP], 0);
+    assert_int_equal(totals.moulds_of[TYPE_SP], 1);
+    assert_int_equal(totals.moulds_of[TYPE_DP], 0);
     assert_int_equal(totals.largest_family, 15);
     assert_int_equal(totals.singleton_families, 0);
     assert_true(totals.mould_cost == 3000);
