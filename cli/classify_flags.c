@@ -139,6 +139,7 @@ int classify_flags_apply(const struct classify_flags *f,
                               err)))
             return rc;
         params->mould_tol = number / 1000;
+        params->mould_tol_given = 1;
     }
     params->mould_mirror = f->mould_mirror;
     return FACET_OK;

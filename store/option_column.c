@@ -138,6 +138,8 @@ const struct option_column store_option_columns[] = {
      "10", FIELD_SIZE, TOTAL(largest_family), WRITTEN_WITH_OPTION},
     {"single_moulds", "moulds of one panel", "single", "", 1, 0, 0, 0, 0,
      "10", FIELD_SIZE, TOTAL(singleton_families), WRITTEN_WITH_OPTION},
+    {"area_cost", "area cost", "area cost", "USD", 1, 0, 0, 1, 0, "1e6",
+     FIELD_DOUBLE, TOTAL(area_cost), WRITTEN_WITH_OPTION},
     {"panel_cost", "panel cost", "pan cost", "USD", 1, 0, 0, 1, 0, "1e5",
      FIELD_DOUBLE, TOTAL(panel_cost), WRITTEN_WITH_OPTION},
     {"joint_cost", "joint cost", "jnt cost", "USD", 1, 0, 0, 1, 0, "1e5",

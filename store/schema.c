@@ -178,6 +178,7 @@ static const char schema_v5[] =
     "ALTER TABLE options ADD COLUMN dp_moulds INTEGER;"
     "ALTER TABLE options ADD COLUMN largest_family INTEGER;"
     "ALTER TABLE options ADD COLUMN single_moulds INTEGER;"
+    "ALTER TABLE options ADD COLUMN area_cost REAL;"
     "ALTER TABLE options ADD COLUMN panel_cost REAL;"
     "ALTER TABLE options ADD COLUMN joint_cost REAL;"
     "ALTER TABLE options ADD COLUMN mould_cost REAL;"

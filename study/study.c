@@ -140,7 +140,7 @@ void study_request_defaults(struct study_request *r)
 
 /* The cost model beyond area and the mould settings, between a run's
  * settings and the parameters its options are evaluated with. The mould
- * tolerance is NaN in the run (NULL in the store) and negative in the
+ * tolerance is NaN in the run (NULL in the store) and not given in the
  * parameters when it is each option's flatness threshold. */
 static void costs_from_run(struct option_params *params,
                            const struct run_info *run)
@@ -149,8 +149,9 @@ static void costs_from_run(struct option_params *params,
     params->classify.joint_cost = run->joint_cost;
     memcpy(params->classify.mould_cost, run->mould_cost,
            sizeof run->mould_cost);
-    params->mould_tol = isnan(run->mould_tol_mm) ? -1
-                                                 : run->mould_tol_mm / 1000;
+    params->mould_tol_given = !isnan(run->mould_tol_mm);
+    params->mould_tol = params->mould_tol_given ? run->mould_tol_mm / 1000
+                                                : 0;
     params->mould_mirror = run->mould_mirror;
 }
 
@@ -161,8 +162,8 @@ static void costs_to_run(struct run_info *run,
     run->joint_cost = params->classify.joint_cost;
     memcpy(run->mould_cost, params->classify.mould_cost,
            sizeof run->mould_cost);
-    run->mould_tol_mm = params->mould_tol < 0 ? NAN
-                                              : params->mould_tol * 1000;
+    run->mould_tol_mm = params->mould_tol_given ? params->mould_tol * 1000
+                                                : NAN;
     run->mould_mirror = params->mould_mirror;
 }
 

@@ -13,7 +13,6 @@ void option_params_defaults(struct option_params *params)
     memset(params, 0, sizeof *params);
     classify_defaults(&params->classify);
     params->mode = PANEL_EXTREMES;
-    params->mould_tol = -1;
 }
 
 struct option_params option_params_at(const struct option_params *base,
@@ -76,8 +75,8 @@ int option_classify(const struct surface *surface,
         return rc;
     classify_panels(panels, &params->classify, totals);
     struct mould_options mould = {
-        params->mould_tol < 0 ? params->classify.threshold
-                              : params->mould_tol,
+        params->mould_tol_given ? params->mould_tol
+                                : params->classify.threshold,
         params->mould_mirror};
     struct mould_families families;
     rc = mould_families_build(&surface->mesh, &surface->uv, panels, &mould,

@@ -21,9 +21,10 @@ struct option_params {
     enum panel_curvature_mode mode;      /* how panels take curvature */
     struct classify_options classify;    /* threshold, eps, prices, limit,
                                             cost terms */
-    double mould_tol;                    /* largest deviation within a mould
-                                            family (m); negative: the
-                                            option's flatness threshold */
+    int mould_tol_given;                 /* 0: a mould family's tolerance is
+                                            the option's flatness threshold
+                                            (so a zeroed struct means it) */
+    double mould_tol;                    /* else this (m) */
     int mould_mirror;                    /* mirror images share a mould */
 };
 
