@@ -59,13 +59,13 @@ const struct tui_column tui_option_columns[] = {
     {"max_panel_area", 7, 0},
     {"max_deviation", 7, 0},
     {"p_dist", 9, 0},
-    {"crowding", 6, 0},
-    {"generation", 4, 0},
     {"moulds", 6, 0},
     {"sp_moulds", 6, 0},
     {"dp_moulds", 6, 0},
     {"joint_length", 7, 0},
     {"mould_cost", 10, 0},
+    {"crowding", 6, 0},
+    {"generation", 4, 0},
 };
 const int tui_option_column_default_count = 12;
 const int tui_option_column_count =

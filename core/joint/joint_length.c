@@ -8,6 +8,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "core/base/sorted.h"
 #include "core/base/vec3.h"
 
 static const double *corner_position(const struct mesh *mesh, size_t t,
@@ -176,20 +177,6 @@ void joint_prep_free(struct joint_prep *prep)
     memset(prep, 0, sizeof *prep);
 }
 
-/* The first place in the sorted least[0..n) whose value is >= x. */
-static size_t lower_bound(const double *least, size_t n, double x)
-{
-    size_t lo = 0, hi = n;
-    while (lo < hi) {
-        size_t mid = lo + (hi - lo) / 2;
-        if (least[mid] < x)
-            lo = mid + 1;
-        else
-            hi = mid;
-    }
-    return lo;
-}
-
 double joint_length(const struct joint_prep *prep, const struct mesh *mesh,
                     const struct uv_index *index,
                     const struct panelization *panels)
@@ -207,8 +194,9 @@ double joint_length(const struct joint_prep *prep, const struct mesh *mesh,
             double line = lo[axis] + i * d;
             /* Only a triangle whose least coordinate is below the line,
              * by no more than the reach, can have a corner either side. */
-            size_t x = lower_bound(prep->least[axis], prep->ntriangles,
-                                   line - prep->reach[axis]);
+            size_t x = sorted_lower_bound(prep->least[axis],
+                                          prep->ntriangles,
+                                          line - prep->reach[axis]);
             for (; x < prep->ntriangles && prep->least[axis][x] < line; x++)
                 length += crossing_length(mesh, index,
                                           prep->order[axis][x], axis, line);

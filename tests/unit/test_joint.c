@@ -51,6 +51,20 @@ struct motion {
 static const struct motion identity = {{1, 0, 0, 0, 1, 0, 0, 0, 1},
                                        {0, 0, 0}};
 
+/* Opens and prepares the OBJ written at path (UV from its vt), then
+ * removes the file. */
+static void open_written(const char *path, struct surface *out)
+{
+    struct facet_error err;
+    struct mesh_options options = {UNITS_M, NULL, NULL};
+    int rc = surface_open(path, &options, out, &err);
+    if (rc == FACET_OK)
+        rc = surface_prepare(out, 0, PARAM_VT, &err);
+    unlink(path);
+    if (rc != FACET_OK)
+        fail_msg("%s", err.message);
+}
+
 /* Writes S on ns x nt quads (two triangles each, wound along S_s x S_t),
  * moved by motion, to a temporary OBJ and opens and prepares it. keep
  * (NULL: all) says which triangles to write, by the UV of their centroid:
@@ -88,14 +102,7 @@ static void open_surface(surface_fn f, int ns, int nt,
                 fprintf(obj, "f %d/%d %d/%d %d/%d\n", a, a, c, c, d, d);
         }
     fclose(obj);
-    struct facet_error err;
-    struct mesh_options options = {UNITS_M, NULL, NULL};
-    int rc = surface_open(path, &options, out, &err);
-    if (rc == FACET_OK)
-        rc = surface_prepare(out, 0, PARAM_VT, &err);
-    unlink(path);
-    if (rc != FACET_OK)
-        fail_msg("%s", err.message);
+    open_written(path, out);
 }
 
 /* One option of s, nu x nv, threshold t, built and measured. */
@@ -645,14 +652,7 @@ static void open_disc(struct surface *out)
                     d, d, c, c, a, a, c, c, b, b);
         }
     fclose(obj);
-    struct facet_error err;
-    struct mesh_options options = {UNITS_M, NULL, NULL};
-    int rc = surface_open(path, &options, out, &err);
-    if (rc == FACET_OK)
-        rc = surface_prepare(out, 0, PARAM_VT, &err);
-    unlink(path);
-    if (rc != FACET_OK)
-        fail_msg("%s", err.message);
+    open_written(path, out);
 }
 
 /* The disc's outline is 2 pi r within the polygon's chord error; at 2 x 2

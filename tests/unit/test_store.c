@@ -601,6 +601,22 @@ static void test_refuses_other_files(void **state)
     assert_null(strchr(err.message, '\n'));
 }
 
+/* A store file named name holding one finished run (*run, made from
+ * *request), then taken back by the SQL statements (to an older schema):
+ * its path. */
+static const char *older_file(const char *name, const char *statements,
+                              int64_t *run, struct study_request *request)
+{
+    const char *path = fresh_db(name);
+    struct facet_error err;
+    struct store *store;
+    assert_int_equal(store_open(path, &store, &err), FACET_OK);
+    *run = finished_run(store, request);
+    store_close(store);
+    sql(path, statements);
+    return path;
+}
+
 /* SQL that takes a current file back to schema version 4: the columns and
  * indexes version 5 added, dropped. */
 #define UNDO_V5 \
@@ -628,21 +644,18 @@ static void test_refuses_other_files(void **state)
 static void test_migrates_older_schema(void **state)
 {
     (void)state;
-    const char *path = fresh_db("migrate");
-    struct facet_error err;
-    struct store *store;
-    assert_int_equal(store_open(path, &store, &err), FACET_OK);
     struct study_request request;
-    int64_t run = finished_run(store, &request);
-    store_close(store);
-    sql(path, UNDO_V5 "DROP VIEW pareto; DROP VIEW run_summary;"
+    int64_t run;
+    const char *path = older_file("migrate", UNDO_V5 "DROP VIEW pareto; DROP VIEW run_summary;"
               "DROP INDEX options_by_rank; DROP INDEX options_by_cost;"
               "DROP INDEX options_by_planarity; DROP INDEX options_by_dp_area;"
               "DROP INDEX options_by_fp_area; DROP INDEX options_by_sp_area;"
               "DROP INDEX options_by_nu; DROP INDEX options_by_nv;"
               "DROP INDEX options_by_threshold;"
               "ALTER TABLE runs DROP COLUMN uv; ALTER TABLE runs DROP COLUMN warnings; ALTER TABLE runs DROP COLUMN store_panels;"
-              "PRAGMA user_version = 1;");
+              "PRAGMA user_version = 1;", &run, &request);
+    struct facet_error err;
+    struct store *store;
     assert_int_equal(store_open(path, &store, &err), FACET_OK);
     struct run_info info;
     assert_int_equal(store_run_get(store, run, &info, &err), FACET_OK);
@@ -670,15 +683,12 @@ static void test_migrates_older_schema(void **state)
 static void test_migrates_v3(void **state)
 {
     (void)state;
-    const char *path = fresh_db("migrate3");
+    struct study_request request;
+    int64_t old;
+    const char *path = older_file("migrate3", UNDO_V5 "ALTER TABLE runs DROP COLUMN uv; ALTER TABLE runs DROP COLUMN warnings; ALTER TABLE runs DROP COLUMN store_panels;"
+              " PRAGMA user_version = 3;", &old, &request);
     struct facet_error err;
     struct store *store;
-    assert_int_equal(store_open(path, &store, &err), FACET_OK);
-    struct study_request request;
-    int64_t old = finished_run(store, &request);
-    store_close(store);
-    sql(path, UNDO_V5 "ALTER TABLE runs DROP COLUMN uv; ALTER TABLE runs DROP COLUMN warnings; ALTER TABLE runs DROP COLUMN store_panels;"
-              " PRAGMA user_version = 3;");
     assert_int_equal(store_open(path, &store, &err), FACET_OK);
     struct run_info info;
     assert_int_equal(store_run_get(store, old, &info, &err), FACET_OK);
@@ -721,14 +731,12 @@ static void test_migrates_v3(void **state)
 static void test_migrates_v4(void **state)
 {
     (void)state;
-    const char *path = fresh_db("migrate4");
+    struct study_request request;
+    int64_t old;
+    const char *path = older_file("migrate4", UNDO_V5 " PRAGMA user_version = 4;",
+                                  &old, &request);
     struct facet_error err;
     struct store *store;
-    assert_int_equal(store_open(path, &store, &err), FACET_OK);
-    struct study_request request;
-    int64_t old = finished_run(store, &request);
-    store_close(store);
-    sql(path, UNDO_V5 " PRAGMA user_version = 4;");
     assert_int_equal(store_open(path, &store, &err), FACET_OK);
     struct run_info info;
     assert_int_equal(store_run_get(store, old, &info, &err), FACET_OK);
