@@ -34,13 +34,22 @@ void classify_flags_usage(FILE *out)
         "  --prices FP,SP,DP   USD/m^2 (default %g,%g,%g)\n"
         "  --sp-as-fp          price SP area as FP (the paper's MOGD)\n"
         "  --max-panel-area M2 feasibility limit (default %g)\n"
+        "  --panel-cost USD    per panel, whatever its type (default %g)\n"
+        "  --joint-cost USD    per metre of joint (default %g)\n"
+        "  --mould-cost SP,DP  USD per mould: a bending jig for SP, a mould for\n"
+        "                      DP (default %g,%g); 0 everywhere is the paper's\n"
+        "                      model, area alone\n"
+        "  --mould-tol MM      curved panels within MM of each other share a\n"
+        "                      mould (default: the flatness threshold)\n"
+        "  --mould-mirror      mirror images share a mould too\n"
         "  --object NAME       only the faces of object NAME\n"
         "  --group NAME        only the faces of group NAME\n"
         "  --uv METHOD         the UV panels follow: vt, grid (a structured\n"
         "                      quad grid's own i, j), plane, harmonic; default\n"
         "                      the first of these that applies\n",
         panel_mode_name(p.mode), c->price[TYPE_FP], c->price[TYPE_SP],
-        c->price[TYPE_DP], c->max_panel_area);
+        c->price[TYPE_DP], c->max_panel_area, c->panel_cost, c->joint_cost,
+        c->mould_cost[TYPE_SP], c->mould_cost[TYPE_DP]);
 }
 
 void surface_flags_init(struct surface_flags *f)
@@ -78,6 +87,11 @@ void classify_flags_init(struct classify_flags *f)
         {"prices", 0, ARG_STRING, &f->prices, NULL},
         {"sp-as-fp", 0, ARG_FLAG, NULL, &f->sp_as_fp},
         {"max-panel-area", 0, ARG_STRING, &f->max_area, NULL},
+        {"panel-cost", 0, ARG_STRING, &f->panel_cost, NULL},
+        {"joint-cost", 0, ARG_STRING, &f->joint_cost, NULL},
+        {"mould-cost", 0, ARG_STRING, &f->mould_cost, NULL},
+        {"mould-tol", 0, ARG_STRING, &f->mould_tol, NULL},
+        {"mould-mirror", 0, ARG_FLAG, NULL, &f->mould_mirror},
         {"object", 0, ARG_STRING, &f->surface.object, NULL},
         {"group", 0, ARG_STRING, &f->surface.group, NULL},
         {"uv", 0, ARG_STRING, &f->uv, NULL},
@@ -130,5 +144,25 @@ int classify_flags_apply(const struct classify_flags *f,
             return rc;
         params->classify.max_panel_area = number;
     }
+    if (f->panel_cost &&
+        (rc = args_double(f->panel_cost, 0, 1e9, "--panel-cost",
+                          &params->classify.panel_cost, err)))
+        return rc;
+    if (f->joint_cost &&
+        (rc = args_double(f->joint_cost, 0, 1e9, "--joint-cost",
+                          &params->classify.joint_cost, err)))
+        return rc;
+    if (f->mould_cost &&
+        (rc = classify_mould_costs_parse(f->mould_cost, "--mould-cost",
+                                         params->classify.mould_cost, err)))
+        return rc;
+    if (f->mould_tol) {
+        if ((rc = args_double(f->mould_tol, 0, 1e6, "--mould-tol", &number,
+                              err)))
+            return rc;
+        params->mould_tol = number / 1000;
+        params->mould_tol_given = 1;
+    }
+    params->mould_mirror = f->mould_mirror;
     return FACET_OK;
 }

@@ -40,7 +40,9 @@ struct classify_flags {
     struct surface_flags surface;
     const char *curvature_tol, *per_panel, *prices, *max_area, *uv;
     int flip_normals, sp_as_fp;
-    struct arg_option table[11];  /* the ten flags, then the end */
+    const char *panel_cost, *joint_cost, *mould_cost, *mould_tol;
+    int mould_mirror;
+    struct arg_option table[16];  /* the fifteen flags, then the end */
 };
 
 /* Clears flags and fills flags->table, pointing at flags itself (which

@@ -215,6 +215,8 @@ const struct command cmd_classify = {
              "       [--curvature-tol K] [--per-panel extremes|mean] "
              "[--flip-normals]\n"
              "       [--prices FP,SP,DP] [--sp-as-fp] [--max-panel-area M2]\n"
+             "       [--panel-cost USD] [--joint-cost USD] [--mould-cost SP,DP]\n"
+             "       [--mould-tol MM] [--mould-mirror]\n"
              "       [--json] [--csv FILE] [--object NAME] [--group NAME]\n"
              "       [--uv vt|grid|plane|harmonic]",
     .summary = "Divide a surface into a UV grid of panels; classify, type "

@@ -20,7 +20,24 @@ void option_text_totals(FILE *out, const struct option_totals *t,
                 t->area > 0 ? 100 * t->area_of[k] / t->area : 0,
                 t->cost_of[k]);
     fprintf(out, "%-6s %8zu %14.3f %7.1f%% %16.2f\n", "total", t->panels,
-            t->area, 100.0, t->cost);
+            t->area, 100.0, t->area_cost);
+    if (t->cost != t->area_cost) {
+        fprintf(out, "%-16s %zu panels x %g USD = %.2f USD\n", "panel cost",
+                t->panels, o->panel_cost, t->panel_cost);
+        fprintf(out, "%-16s %.3f m x %g USD/m = %.2f USD\n", "joint cost",
+                t->joint_length, o->joint_cost, t->joint_cost);
+        fprintf(out, "%-16s SP %zu x %g + DP %zu x %g USD = %.2f USD\n",
+                "mould cost", t->moulds_of[TYPE_SP], o->mould_cost[TYPE_SP],
+                t->moulds_of[TYPE_DP], o->mould_cost[TYPE_DP], t->mould_cost);
+        fprintf(out, "%-16s %.2f USD (area, panels, joints and moulds)\n",
+                "total cost", t->cost);
+    }
+    fprintf(out, "\n%-16s %.3f m (panel edges once each, and the outline)\n",
+            "joint length", t->joint_length);
+    fprintf(out, "%-16s %zu (SP %zu, DP %zu; largest family %zu panels, %zu "
+            "of one panel; greedy: at most this many)\n", "moulds",
+            t->moulds, t->moulds_of[TYPE_SP], t->moulds_of[TYPE_DP],
+            t->largest_family, t->singleton_families);
 
     fprintf(out, "\n%-16s %.6f m (sum of FP and SP panel deviations)\n",
             "planarity", t->planarity);

@@ -4,7 +4,12 @@
 # it at the paper's grid (37 x 49), then searches the paper's whole design
 # space into the SQLite store examples/out/demo.db, prints its Pareto table,
 # and writes the scatter (demo-pareto.svg) and the knee option as OBJ + MTL,
-# CSV schedule and SVG panel map (demo-knee.*).
+# CSV schedule and SVG panel map (demo-knee.*). Then a second study into
+# the same store: the cost model beyond area (issue 15) with ILLUSTRATIVE
+# unit costs (a cost per panel, per metre of joint and per mould, made up
+# for the demo, not quotes) over a wider space, searched for cost and
+# moulds; its front lies inside the space, where the paper's piles up at
+# the finest grid.
 set -euo pipefail
 facet=${1:-./facet}
 out=${DEMO_DIR:-examples/out}
@@ -33,6 +38,31 @@ echo "== facet plot and facet export: the run's scatter and the knee option ($kn
 "$facet" plot "$out/demo.db" --run 1 -o "$out/demo-pareto.svg" --force
 "$facet" export "$out/demo.db" --run 1 --option "$knee" --force \
     --obj "$out/demo-knee.obj" --csv "$out/demo-knee.csv" --svg "$out/demo-knee.svg"
+echo
+echo "== facet optimize $out/roof.obj --db $out/demo.db: ILLUSTRATIVE costs (made up for the demo, not quotes)"
+echo "   150 USD a panel, 60 USD a metre of joint, 1,500 USD an SP bending jig, 6,000 USD a DP mould;"
+echo "   a wider space (u 12:60, v 16:64, 3 mm), objectives cost and moulds"
+"$facet" optimize "$out/roof.obj" --db "$out/demo.db" --u 12:60 --v 16:64 \
+    --threshold 3 --sp-as-fp --max-panel-area 1.92 \
+    --panel-cost 150 --joint-cost 60 --mould-cost 1500,6000 \
+    --objectives cost,moulds --name "illustrative costs"
+echo
+echo "== the two knees: the paper's model (run 1) and the illustrative costs (run 2)"
+"$facet" options "$out/demo.db" --where knee --csv | cut -d, -f1-6,18
+for run in 1 2; do
+    knee=$("$facet" options "$out/demo.db" --run $run --where knee --csv | sed -n 2p | cut -d, -f2)
+    "$facet" show "$out/demo.db" --run $run --option "$knee" | grep -E '^(option|grid|moulds|total cost|mould cost) '
+done
+echo
+echo "== where each front lies (facet runs --json: front_at_bounds, empty when inside the space)"
+"$facet" runs "$out/demo.db" --json | python3 -c '
+import json, sys
+for r in json.load(sys.stdin):
+    bounds = ", ".join("%s %s %g (%d Pareto options)" % (b["variable"], b["bound"], b["value"], b["pareto"])
+                       for b in r["front_at_bounds"])
+    print("run %d (%s): %d Pareto options; %s" % (r["id"], r["name"], r["pareto_options"],
+          "front at the bounds: " + bounds if bounds else "the front lies inside the space"))
+'
 echo
 echo "Next: explore the options in the workbench (q quits, ? lists the keys):"
 echo "  $facet tui $out/demo.db"

@@ -452,6 +452,39 @@ static int resolve(const struct parser *p, const struct token *t)
     return COLUMN_UNKNOWN;
 }
 
+/* The type prefix ("fp_", "sp_", "dp_") name starts with: 0, 1, 2, or -1. */
+static int type_prefix(const char *name)
+{
+    static const char *const prefix[TYPE_COUNT] = {"fp_", "sp_", "dp_"};
+    for (int t = 0; t < TYPE_COUNT; t++)
+        if (strncmp(name, prefix[t], 3) == 0 && name[3] != '\0')
+            return t;
+    return -1;
+}
+
+/* Writes names[k] to list as the columns' list shows it: a per-type column
+ * as its family, "{fp,sp,dp}_count", at the family's first member, nothing
+ * at the others. Returns the bytes written. */
+static size_t list_name(char *list, size_t size, size_t used,
+                        const char *const *names, size_t n, size_t k)
+{
+    const char *sep = used == 0 ? "" : ", ";
+    if (type_prefix(names[k]) < 0)
+        return (size_t)snprintf(list + used, size - used, "%s%s", sep,
+                                names[k]);
+    const char *suffix = names[k] + 3;
+    for (size_t e = 0; e < k; e++)
+        if (type_prefix(names[e]) >= 0 && strcmp(names[e] + 3, suffix) == 0)
+            return 0;
+    char family[16] = "";
+    for (size_t e = k; e < n; e++)
+        if (type_prefix(names[e]) >= 0 && strcmp(names[e] + 3, suffix) == 0)
+            snprintf(family + strlen(family), sizeof family - strlen(family),
+                     "%s%.2s", family[0] ? "," : "", names[e]);
+    return (size_t)snprintf(list + used, size - used, "%s{%s}_%s", sep,
+                            family, suffix);
+}
+
 /* The message for a name that is no column, with the nearest name or, when
  * nothing is near, the list of them. */
 static int fail_unknown_name(struct parser *p, const struct token *t)
@@ -485,8 +518,7 @@ static int fail_unknown_name(struct parser *p, const struct token *t)
                         len > strlen(class) && names[k][strlen(class)] == '_';
         }
         if (!per_class)
-            used += (size_t)snprintf(list + used, sizeof list - used, "%s%s",
-                                     used == 0 ? "" : ", ", names[k]);
+            used += list_name(list, sizeof list, used, names, n, k);
     }
     return fail_at(p, t->at, "unknown column '%s' (columns: %s, and "
                    "CLASS_count, CLASS_area for each class, e.g. saddle_area)",

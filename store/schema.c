@@ -160,11 +160,38 @@ static const char schema_v4[] =
     "ALTER TABLE runs ADD COLUMN store_panels TEXT NOT NULL DEFAULT 'front'"
     " CHECK (store_panels IN ('front', 'knee', 'none'));";
 
+/* Version 5: the cost model beyond area (panels, joints, moulds) and the
+ * mould families. A run's unit prices are 0 before it: the paper's model,
+ * which is what those runs priced. An option's new columns are NULL for
+ * options stored before it (never computed); a panel's mould family is
+ * NULL for an FP panel (no mould) and for panels stored before it. */
+static const char schema_v5[] =
+    "ALTER TABLE runs ADD COLUMN price_panel REAL NOT NULL DEFAULT 0;"
+    "ALTER TABLE runs ADD COLUMN price_joint REAL NOT NULL DEFAULT 0;"
+    "ALTER TABLE runs ADD COLUMN price_sp_mould REAL NOT NULL DEFAULT 0;"
+    "ALTER TABLE runs ADD COLUMN price_dp_mould REAL NOT NULL DEFAULT 0;"
+    "ALTER TABLE runs ADD COLUMN mould_tol_mm REAL;"  /* NULL: threshold */
+    "ALTER TABLE runs ADD COLUMN mould_mirror INTEGER NOT NULL DEFAULT 0;"
+    "ALTER TABLE options ADD COLUMN joint_length REAL;"
+    "ALTER TABLE options ADD COLUMN moulds INTEGER;"
+    "ALTER TABLE options ADD COLUMN sp_moulds INTEGER;"
+    "ALTER TABLE options ADD COLUMN dp_moulds INTEGER;"
+    "ALTER TABLE options ADD COLUMN largest_family INTEGER;"
+    "ALTER TABLE options ADD COLUMN single_moulds INTEGER;"
+    "ALTER TABLE options ADD COLUMN area_cost REAL;"
+    "ALTER TABLE options ADD COLUMN panel_cost REAL;"
+    "ALTER TABLE options ADD COLUMN joint_cost REAL;"
+    "ALTER TABLE options ADD COLUMN mould_cost REAL;"
+    "ALTER TABLE panels ADD COLUMN mould_family INTEGER;"
+    "CREATE INDEX options_by_moulds ON options(run, moulds);"
+    "CREATE INDEX options_by_joint_length ON options(run, joint_length);";
+
 static const char *const migrations[STORE_SCHEMA_VERSION] = {
     schema_v1,
     schema_v2,
     schema_v3,
     schema_v4,
+    schema_v5,
 };
 
 int store_fail(struct store *store, const char *doing,

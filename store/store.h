@@ -122,6 +122,13 @@ struct run_info {
     int64_t knee;              /* option number of the knee, or 0 */
     int64_t pareto_options;    /* options of rank 1 */
     double best_cost;          /* lowest cost of a feasible option (USD) */
+    /* The cost model beyond area (classify.h), 0 for the paper's: */
+    double panel_cost;         /* USD per panel */
+    double joint_cost;         /* USD per metre of joint */
+    double mould_cost[TYPE_COUNT];  /* USD per mould of SP, DP; FP 0 */
+    double mould_tol_mm;       /* mould tolerance (mm); NaN: each option's
+                                  flatness threshold */
+    int mould_mirror;          /* mirror images share a mould */
 };
 
 /* FACET_OK when run's setting was read from the file; FACET_EINPUT when

@@ -83,7 +83,11 @@ static void option_from_row(sqlite3_stmt *s, int first,
         if (col->writer == WRITTEN_AS_KEY)
             continue;
         void *field = (char *)o + col->offset;
-        if (col->field == FIELD_DOUBLE)
+        if (col->field == FIELD_DOUBLE &&
+            col->offset != offsetof(struct option_row, crowding))
+            /* NULL: a column added after the option was stored. */
+            *(double *)field = store_column_or_nan(s, c);
+        else if (col->field == FIELD_DOUBLE)
             *(double *)field = sqlite3_column_double(s, c);
         else if (col->field == FIELD_INT)
             *(int *)field = sqlite3_column_int(s, c);

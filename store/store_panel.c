@@ -42,10 +42,10 @@ int store_panels_put(struct store *store, int64_t run, int64_t option,
             " trimmed, corner_planarity, price, cost, centroid_x,"
             " centroid_y, centroid_z, normal_x, normal_y, normal_z,"
             " c0_x, c0_y, c0_z, c1_x, c1_y, c1_z, c2_x, c2_y, c2_z,"
-            " c3_x, c3_y, c3_z) VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8,"
-            " ?9, ?10, ?11, ?12, ?13, ?14, ?15, ?16, ?17, ?18, ?19, ?20,"
-            " ?21, ?22, ?23, ?24, ?25, ?26, ?27, ?28, ?29, ?30, ?31, ?32,"
-            " ?33, ?34, ?35, ?36, ?37, ?38)", &panel, "storing panels", err);
+            " c3_x, c3_y, c3_z, mould_family) VALUES (?1, ?2, ?3, ?4, ?5,"
+            " ?6, ?7, ?8, ?9, ?10, ?11, ?12, ?13, ?14, ?15, ?16, ?17, ?18,"
+            " ?19, ?20, ?21, ?22, ?23, ?24, ?25, ?26, ?27, ?28, ?29, ?30,"
+            " ?31, ?32, ?33, ?34, ?35, ?36, ?37, ?38, ?39)", &panel, "storing panels", err);
     for (size_t k = 0; k < p->npanels && rc == FACET_OK; k++) {
         const struct panel *x = &p->panels[k];
         int c = 1;
@@ -78,6 +78,10 @@ int store_panels_put(struct store *store, int64_t run, int64_t option,
         for (int corner = 0; corner < 4; corner++)
             for (int d = 0; d < 3; d++)
                 store_bind_or_null(panel, c++, x->corner[corner][d]);
+        if (x->mould >= 0)
+            sqlite3_bind_int(panel, c++, x->mould);
+        else
+            sqlite3_bind_null(panel, c++);
         if (sqlite3_step(panel) != SQLITE_DONE)
             rc = store_fail(store, "storing panels", err);
         sqlite3_reset(panel);
@@ -176,7 +180,8 @@ int store_panels_get(struct store *store, int64_t run, int64_t option,
         " eps, p_dist, diameter, trimmed, corner_planarity, price, cost,"
         " centroid_x, centroid_y, centroid_z, normal_x, normal_y, normal_z,"
         " c0_x, c0_y, c0_z, c1_x, c1_y, c1_z, c2_x, c2_y, c2_z,"
-        " c3_x, c3_y, c3_z FROM panels WHERE run = ?1 AND option = ?2"
+        " c3_x, c3_y, c3_z, coalesce(mould_family, -1) FROM panels"
+        " WHERE run = ?1 AND option = ?2"
         " ORDER BY j, i", &s, "reading panels", err);
     if (rc != FACET_OK)
         return rc;
@@ -224,6 +229,7 @@ int store_panels_get(struct store *store, int64_t run, int64_t option,
                 x->corner[corner][d] = store_column_or_nan(s, c++);
             x->ncorners += isfinite(x->corner[corner][0]);
         }
+        x->mould = sqlite3_column_int(s, c++);
         p->cell_panel[(size_t)x->j * (size_t)p->nu + (size_t)x->i] = (int)n;
         n++;
     }

@@ -26,6 +26,11 @@
     " best_cost, coalesce(surface_area, 0), coalesce(triangles, 0)," \
     " coalesce(uv_method, ''), coalesce(uv, ''), warnings, store_panels"
 
+/* The cost model's columns (schema v5), read after RUN_COLUMNS. */
+#define RUN_COST_COLUMNS \
+    "price_panel, price_joint, price_sp_mould, price_dp_mould," \
+    " mould_tol_mm, mould_mirror"
+
 static void copy_text(char *to, size_t size, sqlite3_stmt *stmt, int col)
 {
     const unsigned char *text = sqlite3_column_text(stmt, col);
@@ -157,6 +162,42 @@ const char *store_run_setting_text(const struct run_info *run,
     return "";
 }
 
+/* The columns of RUN_COST_COLUMNS from result column c on. */
+static void run_costs_from_row(sqlite3_stmt *s, int c, struct run_info *r)
+{
+    r->panel_cost = sqlite3_column_double(s, c++);
+    r->joint_cost = sqlite3_column_double(s, c++);
+    r->mould_cost[TYPE_FP] = 0;
+    r->mould_cost[TYPE_SP] = sqlite3_column_double(s, c++);
+    r->mould_cost[TYPE_DP] = sqlite3_column_double(s, c++);
+    r->mould_tol_mm = store_column_or_nan(s, c++);
+    r->mould_mirror = sqlite3_column_int(s, c++);
+}
+
+/* Writes r's RUN_COST_COLUMNS to its row. */
+static int run_costs_write(struct store *store, const struct run_info *r,
+                           struct facet_error *err)
+{
+    sqlite3_stmt *s;
+    int rc = store_prepare(store,
+        "UPDATE runs SET price_panel = ?2, price_joint = ?3,"
+        " price_sp_mould = ?4, price_dp_mould = ?5, mould_tol_mm = ?6,"
+        " mould_mirror = ?7 WHERE id = ?1", &s, "creating a run", err);
+    if (rc != FACET_OK)
+        return rc;
+    sqlite3_bind_int64(s, 1, r->id);
+    sqlite3_bind_double(s, 2, r->panel_cost);
+    sqlite3_bind_double(s, 3, r->joint_cost);
+    sqlite3_bind_double(s, 4, r->mould_cost[TYPE_SP]);
+    sqlite3_bind_double(s, 5, r->mould_cost[TYPE_DP]);
+    store_bind_or_null(s, 6, r->mould_tol_mm);
+    sqlite3_bind_int(s, 7, r->mould_mirror);
+    if (sqlite3_step(s) != SQLITE_DONE)
+        rc = store_fail(store, "creating a run", err);
+    sqlite3_finalize(s);
+    return rc;
+}
+
 static void run_from_row(const struct store *store, sqlite3_stmt *s,
                          struct run_info *r)
 {
@@ -218,6 +259,7 @@ static void run_from_row(const struct store *store, sqlite3_stmt *s,
     if (store->read_only && r->status == RUN_RUNNING &&
         store_run_writer_gone(r->writer_pid, r->writer_host))
         r->status = RUN_INTERRUPTED;
+    run_costs_from_row(s, c, r);
 }
 
 static void bind_text_or_null(sqlite3_stmt *s, int col, const char *text)
@@ -308,6 +350,8 @@ int store_run_create(struct store *store, struct run_info *r,
     r->hypervolume = NAN;
     r->best_cost = NAN;
     sqlite3_finalize(s);
+    if (rc == FACET_OK)
+        rc = run_costs_write(store, r, err);
     return rc;
 }
 
@@ -315,7 +359,7 @@ int store_run_get(struct store *store, int64_t id, struct run_info *run,
                   struct facet_error *err)
 {
     sqlite3_stmt *s;
-    int rc = store_prepare(store, "SELECT " RUN_COLUMNS
+    int rc = store_prepare(store, "SELECT " RUN_COLUMNS ", " RUN_COST_COLUMNS
                            " FROM runs WHERE id = ?1", &s, "reading a run",
                            err);
     if (rc != FACET_OK)
@@ -340,7 +384,7 @@ int store_run_list(struct store *store, struct run_info **runs,
     *runs = NULL;
     *count = 0;
     sqlite3_stmt *s;
-    int rc = store_prepare(store, "SELECT " RUN_COLUMNS
+    int rc = store_prepare(store, "SELECT " RUN_COLUMNS ", " RUN_COST_COLUMNS
                            " FROM runs ORDER BY id", &s, "listing runs", err);
     if (rc != FACET_OK)
         return rc;

@@ -117,6 +117,35 @@ void study_request_defaults(struct study_request *r)
     s->jobs = parallel_cpus(PARALLEL_MAX);
 }
 
+/* The cost model beyond area and the mould settings, between a run's
+ * settings and the parameters its options are evaluated with. The mould
+ * tolerance is NaN in the run (NULL in the store) and not given in the
+ * parameters when it is each option's flatness threshold. */
+static void costs_from_run(struct option_params *params,
+                           const struct run_info *run)
+{
+    params->classify.panel_cost = run->panel_cost;
+    params->classify.joint_cost = run->joint_cost;
+    memcpy(params->classify.mould_cost, run->mould_cost,
+           sizeof run->mould_cost);
+    params->mould_tol_given = !isnan(run->mould_tol_mm);
+    params->mould_tol = params->mould_tol_given ? run->mould_tol_mm / 1000
+                                                : 0;
+    params->mould_mirror = run->mould_mirror;
+}
+
+static void costs_to_run(struct run_info *run,
+                         const struct option_params *params)
+{
+    run->panel_cost = params->classify.panel_cost;
+    run->joint_cost = params->classify.joint_cost;
+    memcpy(run->mould_cost, params->classify.mould_cost,
+           sizeof run->mould_cost);
+    run->mould_tol_mm = params->mould_tol_given ? params->mould_tol * 1000
+                                                : NAN;
+    run->mould_mirror = params->mould_mirror;
+}
+
 int study_settings(const struct run_info *run,
                    struct optimize_settings *s, struct mesh_options *mesh,
                    int *flip_normals, struct facet_error *err)
@@ -145,6 +174,7 @@ int study_settings(const struct run_info *run,
     memcpy(s->base.classify.price, run->price, sizeof run->price);
     s->base.classify.sp_as_fp = run->sp_as_fp;
     s->base.classify.max_panel_area = run->max_panel_area;
+    costs_from_run(&s->base, run);
     s->seed = run->seed;
     s->evaluations = run->evaluations;
     s->population = run->population;
@@ -787,6 +817,7 @@ int study_start(struct store *store, const struct study_request *request,
     run.threshold_step_mm = s->space.t_step_mm;
     memcpy(run.price, s->base.classify.price, sizeof run.price);
     run.sp_as_fp = s->base.classify.sp_as_fp;
+    costs_to_run(&run, &s->base);
     run.max_panel_area = s->base.classify.max_panel_area;
     run.curvature_tol = s->base.classify.curvature_tol;
     run.per_panel = s->base.mode;

@@ -59,6 +59,11 @@ const struct tui_column tui_option_columns[] = {
     {"max_panel_area", 7, 0},
     {"max_deviation", 7, 0},
     {"p_dist", 9, 0},
+    {"moulds", 6, 0},
+    {"sp_moulds", 6, 0},
+    {"dp_moulds", 6, 0},
+    {"joint_length", 7, 0},
+    {"mould_cost", 10, 0},
     {"crowding", 6, 0},
     {"generation", 4, 0},
 };
@@ -70,7 +75,9 @@ const char *const tui_metric_columns[] = {
     "number", "cost", "planarity", "dp_area", "fp_area", "sp_area", "area",
     "nu", "nv", "threshold_mm", "panels", "fp_count", "sp_count",
     "dp_count", "max_deviation", "max_panel_area", "p_dist", "feasible",
-    "rank", "crowding", "knee", "generation",
+    "rank", "crowding", "knee", "generation", "moulds", "sp_moulds",
+    "dp_moulds", "joint_length", "largest_family", "single_moulds",
+    "area_cost", "panel_cost", "joint_cost", "mould_cost",
 };
 const int tui_metric_column_count =
     (int)(sizeof tui_metric_columns / sizeof tui_metric_columns[0]);

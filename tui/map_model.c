@@ -89,11 +89,30 @@ void map_fit_box(double width, double height, int max_cols, int max_rows,
     *rows = r < 1 ? 1 : r > max_rows ? max_rows : r;
 }
 
-int map_cell_value(const struct panelization *p, int cols, int rows, int c,
-                   int r, int by_class)
+/* The slot of value in values[0..*n) (added when new, while room is
+ * left), or -1. */
+static int slot_of(int *values, int *n, int value)
 {
-    double weight[(int)CLASS_COUNT + (int)TYPE_COUNT] = {0};
-    int values = by_class ? CLASS_COUNT : TYPE_COUNT;
+    for (int k = 0; k < *n; k++)
+        if (values[k] == value)
+            return k;
+    if (*n >= MAP_MOULDS_PER_CHAR)
+        return -1;
+    values[*n] = value;
+    return (*n)++;
+}
+
+int map_cell_value(const struct panelization *p, int cols, int rows, int c,
+                   int r, enum map_colour colour)
+{
+    double weight[MAP_MOULDS_PER_CHAR] = {0};
+    int value_of[MAP_MOULDS_PER_CHAR];
+    int values = colour == MAP_BY_CLASS ? CLASS_COUNT : TYPE_COUNT;
+    if (colour == MAP_BY_MOULD)
+        values = 0;
+    else
+        for (int k = 0; k < values; k++)
+            value_of[k] = k;
     double empty = 0;
     /* the character's share of the grid, in cells: u along i, and v
      * along j counted up from the bottom row */
@@ -110,17 +129,30 @@ int map_cell_value(const struct panelization *p, int cols, int rows, int c,
             if (w <= 0)
                 continue;
             const struct panel *q = panel_at(p, i, j);
+            int k = q == NULL ? -1
+                    : colour == MAP_BY_CLASS ? (int)q->class
+                    : colour == MAP_BY_TYPE ? (int)q->type
+                    : slot_of(value_of, &values,
+                              q->mould >= 0 ? q->mould : MAP_NO_MOULD);
             if (q == NULL)
                 empty += w;
-            else
-                weight[by_class ? (int)q->class : (int)q->type] += w;
+            else if (k >= 0)
+                weight[k] += w;
         }
     }
     int best = -1;
     for (int k = 0; k < values; k++)
         if (weight[k] > 0 && (best < 0 || weight[k] >= weight[best]))
             best = k;
-    return best >= 0 && weight[best] >= empty ? best : -1;
+    return best >= 0 && weight[best] >= empty ? value_of[best] : -1;
+}
+
+size_t map_family_size(const struct panelization *p, int family)
+{
+    size_t n = 0;
+    for (size_t k = 0; k < p->npanels; k++)
+        n += p->panels[k].mould == family && family >= 0;
+    return n;
 }
 
 void map_cell_of(const struct panelization *p, int cols, int rows, int i,

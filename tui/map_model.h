@@ -28,14 +28,33 @@ void map_surface_size(const struct panelization *p, double *width,
 void map_fit_box(double width, double height, int max_cols, int max_rows,
                  double cell_aspect, int *cols, int *rows);
 
+/* What a map colours its panels by. */
+enum map_colour {
+    MAP_BY_TYPE,    /* FP, SP, DP */
+    MAP_BY_CLASS,   /* the eight classes */
+    MAP_BY_MOULD,   /* the mould family (panel->mould) */
+    MAP_COLOURS
+};
+
+/* An FP panel's value by mould: it needs none. */
+#define MAP_NO_MOULD (-2)
+
+/* The families map_cell_value weighs in one character, the first met:
+ * more in one character are left out of its choice. */
+#define MAP_MOULDS_PER_CHAR 32
+
 /* What character (c, r) of a cols x rows picture of the whole grid shows
- * (r counted from v's top row, as a map reads): the panel type (by_class
- * 0) or class (1) that covers most of the character's share of the grid,
- * every panel weighted by the part of its cell inside the share; ties go
- * to the later type (the dearer) or class. -1 when cells without a panel
- * cover more of it than any type or class does. */
+ * (r counted from v's top row, as a map reads): the panel type, class or
+ * mould family (by colour) that covers most of the character's share of
+ * the grid, every panel weighted by the part of its cell inside the
+ * share; ties go to the later type (the dearer) or class, or the later
+ * family met. By mould, FP panels count as one value, MAP_NO_MOULD. -1
+ * when cells without a panel cover more of it than any value does. */
 int map_cell_value(const struct panelization *p, int cols, int rows, int c,
-                   int r, int by_class);
+                   int r, enum map_colour colour);
+
+/* The panels of p in mould family family (0 for none). */
+size_t map_family_size(const struct panelization *p, int family);
 
 /* The character (*c, *r) of a cols x rows picture that the centre of
  * cell (i, j) falls in (r from v's top). */

@@ -29,7 +29,7 @@ struct map_screen {
     struct option_row option;
     struct panelization panels;
     struct option_totals totals;
-    int by_class;
+    enum map_colour colour;  /* c cycles type, class, mould family */
     int zoom;            /* 0: fit the whole grid; 1, 2: columns per
                             panel, one row per panel */
     double width_m, height_m;  /* the surface's extent (map_model.h) */
@@ -44,7 +44,7 @@ static const struct tui_key_help map_help[] = {
     {"PgUp/PgDn", "a page up / down"},
     {"g / G", "first / last panel"},
     {"0 / $", "start / end of the row"},
-    {"c, F2", "colour by type (FP/SP/DP) or by class"},
+    {"c, F2", "colour by type (FP/SP/DP), by class or by mould family"},
     {"z", "zoom in: fit the screen, 1, then 2 columns per panel"},
     {"Z", "zoom out, back to the whole grid fitted to the screen"},
     {"e, F9", "export: PREFIX.obj (+ .mtl), PREFIX.csv and PREFIX.svg; "
@@ -70,13 +70,33 @@ static const struct panel *panel_at(const struct map_screen *s, int i, int j)
     return k >= 0 ? &s->panels.panels[k] : NULL;
 }
 
+/* The letter and colour of mould family k: eight colours and 36 letters
+ * in turn, so that neighbours differ though families outnumber them. */
+static void family_look(int k, char *letter, attr_t *attr)
+{
+    static const char digits[] = "0123456789abcdefghijklmnopqrstuvwxyz";
+    *letter = digits[k % 36];
+    *attr = tui_attr(ROLE_CLASS0 + k % CLASS_COUNT);
+}
+
 static void draw_legend(struct map_screen *s, int y, int x, int width)
 {
     const struct option_totals *t = &s->totals;
     tui_put(y++, x, width, tui_attr(ROLE_HEADER),
-            s->by_class ? " class              count       m^2"
-                        : " type               count       m^2");
-    if (s->by_class) {
+            s->colour == MAP_BY_CLASS ? " class              count       m^2"
+            : s->colour == MAP_BY_MOULD ? " moulds           families  panels"
+                                        : " type               count       m^2");
+    if (s->colour == MAP_BY_MOULD) {
+        tui_putf(y++, x, width, A_NORMAL, "   %-15s %6zu %9zu", "SP",
+                 t->moulds_of[TYPE_SP], t->count[TYPE_SP]);
+        tui_putf(y++, x, width, A_NORMAL, "   %-15s %6zu %9zu", "DP",
+                 t->moulds_of[TYPE_DP], t->count[TYPE_DP]);
+        tui_putf(y++, x, width, A_NORMAL, "   %-15s %6s %9zu", "FP (none)",
+                 "-", t->count[TYPE_FP]);
+        tui_putf(y++, x, width, A_NORMAL, "   largest family %zu, %zu of one",
+                 t->largest_family, t->singleton_families);
+        tui_putf(y++, x, width, A_NORMAL, "   (greedy: at most this many)");
+    } else if (s->colour == MAP_BY_CLASS) {
         for (int c = 0; c < CLASS_COUNT; c++) {
             char letter[2] = {class_letter[c], 0};
             tui_put(y, x + 1, 1, tui_attr(ROLE_CLASS0 + c), letter);
@@ -115,7 +135,9 @@ static void map_draw(struct tui_screen *base, struct tui_app *app,
     tui_putf(0, 0, width, tui_attr(ROLE_TITLE),
              " Panel map: option %lld of run %lld | grid %d x %d | t %.2f mm "
              "| by %s", (long long)s->option.number, (long long)s->run.id,
-             nu, nv, s->option.threshold_mm, s->by_class ? "class" : "type");
+             nu, nv, s->option.threshold_mm,
+             s->colour == MAP_BY_CLASS ? "class"
+             : s->colour == MAP_BY_MOULD ? "mould family" : "type");
     int legend = width >= 70 ? 36 : 0;
     int map_w = width - legend - 2, map_h = height - 5;
     if (map_h < 1)
@@ -147,21 +169,29 @@ static void map_draw(struct tui_screen *base, struct tui_app *app,
             int value, here;
             if (zoom == 0) {
                 value = map_cell_value(&s->panels, cols, lines, c, r,
-                                       s->by_class);
+                                       s->colour);
                 here = c == cursor_c && r == cursor_r;
             } else {
                 int i = s->left + c, j = nv - 1 - (s->top + r);
                 const struct panel *p = panel_at(s, i, j);
-                value = p == NULL ? -1 : s->by_class ? (int)p->class
-                                                     : (int)p->type;
+                value = p == NULL ? -1
+                        : s->colour == MAP_BY_CLASS ? (int)p->class
+                        : s->colour == MAP_BY_TYPE ? (int)p->type
+                        : p->mould >= 0 ? p->mould : MAP_NO_MOULD;
                 here = i == s->ci && j == s->cj;
             }
             char text[8];
             attr_t attr;
-            if (value < 0) {
+            if (value == MAP_NO_MOULD) {
+                snprintf(text, sizeof text, "-");
+                attr = tui_attr(tui_type_role(TYPE_FP));
+            } else if (value < 0) {
                 snprintf(text, sizeof text, "%s", app->glyphs->empty);
                 attr = tui_attr(ROLE_DIM);
-            } else if (s->by_class) {
+            } else if (s->colour == MAP_BY_MOULD) {
+                text[1] = '\0';
+                family_look(value, &text[0], &attr);
+            } else if (s->colour == MAP_BY_CLASS) {
                 snprintf(text, sizeof text, "%c", class_letter[value]);
                 attr = tui_attr(ROLE_CLASS0 + value);
             } else {
@@ -206,9 +236,22 @@ static void map_draw(struct tui_screen *base, struct tui_app *app,
              " class %s  type %s  area %.3f m^2%s  cost %s USD",
              panel_class_name(p->class), panel_type_name(p->type), p->area,
              p->trimmed ? " (trimmed)" : "", cost);
-    tui_putf(y + 2, 0, width, A_NORMAL,
-             " k1 %.4g  k2 %.4g 1/m  K %.4g 1/m^2  H %.4g 1/m  deviation "
-             "%.2f mm", p->k1, p->k2, p->K, p->H, p->deviation * 1000);
+    /* By mould the family takes the curvatures' line: 80 columns hold
+     * one or the other. */
+    if (s->colour == MAP_BY_MOULD && p->mould >= 0)
+        tui_putf(y + 2, 0, width, A_NORMAL,
+                 " mould family %d (%zu panels) | deviation %.2f mm",
+                 p->mould, map_family_size(&s->panels, p->mould),
+                 p->deviation * 1000);
+    else if (s->colour == MAP_BY_MOULD)
+        tui_putf(y + 2, 0, width, A_NORMAL,
+                 " no mould: an FP panel | deviation %.2f mm",
+                 p->deviation * 1000);
+    else
+        tui_putf(y + 2, 0, width, A_NORMAL,
+                 " k1 %.4g  k2 %.4g 1/m  K %.4g 1/m^2  H %.4g 1/m  "
+                 "deviation %.2f mm", p->k1, p->k2, p->K, p->H,
+                 p->deviation * 1000);
 }
 
 /* Moves the cursor by (di, dj), clamped to the grid. */
@@ -251,7 +294,10 @@ static void export_option(struct map_screen *s, struct tui_app *app)
     request.svg = svg;
     request.force = force;
     svg_map_defaults(&request.map);
-    request.map.colour_by = s->by_class ? SVG_MAP_BY_CLASS : SVG_MAP_BY_TYPE;
+    /* The SVG map knows types and classes; by mould it is drawn by type
+     * (the families are in the OBJ's groups and the CSV's column). */
+    request.map.colour_by = s->colour == MAP_BY_CLASS ? SVG_MAP_BY_CLASS
+                                                      : SVG_MAP_BY_TYPE;
     struct facet_error err;
     if (study_export(app->store, s->run.id, s->option.number, &request,
                      &err) != FACET_OK) {
@@ -292,7 +338,7 @@ static enum tui_result map_key(struct tui_screen *base, struct tui_app *app,
         return RESULT_HANDLED;
     }
     case 'c': case KEY_F(2):
-        s->by_class = !s->by_class;
+        s->colour = (enum map_colour)((s->colour + 1) % MAP_COLOURS);
         return RESULT_HANDLED;
     case 'z':
         if (s->zoom == 2)

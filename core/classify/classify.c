@@ -195,10 +195,24 @@ void classify_panels(struct panelization *p,
             priced_as = TYPE_FP;
         totals->cost_of[t] = totals->area_of[t] * options->price[priced_as];
     }
-    totals->cost = totals->cost_of[TYPE_FP] + totals->cost_of[TYPE_SP] +
-                   totals->cost_of[TYPE_DP];
+    totals->area_cost = totals->cost_of[TYPE_FP] + totals->cost_of[TYPE_SP] +
+                        totals->cost_of[TYPE_DP];
+    totals->cost = totals->area_cost;
     totals->feasible = classify_area_excess(totals->max_panel_area,
                                             options->max_panel_area) == 0;
+}
+
+void classify_price_terms(const struct classify_options *options,
+                          struct option_totals *totals)
+{
+    totals->panel_cost = (double)totals->panels * options->panel_cost;
+    totals->joint_cost = totals->joint_length * options->joint_cost;
+    totals->mould_cost = 0;
+    for (int t = 0; t < TYPE_COUNT; t++)
+        totals->mould_cost += (double)totals->moulds_of[t] *
+                              options->mould_cost[t];
+    totals->cost = totals->area_cost + totals->panel_cost +
+                   totals->joint_cost + totals->mould_cost;
 }
 
 int classify_check_options(const struct classify_options *options,
@@ -221,26 +235,60 @@ int classify_check_options(const struct classify_options *options,
         return facet_error_set(err, FACET_EINPUT,
             "maximum panel area %g m^2 must be more than 0",
             options->max_panel_area);
+    double terms[2 + TYPE_COUNT] = {options->panel_cost, options->joint_cost,
+                                    options->mould_cost[TYPE_FP],
+                                    options->mould_cost[TYPE_SP],
+                                    options->mould_cost[TYPE_DP]};
+    static const char *const term_name[2 + TYPE_COUNT] = {
+        "panel cost", "joint cost", "FP mould cost", "SP mould cost",
+        "DP mould cost"};
+    static const char *const term_unit[2 + TYPE_COUNT] = {
+        "USD per panel", "USD/m", "USD", "USD", "USD"};
+    for (int k = 0; k < 2 + TYPE_COUNT; k++)
+        if (!isfinite(terms[k]) || terms[k] < 0)
+            return facet_error_set(err, FACET_EINPUT,
+                                   "%s %g %s must be 0 or more",
+                                   term_name[k], terms[k], term_unit[k]);
+    return FACET_OK;
+}
+
+/* Parses n comma-separated amounts (finite, 0 to 1e9) of text into out.
+ * Returns 0, or -1 when text is not that. */
+static int amounts_parse(const char *text, double *out, int n)
+{
+    const char *p = text;
+    for (int k = 0; k < n; k++) {
+        const char *end;
+        if (numparse_double(p, p + strlen(p), &out[k], &end) != NUMPARSE_OK)
+            end = p;
+        while (*end == ' ')
+            end++;
+        if (end == p || !isfinite(out[k]) || out[k] < 0 || out[k] > 1e9 ||
+            *end != (k + 1 < n ? ',' : '\0'))
+            return -1;
+        p = end + 1;
+    }
+    return 0;
+}
+
+int classify_mould_costs_parse(const char *text, const char *what,
+                               double mould_cost[TYPE_COUNT],
+                               struct facet_error *err)
+{
+    mould_cost[TYPE_FP] = 0;
+    if (amounts_parse(text, &mould_cost[TYPE_SP], 2) != 0)
+        return facet_error_set(err, FACET_EINPUT,
+            "%s: '%s' is not SP,DP in USD per mould (e.g. 2000,15000)",
+            what, text);
     return FACET_OK;
 }
 
 int classify_prices_parse(const char *text, const char *what,
                           double price[TYPE_COUNT], struct facet_error *err)
 {
-    const char *p = text;
-    for (int t = 0; t < TYPE_COUNT; t++) {
-        const char *end;
-        if (numparse_double(p, p + strlen(p), &price[t], &end) !=
-            NUMPARSE_OK)
-            end = p;
-        while (*end == ' ')
-            end++;
-        if (end == p || !isfinite(price[t]) || price[t] < 0 ||
-            price[t] > 1e9 || *end != (t + 1 < TYPE_COUNT ? ',' : '\0'))
-            return facet_error_set(err, FACET_EINPUT,
-                "%s: '%s' is not FP,SP,DP in USD/m^2 (e.g. "
-                "701,766,1518)", what, text);
-        p = end + 1;
-    }
+    if (amounts_parse(text, price, TYPE_COUNT) != 0)
+        return facet_error_set(err, FACET_EINPUT,
+            "%s: '%s' is not FP,SP,DP in USD/m^2 (e.g. "
+            "701,766,1518)", what, text);
     return FACET_OK;
 }

@@ -19,7 +19,9 @@
  *     FP whatever its class;
  *   - cost = area x price of the type; in the paper's MOGD mode SP area is
  *     priced as FP. An option's cost is summed from its areas per type, so
- *     that equal areas give bit-equal costs.
+ *     that equal areas give bit-equal costs;
+ *   - the total cost adds a cost per panel, per metre of joint and per
+ *     mould (classify_price_terms), all 0 by default: the paper's model.
  * Every total a user sees is computed here, once.
  */
 #ifndef FACET_CLASSIFY_H
@@ -47,6 +49,13 @@ struct classify_options {
     double price[TYPE_COUNT];  /* USD/m^2 of FP, SP, DP */
     int sp_as_fp;              /* price SP area as FP (the paper's MOGD) */
     double max_panel_area;     /* feasibility limit (m^2) */
+    /* The cost terms beyond area (0: the paper's model, area alone): */
+    double panel_cost;              /* USD per panel, whatever its type */
+    double joint_cost;              /* USD per metre of joint
+                                       (joint_length.h) */
+    double mould_cost[TYPE_COUNT];  /* USD per mould family of the type
+                                       (a bending jig for SP, a mould for
+                                       DP); FP needs none and is 0 */
 };
 
 /* The paper's defaults: t = 3 mm, eps = 8 t / d^2, prices 701, 766, 1518,
@@ -70,6 +79,18 @@ struct option_totals {
     double p_dist;                   /* sum of the non-DP panels' P_dist
                                         (m^4) */
     int feasible;                    /* every panel within max_panel_area */
+    /* Set by option_evaluate (option.h), 0 from classify_panels alone: */
+    double joint_length;             /* m (joint_length.h) */
+    size_t moulds;                   /* mould families, SP and DP (mould.h):
+                                        an upper bound on the fewest */
+    size_t moulds_of[TYPE_COUNT];    /* the same per type (FP: 0) */
+    size_t largest_family;           /* panels of the largest family */
+    size_t singleton_families;       /* families of one panel */
+    /* The cost, term by term (USD); cost is their sum: */
+    double area_cost;                /* cost_of summed: the paper's model */
+    double panel_cost;               /* panels x panel cost */
+    double joint_cost;               /* joint_length x joint cost */
+    double mould_cost;               /* moulds per type x mould cost */
 };
 
 /* The class of curvatures k1 >= k2 (1/m) with zero tolerance eps (1/m). */
@@ -113,6 +134,20 @@ size_t classify_fp_over_threshold(const struct panelization *p,
 void classify_panels(struct panelization *p,
                      const struct classify_options *options,
                      struct option_totals *totals);
+
+/* Prices the terms beyond area from totals' panels, joint_length and
+ * moulds (options' panel, joint and mould costs) and sets totals->cost to
+ * area_cost + panel_cost + joint_cost + mould_cost. With the terms at 0 the
+ * cost is the area cost to the bit. */
+void classify_price_terms(const struct classify_options *options,
+                          struct option_totals *totals);
+
+/* Parses "SP,DP", the cost of a mould of each curved type (USD, finite, 0
+ * to 1e9), into mould_cost[TYPE_SP] and [TYPE_DP]; [TYPE_FP] is set to 0.
+ * FACET_EINPUT names the field what and the text. */
+int classify_mould_costs_parse(const char *text, const char *what,
+                               double mould_cost[TYPE_COUNT],
+                               struct facet_error *err);
 
 /* Parses "701,766,1518", the prices of FP, SP and DP (USD/m^2, finite,
  * 0 to 1e9), into price. FACET_EINPUT names the field what (the

@@ -5,6 +5,9 @@
 
 #include <string.h>
 
+#include "core/joint/joint_length.h"
+#include "core/mould/mould.h"
+
 void option_params_defaults(struct option_params *params)
 {
     memset(params, 0, sizeof *params);
@@ -55,6 +58,40 @@ int option_evaluate_lattice(const struct surface *surface,
                                params->nv, panels, err);
     if (rc != FACET_OK)
         return rc;
+    return option_classify(surface, params,
+                           joint_length(&surface->joints, &surface->mesh,
+                                        &surface->uv, panels),
+                           panels, totals, err);
+}
+
+int option_classify(const struct surface *surface,
+                    const struct option_params *params, double joints,
+                    struct panelization *panels,
+                    struct option_totals *totals, struct facet_error *err)
+{
+    memset(totals, 0, sizeof *totals);
+    int rc = classify_check_options(&params->classify, err);
+    if (rc != FACET_OK)
+        return rc;
     classify_panels(panels, &params->classify, totals);
-    return FACET_OK;
+    struct mould_options mould = {
+        params->mould_tol_given ? params->mould_tol
+                                : params->classify.threshold,
+        params->mould_mirror};
+    struct mould_families families;
+    rc = mould_families_build(&surface->mesh, &surface->uv, panels, &mould,
+                              &families, err);
+    if (rc == FACET_OK) {
+        for (size_t k = 0; k < panels->npanels; k++)
+            panels->panels[k].mould = families.family[k];
+        for (int t = 0; t < TYPE_COUNT; t++)
+            totals->moulds_of[t] = families.count[t];
+        totals->moulds = families.nfamilies;
+        totals->largest_family = families.largest;
+        totals->singleton_families = families.singletons;
+        totals->joint_length = joints;
+        classify_price_terms(&params->classify, totals);
+    }
+    mould_families_free(&families);
+    return rc;
 }

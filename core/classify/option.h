@@ -2,8 +2,9 @@
  * option.h: one design option, evaluated.
  *
  * A design option is a grid size and the classification settings; its
- * evaluation panelizes a prepared surface (surface_prepare) and classifies,
- * types and prices the panels. This is the one function that turns design
+ * evaluation panelizes a prepared surface (surface_prepare), classifies and
+ * types the panels, measures the joints (joint_length.h), finds the mould
+ * families of the curved panels (mould.h) and prices it all. This is the one function that turns design
  * variables into the numbers a designer compares, used alike by
  * `facet classify` and by the optimiser.
  */
@@ -18,11 +19,18 @@
 struct option_params {
     int nu, nv;                          /* grid */
     enum panel_curvature_mode mode;      /* how panels take curvature */
-    struct classify_options classify;    /* threshold, eps, prices, limit */
+    struct classify_options classify;    /* threshold, eps, prices, limit,
+                                            cost terms */
+    int mould_tol_given;                 /* 0: a mould family's tolerance is
+                                            the option's flatness threshold
+                                            (so a zeroed struct means it) */
+    double mould_tol;                    /* else this (m) */
+    int mould_mirror;                    /* mirror images share a mould */
 };
 
 /* The paper's defaults: classify_defaults, panels taking the extremes of
- * their samples, no grid (0 x 0: set it with option_params_at). */
+ * their samples, no grid (0 x 0: set it with option_params_at), mould
+ * tolerance the flatness threshold, no mirrors. */
 void option_params_defaults(struct option_params *params);
 
 /* base with the grid nu x nv and the flatness threshold threshold_mm, a
@@ -50,5 +58,17 @@ int option_evaluate_lattice(const struct surface *surface,
                             struct panelization *panels,
                             struct option_totals *totals,
                             struct facet_error *err);
+
+/* What option_evaluate does once the panels are built: classifies panels
+ * (built for params' grid over surface), finds their mould families
+ * (setting each panel's mould), and fills *totals, priced with joint_length
+ * (m), the joint length of the grid (joint_length.h), which does not
+ * depend on the threshold: a search evaluating several thresholds on one
+ * grid measures it once. Returns FACET_OK, FACET_EINPUT for a bad option
+ * value, FACET_EWORK when out of memory. */
+int option_classify(const struct surface *surface,
+                    const struct option_params *params, double joint_length,
+                    struct panelization *panels,
+                    struct option_totals *totals, struct facet_error *err);
 
 #endif

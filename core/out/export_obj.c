@@ -141,7 +141,8 @@ void export_obj_write(FILE *out, const char *mtl_name,
     fprintf(out, "# Facet panels: grid %dx%d, %zu panels (FP %zu, SP %zu, "
             "DP %zu); lengths in metres\n", panels->nu, panels->nv,
             panels->npanels, count[TYPE_FP], count[TYPE_SP], count[TYPE_DP]);
-    fputs("# o FP, SP, DP: the panels of each type; g panel_I_J: one panel\n"
+    fputs("# o FP, SP, DP: the panels of each type; g panel_I_J: one panel; "
+          "g mould_K: the SP or DP panels of mould family K\n"
           "# FP: a full cell is the planar quad of its corners on its "
           "best-fit plane, a trimmed one its outline there; SP, DP: the "
           "surface patch; vt: the surface's UV\n", out);
@@ -157,8 +158,12 @@ void export_obj_write(FILE *out, const char *mtl_name,
             const struct panel *panel = &panels->panels[n];
             if ((int)panel->type != type)
                 continue;
-            fprintf(out, "g panel_%d_%d\nusemtl %s\n", panel->i, panel->j,
-                    panel_type_name(panel->type));
+            /* A curved panel is in its mould's group too: selecting
+             * mould_K in CAD selects every panel cast in it. */
+            fprintf(out, "g panel_%d_%d", panel->i, panel->j);
+            if (panel->mould >= 0)
+                fprintf(out, " mould_%d", panel->mould);
+            fprintf(out, "\nusemtl %s\n", panel_type_name(panel->type));
             if (panel->type != TYPE_FP)
                 write_pieces(out, g, panel, n, 0, &next);
             else if (!panel->trimmed && panel->ncorners == 4)

@@ -3,7 +3,9 @@
  *
  * The panels of each type make one object, `o FP`, `o SP`, `o DP` (CAD
  * layers, Blender collections), and within it every panel is its own
- * group, `g panel_I_J`, with `usemtl FP`, `SP` or `DP`:
+ * group, `g panel_I_J`, with `usemtl FP`, `SP` or `DP`; an SP or DP panel
+ * is also in the group of its mould family, `g panel_I_J mould_K` (K as
+ * mould.h numbers them, 0-based), so that a mould's panels select together:
  *   - an FP panel is what is cut from flat stock, planar: a full cell is
  *     the quad of its four cell corners projected onto its best-fit plane;
  *     a trimmed cell is its outline projected onto that plane, without the

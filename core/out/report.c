@@ -27,6 +27,20 @@ static void json_totals(struct json_writer *w,
     json_key(w, "max_panel_area"); json_number(w, t->max_panel_area);
     json_key(w, "p_dist");         json_number(w, t->p_dist);
     json_key(w, "feasible");       json_bool(w, t->feasible);
+    json_key(w, "joint_length");   json_number(w, t->joint_length);
+    json_key(w, "moulds");         json_integer(w, (long long)t->moulds);
+    json_key(w, "sp_moulds");
+    json_integer(w, (long long)t->moulds_of[TYPE_SP]);
+    json_key(w, "dp_moulds");
+    json_integer(w, (long long)t->moulds_of[TYPE_DP]);
+    json_key(w, "largest_family");
+    json_integer(w, (long long)t->largest_family);
+    json_key(w, "single_moulds");
+    json_integer(w, (long long)t->singleton_families);
+    json_key(w, "area_cost");      json_number(w, t->area_cost);
+    json_key(w, "panel_cost");     json_number(w, t->panel_cost);
+    json_key(w, "joint_cost");     json_number(w, t->joint_cost);
+    json_key(w, "mould_cost");     json_number(w, t->mould_cost);
     json_key(w, "fp_over_threshold");
     json_integer(w, (long long)fp_over_threshold);
     json_key(w, "classes");
@@ -106,6 +120,11 @@ void report_json(FILE *out, const struct report_source *source,
         json_key(&w, "corner_planarity");
         json_number(&w, p->corner_planarity);
         json_key(&w, "cost");      json_number(&w, p->cost);
+        json_key(&w, "mould");
+        if (p->mould >= 0)
+            json_integer(&w, p->mould);
+        else
+            json_null(&w);
         json_end_object(&w);
     }
     json_end_array(&w);
@@ -134,7 +153,7 @@ void report_csv(FILE *out, const struct panelization *panels)
           "diameter_m,trimmed,corner_planarity_m,price_usd_m2,cost_usd", out);
     for (int c = 0; c < 4; c++)
         fprintf(out, ",c%d_x_m,c%d_y_m,c%d_z_m", c, c, c);
-    fputc('\n', out);
+    fputs(",mould_family\n", out);
     for (size_t n = 0; n < panels->npanels; n++) {
         const struct panel *p = &panels->panels[n];
         fprintf(out, "%zu,%d,%d,%s,%s", n + 1, p->i, p->j,
@@ -155,6 +174,9 @@ void report_csv(FILE *out, const struct panelization *panels)
         for (int c = 0; c < 4; c++)
             for (int d = 0; d < 3; d++)
                 csv_number(out, p->corner[c][d]);
+        fputc(',', out);
+        if (p->mould >= 0)
+            fprintf(out, "%d", p->mould);
         fputc('\n', out);
     }
 }
@@ -164,7 +186,9 @@ void report_totals_csv(FILE *out, const struct option_totals *t)
     fputs("panels,fp_count,sp_count,dp_count,area_m2,fp_area_m2,sp_area_m2,"
           "dp_area_m2,fp_cost_usd,sp_cost_usd,dp_cost_usd,cost_usd,"
           "planarity_m,max_deviation_m,max_panel_area_m2,p_dist_m4,"
-          "feasible\n", out);
+          "feasible,joint_length_m,moulds,sp_moulds,dp_moulds,"
+          "largest_family,single_moulds,area_cost_usd,panel_cost_usd,"
+          "joint_cost_usd,mould_cost_usd\n", out);
     fprintf(out, "%zu,%zu,%zu,%zu", t->panels, t->count[TYPE_FP],
             t->count[TYPE_SP], t->count[TYPE_DP]);
     csv_number(out, t->area);
@@ -177,5 +201,14 @@ void report_totals_csv(FILE *out, const struct option_totals *t)
     csv_number(out, t->max_deviation);
     csv_number(out, t->max_panel_area);
     csv_number(out, t->p_dist);
-    fprintf(out, ",%d\n", t->feasible != 0);
+    fprintf(out, ",%d", t->feasible != 0);
+    csv_number(out, t->joint_length);
+    fprintf(out, ",%zu,%zu,%zu,%zu,%zu", t->moulds, t->moulds_of[TYPE_SP],
+            t->moulds_of[TYPE_DP], t->largest_family,
+            t->singleton_families);
+    csv_number(out, t->area_cost);
+    csv_number(out, t->panel_cost);
+    csv_number(out, t->joint_cost);
+    csv_number(out, t->mould_cost);
+    fputc('\n', out);
 }

@@ -36,13 +36,15 @@ void report_json(FILE *out, const struct report_source *source,
  * K (1/m^2), H, eps (1/m), p_dist_m4, diameter_m, trimmed (0/1),
  * corner_planarity_m, price_usd_m2, cost_usd, and the four cell corners
  * on the surface c0_x_m ... c3_z_m (empty where off it, as
- * corner_planarity_m is unless all four are on it). One unit per column,
+ * corner_planarity_m is unless all four are on it), mould_family (the
+ * panel's mould, mould.h; empty for an FP panel, which needs none). One unit per column,
  * named in its header; every number reads back exactly. */
 void report_csv(FILE *out, const struct panelization *panels);
 
 /* Writes the option's totals as a CSV of its own (a header row and one
  * row: panels, counts, areas and costs per type, cost, planarity, largest
- * deviation, largest panel, P_dist, feasible), the numbers `facet show`
+ * deviation, largest panel, P_dist, feasible, then the joint length, the
+ * mould families and the cost term by term), the numbers `facet show`
  * prints, so that a schedule holds panels only. */
 void report_totals_csv(FILE *out, const struct option_totals *totals);
 

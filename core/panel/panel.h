@@ -86,6 +86,9 @@ struct panel {
     enum panel_type type;
     double price;             /* USD/m^2 of its type */
     double cost;              /* area x price (USD) */
+    /* Set by option_evaluate (option.h): */
+    int mould;                /* its mould family (mould.h), 0-based, or
+                                 -1 for none (FP) */
 };
 
 struct panelization {

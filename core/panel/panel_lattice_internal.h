@@ -16,6 +16,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "core/base/sorted.h"
 #include "core/panel/panel_lattice.h"
 #include "core/panel/panel_internal.h"
 
@@ -76,14 +77,7 @@ struct panel_lattice {
 static inline size_t line_rank(const double *line, size_t n, double x,
                                int *on)
 {
-    size_t lo = 0, hi = n;
-    while (lo < hi) {
-        size_t mid = lo + (hi - lo) / 2;
-        if (line[mid] < x)
-            lo = mid + 1;
-        else
-            hi = mid;
-    }
+    size_t lo = sorted_lower_bound(line, n, x);
     *on = lo < n && line[lo] == x;
     return lo;
 }

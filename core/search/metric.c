@@ -9,7 +9,7 @@
 static const char *const names[METRIC_COUNT] = {
     "cost", "planarity", "dp_area", "fp_area", "sp_area", "panels",
     "fp_count", "sp_count", "dp_count", "max_deviation", "max_panel_area",
-    "p_dist",
+    "p_dist", "moulds", "sp_moulds", "dp_moulds", "joint_length",
 };
 
 const char *metric_name(enum metric metric)
@@ -32,6 +32,10 @@ double metric_value(const struct option_totals *t, enum metric metric)
     case METRIC_MAX_DEVIATION:  return t->max_deviation;
     case METRIC_MAX_PANEL_AREA: return t->max_panel_area;
     case METRIC_P_DIST:         return t->p_dist;
+    case METRIC_MOULDS:         return (double)t->moulds;
+    case METRIC_SP_MOULDS:      return (double)t->moulds_of[TYPE_SP];
+    case METRIC_DP_MOULDS:      return (double)t->moulds_of[TYPE_DP];
+    case METRIC_JOINT_LENGTH:   return t->joint_length;
     default:                    return 0;
     }
 }

@@ -25,6 +25,10 @@ enum metric {
     METRIC_MAX_DEVIATION,   /* m */
     METRIC_MAX_PANEL_AREA,  /* m^2 */
     METRIC_P_DIST,          /* m^4 */
+    METRIC_MOULDS,          /* SP and DP mould families */
+    METRIC_SP_MOULDS,
+    METRIC_DP_MOULDS,
+    METRIC_JOINT_LENGTH,    /* m */
     METRIC_COUNT
 };
 

@@ -227,11 +227,12 @@ static void evaluation_thread(void *argument)
                                                   &panels, &plan->totals[k],
                                                   &job->err);
             } else {
-                job->rc = classify_check_options(&params.classify,
-                                                 &job->err);
-                if (job->rc == FACET_OK)
-                    classify_panels(&panels, &params.classify,
-                                    &plan->totals[k]);
+                /* Same grid, same joints: measured with its first point. */
+                double joints =
+                    plan->totals[plan->order[plan->group[g]]].joint_length;
+                job->rc = option_classify(plan->surface, &params, joints,
+                                          &panels, &plan->totals[k],
+                                          &job->err);
             }
             if (job->rc != FACET_OK)
                 break;

@@ -159,6 +159,10 @@ int surface_prepare(struct surface *surface, int flip_normals,
                           &surface->panels, err);
     if (rc != FACET_OK)
         return rc;
+    rc = joint_prep_build(&surface->mesh, &surface->uv, &surface->joints,
+                          err);
+    if (rc != FACET_OK)
+        return rc;
     surface->prepared = 1;
     return FACET_OK;
 }
@@ -166,6 +170,7 @@ int surface_prepare(struct surface *surface, int flip_normals,
 void surface_close(struct surface *surface)
 {
     panel_prep_free(&surface->panels);
+    joint_prep_free(&surface->joints);
     uv_index_free(&surface->uv);
     param_free(&surface->param);
     curvature_free(&surface->curvature);

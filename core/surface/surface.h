@@ -10,6 +10,7 @@
 #ifndef FACET_SURFACE_H
 #define FACET_SURFACE_H
 
+#include "core/joint/joint_length.h"
 #include "core/surface/curvature.h"
 #include "core/surface/mesh.h"
 #include "core/obj/obj.h"
@@ -35,6 +36,8 @@ struct surface {
     struct uv_index uv;             /* lookup over param.uv */
     struct curvature curvature;     /* vertex curvature */
     struct panel_prep panels;       /* per-triangle sums every grid adds */
+    struct joint_prep joints;       /* the outline and the triangles in
+                                       order, for every grid's joints */
 };
 
 /* Loads path with options into *out. Returns FACET_OK, or the loader's or

@@ -126,7 +126,8 @@ def check_csv(path, db, run, number):
     want = ["id", "i", "j", "class", "type", "area_m2", "deviation_m", "k1",
             "k2", "K", "H", "eps", "p_dist_m4", "diameter_m", "trimmed",
             "corner_planarity_m", "price_usd_m2", "cost_usd"] + [
-            "c%d_%s_m" % (c, x) for c in range(4) for x in "xyz"]
+            "c%d_%s_m" % (c, x) for c in range(4) for x in "xyz"] + [
+            "mould_family"]
     header = list(rows[0].keys()) if rows else []
     if header != want:
         fail("csv header %s, want %s" % (header, want))
@@ -143,12 +144,21 @@ def check_csv(path, db, run, number):
                      ("fp_area_m2", "fp_area"), ("dp_cost_usd", "dp_cost"),
                      ("planarity_m", "planarity"),
                      ("max_deviation_m", "max_deviation"),
-                     ("panels", "panels"), ("feasible", "feasible")):
+                     ("panels", "panels"), ("feasible", "feasible"),
+                     ("joint_length_m", "joint_length"), ("moulds", "moulds"),
+                     ("area_cost_usd", "area_cost"),
+                     ("mould_cost_usd", "mould_cost")):
         if float(t[key]) != o[col]:
             fail("totals %s %s, options row %r" % (key, t[key], o[col]))
+    # A panel's cost is its area's; the panel, joint and mould terms are
+    # the option's.
     s = sum(float(r["cost_usd"]) for r in rows)
-    if not close(s, float(t["cost_usd"]), 1e-9):
-        fail("panel costs add to %.12g, totals %s" % (s, t["cost_usd"]))
+    if not close(s, float(t["area_cost_usd"]), 1e-9):
+        fail("panel costs add to %.12g, totals %s" % (s, t["area_cost_usd"]))
+    families = {r["mould_family"] for r in rows if r["mould_family"] != ""}
+    if len(families) != o["moulds"]:
+        fail("%d mould families in the schedule, options row %r"
+             % (len(families), o["moulds"]))
     stored = {(i, j): d for i, j, d in connect_db(db).execute(
         "SELECT i, j, deviation FROM panels WHERE run = ? AND option = ?",
         (int(run), int(number)))}

@@ -37,7 +37,9 @@ COLUMNS = ["number", "generation", "nu", "nv", "threshold_mm", "panels",
                "convex_feature_curve", "saddle", "concave_feature_curve",
                "ruled_convex", "flat", "ruled_concave", "convex_round",
                "concave_round") for s in ("_count", "_area")] + [
-           "rank", "crowding", "knee"]
+           "rank", "crowding", "knee", "joint_length", "moulds", "sp_moulds",
+           "dp_moulds", "largest_family", "single_moulds", "area_cost",
+           "panel_cost", "joint_cost", "mould_cost"]
 
 
 def connect(path):

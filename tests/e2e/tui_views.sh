@@ -66,6 +66,33 @@ keys z
 check "8: a zoom that cannot go further says so" 'zoom: 2 chars a panel is the closest'
 keys Z Z Z
 check "8: nor can the fit view zoom out" 'zoom: the whole grid shows already \(fit\)'
+# --- issue 15: the map by mould family, the cursor naming its family ---
+keys c c
+check "15: c twice colours the map by mould family" '\| by mould family'
+spm=$(q "select sp_moulds from options where run = 1 and number = $knee")
+check "15: the legend counts the SP families ($spm, sqlite3)" "^.* SP +$spm +[0-9]+ *$"
+# along the top row, past the flat panels at the roof's edge, to a curved one
+for step in $(seq 1 20); do
+    screen | grep -qE 'mould family [0-9]+ \(' && break
+    before=$(screen | grep -oE 'Panel \([0-9]+, [0-9]+\)')
+    keys l
+    i=0
+    while [ "$(screen | grep -oE 'Panel \([0-9]+, [0-9]+\)')" = "$before" ] && [ $i -lt 40 ]; do
+        sleep 0.05
+        i=$((i + 1))
+    done
+done
+fam=$(screen | sed -n 's/.*mould family \([0-9]*\) (\([0-9]*\) panels).*/\1 \2/p' | head -1)
+if [ -n "$fam" ]; then
+    set -- $fam
+    same "15: the cursor's family and its size ($1: $2 panels, sqlite3)" "$2" \
+        "$(q "select count(*) from panels where run = 1 and option = $knee and mould_family = $1")"
+else
+    echo "not ok - 15: the cursor names a mould family within 20 panels"
+    screen | sed "s/^/  screen: /"
+fi
+keys c
+check "15: c again: back to colour by type" '\| by type'
 keys q
 
 # --- 7. compare: one scale, verdicts, flags, no meaningless difference ---

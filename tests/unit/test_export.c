@@ -423,9 +423,14 @@ static void check_obj_roundtrip(const struct fixture *f, const char *dir,
         for (size_t n = 0; n < f->panels.npanels; n++) {
             if ((int)f->panels.panels[n].type != t)
                 continue;
+            /* An SP or DP panel is in its mould's group too. */
             char group[64];
-            snprintf(group, sizeof group, "panel_%d_%d",
-                     f->panels.panels[n].i, f->panels.panels[n].j);
+            int mould = f->panels.panels[n].mould;
+            int len = snprintf(group, sizeof group, "panel_%d_%d",
+                               f->panels.panels[n].i, f->panels.panels[n].j);
+            if (mould >= 0)
+                snprintf(group + len, sizeof group - (size_t)len,
+                         " mould_%d", mould);
             assert_string_equal(obj.groups[g++].text, group);
         }
     size_t types = 0;

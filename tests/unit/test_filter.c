@@ -131,7 +131,9 @@ static void test_columns_table(void **state)
         "ruled_convex_area", "flat_count", "flat_area", "ruled_concave_count",
         "ruled_concave_area", "convex_round_count", "convex_round_area",
         "concave_round_count", "concave_round_area",
-        "rank", "crowding", "knee", "run",
+        "rank", "crowding", "knee", "joint_length", "moulds", "sp_moulds",
+        "dp_moulds", "largest_family", "single_moulds", "area_cost",
+        "panel_cost", "joint_cost", "mould_cost", "run",
     };
     for (int k = 0; k < NCOLUMNS; k++)
         assert_string_equal(store_option_columns[k].name, expected[k]);
@@ -515,10 +517,13 @@ static void test_error_positions(void **state)
     /* With nothing near, the message lists the names instead. */
     expect_error("x < 5", "column 1: unknown column 'x' (columns: "
                            "number, generation, nu, nv, threshold_mm, panels, "
-                           "fp_count, sp_count, dp_count, fp_area, sp_area, "
-                           "dp_area, area, fp_cost, sp_cost, dp_cost, cost, "
+                           "{fp,sp,dp}_count, {fp,sp,dp}_area, area, "
+                           "{fp,sp,dp}_cost, cost, "
                            "planarity, max_deviation, max_panel_area, p_dist, "
-                           "feasible, rank, crowding, knee, run, u, v, "
+                           "feasible, rank, crowding, knee, joint_length, "
+                           "moulds, {sp,dp}_moulds, largest_family, "
+                           "single_moulds, area_cost, panel_cost, joint_cost, "
+                           "mould_cost, run, u, v, "
                            "threshold, pareto, and CLASS_count, CLASS_area "
                            "for each class, e.g. saddle_area)");
 }

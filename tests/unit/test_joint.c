@@ -31,7 +31,9 @@
 
 #include "core/classify/classify.h"
 #include "core/fit/sp_fit.h"
+#include "core/classify/option.h"
 #include "core/joint/joint.h"
+#include "core/joint/joint_length.h"
 #include "core/surface/example.h"
 #include "core/surface/surface.h"
 
@@ -48,6 +50,20 @@ struct motion {
 
 static const struct motion identity = {{1, 0, 0, 0, 1, 0, 0, 0, 1},
                                        {0, 0, 0}};
+
+/* Opens and prepares the OBJ written at path (UV from its vt), then
+ * removes the file. */
+static void open_written(const char *path, struct surface *out)
+{
+    struct facet_error err;
+    struct mesh_options options = {UNITS_M, NULL, NULL};
+    int rc = surface_open(path, &options, out, &err);
+    if (rc == FACET_OK)
+        rc = surface_prepare(out, 0, PARAM_VT, &err);
+    unlink(path);
+    if (rc != FACET_OK)
+        fail_msg("%s", err.message);
+}
 
 /* Writes S on ns x nt quads (two triangles each, wound along S_s x S_t),
  * moved by motion, to a temporary OBJ and opens and prepares it. keep
@@ -86,14 +102,7 @@ static void open_surface(surface_fn f, int ns, int nt,
                 fprintf(obj, "f %d/%d %d/%d %d/%d\n", a, a, c, c, d, d);
         }
     fclose(obj);
-    struct facet_error err;
-    struct mesh_options options = {UNITS_M, NULL, NULL};
-    int rc = surface_open(path, &options, out, &err);
-    if (rc == FACET_OK)
-        rc = surface_prepare(out, 0, PARAM_VT, &err);
-    unlink(path);
-    if (rc != FACET_OK)
-        fail_msg("%s", err.message);
+    open_written(path, out);
 }
 
 /* One option of s, nu x nv, threshold t, built and measured. */
@@ -555,6 +564,219 @@ static void test_symmetry(void **state)
     }
 }
 
+/* ---- Joint length (joint_length.h) -------------------------------------- */
+
+/* The joint length of s at nu x nv. */
+static double joints_of(const struct surface *s, int nu, int nv)
+{
+    struct option o;
+    panelize(s, nu, nv, 0.003, &o);
+    double length = joint_length(&s->joints, &s->mesh, &s->uv, &o.panels);
+    panelization_free(&o.panels);
+    return length;
+}
+
+/* The tilted plane is the parallelogram of sides W = |(20, 0, 6)| along u
+ * and H = |(0, 15, -3)| along v: (nu - 1) H + (nv - 1) W + 2 (W + H). At
+ * 4 x 3 the grid lines run along mesh edges (40 x 30 quads), at 7 x 5
+ * through the triangles. */
+static void test_joint_length_plane(void **state)
+{
+    (void)state;
+    struct surface s;
+    open_surface(tilted_plane, 40, 30, &identity, NULL, &s);
+    double w = sqrt(20.0 * 20 + 6 * 6), h = sqrt(15.0 * 15 + 3 * 3);
+    static const int grid[][2] = {{4, 3}, {7, 5}, {1, 1}, {13, 2}};
+    for (size_t g = 0; g < sizeof grid / sizeof grid[0]; g++) {
+        int nu = grid[g][0], nv = grid[g][1];
+        double expect = (nu - 1) * h + (nv - 1) * w + 2 * (w + h);
+        assert_float_equal(joints_of(&s, nu, nv), expect, 1e-9 * expect);
+    }
+    assert_float_equal(s.joints.outline, 2 * (w + h), 1e-9);
+    surface_close(&s);
+}
+
+/* The cylinder (R 6 m, 90 degrees, 4 m): lines of constant angle are
+ * straight, L each; lines of constant height are arcs R theta, which the
+ * mesh follows as CYL_NS chords. */
+static void test_joint_length_cylinder(void **state)
+{
+    (void)state;
+    struct surface s;
+    open_surface(cylinder, CYL_NS, CYL_NT, &identity, NULL, &s);
+    double arc = CYL_R * CYL_THETA;
+    double chords = CYL_NS * 2 * CYL_R * sin(CYL_THETA / CYL_NS / 2);
+    int nu = 5, nv = 3;
+    double on_mesh = (nu - 1) * CYL_LENGTH + (nv - 1) * chords +
+                     2 * (CYL_LENGTH + chords);
+    double smooth = (nu - 1) * CYL_LENGTH + (nv - 1) * arc +
+                    2 * (CYL_LENGTH + arc);
+    double length = joints_of(&s, nu, nv);
+    assert_float_equal(length, on_mesh, 1e-9 * on_mesh);
+    /* Short of the smooth arcs by the chords' shortfall, no more. */
+    assert_true(length < smooth);
+    assert_true(smooth - length <= (nv + 1) * (arc - chords) * (1 + 1e-6));
+    surface_close(&s);
+}
+
+/* A disc of radius DISC_R, rings of DISC_M vertices, UV its plan. */
+#define DISC_R 5.0
+#define DISC_RINGS 6
+#define DISC_M 96
+
+static void open_disc(struct surface *out)
+{
+    char path[] = "/tmp/facet_test_disc_XXXXXX";
+    int fd = mkstemp(path);
+    assert_true(fd >= 0);
+    FILE *obj = fdopen(fd, "w");
+    assert_non_null(obj);
+    fprintf(obj, "v 0 0 0\nvt 0.5 0.5\n");
+    for (int r = 1; r <= DISC_RINGS; r++)
+        for (int k = 0; k < DISC_M; k++) {
+            double a = 2 * PI * k / DISC_M, rho = DISC_R * r / DISC_RINGS;
+            double x = rho * cos(a), y = rho * sin(a);
+            fprintf(obj, "v %.17g %.17g 0\nvt %.17g %.17g\n", x, y,
+                    0.5 + x / (2 * DISC_R), 0.5 + y / (2 * DISC_R));
+        }
+    for (int k = 0; k < DISC_M; k++) {
+        int a = 2 + k, b = 2 + (k + 1) % DISC_M;
+        fprintf(obj, "f 1/1 %d/%d %d/%d\n", a, a, b, b);
+    }
+    for (int r = 1; r < DISC_RINGS; r++)
+        for (int k = 0; k < DISC_M; k++) {
+            int a = 2 + (r - 1) * DISC_M + k;
+            int b = 2 + (r - 1) * DISC_M + (k + 1) % DISC_M;
+            int c = b + DISC_M, d = a + DISC_M;
+            fprintf(obj, "f %d/%d %d/%d %d/%d\nf %d/%d %d/%d %d/%d\n", a, a,
+                    d, d, c, c, a, a, c, c, b, b);
+        }
+    fclose(obj);
+    open_written(path, out);
+}
+
+/* The disc's outline is 2 pi r within the polygon's chord error; at 2 x 2
+ * the two grid lines are diameters through boundary vertices, 2 r each. */
+static void test_joint_length_disc(void **state)
+{
+    (void)state;
+    struct surface s;
+    open_disc(&s);
+    double polygon = DISC_M * 2 * DISC_R * sin(PI / DISC_M);
+    double circle = 2 * PI * DISC_R;
+    assert_float_equal(joints_of(&s, 1, 1), polygon, 1e-9 * circle);
+    assert_true(circle - polygon < circle * PI * PI / (6.0 * DISC_M * DISC_M));
+    assert_float_equal(joints_of(&s, 2, 2), polygon + 4 * DISC_R,
+                       1e-9 * circle);
+    surface_close(&s);
+}
+
+/* ---- The cost terms (classify_price_terms through option_evaluate) ------ */
+
+/* On the plane every panel is FP (no mould): the cost is the area at the
+ * FP price, plus panels x panel cost, plus the joint length x joint cost,
+ * all known in closed form. */
+static void test_cost_terms_plane(void **state)
+{
+    (void)state;
+    struct surface s;
+    open_surface(tilted_plane, 40, 30, &identity, NULL, &s);
+    struct option_params base;
+    option_params_defaults(&base);
+    base.classify.panel_cost = 250;
+    base.classify.joint_cost = 40;
+    base.classify.mould_cost[TYPE_SP] = 3000;
+    base.classify.mould_cost[TYPE_DP] = 20000;
+    struct option_params params = option_params_at(&base, 7, 5, 3);
+    struct panelization panels;
+    struct option_totals totals;
+    struct facet_error err;
+    if (option_evaluate(&s, &params, &panels, &totals, &err) != FACET_OK)
+        fail_msg("%s", err.message);
+    double w = sqrt(20.0 * 20 + 6 * 6), h = sqrt(15.0 * 15 + 3 * 3);
+    double area = w * h * sqrt(1 - pow(-18 / (w * h), 2));
+    double joints = 6 * h + 4 * w + 2 * (w + h);
+    assert_int_equal(totals.panels, 35);
+    assert_int_equal(totals.count[TYPE_FP], 35);
+    assert_int_equal(totals.moulds, 0);
+    assert_float_equal(totals.joint_length, joints, 1e-9 * joints);
+    assert_true(totals.panel_cost == 35 * 250.0);
+    assert_true(totals.joint_cost == totals.joint_length * 40);
+    assert_true(totals.mould_cost == 0);
+    double expect = area * 701 + 35 * 250.0 + joints * 40;
+    assert_float_equal(totals.cost, expect, 1e-9 * expect);
+    assert_true(totals.cost == totals.area_cost + totals.panel_cost +
+                               totals.joint_cost);
+    for (size_t n = 0; n < panels.npanels; n++)
+        assert_int_equal(panels.panels[n].mould, -1);
+    panelization_free(&panels);
+    /* The terms at 0 are the paper's model: area alone, to the bit. */
+    params = option_params_at(&base, 7, 5, 3);
+    memset(params.classify.mould_cost, 0, sizeof params.classify.mould_cost);
+    params.classify.panel_cost = params.classify.joint_cost = 0;
+    if (option_evaluate(&s, &params, &panels, &totals, &err) != FACET_OK)
+        fail_msg("%s", err.message);
+    assert_true(totals.cost == totals.area_of[TYPE_FP] * 701);
+    panelization_free(&panels);
+    surface_close(&s);
+}
+
+/* Every panel of the cylinder at 5 x 3 is the same single-curved panel:
+ * one mould for all 15, priced once. */
+static void test_cost_terms_cylinder_moulds(void **state)
+{
+    (void)state;
+    struct surface s;
+    open_surface(cylinder, CYL_NS, CYL_NT, &identity, NULL, &s);
+    struct option_params base;
+    option_params_defaults(&base);
+    base.classify.mould_cost[TYPE_SP] = 3000;
+    base.classify.mould_cost[TYPE_DP] = 20000;
+    struct option_params params = option_params_at(&base, 5, 3, 1);
+    struct panelization panels;
+    struct option_totals totals;
+    struct facet_error err;
+    if (option_evaluate(&s, &params, &panels, &totals, &err) != FACET_OK)
+        fail_msg("%s", err.message);
+    assert_int_equal(totals.count[TYPE_SP], 15);
+    assert_int_equal(totals.moulds_of[TYPE_SP], 1);
+    assert_int_equal(totals.moulds_of[TYPE_DP], 0);
+    assert_int_equal(totals.largest_family, 15);
+    assert_int_equal(totals.singleton_families, 0);
+    assert_true(totals.mould_cost == 3000);
+    assert_true(totals.cost == totals.area_cost + 3000);
+    for (size_t n = 0; n < panels.npanels; n++)
+        assert_int_equal(panels.panels[n].mould, 0);
+    panelization_free(&panels);
+    /* A negative cost is refused, naming the term. */
+    params.classify.joint_cost = -1;
+    assert_int_equal(option_evaluate(&s, &params, &panels, &totals, &err),
+                     FACET_EINPUT);
+    assert_non_null(strstr(err.message, "joint cost"));
+    panelization_free(&panels);
+    surface_close(&s);
+}
+
+/* "SP,DP" mould costs: two amounts, FP set to 0; anything else refused
+ * naming the caller's field. */
+static void test_mould_costs_parse(void **state)
+{
+    (void)state;
+    double cost[TYPE_COUNT] = {9, 9, 9};
+    struct facet_error err;
+    assert_int_equal(classify_mould_costs_parse("2000,15000", "moulds", cost,
+                                                &err), FACET_OK);
+    assert_true(cost[TYPE_FP] == 0 && cost[TYPE_SP] == 2000 &&
+                cost[TYPE_DP] == 15000);
+    static const char *const bad[] = {"2000", "1,2,3", "-1,5", "a,b", "1,",
+                                      "nan,1", "1,2e10"};
+    for (size_t k = 0; k < sizeof bad / sizeof bad[0]; k++) {
+        assert_int_equal(classify_mould_costs_parse(bad[k], "moulds", cost,
+                                                    &err), FACET_EINPUT);
+        assert_non_null(strstr(err.message, "moulds"));
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -565,6 +787,12 @@ int main(void)
         cmocka_unit_test(test_cone_sp_fit),
         cmocka_unit_test(test_sphere_fits_no_cylinder),
         cmocka_unit_test(test_symmetry),
+        cmocka_unit_test(test_joint_length_plane),
+        cmocka_unit_test(test_joint_length_cylinder),
+        cmocka_unit_test(test_joint_length_disc),
+        cmocka_unit_test(test_cost_terms_plane),
+        cmocka_unit_test(test_cost_terms_cylinder_moulds),
+        cmocka_unit_test(test_mould_costs_parse),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

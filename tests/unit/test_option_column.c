@@ -74,6 +74,16 @@ static struct option_row option_k(int k)
         t->class_count[c] = (size_t)(200 + 10 * c + k);
         t->class_area[c] = 300.5 + 10 * c + k;
     }
+    t->joint_length = 900.125 + k;
+    t->moulds_of[TYPE_SP] = (size_t)(7 + k);
+    t->moulds_of[TYPE_DP] = (size_t)(11 + k);
+    t->moulds = t->moulds_of[TYPE_SP] + t->moulds_of[TYPE_DP];
+    t->largest_family = (size_t)(5 + k);
+    t->singleton_families = (size_t)(3 + k);
+    t->area_cost = 1400.5 + k;
+    t->panel_cost = 4000.5 + k;
+    t->joint_cost = 9001.25 + k;
+    t->mould_cost = 60000.75 + k;
     return o;
 }
 
@@ -100,6 +110,13 @@ static double by_hand(const struct option_row *o, const char *name)
         {"max_panel_area", t->max_panel_area}, {"p_dist", t->p_dist},
         {"feasible", t->feasible},
         {"rank", o->rank}, {"crowding", o->crowding}, {"knee", o->knee},
+        {"joint_length", t->joint_length}, {"moulds", (double)t->moulds},
+        {"sp_moulds", (double)t->moulds_of[TYPE_SP]},
+        {"dp_moulds", (double)t->moulds_of[TYPE_DP]},
+        {"largest_family", (double)t->largest_family},
+        {"single_moulds", (double)t->singleton_families},
+        {"area_cost", t->area_cost}, {"panel_cost", t->panel_cost}, {"joint_cost", t->joint_cost},
+        {"mould_cost", t->mould_cost},
     };
     for (size_t k = 0; k < sizeof fields / sizeof fields[0]; k++)
         if (strcmp(fields[k].name, name) == 0)

@@ -602,26 +602,61 @@ static void test_refuses_other_files(void **state)
     assert_null(strchr(err.message, '\n'));
 }
 
-/* A file of schema version 1 (no views, no indexes, no runs.uv) is
- * brought up to the current version (4) when opened, and keeps its runs. */
-static void test_migrates_older_schema(void **state)
+/* A store file named name holding one finished run (*run, made from
+ * *request), then taken back by the SQL statements (to an older schema):
+ * its path. */
+static const char *older_file(const char *name, const char *statements,
+                              int64_t *run, struct study_request *request)
 {
-    (void)state;
-    const char *path = fresh_db("migrate");
+    const char *path = fresh_db(name);
     struct facet_error err;
     struct store *store;
     assert_int_equal(store_open(path, &store, &err), FACET_OK);
-    struct study_request request;
-    int64_t run = finished_run(store, &request);
+    *run = finished_run(store, request);
     store_close(store);
-    sql(path, "DROP VIEW pareto; DROP VIEW run_summary;"
+    sql(path, statements);
+    return path;
+}
+
+/* SQL that takes a current file back to schema version 4: the columns and
+ * indexes version 5 added, dropped. */
+#define UNDO_V5 \
+    "DROP INDEX options_by_moulds; DROP INDEX options_by_joint_length;" \
+    "ALTER TABLE runs DROP COLUMN price_panel;" \
+    "ALTER TABLE runs DROP COLUMN price_joint;" \
+    "ALTER TABLE runs DROP COLUMN price_sp_mould;" \
+    "ALTER TABLE runs DROP COLUMN price_dp_mould;" \
+    "ALTER TABLE runs DROP COLUMN mould_tol_mm;" \
+    "ALTER TABLE runs DROP COLUMN mould_mirror;" \
+    "ALTER TABLE options DROP COLUMN joint_length;" \
+    "ALTER TABLE options DROP COLUMN moulds;" \
+    "ALTER TABLE options DROP COLUMN sp_moulds;" \
+    "ALTER TABLE options DROP COLUMN dp_moulds;" \
+    "ALTER TABLE options DROP COLUMN largest_family;" \
+    "ALTER TABLE options DROP COLUMN single_moulds;" \
+    "ALTER TABLE options DROP COLUMN area_cost;" \
+    "ALTER TABLE options DROP COLUMN panel_cost;" \
+    "ALTER TABLE options DROP COLUMN joint_cost;" \
+    "ALTER TABLE options DROP COLUMN mould_cost;" \
+    "ALTER TABLE panels DROP COLUMN mould_family;"
+
+/* A file of schema version 1 (no views, no indexes, no runs.uv) is
+ * brought up to the current version (5) when opened, and keeps its runs. */
+static void test_migrates_older_schema(void **state)
+{
+    (void)state;
+    struct study_request request;
+    int64_t run;
+    const char *path = older_file("migrate", UNDO_V5 "DROP VIEW pareto; DROP VIEW run_summary;"
               "DROP INDEX options_by_rank; DROP INDEX options_by_cost;"
               "DROP INDEX options_by_planarity; DROP INDEX options_by_dp_area;"
               "DROP INDEX options_by_fp_area; DROP INDEX options_by_sp_area;"
               "DROP INDEX options_by_nu; DROP INDEX options_by_nv;"
               "DROP INDEX options_by_threshold;"
               "ALTER TABLE runs DROP COLUMN uv; ALTER TABLE runs DROP COLUMN warnings; ALTER TABLE runs DROP COLUMN store_panels;"
-              "PRAGMA user_version = 1;");
+              "PRAGMA user_version = 1;", &run, &request);
+    struct facet_error err;
+    struct store *store;
     assert_int_equal(store_open(path, &store, &err), FACET_OK);
     struct run_info info;
     assert_int_equal(store_run_get(store, run, &info, &err), FACET_OK);
@@ -636,9 +671,9 @@ static void test_migrates_older_schema(void **state)
                      " type = 'index' AND name LIKE 'options_by_%')",
                      -1, &s, NULL), SQLITE_OK);
     assert_int_equal(sqlite3_step(s), SQLITE_ROW);
-    assert_int_equal(sqlite3_column_int(s, 0), 4);
+    assert_int_equal(sqlite3_column_int(s, 0), 5);
     assert_int_equal(sqlite3_column_int(s, 1), info.pareto_options);
-    assert_int_equal(sqlite3_column_int(s, 2), 9);
+    assert_int_equal(sqlite3_column_int(s, 2), 11);
     sqlite3_finalize(s);
     sqlite3_close(db);
 }
@@ -649,15 +684,12 @@ static void test_migrates_older_schema(void **state)
 static void test_migrates_v3(void **state)
 {
     (void)state;
-    const char *path = fresh_db("migrate3");
+    struct study_request request;
+    int64_t old;
+    const char *path = older_file("migrate3", UNDO_V5 "ALTER TABLE runs DROP COLUMN uv; ALTER TABLE runs DROP COLUMN warnings; ALTER TABLE runs DROP COLUMN store_panels;"
+              " PRAGMA user_version = 3;", &old, &request);
     struct facet_error err;
     struct store *store;
-    assert_int_equal(store_open(path, &store, &err), FACET_OK);
-    struct study_request request;
-    int64_t old = finished_run(store, &request);
-    store_close(store);
-    sql(path, "ALTER TABLE runs DROP COLUMN uv; ALTER TABLE runs DROP COLUMN warnings; ALTER TABLE runs DROP COLUMN store_panels;"
-              " PRAGMA user_version = 3;");
     assert_int_equal(store_open(path, &store, &err), FACET_OK);
     struct run_info info;
     assert_int_equal(store_run_get(store, old, &info, &err), FACET_OK);
@@ -683,7 +715,7 @@ static void test_migrates_v3(void **state)
     sqlite3_bind_int64(s, 1, old);
     sqlite3_bind_int64(s, 2, run);
     assert_int_equal(sqlite3_step(s), SQLITE_ROW);
-    assert_int_equal(sqlite3_column_int(s, 0), 4);
+    assert_int_equal(sqlite3_column_int(s, 0), 5);
     assert_int_equal(sqlite3_column_int(s, 1), 1);
     assert_int_equal(sqlite3_column_int(s, 2), 1);
     assert_string_equal((const char *)sqlite3_column_text(s, 3), "plane");
@@ -839,6 +871,88 @@ static void test_run_setting_unknown(void **state)
     }
 }
 
+/* A file of version 4 (the Facet before the cost model: the same tables
+ * without version 5's columns) is migrated: its old run reads as the
+ * paper's model (prices 0, tolerance the threshold), its old options'
+ * new columns are NULL (never computed: joint length reads as NaN, not
+ * 0), and a new run in it stores its cost terms, its options' moulds and
+ * joints, and its panels' mould families. */
+static void test_migrates_v4(void **state)
+{
+    (void)state;
+    struct study_request request;
+    int64_t old;
+    const char *path = older_file("migrate4", UNDO_V5 " PRAGMA user_version = 4;",
+                                  &old, &request);
+    struct facet_error err;
+    struct store *store;
+    assert_int_equal(store_open(path, &store, &err), FACET_OK);
+    struct run_info info;
+    assert_int_equal(store_run_get(store, old, &info, &err), FACET_OK);
+    assert_true(info.panel_cost == 0 && info.joint_cost == 0 &&
+                info.mould_cost[TYPE_SP] == 0 &&
+                info.mould_cost[TYPE_DP] == 0);
+    assert_true(isnan(info.mould_tol_mm));
+    assert_int_equal(info.mould_mirror, 0);
+    struct option_row *rows;
+    size_t n;
+    assert_int_equal(store_options_get(store, old, &rows, &n, &err),
+                     FACET_OK);
+    assert_int_equal(n, 48);
+    assert_true(isnan(rows[0].totals.joint_length));
+    assert_true(isnan(rows[0].totals.mould_cost));
+    free(rows);
+    request_for(&request, METHOD_EXHAUSTIVE);
+    request.settings.base.classify.panel_cost = 100;
+    request.settings.base.classify.joint_cost = 10;
+    request.settings.base.classify.mould_cost[TYPE_SP] = 1000;
+    request.settings.base.classify.mould_cost[TYPE_DP] = 5000;
+    request.settings.base.mould_tol_given = 1;
+    request.settings.base.mould_tol = 0.004;
+    int64_t run;
+    enum optimize_outcome outcome;
+    assert_int_equal(study_start(store, &request, NULL, &run, &outcome, &err),
+                     FACET_OK);
+    assert_int_equal(store_run_get(store, run, &info, &err), FACET_OK);
+    assert_true(info.panel_cost == 100 && info.joint_cost == 10 &&
+                info.mould_cost[TYPE_SP] == 1000 &&
+                info.mould_cost[TYPE_DP] == 5000);
+    assert_float_equal(info.mould_tol_mm, 4, 1e-12);
+    store_close(store);
+    /* SQLite itself: the sum of the terms is the cost of every new option,
+     * the old ones are NULL, and the new run's panels carry families. */
+    sqlite3 *db;
+    assert_int_equal(sqlite3_open(path, &db), SQLITE_OK);
+    sqlite3_stmt *s;
+    assert_int_equal(sqlite3_prepare_v2(db, "SELECT (SELECT user_version"
+                     " FROM pragma_user_version),"
+                     " (SELECT count(*) FROM options WHERE run = ?1 AND"
+                     "  moulds IS NULL AND joint_length IS NULL),"
+                     " (SELECT count(*) FROM options WHERE run = ?2 AND"
+                     "  abs(fp_cost + sp_cost + dp_cost + panel_cost +"
+                     "  joint_cost + mould_cost - cost) <= 1e-9 * cost AND"
+                     "  panel_cost = 100 * panels AND"
+                     "  abs(joint_cost - 10 * joint_length) <= 1e-9 * joint_cost"
+                     "  AND mould_cost = 1000 * sp_moulds + 5000 * dp_moulds"
+                     "  AND moulds = sp_moulds + dp_moulds AND joint_length > 0),"
+                     " (SELECT count(*) FROM options WHERE run = ?2),"
+                     " (SELECT count(*) FROM panels WHERE run = ?2 AND"
+                     "  (type = 'FP') = (mould_family IS NULL))," 
+                     " (SELECT count(*) FROM panels WHERE run = ?2)",
+                     -1, &s, NULL), SQLITE_OK);
+    sqlite3_bind_int64(s, 1, old);
+    sqlite3_bind_int64(s, 2, run);
+    assert_int_equal(sqlite3_step(s), SQLITE_ROW);
+    assert_int_equal(sqlite3_column_int(s, 0), 5);
+    assert_int_equal(sqlite3_column_int(s, 1), 48);
+    assert_int_equal(sqlite3_column_int(s, 2), sqlite3_column_int(s, 3));
+    assert_true(sqlite3_column_int(s, 3) > 0);
+    assert_int_equal(sqlite3_column_int(s, 4), sqlite3_column_int(s, 5));
+    assert_true(sqlite3_column_int(s, 5) > 0);
+    sqlite3_finalize(s);
+    sqlite3_close(db);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -854,12 +968,14 @@ int main(void)
         cmocka_unit_test(test_panels_exist_error),
         cmocka_unit_test(test_migrates_older_schema),
         cmocka_unit_test(test_migrates_v3),
+        cmocka_unit_test(test_migrates_v4),
         cmocka_unit_test(test_resume_forced_uv),
     };
     int failed = cmocka_run_group_tests(tests, setup, teardown);
     const char *names[] = {"roundtrip", "queries", "resume", "orphan",
                            "text", "foreign", "newer", "corrupt",
-                           "migrate", "migrate3"};
+                           "migrate", "migrate3", "migrate4",
+                           "settings_by_name", "setting_unknown"};
     for (size_t k = 0; k < sizeof names / sizeof *names; k++) {
         fresh_db(names[k]);
         unlink(db_path);

@@ -170,12 +170,73 @@ static void test_cell_value(void **state)
     assert_true(checked > 10000);
 }
 
+/* By mould: each SP or DP panel in one of 12 families drawn from the seed,
+ * FP panels in none. The same brute force, over the families (FP one
+ * value, MAP_NO_MOULD); and a family's size is its panels, counted here. */
+static void test_cell_value_by_mould(void **state)
+{
+    (void)state;
+    enum { S = 120, FAMILIES = 12 };
+    int checked = 0;
+    for (unsigned seed = 1; seed <= 4; seed++) {
+        struct panelization p;
+        int nu = 18 + (int)seed * 5, nv = 12 + (int)seed * 3;
+        grid(&p, nu, nv, 30, 20, seed, seed % 2);
+        size_t size[FAMILIES] = {0};
+        for (size_t k = 0; k < p.npanels; k++) {
+            p.panels[k].mould = p.panels[k].type == TYPE_FP
+                                    ? -1 : rand() % FAMILIES;
+            if (p.panels[k].mould >= 0)
+                size[p.panels[k].mould]++;
+        }
+        for (int f = 0; f < FAMILIES; f++)
+            assert_int_equal(map_family_size(&p, f), size[f]);
+        assert_int_equal(map_family_size(&p, -1), 0);
+        int sizes[][2] = {{nu, nv}, {nu / 2, nv / 3}, {7, 5}};
+        for (size_t z = 0; z < sizeof sizes / sizeof sizes[0]; z++) {
+            int cols = sizes[z][0], rows = sizes[z][1];
+            for (int r = 0; r < rows; r++)
+                for (int c = 0; c < cols; c++) {
+                    /* count[0] empty, [1] FP, [2 + f] family f */
+                    double count[2 + FAMILIES] = {0};
+                    for (int a = 0; a < S; a++)
+                        for (int b = 0; b < S; b++) {
+                            double u = (c + (a + 0.5) / S) / cols * nu;
+                            double v = (rows - 1 - r + (b + 0.5) / S) /
+                                       rows * nv;
+                            int k = p.cell_panel[(int)floor(v) * nu +
+                                                 (int)floor(u)];
+                            count[k < 0 ? 0 : p.panels[k].mould + 2]++;
+                        }
+                    int best = -1;
+                    double second = count[0];
+                    for (int k = 1; k < 2 + FAMILIES; k++)
+                        if (best < 0 || count[k] > count[best])
+                            best = k;
+                    for (int k = 1; k < 2 + FAMILIES; k++)
+                        if (k != best && count[k] > second)
+                            second = count[k];
+                    if (fabs(count[best] - second) / (S * S) < 0.02)
+                        continue;  /* too close for the sampling */
+                    int want = count[best] < count[0] ? -1
+                               : best == 1 ? MAP_NO_MOULD : best - 2;
+                    assert_int_equal(map_cell_value(&p, cols, rows, c, r,
+                                                    MAP_BY_MOULD), want);
+                    checked++;
+                }
+        }
+        grid_free(&p);
+    }
+    assert_true(checked > 500);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_surface_size),
         cmocka_unit_test(test_fit_box),
         cmocka_unit_test(test_cell_value),
+        cmocka_unit_test(test_cell_value_by_mould),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -1,0 +1,71 @@
+/*
+ * joint_length.h: the total length of the joints of a panelization.
+ *
+ * What a contractor prices per metre (gaskets, sealant) is every line
+ * where a panel edge lies, each counted once:
+ *
+ *   joint length = sum over the interior grid lines (u = umin + i du,
+ *                  i = 1..nu-1, and v = vmin + j dv, j = 1..nv-1) of the
+ *                  length on the surface of the part the surface reaches
+ *                + the length of the surface's outline.
+ *
+ * So an interior side shared by two panels counts once, at its length on
+ * the surface; a trimmed panel's side counts at its real (cut) length;
+ * and a panel side on the outline counts once, as outline. "On the
+ * surface" is on the mesh: a grid line is followed through every triangle
+ * it crosses, by the triangle's affine map from UV to 3D (the map panels
+ * are built with), so a curved line is measured as the polyline of its
+ * crossings, short of the smooth curve by the mesh's chord error.
+ *
+ * The outline is every mesh edge on a boundary, plus every edge along a
+ * UV seam (where the two triangles beside it give its ends different UV,
+ * so panels meet there too), each once. A grid line that runs exactly
+ * along an outline edge counts only as outline. An edge shared by more
+ * than two triangles (non-manifold) counts once for each.
+ *
+ * For a plane rectangle W x H with its UV along its sides, nu x nv:
+ *   (nu - 1) H + (nv - 1) W + 2 (W + H).
+ */
+#ifndef FACET_JOINT_LENGTH_H
+#define FACET_JOINT_LENGTH_H
+
+#include <stdint.h>
+
+#include "core/base/error.h"
+#include "core/panel/panel.h"
+#include "core/surface/mesh.h"
+#include "core/surface/uv_index.h"
+
+/* What does not depend on the grid, computed once per surface: the
+ * outline, and the triangles in order along each UV axis, so that a grid
+ * line visits only the triangles it may cross. */
+struct joint_prep {
+    double outline;        /* the outline's length (m) */
+    size_t ntriangles;
+    uint32_t *order[2];    /* #T: triangles by their least u (v) */
+    double *least[2];      /* #T: that least coordinate, in that order */
+    double reach[2];       /* the largest extent of a triangle along u (v),
+                              widened by rounding */
+};
+
+/* Fills *out (caller-owned, released with joint_prep_free, also after a
+ * failure) for mesh with UV lookup index. Returns FACET_OK or FACET_EWORK
+ * when out of memory. */
+int joint_prep_build(const struct mesh *mesh, const struct uv_index *index,
+                     struct joint_prep *out, struct facet_error *err);
+
+void joint_prep_free(struct joint_prep *prep);
+
+/* The joint length (m) of the grid of panels (its nu, nv and UV box),
+ * built over mesh and index (for a prepared surface s: &s->mesh, &s->uv,
+ * &s->joints). Takes O(log #T) per grid line plus the triangles the lines
+ * cross, and no memory. */
+double joint_length(const struct joint_prep *prep, const struct mesh *mesh,
+                    const struct uv_index *index,
+                    const struct panelization *panels);
+
+/* The outline part alone (m): boundary and UV-seam edges, each once. */
+double joint_outline_length(const struct mesh *mesh,
+                            const struct uv_index *index);
+
+#endif
