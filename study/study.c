@@ -25,7 +25,42 @@ struct study_state {
     const struct study_hooks *hooks;
     struct option_row *rows;     /* conversion buffer for a batch */
     size_t capacity;
+    double free_before;          /* bytes free on the database's disk
+                                    before the last batch; < 0: unknown */
+    double batch_bytes;          /* what the last batch took of it */
 };
+
+/* What a run keeps free on its database's disk beyond its next batch, so
+ * that a run stopped by a full disk can still write its status (a few
+ * pages of the WAL): SQLite cannot roll a committed WAL back to make room,
+ * so a disk filled by the options themselves would leave the run marked
+ * running. */
+#define STUDY_DISK_RESERVE (64.0 * 1024)
+
+static double disk_free_bytes(const char *db_path);
+static void format_bytes(double bytes, char *out, size_t size);
+
+/* Refuses the next batch when the disk cannot take it and the reserve: a
+ * batch takes about what the last one took (the WAL copies every page a
+ * commit touches, so it is far more than the options' own bytes). */
+static int check_batch_room(struct study_state *state,
+                            struct facet_error *err)
+{
+    double free_now = disk_free_bytes(store_path(state->store));
+    if (free_now < 0)
+        return FACET_OK;
+    if (state->free_before >= free_now)
+        state->batch_bytes = state->free_before - free_now;
+    state->free_before = free_now;
+    if (free_now >= 2 * state->batch_bytes + STUDY_DISK_RESERVE)
+        return FACET_OK;
+    char have[32];
+    format_bytes(free_now, have, sizeof have);
+    return facet_error_set(err, FACET_EWORK,
+        "%s: database or disk is full (%s free, kept to record the run's "
+        "end): the options stored so far are kept; make room and resume "
+        "the run", store_path(state->store), have);
+}
 
 /* Monotonic seconds, for the run's elapsed time. */
 static double clock_seconds(void)
@@ -78,6 +113,9 @@ static int store_batch(void *context, const struct evaluated_option *options,
     }
     for (size_t k = 0; k < n; k++)
         option_row_of(&options[k], &state->rows[k]);
+    int rc = check_batch_room(state, err);
+    if (rc != FACET_OK)
+        return rc;
     return store_options_put(state->store, state->run, state->rows, n, err);
 }
 
@@ -614,7 +652,7 @@ static int study_go(struct store *store, struct run_info *run,
                     const struct study_hooks *hooks, double started,
                     enum optimize_outcome *outcome, struct facet_error *err)
 {
-    struct study_state state = {store, run->id, hooks, NULL, 0};
+    struct study_state state = {store, run->id, hooks, NULL, 0, -1, 0};
     struct optimize_hooks optimize_hooks = {&state, store_batch,
                                             report_progress, stop_requested};
     struct option_row *rows = NULL;

@@ -411,7 +411,8 @@ static void test_every_column_filters_and_sorts(void **state)
 
 
 /* The unit a column is stored in, by the README's rule (lengths m, areas
- * m^2, money USD, the threshold mm) read off its name: the test's own
+ * m^2, money USD, the threshold mm; a name ending in length is a length)
+ * read off its name: the test's own
  * reading, not the registry's. */
 static const char *stored_unit_by_name(const char *name)
 {
@@ -422,6 +423,8 @@ static const char *stored_unit_by_name(const char *name)
         return "USD";
     if (n >= 4 && strcmp(name + n - 4, "area") == 0)
         return "m^2";
+    if (n >= 6 && strcmp(name + n - 6, "length") == 0)
+        return "m";
     if (strcmp(name, "planarity") == 0 || strcmp(name, "max_deviation") == 0)
         return "m";
     if (strcmp(name, "p_dist") == 0)
