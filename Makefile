@@ -104,9 +104,9 @@ $(BUILD)/tools/%: tests/tools/%.c $(BUILD)/libfacet.a
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS) $(LDFLAGS) -o $@ $< $(BUILD)/libfacet.a $(LDLIBS)
 
-$(BUILD)/bench/%: tests/bench/%.c $(BUILD)/libfacet.a
+$(BUILD)/bench/%: tests/bench/%.c $(SUPPORT_OBJ) $(BUILD)/libfacet.a
 	@mkdir -p $(dir $@)
-	$(CC) $(CFLAGS) $(LDFLAGS) -o $@ $< $(BUILD)/libfacet.a $(LDLIBS)
+	$(CC) $(CFLAGS) $(LDFLAGS) -o $@ $< $(SUPPORT_OBJ) $(BUILD)/libfacet.a $(LDLIBS)
 
 # Build and run every test of one variant.
 test: $(BUILD)/facet $(UNIT_BIN) $(TOOL_BIN) $(REPLAY_BIN)

@@ -21,18 +21,9 @@
 #include <string.h>
 
 #include "bench_common.h"
+#include "tests/support/store_fixture.h"
 #include "core/base/parallel.h"
 #include "study/study.h"
-
-static void fresh(const char *path)
-{
-    char side[300];
-    unlink(path);
-    snprintf(side, sizeof side, "%s-wal", path);
-    unlink(side);
-    snprintf(side, sizeof side, "%s-shm", path);
-    unlink(side);
-}
 
 static void die(const struct facet_error *err)
 {
@@ -71,7 +62,7 @@ int main(int argc, char **argv)
 
     /* The whole run, as facet optimize does it (its surface preparation
      * timed apart: it is done once per surface, whatever the space). */
-    fresh(db);
+    store_fixture_remove(db);
     struct store *store;
     if (store_open(db, &store, &err) != FACET_OK)
         die(&err);
@@ -169,7 +160,7 @@ int main(int argc, char **argv)
 
     /* Storage alone: the same rows into a fresh file, one batch per 16
      * options as the run commits them. */
-    fresh(db);
+    store_fixture_remove(db);
     if (store_open(db, &store, &err) != FACET_OK ||
         store_run_create(store, &info, &err) != FACET_OK)
         die(&err);
@@ -193,7 +184,7 @@ int main(int argc, char **argv)
     }
     double bulk_time = bench_now() - start;
     store_close(store);
-    fresh(db);
+    store_fixture_remove(db);
     unlink(obj);
 
     printf("surface: roof, %zu triangles; space u 20:40 x v 35:50 at 3 mm "

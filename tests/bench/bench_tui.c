@@ -29,6 +29,7 @@
 #include <unistd.h>
 
 #include "bench_common.h"
+#include "tests/support/store_fixture.h"
 #include "store/filter.h"
 #include "store/store.h"
 #include "tui/table_model.h"
@@ -41,16 +42,6 @@ static void die(const char *what, const struct facet_error *err)
 {
     fprintf(stderr, "bench_tui: %s: %s\n", what, err->message);
     exit(1);
-}
-
-static void fresh(const char *path)
-{
-    char side[1100];
-    unlink(path);
-    snprintf(side, sizeof side, "%s-wal", path);
-    unlink(side);
-    snprintf(side, sizeof side, "%s-shm", path);
-    unlink(side);
 }
 
 /* A well-mixed 64-bit hash of k (splitmix64's finaliser). */
@@ -416,7 +407,7 @@ int main(int argc, char **argv)
              (int)getpid());
     const char *path = keep ? keep : temporary;
     if (keep == NULL)
-        fresh(path);
+        store_fixture_remove(path);
     struct store *store;
     struct facet_error err;
     if (store_open(path, &store, &err) != FACET_OK)
@@ -467,6 +458,6 @@ int main(int argc, char **argv)
     table_model_close(&m);
     store_close(store);
     if (keep == NULL)
-        fresh(path);
+        store_fixture_remove(path);
     return 0;
 }
