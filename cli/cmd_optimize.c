@@ -79,7 +79,7 @@ static void show_warning(void *context, const char *text)
 /* The search flags as given (pointing into argv), NULL when absent. */
 struct search_flags {
     const char *u, *v, *threshold, *method, *evals, *pop, *gens, *seed;
-    const char *objectives, *jobs;
+    const char *objectives, *jobs, *shard;
 };
 
 /* The flags' names in the messages of the design space's checks. */
@@ -141,6 +141,9 @@ static int parse_search(const struct search_flags *f,
             return rc;
         s->jobs = (int)number;
     }
+    if (f->shard &&
+        (rc = shard_parse(f->shard, "--shard", &s->shard, err)))
+        return rc;
     return FACET_OK;
 }
 
@@ -165,6 +168,7 @@ static int optimize_main(int argc, char **argv, struct facet_error *err)
         {"seed", 0, ARG_STRING, &search.seed, NULL},
         {"objectives", 0, ARG_STRING, &search.objectives, NULL},
         {"jobs", 'j', ARG_STRING, &search.jobs, NULL},
+        {"shard", 0, ARG_STRING, &search.shard, NULL},
         {"resume", 0, ARG_STRING, &resume, NULL},
         {"name", 0, ARG_STRING, &name, NULL},
         {"table", 0, ARG_STRING, &table, NULL},
@@ -289,6 +293,9 @@ static void optimize_options_print(FILE *out)
         "  --objectives LIST   metrics to minimise, max:NAME to maximise\n"
         "                      (default %s)\n"
         "  --jobs N, -j N      threads (default: every core)\n"
+        "  --shard I/N         evaluate shard I of N only (exhaustive, random:\n"
+        "                      every Nth grid or point; nsga2: an island with\n"
+        "                      its own seed); join them with facet merge\n"
         "  --resume RUN        go on with an interrupted run\n"
         "  --surface FILE      with --resume: the run's surface has moved;\n"
         "                      record its new place (same SHA-256)\n"
