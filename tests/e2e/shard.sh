@@ -1,0 +1,184 @@
+#!/usr/bin/env bash
+# End-to-end: facet optimize --shard I/N and facet merge, without a
+# scheduler. The truth is the unsharded run, compared by SQLite itself
+# (EXCEPT both ways over every column of options but the run id): the
+# merge of an exhaustive or random run's shards is that run, option for
+# option and rank for rank; the shards partition its points; merging again
+# changes nothing; a missing shard is named and the run marked incomplete;
+# shards of different runs and bad files are refused in one line, with the
+# output left as it was.
+. "$(dirname "$0")/lib.sh"
+
+"$FACET" example roof --res 40 -o "$WORK/roof.obj" || exit 1
+ROOF=$WORK/roof.obj
+# 6 x 6 grids x 4 thresholds = 144 options.
+SPACE=(--u 10:15 --v 12:17 --threshold 1:4:1)
+
+# cols DB: the columns of options but run, comma-separated.
+cols() {
+    sqlite3 -batch "$1" "SELECT group_concat(name, ',') FROM
+        (SELECT name FROM pragma_table_info('options') WHERE name <> 'run'
+         ORDER BY cid)"
+}
+
+# same_options NAME A B: the options of A's and B's only runs are equal in
+# every column but the run id (SQLite compares the values exactly), and
+# so are the runs' front, hypervolume, knee and best cost.
+same_options() {
+    local c diff runs
+    c=$(cols "$2")
+    diff=$(sqlite3 -batch "$2" "ATTACH '$3' AS b;
+        SELECT ((SELECT count(*) FROM (SELECT $c FROM main.options
+                                       EXCEPT SELECT $c FROM b.options))
+              + (SELECT count(*) FROM (SELECT $c FROM b.options
+                                       EXCEPT SELECT $c FROM main.options)))
+             || ' ' || (SELECT count(*) FROM main.options)
+             || ' ' || (SELECT count(*) FROM b.options)")
+    runs=$(sqlite3 -batch "$2" "ATTACH '$3' AS b;
+        SELECT count(*) FROM (SELECT pareto_options, hypervolume, knee,
+                                     best_cost, options FROM main.runs
+                              EXCEPT SELECT pareto_options, hypervolume,
+                                     knee, best_cost, options FROM b.runs)")
+    local n
+    n=$(sqlite3 -batch "$2" "SELECT count(*) FROM options")
+    same "$1" "$diff runs:$runs" "0 $n $n runs:0"
+}
+
+# shards DB... : runs facet optimize --shard I/N of SPACE into each DB.
+make_shards() {
+    local n=$1 prefix=$2
+    shift 2
+    local i
+    for i in $(seq 1 "$n"); do
+        "$FACET" optimize "$ROOF" --db "$prefix$i.db" "$@" --shard "$i/$n" \
+            --table 1 >/dev/null 2>"$WORK/shard.err" ||
+            { echo "not ok - shard $i/$n ran"; cat "$WORK/shard.err"; }
+    done
+}
+
+# --- exhaustive: 3 shards (dealt by grid) merge into the unsharded run
+expect "unsharded exhaustive run" 0 "$FACET" optimize "$ROOF" --db "$WORK/whole.db" "${SPACE[@]}" --table 1
+make_shards 3 "$WORK/ex" "${SPACE[@]}" --jobs 1
+# A partition: every number once, 1..144, none in two shards.
+got=$(sqlite3 -batch "$WORK/ex1.db" "ATTACH '$WORK/ex2.db' AS b;
+    ATTACH '$WORK/ex3.db' AS c;
+    SELECT count(*), count(DISTINCT number), min(number), max(number) FROM
+    (SELECT number FROM main.options UNION ALL SELECT number FROM b.options
+     UNION ALL SELECT number FROM c.options)")
+same "exhaustive shards partition the points" "$got" "144|144|1|144"
+same "each shard holds a third of the grids" \
+    "$(for i in 1 2 3; do sqlite3 -batch "$WORK/ex$i.db" 'SELECT count(*) FROM options'; done | tr '\n' ' ')" \
+    "48 48 48 "
+same "a shard records I/N with its run" \
+    "$(sqlite3 -batch "$WORK/ex2.db" 'SELECT shard_index || "/" || shard_count FROM runs')" "2/3"
+expect "runs shows a shard" 0 "$FACET" runs "$WORK/ex2.db"
+stdout_has "runs names the shard" "done 2/3"
+
+expect "merge of 3 shards" 0 "$FACET" merge "$WORK/merged.db" "$WORK/ex1.db" "$WORK/ex3.db" "$WORK/ex2.db"
+stdout_has "merge says what it made" "run 1 merged from 3 of 3 shards: 144 options"
+same_options "merged exhaustive run = unsharded, option for option and rank for rank" "$WORK/whole.db" "$WORK/merged.db"
+same "the merged front's panels are stored as a run's are" \
+    "$(sqlite3 -batch "$WORK/merged.db" 'SELECT count(*) FROM panel_sets')" \
+    "$(sqlite3 -batch "$WORK/whole.db" 'SELECT count(*) FROM panel_sets')"
+
+# Merging twice changes nothing: the same run, the same rows.
+dump() { sqlite3 -batch "$1" "SELECT $(cols "$1") FROM options ORDER BY number" | md5sum; }
+before=$(dump "$WORK/merged.db")
+expect "merging again" 0 "$FACET" merge "$WORK/merged.db" "$WORK/ex1.db" "$WORK/ex2.db" "$WORK/ex3.db"
+same "merging again changes nothing" \
+    "$(dump "$WORK/merged.db") $(sqlite3 -batch "$WORK/merged.db" 'SELECT count(*) FROM runs')" "$before 1"
+same "no temporary file is left" "$(ls "$WORK" | grep -c merge-)" "0"
+
+# --- 4 shards of 4 threshold steps on 2 grids: fewer grids than shards,
+# dealt point by point
+SMALL=(--u 10 --v 12:13 --threshold 1:4:1)
+expect "unsharded small run" 0 "$FACET" optimize "$ROOF" --db "$WORK/small.db" "${SMALL[@]}" --table 1
+make_shards 4 "$WORK/sm" "${SMALL[@]}"
+expect "merge of 4 shards of 2 grids" 0 "$FACET" merge "$WORK/small-merged.db" "$WORK"/sm{1,2,3,4}.db
+same_options "fewer grids than shards: merged = unsharded" "$WORK/small.db" "$WORK/small-merged.db"
+
+# --- random: the unsharded run's draws dealt out
+RANDOM_SPACE=(--u 10:30 --v 12:30 --threshold 1:6 --method random --evals 90 --seed 5)
+expect "unsharded random run" 0 "$FACET" optimize "$ROOF" --db "$WORK/rand.db" "${RANDOM_SPACE[@]}" --table 1
+make_shards 4 "$WORK/rs" "${RANDOM_SPACE[@]}"
+expect "merge of 4 random shards" 0 "$FACET" merge "$WORK/rand-merged.db" "$WORK"/rs{1,2,3,4}.db
+same_options "merged random run = unsharded" "$WORK/rand.db" "$WORK/rand-merged.db"
+
+# --- NSGA-II: islands; island 1 keeps the run's seed, island 2 has its own
+NSGA=(--u 10:20 --v 12:24 --threshold 1:20 --method nsga2 --pop 12 --gens 4 --seed 3)
+expect "unsharded nsga2 run" 0 "$FACET" optimize "$ROOF" --db "$WORK/nsga.db" "${NSGA[@]}" --table 1
+make_shards 2 "$WORK/ns" "${NSGA[@]}"
+same_options "island 1 is the run with the run's seed" "$WORK/nsga.db" "$WORK/ns1.db"
+same "island 2 searches other points (its own seed)" \
+    "$(sqlite3 -batch "$WORK/ns1.db" "ATTACH '$WORK/ns2.db' AS b; SELECT count(*) = (SELECT count(*) FROM options) FROM (SELECT nu, nv, threshold_mm FROM main.options INTERSECT SELECT nu, nv, threshold_mm FROM b.options)")" "0"
+expect "merge of 2 islands" 0 "$FACET" merge "$WORK/nsga-merged.db" "$WORK/ns1.db" "$WORK/ns2.db"
+same "the merged islands hold each point of either once" \
+    "$(sqlite3 -batch "$WORK/nsga-merged.db" 'SELECT count(*) FROM options')" \
+    "$(sqlite3 -batch "$WORK/ns1.db" "ATTACH '$WORK/ns2.db' AS b; SELECT count(*) FROM (SELECT nu, nv, threshold_mm FROM main.options UNION SELECT nu, nv, threshold_mm FROM b.options)")"
+same "the merged islands are ranked as one run" \
+    "$(sqlite3 -batch "$WORK/nsga-merged.db" 'SELECT count(*) > 0, count(*) = (SELECT pareto_options FROM runs) FROM options WHERE rank = 1')" "1|1"
+
+# --- a missing shard: named, the run marked incomplete, completed later
+run "$FACET" merge "$WORK/part.db" "$WORK/ex1.db" "$WORK/ex3.db"
+if [ "$STATUS" -eq 0 ] && grep -q "shard 2 of 3 missing" "$ERR"; then
+    pass "a missing shard is named"
+else
+    fail "a missing shard is named"
+fi
+expect "runs of an incomplete merge" 0 "$FACET" runs "$WORK/part.db"
+stdout_has "runs marks it incomplete" "incomplete"
+expect "runs --json of an incomplete merge" 0 "$FACET" runs "$WORK/part.db" --json
+json_check "runs --json says incomplete" 'j[0]["incomplete"] is True and j[0]["shards"] == 3'
+expect "merging the missing shard in" 0 "$FACET" merge "$WORK/part.db" "$WORK/ex2.db" "$WORK/ex1.db" "$WORK/ex3.db"
+same_options "completed later, the run is the unsharded one" "$WORK/whole.db" "$WORK/part.db"
+expect "runs --json of the completed merge" 0 "$FACET" runs "$WORK/part.db" --json
+json_check "no longer incomplete" 'len(j) == 1 and j[0]["incomplete"] is False'
+
+# --- refusals: one line, status 2, the output as it was
+out_sum=$(sha256sum "$WORK/merged.db" | cut -d' ' -f1)
+"$FACET" optimize "$ROOF" --db "$WORK/other.db" --u 10:15 --v 12:17 --threshold 1:5:1 --shard 2/3 --table 1 >/dev/null 2>&1
+expect_error "shards of other settings are refused, naming the setting" \
+    "other\.db \(shard 2/3\) differs from .*ex1\.db in its threshold" \
+    "$FACET" merge "$WORK/merged.db" "$WORK/ex1.db" "$WORK/other.db"
+"$FACET" example roof --res 30 -o "$WORK/roof2.obj" >/dev/null
+"$FACET" optimize "$WORK/roof2.obj" --db "$WORK/surf.db" "${SPACE[@]}" --shard 2/3 --table 1 >/dev/null 2>&1
+expect_error "shards of another surface are refused" "made from another surface" \
+    "$FACET" merge "$WORK/merged.db" "$WORK/ex1.db" "$WORK/surf.db"
+expect_error "a shard given twice is refused" "both shard 1/3" \
+    "$FACET" merge "$WORK/merged.db" "$WORK/ex1.db" "$WORK/ex1.db"
+expect_error "an unsharded run is not a shard" "holds no shard" \
+    "$FACET" merge "$WORK/merged.db" "$WORK/whole.db"
+in_sum=$(sha256sum "$WORK/ex1.db" | cut -d' ' -f1)
+expect_error "the output being a shard is refused" "is one of the shards" \
+    "$FACET" merge "$WORK/ex1.db" "$WORK/ex1.db" "$WORK/ex2.db"
+same "that shard is untouched" "$(sha256sum "$WORK/ex1.db" | cut -d' ' -f1)" "$in_sum"
+head -c 4096 /dev/urandom >"$WORK/noise.db"
+expect_error "a file that is no database is refused" "noise\.db" \
+    "$FACET" merge "$WORK/merged.db" "$WORK/ex1.db" "$WORK/noise.db"
+sqlite3 -batch "$WORK/foreign.db" "CREATE TABLE t(x); INSERT INTO t VALUES (1);"
+expect_error "another application's database is refused" "another application" \
+    "$FACET" merge "$WORK/merged.db" "$WORK/ex1.db" "$WORK/foreign.db"
+expect_error "an output of another application is refused" "another application" \
+    "$FACET" merge "$WORK/foreign.db" "$WORK/ex1.db" "$WORK/ex2.db" "$WORK/ex3.db"
+same "the output is as it was after every refusal" \
+    "$(sha256sum "$WORK/merged.db" | cut -d' ' -f1)" "$out_sum"
+same "no temporary file is left after the refusals" "$(ls "$WORK" | grep -c merge-)" "0"
+expect_error "--shard out of range" "shard: '4/3' is not I/N" \
+    "$FACET" optimize "$ROOF" --db "$WORK/bad.db" --shard 4/3
+expect_error "--shard not I/N" "shard: 'two' is not I/N" \
+    "$FACET" optimize "$ROOF" --db "$WORK/bad.db" --shard two
+expect_error "merge without shards" "name the output and the shards" "$FACET" merge "$WORK/x.db"
+
+# A read-only folder: refused in one line, nothing written there.
+if [ "$(id -u)" -eq 0 ] && command -v setpriv >/dev/null; then
+    as_user() { setpriv --reuid=nobody --regid=nogroup --clear-groups "$@"; }
+    mkdir "$WORK/ro"
+    cp "$WORK"/ex{1,2,3}.db "$WORK/ro/"
+    chmod 755 "$WORK"; chmod 644 "$WORK"/ro/*.db; chmod 555 "$WORK/ro"
+    expect_error "a read-only folder is refused in one line" "cannot write beside it" \
+        as_user "$FACET" merge "$WORK/ro/out.db" "$WORK/ro/ex1.db" "$WORK/ro/ex2.db" "$WORK/ro/ex3.db"
+    same "nothing was written in it" "$(ls "$WORK/ro" | grep -vc '^ex[123]\.db')" "0"
+    chmod 755 "$WORK/ro"; chmod 700 "$WORK"
+else
+    skip "read-only folder check" "it needs root and setpriv to act as another user"
+fi
