@@ -8,41 +8,12 @@
 # shards of different runs and bad files are refused in one line, with the
 # output left as it was.
 . "$(dirname "$0")/lib.sh"
+. "$(dirname "$0")/shard_lib.sh"
 
 "$FACET" example roof --res 40 -o "$WORK/roof.obj" || exit 1
 ROOF=$WORK/roof.obj
 # 6 x 6 grids x 4 thresholds = 144 options.
 SPACE=(--u 10:15 --v 12:17 --threshold 1:4:1)
-
-# cols DB: the columns of options but run, comma-separated.
-cols() {
-    sqlite3 -batch "$1" "SELECT group_concat(name, ',') FROM
-        (SELECT name FROM pragma_table_info('options') WHERE name <> 'run'
-         ORDER BY cid)"
-}
-
-# same_options NAME A B: the options of A's and B's only runs are equal in
-# every column but the run id (SQLite compares the values exactly), and
-# so are the runs' front, hypervolume, knee and best cost.
-same_options() {
-    local c diff runs
-    c=$(cols "$2")
-    diff=$(sqlite3 -batch "$2" "ATTACH '$3' AS b;
-        SELECT ((SELECT count(*) FROM (SELECT $c FROM main.options
-                                       EXCEPT SELECT $c FROM b.options))
-              + (SELECT count(*) FROM (SELECT $c FROM b.options
-                                       EXCEPT SELECT $c FROM main.options)))
-             || ' ' || (SELECT count(*) FROM main.options)
-             || ' ' || (SELECT count(*) FROM b.options)")
-    runs=$(sqlite3 -batch "$2" "ATTACH '$3' AS b;
-        SELECT count(*) FROM (SELECT pareto_options, hypervolume, knee,
-                                     best_cost, options FROM main.runs
-                              EXCEPT SELECT pareto_options, hypervolume,
-                                     knee, best_cost, options FROM b.runs)")
-    local n
-    n=$(sqlite3 -batch "$2" "SELECT count(*) FROM options")
-    same "$1" "$diff runs:$runs" "0 $n $n runs:0"
-}
 
 # shards DB... : runs facet optimize --shard I/N of SPACE into each DB.
 make_shards() {
