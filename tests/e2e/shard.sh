@@ -105,6 +105,74 @@ same_options "completed later, the run is the unsharded one" "$WORK/whole.db" "$
 expect "runs --json of the completed merge" 0 "$FACET" runs "$WORK/part.db" --json
 json_check "no longer incomplete" 'len(j) == 1 and j[0]["incomplete"] is False'
 
+# --- a shard stopped halfway: refused by the merge until resumed; resumed,
+# it evaluates the rest of its share and the merge is the unsharded run
+BIG=(--u 10:15 --v 12:17 --threshold 1:20:0.25)
+expect "unsharded run of 2772 options" 0 "$FACET" optimize "$ROOF" --db "$WORK/big.db" "${BIG[@]}" --table 1
+"$FACET" optimize "$ROOF" --db "$WORK/bs2.db" "${BIG[@]}" --shard 2/2 --table 1 >/dev/null 2>&1
+"$FACET" optimize "$ROOF" --db "$WORK/bs1.db" "${BIG[@]}" --shard 1/2 --jobs 1 --table 1 >/dev/null 2>&1 &
+pid=$!
+for _ in $(seq 1 2000); do
+    n=$(sqlite3 -batch "$WORK/bs1.db" 'SELECT count(*) FROM options' 2>/dev/null)
+    [ "${n:-0}" -ge 1 ] && break
+    kill -0 "$pid" 2>/dev/null || break
+    sleep 0.01
+done
+kill -INT "$pid" 2>/dev/null
+wait "$pid"
+stored=$(sqlite3 -batch "$WORK/bs1.db" 'SELECT count(*) FROM options')
+if [ "$stored" -lt 1386 ]; then
+    expect_error "a shard that is not done is refused" "shard 1/2 \(run 1\) is interrupted, not done" \
+        "$FACET" merge "$WORK/big-merged.db" "$WORK/bs1.db" "$WORK/bs2.db"
+else
+    skip "a shard that is not done is refused" "the shard finished before it could be stopped"
+fi
+expect "the stopped shard resumes" 0 "$FACET" optimize --db "$WORK/bs1.db" --resume 1 --table 1
+same "the resumed shard holds its share" \
+    "$(sqlite3 -batch "$WORK/bs1.db" 'SELECT count(*), shard_index || "/" || shard_count FROM options, runs')" "1386|1/2"
+expect "merge of a resumed shard" 0 "$FACET" merge "$WORK/big-merged.db" "$WORK/bs1.db" "$WORK/bs2.db"
+same_options "merged with a resumed shard = unsharded" "$WORK/big.db" "$WORK/big-merged.db"
+
+# --- the surface gone when the shards are merged: the run is merged and
+# ranked all the same, its front's panels left to be computed when shown
+mkdir "$WORK/away"
+cp "$WORK"/ex{1,2,3}.db "$WORK/away/"
+mv "$ROOF" "$WORK/roof.moved"
+run "$FACET" merge "$WORK/away/merged.db" "$WORK"/away/ex{1,2,3}.db
+if [ "$STATUS" -eq 0 ] && grep -q "panels are not stored" "$ERR"; then
+    pass "a surface not found leaves the panels out, said"
+else
+    fail "a surface not found leaves the panels out, said"
+fi
+same_options "merged without its surface = unsharded" "$WORK/whole.db" "$WORK/away/merged.db"
+mv "$WORK/roof.moved" "$ROOF"
+
+# --- facet slurm's scripts, run by bash as Slurm would run them (the
+# array's tasks one by one, then the merge): e2e/slurm.sh runs them
+# under a real Slurm
+expect "facet slurm writes its scripts" 0 "$FACET" slurm "$ROOF" --shards 3 \
+    --results "$WORK/cluster" -- "${SPACE[@]}"
+same "three scripts, each valid bash" \
+    "$(for f in facet-shards.sbatch facet-merge.sbatch submit.sh; do bash -n "$WORK/cluster/$f" && echo ok; done | tr '\n' ' ')" "ok ok ok "
+same "the array has a task per shard, the merge waits for all (afterok)" \
+    "$(grep -c '^#SBATCH --array=1-3$' "$WORK/cluster/facet-shards.sbatch") $(grep -c 'dependency=afterok:' "$WORK/cluster/submit.sh")" "1 1"
+same "each task works on node-local scratch" \
+    "$(grep -c 'TMPDIR:-/tmp' "$WORK/cluster/facet-shards.sbatch")" "1"
+for i in 1 2 3; do
+    SLURM_ARRAY_TASK_ID=$i SLURM_CPUS_PER_TASK=1 TMPDIR=$WORK \
+        bash "$WORK/cluster/facet-shards.sbatch" >/dev/null 2>&1 ||
+        echo "not ok - shard task $i ran"
+done
+run bash "$WORK/cluster/facet-merge.sbatch"
+if [ "$STATUS" -eq 0 ]; then pass "the merge script runs"; else fail "the merge script runs"; fi
+same_options "the scripts' merged run = unsharded" "$WORK/whole.db" "$WORK/cluster/merged.db"
+same "the results folder holds the finished files only" \
+    "$(ls -A "$WORK/cluster" | grep -Ec '\.part$|-wal$|-shm$')" "0"
+expect_error "facet slurm leaves the shard's own flags to its scripts" "slurm: .-db is the scripts' to set" \
+    "$FACET" slurm "$ROOF" --shards 3 --results "$WORK/cluster" -- --db x.db
+expect_error "facet slurm needs --shards and --results" "give --shards N and --results DIR" \
+    "$FACET" slurm "$ROOF" --shards 3
+
 # --- refusals: one line, status 2, the output as it was
 out_sum=$(sha256sum "$WORK/merged.db" | cut -d' ' -f1)
 "$FACET" optimize "$ROOF" --db "$WORK/other.db" --u 10:15 --v 12:17 --threshold 1:5:1 --shard 2/3 --table 1 >/dev/null 2>&1
