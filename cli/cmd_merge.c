@@ -5,24 +5,11 @@
  */
 #include <stdio.h>
 #include <stdlib.h>
-#include <unistd.h>
 
 #include "args.h"
 #include "command.h"
+#include "progress.h"
 #include "study/study_merge.h"
-
-static void show_stage(void *context, const char *what)
-{
-    (void)context;
-    if (isatty(STDERR_FILENO))
-        fprintf(stderr, "facet: %s\n", what);
-}
-
-static void show_warning(void *context, const char *text)
-{
-    (void)context;
-    fprintf(stderr, "facet: warning: %s\n", text);
-}
 
 static int merge_main(int argc, char **argv, struct facet_error *err)
 {
@@ -37,8 +24,8 @@ static int merge_main(int argc, char **argv, struct facet_error *err)
             "merge: name the output and the shards (facet merge OUT.db "
             "SHARD.db...)");
     struct merge_report report;
-    struct study_hooks hooks = {NULL, show_stage, NULL, NULL, NULL,
-                                show_warning};
+    struct study_hooks hooks = {NULL, progress_show_stage, NULL, NULL, NULL,
+                                progress_show_warning};
     if (rc == FACET_OK)
         rc = study_merge(path[0], path + 1, count - 1, &hooks, &report,
                          err);

@@ -34,15 +34,6 @@ struct optimize_view {
     int64_t first_done;
 };
 
-/* Stages show on a terminal only: in a log, the progress lines say
- * enough, and an error stays the one line on stderr. */
-static void show_stage(void *context, const char *what)
-{
-    (void)context;
-    if (isatty(STDERR_FILENO))
-        fprintf(stderr, "facet: %s\n", what);
-}
-
 static void show_progress(void *context, int64_t done, int64_t total)
 {
     struct optimize_view *view = context;
@@ -67,13 +58,6 @@ static void show_started(void *context, int64_t run)
     (void)context;
     if (isatty(STDERR_FILENO))
         fprintf(stderr, "facet: run %lld\n", (long long)run);
-}
-
-/* One line on stderr per warning, before the progress bar starts. */
-static void show_warning(void *context, const char *text)
-{
-    (void)context;
-    fprintf(stderr, "facet: warning: %s\n", text);
 }
 
 /* The search flags as given (pointing into argv), NULL when absent. */
@@ -240,8 +224,10 @@ static int optimize_main(int argc, char **argv, struct facet_error *err)
     signals_catch_stop();
     struct optimize_view view;
     memset(&view, 0, sizeof view);
-    struct study_hooks hooks = {&view, show_stage, show_progress,
-                                stop_requested, show_started, show_warning};
+    /* Warnings come before the progress bar starts. */
+    struct study_hooks hooks = {&view, progress_show_stage, show_progress,
+                                stop_requested, show_started,
+                                progress_show_warning};
     enum optimize_outcome outcome;
     int64_t run = run_number;
     if (resume && surface != NULL)

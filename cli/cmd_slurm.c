@@ -49,13 +49,19 @@ static void shell_word(FILE *out, const char *text)
     fputc('\'', out);
 }
 
-/* The #SBATCH lines every job of the plan shares. */
-static void sbatch_common(FILE *out, const struct slurm_plan *p)
+/* The #SBATCH lines every job of the plan shares, then the start of its
+ * script: strict mode, the binary and the results folder. */
+static void job_common(FILE *out, const struct slurm_plan *p)
 {
     if (p->partition != NULL)
         fprintf(out, "#SBATCH --partition=%s\n", p->partition);
     if (p->time != NULL)
         fprintf(out, "#SBATCH --time=%s\n", p->time);
+    fputs("set -euo pipefail\nFACET=", out);
+    shell_word(out, p->facet);
+    fputs("\nRESULTS=", out);
+    shell_word(out, p->results);
+    fputc('\n', out);
 }
 
 static void write_shards(FILE *out, const struct slurm_plan *p)
@@ -71,13 +77,9 @@ static void write_shards(FILE *out, const struct slurm_plan *p)
         "#SBATCH --cpus-per-task=%ld\n"
         "#SBATCH --output=%s/shard-%%a.log\n",
         p->shards, p->shards, p->cpus, p->results);
-    sbatch_common(out, p);
-    fputs("set -euo pipefail\nFACET=", out);
-    shell_word(out, p->facet);
-    fputs("\nRESULTS=", out);
-    shell_word(out, p->results);
+    job_common(out, p);
     fprintf(out,
-        "\nI=$SLURM_ARRAY_TASK_ID\n"
+        "I=$SLURM_ARRAY_TASK_ID\n"
         "# SQLite's WAL does not work over network filesystems: the shard"
         " is\n# written on the node's own disk and copied when finished.\n"
         "SCRATCH=$(mktemp -d \"${TMPDIR:-/tmp}/facet-shard-$I.XXXXXX\")\n"
@@ -105,12 +107,8 @@ static void write_merge(FILE *out, const struct slurm_plan *p)
         "#SBATCH --ntasks=1\n"
         "#SBATCH --cpus-per-task=%ld\n"
         "#SBATCH --output=%s/merge.log\n", p->shards, p->cpus, p->results);
-    sbatch_common(out, p);
-    fputs("set -euo pipefail\nFACET=", out);
-    shell_word(out, p->facet);
-    fputs("\nRESULTS=", out);
-    shell_word(out, p->results);
-    fputs("\nMERGED=", out);
+    job_common(out, p);
+    fputs("MERGED=", out);
     shell_word(out, p->merged);
     fprintf(out,
         "\nSCRATCH=$(mktemp -d \"${TMPDIR:-/tmp}/facet-merge.XXXXXX\")\n"
