@@ -5,6 +5,7 @@
 #include "study/study_merge.h"
 
 #include <errno.h>
+#include <fcntl.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -448,21 +449,30 @@ int study_merge(const char *out, const char *const *paths, int nshards,
                      sizeof report->missing);
     }
 
-    /* The copy beside the output, put in its place at the end. */
+    /* The copy beside the output, put in its place at the end: created
+     * with the mode a new file gets (the umask's), or the output's own. */
     char temp[4200] = "";
-    if (rc == FACET_OK) {
-        if (snprintf(temp, sizeof temp, "%s.merge-XXXXXX", out) >=
-            (int)sizeof temp)
-            rc = facet_error_set(err, FACET_EINPUT, "%.200s...: path too "
-                                 "long", out);
+    if (rc == FACET_OK &&
+        snprintf(temp, sizeof temp, "%s.merge-%ld", out, (long)getpid()) >=
+            (int)sizeof temp) {
+        temp[0] = '\0';
+        rc = facet_error_set(err, FACET_EINPUT, "%.200s...: path too long",
+                             out);
     }
     int fd = -1;
-    if (rc == FACET_OK && (fd = mkstemp(temp)) < 0) {
-        rc = facet_error_set(err, FACET_EINPUT,
-            "%s: cannot write beside it (%s): the merged run needs a folder "
-            "it may write in", out, strerror(errno));
-        temp[0] = '\0';
+    if (rc == FACET_OK) {
+        unlink(temp);  /* a merge of this pid killed long ago */
+        fd = open(temp, O_WRONLY | O_CREAT | O_EXCL, 0666);
+        if (fd < 0) {
+            rc = facet_error_set(err, FACET_EINPUT,
+                "%s: cannot write beside it (%s): the merged run needs a "
+                "folder it may write in", out, strerror(errno));
+            temp[0] = '\0';
+        }
     }
+    struct stat st;
+    if (fd >= 0 && stat(out, &st) == 0)
+        fchmod(fd, st.st_mode & 0777);
     if (fd >= 0)
         close(fd);
     if (rc == FACET_OK && access(out, F_OK) == 0) {
