@@ -72,7 +72,7 @@ HOST=$(hostname -s)
 CONF=$D/slurm.conf
 cat >"$CONF" <<EOF
 ClusterName=facettest
-SlurmctldHost=$HOST
+SlurmctldHost=$HOST(127.0.0.1)
 SlurmctldPort=$port
 SlurmdPort=$((port + 1))
 SlurmUser=root
@@ -97,7 +97,7 @@ SelectType=select/cons_tres
 SelectTypeParameters=CR_CPU
 ReturnToService=2
 SlurmdTimeout=30
-NodeName=$HOST CPUs=2 State=UNKNOWN
+NodeName=$HOST NodeAddr=127.0.0.1 CPUs=2 State=UNKNOWN
 PartitionName=facet Nodes=$HOST Default=YES MaxTime=INFINITE State=UP
 EOF
 export SLURM_CONF=$CONF
@@ -141,6 +141,13 @@ while [ "$waited" -lt $((WAIT_SECONDS * 5)) ]; do
 done
 echo "# jobs done after $((waited / 5)) s"
 same "the jobs finished within $WAIT_SECONDS s" "$(squeue -h -j "$array_job,$merge_job" 2>/dev/null | wc -l)" "0"
+# What Slurm says of them (kept by slurmctld for MinJobAge, 300 s).
+scontrol -o show job "$array_job" 2>/dev/null >"$WORK/jobs"
+scontrol -o show job "$merge_job" 2>/dev/null >>"$WORK/jobs"
+sed -n 's/^JobId=\([0-9]*\) \(ArrayJobId=[0-9]* ArrayTaskId=[0-9]* \)\{0,1\}JobName=\([^ ]*\).* JobState=\([A-Z]*\).*/# job \1 \2\3 \4/p' "$WORK/jobs" | sort -u
+same "Slurm ran the $SHARDS shard tasks and the merge to completion" \
+    "$(grep -o 'JobState=[A-Z]*' "$WORK/jobs" | sort | uniq -c | sed 's/^ *//')" \
+    "$((SHARDS + 1)) JobState=COMPLETED"
 same "every shard was copied to the results" \
     "$(ls "$D/results" | grep -c '^shard-[0-9]*\.db$')" "$SHARDS"
 same "only finished files are in the results (no partial copies)" \
