@@ -4,6 +4,7 @@
  */
 #include "study/study_merge.h"
 
+#include <assert.h>
 #include <errno.h>
 #include <fcntl.h>
 #include <math.h>
@@ -29,8 +30,8 @@ static const char *const key_name[RUN_KEYS] = {
     "u", "v", "threshold", "prices (FP, SP, DP)", "sp_as_fp",
     "max_panel_area", "curvature_tol", "per_panel", "flip_normals", "uv",
     "uv_method", "objectives", "population and generations", "evaluations",
-    "cost model (panel, joint, SP and DP moulds)", "mould tolerance and "
-    "mirror", "store_panels", "number of shards"};
+    "cost model (panel, joint, SP and DP moulds)",
+    "mould tolerance and mirror", "store_panels", "number of shards"};
 
 static void run_keys(const struct run_info *r, char text[RUN_KEYS][160])
 {
@@ -67,6 +68,7 @@ static void run_keys(const struct run_info *r, char text[RUN_KEYS][160])
     snprintf(text[k++], 160, "%s",
              store_run_setting_text(r, RUN_SETTING_STORE_PANELS));
     snprintf(text[k++], 160, "%d", r->shard_count);
+    assert(k == RUN_KEYS);
 }
 
 /* The first setting in which b differs from a, or -1; its texts into
