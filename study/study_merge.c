@@ -99,9 +99,13 @@ static int read_shard(const char *path, struct shard_file *f,
     int rc = store_open_read(path, &store, err);
     if (rc != FACET_OK)
         return rc;
+    /* A shard has come over a network: every page is read, so that a
+     * damaged copy is refused, not merged from the pages that read. */
     struct run_info *runs = NULL;
     size_t nruns = 0, found = 0;
-    rc = store_run_list(store, &runs, &nruns, err);
+    rc = store_check(store, err);
+    if (rc == FACET_OK)
+        rc = store_run_list(store, &runs, &nruns, err);
     for (size_t k = 0; rc == FACET_OK && k < nruns; k++)
         if (runs[k].shard_index > 0) {
             if (found++ == 0)

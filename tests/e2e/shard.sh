@@ -194,6 +194,13 @@ same "that shard is untouched" "$(sha256sum "$WORK/ex1.db" | cut -d' ' -f1)" "$i
 head -c 4096 /dev/urandom >"$WORK/noise.db"
 expect_error "a file that is no database is refused" "noise\.db" \
     "$FACET" merge "$WORK/merged.db" "$WORK/ex1.db" "$WORK/noise.db"
+# A shard damaged on its way (a b-tree page's header overwritten): every
+# page is read before anything is merged.
+cp "$WORK/ex2.db" "$WORK/damaged.db"
+printf '\x0d\xff\xff\xff\xff\xff\xff\xff' |
+    dd of="$WORK/damaged.db" bs=1 seek=$((4096 * 4)) conv=notrunc status=none
+expect_error "a damaged shard is refused" "damaged\.db: the database is damaged" \
+    "$FACET" merge "$WORK/merged.db" "$WORK/ex1.db" "$WORK/damaged.db" "$WORK/ex3.db"
 sqlite3 -batch "$WORK/foreign.db" "CREATE TABLE t(x); INSERT INTO t VALUES (1);"
 expect_error "another application's database is refused" "another application" \
     "$FACET" merge "$WORK/merged.db" "$WORK/ex1.db" "$WORK/foreign.db"
