@@ -34,15 +34,6 @@ struct optimize_view {
     int64_t first_done;
 };
 
-/* Stages show on a terminal only: in a log, the progress lines say
- * enough, and an error stays the one line on stderr. */
-static void show_stage(void *context, const char *what)
-{
-    (void)context;
-    if (isatty(STDERR_FILENO))
-        fprintf(stderr, "facet: %s\n", what);
-}
-
 static void show_progress(void *context, int64_t done, int64_t total)
 {
     struct optimize_view *view = context;
@@ -69,17 +60,10 @@ static void show_started(void *context, int64_t run)
         fprintf(stderr, "facet: run %lld\n", (long long)run);
 }
 
-/* One line on stderr per warning, before the progress bar starts. */
-static void show_warning(void *context, const char *text)
-{
-    (void)context;
-    fprintf(stderr, "facet: warning: %s\n", text);
-}
-
 /* The search flags as given (pointing into argv), NULL when absent. */
 struct search_flags {
     const char *u, *v, *threshold, *method, *evals, *pop, *gens, *seed;
-    const char *objectives, *jobs;
+    const char *objectives, *jobs, *shard;
 };
 
 /* The flags' names in the messages of the design space's checks. */
@@ -141,6 +125,9 @@ static int parse_search(const struct search_flags *f,
             return rc;
         s->jobs = (int)number;
     }
+    if (f->shard &&
+        (rc = shard_parse(f->shard, "--shard", &s->shard, err)))
+        return rc;
     return FACET_OK;
 }
 
@@ -165,6 +152,7 @@ static int optimize_main(int argc, char **argv, struct facet_error *err)
         {"seed", 0, ARG_STRING, &search.seed, NULL},
         {"objectives", 0, ARG_STRING, &search.objectives, NULL},
         {"jobs", 'j', ARG_STRING, &search.jobs, NULL},
+        {"shard", 0, ARG_STRING, &search.shard, NULL},
         {"resume", 0, ARG_STRING, &resume, NULL},
         {"name", 0, ARG_STRING, &name, NULL},
         {"table", 0, ARG_STRING, &table, NULL},
@@ -236,8 +224,10 @@ static int optimize_main(int argc, char **argv, struct facet_error *err)
     signals_catch_stop();
     struct optimize_view view;
     memset(&view, 0, sizeof view);
-    struct study_hooks hooks = {&view, show_stage, show_progress,
-                                stop_requested, show_started, show_warning};
+    /* Warnings come before the progress bar starts. */
+    struct study_hooks hooks = {&view, progress_show_stage, show_progress,
+                                stop_requested, show_started,
+                                progress_show_warning};
     enum optimize_outcome outcome;
     int64_t run = run_number;
     if (resume && surface != NULL)
@@ -289,6 +279,9 @@ static void optimize_options_print(FILE *out)
         "  --objectives LIST   metrics to minimise, max:NAME to maximise\n"
         "                      (default %s)\n"
         "  --jobs N, -j N      threads (default: every core)\n"
+        "  --shard I/N         evaluate shard I of N only (exhaustive, random:\n"
+        "                      every Nth grid or point; nsga2: an island with\n"
+        "                      its own seed); join them with facet merge\n"
         "  --resume RUN        go on with an interrupted run\n"
         "  --surface FILE      with --resume: the run's surface has moved;\n"
         "                      record its new place (same SHA-256)\n"

@@ -30,6 +30,13 @@ static void print_json(const struct run_info *runs,
         json_key(&w, "id"); json_integer(&w, r->id);
         json_key(&w, "name"); json_string(&w, r->name);
         json_key(&w, "status"); json_string(&w, run_status_name(r->status));
+        /* A shard: index and count; a merge: count and how many merged. */
+        if (r->shard_count > 0) {
+            json_key(&w, "shard"); json_integer(&w, r->shard_index);
+            json_key(&w, "shards"); json_integer(&w, r->shard_count);
+            json_key(&w, "incomplete");
+            json_bool(&w, store_run_incomplete(r));
+        }
         json_key(&w, "surface"); json_string(&w, r->surface_path);
         json_key(&w, "surface_sha256"); json_string(&w, r->surface_sha256);
         json_key(&w, "units");
@@ -154,7 +161,14 @@ static void print_human(const struct run_info *runs,
         text_for_terminal(r->surface_path, path, sizeof path);
         snprintf(label, sizeof label, "%s%s%s", name, name[0] ? " / " : "",
                  path);
-        const char *cell[] = {id, run_status_name(r->status),
+        char status[32];
+        snprintf(status, sizeof status, "%s", store_run_incomplete(r)
+                 ? "incomplete" : run_status_name(r->status));
+        if (r->shard_index > 0)
+            snprintf(status, sizeof status, "%s %d/%d",
+                     run_status_name(r->status), r->shard_index,
+                     r->shard_count);
+        const char *cell[] = {id, status,
                               store_run_setting_text(r, RUN_SETTING_METHOD),
                               options, pareto,
                               cost, hv, elapsed, r->started, label};

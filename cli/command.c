@@ -10,6 +10,8 @@ const struct command *const command_table[] = {
     &cmd_classify,
     &cmd_curvature,
     &cmd_optimize,
+    &cmd_merge,
+    &cmd_slurm,
     &cmd_runs,
     &cmd_options,
     &cmd_show,

@@ -49,6 +49,8 @@ extern const struct command cmd_example;
 extern const struct command cmd_classify;
 extern const struct command cmd_curvature;
 extern const struct command cmd_optimize;
+extern const struct command cmd_merge;
+extern const struct command cmd_slurm;
 extern const struct command cmd_runs;
 extern const struct command cmd_options;
 extern const struct command cmd_show;

@@ -83,3 +83,16 @@ void progress_finish(struct progress *p, int64_t done, int64_t total)
     p->finished = 1;
     draw(p, done, total, 1);
 }
+
+void progress_show_stage(void *context, const char *what)
+{
+    (void)context;
+    if (isatty(STDERR_FILENO))
+        fprintf(stderr, "facet: %s\n", what);
+}
+
+void progress_show_warning(void *context, const char *text)
+{
+    (void)context;
+    fprintf(stderr, "facet: warning: %s\n", text);
+}

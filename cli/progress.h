@@ -29,4 +29,11 @@ void progress_finish(struct progress *p, int64_t done, int64_t total);
 /* Monotonic seconds. */
 double progress_now(void);
 
+/* The stage and warning hooks of a study (study/study.h) on stderr:
+ * "facet: STAGE" on a terminal only (in a log the progress lines say
+ * enough, and an error stays the one line on stderr), "facet: warning:
+ * TEXT" always. context is not used. */
+void progress_show_stage(void *context, const char *what);
+void progress_show_warning(void *context, const char *text);
+
 #endif

@@ -186,12 +186,23 @@ static const char schema_v5[] =
     "CREATE INDEX options_by_moulds ON options(run, moulds);"
     "CREATE INDEX options_by_joint_length ON options(run, joint_length);";
 
+/* Version 6 (shards): a run that is one shard of a search spread over
+ * machines (facet optimize's shard I/N: shard_index I of shard_count N),
+ * and a run merged from such shards (shard_index NULL, shard_count N,
+ * shards_merged how many of the N it holds: fewer is an incomplete run).
+ * NULL for every other run. */
+static const char schema_v6_shards[] =
+    "ALTER TABLE runs ADD COLUMN shard_index INTEGER;"
+    "ALTER TABLE runs ADD COLUMN shard_count INTEGER;"
+    "ALTER TABLE runs ADD COLUMN shards_merged INTEGER;";
+
 static const char *const migrations[STORE_SCHEMA_VERSION] = {
     schema_v1,
     schema_v2,
     schema_v3,
     schema_v4,
     schema_v5,
+    schema_v6_shards,
 };
 
 int store_fail(struct store *store, const char *doing,

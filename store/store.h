@@ -129,7 +129,15 @@ struct run_info {
     double mould_tol_mm;       /* mould tolerance (mm); NaN: each option's
                                   flatness threshold */
     int mould_mirror;          /* mirror images share a mould */
+    /* Spread over machines (core/search/shard.h): a shard is shard_index
+     * of shard_count; a merge of shards has shard_index 0, shard_count N
+     * and shards_merged of them (incomplete when fewer than N); every
+     * other run 0, 0, 0. */
+    int shard_index, shard_count, shards_merged;
 };
+
+/* Whether run is a merge that lacks some of its shards. */
+int store_run_incomplete(const struct run_info *run);
 
 /* FACET_OK when run's setting was read from the file; FACET_EINPUT when
  * its column names nothing this Facet knows, with a one-line message
@@ -231,6 +239,24 @@ int store_run_set_surface(struct store *store, int64_t id, const char *path,
 int store_run_set_status(struct store *store, int64_t id,
                          enum run_status status,
                          double elapsed, struct facet_error *err);
+/* --- shards and merges (store_shard.c) --- */
+
+/* Writes run's shard_index, shard_count and shards_merged (0 is NULL in
+ * the file) and its warnings: what a merge records of its shards. */
+int store_run_set_shard(struct store *store, const struct run_info *run,
+                        struct facet_error *err);
+
+/* Deletes every option of run (and their panels), keeping the run: a
+ * merge made again refills the run it made before. */
+int store_run_clear_options(struct store *store, int64_t run,
+                            struct facet_error *err);
+
+/* Writes a copy of the whole database to path, a file that must not
+ * exist or be empty (SQLite's VACUUM INTO): a consistent snapshot, WAL
+ * included, that a merge adds to before it takes the original's place. */
+int store_copy(struct store *store, const char *path,
+               struct facet_error *err);
+
 /* Deletes a run with its options and panels. */
 int store_run_delete(struct store *store, int64_t id,
                      struct facet_error *err);

@@ -12,7 +12,7 @@
 
 /* The schema this Facet writes (PRAGMA user_version) and the
  * application_id that marks a file as Facet's: "FCET". */
-#define STORE_SCHEMA_VERSION 5
+#define STORE_SCHEMA_VERSION 6
 #define STORE_APPLICATION_ID 0x46434554
 
 struct store {
@@ -62,6 +62,13 @@ double store_column_or_nan(sqlite3_stmt *stmt, int col);
  * one migration at a time, each in its own transaction. */
 int store_schema_migrate(struct store *store, int from, int to,
                          struct facet_error *err);
+
+/* The shard columns of runs (store_shard.c), read after the cost
+ * columns by store_shard_from_row from result column col on. */
+#define STORE_SHARD_COLUMNS \
+    "coalesce(shard_index, 0), coalesce(shard_count, 0)," \
+    " coalesce(shards_merged, 0)"
+void store_shard_from_row(sqlite3_stmt *stmt, int col, struct run_info *run);
 
 /* The current UTC time as ISO 8601 ("2026-11-25T01:30:00Z"). */
 void store_now(char out[32]);

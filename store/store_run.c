@@ -26,10 +26,11 @@
     " best_cost, coalesce(surface_area, 0), coalesce(triangles, 0)," \
     " coalesce(uv_method, ''), coalesce(uv, ''), warnings, store_panels"
 
-/* The cost model's columns (schema v5), read after RUN_COLUMNS. */
+/* The cost model's columns (schema v5), read after RUN_COLUMNS, then the
+ * shards' (schema v6, store_shard.c). */
 #define RUN_COST_COLUMNS \
     "price_panel, price_joint, price_sp_mould, price_dp_mould," \
-    " mould_tol_mm, mould_mirror"
+    " mould_tol_mm, mould_mirror, " STORE_SHARD_COLUMNS
 
 static void copy_text(char *to, size_t size, sqlite3_stmt *stmt, int col)
 {
@@ -172,6 +173,7 @@ static void run_costs_from_row(sqlite3_stmt *s, int c, struct run_info *r)
     r->mould_cost[TYPE_DP] = sqlite3_column_double(s, c++);
     r->mould_tol_mm = store_column_or_nan(s, c++);
     r->mould_mirror = sqlite3_column_int(s, c++);
+    store_shard_from_row(s, c, r);
 }
 
 /* Writes r's RUN_COST_COLUMNS to its row. */
@@ -352,6 +354,8 @@ int store_run_create(struct store *store, struct run_info *r,
     sqlite3_finalize(s);
     if (rc == FACET_OK)
         rc = run_costs_write(store, r, err);
+    if (rc == FACET_OK)
+        rc = store_run_set_shard(store, r, err);
     return rc;
 }
 

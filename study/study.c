@@ -218,6 +218,10 @@ int study_settings(const struct run_info *run,
     s->population = run->population;
     s->generations = run->generations;
     s->jobs = run->jobs > 0 ? run->jobs : 1;
+    /* A merge of shards searches no share: its settings are the whole
+     * run's. */
+    if (run->shard_index > 0)
+        s->shard = (struct shard){run->shard_index, run->shard_count};
     mesh->object = run->object[0] ? run->object : NULL;
     mesh->group = run->group[0] ? run->group : NULL;
     *flip_normals = run->flip_normals;
@@ -643,6 +647,32 @@ static int store_front_panels(struct store *store, const struct run_info *run,
     return rc;
 }
 
+int study_finish(struct store *store, const struct run_info *run,
+                 const struct surface *surface,
+                 const struct panel_lattice *lattice,
+                 const struct optimize_settings *settings,
+                 const struct study_hooks *hooks,
+                 enum optimize_outcome *outcome, struct facet_error *err)
+{
+    stage(hooks, "ranking options");
+    int rc = study_rank(store, run->id, err);
+    if (rc == FACET_OK)
+        rc = store_analyze(store, err);
+    /* A stop heard after the last batch still leaves the run resumable:
+     * ranked, its front's panels stored later. */
+    if (rc == FACET_OK && *outcome == OPTIMIZE_DONE && should_stop(hooks))
+        *outcome = OPTIMIZE_INTERRUPTED;
+    if (rc == FACET_OK && *outcome == OPTIMIZE_DONE && surface != NULL) {
+        stage(hooks, "storing the Pareto options' panels");
+        int stopped;
+        rc = store_front_panels(store, run, surface, lattice, settings,
+                                hooks, &stopped, err);
+        if (stopped)
+            *outcome = OPTIMIZE_INTERRUPTED;
+    }
+    return rc;
+}
+
 /* Runs the optimiser for run (recorded, status running) on the prepared
  * surface, then ranks and finishes it. elapsed_before: seconds of earlier
  * sessions. */
@@ -683,24 +713,9 @@ static int study_go(struct store *store, struct run_info *run,
 
     struct facet_error later;
     facet_error_clear(&later);
-    if (rc == FACET_OK) {
-        stage(hooks, "ranking options");
-        rc = study_rank(store, run->id, err);
-    }
     if (rc == FACET_OK)
-        rc = store_analyze(store, err);
-    /* A stop heard after the last batch still leaves the run resumable:
-     * ranked, its front's panels stored later. */
-    if (rc == FACET_OK && *outcome == OPTIMIZE_DONE && should_stop(hooks))
-        *outcome = OPTIMIZE_INTERRUPTED;
-    if (rc == FACET_OK && *outcome == OPTIMIZE_DONE) {
-        stage(hooks, "storing the Pareto options' panels");
-        int stopped;
-        rc = store_front_panels(store, run, surface, lattice, settings,
-                                hooks, &stopped, err);
-        if (stopped)
-            *outcome = OPTIMIZE_INTERRUPTED;
-    }
+        rc = study_finish(store, run, surface, lattice, settings, hooks,
+                          outcome, err);
     panel_lattice_free(lattice);
     enum run_status status = rc != FACET_OK ? RUN_FAILED
                              : *outcome == OPTIMIZE_DONE ? RUN_DONE
@@ -870,6 +885,8 @@ int study_start(struct store *store, const struct study_request *request,
     run.generations = s->method == METHOD_NSGA2 ? s->generations : 0;
     run.evaluations = s->method == METHOD_RANDOM ? s->evaluations : 0;
     run.jobs = s->jobs;
+    run.shard_index = s->shard.index;
+    run.shard_count = s->shard.count;
     rc = store_run_create(store, &run, err);
     if (rc == FACET_OK) {
         *run_id = run.id;

@@ -140,6 +140,19 @@ int study_option_panels(struct store *store, const struct run_info *run,
  * hypervolume. */
 int study_rank(struct store *store, int64_t run, struct facet_error *err);
 
+/* Ends run, whose options are all stored, as every run ends: ranks them
+ * (study_rank), refreshes the statistics and, unless the stop hook fires
+ * (*outcome then OPTIMIZE_INTERRUPTED) or surface is NULL, stores the
+ * panels of the options run->store_panels names, taken from lattice
+ * (optimize_lattice's for settings, or NULL) on surface. A run calls it
+ * after its last batch, a merge after the union of its shards. */
+int study_finish(struct store *store, const struct run_info *run,
+                 const struct surface *surface,
+                 const struct panel_lattice *lattice,
+                 const struct optimize_settings *settings,
+                 const struct study_hooks *hooks,
+                 enum optimize_outcome *outcome, struct facet_error *err);
+
 /* Writes into text (size bytes) what a designer must know when run's
  * Pareto options sit on a bound of its design space (bounds, read with
  * store_front_bounds): each such bound, how many options sit there, and

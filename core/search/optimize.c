@@ -423,12 +423,6 @@ static size_t search_find(const struct search *s, const struct design_point *p)
     return SIZE_MAX;
 }
 
-int search_met(const struct search *s, const struct design_point *point)
-{
-    size_t found = search_find(s, point);
-    return found != SIZE_MAX && s->met[found];
-}
-
 /* Makes room for more known options and keeps the hash under half full. */
 static int search_grow(struct search *s, size_t more, struct facet_error *err)
 {
@@ -469,7 +463,7 @@ static int search_grow(struct search *s, size_t more, struct facet_error *err)
 
 int search_batch(struct search *s, const struct design_point *points,
                  size_t n, int generation, size_t *index,
-                 struct facet_error *err)
+                 const int64_t *numbers, struct facet_error *err)
 {
     int rc = search_grow(s, n, err);
     if (rc != FACET_OK)
@@ -493,7 +487,8 @@ int search_batch(struct search *s, const struct design_point *points,
             s->met[found] = 1;
             s->distinct_met++;
             if (found >= first_new)
-                s->known[found].number = s->distinct_met;
+                s->known[found].number = numbers != NULL ? numbers[k]
+                                                         : s->distinct_met;
         }
         index[k] = found;
     }
@@ -565,22 +560,32 @@ static int run_exhaustive(struct search *s, enum optimize_outcome *outcome,
     size_t size = batch_size(settings);
     struct design_point *points = malloc(size * sizeof *points);
     size_t *index = malloc(size * sizeof *index);
+    int64_t *numbers = malloc(size * sizeof *numbers);
     int rc = FACET_OK;
-    if (points == NULL || index == NULL)
+    if (points == NULL || index == NULL || numbers == NULL)
         rc = facet_error_set(err, FACET_EWORK, "out of memory");
-    for (uint64_t start = 0; rc == FACET_OK && start < total;
-         start += size) {
+    /* Option k + 1 is point k of the space, in a shard as in the whole
+     * run. */
+    uint64_t next = 0;
+    while (rc == FACET_OK && next < total) {
         if (stop_requested(s->hooks)) {
             *outcome = OPTIMIZE_INTERRUPTED;
             break;
         }
-        size_t n = total - start < size ? (size_t)(total - start) : size;
-        for (size_t k = 0; k < n; k++)
-            point_of_index(&settings->space, start + k, &points[k]);
-        rc = search_batch(s, points, n, 0, index, err);
+        size_t n = 0;
+        for (; n < size && next < total; next++)
+            if (shard_owns(&settings->shard,
+                           shard_exhaustive_unit(&settings->space,
+                                                 &settings->shard, next))) {
+                point_of_index(&settings->space, next, &points[n]);
+                numbers[n++] = (int64_t)next + 1;
+            }
+        if (n > 0)
+            rc = search_batch(s, points, n, 0, index, numbers, err);
     }
     free(points);
     free(index);
+    free(numbers);
     return rc;
 }
 
@@ -604,6 +609,62 @@ static void random_point(const struct design_space *space, struct rng *rng,
     }
 }
 
+/* The distinct points a random run has drawn, in every shard's share or
+ * not: what tells a repeated draw. */
+struct drawn_set {
+    struct design_point *point;
+    unsigned char *used;
+    size_t capacity, count;      /* capacity a power of two */
+};
+
+static void drawn_free(struct drawn_set *d)
+{
+    free(d->point);
+    free(d->used);
+    memset(d, 0, sizeof *d);
+}
+
+/* Adds p to d: *fresh is 1 when d did not hold it. */
+static int drawn_add(struct drawn_set *d, const struct design_point *p,
+                     int *fresh, struct facet_error *err)
+{
+    if (2 * (d->count + 1) > d->capacity) {
+        struct drawn_set grown = {NULL, NULL, d->capacity ? 2 * d->capacity
+                                                          : 1024, 0};
+        grown.point = malloc(grown.capacity * sizeof *grown.point);
+        grown.used = calloc(grown.capacity, 1);
+        if (grown.point == NULL || grown.used == NULL) {
+            drawn_free(&grown);
+            return facet_error_set(err, FACET_EWORK, "out of memory");
+        }
+        for (size_t k = 0; k < d->capacity; k++) {
+            if (!d->used[k])
+                continue;
+            size_t h = point_key_hash(&d->point[k]) & (grown.capacity - 1);
+            while (grown.used[h])
+                h = (h + 1) & (grown.capacity - 1);
+            grown.point[h] = d->point[k];
+            grown.used[h] = 1;
+        }
+        grown.count = d->count;
+        drawn_free(d);
+        *d = grown;
+    }
+    size_t h = point_key_hash(p) & (d->capacity - 1);
+    while (d->used[h]) {
+        if (same_point(&d->point[h], p)) {
+            *fresh = 0;
+            return FACET_OK;
+        }
+        h = (h + 1) & (d->capacity - 1);
+    }
+    d->point[h] = *p;
+    d->used[h] = 1;
+    d->count++;
+    *fresh = 1;
+    return FACET_OK;
+}
+
 static int run_random(struct search *s, enum optimize_outcome *outcome,
                       struct facet_error *err)
 {
@@ -613,38 +674,46 @@ static int run_random(struct search *s, enum optimize_outcome *outcome,
     size_t size = batch_size(settings);
     struct design_point *points = malloc(size * sizeof *points);
     size_t *index = malloc(size * sizeof *index);
+    int64_t *numbers = malloc(size * sizeof *numbers);
+    struct drawn_set drawn = {NULL, NULL, 0, 0};
     int rc = FACET_OK;
-    if (points == NULL || index == NULL)
+    if (points == NULL || index == NULL || numbers == NULL)
         rc = facet_error_set(err, FACET_EWORK, "out of memory");
-    /* Distinct points only; give up drawing when the space seems spent. */
-    int64_t misses = 0, wanted = settings->evaluations;
-    while (rc == FACET_OK && s->distinct_met < wanted) {
+    /* Distinct points only; give up drawing when the space seems spent.
+     * The k-th distinct point drawn is option k + 1 of the whole run; a
+     * shard draws them all and evaluates its share. */
+    int64_t misses = 0, wanted = settings->evaluations, drawn_points = 0;
+    int64_t most_misses = 100 * wanted + 1000;
+    while (rc == FACET_OK && drawn_points < wanted &&
+           misses < most_misses) {
         if (stop_requested(s->hooks)) {
             *outcome = OPTIMIZE_INTERRUPTED;
             break;
         }
         size_t n = 0;
-        while (n < size && s->distinct_met + (int64_t)n < wanted &&
-               misses < 100 * wanted + 1000) {
+        while (rc == FACET_OK && n < size && drawn_points < wanted &&
+               misses < most_misses) {
             struct design_point p;
+            int fresh;
             random_point(&settings->space, &rng, &p);
-            int repeated = search_met(s, &p);
-            for (size_t k = 0; k < n && !repeated; k++)
-                repeated = p.nu == points[k].nu && p.nv == points[k].nv &&
-                           llround(p.threshold_mm * 1000) ==
-                               llround(points[k].threshold_mm * 1000);
-            if (repeated) {
+            rc = drawn_add(&drawn, &p, &fresh, err);
+            if (rc != FACET_OK || !fresh) {
                 misses++;
                 continue;
             }
-            points[n++] = p;
+            if (shard_owns(&settings->shard, (uint64_t)drawn_points)) {
+                points[n] = p;
+                numbers[n++] = drawn_points + 1;
+            }
+            drawn_points++;
         }
-        if (n == 0)
-            break;
-        rc = search_batch(s, points, n, 0, index, err);
+        if (rc == FACET_OK && n > 0)
+            rc = search_batch(s, points, n, 0, index, numbers, err);
     }
+    drawn_free(&drawn);
     free(points);
     free(index);
+    free(numbers);
     return rc;
 }
 
@@ -652,9 +721,11 @@ int64_t optimize_total(const struct optimize_settings *settings)
 {
     switch (settings->method) {
     case METHOD_EXHAUSTIVE:
-        return (int64_t)design_space_size(&settings->space);
+        return (int64_t)shard_exhaustive_points(&settings->space,
+                                                &settings->shard);
     case METHOD_RANDOM:
-        return settings->evaluations;
+        return (int64_t)shard_share(&settings->shard,
+                                    (uint64_t)settings->evaluations);
     default:
         return (int64_t)settings->population *
                ((int64_t)settings->generations + 1);

@@ -24,6 +24,7 @@
 #include <stdint.h>
 
 #include "core/search/metric.h"
+#include "core/search/shard.h"
 #include "core/classify/option.h"
 
 struct design_space {
@@ -52,6 +53,8 @@ struct optimize_settings {
     int64_t evaluations;                /* random */
     int population, generations;        /* nsga2 */
     int jobs;                           /* threads, >= 1 */
+    struct shard shard;                 /* this machine's share (shard.h);
+                                           count 0: the whole space */
 };
 
 struct evaluated_option {
@@ -128,7 +131,8 @@ int optimize_method_check(enum optimize_method method,
 
 /* The options a run of settings evaluates at most (a point met twice is
  * evaluated once): the space for exhaustive, the evaluations for random,
- * population x (generations + 1) for NSGA-II. */
+ * population x (generations + 1) for NSGA-II; of a shard, its share of
+ * them (an NSGA-II island evaluates as many as a whole run). */
 int64_t optimize_total(const struct optimize_settings *settings);
 
 /* Runs the search on the prepared surface, the panels of the grids

@@ -31,15 +31,13 @@ int search_init(struct search *s, const struct surface *surface,
 void search_free(struct search *s);
 
 /* Meets points[0..n) in order: a point met for the first time gets the
- * next option number; those the run does not have yet are evaluated (in
+ * next option number, or numbers[k] when numbers is not NULL (a shard's
+ * points keep their numbers in the unsharded run); those the run does not have yet are evaluated (in
  * parallel) and stored through the hook. index[k] receives the position in
  * s->known of points[k], whose totals are then valid. */
 int search_batch(struct search *s, const struct design_point *points,
                  size_t n, int generation, size_t *index,
-                 struct facet_error *err);
-
-/* Whether points[k] has been met before in this pass. */
-int search_met(const struct search *s, const struct design_point *point);
+                 const int64_t *numbers, struct facet_error *err);
 
 /* NSGA-II over the design space (optimize_nsga2.c). */
 int run_nsga2(struct search *s, enum optimize_outcome *outcome,

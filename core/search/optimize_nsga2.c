@@ -56,7 +56,8 @@ static int evaluate(void *context, size_t count, const double *vars,
     for (size_t k = 0; rc == FACET_OK && k < count; k++)
         point_of_vars(c, vars + k * c->nvars, &points[k]);
     if (rc == FACET_OK)
-        rc = search_batch(s, points, count, c->generation, index, err);
+        rc = search_batch(s, points, count, c->generation, index, NULL,
+                          err);
     size_t m = (size_t)settings->nobjectives;
     for (size_t k = 0; rc == FACET_OK && k < count; k++) {
         const struct option_totals *t = &s->known[index[k]].totals;
@@ -112,7 +113,7 @@ int run_nsga2(struct search *s, enum optimize_outcome *outcome,
     nsga2_settings_default(&ga, c.nvars);
     ga.population = (size_t)settings->population;
     ga.generations = (size_t)settings->generations;
-    ga.seed = settings->seed;
+    ga.seed = shard_island_seed(settings->seed, &settings->shard);
     struct nsga2_population result;
     int rc = nsga2_run(&problem, &ga, NULL, on_generation, &c, &result, err);
     if (c.stopped) {

@@ -117,8 +117,9 @@ fi
 
 # A version-3 file (no runs.uv) is migrated to the current version when
 # opened.
-# (Version 5's columns and indexes go too, as a version-3 file has none.)
-v5=""
+# (Version 5's columns and indexes go too, as a version-3 file has none,
+# and the shards' columns of version 6.)
+v5="ALTER TABLE runs DROP COLUMN shard_index; ALTER TABLE runs DROP COLUMN shard_count; ALTER TABLE runs DROP COLUMN shards_merged;"
 for c in price_panel price_joint price_sp_mould price_dp_mould mould_tol_mm mould_mirror; do
     v5="$v5 ALTER TABLE runs DROP COLUMN $c;"
 done
@@ -128,6 +129,6 @@ done
 v5="DROP INDEX options_by_moulds; DROP INDEX options_by_joint_length; $v5 ALTER TABLE panels DROP COLUMN mould_family;"
 sql "$db" "$v5 ALTER TABLE runs DROP COLUMN uv; ALTER TABLE runs DROP COLUMN warnings; ALTER TABLE runs DROP COLUMN store_panels; PRAGMA user_version = 3;"
 expect "facet runs on a v3 file" 0 "$FACET" runs "$db"
-same "migrated: version 5, runs.uv back, NULL, runs.warnings empty" \
-    "$(sql "$db" "SELECT (SELECT user_version FROM pragma_user_version), (SELECT count(*) FROM runs WHERE uv IS NULL), (SELECT count(*) FROM runs WHERE warnings = '')")" "5|2|2"
+same "migrated: version 6, runs.uv back, NULL, runs.warnings empty" \
+    "$(sql "$db" "SELECT (SELECT user_version FROM pragma_user_version), (SELECT count(*) FROM runs WHERE uv IS NULL), (SELECT count(*) FROM runs WHERE warnings = '')")" "6|2|2"
 exit 0

@@ -618,9 +618,16 @@ static const char *older_file(const char *name, const char *statements,
     return path;
 }
 
+/* SQL that takes a current file back to schema version 5: the columns
+ * the shards' step (version 6) added, dropped. */
+#define UNDO_V6_SHARDS \
+    "ALTER TABLE runs DROP COLUMN shard_index;" \
+    "ALTER TABLE runs DROP COLUMN shard_count;" \
+    "ALTER TABLE runs DROP COLUMN shards_merged;"
+
 /* SQL that takes a current file back to schema version 4: the columns and
  * indexes version 5 added, dropped. */
-#define UNDO_V5 \
+#define UNDO_V5 UNDO_V6_SHARDS \
     "DROP INDEX options_by_moulds; DROP INDEX options_by_joint_length;" \
     "ALTER TABLE runs DROP COLUMN price_panel;" \
     "ALTER TABLE runs DROP COLUMN price_joint;" \
@@ -641,7 +648,7 @@ static const char *older_file(const char *name, const char *statements,
     "ALTER TABLE panels DROP COLUMN mould_family;"
 
 /* A file of schema version 1 (no views, no indexes, no runs.uv) is
- * brought up to the current version (5) when opened, and keeps its runs. */
+ * brought up to the current version (6) when opened, and keeps its runs. */
 static void test_migrates_older_schema(void **state)
 {
     (void)state;
@@ -671,7 +678,7 @@ static void test_migrates_older_schema(void **state)
                      " type = 'index' AND name LIKE 'options_by_%')",
                      -1, &s, NULL), SQLITE_OK);
     assert_int_equal(sqlite3_step(s), SQLITE_ROW);
-    assert_int_equal(sqlite3_column_int(s, 0), 5);
+    assert_int_equal(sqlite3_column_int(s, 0), 6);
     assert_int_equal(sqlite3_column_int(s, 1), info.pareto_options);
     assert_int_equal(sqlite3_column_int(s, 2), 11);
     sqlite3_finalize(s);
@@ -715,7 +722,7 @@ static void test_migrates_v3(void **state)
     sqlite3_bind_int64(s, 1, old);
     sqlite3_bind_int64(s, 2, run);
     assert_int_equal(sqlite3_step(s), SQLITE_ROW);
-    assert_int_equal(sqlite3_column_int(s, 0), 5);
+    assert_int_equal(sqlite3_column_int(s, 0), 6);
     assert_int_equal(sqlite3_column_int(s, 1), 1);
     assert_int_equal(sqlite3_column_int(s, 2), 1);
     assert_string_equal((const char *)sqlite3_column_text(s, 3), "plane");
@@ -723,6 +730,44 @@ static void test_migrates_v3(void **state)
     sqlite3_close(db);
 }
 
+
+/* A file of version 5 (before shards) is migrated: its old run is no
+ * shard and no merge (the new columns NULL, read as 0); a new run of a
+ * shard records its I/N, and a merge of 2 of 3 shards reads incomplete. */
+static void test_migrates_v5_shards(void **state)
+{
+    (void)state;
+    struct study_request request;
+    int64_t old;
+    const char *path = older_file("migrate5", UNDO_V6_SHARDS
+                                  " PRAGMA user_version = 5;", &old,
+                                  &request);
+    struct facet_error err;
+    struct store *store;
+    assert_int_equal(store_open(path, &store, &err), FACET_OK);
+    struct run_info info;
+    assert_int_equal(store_run_get(store, old, &info, &err), FACET_OK);
+    assert_int_equal(info.shard_index, 0);
+    assert_int_equal(info.shard_count, 0);
+    assert_int_equal(info.shards_merged, 0);
+    assert_false(store_run_incomplete(&info));
+    request_for(&request, METHOD_EXHAUSTIVE);
+    request.settings.shard = (struct shard){2, 3};
+    int64_t run;
+    enum optimize_outcome outcome;
+    assert_int_equal(study_start(store, &request, NULL, &run, &outcome, &err),
+                     FACET_OK);
+    assert_int_equal(store_run_get(store, run, &info, &err), FACET_OK);
+    assert_int_equal(info.shard_index, 2);
+    assert_int_equal(info.shard_count, 3);
+    assert_false(store_run_incomplete(&info));
+    info.shard_index = 0;
+    info.shards_merged = 2;
+    assert_int_equal(store_run_set_shard(store, &info, &err), FACET_OK);
+    assert_int_equal(store_run_get(store, run, &info, &err), FACET_OK);
+    assert_true(store_run_incomplete(&info));
+    store_close(store);
+}
 
 /* A fresh file (db_path) holding the finished test study; its id. */
 static int64_t finished_run_closed(const char *name)
@@ -943,7 +988,7 @@ static void test_migrates_v4(void **state)
     sqlite3_bind_int64(s, 1, old);
     sqlite3_bind_int64(s, 2, run);
     assert_int_equal(sqlite3_step(s), SQLITE_ROW);
-    assert_int_equal(sqlite3_column_int(s, 0), 5);
+    assert_int_equal(sqlite3_column_int(s, 0), 6);
     assert_int_equal(sqlite3_column_int(s, 1), 48);
     assert_int_equal(sqlite3_column_int(s, 2), sqlite3_column_int(s, 3));
     assert_true(sqlite3_column_int(s, 3) > 0);
@@ -969,6 +1014,7 @@ int main(void)
         cmocka_unit_test(test_migrates_older_schema),
         cmocka_unit_test(test_migrates_v3),
         cmocka_unit_test(test_migrates_v4),
+        cmocka_unit_test(test_migrates_v5_shards),
         cmocka_unit_test(test_resume_forced_uv),
     };
     int failed = cmocka_run_group_tests(tests, setup, teardown);

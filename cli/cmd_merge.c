@@ -1,0 +1,63 @@
+/*
+ * cmd_merge.c: `facet merge OUT.db SHARD.db...`: the shards of a run made
+ * on several machines (facet optimize --shard I/N) joined into one run.
+ * The work is study/study_merge.h's; this file parses and reports.
+ */
+#include <stdio.h>
+#include <stdlib.h>
+
+#include "args.h"
+#include "command.h"
+#include "progress.h"
+#include "study/study_merge.h"
+
+static int merge_main(int argc, char **argv, struct facet_error *err)
+{
+    const struct arg_option options[] = {{NULL, 0, ARG_FLAG, NULL, NULL}};
+    const char **path = malloc((size_t)(argc > 1 ? argc : 1) * sizeof *path);
+    if (path == NULL)
+        return facet_error_set(err, FACET_EWORK, "out of memory");
+    int count;
+    int rc = args_parse(argc, argv, options, path, argc, &count, err);
+    if (rc == FACET_OK && count < 2)
+        rc = facet_error_set(err, FACET_EINPUT,
+            "merge: name the output and the shards (facet merge OUT.db "
+            "SHARD.db...)");
+    struct merge_report report;
+    struct study_hooks hooks = {NULL, progress_show_stage, NULL, NULL, NULL,
+                                progress_show_warning};
+    if (rc == FACET_OK)
+        rc = study_merge(path[0], path + 1, count - 1, &hooks, &report,
+                         err);
+    if (rc == FACET_OK) {
+        if (report.missing[0] != '\0')
+            fprintf(stderr, "facet: warning: shard%s %s of %d missing: run "
+                    "%lld is incomplete (merge again with %s to complete "
+                    "it)\n", report.shards_merged + 1 < report.shard_count
+                    ? "s" : "", report.missing, report.shard_count,
+                    (long long)report.run, report.shards_merged + 1 <
+                    report.shard_count ? "them" : "it");
+        printf("%s: run %lld %s from %d of %d shards: %lld options, %lld "
+               "Pareto-optimal\n", path[0], (long long)report.run,
+               report.replaced ? "merged again" : "merged",
+               report.shards_merged, report.shard_count,
+               (long long)report.options, (long long)report.pareto_options);
+    }
+    free(path);
+    return rc;
+}
+
+const struct command cmd_merge = {
+    .name = "merge",
+    .usage = "OUT.db SHARD.db...",
+    .summary = "Join the shards of a run (optimize --shard I/N) into one "
+               "run.",
+    .options = "  OUT.db is written whole or not at all (other runs in it "
+               "are kept);\n"
+               "  merging the same shards again changes nothing; a shard "
+               "missing is\n"
+               "  named, the run marked incomplete until it is merged in.\n"
+               "example:\n"
+               "  facet merge all.db shard-1.db shard-2.db shard-3.db\n",
+    .run = merge_main,
+};

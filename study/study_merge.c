@@ -1,0 +1,510 @@
+/*
+ * study_merge.c: the shards of a run joined into one run. See
+ * study_merge.h.
+ */
+#include "study/study_merge.h"
+
+#include <assert.h>
+#include <errno.h>
+#include <fcntl.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+/* One shard file as read. */
+struct shard_file {
+    const char *path;
+    struct run_info run;
+    struct option_row *rows;
+    size_t n;
+};
+
+/* The settings that make two runs shards of one run, as text (doubles to
+ * the bit), in a fixed order with their names: what a merge compares. */
+enum { RUN_KEYS = 24 };
+static const char *const key_name[RUN_KEYS] = {
+    "surface (SHA-256)", "units", "object", "group", "method", "seed",
+    "u", "v", "threshold", "prices (FP, SP, DP)", "sp_as_fp",
+    "max_panel_area", "curvature_tol", "per_panel", "flip_normals", "uv",
+    "uv_method", "objectives", "population and generations", "evaluations",
+    "cost model (panel, joint, SP and DP moulds)",
+    "mould tolerance and mirror", "store_panels", "number of shards"};
+
+static void run_keys(const struct run_info *r, char text[RUN_KEYS][160])
+{
+    int k = 0;
+    snprintf(text[k++], 160, "%s", r->surface_sha256);
+    snprintf(text[k++], 160, "%s",
+             store_run_setting_text(r, RUN_SETTING_UNITS));
+    snprintf(text[k++], 160, "%s", r->object);
+    snprintf(text[k++], 160, "%s", r->group);
+    snprintf(text[k++], 160, "%s",
+             store_run_setting_text(r, RUN_SETTING_METHOD));
+    snprintf(text[k++], 160, "%llu", (unsigned long long)r->seed);
+    snprintf(text[k++], 160, "%d:%d", r->u_min, r->u_max);
+    snprintf(text[k++], 160, "%d:%d", r->v_min, r->v_max);
+    snprintf(text[k++], 160, "%.17g:%.17g:%.17g", r->threshold_min_mm,
+             r->threshold_max_mm, r->threshold_step_mm);
+    snprintf(text[k++], 160, "%.17g, %.17g, %.17g", r->price[TYPE_FP],
+             r->price[TYPE_SP], r->price[TYPE_DP]);
+    snprintf(text[k++], 160, "%d", r->sp_as_fp);
+    snprintf(text[k++], 160, "%.17g", r->max_panel_area);
+    snprintf(text[k++], 160, "%.17g", r->curvature_tol);
+    snprintf(text[k++], 160, "%s",
+             store_run_setting_text(r, RUN_SETTING_PER_PANEL));
+    snprintf(text[k++], 160, "%d", r->flip_normals);
+    snprintf(text[k++], 160, "%s", store_run_setting_text(r, RUN_SETTING_UV));
+    snprintf(text[k++], 160, "%s",
+             store_run_setting_text(r, RUN_SETTING_UV_METHOD));
+    snprintf(text[k++], 160, "%s", r->objectives);
+    snprintf(text[k++], 160, "%d x %d", r->population, r->generations);
+    snprintf(text[k++], 160, "%lld", (long long)r->evaluations);
+    snprintf(text[k++], 160, "%.17g, %.17g, %.17g, %.17g", r->panel_cost,
+             r->joint_cost, r->mould_cost[TYPE_SP], r->mould_cost[TYPE_DP]);
+    snprintf(text[k++], 160, "%.17g, %d", r->mould_tol_mm, r->mould_mirror);
+    snprintf(text[k++], 160, "%s",
+             store_run_setting_text(r, RUN_SETTING_STORE_PANELS));
+    snprintf(text[k++], 160, "%d", r->shard_count);
+    assert(k == RUN_KEYS);
+}
+
+/* The first setting in which b differs from a, or -1; its texts into
+ * ta, tb. */
+static int first_difference(const struct run_info *a,
+                            const struct run_info *b, char ta[160],
+                            char tb[160])
+{
+    char x[RUN_KEYS][160], y[RUN_KEYS][160];
+    run_keys(a, x);
+    run_keys(b, y);
+    for (int k = 0; k < RUN_KEYS; k++)
+        if (strcmp(x[k], y[k]) != 0) {
+            memcpy(ta, x[k], 160);
+            memcpy(tb, y[k], 160);
+            return k;
+        }
+    return -1;
+}
+
+/* Reads the one finished shard run of path into *f. */
+static int read_shard(const char *path, struct shard_file *f,
+                      struct facet_error *err)
+{
+    memset(f, 0, sizeof *f);
+    f->path = path;
+    struct store *store;
+    int rc = store_open_read(path, &store, err);
+    if (rc != FACET_OK)
+        return rc;
+    /* A shard has come over a network: every page is read, so that a
+     * damaged copy is refused, not merged from the pages that read. */
+    struct run_info *runs = NULL;
+    size_t nruns = 0, found = 0;
+    rc = store_check(store, err);
+    if (rc == FACET_OK)
+        rc = store_run_list(store, &runs, &nruns, err);
+    for (size_t k = 0; rc == FACET_OK && k < nruns; k++)
+        if (runs[k].shard_index > 0) {
+            if (found++ == 0)
+                f->run = runs[k];
+        }
+    if (rc == FACET_OK && found == 0)
+        rc = facet_error_set(err, FACET_EINPUT,
+            "%s: holds no shard (a run made with a shard I/N)", path);
+    else if (rc == FACET_OK && found > 1)
+        rc = facet_error_set(err, FACET_EINPUT,
+            "%s: holds %zu shards; give each shard in a file of its own",
+            path, found);
+    else if (rc == FACET_OK && f->run.status != RUN_DONE)
+        rc = facet_error_set(err, FACET_EINPUT,
+            "%s: shard %d/%d (run %lld) is %s, not done: resume it first",
+            path, f->run.shard_index, f->run.shard_count,
+            (long long)f->run.id, run_status_name(f->run.status));
+    if (rc == FACET_OK)
+        rc = store_options_get(store, f->run.id, &f->rows, &f->n, err);
+    free(runs);
+    store_close(store);
+    return rc;
+}
+
+/* Refuses shards that are not of one run: the first setting that
+ * differs from the first shard's, or an index given twice. */
+static int check_shards(const struct shard_file *f, int n,
+                        struct facet_error *err)
+{
+    for (int k = 1; k < n; k++) {
+        char a[160], b[160];
+        int d = first_difference(&f[0].run, &f[k].run, a, b);
+        if (d == 0)
+            return facet_error_set(err, FACET_EINPUT,
+                "%s (shard %d/%d) was made from another surface than %s "
+                "(SHA-256 %.12s..., not %.12s...): merge only shards of "
+                "one run", f[k].path, f[k].run.shard_index,
+                f[k].run.shard_count, f[0].path, b, a);
+        if (d > 0)
+            return facet_error_set(err, FACET_EINPUT,
+                "%s (shard %d/%d) differs from %s in its %s: %s, not %s: "
+                "merge only shards of one run", f[k].path,
+                f[k].run.shard_index, f[k].run.shard_count, f[0].path,
+                key_name[d], b, a);
+        for (int j = 0; j < k; j++)
+            if (f[j].run.shard_index == f[k].run.shard_index)
+                return facet_error_set(err, FACET_EINPUT,
+                    "%s and %s are both shard %d/%d: give each shard once",
+                    f[j].path, f[k].path, f[k].run.shard_index,
+                    f[k].run.shard_count);
+    }
+    return FACET_OK;
+}
+
+/* A row of the union and the shard it came from. */
+struct merged_row {
+    struct option_row row;
+    int shard;
+};
+
+static int by_number(const void *a, const void *b)
+{
+    const struct merged_row *p = a, *q = b;
+    if (p->row.number != q->row.number)
+        return p->row.number < q->row.number ? -1 : 1;
+    return (p->shard > q->shard) - (p->shard < q->shard);
+}
+
+/* By design point (to a thousandth of a millimetre, as the search tells
+ * points apart), then shard and number: the first of equal points is
+ * the one met first in shard order. */
+static int by_point(const void *a, const void *b)
+{
+    const struct merged_row *p = a, *q = b;
+    long long tp = llround(p->row.threshold_mm * 1000);
+    long long tq = llround(q->row.threshold_mm * 1000);
+    if (p->row.nu != q->row.nu)
+        return p->row.nu < q->row.nu ? -1 : 1;
+    if (p->row.nv != q->row.nv)
+        return p->row.nv < q->row.nv ? -1 : 1;
+    if (tp != tq)
+        return tp < tq ? -1 : 1;
+    if (p->shard != q->shard)
+        return p->shard < q->shard ? -1 : 1;
+    return (p->row.number > q->row.number) - (p->row.number < q->row.number);
+}
+
+static int same_point(const struct option_row *a, const struct option_row *b)
+{
+    return a->nu == b->nu && a->nv == b->nv &&
+           llround(a->threshold_mm * 1000) == llround(b->threshold_mm * 1000);
+}
+
+static int by_shard(const void *a, const void *b)
+{
+    const struct merged_row *p = a, *q = b;
+    if (p->shard != q->shard)
+        return p->shard < q->shard ? -1 : 1;
+    return (p->row.number > q->row.number) - (p->row.number < q->row.number);
+}
+
+/* The union of the shards' options, numbered as the merged run numbers
+ * them, into *out (malloc'ed), *nout of them. */
+static int union_rows(const struct shard_file *f, int n,
+                      struct option_row **out, size_t *nout,
+                      struct facet_error *err)
+{
+    size_t total = 0;
+    for (int k = 0; k < n; k++)
+        total += f[k].n;
+    struct merged_row *all = malloc((total ? total : 1) * sizeof *all);
+    *out = malloc((total ? total : 1) * sizeof **out);
+    if (all == NULL || *out == NULL) {
+        free(all);
+        free(*out);
+        *out = NULL;
+        return facet_error_set(err, FACET_EWORK, "out of memory");
+    }
+    size_t m = 0;
+    for (int k = 0; k < n; k++)
+        for (size_t j = 0; j < f[k].n; j++) {
+            all[m].row = f[k].rows[j];
+            all[m].row.rank = 0;
+            all[m].row.crowding = 0;
+            all[m].row.knee = 0;
+            all[m++].shard = f[k].run.shard_index;
+        }
+    int rc = FACET_OK;
+    size_t kept = 0;
+    if (f[0].run.method != METHOD_NSGA2) {
+        /* Numbered as in the unsharded run already: a partition. */
+        qsort(all, m, sizeof *all, by_number);
+        for (size_t j = 0; j < m; j++) {
+            if (j > 0 && all[j].row.number == all[j - 1].row.number) {
+                rc = facet_error_set(err, FACET_EINPUT,
+                    "shards %d and %d both hold option %lld: not shards of "
+                    "one run", all[j - 1].shard, all[j].shard,
+                    (long long)all[j].row.number);
+                break;
+            }
+            (*out)[kept++] = all[j].row;
+        }
+    } else {
+        /* Islands: each point once, the first island's, numbered in
+         * shard order. */
+        qsort(all, m, sizeof *all, by_point);
+        size_t distinct = 0;
+        for (size_t j = 0; j < m; j++)
+            if (j == 0 || !same_point(&all[j].row, &all[j - 1].row))
+                all[distinct++] = all[j];
+        qsort(all, distinct, sizeof *all, by_shard);
+        for (size_t j = 0; j < distinct; j++) {
+            (*out)[kept] = all[j].row;
+            (*out)[kept].number = (int64_t)kept + 1;
+            kept++;
+        }
+    }
+    free(all);
+    if (rc != FACET_OK) {
+        free(*out);
+        *out = NULL;
+        return rc;
+    }
+    *nout = kept;
+    return FACET_OK;
+}
+
+/* Whether paths a and b are the same file (both exist). */
+static int same_file(const char *a, const char *b)
+{
+    struct stat x, y;
+    return stat(a, &x) == 0 && stat(b, &y) == 0 && x.st_dev == y.st_dev &&
+           x.st_ino == y.st_ino;
+}
+
+/* Removes path's SQLite side files (-wal, -shm). */
+static void remove_side_files(const char *path)
+{
+    char side[4200];
+    snprintf(side, sizeof side, "%s-wal", path);
+    unlink(side);
+    snprintf(side, sizeof side, "%s-shm", path);
+    unlink(side);
+}
+
+/* The indices of 1..count not in f[0..n) into text, "" when none. */
+static void missing_text(const struct shard_file *f, int n, int count,
+                         char *text, size_t size)
+{
+    size_t used = 0;
+    text[0] = '\0';
+    for (int index = 1; index <= count; index++) {
+        int given = 0;
+        for (int k = 0; k < n && !given; k++)
+            given = f[k].run.shard_index == index;
+        if (given)
+            continue;
+        int wrote = snprintf(text + used, size - used, "%s%d",
+                             used ? ", " : "", index);
+        if (wrote < 0 || (size_t)wrote >= size - used) {
+            snprintf(text + (size > 5 ? size - 5 : 0), size > 5 ? 5 : size,
+                     "...");
+            return;
+        }
+        used += (size_t)wrote;
+    }
+}
+
+static void tell_warning(const struct study_hooks *hooks, const char *text)
+{
+    if (hooks != NULL && hooks->warning != NULL)
+        hooks->warning(hooks->context, text);
+}
+
+/* The merged run of f's settings in store, or 0. */
+static int find_merged(struct store *store, const struct run_info *like,
+                       int64_t *id, struct facet_error *err)
+{
+    *id = 0;
+    struct run_info *runs;
+    size_t n;
+    int rc = store_run_list(store, &runs, &n, err);
+    for (size_t k = 0; rc == FACET_OK && k < n; k++) {
+        char a[160], b[160];
+        if (runs[k].shard_index == 0 && runs[k].shard_count > 0 &&
+            first_difference(like, &runs[k], a, b) < 0)
+            *id = runs[k].id;
+    }
+    if (rc == FACET_OK)
+        free(runs);
+    return rc;
+}
+
+/* Writes the merged run into the (temporary) database at path. */
+static int write_merged(const char *path, const struct shard_file *f, int n,
+                        const struct option_row *rows, size_t nrows,
+                        const struct study_hooks *hooks,
+                        struct merge_report *report, struct facet_error *err)
+{
+    struct store *store;
+    int rc = store_open(path, &store, err);
+    if (rc != FACET_OK)
+        return rc;
+    struct run_info run = f[0].run;
+    run.shard_index = 0;
+    run.shards_merged = n;
+    double elapsed = 0;
+    for (int k = 0; k < n; k++)
+        elapsed += f[k].run.elapsed;
+    rc = find_merged(store, &run, &run.id, err);
+    report->replaced = run.id != 0;
+    if (rc == FACET_OK && run.id != 0) {
+        rc = store_run_clear_options(store, run.id, err);
+        if (rc == FACET_OK)
+            rc = store_run_set_status(store, run.id, RUN_RUNNING, elapsed,
+                                      err);
+    } else if (rc == FACET_OK) {
+        rc = store_run_create(store, &run, err);
+    }
+    /* The shards' warnings (of one surface and space: the first's), and
+     * the shards missing. */
+    if (report->missing[0] != '\0') {
+        size_t used = strlen(run.warnings);
+        snprintf(run.warnings + used, sizeof run.warnings - used,
+                 "%sincomplete: %d of %d shards merged; missing: %s",
+                 used ? "\n" : "", n, run.shard_count, report->missing);
+    }
+    if (rc == FACET_OK)
+        rc = store_run_set_shard(store, &run, err);
+    const size_t chunk = 10000;
+    for (size_t first = 0; rc == FACET_OK && first < nrows; first += chunk)
+        rc = store_options_put(store, run.id, rows + first,
+                               nrows - first < chunk ? nrows - first : chunk,
+                               err);
+    /* The end of every run: ranks, and the front's panels on the surface
+     * when it can be found (else computed when shown). */
+    struct optimize_settings settings;
+    struct mesh_options mesh;
+    int flip;
+    struct surface surface;
+    memset(&surface, 0, sizeof surface);
+    int have_surface = 0;
+    struct panel_lattice *lattice = NULL;
+    if (rc == FACET_OK)
+        rc = study_settings(&run, &settings, &mesh, &flip, err);
+    if (rc == FACET_OK && run.store_panels != KEEP_NONE) {
+        struct facet_error why;
+        if (study_open_surface(store, &run, &surface, &why) == FACET_OK &&
+            optimize_lattice(&surface, &settings, &lattice, &why) ==
+                FACET_OK) {
+            have_surface = 1;
+        } else {
+            char text[800];
+            snprintf(text, sizeof text, "the Pareto options' panels are "
+                     "not stored (facet show and export compute them when "
+                     "asked): %s", why.message);
+            tell_warning(hooks, text);
+        }
+    }
+    enum optimize_outcome outcome = OPTIMIZE_DONE;
+    if (rc == FACET_OK)
+        rc = study_finish(store, &run, have_surface ? &surface : NULL,
+                          lattice, &settings, hooks, &outcome, err);
+    panel_lattice_free(lattice);
+    surface_close(&surface);
+    if (rc == FACET_OK)
+        rc = store_run_set_status(store, run.id, RUN_DONE, elapsed, err);
+    if (rc == FACET_OK)
+        rc = store_run_get(store, run.id, &run, err);
+    if (rc == FACET_OK) {
+        report->run = run.id;
+        report->options = run.options;
+        report->pareto_options = run.pareto_options;
+    }
+    store_close(store);
+    return rc;
+}
+
+int study_merge(const char *out, const char *const *paths, int nshards,
+                const struct study_hooks *hooks,
+                struct merge_report *report, struct facet_error *err)
+{
+    memset(report, 0, sizeof *report);
+    if (nshards < 1)
+        return facet_error_set(err, FACET_EINPUT, "no shard to merge");
+    for (int k = 0; k < nshards; k++)
+        if (same_file(out, paths[k]) || strcmp(out, paths[k]) == 0)
+            return facet_error_set(err, FACET_EINPUT,
+                "%s is one of the shards: name a new file for the merged "
+                "run", out);
+    struct shard_file *f = calloc((size_t)nshards, sizeof *f);
+    if (f == NULL)
+        return facet_error_set(err, FACET_EWORK, "out of memory");
+    int rc = FACET_OK;
+    for (int k = 0; rc == FACET_OK && k < nshards; k++)
+        rc = read_shard(paths[k], &f[k], err);
+    if (rc == FACET_OK)
+        rc = check_shards(f, nshards, err);
+    struct option_row *rows = NULL;
+    size_t nrows = 0;
+    if (rc == FACET_OK)
+        rc = union_rows(f, nshards, &rows, &nrows, err);
+    if (rc == FACET_OK) {
+        report->shard_count = f[0].run.shard_count;
+        report->shards_merged = nshards;
+        missing_text(f, nshards, report->shard_count, report->missing,
+                     sizeof report->missing);
+    }
+
+    /* The copy beside the output, put in its place at the end: created
+     * with the mode a new file gets (the umask's), or the output's own. */
+    char temp[4200] = "";
+    if (rc == FACET_OK &&
+        snprintf(temp, sizeof temp, "%s.merge-%ld", out, (long)getpid()) >=
+            (int)sizeof temp) {
+        temp[0] = '\0';
+        rc = facet_error_set(err, FACET_EINPUT, "%.200s...: path too long",
+                             out);
+    }
+    int fd = -1;
+    if (rc == FACET_OK) {
+        unlink(temp);  /* a merge of this pid killed long ago */
+        fd = open(temp, O_WRONLY | O_CREAT | O_EXCL, 0666);
+        if (fd < 0) {
+            rc = facet_error_set(err, FACET_EINPUT,
+                "%s: cannot write beside it (%s): the merged run needs a "
+                "folder it may write in", out, strerror(errno));
+            temp[0] = '\0';
+        }
+    }
+    struct stat st;
+    if (fd >= 0 && stat(out, &st) == 0)
+        fchmod(fd, st.st_mode & 0777);
+    if (fd >= 0)
+        close(fd);
+    if (rc == FACET_OK && access(out, F_OK) == 0) {
+        struct store *old;
+        rc = store_open_read(out, &old, err);
+        if (rc == FACET_OK) {
+            rc = store_copy(old, temp, err);
+            store_close(old);
+        }
+    }
+    if (rc == FACET_OK)
+        rc = write_merged(temp, f, nshards, rows, nrows, hooks, report, err);
+    if (temp[0] != '\0')
+        remove_side_files(temp);
+    if (rc == FACET_OK && rename(temp, out) != 0)
+        rc = facet_error_set(err, FACET_EINPUT, "%s: cannot replace it "
+                             "(%s)", out, strerror(errno));
+    if (rc == FACET_OK) {
+        /* The old file's side files would be taken for the new one's. */
+        remove_side_files(out);
+    } else if (temp[0] != '\0') {
+        unlink(temp);
+    }
+    for (int k = 0; k < nshards; k++)
+        free(f[k].rows);
+    free(f);
+    free(rows);
+    return rc;
+}

@@ -1,0 +1,168 @@
+#!/usr/bin/env bash
+# End-to-end against a real Slurm: a single-node cluster on this machine
+# (munged, slurmctld, slurmd, all in a temporary folder, on ports of their
+# own), the scripts of `facet slurm` submitted with sbatch (a job array of
+# 4 shards, then the merge after them), and the merged run compared by
+# SQLite with the unsharded one. The daemons are stopped and everything
+# removed whatever happens. Where the daemons cannot run (not root, Slurm
+# or munge not installed: `make deps` installs them), every check is
+# reported as skipped with the reason, never as passed.
+. "$(dirname "$0")/lib.sh"
+. "$(dirname "$0")/shard_lib.sh"
+
+SHARDS=4
+SPACE=(--u 10:15 --v 12:17 --threshold 1:4:1)
+WAIT_SECONDS=120
+
+# skip_all WHY: the whole test skipped, said plainly.
+skip_all() {
+    echo "SKIPPED: the Slurm test did not run: $1"
+    skip "slurm: array of $SHARDS shards and merge submitted with sbatch" "$1"
+    exit 0
+}
+
+[ "$(id -u)" -eq 0 ] || skip_all "it needs root to start munged, slurmctld and slurmd"
+for tool in munged slurmctld slurmd sbatch squeue sinfo scontrol; do
+    command -v "$tool" >/dev/null ||
+        skip_all "$tool is not installed (make deps installs slurm-wlm and munge)"
+done
+
+D=$WORK/cluster
+mkdir -p "$D/state" "$D/spool" "$D/munge" "$D/results"
+chmod 700 "$D/munge"
+PIDS=()
+stop_daemons() {
+    local pid
+    # Only the daemons this script started, by their process ids.
+    for pid in "${PIDS[@]+"${PIDS[@]}"}"; do
+        kill "$pid" 2>/dev/null
+    done
+    for pid in "${PIDS[@]+"${PIDS[@]}"}"; do
+        for _ in $(seq 1 50); do
+            kill -0 "$pid" 2>/dev/null || break
+            sleep 0.1
+        done
+        kill -KILL "$pid" 2>/dev/null
+    done
+    rm -rf "$WORK"
+}
+trap stop_daemons EXIT
+
+# daemon_log NAME: the last lines of a daemon's log, for a skip or failure.
+daemon_log() { tail -n 5 "$D/$1.log" 2>/dev/null | tr '\n' ' '; }
+
+# munge: a key of its own and a socket in the temporary folder.
+dd if=/dev/urandom of="$D/munge/munge.key" bs=1024 count=1 status=none
+chmod 400 "$D/munge/munge.key"
+munged --force --foreground --socket="$D/munge/munge.socket" \
+    --key-file="$D/munge/munge.key" --pid-file="$D/munge/munged.pid" \
+    --log-file="$D/munged.log" --seed-file="$D/munge/munged.seed" \
+    >/dev/null 2>&1 &
+PIDS+=($!)
+for _ in $(seq 1 50); do
+    [ -S "$D/munge/munge.socket" ] && break
+    kill -0 "${PIDS[0]}" 2>/dev/null || break
+    sleep 0.1
+done
+[ -S "$D/munge/munge.socket" ] || skip_all "munged did not start: $(daemon_log munged)"
+
+# Ports of its own, away from a system Slurm's 6817/6818.
+port=$((20000 + RANDOM % 20000))
+HOST=$(hostname -s)
+CONF=$D/slurm.conf
+cat >"$CONF" <<EOF
+ClusterName=facettest
+SlurmctldHost=$HOST(127.0.0.1)
+SlurmctldPort=$port
+SlurmdPort=$((port + 1))
+SlurmUser=root
+SlurmdUser=root
+AuthType=auth/munge
+CredType=cred/munge
+AuthInfo=socket=$D/munge/munge.socket
+StateSaveLocation=$D/state
+SlurmdSpoolDir=$D/spool
+SlurmctldPidFile=$D/slurmctld.pid
+SlurmdPidFile=$D/slurmd.pid
+SlurmctldLogFile=$D/slurmctld.log
+SlurmdLogFile=$D/slurmd.log
+ProctrackType=proctrack/linuxproc
+TaskPlugin=task/none
+JobAcctGatherType=jobacct_gather/none
+AccountingStorageType=accounting_storage/none
+SwitchType=switch/none
+MpiDefault=none
+SchedulerType=sched/backfill
+SelectType=select/cons_tres
+SelectTypeParameters=CR_CPU
+ReturnToService=2
+SlurmdTimeout=30
+NodeName=$HOST NodeAddr=127.0.0.1 CPUs=2 State=UNKNOWN
+PartitionName=facet Nodes=$HOST Default=YES MaxTime=INFINITE State=UP
+EOF
+export SLURM_CONF=$CONF
+
+slurmctld -D -i -f "$CONF" >"$D/slurmctld.out" 2>&1 &
+PIDS+=($!)
+slurmd -D -f "$CONF" >"$D/slurmd.out" 2>&1 &
+PIDS+=($!)
+state=""
+for _ in $(seq 1 150); do
+    state=$(sinfo -h -o %T 2>/dev/null | head -n 1)
+    [ "$state" = idle ] && break
+    kill -0 "${PIDS[1]}" 2>/dev/null || break
+    kill -0 "${PIDS[2]}" 2>/dev/null || break
+    sleep 0.2
+done
+[ "$state" = idle ] ||
+    skip_all "the node did not come up (state '${state:-none}'): slurmctld: $(daemon_log slurmctld) slurmd: $(daemon_log slurmd)"
+echo "# cluster: node $HOST idle ($(sinfo -h -o '%P %c CPUs %T'))"
+
+"$FACET" example roof --res 40 -o "$WORK/roof.obj" >/dev/null || exit 1
+expect "unsharded run" 0 "$FACET" optimize "$WORK/roof.obj" --db "$WORK/whole.db" "${SPACE[@]}" --table 1
+expect "facet slurm writes the scripts" 0 "$FACET" slurm "$WORK/roof.obj" \
+    --shards "$SHARDS" --results "$D/results" --cpus 1 -- "${SPACE[@]}"
+sed 's/^/# /' "$OUT"
+run bash "$D/results/submit.sh"
+if [ "$STATUS" -eq 0 ]; then pass "submit.sh submits the array and the merge"; else fail "submit.sh submits the array and the merge"; fi
+sed 's/^/# /' "$OUT"
+merge_job=$(sed -n 's/.*merge: job \([0-9]*\).*/\1/p' "$OUT")
+array_job=$(sed -n 's/.*shards: job \([0-9]*\).*/\1/p' "$OUT")
+same "the merge depends on the array (afterok)" \
+    "$(scontrol show job "$merge_job" 2>/dev/null | grep -o "Dependency=afterok:${array_job}[^ ]*" | head -n 1 | cut -d'(' -f1)" \
+    "Dependency=afterok:${array_job}_*"
+
+# Waits, bounded, for every job of the two to leave the queue.
+waited=0
+while [ "$waited" -lt $((WAIT_SECONDS * 5)) ]; do
+    [ -z "$(squeue -h -j "$array_job,$merge_job" 2>/dev/null)" ] && break
+    sleep 0.2
+    waited=$((waited + 1))
+done
+echo "# jobs done after $((waited / 5)) s"
+same "the jobs finished within $WAIT_SECONDS s" "$(squeue -h -j "$array_job,$merge_job" 2>/dev/null | wc -l)" "0"
+# What Slurm says of them (kept by slurmctld for MinJobAge, 300 s).
+scontrol -o show job "$array_job" 2>/dev/null >"$WORK/jobs"
+scontrol -o show job "$merge_job" 2>/dev/null >>"$WORK/jobs"
+sed -n 's/^JobId=\([0-9]*\) \(ArrayJobId=[0-9]* ArrayTaskId=[0-9]* \)\{0,1\}JobName=\([^ ]*\).* JobState=\([A-Z]*\).*/# job \1 \2\3 \4/p' "$WORK/jobs" | sort -u
+same "Slurm ran the $SHARDS shard tasks and the merge to completion" \
+    "$(grep -o 'JobState=[A-Z]*' "$WORK/jobs" | sort | uniq -c | sed 's/^ *//')" \
+    "$((SHARDS + 1)) JobState=COMPLETED"
+same "every shard was copied to the results" \
+    "$(ls "$D/results" | grep -c '^shard-[0-9]*\.db$')" "$SHARDS"
+same "only finished files are in the results (no partial copies)" \
+    "$(ls -A "$D/results" | grep -c '\.part$')" "0"
+for log in "$D"/results/*.log; do
+    echo "# --- $(basename "$log")"
+    sed 's/^/#   /' "$log" | head -n 12
+done
+if [ -f "$D/results/merged.db" ]; then
+    pass "the merge job wrote the merged run"
+    same_options "merged run from Slurm = unsharded run, option for option and rank for rank" \
+        "$WORK/whole.db" "$D/results/merged.db"
+    run "$FACET" runs "$D/results/merged.db"
+    sed 's/^/# /' "$OUT"
+else
+    echo "not ok - the merge job wrote the merged run"
+    daemon_log slurmctld
+fi
