@@ -162,12 +162,7 @@ static void print_human(const struct run_info *runs,
         snprintf(label, sizeof label, "%s%s%s", name, name[0] ? " / " : "",
                  path);
         char status[32];
-        snprintf(status, sizeof status, "%s", store_run_incomplete(r)
-                 ? "incomplete" : run_status_name(r->status));
-        if (r->shard_index > 0)
-            snprintf(status, sizeof status, "%s %d/%d",
-                     run_status_name(r->status), r->shard_index,
-                     r->shard_count);
+        store_run_status_text(r, status, sizeof status);
         const char *cell[] = {id, status,
                               store_run_setting_text(r, RUN_SETTING_METHOD),
                               options, pareto,

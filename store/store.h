@@ -139,6 +139,13 @@ struct run_info {
 /* Whether run is a merge that lacks some of its shards. */
 int store_run_incomplete(const struct run_info *run);
 
+/* What a listing shows for run's status, into text (size bytes, 16 are
+ * enough): "incomplete" for a merge that lacks shards (its status says it
+ * finished, not that it is whole), the status and "I/N" for a shard
+ * ("done 2/4"), else run_status_name. Returns text. */
+const char *store_run_status_text(const struct run_info *run, char *text,
+                                  size_t size);
+
 /* FACET_OK when run's setting was read from the file; FACET_EINPUT when
  * its column names nothing this Facet knows, with a one-line message
  * naming the run, the column and the value. A run is neither resumed nor

@@ -19,6 +19,19 @@ int store_run_incomplete(const struct run_info *run)
            run->shards_merged < run->shard_count;
 }
 
+const char *store_run_status_text(const struct run_info *run, char *text,
+                                  size_t size)
+{
+    if (store_run_incomplete(run))
+        snprintf(text, size, "incomplete");
+    else if (run->shard_index > 0)
+        snprintf(text, size, "%s %d/%d", run_status_name(run->status),
+                 run->shard_index, run->shard_count);
+    else
+        snprintf(text, size, "%s", run_status_name(run->status));
+    return text;
+}
+
 static void bind_positive_or_null(sqlite3_stmt *stmt, int col, int value)
 {
     if (value > 0)

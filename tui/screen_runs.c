@@ -109,13 +109,15 @@ static void runs_draw(struct tui_screen *base, struct tui_app *app,
         size_t k = s->top + (size_t)r;
         const struct run_info *run = &s->runs[k];
         char cost[32] = "-", elapsed[32], started[32], line[1400];
+        char status[32];
         if (isfinite(run->best_cost))
             tui_fmt_number(cost, sizeof cost, run->best_cost, 0, 1);
         tui_fmt_elapsed(elapsed, sizeof elapsed, run->elapsed);
         tui_fmt_started(started, sizeof started, run->started);
         int n = snprintf(line, sizeof line,
                          "%4lld %-11s %-10s %8lld %6lld %11s %9s %s%s",
-                         (long long)run->id, run_status_name(run->status),
+                         (long long)run->id,
+                         store_run_status_text(run, status, sizeof status),
                          store_run_setting_text(run, RUN_SETTING_METHOD),
                          (long long)run->options,
                          (long long)run->pareto_options, cost, elapsed,
@@ -148,13 +150,15 @@ static void search_step(struct runs_screen *s, struct tui_app *app, int dir)
 {
     if (s->last_search[0] == '\0' || s->n == 0)
         return;
+    char status[32];
     for (size_t step = 1; step <= s->n; step++) {
         size_t k = (s->selected + s->n + (size_t)dir * step) % s->n;
         if (strstr(s->runs[k].name, s->last_search) ||
             strstr(s->runs[k].surface_path, s->last_search) ||
             strstr(store_run_setting_text(&s->runs[k], RUN_SETTING_METHOD),
                    s->last_search) ||
-            strstr(run_status_name(s->runs[k].status), s->last_search)) {
+            strstr(store_run_status_text(&s->runs[k], status, sizeof status),
+                   s->last_search)) {
             s->selected = k;
             return;
         }
