@@ -454,6 +454,10 @@ static void test_sphere_fits_no_cylinder(void **state)
     panelize(&s, 4, 4, 0.003, &o);
     build(&s, 0.003, &o);
     assert_int_equal(o.totals.count[TYPE_DP], o.panels.npanels);
+    /* Every joint counted, none sampled (two full DP panels). */
+    assert_int_equal(o.joints.nedges, 3 * 4 + 4 * 3);
+    for (size_t n = 0; n < o.joints.nedges; n++)
+        assert_false(o.sides.sampled[o.joints.edges[n].side]);
     assert_true(o.joints.max_gap == 0);
     assert_true(o.joints.max_kink < 1e-12);
     joints_free(&o.joints);
