@@ -28,6 +28,15 @@
  *   - when neither is within t (rounding allowed as classify.h's threshold
  *     rule), the panel is built DP: a misfit, whose best cylinder and cone
  *     deviations say why (built_panel_reason).
+ * Precision: a fit stops when its next step would move the surface by
+ * under 0.1 um (developable.c), so sp_deviation, and the gaps measured on
+ * the fitted surfaces, hold to 1 um (test_joint pins the fit to a plain
+ * least-squares minimiser and the results to a turned and a mirrored
+ * surface). A misfit's best cone is the exception: on a double-curved
+ * panel the least-squares cone may creep along a valley for all of the
+ * fit's iterations without converging, and where it stops then depends on
+ * rounding (tenths of a millimetre apart between two placements); its
+ * verdict, no cone within t, does not.
  * Other panels are built as typed: FP the planar quad of their corners on
  * the best-fit plane (joint.h), DP moulded to the surface.
  */
