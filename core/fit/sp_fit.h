@@ -35,8 +35,9 @@
  * surface). A misfit's best cone is the exception: on a double-curved
  * panel the least-squares cone may creep along a valley for all of the
  * fit's iterations without converging, and where it stops then depends on
- * rounding (tenths of a millimetre apart between two placements); its
- * verdict, no cone within t, does not.
+ * the path the fit took (starting the cylinder fits from a Gauss-Newton
+ * step moved such cones by up to 0.4 mm over the paper's space); its
+ * verdict, no cone within t, did not move.
  * Other panels are built as typed: FP the planar quad of their corners on
  * the best-fit plane (joint.h), DP moulded to the surface.
  */
