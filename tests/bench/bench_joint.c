@@ -2,7 +2,7 @@
  * bench_joint.c: the cost of panels as built (the SP fit) and of the gap
  * and kink at every joint, for one design option.
  *
- *   bench_joint [RES [RUNS]]
+ *   bench_joint [RES [RUNS [SPACE_RUNS]]]
  *
  * Generates the example roof at RES x RES quads (default 224: 100,352
  * triangles), prepares it once, and times, each the median of several
@@ -22,8 +22,9 @@
  * at 3 mm, 336 options from the run's lattice) is evaluated on one thread
  * as a run evaluates it (option_evaluate_lattice: panels, classes, moulds,
  * joint length), without and with the panels as built and their joints,
- * each pass SPACE_RUNS times in turn, and the ratio of the medians is held
- * to its target of 1.5.
+ * each pass SPACE_RUNS times in turn (default 3; 0 skips the space, for a
+ * profile of the one option), and the ratio of the medians is held to its
+ * target of 1.5.
  */
 #include <math.h>
 #include <stdio.h>
@@ -40,6 +41,7 @@
 #define RUNS_MAX 2001
 #define TARGET_MS 10.0
 #define SPACE_RUNS 3
+#define SPACE_RUNS_MAX 21
 #define SPACE_TARGET 1.5
 #define MAX_GAP 0.006                      /* m */
 #define MAX_KINK (1.0 * M_PI / 180)        /* rad */
@@ -96,7 +98,7 @@ static double space_pass(const struct surface *surface,
 
 /* The paper's space without and with the joints; prints the ratio. */
 static void space_bench(const struct surface *surface,
-                        const struct fit_points *points)
+                        const struct fit_points *points, int runs)
 {
     struct facet_error err;
     struct study_request request;
@@ -108,23 +110,23 @@ static void space_bench(const struct surface *surface,
         fail(&err);
     size_t n = (size_t)(space->u_max - space->u_min + 1) *
                (size_t)(space->v_max - space->v_min + 1);
-    double without[SPACE_RUNS], with[SPACE_RUNS];
+    double without[SPACE_RUNS_MAX], with[SPACE_RUNS_MAX];
     size_t misfits = 0;
-    for (int run = 0; run < SPACE_RUNS; run++) {
+    for (int run = 0; run < runs; run++) {
         without[run] = space_pass(surface, lattice, points, s, 0, &misfits);
         misfits = 0;
         with[run] = space_pass(surface, lattice, points, s, 1, &misfits);
     }
     panel_lattice_free(lattice);
-    double without_s = bench_median(without, SPACE_RUNS);
-    double with_s = bench_median(with, SPACE_RUNS);
+    double without_s = bench_median(without, runs);
+    double with_s = bench_median(with, runs);
     printf("paper space (u %d:%d x v %d:%d at %g mm = %zu options, 1 "
            "thread, %s): %.3f s without joints, %.3f s with them "
            "(medians of %d) = %.2fx: %s (target <= %.1fx); %.2f ms per "
            "option more; %zu SP misfits over the space\n",
            space->u_min, space->u_max, space->v_min, space->v_max,
            space->t_min_mm, n, lattice != NULL ? "lattice" : "no lattice",
-           without_s, with_s, SPACE_RUNS, with_s / without_s,
+           without_s, with_s, runs, with_s / without_s,
            with_s <= SPACE_TARGET * without_s ? "met" : "not met",
            SPACE_TARGET, 1e3 * (with_s - without_s) / (double)n, misfits);
 }
@@ -137,6 +139,9 @@ int main(int argc, char **argv)
     int runs = argc > 2 ? atoi(argv[2]) : RUNS;
     if (runs < 1 || runs > RUNS_MAX)
         runs = RUNS;
+    int space_runs = argc > 3 ? atoi(argv[3]) : SPACE_RUNS;
+    if (space_runs < 0 || space_runs > SPACE_RUNS_MAX)
+        space_runs = SPACE_RUNS;
     struct facet_error err;
     struct surface surface;
     bench_roof(res, NULL, &surface);
@@ -241,7 +246,8 @@ int main(int argc, char **argv)
     }
     built_option_free(&built);
     joints_free(&joints);
-    space_bench(&surface, &points);
+    if (space_runs > 0)
+        space_bench(&surface, &points, space_runs);
     fit_points_free(&points);
     surface_close(&surface);
     return 0;
