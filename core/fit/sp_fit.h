@@ -37,12 +37,11 @@
  * rad over the paper's space; test_joint pins the fit to a plain
  * least-squares minimiser, and the results on a turned and a mirrored
  * surface to the results on the surface). A misfit's best cone is the
- * exception: on a double-curved
- * panel the least-squares cone may creep along a valley for all of the
- * fit's iterations without converging, and where it stops then depends on
- * the path the fit took (starting the cylinder fits from a Gauss-Newton
- * step moved such cones by up to 0.4 mm over the paper's space); its
- * verdict, no cone within t, did not move.
+ * exception: on a double-curved panel the least-squares cone may creep
+ * along a valley for all of the fit's iterations without converging, and
+ * where it stops then depends on the path the fit took (starting the
+ * cylinder fits from a Gauss-Newton step moved such cones by up to 0.4 mm
+ * over the paper's space); its verdict, no cone within t, did not move.
  * Other panels are built as typed: FP the planar quad of their corners on
  * the best-fit plane (joint.h), DP moulded to the surface.
  */
