@@ -29,6 +29,10 @@
  * surface (the apex of a nearly cylindrical cone). */
 #define FIT_STEP 1e-7
 
+/* The least damping of a Levenberg-Marquardt step, relative to the
+ * diagonal of the normal equations. */
+#define LAMBDA_FLOOR 1e-12
+
 /* Two unit vectors completing axis to an orthonormal frame. */
 static void frame(const double axis[3], double e1[3], double e2[3])
 {
@@ -248,8 +252,15 @@ static int refine(struct developable *d, const double *points, size_t n,
     frame(d->axis, e1, e2);
     double cost = linearize(d, points, n, np, e1, e2, jtj, jtr);
     /* Damping as Nielsen's: scaled by how well the linearisation
-     * predicted the last decrease, doubling its growth on each miss. */
-    double lambda = 1e-6, grow = 2;
+     * predicted the last decrease, doubling its growth on each miss. It
+     * starts at its floor, a Gauss-Newton step: a panel is a small patch
+     * of its cylinder, where moving the axis towards the points and
+     * shrinking the radius by as much hardly moves the surface, so the
+     * normal equations are ill-conditioned (1e-7 and worse), and even a
+     * damping of 1e-6 of their diagonal cuts the step along that valley
+     * short, taking twice the iterations to converge to the same fit. A
+     * step that does not pay raises the damping as before. */
+    double lambda = np == 6 ? 1e-6 : LAMBDA_FLOOR, grow = 2;
     for (int iteration = 0; iteration < FIT_MAX_ITERATIONS; iteration++) {
         double b[6], step[6] = {0};
         for (int r = 0; r < np; r++)
@@ -288,7 +299,7 @@ static int refine(struct developable *d, const double *points, size_t n,
             double rho = (cost - trial_cost) / promised;
             double t = 2 * rho - 1;
             lambda *= fmax(1.0 / 3, 1 - t * t * t);
-            lambda = fmax(lambda, 1e-12);
+            lambda = fmax(lambda, LAMBDA_FLOOR);
             grow = 2;
             *d = trial;
             cost = trial_cost;

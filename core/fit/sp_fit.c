@@ -166,19 +166,28 @@ int built_option_fit(const struct mesh *mesh, const struct fit_points *points,
     size_t np = panels->npanels;
     out->panels = calloc(np + 1, sizeof *out->panels);
     size_t *start = calloc(np + 2, sizeof *start);
-    uint32_t *member = NULL;
+    uint32_t *member = NULL, *held = NULL;
     double *xyz = NULL, *ruling = NULL;
     if (out->panels == NULL || start == NULL)
         goto out_of_memory;
     double du = (panels->umax - panels->umin) / panels->nu;
     double dv = (panels->vmax - panels->vmin) / panels->nv;
 
-    /* The fit points of each SP panel, bucketed: count, then place. */
+    /* The fit points of each SP panel, bucketed: count, then place. The
+     * count keeps the points some SP panel holds in held, so that the
+     * placing looks again only at those (most of a surface is in FP and
+     * DP panels). */
+    held = malloc((points->npoints + 1) * sizeof *held);
+    if (held == NULL)
+        goto out_of_memory;
+    size_t nheld = 0;
     for (size_t p = 0; p < points->npoints; p++) {
         int32_t holder[4];
         int n = point_panels(points, p, panels, du, dv, holder);
         for (int k = 0; k < n; k++)
             start[holder[k] + 2]++;
+        if (n > 0)
+            held[nheld++] = (uint32_t)p;
     }
     size_t largest = 0;
     for (size_t k = 0; k < np; k++) {
@@ -190,11 +199,11 @@ int built_option_fit(const struct mesh *mesh, const struct fit_points *points,
     ruling = malloc((largest + 1) * 3 * sizeof *ruling);
     if (member == NULL || xyz == NULL || ruling == NULL)
         goto out_of_memory;
-    for (size_t p = 0; p < points->npoints; p++) {
+    for (size_t x = 0; x < nheld; x++) {
         int32_t holder[4];
-        int n = point_panels(points, p, panels, du, dv, holder);
+        int n = point_panels(points, held[x], panels, du, dv, holder);
         for (int k = 0; k < n; k++)
-            member[start[holder[k] + 1]++] = (uint32_t)p;
+            member[start[holder[k] + 1]++] = held[x];
     }
 
     for (size_t k = 0; k < np; k++) {
@@ -256,6 +265,7 @@ int built_option_fit(const struct mesh *mesh, const struct fit_points *points,
     }
     free(start);
     free(member);
+    free(held);
     free(xyz);
     free(ruling);
     return FACET_OK;
@@ -263,6 +273,7 @@ int built_option_fit(const struct mesh *mesh, const struct fit_points *points,
 out_of_memory:
     free(start);
     free(member);
+    free(held);
     free(xyz);
     free(ruling);
     built_option_free(out);

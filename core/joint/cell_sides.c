@@ -88,6 +88,29 @@ static void normal_at(const struct mesh *mesh,
             normal[x] = -normal[x];
 }
 
+/* 1 when panel follows the surface over its whole cell: typed DP, not
+ * trimmed, every corner on the surface. */
+static int full_dp(const struct panel *panel)
+{
+    return panel->type == TYPE_DP && !panel->trimmed && panel->ncorners == 4;
+}
+
+/* 1 when the side between the panels a and b (indices, -1 for none) is to
+ * be sampled. */
+static int needs_samples(const struct panelization *panels, int32_t a,
+                         int32_t b)
+{
+    const struct panel *pa = a >= 0 ? &panels->panels[a] : NULL;
+    const struct panel *pb = b >= 0 ? &panels->panels[b] : NULL;
+    if ((pa != NULL && pa->type == TYPE_SP) ||
+        (pb != NULL && pb->type == TYPE_SP))
+        return 1;
+    if (pa == NULL || pb == NULL)
+        return 0;
+    return !(cell_sides_flat_quad(pa) && cell_sides_flat_quad(pb)) &&
+           !(full_dp(pa) && full_dp(pb));
+}
+
 int cell_sides_sample(const struct mesh *mesh, const struct uv_index *index,
                       const struct curvature *curvature,
                       const struct panelization *panels,
@@ -112,16 +135,18 @@ int cell_sides_sample(const struct mesh *mesh, const struct uv_index *index,
                                "out of memory sampling %zu cell sides",
                                out->nsides);
     }
-    /* The sides to sample: those of every panel that is not a flat quad. */
-    for (size_t p = 0; p < panels->npanels; p++) {
-        const struct panel *panel = &panels->panels[p];
-        if (cell_sides_flat_quad(panel))
-            continue;
-        out->sampled[cell_side_u(out, panel->i, panel->j)] = 1;
-        out->sampled[cell_side_u(out, panel->i + 1, panel->j)] = 1;
-        out->sampled[cell_side_v(out, panel->i, panel->j)] = 1;
-        out->sampled[cell_side_v(out, panel->i, panel->j + 1)] = 1;
-    }
+    /* The sides to sample (cell_sides.h): every side of an SP panel, and
+     * every joint but those between two flat quads or two full DP panels. */
+    for (int j = 0; j < nv; j++)
+        for (int i = 0; i <= nu; i++)
+            out->sampled[cell_side_u(out, i, j)] = (unsigned char)needs_samples(
+                panels, i > 0 ? panels->cell_panel[j * nu + i - 1] : -1,
+                i < nu ? panels->cell_panel[j * nu + i] : -1);
+    for (int j = 0; j <= nv; j++)
+        for (int i = 0; i < nu; i++)
+            out->sampled[cell_side_v(out, i, j)] = (unsigned char)needs_samples(
+                panels, j > 0 ? panels->cell_panel[(j - 1) * nu + i] : -1,
+                j < nv ? panels->cell_panel[j * nu + i] : -1);
     double du = (panels->umax - panels->umin) / nu;
     double dv = (panels->vmax - panels->vmin) / nv;
     /* Along each grid line in turn, so that the walk from sample to sample

@@ -7,10 +7,15 @@
  * panels (sp_fit.h) and the gaps and kinks between panels (joint.h) read
  * the same points.
  *
- * Only the sides a panel that is not a flat quad touches are sampled: the
- * sides of SP and DP panels, trimmed panels and panels with a corner off
- * the surface (by their classified type). A side between two FP quads
- * needs only its ends, the panels' corners (joint.h says why).
+ * Only the sides that need it are sampled (by the panels' classified
+ * types): every side of an SP panel (its fit reads them), and every joint
+ * between two panels but those between two flat quads and those between
+ * two full DP panels (typed DP, not trimmed, every corner on the
+ * surface). A side between two flat quads needs only its ends, the
+ * panels' corners; two full DP panels both follow the surface, so their
+ * gap and kink are 0 wherever they meet (joint.h says both). A side on
+ * the grid's edge or next to an empty cell is no joint, and is sampled
+ * only for an SP panel.
  *
  * A sampled side s is sampled at CELL_SIDE_SEGMENTS + 1 points evenly spaced in UV,
  * ends included (the cell corners, located as panels_build locates them).

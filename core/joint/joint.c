@@ -84,7 +84,10 @@ static void normal_of(const struct joint_side *s, const double x[3],
 }
 
 /* Measures one joint on side of sides between a and b; returns 0 when the
- * surface does not reach the side. A side between two flat quads is
+ * surface does not reach the side. A side between two full DP panels is
+ * not sampled: both follow the surface, so the places of every point of
+ * it, and its normals, are the same on both (gap and kink 0, as sampled
+ * they come out exactly). A side between two flat quads is
  * measured at its ends: the places of a point of it on the two quads' edges
  * differ by an affine function of the point, whose largest value on the
  * side's curve departs from its largest at the ends by at most the curve's
@@ -95,6 +98,13 @@ static int measure(const struct cell_sides *sides, size_t side,
 {
     edge->side = side;
     edge->gap = 0;
+    if (!sides->sampled[side] && !a->quad) {
+        /* Two full DP panels (cell_sides.h): both follow the surface. */
+        assert(!b->quad && a->built->type == TYPE_DP &&
+               b->built->type == TYPE_DP);
+        edge->kink = 0;
+        return 1;
+    }
     if (!sides->sampled[side]) {
         assert(a->quad && b->quad);
         const double *end[2] = {a->panel->corner[a->first],

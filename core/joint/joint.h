@@ -23,7 +23,8 @@
  * point, over the samples on the surface (m). Between samples the edge is
  * not looked at; CELL_SIDE_SEGMENTS + 1 samples per side, and for a joint
  * between two FP quads its two ends (joint.c says why that is exact to
- * micrometres).
+ * micrometres); a joint between two full DP panels is not sampled, its
+ * gap and kink are 0 (both panels follow the surface).
  *
  * The kink is the angle between the two panels' unit normals at the
  * edge's middle sample (the on-surface sample nearest the middle when it
