@@ -25,26 +25,6 @@ q() { sqlite3 "$WORK/costs.db" "$1"; }
 # The cost model the form is given, odd amounts so that none is a default.
 PANEL=37.5 JOINT=12.25 SP=1999.5 DP=15000.25 TOL=4.5
 
-# check_not NAME PATTERN: the screen (already settled) lacks PATTERN.
-check_not() {
-    if screen | grep -qE -- "$2"; then
-        echo "not ok - $1 (screen has: $2)"
-        screen | sed 's/^/  screen: /'
-    else
-        pass "$1"
-    fi
-}
-# check_line NAME N PATTERN: line N of the screen comes to match PATTERN.
-check_line() {
-    local i=0
-    while [ $i -lt $POLLS ]; do
-        if screen | sed -n "$2p" | grep -qE -- "$3"; then pass "$1"; return; fi
-        sleep 0.05
-        i=$((i + 1))
-    done
-    echo "not ok - $1 (line $2 lacks: $3)"
-    screen | sed 's/^/  screen: /'
-}
 # wait_run ID: polls the database until run ID is done (up to 4 x POLLS).
 wait_run() {
     local i=0
