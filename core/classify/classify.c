@@ -11,6 +11,11 @@
 #include "core/base/exact_sum.h"
 #include "core/base/numparse.h"
 
+double totals_count(size_t count)
+{
+    return count == TOTALS_UNKNOWN ? NAN : (double)count;
+}
+
 void classify_defaults(struct classify_options *options)
 {
     options->threshold = 0.003;

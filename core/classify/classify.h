@@ -28,6 +28,7 @@
 #define FACET_CLASSIFY_H
 
 #include <stddef.h>
+#include <stdint.h>
 
 #include "core/base/error.h"
 #include "core/panel/panel.h"
@@ -92,6 +93,16 @@ struct option_totals {
     double joint_cost;               /* joint_length x joint cost */
     double mould_cost;               /* moulds per type x mould cost */
 };
+
+/* A count of struct option_totals that is not known: what the store reads
+ * where its file holds NULL, for an option stored before Facet counted it
+ * (the mould counts of a run stored before schema v5). A length, area or
+ * cost not known is NaN. Never a number to show or sum: a table shows
+ * "-", JSON null, CSV an empty field (totals_count turns it into NaN). */
+#define TOTALS_UNKNOWN SIZE_MAX
+
+/* count as a number: NaN when it is TOTALS_UNKNOWN. */
+double totals_count(size_t count);
 
 /* The class of curvatures k1 >= k2 (1/m) with zero tolerance eps (1/m). */
 enum panel_class classify_curvature(double k1, double k2, double eps);
