@@ -97,12 +97,24 @@ static struct store *older_store(void)
     return store;
 }
 
+static int setup(void **state)
+{
+    *state = older_store();
+    return 0;
+}
+
+static int teardown(void **state)
+{
+    store_close(*state);  /* NULL: closed by the test */
+    store_fixture_remove(path);
+    return 0;
+}
+
 /* The row holds TOTALS_UNKNOWN and NaN, and every column of the registry
  * that SQLite holds as NULL reads as NaN (the truth: SQLite's NULL). */
 static void test_row_and_registry(void **state)
 {
-    (void)state;
-    struct store *store = older_store();
+    struct store *store = *state;
     struct facet_error err;
     struct option_row *rows;
     size_t n;
@@ -139,8 +151,6 @@ static void test_row_and_registry(void **state)
     assert_true(isnan(metric_value(t, METRIC_MOULDS)));
     assert_true(isnan(metric_value(t, METRIC_DP_MOULDS)));
     free(rows);
-    store_close(store);
-    store_fixture_remove(path);
 }
 
 /* What the CLI and the workbench show: "-" in the options table and the
@@ -148,8 +158,7 @@ static void test_row_and_registry(void **state)
  * 0 moulds), null in the JSON of show and export. */
 static void test_display(void **state)
 {
-    (void)state;
-    struct store *store = older_store();
+    struct store *store = *state;
     struct facet_error err;
     struct option_row row;
     assert_int_equal(store_option_get(store, 1, 2, &row, &err), FACET_OK);
@@ -209,16 +218,20 @@ static void test_display(void **state)
     /* moulds .. single_moulds: five empty fields after the joint length */
     assert_non_null(strstr(shown, ",1,,,,,,,"));
     free(shown);
-    store_close(store);
-    store_fixture_remove(path);
+}
+
+/* Appends o's number to numbers[1..], counting in numbers[0]. */
+static int page_row(void *context, const struct option_row *o)
+{
+    int64_t *numbers = context;
+    numbers[++numbers[0]] = o->number;
+    return 0;
 }
 
 static int count_row(void *context, int64_t run, const struct option_row *o)
 {
     (void)run;
-    int64_t *numbers = context;
-    numbers[++numbers[0]] = o->number;
-    return 0;
+    return page_row(context, o);
 }
 
 /* A sort by a column no option of the run has a value of is one tie
@@ -227,8 +240,7 @@ static int count_row(void *context, int64_t run, const struct option_row *o)
  * program. */
 static void test_sort_by_unknown(void **state)
 {
-    (void)state;
-    struct store *store = older_store();
+    struct store *store = *state;
     struct facet_error err;
     const char *sorts[] = {"moulds,cost", "joint_length,cost",
                            "largest_family,cost"};
@@ -242,16 +254,13 @@ static void test_sort_by_unknown(void **state)
             for (int r = 1; r <= 5; r++)
                 assert_int_equal(numbers[r], d ? r : 6 - r);
         }
-    store_close(store);
-    store_fixture_remove(path);
 }
 
 /* An option read with counts not known and stored again (as into a new
  * run) keeps NULL: never -1 or 18446744073709551615. */
 static void test_written_back_null(void **state)
 {
-    (void)state;
-    struct store *store = older_store();
+    struct store *store = *state;
     struct facet_error err;
     struct option_row *rows;
     size_t n;
@@ -263,6 +272,7 @@ static void test_written_back_null(void **state)
                      FACET_OK);
     free(rows);
     store_close(store);
+    *state = NULL;
     char query[200];
     snprintf(query, sizeof query, "SELECT count(*) FROM options WHERE"
              " run = %lld AND moulds IS NULL AND sp_moulds IS NULL AND"
@@ -270,14 +280,6 @@ static void test_written_back_null(void **state)
              " single_moulds IS NULL AND panels = 16 + number - 1",
              (long long)run.id);
     assert_int_equal(sql_int(query), 5);
-    store_fixture_remove(path);
-}
-
-static int page_row(void *context, const struct option_row *o)
-{
-    int64_t *numbers = context;
-    numbers[++numbers[0]] = o->number;
-    return 0;
 }
 
 /* The workbench pages a run sorted by a column none of its options has a
@@ -287,8 +289,7 @@ static int page_row(void *context, const struct option_row *o)
  * after it are SQLite's; before, a page after a NULL key found nothing. */
 static void test_browse_by_unknown(void **state)
 {
-    (void)state;
-    struct store *store = older_store();
+    struct store *store = *state;
     struct facet_error err;
     const char *columns[] = {"moulds", "joint_length", "mould_cost"};
     for (size_t c = 0; c < 3; c++)
@@ -325,18 +326,21 @@ static void test_browse_by_unknown(void **state)
                     &fourth, 0, 100, &rest, &err), FACET_OK);
                 assert_int_equal(rest, 1);
             }
-    store_close(store);
-    store_fixture_remove(path);
 }
 
 int main(void)
 {
     const struct CMUnitTest tests[] = {
-        cmocka_unit_test(test_row_and_registry),
-        cmocka_unit_test(test_display),
-        cmocka_unit_test(test_sort_by_unknown),
-        cmocka_unit_test(test_written_back_null),
-        cmocka_unit_test(test_browse_by_unknown),
+        cmocka_unit_test_setup_teardown(test_row_and_registry, setup,
+                                        teardown),
+        cmocka_unit_test_setup_teardown(test_display, setup,
+                                        teardown),
+        cmocka_unit_test_setup_teardown(test_sort_by_unknown, setup,
+                                        teardown),
+        cmocka_unit_test_setup_teardown(test_written_back_null, setup,
+                                        teardown),
+        cmocka_unit_test_setup_teardown(test_browse_by_unknown, setup,
+                                        teardown),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
