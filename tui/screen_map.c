@@ -101,8 +101,8 @@ static void draw_legend(struct map_screen *s, int y, int x, int width)
                  "-", t->count[TYPE_FP]);
         if (t->largest_family == TOTALS_UNKNOWN ||
             t->singleton_families == TOTALS_UNKNOWN)
-            tui_putf(y++, x, width, A_NORMAL, "   families not stored (an "
-                     "older Facet's run)");
+            tui_putf(y++, x, width, A_NORMAL,
+                     "   families not stored (older run)");
         else
             tui_putf(y++, x, width, A_NORMAL,
                      "   largest family %zu, %zu of one", t->largest_family,
@@ -255,6 +255,11 @@ static void map_draw(struct tui_screen *base, struct tui_app *app,
                  " mould family %d (%zu panels) | deviation %.2f mm",
                  p->mould, map_family_size(&s->panels, p->mould),
                  p->deviation * 1000);
+    else if (s->colour == MAP_BY_MOULD && p->type != TYPE_FP)
+        /* a curved panel of a run an older Facet stored (NULL) */
+        tui_putf(y + 2, 0, width, A_NORMAL,
+                 " mould family not stored (an older Facet's run) | "
+                 "deviation %.2f mm", p->deviation * 1000);
     else if (s->colour == MAP_BY_MOULD)
         tui_putf(y + 2, 0, width, A_NORMAL,
                  " no mould: an FP panel | deviation %.2f mm",
