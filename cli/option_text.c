@@ -49,7 +49,8 @@ void option_text_totals(FILE *out, const struct option_totals *t,
     else
         fprintf(out, "\n%-16s %.3f m (panel edges once each, and the "
                 "outline)\n", "joint length", t->joint_length);
-    if (t->moulds == TOTALS_UNKNOWN || t->moulds_of[TYPE_SP] == TOTALS_UNKNOWN ||
+    if (t->moulds == TOTALS_UNKNOWN ||
+        t->moulds_of[TYPE_SP] == TOTALS_UNKNOWN ||
         t->moulds_of[TYPE_DP] == TOTALS_UNKNOWN ||
         t->largest_family == TOTALS_UNKNOWN ||
         t->singleton_families == TOTALS_UNKNOWN)

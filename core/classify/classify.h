@@ -163,15 +163,16 @@ void classify_price_terms(const struct classify_options *options,
                                           least is 0 */
 
 /* Parses "SP,DP", the cost of a mould of each curved type (USD, finite, 0
- * to CLASSIFY_AMOUNT_MAX), into mould_cost[TYPE_SP] and [TYPE_DP]; [TYPE_FP] is set to 0.
- * FACET_EINPUT names the field what and the text. */
+ * to CLASSIFY_AMOUNT_MAX), into mould_cost[TYPE_SP] and [TYPE_DP];
+ * [TYPE_FP] is set to 0. FACET_EINPUT names the field what and the
+ * text. */
 int classify_mould_costs_parse(const char *text, const char *what,
                                double mould_cost[TYPE_COUNT],
                                struct facet_error *err);
 
 /* Parses "701,766,1518", the prices of FP, SP and DP (USD/m^2, finite,
- * 0 to CLASSIFY_AMOUNT_MAX), into price. FACET_EINPUT names the field what (the
- * caller's name for it) and the text. */
+ * 0 to CLASSIFY_AMOUNT_MAX), into price. FACET_EINPUT names the field
+ * what (the caller's name for it) and the text. */
 int classify_prices_parse(const char *text, const char *what,
                           double price[TYPE_COUNT], struct facet_error *err);
 
