@@ -5,7 +5,6 @@
 
 #include <errno.h>
 #include <limits.h>
-#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -163,21 +162,5 @@ int args_int(const char *text, long min, long max, const char *what,
         return facet_error_set(err, FACET_EINPUT,
             "%s: %s is out of range (%ld to %ld)", what, text, min, max);
     *out = (long)number;
-    return FACET_OK;
-}
-
-int args_double(const char *text, double min, double max, const char *what,
-                double *out, struct facet_error *err)
-{
-    /* Decimal as written: 0x10 and inf are not numbers here. */
-    double number;
-    int rc = numparse_text(text, &number);
-    if (rc != NUMPARSE_OK || !isfinite(number))
-        return facet_error_set(err, FACET_EINPUT,
-            "%s: '%s' is not a number", what, text);
-    if (number < min || number > max)
-        return facet_error_set(err, FACET_EINPUT,
-            "%s: %g is out of range (%g to %g)", what, number, min, max);
-    *out = number;
     return FACET_OK;
 }

@@ -53,12 +53,10 @@ int args_parse_one(int argc, char **argv, const struct arg_option *options,
                    const char *missing, struct facet_error *err);
 
 /* Parses text as an integer in [min, max] into *out. what names the value in
- * the error ("--res"). Returns FACET_OK or FACET_EINPUT. */
+ * the error ("--res"). Returns FACET_OK or FACET_EINPUT. (A number that
+ * need not be whole: numparse_number, core/base/numparse.h, which the
+ * TUI's forms share.) */
 int args_int(const char *text, long min, long max, const char *what,
              long *out, struct facet_error *err);
-
-/* Parses text as a finite number in [min, max] into *out, like args_int. */
-int args_double(const char *text, double min, double max, const char *what,
-                double *out, struct facet_error *err);
 
 #endif

@@ -6,6 +6,8 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "core/base/numparse.h"
+
 void classify_flags_usage(FILE *out)
 {
     struct option_params p;
@@ -125,8 +127,8 @@ int classify_flags_apply(const struct classify_flags *f,
     if ((rc = classify_flags_uv(f->uv, uv, err)))
         return rc;
     if (f->curvature_tol) {
-        if ((rc = args_double(f->curvature_tol, 1e-12, 1e6,
-                              "--curvature-tol", &number, err)))
+        if ((rc = numparse_number(f->curvature_tol, 1e-12, 1e6,
+                                  "--curvature-tol", &number, err)))
             return rc;
         params->classify.curvature_tol = number;
     }
@@ -139,26 +141,29 @@ int classify_flags_apply(const struct classify_flags *f,
         return rc;
     params->classify.sp_as_fp = f->sp_as_fp;
     if (f->max_area) {
-        if ((rc = args_double(f->max_area, 1e-9, 1e9, "--max-panel-area",
-                              &number, err)))
+        if ((rc = numparse_number(f->max_area, CLASSIFY_PANEL_AREA_MIN,
+                                  CLASSIFY_PANEL_AREA_MAX, "--max-panel-area",
+                                  &number, err)))
             return rc;
         params->classify.max_panel_area = number;
     }
     if (f->panel_cost &&
-        (rc = args_double(f->panel_cost, 0, 1e9, "--panel-cost",
-                          &params->classify.panel_cost, err)))
+        (rc = numparse_number(f->panel_cost, 0, CLASSIFY_AMOUNT_MAX,
+                              "--panel-cost", &params->classify.panel_cost,
+                              err)))
         return rc;
     if (f->joint_cost &&
-        (rc = args_double(f->joint_cost, 0, 1e9, "--joint-cost",
-                          &params->classify.joint_cost, err)))
+        (rc = numparse_number(f->joint_cost, 0, CLASSIFY_AMOUNT_MAX,
+                              "--joint-cost", &params->classify.joint_cost,
+                              err)))
         return rc;
     if (f->mould_cost &&
         (rc = classify_mould_costs_parse(f->mould_cost, "--mould-cost",
                                          params->classify.mould_cost, err)))
         return rc;
     if (f->mould_tol) {
-        if ((rc = args_double(f->mould_tol, 0, 1e6, "--mould-tol", &number,
-                              err)))
+        if ((rc = numparse_number(f->mould_tol, 0, CLASSIFY_MOULD_TOL_MAX_MM,
+                                  "--mould-tol", &number, err)))
             return rc;
         params->mould_tol = number / 1000;
         params->mould_tol_given = 1;

@@ -144,8 +144,8 @@ static int classify_run(int argc, char **argv, struct facet_error *err)
         return rc;
     if (threshold) {
         double number;
-        if ((rc = args_double(threshold, 0, 1e6, "--threshold", &number,
-                              err)))
+        if ((rc = numparse_number(threshold, 0, 1e6, "--threshold",
+                                  &number, err)))
             return rc;
         params = option_params_at(&params, params.nu, params.nv, number);
     }

@@ -3,10 +3,17 @@
  */
 #include "option_text.h"
 
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/ioctl.h>
 #include <unistd.h>
+
+/* What a value of an option not known shows (NULL in the store: an
+ * option of a run an older Facet stored, before it measured joints and
+ * moulds). */
+static const char not_stored[] =
+    "- (not stored with this option: an older Facet's run)";
 
 void option_text_totals(FILE *out, const struct option_totals *t,
                         const struct classify_options *o)
@@ -19,9 +26,14 @@ void option_text_totals(FILE *out, const struct option_totals *t,
                 t->area_of[k],
                 t->area > 0 ? 100 * t->area_of[k] / t->area : 0,
                 t->cost_of[k]);
-    fprintf(out, "%-6s %8zu %14.3f %7.1f%% %16.2f\n", "total", t->panels,
-            t->area, 100.0, t->area_cost);
-    if (t->cost != t->area_cost) {
+    char area_cost[32] = "-";
+    if (!isnan(t->area_cost))
+        snprintf(area_cost, sizeof area_cost, "%.2f", t->area_cost);
+    fprintf(out, "%-6s %8zu %14.3f %7.1f%% %16s\n", "total", t->panels,
+            t->area, 100.0, area_cost);
+    if (isnan(t->area_cost)) {
+        fprintf(out, "%-16s %s\n", "cost terms", not_stored);
+    } else if (t->cost != t->area_cost) {
         fprintf(out, "%-16s %zu panels x %g USD = %.2f USD\n", "panel cost",
                 t->panels, o->panel_cost, t->panel_cost);
         fprintf(out, "%-16s %.3f m x %g USD/m = %.2f USD\n", "joint cost",
@@ -32,12 +44,22 @@ void option_text_totals(FILE *out, const struct option_totals *t,
         fprintf(out, "%-16s %.2f USD (area, panels, joints and moulds)\n",
                 "total cost", t->cost);
     }
-    fprintf(out, "\n%-16s %.3f m (panel edges once each, and the outline)\n",
-            "joint length", t->joint_length);
-    fprintf(out, "%-16s %zu (SP %zu, DP %zu; largest family %zu panels, %zu "
-            "of one panel; greedy: at most this many)\n", "moulds",
-            t->moulds, t->moulds_of[TYPE_SP], t->moulds_of[TYPE_DP],
-            t->largest_family, t->singleton_families);
+    if (isnan(t->joint_length))
+        fprintf(out, "\n%-16s %s\n", "joint length", not_stored);
+    else
+        fprintf(out, "\n%-16s %.3f m (panel edges once each, and the "
+                "outline)\n", "joint length", t->joint_length);
+    if (t->moulds == TOTALS_UNKNOWN ||
+        t->moulds_of[TYPE_SP] == TOTALS_UNKNOWN ||
+        t->moulds_of[TYPE_DP] == TOTALS_UNKNOWN ||
+        t->largest_family == TOTALS_UNKNOWN ||
+        t->singleton_families == TOTALS_UNKNOWN)
+        fprintf(out, "%-16s %s\n", "moulds", not_stored);
+    else
+        fprintf(out, "%-16s %zu (SP %zu, DP %zu; largest family %zu panels, "
+                "%zu of one panel; greedy: at most this many)\n", "moulds",
+                t->moulds, t->moulds_of[TYPE_SP], t->moulds_of[TYPE_DP],
+                t->largest_family, t->singleton_families);
 
     fprintf(out, "\n%-16s %.6f m (sum of FP and SP panel deviations)\n",
             "planarity", t->planarity);

@@ -178,8 +178,8 @@ double store_option_column_value(const struct option_column *c,
     case FIELD_INT64:
         value = (double)*(const int64_t *)(const void *)field;
         break;
-    case FIELD_SIZE:
-        value = (double)*(const size_t *)(const void *)field;
+    case FIELD_SIZE:   /* NaN for TOTALS_UNKNOWN */
+        value = totals_count(*(const size_t *)(const void *)field);
         break;
     case FIELD_DOUBLE: value = *(const double *)(const void *)field; break;
     default:           return NAN;

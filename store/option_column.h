@@ -84,7 +84,9 @@ extern const struct option_column store_option_columns[STORE_OPTION_COLUMNS];
 const struct option_column *store_option_column(const char *name);
 
 /* c's value in option, as stored (a deviation in m), yes/no as 0 or 1;
- * NaN for run, which the row does not hold. */
+ * NaN for a value not known (NULL in the file: a column added after the
+ * option was stored; a count then reads as TOTALS_UNKNOWN, classify.h),
+ * and for run, which the row does not hold. */
 double store_option_column_value(const struct option_column *c,
                                  const struct option_row *option);
 

@@ -156,13 +156,18 @@ static void add_from(struct sql_text *s, const struct option_browse *b,
 
 /* Appends " AND <row comes after the keyset row>" (before, when
  * backward): a lexicographic comparison over the keys and number, with a
- * leading range term on the first key that an index can seek by. */
+ * leading range term on the first key that an index can seek by. A key
+ * the keyset row has no value of (NULL in the file, NaN in the row: a
+ * column added after an older Facet stored the option) compares by IS
+ * NULL: NULL sorts before every value, so after it come the rows with a
+ * value and the NULL rows later by the next keys (a NULL never compares
+ * with ?). */
 static void add_keyset(struct sql_text *s, const struct option_browse *b,
-                       int backward)
+                       const struct option_row *keyset, int backward)
 {
     char expr[160];
     sql_add(s, " AND ");
-    if (b->nkeys > 0) {
+    if (b->nkeys > 0 && !isnan(key_value(keyset, b->keys[0].column))) {
         int greater = !b->keys[0].descending != !!backward;
         key_sql(b, b->keys[0].column, expr, sizeof expr);
         sql_add(s, "%s %s ?%d AND ", expr, greater ? ">=" : "<=",
@@ -176,7 +181,13 @@ static void add_keyset(struct sql_text *s, const struct option_browse *b,
         else
             snprintf(expr, sizeof expr, "%snumber",
                      b->filter_first ? "+" : "");
-        if (k < b->nkeys)
+        int no_value = k < b->nkeys &&
+                       isnan(key_value(keyset, b->keys[k].column));
+        if (no_value && greater)
+            sql_add(s, "(%s IS NOT NULL OR (%s IS NULL AND ", expr, expr);
+        else if (no_value)
+            sql_add(s, "(0 OR (%s IS NULL AND ", expr);
+        else if (k < b->nkeys)
             sql_add(s, "(%s %s ?%d OR (%s = ?%d AND ", expr,
                     greater ? ">" : "<", KEY_FIRST + k, expr, KEY_FIRST + k);
         else
@@ -295,7 +306,7 @@ static int prepare_after(struct store *store, const struct option_browse *b,
     sql_add(&s, "%s", select);
     add_from(&s, b, 0);
     if (after != NULL)
-        add_keyset(&s, b, backward);
+        add_keyset(&s, b, after, backward);
     if (ordered)
         add_order(&s, b, backward);
     sql_add(&s, "%s", end);
@@ -462,7 +473,7 @@ int store_browse_position(struct store *store,
     struct sql_text s = {0};
     sql_add(&s, "SELECT count(*)");
     add_from(&s, b, 0);
-    add_keyset(&s, b, 1);
+    add_keyset(&s, b, option, 1);
     sqlite3_stmt *stmt;
     rc = prepare(store, &s, b, option, &stmt, "locating an option", err);
     if (rc != FACET_OK)

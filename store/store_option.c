@@ -65,6 +65,8 @@ static void option_bind(sqlite3_stmt *s, int64_t run,
             sqlite3_bind_int(s, p++, *(const int *)field);
         else if (c->field == FIELD_INT64)
             sqlite3_bind_int64(s, p++, *(const int64_t *)field);
+        else if (*(const size_t *)field == TOTALS_UNKNOWN)
+            sqlite3_bind_null(s, p++);  /* as it was read */
         else
             sqlite3_bind_int64(s, p++,
                                (sqlite3_int64)*(const size_t *)field);
@@ -93,6 +95,10 @@ static void option_from_row(sqlite3_stmt *s, int first,
             *(int *)field = sqlite3_column_int(s, c);
         else if (col->field == FIELD_INT64)
             *(int64_t *)field = sqlite3_column_int64(s, c);
+        else if (sqlite3_column_type(s, c) == SQLITE_NULL)
+            /* a count added after the option was stored: not known,
+             * never 0 */
+            *(size_t *)field = TOTALS_UNKNOWN;
         else
             *(size_t *)field = (size_t)sqlite3_column_int64(s, c);
         if (col->offset == offsetof(struct option_row, crowding))
@@ -432,11 +438,16 @@ struct tie_group {
     int stopped;
 };
 
+/* A value not known (NULL, NaN in the row) is -infinity here: SQLite
+ * orders NULL before every number, so the tie classes keep its order, and
+ * all the options without the value are one class, ordered by the next
+ * keys. */
 static double key_value(const struct option_row *o, int64_t run,
                         const char *column)
 {
-    return strcmp(column, "run") == 0 ? (double)run
-                                      : store_option_value(o, column);
+    double value = strcmp(column, "run") == 0
+                       ? (double)run : store_option_value(o, column);
+    return isnan(value) ? -INFINITY : value;
 }
 
 /* Hands the group's rows on in the order of their keys with ties. */

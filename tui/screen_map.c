@@ -87,14 +87,26 @@ static void draw_legend(struct map_screen *s, int y, int x, int width)
             : s->colour == MAP_BY_MOULD ? " moulds           families  panels"
                                         : " type               count       m^2");
     if (s->colour == MAP_BY_MOULD) {
-        tui_putf(y++, x, width, A_NORMAL, "   %-15s %6zu %9zu", "SP",
-                 t->moulds_of[TYPE_SP], t->count[TYPE_SP]);
-        tui_putf(y++, x, width, A_NORMAL, "   %-15s %6zu %9zu", "DP",
-                 t->moulds_of[TYPE_DP], t->count[TYPE_DP]);
+        /* "-" for counts an older Facet's run did not store */
+        char sp[24], dp[24];
+        tui_fmt_number(sp, sizeof sp, totals_count(t->moulds_of[TYPE_SP]),
+                       0, 0);
+        tui_fmt_number(dp, sizeof dp, totals_count(t->moulds_of[TYPE_DP]),
+                       0, 0);
+        tui_putf(y++, x, width, A_NORMAL, "   %-15s %6s %9zu", "SP", sp,
+                 t->count[TYPE_SP]);
+        tui_putf(y++, x, width, A_NORMAL, "   %-15s %6s %9zu", "DP", dp,
+                 t->count[TYPE_DP]);
         tui_putf(y++, x, width, A_NORMAL, "   %-15s %6s %9zu", "FP (none)",
                  "-", t->count[TYPE_FP]);
-        tui_putf(y++, x, width, A_NORMAL, "   largest family %zu, %zu of one",
-                 t->largest_family, t->singleton_families);
+        if (t->largest_family == TOTALS_UNKNOWN ||
+            t->singleton_families == TOTALS_UNKNOWN)
+            tui_putf(y++, x, width, A_NORMAL,
+                     "   families not stored (older run)");
+        else
+            tui_putf(y++, x, width, A_NORMAL,
+                     "   largest family %zu, %zu of one", t->largest_family,
+                     t->singleton_families);
         tui_putf(y++, x, width, A_NORMAL, "   (greedy: at most this many)");
     } else if (s->colour == MAP_BY_CLASS) {
         for (int c = 0; c < CLASS_COUNT; c++) {
@@ -243,6 +255,11 @@ static void map_draw(struct tui_screen *base, struct tui_app *app,
                  " mould family %d (%zu panels) | deviation %.2f mm",
                  p->mould, map_family_size(&s->panels, p->mould),
                  p->deviation * 1000);
+    else if (s->colour == MAP_BY_MOULD && p->type != TYPE_FP)
+        /* a curved panel of a run an older Facet stored (NULL) */
+        tui_putf(y + 2, 0, width, A_NORMAL,
+                 " mould family not stored (an older Facet's run) | "
+                 "deviation %.2f mm", p->deviation * 1000);
     else if (s->colour == MAP_BY_MOULD)
         tui_putf(y + 2, 0, width, A_NORMAL,
                  " no mould: an FP panel | deviation %.2f mm",

@@ -2,7 +2,9 @@
  * screen_newrun.c: New run: a form for a surface (OBJ path), its units,
  * the design space (u and v ranges, flatness threshold), the method, the
  * seed, the prices of FP, SP and DP panels, SP priced as FP, the largest
- * panel and a name; Tab completes the surface's path (directories and
+ * panel, the cost model beyond area (per panel, per metre of joint, per
+ * mould, the mould tolerance and whether mirror images share a mould)
+ * and a name; Tab completes the surface's path (directories and
  * OBJ files, complete.h). F5 (or Enter on the last field) starts the
  * study in a worker thread (job.h) and opens the run's options table,
  * which fills in live while the status line shows a progress gauge.
@@ -13,7 +15,7 @@
  * with the space narrowed around the option. The other classification
  * settings are the paper's defaults; facet optimize takes them all.
  */
-#include <ctype.h>
+#include <limits.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -26,15 +28,21 @@
 #include "input.h"
 #include "job.h"
 #include "keys.h"
+#include "core/base/numformat.h"
+#include "core/base/numparse.h"
 #include "study/study.h"
 
 enum field { F_SURFACE, F_UNITS, F_U, F_V, F_THRESHOLD, F_METHOD, F_SEED,
-             F_PRICES, F_SP_AS_FP, F_MAX_AREA, F_NAME, F_COUNT };
+             F_PRICES, F_SP_AS_FP, F_MAX_AREA, F_PANEL_COST, F_JOINT_COST,
+             F_MOULD_COST, F_MOULD_TOL, F_MOULD_MIRROR, F_NAME, F_COUNT };
 
+/* At most LABEL_WIDTH - 1 columns each. */
 static const char *const field_label[F_COUNT] = {
     "Surface (OBJ)", "Units", "U (panels)", "V (panels)", "Threshold (mm)",
     "Method", "Seed", "Prices FP,SP,DP", "SP priced as FP", "Max panel m^2",
-    "Name"};
+    "Panel cost USD/panel", "Joint cost USD/m", "Mould cost SP,DP USD",
+    "Mould tolerance (mm)", "Mirrors share moulds", "Name"};
+#define LABEL_WIDTH 22
 static const char *const field_hint[F_COUNT] = {
     "path of the OBJ file; Tab completes it (directories, .obj files)",
     "m, cm, mm, in or ft",
@@ -44,12 +52,18 @@ static const char *const field_hint[F_COUNT] = {
     "USD/m^2 of flat, single- and double-curved panels",
     "yes or no (the paper's MOGD prices SP area as FP)",
     "the largest panel that can be made (m^2): feasibility",
+    "USD per panel, whatever its type (0: area alone, the paper's model)",
+    "USD per metre of joint: panel edges once each, the outline",
+    "USD per mould: a bending jig for SP, a mould for DP (e.g. 2000,15000)",
+    "curved panels within it share a mould; empty: the flatness threshold",
+    "yes or no: a panel and its mirror image share a mould",
     "optional"};
 
 struct newrun_screen {
     struct tui_screen base;
     struct tui_input field[F_COUNT];
     int focus;
+    int top;           /* the first field shown, when they do not all fit */
     int64_t opened;    /* the run whose table was opened */
     struct tui_completion completion;  /* the last Tab's candidates */
     int listing;       /* they show under the form */
@@ -80,9 +94,20 @@ static void newrun_draw(struct tui_screen *base, struct tui_app *app,
     tui_fill(0, 0, width, tui_attr(ROLE_TITLE));
     tui_putf(0, 0, width, tui_attr(ROLE_TITLE), " New run into %s",
              app->db_path);
-    int lw = 16, fw = width - lw - 4;
-    for (int f = 0; f < F_COUNT; f++) {
-        int y = 2 + f;
+    int lw = LABEL_WIDTH, fw = width - lw - 4;
+    /* Under the fields: a blank, the hint and the estimate. On a screen
+     * too short for them all the fields scroll, the focus in view, with
+     * ^ and v in the margin where more are above or below. */
+    int shown = height - 5 < 1 ? 1 : height - 5 < F_COUNT ? height - 5
+                                                          : F_COUNT;
+    if (s->focus < s->top)
+        s->top = s->focus;
+    if (s->focus >= s->top + shown)
+        s->top = s->focus - shown + 1;
+    if (s->top > F_COUNT - shown)
+        s->top = F_COUNT - shown;
+    for (int f = s->top; f < s->top + shown; f++) {
+        int y = 2 + f - s->top;
         tui_putf(y, 1, lw, f == s->focus ? tui_attr(ROLE_HEADER) : A_NORMAL,
                  "%-*s", lw - 1, field_label[f]);
         attr_t attr = f == s->focus ? tui_attr(ROLE_SELECTION) : A_UNDERLINE;
@@ -90,7 +115,11 @@ static void newrun_draw(struct tui_screen *base, struct tui_app *app,
         size_t from = f == s->focus ? tui_input_scroll(&s->field[f], fw) : 0;
         tui_put(y, lw + 2, fw, attr, s->field[f].text + from);
     }
-    int y = 3 + F_COUNT;
+    if (s->top > 0)
+        tui_put(2, 0, 1, tui_attr(ROLE_DIM), "^");
+    if (s->top + shown < F_COUNT)
+        tui_put(1 + shown, 0, 1, tui_attr(ROLE_DIM), "v");
+    int y = 3 + shown;
     tui_put(y, 1, width - 2, tui_attr(ROLE_DIM), field_hint[s->focus]);
     char estimate[256];
     estimate_text(s, estimate, sizeof estimate);
@@ -99,6 +128,14 @@ static void newrun_draw(struct tui_screen *base, struct tui_app *app,
                      : estimate);
     if (s->listing && s->focus == F_SURFACE) {
         const struct tui_completion *c = &s->completion;
+        /* Under the estimate when three lines of choices fit there, else
+         * over the fields below the surface's (they wait while a path is
+         * chosen). */
+        if (y + 7 > height) {
+            y = 1;  /* the surface's field is on row 2 */
+            for (int row = y + 2; row < height; row++)
+                tui_fill(row, 0, width, A_NORMAL);
+        }
         int top = y + 3, colw = 1;
         for (int k = 0; k < c->kept; k++)
             if ((int)strlen(c->name[k]) + 2 > colw)
@@ -118,7 +155,7 @@ static void newrun_draw(struct tui_screen *base, struct tui_app *app,
     }
     if (app->prompt == NULL && !app->help_open && s->focus < F_COUNT) {
         size_t from = tui_input_scroll(&s->field[s->focus], fw);
-        move(2 + s->focus,
+        move(2 + s->focus - s->top,
              lw + 2 + (int)(s->field[s->focus].cursor - from));
         curs_set(1);
     }
@@ -155,6 +192,62 @@ static void complete(struct newrun_screen *s, struct tui_app *app)
 /* The form's labels in the messages of the design space's checks. */
 static const struct design_space_names form_names = {
     "U (panels)", "V (panels)", "Threshold (mm)"};
+
+/* A yes/no field f into *out: yes, y or 1; no, n, 0 or empty.
+ * FACET_EINPUT names the field by its label. */
+static int parse_yes_no(const struct newrun_screen *s, enum field f,
+                        int *out, struct facet_error *err)
+{
+    const char *yes = s->field[f].text;
+    if (strcmp(yes, "yes") == 0 || strcmp(yes, "y") == 0 ||
+        strcmp(yes, "1") == 0)
+        *out = 1;
+    else if (strcmp(yes, "no") == 0 || strcmp(yes, "n") == 0 ||
+             strcmp(yes, "0") == 0 || yes[0] == '\0')
+        *out = 0;
+    else
+        return facet_error_set(err, FACET_EINPUT,
+            "%s: '%s' is not yes or no", field_label[f], yes);
+    return FACET_OK;
+}
+
+/* The number of field f, in [min, max], into *out (numparse_number,
+ * naming the field by its label). */
+static int parse_number(const struct newrun_screen *s, enum field f,
+                        double min, double max, double *out,
+                        struct facet_error *err)
+{
+    return numparse_number(s->field[f].text, min, max, field_label[f], out,
+                           err);
+}
+
+/* The cost model beyond area and the mould settings, into params. */
+static int build_costs(const struct newrun_screen *s,
+                       struct option_params *params, struct facet_error *err)
+{
+    struct classify_options *c = &params->classify;
+    int rc = parse_number(s, F_PANEL_COST, 0, CLASSIFY_AMOUNT_MAX,
+                          &c->panel_cost, err);
+    if (rc == FACET_OK)
+        rc = parse_number(s, F_JOINT_COST, 0, CLASSIFY_AMOUNT_MAX,
+                          &c->joint_cost, err);
+    if (rc == FACET_OK)
+        rc = classify_mould_costs_parse(s->field[F_MOULD_COST].text,
+                                        field_label[F_MOULD_COST],
+                                        c->mould_cost, err);
+    if (rc != FACET_OK)
+        return rc;
+    /* empty: each option's flatness threshold, as the defaults have it */
+    params->mould_tol_given = s->field[F_MOULD_TOL].text[0] != '\0';
+    if (params->mould_tol_given) {
+        double mm;
+        if ((rc = parse_number(s, F_MOULD_TOL, 0, CLASSIFY_MOULD_TOL_MAX_MM,
+                               &mm, err)))
+            return rc;
+        params->mould_tol = mm / 1000;
+    }
+    return parse_yes_no(s, F_MOULD_MIRROR, &params->mould_mirror, err);
+}
 
 /* The request the form describes, over study_request_defaults;
  * FACET_EINPUT names the bad field by its label. */
@@ -195,33 +288,24 @@ static int build(struct newrun_screen *s, struct study_request *r,
         return rc;
     if ((rc = optimize_method_check(o->method, &o->space, &form_names, err)))
         return rc;
-    char *end;
-    const char *seed = s->field[F_SEED].text;
-    o->seed = strtoull(seed, &end, 10);
-    if (end == seed || *end != '\0' || seed[0] == '-')
+    const char *seed = s->field[F_SEED].text, *stop;
+    long long number;
+    if (numparse_whole(seed, seed + strlen(seed), 0, LLONG_MAX, &number,
+                       &stop) != NUMPARSE_OK || *stop != '\0')
         return facet_error_set(err, FACET_EINPUT,
-            "%s: '%s' is not a whole number >= 0", field_label[F_SEED], seed);
+            "%s: '%s' is not a whole number from 0 to %lld",
+            field_label[F_SEED], seed, LLONG_MAX);
+    o->seed = (uint64_t)number;
     struct classify_options *c = &o->base.classify;
     if ((rc = classify_prices_parse(s->field[F_PRICES].text,
                                     field_label[F_PRICES], c->price, err)))
         return rc;
-    const char *yes = s->field[F_SP_AS_FP].text;
-    if (strcmp(yes, "yes") == 0 || strcmp(yes, "y") == 0 ||
-        strcmp(yes, "1") == 0)
-        c->sp_as_fp = 1;
-    else if (strcmp(yes, "no") == 0 || strcmp(yes, "n") == 0 ||
-             strcmp(yes, "0") == 0 || yes[0] == '\0')
-        c->sp_as_fp = 0;
-    else
-        return facet_error_set(err, FACET_EINPUT,
-            "%s: '%s' is not yes or no", field_label[F_SP_AS_FP], yes);
-    const char *area = s->field[F_MAX_AREA].text;
-    c->max_panel_area = strtod(area, &end);
-    if (end == area || *end != '\0' || !(c->max_panel_area > 0) ||
-        !isfinite(c->max_panel_area))
-        return facet_error_set(err, FACET_EINPUT,
-            "%s: '%s' is not an area > 0 (m^2)", field_label[F_MAX_AREA],
-            area);
+    if ((rc = parse_yes_no(s, F_SP_AS_FP, &c->sp_as_fp, err)) ||
+        (rc = parse_number(s, F_MAX_AREA, CLASSIFY_PANEL_AREA_MIN,
+                           CLASSIFY_PANEL_AREA_MAX, &c->max_panel_area,
+                           err)) ||
+        (rc = build_costs(s, &o->base, err)))
+        return rc;
     return classify_check_options(c, err);
 }
 
@@ -371,6 +455,44 @@ static const struct tui_screen_class newrun_class = {
     newrun_draw, newrun_key, newrun_tick, newrun_destroy,
 };
 
+/* field f shows value so that it reads back as the same double. */
+static void set_number(struct newrun_screen *s, enum field f, double value)
+{
+    char text[NUMBER_EXACT_SIZE];
+    number_exact(text, value);
+    tui_input_set(&s->field[f], text);
+}
+
+/* The fields of the prices, the size limit and the cost model from
+ * params, the defaults' or a run's, with the mould tolerance mould_tol_mm
+ * (NaN: each option's flatness threshold, an empty field). */
+static void set_classification(struct newrun_screen *s,
+                               const struct option_params *params,
+                               double mould_tol_mm)
+{
+    const struct classify_options *c = &params->classify;
+    char text[3 * NUMBER_EXACT_SIZE + 2], n[TYPE_COUNT][NUMBER_EXACT_SIZE];
+    for (int t = 0; t < TYPE_COUNT; t++)
+        number_exact(n[t], c->price[t]);
+    snprintf(text, sizeof text, "%s,%s,%s", n[TYPE_FP], n[TYPE_SP],
+             n[TYPE_DP]);
+    tui_input_set(&s->field[F_PRICES], text);
+    tui_input_set(&s->field[F_SP_AS_FP], c->sp_as_fp ? "yes" : "no");
+    set_number(s, F_MAX_AREA, c->max_panel_area);
+    set_number(s, F_PANEL_COST, c->panel_cost);
+    set_number(s, F_JOINT_COST, c->joint_cost);
+    number_exact(n[TYPE_SP], c->mould_cost[TYPE_SP]);
+    number_exact(n[TYPE_DP], c->mould_cost[TYPE_DP]);
+    snprintf(text, sizeof text, "%s,%s", n[TYPE_SP], n[TYPE_DP]);
+    tui_input_set(&s->field[F_MOULD_COST], text);
+    if (!isnan(mould_tol_mm))
+        set_number(s, F_MOULD_TOL, mould_tol_mm);
+    else
+        tui_input_set(&s->field[F_MOULD_TOL], "");
+    tui_input_set(&s->field[F_MOULD_MIRROR],
+                  params->mould_mirror ? "yes" : "no");
+}
+
 struct tui_screen *screen_newrun_new(struct tui_app *app,
                                      const char *surface_path)
 {
@@ -384,20 +506,21 @@ struct tui_screen *screen_newrun_new(struct tui_app *app,
     struct study_request r;
     study_request_defaults(&r);
     const struct design_space *d = &r.settings.space;
-    const struct classify_options *c = &r.settings.base.classify;
-    char u[32], v[32], t[32], seed[32], prices[96], area[32];
+    char u[32], v[32], t[32], seed[32];
     snprintf(u, sizeof u, "%d:%d", d->u_min, d->u_max);
     snprintf(v, sizeof v, "%d:%d", d->v_min, d->v_max);
     snprintf(t, sizeof t, "%g", d->t_min_mm);
     snprintf(seed, sizeof seed, "%llu", (unsigned long long)r.settings.seed);
-    snprintf(prices, sizeof prices, "%g,%g,%g", c->price[TYPE_FP],
-             c->price[TYPE_SP], c->price[TYPE_DP]);
-    snprintf(area, sizeof area, "%g", c->max_panel_area);
     const char *const defaults[F_COUNT] = {
-        "", mesh_units_name(r.mesh.units), u, v, t, "auto", seed, prices,
-        c->sp_as_fp ? "yes" : "no", area, r.name};
+        [F_SURFACE] = "", [F_UNITS] = mesh_units_name(r.mesh.units),
+        [F_U] = u, [F_V] = v, [F_THRESHOLD] = t, [F_METHOD] = "auto",
+        [F_SEED] = seed, [F_NAME] = r.name};
     for (int f = 0; f < F_COUNT; f++)
-        tui_input_set(&s->field[f], defaults[f]);
+        if (defaults[f] != NULL)
+            tui_input_set(&s->field[f], defaults[f]);
+    set_classification(s, &r.settings.base,
+                       r.settings.base.mould_tol_given
+                           ? r.settings.base.mould_tol * 1000 : NAN);
     measure_rate(s, app, surface_path);
     if (surface_path) {
         tui_input_set(&s->field[F_SURFACE], surface_path);
@@ -436,17 +559,24 @@ struct tui_screen *screen_newrun_like(struct tui_app *app,
     tui_input_set(&s->field[F_METHOD], "auto");
     snprintf(text, sizeof text, "%llu", (unsigned long long)run->seed);
     tui_input_set(&s->field[F_SEED], text);
-    snprintf(text, sizeof text, "%g,%g,%g", run->price[TYPE_FP],
-             run->price[TYPE_SP], run->price[TYPE_DP]);
-    tui_input_set(&s->field[F_PRICES], text);
-    tui_input_set(&s->field[F_SP_AS_FP], run->sp_as_fp ? "yes" : "no");
-    snprintf(text, sizeof text, "%g", run->max_panel_area);
-    tui_input_set(&s->field[F_MAX_AREA], text);
+    /* the run's classification and cost model as study_settings reads
+     * them back, the mould tolerance in the run's own millimetres */
+    struct optimize_settings settings;
+    struct mesh_options mesh;
+    int flip;
+    struct facet_error err;
+    int rc = study_settings(run, &settings, &mesh, &flip, &err);
+    if (rc == FACET_OK)
+        set_classification(s, &settings.base, run->mould_tol_mm);
     snprintf(text, sizeof text, "like No. %lld of run %lld",
              (long long)option->number, (long long)run->id);
     tui_input_set(&s->field[F_NAME], text);
     s->focus = F_U;
-    tui_status(app, "like No. %lld: U, V and t narrowed around it; F5 "
-               "starts", (long long)option->number);
+    if (rc != FACET_OK)
+        tui_error(app, "like No. %lld: %s; prices and costs are the "
+                  "defaults'", (long long)option->number, err.message);
+    else
+        tui_status(app, "like No. %lld: U, V and t narrowed around it; F5 "
+                   "starts", (long long)option->number);
     return base;
 }

@@ -1,5 +1,6 @@
 /*
- * numparse.c: the decimal number parser of the OBJ loader. See numparse.h.
+ * numparse.c: the decimal number parser of the OBJ loader, and the
+ * single-number parser of the CLI and the forms. See numparse.h.
  *
  * The digits are gathered into a 64-bit integer mantissa (at most 19
  * significant digits; later digits only move the decimal exponent) and the
@@ -216,4 +217,21 @@ int numparse_text(const char *text, double *value)
     if (rc == NUMPARSE_OK && stop != end)
         return NUMPARSE_SYNTAX;
     return rc;
+}
+
+int numparse_number(const char *text, double min, double max,
+                    const char *what, double *out, struct facet_error *err)
+{
+    /* Decimal as written: 0x10, nan and inf are not numbers here. */
+    double number;
+    int rc = numparse_text(text, &number);
+    if (rc == NUMPARSE_SYNTAX)
+        return facet_error_set(err, FACET_EINPUT,
+            "%s: '%s' is not a number", what, text);
+    /* The text as given, not %g of it: 1000000000.5 is not 1e+09. */
+    if (rc == NUMPARSE_RANGE || !(number >= min && number <= max))
+        return facet_error_set(err, FACET_EINPUT,
+            "%s: %s is out of range (%g to %g)", what, text, min, max);
+    *out = number;
+    return FACET_OK;
 }

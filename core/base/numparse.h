@@ -1,7 +1,7 @@
 /*
- * numparse.h: reading decimal numbers out of OBJ text and out of the
- * command line, strictly: a number is read as written or refused, never
- * wrapped, rounded to an integer or read in another base.
+ * numparse.h: reading decimal numbers out of OBJ text, the command line
+ * and the TUI's forms, strictly: a number is read as written or refused,
+ * never wrapped, rounded to an integer or read in another base.
  *
  * The OBJ loader spends most of its time here, so this is a small parser of
  * its own rather than strtod: it needs no NUL terminator (it stops at an end
@@ -16,6 +16,8 @@
  */
 #ifndef FACET_NUMPARSE_H
 #define FACET_NUMPARSE_H
+
+#include "core/base/error.h"
 
 enum {
     NUMPARSE_OK = 0,
@@ -46,5 +48,16 @@ int numparse_whole(const char *text, const char *end, long long min,
  * NUMPARSE_OK, NUMPARSE_SYNTAX (also for anything after the number) or
  * NUMPARSE_RANGE. */
 int numparse_text(const char *text, double *value);
+
+/* Parses all of text, a value the user gave for the setting what (the
+ * caller's name for it: a command-line flag, a form's label), as one
+ * finite number in [min, max] into *out (numparse_text's syntax): the one
+ * single-number parser of the CLI's flags and the TUI's form fields.
+ * Returns FACET_OK, or FACET_EINPUT with a message that starts with what
+ * ("Joint cost USD/m: 'abc' is not a number", "--joint-cost: -1 is out
+ * of range (0 to 1e+09)", the text as given); a number too large for a
+ * double (1e999) is out of range too. *out is untouched on an error. */
+int numparse_number(const char *text, double min, double max,
+                    const char *what, double *out, struct facet_error *err);
 
 #endif

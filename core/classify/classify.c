@@ -11,6 +11,11 @@
 #include "core/base/exact_sum.h"
 #include "core/base/numparse.h"
 
+double totals_count(size_t count)
+{
+    return count == TOTALS_UNKNOWN ? NAN : (double)count;
+}
+
 void classify_defaults(struct classify_options *options)
 {
     options->threshold = 0.003;
@@ -252,8 +257,8 @@ int classify_check_options(const struct classify_options *options,
     return FACET_OK;
 }
 
-/* Parses n comma-separated amounts (finite, 0 to 1e9) of text into out.
- * Returns 0, or -1 when text is not that. */
+/* Parses n comma-separated amounts (finite, 0 to CLASSIFY_AMOUNT_MAX) of
+ * text into out. Returns 0, or -1 when text is not that. */
 static int amounts_parse(const char *text, double *out, int n)
 {
     const char *p = text;
@@ -263,7 +268,8 @@ static int amounts_parse(const char *text, double *out, int n)
             end = p;
         while (*end == ' ')
             end++;
-        if (end == p || !isfinite(out[k]) || out[k] < 0 || out[k] > 1e9 ||
+        if (end == p || !isfinite(out[k]) || out[k] < 0 ||
+            out[k] > CLASSIFY_AMOUNT_MAX ||
             *end != (k + 1 < n ? ',' : '\0'))
             return -1;
         p = end + 1;

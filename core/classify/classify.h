@@ -28,6 +28,7 @@
 #define FACET_CLASSIFY_H
 
 #include <stddef.h>
+#include <stdint.h>
 
 #include "core/base/error.h"
 #include "core/panel/panel.h"
@@ -93,6 +94,16 @@ struct option_totals {
     double mould_cost;               /* moulds per type x mould cost */
 };
 
+/* A count of struct option_totals that is not known: what the store reads
+ * where its file holds NULL, for an option stored before Facet counted it
+ * (the mould counts of a run stored before schema v5). A length, area or
+ * cost not known is NaN. Never a number to show or sum: a table shows
+ * "-", JSON null, CSV an empty field (totals_count turns it into NaN). */
+#define TOTALS_UNKNOWN SIZE_MAX
+
+/* count as a number: NaN when it is TOTALS_UNKNOWN. */
+double totals_count(size_t count);
+
 /* The class of curvatures k1 >= k2 (1/m) with zero tolerance eps (1/m). */
 enum panel_class classify_curvature(double k1, double k2, double eps);
 
@@ -142,16 +153,26 @@ void classify_panels(struct panelization *p,
 void classify_price_terms(const struct classify_options *options,
                           struct option_totals *totals);
 
+/* The ranges of the settings a user gives, the same in the CLI's flags
+ * and the New-run form's fields (numparse_number): */
+#define CLASSIFY_AMOUNT_MAX 1e9        /* USD: a price, a cost term; the
+                                          least is 0 */
+#define CLASSIFY_PANEL_AREA_MIN 1e-9   /* m^2: the panel size limit */
+#define CLASSIFY_PANEL_AREA_MAX 1e9
+#define CLASSIFY_MOULD_TOL_MAX_MM 1e6  /* mm: the mould tolerance; the
+                                          least is 0 */
+
 /* Parses "SP,DP", the cost of a mould of each curved type (USD, finite, 0
- * to 1e9), into mould_cost[TYPE_SP] and [TYPE_DP]; [TYPE_FP] is set to 0.
- * FACET_EINPUT names the field what and the text. */
+ * to CLASSIFY_AMOUNT_MAX), into mould_cost[TYPE_SP] and [TYPE_DP];
+ * [TYPE_FP] is set to 0. FACET_EINPUT names the field what and the
+ * text. */
 int classify_mould_costs_parse(const char *text, const char *what,
                                double mould_cost[TYPE_COUNT],
                                struct facet_error *err);
 
 /* Parses "701,766,1518", the prices of FP, SP and DP (USD/m^2, finite,
- * 0 to 1e9), into price. FACET_EINPUT names the field what (the
- * caller's name for it) and the text. */
+ * 0 to CLASSIFY_AMOUNT_MAX), into price. FACET_EINPUT names the field
+ * what (the caller's name for it) and the text. */
 int classify_prices_parse(const char *text, const char *what,
                           double price[TYPE_COUNT], struct facet_error *err);
 

@@ -8,6 +8,15 @@
 #include "core/out/json.h"
 #include "core/base/numformat.h"
 
+/* A count, null when it is not known (TOTALS_UNKNOWN). */
+static void json_count(struct json_writer *w, size_t count)
+{
+    if (count == TOTALS_UNKNOWN)
+        json_null(w);
+    else
+        json_integer(w, (long long)count);
+}
+
 static void json_totals(struct json_writer *w,
                         const struct option_totals *t,
                         size_t fp_over_threshold)
@@ -28,15 +37,11 @@ static void json_totals(struct json_writer *w,
     json_key(w, "p_dist");         json_number(w, t->p_dist);
     json_key(w, "feasible");       json_bool(w, t->feasible);
     json_key(w, "joint_length");   json_number(w, t->joint_length);
-    json_key(w, "moulds");         json_integer(w, (long long)t->moulds);
-    json_key(w, "sp_moulds");
-    json_integer(w, (long long)t->moulds_of[TYPE_SP]);
-    json_key(w, "dp_moulds");
-    json_integer(w, (long long)t->moulds_of[TYPE_DP]);
-    json_key(w, "largest_family");
-    json_integer(w, (long long)t->largest_family);
-    json_key(w, "single_moulds");
-    json_integer(w, (long long)t->singleton_families);
+    json_key(w, "moulds");         json_count(w, t->moulds);
+    json_key(w, "sp_moulds");      json_count(w, t->moulds_of[TYPE_SP]);
+    json_key(w, "dp_moulds");      json_count(w, t->moulds_of[TYPE_DP]);
+    json_key(w, "largest_family"); json_count(w, t->largest_family);
+    json_key(w, "single_moulds");  json_count(w, t->singleton_families);
     json_key(w, "area_cost");      json_number(w, t->area_cost);
     json_key(w, "panel_cost");     json_number(w, t->panel_cost);
     json_key(w, "joint_cost");     json_number(w, t->joint_cost);
@@ -203,9 +208,11 @@ void report_totals_csv(FILE *out, const struct option_totals *t)
     csv_number(out, t->p_dist);
     fprintf(out, ",%d", t->feasible != 0);
     csv_number(out, t->joint_length);
-    fprintf(out, ",%zu,%zu,%zu,%zu,%zu", t->moulds, t->moulds_of[TYPE_SP],
-            t->moulds_of[TYPE_DP], t->largest_family,
-            t->singleton_families);
+    csv_number(out, totals_count(t->moulds));
+    csv_number(out, totals_count(t->moulds_of[TYPE_SP]));
+    csv_number(out, totals_count(t->moulds_of[TYPE_DP]));
+    csv_number(out, totals_count(t->largest_family));
+    csv_number(out, totals_count(t->singleton_families));
     csv_number(out, t->area_cost);
     csv_number(out, t->panel_cost);
     csv_number(out, t->joint_cost);

@@ -32,9 +32,9 @@ double metric_value(const struct option_totals *t, enum metric metric)
     case METRIC_MAX_DEVIATION:  return t->max_deviation;
     case METRIC_MAX_PANEL_AREA: return t->max_panel_area;
     case METRIC_P_DIST:         return t->p_dist;
-    case METRIC_MOULDS:         return (double)t->moulds;
-    case METRIC_SP_MOULDS:      return (double)t->moulds_of[TYPE_SP];
-    case METRIC_DP_MOULDS:      return (double)t->moulds_of[TYPE_DP];
+    case METRIC_MOULDS:         return totals_count(t->moulds);
+    case METRIC_SP_MOULDS:      return totals_count(t->moulds_of[TYPE_SP]);
+    case METRIC_DP_MOULDS:      return totals_count(t->moulds_of[TYPE_DP]);
     case METRIC_JOINT_LENGTH:   return t->joint_length;
     default:                    return 0;
     }

@@ -28,15 +28,6 @@ check_slow() {
     check "$@"
     POLLS=$polls
 }
-# check_not NAME PATTERN: the screen (already settled) lacks PATTERN.
-check_not() {
-    if screen | grep -qE -- "$2"; then
-        echo "not ok - $1 (screen has: $2)"
-        screen | sed 's/^/  screen: /'
-    else
-        pass "$1"
-    fi
-}
 # --- 80x24: the whole tour ---
 start 80 24 -- t.db
 check "runs screen lists the run" '^ +1 done +exhaustive +75 +3 .*roof\.obj'

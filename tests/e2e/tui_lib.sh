@@ -59,6 +59,27 @@ check() {
         screen | sed 's/^/  screen: /'
     fi
 }
+# check_not NAME PATTERN: passes when the screen (already settled) lacks
+# PATTERN.
+check_not() {
+    if screen | grep -qE -- "$2"; then
+        echo "not ok - $1 (screen has: $2)"
+        screen | sed 's/^/  screen: /'
+    else
+        pass "$1"
+    fi
+}
+# check_line NAME N PATTERN: line N of the screen comes to match PATTERN.
+check_line() {
+    local i=0
+    while [ $i -lt $POLLS ]; do
+        if screen | sed -n "$2p" | grep -qE -- "$3"; then pass "$1"; return; fi
+        sleep 0.05
+        i=$((i + 1))
+    done
+    echo "not ok - $1 (line $2 lacks: $3)"
+    screen | sed 's/^/  screen: /'
+}
 # check_exit NAME: facet tui ended with status 0, nothing on stderr, and
 # the terminal is out of the alternate screen.
 check_exit() {

@@ -33,17 +33,6 @@ check_slow() {
     check "$@"
     POLLS=$polls
 }
-# check_line NAME N PATTERN: line N of the screen comes to match PATTERN.
-check_line() {
-    local i=0
-    while [ $i -lt $POLLS ]; do
-        if screen | sed -n "$2p" | grep -qE -- "$3"; then pass "$1"; return; fi
-        sleep 0.05
-        i=$((i + 1))
-    done
-    echo "not ok - $1 (line $2 lacks: $3)"
-    screen | sed 's/^/  screen: /'
-}
 # stays NAME PATTERN: the screen matches PATTERN at each of 40 polls.
 stays() {
     local i=0
@@ -60,14 +49,6 @@ stays() {
 }
 # grouped N: N with thousands separators, as the table writes it.
 grouped() { echo "$1" | sed -e ':a' -e 's/\B[0-9]\{3\}\>/,&/' -e 'ta'; }
-check_not() {
-    if screen | grep -qE -- "$2"; then
-        echo "not ok - $1 (screen has: $2)"
-        screen | sed 's/^/  screen: /'
-    else
-        pass "$1"
-    fi
-}
 # bytes STRING: sends STRING's bytes to the pane as if typed (printf
 # escapes), for sequences tmux has no key name for.
 bytes() { keys -H $(printf "$1" | od -An -tx1); }

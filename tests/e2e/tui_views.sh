@@ -30,15 +30,6 @@ rows=$(q "select nv from options where run = 1 and knee")
 cols=$(q "select nu from options where run = 1 and knee")
 # thousands separators, as the workbench writes money
 money() { python3 -c "import sys; print(f'{round(float(sys.argv[1])):,}')" "$1"; }
-# check_not NAME PATTERN: the screen (already settled) lacks PATTERN.
-check_not() {
-    if screen | grep -qE -- "$2"; then
-        echo "not ok - $1 (screen has: $2)"
-        screen | sed 's/^/  screen: /'
-    else
-        pass "$1"
-    fi
-}
 # check_file NAME TEST...: passes when the test command succeeds.
 check_file() {
     local name=$1

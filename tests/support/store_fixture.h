@@ -1,7 +1,7 @@
 /*
  * store_fixture.h: the least a run needs to be stored, for tests that
- * store options of a run no study made, and a database file removed with
- * its side files.
+ * store options of a run no study made, a file taken back to an older
+ * schema, and a database file removed with its side files.
  *
  * Test support, not part of Facet: tests/ links it, the binary does not.
  */
@@ -13,6 +13,37 @@
 /* Fills *run with a run of x.obj (m, exhaustive, extremes, objective
  * cost, a 1 x 1 grid, one job) that store_run_create accepts. */
 void store_fixture_run(struct run_info *run);
+
+/* SQL that takes a current file back to schema version 5: the columns
+ * the shards' step (version 6) added, dropped (set user_version after
+ * it). */
+#define STORE_FIXTURE_UNDO_V6_SHARDS \
+    "ALTER TABLE runs DROP COLUMN shard_index;" \
+    "ALTER TABLE runs DROP COLUMN shard_count;" \
+    "ALTER TABLE runs DROP COLUMN shards_merged;"
+
+/* SQL that takes a current file back to schema version 4, as a Facet
+ * before the cost model left it: the columns and indexes versions 5 and
+ * later added, dropped (set user_version after it). */
+#define STORE_FIXTURE_UNDO_V5 STORE_FIXTURE_UNDO_V6_SHARDS \
+    "DROP INDEX options_by_moulds; DROP INDEX options_by_joint_length;" \
+    "ALTER TABLE runs DROP COLUMN price_panel;" \
+    "ALTER TABLE runs DROP COLUMN price_joint;" \
+    "ALTER TABLE runs DROP COLUMN price_sp_mould;" \
+    "ALTER TABLE runs DROP COLUMN price_dp_mould;" \
+    "ALTER TABLE runs DROP COLUMN mould_tol_mm;" \
+    "ALTER TABLE runs DROP COLUMN mould_mirror;" \
+    "ALTER TABLE options DROP COLUMN joint_length;" \
+    "ALTER TABLE options DROP COLUMN moulds;" \
+    "ALTER TABLE options DROP COLUMN sp_moulds;" \
+    "ALTER TABLE options DROP COLUMN dp_moulds;" \
+    "ALTER TABLE options DROP COLUMN largest_family;" \
+    "ALTER TABLE options DROP COLUMN single_moulds;" \
+    "ALTER TABLE options DROP COLUMN area_cost;" \
+    "ALTER TABLE options DROP COLUMN panel_cost;" \
+    "ALTER TABLE options DROP COLUMN joint_cost;" \
+    "ALTER TABLE options DROP COLUMN mould_cost;" \
+    "ALTER TABLE panels DROP COLUMN mould_family;"
 
 /* Removes the database at path and its -wal and -shm files, where
  * there are any. */

@@ -70,7 +70,6 @@ static void test_numbers(void **state)
 {
     (void)state;
     long n;
-    double x;
     struct facet_error err;
     assert_int_equal(args_int("37", 1, 100, "--u", &n, &err), FACET_OK);
     assert_int_equal(n, 37);
@@ -78,13 +77,6 @@ static void test_numbers(void **state)
     assert_int_equal(args_int("3x", 1, 100, "--u", &n, &err), FACET_EINPUT);
     assert_int_equal(args_int("99999999999999999999", 1, 100, "--u", &n,
                               &err), FACET_EINPUT);
-    assert_int_equal(args_double("3.5", 0, 10, "--t", &x, &err), FACET_OK);
-    assert_true(x == 3.5);
-    assert_int_equal(args_double("nan", 0, 10, "--t", &x, &err),
-                     FACET_EINPUT);
-    assert_int_equal(args_double("inf", 0, 1e300, "--t", &x, &err),
-                     FACET_EINPUT);
-    assert_int_equal(args_double("-1", 0, 10, "--t", &x, &err), FACET_EINPUT);
 }
 
 /* A command's own table and a shared one parse as one: each flag lands

@@ -1,7 +1,9 @@
 /*
  * test_numparse.c: the OBJ number parser against strtod: exact for short
  * decimals, within one ulp on a million random strings of many shapes, and
- * strict about what is not a number.
+ * strict about what is not a number; the single-number parser of the CLI
+ * and the forms: strtod's value for what it takes, its range and finite
+ * values only, and every message naming the field it was given.
  */
 #include <setjmp.h>
 #include <stdarg.h>
@@ -185,6 +187,77 @@ static void test_million_random_within_one_ulp(void **state)
     assert_true(exact * 1000 >= total * 999);
 }
 
+/* What numparse_number takes is strtod's number, whatever the field's
+ * name; the bounds themselves are inside the range. */
+static void test_number_takes(void **state)
+{
+    (void)state;
+    const char *cases[] = {"0", "3.5", "1e9", "0.001", "-0", "7.", ".25",
+                           "999999999.5", "1E3"};
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        double value = -1;
+        struct facet_error err;
+        assert_int_equal(numparse_number(cases[i], 0, 1e9, "Panel cost",
+                                         &value, &err), FACET_OK);
+        assert_true(value == strtod(cases[i], NULL));
+    }
+    double value;
+    struct facet_error err;
+    assert_int_equal(numparse_number("-2.5", -2.5, -2.5, "x", &value, &err),
+                     FACET_OK);
+    assert_true(value == -2.5);
+}
+
+/* Everything numparse_number refuses: not a number (words, blanks, a
+ * trailing unit, hexadecimal, nan, inf, several numbers), a number
+ * outside the range, one too large for a double. Each message starts with
+ * the field's name as given, quotes or states the value, and *out is
+ * left as it was. */
+static void test_number_refuses(void **state)
+{
+    (void)state;
+    static const struct {
+        const char *text, *says;
+    } cases[] = {
+        {"", "'' is not a number"},
+        {"abc", "'abc' is not a number"},
+        {" 5", "' 5' is not a number"},
+        {"5 ", "'5 ' is not a number"},
+        {"5mm", "'5mm' is not a number"},
+        {"0x10", "'0x10' is not a number"},
+        {"nan", "'nan' is not a number"},
+        {"inf", "'inf' is not a number"},
+        {"-infinity", "'-infinity' is not a number"},
+        {"1,2", "'1,2' is not a number"},
+        {"-5", "-5 is out of range (0 to 1e+09)"},
+        {"1000000000.5", "1000000000.5 is out of range (0 to 1e+09)"},
+        {"1e999", "1e999 is out of range (0 to 1e+09)"},
+        {"-1e999", "-1e999 is out of range (0 to 1e+09)"},
+    };
+    const char *const names[] = {"Joint cost USD/m", "--joint-cost"};
+    for (size_t n = 0; n < 2; n++)
+        for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+            double value = 42;
+            struct facet_error err;
+            int rc = numparse_number(cases[i].text, 0, 1e9, names[n],
+                                     &value, &err);
+            char want[200];
+            snprintf(want, sizeof want, "%s: %s", names[n], cases[i].says);
+            if (rc != FACET_EINPUT || strcmp(err.message, want) != 0)
+                fail_msg("\"%s\": rc %d, \"%s\", want \"%s\"",
+                         cases[i].text, rc, err.message, want);
+            assert_int_equal(err.code, FACET_EINPUT);
+            assert_true(value == 42);
+        }
+    /* Subnormal and tiny numbers are numbers: refused by range alone. */
+    double value = 42;
+    struct facet_error err;
+    assert_int_equal(numparse_number("1e-400", 1e-9, 1, "Max panel m^2",
+                                     &value, &err), FACET_EINPUT);
+    assert_string_equal(err.message,
+                        "Max panel m^2: 1e-400 is out of range (1e-09 to 1)");
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -192,6 +265,8 @@ int main(void)
         cmocka_unit_test(test_stops_at_end_pointer),
         cmocka_unit_test(test_rejects),
         cmocka_unit_test(test_million_random_within_one_ulp),
+        cmocka_unit_test(test_number_takes),
+        cmocka_unit_test(test_number_refuses),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

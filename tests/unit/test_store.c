@@ -618,35 +618,6 @@ static const char *older_file(const char *name, const char *statements,
     return path;
 }
 
-/* SQL that takes a current file back to schema version 5: the columns
- * the shards' step (version 6) added, dropped. */
-#define UNDO_V6_SHARDS \
-    "ALTER TABLE runs DROP COLUMN shard_index;" \
-    "ALTER TABLE runs DROP COLUMN shard_count;" \
-    "ALTER TABLE runs DROP COLUMN shards_merged;"
-
-/* SQL that takes a current file back to schema version 4: the columns and
- * indexes version 5 added, dropped. */
-#define UNDO_V5 UNDO_V6_SHARDS \
-    "DROP INDEX options_by_moulds; DROP INDEX options_by_joint_length;" \
-    "ALTER TABLE runs DROP COLUMN price_panel;" \
-    "ALTER TABLE runs DROP COLUMN price_joint;" \
-    "ALTER TABLE runs DROP COLUMN price_sp_mould;" \
-    "ALTER TABLE runs DROP COLUMN price_dp_mould;" \
-    "ALTER TABLE runs DROP COLUMN mould_tol_mm;" \
-    "ALTER TABLE runs DROP COLUMN mould_mirror;" \
-    "ALTER TABLE options DROP COLUMN joint_length;" \
-    "ALTER TABLE options DROP COLUMN moulds;" \
-    "ALTER TABLE options DROP COLUMN sp_moulds;" \
-    "ALTER TABLE options DROP COLUMN dp_moulds;" \
-    "ALTER TABLE options DROP COLUMN largest_family;" \
-    "ALTER TABLE options DROP COLUMN single_moulds;" \
-    "ALTER TABLE options DROP COLUMN area_cost;" \
-    "ALTER TABLE options DROP COLUMN panel_cost;" \
-    "ALTER TABLE options DROP COLUMN joint_cost;" \
-    "ALTER TABLE options DROP COLUMN mould_cost;" \
-    "ALTER TABLE panels DROP COLUMN mould_family;"
-
 /* A file of schema version 1 (no views, no indexes, no runs.uv) is
  * brought up to the current version (6) when opened, and keeps its runs. */
 static void test_migrates_older_schema(void **state)
@@ -654,7 +625,7 @@ static void test_migrates_older_schema(void **state)
     (void)state;
     struct study_request request;
     int64_t run;
-    const char *path = older_file("migrate", UNDO_V5 "DROP VIEW pareto; DROP VIEW run_summary;"
+    const char *path = older_file("migrate", STORE_FIXTURE_UNDO_V5 "DROP VIEW pareto; DROP VIEW run_summary;"
               "DROP INDEX options_by_rank; DROP INDEX options_by_cost;"
               "DROP INDEX options_by_planarity; DROP INDEX options_by_dp_area;"
               "DROP INDEX options_by_fp_area; DROP INDEX options_by_sp_area;"
@@ -693,7 +664,7 @@ static void test_migrates_v3(void **state)
     (void)state;
     struct study_request request;
     int64_t old;
-    const char *path = older_file("migrate3", UNDO_V5 "ALTER TABLE runs DROP COLUMN uv; ALTER TABLE runs DROP COLUMN warnings; ALTER TABLE runs DROP COLUMN store_panels;"
+    const char *path = older_file("migrate3", STORE_FIXTURE_UNDO_V5 "ALTER TABLE runs DROP COLUMN uv; ALTER TABLE runs DROP COLUMN warnings; ALTER TABLE runs DROP COLUMN store_panels;"
               " PRAGMA user_version = 3;", &old, &request);
     struct facet_error err;
     struct store *store;
@@ -739,7 +710,7 @@ static void test_migrates_v5_shards(void **state)
     (void)state;
     struct study_request request;
     int64_t old;
-    const char *path = older_file("migrate5", UNDO_V6_SHARDS
+    const char *path = older_file("migrate5", STORE_FIXTURE_UNDO_V6_SHARDS
                                   " PRAGMA user_version = 5;", &old,
                                   &request);
     struct facet_error err;
@@ -927,7 +898,7 @@ static void test_migrates_v4(void **state)
     (void)state;
     struct study_request request;
     int64_t old;
-    const char *path = older_file("migrate4", UNDO_V5 " PRAGMA user_version = 4;",
+    const char *path = older_file("migrate4", STORE_FIXTURE_UNDO_V5 " PRAGMA user_version = 4;",
                                   &old, &request);
     struct facet_error err;
     struct store *store;

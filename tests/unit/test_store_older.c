@@ -1,0 +1,346 @@
+/*
+ * test_store_older.c: the options of a run an older Facet stored, before
+ * schema v5 counted moulds and measured joints, read as not known, never
+ * as 0. The file is made here: options with mould counts, joints and cost
+ * terms stored, then the file taken back to schema v4 with SQLite
+ * (STORE_FIXTURE_UNDO_V5) and opened again, which migrates it and leaves
+ * the new columns NULL. The truth is SQLite's NULL: every reading path
+ * (the row, the registry, the CLI's table, show's text, the JSON, the
+ * workbench's cells and legend figures) says "-" or null, a sort by a
+ * column with no values keeps SQL's order, and writing such a row back
+ * keeps NULL.
+ */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <cmocka.h>
+
+#include <math.h>
+#include <sqlite3.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "cli/option_table.h"
+#include "cli/option_text.h"
+#include "core/out/report.h"
+#include "core/search/metric.h"
+#include "store/store.h"
+#include "tests/support/store_fixture.h"
+#include "tui/format.h"
+
+static char path[64];
+
+static void sql(const char *statements)
+{
+    sqlite3 *db;
+    assert_int_equal(sqlite3_open(path, &db), SQLITE_OK);
+    char *message = NULL;
+    if (sqlite3_exec(db, statements, NULL, NULL, &message) != SQLITE_OK)
+        fail_msg("%s", message);
+    sqlite3_close(db);
+}
+
+static int64_t sql_int(const char *query)
+{
+    sqlite3 *db;
+    sqlite3_stmt *s;
+    assert_int_equal(sqlite3_open(path, &db), SQLITE_OK);
+    assert_int_equal(sqlite3_prepare_v2(db, query, -1, &s, NULL), SQLITE_OK);
+    assert_int_equal(sqlite3_step(s), SQLITE_ROW);
+    int64_t value = sqlite3_column_int64(s, 0);
+    sqlite3_finalize(s);
+    sqlite3_close(db);
+    return value;
+}
+
+/* Five options of run 1 with every v5 figure non-zero (so a 0 read back
+ * is wrong, not a coincidence), stored at the current schema, the file
+ * then taken back to v4 and opened again: the store, migrated. */
+static struct store *older_store(void)
+{
+    snprintf(path, sizeof path, "/tmp/facet_test_older_%d.db", (int)getpid());
+    store_fixture_remove(path);
+    struct facet_error err;
+    struct store *store;
+    assert_int_equal(store_open(path, &store, &err), FACET_OK);
+    struct run_info run;
+    store_fixture_run(&run);
+    assert_int_equal(store_run_create(store, &run, &err), FACET_OK);
+    struct option_row rows[5];
+    memset(rows, 0, sizeof rows);
+    for (int k = 0; k < 5; k++) {
+        struct option_totals *t = &rows[k].totals;
+        rows[k].number = k + 1;
+        rows[k].nu = rows[k].nv = 4 + k;
+        rows[k].threshold_mm = 3;
+        t->panels = t->count[TYPE_DP] = (size_t)(16 + k);
+        t->area = t->area_of[TYPE_DP] = 100;
+        t->cost_of[TYPE_DP] = t->area_cost = 151800 - k;
+        t->moulds = 7;
+        t->moulds_of[TYPE_SP] = 3;
+        t->moulds_of[TYPE_DP] = 4;
+        t->largest_family = 5;
+        t->singleton_families = 2;
+        t->joint_length = 12.5;
+        t->panel_cost = t->joint_cost = t->mould_cost = 10;
+        t->cost = t->area_cost + 30;
+        t->feasible = 1;
+    }
+    assert_int_equal(store_options_put(store, run.id, rows, 5, &err),
+                     FACET_OK);
+    store_close(store);
+    sql(STORE_FIXTURE_UNDO_V5 "PRAGMA user_version = 4;");
+    assert_int_equal(store_open(path, &store, &err), FACET_OK);
+    return store;
+}
+
+static int setup(void **state)
+{
+    *state = older_store();
+    return 0;
+}
+
+static int teardown(void **state)
+{
+    store_close(*state);  /* NULL: closed by the test */
+    store_fixture_remove(path);
+    return 0;
+}
+
+/* The row holds TOTALS_UNKNOWN and NaN, and every column of the registry
+ * that SQLite holds as NULL reads as NaN (the truth: SQLite's NULL). */
+static void test_row_and_registry(void **state)
+{
+    struct store *store = *state;
+    struct facet_error err;
+    struct option_row *rows;
+    size_t n;
+    assert_int_equal(store_options_get(store, 1, &rows, &n, &err), FACET_OK);
+    assert_int_equal(n, 5);
+    const struct option_totals *t = &rows[0].totals;
+    assert_true(t->moulds == TOTALS_UNKNOWN);
+    assert_true(t->moulds_of[TYPE_SP] == TOTALS_UNKNOWN);
+    assert_true(t->moulds_of[TYPE_DP] == TOTALS_UNKNOWN);
+    assert_true(t->largest_family == TOTALS_UNKNOWN);
+    assert_true(t->singleton_families == TOTALS_UNKNOWN);
+    assert_true(isnan(t->joint_length) && isnan(t->area_cost));
+    assert_true(t->panels == 16 && t->cost == 151830);
+    int nulls = 0;
+    for (int k = 0; k < STORE_OPTION_COLUMNS; k++) {
+        const struct option_column *c = &store_option_columns[k];
+        if (c->writer != WRITTEN_WITH_OPTION)
+            continue;
+        char query[256];
+        snprintf(query, sizeof query, "SELECT %s IS NULL FROM options"
+                 " WHERE run = 1 AND number = 1", c->name);
+        int null = (int)sql_int(query);
+        double value = store_option_column_value(c, &rows[0]);
+        if (null != (isnan(value) != 0))
+            fail_msg("%s: NULL %d in the file, %g read", c->name, null,
+                     value);
+        nulls += null;
+        char text[64];
+        store_option_text(text, sizeof text, c, value, c->decimals);
+        if (null)
+            assert_string_equal(text, "-");
+    }
+    assert_int_equal(nulls, 10);  /* the v5 columns */
+    assert_true(isnan(metric_value(t, METRIC_MOULDS)));
+    assert_true(isnan(metric_value(t, METRIC_DP_MOULDS)));
+    free(rows);
+}
+
+/* What the CLI and the workbench show: "-" in the options table and the
+ * workbench's cells, "- (not stored ...)" in show's totals (no "nan", no
+ * 0 moulds), null in the JSON of show and export. */
+static void test_display(void **state)
+{
+    struct store *store = *state;
+    struct facet_error err;
+    struct option_row row;
+    assert_int_equal(store_option_get(store, 1, 2, &row, &err), FACET_OK);
+
+    const struct option_table_column cli[] = {
+        {"moulds", 8, 1}, {"joint_length", 8, 1}, {"dp_moulds", 8, 1}};
+    char text[3][OPTION_TABLE_CELL];
+    const char *cell[3];
+    option_table_cells(cli, 3, 1, &row, text, cell);
+    for (int k = 0; k < 3; k++)
+        assert_string_equal(cell[k], "-");
+
+    for (int k = 0; k < tui_option_column_count; k++) {
+        const struct tui_column *c = &tui_option_columns[k];
+        if (c->column == NULL || (strcmp(c->column, "moulds") != 0 &&
+                                  strstr(c->column, "_moulds") == NULL))
+            continue;
+        char out[64];
+        tui_fmt_cell(out, sizeof out, c, &row);
+        const char *p = out;
+        while (*p == ' ')
+            p++;
+        assert_string_equal(p, "-");
+    }
+
+    struct classify_options classify;
+    classify_defaults(&classify);
+    char *shown = NULL;
+    size_t size = 0;
+    FILE *out = open_memstream(&shown, &size);
+    option_text_totals(out, &row.totals, &classify);
+    fclose(out);
+    assert_null(strstr(shown, "nan"));
+    assert_non_null(strstr(shown, "\nmoulds           - (not stored"));
+    assert_non_null(strstr(shown, "\njoint length     - (not stored"));
+    assert_non_null(strstr(shown, "\ncost terms       - (not stored"));
+    assert_null(strstr(shown, "moulds           0"));
+    free(shown);
+
+    struct panelization none;
+    memset(&none, 0, sizeof none);
+    struct report_source source = {"x.obj", "m", 100, 32, "grid",
+                                   "extremes"};
+    out = open_memstream(&shown, &size);
+    report_json(out, &source, &classify, &none, &row.totals);
+    fclose(out);
+    const char *nulls[] = {"\"moulds\":null", "\"sp_moulds\":null",
+                           "\"dp_moulds\":null", "\"largest_family\":null",
+                           "\"single_moulds\":null", "\"joint_length\":null"};
+    for (size_t k = 0; k < sizeof nulls / sizeof nulls[0]; k++)
+        if (strstr(shown, nulls[k]) == NULL)
+            fail_msg("%s lacks %s", shown, nulls[k]);
+    free(shown);
+    out = open_memstream(&shown, &size);
+    report_totals_csv(out, &row.totals);
+    fclose(out);
+    /* moulds .. single_moulds: five empty fields after the joint length */
+    assert_non_null(strstr(shown, ",1,,,,,,,"));
+    free(shown);
+}
+
+/* Appends o's number to numbers[1..], counting in numbers[0]. */
+static int page_row(void *context, const struct option_row *o)
+{
+    int64_t *numbers = context;
+    numbers[++numbers[0]] = o->number;
+    return 0;
+}
+
+static int count_row(void *context, int64_t run, const struct option_row *o)
+{
+    (void)run;
+    return page_row(context, o);
+}
+
+/* A sort by a column no option of the run has a value of is one tie
+ * class, ordered by the next key (cost: 5, 4, ..., 1), in both
+ * directions; before, the tie order's assertion on NaN aborted the
+ * program. */
+static void test_sort_by_unknown(void **state)
+{
+    struct store *store = *state;
+    struct facet_error err;
+    const char *sorts[] = {"moulds,cost", "joint_length,cost",
+                           "largest_family,cost"};
+    for (int d = 0; d < 2; d++)
+        for (size_t k = 0; k < 3; k++) {
+            int64_t numbers[8] = {0};
+            struct option_query q = {1, 0, NULL, sorts[k], d, 0, 0};
+            assert_int_equal(store_options_query(store, &q, count_row,
+                                                 numbers, &err), FACET_OK);
+            assert_int_equal(numbers[0], 5);
+            for (int r = 1; r <= 5; r++)
+                assert_int_equal(numbers[r], d ? r : 6 - r);
+        }
+}
+
+/* An option read with counts not known and stored again (as into a new
+ * run) keeps NULL: never -1 or 18446744073709551615. */
+static void test_written_back_null(void **state)
+{
+    struct store *store = *state;
+    struct facet_error err;
+    struct option_row *rows;
+    size_t n;
+    assert_int_equal(store_options_get(store, 1, &rows, &n, &err), FACET_OK);
+    struct run_info run;
+    store_fixture_run(&run);
+    assert_int_equal(store_run_create(store, &run, &err), FACET_OK);
+    assert_int_equal(store_options_put(store, run.id, rows, n, &err),
+                     FACET_OK);
+    free(rows);
+    store_close(store);
+    *state = NULL;
+    char query[200];
+    snprintf(query, sizeof query, "SELECT count(*) FROM options WHERE"
+             " run = %lld AND moulds IS NULL AND sp_moulds IS NULL AND"
+             " dp_moulds IS NULL AND largest_family IS NULL AND"
+             " single_moulds IS NULL AND panels = 16 + number - 1",
+             (long long)run.id);
+    assert_int_equal(sql_int(query), 5);
+}
+
+/* The workbench pages a run sorted by a column none of its options has a
+ * value of two rows at a time: every option once, by number (the order of
+ * SQLite's ORDER BY: NULLs tie, then number), forward and backward, in
+ * both directions of the key, and an option's position and the count
+ * after it are SQLite's; before, a page after a NULL key found nothing. */
+static void test_browse_by_unknown(void **state)
+{
+    struct store *store = *state;
+    struct facet_error err;
+    const char *columns[] = {"moulds", "joint_length", "mould_cost"};
+    for (size_t c = 0; c < 3; c++)
+        for (int d = 0; d < 2; d++)
+            for (int backward = 0; backward < 2; backward++) {
+                struct option_browse b = {.run = 1, .nkeys = 2};
+                b.keys[0] = (struct browse_key){columns[c], d};
+                b.keys[1] = (struct browse_key){"sp_moulds", !d};
+                int64_t numbers[16] = {0};
+                struct option_row after;
+                int pages = 0;
+                for (;;) {
+                    int64_t before = numbers[0];
+                    assert_int_equal(store_browse_page(store, &b,
+                        before ? &after : NULL, backward, 2, page_row,
+                        numbers, &err), FACET_OK);
+                    if (numbers[0] == before || ++pages > 5)
+                        break;
+                    assert_int_equal(store_option_get(store, 1,
+                        numbers[numbers[0]], &after, &err), FACET_OK);
+                }
+                assert_int_equal(numbers[0], 5);
+                for (int r = 1; r <= 5; r++)
+                    assert_int_equal(numbers[r], backward ? 6 - r : r);
+                struct option_row fourth;
+                assert_int_equal(store_option_get(store, 1, 4, &fourth,
+                                                  &err), FACET_OK);
+                int64_t position, rest;
+                assert_int_equal(store_browse_position(store, &b, &fourth,
+                                                       &position, &err),
+                                 FACET_OK);
+                assert_int_equal(position, 3);
+                assert_int_equal(store_browse_count_capped(store, &b,
+                    &fourth, 0, 100, &rest, &err), FACET_OK);
+                assert_int_equal(rest, 1);
+            }
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test_setup_teardown(test_row_and_registry, setup,
+                                        teardown),
+        cmocka_unit_test_setup_teardown(test_display, setup,
+                                        teardown),
+        cmocka_unit_test_setup_teardown(test_sort_by_unknown, setup,
+                                        teardown),
+        cmocka_unit_test_setup_teardown(test_written_back_null, setup,
+                                        teardown),
+        cmocka_unit_test_setup_teardown(test_browse_by_unknown, setup,
+                                        teardown),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
