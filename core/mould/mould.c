@@ -40,6 +40,7 @@ struct bucket {
 struct family_work {
     const struct panelization *panels;
     const struct mould_options *options;
+    struct mould_labels labels;
     struct mould_shape *shape;              /* npanels */
     double (*descriptor)[DESCRIPTOR];      /* npanels */
     unsigned char *sampled;                /* npanels */
@@ -243,7 +244,7 @@ static void group_panels(struct family_work *w, struct mould_families *out)
                                        panel->diameter);
             struct mould_fit fit;
             out->fits++;
-            if (mould_congruent(&w->shape[r], &w->shape[n],
+            if (mould_congruent(&w->labels, &w->shape[r], &w->shape[n],
                                 w->options->mirror, limit, &fit)) {
                 assert(fit.deviation <= limit);
                 out->family[n] = f;
@@ -308,6 +309,7 @@ int mould_families_build(const struct mesh *mesh,
     } else {
         for (size_t s = 0; s < slots; s++)
             w.bucket[s].head = -1;
+        mould_labels_make(&w.labels);
         sample_panels(mesh, index, &w);
         group_panels(&w, out);
     }

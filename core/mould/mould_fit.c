@@ -101,15 +101,15 @@ static void centroid_of(const double (*p)[3], size_t n, double out[3])
         out[x] /= (double)n;
 }
 
-double mould_fit_points(const double (*a)[3], const double (*b)[3],
-                        const int *order, size_t n, int mirrored,
-                        double rotation[9], double translation[3])
+/* The cross-covariance m of a[order[k]] - ca and b[k] - cb, k < n (order
+ * NULL: the identity). Points already centred come with a centroid of 0,
+ * which subtracts nothing. */
+static void covariance(const double (*a)[3], const double ca[3],
+                       const double (*b)[3], const double cb[3],
+                       const int *order, size_t n, double m[9])
 {
-    assert(n > 0);
-    double ca[3], cb[3];
-    centroid_of(a, n, ca);
-    centroid_of(b, n, cb);
-    double m[9] = {0};
+    for (int i = 0; i < 9; i++)
+        m[i] = 0;
     for (size_t k = 0; k < n; k++) {
         const double *p = a[order != NULL ? (size_t)order[k] : k];
         double x[3], y[3];
@@ -119,8 +119,15 @@ double mould_fit_points(const double (*a)[3], const double (*b)[3],
             for (int j = 0; j < 3; j++)
                 m[3 * i + j] += x[i] * y[j];
     }
-    double r[9];
-    best_rotation(m, mirrored, r);
+}
+
+/* The largest |r (a[order[k]] - ca) - (b[k] - cb)|, k < n. The largest
+ * square is found first and its root taken once: the root is monotonic,
+ * so this is the largest root, to the bit. */
+static double deviation(const double (*a)[3], const double ca[3],
+                        const double (*b)[3], const double cb[3],
+                        const int *order, size_t n, const double r[9])
+{
     double worst = 0;
     for (size_t k = 0; k < n; k++) {
         const double *p = a[order != NULL ? (size_t)order[k] : k];
@@ -129,8 +136,25 @@ double mould_fit_points(const double (*a)[3], const double (*b)[3],
         for (int i = 0; i < 3; i++)
             d[i] = r[3 * i] * x[0] + r[3 * i + 1] * x[1] +
                    r[3 * i + 2] * x[2] - (b[k][i] - cb[i]);
-        worst = fmax(worst, vec3_length(d));
+        double square = vec3_dot(d, d);
+        if (square > worst)
+            worst = square;
     }
+    return sqrt(worst);
+}
+
+double mould_fit_points(const double (*a)[3], const double (*b)[3],
+                        const int *order, size_t n, int mirrored,
+                        double rotation[9], double translation[3])
+{
+    assert(n > 0);
+    double ca[3], cb[3];
+    centroid_of(a, n, ca);
+    centroid_of(b, n, cb);
+    double m[9], r[9];
+    covariance(a, ca, b, cb, order, n, m);
+    best_rotation(m, mirrored, r);
+    double worst = deviation(a, ca, b, cb, order, n, r);
     if (rotation != NULL)
         for (int i = 0; i < 9; i++)
             rotation[i] = r[i];
@@ -141,12 +165,54 @@ double mould_fit_points(const double (*a)[3], const double (*b)[3],
     return worst;
 }
 
+/* Corner c of the cell, (0,0), (1,0), (1,1), (0,1): every rim's fourth
+ * sample from the first. */
+static int corner_sample(int c)
+{
+    return mould_rim_sample(c * (MOULD_SIDE - 1));
+}
+
+void mould_labels_make(struct mould_labels *labels)
+{
+    for (int r = 0; r < MOULD_RELABELINGS; r++) {
+        int *order = labels->order[r];
+        mould_relabeling(r, order);
+        for (int q = 0; q < MOULD_RIM; q++)
+            for (int p = 0; p < MOULD_RIM; p++)
+                if (mould_rim_sample(p) == order[mould_rim_sample(q)])
+                    labels->rim[r][q] = p;
+        for (int c = 0; c < 4; c++)
+            for (int d = 0; d < 4; d++)
+                if (corner_sample(d) == order[corner_sample(c)])
+                    labels->corner[r][c] = d;
+    }
+}
+
 void mould_shape_measure(struct mould_shape *shape)
 {
     double g[3];
     centroid_of((const double (*)[3])shape->point, MOULD_SAMPLES, g);
-    for (int k = 0; k < MOULD_SAMPLES; k++)
-        shape->radius[k] = vec3_distance(shape->point[k], g);
+    shape->spread = 0;
+    for (int k = 0; k < MOULD_SAMPLES; k++) {
+        vec3_sub(shape->point[k], g, shape->centred[k]);
+        shape->radius[k] = vec3_length(shape->centred[k]);
+        shape->spread += vec3_dot(shape->centred[k], shape->centred[k]);
+    }
+    double rim[MOULD_RIM][3], h[3];
+    for (int q = 0; q < MOULD_RIM; q++)
+        for (int x = 0; x < 3; x++)
+            rim[q][x] = shape->point[mould_rim_sample(q)][x];
+    centroid_of((const double (*)[3])rim, MOULD_RIM, h);
+    shape->rim_spread = 0;
+    for (int q = 0; q < MOULD_RIM; q++) {
+        vec3_sub(rim[q], h, shape->rim[q]);
+        shape->rim_spread += vec3_dot(shape->rim[q], shape->rim[q]);
+    }
+    for (int c = 0; c < 4; c++)
+        for (int d = 0; d < 4; d++)
+            shape->corner_distance[c][d] = vec3_distance(
+                shape->point[corner_sample(c)],
+                shape->point[corner_sample(d)]);
 }
 
 /* Whether two distances, x of one panel and y of the other, agree as a
@@ -157,42 +223,102 @@ static int distances_agree(double x, double y, double limit)
 }
 
 /* 1 when the distances of a's samples from their centroid, and between
- * its corners, taken under order, match b's (distances_agree). */
-static int distances_match(const struct mould_shape *a,
-                           const struct mould_shape *b,
-                           const int order[MOULD_SAMPLES], double limit)
+ * its corners, taken under relabeling r, match b's (distances_agree). */
+static int distances_match(const struct mould_labels *labels, int r,
+                           const struct mould_shape *a,
+                           const struct mould_shape *b, double limit)
 {
+    const int *order = labels->order[r], *corner = labels->corner[r];
     for (int k = 0; k < MOULD_SAMPLES; k++)
         if (!distances_agree(a->radius[order[k]], b->radius[k], limit))
             return 0;
-    const int s = MOULD_SIDE - 1;
-    const int corner[4] = {
-        mould_sample_index(0, 0), mould_sample_index(s, 0),
-        mould_sample_index(s, s), mould_sample_index(0, s),
-    };
     for (int i = 0; i < 4; i++)
         for (int j = i + 1; j < 4; j++)
-            if (!distances_agree(
-                    vec3_distance(a->point[order[corner[i]]],
-                                  a->point[order[corner[j]]]),
-                    vec3_distance(b->point[corner[i]], b->point[corner[j]]),
-                    limit))
+            if (!distances_agree(a->corner_distance[corner[i]][corner[j]],
+                                 b->corner_distance[i][j], limit))
                 return 0;
     return 1;
 }
 
-int mould_congruent(const struct mould_shape *a, const struct mould_shape *b,
+/* 1 when the symmetric 4 x 4 matrix x is positive definite, shown by
+ * the pivots of its LDL^T factorization (the rounding of which the
+ * caller's margin covers); 0 when not, or not shown. */
+static int positive_definite(const double x[4][4])
+{
+    double l[4][4], d[4];
+    for (int j = 0; j < 4; j++) {
+        double pivot = x[j][j];
+        for (int k = 0; k < j; k++)
+            pivot -= l[j][k] * l[j][k] * d[k];
+        if (!(pivot > 0))
+            return 0;
+        d[j] = pivot;
+        for (int i = j + 1; i < 4; i++) {
+            double y = x[i][j];
+            for (int k = 0; k < j; k++)
+                y -= l[i][k] * l[j][k] * d[k];
+            l[i][j] = y / pivot;
+        }
+    }
+    return 1;
+}
+
+/* 1 when no rigid move (proper, or mirrored) of n centred points with
+ * cross-covariance m onto their partners, the two sets' sums of squares
+ * adding to spread, leaves a root mean square distance within limit
+ * (mould_congruent says how). */
+static int out_of_reach(const double m[9], double spread, size_t n,
+                        double limit, int mirrored)
+{
+    double mu = (spread - (double)n * limit * limit) / 2 - 1e-9 * spread;
+    if (!(mu > 0))
+        return 0;  /* N is traceless: its largest eigenvalue is >= 0 */
+    const double *S = m;  /* S[3 i + j] = sum a_i b_j */
+    double N[4][4] = {
+        {S[0] + S[4] + S[8], S[5] - S[7], S[6] - S[2], S[1] - S[3]},
+        {S[5] - S[7], S[0] - S[4] - S[8], S[1] + S[3], S[6] + S[2]},
+        {S[6] - S[2], S[1] + S[3], -S[0] + S[4] - S[8], S[5] + S[7]},
+        {S[1] - S[3], S[6] + S[2], S[5] + S[7], -S[0] - S[4] + S[8]},
+    };
+    double sign = mirrored ? -1 : 1, x[4][4];
+    for (int i = 0; i < 4; i++)
+        for (int j = 0; j < 4; j++)
+            x[i][j] = (i == j ? mu : 0) - sign * N[i][j];
+    return positive_definite(x);
+}
+
+int mould_congruent(const struct mould_labels *labels,
+                    const struct mould_shape *a, const struct mould_shape *b,
                     int mirror, double limit, struct mould_fit *fit)
 {
+    static const double zero[3] = {0, 0, 0};
     for (int r = 0; r < MOULD_RELABELINGS; r++) {
-        int order[MOULD_SAMPLES];
-        mould_relabeling(r, order);
-        if (!distances_match(a, b, order, limit))
+        if (!distances_match(labels, r, a, b, limit))
             continue;
+        const int *order = labels->order[r];
+        double m[9], rim[9];
+        int rim_done = 0;
+        covariance((const double (*)[3])a->centred, zero,
+                   (const double (*)[3])b->centred, zero, order,
+                   MOULD_SAMPLES, m);
         for (int mirrored = 0; mirrored <= (mirror != 0); mirrored++) {
-            double d = mould_fit_points(
-                (const double (*)[3])a->point, (const double (*)[3])b->point,
-                order, MOULD_SAMPLES, mirrored, NULL, NULL);
+            if (out_of_reach(m, a->spread + b->spread, MOULD_SAMPLES, limit,
+                             mirrored))
+                continue;
+            if (!rim_done) {
+                covariance((const double (*)[3])a->rim, zero,
+                           (const double (*)[3])b->rim, zero,
+                           labels->rim[r], MOULD_RIM, rim);
+                rim_done = 1;
+            }
+            if (out_of_reach(rim, a->rim_spread + b->rim_spread, MOULD_RIM,
+                             limit, mirrored))
+                continue;
+            double rotation[9];
+            best_rotation(m, mirrored, rotation);
+            double d = deviation((const double (*)[3])a->centred, zero,
+                                 (const double (*)[3])b->centred, zero,
+                                 order, MOULD_SAMPLES, rotation);
             if (d <= limit) {
                 if (fit != NULL)
                     *fit = (struct mould_fit){d, r, mirrored};
