@@ -36,14 +36,27 @@
 #include "core/surface/mesh.h"
 #include "core/surface/uv_index.h"
 
+/* A triangle as a grid line along one axis takes it: its corners'
+ * coordinates along the axis, its vertices, and which of its edges lie on
+ * the outline. */
+struct joint_triangle {
+    double x[3];          /* corner k's u (v) */
+    uint32_t vertex[3];   /* corner k's mesh vertex */
+    uint32_t outline;     /* bit k: edge k (corner k to k + 1) counts in
+                             the outline */
+};
+
 /* What does not depend on the grid, computed once per surface: the
  * outline, and the triangles in order along each UV axis, so that a grid
- * line visits only the triangles it may cross. */
+ * line visits only the triangles it may cross, read in that order from
+ * one array (about 40 bytes a triangle per axis). */
 struct joint_prep {
     double outline;        /* the outline's length (m) */
     size_t ntriangles;
     uint32_t *order[2];    /* #T: triangles by their least u (v) */
     double *least[2];      /* #T: that least coordinate, in that order */
+    struct joint_triangle *triangle[2];  /* #T: those triangles, in that
+                                            order */
     double reach[2];       /* the largest extent of a triangle along u (v),
                               widened by rounding */
 };
@@ -63,6 +76,14 @@ void joint_prep_free(struct joint_prep *prep);
 double joint_length(const struct joint_prep *prep, const struct mesh *mesh,
                     const struct uv_index *index,
                     const struct panelization *panels);
+
+/* joint_length the plain way, for tests: every grid line against every
+ * triangle, in prep's order (the order the sum is taken in), from the mesh
+ * and index themselves. Equal to joint_length to the bit. */
+double joint_length_plain(const struct joint_prep *prep,
+                          const struct mesh *mesh,
+                          const struct uv_index *index,
+                          const struct panelization *panels);
 
 /* The outline part alone (m): boundary and UV-seam edges, each once. */
 double joint_outline_length(const struct mesh *mesh,
