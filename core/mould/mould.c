@@ -41,6 +41,7 @@ struct family_work {
     const struct panelization *panels;
     const struct mould_options *options;
     struct mould_labels labels;
+    double (*point)[MOULD_SAMPLES][3];     /* npanels: the samples */
     struct mould_shape *shape;              /* npanels */
     double (*descriptor)[DESCRIPTOR];      /* npanels */
     unsigned char *sampled;                /* npanels */
@@ -137,20 +138,25 @@ static void grid_key(const struct family_work *w, const double d[DESCRIPTOR],
     key[1] = (int64_t)floor(d[1] / w->cell);
 }
 
-/* Samples and describes every SP and DP panel; sets w->cell. */
-static void sample_panels(const struct mesh *mesh,
-                          const struct uv_index *index,
-                          struct family_work *w)
+/* Samples and describes every SP and DP panel (w->sampled holds which
+ * it could); sets w->cell. Returns FACET_OK or FACET_EWORK. */
+static int sample_panels(const struct mesh *mesh,
+                         const struct uv_index *index,
+                         struct family_work *w)
 {
     const struct panelization *p = w->panels;
+    for (size_t n = 0; n < p->npanels; n++)
+        w->sampled[n] = p->panels[n].type != TYPE_FP;
+    if (mould_sample_grid(mesh, index, p, w->sampled, w->point,
+                          w->sampled) != FACET_OK)
+        return FACET_EWORK;
     double diameter = 0, extent = 0;
     for (size_t n = 0; n < p->npanels; n++) {
-        w->sampled[n] = 0;
-        if (p->panels[n].type == TYPE_FP ||
-            !mould_sample_panel(mesh, index, p, n, w->shape[n].point))
+        if (!w->sampled[n])
             continue;
-        mould_shape_measure(&w->shape[n]);
-        describe((const double (*)[3])w->shape[n].point, w->descriptor[n]);
+        w->sampled[n] = 0;
+        mould_shape_measure((const double (*)[3])w->point[n], &w->shape[n]);
+        describe((const double (*)[3])w->point[n], w->descriptor[n]);
         int finite = 1;
         for (int k = 0; k < DESCRIPTOR; k++)
             finite &= isfinite(w->descriptor[n][k]);
@@ -166,6 +172,7 @@ static void sample_panels(const struct mesh *mesh,
     w->cell = 1.01 * allowed(limit, extent, extent);
     if (!(w->cell > 0) || !isfinite(w->cell))
         w->cell = 1;
+    return FACET_OK;
 }
 
 /* The families of the representatives near panel n, in w->candidate in
@@ -286,6 +293,7 @@ int mould_families_build(const struct mesh *mesh,
         slots *= 2;
     struct family_work w = {
         .panels = panels, .options = options,
+        .point = malloc(one * sizeof *w.point),
         .shape = malloc(one * sizeof *w.shape),
         .descriptor = malloc(one * sizeof *w.descriptor),
         .sampled = malloc(one),
@@ -299,7 +307,7 @@ int mould_families_build(const struct mesh *mesh,
     out->representative = malloc(one * sizeof *out->representative);
     out->size = malloc(one * sizeof *out->size);
     int rc = FACET_OK;
-    if (w.shape == NULL || w.descriptor == NULL || w.sampled == NULL ||
+    if (w.point == NULL || w.shape == NULL || w.descriptor == NULL || w.sampled == NULL ||
         w.bucket == NULL || w.next == NULL || w.candidate == NULL ||
         out->family == NULL || out->representative == NULL ||
         out->size == NULL) {
@@ -310,9 +318,13 @@ int mould_families_build(const struct mesh *mesh,
         for (size_t s = 0; s < slots; s++)
             w.bucket[s].head = -1;
         mould_labels_make(&w.labels);
-        sample_panels(mesh, index, &w);
-        group_panels(&w, out);
+        if (sample_panels(mesh, index, &w) == FACET_OK)
+            group_panels(&w, out);
+        else
+            rc = facet_error_set(err, FACET_EWORK,
+                                 "out of memory for the mould samples");
     }
+    free(w.point);
     free(w.shape);
     free(w.descriptor);
     free(w.sampled);

@@ -188,31 +188,35 @@ void mould_labels_make(struct mould_labels *labels)
     }
 }
 
-void mould_shape_measure(struct mould_shape *shape)
+void mould_shape_measure(const double point[MOULD_SAMPLES][3],
+                         struct mould_shape *shape)
 {
     double g[3];
-    centroid_of((const double (*)[3])shape->point, MOULD_SAMPLES, g);
+    centroid_of(point, MOULD_SAMPLES, g);
     shape->spread = 0;
     for (int k = 0; k < MOULD_SAMPLES; k++) {
-        vec3_sub(shape->point[k], g, shape->centred[k]);
+        vec3_sub(point[k], g, shape->centred[k]);
         shape->radius[k] = vec3_length(shape->centred[k]);
         shape->spread += vec3_dot(shape->centred[k], shape->centred[k]);
     }
     double rim[MOULD_RIM][3], h[3];
     for (int q = 0; q < MOULD_RIM; q++)
         for (int x = 0; x < 3; x++)
-            rim[q][x] = shape->point[mould_rim_sample(q)][x];
+            rim[q][x] = point[mould_rim_sample(q)][x];
     centroid_of((const double (*)[3])rim, MOULD_RIM, h);
     shape->rim_spread = 0;
     for (int q = 0; q < MOULD_RIM; q++) {
         vec3_sub(rim[q], h, shape->rim[q]);
         shape->rim_spread += vec3_dot(shape->rim[q], shape->rim[q]);
     }
-    for (int c = 0; c < 4; c++)
-        for (int d = 0; d < 4; d++)
-            shape->corner_distance[c][d] = vec3_distance(
-                shape->point[corner_sample(c)],
-                shape->point[corner_sample(d)]);
+    /* |p - q| and |q - p| are the same double: one root a pair. */
+    for (int c = 0; c < 4; c++) {
+        shape->corner_distance[c][c] = 0;
+        for (int d = c + 1; d < 4; d++)
+            shape->corner_distance[c][d] = shape->corner_distance[d][c] =
+                vec3_distance(point[corner_sample(c)],
+                              point[corner_sample(d)]);
+    }
 }
 
 /* Whether two distances, x of one panel and y of the other, agree as a

@@ -65,8 +65,8 @@ void mould_labels_make(struct mould_labels *labels);
 /* A sampled panel as the congruence test takes it: its samples and what
  * every test of it would otherwise recompute. */
 struct mould_shape {
-    double point[MOULD_SAMPLES][3];    /* mould_sample_panel's (m) */
-    double centred[MOULD_SAMPLES][3];  /* each less the points' centroid
+    double centred[MOULD_SAMPLES][3];  /* each sample (mould_sample_panel's)
+                                          less the samples' centroid
                                           (m), as mould_fit_points centres
                                           them */
     double radius[MOULD_SAMPLES];      /* each centred point's length (m) */
@@ -77,8 +77,9 @@ struct mould_shape {
     double corner_distance[4][4];      /* between corners (m) */
 };
 
-/* Sets everything of shape but shape->point from shape->point. */
-void mould_shape_measure(struct mould_shape *shape);
+/* Sets *shape from a panel's samples (mould_sample_panel's). */
+void mould_shape_measure(const double point[MOULD_SAMPLES][3],
+                         struct mould_shape *shape);
 
 /* How two sampled panels were found congruent. */
 struct mould_fit {
