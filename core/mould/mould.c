@@ -69,38 +69,33 @@ static void sort_ascending(double *x, int n)
         }
 }
 
-static void describe(const double s[MOULD_SAMPLES][3], double d[DESCRIPTOR])
+/* The descriptor of a measured shape: its corner distances, and its
+ * centred samples for the bulge (the corners' centroid less the samples')
+ * and the spread. */
+static void describe(const struct mould_shape *shape, double d[DESCRIPTOR])
 {
-    const int e = MOULD_SIDE - 1;
-    const double *c[4] = {
-        s[mould_sample_index(0, 0)], s[mould_sample_index(e, 0)],
-        s[mould_sample_index(e, e)], s[mould_sample_index(0, e)],
-    };
-    double diagonal[2] = {vec3_distance(c[0], c[2]),
-                          vec3_distance(c[1], c[3])};
+    const double (*c)[4] = shape->corner_distance;
+    double diagonal[2] = {c[0][2], c[1][3]};
     sort_ascending(diagonal, 2);
     double side[4];
     for (int k = 0; k < 4; k++)
-        side[k] = vec3_distance(c[k], c[(k + 1) % 4]);
+        side[k] = c[k][(k + 1) % 4];
     sort_ascending(side, 4);
-    double g[3] = {0, 0, 0}, h[3] = {0, 0, 0};
-    for (int k = 0; k < MOULD_SAMPLES; k++)
-        for (int x = 0; x < 3; x++)
-            g[x] += s[k][x] / MOULD_SAMPLES;
+    const int e = MOULD_SIDE - 1;
+    const int corner[4] = {
+        mould_sample_index(0, 0), mould_sample_index(e, 0),
+        mould_sample_index(e, e), mould_sample_index(0, e),
+    };
+    double bulge[3] = {0, 0, 0};
     for (int k = 0; k < 4; k++)
         for (int x = 0; x < 3; x++)
-            h[x] += c[k][x] / 4;
-    double spread = 0;
-    for (int k = 0; k < MOULD_SAMPLES; k++) {
-        double r = vec3_distance(s[k], g);
-        spread += r * r / MOULD_SAMPLES;
-    }
+            bulge[x] += shape->centred[corner[k]][x] / 4;
     d[0] = diagonal[1];
-    d[1] = vec3_distance(g, h);
+    d[1] = vec3_length(bulge);
     d[2] = diagonal[0];
     for (int k = 0; k < 4; k++)
         d[3 + k] = side[k];
-    d[7] = sqrt(spread);
+    d[7] = sqrt(shape->spread / MOULD_SAMPLES);
 }
 
 /* How far two descriptor values x and y of panels within limit of each
@@ -156,7 +151,7 @@ static int sample_panels(const struct mesh *mesh,
             continue;
         w->sampled[n] = 0;
         mould_shape_measure((const double (*)[3])w->point[n], &w->shape[n]);
-        describe((const double (*)[3])w->point[n], w->descriptor[n]);
+        describe(&w->shape[n], w->descriptor[n]);
         int finite = 1;
         for (int k = 0; k < DESCRIPTOR; k++)
             finite &= isfinite(w->descriptor[n][k]);

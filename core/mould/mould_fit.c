@@ -209,6 +209,16 @@ void mould_shape_measure(const double point[MOULD_SAMPLES][3],
         vec3_sub(rim[q], h, shape->rim[q]);
         shape->rim_spread += vec3_dot(shape->rim[q], shape->rim[q]);
     }
+    double corner[4][3], c0[3];
+    for (int c = 0; c < 4; c++)
+        for (int x = 0; x < 3; x++)
+            corner[c][x] = point[corner_sample(c)][x];
+    centroid_of((const double (*)[3])corner, 4, c0);
+    shape->corner_spread = 0;
+    for (int c = 0; c < 4; c++) {
+        vec3_sub(corner[c], c0, shape->corner[c]);
+        shape->corner_spread += vec3_dot(shape->corner[c], shape->corner[c]);
+    }
     /* |p - q| and |q - p| are the same double: one root a pair. */
     for (int c = 0; c < 4; c++) {
         shape->corner_distance[c][c] = 0;
@@ -300,12 +310,23 @@ int mould_congruent(const struct mould_labels *labels,
         if (!distances_match(labels, r, a, b, limit))
             continue;
         const int *order = labels->order[r];
-        double m[9], rim[9];
-        int rim_done = 0;
-        covariance((const double (*)[3])a->centred, zero,
-                   (const double (*)[3])b->centred, zero, order,
-                   MOULD_SAMPLES, m);
+        /* The cheapest bound first: most fits that fail, fail on the
+         * corners. */
+        double corner[9], m[9], rim[9];
+        int m_done = 0, rim_done = 0;
+        covariance((const double (*)[3])a->corner, zero,
+                   (const double (*)[3])b->corner, zero, labels->corner[r],
+                   4, corner);
         for (int mirrored = 0; mirrored <= (mirror != 0); mirrored++) {
+            if (out_of_reach(corner, a->corner_spread + b->corner_spread, 4,
+                             limit, mirrored))
+                continue;
+            if (!m_done) {
+                covariance((const double (*)[3])a->centred, zero,
+                           (const double (*)[3])b->centred, zero, order,
+                           MOULD_SAMPLES, m);
+                m_done = 1;
+            }
             if (out_of_reach(m, a->spread + b->spread, MOULD_SAMPLES, limit,
                              mirrored))
                 continue;

@@ -74,6 +74,9 @@ struct mould_shape {
     double rim[MOULD_RIM][3];          /* the rim samples less their own
                                           centroid (m) */
     double rim_spread;                 /* the sum of their squares (m^2) */
+    double corner[4][3];               /* the corners less their own
+                                          centroid (m) */
+    double corner_spread;              /* the sum of their squares (m^2) */
     double corner_distance[4][4];      /* between corners (m) */
 };
 
@@ -100,8 +103,8 @@ struct mould_fit {
  *     within limit moves each sample, and so the centroid, by at most
  *     limit);
  *   - the least root mean square distance any rigid move of that kind
- *     (proper or mirrored) leaves between the 25 samples, or between the
- *     16 samples of the rim, exceeds limit: the largest distance is at
+ *     (proper or mirrored) leaves between the 4 corners, the 25 samples or
+ *     the 16 samples of the rim (tried in that order) exceeds limit: the largest distance is at
  *     least the root mean square one, which is at least that least one.
  *     The least sum of squares is |a|^2 + |b|^2 - 2 lambda, lambda the
  *     largest eigenvalue of Horn's 4 x 4 matrix of the cross-covariance
