@@ -5,9 +5,11 @@
 #include "core/joint/joint_length.h"
 
 #include <math.h>
+#include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 
+#include "core/base/parallel.h"
 #include "core/base/sorted.h"
 #include "core/base/vec3.h"
 
@@ -234,36 +236,203 @@ static int grid_lines(const struct panelization *panels, int axis,
     return n[axis];
 }
 
+/* The triangles line x = line along axis may cross: [*from, *to) of the
+ * axis's order. Only a triangle whose least coordinate is below the line,
+ * by no more than the reach, can have a corner either side. */
+static void line_window(const struct joint_prep *prep, int axis, double line,
+                        size_t *from, size_t *to)
+{
+    *from = sorted_lower_bound(prep->least[axis], prep->ntriangles,
+                               line - prep->reach[axis]);
+    *to = sorted_lower_bound(prep->least[axis], prep->ntriangles, line);
+    if (*to < *from)
+        *to = *from;
+}
+
+/* The length of line x = line along axis through the x-th triangle of the
+ * axis's order. */
+static double crossing_at(const struct joint_prep *prep,
+                          const struct mesh *mesh, int axis, size_t x,
+                          double line)
+{
+    const struct joint_triangle *t = &prep->triangle[axis][x];
+    /* Most of the window lies wholly before the line. */
+    if (t->x[0] < line && t->x[1] < line && t->x[2] < line)
+        return 0;
+    const double *p[3];
+    for (int k = 0; k < 3; k++)
+        p[k] = &mesh->position[3 * (size_t)t->vertex[k]];
+    return crossing_length(t->x, p, t->outline, line);
+}
+
 double joint_length(const struct joint_prep *prep, const struct mesh *mesh,
                     const struct uv_index *index,
                     const struct panelization *panels)
 {
+    return joint_length_lines(NULL, prep, mesh, index, panels);
+}
+
+/* The index of line in lines along axis, or SIZE_MAX. */
+static size_t find_line(const struct joint_lines *lines, int axis,
+                        double line)
+{
+    size_t k = sorted_lower_bound(lines->line[axis], lines->nline[axis],
+                                  line);
+    return k < lines->nline[axis] && lines->line[axis][k] == line ? k
+                                                                 : SIZE_MAX;
+}
+
+double joint_length_lines(const struct joint_lines *lines,
+                          const struct joint_prep *prep,
+                          const struct mesh *mesh,
+                          const struct uv_index *index,
+                          const struct panelization *panels)
+{
     (void)index;
+    if (lines != NULL &&
+        (lines->box[0] != panels->umin || lines->box[1] != panels->vmin ||
+         lines->box[2] != panels->umax || lines->box[3] != panels->vmax))
+        lines = NULL;
     double length = prep->outline;
     for (int axis = 0; axis < 2; axis++) {
         double lo, d;
         int n = grid_lines(panels, axis, &lo, &d);
-        const struct joint_triangle *triangle = prep->triangle[axis];
         for (int i = 1; i < n; i++) {
             double line = lo + i * d;
-            /* Only a triangle whose least coordinate is below the line,
-             * by no more than the reach, can have a corner either side. */
-            size_t x = sorted_lower_bound(prep->least[axis],
-                                          prep->ntriangles,
-                                          line - prep->reach[axis]);
-            for (; x < prep->ntriangles && prep->least[axis][x] < line; x++) {
-                const struct joint_triangle *t = &triangle[x];
-                /* Most of the window lies wholly before the line. */
-                if (t->x[0] < line && t->x[1] < line && t->x[2] < line)
-                    continue;
-                const double *p[3];
-                for (int k = 0; k < 3; k++)
-                    p[k] = &mesh->position[3 * (size_t)t->vertex[k]];
-                length += crossing_length(t->x, p, t->outline, line);
+            size_t k = lines != NULL ? find_line(lines, axis, line)
+                                     : SIZE_MAX;
+            if (k != SIZE_MAX) {
+                const double *kept = lines->length[axis] +
+                                     lines->start[axis][k];
+                for (size_t c = 0; c < lines->count[axis][k]; c++)
+                    length += kept[c];
+                continue;
             }
+            size_t from, to;
+            line_window(prep, axis, line, &from, &to);
+            for (size_t x = from; x < to; x++)
+                length += crossing_at(prep, mesh, axis, x, line);
         }
     }
     return length;
+}
+
+/* joint_lines_build's lines [k0, k1) of one axis, on one thread. */
+struct lines_job {
+    const struct joint_prep *prep;
+    const struct mesh *mesh;
+    struct joint_lines *out;
+    int axis;
+    size_t k0, k1;
+};
+
+static void measure_lines(void *argument)
+{
+    struct lines_job *job = argument;
+    struct joint_lines *out = job->out;
+    int axis = job->axis;
+    for (size_t k = job->k0; k < job->k1; k++) {
+        double line = out->line[axis][k];
+        double *kept = out->length[axis] + out->start[axis][k];
+        size_t from, to, count = 0;
+        line_window(job->prep, axis, line, &from, &to);
+        for (size_t x = from; x < to; x++) {
+            double c = crossing_at(job->prep, job->mesh, axis, x, line);
+            if (c != 0)
+                kept[count++] = c;
+        }
+        out->count[axis][k] = count;
+    }
+}
+
+static int compare_doubles(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+int joint_lines_build(const struct joint_prep *prep, const struct mesh *mesh,
+                      const struct uv_index *index, const int (*grid)[2],
+                      size_t ngrids, int jobs, struct joint_lines *out,
+                      struct facet_error *err)
+{
+    memset(out, 0, sizeof *out);
+    /* The box panel_grid_init gives every grid over index. */
+    struct panelization box = {0};
+    box.umin = out->box[0] = index->umin;
+    box.vmin = out->box[1] = index->vmin;
+    box.umax = out->box[2] = index->umax;
+    box.vmax = out->box[3] = index->vmax;
+    if (jobs < 1)
+        jobs = 1;
+    if (jobs > PARALLEL_MAX)
+        jobs = PARALLEL_MAX;
+    for (int axis = 0; axis < 2; axis++) {
+        size_t total = 0;
+        for (size_t g = 0; g < ngrids; g++)
+            total += grid[g][axis] > 1 ? (size_t)grid[g][axis] - 1 : 0;
+        double *line = malloc((total ? total : 1) * sizeof *line);
+        out->line[axis] = line;
+        if (line == NULL)
+            goto no_memory;
+        /* Each grid's lines as joint_length computes them. */
+        size_t n = 0;
+        for (size_t g = 0; g < ngrids; g++) {
+            box.nu = grid[g][0];
+            box.nv = grid[g][1];
+            double lo, d;
+            int count = grid_lines(&box, axis, &lo, &d);
+            for (int i = 1; i < count; i++)
+                line[n++] = lo + i * d;
+        }
+        qsort(line, n, sizeof *line, compare_doubles);
+        size_t distinct = 0;
+        for (size_t k = 0; k < n; k++)
+            if (distinct == 0 || line[k] != line[distinct - 1])
+                line[distinct++] = line[k];
+        out->nline[axis] = distinct;
+        out->start[axis] = malloc((distinct + 1) * sizeof *out->start[axis]);
+        out->count[axis] = malloc((distinct ? distinct : 1) *
+                                  sizeof *out->count[axis]);
+        if (out->start[axis] == NULL || out->count[axis] == NULL)
+            goto no_memory;
+        /* Room for every triangle of each line's window. */
+        out->start[axis][0] = 0;
+        for (size_t k = 0; k < distinct; k++) {
+            size_t from, to;
+            line_window(prep, axis, line[k], &from, &to);
+            out->start[axis][k + 1] = out->start[axis][k] + (to - from);
+        }
+        size_t room = out->start[axis][distinct];
+        out->length[axis] = malloc((room ? room : 1) *
+                                   sizeof *out->length[axis]);
+        if (out->length[axis] == NULL)
+            goto no_memory;
+        struct lines_job job[PARALLEL_MAX];
+        int njobs = distinct < (size_t)jobs ? (int)(distinct ? distinct : 1)
+                                            : jobs;
+        for (int j = 0; j < njobs; j++)
+            job[j] = (struct lines_job){prep, mesh, out, axis,
+                                        distinct * (size_t)j / (size_t)njobs,
+                                        distinct * (size_t)(j + 1) /
+                                            (size_t)njobs};
+        parallel_run(job, sizeof job[0], njobs, measure_lines);
+    }
+    return FACET_OK;
+no_memory:
+    return facet_error_set(err, FACET_EWORK,
+                           "out of memory for the joint lines");
+}
+
+void joint_lines_free(struct joint_lines *lines)
+{
+    for (int axis = 0; axis < 2; axis++) {
+        free(lines->line[axis]);
+        free(lines->start[axis]);
+        free(lines->count[axis]);
+        free(lines->length[axis]);
+    }
+    memset(lines, 0, sizeof *lines);
 }
 
 double joint_length_plain(const struct joint_prep *prep,

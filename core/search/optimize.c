@@ -13,6 +13,7 @@
 
 #include "core/base/numparse.h"
 #include "core/base/parallel.h"
+#include "core/joint/joint_length.h"
 #include "core/search/optimize_internal.h"
 #include "core/base/rng.h"
 
@@ -186,6 +187,7 @@ int optimize_method_check(enum optimize_method method,
 struct evaluation_plan {
     const struct surface *surface;
     const struct panel_lattice *lattice;  /* or NULL */
+    const struct joint_lines *lines;      /* or NULL */
     const struct option_params *base;
     const struct design_point *points;
     const size_t *order;            /* the points by grid */
@@ -222,10 +224,11 @@ static void evaluation_thread(void *argument)
                 plan->base, plan->points[k].nu, plan->points[k].nv,
                 plan->points[k].threshold_mm);
             if (x == plan->group[g]) {
-                job->rc = option_evaluate_lattice(plan->surface,
-                                                  plan->lattice, &params,
-                                                  &panels, &plan->totals[k],
-                                                  &job->err);
+                job->rc = option_evaluate_shared(plan->surface,
+                                                 plan->lattice, plan->lines,
+                                                 &params, &panels,
+                                                 &plan->totals[k],
+                                                 &job->err);
             } else {
                 /* Same grid, same joints: measured with its first point. */
                 double joints =
@@ -307,18 +310,48 @@ static int evaluate(const struct surface *surface,
     }
     group[ngroups] = n;
     free(key);
+    /* Grids that share a lattice share lines: their joints are measured
+     * once a line for the batch. */
+    struct joint_lines lines;
+    memset(&lines, 0, sizeof lines);
+    int have_lines = 0;
+    if (lattice != NULL && ngroups > 1) {
+        int (*grid)[2] = malloc(ngroups * sizeof *grid);
+        if (grid == NULL) {
+            free(order);
+            free(group);
+            return facet_error_set(err, FACET_EWORK, "out of memory");
+        }
+        for (size_t g = 0; g < ngroups; g++) {
+            grid[g][0] = points[order[group[g]]].nu;
+            grid[g][1] = points[order[group[g]]].nv;
+        }
+        int rc = joint_lines_build(&surface->joints, &surface->mesh,
+                                   &surface->uv, (const int (*)[2])grid,
+                                   ngroups, jobs, &lines, err);
+        free(grid);
+        if (rc != FACET_OK) {
+            joint_lines_free(&lines);
+            free(order);
+            free(group);
+            return rc;
+        }
+        have_lines = 1;
+    }
     if ((size_t)jobs > ngroups)
         jobs = ngroups > 0 ? (int)ngroups : 1;
 
     if (keep != NULL && n > 0)
         memset(keep, 0, n * sizeof *keep);
-    struct evaluation_plan plan = {surface, lattice, base, points, order,
-                                   group, ngroups, 0, totals, keep};
+    struct evaluation_plan plan = {surface, lattice,
+                                   have_lines ? &lines : NULL, base, points,
+                                   order, group, ngroups, 0, totals, keep};
     atomic_init(&plan.next, 0);
     struct evaluation_job job[PARALLEL_MAX];
     for (int k = 0; k < jobs; k++)
         job[k] = (struct evaluation_job){&plan, FACET_OK, {0, FACET_SETTING_NONE, ""}};
     parallel_run(job, sizeof job[0], jobs, evaluation_thread);
+    joint_lines_free(&lines);
     free(order);
     free(group);
     for (int k = 0; k < jobs; k++)
