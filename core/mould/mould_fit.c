@@ -91,14 +91,19 @@ static void best_rotation(const double m[9], int mirrored, double r[9])
                            sign[2] * v[2][i] * u[2][j];
 }
 
+/* (Sums are kept in locals, not in out, which the compiler must assume
+ * may alias p: in registers, the same sums in the same order.) */
 static void centroid_of(const double (*p)[3], size_t n, double out[3])
 {
-    out[0] = out[1] = out[2] = 0;
-    for (size_t k = 0; k < n; k++)
-        for (int x = 0; x < 3; x++)
-            out[x] += p[k][x];
-    for (int x = 0; x < 3; x++)
-        out[x] /= (double)n;
+    double g0 = 0, g1 = 0, g2 = 0;
+    for (size_t k = 0; k < n; k++) {
+        g0 += p[k][0];
+        g1 += p[k][1];
+        g2 += p[k][2];
+    }
+    out[0] = g0 / (double)n;
+    out[1] = g1 / (double)n;
+    out[2] = g2 / (double)n;
 }
 
 /* The cross-covariance m of a[order[k]] - ca and b[k] - cb, k < n (order
@@ -108,17 +113,34 @@ static void covariance(const double (*a)[3], const double ca[3],
                        const double (*b)[3], const double cb[3],
                        const int *order, size_t n, double m[9])
 {
-    for (int i = 0; i < 9; i++)
-        m[i] = 0;
+    /* In locals, as centroid_of: the inner loop of every fit. */
+    double m0 = 0, m1 = 0, m2 = 0, m3 = 0, m4 = 0, m5 = 0, m6 = 0, m7 = 0,
+           m8 = 0;
+    const double a0 = ca[0], a1 = ca[1], a2 = ca[2];
+    const double b0 = cb[0], b1 = cb[1], b2 = cb[2];
     for (size_t k = 0; k < n; k++) {
         const double *p = a[order != NULL ? (size_t)order[k] : k];
-        double x[3], y[3];
-        vec3_sub(p, ca, x);
-        vec3_sub(b[k], cb, y);
-        for (int i = 0; i < 3; i++)
-            for (int j = 0; j < 3; j++)
-                m[3 * i + j] += x[i] * y[j];
+        double x0 = p[0] - a0, x1 = p[1] - a1, x2 = p[2] - a2;
+        double y0 = b[k][0] - b0, y1 = b[k][1] - b1, y2 = b[k][2] - b2;
+        m0 += x0 * y0;
+        m1 += x0 * y1;
+        m2 += x0 * y2;
+        m3 += x1 * y0;
+        m4 += x1 * y1;
+        m5 += x1 * y2;
+        m6 += x2 * y0;
+        m7 += x2 * y1;
+        m8 += x2 * y2;
     }
+    m[0] = m0;
+    m[1] = m1;
+    m[2] = m2;
+    m[3] = m3;
+    m[4] = m4;
+    m[5] = m5;
+    m[6] = m6;
+    m[7] = m7;
+    m[8] = m8;
 }
 
 /* The largest |r (a[order[k]] - ca) - (b[k] - cb)|, k < n. The largest
