@@ -16,6 +16,7 @@
 
 #include <assert.h>
 #include <math.h>
+#include <string.h>
 
 #include "core/base/sym3.h"
 #include "core/base/vec3.h"
@@ -210,37 +211,38 @@ void mould_labels_make(struct mould_labels *labels)
     }
 }
 
+/* Centres n points (out[k] = p[k] - their centroid); returns the sum of
+ * the centred points' squares. */
+static double centre(const double (*p)[3], size_t n, double (*out)[3])
+{
+    double g[3], sum = 0;
+    centroid_of(p, n, g);
+    for (size_t k = 0; k < n; k++) {
+        double x[3];
+        vec3_sub(p[k], g, x);
+        out[k][0] = x[0];
+        out[k][1] = x[1];
+        out[k][2] = x[2];
+        sum += vec3_dot(x, x);
+    }
+    return sum;
+}
+
 void mould_shape_measure(const double point[MOULD_SAMPLES][3],
                          struct mould_shape *shape)
 {
-    double g[3];
-    centroid_of(point, MOULD_SAMPLES, g);
-    shape->spread = 0;
-    for (int k = 0; k < MOULD_SAMPLES; k++) {
-        vec3_sub(point[k], g, shape->centred[k]);
+    shape->spread = centre(point, MOULD_SAMPLES, shape->centred);
+    for (int k = 0; k < MOULD_SAMPLES; k++)
         shape->radius[k] = vec3_length(shape->centred[k]);
-        shape->spread += vec3_dot(shape->centred[k], shape->centred[k]);
-    }
-    double rim[MOULD_RIM][3], h[3];
+    double rim[MOULD_RIM][3], corner[4][3];
     for (int q = 0; q < MOULD_RIM; q++)
-        for (int x = 0; x < 3; x++)
-            rim[q][x] = point[mould_rim_sample(q)][x];
-    centroid_of((const double (*)[3])rim, MOULD_RIM, h);
-    shape->rim_spread = 0;
-    for (int q = 0; q < MOULD_RIM; q++) {
-        vec3_sub(rim[q], h, shape->rim[q]);
-        shape->rim_spread += vec3_dot(shape->rim[q], shape->rim[q]);
-    }
-    double corner[4][3], c0[3];
+        memcpy(rim[q], point[mould_rim_sample(q)], sizeof rim[q]);
+    shape->rim_spread = centre((const double (*)[3])rim, MOULD_RIM,
+                               shape->rim);
     for (int c = 0; c < 4; c++)
-        for (int x = 0; x < 3; x++)
-            corner[c][x] = point[corner_sample(c)][x];
-    centroid_of((const double (*)[3])corner, 4, c0);
-    shape->corner_spread = 0;
-    for (int c = 0; c < 4; c++) {
-        vec3_sub(corner[c], c0, shape->corner[c]);
-        shape->corner_spread += vec3_dot(shape->corner[c], shape->corner[c]);
-    }
+        memcpy(corner[c], point[corner_sample(c)], sizeof corner[c]);
+    shape->corner_spread = centre((const double (*)[3])corner, 4,
+                                  shape->corner);
     /* |p - q| and |q - p| are the same double: one root a pair. */
     for (int c = 0; c < 4; c++) {
         shape->corner_distance[c][c] = 0;
