@@ -146,10 +146,13 @@ static void covariance(const double (*a)[3], const double ca[3],
 
 /* The largest |r (a[order[k]] - ca) - (b[k] - cb)|, k < n. The largest
  * square is found first and its root taken once: the root is monotonic,
- * so this is the largest root, to the bit. */
+ * so this is the largest root, to the bit. Once a distance exceeds stop,
+ * returns it instead (stop INFINITY: never): a fit that fails need not be
+ * measured to its end. */
 static double deviation(const double (*a)[3], const double ca[3],
                         const double (*b)[3], const double cb[3],
-                        const int *order, size_t n, const double r[9])
+                        const int *order, size_t n, const double r[9],
+                        double stop)
 {
     double worst = 0;
     for (size_t k = 0; k < n; k++) {
@@ -160,8 +163,11 @@ static double deviation(const double (*a)[3], const double ca[3],
             d[i] = r[3 * i] * x[0] + r[3 * i + 1] * x[1] +
                    r[3 * i + 2] * x[2] - (b[k][i] - cb[i]);
         double square = vec3_dot(d, d);
-        if (square > worst)
+        if (square > worst) {
             worst = square;
+            if (sqrt(square) > stop)
+                return sqrt(square);
+        }
     }
     return sqrt(worst);
 }
@@ -177,7 +183,7 @@ double mould_fit_points(const double (*a)[3], const double (*b)[3],
     double m[9], r[9];
     covariance(a, ca, b, cb, order, n, m);
     best_rotation(m, mirrored, r);
-    double worst = deviation(a, ca, b, cb, order, n, r);
+    double worst = deviation(a, ca, b, cb, order, n, r, INFINITY);
     if (rotation != NULL)
         for (int i = 0; i < 9; i++)
             rotation[i] = r[i];
@@ -188,11 +194,11 @@ double mould_fit_points(const double (*a)[3], const double (*b)[3],
     return worst;
 }
 
-/* Corner c of the cell, (0,0), (1,0), (1,1), (0,1): every rim's fourth
- * sample from the first. */
+/* The sample at corner c of the cell, (0,0), (1,0), (1,1), (0,1). */
 static int corner_sample(int c)
 {
-    return mould_rim_sample(c * (MOULD_SIDE - 1));
+    const int s = MOULD_SIDE - 1;
+    return mould_sample_index(c == 1 || c == 2 ? s : 0, c >= 2 ? s : 0);
 }
 
 void mould_labels_make(struct mould_labels *labels)
@@ -200,10 +206,6 @@ void mould_labels_make(struct mould_labels *labels)
     for (int r = 0; r < MOULD_RELABELINGS; r++) {
         int *order = labels->order[r];
         mould_relabeling(r, order);
-        for (int q = 0; q < MOULD_RIM; q++)
-            for (int p = 0; p < MOULD_RIM; p++)
-                if (mould_rim_sample(p) == order[mould_rim_sample(q)])
-                    labels->rim[r][q] = p;
         for (int c = 0; c < 4; c++)
             for (int d = 0; d < 4; d++)
                 if (corner_sample(d) == order[corner_sample(c)])
@@ -234,11 +236,7 @@ void mould_shape_measure(const double point[MOULD_SAMPLES][3],
     shape->spread = centre(point, MOULD_SAMPLES, shape->centred);
     for (int k = 0; k < MOULD_SAMPLES; k++)
         shape->radius[k] = vec3_length(shape->centred[k]);
-    double rim[MOULD_RIM][3], corner[4][3];
-    for (int q = 0; q < MOULD_RIM; q++)
-        memcpy(rim[q], point[mould_rim_sample(q)], sizeof rim[q]);
-    shape->rim_spread = centre((const double (*)[3])rim, MOULD_RIM,
-                               shape->rim);
+    double corner[4][3];
     for (int c = 0; c < 4; c++)
         memcpy(corner[c], point[corner_sample(c)], sizeof corner[c]);
     shape->corner_spread = centre((const double (*)[3])corner, 4,
@@ -336,8 +334,8 @@ int mould_congruent(const struct mould_labels *labels,
         const int *order = labels->order[r];
         /* The cheapest bound first: most fits that fail, fail on the
          * corners. */
-        double corner[9], m[9], rim[9];
-        int m_done = 0, rim_done = 0;
+        double corner[9], m[9];
+        int m_done = 0;
         covariance((const double (*)[3])a->corner, zero,
                    (const double (*)[3])b->corner, zero, labels->corner[r],
                    4, corner);
@@ -354,20 +352,11 @@ int mould_congruent(const struct mould_labels *labels,
             if (out_of_reach(m, a->spread + b->spread, MOULD_SAMPLES, limit,
                              mirrored))
                 continue;
-            if (!rim_done) {
-                covariance((const double (*)[3])a->rim, zero,
-                           (const double (*)[3])b->rim, zero,
-                           labels->rim[r], MOULD_RIM, rim);
-                rim_done = 1;
-            }
-            if (out_of_reach(rim, a->rim_spread + b->rim_spread, MOULD_RIM,
-                             limit, mirrored))
-                continue;
             double rotation[9];
             best_rotation(m, mirrored, rotation);
             double d = deviation((const double (*)[3])a->centred, zero,
                                  (const double (*)[3])b->centred, zero,
-                                 order, MOULD_SAMPLES, rotation);
+                                 order, MOULD_SAMPLES, rotation, limit);
             if (d <= limit) {
                 if (fit != NULL)
                     *fit = (struct mould_fit){d, r, mirrored};

@@ -53,11 +53,9 @@ double mould_fit_points(const double (*a)[3], const double (*b)[3],
  * (mould_labels_make) and shared by every test. */
 struct mould_labels {
     int order[MOULD_RELABELINGS][MOULD_SAMPLES];  /* mould_relabeling's */
-    int rim[MOULD_RELABELINGS][MOULD_RIM];        /* the same on the rim:
-        rim sample q of one panel corresponds to rim sample rim[r][q] of
-        the other (mould_rim_sample) */
-    int corner[MOULD_RELABELINGS][4];             /* and on the corners,
-        numbered (0,0), (1,0), (1,1), (0,1) of the cell */
+    int corner[MOULD_RELABELINGS][4];             /* the same on the
+        corners, numbered (0,0), (1,0), (1,1), (0,1) of the cell: corner c
+        of one panel corresponds to corner corner[r][c] of the other */
 };
 
 void mould_labels_make(struct mould_labels *labels);
@@ -71,9 +69,6 @@ struct mould_shape {
                                           them */
     double radius[MOULD_SAMPLES];      /* each centred point's length (m) */
     double spread;                     /* the sum of their squares (m^2) */
-    double rim[MOULD_RIM][3];          /* the rim samples less their own
-                                          centroid (m) */
-    double rim_spread;                 /* the sum of their squares (m^2) */
     double corner[4][3];               /* the corners less their own
                                           centroid (m) */
     double corner_spread;              /* the sum of their squares (m^2) */
@@ -103,8 +98,8 @@ struct mould_fit {
  *     within limit moves each sample, and so the centroid, by at most
  *     limit);
  *   - the least root mean square distance any rigid move of that kind
- *     (proper or mirrored) leaves between the 4 corners, the 25 samples or
- *     the 16 samples of the rim (tried in that order) exceeds limit: the largest distance is at
+ *     (proper or mirrored) leaves between the 4 corners, or between the
+ *     25 samples (tried in that order), exceeds limit: the largest distance is at
  *     least the root mean square one, which is at least that least one.
  *     The least sum of squares is |a|^2 + |b|^2 - 2 lambda, lambda the
  *     largest eigenvalue of Horn's 4 x 4 matrix of the cross-covariance

@@ -38,24 +38,6 @@ static inline int mould_sample_index(int a, int b)
     return b * MOULD_SIDE + a;
 }
 
-/* The samples on the cell's outline, its rim: MOULD_RIM of them, rim
- * sample q (0..MOULD_RIM-1) being lattice point mould_rim_sample(q), in
- * order around the cell from corner (0, 0) along v = 0 first. Every
- * relabeling of the lattice maps the rim onto itself. */
-#define MOULD_RIM (4 * (MOULD_SIDE - 1))
-
-static inline int mould_rim_sample(int q)
-{
-    const int s = MOULD_SIDE - 1;
-    if (q < s)
-        return mould_sample_index(q, 0);
-    if (q < 2 * s)
-        return mould_sample_index(s, q - s);
-    if (q < 3 * s)
-        return mould_sample_index(3 * s - q, s);
-    return mould_sample_index(0, 4 * s - q);
-}
-
 /* Samples panel n of panels, built over mesh and index (for a prepared
  * surface s: &s->mesh, &s->uv), into out (m): out[mould_sample_index(a,
  * b)] is the surface point at the cell's fraction (a, b) / (MOULD_SIDE -
