@@ -352,9 +352,9 @@ static int compare_doubles(const void *a, const void *b)
 }
 
 int joint_lines_build(const struct joint_prep *prep, const struct mesh *mesh,
-                      const struct uv_index *index, const int (*grid)[2],
-                      size_t ngrids, int jobs, struct joint_lines *out,
-                      struct facet_error *err)
+                      const struct uv_index *index, const int *const side[2],
+                      const size_t nsides[2], int jobs,
+                      struct joint_lines *out, struct facet_error *err)
 {
     memset(out, 0, sizeof *out);
     /* The box panel_grid_init gives every grid over index. */
@@ -369,17 +369,16 @@ int joint_lines_build(const struct joint_prep *prep, const struct mesh *mesh,
         jobs = PARALLEL_MAX;
     for (int axis = 0; axis < 2; axis++) {
         size_t total = 0;
-        for (size_t g = 0; g < ngrids; g++)
-            total += grid[g][axis] > 1 ? (size_t)grid[g][axis] - 1 : 0;
+        for (size_t g = 0; g < nsides[axis]; g++)
+            total += side[axis][g] > 1 ? (size_t)side[axis][g] - 1 : 0;
         double *line = malloc((total ? total : 1) * sizeof *line);
         out->line[axis] = line;
         if (line == NULL)
             goto no_memory;
         /* Each grid's lines as joint_length computes them. */
         size_t n = 0;
-        for (size_t g = 0; g < ngrids; g++) {
-            box.nu = grid[g][0];
-            box.nv = grid[g][1];
+        for (size_t g = 0; g < nsides[axis]; g++) {
+            box.nu = box.nv = side[axis][g];
             double lo, d;
             int count = grid_lines(&box, axis, &lo, &d);
             for (int i = 1; i < count; i++)

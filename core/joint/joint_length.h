@@ -94,14 +94,15 @@ struct joint_lines {
     double *length[2];    /* (m), the nonzero ones (a zero adds nothing) */
 };
 
-/* Measures the lines of the grids grid[0..ngrids) (nu, nv each) over the
- * UV box of index, on up to jobs threads, into *out (caller-owned,
- * released with joint_lines_free, also after a failure). Returns FACET_OK
- * or FACET_EWORK when out of memory. */
+/* Measures the lines of the grids over the UV box of index whose side
+ * along u is one of side[0][0..nsides[0]) and along v one of side[1][0..
+ * nsides[1]), on up to jobs threads, into *out (caller-owned, released
+ * with joint_lines_free, also after a failure). Returns FACET_OK or
+ * FACET_EWORK when out of memory. */
 int joint_lines_build(const struct joint_prep *prep, const struct mesh *mesh,
-                      const struct uv_index *index, const int (*grid)[2],
-                      size_t ngrids, int jobs, struct joint_lines *out,
-                      struct facet_error *err);
+                      const struct uv_index *index, const int *const side[2],
+                      const size_t nsides[2], int jobs,
+                      struct joint_lines *out, struct facet_error *err);
 
 void joint_lines_free(struct joint_lines *lines);
 

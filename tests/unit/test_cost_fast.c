@@ -264,10 +264,18 @@ static size_t check_space(const struct surface *s, int u_lo, int u_hi,
             grid[ngrids][1] = nv;
             ngrids++;
         }
+    int u_side[64], v_side[64];
+    assert_true(u_hi - u_lo < 64 && v_hi - v_lo < 64);
+    for (int k = 0; k <= u_hi - u_lo; k++)
+        u_side[k] = u_lo + k;
+    for (int k = 0; k <= v_hi - v_lo; k++)
+        v_side[k] = v_lo + k;
+    const int *side[2] = {u_side, v_side};
+    size_t nsides[2] = {(size_t)(u_hi - u_lo + 1), (size_t)(v_hi - v_lo + 1)};
     struct joint_lines lines;
     struct facet_error err;
     assert_int_equal(joint_lines_build(&s->joints, &s->mesh, &s->uv,
-                                       (const int (*)[2])grid, ngrids, 2,
+                                       (const int *const *)side, nsides, 2,
                                        &lines, &err),
                      FACET_OK);
     /* Shared: fewer lines than the grids have. */
