@@ -41,6 +41,18 @@ int option_evaluate_lattice(const struct surface *surface,
                             struct option_totals *totals,
                             struct facet_error *err)
 {
+    return option_evaluate_shared(surface, lattice, NULL, params, panels,
+                                  totals, err);
+}
+
+int option_evaluate_shared(const struct surface *surface,
+                           const struct panel_lattice *lattice,
+                           const struct joint_lines *lines,
+                           const struct option_params *params,
+                           struct panelization *panels,
+                           struct option_totals *totals,
+                           struct facet_error *err)
+{
     memset(panels, 0, sizeof *panels);
     memset(totals, 0, sizeof *totals);
     if (!surface->prepared)
@@ -59,8 +71,9 @@ int option_evaluate_lattice(const struct surface *surface,
     if (rc != FACET_OK)
         return rc;
     return option_classify(surface, params,
-                           joint_length(&surface->joints, &surface->mesh,
-                                        &surface->uv, panels),
+                           joint_length_lines(lines, &surface->joints,
+                                              &surface->mesh, &surface->uv,
+                                              panels),
                            panels, totals, err);
 }
 

@@ -59,6 +59,19 @@ int option_evaluate_lattice(const struct surface *surface,
                             struct option_totals *totals,
                             struct facet_error *err);
 
+struct joint_lines;
+
+/* option_evaluate_lattice with the joint length taken from the lines of
+ * lines (NULL: none) that the grid's are among (joint_lines_build): the
+ * same length, to the bit, for a batch of grids that share lines. */
+int option_evaluate_shared(const struct surface *surface,
+                           const struct panel_lattice *lattice,
+                           const struct joint_lines *lines,
+                           const struct option_params *params,
+                           struct panelization *panels,
+                           struct option_totals *totals,
+                           struct facet_error *err);
+
 /* What option_evaluate does once the panels are built: classifies panels
  * (built for params' grid over surface), finds their mould families
  * (setting each panel's mould), and fills *totals, priced with joint_length

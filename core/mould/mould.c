@@ -40,6 +40,8 @@ struct bucket {
 struct family_work {
     const struct panelization *panels;
     const struct mould_options *options;
+    struct mould_labels labels;
+    double (*point)[MOULD_SAMPLES][3];     /* npanels: the samples */
     struct mould_shape *shape;              /* npanels */
     double (*descriptor)[DESCRIPTOR];      /* npanels */
     unsigned char *sampled;                /* npanels */
@@ -67,38 +69,33 @@ static void sort_ascending(double *x, int n)
         }
 }
 
-static void describe(const double s[MOULD_SAMPLES][3], double d[DESCRIPTOR])
+/* The descriptor of a measured shape: its corner distances, and its
+ * centred samples for the bulge (the corners' centroid less the samples')
+ * and the spread. */
+static void describe(const struct mould_shape *shape, double d[DESCRIPTOR])
 {
-    const int e = MOULD_SIDE - 1;
-    const double *c[4] = {
-        s[mould_sample_index(0, 0)], s[mould_sample_index(e, 0)],
-        s[mould_sample_index(e, e)], s[mould_sample_index(0, e)],
-    };
-    double diagonal[2] = {vec3_distance(c[0], c[2]),
-                          vec3_distance(c[1], c[3])};
+    const double (*c)[4] = shape->corner_distance;
+    double diagonal[2] = {c[0][2], c[1][3]};
     sort_ascending(diagonal, 2);
     double side[4];
     for (int k = 0; k < 4; k++)
-        side[k] = vec3_distance(c[k], c[(k + 1) % 4]);
+        side[k] = c[k][(k + 1) % 4];
     sort_ascending(side, 4);
-    double g[3] = {0, 0, 0}, h[3] = {0, 0, 0};
-    for (int k = 0; k < MOULD_SAMPLES; k++)
-        for (int x = 0; x < 3; x++)
-            g[x] += s[k][x] / MOULD_SAMPLES;
+    const int e = MOULD_SIDE - 1;
+    const int corner[4] = {
+        mould_sample_index(0, 0), mould_sample_index(e, 0),
+        mould_sample_index(e, e), mould_sample_index(0, e),
+    };
+    double bulge[3] = {0, 0, 0};
     for (int k = 0; k < 4; k++)
         for (int x = 0; x < 3; x++)
-            h[x] += c[k][x] / 4;
-    double spread = 0;
-    for (int k = 0; k < MOULD_SAMPLES; k++) {
-        double r = vec3_distance(s[k], g);
-        spread += r * r / MOULD_SAMPLES;
-    }
+            bulge[x] += shape->centred[corner[k]][x] / 4;
     d[0] = diagonal[1];
-    d[1] = vec3_distance(g, h);
+    d[1] = vec3_length(bulge);
     d[2] = diagonal[0];
     for (int k = 0; k < 4; k++)
         d[3 + k] = side[k];
-    d[7] = sqrt(spread);
+    d[7] = sqrt(shape->spread / MOULD_SAMPLES);
 }
 
 /* How far two descriptor values x and y of panels within limit of each
@@ -136,20 +133,25 @@ static void grid_key(const struct family_work *w, const double d[DESCRIPTOR],
     key[1] = (int64_t)floor(d[1] / w->cell);
 }
 
-/* Samples and describes every SP and DP panel; sets w->cell. */
-static void sample_panels(const struct mesh *mesh,
-                          const struct uv_index *index,
-                          struct family_work *w)
+/* Samples and describes every SP and DP panel (w->sampled holds which
+ * it could); sets w->cell. Returns FACET_OK or FACET_EWORK. */
+static int sample_panels(const struct mesh *mesh,
+                         const struct uv_index *index,
+                         struct family_work *w)
 {
     const struct panelization *p = w->panels;
+    for (size_t n = 0; n < p->npanels; n++)
+        w->sampled[n] = p->panels[n].type != TYPE_FP;
+    if (mould_sample_grid(mesh, index, p, w->sampled, w->point,
+                          w->sampled) != FACET_OK)
+        return FACET_EWORK;
     double diameter = 0, extent = 0;
     for (size_t n = 0; n < p->npanels; n++) {
-        w->sampled[n] = 0;
-        if (p->panels[n].type == TYPE_FP ||
-            !mould_sample_panel(mesh, index, p, n, w->shape[n].point))
+        if (!w->sampled[n])
             continue;
-        mould_shape_measure(&w->shape[n]);
-        describe((const double (*)[3])w->shape[n].point, w->descriptor[n]);
+        w->sampled[n] = 0;
+        mould_shape_measure((const double (*)[3])w->point[n], &w->shape[n]);
+        describe(&w->shape[n], w->descriptor[n]);
         int finite = 1;
         for (int k = 0; k < DESCRIPTOR; k++)
             finite &= isfinite(w->descriptor[n][k]);
@@ -165,6 +167,7 @@ static void sample_panels(const struct mesh *mesh,
     w->cell = 1.01 * allowed(limit, extent, extent);
     if (!(w->cell > 0) || !isfinite(w->cell))
         w->cell = 1;
+    return FACET_OK;
 }
 
 /* The families of the representatives near panel n, in w->candidate in
@@ -243,7 +246,7 @@ static void group_panels(struct family_work *w, struct mould_families *out)
                                        panel->diameter);
             struct mould_fit fit;
             out->fits++;
-            if (mould_congruent(&w->shape[r], &w->shape[n],
+            if (mould_congruent(&w->labels, &w->shape[r], &w->shape[n],
                                 w->options->mirror, limit, &fit)) {
                 assert(fit.deviation <= limit);
                 out->family[n] = f;
@@ -285,6 +288,7 @@ int mould_families_build(const struct mesh *mesh,
         slots *= 2;
     struct family_work w = {
         .panels = panels, .options = options,
+        .point = malloc(one * sizeof *w.point),
         .shape = malloc(one * sizeof *w.shape),
         .descriptor = malloc(one * sizeof *w.descriptor),
         .sampled = malloc(one),
@@ -298,7 +302,7 @@ int mould_families_build(const struct mesh *mesh,
     out->representative = malloc(one * sizeof *out->representative);
     out->size = malloc(one * sizeof *out->size);
     int rc = FACET_OK;
-    if (w.shape == NULL || w.descriptor == NULL || w.sampled == NULL ||
+    if (w.point == NULL || w.shape == NULL || w.descriptor == NULL || w.sampled == NULL ||
         w.bucket == NULL || w.next == NULL || w.candidate == NULL ||
         out->family == NULL || out->representative == NULL ||
         out->size == NULL) {
@@ -308,9 +312,14 @@ int mould_families_build(const struct mesh *mesh,
     } else {
         for (size_t s = 0; s < slots; s++)
             w.bucket[s].head = -1;
-        sample_panels(mesh, index, &w);
-        group_panels(&w, out);
+        mould_labels_make(&w.labels);
+        if (sample_panels(mesh, index, &w) == FACET_OK)
+            group_panels(&w, out);
+        else
+            rc = facet_error_set(err, FACET_EWORK,
+                                 "out of memory for the mould samples");
     }
+    free(w.point);
     free(w.shape);
     free(w.descriptor);
     free(w.sampled);

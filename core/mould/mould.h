@@ -37,7 +37,11 @@
  * whose rotation-invariant descriptor (diagonals, sides, spread and bulge
  * of the samples) is within what the tolerance allows, found in a hash
  * grid, so that the work grows with the panels, not with panels x
- * families.
+ * families. The samples of the whole grid are located a band of cells at
+ * a time, a point two cells share once (mould_sample_grid), and a test
+ * skips the fits that lower bounds show cannot be within the tolerance
+ * (mould_congruent). None of this changes a family or a deviation:
+ * tests/unit/test_cost_fast.c holds them to the plain greedy, to the bit.
  */
 #ifndef FACET_MOULD_H
 #define FACET_MOULD_H

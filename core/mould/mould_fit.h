@@ -49,15 +49,35 @@ double mould_fit_points(const double (*a)[3], const double (*b)[3],
                         const int *order, size_t n, int mirrored,
                         double rotation[9], double translation[3]);
 
-/* A sampled panel as the congruence test takes it. */
-struct mould_shape {
-    double point[MOULD_SAMPLES][3];  /* mould_sample_panel's (m) */
-    double radius[MOULD_SAMPLES];    /* each point's distance from the
-                                        points' centroid (m) */
+/* The 8 relabelings as the congruence test takes them, made once
+ * (mould_labels_make) and shared by every test. */
+struct mould_labels {
+    int order[MOULD_RELABELINGS][MOULD_SAMPLES];  /* mould_relabeling's */
+    int corner[MOULD_RELABELINGS][4];             /* the same on the
+        corners, numbered (0,0), (1,0), (1,1), (0,1) of the cell: corner c
+        of one panel corresponds to corner corner[r][c] of the other */
 };
 
-/* Sets shape->radius from shape->point. */
-void mould_shape_measure(struct mould_shape *shape);
+void mould_labels_make(struct mould_labels *labels);
+
+/* A sampled panel as the congruence test takes it: its samples and what
+ * every test of it would otherwise recompute. */
+struct mould_shape {
+    double centred[MOULD_SAMPLES][3];  /* each sample (mould_sample_panel's)
+                                          less the samples' centroid
+                                          (m), as mould_fit_points centres
+                                          them */
+    double radius[MOULD_SAMPLES];      /* each centred point's length (m) */
+    double spread;                     /* the sum of their squares (m^2) */
+    double corner[4][3];               /* the corners less their own
+                                          centroid (m) */
+    double corner_spread;              /* the sum of their squares (m^2) */
+    double corner_distance[4][4];      /* between corners (m) */
+};
+
+/* Sets *shape from a panel's samples (mould_sample_panel's). */
+void mould_shape_measure(const double point[MOULD_SAMPLES][3],
+                         struct mould_shape *shape);
 
 /* How two sampled panels were found congruent. */
 struct mould_fit {
@@ -69,13 +89,28 @@ struct mould_fit {
 /* Whether panel a's samples, moved rigidly under some relabeling, lie
  * within limit (m) of panel b's: tries the relabelings in order 0..7, the
  * proper fit first, then, when mirror, the mirrored one, and stops at the
- * first fit within limit, returned in *fit (may be NULL). A relabeling is
- * skipped without fitting when a sample's distance from the centroid, or
- * the distance between two corners, differs between the panels by more
- * than 2 limit, which no fit within limit allows (a fit moves each sample
- * and so the centroid by at most limit). Returns 1 when a fit is within
- * limit, else 0. */
-int mould_congruent(const struct mould_shape *a, const struct mould_shape *b,
+ * first fit within limit, returned in *fit (may be NULL). The deviation of
+ * each fit is mould_fit_points's, to the bit.
+ *
+ * A fit is skipped, as one that cannot be within limit, when:
+ *   - a sample's distance from the centroid, or the distance between two
+ *     corners, differs between the panels by more than 2 limit (a fit
+ *     within limit moves each sample, and so the centroid, by at most
+ *     limit);
+ *   - the least root mean square distance any rigid move of that kind
+ *     (proper or mirrored) leaves between the 4 corners, or between the
+ *     25 samples (tried in that order), exceeds limit: the largest distance is at
+ *     least the root mean square one, which is at least that least one.
+ *     The least sum of squares is |a|^2 + |b|^2 - 2 lambda, lambda the
+ *     largest eigenvalue of Horn's 4 x 4 matrix of the cross-covariance
+ *     (its negative, mirrored); lambda < mu is shown without computing
+ *     lambda, by a Cholesky factorization of mu I - N, with a margin
+ *     (1e-9 of |a|^2 + |b|^2) that covers its rounding and the fit's a
+ *     million times over.
+ * So the skips change no answer, only the time. Returns 1 when a fit is
+ * within limit, else 0. */
+int mould_congruent(const struct mould_labels *labels,
+                    const struct mould_shape *a, const struct mould_shape *b,
                     int mirror, double limit, struct mould_fit *fit);
 
 #endif

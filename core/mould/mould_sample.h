@@ -48,4 +48,17 @@ int mould_sample_panel(const struct mesh *mesh, const struct uv_index *index,
                        const struct panelization *panels, size_t n,
                        double out[MOULD_SAMPLES][3]);
 
+/* Samples every panel n of panels with want[n] set into out[n] as
+ * mould_sample_panel(mesh, index, panels, n, out[n]) does, to the bit, and
+ * sets sampled[n] to what it returns (0 where want[n] is not set). The
+ * samples on a side two cells share are at the same UV, so they are
+ * located once, a band of cells at a time along v: a grid takes about 15
+ * lookups a panel instead of 21. Returns FACET_OK, or FACET_EWORK when
+ * out of memory. */
+int mould_sample_grid(const struct mesh *mesh, const struct uv_index *index,
+                      const struct panelization *panels,
+                      const unsigned char *want,
+                      double (*out)[MOULD_SAMPLES][3],
+                      unsigned char *sampled);
+
 #endif

@@ -13,6 +13,7 @@
 
 #include "core/base/numparse.h"
 #include "core/base/parallel.h"
+#include "core/joint/joint_length.h"
 #include "core/search/optimize_internal.h"
 #include "core/base/rng.h"
 
@@ -186,6 +187,7 @@ int optimize_method_check(enum optimize_method method,
 struct evaluation_plan {
     const struct surface *surface;
     const struct panel_lattice *lattice;  /* or NULL */
+    const struct joint_lines *lines;      /* or NULL */
     const struct option_params *base;
     const struct design_point *points;
     const size_t *order;            /* the points by grid */
@@ -222,10 +224,11 @@ static void evaluation_thread(void *argument)
                 plan->base, plan->points[k].nu, plan->points[k].nv,
                 plan->points[k].threshold_mm);
             if (x == plan->group[g]) {
-                job->rc = option_evaluate_lattice(plan->surface,
-                                                  plan->lattice, &params,
-                                                  &panels, &plan->totals[k],
-                                                  &job->err);
+                job->rc = option_evaluate_shared(plan->surface,
+                                                 plan->lattice, plan->lines,
+                                                 &params, &panels,
+                                                 &plan->totals[k],
+                                                 &job->err);
             } else {
                 /* Same grid, same joints: measured with its first point. */
                 double joints =
@@ -265,9 +268,60 @@ static int compare_by_grid(const void *a, const void *b)
     return p->index < q->index ? -1 : p->index > q->index;
 }
 
-/* optimize_evaluate, and with keep, optimize_evaluate_panels. */
+static int compare_ints(const void *a, const void *b)
+{
+    int x = *(const int *)a, y = *(const int *)b;
+    return (x > y) - (x < y);
+}
+
+/* Sorts the grid sides side[0..n) and keeps each value once, first;
+ * returns how many. */
+static size_t distinct_sides(int *side, size_t n)
+{
+    qsort(side, n, sizeof *side, compare_ints);
+    size_t distinct = 0;
+    for (size_t k = 0; k < n; k++)
+        if (distinct == 0 || side[k] != side[distinct - 1])
+            side[distinct++] = side[k];
+    return distinct;
+}
+
+/* The joint lines of a batch's grids: the first point of each group. */
+static int batch_joint_lines(const struct surface *surface,
+                             const struct design_point *points,
+                             const size_t *order, const size_t *group,
+                             size_t ngroups, int jobs,
+                             struct joint_lines *out, struct facet_error *err)
+{
+    int *side[2] = {malloc(ngroups * sizeof(int)),
+                    malloc(ngroups * sizeof(int))};
+    if (side[0] == NULL || side[1] == NULL) {
+        free(side[0]);
+        free(side[1]);
+        return facet_error_set(err, FACET_EWORK, "out of memory");
+    }
+    for (size_t g = 0; g < ngroups; g++) {
+        side[0][g] = points[order[group[g]]].nu;
+        side[1][g] = points[order[group[g]]].nv;
+    }
+    size_t nsides[2] = {distinct_sides(side[0], ngroups),
+                        distinct_sides(side[1], ngroups)};
+    int rc = joint_lines_build(&surface->joints, &surface->mesh,
+                               &surface->uv, (const int *const *)side, nsides,
+                               jobs, out, err);
+    free(side[0]);
+    free(side[1]);
+    if (rc != FACET_OK)
+        joint_lines_free(out);
+    return rc;
+}
+
+/* optimize_evaluate, and with keep, optimize_evaluate_panels; the joint
+ * lengths from lines (NULL: measured for the batch when a lattice says
+ * its grids share lines). */
 static int evaluate(const struct surface *surface,
                     const struct panel_lattice *lattice,
+                    const struct joint_lines *lines,
                     const struct option_params *base,
                     const struct design_point *points, size_t n, int jobs,
                     struct option_totals *totals, struct panelization *keep,
@@ -307,18 +361,33 @@ static int evaluate(const struct surface *surface,
     }
     group[ngroups] = n;
     free(key);
+    /* Grids that share a lattice share lines: their joints are measured
+     * once a line for the batch, unless the run's lines are given. */
+    struct joint_lines batch_lines;
+    memset(&batch_lines, 0, sizeof batch_lines);
+    if (lines == NULL && lattice != NULL && ngroups > 1) {
+        int rc = batch_joint_lines(surface, points, order, group, ngroups,
+                                   jobs, &batch_lines, err);
+        if (rc != FACET_OK) {
+            free(order);
+            free(group);
+            return rc;
+        }
+        lines = &batch_lines;
+    }
     if ((size_t)jobs > ngroups)
         jobs = ngroups > 0 ? (int)ngroups : 1;
 
     if (keep != NULL && n > 0)
         memset(keep, 0, n * sizeof *keep);
-    struct evaluation_plan plan = {surface, lattice, base, points, order,
-                                   group, ngroups, 0, totals, keep};
+    struct evaluation_plan plan = {surface, lattice, lines, base, points,
+                                   order, group, ngroups, 0, totals, keep};
     atomic_init(&plan.next, 0);
     struct evaluation_job job[PARALLEL_MAX];
     for (int k = 0; k < jobs; k++)
         job[k] = (struct evaluation_job){&plan, FACET_OK, {0, FACET_SETTING_NONE, ""}};
     parallel_run(job, sizeof job[0], jobs, evaluation_thread);
+    joint_lines_free(&batch_lines);
     free(order);
     free(group);
     for (int k = 0; k < jobs; k++)
@@ -338,8 +407,8 @@ int optimize_evaluate(const struct surface *surface,
                       const struct design_point *points, size_t n, int jobs,
                       struct option_totals *totals, struct facet_error *err)
 {
-    return evaluate(surface, lattice, base, points, n, jobs, totals, NULL,
-                    err);
+    return evaluate(surface, lattice, NULL, base, points, n, jobs, totals,
+                    NULL, err);
 }
 
 int optimize_evaluate_panels(const struct surface *surface,
@@ -350,8 +419,8 @@ int optimize_evaluate_panels(const struct surface *surface,
                              struct option_totals *totals,
                              struct facet_error *err)
 {
-    return evaluate(surface, lattice, base, points, n, jobs, totals, panels,
-                    err);
+    return evaluate(surface, lattice, NULL, base, points, n, jobs, totals,
+                    panels, err);
 }
 
 /* --- the point cache and batches --- */
@@ -503,9 +572,9 @@ int search_batch(struct search *s, const struct design_point *points,
         }
         for (size_t k = 0; k < fresh; k++)
             points_new[k] = s->known[first_new + k].point;
-        rc = optimize_evaluate(s->surface, s->lattice, &s->settings->base,
-                               points_new, fresh, s->settings->jobs, totals,
-                               err);
+        rc = evaluate(s->surface, s->lattice, s->lines, &s->settings->base,
+                      points_new, fresh, s->settings->jobs, totals, NULL,
+                      err);
         for (size_t k = 0; rc == FACET_OK && k < fresh; k++)
             s->known[first_new + k].totals = totals[k];
         free(points_new);
@@ -748,6 +817,30 @@ int optimize_run(const struct surface *surface,
     rc = search_init(&s, surface, settings, stored, nstored, hooks, total,
                      err);
     s.lattice = lattice;
+    /* With a lattice, the run's grids share lines: measure the joints of
+     * every line of the space once, for all its batches. */
+    struct joint_lines lines;
+    memset(&lines, 0, sizeof lines);
+    if (rc == FACET_OK && lattice != NULL) {
+        const struct design_space *space = &settings->space;
+        size_t nsides[2] = {(size_t)(space->u_max - space->u_min + 1),
+                            (size_t)(space->v_max - space->v_min + 1)};
+        int *side[2] = {malloc(nsides[0] * sizeof(int)),
+                        malloc(nsides[1] * sizeof(int))};
+        if (side[0] == NULL || side[1] == NULL)
+            rc = facet_error_set(err, FACET_EWORK, "out of memory");
+        for (size_t k = 0; rc == FACET_OK && k < nsides[0]; k++)
+            side[0][k] = space->u_min + (int)k;
+        for (size_t k = 0; rc == FACET_OK && k < nsides[1]; k++)
+            side[1][k] = space->v_min + (int)k;
+        if (rc == FACET_OK)
+            rc = joint_lines_build(&surface->joints, &surface->mesh,
+                                   &surface->uv, (const int *const *)side,
+                                   nsides, settings->jobs, &lines, err);
+        free(side[0]);
+        free(side[1]);
+        s.lines = &lines;
+    }
     if (rc == FACET_OK) {
         if (settings->method == METHOD_EXHAUSTIVE)
             rc = run_exhaustive(&s, outcome, err);
@@ -757,6 +850,7 @@ int optimize_run(const struct surface *surface,
             rc = run_nsga2(&s, outcome, err);
     }
     search_free(&s);
+    joint_lines_free(&lines);
     return rc;
 }
 

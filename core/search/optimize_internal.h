@@ -13,6 +13,8 @@ struct search {
     const struct optimize_settings *settings;
     const struct optimize_hooks *hooks;
     const struct panel_lattice *lattice;  /* or NULL: see optimize_lattice */
+    const struct joint_lines *lines;      /* or NULL: the joint lines of
+                                             the lattice's grids */
     struct evaluated_option *known;  /* stored at start, then new ones */
     unsigned char *met;              /* known[k] met in this pass */
     size_t nknown, known_capacity;

@@ -135,6 +135,16 @@ void uv_index_free(struct uv_index *index)
     memset(index, 0, sizeof *index);
 }
 
+/* fmin for the barycentric margins, which a huge or tiny triangle can
+ * make NaN: the other value when one is NaN, as fmin, without the library
+ * call (locating a point is the inner loop of sampling a surface). */
+static inline double min_number(double a, double b)
+{
+    if (a != a)
+        return b;
+    return b < a ? b : a;
+}
+
 /* Barycentric coordinates of (u, v) in UV triangle t; returns 0 when the
  * triangle is degenerate. */
 static int barycentric_in(const double *uv, uint32_t t, double u, double v,
@@ -175,7 +185,7 @@ uint32_t uv_index_locate(const struct uv_index *index, double u, double v,
         double b[3];
         if (!barycentric_in(index->uv, t, u, v, b))
             continue;
-        double margin = fmin(b[0], fmin(b[1], b[2]));
+        double margin = min_number(b[0], min_number(b[1], b[2]));
         if (margin >= 0) {
             memcpy(barycentric, b, sizeof b);
             return t;
