@@ -129,6 +129,12 @@ struct run_info {
     double mould_tol_mm;       /* mould tolerance (mm); NaN: each option's
                                   flatness threshold */
     int mould_mirror;          /* mirror images share a mould */
+    /* Panels as built (option.h; schema v6): */
+    int sp_fit;                /* 1: an SP panel no cylinder or cone fits
+                                  is built DP; 0: SP by class alone (the
+                                  paper's typing, and every run before) */
+    double max_gap_mm;         /* gap limit on feasibility (mm); NaN: none */
+    double max_kink_deg;       /* kink limit (degrees); NaN: none */
 };
 
 /* FACET_OK when run's setting was read from the file; FACET_EINPUT when

@@ -10,6 +10,7 @@
 
 #include "core/base/exact_sum.h"
 #include "core/base/numparse.h"
+#include "core/fit/sp_fit.h"
 
 void classify_defaults(struct classify_options *options)
 {
@@ -138,6 +139,7 @@ double classify_area_excess(double max_panel_area, double limit)
 void classify_types(struct panelization *p,
                     const struct classify_options *options)
 {
+    p->threshold = options->threshold;
     for (size_t n = 0; n < p->npanels; n++) {
         struct panel *panel = &p->panels[n];
         panel->K = panel->k1 * panel->k2;
@@ -217,14 +219,14 @@ void classify_totals(struct panelization *p,
     totals->area_cost = totals->cost_of[TYPE_FP] + totals->cost_of[TYPE_SP] +
                         totals->cost_of[TYPE_DP];
     totals->cost = totals->area_cost;
-    totals->feasible = classify_violation(totals, options) == 0;
+    totals->feasible =
+        classify_violation(totals, options->max_panel_area) == 0;
 }
 
 double classify_violation(const struct option_totals *totals,
-                          const struct classify_options *options)
+                          double max_panel_area)
 {
-    return classify_area_excess(totals->max_panel_area,
-                                options->max_panel_area) +
+    return classify_area_excess(totals->max_panel_area, max_panel_area) +
            (double)totals->gaps_over + (double)totals->kinks_over;
 }
 
@@ -325,4 +327,21 @@ int classify_prices_parse(const char *text, const char *what,
             "%s: '%s' is not FP,SP,DP in USD/m^2 (e.g. "
             "701,766,1518)", what, text);
     return FACET_OK;
+}
+
+void classify_misfit_reason(const struct panelization *p, size_t panel,
+                            char *text, size_t size)
+{
+    const struct panel *x = &p->panels[panel];
+    /* One panel as sp_fit.h built it: its one wording of the reason. */
+    struct built_panel built;
+    memset(&built, 0, sizeof built);
+    built.type = x->built;
+    built.misfit = x->misfit;
+    built.sp_deviation = x->sp_deviation;
+    built.best_cylinder = x->best_cylinder;
+    built.best_cone = x->best_cone;
+    struct built_option option = {1, &built, 0, (size_t)x->misfit,
+                                  p->threshold};
+    built_panel_reason(&option, 0, text, size);
 }

@@ -160,7 +160,7 @@ void classify_panels(struct panelization *p,
                      struct option_totals *totals);
 
 /* The first half of classify_panels: every panel's K, H, curvature_tol,
- * class and type (by class and the threshold rule). */
+ * class and type (by class and the threshold rule), and p's threshold. */
 void classify_types(struct panelization *p,
                     const struct classify_options *options);
 
@@ -171,14 +171,22 @@ void classify_totals(struct panelization *p,
                      const struct classify_options *options,
                      struct option_totals *totals);
 
-/* How far an option is from feasible (0: feasible): the size limit's
- * excess (m^2, classify_area_excess) plus the joints over the gap limit
- * and over the kink limit, each counted as 1 (totals' gaps_over and
- * kinks_over, 0 without limits). Feasibility and constraint-domination
- * both read it; without gap or kink limits it is the area excess, to the
- * bit. */
+/* How far an option is from feasible (0: feasible): its largest panel's
+ * excess over the size limit max_panel_area (m^2, classify_area_excess)
+ * plus the joints over the gap limit and over the kink limit, each
+ * counted as 1 (totals' gaps_over and kinks_over, counted against the
+ * limits when it was evaluated; 0 without limits). Feasibility and
+ * constraint-domination both read it; without gap or kink limits it is
+ * the area excess, to the bit. */
 double classify_violation(const struct option_totals *totals,
-                          const struct classify_options *options);
+                          double max_panel_area);
+
+/* Why panel of p (built by option_evaluate, or read back from the store)
+ * is a misfit, in one line into text (size bytes): the flatness threshold
+ * and its best cylinder's and cone's deviations (sp_fit.h's wording); ""
+ * for a panel that is not one. */
+void classify_misfit_reason(const struct panelization *p, size_t panel,
+                            char *text, size_t size);
 
 /* Prices the terms beyond area from totals' panels, joint_length and
  * moulds (options' panel, joint and mould costs) and sets totals->cost to

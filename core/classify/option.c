@@ -123,7 +123,8 @@ static int build_and_measure(const struct surface *surface,
         totals->mean_kink_deg = joints.mean_kink * 180 / M_PI;
         totals->gaps_over = joints.gaps_over;
         totals->kinks_over = joints.kinks_over;
-        totals->feasible = classify_violation(totals, options) == 0;
+        totals->feasible =
+            classify_violation(totals, options->max_panel_area) == 0;
     }
     joints_free(&joints);
     built_option_free(&built);

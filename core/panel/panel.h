@@ -113,6 +113,9 @@ struct panelization {
                                  j then i */
     int *cell_panel;          /* nu x nv: index into panels of cell (i, j)
                                  at [j * nu + i], or -1 when no panel */
+    double threshold;         /* the flatness threshold t its panels were
+                                 typed and built at (m), set by
+                                 classify_types: what a misfit missed */
 };
 
 /* The largest grid side panels_build accepts. */
