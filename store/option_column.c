@@ -170,6 +170,8 @@ const struct option_column store_option_columns[] = {
      FIELD_SIZE, TOTAL(kinks_over), WRITTEN_WITH_OPTION},
     {"sp_misfits", "SP misfits", "misfit", "", "", 1, 0, 0, 0, 0, "10",
      FIELD_SIZE, TOTAL(sp_misfits), WRITTEN_WITH_OPTION},
+    {"sp_fitted", "SP fitted", "fitted", "", "", 1, 0, 0, 0, 0, "100",
+     FIELD_SIZE, TOTAL(sp_fitted), WRITTEN_WITH_OPTION},
     /* New columns go here, before run. */
     {"run", "run", "run", "", "", 1, 0, 0, 0, 0, "1",
      FIELD_NONE, 0, WRITTEN_AS_KEY},

@@ -191,10 +191,11 @@ static const char schema_v5[] =
  * no cylinder or cone fits within t as DP; runs before it typed SP by
  * class alone, which 0 says. The gap and kink limits are NULL for none
  * (every run before). An option's gaps are mm and kinks degrees, NULL for
- * options stored before (never measured); a panel's worst gap (mm) and
- * kink (degrees), its SP fit's deviation (m, as deviation) and its best
- * cylinder's and cone's, likewise; misfit_reason is NULL but for a
- * misfit. */
+ * options stored before (never measured); a panel's worst gap (mm), the
+ * side of its cell that joint is on (0 v = j, 1 u = i + 1, 2 v = j + 1,
+ * 3 u = i), its worst kink (degrees), its SP fit's deviation (m, as
+ * deviation) and its best cylinder's and cone's, likewise; misfit_reason
+ * is NULL but for a misfit. */
 static const char schema_v6[] =
     "ALTER TABLE runs ADD COLUMN sp_fit INTEGER NOT NULL DEFAULT 0;"
     "ALTER TABLE runs ADD COLUMN max_gap_mm REAL;"
@@ -206,9 +207,11 @@ static const char schema_v6[] =
     "ALTER TABLE options ADD COLUMN gaps_over INTEGER;"
     "ALTER TABLE options ADD COLUMN kinks_over INTEGER;"
     "ALTER TABLE options ADD COLUMN sp_misfits INTEGER;"
+    "ALTER TABLE options ADD COLUMN sp_fitted INTEGER;"
     "ALTER TABLE panels ADD COLUMN built_type TEXT;"
     "ALTER TABLE panels ADD COLUMN sp_deviation REAL;"
     "ALTER TABLE panels ADD COLUMN worst_gap REAL;"
+    "ALTER TABLE panels ADD COLUMN worst_gap_side INTEGER;"
     "ALTER TABLE panels ADD COLUMN worst_kink REAL;"
     "ALTER TABLE panels ADD COLUMN best_cylinder REAL;"
     "ALTER TABLE panels ADD COLUMN best_cone REAL;"

@@ -43,12 +43,12 @@ int store_panels_put(struct store *store, int64_t run, int64_t option,
             " centroid_y, centroid_z, normal_x, normal_y, normal_z,"
             " c0_x, c0_y, c0_z, c1_x, c1_y, c1_z, c2_x, c2_y, c2_z,"
             " c3_x, c3_y, c3_z, mould_family, built_type, sp_deviation,"
-            " worst_gap, worst_kink, best_cylinder, best_cone,"
-            " misfit_reason) VALUES (?1, ?2, ?3, ?4, ?5,"
+            " worst_gap, worst_gap_side, worst_kink, best_cylinder,"
+            " best_cone, misfit_reason) VALUES (?1, ?2, ?3, ?4, ?5,"
             " ?6, ?7, ?8, ?9, ?10, ?11, ?12, ?13, ?14, ?15, ?16, ?17, ?18,"
             " ?19, ?20, ?21, ?22, ?23, ?24, ?25, ?26, ?27, ?28, ?29, ?30,"
             " ?31, ?32, ?33, ?34, ?35, ?36, ?37, ?38, ?39, ?40, ?41, ?42,"
-            " ?43, ?44, ?45, ?46)", &panel, "storing panels", err);
+            " ?43, ?44, ?45, ?46, ?47)", &panel, "storing panels", err);
     for (size_t k = 0; k < p->npanels && rc == FACET_OK; k++) {
         const struct panel *x = &p->panels[k];
         int c = 1;
@@ -89,6 +89,10 @@ int store_panels_put(struct store *store, int64_t run, int64_t option,
                           SQLITE_STATIC);
         store_bind_or_null(panel, c++, x->sp_deviation);
         store_bind_or_null(panel, c++, x->worst_gap_mm);
+        if (x->worst_gap_side >= 0)
+            sqlite3_bind_int(panel, c++, x->worst_gap_side);
+        else
+            sqlite3_bind_null(panel, c++);
         store_bind_or_null(panel, c++, x->worst_kink_deg);
         store_bind_or_null(panel, c++, x->best_cylinder);
         store_bind_or_null(panel, c++, x->best_cone);
@@ -200,7 +204,8 @@ int store_panels_get(struct store *store, int64_t run, int64_t option,
         " centroid_x, centroid_y, centroid_z, normal_x, normal_y, normal_z,"
         " c0_x, c0_y, c0_z, c1_x, c1_y, c1_z, c2_x, c2_y, c2_z,"
         " c3_x, c3_y, c3_z, coalesce(mould_family, -1),"
-        " coalesce(built_type, type), sp_deviation, worst_gap, worst_kink,"
+        " coalesce(built_type, type), sp_deviation, worst_gap,"
+        " coalesce(worst_gap_side, -1), worst_kink,"
         " best_cylinder, best_cone, misfit_reason IS NOT NULL FROM panels"
         " WHERE run = ?1 AND option = ?2"
         " ORDER BY j, i", &s, "reading panels", err);
@@ -257,6 +262,9 @@ int store_panels_get(struct store *store, int64_t run, int64_t option,
         x->built = built < 0 ? x->type : (enum panel_type)built;
         x->sp_deviation = store_column_or_nan(s, c++);
         x->worst_gap_mm = store_column_or_nan(s, c++);
+        x->worst_gap_side = sqlite3_column_int(s, c++);
+        if (x->worst_gap_side < -1 || x->worst_gap_side > 3)
+            x->worst_gap_side = -1;
         x->worst_kink_deg = store_column_or_nan(s, c++);
         x->best_cylinder = store_column_or_nan(s, c++);
         x->best_cone = store_column_or_nan(s, c++);

@@ -74,6 +74,29 @@ static double limit_or_none(double limit)
     return limit > 0 ? limit : INFINITY;
 }
 
+/* Sets every panel's worst_gap_side from the joints of panels: the side
+ * (panel.h's numbering) of its joint of the largest gap, the first of
+ * equal ones. A joint's panel[0] is the left or lower one (joint.h). */
+static void set_worst_sides(struct panelization *panels,
+                            const struct joints *joints)
+{
+    for (size_t k = 0; k < panels->npanels; k++)
+        panels->panels[k].worst_gap_side = -1;
+    size_t u_sides = (size_t)(panels->nu + 1) * (size_t)panels->nv;
+    for (size_t e = 0; e < joints->nedges; e++) {
+        const struct joint_edge *edge = &joints->edges[e];
+        int across_u = edge->side < u_sides;
+        for (int s = 0; s < 2; s++) {
+            struct panel *panel = &panels->panels[edge->panel[s]];
+            double best = joints->worst_gap[edge->panel[s]];
+            if (panel->worst_gap_side >= 0 || edge->gap < best)
+                continue;
+            panel->worst_gap_side = across_u ? (s == 0 ? 1 : 3)
+                                             : (s == 0 ? 2 : 0);
+        }
+    }
+}
+
 /* Builds the classified panels as built (sp_fit.h): each panel's built
  * type, misfit and deviation from its fit, the misfits retyped DP unless
  * the options type SP by class alone; then prices them and sums *totals
@@ -114,6 +137,7 @@ static int build_and_measure(const struct surface *surface,
             if (b->misfit && !options->sp_by_class)
                 panel->type = TYPE_DP;
         }
+        set_worst_sides(panels, &joints);
         classify_totals(panels, options, totals);
         totals->sp_misfits = built.sp_misfits;
         totals->sp_fitted = built.sp_fitted;

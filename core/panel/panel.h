@@ -101,6 +101,9 @@ struct panel {
     double best_cylinder;     /* a misfit's best cylinder and cone (m, */
     double best_cone;         /* NaN when none fits): why it is a misfit */
     double worst_gap_mm;      /* largest gap at its joints (mm) */
+    int worst_gap_side;       /* the cell side that joint is on: 0 v = j
+                                 (corners 0-1), 1 u = i + 1 (1-2), 2 v =
+                                 j + 1 (2-3), 3 u = i (3-0); -1 for none */
     double worst_kink_deg;    /* largest kink at its joints (degrees) */
 };
 

@@ -91,6 +91,7 @@ static struct option_row option_k(int k)
     t->gaps_over = (size_t)(13 + k);
     t->kinks_over = (size_t)(17 + k);
     t->sp_misfits = (size_t)(19 + k);
+    t->sp_fitted = (size_t)(23 + k);
     return o;
 }
 
@@ -129,6 +130,7 @@ static double by_hand(const struct option_row *o, const char *name)
         {"gaps_over", (double)t->gaps_over},
         {"kinks_over", (double)t->kinks_over},
         {"sp_misfits", (double)t->sp_misfits},
+        {"sp_fitted", (double)t->sp_fitted},
     };
     for (size_t k = 0; k < sizeof fields / sizeof fields[0]; k++)
         if (strcmp(fields[k].name, name) == 0)

@@ -151,7 +151,7 @@ static void test_cell_value(void **state)
                         if (margin < 0.01)
                             continue;  /* too close for the sampling */
                         assert_int_equal(map_cell_value(&p, cols, rows, c,
-                                                        r, by), want);
+                                                        r, by, NULL), want);
                         checked++;
                     }
         }
@@ -162,7 +162,7 @@ static void test_cell_value(void **state)
                 map_cell_of(&p, nu, nv, i, j, &c, &r);
                 assert_int_equal(c, i);
                 assert_int_equal(r, nv - 1 - j);
-                assert_int_equal(map_cell_value(&p, nu, nv, c, r, 0),
+                assert_int_equal(map_cell_value(&p, nu, nv, c, r, 0, NULL),
                                  k < 0 ? -1 : (int)p.panels[k].type);
             }
         grid_free(&p);
@@ -221,7 +221,8 @@ static void test_cell_value_by_mould(void **state)
                     int want = count[best] < count[0] ? -1
                                : best == 1 ? MAP_NO_MOULD : best - 2;
                     assert_int_equal(map_cell_value(&p, cols, rows, c, r,
-                                                    MAP_BY_MOULD), want);
+                                                    MAP_BY_MOULD, NULL),
+                                     want);
                     checked++;
                 }
         }
