@@ -618,9 +618,34 @@ static const char *older_file(const char *name, const char *statements,
     return path;
 }
 
-/* SQL that takes a current file back to schema version 4: the columns and
- * indexes version 5 added, dropped. */
-#define UNDO_V5 \
+/* SQL that takes a current file back to schema version 5: the columns and
+ * indexes version 6 added (panels as built, gaps and kinks), dropped. */
+#define UNDO_V6 \
+    "DROP INDEX options_by_max_gap; DROP INDEX options_by_max_kink;" \
+    "DROP INDEX options_by_sp_misfits;" \
+    "ALTER TABLE runs DROP COLUMN sp_fit;" \
+    "ALTER TABLE runs DROP COLUMN max_gap_mm;" \
+    "ALTER TABLE runs DROP COLUMN max_kink_deg;" \
+    "ALTER TABLE options DROP COLUMN max_gap;" \
+    "ALTER TABLE options DROP COLUMN mean_gap;" \
+    "ALTER TABLE options DROP COLUMN max_kink;" \
+    "ALTER TABLE options DROP COLUMN mean_kink;" \
+    "ALTER TABLE options DROP COLUMN gaps_over;" \
+    "ALTER TABLE options DROP COLUMN kinks_over;" \
+    "ALTER TABLE options DROP COLUMN sp_misfits;" \
+    "ALTER TABLE options DROP COLUMN sp_fitted;" \
+    "ALTER TABLE panels DROP COLUMN built_type;" \
+    "ALTER TABLE panels DROP COLUMN sp_deviation;" \
+    "ALTER TABLE panels DROP COLUMN worst_gap;" \
+    "ALTER TABLE panels DROP COLUMN worst_gap_side;" \
+    "ALTER TABLE panels DROP COLUMN worst_kink;" \
+    "ALTER TABLE panels DROP COLUMN best_cylinder;" \
+    "ALTER TABLE panels DROP COLUMN best_cone;" \
+    "ALTER TABLE panels DROP COLUMN misfit_reason;"
+
+/* SQL that takes a version 5 file back to schema version 4: the columns
+ * and indexes version 5 added, dropped (after UNDO_V6). */
+#define UNDO_V5 UNDO_V6 \
     "DROP INDEX options_by_moulds; DROP INDEX options_by_joint_length;" \
     "ALTER TABLE runs DROP COLUMN price_panel;" \
     "ALTER TABLE runs DROP COLUMN price_joint;" \
@@ -641,7 +666,7 @@ static const char *older_file(const char *name, const char *statements,
     "ALTER TABLE panels DROP COLUMN mould_family;"
 
 /* A file of schema version 1 (no views, no indexes, no runs.uv) is
- * brought up to the current version (5) when opened, and keeps its runs. */
+ * brought up to the current version (6) when opened, and keeps its runs. */
 static void test_migrates_older_schema(void **state)
 {
     (void)state;
@@ -671,9 +696,9 @@ static void test_migrates_older_schema(void **state)
                      " type = 'index' AND name LIKE 'options_by_%')",
                      -1, &s, NULL), SQLITE_OK);
     assert_int_equal(sqlite3_step(s), SQLITE_ROW);
-    assert_int_equal(sqlite3_column_int(s, 0), 5);
+    assert_int_equal(sqlite3_column_int(s, 0), 6);
     assert_int_equal(sqlite3_column_int(s, 1), info.pareto_options);
-    assert_int_equal(sqlite3_column_int(s, 2), 11);
+    assert_int_equal(sqlite3_column_int(s, 2), 14);
     sqlite3_finalize(s);
     sqlite3_close(db);
 }
@@ -715,7 +740,7 @@ static void test_migrates_v3(void **state)
     sqlite3_bind_int64(s, 1, old);
     sqlite3_bind_int64(s, 2, run);
     assert_int_equal(sqlite3_step(s), SQLITE_ROW);
-    assert_int_equal(sqlite3_column_int(s, 0), 5);
+    assert_int_equal(sqlite3_column_int(s, 0), 6);
     assert_int_equal(sqlite3_column_int(s, 1), 1);
     assert_int_equal(sqlite3_column_int(s, 2), 1);
     assert_string_equal((const char *)sqlite3_column_text(s, 3), "plane");
@@ -943,12 +968,89 @@ static void test_migrates_v4(void **state)
     sqlite3_bind_int64(s, 1, old);
     sqlite3_bind_int64(s, 2, run);
     assert_int_equal(sqlite3_step(s), SQLITE_ROW);
-    assert_int_equal(sqlite3_column_int(s, 0), 5);
+    assert_int_equal(sqlite3_column_int(s, 0), 6);
     assert_int_equal(sqlite3_column_int(s, 1), 48);
     assert_int_equal(sqlite3_column_int(s, 2), sqlite3_column_int(s, 3));
     assert_true(sqlite3_column_int(s, 3) > 0);
     assert_int_equal(sqlite3_column_int(s, 4), sqlite3_column_int(s, 5));
     assert_true(sqlite3_column_int(s, 5) > 0);
+    sqlite3_finalize(s);
+    sqlite3_close(db);
+}
+
+/* A file of version 5 (the Facet before panels as built: the same tables
+ * without version 6's columns) is migrated: its old run reads as typed
+ * by class alone, without gap or kink limits, its old options' gaps,
+ * kinks and misfits are NULL (never measured); a new run in it with a
+ * kink limit stores the limit, and its options and panels agree with
+ * SQLite's own reading of them: feasible exactly when no joint is over the
+ * limit (and the size limit is met), kinks_over > 0 exactly when max_kink
+ * is over it, each stored option's max_gap the largest of its panels' worst gaps
+ * and its misfits the panels with a reason. */
+static void test_migrates_v5(void **state)
+{
+    (void)state;
+    struct study_request request;
+    int64_t old;
+    const char *path = older_file("migrate5", UNDO_V6 " PRAGMA user_version"
+                                  " = 5;", &old, &request);
+    struct facet_error err;
+    struct store *store;
+    assert_int_equal(store_open(path, &store, &err), FACET_OK);
+    struct run_info info;
+    assert_int_equal(store_run_get(store, old, &info, &err), FACET_OK);
+    assert_int_equal(info.sp_fit, 0);
+    assert_true(isnan(info.max_gap_mm) && isnan(info.max_kink_deg));
+    request_for(&request, METHOD_EXHAUSTIVE);
+    request.settings.base.classify.max_kink = 5 * M_PI / 180;
+    int64_t run;
+    enum optimize_outcome outcome;
+    assert_int_equal(study_start(store, &request, NULL, &run, &outcome, &err),
+                     FACET_OK);
+    assert_int_equal(store_run_get(store, run, &info, &err), FACET_OK);
+    assert_int_equal(info.sp_fit, 1);
+    assert_float_equal(info.max_kink_deg, 5, 1e-12);
+    assert_true(isnan(info.max_gap_mm));
+    store_close(store);
+    sqlite3 *db;
+    assert_int_equal(sqlite3_open(path, &db), SQLITE_OK);
+    sqlite3_stmt *s;
+    assert_int_equal(sqlite3_prepare_v2(db, "SELECT (SELECT user_version"
+        " FROM pragma_user_version),"
+        " (SELECT count(*) FROM options WHERE run = ?1 AND max_gap IS NULL"
+        "  AND max_kink IS NULL AND sp_misfits IS NULL AND gaps_over IS NULL),"
+        " (SELECT count(*) FROM options WHERE run = ?2),"
+        " (SELECT count(*) FROM options WHERE run = ?2 AND"
+        "  feasible = (max_kink <= 5 AND max_panel_area <= 1000) AND"
+        "  (kinks_over > 0) = (max_kink > 5) AND gaps_over = 0),"
+        " (SELECT count(*) FROM options WHERE run = ?2 AND feasible),"
+        " (SELECT count(*) FROM options WHERE run = ?2 AND max_kink > 5),"
+        " (SELECT count(*) FROM options o WHERE run = ?2 AND EXISTS"
+        "  (SELECT 1 FROM panels p WHERE p.run = o.run AND"
+        "   p.option = o.number) AND o.max_gap = (SELECT max(worst_gap)"
+        "   FROM panels p WHERE p.run = o.run AND p.option = o.number) AND"
+        "  o.sp_misfits = (SELECT count(*) FROM panels p WHERE"
+        "   p.run = o.run AND p.option = o.number AND misfit_reason IS NOT"
+        "   NULL)),"
+        " (SELECT count(DISTINCT option) FROM panels WHERE run = ?2),"
+        " (SELECT count(*) FROM panels WHERE run = ?2 AND built_type IS NULL)",
+        -1, &s, NULL), SQLITE_OK);
+    sqlite3_bind_int64(s, 1, old);
+    sqlite3_bind_int64(s, 2, run);
+    assert_int_equal(sqlite3_step(s), SQLITE_ROW);
+    assert_int_equal(sqlite3_column_int(s, 0), 6);
+    assert_int_equal(sqlite3_column_int(s, 1), 48);
+    int n = sqlite3_column_int(s, 2);
+    assert_true(n > 0);
+    assert_int_equal(sqlite3_column_int(s, 3), n);
+    /* Both kinds are there: the limit cuts the space. */
+    printf("v5 migrated: %d options, %d feasible, %d over 5 degrees\n", n,
+           sqlite3_column_int(s, 4), sqlite3_column_int(s, 5));
+    assert_true(sqlite3_column_int(s, 5) > 0);
+    assert_true(sqlite3_column_int(s, 5) < n);
+    assert_int_equal(sqlite3_column_int(s, 6), sqlite3_column_int(s, 7));
+    assert_true(sqlite3_column_int(s, 7) > 0);
+    assert_int_equal(sqlite3_column_int(s, 8), 0);
     sqlite3_finalize(s);
     sqlite3_close(db);
 }
@@ -969,6 +1071,7 @@ int main(void)
         cmocka_unit_test(test_migrates_older_schema),
         cmocka_unit_test(test_migrates_v3),
         cmocka_unit_test(test_migrates_v4),
+        cmocka_unit_test(test_migrates_v5),
         cmocka_unit_test(test_resume_forced_uv),
     };
     int failed = cmocka_run_group_tests(tests, setup, teardown);
