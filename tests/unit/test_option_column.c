@@ -425,7 +425,8 @@ static void test_every_column_filters_and_sorts(void **state)
 
 
 /* The unit a column is stored in, by the README's rule (lengths m, areas
- * m^2, money USD, the threshold mm; a name ending in length is a length)
+ * m^2, money USD, the threshold mm; a name ending in length is a length;
+ * a joint's gap mm and kink degrees)
  * read off its name: the test's own
  * reading, not the registry's. */
 static const char *stored_unit_by_name(const char *name)
@@ -443,6 +444,11 @@ static const char *stored_unit_by_name(const char *name)
         return "m";
     if (strcmp(name, "p_dist") == 0)
         return "m^4";
+    /* a joint's gap in mm, its kink in degrees (README: Panels as built) */
+    if (n >= 4 && strcmp(name + n - 4, "_gap") == 0)
+        return "mm";
+    if (n >= 5 && strcmp(name + n - 5, "_kink") == 0)
+        return "deg";
     return "";
 }
 
