@@ -91,6 +91,19 @@ else
     echo "not ok - 15: the cursor names a mould family within 20 panels"
     screen | sed "s/^/  screen: /"
 fi
+# --- issue 16: the map by worst gap and by worst kink ---
+keys c
+check "16: c colours the map by worst gap" '\| by worst gap'
+keys c
+check "16: c again: by worst kink" '\| by worst kink'
+mk=$(q "select printf('%.2f', max_kink) from options where run = 1 and number = $knee")
+gk=$(q "select printf('%.2f', max(worst_kink)) from panels where run = 1 and option = $knee")
+check "16: the legend's max kink is the option's ($mk deg, sqlite3: panels' worst $gk)" " max $mk deg, mean [0-9.]+ deg"
+# the four levels, quarters of the worst (no limit), each counted: SQLite
+# counts the knee's panels in the top quarter
+top=$(q "select count(*) from panels where run = 1 and option = $knee and worst_kink > 0.75 * (select max(worst_kink) from panels where run = 1 and option = $knee)")
+check "16: the top level counts the panels over 3/4 of the worst ($top, sqlite3)" "^.*3 > [0-9.]+ deg +$top *$"
+check "16: the cursor line names the panel's worst gap and kink" ' worst gap [0-9.]+ mm  worst kink [0-9.]+ deg'
 keys c
 check "15: c again: back to colour by type" '\| by type'
 keys q
