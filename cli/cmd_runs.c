@@ -55,16 +55,9 @@ static void print_json(const struct run_info *runs,
         json_end_array(&w);
         json_key(&w, "objectives"); json_string(&w, r->objectives);
         json_key(&w, "sp_fit"); json_bool(&w, r->sp_fit);
-        json_key(&w, "max_gap_mm");
-        if (isfinite(r->max_gap_mm))
-            json_number(&w, r->max_gap_mm);
-        else
-            json_null(&w);
-        json_key(&w, "max_kink_deg");
-        if (isfinite(r->max_kink_deg))
-            json_number(&w, r->max_kink_deg);
-        else
-            json_null(&w);
+        /* null without a limit (json_number writes NaN as null) */
+        json_key(&w, "max_gap_mm"); json_number(&w, r->max_gap_mm);
+        json_key(&w, "max_kink_deg"); json_number(&w, r->max_kink_deg);
         json_key(&w, "options"); json_integer(&w, r->options);
         json_key(&w, "pareto_options"); json_integer(&w, r->pareto_options);
         json_key(&w, "knee");

@@ -107,16 +107,12 @@ void report_json(FILE *out, const struct report_source *source,
     json_number(&w, options->max_panel_area);
     /* true: a panel classed SP that no cylinder or cone fits is DP. */
     json_key(&w, "sp_fit");     json_bool(&w, !options->sp_by_class);
+    /* null without a limit (json_number writes NaN as null) */
     json_key(&w, "max_gap_mm");
-    if (options->max_gap > 0)
-        json_number(&w, options->max_gap * 1000);
-    else
-        json_null(&w);
+    json_number(&w, options->max_gap > 0 ? options->max_gap * 1000 : NAN);
     json_key(&w, "max_kink_deg");
-    if (options->max_kink > 0)
-        json_number(&w, options->max_kink * 180 / M_PI);
-    else
-        json_null(&w);
+    json_number(&w, options->max_kink > 0 ? options->max_kink * 180 / M_PI
+                                          : NAN);
 
     json_key(&w, "panels");
     json_begin_array(&w);

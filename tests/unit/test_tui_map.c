@@ -99,6 +99,16 @@ static void test_fit_box(void **state)
     }
 }
 
+/* The panel (index, or -1) under sample (a, b) of an S x S sampling of
+ * character (c, r) of a cols x rows picture of p. */
+static int sampled_panel(const struct panelization *p, int cols, int rows,
+                         int c, int r, int a, int b, int S)
+{
+    double u = (c + (a + 0.5) / S) / cols * p->nu;
+    double v = (rows - 1 - r + (b + 0.5) / S) / rows * p->nv;
+    return p->cell_panel[(int)floor(v) * p->nu + (int)floor(u)];
+}
+
 /* The brute force: sample the character's share of the grid on a fine
  * lattice, count the value under each sample. */
 static int brute_cell(const struct panelization *p, int cols, int rows,
@@ -108,10 +118,7 @@ static int brute_cell(const struct panelization *p, int cols, int rows,
     double count[CLASS_COUNT + 1] = {0};
     for (int a = 0; a < S; a++)
         for (int b = 0; b < S; b++) {
-            double u = (c + (a + 0.5) / S) / cols * p->nu;
-            double v = (rows - 1 - r + (b + 0.5) / S) / rows * p->nv;
-            int i = (int)floor(u), j = (int)floor(v);
-            int k = p->cell_panel[j * p->nu + i];
+            int k = sampled_panel(p, cols, rows, c, r, a, b, S);
             int value = k < 0 ? CLASS_COUNT
                         : by_class ? (int)p->panels[k].class
                                    : (int)p->panels[k].type;
@@ -201,11 +208,8 @@ static void test_cell_value_by_mould(void **state)
                     double count[2 + FAMILIES] = {0};
                     for (int a = 0; a < S; a++)
                         for (int b = 0; b < S; b++) {
-                            double u = (c + (a + 0.5) / S) / cols * nu;
-                            double v = (rows - 1 - r + (b + 0.5) / S) /
-                                       rows * nv;
-                            int k = p.cell_panel[(int)floor(v) * nu +
-                                                 (int)floor(u)];
+                            int k = sampled_panel(&p, cols, rows, c, r, a,
+                                                  b, S);
                             count[k < 0 ? 0 : p.panels[k].mould + 2]++;
                         }
                     int best = -1;
@@ -274,11 +278,8 @@ static void test_cell_level_by_gap(void **state)
                     int want = -1;
                     for (int a = 0; a < S; a++)
                         for (int b = 0; b < S; b++) {
-                            double u = (c + (a + 0.5) / S) / cols * nu;
-                            double v = (rows - 1 - r + (b + 0.5) / S) /
-                                       rows * nv;
-                            int k = p.cell_panel[(int)floor(v) * nu +
-                                                 (int)floor(u)];
+                            int k = sampled_panel(&p, cols, rows, c, r, a,
+                                                  b, S);
                             if (k < 0)
                                 continue;
                             double g = p.panels[k].worst_gap_mm;
