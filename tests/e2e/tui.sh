@@ -14,8 +14,10 @@
 . "$(dirname "$0")/tui_lib.sh"
 
 "$FACET" example roof --res 40 -o "$WORK/roof.obj" || exit 1
+# Typed by class alone (the figures below are that run's; as built, this
+# coarse roof's SP panels are misfits: README "Panels as built").
 "$FACET" optimize "$WORK/roof.obj" --db "$WORK/t.db" --u 4:8 --v 4:8 \
-    --threshold 2:4:1 >/dev/null 2>&1 || exit 1
+    --threshold 2:4:1 --sp-fit no >/dev/null 2>&1 || exit 1
 
 # count WHERE: how many options of run 1 of t.db pass the filter WHERE.
 count() {
