@@ -120,7 +120,7 @@ keys C
 check "C opens the column chooser" 'Columns: 12 of 28 shown, 80 characters'
 keys j j Space
 check "Space hides planarity" '\[ \] planarity'
-keys G Space K K K K K K K K K K K K K K K K K K K K K K K Enter
+keys G Space K K K K K K K K K K K K K K K K K K K K K K K K K K Enter
 check "hidden planarity, gen shown second" '^ +No\. +gen P +DP area +cost '
 keys q Enter
 check "the chosen columns stay for the session" '^ +No\. +gen P +DP area +cost '
