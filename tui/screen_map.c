@@ -147,8 +147,8 @@ static void draw_joint_legend(struct map_screen *s, int y, int x, int width)
     tui_putf(y++, x, width, A_NORMAL, " max %.2f %s, mean %.2f %s",
              kink ? t->max_kink_deg : t->max_gap_mm, unit,
              kink ? t->mean_kink_deg : t->mean_gap_mm, unit);
-    tui_putf(y++, x, width, A_NORMAL, " SP misfits %zu (built DP)",
-             t->sp_misfits);
+    tui_putf(y++, x, width, A_NORMAL, " SP misfits %zu (%s)", t->sp_misfits,
+             s->run.sp_fit ? "built DP" : "kept SP: by class");
 }
 
 static void draw_legend(struct map_screen *s, int y, int x, int width)
