@@ -3,6 +3,7 @@
  */
 #include "classify_flags.h"
 
+#include <math.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -44,6 +45,14 @@ void classify_flags_usage(FILE *out)
         "  --mould-tol MM      curved panels within MM of each other share a\n"
         "                      mould (default: the flatness threshold)\n"
         "  --mould-mirror      mirror images share a mould too\n"
+        "  --sp-fit yes|no     yes: an SP panel no cylinder or cone fits\n"
+        "                      within t is built and priced DP (a misfit);\n"
+        "                      no: SP by its class alone, the paper's\n"
+        "                      typing (default %s)\n"
+        "  --max-gap MM        feasible only when no joint's gap exceeds MM\n"
+        "                      (default: no limit)\n"
+        "  --max-kink DEG      feasible only when no joint's kink exceeds\n"
+        "                      DEG degrees (default: no limit)\n"
         "  --object NAME       only the faces of object NAME\n"
         "  --group NAME        only the faces of group NAME\n"
         "  --uv METHOD         the UV panels follow: vt, grid (a structured\n"
@@ -51,7 +60,8 @@ void classify_flags_usage(FILE *out)
         "                      the first of these that applies\n",
         panel_mode_name(p.mode), c->price[TYPE_FP], c->price[TYPE_SP],
         c->price[TYPE_DP], c->max_panel_area, c->panel_cost, c->joint_cost,
-        c->mould_cost[TYPE_SP], c->mould_cost[TYPE_DP]);
+        c->mould_cost[TYPE_SP], c->mould_cost[TYPE_DP],
+        c->sp_by_class ? "no" : "yes");
 }
 
 void surface_flags_init(struct surface_flags *f)
@@ -94,6 +104,9 @@ void classify_flags_init(struct classify_flags *f)
         {"mould-cost", 0, ARG_STRING, &f->mould_cost, NULL},
         {"mould-tol", 0, ARG_STRING, &f->mould_tol, NULL},
         {"mould-mirror", 0, ARG_FLAG, NULL, &f->mould_mirror},
+        {"sp-fit", 0, ARG_STRING, &f->sp_fit, NULL},
+        {"max-gap", 0, ARG_STRING, &f->max_gap, NULL},
+        {"max-kink", 0, ARG_STRING, &f->max_kink, NULL},
         {"object", 0, ARG_STRING, &f->surface.object, NULL},
         {"group", 0, ARG_STRING, &f->surface.group, NULL},
         {"uv", 0, ARG_STRING, &f->uv, NULL},
@@ -169,5 +182,26 @@ int classify_flags_apply(const struct classify_flags *f,
         params->mould_tol_given = 1;
     }
     params->mould_mirror = f->mould_mirror;
+    if (f->sp_fit != NULL) {
+        if (strcmp(f->sp_fit, "yes") == 0)
+            params->classify.sp_by_class = 0;
+        else if (strcmp(f->sp_fit, "no") == 0)
+            params->classify.sp_by_class = 1;
+        else
+            return facet_error_set(err, FACET_EINPUT,
+                "--sp-fit: '%s' is not yes or no", f->sp_fit);
+    }
+    if (f->max_gap) {
+        if ((rc = numparse_number(f->max_gap, 1e-6, 1e6, "--max-gap",
+                                  &number, err)))
+            return rc;
+        params->classify.max_gap = number / 1000;
+    }
+    if (f->max_kink) {
+        if ((rc = numparse_number(f->max_kink, 1e-9, 180, "--max-kink",
+                                  &number, err)))
+            return rc;
+        params->classify.max_kink = number * M_PI / 180;
+    }
     return FACET_OK;
 }

@@ -42,7 +42,8 @@ struct classify_flags {
     int flip_normals, sp_as_fp;
     const char *panel_cost, *joint_cost, *mould_cost, *mould_tol;
     int mould_mirror;
-    struct arg_option table[16];  /* the fifteen flags, then the end */
+    const char *sp_fit, *max_gap, *max_kink;
+    struct arg_option table[19];  /* the eighteen flags, then the end */
 };
 
 /* Clears flags and fills flags->table, pointing at flags itself (which

@@ -61,6 +61,10 @@ static void print_json(const struct run_info *runs,
         json_number(&w, r->threshold_step_mm);
         json_end_array(&w);
         json_key(&w, "objectives"); json_string(&w, r->objectives);
+        json_key(&w, "sp_fit"); json_bool(&w, r->sp_fit);
+        /* null without a limit (json_number writes NaN as null) */
+        json_key(&w, "max_gap_mm"); json_number(&w, r->max_gap_mm);
+        json_key(&w, "max_kink_deg"); json_number(&w, r->max_kink_deg);
         json_key(&w, "options"); json_integer(&w, r->options);
         json_key(&w, "pareto_options"); json_integer(&w, r->pareto_options);
         json_key(&w, "knee");
@@ -123,6 +127,22 @@ static void print_json(const struct run_info *runs,
     json_finish(&w);
 }
 
+/* How run types SP panels and the joint limits its options are held to,
+ * in one line. */
+static void run_built_note(const struct run_info *r, char *line,
+                           size_t size)
+{
+    char gap[48] = "no gap limit", kink[48] = "no kink limit";
+    if (isfinite(r->max_gap_mm))
+        snprintf(gap, sizeof gap, "--max-gap %g mm", r->max_gap_mm);
+    if (isfinite(r->max_kink_deg))
+        snprintf(kink, sizeof kink, "--max-kink %g deg", r->max_kink_deg);
+    snprintf(line, size, "run %lld: --sp-fit %s (%s), %s, %s",
+             (long long)r->id, r->sp_fit ? "yes" : "no",
+             r->sp_fit ? "SP misfits built DP" : "SP by class alone", gap,
+             kink);
+}
+
 static void print_human(const struct run_info *runs,
                         const struct front_bounds *bounds, size_t n,
                         int wide)
@@ -183,6 +203,8 @@ static void print_human(const struct run_info *runs,
             text_wrap(stdout, line, text_table_width(stdout, wide));
             at += len + (end != NULL);
         }
+        run_built_note(&runs[k], line, sizeof line);
+        text_wrap(stdout, line, text_table_width(stdout, wide));
         if (study_front_edge_note(&runs[k], &bounds[k], note, sizeof note)) {
             snprintf(line, sizeof line, "run %lld: %s", (long long)runs[k].id,
                      note);

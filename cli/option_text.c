@@ -4,6 +4,7 @@
 #include "option_text.h"
 
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/ioctl.h>
@@ -14,6 +15,36 @@
  * moulds). */
 static const char not_stored[] =
     "- (not stored with this option: an older Facet's run)";
+
+/* The SP misfits, gaps and kinks of t, against o's limits. */
+static void joints_text(FILE *out, const struct option_totals *t,
+                        const struct classify_options *o)
+{
+    if (isnan(t->max_gap_mm)) {
+        /* An option stored before Facet built its panels (schema v7). */
+        fprintf(out, "\n%-16s not measured (stored before Facet measured "
+                "panels as built)\n", "gaps, kinks");
+        return;
+    }
+    size_t classed_sp = t->sp_fitted + t->sp_misfits;
+    fprintf(out, "\n%-16s %zu of %zu SP panels (by class) fit no cylinder "
+            "or cone within %g mm: %s\n", "SP misfits", t->sp_misfits,
+            classed_sp, o->threshold * 1000,
+            o->sp_by_class ? "kept SP (SP by class alone)"
+                           : "built and priced DP");
+    char limit[64] = "no limit";
+    if (o->max_gap > 0)
+        snprintf(limit, sizeof limit, "%zu over the %g mm limit",
+                 t->gaps_over, o->max_gap * 1000);
+    fprintf(out, "%-16s max %.3f mm, mean %.3f mm (%s)\n", "gap",
+            t->max_gap_mm, t->mean_gap_mm, limit);
+    snprintf(limit, sizeof limit, "no limit");
+    if (o->max_kink > 0)
+        snprintf(limit, sizeof limit, "%zu over the %g degree limit",
+                 t->kinks_over, o->max_kink * 180 / M_PI);
+    fprintf(out, "%-16s max %.3f deg, mean %.3f deg (%s)\n", "kink",
+            t->max_kink_deg, t->mean_kink_deg, limit);
+}
 
 void option_text_totals(FILE *out, const struct option_totals *t,
                         const struct classify_options *o)
@@ -64,9 +95,14 @@ void option_text_totals(FILE *out, const struct option_totals *t,
     fprintf(out, "\n%-16s %.6f m (sum of FP and SP panel deviations)\n",
             "planarity", t->planarity);
     fprintf(out, "%-16s %.3f mm\n", "max deviation", t->max_deviation * 1000);
+    int area_ok = classify_area_excess(t->max_panel_area,
+                                       o->max_panel_area) == 0;
     fprintf(out, "%-16s %.3f m^2 (limit %g: %s)\n", "max panel area",
             t->max_panel_area, o->max_panel_area,
-            t->feasible ? "feasible" : "NOT feasible");
+            area_ok ? "within" : "NOT within");
+
+    joints_text(out, t, o);
+    fprintf(out, "%-16s %s\n", "feasible", t->feasible ? "yes" : "NO");
 
     fprintf(out, "\n%-22s %8s %14s\n", "class", "panels", "area m^2");
     for (int c = 0; c < CLASS_COUNT; c++)

@@ -43,7 +43,7 @@ static const struct {
 #define ALIAS_COUNT (sizeof aliases / sizeof *aliases)
 #define COLUMN_PARETO (-2)  /* the name pareto: rank = 1, not a column */
 #define COLUMN_UNKNOWN (-1)
-#define SHOWN_MAX 40        /* bytes of a user's word quoted in a message */
+#define SHOWN_MAX 32        /* bytes of a user's word quoted in a message */
 
 enum op { OP_LT, OP_LE, OP_GT, OP_GE, OP_EQ, OP_NE };
 
@@ -452,35 +452,44 @@ static int resolve(const struct parser *p, const struct token *t)
     return COLUMN_UNKNOWN;
 }
 
-/* The type prefix ("fp_", "sp_", "dp_") name starts with: 0, 1, 2, or -1. */
-static int type_prefix(const char *name)
+/* The part of name after its first '_' ("count" of "fp_count"), or NULL
+ * when it has none. */
+static const char *name_suffix(const char *name)
 {
-    static const char *const prefix[TYPE_COUNT] = {"fp_", "sp_", "dp_"};
-    for (int t = 0; t < TYPE_COUNT; t++)
-        if (strncmp(name, prefix[t], 3) == 0 && name[3] != '\0')
-            return t;
-    return -1;
+    const char *under = strchr(name, '_');
+    return under != NULL && under != name && under[1] != '\0' ? under + 1
+                                                               : NULL;
 }
 
-/* Writes names[k] to list as the columns' list shows it: a per-type column
- * as its family, "{fp,sp,dp}_count", at the family's first member, nothing
- * at the others. Returns the bytes written. */
+/* Writes names[k] to list as the columns' list shows it: the names that
+ * end alike after their first '_' as one family, "{fp,sp,dp}_count", at
+ * the family's first member, nothing at the others; a name alone as
+ * itself. Returns the bytes written. */
 static size_t list_name(char *list, size_t size, size_t used,
                         const char *const *names, size_t n, size_t k)
 {
     const char *sep = used == 0 ? "" : ", ";
-    if (type_prefix(names[k]) < 0)
+    const char *suffix = name_suffix(names[k]);
+    size_t members = 0;
+    for (size_t e = 0; suffix != NULL && e < n; e++) {
+        const char *other = name_suffix(names[e]);
+        if (other == NULL || strcmp(other, suffix) != 0)
+            continue;
+        if (e < k)
+            return 0;
+        members++;
+    }
+    if (members < 2)
         return (size_t)snprintf(list + used, size - used, "%s%s", sep,
                                 names[k]);
-    const char *suffix = names[k] + 3;
-    for (size_t e = 0; e < k; e++)
-        if (type_prefix(names[e]) >= 0 && strcmp(names[e] + 3, suffix) == 0)
-            return 0;
-    char family[16] = "";
-    for (size_t e = k; e < n; e++)
-        if (type_prefix(names[e]) >= 0 && strcmp(names[e] + 3, suffix) == 0)
+    char family[128] = "";
+    for (size_t e = k; e < n; e++) {
+        const char *other = name_suffix(names[e]);
+        if (other != NULL && strcmp(other, suffix) == 0)
             snprintf(family + strlen(family), sizeof family - strlen(family),
-                     "%s%.2s", family[0] ? "," : "", names[e]);
+                     "%s%.*s", family[0] ? "," : "",
+                     (int)(other - 1 - names[e]), names[e]);
+    }
     return (size_t)snprintf(list + used, size - used, "%s{%s}_%s", sep,
                             family, suffix);
 }
@@ -507,9 +516,9 @@ static int fail_unknown_name(struct parser *p, const struct token *t)
                        shown(p, t, buf), near);
     /* The per-class columns are named by their pattern, so the list fits
      * one line. */
-    char list[400];
-    size_t used = 0;
-    for (size_t k = 0; k < n && used < sizeof list; k++) {
+    const char *listed[COLUMN_COUNT + ALIAS_COUNT + 1];
+    size_t nlisted = 0;
+    for (size_t k = 0; k < n; k++) {
         size_t len = strlen(names[k]);
         int per_class = 0;
         for (int c = 0; c < CLASS_COUNT && !per_class; c++) {
@@ -518,10 +527,14 @@ static int fail_unknown_name(struct parser *p, const struct token *t)
                         len > strlen(class) && names[k][strlen(class)] == '_';
         }
         if (!per_class)
-            used += list_name(list, sizeof list, used, names, n, k);
+            listed[nlisted++] = names[k];
     }
-    return fail_at(p, t->at, "unknown column '%s' (columns: %s, and "
-                   "CLASS_count, CLASS_area for each class, e.g. saddle_area)",
+    char list[400];
+    size_t used = 0;
+    for (size_t k = 0; k < nlisted && used < sizeof list; k++)
+        used += list_name(list, sizeof list, used, listed, nlisted, k);
+    return fail_at(p, t->at, "unknown column '%s' (columns: %s, "
+                   "CLASS_count, CLASS_area (e.g. saddle_area))",
                    shown(p, t, buf), list);
 }
 

@@ -196,6 +196,40 @@ static const char schema_v6_shards[] =
     "ALTER TABLE runs ADD COLUMN shard_count INTEGER;"
     "ALTER TABLE runs ADD COLUMN shards_merged INTEGER;";
 
+/* Version 7: panels as built, and the gap and kink at their joints
+ * (issue 16). A run's SP typing: sp_fit 1 builds a panel classed SP that
+ * no cylinder or cone fits within t as DP; runs before it typed SP by
+ * class alone, which 0 says. The gap and kink limits are NULL for none
+ * (every run before). An option's gaps are mm and kinks degrees, NULL for
+ * options stored before (never measured); a panel's worst gap (mm), the
+ * side of its cell that joint is on (0 v = j, 1 u = i + 1, 2 v = j + 1,
+ * 3 u = i), its worst kink (degrees), its SP fit's deviation (m, as
+ * deviation) and its best cylinder's and cone's, likewise; misfit_reason
+ * is NULL but for a misfit. */
+static const char schema_v7[] =
+    "ALTER TABLE runs ADD COLUMN sp_fit INTEGER NOT NULL DEFAULT 0;"
+    "ALTER TABLE runs ADD COLUMN max_gap_mm REAL;"
+    "ALTER TABLE runs ADD COLUMN max_kink_deg REAL;"
+    "ALTER TABLE options ADD COLUMN max_gap REAL;"
+    "ALTER TABLE options ADD COLUMN mean_gap REAL;"
+    "ALTER TABLE options ADD COLUMN max_kink REAL;"
+    "ALTER TABLE options ADD COLUMN mean_kink REAL;"
+    "ALTER TABLE options ADD COLUMN gaps_over INTEGER;"
+    "ALTER TABLE options ADD COLUMN kinks_over INTEGER;"
+    "ALTER TABLE options ADD COLUMN sp_misfits INTEGER;"
+    "ALTER TABLE options ADD COLUMN sp_fitted INTEGER;"
+    "ALTER TABLE panels ADD COLUMN built_type TEXT;"
+    "ALTER TABLE panels ADD COLUMN sp_deviation REAL;"
+    "ALTER TABLE panels ADD COLUMN worst_gap REAL;"
+    "ALTER TABLE panels ADD COLUMN worst_gap_side INTEGER;"
+    "ALTER TABLE panels ADD COLUMN worst_kink REAL;"
+    "ALTER TABLE panels ADD COLUMN best_cylinder REAL;"
+    "ALTER TABLE panels ADD COLUMN best_cone REAL;"
+    "ALTER TABLE panels ADD COLUMN misfit_reason TEXT;"
+    "CREATE INDEX options_by_max_gap ON options(run, max_gap);"
+    "CREATE INDEX options_by_max_kink ON options(run, max_kink);"
+    "CREATE INDEX options_by_sp_misfits ON options(run, sp_misfits);";
+
 static const char *const migrations[STORE_SCHEMA_VERSION] = {
     schema_v1,
     schema_v2,
@@ -203,6 +237,7 @@ static const char *const migrations[STORE_SCHEMA_VERSION] = {
     schema_v4,
     schema_v5,
     schema_v6_shards,
+    schema_v7,
 };
 
 int store_fail(struct store *store, const char *doing,

@@ -129,6 +129,12 @@ struct run_info {
     double mould_tol_mm;       /* mould tolerance (mm); NaN: each option's
                                   flatness threshold */
     int mould_mirror;          /* mirror images share a mould */
+    /* Panels as built (option.h; schema v7): */
+    int sp_fit;                /* 1: an SP panel no cylinder or cone fits
+                                  is built DP; 0: SP by class alone (the
+                                  paper's typing, and every run before) */
+    double max_gap_mm;         /* gap limit on feasibility (mm); NaN: none */
+    double max_kink_deg;       /* kink limit (degrees); NaN: none */
     /* Spread over machines (core/search/shard.h): a shard is shard_index
      * of shard_count; a merge of shards has shard_index 0, shard_count N
      * and shards_merged of them (incomplete when fewer than N); every

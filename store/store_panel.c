@@ -42,10 +42,13 @@ int store_panels_put(struct store *store, int64_t run, int64_t option,
             " trimmed, corner_planarity, price, cost, centroid_x,"
             " centroid_y, centroid_z, normal_x, normal_y, normal_z,"
             " c0_x, c0_y, c0_z, c1_x, c1_y, c1_z, c2_x, c2_y, c2_z,"
-            " c3_x, c3_y, c3_z, mould_family) VALUES (?1, ?2, ?3, ?4, ?5,"
+            " c3_x, c3_y, c3_z, mould_family, built_type, sp_deviation,"
+            " worst_gap, worst_gap_side, worst_kink, best_cylinder,"
+            " best_cone, misfit_reason) VALUES (?1, ?2, ?3, ?4, ?5,"
             " ?6, ?7, ?8, ?9, ?10, ?11, ?12, ?13, ?14, ?15, ?16, ?17, ?18,"
             " ?19, ?20, ?21, ?22, ?23, ?24, ?25, ?26, ?27, ?28, ?29, ?30,"
-            " ?31, ?32, ?33, ?34, ?35, ?36, ?37, ?38, ?39)", &panel, "storing panels", err);
+            " ?31, ?32, ?33, ?34, ?35, ?36, ?37, ?38, ?39, ?40, ?41, ?42,"
+            " ?43, ?44, ?45, ?46, ?47)", &panel, "storing panels", err);
     for (size_t k = 0; k < p->npanels && rc == FACET_OK; k++) {
         const struct panel *x = &p->panels[k];
         int c = 1;
@@ -80,6 +83,23 @@ int store_panels_put(struct store *store, int64_t run, int64_t option,
                 store_bind_or_null(panel, c++, x->corner[corner][d]);
         if (x->mould >= 0)
             sqlite3_bind_int(panel, c++, x->mould);
+        else
+            sqlite3_bind_null(panel, c++);
+        sqlite3_bind_text(panel, c++, panel_type_name(x->built), -1,
+                          SQLITE_STATIC);
+        store_bind_or_null(panel, c++, x->sp_deviation);
+        store_bind_or_null(panel, c++, x->worst_gap_mm);
+        if (x->worst_gap_side >= 0)
+            sqlite3_bind_int(panel, c++, x->worst_gap_side);
+        else
+            sqlite3_bind_null(panel, c++);
+        store_bind_or_null(panel, c++, x->worst_kink_deg);
+        store_bind_or_null(panel, c++, x->best_cylinder);
+        store_bind_or_null(panel, c++, x->best_cone);
+        char reason[200];
+        classify_misfit_reason(p, k, reason, sizeof reason);
+        if (reason[0] != '\0')
+            sqlite3_bind_text(panel, c++, reason, -1, SQLITE_TRANSIENT);
         else
             sqlite3_bind_null(panel, c++);
         if (sqlite3_step(panel) != SQLITE_DONE)
@@ -139,7 +159,9 @@ int store_panels_get(struct store *store, int64_t run, int64_t option,
     sqlite3_stmt *s;
     int rc = store_prepare(store, "SELECT nu, nv, umin, vmin, umax, vmax,"
                            " (SELECT count(*) FROM panels WHERE run = ?1 AND"
-                           " option = ?2) FROM panel_sets WHERE run = ?1 AND"
+                           " option = ?2), (SELECT threshold_mm FROM options"
+                           " WHERE run = ?1 AND number = ?2)"
+                           " FROM panel_sets WHERE run = ?1 AND"
                            " option = ?2", &s, "reading panels", err);
     if (rc != FACET_OK)
         return rc;
@@ -154,6 +176,7 @@ int store_panels_get(struct store *store, int64_t run, int64_t option,
         p->umax = sqlite3_column_double(s, 4);
         p->vmax = sqlite3_column_double(s, 5);
         p->npanels = (size_t)sqlite3_column_int64(s, 6);
+        p->threshold = store_column_or_nan(s, 7) / 1000;
     }
     sqlite3_finalize(s);
     if (step == SQLITE_DONE)
@@ -180,7 +203,10 @@ int store_panels_get(struct store *store, int64_t run, int64_t option,
         " eps, p_dist, diameter, trimmed, corner_planarity, price, cost,"
         " centroid_x, centroid_y, centroid_z, normal_x, normal_y, normal_z,"
         " c0_x, c0_y, c0_z, c1_x, c1_y, c1_z, c2_x, c2_y, c2_z,"
-        " c3_x, c3_y, c3_z, coalesce(mould_family, -1) FROM panels"
+        " c3_x, c3_y, c3_z, coalesce(mould_family, -1),"
+        " coalesce(built_type, type), sp_deviation, worst_gap,"
+        " coalesce(worst_gap_side, -1), worst_kink,"
+        " best_cylinder, best_cone, misfit_reason IS NOT NULL FROM panels"
         " WHERE run = ?1 AND option = ?2"
         " ORDER BY j, i", &s, "reading panels", err);
     if (rc != FACET_OK)
@@ -230,6 +256,19 @@ int store_panels_get(struct store *store, int64_t run, int64_t option,
             x->ncorners += isfinite(x->corner[corner][0]);
         }
         x->mould = sqlite3_column_int(s, c++);
+        /* Panels stored before schema v7 were never built: their built
+         * type is their type, and their gaps and fits unknown (NaN). */
+        int built = type_of((const char *)sqlite3_column_text(s, c++));
+        x->built = built < 0 ? x->type : (enum panel_type)built;
+        x->sp_deviation = store_column_or_nan(s, c++);
+        x->worst_gap_mm = store_column_or_nan(s, c++);
+        x->worst_gap_side = sqlite3_column_int(s, c++);
+        if (x->worst_gap_side < -1 || x->worst_gap_side > 3)
+            x->worst_gap_side = -1;
+        x->worst_kink_deg = store_column_or_nan(s, c++);
+        x->best_cylinder = store_column_or_nan(s, c++);
+        x->best_cone = store_column_or_nan(s, c++);
+        x->misfit = sqlite3_column_int(s, c++);
         p->cell_panel[(size_t)x->j * (size_t)p->nu + (size_t)x->i] = (int)n;
         n++;
     }

@@ -26,11 +26,12 @@
     " best_cost, coalesce(surface_area, 0), coalesce(triangles, 0)," \
     " coalesce(uv_method, ''), coalesce(uv, ''), warnings, store_panels"
 
-/* The cost model's columns (schema v5), read after RUN_COLUMNS, then the
- * shards' (schema v6, store_shard.c). */
+/* The cost model's columns (schema v5), the panels as built (v7), read
+ * after RUN_COLUMNS, then the shards' (schema v6, store_shard.c). */
 #define RUN_COST_COLUMNS \
     "price_panel, price_joint, price_sp_mould, price_dp_mould," \
-    " mould_tol_mm, mould_mirror, " STORE_SHARD_COLUMNS
+    " mould_tol_mm, mould_mirror, sp_fit, max_gap_mm, max_kink_deg, " \
+    STORE_SHARD_COLUMNS
 
 static void copy_text(char *to, size_t size, sqlite3_stmt *stmt, int col)
 {
@@ -173,6 +174,9 @@ static void run_costs_from_row(sqlite3_stmt *s, int c, struct run_info *r)
     r->mould_cost[TYPE_DP] = sqlite3_column_double(s, c++);
     r->mould_tol_mm = store_column_or_nan(s, c++);
     r->mould_mirror = sqlite3_column_int(s, c++);
+    r->sp_fit = sqlite3_column_int(s, c++);
+    r->max_gap_mm = store_column_or_nan(s, c++);
+    r->max_kink_deg = store_column_or_nan(s, c++);
     store_shard_from_row(s, c, r);
 }
 
@@ -184,7 +188,8 @@ static int run_costs_write(struct store *store, const struct run_info *r,
     int rc = store_prepare(store,
         "UPDATE runs SET price_panel = ?2, price_joint = ?3,"
         " price_sp_mould = ?4, price_dp_mould = ?5, mould_tol_mm = ?6,"
-        " mould_mirror = ?7 WHERE id = ?1", &s, "creating a run", err);
+        " mould_mirror = ?7, sp_fit = ?8, max_gap_mm = ?9,"
+        " max_kink_deg = ?10 WHERE id = ?1", &s, "creating a run", err);
     if (rc != FACET_OK)
         return rc;
     sqlite3_bind_int64(s, 1, r->id);
@@ -194,6 +199,9 @@ static int run_costs_write(struct store *store, const struct run_info *r,
     sqlite3_bind_double(s, 5, r->mould_cost[TYPE_DP]);
     store_bind_or_null(s, 6, r->mould_tol_mm);
     sqlite3_bind_int(s, 7, r->mould_mirror);
+    sqlite3_bind_int(s, 8, r->sp_fit);
+    store_bind_or_null(s, 9, r->max_gap_mm);
+    store_bind_or_null(s, 10, r->max_kink_deg);
     if (sqlite3_step(s) != SQLITE_DONE)
         rc = store_fail(store, "creating a run", err);
     sqlite3_finalize(s);

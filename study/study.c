@@ -155,8 +155,9 @@ void study_request_defaults(struct study_request *r)
     s->jobs = parallel_cpus(PARALLEL_MAX);
 }
 
-/* The cost model beyond area and the mould settings, between a run's
- * settings and the parameters its options are evaluated with. The mould
+/* The cost model beyond area, the mould settings and the panels as built
+ * (the SP typing, the gap and kink limits), between a run's settings and
+ * the parameters its options are evaluated with. The mould
  * tolerance is NaN in the run (NULL in the store) and not given in the
  * parameters when it is each option's flatness threshold. */
 static void costs_from_run(struct option_params *params,
@@ -170,6 +171,11 @@ static void costs_from_run(struct option_params *params,
     params->mould_tol = params->mould_tol_given ? run->mould_tol_mm / 1000
                                                 : 0;
     params->mould_mirror = run->mould_mirror;
+    params->classify.sp_by_class = !run->sp_fit;
+    params->classify.max_gap = isnan(run->max_gap_mm) ? 0
+                                                      : run->max_gap_mm / 1000;
+    params->classify.max_kink = isnan(run->max_kink_deg)
+                                    ? 0 : run->max_kink_deg * M_PI / 180;
 }
 
 static void costs_to_run(struct run_info *run,
@@ -182,6 +188,11 @@ static void costs_to_run(struct run_info *run,
     run->mould_tol_mm = params->mould_tol_given ? params->mould_tol * 1000
                                                 : NAN;
     run->mould_mirror = params->mould_mirror;
+    run->sp_fit = !params->classify.sp_by_class;
+    run->max_gap_mm = params->classify.max_gap > 0
+                          ? params->classify.max_gap * 1000 : NAN;
+    run->max_kink_deg = params->classify.max_kink > 0
+                            ? params->classify.max_kink * 180 / M_PI : NAN;
 }
 
 int study_settings(const struct run_info *run,

@@ -155,6 +155,9 @@ int study_export(struct store *store, int64_t run, int64_t number,
                  p.row.nv, p.row.threshold_mm);
         struct svg_map_options map = r->map;
         map.title = title;
+        /* The run's gap limit: every panel's worst joint over it drawn. */
+        if (isfinite(p.run.max_gap_mm))
+            map.max_gap_mm = p.run.max_gap_mm;
         svg_map_write(file[EXPORT_SVG].out, &p.geometry, &p.panels,
                       &p.totals, &map);
     }

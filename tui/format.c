@@ -64,6 +64,9 @@ const struct tui_column tui_option_columns[] = {
     {"dp_moulds", 6, 0},
     {"joint_length", 7, 0},
     {"mould_cost", 10, 0},
+    {"max_gap", 7, 0},
+    {"max_kink", 8, 0},
+    {"sp_misfits", 6, 0},
     {"crowding", 6, 0},
     {"generation", 4, 0},
 };
@@ -77,7 +80,9 @@ const char *const tui_metric_columns[] = {
     "dp_count", "max_deviation", "max_panel_area", "p_dist", "feasible",
     "rank", "crowding", "knee", "generation", "moulds", "sp_moulds",
     "dp_moulds", "joint_length", "largest_family", "single_moulds",
-    "area_cost", "panel_cost", "joint_cost", "mould_cost",
+    "area_cost", "panel_cost", "joint_cost", "mould_cost", "max_gap",
+    "mean_gap", "max_kink", "mean_kink", "gaps_over", "kinks_over",
+    "sp_misfits", "sp_fitted",
 };
 const int tui_metric_column_count =
     (int)(sizeof tui_metric_columns / sizeof tui_metric_columns[0]);

@@ -102,9 +102,66 @@ static int slot_of(int *values, int *n, int value)
     return (*n)++;
 }
 
-int map_cell_value(const struct panelization *p, int cols, int rows, int c,
-                   int r, enum map_colour colour)
+double map_panel_measure(const struct panel *q, enum map_colour colour)
 {
+    return colour == MAP_BY_KINK ? q->worst_kink_deg : q->worst_gap_mm;
+}
+
+void map_level_bounds(double limit, double largest,
+                      double bound[MAP_LEVELS])
+{
+    static const double share[2][MAP_LEVELS - 1] = {
+        {0.5, 0.75, 1}, {0.25, 0.5, 0.75}};
+    int relative = !(limit > 0);
+    double reference = relative ? largest : limit;
+    if (!(reference > 0) || !isfinite(reference))
+        reference = 0;
+    for (int k = 0; k < MAP_LEVELS - 1; k++)
+        bound[k] = reference * share[relative][k];
+    bound[MAP_LEVELS - 1] = INFINITY;
+}
+
+int map_level(double value, const double bound[MAP_LEVELS])
+{
+    if (isnan(value))
+        return -1;
+    for (int k = 0; k < MAP_LEVELS; k++)
+        if (value <= bound[k])
+            return k;
+    return MAP_LEVELS - 1;
+}
+
+/* The highest level of a panel in character (c, r)'s share (as
+ * map_cell_value). */
+static int cell_level(const struct panelization *p, int cols, int rows,
+                      int c, int r, enum map_colour colour,
+                      const double *bound)
+{
+    double u0 = (double)c * p->nu / cols, u1 = (double)(c + 1) * p->nu / cols;
+    int rb = rows - 1 - r;
+    double v0 = (double)rb * p->nv / rows;
+    double v1 = (double)(rb + 1) * p->nv / rows;
+    int level = -1;
+    for (int j = (int)floor(v0); j < p->nv && j < v1; j++) {
+        if (fmin(v1, j + 1) - fmax(v0, j) <= 0)
+            continue;
+        for (int i = (int)floor(u0); i < p->nu && i < u1; i++) {
+            const struct panel *q = panel_at(p, i, j);
+            if (q == NULL || fmin(u1, i + 1) - fmax(u0, i) <= 0)
+                continue;
+            int k = map_level(map_panel_measure(q, colour), bound);
+            if (k > level)
+                level = k;
+        }
+    }
+    return level;
+}
+
+int map_cell_value(const struct panelization *p, int cols, int rows, int c,
+                   int r, enum map_colour colour, const double *bound)
+{
+    if (colour == MAP_BY_GAP || colour == MAP_BY_KINK)
+        return cell_level(p, cols, rows, c, r, colour, bound);
     double weight[MAP_MOULDS_PER_CHAR] = {0};
     int value_of[MAP_MOULDS_PER_CHAR];
     int values = colour == MAP_BY_CLASS ? CLASS_COUNT : TYPE_COUNT;

@@ -33,8 +33,29 @@ enum map_colour {
     MAP_BY_TYPE,    /* FP, SP, DP */
     MAP_BY_CLASS,   /* the eight classes */
     MAP_BY_MOULD,   /* the mould family (panel->mould) */
+    MAP_BY_GAP,     /* the worst gap at its joints, in MAP_LEVELS levels */
+    MAP_BY_KINK,    /* the worst kink, likewise */
     MAP_COLOURS
 };
+
+/* The levels a map by gap or kink colours by, low to high. */
+#define MAP_LEVELS 4
+
+/* The worst gap (mm) or kink (degrees) of q, by colour (MAP_BY_GAP or
+ * MAP_BY_KINK); NaN for a panel never measured (stored before schema
+ * v7). */
+double map_panel_measure(const struct panel *q, enum map_colour colour);
+
+/* The upper bounds of the levels: with a limit (> 0, the run's gap or
+ * kink limit), half of it, three quarters, the limit itself, and beyond
+ * (the joints that make the option infeasible); without one, the
+ * quarters of largest (the option's worst; all level 0 when it is 0). */
+void map_level_bounds(double limit, double largest,
+                      double bound[MAP_LEVELS]);
+
+/* The level of value under bound: the first whose bound it does not
+ * exceed; -1 for NaN. */
+int map_level(double value, const double bound[MAP_LEVELS]);
 
 /* An FP panel's value by mould: it needs none. */
 #define MAP_NO_MOULD (-2)
@@ -49,9 +70,12 @@ enum map_colour {
  * the grid, every panel weighted by the part of its cell inside the
  * share; ties go to the later type (the dearer) or class, or the later
  * family met. By mould, FP panels count as one value, MAP_NO_MOULD. -1
- * when cells without a panel cover more of it than any value does. */
+ * when cells without a panel cover more of it than any value does. By
+ * gap or kink, the highest level (under bound, map_level_bounds) of any
+ * panel in the share, so that no bad joint hides in a fitted view; -1
+ * when none was measured. bound is read only by gap or kink (else NULL). */
 int map_cell_value(const struct panelization *p, int cols, int rows, int c,
-                   int r, enum map_colour colour);
+                   int r, enum map_colour colour, const double *bound);
 
 /* The panels of p in mould family family (0 for none). */
 size_t map_family_size(const struct panelization *p, int family);

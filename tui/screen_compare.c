@@ -92,7 +92,8 @@ static void draw_maps(struct compare_screen *s, struct tui_app *app, int y0,
         x = x0 + (k + 1) * cw - 1 - box_w;  /* right-aligned, as values */
         for (int r = 0; r < box_h; r++)
             for (int c = 0; c < box_w; c++) {
-                int t = map_cell_value(p, box_w, box_h, c, r, MAP_BY_TYPE);
+                int t = map_cell_value(p, box_w, box_h, c, r, MAP_BY_TYPE,
+                                       NULL);
                 char text[8];
                 if (t < 0) {
                     tui_put(y0 + 1 + r, x + c, 1, tui_attr(ROLE_DIM),

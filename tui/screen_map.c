@@ -1,6 +1,7 @@
 /*
  * screen_map.c: Option detail / panel map: the UV grid of one option with
- * each panel coloured by type (FP/SP/DP) or by class (c toggles), a legend
+ * each panel coloured by type (FP/SP/DP), class, mould family, worst gap
+ * or worst kink (c cycles), a legend
  * with counts and areas, and a cursor over the panels that shows one
  * panel's class, type, k1, k2, K, H, area, deviation and cost. The view
  * opens fitted to the screen: the whole grid at the surface's true aspect,
@@ -29,7 +30,9 @@ struct map_screen {
     struct option_row option;
     struct panelization panels;
     struct option_totals totals;
-    enum map_colour colour;  /* c cycles type, class, mould family */
+    enum map_colour colour;  /* c cycles type, class, mould family, gap,
+                                kink */
+    double bound[MAP_LEVELS];  /* by gap or kink: the levels' bounds */
     int zoom;            /* 0: fit the whole grid; 1, 2: columns per
                             panel, one row per panel */
     double width_m, height_m;  /* the surface's extent (map_model.h) */
@@ -44,7 +47,8 @@ static const struct tui_key_help map_help[] = {
     {"PgUp/PgDn", "a page up / down"},
     {"g / G", "first / last panel"},
     {"0 / $", "start / end of the row"},
-    {"c, F2", "colour by type (FP/SP/DP), by class or by mould family"},
+    {"c, F2", "colour by type (FP/SP/DP), by class, by mould family, by "
+              "worst gap or by worst kink"},
     {"z", "zoom in: fit the screen, 1, then 2 columns per panel"},
     {"Z", "zoom out, back to the whole grid fitted to the screen"},
     {"e, F9", "export: PREFIX.obj (+ .mtl), PREFIX.csv and PREFIX.svg; "
@@ -79,13 +83,87 @@ static void family_look(int k, char *letter, attr_t *attr)
     *attr = tui_attr(ROLE_CLASS0 + k % CLASS_COUNT);
 }
 
+/* 1 when the map colours by gap or kink. */
+static int by_joint(const struct map_screen *s)
+{
+    return s->colour == MAP_BY_GAP || s->colour == MAP_BY_KINK;
+}
+
+/* The run's limit on what the map colours by (mm or degrees), NaN for
+ * none. */
+static double joint_limit(const struct map_screen *s)
+{
+    return s->colour == MAP_BY_KINK ? s->run.max_kink_deg
+                                    : s->run.max_gap_mm;
+}
+
+/* Sets the levels' bounds for the colouring (map_level_bounds). */
+static void set_bounds(struct map_screen *s)
+{
+    if (!by_joint(s))
+        return;
+    double limit = joint_limit(s);
+    map_level_bounds(isnan(limit) ? 0 : limit,
+                     s->colour == MAP_BY_KINK ? s->totals.max_kink_deg
+                                              : s->totals.max_gap_mm,
+                     s->bound);
+}
+
+/* The levels of the gap or kink colouring, their bounds and panels. */
+static void draw_joint_legend(struct map_screen *s, int y, int x, int width)
+{
+    const struct option_totals *t = &s->totals;
+    int kink = s->colour == MAP_BY_KINK;
+    const char *unit = kink ? "deg" : "mm";
+    size_t count[MAP_LEVELS] = {0}, unknown = 0;
+    for (size_t k = 0; k < s->panels.npanels; k++) {
+        int level = map_level(map_panel_measure(&s->panels.panels[k],
+                                                s->colour), s->bound);
+        if (level < 0)
+            unknown++;
+        else
+            count[level]++;
+    }
+    for (int k = 0; k < MAP_LEVELS; k++) {
+        char letter[2] = {(char)('0' + k), 0}, range[40];
+        if (k == MAP_LEVELS - 1)
+            snprintf(range, sizeof range, "> %.2f %s", s->bound[k - 1], unit);
+        else
+            snprintf(range, sizeof range, "<= %.2f %s", s->bound[k], unit);
+        tui_put(y, x + 1, 1, tui_attr(ROLE_SCALE0 + k), letter);
+        tui_putf(y++, x + 2, width - 2, A_NORMAL, " %-18s %6zu", range,
+                 count[k]);
+    }
+    if (unknown > 0)
+        tui_putf(y++, x, width, A_NORMAL, "   not measured     %6zu",
+                 unknown);
+    double limit = joint_limit(s);
+    if (isnan(limit))
+        tui_putf(y++, x, width, A_NORMAL, "   (quarters of the worst; no "
+                 "limit)");
+    else
+        tui_putf(y++, x, width, A_NORMAL, "   limit %g %s: %zu joints over",
+                 limit, unit, kink ? t->kinks_over : t->gaps_over);
+    tui_putf(y++, x, width, A_NORMAL, " max %.2f %s, mean %.2f %s",
+             kink ? t->max_kink_deg : t->max_gap_mm, unit,
+             kink ? t->mean_kink_deg : t->mean_gap_mm, unit);
+    tui_putf(y++, x, width, A_NORMAL, " SP misfits %zu (%s)", t->sp_misfits,
+             s->run.sp_fit ? "built DP" : "kept SP: by class");
+}
+
 static void draw_legend(struct map_screen *s, int y, int x, int width)
 {
     const struct option_totals *t = &s->totals;
     tui_put(y++, x, width, tui_attr(ROLE_HEADER),
             s->colour == MAP_BY_CLASS ? " class              count       m^2"
             : s->colour == MAP_BY_MOULD ? " moulds           families  panels"
+            : s->colour == MAP_BY_GAP ? " worst gap              panels"
+            : s->colour == MAP_BY_KINK ? " worst kink             panels"
                                         : " type               count       m^2");
+    if (by_joint(s)) {
+        draw_joint_legend(s, y, x, width);
+        return;
+    }
     if (s->colour == MAP_BY_MOULD) {
         /* "-" for counts an older Facet's run did not store */
         char sp[24], dp[24];
@@ -149,7 +227,9 @@ static void map_draw(struct tui_screen *base, struct tui_app *app,
              "| by %s", (long long)s->option.number, (long long)s->run.id,
              nu, nv, s->option.threshold_mm,
              s->colour == MAP_BY_CLASS ? "class"
-             : s->colour == MAP_BY_MOULD ? "mould family" : "type");
+             : s->colour == MAP_BY_MOULD ? "mould family"
+             : s->colour == MAP_BY_GAP ? "worst gap"
+             : s->colour == MAP_BY_KINK ? "worst kink" : "type");
     int legend = width >= 70 ? 36 : 0;
     int map_w = width - legend - 2, map_h = height - 5;
     if (map_h < 1)
@@ -181,12 +261,15 @@ static void map_draw(struct tui_screen *base, struct tui_app *app,
             int value, here;
             if (zoom == 0) {
                 value = map_cell_value(&s->panels, cols, lines, c, r,
-                                       s->colour);
+                                       s->colour, s->bound);
                 here = c == cursor_c && r == cursor_r;
             } else {
                 int i = s->left + c, j = nv - 1 - (s->top + r);
                 const struct panel *p = panel_at(s, i, j);
                 value = p == NULL ? -1
+                        : by_joint(s)
+                            ? map_level(map_panel_measure(p, s->colour),
+                                        s->bound)
                         : s->colour == MAP_BY_CLASS ? (int)p->class
                         : s->colour == MAP_BY_TYPE ? (int)p->type
                         : p->mould >= 0 ? p->mould : MAP_NO_MOULD;
@@ -200,6 +283,9 @@ static void map_draw(struct tui_screen *base, struct tui_app *app,
             } else if (value < 0) {
                 snprintf(text, sizeof text, "%s", app->glyphs->empty);
                 attr = tui_attr(ROLE_DIM);
+            } else if (by_joint(s)) {
+                snprintf(text, sizeof text, "%c", '0' + value);
+                attr = tui_attr(ROLE_SCALE0 + value);
             } else if (s->colour == MAP_BY_MOULD) {
                 text[1] = '\0';
                 family_look(value, &text[0], &attr);
@@ -250,7 +336,18 @@ static void map_draw(struct tui_screen *base, struct tui_app *app,
              p->trimmed ? " (trimmed)" : "", cost);
     /* By mould the family takes the curvatures' line: 80 columns hold
      * one or the other. */
-    if (s->colour == MAP_BY_MOULD && p->mould >= 0)
+    if (by_joint(s)) {
+        char fit[64] = "";
+        if (p->misfit)
+            snprintf(fit, sizeof fit, " | SP misfit: built DP");
+        else if (p->built == TYPE_SP)
+            snprintf(fit, sizeof fit, " | SP fit %.2f mm",
+                     p->sp_deviation * 1000);
+        tui_putf(y + 2, 0, width, A_NORMAL,
+                 " worst gap %.2f mm  worst kink %.2f deg | deviation "
+                 "%.2f mm%s", p->worst_gap_mm, p->worst_kink_deg,
+                 p->deviation * 1000, fit);
+    } else if (s->colour == MAP_BY_MOULD && p->mould >= 0)
         tui_putf(y + 2, 0, width, A_NORMAL,
                  " mould family %d (%zu panels) | deviation %.2f mm",
                  p->mould, map_family_size(&s->panels, p->mould),
@@ -356,6 +453,7 @@ static enum tui_result map_key(struct tui_screen *base, struct tui_app *app,
     }
     case 'c': case KEY_F(2):
         s->colour = (enum map_colour)((s->colour + 1) % MAP_COLOURS);
+        set_bounds(s);
         return RESULT_HANDLED;
     case 'z':
         if (s->zoom == 2)

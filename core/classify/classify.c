@@ -10,6 +10,7 @@
 
 #include "core/base/exact_sum.h"
 #include "core/base/numparse.h"
+#include "core/fit/sp_fit.h"
 
 double totals_count(size_t count)
 {
@@ -25,6 +26,9 @@ void classify_defaults(struct classify_options *options)
     options->price[TYPE_DP] = 1518;
     options->sp_as_fp = 0;
     options->max_panel_area = 7.06;
+    options->sp_by_class = 0;
+    options->max_gap = 0;
+    options->max_kink = 0;
 }
 
 /* The sign of a curvature, 0 within the zero tolerance eps widened by
@@ -137,7 +141,32 @@ double classify_area_excess(double max_panel_area, double limit)
     return max_panel_area - limit;
 }
 
+void classify_types(struct panelization *p,
+                    const struct classify_options *options)
+{
+    p->threshold = options->threshold;
+    for (size_t n = 0; n < p->npanels; n++) {
+        struct panel *panel = &p->panels[n];
+        panel->K = panel->k1 * panel->k2;
+        panel->H = (panel->k1 + panel->k2) / 2;
+        panel->curvature_tol = classify_tolerance(options, panel);
+        panel->class = classify_curvature(panel->k1, panel->k2,
+                                          panel->curvature_tol);
+        panel->type = panel_type_of_class(panel->class);
+        if (classify_within_threshold(options, panel))
+            panel->type = TYPE_FP;
+    }
+}
+
 void classify_panels(struct panelization *p,
+                     const struct classify_options *options,
+                     struct option_totals *totals)
+{
+    classify_types(p, options);
+    classify_totals(p, options, totals);
+}
+
+void classify_totals(struct panelization *p,
                      const struct classify_options *options,
                      struct option_totals *totals)
 {
@@ -156,14 +185,6 @@ void classify_panels(struct panelization *p,
     exact_sum_init(&p_dist);
     for (size_t n = 0; n < p->npanels; n++) {
         struct panel *panel = &p->panels[n];
-        panel->K = panel->k1 * panel->k2;
-        panel->H = (panel->k1 + panel->k2) / 2;
-        panel->curvature_tol = classify_tolerance(options, panel);
-        panel->class = classify_curvature(panel->k1, panel->k2,
-                                          panel->curvature_tol);
-        panel->type = panel_type_of_class(panel->class);
-        if (classify_within_threshold(options, panel))
-            panel->type = TYPE_FP;
         enum panel_type priced_as = panel->type;
         if (options->sp_as_fp && priced_as == TYPE_SP)
             priced_as = TYPE_FP;
@@ -203,8 +224,15 @@ void classify_panels(struct panelization *p,
     totals->area_cost = totals->cost_of[TYPE_FP] + totals->cost_of[TYPE_SP] +
                         totals->cost_of[TYPE_DP];
     totals->cost = totals->area_cost;
-    totals->feasible = classify_area_excess(totals->max_panel_area,
-                                            options->max_panel_area) == 0;
+    totals->feasible =
+        classify_violation(totals, options->max_panel_area) == 0;
+}
+
+double classify_violation(const struct option_totals *totals,
+                          double max_panel_area)
+{
+    return classify_area_excess(totals->max_panel_area, max_panel_area) +
+           (double)totals->gaps_over + (double)totals->kinks_over;
 }
 
 void classify_price_terms(const struct classify_options *options,
@@ -236,6 +264,14 @@ int classify_check_options(const struct classify_options *options,
             return facet_error_set(err, FACET_EINPUT,
                 "price of %s %g USD/m^2 must be 0 or more",
                 panel_type_name((enum panel_type)t), options->price[t]);
+    if (!isfinite(options->max_gap) || options->max_gap < 0)
+        return facet_error_set(err, FACET_EINPUT,
+            "gap limit %g mm must be 0 (none) or more",
+            options->max_gap * 1000);
+    if (!isfinite(options->max_kink) || options->max_kink < 0)
+        return facet_error_set(err, FACET_EINPUT,
+            "kink limit %g degrees must be 0 (none) or more",
+            options->max_kink * 180 / M_PI);
     if (!isfinite(options->max_panel_area) || options->max_panel_area <= 0)
         return facet_error_set(err, FACET_EINPUT,
             "maximum panel area %g m^2 must be more than 0",
@@ -297,4 +333,21 @@ int classify_prices_parse(const char *text, const char *what,
             "%s: '%s' is not FP,SP,DP in USD/m^2 (e.g. "
             "701,766,1518)", what, text);
     return FACET_OK;
+}
+
+void classify_misfit_reason(const struct panelization *p, size_t panel,
+                            char *text, size_t size)
+{
+    const struct panel *x = &p->panels[panel];
+    /* One panel as sp_fit.h built it: its one wording of the reason. */
+    struct built_panel built;
+    memset(&built, 0, sizeof built);
+    built.type = x->built;
+    built.misfit = x->misfit;
+    built.sp_deviation = x->sp_deviation;
+    built.best_cylinder = x->best_cylinder;
+    built.best_cone = x->best_cone;
+    struct built_option option = {1, &built, 0, (size_t)x->misfit,
+                                  p->threshold};
+    built_panel_reason(&option, 0, text, size);
 }

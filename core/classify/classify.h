@@ -57,6 +57,15 @@ struct classify_options {
     double mould_cost[TYPE_COUNT];  /* USD per mould family of the type
                                        (a bending jig for SP, a mould for
                                        DP); FP needs none and is 0 */
+    /* Panels as built (option.h; 0 everywhere: as built, no limits): */
+    int sp_by_class;           /* 1: an SP panel is SP by its class alone,
+                                  the paper's typing, whether or not a
+                                  cylinder or cone fits it; 0: one that
+                                  none fits within t is built and priced
+                                  DP (a misfit) */
+    double max_gap;            /* feasibility limit on the gap at every
+                                  joint (m); 0 for none */
+    double max_kink;           /* the same for the kink (rad); 0 for none */
 };
 
 /* The paper's defaults: t = 3 mm, eps = 8 t / d^2, prices 701, 766, 1518,
@@ -79,7 +88,9 @@ struct option_totals {
     double max_panel_area;           /* m^2 */
     double p_dist;                   /* sum of the non-DP panels' P_dist
                                         (m^4) */
-    int feasible;                    /* every panel within max_panel_area */
+    int feasible;                    /* every panel within max_panel_area,
+                                        and no joint over the gap or kink
+                                        limit (classify_violation is 0) */
     /* Set by option_evaluate (option.h), 0 from classify_panels alone: */
     double joint_length;             /* m (joint_length.h) */
     size_t moulds;                   /* mould families, SP and DP (mould.h):
@@ -92,6 +103,18 @@ struct option_totals {
     double panel_cost;               /* panels x panel cost */
     double joint_cost;               /* joint_length x joint cost */
     double mould_cost;               /* moulds per type x mould cost */
+    /* Panels as built and their joints, set by option_classify (option.h),
+     * 0 from classify_panels alone. In the store's units: */
+    double max_gap_mm;               /* largest gap at a joint (mm) */
+    double mean_gap_mm;              /* mean over the joints (mm) */
+    double max_kink_deg;             /* largest kink (degrees) */
+    double mean_kink_deg;            /* mean over the joints (degrees) */
+    size_t gaps_over;                /* joints whose gap exceeds max_gap
+                                        (0 without a limit) */
+    size_t kinks_over;               /* likewise for max_kink */
+    size_t sp_misfits;               /* panels classed SP that no cylinder
+                                        or cone fits within t */
+    size_t sp_fitted;                /* SP panels fitted (built SP) */
 };
 
 /* A count of struct option_totals that is not known: what the store reads
@@ -141,10 +164,40 @@ size_t classify_fp_over_threshold(const struct panelization *p,
                                   double *worst);
 
 /* Classifies, types and prices every panel of p (K, H, curvature_tol,
- * class, type, price, cost) and sums the option's totals into *totals. */
+ * class, type, price, cost) and sums the option's totals into *totals:
+ * classify_types, then classify_totals. */
 void classify_panels(struct panelization *p,
                      const struct classify_options *options,
                      struct option_totals *totals);
+
+/* The first half of classify_panels: every panel's K, H, curvature_tol,
+ * class and type (by class and the threshold rule), and p's threshold. */
+void classify_types(struct panelization *p,
+                    const struct classify_options *options);
+
+/* The second half: prices every panel of p by its type (price, cost) and
+ * sums the option's totals into *totals (cleared first): what a panel
+ * retyped after classify_types (a misfit, option.h) is priced by. */
+void classify_totals(struct panelization *p,
+                     const struct classify_options *options,
+                     struct option_totals *totals);
+
+/* How far an option is from feasible (0: feasible): its largest panel's
+ * excess over the size limit max_panel_area (m^2, classify_area_excess)
+ * plus the joints over the gap limit and over the kink limit, each
+ * counted as 1 (totals' gaps_over and kinks_over, counted against the
+ * limits when it was evaluated; 0 without limits). Feasibility and
+ * constraint-domination both read it; without gap or kink limits it is
+ * the area excess, to the bit. */
+double classify_violation(const struct option_totals *totals,
+                          double max_panel_area);
+
+/* Why panel of p (built by option_evaluate, or read back from the store)
+ * is a misfit, in one line into text (size bytes): the flatness threshold
+ * and its best cylinder's and cone's deviations (sp_fit.h's wording); ""
+ * for a panel that is not one. */
+void classify_misfit_reason(const struct panelization *p, size_t panel,
+                            char *text, size_t size);
 
 /* Prices the terms beyond area from totals' panels, joint_length and
  * moulds (options' panel, joint and mould costs) and sets totals->cost to

@@ -3,8 +3,12 @@
  */
 #include "core/classify/option.h"
 
+#include <math.h>
 #include <string.h>
 
+#include "core/fit/sp_fit.h"
+#include "core/joint/cell_sides.h"
+#include "core/joint/joint.h"
 #include "core/joint/joint_length.h"
 #include "core/mould/mould.h"
 
@@ -77,6 +81,94 @@ int option_evaluate_shared(const struct surface *surface,
                            panels, totals, err);
 }
 
+/* A limit of 0 is none: no joint is over it. */
+static double limit_or_none(double limit)
+{
+    return limit > 0 ? limit : INFINITY;
+}
+
+/* Sets every panel's worst_gap_side from the joints of panels: the side
+ * (panel.h's numbering) of its joint of the largest gap, the first of
+ * equal ones. A joint's panel[0] is the left or lower one (joint.h). */
+static void set_worst_sides(struct panelization *panels,
+                            const struct joints *joints)
+{
+    for (size_t k = 0; k < panels->npanels; k++)
+        panels->panels[k].worst_gap_side = -1;
+    size_t u_sides = (size_t)(panels->nu + 1) * (size_t)panels->nv;
+    for (size_t e = 0; e < joints->nedges; e++) {
+        const struct joint_edge *edge = &joints->edges[e];
+        int across_u = edge->side < u_sides;
+        for (int s = 0; s < 2; s++) {
+            struct panel *panel = &panels->panels[edge->panel[s]];
+            double best = joints->worst_gap[edge->panel[s]];
+            if (panel->worst_gap_side >= 0 || edge->gap < best)
+                continue;
+            panel->worst_gap_side = across_u ? (s == 0 ? 1 : 3)
+                                             : (s == 0 ? 2 : 0);
+        }
+    }
+}
+
+/* Builds the classified panels as built (sp_fit.h): each panel's built
+ * type, misfit and deviation from its fit, the misfits retyped DP unless
+ * the options type SP by class alone; then prices them and sums *totals
+ * (classify_totals) and measures the joints of the panels as built
+ * (joint.h) into the panels' worst gap and kink and the totals. */
+static int build_and_measure(const struct surface *surface,
+                             const struct classify_options *options,
+                             struct panelization *panels,
+                             struct option_totals *totals,
+                             struct facet_error *err)
+{
+    struct cell_sides sides;
+    struct built_option built;
+    struct joints joints;
+    memset(&sides, 0, sizeof sides);
+    memset(&built, 0, sizeof built);
+    memset(&joints, 0, sizeof joints);
+    int rc = cell_sides_sample(&surface->mesh, &surface->uv,
+                               &surface->curvature, panels, &sides, err);
+    if (rc == FACET_OK)
+        rc = built_option_fit(&surface->mesh, &surface->fit, panels, &sides,
+                              options->threshold, &built, err);
+    if (rc == FACET_OK)
+        rc = joints_measure(panels, &built, &sides,
+                            limit_or_none(options->max_gap),
+                            limit_or_none(options->max_kink), &joints, err);
+    if (rc == FACET_OK) {
+        for (size_t k = 0; k < panels->npanels; k++) {
+            struct panel *panel = &panels->panels[k];
+            const struct built_panel *b = &built.panels[k];
+            panel->built = b->type;
+            panel->misfit = b->misfit;
+            panel->sp_deviation = b->sp_deviation;
+            panel->best_cylinder = b->best_cylinder;
+            panel->best_cone = b->best_cone;
+            panel->worst_gap_mm = joints.worst_gap[k] * 1000;
+            panel->worst_kink_deg = joints.worst_kink[k] * 180 / M_PI;
+            if (b->misfit && !options->sp_by_class)
+                panel->type = TYPE_DP;
+        }
+        set_worst_sides(panels, &joints);
+        classify_totals(panels, options, totals);
+        totals->sp_misfits = built.sp_misfits;
+        totals->sp_fitted = built.sp_fitted;
+        totals->max_gap_mm = joints.max_gap * 1000;
+        totals->mean_gap_mm = joints.mean_gap * 1000;
+        totals->max_kink_deg = joints.max_kink * 180 / M_PI;
+        totals->mean_kink_deg = joints.mean_kink * 180 / M_PI;
+        totals->gaps_over = joints.gaps_over;
+        totals->kinks_over = joints.kinks_over;
+        totals->feasible =
+            classify_violation(totals, options->max_panel_area) == 0;
+    }
+    joints_free(&joints);
+    built_option_free(&built);
+    cell_sides_free(&sides);
+    return rc;
+}
+
 int option_classify(const struct surface *surface,
                     const struct option_params *params, double joints,
                     struct panelization *panels,
@@ -86,7 +178,10 @@ int option_classify(const struct surface *surface,
     int rc = classify_check_options(&params->classify, err);
     if (rc != FACET_OK)
         return rc;
-    classify_panels(panels, &params->classify, totals);
+    classify_types(panels, &params->classify);
+    rc = build_and_measure(surface, &params->classify, panels, totals, err);
+    if (rc != FACET_OK)
+        return rc;
     struct mould_options mould = {
         params->mould_tol_given ? params->mould_tol
                                 : params->classify.threshold,

@@ -2,11 +2,20 @@
  * option.h: one design option, evaluated.
  *
  * A design option is a grid size and the classification settings; its
- * evaluation panelizes a prepared surface (surface_prepare), classifies and
- * types the panels, measures the joints (joint_length.h), finds the mould
- * families of the curved panels (mould.h) and prices it all. This is the one function that turns design
- * variables into the numbers a designer compares, used alike by
- * `facet classify` and by the optimiser.
+ * evaluation panelizes a prepared surface (surface_prepare), then, in this
+ * order:
+ *   1. classifies and types the panels (classify.h);
+ *   2. builds them as a fabricator would (sp_fit.h): an SP panel on a
+ *      fitted cylinder or cone; one that none fits within the threshold
+ *      (a misfit) is built and typed DP, unless the classify options
+ *      type SP by class alone (the paper's typing: sp_by_class);
+ *   3. measures the gap and the kink at every joint of the panels as
+ *      built (joint.h), against the gap and kink limits (feasibility);
+ *   4. finds the mould families of the curved panels (mould.h);
+ *   5. prices it all, the joint length (joint_length.h) included.
+ * This is the one function that turns design variables into the numbers a
+ * designer compares, used alike by `facet classify` and by the
+ * optimiser.
  */
 #ifndef FACET_OPTION_H
 #define FACET_OPTION_H
@@ -73,8 +82,10 @@ int option_evaluate_shared(const struct surface *surface,
                            struct facet_error *err);
 
 /* What option_evaluate does once the panels are built: classifies panels
- * (built for params' grid over surface), finds their mould families
- * (setting each panel's mould), and fills *totals, priced with joint_length
+ * (built for params' grid over surface), builds them as built and measures
+ * their joints (setting each panel's built, misfit, sp_deviation and
+ * worst gap and kink), finds their mould families (setting each panel's
+ * mould), and fills *totals, priced with joint_length
  * (m), the joint length of the grid (joint_length.h), which does not
  * depend on the threshold: a search evaluating several thresholds on one
  * grid measures it once. Returns FACET_OK, FACET_EINPUT for a bad option

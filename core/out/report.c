@@ -46,6 +46,14 @@ static void json_totals(struct json_writer *w,
     json_key(w, "panel_cost");     json_number(w, t->panel_cost);
     json_key(w, "joint_cost");     json_number(w, t->joint_cost);
     json_key(w, "mould_cost");     json_number(w, t->mould_cost);
+    json_key(w, "max_gap");        json_number(w, t->max_gap_mm);
+    json_key(w, "mean_gap");       json_number(w, t->mean_gap_mm);
+    json_key(w, "max_kink");       json_number(w, t->max_kink_deg);
+    json_key(w, "mean_kink");      json_number(w, t->mean_kink_deg);
+    json_key(w, "gaps_over");      json_integer(w, (long long)t->gaps_over);
+    json_key(w, "kinks_over");     json_integer(w, (long long)t->kinks_over);
+    json_key(w, "sp_misfits");     json_integer(w, (long long)t->sp_misfits);
+    json_key(w, "sp_fitted");      json_integer(w, (long long)t->sp_fitted);
     json_key(w, "fp_over_threshold");
     json_integer(w, (long long)fp_over_threshold);
     json_key(w, "classes");
@@ -102,6 +110,14 @@ void report_json(FILE *out, const struct report_source *source,
     json_end_object(&w);
     json_key(&w, "max_panel_area_limit");
     json_number(&w, options->max_panel_area);
+    /* true: a panel classed SP that no cylinder or cone fits is DP. */
+    json_key(&w, "sp_fit");     json_bool(&w, !options->sp_by_class);
+    /* null without a limit (json_number writes NaN as null) */
+    json_key(&w, "max_gap_mm");
+    json_number(&w, options->max_gap > 0 ? options->max_gap * 1000 : NAN);
+    json_key(&w, "max_kink_deg");
+    json_number(&w, options->max_kink > 0 ? options->max_kink * 180 / M_PI
+                                          : NAN);
 
     json_key(&w, "panels");
     json_begin_array(&w);
@@ -128,6 +144,18 @@ void report_json(FILE *out, const struct report_source *source,
         json_key(&w, "mould");
         if (p->mould >= 0)
             json_integer(&w, p->mould);
+        else
+            json_null(&w);
+        json_key(&w, "built_type");
+        json_string(&w, panel_type_name(p->built));
+        json_key(&w, "sp_deviation");   json_number(&w, p->sp_deviation);
+        json_key(&w, "worst_gap");      json_number(&w, p->worst_gap_mm);
+        json_key(&w, "worst_kink");     json_number(&w, p->worst_kink_deg);
+        json_key(&w, "misfit_reason");
+        char reason[200];
+        classify_misfit_reason(panels, n, reason, sizeof reason);
+        if (reason[0] != '\0')
+            json_string(&w, reason);
         else
             json_null(&w);
         json_end_object(&w);
@@ -158,7 +186,8 @@ void report_csv(FILE *out, const struct panelization *panels)
           "diameter_m,trimmed,corner_planarity_m,price_usd_m2,cost_usd", out);
     for (int c = 0; c < 4; c++)
         fprintf(out, ",c%d_x_m,c%d_y_m,c%d_z_m", c, c, c);
-    fputs(",mould_family\n", out);
+    fputs(",mould_family,built_type,sp_deviation_m,worst_gap_mm,"
+          "worst_kink_deg,misfit_reason\n", out);
     for (size_t n = 0; n < panels->npanels; n++) {
         const struct panel *p = &panels->panels[n];
         fprintf(out, "%zu,%d,%d,%s,%s", n + 1, p->i, p->j,
@@ -182,7 +211,18 @@ void report_csv(FILE *out, const struct panelization *panels)
         fputc(',', out);
         if (p->mould >= 0)
             fprintf(out, "%d", p->mould);
-        fputc('\n', out);
+        fprintf(out, ",%s", panel_type_name(p->built));
+        csv_number(out, p->sp_deviation);
+        csv_number(out, p->worst_gap_mm);
+        csv_number(out, p->worst_kink_deg);
+        /* The reason holds commas: quoted (RFC 4180), never a quote in
+         * it (sp_fit.h's wording). */
+        char reason[200];
+        classify_misfit_reason(panels, n, reason, sizeof reason);
+        if (reason[0] != '\0')
+            fprintf(out, ",\"%s\"\n", reason);
+        else
+            fputs(",\n", out);
     }
 }
 
@@ -193,7 +233,9 @@ void report_totals_csv(FILE *out, const struct option_totals *t)
           "planarity_m,max_deviation_m,max_panel_area_m2,p_dist_m4,"
           "feasible,joint_length_m,moulds,sp_moulds,dp_moulds,"
           "largest_family,single_moulds,area_cost_usd,panel_cost_usd,"
-          "joint_cost_usd,mould_cost_usd\n", out);
+          "joint_cost_usd,mould_cost_usd,max_gap_mm,mean_gap_mm,"
+          "max_kink_deg,mean_kink_deg,gaps_over,kinks_over,sp_misfits,"
+          "sp_fitted\n", out);
     fprintf(out, "%zu,%zu,%zu,%zu", t->panels, t->count[TYPE_FP],
             t->count[TYPE_SP], t->count[TYPE_DP]);
     csv_number(out, t->area);
@@ -217,5 +259,10 @@ void report_totals_csv(FILE *out, const struct option_totals *t)
     csv_number(out, t->panel_cost);
     csv_number(out, t->joint_cost);
     csv_number(out, t->mould_cost);
-    fputc('\n', out);
+    csv_number(out, t->max_gap_mm);
+    csv_number(out, t->mean_gap_mm);
+    csv_number(out, t->max_kink_deg);
+    csv_number(out, t->mean_kink_deg);
+    fprintf(out, ",%zu,%zu,%zu,%zu\n", t->gaps_over, t->kinks_over,
+            t->sp_misfits, t->sp_fitted);
 }

@@ -37,14 +37,19 @@ void report_json(FILE *out, const struct report_source *source,
  * corner_planarity_m, price_usd_m2, cost_usd, and the four cell corners
  * on the surface c0_x_m ... c3_z_m (empty where off it, as
  * corner_planarity_m is unless all four are on it), mould_family (the
- * panel's mould, mould.h; empty for an FP panel, which needs none). One unit per column,
+ * panel's mould, mould.h; empty for an FP panel, which needs none),
+ * built_type (FP, SP or DP as built: DP for an SP misfit), sp_deviation_m
+ * (from its fitted cylinder or cone; empty unless classed SP),
+ * worst_gap_mm and worst_kink_deg (the largest at its joints, joint.h),
+ * misfit_reason (quoted; empty unless a misfit). One unit per column,
  * named in its header; every number reads back exactly. */
 void report_csv(FILE *out, const struct panelization *panels);
 
 /* Writes the option's totals as a CSV of its own (a header row and one
  * row: panels, counts, areas and costs per type, cost, planarity, largest
  * deviation, largest panel, P_dist, feasible, then the joint length, the
- * mould families and the cost term by term), the numbers `facet show`
+ * mould families, the cost term by term, the gaps (mm) and kinks
+ * (degrees) and the SP misfits and fitted panels), the numbers `facet show`
  * prints, so that a schedule holds panels only. */
 void report_totals_csv(FILE *out, const struct option_totals *totals);
 

@@ -33,6 +33,7 @@ void svg_map_defaults(struct svg_map_options *options)
     options->view = SVG_MAP_UV;
     options->colour_by = SVG_MAP_BY_TYPE;
     options->size = 720;
+    options->worst_joints = 10;
 }
 
 int svg_map_view_parse(const char *text, enum svg_map_view *out,
@@ -202,6 +203,107 @@ static void write_panel(struct svg *svg, const struct frame *f,
             panel->deviation * 1000);
 }
 
+/* A panel's worst joint: the panel, its gap (mm) and a key that names
+ * the joint whichever of its two panels names it. */
+struct worst_joint {
+    size_t panel;
+    double gap;
+    long long key;
+};
+
+static int compare_worst(const void *a, const void *b)
+{
+    const struct worst_joint *x = a, *y = b;
+    if (x->gap != y->gap)
+        return x->gap > y->gap ? -1 : 1;
+    return x->key < y->key ? -1 : x->key > y->key;
+}
+
+/* The joint on side side of panel (i, j): which line (u or v), its index
+ * and the cell along it, as one number. */
+static long long joint_key(int i, int j, int side)
+{
+    int along_v = side == 0 || side == 2;
+    int line = side == 1 ? i + 1 : side == 2 ? j + 1 : side == 3 ? i : j;
+    int cell = along_v ? i : j;
+    return ((long long)along_v * (PANEL_MAX_GRID + 1) + line) *
+               (PANEL_MAX_GRID + 1) + cell;
+}
+
+/* Fills joints with the panels' worst joints to draw (see svg_map.h),
+ * largest gap first; returns how many. */
+static size_t worst_joints(const struct panelization *p,
+                           const struct svg_map_options *options,
+                           struct worst_joint *joints)
+{
+    size_t n = 0;
+    for (size_t k = 0; k < p->npanels; k++) {
+        const struct panel *x = &p->panels[k];
+        if (x->worst_gap_side < 0 || !(x->worst_gap_mm > 0))
+            continue;
+        joints[n++] = (struct worst_joint){
+            k, x->worst_gap_mm, joint_key(x->i, x->j, x->worst_gap_side)};
+    }
+    qsort(joints, n, sizeof *joints, compare_worst);
+    size_t kept = 0;
+    for (size_t k = 0; k < n; k++) {
+        int seen = 0;
+        for (size_t m = 0; m < kept && !seen; m++)
+            seen = joints[m].key == joints[k].key;
+        int over = options->max_gap_mm > 0 &&
+                   joints[k].gap > options->max_gap_mm;
+        if (!seen && (kept < (size_t)options->worst_joints || over))
+            joints[kept++] = joints[k];
+    }
+    return kept;
+}
+
+/* The page point of corner c of panel (UV: the cell's corner; else its
+ * corner on the surface, projected), or 0 when it has none. */
+static int corner_point(const struct frame *f, const struct panelization *p,
+                        const struct panel *x, int c, double out[2])
+{
+    double d[2];
+    if (f->view == SVG_MAP_UV) {
+        double du = (p->umax - p->umin) / p->nu;
+        double dv = (p->vmax - p->vmin) / p->nv;
+        d[0] = p->umin + (x->i + (c == 1 || c == 2)) * du;
+        d[1] = p->vmin + (x->j + (c == 2 || c == 3)) * dv;
+    } else {
+        const double *q = x->corner[c];
+        if (!isfinite(q[0]))
+            return 0;
+        d[0] = f->view == SVG_MAP_SIDE ? q[1] : q[0];
+        d[1] = f->view == SVG_MAP_TOP ? q[1] : q[2];
+    }
+    out[0] = f->left + (d[0] - f->xmin) * f->scale;
+    out[1] = f->top + (f->ymax - d[1]) * f->scale;
+    return 1;
+}
+
+static void write_worst_joints(struct svg *svg, const struct frame *f,
+                               const struct panelization *p,
+                               const struct worst_joint *joints, size_t n)
+{
+    fputs("<g class=\"worst-joints\" stroke=\"#d6249f\" stroke-width=\"3\" "
+          "stroke-linecap=\"round\">\n", svg->out);
+    for (size_t k = 0; k < n; k++) {
+        const struct panel *x = &p->panels[joints[k].panel];
+        int side = x->worst_gap_side;
+        double a[2], b[2];
+        if (!corner_point(f, p, x, side, a) ||
+            !corner_point(f, p, x, (side + 1) % 4, b))
+            continue;
+        fprintf(svg->out, "<line class=\"worst-joint\" data-joint-i=\"%d\" "
+                "data-joint-j=\"%d\" data-side=\"%d\" data-gap-mm=\"%.4f\" "
+                "x1=\"%.2f\" y1=\"%.2f\" x2=\"%.2f\" y2=\"%.2f\"><title>"
+                "joint of panel %d,%d: gap %.2f mm</title></line>\n",
+                x->i, x->j, side, joints[k].gap, a[0], a[1], b[0], b[1],
+                x->i, x->j, joints[k].gap);
+    }
+    fputs("</g>\n", svg->out);
+}
+
 static void write_legend(struct svg *svg, double left, double top,
                          const struct option_totals *totals,
                          enum svg_map_colouring by)
@@ -251,6 +353,28 @@ static void write_legend(struct svg *svg, double left, double top,
     svg_text(svg, left + 230, y + 16, "text-anchor=\"end\"", "%s", count);
     svg_text(svg, left + LEGEND_WIDTH, y + 16, "text-anchor=\"end\"", "%s",
              area);
+    fputs("</g>\n", svg->out);
+}
+
+/* The worst joints' line of the legend, at y. */
+static void write_joint_legend(struct svg *svg, double left, double y,
+                               const struct svg_map_options *options,
+                               const struct worst_joint *joints, size_t n)
+{
+    fputs("<g class=\"legend-joints\">\n", svg->out);
+    svg_line(svg, left, y + 8, left + 12, y + 8,
+             "stroke=\"#d6249f\" stroke-width=\"3\"");
+    char limit[48] = "";
+    if (options->max_gap_mm > 0)
+        snprintf(limit, sizeof limit, " and all over %g mm",
+                 options->max_gap_mm);
+    if (n == 0)
+        svg_text(svg, left + 18, y + 12, NULL, "no joint with a gap");
+    else
+        svg_text(svg, left + 18, y + 12, NULL,
+                 "worst gaps (%d largest%s): %.2f to %.2f mm",
+                 options->worst_joints, limit, joints[n - 1].gap,
+                 joints[0].gap);
     fputs("</g>\n", svg->out);
 }
 
@@ -317,7 +441,7 @@ void svg_map_write(FILE *out, const struct panel_geometry *g,
     double draw_height = fmax(height * f.scale, 1);
     int rows = options->colour_by == SVG_MAP_BY_CLASS ? CLASS_COUNT
                                                        : TYPE_COUNT;
-    double legend_height = (rows + 2) * LEGEND_ROW + 8;
+    double legend_height = (rows + 3) * LEGEND_ROW + 8;
     double page_width = MARGIN + draw_width + LEGEND_GAP + LEGEND_WIDTH +
                         MARGIN;
     /* A projected view is in metres at one scale for both axes (its true
@@ -375,12 +499,26 @@ void svg_map_write(FILE *out, const struct panel_geometry *g,
     }
     fputs("</g>\n", out);
     free(order);
+    struct worst_joint *joints = NULL;
+    size_t njoints = 0;
+    if (options->worst_joints > 0 || options->max_gap_mm > 0) {
+        joints = malloc((panels->npanels + 1) * sizeof *joints);
+        if (joints != NULL) {
+            njoints = worst_joints(panels, options, joints);
+            write_worst_joints(&svg, &f, panels, joints, njoints);
+        }
+    }
 
     if (scale_bar)
         write_scale_bar(&svg, f.left, f.top + fmax(draw_height, 1) + 14,
                         width, f.scale);
     write_legend(&svg, MARGIN + draw_width + LEGEND_GAP, f.top, totals,
                  options->colour_by);
+    if (joints != NULL)
+        write_joint_legend(&svg, MARGIN + draw_width + LEGEND_GAP,
+                           f.top + (rows + 2) * LEGEND_ROW, options, joints,
+                           njoints);
+    free(joints);
     svg_end(&svg);
 }
 

@@ -13,6 +13,13 @@
  * the cost (USD) and the DP area (m^2); a legend the count and area (m^2)
  * of every type or class.
  *
+ * The worst joints are drawn over the panels as thick magenta lines, one
+ * <line class="worst-joint"> each with data-i, data-j (a panel it
+ * bounds), data-side (panel.h's worst_gap_side) and data-gap-mm: of
+ * every panel's worst joint (panel->worst_gap_side, the one joint per
+ * panel the store keeps), the worst_joints largest gaps and those above
+ * max_gap_mm, each joint once; the legend says which.
+ *
  * Every panel is exactly one <path> element, with class="panel TYPE" and
  * data-i, data-j, data-type and data-class attributes (and a <title>
  * tooltip), so that scripts and tests can find and count them; nothing
@@ -39,9 +46,13 @@ struct svg_map_options {
     const char *title;    /* first line of the title block (the surface's
                              name, say), or NULL for "Facet panel map" */
     double size;          /* the drawing's longer side (px) */
+    int worst_joints;     /* draw the joints of the N largest gaps, thick
+                             (0: none) */
+    double max_gap_mm;    /* and every panel's worst joint over this gap
+                             limit (mm; 0 for none) */
 };
 
-/* UV view, by type, outlines, no title, 720 px. */
+/* UV view, by type, outlines, no title, 720 px, the 10 worst joints. */
 void svg_map_defaults(struct svg_map_options *options);
 
 /* "uv", "top", "front" or "side" into *out. Returns FACET_OK or

@@ -89,6 +89,22 @@ struct panel {
     /* Set by option_evaluate (option.h): */
     int mould;                /* its mould family (mould.h), 0-based, or
                                  -1 for none (FP) */
+    /* As built (option.h, sp_fit.h, joint.h), set by option_evaluate: */
+    enum panel_type built;    /* the type it is built as: type, except DP
+                                 for an SP misfit */
+    int misfit;               /* 1: classed SP, but no cylinder or cone
+                                 fits it within t */
+    double sp_deviation;      /* largest distance of its surface from the
+                                 fitted cylinder or cone (m); for a misfit
+                                 the nearer of the two; NaN unless classed
+                                 SP */
+    double best_cylinder;     /* a misfit's best cylinder and cone (m, */
+    double best_cone;         /* NaN when none fits): why it is a misfit */
+    double worst_gap_mm;      /* largest gap at its joints (mm) */
+    int worst_gap_side;       /* the cell side that joint is on: 0 v = j
+                                 (corners 0-1), 1 u = i + 1 (1-2), 2 v =
+                                 j + 1 (2-3), 3 u = i (3-0); -1 for none */
+    double worst_kink_deg;    /* largest kink at its joints (degrees) */
 };
 
 struct panelization {
@@ -100,6 +116,9 @@ struct panelization {
                                  j then i */
     int *cell_panel;          /* nu x nv: index into panels of cell (i, j)
                                  at [j * nu + i], or -1 when no panel */
+    double threshold;         /* the flatness threshold t its panels were
+                                 typed and built at (m), set by
+                                 classify_types: what a misfit missed */
 };
 
 /* The largest grid side panels_build accepts. */

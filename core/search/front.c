@@ -45,7 +45,7 @@ int front_analyse(const struct evaluated_option *options, size_t n,
         goto done;
 
     /* Infeasible options are ranked after every feasible one, by how far
-     * their largest panel exceeds the limit. */
+     * they are from feasible (classify_violation). */
     double ideal[OBJECTIVES_MAX], nadir[OBJECTIVES_MAX];
     for (size_t j = 0; j < m; j++) {
         ideal[j] = INFINITY;
@@ -53,8 +53,7 @@ int front_analyse(const struct evaluated_option *options, size_t n,
     }
     for (size_t i = 0; i < n; i++) {
         const struct option_totals *t = &options[i].totals;
-        violation[i] = classify_area_excess(t->max_panel_area,
-                                            max_panel_area);
+        violation[i] = classify_violation(t, max_panel_area);
         for (size_t j = 0; j < m; j++)
             value[i * m + j] = objective_value(t, &objectives[j]);
     }

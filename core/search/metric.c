@@ -10,6 +10,7 @@ static const char *const names[METRIC_COUNT] = {
     "cost", "planarity", "dp_area", "fp_area", "sp_area", "panels",
     "fp_count", "sp_count", "dp_count", "max_deviation", "max_panel_area",
     "p_dist", "moulds", "sp_moulds", "dp_moulds", "joint_length",
+    "max_gap", "max_kink", "sp_misfits",
 };
 
 const char *metric_name(enum metric metric)
@@ -36,6 +37,9 @@ double metric_value(const struct option_totals *t, enum metric metric)
     case METRIC_SP_MOULDS:      return totals_count(t->moulds_of[TYPE_SP]);
     case METRIC_DP_MOULDS:      return totals_count(t->moulds_of[TYPE_DP]);
     case METRIC_JOINT_LENGTH:   return t->joint_length;
+    case METRIC_MAX_GAP:        return t->max_gap_mm;
+    case METRIC_MAX_KINK:       return t->max_kink_deg;
+    case METRIC_SP_MISFITS:     return (double)t->sp_misfits;
     default:                    return 0;
     }
 }
@@ -51,7 +55,7 @@ int objectives_parse(const char *text, const char *what,
                      struct objective *objectives, int *count,
                      struct facet_error *err)
 {
-    char list[256] = "";
+    char list[512] = "";
     for (int m = 0; m < METRIC_COUNT; m++) {
         strcat(list, m ? ", " : "");
         strcat(list, names[m]);

@@ -29,6 +29,9 @@ enum metric {
     METRIC_SP_MOULDS,
     METRIC_DP_MOULDS,
     METRIC_JOINT_LENGTH,    /* m */
+    METRIC_MAX_GAP,         /* mm: the largest gap at a joint */
+    METRIC_MAX_KINK,        /* degrees: the largest kink */
+    METRIC_SP_MISFITS,      /* panels classed SP no cylinder or cone fits */
     METRIC_COUNT
 };
 

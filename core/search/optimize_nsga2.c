@@ -65,7 +65,7 @@ static int evaluate(void *context, size_t count, const double *vars,
             objectives[k * m + j] = objective_value(t,
                                                     &settings->objectives[j]);
         double limit = settings->base.classify.max_panel_area;
-        violation[k] = classify_area_excess(t->max_panel_area, limit);
+        violation[k] = classify_violation(t, limit);
     }
     free(points);
     free(index);

@@ -163,6 +163,9 @@ int surface_prepare(struct surface *surface, int flip_normals,
                           err);
     if (rc != FACET_OK)
         return rc;
+    rc = fit_points_build(&surface->panels, &surface->fit, err);
+    if (rc != FACET_OK)
+        return rc;
     surface->prepared = 1;
     return FACET_OK;
 }
@@ -171,6 +174,7 @@ void surface_close(struct surface *surface)
 {
     panel_prep_free(&surface->panels);
     joint_prep_free(&surface->joints);
+    fit_points_free(&surface->fit);
     uv_index_free(&surface->uv);
     param_free(&surface->param);
     curvature_free(&surface->curvature);

@@ -10,6 +10,7 @@
 #ifndef FACET_SURFACE_H
 #define FACET_SURFACE_H
 
+#include "core/fit/sp_fit.h"
 #include "core/joint/joint_length.h"
 #include "core/surface/curvature.h"
 #include "core/surface/mesh.h"
@@ -38,6 +39,8 @@ struct surface {
     struct panel_prep panels;       /* per-triangle sums every grid adds */
     struct joint_prep joints;       /* the outline and the triangles in
                                        order, for every grid's joints */
+    struct fit_points fit;          /* the mesh points in UV, for the
+                                       fit of SP panels (sp_fit.h) */
 };
 
 /* Loads path with options into *out. Returns FACET_OK, or the loader's or
@@ -55,8 +58,9 @@ int surface_require_single(const struct surface *surface,
 /* Computes what every panelization of the surface shares: the UV
  * parameterization (param.h: uv, or PARAM_AUTO for the first that
  * applies), its lookup, the vertex curvature, with the
- * normals flipped when flip_normals is set, and the sums panels_build_fast
- * starts from (panel_prep_build). Refuses a surface of several
+ * normals flipped when flip_normals is set, the sums panels_build_fast
+ * starts from (panel_prep_build), the joints' prep and the points SP
+ * panels are fitted to (fit_points_build). Refuses a surface of several
  * unselected pieces (surface_require_single). Returns FACET_OK or the first
  * error; surface_close releases what it made. */
 int surface_prepare(struct surface *surface, int flip_normals,

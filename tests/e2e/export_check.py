@@ -127,7 +127,8 @@ def check_csv(path, db, run, number):
             "k2", "K", "H", "eps", "p_dist_m4", "diameter_m", "trimmed",
             "corner_planarity_m", "price_usd_m2", "cost_usd"] + [
             "c%d_%s_m" % (c, x) for c in range(4) for x in "xyz"] + [
-            "mould_family"]
+            "mould_family", "built_type", "sp_deviation_m", "worst_gap_mm",
+            "worst_kink_deg", "misfit_reason"]
     header = list(rows[0].keys()) if rows else []
     if header != want:
         fail("csv header %s, want %s" % (header, want))
@@ -147,7 +148,10 @@ def check_csv(path, db, run, number):
                      ("panels", "panels"), ("feasible", "feasible"),
                      ("joint_length_m", "joint_length"), ("moulds", "moulds"),
                      ("area_cost_usd", "area_cost"),
-                     ("mould_cost_usd", "mould_cost")):
+                     ("mould_cost_usd", "mould_cost"),
+                     ("max_gap_mm", "max_gap"), ("max_kink_deg", "max_kink"),
+                     ("sp_misfits", "sp_misfits"),
+                     ("gaps_over", "gaps_over")):
         if float(t[key]) != o[col]:
             fail("totals %s %s, options row %r" % (key, t[key], o[col]))
     # A panel's cost is its area's; the panel, joint and mould terms are
@@ -159,14 +163,26 @@ def check_csv(path, db, run, number):
     if len(families) != o["moulds"]:
         fail("%d mould families in the schedule, options row %r"
              % (len(families), o["moulds"]))
-    stored = {(i, j): d for i, j, d in connect_db(db).execute(
-        "SELECT i, j, deviation FROM panels WHERE run = ? AND option = ?",
-        (int(run), int(number)))}
+    stored = {(i, j): (d, g, k, b, m) for i, j, d, g, k, b, m in
+              connect_db(db).execute(
+        "SELECT i, j, deviation, worst_gap, worst_kink, built_type,"
+        " coalesce(misfit_reason, '') FROM panels WHERE run = ? AND"
+        " option = ?", (int(run), int(number)))}
     for r in rows:
-        d = stored.get((int(r["i"]), int(r["j"])))
-        if d is not None and float(r["deviation_m"]) != d:
+        x = stored.get((int(r["i"]), int(r["j"])))
+        if x is None:
+            continue
+        if float(r["deviation_m"]) != x[0]:
             fail("panel %s %s deviation_m %s, stored %r" % (r["i"], r["j"],
-                                                            r["deviation_m"], d))
+                                                            r["deviation_m"], x[0]))
+        if (float(r["worst_gap_mm"]) != x[1] or
+                float(r["worst_kink_deg"]) != x[2] or
+                r["built_type"] != x[3] or r["misfit_reason"] != x[4]):
+            fail("panel %s %s as built %r, stored %r" % (r["i"], r["j"], r, x))
+    # The option's misfits are its panels with a reason.
+    if sum(1 for r in rows if r["misfit_reason"]) != o["sp_misfits"]:
+        fail("misfits in the schedule %d, options row %r" % (
+            sum(1 for r in rows if r["misfit_reason"]), o["sp_misfits"]))
     if len({(r["i"], r["j"]) for r in rows}) != len(rows):
         fail("csv panel (i,j) repeated")
 

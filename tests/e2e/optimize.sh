@@ -140,8 +140,8 @@ run "$FACET" options "$DB" --run 1 --sort dp_area,planarity --desc --limit 15 --
 cp "$OUT" "$WORK/listing"
 check "options --sort dp_area,planarity --desc --limit 15: the tie rule's order" \
     /usr/bin/python3 "$HERE/ties_check.py" order "$DB" 1 dp_area,planarity 1 "$WORK/listing" json
-WHERE='cost < 1.55e6 and dp_area <= 800 or pareto'
-WHERE_SQL='(cost < 1.55e6 AND dp_area <= 800) OR rank = 1'
+WHERE='cost < 1.65e6 and dp_area <= 950 or pareto'
+WHERE_SQL='(cost < 1.65e6 AND dp_area <= 950) OR rank = 1'
 same "the --where below selects some but not all options, not only Pareto ones" \
     "$(sql "$DB" "SELECT count(*) > $PARETO AND count(*) < 144 FROM options WHERE $WHERE_SQL")" 1
 listing "options --where 'and/or/pareto' --sort cost: the SQL query's rows and order" json \

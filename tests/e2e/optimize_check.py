@@ -39,7 +39,9 @@ COLUMNS = ["number", "generation", "nu", "nv", "threshold_mm", "panels",
                "concave_round") for s in ("_count", "_area")] + [
            "rank", "crowding", "knee", "joint_length", "moulds", "sp_moulds",
            "dp_moulds", "largest_family", "single_moulds", "area_cost",
-           "panel_cost", "joint_cost", "mould_cost"]
+           "panel_cost", "joint_cost", "mould_cost", "max_gap", "mean_gap",
+           "max_kink", "mean_kink", "gaps_over", "kinks_over", "sp_misfits",
+           "sp_fitted"]
 
 
 def connect(path):
@@ -390,8 +392,12 @@ def check_show(path, run, number, show_file, classify_file):
 
 
 # What a total is judged against when it is near zero: a millimetre of
-# deviation (m), a millimetre squared over a square metre of P_dist (m^4).
-TOTAL_SCALE = {"planarity": 1e-3, "max_deviation": 1e-3, "p_dist": 1e-6}
+# deviation (m), a millimetre squared over a square metre of P_dist (m^4),
+# a metre of gap (in mm: panels equal to 1e-9 of their metres have gaps
+# equal to a micrometre's thousandth), a radian of kink (in degrees).
+TOTAL_SCALE = {"planarity": 1e-3, "max_deviation": 1e-3, "p_dist": 1e-6,
+               "max_gap": 1e3, "mean_gap": 1e3, "max_kink": 57.3,
+               "mean_kink": 57.3}
 
 
 def near(a, b, scale):
@@ -407,7 +413,8 @@ def panel_scale(key, panel):
     return {"deviation": size, "diameter": size, "corner_planarity": size,
             "area": area, "p_dist": area * size * size,
             "cost": panel["cost"], "k1": k, "k2": k, "H": k, "K": k * k,
-            "eps": k}.get(key, 0)
+            "eps": k, "sp_deviation": size, "worst_gap": 1e3 * size,
+            "worst_kink": 57.3}.get(key, 0)
 
 
 def check_show_surface(show_file, classify_file):

@@ -14,8 +14,10 @@
 . "$(dirname "$0")/tui_lib.sh"
 
 "$FACET" example roof --res 40 -o "$WORK/roof.obj" || exit 1
+# Typed by class alone (the figures below are that run's; as built, this
+# coarse roof's SP panels are misfits: README "Panels as built").
 "$FACET" optimize "$WORK/roof.obj" --db "$WORK/t.db" --u 4:8 --v 4:8 \
-    --threshold 2:4:1 >/dev/null 2>&1 || exit 1
+    --threshold 2:4:1 --sp-fit no >/dev/null 2>&1 || exit 1
 
 # count WHERE: how many options of run 1 of t.db pass the filter WHERE.
 count() {
@@ -106,10 +108,10 @@ check "p shows Pareto options only here too" '3 of 75 options shown \| Pareto on
 keys p q
 check "back in the table every option shows" '^ row [0-9,]+ of 75  .*filter none *$'
 keys C
-check "C opens the column chooser" 'Columns: 12 of 25 shown, 80 characters'
+check "C opens the column chooser" 'Columns: 12 of 28 shown, 80 characters'
 keys j j Space
 check "Space hides planarity" '\[ \] planarity'
-keys G Space K K K K K K K K K K K K K K K K K K K K K K K Enter
+keys G Space K K K K K K K K K K K K K K K K K K K K K K K K K K Enter
 check "hidden planarity, gen shown second" '^ +No\. +gen P +DP area +cost '
 keys q Enter
 check "the chosen columns stay for the session" '^ +No\. +gen P +DP area +cost '

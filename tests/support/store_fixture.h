@@ -14,9 +14,35 @@
  * cost, a 1 x 1 grid, one job) that store_run_create accepts. */
 void store_fixture_run(struct run_info *run);
 
-/* SQL that takes a current file back to schema version 5: the columns
- * the shards' step (version 6) added, dropped (set user_version after
- * it). */
+/* SQL that takes a current file back to schema version 6: the columns
+ * and indexes version 7 added (panels as built, gaps and kinks), dropped
+ * (set user_version after it). */
+#define STORE_FIXTURE_UNDO_V7 \
+    "DROP INDEX options_by_max_gap; DROP INDEX options_by_max_kink;" \
+    "DROP INDEX options_by_sp_misfits;" \
+    "ALTER TABLE runs DROP COLUMN sp_fit;" \
+    "ALTER TABLE runs DROP COLUMN max_gap_mm;" \
+    "ALTER TABLE runs DROP COLUMN max_kink_deg;" \
+    "ALTER TABLE options DROP COLUMN max_gap;" \
+    "ALTER TABLE options DROP COLUMN mean_gap;" \
+    "ALTER TABLE options DROP COLUMN max_kink;" \
+    "ALTER TABLE options DROP COLUMN mean_kink;" \
+    "ALTER TABLE options DROP COLUMN gaps_over;" \
+    "ALTER TABLE options DROP COLUMN kinks_over;" \
+    "ALTER TABLE options DROP COLUMN sp_misfits;" \
+    "ALTER TABLE options DROP COLUMN sp_fitted;" \
+    "ALTER TABLE panels DROP COLUMN built_type;" \
+    "ALTER TABLE panels DROP COLUMN sp_deviation;" \
+    "ALTER TABLE panels DROP COLUMN worst_gap;" \
+    "ALTER TABLE panels DROP COLUMN worst_gap_side;" \
+    "ALTER TABLE panels DROP COLUMN worst_kink;" \
+    "ALTER TABLE panels DROP COLUMN best_cylinder;" \
+    "ALTER TABLE panels DROP COLUMN best_cone;" \
+    "ALTER TABLE panels DROP COLUMN misfit_reason;"
+
+/* SQL that takes a version 6 file back to schema version 5: the columns
+ * the shards' step (version 6) added, dropped (after
+ * STORE_FIXTURE_UNDO_V7 for a current file). */
 #define STORE_FIXTURE_UNDO_V6_SHARDS \
     "ALTER TABLE runs DROP COLUMN shard_index;" \
     "ALTER TABLE runs DROP COLUMN shard_count;" \
@@ -25,7 +51,7 @@ void store_fixture_run(struct run_info *run);
 /* SQL that takes a current file back to schema version 4, as a Facet
  * before the cost model left it: the columns and indexes versions 5 and
  * later added, dropped (set user_version after it). */
-#define STORE_FIXTURE_UNDO_V5 STORE_FIXTURE_UNDO_V6_SHARDS \
+#define STORE_FIXTURE_UNDO_V5 STORE_FIXTURE_UNDO_V7 STORE_FIXTURE_UNDO_V6_SHARDS \
     "DROP INDEX options_by_moulds; DROP INDEX options_by_joint_length;" \
     "ALTER TABLE runs DROP COLUMN price_panel;" \
     "ALTER TABLE runs DROP COLUMN price_joint;" \

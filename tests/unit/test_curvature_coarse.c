@@ -51,6 +51,10 @@ static void evaluate(const struct surface *s, int nu, int nv,
     params.nv = nv;
     params.mode = PANEL_EXTREMES;
     classify_defaults(&params.classify);
+    /* The classes are what is tested here: a panel as built is held to
+     * the faceted mesh itself, whose sag between these coarse vertices
+     * (70 mm) no cylinder meets (sp_fit.h). */
+    params.classify.sp_by_class = 1;
     struct panelization p;
     struct facet_error err;
     if (option_evaluate(s, &params, &p, t, &err) != FACET_OK)

@@ -133,7 +133,9 @@ static void test_columns_table(void **state)
         "concave_round_count", "concave_round_area",
         "rank", "crowding", "knee", "joint_length", "moulds", "sp_moulds",
         "dp_moulds", "largest_family", "single_moulds", "area_cost",
-        "panel_cost", "joint_cost", "mould_cost", "run",
+        "panel_cost", "joint_cost", "mould_cost", "max_gap", "mean_gap",
+        "max_kink", "mean_kink", "gaps_over", "kinks_over", "sp_misfits",
+        "sp_fitted", "run",
     };
     for (int k = 0; k < NCOLUMNS; k++)
         assert_string_equal(store_option_columns[k].name, expected[k]);
@@ -518,14 +520,15 @@ static void test_error_positions(void **state)
     expect_error("x < 5", "column 1: unknown column 'x' (columns: "
                            "number, generation, nu, nv, threshold_mm, panels, "
                            "{fp,sp,dp}_count, {fp,sp,dp}_area, area, "
-                           "{fp,sp,dp}_cost, cost, "
+                           "{fp,sp,dp,area,panel,joint,mould}_cost, cost, "
                            "planarity, max_deviation, max_panel_area, p_dist, "
                            "feasible, rank, crowding, knee, joint_length, "
-                           "moulds, {sp,dp}_moulds, largest_family, "
-                           "single_moulds, area_cost, panel_cost, joint_cost, "
-                           "mould_cost, run, u, v, "
-                           "threshold, pareto, and CLASS_count, CLASS_area "
-                           "for each class, e.g. saddle_area)");
+                           "moulds, {sp,dp,single}_moulds, largest_family, "
+                           "{max,mean}_gap, {max,mean}_kink, "
+                           "{gaps,kinks}_over, sp_misfits, sp_fitted, "
+                           "run, u, v, "
+                           "threshold, pareto, CLASS_count, CLASS_area "
+                           "(e.g. saddle_area))");
 }
 
 static void test_nan_and_infinity(void **state)

@@ -84,6 +84,14 @@ static struct option_row option_k(int k)
     t->panel_cost = 4000.5 + k;
     t->joint_cost = 9001.25 + k;
     t->mould_cost = 60000.75 + k;
+    t->max_gap_mm = 4.5 + k;
+    t->mean_gap_mm = 1.125 + k;
+    t->max_kink_deg = 2.75 + k;
+    t->mean_kink_deg = 0.625 + k;
+    t->gaps_over = (size_t)(13 + k);
+    t->kinks_over = (size_t)(17 + k);
+    t->sp_misfits = (size_t)(19 + k);
+    t->sp_fitted = (size_t)(23 + k);
     return o;
 }
 
@@ -117,6 +125,12 @@ static double by_hand(const struct option_row *o, const char *name)
         {"single_moulds", (double)t->singleton_families},
         {"area_cost", t->area_cost}, {"panel_cost", t->panel_cost}, {"joint_cost", t->joint_cost},
         {"mould_cost", t->mould_cost},
+        {"max_gap", t->max_gap_mm}, {"mean_gap", t->mean_gap_mm},
+        {"max_kink", t->max_kink_deg}, {"mean_kink", t->mean_kink_deg},
+        {"gaps_over", (double)t->gaps_over},
+        {"kinks_over", (double)t->kinks_over},
+        {"sp_misfits", (double)t->sp_misfits},
+        {"sp_fitted", (double)t->sp_fitted},
     };
     for (size_t k = 0; k < sizeof fields / sizeof fields[0]; k++)
         if (strcmp(fields[k].name, name) == 0)
@@ -411,7 +425,8 @@ static void test_every_column_filters_and_sorts(void **state)
 
 
 /* The unit a column is stored in, by the README's rule (lengths m, areas
- * m^2, money USD, the threshold mm; a name ending in length is a length)
+ * m^2, money USD, the threshold mm; a name ending in length is a length;
+ * a joint's gap mm and kink degrees)
  * read off its name: the test's own
  * reading, not the registry's. */
 static const char *stored_unit_by_name(const char *name)
@@ -429,6 +444,11 @@ static const char *stored_unit_by_name(const char *name)
         return "m";
     if (strcmp(name, "p_dist") == 0)
         return "m^4";
+    /* a joint's gap in mm, its kink in degrees (README: Panels as built) */
+    if (n >= 4 && strcmp(name + n - 4, "_gap") == 0)
+        return "mm";
+    if (n >= 5 && strcmp(name + n - 5, "_kink") == 0)
+        return "deg";
     return "";
 }
 

@@ -619,7 +619,7 @@ static const char *older_file(const char *name, const char *statements,
 }
 
 /* A file of schema version 1 (no views, no indexes, no runs.uv) is
- * brought up to the current version (6) when opened, and keeps its runs. */
+ * brought up to the current version (7) when opened, and keeps its runs. */
 static void test_migrates_older_schema(void **state)
 {
     (void)state;
@@ -649,9 +649,9 @@ static void test_migrates_older_schema(void **state)
                      " type = 'index' AND name LIKE 'options_by_%')",
                      -1, &s, NULL), SQLITE_OK);
     assert_int_equal(sqlite3_step(s), SQLITE_ROW);
-    assert_int_equal(sqlite3_column_int(s, 0), 6);
+    assert_int_equal(sqlite3_column_int(s, 0), 7);
     assert_int_equal(sqlite3_column_int(s, 1), info.pareto_options);
-    assert_int_equal(sqlite3_column_int(s, 2), 11);
+    assert_int_equal(sqlite3_column_int(s, 2), 14);
     sqlite3_finalize(s);
     sqlite3_close(db);
 }
@@ -693,7 +693,7 @@ static void test_migrates_v3(void **state)
     sqlite3_bind_int64(s, 1, old);
     sqlite3_bind_int64(s, 2, run);
     assert_int_equal(sqlite3_step(s), SQLITE_ROW);
-    assert_int_equal(sqlite3_column_int(s, 0), 6);
+    assert_int_equal(sqlite3_column_int(s, 0), 7);
     assert_int_equal(sqlite3_column_int(s, 1), 1);
     assert_int_equal(sqlite3_column_int(s, 2), 1);
     assert_string_equal((const char *)sqlite3_column_text(s, 3), "plane");
@@ -710,7 +710,8 @@ static void test_migrates_v5_shards(void **state)
     (void)state;
     struct study_request request;
     int64_t old;
-    const char *path = older_file("migrate5", STORE_FIXTURE_UNDO_V6_SHARDS
+    const char *path = older_file("migrate5", STORE_FIXTURE_UNDO_V7
+                                  STORE_FIXTURE_UNDO_V6_SHARDS
                                   " PRAGMA user_version = 5;", &old,
                                   &request);
     struct facet_error err;
@@ -959,12 +960,90 @@ static void test_migrates_v4(void **state)
     sqlite3_bind_int64(s, 1, old);
     sqlite3_bind_int64(s, 2, run);
     assert_int_equal(sqlite3_step(s), SQLITE_ROW);
-    assert_int_equal(sqlite3_column_int(s, 0), 6);
+    assert_int_equal(sqlite3_column_int(s, 0), 7);
     assert_int_equal(sqlite3_column_int(s, 1), 48);
     assert_int_equal(sqlite3_column_int(s, 2), sqlite3_column_int(s, 3));
     assert_true(sqlite3_column_int(s, 3) > 0);
     assert_int_equal(sqlite3_column_int(s, 4), sqlite3_column_int(s, 5));
     assert_true(sqlite3_column_int(s, 5) > 0);
+    sqlite3_finalize(s);
+    sqlite3_close(db);
+}
+
+/* A file of version 6 (the Facet before panels as built: the same tables
+ * without version 7's columns) is migrated: its old run reads as typed
+ * by class alone, without gap or kink limits, its old options' gaps,
+ * kinks and misfits are NULL (never measured); a new run in it with a
+ * kink limit stores the limit, and its options and panels agree with
+ * SQLite's own reading of them: feasible exactly when no joint is over the
+ * limit (and the size limit is met), kinks_over > 0 exactly when max_kink
+ * is over it, each stored option's max_gap the largest of its panels' worst gaps
+ * and its misfits the panels with a reason. */
+static void test_migrates_v6(void **state)
+{
+    (void)state;
+    struct study_request request;
+    int64_t old;
+    const char *path = older_file("migrate6", STORE_FIXTURE_UNDO_V7
+                                  " PRAGMA user_version = 6;", &old,
+                                  &request);
+    struct facet_error err;
+    struct store *store;
+    assert_int_equal(store_open(path, &store, &err), FACET_OK);
+    struct run_info info;
+    assert_int_equal(store_run_get(store, old, &info, &err), FACET_OK);
+    assert_int_equal(info.sp_fit, 0);
+    assert_true(isnan(info.max_gap_mm) && isnan(info.max_kink_deg));
+    request_for(&request, METHOD_EXHAUSTIVE);
+    request.settings.base.classify.max_kink = 5 * M_PI / 180;
+    int64_t run;
+    enum optimize_outcome outcome;
+    assert_int_equal(study_start(store, &request, NULL, &run, &outcome, &err),
+                     FACET_OK);
+    assert_int_equal(store_run_get(store, run, &info, &err), FACET_OK);
+    assert_int_equal(info.sp_fit, 1);
+    assert_float_equal(info.max_kink_deg, 5, 1e-12);
+    assert_true(isnan(info.max_gap_mm));
+    store_close(store);
+    sqlite3 *db;
+    assert_int_equal(sqlite3_open(path, &db), SQLITE_OK);
+    sqlite3_stmt *s;
+    assert_int_equal(sqlite3_prepare_v2(db, "SELECT (SELECT user_version"
+        " FROM pragma_user_version),"
+        " (SELECT count(*) FROM options WHERE run = ?1 AND max_gap IS NULL"
+        "  AND max_kink IS NULL AND sp_misfits IS NULL AND gaps_over IS NULL),"
+        " (SELECT count(*) FROM options WHERE run = ?2),"
+        " (SELECT count(*) FROM options WHERE run = ?2 AND"
+        "  feasible = (max_kink <= 5 AND max_panel_area <= 1000) AND"
+        "  (kinks_over > 0) = (max_kink > 5) AND gaps_over = 0),"
+        " (SELECT count(*) FROM options WHERE run = ?2 AND feasible),"
+        " (SELECT count(*) FROM options WHERE run = ?2 AND max_kink > 5),"
+        " (SELECT count(*) FROM options o WHERE run = ?2 AND EXISTS"
+        "  (SELECT 1 FROM panels p WHERE p.run = o.run AND"
+        "   p.option = o.number) AND o.max_gap = (SELECT max(worst_gap)"
+        "   FROM panels p WHERE p.run = o.run AND p.option = o.number) AND"
+        "  o.sp_misfits = (SELECT count(*) FROM panels p WHERE"
+        "   p.run = o.run AND p.option = o.number AND misfit_reason IS NOT"
+        "   NULL)),"
+        " (SELECT count(DISTINCT option) FROM panels WHERE run = ?2),"
+        " (SELECT count(*) FROM panels WHERE run = ?2 AND built_type IS NULL)",
+        -1, &s, NULL), SQLITE_OK);
+    sqlite3_bind_int64(s, 1, old);
+    sqlite3_bind_int64(s, 2, run);
+    assert_int_equal(sqlite3_step(s), SQLITE_ROW);
+    assert_int_equal(sqlite3_column_int(s, 0), 7);
+    assert_int_equal(sqlite3_column_int(s, 1), 48);
+    int n = sqlite3_column_int(s, 2);
+    assert_true(n > 0);
+    assert_int_equal(sqlite3_column_int(s, 3), n);
+    /* Both kinds are there: the limit cuts the space. */
+    printf("v6 migrated: %d options, %d feasible, %d over 5 degrees\n", n,
+           sqlite3_column_int(s, 4), sqlite3_column_int(s, 5));
+    assert_true(sqlite3_column_int(s, 5) > 0);
+    assert_true(sqlite3_column_int(s, 5) < n);
+    assert_int_equal(sqlite3_column_int(s, 6), sqlite3_column_int(s, 7));
+    assert_true(sqlite3_column_int(s, 7) > 0);
+    assert_int_equal(sqlite3_column_int(s, 8), 0);
     sqlite3_finalize(s);
     sqlite3_close(db);
 }
@@ -986,6 +1065,7 @@ int main(void)
         cmocka_unit_test(test_migrates_v3),
         cmocka_unit_test(test_migrates_v4),
         cmocka_unit_test(test_migrates_v5_shards),
+        cmocka_unit_test(test_migrates_v6),
         cmocka_unit_test(test_resume_forced_uv),
     };
     int failed = cmocka_run_group_tests(tests, setup, teardown);

@@ -99,6 +99,16 @@ static void test_fit_box(void **state)
     }
 }
 
+/* The panel (index, or -1) under sample (a, b) of an S x S sampling of
+ * character (c, r) of a cols x rows picture of p. */
+static int sampled_panel(const struct panelization *p, int cols, int rows,
+                         int c, int r, int a, int b, int S)
+{
+    double u = (c + (a + 0.5) / S) / cols * p->nu;
+    double v = (rows - 1 - r + (b + 0.5) / S) / rows * p->nv;
+    return p->cell_panel[(int)floor(v) * p->nu + (int)floor(u)];
+}
+
 /* The brute force: sample the character's share of the grid on a fine
  * lattice, count the value under each sample. */
 static int brute_cell(const struct panelization *p, int cols, int rows,
@@ -108,10 +118,7 @@ static int brute_cell(const struct panelization *p, int cols, int rows,
     double count[CLASS_COUNT + 1] = {0};
     for (int a = 0; a < S; a++)
         for (int b = 0; b < S; b++) {
-            double u = (c + (a + 0.5) / S) / cols * p->nu;
-            double v = (rows - 1 - r + (b + 0.5) / S) / rows * p->nv;
-            int i = (int)floor(u), j = (int)floor(v);
-            int k = p->cell_panel[j * p->nu + i];
+            int k = sampled_panel(p, cols, rows, c, r, a, b, S);
             int value = k < 0 ? CLASS_COUNT
                         : by_class ? (int)p->panels[k].class
                                    : (int)p->panels[k].type;
@@ -151,7 +158,7 @@ static void test_cell_value(void **state)
                         if (margin < 0.01)
                             continue;  /* too close for the sampling */
                         assert_int_equal(map_cell_value(&p, cols, rows, c,
-                                                        r, by), want);
+                                                        r, by, NULL), want);
                         checked++;
                     }
         }
@@ -162,7 +169,7 @@ static void test_cell_value(void **state)
                 map_cell_of(&p, nu, nv, i, j, &c, &r);
                 assert_int_equal(c, i);
                 assert_int_equal(r, nv - 1 - j);
-                assert_int_equal(map_cell_value(&p, nu, nv, c, r, 0),
+                assert_int_equal(map_cell_value(&p, nu, nv, c, r, 0, NULL),
                                  k < 0 ? -1 : (int)p.panels[k].type);
             }
         grid_free(&p);
@@ -201,11 +208,8 @@ static void test_cell_value_by_mould(void **state)
                     double count[2 + FAMILIES] = {0};
                     for (int a = 0; a < S; a++)
                         for (int b = 0; b < S; b++) {
-                            double u = (c + (a + 0.5) / S) / cols * nu;
-                            double v = (rows - 1 - r + (b + 0.5) / S) /
-                                       rows * nv;
-                            int k = p.cell_panel[(int)floor(v) * nu +
-                                                 (int)floor(u)];
+                            int k = sampled_panel(&p, cols, rows, c, r, a,
+                                                  b, S);
                             count[k < 0 ? 0 : p.panels[k].mould + 2]++;
                         }
                     int best = -1;
@@ -221,7 +225,72 @@ static void test_cell_value_by_mould(void **state)
                     int want = count[best] < count[0] ? -1
                                : best == 1 ? MAP_NO_MOULD : best - 2;
                     assert_int_equal(map_cell_value(&p, cols, rows, c, r,
-                                                    MAP_BY_MOULD), want);
+                                                    MAP_BY_MOULD, NULL),
+                                     want);
+                    checked++;
+                }
+        }
+        grid_free(&p);
+    }
+    assert_true(checked > 500);
+}
+
+/* The levels of a map by gap or kink: with a limit, a half, three
+ * quarters, the limit and beyond; without, the quarters of the worst;
+ * NaN (never measured) is no level. A character shows the highest level
+ * of any panel whose cell reaches into its share, against a brute force
+ * that samples the share finely. */
+static void test_cell_level_by_gap(void **state)
+{
+    (void)state;
+    double bound[MAP_LEVELS];
+    map_level_bounds(6, 99, bound);
+    assert_true(bound[0] == 3 && bound[1] == 4.5 && bound[2] == 6 &&
+                isinf(bound[3]));
+    assert_int_equal(map_level(0, bound), 0);
+    assert_int_equal(map_level(3, bound), 0);
+    assert_int_equal(map_level(3.01, bound), 1);
+    assert_int_equal(map_level(6, bound), 2);
+    assert_int_equal(map_level(6.01, bound), 3);
+    assert_int_equal(map_level(NAN, bound), -1);
+    map_level_bounds(0, 8, bound);
+    assert_true(bound[0] == 2 && bound[1] == 4 && bound[2] == 6);
+    assert_int_equal(map_level(8, bound), 3);
+    map_level_bounds(0, 0, bound);  /* a plane: every gap 0, level 0 */
+    assert_int_equal(map_level(0, bound), 0);
+
+    enum { S = 60 };
+    int checked = 0;
+    for (unsigned seed = 1; seed <= 3; seed++) {
+        struct panelization p;
+        int nu = 17 + (int)seed * 4, nv = 11 + (int)seed * 3;
+        grid(&p, nu, nv, 30, 20, seed, seed % 2);
+        for (size_t k = 0; k < p.npanels; k++) {
+            p.panels[k].worst_gap_mm = (rand() % 100) / 10.0;
+            p.panels[k].worst_kink_deg = (rand() % 7 == 0) ? NAN : 1;
+        }
+        map_level_bounds(6, 0, bound);
+        int sizes[][2] = {{nu, nv}, {nu / 2, nv / 3}, {7, 5}};
+        for (size_t z = 0; z < sizeof sizes / sizeof sizes[0]; z++) {
+            int cols = sizes[z][0], rows = sizes[z][1];
+            for (int r = 0; r < rows; r++)
+                for (int c = 0; c < cols; c++) {
+                    int want = -1;
+                    for (int a = 0; a < S; a++)
+                        for (int b = 0; b < S; b++) {
+                            int k = sampled_panel(&p, cols, rows, c, r, a,
+                                                  b, S);
+                            if (k < 0)
+                                continue;
+                            double g = p.panels[k].worst_gap_mm;
+                            int level = g <= 3 ? 0 : g <= 4.5 ? 1
+                                        : g <= 6 ? 2 : 3;
+                            if (level > want)
+                                want = level;
+                        }
+                    assert_int_equal(map_cell_value(&p, cols, rows, c, r,
+                                                    MAP_BY_GAP, bound),
+                                     want);
                     checked++;
                 }
         }
@@ -237,6 +306,7 @@ int main(void)
         cmocka_unit_test(test_fit_box),
         cmocka_unit_test(test_cell_value),
         cmocka_unit_test(test_cell_value_by_mould),
+        cmocka_unit_test(test_cell_level_by_gap),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
