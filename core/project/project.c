@@ -14,9 +14,12 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "core/base/parallel.h"
 #include "core/obj/obj.h"
 #include "core/project/project_lengths.h"
 #include "core/project/project_locate.h"
+
+#define PROJECT_THREADS_MAX 8  /* surfaces prepared at once */
 
 const char *project_key_name(enum project_key key)
 {
@@ -328,18 +331,61 @@ int project_from_obj(const char *path, struct obj_file *obj,
     return add_file(out, &capacity, out->files[0], obj, units, err);
 }
 
-int project_prepare(struct project *project, int flip_normals,
-                    enum param_method method, struct facet_error *err)
+/* One thread's share of project_prepare: surfaces first, first + step,
+ * ..., in order, stopping at the first that fails. */
+struct prepare_job {
+    struct project *project;
+    size_t first, step;
+    int flip_normals;
+    enum param_method method;
+    size_t failed;             /* the surface that failed, or SIZE_MAX */
+    int rc;
+    struct facet_error err;
+};
+
+static void prepare_run(void *argument)
 {
-    for (size_t i = 0; i < project->nsurfaces; i++) {
-        struct project_surface *s = &project->surfaces[i];
-        int rc = surface_prepare(&s->surface, flip_normals, method, err);
-        if (rc != FACET_OK)
-            return rc;
+    struct prepare_job *job = argument;
+    job->failed = SIZE_MAX;
+    job->rc = FACET_OK;
+    for (size_t i = job->first; i < job->project->nsurfaces; i += job->step) {
+        struct project_surface *s = &job->project->surfaces[i];
+        int rc = surface_prepare(&s->surface, job->flip_normals,
+                                 job->method, &job->err);
+        if (rc != FACET_OK) {
+            job->failed = i;
+            job->rc = rc;
+            return;
+        }
         surface_uv_lengths(&s->surface.mesh, s->surface.param.uv,
                            &s->u_length, &s->v_length);
     }
-    return FACET_OK;
+}
+
+int project_prepare(struct project *project, int flip_normals,
+                    enum param_method method, struct facet_error *err)
+{
+    /* Surfaces are independent: dealt round the threads, so that large
+     * and small ones mix. The error reported is the first surface's in
+     * project order that fails, whatever the threads' timing. */
+    struct prepare_job jobs[PROJECT_THREADS_MAX];
+    int n = parallel_cpus(PROJECT_THREADS_MAX);
+    if ((size_t)n > project->nsurfaces)
+        n = project->nsurfaces > 0 ? (int)project->nsurfaces : 1;
+    for (int k = 0; k < n; k++)
+        jobs[k] = (struct prepare_job){project, (size_t)k, (size_t)n,
+                                       flip_normals, method, SIZE_MAX,
+                                       FACET_OK, {0}};
+    parallel_run(jobs, sizeof jobs[0], n, prepare_run);
+    const struct prepare_job *first = NULL;
+    for (int k = 0; k < n; k++)
+        if (jobs[k].failed != SIZE_MAX &&
+            (first == NULL || jobs[k].failed < first->failed))
+            first = &jobs[k];
+    if (first == NULL)
+        return FACET_OK;
+    *err = first->err;
+    return first->rc;
 }
 
 const struct project_surface *project_find(const struct project *project,

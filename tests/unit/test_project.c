@@ -374,6 +374,31 @@ static void test_several_files(void **state)
     project_close(&p);
 }
 
+/* Prepared on several threads, a project reports the first surface in
+ * project order that fails, whatever the timing. */
+static void test_prepare_names_the_first_failure(void **state)
+{
+    (void)state;
+    char text[4096] = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
+    for (int i = 0; i < 40; i++) {
+        char more[64];
+        snprintf(more, sizeof more, "o s%02d\nf 1 2 3\n", i);
+        strcat(text, more);
+    }
+    const char *path = write_file("many.obj", text);
+    struct project p;
+    struct facet_error err;
+    assert_int_equal(project_open(&path, 1, UNITS_M, &p, &err), FACET_OK);
+    assert_int_equal(p.nsurfaces, 40);
+    for (int run = 0; run < 5; run++) {
+        assert_int_equal(project_prepare(&p, 0, PARAM_VT, &err),
+                         FACET_EINPUT);
+        if (strstr(err.message, "object 's00'") == NULL)
+            fail_msg("run %d: %s", run, err.message);
+    }
+    project_close(&p);
+}
+
 static void test_module_grid(void **state)
 {
     (void)state;
@@ -446,6 +471,7 @@ int main(void)
         cmocka_unit_test(test_uv_lengths),
         cmocka_unit_test(test_errors_name_file_line_and_surface),
         cmocka_unit_test(test_several_files),
+        cmocka_unit_test(test_prepare_names_the_first_failure),
         cmocka_unit_test(test_module_grid),
         cmocka_unit_test(test_module_range),
     };
