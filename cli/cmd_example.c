@@ -33,13 +33,14 @@ static int example_run(int argc, char **argv, struct facet_error *err)
             strncat(names, example_names[i], sizeof names - strlen(names) - 1);
         }
         return facet_error_set(err, FACET_EINPUT,
-                               "example: name one example (%s)", names);
+                               "example: name one example (%s or skin)",
+                               names);
     }
     long res = 0;
     if (res_text != NULL &&
         (rc = args_int(res_text, 1, 4096, "--res", &res, err)) != FACET_OK)
         return rc;
-    if (example_describe(name[0]) == NULL)
+    if (example_describe(name[0]) == NULL && strcmp(name[0], "skin") != 0)
         return example_write(name[0], (int)res, NULL, err);
 
     if (output == NULL || strcmp(output, "-") == 0)
@@ -77,11 +78,14 @@ const struct command cmd_example = {
     .summary = "Write an example surface (OBJ, metres, vt = surface "
                "parameters).",
     .options =
-        "  NAME           plane, cylinder, dome, hypar, torus, wave or roof\n"
-        "                 (roof: a free-form roof of about 1,240 m^2 with\n"
-        "                 flat, single- and double-curved regions)\n"
+        "  NAME           plane, cylinder, dome, hypar, torus, wave, roof or\n"
+        "                 skin (roof: a free-form roof of about 1,240 m^2\n"
+        "                 with flat, single- and double-curved regions;\n"
+        "                 skin: a 180 m tower of 180 faces, one o each with\n"
+        "                 its own vt, 2,025,000 triangles)\n"
         "  -o, --output F write to F instead of standard output\n"
-        "  --res N        N x N quads (1..4096; default about 20k vertices)\n"
+        "  --res N        N x N quads (1..4096; default about 20k vertices);\n"
+        "                 skin: per face (1..1024, default 75)\n"
         "  --force        overwrite F if it exists\n",
     .run = example_run,
 };

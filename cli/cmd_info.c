@@ -4,12 +4,17 @@
  */
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "args.h"
 #include "classify_flags.h"
 #include "command.h"
+#include "core/base/numformat.h"
+#include "core/obj/obj.h"
 #include "core/out/json.h"
+#include "core/project/project.h"
+#include "core/project/project_lengths.h"
 #include "core/surface/surface.h"
 #include "core/surface/uv_index.h"
 
@@ -157,35 +162,167 @@ static void print_json(const struct surface *s, const struct uv_report *uv,
     json_finish(&w);
 }
 
-static int info_run(int argc, char **argv, struct facet_error *err)
-{
-    struct surface_flags which;
-    surface_flags_init(&which);
-    const char *uv_text = NULL;
-    int json = 0;
-    const struct arg_option options[] = {
-        {"json", 0, ARG_FLAG, NULL, &json},
-        {"uv", 0, ARG_STRING, &uv_text, NULL},
-        {NULL, 0, ARG_FLAG, NULL, NULL},
-    };
-    const char *path;
-    int rc = args_parse_one(argc, argv, options, which.table, &path,
-            "info: name one OBJ file (facet info FILE.obj)", err);
-    if (rc != FACET_OK)
-        return rc;
-    struct mesh_options mesh_options;
-    if ((rc = surface_flags_apply(&which, &mesh_options, err)) != FACET_OK)
-        return rc;
-    enum param_method want;
-    if ((rc = classify_flags_uv(uv_text, &want, err)) != FACET_OK)
-        return rc;
+/* ---- a project: one line per surface ---------------------------------- */
 
-    struct surface surface;
-    rc = surface_open(path, &mesh_options, &surface, err);
+/* What info says of one surface of a project: the UV panels would follow
+ * and its lengths along it. */
+struct surface_row {
+    const struct project_surface *s;
+    int uv_ok;
+    enum param_method method;
+    char reason[sizeof ((struct facet_error *)0)->message];
+    double u_length, v_length;
+};
+
+static int describe_surfaces(const struct project *p, enum param_method want,
+                             struct surface_row *rows,
+                             struct facet_error *err)
+{
+    for (size_t i = 0; i < p->nsurfaces; i++) {
+        struct surface_row *r = &rows[i];
+        r->s = &p->surfaces[i];
+        const struct surface *surface = &r->s->surface;
+        struct parameterization param;
+        struct facet_error why_not;
+        facet_error_clear(&why_not);
+        int rc = param_choose(&surface->mesh, want, surface->path, &param,
+                              &why_not);
+        if (rc == FACET_OK) {
+            r->uv_ok = 1;
+            r->method = param.method;
+            snprintf(r->reason, sizeof r->reason, "%s", param.reason);
+            surface_uv_lengths(&surface->mesh, param.uv, &r->u_length,
+                               &r->v_length);
+        } else if (rc == FACET_EINPUT && want == PARAM_AUTO) {
+            snprintf(r->reason, sizeof r->reason, "%s", why_not.message);
+        } else {
+            *err = why_not;
+            param_free(&param);
+            return rc;
+        }
+        param_free(&param);
+    }
+    return FACET_OK;
+}
+
+static void print_project_human(const struct project *p,
+                                const struct surface_row *rows)
+{
+    char area[64];
+    number_grouped(area, sizeof area, p->area, 3);
+    printf("%-15s %zu file%s, %zu surfaces, %zu triangles, %s m^2\n",
+           "project", p->nfiles, p->nfiles == 1 ? "" : "s", p->nsurfaces,
+           p->ntriangles, area);
+    printf("%-20s %-20s %10s %12s %-9s %9s %9s\n", "surface", "file",
+           "triangles", "area m^2", "UV", "u m", "v m");
+    for (size_t i = 0; i < p->nsurfaces; i++) {
+        const struct surface_row *r = &rows[i];
+        const char *slash = strrchr(r->s->file, '/');
+        printf("%-20s %-20s %10zu %12.3f %-9s", r->s->name,
+               slash ? slash + 1 : r->s->file, r->s->surface.mesh.ntriangles,
+               r->s->surface.mesh.area,
+               r->uv_ok ? param_method_name(r->method) : "none");
+        if (r->uv_ok)
+            printf(" %9.3f %9.3f\n", r->u_length, r->v_length);
+        else
+            printf(" %9s %9s\n", "-", "-");
+    }
+    for (size_t i = 0; i < p->nsurfaces; i++) {
+        const struct surface_row *r = &rows[i];
+        if (!r->uv_ok)
+            printf("warning: %s: no UV: %s\n", r->s->name, r->reason);
+        for (int w = 0; w < r->s->surface.nwarnings; w++)
+            printf("warning: %s: %s\n", r->s->name,
+                   r->s->surface.warnings[w]);
+    }
+}
+
+static void print_project_json(const struct project *p,
+                               const struct surface_row *rows)
+{
+    struct json_writer w;
+    json_init(&w, stdout);
+    json_begin_object(&w);
+    json_key(&w, "files");
+    json_begin_array(&w);
+    for (size_t i = 0; i < p->nfiles; i++)
+        json_string(&w, p->files[i]);
+    json_end_array(&w);
+    json_key(&w, "triangles");  json_integer(&w, (long long)p->ntriangles);
+    json_key(&w, "area");       json_number(&w, p->area);
+    json_key(&w, "surfaces");
+    json_begin_array(&w);
+    for (size_t i = 0; i < p->nsurfaces; i++) {
+        const struct surface_row *r = &rows[i];
+        const struct mesh *m = &r->s->surface.mesh;
+        json_begin_object(&w);
+        json_key(&w, "name");       json_string(&w, r->s->name);
+        json_key(&w, "file");       json_string(&w, r->s->file);
+        json_key(&w, "kind");       json_string(&w,
+                                        project_key_name(r->s->key));
+        json_key(&w, "triangles");  json_integer(&w, (long long)m->ntriangles);
+        json_key(&w, "area");       json_number(&w, m->area);
+        json_key(&w, "has_uv");     json_bool(&w, m->has_uv);
+        json_key(&w, "uv_method");
+        if (r->uv_ok)
+            json_string(&w, param_method_name(r->method));
+        else
+            json_null(&w);
+        json_key(&w, "uv_reason");  json_string(&w, r->reason);
+        json_key(&w, "u_length");
+        if (r->uv_ok)
+            json_number(&w, r->u_length);
+        else
+            json_null(&w);
+        json_key(&w, "v_length");
+        if (r->uv_ok)
+            json_number(&w, r->v_length);
+        else
+            json_null(&w);
+        json_key(&w, "components"); json_integer(&w,
+                                        (long long)m->ncomponents);
+        json_key(&w, "warnings");
+        json_begin_array(&w);
+        for (int k = 0; k < r->s->surface.nwarnings; k++)
+            json_string(&w, r->s->surface.warnings[k]);
+        json_end_array(&w);
+        json_end_object(&w);
+    }
+    json_end_array(&w);
+    json_end_object(&w);
+    json_finish(&w);
+}
+
+/* Lists a project's surfaces; takes *project over. */
+static int info_project(struct project *project, enum param_method want,
+                        int json, struct facet_error *err)
+{
+    struct surface_row *rows =
+        calloc(project->nsurfaces + 1, sizeof *rows);
+    int rc = rows == NULL
+        ? facet_error_set(err, FACET_EWORK, "out of memory")
+        : describe_surfaces(project, want, rows, err);
+    if (rc == FACET_OK) {
+        if (json)
+            print_project_json(project, rows);
+        else
+            print_project_human(project, rows);
+    }
+    free(rows);
+    project_close(project);
+    return rc;
+}
+
+/* ---- one surface ---------------------------------------------------- */
+
+static int info_surface(struct surface *surface, enum param_method want,
+                        int json, struct facet_error *err)
+{
+    int rc = FACET_OK;
     struct uv_report uv;
     memset(&uv, 0, sizeof uv);
-    if (rc == FACET_OK && surface.mesh.has_uv)
-        rc = uv_check(surface.mesh.uv, surface.mesh.ntriangles, &uv, err);
+    if (surface->mesh.has_uv)
+        rc = uv_check(surface->mesh.uv, surface->mesh.ntriangles, &uv, err);
     /* The UV a panelization would take. Without --uv, none applying is
      * part of the description; a method asked for that cannot apply is
      * the error. */
@@ -195,7 +332,7 @@ static int info_run(int argc, char **argv, struct facet_error *err)
     facet_error_clear(&why_not);
     struct uv_choice choice = {0, &param, ""};
     if (rc == FACET_OK) {
-        int prc = param_choose(&surface.mesh, want, surface.path, &param,
+        int prc = param_choose(&surface->mesh, want, surface->path, &param,
                                &why_not);
         if (prc == FACET_OK)
             choice.ok = 1;
@@ -208,22 +345,118 @@ static int info_run(int argc, char **argv, struct facet_error *err)
     }
     if (rc == FACET_OK) {
         if (json)
-            print_json(&surface, &uv, &choice);
+            print_json(surface, &uv, &choice);
         else
-            print_human(&surface, &uv, &choice);
+            print_human(surface, &uv, &choice);
     }
     param_free(&param);
+    return rc;
+}
+
+static int info_files(const char **paths, int npaths,
+                      const struct surface_flags *which,
+                      const char *uv_text, int json,
+                      struct facet_error *err);
+
+static int info_run(int argc, char **argv, struct facet_error *err)
+{
+    struct surface_flags which;
+    surface_flags_init(&which);
+    const char *uv_text = NULL;
+    int json = 0;
+    const struct arg_option options[] = {
+        {"json", 0, ARG_FLAG, NULL, &json},
+        {"uv", 0, ARG_STRING, &uv_text, NULL},
+        {NULL, 0, ARG_FLAG, NULL, NULL},
+    };
+    const char **paths = calloc((size_t)argc + 1, sizeof *paths);
+    if (paths == NULL)
+        return facet_error_set(err, FACET_EWORK, "out of memory");
+    int npaths;
+    int rc = args_parse_shared(argc, argv, options, which.table, paths,
+                               argc, &npaths, err);
+    if (rc == FACET_OK)
+        rc = info_files(paths, npaths, &which, uv_text, json, err);
+    free(paths);
+    return rc;
+}
+
+/* info on the files paths[0 .. npaths). */
+static int info_files(const char **paths, int npaths,
+                      const struct surface_flags *which,
+                      const char *uv_text, int json,
+                      struct facet_error *err)
+{
+    int rc;
+    if (npaths == 0)
+        return facet_error_set(err, FACET_EINPUT,
+                               "info: name one OBJ file (facet info "
+                               "FILE.obj) or several (a project)");
+    struct mesh_options mesh_options;
+    if ((rc = surface_flags_apply(which, &mesh_options, err)) != FACET_OK)
+        return rc;
+    enum param_method want;
+    if ((rc = classify_flags_uv(uv_text, &want, err)) != FACET_OK)
+        return rc;
+    int selected = mesh_options.object != NULL || mesh_options.group != NULL;
+    if (npaths > 1) {
+        if (selected)
+            return facet_error_set(err, FACET_EINPUT,
+                "info: --object and --group select in one file; name one "
+                "file, or none of them for a project's surfaces");
+        struct project project;
+        rc = project_open((const char *const *)paths, (size_t)npaths,
+                          mesh_options.units,
+                          &project, err);
+        if (rc != FACET_OK) {
+            project_close(&project);
+            return rc;
+        }
+        return info_project(&project, want, json, err);
+    }
+
+    /* One file: a project when it names several surfaces and none is
+     * selected; read once either way. */
+    struct obj_file obj;
+    rc = obj_load(paths[0], &obj, err);
+    if (rc != FACET_OK) {
+        obj_free(&obj);
+        return rc;
+    }
+    if (!selected && project_count_named(&obj) > 1) {
+        struct project project;
+        rc = project_from_obj(paths[0], &obj, mesh_options.units, &project,
+                              err);
+        if (rc != FACET_OK) {
+            project_close(&project);
+            return rc;
+        }
+        return info_project(&project, want, json, err);
+    }
+    struct surface surface;
+    rc = surface_from_obj(paths[0], &obj, &mesh_options, &surface, err);
+    if (rc == FACET_OK)
+        rc = info_surface(&surface, want, json, err);
     surface_close(&surface);
     return rc;
 }
 
 const struct command cmd_info = {
     .name = "info",
-    .usage = "SURFACE.obj [--units U] [--object NAME] [--group NAME] "
+    .usage = "SURFACE.obj... [--units U] [--object NAME] [--group NAME] "
              "[--uv METHOD] [--json]",
     .summary = "Describe a surface: counts, size, area, UV, topology, "
-               "warnings.",
+               "warnings; or list a project's surfaces.",
     .options =
+        "  A file that names several objects (o), or without any several\n"
+        "  groups (g), or several files, are a project: one line per\n"
+        "  surface with its name, file, triangles, area (m^2), the UV its\n"
+        "  panels follow (vt, grid, plane, harmonic) and its u and v\n"
+        "  lengths (m): the mean length of its iso-lines v = const and\n"
+        "  u = const. With --json: files, triangles, area and surfaces, each\n"
+        "  with name, file, kind (object, group, file), triangles, area,\n"
+        "  has_uv, uv_method, uv_reason, u_length, v_length, components,\n"
+        "  warnings.\n"
         "  --units U      what one OBJ unit is: m (default), cm, mm, in, ft\n"
         "  --object NAME  only the faces of object NAME (o statement)\n"
         "  --group NAME   only the faces of group NAME (g statement)\n"

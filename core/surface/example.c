@@ -26,6 +26,8 @@
  */
 #include "core/surface/example.h"
 
+#include "core/surface/example_skin.h"
+
 #include <math.h>
 #include <string.h>
 
@@ -132,11 +134,14 @@ int example_write(const char *name, int res, FILE *out,
 {
     int which = example_index(name);
     if (which < 0) {
+        if (strcmp(name, "skin") == 0)
+            return skin_write(res, out, err);
         char names[128] = "";
         for (int i = 0; example_names[i] != NULL; i++) {
             strncat(names, i ? ", " : "", sizeof names - strlen(names) - 1);
             strncat(names, example_names[i], sizeof names - strlen(names) - 1);
         }
+        strncat(names, " or skin", sizeof names - strlen(names) - 1);
         return facet_error_set(err, FACET_EINPUT,
             "unknown example '%s' (choose %s)", name, names);
     }

@@ -10,6 +10,10 @@
  *
  * roof is the case-study stand-in: a free-form roof of about 1,240 m^2 with
  * flat, single-curved and double-curved regions.
+ *
+ * skin is a whole building of 180 faces (example_skin.h), a project rather
+ * than one surface: example_write writes it by that name, but it is not in
+ * example_names, whose entries are single surfaces with example_point.
  */
 #ifndef FACET_EXAMPLE_H
 #define FACET_EXAMPLE_H
@@ -29,8 +33,9 @@ const char *example_describe(const char *name);
 int example_point(const char *name, double s, double t, double p[3]);
 
 /* Writes the named example as OBJ text to out, sampled on res x res quads
- * (res 0 picks the example's default). Returns FACET_OK, FACET_EINPUT for an
- * unknown name or a res outside 1..4096, FACET_EWORK for a write error. */
+ * (res 0 picks the example's default; for skin, per face). Returns
+ * FACET_OK, FACET_EINPUT for an unknown name or a res outside 1..4096
+ * (skin: 1..SKIN_MAX_RES), FACET_EWORK for a write error. */
 int example_write(const char *name, int res, FILE *out,
                   struct facet_error *err);
 

@@ -322,38 +322,62 @@ int mesh_build(const struct obj_file *obj, const struct mesh_options *options,
         (group = find_name(obj->groups, obj->ngroups, options->group)) < 0)
         return unknown_name("group", options->group, obj->groups,
                             obj->ngroups, err);
-    double scale = mesh_units_scale(options->units);
-
-    /* Weld: map each OBJ vertex used by a selected triangle to a mesh
-     * vertex, one per distinct scaled position. */
-    size_t nobj = obj->nvertices;
-    uint32_t *welded = malloc((nobj + 1) * sizeof *welded);
-    size_t capacity = 16;
-    while (capacity < 2 * nobj)
-        capacity *= 2;
-    uint32_t *table = malloc(capacity * sizeof *table);
-    out->position = malloc((3 * nobj + 3) * sizeof *out->position);
-    out->source_vertex = malloc((nobj + 1) * sizeof *out->source_vertex);
-    if (!welded || !table || !out->position || !out->source_vertex) {
-        free(welded);
-        free(table);
+    uint32_t *list = malloc((obj->ntriangles + 1) * sizeof *list);
+    if (list == NULL)
         return facet_error_set(err, FACET_EWORK, "out of memory (mesh)");
-    }
-    for (size_t i = 0; i < nobj; i++)
-        welded[i] = MESH_NONE;
-    for (size_t i = 0; i < capacity; i++)
-        table[i] = MESH_NONE;
-
     size_t selected = 0;
     for (size_t t = 0; t < obj->ntriangles; t++) {
         if ((options->object && obj->triangle_object[t] != (uint32_t)object) ||
             (options->group && obj->triangle_group[t] != (uint32_t)group))
             continue;
-        selected++;
+        list[selected++] = (uint32_t)t;
+    }
+    if (selected == 0) {
+        free(list);
+        if (options->object || options->group)
+            return facet_error_set(err, FACET_EINPUT,
+                "the selected %s has no faces",
+                options->object ? "object" : "group");
+        return facet_error_set(err, FACET_EINPUT, "the file has no faces");
+    }
+    int rc = mesh_build_triangles(obj, options->units, list, selected, out,
+                                  err);
+    free(list);
+    return rc;
+}
+
+int mesh_build_triangles(const struct obj_file *obj, enum mesh_units units,
+                         const uint32_t *list, size_t selected,
+                         struct mesh *out, struct facet_error *err)
+{
+    memset(out, 0, sizeof *out);
+    if (selected == 0)
+        return facet_error_set(err, FACET_EINPUT, "no faces");
+    double scale = mesh_units_scale(units);
+
+    /* Weld: one mesh vertex per distinct scaled position among the
+     * selected corners, found by hashing each corner's position (the
+     * table's size follows the selection, not the file, so that the
+     * hundred surfaces of a project cost one file's work in all). */
+    size_t ncorners = 3 * selected;
+    size_t capacity = 16;
+    while (capacity < 2 * ncorners)
+        capacity *= 2;
+    uint32_t *table = malloc(capacity * sizeof *table);
+    uint32_t *welded = malloc(ncorners * sizeof *welded);
+    out->position = malloc((3 * ncorners + 3) * sizeof *out->position);
+    out->source_vertex = malloc((ncorners + 1) * sizeof *out->source_vertex);
+    if (!welded || !table || !out->position || !out->source_vertex) {
+        free(welded);
+        free(table);
+        return facet_error_set(err, FACET_EWORK, "out of memory (mesh)");
+    }
+    for (size_t i = 0; i < capacity; i++)
+        table[i] = MESH_NONE;
+    for (size_t n = 0; n < selected; n++) {
+        size_t t = list[n];
         for (int k = 0; k < 3; k++) {
             uint32_t v = obj->corner[3 * t + k].v;
-            if (welded[v] != MESH_NONE)
-                continue;
             double p[3];
             for (int x = 0; x < 3; x++)
                 p[x] = obj->position[3 * (size_t)v + x] * scale;
@@ -369,18 +393,19 @@ int mesh_build(const struct obj_file *obj, const struct mesh_options *options,
                 memcpy(out->position + 3 * out->nvertices, p, sizeof p);
                 out->source_vertex[out->nvertices++] = v;
             }
-            welded[v] = table[slot];
+            welded[3 * n + k] = table[slot];
         }
     }
     free(table);
-    if (selected == 0) {
-        free(welded);
-        if (options->object || options->group)
-            return facet_error_set(err, FACET_EINPUT,
-                "the selected %s has no faces",
-                options->object ? "object" : "group");
-        return facet_error_set(err, FACET_EINPUT, "the file has no faces");
-    }
+    /* Give back what the welding did not use. */
+    double *shrunk = realloc(out->position,
+                             (3 * out->nvertices + 3) * sizeof *shrunk);
+    if (shrunk != NULL)
+        out->position = shrunk;
+    uint32_t *shrunk_source = realloc(out->source_vertex,
+        (out->nvertices + 1) * sizeof *shrunk_source);
+    if (shrunk_source != NULL)
+        out->source_vertex = shrunk_source;
 
     out->triangle = malloc(3 * selected * sizeof *out->triangle);
     out->source_face = malloc(selected * sizeof *out->source_face);
@@ -399,12 +424,11 @@ int mesh_build(const struct obj_file *obj, const struct mesh_options *options,
         out->bbox_min[k] = INFINITY;
         out->bbox_max[k] = -INFINITY;
     }
-    for (size_t t = 0; t < obj->ntriangles; t++) {
-        if ((options->object && obj->triangle_object[t] != (uint32_t)object) ||
-            (options->group && obj->triangle_group[t] != (uint32_t)group))
-            continue;
+    for (size_t m = 0; m < selected; m++) {
+        size_t t = list[m];
         const struct obj_corner *c = obj->corner + 3 * t;
-        uint32_t a = welded[c[0].v], b = welded[c[1].v], d = welded[c[2].v];
+        uint32_t a = welded[3 * m], b = welded[3 * m + 1];
+        uint32_t d = welded[3 * m + 2];
         if (a == b || b == d || a == d) {
             out->ndegenerate++;
             continue;

@@ -55,19 +55,65 @@ static int check_precision(const struct surface *s, struct facet_error *err)
         far / facet, facet, far * 0x1p-52);
 }
 
+/* The checks and warnings of a mesh, however it was selected. */
+static int check_mesh(struct surface *out, struct facet_error *err)
+{
+    int rc = check_precision(out, err);
+    if (rc != FACET_OK)
+        return rc;
+    char text[256];
+    if (mesh_units_warning(&out->mesh, out->units, text, sizeof text))
+        warn(out, "%s", text);
+    if (out->mesh.nonmanifold_edges > 0)
+        warn(out, "%zu edges are shared by more than two triangles "
+             "(non-manifold)", out->mesh.nonmanifold_edges);
+    if (out->mesh.ndegenerate > 0)
+        warn(out, "%zu triangles dropped: their corners weld into fewer "
+             "than three vertices", out->mesh.ndegenerate);
+    return FACET_OK;
+}
+
+int surface_from_mesh(const char *path, enum mesh_units units,
+                      struct mesh *mesh, struct surface *out,
+                      struct facet_error *err)
+{
+    memset(out, 0, sizeof *out);
+    out->units = units;
+    out->selected = 1;
+    out->mesh = *mesh;
+    memset(mesh, 0, sizeof *mesh);
+    out->path = strdup(path);
+    if (out->path == NULL)
+        return facet_error_set(err, FACET_EWORK, "out of memory");
+    return check_mesh(out, err);
+}
+
 int surface_open(const char *path, const struct mesh_options *options,
                  struct surface *out, struct facet_error *err)
 {
+    struct obj_file obj;
+    int rc = obj_load(path, &obj, err);
+    if (rc != FACET_OK) {
+        obj_free(&obj);
+        memset(out, 0, sizeof *out);
+        return rc;
+    }
+    return surface_from_obj(path, &obj, options, out, err);
+}
+
+int surface_from_obj(const char *path, struct obj_file *obj,
+                     const struct mesh_options *options,
+                     struct surface *out, struct facet_error *err)
+{
     memset(out, 0, sizeof *out);
+    out->obj = *obj;
+    memset(obj, 0, sizeof *obj);
     out->units = options->units;
     out->selected = options->object != NULL || options->group != NULL;
     out->path = strdup(path);
     if (out->path == NULL)
         return facet_error_set(err, FACET_EWORK, "out of memory");
-    int rc = obj_load(path, &out->obj, err);
-    if (rc != FACET_OK)
-        return rc;
-    rc = mesh_build(&out->obj, options, &out->mesh, err);
+    int rc = mesh_build(&out->obj, options, &out->mesh, err);
     if (rc != FACET_OK) {
         /* mesh errors do not know the file name; add it. */
         char message[sizeof err->message];
@@ -75,11 +121,8 @@ int surface_open(const char *path, const struct mesh_options *options,
         return facet_error_set(err, rc, "%s: %s", path, message);
     }
 
-    if ((rc = check_precision(out, err)) != FACET_OK)
+    if ((rc = check_mesh(out, err)) != FACET_OK)
         return rc;
-    char text[256];
-    if (mesh_units_warning(&out->mesh, options->units, text, sizeof text))
-        warn(out, "%s", text);
     if (!out->selected && out->mesh.ncomponents > 1) {
         char names[200];
         if (out->obj.nobjects > 2) {
@@ -100,12 +143,6 @@ int surface_open(const char *path, const struct mesh_options *options,
                  out->mesh.ncomponents);
         }
     }
-    if (out->mesh.nonmanifold_edges > 0)
-        warn(out, "%zu edges are shared by more than two triangles "
-             "(non-manifold)", out->mesh.nonmanifold_edges);
-    if (out->mesh.ndegenerate > 0)
-        warn(out, "%zu triangles dropped: their corners weld into fewer "
-             "than three vertices", out->mesh.ndegenerate);
     return FACET_OK;
 }
 

@@ -24,7 +24,8 @@
 struct surface {
     char *path;                 /* owned copy of the file's path */
     enum mesh_units units;
-    struct obj_file obj;        /* the file as read (names, counts) */
+    struct obj_file obj;        /* the file as read (names, counts);
+                                   empty for a project's surface */
     struct mesh mesh;           /* the selected part, in metres */
     int selected;               /* --object or --group was given */
     int nwarnings;
@@ -48,6 +49,22 @@ struct surface {
  * after a failure. */
 int surface_open(const char *path, const struct mesh_options *options,
                  struct surface *out, struct facet_error *err);
+
+/* surface_open of a file already read into *obj, which it takes over
+ * (and zeroes). */
+int surface_from_obj(const char *path, struct obj_file *obj,
+                     const struct mesh_options *options,
+                     struct surface *out, struct facet_error *err);
+
+/* Makes *out the surface of a mesh already built (one surface of a
+ * project, core/project/project.h): takes *mesh over (and zeroes it),
+ * names the surface path in messages (a copy), runs surface_open's checks
+ * and warnings, and counts it as selected. out->obj stays empty: the file
+ * is its project's, read once. Release *out with surface_close, also after
+ * a failure. */
+int surface_from_mesh(const char *path, enum mesh_units units,
+                      struct mesh *mesh, struct surface *out,
+                      struct facet_error *err);
 
 /* Fails with FACET_EINPUT when the surface is several disconnected pieces
  * and none was selected, listing the objects or groups to choose from, so

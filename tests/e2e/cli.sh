@@ -68,7 +68,8 @@ expect_error "info with no file" 'name one OBJ file' "$FACET" info
 # Several surfaces in one file: said, and listed.
 printf 'o left\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\no right\nv 5 0 0\nv 6 0 0\nv 5 1 0\nf 4 5 6\n' >"$WORK/two.obj"
 expect "info on two objects" 0 "$FACET" info "$WORK/two.obj"
-stdout_has "two surfaces are listed" 'separate surfaces.*left, right'
+stdout_has "two surfaces are listed" '^left .*two\.obj'
+stdout_has "two surfaces are listed (2)" '^right .*two\.obj'
 run "$FACET" info "$WORK/two.obj" --object right --json
 json_check "--object selects one" 'j["components"]==1 and j["triangles"]==1'
 expect_error "unknown object is named" "nope" "$FACET" info "$WORK/two.obj" --object nope

@@ -1,0 +1,107 @@
+/*
+ * project.h: a whole building's skin, as a list of surfaces.
+ *
+ * A project is one OBJ file with many objects or groups, or several OBJ
+ * files; each surface keeps its own UV. In each file the surfaces are:
+ *
+ *   - its objects (o NAME), when it names any;
+ *   - else its groups (g NAME), when it names any;
+ *   - else the whole file, one surface named after the file (its base
+ *     name without ".obj").
+ *
+ * Surfaces come in file order, then in the order of their first statement.
+ * Each is a struct surface (core/surface/surface.h) built from the file
+ * read once: its mesh in metres, then, after project_prepare, its UV, the
+ * curvature and the sums every panel grid starts from, as for a single
+ * surface. Its u and v lengths (project_lengths.h) come with the UV.
+ *
+ * Refused, with one line "FILE:LINE: object 'NAME': what":
+ *   - a face outside any object (or group) in a file that names them;
+ *   - an object (group) with no faces;
+ *   - a name used for two separate runs of faces in one file (Rhino does
+ *     not keep names unique: two faces named alike would silently become
+ *     one surface), or by two files of the project;
+ *   - a face without vt in a file whose faces carry vt (per-face UV): the
+ *     file's UV would be half its own and half computed.
+ * A file without any vt is allowed; its surfaces' UV is computed (grid,
+ * plane, harmonic: param.h).
+ *
+ * Memory: a file is held once, while its surfaces' meshes are built, and
+ * freed before the next file is read; a project keeps only its surfaces'
+ * meshes and what preparing them adds (the skin example, 2M triangles:
+ * see tests/bench/bench_project.c for the peak).
+ *
+ * Ownership: project_open fills a caller-owned struct project;
+ * project_close releases everything in it, also after a failure.
+ */
+#ifndef FACET_PROJECT_H
+#define FACET_PROJECT_H
+
+#include <stddef.h>
+
+#include "core/base/error.h"
+#include "core/obj/obj.h"
+#include "core/surface/mesh.h"
+#include "core/surface/param.h"
+#include "core/surface/surface.h"
+
+/* What names a file's surfaces. */
+enum project_key { PROJECT_FILE, PROJECT_OBJECT, PROJECT_GROUP };
+
+struct project_surface {
+    char *name;              /* owned: the o or g name, or the file's */
+    const char *file;        /* the project's copy of its file's path */
+    enum project_key key;    /* what the name is */
+    size_t face;             /* the f statement (0-based, in its file)
+                                of its first face */
+    struct surface surface;  /* its mesh; prepared by project_prepare.
+                                surface.path reads "FILE: object NAME" */
+    double u_length;         /* m, set by project_prepare */
+    double v_length;
+};
+
+struct project {
+    size_t nfiles;
+    char **files;            /* owned copies of the paths */
+    size_t nsurfaces;
+    struct project_surface *surfaces;  /* owned, nsurfaces */
+    size_t ntriangles;       /* sum over the surfaces' meshes */
+    double area;             /* m^2, sum over the surfaces */
+};
+
+/* Reads the files paths[0 .. npaths) (npaths >= 1), whose coordinates are
+ * in units, into *out as the list of their surfaces. Returns FACET_OK, or
+ * FACET_EINPUT for a file the OBJ reader refuses or a case listed above,
+ * FACET_EWORK when out of memory, with err naming the file, the line and
+ * the surface. */
+int project_open(const char *const *paths, size_t npaths,
+                 enum mesh_units units, struct project *out,
+                 struct facet_error *err);
+
+/* project_open of one file already read into *obj, which it takes over
+ * and frees (a command that read the file to see whether it is a project,
+ * project_count_named, does not read it again). */
+int project_from_obj(const char *path, struct obj_file *obj,
+                     enum mesh_units units, struct project *out,
+                     struct facet_error *err);
+
+/* How many surfaces a file names: its named objects, or without any, its
+ * named groups; 0 when it names none (the file is one surface). */
+size_t project_count_named(const struct obj_file *obj);
+
+/* Prepares every surface (surface_prepare: its UV by method, curvature,
+ * panel sums) and sets its u and v lengths. Returns FACET_OK or the first
+ * surface's error, which names it. */
+int project_prepare(struct project *project, int flip_normals,
+                    enum param_method method, struct facet_error *err);
+
+/* The surface named name, or NULL. */
+const struct project_surface *project_find(const struct project *project,
+                                           const char *name);
+
+/* "object", "group" or "file". */
+const char *project_key_name(enum project_key key);
+
+void project_close(struct project *project);
+
+#endif
