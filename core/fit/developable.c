@@ -159,18 +159,14 @@ static void apply_step(const struct developable *d, const double e1[3],
  * e1, e2 of d's axis) into jtj (6 x 6, lower triangle of the leading np x
  * np block) and jtr. In that frame a point sits at X = q.e1, Y = q.e2 and
  * h = q.axis from the base (q = x - base), at rho = |(X, Y)| from the
- * axis. The fit's inner loop: np is a constant in each of its two callers
- * (linearize), so that the loops over the parameters unroll, and the sums
- * are kept in locals the stores to jtj cannot alias; each sum adds the
- * same terms in the same order as a plain loop would. */
-static inline double linearize_np(const struct developable *d,
-                                  const double *points, size_t n,
-                                  const int np, const double e1[3],
-                                  const double e2[3], double jtj[36],
-                                  double jtr[6])
+ * axis. */
+static double linearize(const struct developable *d, const double *points,
+                        size_t n, int np, const double e1[3],
+                        const double e2[3], double jtj[36], double jtr[6])
 {
+    memset(jtj, 0, 36 * sizeof *jtj);
+    memset(jtr, 0, 6 * sizeof *jtr);
     double w = 1 / sqrt(1 + d->slope * d->slope), sum = 0;
-    double m[36] = {0}, v[6] = {0};
     for (size_t k = 0; k < n; k++) {
         double q[3];
         vec3_sub(points + 3 * k, d->base, q);
@@ -187,23 +183,12 @@ static inline double linearize_np(const struct developable *d,
         };
         sum += f * f;
         for (int r = 0; r < np; r++) {
-            v[r] += row[r] * f;
+            jtr[r] += row[r] * f;
             for (int c = 0; c <= r; c++)
-                m[r * 6 + c] += row[r] * row[c];
+                jtj[r * 6 + c] += row[r] * row[c];
         }
     }
-    memcpy(jtj, m, sizeof m);
-    memcpy(jtr, v, sizeof v);
     return sum;
-}
-
-static double linearize(const struct developable *d, const double *points,
-                        size_t n, int np, const double e1[3],
-                        const double e2[3], double jtj[36], double jtr[6])
-{
-    if (np == 6)
-        return linearize_np(d, points, n, 6, e1, e2, jtj, jtr);
-    return linearize_np(d, points, n, 5, e1, e2, jtj, jtr);
 }
 
 /* Sets d's radius and slope to the best for its axis: in the half-plane
