@@ -167,6 +167,7 @@ int built_option_fit(const struct mesh *mesh, const struct fit_points *points,
     out->panels = calloc(np + 1, sizeof *out->panels);
     size_t *start = calloc(np + 2, sizeof *start);
     uint32_t *member = NULL, *held = NULL;
+    int32_t *held_by = NULL;
     double *xyz = NULL, *ruling = NULL;
     if (out->panels == NULL || start == NULL)
         goto out_of_memory;
@@ -174,11 +175,14 @@ int built_option_fit(const struct mesh *mesh, const struct fit_points *points,
     double dv = (panels->vmax - panels->vmin) / panels->nv;
 
     /* The fit points of each SP panel, bucketed: count, then place. The
-     * count keeps the points some SP panel holds in held, so that the
-     * placing looks again only at those (most of a surface is in FP and
-     * DP panels). */
+     * count keeps the points some SP panel holds in held, and the panel of
+     * those only one holds (all but the points on cell lines) in held_by
+     * (-1 for the others), so that the placing looks again only at the
+     * points on cell lines some SP panel holds (most of a surface is in FP
+     * and DP panels, most points inside a cell). */
     held = malloc((points->npoints + 1) * sizeof *held);
-    if (held == NULL)
+    held_by = malloc((points->npoints + 1) * sizeof *held_by);
+    if (held == NULL || held_by == NULL)
         goto out_of_memory;
     size_t nheld = 0;
     for (size_t p = 0; p < points->npoints; p++) {
@@ -186,8 +190,10 @@ int built_option_fit(const struct mesh *mesh, const struct fit_points *points,
         int n = point_panels(points, p, panels, du, dv, holder);
         for (int k = 0; k < n; k++)
             start[holder[k] + 2]++;
-        if (n > 0)
+        if (n > 0) {
+            held_by[nheld] = n == 1 ? holder[0] : -1;
             held[nheld++] = (uint32_t)p;
+        }
     }
     size_t largest = 0;
     for (size_t k = 0; k < np; k++) {
@@ -200,6 +206,10 @@ int built_option_fit(const struct mesh *mesh, const struct fit_points *points,
     if (member == NULL || xyz == NULL || ruling == NULL)
         goto out_of_memory;
     for (size_t x = 0; x < nheld; x++) {
+        if (held_by[x] >= 0) {
+            member[start[held_by[x] + 1]++] = held[x];
+            continue;
+        }
         int32_t holder[4];
         int n = point_panels(points, held[x], panels, du, dv, holder);
         for (int k = 0; k < n; k++)
@@ -266,6 +276,7 @@ int built_option_fit(const struct mesh *mesh, const struct fit_points *points,
     free(start);
     free(member);
     free(held);
+    free(held_by);
     free(xyz);
     free(ruling);
     return FACET_OK;
@@ -274,6 +285,7 @@ out_of_memory:
     free(start);
     free(member);
     free(held);
+    free(held_by);
     free(xyz);
     free(ruling);
     built_option_free(out);
