@@ -58,6 +58,27 @@ static void fail(const struct facet_error *err)
     exit(1);
 }
 
+/* An option's cell sides, SP fits and joints, on its own: its panels as
+ * built into *built (release with built_option_free). */
+static void joints_alone(const struct surface *surface,
+                         const struct fit_points *points,
+                         const struct panelization *panels, double threshold,
+                         struct built_option *built)
+{
+    struct facet_error err;
+    struct cell_sides sides;
+    struct joints measured;
+    if (cell_sides_sample(&surface->mesh, &surface->uv, &surface->curvature,
+                          panels, &sides, &err) != FACET_OK ||
+        built_option_fit(&surface->mesh, points, panels, &sides, threshold,
+                         built, &err) != FACET_OK ||
+        joints_measure(panels, built, &sides, MAX_GAP, MAX_KINK, &measured,
+                       &err) != FACET_OK)
+        fail(&err);
+    joints_free(&measured);
+    cell_sides_free(&sides);
+}
+
 /* One pass over the paper's space on this thread, each option evaluated
  * as a run does, and with joints also built and measured: its CPU time
  * (s). Adds the SP misfits of the pass to *misfits. */
@@ -80,22 +101,11 @@ static double space_pass(const struct surface *surface,
                                         &totals, &err) != FACET_OK)
                 fail(&err);
             if (joints) {
-                struct cell_sides sides;
                 struct built_option built;
-                struct joints measured;
-                if (cell_sides_sample(&surface->mesh, &surface->uv,
-                                      &surface->curvature, &panels, &sides,
-                                      &err) != FACET_OK ||
-                    built_option_fit(&surface->mesh, points, &panels, &sides,
-                                     params.classify.threshold, &built,
-                                     &err) != FACET_OK ||
-                    joints_measure(&panels, &built, &sides, MAX_GAP,
-                                   MAX_KINK, &measured, &err) != FACET_OK)
-                    fail(&err);
+                joints_alone(surface, points, &panels,
+                             params.classify.threshold, &built);
                 *misfits += built.sp_misfits;
-                joints_free(&measured);
                 built_option_free(&built);
-                cell_sides_free(&sides);
             }
             panelization_free(&panels);
         }
@@ -104,16 +114,11 @@ static double space_pass(const struct surface *surface,
 
 /* The paper's space without and with the joints; prints the ratio. */
 static void space_bench(const struct surface *surface,
+                        const struct panel_lattice *lattice,
+                        const struct optimize_settings *s,
                         const struct fit_points *points, int runs)
 {
-    struct facet_error err;
-    struct study_request request;
-    study_request_defaults(&request);
-    const struct optimize_settings *s = &request.settings;
     const struct design_space *space = &s->space;
-    struct panel_lattice *lattice;
-    if (optimize_lattice(surface, s, &lattice, &err) != FACET_OK)
-        fail(&err);
     size_t n = (size_t)(space->u_max - space->u_min + 1) *
                (size_t)(space->v_max - space->v_min + 1);
     double without[SPACE_RUNS_MAX], with[SPACE_RUNS_MAX];
@@ -123,7 +128,6 @@ static void space_bench(const struct surface *surface,
         misfits = 0;
         with[run] = space_pass(surface, lattice, points, s, 1, &misfits);
     }
-    panel_lattice_free(lattice);
     double without_s = bench_median(without, runs);
     double with_s = bench_median(with, runs);
     printf("paper space (u %d:%d x v %d:%d at %g mm = %zu options, 1 "
@@ -169,20 +173,11 @@ static void stepped_pass(const struct surface *surface,
                                             &err) != FACET_OK)
                     fail(&err);
                 double t0 = bench_cpu_now();
-                struct cell_sides sides, view;
+                struct cell_sides view;
                 struct built_option built, cached;
                 struct joints measured;
-                if (cell_sides_sample(&surface->mesh, &surface->uv,
-                                      &surface->curvature, &panels, &sides,
-                                      &err) != FACET_OK ||
-                    built_option_fit(&surface->mesh, points, &panels, &sides,
-                                     params.classify.threshold, &built,
-                                     &err) != FACET_OK ||
-                    joints_measure(&panels, &built, &sides, MAX_GAP,
-                                   MAX_KINK, &measured, &err) != FACET_OK)
-                    fail(&err);
-                joints_free(&measured);
-                cell_sides_free(&sides);
+                joints_alone(surface, points, &panels,
+                             params.classify.threshold, &built);
                 double t1 = bench_cpu_now();
                 if ((x == 0 &&
                      grid_fits_init(&surface->mesh, &surface->uv,
@@ -212,22 +207,16 @@ static void stepped_pass(const struct surface *surface,
 /* The paper's grids at several thresholds, each option's joints alone and
  * with its grid's fits kept (grid_fits); prints the ratio. */
 static void stepped_bench(const struct surface *surface,
+                          const struct panel_lattice *lattice,
+                          const struct optimize_settings *s,
                           const struct fit_points *points, int runs)
 {
-    struct facet_error err;
-    struct study_request request;
-    study_request_defaults(&request);
-    const struct optimize_settings *s = &request.settings;
     const struct design_space *space = &s->space;
-    struct panel_lattice *lattice;
-    if (optimize_lattice(surface, s, &lattice, &err) != FACET_OK)
-        fail(&err);
     double alone[SPACE_RUNS_MAX], grid[SPACE_RUNS_MAX];
     size_t flips = 0;
     for (int run = 0; run < runs; run++)
         stepped_pass(surface, lattice, points, s, &alone[run], &grid[run],
                      &flips);
-    panel_lattice_free(lattice);
     size_t n = (size_t)(space->u_max - space->u_min + 1) *
                (size_t)(space->v_max - space->v_min + 1) * NSTEPPED;
     double alone_s = bench_median(alone, runs);
@@ -357,8 +346,18 @@ int main(int argc, char **argv)
     built_option_free(&built);
     joints_free(&joints);
     if (space_runs > 0) {
-        space_bench(&surface, &points, space_runs);
-        stepped_bench(&surface, &points, space_runs);
+        /* The paper's space (study_request_defaults) and its lattice. */
+        struct study_request request;
+        study_request_defaults(&request);
+        struct panel_lattice *lattice;
+        if (optimize_lattice(&surface, &request.settings, &lattice,
+                             &err) != FACET_OK)
+            fail(&err);
+        space_bench(&surface, lattice, &request.settings, &points,
+                    space_runs);
+        stepped_bench(&surface, lattice, &request.settings, &points,
+                      space_runs);
+        panel_lattice_free(lattice);
     }
     fit_points_free(&points);
     surface_close(&surface);
