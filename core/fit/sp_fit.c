@@ -3,6 +3,7 @@
  */
 #include "core/fit/sp_fit.h"
 
+#include <assert.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -73,11 +74,11 @@ static int cells_along(double x, int count, int cell[2])
     return 1;
 }
 
-/* The SP panels holding fit point p (the panels of the cells it lies in)
- * into out; returns how many. */
+/* The panels holding fit point p (the panels of the cells it lies in),
+ * only the SP ones unless any, into out; returns how many. */
 static int point_panels(const struct fit_points *points, size_t p,
                         const struct panelization *panels, double du,
-                        double dv, int32_t out[4])
+                        double dv, int any, int32_t out[4])
 {
     int ci[2], cj[2];
     int ni = cells_along((points->uv[2 * p] - panels->umin) / du, panels->nu,
@@ -88,7 +89,7 @@ static int point_panels(const struct fit_points *points, size_t p,
     for (int a = 0; a < ni; a++)
         for (int b = 0; b < nj; b++) {
             int32_t panel = panels->cell_panel[cj[b] * panels->nu + ci[a]];
-            if (panel >= 0 && panels->panels[panel].type == TYPE_SP)
+            if (panel >= 0 && (any || panels->panels[panel].type == TYPE_SP))
                 out[n++] = panel;
         }
     return n;
@@ -105,54 +106,282 @@ static void add_sample(const struct cell_sides *sides, size_t s, int k,
     (*n)++;
 }
 
-/* Fits the first nfit of panel's samples xyz (n) with the axis guess
- * axis, and measures the fit's deviation on all n; the first nrulings
- * samples carry the rulings ruling (nrulings x 3), for a cone. Fills
- * *b. */
-static void fit_panel(const struct panel *panel, const double *xyz,
-                      size_t nfit, size_t n, const double *ruling,
-                      size_t nrulings, const double axis[3],
-                      double threshold, struct built_panel *b)
+/* The fit points of panels, bucketed: those of panel k are member[start[k]
+ * .. start[k + 1]), in the order of the points; only the SP panels' unless
+ * any. largest: the most of one panel. */
+struct buckets {
+    size_t *start;             /* npanels + 2 */
+    uint32_t *member;
+    size_t largest;
+};
+
+static void buckets_free(struct buckets *b)
+{
+    free(b->start);
+    free(b->member);
+    memset(b, 0, sizeof *b);
+}
+
+/* Fills *out (release with buckets_free); returns 0, or -1 when out of
+ * memory. */
+static int buckets_build(const struct fit_points *points,
+                         const struct panelization *panels, int any,
+                         struct buckets *out)
+{
+    memset(out, 0, sizeof *out);
+    size_t np = panels->npanels;
+    double du = (panels->umax - panels->umin) / panels->nu;
+    double dv = (panels->vmax - panels->vmin) / panels->nv;
+    out->start = calloc(np + 2, sizeof *out->start);
+    /* Count, then place. The count keeps the points some panel holds in
+     * held, and the panel of those only one holds (all but the points on
+     * cell lines) in held_by (-1 for the others), so that the placing looks
+     * again only at the points on cell lines (most of a surface is in FP
+     * and DP panels, most points inside a cell). */
+    uint32_t *held = malloc((points->npoints + 1) * sizeof *held);
+    int32_t *held_by = malloc((points->npoints + 1) * sizeof *held_by);
+    if (out->start == NULL || held == NULL || held_by == NULL)
+        goto out_of_memory;
+    size_t *start = out->start;
+    size_t nheld = 0;
+    for (size_t p = 0; p < points->npoints; p++) {
+        int32_t holder[4];
+        int n = point_panels(points, p, panels, du, dv, any, holder);
+        for (int k = 0; k < n; k++)
+            start[holder[k] + 2]++;
+        if (n > 0) {
+            held_by[nheld] = n == 1 ? holder[0] : -1;
+            held[nheld++] = (uint32_t)p;
+        }
+    }
+    for (size_t k = 0; k < np; k++) {
+        out->largest = start[k + 2] > out->largest ? start[k + 2]
+                                                   : out->largest;
+        start[k + 2] += start[k + 1];
+    }
+    out->member = malloc((start[np + 1] + 1) * sizeof *out->member);
+    if (out->member == NULL)
+        goto out_of_memory;
+    for (size_t x = 0; x < nheld; x++) {
+        if (held_by[x] >= 0) {
+            out->member[start[held_by[x] + 1]++] = held[x];
+            continue;
+        }
+        int32_t holder[4];
+        int n = point_panels(points, held[x], panels, du, dv, any, holder);
+        for (int k = 0; k < n; k++)
+            out->member[start[holder[k] + 1]++] = held[x];
+    }
+    free(held);
+    free(held_by);
+    return 0;
+
+out_of_memory:
+    free(held);
+    free(held_by);
+    buckets_free(out);
+    return -1;
+}
+
+/* A panel's samples and its fit's start. */
+struct samples {
+    double *xyz;               /* n x 3: the first nfit join the fit */
+    double *ruling;            /* nrulings x 3: of the first nrulings */
+    size_t n, nfit, nrulings;
+    double axis[3];            /* the cylinder's start */
+};
+
+/* Gathers panel k's samples into *out (its arrays of room for the
+ * largest bucket and four sides). */
+static void gather(const struct mesh *mesh, const struct fit_points *points,
+                   const struct panel *panel, const struct buckets *buckets,
+                   size_t k, const struct cell_sides *sides,
+                   struct samples *out)
+{
+    double *xyz = out->xyz;
+    /* Mean ruling of the points inside, and the samples. */
+    double outer[9] = {0};
+    size_t n = 0;
+    for (size_t m = buckets->start[k]; m < buckets->start[k + 1]; m++) {
+        size_t p = buckets->member[m];
+        const double *r = points->ruling + 3 * p;
+        for (int a = 0; a < 3; a++)
+            for (int c = 0; c < 3; c++)
+                outer[3 * a + c] += r[a] * r[c];
+        memcpy(xyz + 3 * n, mesh->position + 3 * (size_t)points->vertex[p],
+               3 * sizeof *xyz);
+        memcpy(out->ruling + 3 * n, r, 3 * sizeof *out->ruling);
+        n++;
+    }
+    out->nrulings = n;
+    /* Every FIT_SIDE_STRIDE-th sample of the sides (corners included,
+     * once) joins the fit; the others only the deviation. The first
+     * two sides start at a corner, the last two end at one. */
+    int i = panel->i, j = panel->j;
+    size_t around[4] = {
+        cell_side_v(sides, i, j), cell_side_u(sides, i + 1, j),
+        cell_side_v(sides, i, j + 1), cell_side_u(sides, i, j)};
+    for (int pass = 0; pass < 2; pass++) {
+        for (int e = 0; e < 4; e++)
+            for (int step = 0; step < CELL_SIDE_SEGMENTS; step++) {
+                int at = e < 2 ? step : step + 1;
+                if ((at % FIT_SIDE_STRIDE == 0) == (pass == 0))
+                    add_sample(sides, around[e], at, xyz, &n);
+            }
+        if (pass == 0)
+            out->nfit = n;
+    }
+    out->n = n;
+    if (out->nrulings > 0) {
+        double value[3], vector[3][3];
+        sym3_eigen(outer, value, vector);
+        memcpy(out->axis, vector[2], sizeof out->axis);
+    } else {
+        /* No point inside: the longest extent of the samples. */
+        double mean[3], value[3], vector[3][3];
+        developable_principal_axes(xyz, n, mean, value, vector);
+        memcpy(out->axis, vector[2], sizeof out->axis);
+    }
+}
+
+/* A panel's fits, which do not depend on the threshold (only their
+ * verdict does): its cylinder, and when that misses, its cones. */
+struct panel_fits {
+    unsigned char cylinder_done, cone_done;
+    unsigned char have_cylinder;
+    struct developable cylinder;
+    double best_cylinder;      /* NaN without a cylinder */
+    struct developable cone;   /* the cone kept; zero when none */
+    double best_cone;          /* NaN without a cone */
+};
+
+static void fit_cylinder(const struct samples *s, struct panel_fits *f)
+{
+    f->cylinder_done = 1;
+    f->best_cylinder = NAN;
+    f->have_cylinder = developable_fit_cylinder(s->xyz, s->nfit, s->axis,
+                                                &f->cylinder) == 0;
+    if (f->have_cylinder)
+        f->best_cylinder = developable_max_distance(&f->cylinder, s->xyz,
+                                                    s->n);
+}
+
+/* From the cylinder and from where the rulings converge; the one nearer
+ * the samples is kept (two least-squares cones can tie where their largest
+ * distances do not). */
+static void fit_cones(const struct samples *s, struct panel_fits *f)
+{
+    f->cone_done = 1;
+    f->best_cone = NAN;
+    memset(&f->cone, 0, sizeof f->cone);
+    struct developable start[2], cone;
+    start[0] = f->cylinder;
+    int starts = 1 + (developable_cone_start(s->xyz, s->nfit, s->xyz,
+                                             s->ruling, s->nrulings,
+                                             &start[1]) == 0);
+    for (int k = 0; k < starts; k++) {
+        if (developable_fit_cone(s->xyz, s->nfit, &start[k], &cone) != 0)
+            continue;
+        double deviation = developable_max_distance(&cone, s->xyz, s->n);
+        if (isfinite(deviation) && !(deviation >= f->best_cone)) {
+            f->best_cone = deviation;
+            f->cone = cone;
+        }
+    }
+}
+
+/* 1 when panel's fits f, at threshold, need the cones. */
+static int needs_cones(const struct panel *panel,
+                       const struct panel_fits *f, double threshold)
 {
     double limit = threshold + CLASSIFY_ROUNDING * panel->diameter;
-    struct developable cylinder, cone;
+    return f->have_cylinder && !(f->best_cylinder <= limit);
+}
+
+/* Builds the SP panel from its fits f (the cones done when needs_cones)
+ * at threshold into *b. */
+static void judge(const struct panel *panel, const struct panel_fits *f,
+                  double threshold, struct built_panel *b)
+{
+    double limit = threshold + CLASSIFY_ROUNDING * panel->diameter;
     memset(&b->fit, 0, sizeof b->fit);
-    b->best_cylinder = b->best_cone = NAN;
-    int have_cylinder = developable_fit_cylinder(xyz, nfit, axis,
-                                                 &cylinder) == 0;
-    if (have_cylinder) {
-        b->best_cylinder = developable_max_distance(&cylinder, xyz, n);
-        if (b->best_cylinder <= limit) {
+    b->best_cylinder = f->best_cylinder;
+    b->best_cone = NAN;
+    if (f->have_cylinder) {
+        if (f->best_cylinder <= limit) {
             b->fitted = 1;
-            b->fit = cylinder;
-            b->sp_deviation = b->best_cylinder;
+            b->fit = f->cylinder;
+            b->sp_deviation = f->best_cylinder;
             return;
         }
-        /* From the cylinder and from where the rulings converge; the one
-         * nearer the samples is kept (two least-squares cones can tie
-         * where their largest distances do not). */
-        struct developable start[2];
-        start[0] = cylinder;
-        int starts = 1 + (developable_cone_start(xyz, nfit, xyz, ruling,
-                                                 nrulings, &start[1]) == 0);
-        for (int k = 0; k < starts; k++) {
-            if (developable_fit_cone(xyz, nfit, &start[k], &cone) != 0)
-                continue;
-            double deviation = developable_max_distance(&cone, xyz, n);
-            if (isfinite(deviation) && !(deviation >= b->best_cone)) {
-                b->best_cone = deviation;
-                b->fit = cone;
-            }
-        }
-        if (b->best_cone <= limit) {
+        b->best_cone = f->best_cone;
+        b->fit = f->cone;
+        if (f->best_cone <= limit) {
             b->fitted = 1;
-            b->sp_deviation = b->best_cone;
+            b->sp_deviation = f->best_cone;
             return;
         }
     }
     b->type = TYPE_DP;
     b->misfit = 1;
     b->sp_deviation = fmin(b->best_cylinder, b->best_cone);
+}
+
+/* Scratch for one panel's samples: room for the largest bucket and four
+ * sides. Returns 0, or -1 when out of memory. */
+static int samples_alloc(size_t largest, struct samples *s)
+{
+    memset(s, 0, sizeof *s);
+    s->xyz = malloc((largest + 4 * CELL_SIDE_SAMPLES) * 3 * sizeof *s->xyz);
+    s->ruling = malloc((largest + 1) * 3 * sizeof *s->ruling);
+    return s->xyz != NULL && s->ruling != NULL ? 0 : -1;
+}
+
+static void samples_free(struct samples *s)
+{
+    free(s->xyz);
+    free(s->ruling);
+    memset(s, 0, sizeof *s);
+}
+
+/* Builds every panel of panels into out (allocated, zeroed but for the
+ * threshold and counts), fitting each SP panel k from the fits cache[k]
+ * (done there as needed) or, without a cache, anew. */
+static void build_panels(const struct mesh *mesh,
+                         const struct fit_points *points,
+                         const struct panelization *panels,
+                         const struct cell_sides *sides,
+                         const struct buckets *buckets,
+                         struct panel_fits *cache, double threshold,
+                         struct samples *s, struct built_option *out)
+{
+    for (size_t k = 0; k < panels->npanels; k++) {
+        const struct panel *panel = &panels->panels[k];
+        struct built_panel *b = &out->panels[k];
+        b->type = panel->type;
+        b->sp_deviation = b->best_cylinder = b->best_cone = NAN;
+        if (panel->type != TYPE_SP)
+            continue;
+        struct panel_fits alone, *f = cache != NULL ? &cache[k] : &alone;
+        if (cache == NULL)
+            memset(&alone, 0, sizeof alone);
+        int gathered = 0;
+        if (!f->cylinder_done) {
+            gather(mesh, points, panel, buckets, k, sides, s);
+            gathered = 1;
+            fit_cylinder(s, f);
+        }
+        if (!f->cone_done && needs_cones(panel, f, threshold)) {
+            if (!gathered)
+                gather(mesh, points, panel, buckets, k, sides, s);
+            fit_cones(s, f);
+        }
+        judge(panel, f, threshold, b);
+        if (b->fitted)
+            out->sp_fitted++;
+        else
+            out->sp_misfits++;
+    }
 }
 
 int built_option_fit(const struct mesh *mesh, const struct fit_points *points,
@@ -164,121 +393,98 @@ int built_option_fit(const struct mesh *mesh, const struct fit_points *points,
     out->npanels = panels->npanels;
     out->threshold = threshold;
     size_t np = panels->npanels;
+    struct buckets buckets;
+    struct samples s;
+    memset(&s, 0, sizeof s);
     out->panels = calloc(np + 1, sizeof *out->panels);
-    size_t *start = calloc(np + 2, sizeof *start);
-    uint32_t *member = NULL, *held = NULL;
-    double *xyz = NULL, *ruling = NULL;
-    if (out->panels == NULL || start == NULL)
-        goto out_of_memory;
-    double du = (panels->umax - panels->umin) / panels->nu;
-    double dv = (panels->vmax - panels->vmin) / panels->nv;
-
-    /* The fit points of each SP panel, bucketed: count, then place. The
-     * count keeps the points some SP panel holds in held, so that the
-     * placing looks again only at those (most of a surface is in FP and
-     * DP panels). */
-    held = malloc((points->npoints + 1) * sizeof *held);
-    if (held == NULL)
-        goto out_of_memory;
-    size_t nheld = 0;
-    for (size_t p = 0; p < points->npoints; p++) {
-        int32_t holder[4];
-        int n = point_panels(points, p, panels, du, dv, holder);
-        for (int k = 0; k < n; k++)
-            start[holder[k] + 2]++;
-        if (n > 0)
-            held[nheld++] = (uint32_t)p;
+    if (buckets_build(points, panels, 0, &buckets) != 0 ||
+        out->panels == NULL || samples_alloc(buckets.largest, &s) != 0) {
+        buckets_free(&buckets);
+        samples_free(&s);
+        built_option_free(out);
+        return facet_error_set(err, FACET_EWORK,
+                               "out of memory fitting %zu panels", np);
     }
-    size_t largest = 0;
-    for (size_t k = 0; k < np; k++) {
-        largest = start[k + 2] > largest ? start[k + 2] : largest;
-        start[k + 2] += start[k + 1];
-    }
-    member = malloc((start[np + 1] + 1) * sizeof *member);
-    xyz = malloc((largest + 4 * CELL_SIDE_SAMPLES) * 3 * sizeof *xyz);
-    ruling = malloc((largest + 1) * 3 * sizeof *ruling);
-    if (member == NULL || xyz == NULL || ruling == NULL)
-        goto out_of_memory;
-    for (size_t x = 0; x < nheld; x++) {
-        int32_t holder[4];
-        int n = point_panels(points, held[x], panels, du, dv, holder);
-        for (int k = 0; k < n; k++)
-            member[start[holder[k] + 1]++] = held[x];
-    }
-
-    for (size_t k = 0; k < np; k++) {
-        const struct panel *panel = &panels->panels[k];
-        struct built_panel *b = &out->panels[k];
-        b->type = panel->type;
-        b->sp_deviation = b->best_cylinder = b->best_cone = NAN;
-        if (panel->type != TYPE_SP)
-            continue;
-        /* Mean ruling of the points inside, and the samples. */
-        double outer[9] = {0};
-        size_t n = 0;
-        for (size_t m = start[k]; m < start[k + 1]; m++) {
-            size_t p = member[m];
-            const double *r = points->ruling + 3 * p;
-            for (int a = 0; a < 3; a++)
-                for (int c = 0; c < 3; c++)
-                    outer[3 * a + c] += r[a] * r[c];
-            memcpy(xyz + 3 * n, mesh->position + 3 * (size_t)points->vertex[p],
-                   3 * sizeof *xyz);
-            memcpy(ruling + 3 * n, r, 3 * sizeof *ruling);
-            n++;
-        }
-        /* Every FIT_SIDE_STRIDE-th sample of the sides (corners included,
-         * once) joins the fit; the others only the deviation. The first
-         * two sides start at a corner, the last two end at one. */
-        int i = panel->i, j = panel->j;
-        size_t around[4] = {
-            cell_side_v(sides, i, j), cell_side_u(sides, i + 1, j),
-            cell_side_v(sides, i, j + 1), cell_side_u(sides, i, j)};
-        size_t nfit = 0;
-        for (int pass = 0; pass < 2; pass++) {
-            for (int e = 0; e < 4; e++)
-                for (int step = 0; step < CELL_SIDE_SEGMENTS; step++) {
-                    int at = e < 2 ? step : step + 1;
-                    if ((at % FIT_SIDE_STRIDE == 0) == (pass == 0))
-                        add_sample(sides, around[e], at, xyz, &n);
-                }
-            if (pass == 0)
-                nfit = n;
-        }
-        double axis[3];
-        if (start[k + 1] > start[k]) {
-            double value[3], vector[3][3];
-            sym3_eigen(outer, value, vector);
-            memcpy(axis, vector[2], sizeof axis);
-        } else {
-            /* No point inside: the longest extent of the samples. */
-            double mean[3], value[3], vector[3][3];
-            developable_principal_axes(xyz, n, mean, value, vector);
-            memcpy(axis, vector[2], sizeof axis);
-        }
-        fit_panel(panel, xyz, nfit, n, ruling, start[k + 1] - start[k], axis,
-                  threshold, b);
-        if (b->fitted)
-            out->sp_fitted++;
-        else
-            out->sp_misfits++;
-    }
-    free(start);
-    free(member);
-    free(held);
-    free(xyz);
-    free(ruling);
+    build_panels(mesh, points, panels, sides, &buckets, NULL, threshold, &s,
+                 out);
+    buckets_free(&buckets);
+    samples_free(&s);
     return FACET_OK;
+}
 
-out_of_memory:
-    free(start);
-    free(member);
-    free(held);
-    free(xyz);
-    free(ruling);
-    built_option_free(out);
-    return facet_error_set(err, FACET_EWORK,
-                           "out of memory fitting %zu panels", np);
+int grid_fits_init(const struct mesh *mesh, const struct uv_index *index,
+                   const struct curvature *curvature,
+                   const struct fit_points *points,
+                   const struct panelization *panels, struct grid_fits *out,
+                   struct facet_error *err)
+{
+    memset(out, 0, sizeof *out);
+    out->mesh = mesh;
+    out->points = points;
+    out->nu = panels->nu;
+    out->nv = panels->nv;
+    out->npanels = panels->npanels;
+    int rc = cell_sides_sample_every(mesh, index, curvature, panels,
+                                     &out->sides, err);
+    if (rc != FACET_OK) {
+        grid_fits_free(out);
+        return rc;
+    }
+    out->buckets = malloc(sizeof *out->buckets);
+    out->fits = calloc(panels->npanels + 1, sizeof *out->fits);
+    out->sampled = malloc(out->sides.nsides + 1);
+    if (out->buckets == NULL || out->fits == NULL || out->sampled == NULL ||
+        buckets_build(points, panels, 1, out->buckets) != 0) {
+        free(out->buckets);
+        out->buckets = NULL;
+        grid_fits_free(out);
+        return facet_error_set(err, FACET_EWORK,
+                               "out of memory for the fits of %zu panels",
+                               panels->npanels);
+    }
+    return FACET_OK;
+}
+
+int grid_fits_option(struct grid_fits *grid,
+                     const struct panelization *panels, double threshold,
+                     struct built_option *out, struct cell_sides *sides,
+                     struct facet_error *err)
+{
+    assert(panels->nu == grid->nu && panels->nv == grid->nv &&
+           panels->npanels == grid->npanels);
+    memset(out, 0, sizeof *out);
+    out->npanels = panels->npanels;
+    out->threshold = threshold;
+    struct samples s;
+    out->panels = calloc(panels->npanels + 1, sizeof *out->panels);
+    if (out->panels == NULL ||
+        samples_alloc(grid->buckets->largest, &s) != 0) {
+        samples_free(&s);
+        built_option_free(out);
+        return facet_error_set(err, FACET_EWORK,
+                               "out of memory fitting %zu panels",
+                               panels->npanels);
+    }
+    build_panels(grid->mesh, grid->points, panels, &grid->sides,
+                 grid->buckets, grid->fits, threshold, &s, out);
+    samples_free(&s);
+    /* The sides as cell_sides_sample would have sampled them for this
+     * option's types: the samples of all, the marks of these. */
+    cell_sides_mark(panels, grid->sampled);
+    *sides = grid->sides;
+    sides->sampled = grid->sampled;
+    return FACET_OK;
+}
+
+void grid_fits_free(struct grid_fits *grid)
+{
+    if (grid->buckets != NULL)
+        buckets_free(grid->buckets);
+    free(grid->buckets);
+    free(grid->fits);
+    free(grid->sampled);
+    cell_sides_free(&grid->sides);
+    memset(grid, 0, sizeof *grid);
 }
 
 void built_option_free(struct built_option *built)

@@ -114,6 +114,60 @@ int built_option_fit(const struct mesh *mesh, const struct fit_points *points,
 
 void built_option_free(struct built_option *built);
 
+/* The fits of one panel grid, kept across the thresholds it is evaluated
+ * at. A grid's panels (panels_build) are the same at every threshold; only
+ * their types change. A panel's samples, its cylinder and its cones do not
+ * depend on the threshold, only the verdict "within t" does, so they are
+ * fitted once, the first time the panel is SP (the cones the first time the
+ * cylinder misses), and judged at each threshold. The grid's sides are
+ * sampled once, all of them (cell_sides_sample_every).
+ *
+ * Use: grid_fits_init on the grid's panels (classified or not), then for
+ * each threshold, with the panels classified at it, grid_fits_option in
+ * place of cell_sides_sample + built_option_fit; joints_measure takes the
+ * sides it returns. grid_fits_free when the grid is done. One grid_fits
+ * serves one thread. The results are those of cell_sides_sample +
+ * built_option_fit to sp_fit.h's precision: only where a side's sample
+ * lies on a mesh edge can it differ in its last bits (cell_sides.h);
+ * test_joint pins the two to each other over the paper's space. */
+struct panel_fits;
+struct buckets;
+struct grid_fits {
+    const struct mesh *mesh;           /* borrowed, as points */
+    const struct fit_points *points;
+    int nu, nv;
+    size_t npanels;
+    struct cell_sides sides;           /* every side sampled */
+    struct buckets *buckets;           /* each panel's fit points */
+    struct panel_fits *fits;           /* npanels: the fits done so far */
+    unsigned char *sampled;            /* nsides: the last option's sides */
+};
+
+/* Prepares *out for the grid of panels, over the surface mesh with UV
+ * lookup index and curvature (as cell_sides_sample) and the surface's fit
+ * points (mesh, points: borrowed, to outlive *out). Release with
+ * grid_fits_free, also after a failure. Returns FACET_OK or FACET_EWORK
+ * when out of memory. */
+int grid_fits_init(const struct mesh *mesh, const struct uv_index *index,
+                   const struct curvature *curvature,
+                   const struct fit_points *points,
+                   const struct panelization *panels, struct grid_fits *out,
+                   struct facet_error *err);
+
+/* built_option_fit for panels (the grid's, classified at threshold, m)
+ * from grid's fits, fitting those not yet done; fills *out (release with
+ * built_option_free) and *sides with the grid's sides as cell_sides_sample
+ * would have marked them for these panels: for joints_measure; it borrows
+ * grid's arrays until the next grid_fits_option or grid_fits_free (do not
+ * cell_sides_free it). Returns FACET_OK or FACET_EWORK when out of
+ * memory. */
+int grid_fits_option(struct grid_fits *grid,
+                     const struct panelization *panels, double threshold,
+                     struct built_option *out, struct cell_sides *sides,
+                     struct facet_error *err);
+
+void grid_fits_free(struct grid_fits *grid);
+
 /* Why a misfit is built DP, in one line into text (size bytes), e.g. "no
  * cylinder or cone within t = 3.0 mm: best cylinder 4.2 mm, best cone 3.9
  * mm"; the empty string for any other panel. */

@@ -111,10 +111,28 @@ static int needs_samples(const struct panelization *panels, int32_t a,
            !(full_dp(pa) && full_dp(pb));
 }
 
-int cell_sides_sample(const struct mesh *mesh, const struct uv_index *index,
-                      const struct curvature *curvature,
-                      const struct panelization *panels,
-                      struct cell_sides *out, struct facet_error *err)
+void cell_sides_mark(const struct panelization *panels,
+                     unsigned char *sampled)
+{
+    int nu = panels->nu, nv = panels->nv;
+    struct cell_sides shape = {.nu = nu, .nv = nv};
+    for (int j = 0; j < nv; j++)
+        for (int i = 0; i <= nu; i++)
+            sampled[cell_side_u(&shape, i, j)] = (unsigned char)needs_samples(
+                panels, i > 0 ? panels->cell_panel[j * nu + i - 1] : -1,
+                i < nu ? panels->cell_panel[j * nu + i] : -1);
+    for (int j = 0; j <= nv; j++)
+        for (int i = 0; i < nu; i++)
+            sampled[cell_side_v(&shape, i, j)] = (unsigned char)needs_samples(
+                panels, j > 0 ? panels->cell_panel[(j - 1) * nu + i] : -1,
+                j < nv ? panels->cell_panel[j * nu + i] : -1);
+}
+
+/* cell_sides_sample, or with every, cell_sides_sample_every. */
+static int sample(const struct mesh *mesh, const struct uv_index *index,
+                  const struct curvature *curvature,
+                  const struct panelization *panels, int every,
+                  struct cell_sides *out, struct facet_error *err)
 {
     memset(out, 0, sizeof *out);
     int nu = panels->nu, nv = panels->nv;
@@ -135,18 +153,10 @@ int cell_sides_sample(const struct mesh *mesh, const struct uv_index *index,
                                "out of memory sampling %zu cell sides",
                                out->nsides);
     }
-    /* The sides to sample (cell_sides.h): every side of an SP panel, and
-     * every joint but those between two flat quads or two full DP panels. */
-    for (int j = 0; j < nv; j++)
-        for (int i = 0; i <= nu; i++)
-            out->sampled[cell_side_u(out, i, j)] = (unsigned char)needs_samples(
-                panels, i > 0 ? panels->cell_panel[j * nu + i - 1] : -1,
-                i < nu ? panels->cell_panel[j * nu + i] : -1);
-    for (int j = 0; j <= nv; j++)
-        for (int i = 0; i < nu; i++)
-            out->sampled[cell_side_v(out, i, j)] = (unsigned char)needs_samples(
-                panels, j > 0 ? panels->cell_panel[(j - 1) * nu + i] : -1,
-                j < nv ? panels->cell_panel[j * nu + i] : -1);
+    if (every)
+        memset(out->sampled, 1, out->nsides);
+    else
+        cell_sides_mark(panels, out->sampled);
     double du = (panels->umax - panels->umin) / nu;
     double dv = (panels->vmax - panels->vmin) / nv;
     /* Along each grid line in turn, so that the walk from sample to sample
@@ -213,6 +223,23 @@ int cell_sides_sample(const struct mesh *mesh, const struct uv_index *index,
         }
     }
     return FACET_OK;
+}
+
+int cell_sides_sample(const struct mesh *mesh, const struct uv_index *index,
+                      const struct curvature *curvature,
+                      const struct panelization *panels,
+                      struct cell_sides *out, struct facet_error *err)
+{
+    return sample(mesh, index, curvature, panels, 0, out, err);
+}
+
+int cell_sides_sample_every(const struct mesh *mesh,
+                            const struct uv_index *index,
+                            const struct curvature *curvature,
+                            const struct panelization *panels,
+                            struct cell_sides *out, struct facet_error *err)
+{
+    return sample(mesh, index, curvature, panels, 1, out, err);
 }
 
 int cell_sides_flat_quad(const struct panel *panel)

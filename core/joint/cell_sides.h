@@ -91,6 +91,22 @@ int cell_sides_sample(const struct mesh *mesh, const struct uv_index *index,
                       const struct panelization *panels,
                       struct cell_sides *out, struct facet_error *err);
 
+/* Samples every side of panels' grid, whatever the panels' types (as
+ * cell_sides_sample otherwise): the sides of a grid classified at several
+ * thresholds (sp_fit.h's grid_fits). Sampled so, a side's samples can
+ * differ from cell_sides_sample's in their last bits, where a sample lies
+ * on a mesh edge and is found in the triangle on its other side. */
+int cell_sides_sample_every(const struct mesh *mesh,
+                            const struct uv_index *index,
+                            const struct curvature *curvature,
+                            const struct panelization *panels,
+                            struct cell_sides *out, struct facet_error *err);
+
+/* The sides cell_sides_sample samples for panels (classified), into
+ * sampled (nsides, as cell_sides numbers them): 1 for a side to sample. */
+void cell_sides_mark(const struct panelization *panels,
+                     unsigned char *sampled);
+
 void cell_sides_free(struct cell_sides *sides);
 
 #endif

@@ -25,6 +25,12 @@
  * each pass SPACE_RUNS times in turn (default 3; 0 skips the space, for a
  * profile of the one option), and the ratio of the medians is held to its
  * target of 1.5.
+ *
+ * Last, the paper's grids at three thresholds each (as a stepped space
+ * evaluates them, a grid's points together): the cell sides, SP fits and
+ * joints of each option alone, and with its grid's fits kept across the
+ * thresholds (sp_fit.h's grid_fits), each timed on the same options in
+ * the same pass, SPACE_RUNS passes.
  */
 #include <math.h>
 #include <stdio.h>
@@ -52,6 +58,27 @@ static void fail(const struct facet_error *err)
     exit(1);
 }
 
+/* An option's cell sides, SP fits and joints, on its own: its panels as
+ * built into *built (release with built_option_free). */
+static void joints_alone(const struct surface *surface,
+                         const struct fit_points *points,
+                         const struct panelization *panels, double threshold,
+                         struct built_option *built)
+{
+    struct facet_error err;
+    struct cell_sides sides;
+    struct joints measured;
+    if (cell_sides_sample(&surface->mesh, &surface->uv, &surface->curvature,
+                          panels, &sides, &err) != FACET_OK ||
+        built_option_fit(&surface->mesh, points, panels, &sides, threshold,
+                         built, &err) != FACET_OK ||
+        joints_measure(panels, built, &sides, MAX_GAP, MAX_KINK, &measured,
+                       &err) != FACET_OK)
+        fail(&err);
+    joints_free(&measured);
+    cell_sides_free(&sides);
+}
+
 /* One pass over the paper's space on this thread, each option evaluated
  * as a run does, and with joints also built and measured: its CPU time
  * (s). Adds the SP misfits of the pass to *misfits. */
@@ -74,22 +101,11 @@ static double space_pass(const struct surface *surface,
                                         &totals, &err) != FACET_OK)
                 fail(&err);
             if (joints) {
-                struct cell_sides sides;
                 struct built_option built;
-                struct joints measured;
-                if (cell_sides_sample(&surface->mesh, &surface->uv,
-                                      &surface->curvature, &panels, &sides,
-                                      &err) != FACET_OK ||
-                    built_option_fit(&surface->mesh, points, &panels, &sides,
-                                     params.classify.threshold, &built,
-                                     &err) != FACET_OK ||
-                    joints_measure(&panels, &built, &sides, MAX_GAP,
-                                   MAX_KINK, &measured, &err) != FACET_OK)
-                    fail(&err);
+                joints_alone(surface, points, &panels,
+                             params.classify.threshold, &built);
                 *misfits += built.sp_misfits;
-                joints_free(&measured);
                 built_option_free(&built);
-                cell_sides_free(&sides);
             }
             panelization_free(&panels);
         }
@@ -98,16 +114,11 @@ static double space_pass(const struct surface *surface,
 
 /* The paper's space without and with the joints; prints the ratio. */
 static void space_bench(const struct surface *surface,
+                        const struct panel_lattice *lattice,
+                        const struct optimize_settings *s,
                         const struct fit_points *points, int runs)
 {
-    struct facet_error err;
-    struct study_request request;
-    study_request_defaults(&request);
-    const struct optimize_settings *s = &request.settings;
     const struct design_space *space = &s->space;
-    struct panel_lattice *lattice;
-    if (optimize_lattice(surface, s, &lattice, &err) != FACET_OK)
-        fail(&err);
     size_t n = (size_t)(space->u_max - space->u_min + 1) *
                (size_t)(space->v_max - space->v_min + 1);
     double without[SPACE_RUNS_MAX], with[SPACE_RUNS_MAX];
@@ -117,7 +128,6 @@ static void space_bench(const struct surface *surface,
         misfits = 0;
         with[run] = space_pass(surface, lattice, points, s, 1, &misfits);
     }
-    panel_lattice_free(lattice);
     double without_s = bench_median(without, runs);
     double with_s = bench_median(with, runs);
     printf("paper space (u %d:%d x v %d:%d at %g mm = %zu options, 1 "
@@ -129,6 +139,95 @@ static void space_bench(const struct surface *surface,
            without_s, with_s, runs, with_s / without_s,
            with_s <= SPACE_TARGET * without_s ? "met" : "not met",
            SPACE_TARGET, 1e3 * (with_s - without_s) / (double)n, misfits);
+}
+
+/* The thresholds a stepped space evaluates at each grid (mm), out of
+ * order as a search may meet them. */
+static const double STEPPED_MM[] = {3, 2, 4};
+#define NSTEPPED 3
+
+/* One pass over the paper's grids at each of STEPPED_MM: the cell sides,
+ * SP fits and joints of each option alone (cell_sides_sample +
+ * built_option_fit), and with one grid_fits per grid, timed in turn on
+ * the same options: CPU times (s) into *alone and *grid; counts the
+ * panels whose verdict differs (none expected) into *flips. */
+static void stepped_pass(const struct surface *surface,
+                         const struct panel_lattice *lattice,
+                         const struct fit_points *points,
+                         const struct optimize_settings *s, double *alone,
+                         double *grid_s, size_t *flips)
+{
+    struct facet_error err;
+    const struct design_space *space = &s->space;
+    *alone = *grid_s = 0;
+    for (int nu = space->u_min; nu <= space->u_max; nu++)
+        for (int nv = space->v_min; nv <= space->v_max; nv++) {
+            struct grid_fits grid;
+            struct panelization panels;
+            for (int x = 0; x < NSTEPPED; x++) {
+                struct option_params params = option_params_at(
+                    &s->base, nu, nv, STEPPED_MM[x]);
+                struct option_totals totals;
+                if (option_evaluate_lattice(surface, lattice, &params,
+                                            &panels, &totals,
+                                            &err) != FACET_OK)
+                    fail(&err);
+                double t0 = bench_cpu_now();
+                struct cell_sides view;
+                struct built_option built, cached;
+                struct joints measured;
+                joints_alone(surface, points, &panels,
+                             params.classify.threshold, &built);
+                double t1 = bench_cpu_now();
+                if ((x == 0 &&
+                     grid_fits_init(&surface->mesh, &surface->uv,
+                                    &surface->curvature, points, &panels,
+                                    &grid, &err) != FACET_OK) ||
+                    grid_fits_option(&grid, &panels,
+                                     params.classify.threshold, &cached,
+                                     &view, &err) != FACET_OK ||
+                    joints_measure(&panels, &cached, &view, MAX_GAP,
+                                   MAX_KINK, &measured, &err) != FACET_OK)
+                    fail(&err);
+                joints_free(&measured);
+                double t2 = bench_cpu_now();
+                *alone += t1 - t0;
+                *grid_s += t2 - t1;
+                for (size_t k = 0; k < built.npanels; k++)
+                    *flips += built.panels[k].misfit !=
+                              cached.panels[k].misfit;
+                built_option_free(&built);
+                built_option_free(&cached);
+                panelization_free(&panels);
+            }
+            grid_fits_free(&grid);
+        }
+}
+
+/* The paper's grids at several thresholds, each option's joints alone and
+ * with its grid's fits kept (grid_fits); prints the ratio. */
+static void stepped_bench(const struct surface *surface,
+                          const struct panel_lattice *lattice,
+                          const struct optimize_settings *s,
+                          const struct fit_points *points, int runs)
+{
+    const struct design_space *space = &s->space;
+    double alone[SPACE_RUNS_MAX], grid[SPACE_RUNS_MAX];
+    size_t flips = 0;
+    for (int run = 0; run < runs; run++)
+        stepped_pass(surface, lattice, points, s, &alone[run], &grid[run],
+                     &flips);
+    size_t n = (size_t)(space->u_max - space->u_min + 1) *
+               (size_t)(space->v_max - space->v_min + 1) * NSTEPPED;
+    double alone_s = bench_median(alone, runs);
+    double grid_s = bench_median(grid, runs);
+    printf("paper grids at t = %g, %g, %g mm (%zu options, 1 thread): "
+           "cell sides + SP fit + joints %.3f s each option alone, %.3f s "
+           "with its grid's fits kept (medians of %d) = %.2fx; %.2f ms per "
+           "option alone, %.2f with; %zu verdicts differ\n", STEPPED_MM[0],
+           STEPPED_MM[1], STEPPED_MM[2], n, alone_s, grid_s, runs,
+           grid_s / alone_s, 1e3 * alone_s / (double)n,
+           1e3 * grid_s / (double)n, flips);
 }
 
 int main(int argc, char **argv)
@@ -246,8 +345,20 @@ int main(int argc, char **argv)
     }
     built_option_free(&built);
     joints_free(&joints);
-    if (space_runs > 0)
-        space_bench(&surface, &points, space_runs);
+    if (space_runs > 0) {
+        /* The paper's space (study_request_defaults) and its lattice. */
+        struct study_request request;
+        study_request_defaults(&request);
+        struct panel_lattice *lattice;
+        if (optimize_lattice(&surface, &request.settings, &lattice,
+                             &err) != FACET_OK)
+            fail(&err);
+        space_bench(&surface, lattice, &request.settings, &points,
+                    space_runs);
+        stepped_bench(&surface, lattice, &request.settings, &points,
+                      space_runs);
+        panel_lattice_free(lattice);
+    }
     fit_points_free(&points);
     surface_close(&surface);
     return 0;

@@ -761,6 +761,183 @@ static void test_fast_fit_is_the_least_squares_fit(void **state)
     assert_true(fitted >= 12);
 }
 
+/* ---- A grid's fits kept across thresholds (grid_fits) ----------------- */
+
+struct grid_tally {
+    size_t options, sp, fitted, misfits, cones;
+    double deviation, gap, kink;   /* largest differences (m, m, rad) */
+};
+
+/* The nu x nv grid of s classified at each threshold of t (m, in that
+ * order, so that some panels turn SP, and some cylinders miss, only at a
+ * later one), built and measured with one grid_fits and each option on its
+ * own (cell_sides_sample + built_option_fit): the same verdict for every
+ * panel, the same counts and joints, and the numbers within sp_fit.h's
+ * precision (deviations and gaps to 1 um, kinks to 1e-5 rad; a misfit's
+ * best cone, path-dependent, is held to its verdict only). */
+static void compare_grid_fits(const struct surface *s, int nu, int nv,
+                              const double *t, int nt,
+                              struct grid_tally *tally)
+{
+    struct facet_error err;
+    struct fit_points points;
+    struct option o;
+    struct grid_fits grid;
+    panelize(s, nu, nv, t[0], &o);
+    if (fit_points_build(&s->panels, &points, &err) != FACET_OK ||
+        grid_fits_init(&s->mesh, &s->uv, &s->curvature, &points, &o.panels,
+                       &grid, &err) != FACET_OK)
+        fail_msg("%s", err.message);
+    for (int x = 0; x < nt; x++) {
+        struct classify_options options;
+        classify_defaults(&options);
+        options.threshold = t[x];
+        classify_panels(&o.panels, &options, &o.totals);
+        struct cell_sides alone_sides, sides;
+        struct built_option alone, built;
+        struct joints alone_joints, joints;
+        if (cell_sides_sample(&s->mesh, &s->uv, &s->curvature, &o.panels,
+                              &alone_sides, &err) != FACET_OK ||
+            built_option_fit(&s->mesh, &points, &o.panels, &alone_sides,
+                             t[x], &alone, &err) != FACET_OK ||
+            joints_measure(&o.panels, &alone, &alone_sides, 0.006, PI / 180,
+                           &alone_joints, &err) != FACET_OK ||
+            grid_fits_option(&grid, &o.panels, t[x], &built, &sides,
+                             &err) != FACET_OK ||
+            joints_measure(&o.panels, &built, &sides, 0.006, PI / 180,
+                           &joints, &err) != FACET_OK)
+            fail_msg("%s", err.message);
+        tally->options++;
+        assert_int_equal(built.sp_fitted, alone.sp_fitted);
+        assert_int_equal(built.sp_misfits, alone.sp_misfits);
+        for (size_t k = 0; k < o.panels.npanels; k++) {
+            const struct built_panel *a = &alone.panels[k];
+            const struct built_panel *b = &built.panels[k];
+            if (a->type != b->type || a->fitted != b->fitted ||
+                a->misfit != b->misfit)
+                fail_msg("%d x %d at t = %g mm, panel %zu: built %d fitted "
+                         "%d misfit %d alone, %d %d %d with the grid's "
+                         "fits", nu, nv, t[x] * 1e3, k, a->type, a->fitted,
+                         a->misfit, b->type, b->fitted, b->misfit);
+            if (o.panels.panels[k].type != TYPE_SP)
+                continue;
+            tally->sp++;
+            tally->fitted += (size_t)a->fitted;
+            tally->misfits += (size_t)a->misfit;
+            tally->cones += (size_t)!isnan(a->best_cone);
+            double d = fabs(a->best_cylinder - b->best_cylinder);
+            if (a->fitted)
+                d = fmax(d, fabs(a->sp_deviation - b->sp_deviation));
+            if (!(d <= 1e-6) &&
+                !(isnan(a->best_cylinder) && isnan(b->best_cylinder)))
+                fail_msg("%d x %d at t = %g mm, panel %zu: deviations "
+                         "differ by %.3e m", nu, nv, t[x] * 1e3, k, d);
+            if (!isnan(d))
+                tally->deviation = fmax(tally->deviation, d);
+        }
+        assert_int_equal(joints.nedges, alone_joints.nedges);
+        assert_int_equal(joints.gaps_over, alone_joints.gaps_over);
+        assert_int_equal(joints.kinks_over, alone_joints.kinks_over);
+        for (size_t e = 0; e < joints.nedges; e++) {
+            assert_int_equal(joints.edges[e].side, alone_joints.edges[e].side);
+            double gap = fabs(joints.edges[e].gap - alone_joints.edges[e].gap);
+            double kink =
+                fabs(joints.edges[e].kink - alone_joints.edges[e].kink);
+            if (!(gap <= 1e-6 && kink <= 1e-5))
+                fail_msg("%d x %d at t = %g mm, joint %zu: gaps differ by "
+                         "%.3e m, kinks by %.3e rad", nu, nv, t[x] * 1e3, e,
+                         gap, kink);
+            tally->gap = fmax(tally->gap, gap);
+            tally->kink = fmax(tally->kink, kink);
+        }
+        joints_free(&joints);
+        joints_free(&alone_joints);
+        built_option_free(&built);
+        built_option_free(&alone);
+        cell_sides_free(&alone_sides);
+    }
+    grid_fits_free(&grid);
+    fit_points_free(&points);
+    option_free(&o);
+}
+
+static void print_tally(const char *what, const struct grid_tally *t)
+{
+    printf("grid fits against each option alone, %s: %zu options, %zu SP "
+           "panels (%zu fitted, %zu misfits, %zu with cones tried); "
+           "largest differences %.2e m in deviation, %.2e m in gap, %.2e "
+           "rad in kink\n", what, t->options, t->sp, t->fitted, t->misfits,
+           t->cones, t->deviation, t->gap, t->kink);
+}
+
+/* The thresholds compared: out of order, so that the grid's fits are
+ * made at several of them. */
+static const double grid_thresholds[] = {0.005, 0.002, 0.0035, 0.001,
+                                         0.003};
+
+/* On the example roof (single- and double-curved, trimmed nowhere). */
+static void test_grid_fits_example(void **state)
+{
+    (void)state;
+    char path[] = "/tmp/facet_test_joint_XXXXXX";
+    int fd = mkstemp(path);
+    assert_true(fd >= 0);
+    FILE *obj = fdopen(fd, "w");
+    struct facet_error err;
+    assert_int_equal(example_write("roof", 96, obj, &err), FACET_OK);
+    fclose(obj);
+    struct surface s;
+    open_written(path, &s);
+    struct grid_tally tally;
+    memset(&tally, 0, sizeof tally);
+    int grids[][2] = {{20, 35}, {23, 41}, {37, 49}};
+    for (int g = 0; g < 3; g++)
+        compare_grid_fits(&s, grids[g][0], grids[g][1], grid_thresholds,
+                          5, &tally);
+    print_tally("example roof", &tally);
+    assert_true(tally.fitted > 0 && tally.misfits > 0 && tally.cones > 0);
+    surface_close(&s);
+}
+
+/* On real surfaces from ../shared/data (FACET_DATA): irregular
+ * triangles, trimmed boundaries, a conical roof. */
+static void test_grid_fits_real_surfaces(void **state)
+{
+    (void)state;
+    const char *data = getenv("FACET_DATA");
+    if (data == NULL)
+        data = "../shared/data";
+    const char *files[] = {"conical1.obj", "barrel.obj", "hemisphere.obj",
+                           "botanic-garden-bubble-0.obj", "igloo.obj"};
+    struct grid_tally tally;
+    memset(&tally, 0, sizeof tally);
+    for (size_t f = 0; f < sizeof files / sizeof *files; f++) {
+        char path[1024];
+        snprintf(path, sizeof path, "%s/%s", data, files[f]);
+        if (access(path, R_OK) != 0) {
+            /* tests/run.sh lists this line and counts the test skipped. */
+            print_message("skipped: %s is absent (the real surfaces of "
+                          "../shared/data)\n", path);
+            skip();
+        }
+        struct mesh_options options = {UNITS_M, NULL, NULL};
+        struct surface s;
+        struct facet_error err;
+        int rc = surface_open(path, &options, &s, &err);
+        if (rc == FACET_OK)
+            rc = surface_prepare(&s, 0, PARAM_AUTO, &err);
+        if (rc != FACET_OK)
+            fail_msg("%s: %s", path, err.message);
+        int grids[][2] = {{8, 11}, {15, 13}};
+        for (int g = 0; g < 2; g++)
+            compare_grid_fits(&s, grids[g][0], grids[g][1], grid_thresholds,
+                              5, &tally);
+        surface_close(&s);
+    }
+    print_tally("real surfaces", &tally);
+    assert_true(tally.fitted > 0 && tally.misfits > 0);
+}
+
 /* ---- Joint length (joint_length.h) -------------------------------------- */
 
 /* The joint length of s at nu x nv. */
@@ -985,6 +1162,8 @@ int main(void)
         cmocka_unit_test(test_sphere_fits_no_cylinder),
         cmocka_unit_test(test_symmetry),
         cmocka_unit_test(test_fast_fit_is_the_least_squares_fit),
+        cmocka_unit_test(test_grid_fits_example),
+        cmocka_unit_test(test_grid_fits_real_surfaces),
         cmocka_unit_test(test_joint_length_plane),
         cmocka_unit_test(test_joint_length_cylinder),
         cmocka_unit_test(test_joint_length_disc),
