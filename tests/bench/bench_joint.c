@@ -18,19 +18,15 @@
  * misfits). The per-surface gathering of fit points (fit_points_build) is
  * timed apart: it is done once per surface, like the curvature.
  *
- * Then the paper's whole space (study_request_defaults: u 20:40 x v 35:50
- * at 3 mm, 336 options from the run's lattice) is evaluated on one thread
- * as a run evaluates it (option_evaluate_lattice: panels, classes, moulds,
- * joint length), without and with the panels as built and their joints,
- * each pass SPACE_RUNS times in turn (default 3; 0 skips the space, for a
- * profile of the one option), and the ratio of the medians is held to its
- * target of 1.5.
+ * (The paper's whole space with and without panels as built is timed by
+ * bench_optimize, with the other stages of the evaluation.)
  *
- * Last, the paper's grids at three thresholds each (as a stepped space
- * evaluates them, a grid's points together): the cell sides, SP fits and
- * joints of each option alone, and with its grid's fits kept across the
- * thresholds (sp_fit.h's grid_fits), each timed on the same options in
- * the same pass, SPACE_RUNS passes.
+ * Last, the paper's grids (study_request_defaults: u 20:40 x v 35:50) at
+ * three thresholds each (as a stepped space evaluates them, a grid's
+ * points together): the cell sides, SP fits and joints of each option
+ * alone, and with its grid's fits kept across the thresholds (sp_fit.h's
+ * grid_fits), each timed on the same options in the same pass, SPACE_RUNS
+ * passes (default 3; 0 skips them, for a profile of the one option).
  */
 #include <math.h>
 #include <stdio.h>
@@ -48,7 +44,6 @@
 #define TARGET_MS 10.0
 #define SPACE_RUNS 3
 #define SPACE_RUNS_MAX 21
-#define SPACE_TARGET 1.5
 #define MAX_GAP 0.006                      /* m */
 #define MAX_KINK (1.0 * M_PI / 180)        /* rad */
 
@@ -77,68 +72,6 @@ static void joints_alone(const struct surface *surface,
         fail(&err);
     joints_free(&measured);
     cell_sides_free(&sides);
-}
-
-/* One pass over the paper's space on this thread, each option evaluated
- * as a run does, and with joints also built and measured: its CPU time
- * (s). Adds the SP misfits of the pass to *misfits. */
-static double space_pass(const struct surface *surface,
-                         const struct panel_lattice *lattice,
-                         const struct fit_points *points,
-                         const struct optimize_settings *s, int joints,
-                         size_t *misfits)
-{
-    struct facet_error err;
-    double start = bench_cpu_now();
-    const struct design_space *space = &s->space;
-    for (int nu = space->u_min; nu <= space->u_max; nu++)
-        for (int nv = space->v_min; nv <= space->v_max; nv++) {
-            struct option_params params = option_params_at(
-                &s->base, nu, nv, space->t_min_mm);
-            struct panelization panels;
-            struct option_totals totals;
-            if (option_evaluate_lattice(surface, lattice, &params, &panels,
-                                        &totals, &err) != FACET_OK)
-                fail(&err);
-            if (joints) {
-                struct built_option built;
-                joints_alone(surface, points, &panels,
-                             params.classify.threshold, &built);
-                *misfits += built.sp_misfits;
-                built_option_free(&built);
-            }
-            panelization_free(&panels);
-        }
-    return bench_cpu_now() - start;
-}
-
-/* The paper's space without and with the joints; prints the ratio. */
-static void space_bench(const struct surface *surface,
-                        const struct panel_lattice *lattice,
-                        const struct optimize_settings *s,
-                        const struct fit_points *points, int runs)
-{
-    const struct design_space *space = &s->space;
-    size_t n = (size_t)(space->u_max - space->u_min + 1) *
-               (size_t)(space->v_max - space->v_min + 1);
-    double without[SPACE_RUNS_MAX], with[SPACE_RUNS_MAX];
-    size_t misfits = 0;
-    for (int run = 0; run < runs; run++) {
-        without[run] = space_pass(surface, lattice, points, s, 0, &misfits);
-        misfits = 0;
-        with[run] = space_pass(surface, lattice, points, s, 1, &misfits);
-    }
-    double without_s = bench_median(without, runs);
-    double with_s = bench_median(with, runs);
-    printf("paper space (u %d:%d x v %d:%d at %g mm = %zu options, 1 "
-           "thread, %s): %.3f s without joints, %.3f s with them "
-           "(medians of %d) = %.2fx: %s (target <= %.1fx); %.2f ms per "
-           "option more; %zu SP misfits over the space\n",
-           space->u_min, space->u_max, space->v_min, space->v_max,
-           space->t_min_mm, n, lattice != NULL ? "lattice" : "no lattice",
-           without_s, with_s, runs, with_s / without_s,
-           with_s <= SPACE_TARGET * without_s ? "met" : "not met",
-           SPACE_TARGET, 1e3 * (with_s - without_s) / (double)n, misfits);
 }
 
 /* The thresholds a stepped space evaluates at each grid (mm), out of
@@ -353,8 +286,6 @@ int main(int argc, char **argv)
         if (optimize_lattice(&surface, &request.settings, &lattice,
                              &err) != FACET_OK)
             fail(&err);
-        space_bench(&surface, lattice, &request.settings, &points,
-                    space_runs);
         stepped_bench(&surface, lattice, &request.settings, &points,
                       space_runs);
         panel_lattice_free(lattice);
