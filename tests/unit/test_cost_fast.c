@@ -43,22 +43,12 @@
 #include "core/search/optimize.h"
 #include "core/surface/example.h"
 #include "core/surface/surface.h"
+#include "tests/support/surface_fixture.h"
 
 static void open_example(const char *name, int res, struct surface *s)
 {
-    char path[] = "/tmp/facet_test_cost_fast_XXXXXX";
-    int fd = mkstemp(path);
-    assert_true(fd >= 0);
-    FILE *out = fdopen(fd, "w");
     struct facet_error err;
-    assert_int_equal(example_write(name, res, out, &err), FACET_OK);
-    fclose(out);
-    struct mesh_options options = {UNITS_M, NULL, NULL};
-    int rc = surface_open(path, &options, s, &err);
-    if (rc == FACET_OK)
-        rc = surface_prepare(s, 0, PARAM_AUTO, &err);
-    unlink(path);
-    if (rc != FACET_OK)
+    if (surface_fixture_example(name, res, s, &err) != FACET_OK)
         fail_msg("%s: %s", name, err.message);
 }
 
@@ -388,26 +378,14 @@ static void test_batch_totals(void **state)
 static void test_real_surfaces(void **state)
 {
     (void)state;
-    const char *data = getenv("FACET_DATA");
-    if (data == NULL)
-        data = "../shared/data";
     const char *files[] = {"igloo.obj", "botanic-garden-bubble-0.obj"};
     for (size_t f = 0; f < sizeof files / sizeof *files; f++) {
         char path[1024];
-        snprintf(path, sizeof path, "%s/%s", data, files[f]);
-        if (access(path, R_OK) != 0) {
-            /* tests/run.sh lists this line and counts the test skipped. */
-            print_message("skipped: %s is absent (the real surfaces of "
-                          "../shared/data)\n", path);
+        if (!surface_fixture_data(files[f], path, sizeof path))
             skip();
-        }
-        struct mesh_options options = {UNITS_M, NULL, NULL};
         struct surface s;
         struct facet_error err;
-        int rc = surface_open(path, &options, &s, &err);
-        if (rc == FACET_OK)
-            rc = surface_prepare(&s, 0, PARAM_AUTO, &err);
-        if (rc != FACET_OK)
+        if (surface_fixture_open(path, &s, &err) != FACET_OK)
             fail_msg("%s: %s", path, err.message);
         const double tolerance[] = {0.003, 0.05};
         check_space(&s, 13, 14, 17, 18, tolerance, 2);

@@ -29,6 +29,7 @@
 #include "core/out/svg.h"
 #include "core/out/svg_map.h"
 #include "core/out/svg_plot.h"
+#include "tests/support/surface_fixture.h"
 
 /* An evaluated option with its geometry. */
 struct fixture {
@@ -42,11 +43,7 @@ struct fixture {
 static void open_surface(const char *path, struct surface *s)
 {
     struct facet_error err;
-    struct mesh_options options = {UNITS_M, NULL, NULL};
-    int rc = surface_open(path, &options, s, &err);
-    if (rc == FACET_OK)
-        rc = surface_prepare(s, 0, PARAM_AUTO, &err);
-    if (rc != FACET_OK)
+    if (surface_fixture_open(path, s, &err) != FACET_OK)
         fail_msg("%s: %s", path, err.message);
 }
 
@@ -74,15 +71,9 @@ static void evaluate(struct fixture *f, int nu, int nv, double threshold)
 static void example_fixture(struct fixture *f, const char *name, int res,
                             int nu, int nv)
 {
-    char path[] = "/tmp/facet_test_export_XXXXXX";
-    int fd = mkstemp(path);
-    assert_true(fd >= 0);
-    FILE *out = fdopen(fd, "w");
     struct facet_error err;
-    assert_int_equal(example_write(name, res, out, &err), FACET_OK);
-    fclose(out);
-    open_surface(path, &f->surface);
-    unlink(path);
+    if (surface_fixture_example(name, res, &f->surface, &err) != FACET_OK)
+        fail_msg("%s: %s", name, err.message);
     evaluate(f, nu, nv, 0.003);
 }
 

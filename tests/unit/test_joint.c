@@ -38,6 +38,7 @@
 #include "core/joint/joint_length.h"
 #include "core/surface/example.h"
 #include "core/surface/surface.h"
+#include "tests/support/surface_fixture.h"
 
 #define PI 3.14159265358979323846
 
@@ -904,29 +905,17 @@ static void test_grid_fits_example(void **state)
 static void test_grid_fits_real_surfaces(void **state)
 {
     (void)state;
-    const char *data = getenv("FACET_DATA");
-    if (data == NULL)
-        data = "../shared/data";
     const char *files[] = {"conical1.obj", "barrel.obj", "hemisphere.obj",
                            "botanic-garden-bubble-0.obj", "igloo.obj"};
     struct grid_tally tally;
     memset(&tally, 0, sizeof tally);
     for (size_t f = 0; f < sizeof files / sizeof *files; f++) {
         char path[1024];
-        snprintf(path, sizeof path, "%s/%s", data, files[f]);
-        if (access(path, R_OK) != 0) {
-            /* tests/run.sh lists this line and counts the test skipped. */
-            print_message("skipped: %s is absent (the real surfaces of "
-                          "../shared/data)\n", path);
+        if (!surface_fixture_data(files[f], path, sizeof path))
             skip();
-        }
-        struct mesh_options options = {UNITS_M, NULL, NULL};
         struct surface s;
         struct facet_error err;
-        int rc = surface_open(path, &options, &s, &err);
-        if (rc == FACET_OK)
-            rc = surface_prepare(&s, 0, PARAM_AUTO, &err);
-        if (rc != FACET_OK)
+        if (surface_fixture_open(path, &s, &err) != FACET_OK)
             fail_msg("%s: %s", path, err.message);
         int grids[][2] = {{8, 11}, {15, 13}};
         for (int g = 0; g < 2; g++)

@@ -25,6 +25,7 @@
 #include "core/classify/option.h"
 #include "core/surface/surface.h"
 #include "core/base/vec3.h"
+#include "tests/support/surface_fixture.h"
 
 #define PI 3.14159265358979323846
 
@@ -478,15 +479,6 @@ static void test_charts(void **state)
 
 /* --- the real files --- */
 
-static int open_data(const char *name, char *path, size_t size)
-{
-    const char *data = getenv("FACET_DATA");
-    snprintf(path, size, "%s/%s", data ? data : "../shared/data", name);
-    if (access(path, R_OK) == 0)
-        return 1;
-    print_message("skipped: %s is not there (set FACET_DATA)\n", path);
-    return 0;
-}
 
 /* The file's quad faces, by brute force from the OBJ itself: the two
  * triangles of face f and their areas, in m^2. */
@@ -512,15 +504,11 @@ static void face_areas(const struct obj_file *obj, double *area)
 static void check_real_grid(const char *name, int nu, int nv)
 {
     char path[1024];
-    if (!open_data(name, path, sizeof path))
+    if (!surface_fixture_data(name, path, sizeof path))
         skip();
-    struct mesh_options options = {UNITS_M, NULL, NULL};
     struct surface s;
     struct facet_error err;
-    int rc = surface_open(path, &options, &s, &err);
-    if (rc == FACET_OK)
-        rc = surface_prepare(&s, 0, PARAM_AUTO, &err);
-    if (rc != FACET_OK)
+    if (surface_fixture_open(path, &s, &err) != FACET_OK)
         fail_msg("%s: %s", path, err.message);
     assert_int_equal(s.param.method, PARAM_GRID);
     assert_int_equal(s.param.grid_nu, nu);
@@ -588,7 +576,7 @@ static void test_fish_atlas(void **state)
 {
     (void)state;
     char path[1024];
-    if (!open_data("fish.obj", path, sizeof path))
+    if (!surface_fixture_data("fish.obj", path, sizeof path))
         skip();
     struct mesh_options options = {UNITS_M, NULL, NULL};
     struct surface s;
