@@ -22,6 +22,30 @@ const struct option_table_column option_table_paper[] = {
     {"rank", 4, 5},
 };
 
+int option_table_for_objectives(const char *objectives,
+                                struct option_table_column *columns)
+{
+    int n = OPTION_TABLE_PAPER;
+    memcpy(columns, option_table_paper, sizeof option_table_paper);
+    const char *p = objectives;
+    while (p != NULL && *p != '\0' && n < OPTION_TABLE_MAX) {
+        size_t len = strcspn(p, ",");
+        char name[64];
+        snprintf(name, sizeof name, "%.*s", (int)len, p);
+        const struct option_column *c = store_option_column(name);
+        int listed = c == NULL;
+        for (int k = 0; k < n && !listed; k++)
+            listed = columns[k].column != NULL &&
+                     strcmp(columns[k].column, c->name) == 0;
+        if (!listed)
+            columns[n++] = (struct option_table_column){c->name, 10, 9};
+        p += len;
+        if (*p == ',')
+            p++;
+    }
+    return n;
+}
+
 void option_table_heads(const struct option_table_column *columns, int n,
                         struct text_column *heads)
 {

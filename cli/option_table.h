@@ -26,6 +26,16 @@ struct option_table_column {
 #define OPTION_TABLE_PAPER 11
 extern const struct option_table_column option_table_paper[OPTION_TABLE_PAPER];
 
+/* The paper's columns, then each of objectives (a run's objectives, as
+ * "cost,moulds,max_gap") that is an option column the paper's table lacks,
+ * in the order given, kept as long as the objectives already there: a run
+ * that searched for moulds shows its moulds. Into columns (room for
+ * OPTION_TABLE_MAX); returns how many. */
+#define OPTION_TABLE_OBJECTIVES 8
+#define OPTION_TABLE_MAX (OPTION_TABLE_PAPER + OPTION_TABLE_OBJECTIVES)
+int option_table_for_objectives(const char *objectives,
+                                struct option_table_column *columns);
+
 /* The longest cell text, with its terminator. */
 #define OPTION_TABLE_CELL 64
 

@@ -84,23 +84,24 @@ int run_table_print(FILE *out, struct store *store, const char *db,
         free(listed);
         return facet_error_set(err, FACET_EWORK, "out of memory (table)");
     }
-    struct text_column heads[OPTION_TABLE_PAPER + 1];
-    option_table_heads(option_table_paper, OPTION_TABLE_PAPER, heads);
-    heads[OPTION_TABLE_PAPER] = (struct text_column){"", "", 15, 1, 9, 0};
-    struct text_table t = {heads, OPTION_TABLE_PAPER + 1, {0}, 0, 0};
+    struct option_table_column columns[OPTION_TABLE_MAX];
+    int ncolumns = option_table_for_objectives(info.objectives, columns);
+    struct text_column heads[OPTION_TABLE_MAX + 1];
+    option_table_heads(columns, ncolumns, heads);
+    heads[ncolumns] = (struct text_column){"", "", 15, 1, 9, 0};
+    struct text_table t = {heads, ncolumns + 1, {0}, 0, 0};
     text_table_fit(&t, text_table_width(out, wide));
     fputc('\n', out);
     text_table_head(out, &t);
     for (size_t k = 0; k < n; k++) {
         const struct option_row *o = &listed[order[k]];
-        char text[OPTION_TABLE_PAPER][OPTION_TABLE_CELL], marks[32];
-        const char *cell[OPTION_TABLE_PAPER + 1];
-        option_table_cells(option_table_paper, OPTION_TABLE_PAPER, run, o,
-                           text, cell);
+        char text[OPTION_TABLE_MAX][OPTION_TABLE_CELL], marks[32];
+        const char *cell[OPTION_TABLE_MAX + 1];
+        option_table_cells(columns, ncolumns, run, o, text, cell);
         snprintf(marks, sizeof marks, "%s%s%s", o->knee ? "knee" : "",
                  o->knee && !o->totals.feasible ? " " : "",
                  o->totals.feasible ? "" : "infeasible");
-        cell[OPTION_TABLE_PAPER] = marks;
+        cell[ncolumns] = marks;
         text_table_row(out, &t, cell);
     }
     if ((int64_t)n < info.options) {

@@ -537,4 +537,17 @@ stdout_has "coarse mesh: runs says it" '^run 1: warning: the mesh is coarse'
 run "$FACET" optimize "$WORK/dome120.obj" --db "$WORK/fine.db" --u 10:50 --v 10:50 --threshold 3
 if grep -q 'warning' "$ERR"; then fail "fine mesh: no warning"; else pass "fine mesh: no warning"; fi
 same "fine mesh: nothing stored" "$(sqlite3 "$WORK/fine.db" "SELECT warnings = '' FROM runs")" 1
+
+# The run's table shows the objectives beyond the paper's columns: a search
+# for moulds and kinks lists them, each Pareto row's values as SQLite holds
+# them (moulds whole, max kink in degrees to 2 decimals).
+"$FACET" example roof --res 30 -o "$WORK/objroof.obj" --force >/dev/null || exit 1
+run env COLUMNS=200 "$FACET" optimize "$WORK/objroof.obj" --db "$WORK/obj.db" \
+    --u 4:6 --v 4:6 --objectives cost,moulds,max_kink --max-panel-area 1000 --table 3
+stdout_has "the table heads the objectives' columns" 'rank +moulds +max kink'
+got=$(grep -E '^ +[0-9]+ \*' "$OUT" | sed -E 's/ (knee|infeasible|knee infeasible)$//' |
+      awk '{print $1, $(NF-1), $NF}' | sort -n)
+want=$(sqlite3 -separator ' ' "$WORK/obj.db" \
+    "SELECT number, moulds, printf('%.2f', max_kink) FROM options WHERE rank = 1 ORDER BY number")
+same "its rows hold each Pareto option's moulds and max kink" "$got" "$want"
 exit 0
