@@ -231,8 +231,8 @@ start 80 24 -- demo.db
 check "runs" '^ +1 done'
 keys a
 check "the New run form" '^ New run into demo\.db'
-keys roof.obj Down Down C-u 4:70 Down C-u 4:70 Down C-u 1:5:1 F5
-check "a run of 22,445 options starts and its table opens" '^ Run 2 .*\| running'
+keys roof.obj Down Down C-u 4:46 Down C-u 4:46 Down C-u 1:5:1 F5
+check "a run of 9,245 options starts and its table opens" '^ Run 2 .*\| running'
 keys F10
 check "F10 asks while a run works" 'A run is working: quit and stop it \(it stays resumable\)\? \(y/n\)'
 keys n
