@@ -12,6 +12,15 @@
 #include "core/joint/joint_length.h"
 #include "core/mould/mould.h"
 
+struct mould_options option_mould_options(const struct option_params *params)
+{
+    struct mould_options mould = {
+        params->mould_tol_given ? params->mould_tol
+                                : params->classify.threshold,
+        params->mould_mirror};
+    return mould;
+}
+
 void option_params_defaults(struct option_params *params)
 {
     memset(params, 0, sizeof *params);
@@ -182,10 +191,7 @@ int option_classify(const struct surface *surface,
     rc = build_and_measure(surface, &params->classify, panels, totals, err);
     if (rc != FACET_OK)
         return rc;
-    struct mould_options mould = {
-        params->mould_tol_given ? params->mould_tol
-                                : params->classify.threshold,
-        params->mould_mirror};
+    struct mould_options mould = option_mould_options(params);
     struct mould_families families;
     rc = mould_families_build(&surface->mesh, &surface->uv, panels, &mould,
                               &families, err);

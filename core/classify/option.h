@@ -37,6 +37,10 @@ struct option_params {
     int mould_mirror;                    /* mirror images share a mould */
 };
 
+/* The mould family settings of params (mould.h): its tolerance, or the
+ * option's flatness threshold when none was given, and its mirrors. */
+struct mould_options option_mould_options(const struct option_params *params);
+
 /* The paper's defaults: classify_defaults, panels taking the extremes of
  * their samples, no grid (0 x 0: set it with option_params_at), mould
  * tolerance the flatness threshold, no mirrors. */

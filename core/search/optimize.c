@@ -822,23 +822,8 @@ int optimize_run(const struct surface *surface,
     struct joint_lines lines;
     memset(&lines, 0, sizeof lines);
     if (rc == FACET_OK && lattice != NULL) {
-        const struct design_space *space = &settings->space;
-        size_t nsides[2] = {(size_t)(space->u_max - space->u_min + 1),
-                            (size_t)(space->v_max - space->v_min + 1)};
-        int *side[2] = {malloc(nsides[0] * sizeof(int)),
-                        malloc(nsides[1] * sizeof(int))};
-        if (side[0] == NULL || side[1] == NULL)
-            rc = facet_error_set(err, FACET_EWORK, "out of memory");
-        for (size_t k = 0; rc == FACET_OK && k < nsides[0]; k++)
-            side[0][k] = space->u_min + (int)k;
-        for (size_t k = 0; rc == FACET_OK && k < nsides[1]; k++)
-            side[1][k] = space->v_min + (int)k;
-        if (rc == FACET_OK)
-            rc = joint_lines_build(&surface->joints, &surface->mesh,
-                                   &surface->uv, (const int *const *)side,
-                                   nsides, settings->jobs, &lines, err);
-        free(side[0]);
-        free(side[1]);
+        rc = optimize_joint_lines(surface, &settings->space, settings->jobs,
+                                  &lines, err);
         s.lines = &lines;
     }
     if (rc == FACET_OK) {
@@ -881,4 +866,29 @@ int optimize_lattice(const struct surface *surface,
     return panel_lattice_build(&surface->panels, space->u_min, space->u_max,
                                space->v_min, space->v_max, settings->jobs,
                                out, err);
+}
+
+int optimize_joint_lines(const struct surface *surface,
+                         const struct design_space *space, int jobs,
+                         struct joint_lines *out, struct facet_error *err)
+{
+    memset(out, 0, sizeof *out);
+    size_t nsides[2] = {(size_t)(space->u_max - space->u_min + 1),
+                        (size_t)(space->v_max - space->v_min + 1)};
+    int *side[2] = {malloc(nsides[0] * sizeof(int)),
+                    malloc(nsides[1] * sizeof(int))};
+    int rc = FACET_OK;
+    if (side[0] == NULL || side[1] == NULL)
+        rc = facet_error_set(err, FACET_EWORK, "out of memory");
+    for (size_t k = 0; rc == FACET_OK && k < nsides[0]; k++)
+        side[0][k] = space->u_min + (int)k;
+    for (size_t k = 0; rc == FACET_OK && k < nsides[1]; k++)
+        side[1][k] = space->v_min + (int)k;
+    if (rc == FACET_OK)
+        rc = joint_lines_build(&surface->joints, &surface->mesh,
+                               &surface->uv, (const int *const *)side,
+                               nsides, jobs, out, err);
+    free(side[0]);
+    free(side[1]);
+    return rc;
 }

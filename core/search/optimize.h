@@ -178,4 +178,12 @@ int optimize_lattice(const struct surface *surface,
                      const struct optimize_settings *settings,
                      struct panel_lattice **out, struct facet_error *err);
 
+/* The joint lines (joint_length.h) of every grid of space, measured once
+ * on jobs threads into *out (caller-owned, released with joint_lines_free,
+ * also after a failure): what a run with a lattice takes every option's
+ * joint length from. */
+int optimize_joint_lines(const struct surface *surface,
+                         const struct design_space *space, int jobs,
+                         struct joint_lines *out, struct facet_error *err);
+
 #endif

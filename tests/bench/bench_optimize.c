@@ -135,13 +135,6 @@ int main(int argc, char **argv)
      * their turns too) and in wall time. */
     enum { COST_RUNS = 5 };
     double stage_cpu[3][COST_RUNS], stage_wall[3][COST_RUNS];
-    int usides[64], vsides[64];
-    size_t nsides[2] = {0, 0};
-    for (int u = s->space.u_min; u <= s->space.u_max && nsides[0] < 64; u++)
-        usides[nsides[0]++] = u;
-    for (int v = s->space.v_min; v <= s->space.v_max && nsides[1] < 64; v++)
-        vsides[nsides[1]++] = v;
-    const int *const sides[2] = {usides, vsides};
     for (int rep = 0; rep < COST_RUNS; rep++) {
         for (int stage = 0; stage < 3; stage++) {
             start = bench_now();
@@ -154,9 +147,8 @@ int main(int argc, char **argv)
                 struct joint_lines lines;
                 memset(&lines, 0, sizeof lines);
                 if (stage == STAGE_MOULDS &&
-                    joint_lines_build(&surface.joints, &surface.mesh,
-                                      &surface.uv, sides, nsides, 1, &lines,
-                                      &err) != FACET_OK)
+                    optimize_joint_lines(&surface, &s->space, 1, &lines,
+                                         &err) != FACET_OK)
                     die(&err);
                 for (size_t k = 0; k < n; k++) {
                     struct option_totals staged;

@@ -24,10 +24,7 @@ int evaluation_stage_run(const struct surface *surface,
         totals->joint_length = joint_length_lines(lines, &surface->joints,
                                                   &surface->mesh,
                                                   &surface->uv, &panels);
-        struct mould_options mould = {
-            params->mould_tol_given ? params->mould_tol
-                                    : params->classify.threshold,
-            params->mould_mirror};
+        struct mould_options mould = option_mould_options(params);
         struct mould_families families;
         rc = mould_families_build(&surface->mesh, &surface->uv, &panels,
                                   &mould, &families, err);
