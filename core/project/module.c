@@ -25,20 +25,9 @@ static double value_at(double min, double step, size_t k)
 static int parse_range(const char *text, const char *end, double out[3])
 {
     double v[3];
-    int n = 0;
-    const char *p = text;
-    for (;;) {
-        const char *stop;
-        if (n == 3 || numparse_double(p, end, &v[n], &stop) != NUMPARSE_OK)
-            return -1;
-        n++;
-        p = stop;
-        if (p == end)
-            break;
-        if (*p != ':')
-            return -1;
-        p++;
-    }
+    int n;
+    if (numparse_colon_list(text, end, v, 3, &n) != NUMPARSE_OK)
+        return -1;
     out[0] = v[0];
     out[1] = n >= 2 ? v[1] : v[0];
     out[2] = n == 3 ? v[2] : MODULE_DEFAULT_STEP;

@@ -93,24 +93,15 @@ int design_space_parse_threshold(const char *text, const char *what,
 {
     double value[3] = {0, 0, 0};
     int n = 0;
-    const char *p = text;
-    for (;;) {
-        const char *end;
-        if (n == 3)
-            return facet_error_set(err, FACET_EINPUT,
-                "%s: '%s' is not MM, A:B or A:B:STEP", what, text);
-        /* Decimal only: 0x10 is no threshold, not 16 mm. */
-        int rc = numparse_double(p, p + strlen(p), &value[n], &end);
-        if (rc != NUMPARSE_OK || !isfinite(value[n]) || value[n] < 0 ||
-            value[n] > 1e6 || (*end != ':' && *end != '\0'))
-            return facet_error_set(err, FACET_EINPUT,
-                "%s: '%s' is not MM, A:B or A:B:STEP (mm, 0 to 1e6)",
-                what, text);
-        n++;
-        if (*end == '\0')
-            break;
-        p = end + 1;
-    }
+    /* Decimal only: 0x10 is no threshold, not 16 mm. */
+    int rc = numparse_colon_list(text, text + strlen(text), value, 3, &n);
+    for (int k = 0; rc == NUMPARSE_OK && k < n; k++)
+        if (!isfinite(value[k]) || value[k] < 0 || value[k] > 1e6)
+            rc = NUMPARSE_RANGE;
+    if (rc != NUMPARSE_OK)
+        return facet_error_set(err, FACET_EINPUT,
+            "%s: '%s' is not MM, A:B or A:B:STEP (mm, 0 to 1e6)", what,
+            text);
     space->t_min_mm = value[0];
     space->t_max_mm = n >= 2 ? value[1] : value[0];
     space->t_step_mm = n == 3 ? value[2] : 0;
