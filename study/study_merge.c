@@ -24,14 +24,16 @@ struct shard_file {
 
 /* The settings that make two runs shards of one run, as text (doubles to
  * the bit), in a fixed order with their names: what a merge compares. */
-enum { RUN_KEYS = 24 };
+enum { RUN_KEYS = 25 };
 static const char *const key_name[RUN_KEYS] = {
     "surface (SHA-256)", "units", "object", "group", "method", "seed",
     "u", "v", "threshold", "prices (FP, SP, DP)", "sp_as_fp",
     "max_panel_area", "curvature_tol", "per_panel", "flip_normals", "uv",
     "uv_method", "objectives", "population and generations", "evaluations",
     "cost model (panel, joint, SP and DP moulds)",
-    "mould tolerance and mirror", "store_panels", "number of shards"};
+    "mould tolerance and mirror",
+    "panels as built (SP fit, gap limit mm, kink limit deg)", "store_panels",
+    "number of shards"};
 
 static void run_keys(const struct run_info *r, char text[RUN_KEYS][160])
 {
@@ -65,6 +67,8 @@ static void run_keys(const struct run_info *r, char text[RUN_KEYS][160])
     snprintf(text[k++], 160, "%.17g, %.17g, %.17g, %.17g", r->panel_cost,
              r->joint_cost, r->mould_cost[TYPE_SP], r->mould_cost[TYPE_DP]);
     snprintf(text[k++], 160, "%.17g, %d", r->mould_tol_mm, r->mould_mirror);
+    snprintf(text[k++], 160, "%d, %.17g, %.17g", r->sp_fit, r->max_gap_mm,
+             r->max_kink_deg);
     snprintf(text[k++], 160, "%s",
              store_run_setting_text(r, RUN_SETTING_STORE_PANELS));
     snprintf(text[k++], 160, "%d", r->shard_count);

@@ -179,6 +179,16 @@ out_sum=$(sha256sum "$WORK/merged.db" | cut -d' ' -f1)
 expect_error "shards of other settings are refused, naming the setting" \
     "other\.db \(shard 2/3\) differs from .*ex1\.db in its threshold" \
     "$FACET" merge "$WORK/merged.db" "$WORK/ex1.db" "$WORK/other.db"
+# Panels as built are settings too: a shard typed by class alone, or held
+# to a kink limit, prices other options than one built as the default.
+"$FACET" optimize "$ROOF" --db "$WORK/byclass.db" "${SPACE[@]}" --sp-fit no --shard 2/3 --table 1 >/dev/null 2>&1
+expect_error "a shard of another SP typing is refused, naming it" \
+    "byclass\.db \(shard 2/3\) differs from .*ex1\.db in its panels as built" \
+    "$FACET" merge "$WORK/merged.db" "$WORK/ex1.db" "$WORK/byclass.db"
+"$FACET" optimize "$ROOF" --db "$WORK/kink.db" "${SPACE[@]}" --max-kink 5 --shard 2/3 --table 1 >/dev/null 2>&1
+expect_error "a shard of another kink limit is refused, naming it" \
+    "kink\.db \(shard 2/3\) differs from .*ex1\.db in its panels as built" \
+    "$FACET" merge "$WORK/merged.db" "$WORK/ex1.db" "$WORK/kink.db"
 "$FACET" example roof --res 30 -o "$WORK/roof2.obj" >/dev/null
 "$FACET" optimize "$WORK/roof2.obj" --db "$WORK/surf.db" "${SPACE[@]}" --shard 2/3 --table 1 >/dev/null 2>&1
 expect_error "shards of another surface are refused" "made from another surface" \
