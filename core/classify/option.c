@@ -58,15 +58,24 @@ int option_evaluate_lattice(const struct surface *surface,
                                   totals, err);
 }
 
-int option_evaluate_shared(const struct surface *surface,
-                           const struct panel_lattice *lattice,
-                           const struct joint_lines *lines,
-                           const struct option_params *params,
-                           struct panelization *panels,
-                           struct option_totals *totals,
-                           struct facet_error *err)
+static int classify_built(const struct surface *surface,
+                          const struct option_params *params, double joints,
+                          struct grid_fits *fits,
+                          struct panelization *panels,
+                          struct option_totals *totals,
+                          struct facet_error *err);
+
+/* option_evaluate_shared, or with fits, option_evaluate_kept. */
+static int evaluate(const struct surface *surface,
+                    const struct panel_lattice *lattice,
+                    const struct joint_lines *lines,
+                    const struct option_params *params,
+                    struct grid_fits *fits, struct panelization *panels,
+                    struct option_totals *totals, struct facet_error *err)
 {
     memset(panels, 0, sizeof *panels);
+    if (fits != NULL)
+        memset(fits, 0, sizeof *fits);
     memset(totals, 0, sizeof *totals);
     if (!surface->prepared)
         return facet_error_set(err, FACET_EWORK,
@@ -83,11 +92,42 @@ int option_evaluate_shared(const struct surface *surface,
                                params->nv, panels, err);
     if (rc != FACET_OK)
         return rc;
-    return option_classify(surface, params,
-                           joint_length_lines(lines, &surface->joints,
-                                              &surface->mesh, &surface->uv,
-                                              panels),
-                           panels, totals, err);
+    if (fits != NULL) {
+        rc = grid_fits_init(&surface->mesh, &surface->uv,
+                            &surface->curvature, &surface->fit, panels, fits,
+                            err);
+        if (rc != FACET_OK)
+            return rc;
+    }
+    return classify_built(surface, params,
+                          joint_length_lines(lines, &surface->joints,
+                                             &surface->mesh, &surface->uv,
+                                             panels),
+                          fits, panels, totals, err);
+}
+
+int option_evaluate_shared(const struct surface *surface,
+                           const struct panel_lattice *lattice,
+                           const struct joint_lines *lines,
+                           const struct option_params *params,
+                           struct panelization *panels,
+                           struct option_totals *totals,
+                           struct facet_error *err)
+{
+    return evaluate(surface, lattice, lines, params, NULL, panels, totals,
+                    err);
+}
+
+int option_evaluate_kept(const struct surface *surface,
+                         const struct panel_lattice *lattice,
+                         const struct joint_lines *lines,
+                         const struct option_params *params,
+                         struct grid_fits *fits, struct panelization *panels,
+                         struct option_totals *totals,
+                         struct facet_error *err)
+{
+    return evaluate(surface, lattice, lines, params, fits, panels, totals,
+                    err);
 }
 
 /* A limit of 0 is none: no joint is over it. */
@@ -126,6 +166,7 @@ static void set_worst_sides(struct panelization *panels,
  * (joint.h) into the panels' worst gap and kink and the totals. */
 static int build_and_measure(const struct surface *surface,
                              const struct classify_options *options,
+                             struct grid_fits *fits,
                              struct panelization *panels,
                              struct option_totals *totals,
                              struct facet_error *err)
@@ -136,11 +177,18 @@ static int build_and_measure(const struct surface *surface,
     memset(&sides, 0, sizeof sides);
     memset(&built, 0, sizeof built);
     memset(&joints, 0, sizeof joints);
-    int rc = cell_sides_sample(&surface->mesh, &surface->uv,
+    int rc;
+    if (fits != NULL) {
+        /* The sides are the grid's, borrowed: not freed here. */
+        rc = grid_fits_option(fits, panels, options->threshold, &built,
+                              &sides, err);
+    } else {
+        rc = cell_sides_sample(&surface->mesh, &surface->uv,
                                &surface->curvature, panels, &sides, err);
-    if (rc == FACET_OK)
-        rc = built_option_fit(&surface->mesh, &surface->fit, panels, &sides,
-                              options->threshold, &built, err);
+        if (rc == FACET_OK)
+            rc = built_option_fit(&surface->mesh, &surface->fit, panels,
+                                  &sides, options->threshold, &built, err);
+    }
     if (rc == FACET_OK)
         rc = joints_measure(panels, &built, &sides,
                             limit_or_none(options->max_gap),
@@ -174,7 +222,8 @@ static int build_and_measure(const struct surface *surface,
     }
     joints_free(&joints);
     built_option_free(&built);
-    cell_sides_free(&sides);
+    if (fits == NULL)
+        cell_sides_free(&sides);
     return rc;
 }
 
@@ -183,12 +232,36 @@ int option_classify(const struct surface *surface,
                     struct panelization *panels,
                     struct option_totals *totals, struct facet_error *err)
 {
+    return classify_built(surface, params, joints, NULL, panels, totals,
+                          err);
+}
+
+int option_classify_kept(const struct surface *surface,
+                         const struct option_params *params,
+                         double joint_length, struct grid_fits *fits,
+                         struct panelization *panels,
+                         struct option_totals *totals,
+                         struct facet_error *err)
+{
+    return classify_built(surface, params, joint_length, fits, panels,
+                          totals, err);
+}
+
+/* option_classify, or with fits, option_classify_kept. */
+static int classify_built(const struct surface *surface,
+                          const struct option_params *params, double joints,
+                          struct grid_fits *fits,
+                          struct panelization *panels,
+                          struct option_totals *totals,
+                          struct facet_error *err)
+{
     memset(totals, 0, sizeof *totals);
     int rc = classify_check_options(&params->classify, err);
     if (rc != FACET_OK)
         return rc;
     classify_types(panels, &params->classify);
-    rc = build_and_measure(surface, &params->classify, panels, totals, err);
+    rc = build_and_measure(surface, &params->classify, fits, panels, totals,
+                           err);
     if (rc != FACET_OK)
         return rc;
     struct mould_options mould = option_mould_options(params);

@@ -99,4 +99,30 @@ int option_classify(const struct surface *surface,
                     struct panelization *panels,
                     struct option_totals *totals, struct facet_error *err);
 
+/* One grid at several thresholds: option_evaluate_shared for the first,
+ * which also sets up *fits (sp_fit.h's grid_fits) from the grid's panels,
+ * then option_classify_kept for each other threshold with the same panels
+ * and fits. A panel's SP fits are then made once, the first time it is SP,
+ * and judged at each threshold; its sides are sampled once. The results
+ * are those of option_evaluate_shared and option_classify to the bit
+ * (sp_fit.h, cell_sides.h), so a run gives the same options however its
+ * points are grouped, split among threads or among shards. The caller
+ * releases *fits with grid_fits_free, also after a failure (it is zeroed
+ * first). */
+struct grid_fits;
+int option_evaluate_kept(const struct surface *surface,
+                         const struct panel_lattice *lattice,
+                         const struct joint_lines *lines,
+                         const struct option_params *params,
+                         struct grid_fits *fits, struct panelization *panels,
+                         struct option_totals *totals,
+                         struct facet_error *err);
+
+int option_classify_kept(const struct surface *surface,
+                         const struct option_params *params,
+                         double joint_length, struct grid_fits *fits,
+                         struct panelization *panels,
+                         struct option_totals *totals,
+                         struct facet_error *err);
+
 #endif

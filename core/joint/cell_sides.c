@@ -17,38 +17,32 @@
  * ends are the panels' corners. */
 #define LOCATE_TOLERANCE 1e-9
 
-/* The barycentric coordinates of (u, v) in triangle t's UV triangle;
- * returns 1 when it holds the point (to LOCATE_TOLERANCE). */
-static int uv_barycentric(const struct uv_index *index, uint32_t t, double u,
-                          double v, double b[3])
-{
-    const double *c = index->uv + 6 * (size_t)t;
-    double x1 = c[2] - c[0], y1 = c[3] - c[1];
-    double x2 = c[4] - c[0], y2 = c[5] - c[1];
-    double det = x1 * y2 - x2 * y1;
-    if (det == 0) {
-        b[0] = b[1] = b[2] = 0;
-        return 0;
-    }
-    double px = u - c[0], py = v - c[1];
-    b[1] = (px * y2 - x2 * py) / det;
-    b[2] = (x1 * py - px * y1) / det;
-    b[0] = 1 - b[1] - b[2];
-    return b[0] >= -LOCATE_TOLERANCE && b[1] >= -LOCATE_TOLERANCE &&
-           b[2] >= -LOCATE_TOLERANCE;
-}
+/* How far inside a triangle (least barycentric coordinate) a point must
+ * lie to be its alone. Nearer an edge, the point may be held by the
+ * triangle on the other side too (within rounding, or within
+ * LOCATE_TOLERANCE), and which one a walk reaches depends on where it came
+ * from. */
+#define INSIDE_MARGIN 1e-12
 
 /* The triangle holding (u, v), found by walking from hint across the edge
  * the point lies beyond (a few steps, as consecutive samples are close),
- * else by the lookup; UINT32_MAX when none holds it. */
+ * else by the lookup; UINT32_MAX when none holds it. A point the walk finds
+ * near an edge is looked up as well, so that its triangle, and so its
+ * sample to the last bit, is the lookup's whichever sides were sampled
+ * before it (cell_sides.h: a side's samples depend on the side alone). */
 static uint32_t locate_near(const struct mesh *mesh,
                             const struct uv_index *index, uint32_t hint,
                             double u, double v, double b[3])
 {
     uint32_t t = hint;
     for (int step = 0; step < 4 && t != UINT32_MAX; step++) {
-        if (uv_barycentric(index, t, u, v, b))
+        if (!uv_index_barycentric(index, t, u, v, b))
+            break;
+        double least = fmin(b[0], fmin(b[1], b[2]));
+        if (least > INSIDE_MARGIN)
             return t;
+        if (least >= -LOCATE_TOLERANCE)
+            break;
         /* Across the edge opposite the most negative coordinate: edge e
          * of triangle t runs from corner e to corner e + 1. */
         int k = b[0] < b[1] ? (b[0] < b[2] ? 0 : 2) : (b[1] < b[2] ? 1 : 2);
@@ -204,14 +198,15 @@ static int sample(const struct mesh *mesh, const struct uv_index *index,
                     hint = triangle[k];
                     point_at(mesh, triangle[k], bary[k], out->point + 3 * at);
                 }
-                if (out->on[at] && triangle[k] != UINT32_MAX &&
+                if (k > 0 && out->on[at] &&
                     (middle < 0 || abs(2 * k - CELL_SIDE_SEGMENTS) <
                                        abs(2 * middle - CELL_SIDE_SEGMENTS)))
                     middle = k;
             }
-            /* The normal at the middle, or at the located sample nearest
-             * it (a side's first sample is copied, not located, and is
-             * never its middle unless the rest is off the surface). */
+            /* The normal at the middle, or at the sample nearest it on the
+             * surface. Never the first sample: it is copied from the side
+             * before when that was sampled (no triangle at hand), so
+             * whether it could serve would depend on the other sides. */
             out->middle[s] = (signed char)middle;
             if (middle < 0) {
                 for (int x = 0; x < 3; x++)

@@ -23,7 +23,12 @@
  * triangle holding it, so the samples lie on the mesh, and the piecewise
  * linear curve through them follows the mesh's own to within the sag of
  * one sample spacing. Where the UV point is off the surface (a trimmed
- * panel's side), the sample is marked off.
+ * panel's side), the sample is marked off. A side's samples, to the last
+ * bit, depend on the side alone, not on which other sides are sampled: a
+ * UV point on a mesh edge is placed in the triangle the UV lookup gives
+ * (uv_index_locate), whichever triangle a search from the sample before
+ * reached first. (On a UV parameterization that folds over itself, where
+ * two triangles hold one point well inside both, this cannot hold.)
  *
  * Sides are numbered: the side on the line u = umin + i du between rows j
  * and j + 1 is cell_side_u(sides, i, j), i = 0..nu, j = 0..nv-1; the side
@@ -55,8 +60,8 @@ struct cell_sides {
     double *point;        /* nsides x CELL_SIDE_SAMPLES x 3 (m); NaN off
                              the surface */
     signed char *middle;  /* nsides: the sample nearest the side's middle
-                             that lies on the surface (of those located on
-                             it), or -1 when none does */
+                             that lies on the surface (of samples 1 ..
+                             CELL_SIDE_SEGMENTS), or -1 when none does */
     double *normal;       /* nsides x 3: the unit surface normal at that
                              sample, the vertex normals interpolated in its
                              triangle, on the side of the face normal (the
@@ -93,9 +98,8 @@ int cell_sides_sample(const struct mesh *mesh, const struct uv_index *index,
 
 /* Samples every side of panels' grid, whatever the panels' types (as
  * cell_sides_sample otherwise): the sides of a grid classified at several
- * thresholds (sp_fit.h's grid_fits). Sampled so, a side's samples can
- * differ from cell_sides_sample's in their last bits, where a sample lies
- * on a mesh edge and is found in the triangle on its other side. */
+ * thresholds (sp_fit.h's grid_fits). Each side's samples are those
+ * cell_sides_sample gives it, to the bit. */
 int cell_sides_sample_every(const struct mesh *mesh,
                             const struct uv_index *index,
                             const struct curvature *curvature,

@@ -13,6 +13,7 @@
 
 #include "core/base/numparse.h"
 #include "core/base/parallel.h"
+#include "core/fit/sp_fit.h"
 #include "core/joint/joint_length.h"
 #include "core/search/optimize_internal.h"
 #include "core/base/rng.h"
@@ -209,28 +210,38 @@ static void evaluation_thread(void *argument)
         if (g >= plan->ngroups)
             break;
         struct panelization panels;
+        /* A grid of several thresholds keeps its SP fits and sides for
+         * all of them (the same results, to the bit); a grid of one does
+         * without, as it would only sample sides it does not need. */
+        struct grid_fits fits;
+        memset(&fits, 0, sizeof fits);
+        int kept = plan->group[g + 1] - plan->group[g] > 1;
         for (size_t x = plan->group[g]; x < plan->group[g + 1]; x++) {
             size_t k = plan->order[x];
             struct option_params params = option_params_at(
                 plan->base, plan->points[k].nu, plan->points[k].nv,
                 plan->points[k].threshold_mm);
             if (x == plan->group[g]) {
-                job->rc = option_evaluate_shared(plan->surface,
-                                                 plan->lattice, plan->lines,
-                                                 &params, &panels,
-                                                 &plan->totals[k],
-                                                 &job->err);
+                job->rc = kept ? option_evaluate_kept(
+                                     plan->surface, plan->lattice,
+                                     plan->lines, &params, &fits, &panels,
+                                     &plan->totals[k], &job->err)
+                               : option_evaluate_shared(
+                                     plan->surface, plan->lattice,
+                                     plan->lines, &params, &panels,
+                                     &plan->totals[k], &job->err);
             } else {
                 /* Same grid, same joints: measured with its first point. */
                 double joints =
                     plan->totals[plan->order[plan->group[g]]].joint_length;
-                job->rc = option_classify(plan->surface, &params, joints,
-                                          &panels, &plan->totals[k],
-                                          &job->err);
+                job->rc = option_classify_kept(plan->surface, &params,
+                                               joints, &fits, &panels,
+                                               &plan->totals[k], &job->err);
             }
             if (job->rc != FACET_OK)
                 break;
         }
+        grid_fits_free(&fits);
         if (plan->keep != NULL && job->rc == FACET_OK) {
             plan->keep[plan->order[plan->group[g]]] = panels;
             memset(&panels, 0, sizeof panels);

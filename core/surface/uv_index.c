@@ -145,12 +145,10 @@ static inline double min_number(double a, double b)
     return b < a ? b : a;
 }
 
-/* Barycentric coordinates of (u, v) in UV triangle t; returns 0 when the
- * triangle is degenerate. */
-static int barycentric_in(const double *uv, uint32_t t, double u, double v,
-                          double b[3])
+int uv_index_barycentric(const struct uv_index *index, uint32_t t, double u,
+                         double v, double b[3])
 {
-    const double *c = uv + 6 * (size_t)t;
+    const double *c = index->uv + 6 * (size_t)t;
     double x1 = c[2] - c[0], y1 = c[3] - c[1];
     double x2 = c[4] - c[0], y2 = c[5] - c[1];
     double det = x1 * y2 - x2 * y1;
@@ -183,7 +181,7 @@ uint32_t uv_index_locate(const struct uv_index *index, double u, double v,
          k++) {
         uint32_t t = index->cell_triangles[k];
         double b[3];
-        if (!barycentric_in(index->uv, t, u, v, b))
+        if (!uv_index_barycentric(index, t, u, v, b))
             continue;
         double margin = min_number(b[0], min_number(b[1], b[2]));
         if (margin >= 0) {

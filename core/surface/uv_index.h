@@ -37,8 +37,16 @@ int uv_index_build(const double *uv, size_t ntriangles, struct uv_index *out,
 
 /* The triangle whose UV triangle contains (u, v), with the barycentric
  * coordinates of the point in it, or UINT32_MAX when no triangle does.
- * Points on a shared edge go to either triangle. tolerance widens each
- * triangle by that much in barycentric terms (0 for exact). */
+ * tolerance widens each triangle by that much in barycentric terms (0 for
+ * exact). The answer depends on the point alone: a point on a shared edge
+ * (within rounding) goes to the first triangle of its lookup cell that
+ * holds it, the same one every time. */
+/* The barycentric coordinates b of (u, v) in triangle t's UV triangle
+ * (b[0] + b[1] + b[2] = 1, each >= 0 inside); returns 0 (b unset) when
+ * that triangle is degenerate. */
+int uv_index_barycentric(const struct uv_index *index, uint32_t t, double u,
+                         double v, double b[3]);
+
 uint32_t uv_index_locate(const struct uv_index *index, double u, double v,
                          double tolerance, double barycentric[3]);
 
