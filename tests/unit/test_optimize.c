@@ -25,22 +25,28 @@
 
 static struct surface roof;
 
+/* The example roof at res x res quads, prepared, into *out. */
+static int open_roof(int res, struct surface *out)
+{
+    char path[] = "/tmp/facet_test_optimize_XXXXXX";
+    int fd = mkstemp(path);
+    FILE *file = fdopen(fd, "w");
+    struct facet_error err;
+    if (example_write("roof", res, file, &err) != FACET_OK)
+        return -1;
+    fclose(file);
+    struct mesh_options options = {UNITS_M, NULL, NULL};
+    int rc = surface_open(path, &options, out, &err);
+    if (rc == FACET_OK)
+        rc = surface_prepare(out, 0, PARAM_AUTO, &err);
+    unlink(path);
+    return rc;
+}
+
 static int setup(void **state)
 {
     (void)state;
-    char path[] = "/tmp/facet_test_optimize_XXXXXX";
-    int fd = mkstemp(path);
-    FILE *out = fdopen(fd, "w");
-    struct facet_error err;
-    if (example_write("roof", 24, out, &err) != FACET_OK)
-        return -1;
-    fclose(out);
-    struct mesh_options options = {UNITS_M, NULL, NULL};
-    int rc = surface_open(path, &options, &roof, &err);
-    if (rc == FACET_OK)
-        rc = surface_prepare(&roof, 0, PARAM_AUTO, &err);
-    unlink(path);
-    return rc;
+    return open_roof(24, &roof);
 }
 
 static int teardown(void **state)
@@ -404,6 +410,54 @@ static void test_lattice_run(void **state)
     assert_null(none);
 }
 
+/* A grid's thresholds evaluated together keep its SP fits and sides
+ * (option_evaluate_kept): every option's totals are, to the bit, those of
+ * the option evaluated alone, as a shard holding only some of the grid's
+ * thresholds evaluates them. */
+static void test_grid_thresholds_equal_alone(void **state)
+{
+    (void)state;
+    /* Finer than the search tests' roof, so that SP panels fit. */
+    struct surface fine;
+    assert_int_equal(open_roof(96, &fine), FACET_OK);
+    struct optimize_settings s;
+    settings_for(METHOD_EXHAUSTIVE, &s);
+    s.base.classify.sp_by_class = 0;
+    struct design_point points[3 * 3 * 3];
+    size_t n = 0;
+    for (int nu = 8; nu <= 16; nu += 4)
+        for (int nv = 10; nv <= 12; nv++)
+            for (int t = 2; t <= 18; t *= 3)
+                points[n++] = (struct design_point){nu, nv, (double)t};
+    struct option_totals together[3 * 3 * 3];
+    struct facet_error err;
+    if (optimize_evaluate(&fine, NULL, &s.base, points, n, 2, together,
+                          &err) != FACET_OK)
+        fail_msg("%s", err.message);
+    size_t sp = 0, fitted = 0;
+    for (size_t k = 0; k < n; k++) {
+        struct option_params params = option_params_at(
+            &s.base, points[k].nu, points[k].nv, points[k].threshold_mm);
+        struct panelization panels;
+        struct option_totals alone;
+        if (option_evaluate(&fine, &params, &panels, &alone, &err) !=
+            FACET_OK)
+            fail_msg("%s", err.message);
+        panelization_free(&panels);
+        if (memcmp(&alone, &together[k], sizeof alone) != 0)
+            fail_msg("%d x %d at %g mm: totals differ from the option "
+                     "alone (cost %.17g against %.17g, max gap %.17g "
+                     "against %.17g)", points[k].nu, points[k].nv,
+                     points[k].threshold_mm, together[k].cost, alone.cost,
+                     together[k].max_gap_mm, alone.max_gap_mm);
+        sp += alone.sp_fitted + alone.sp_misfits;
+        fitted += alone.sp_fitted;
+    }
+    surface_close(&fine);
+    /* The comparison saw SP panels fitted, not only misfits. */
+    assert_true(sp > fitted && fitted > 0);
+}
+
 static void test_bad_space(void **state)
 {
     (void)state;
@@ -472,6 +526,7 @@ int main(void)
         cmocka_unit_test(test_front),
         cmocka_unit_test(test_front_ties_on_symmetric_surfaces),
         cmocka_unit_test(test_lattice_run),
+        cmocka_unit_test(test_grid_thresholds_equal_alone),
         cmocka_unit_test(test_bad_space),
         cmocka_unit_test(test_parse_space),
     };
