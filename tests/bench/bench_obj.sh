@@ -6,9 +6,11 @@
 # Writes a 1M-triangle OBJ (a 708 x 708 quad grid of a gently curved roof,
 # with vt and v/vt faces, 6 decimals like a CAD export) to a temporary
 # directory, compiles tests/bench/bench_obj.cpp against BUILD_DIR/libfacet.a
-# and tinyobjloader, and prints one line with both best times and the ratio.
-# The target is a ratio of at least 5: below it the script says so, and
-# exits 1 only with BENCH_STRICT=1 (so that make bench still runs the rest).
+# and the double build of Debian's tinyobjloader (TINYOBJLOADER_USE_DOUBLE,
+# libtinyobjloader_double; the .pc file names only the float build), and
+# prints one line with both median times and the ratio, then whether the
+# target, a ratio of at least 5, is met. Below it the script exits 1 only
+# with BENCH_STRICT=1 (so that make bench still runs the rest).
 set -euo pipefail
 build=${1:?usage: tests/bench/bench_obj.sh BUILD_DIR [RUNS]}
 runs=${2:-5}
@@ -38,14 +40,16 @@ awk -v n=708 'BEGIN {
         }
 }' > "$work/roof.obj"
 
-g++ -std=c++17 -O2 -I. -o "$work/bench_obj" tests/bench/bench_obj.cpp \
-    "$build/libfacet.a" $(pkg-config --libs tinyobjloader) -lm
+g++ -std=c++17 -O2 -DTINYOBJLOADER_USE_DOUBLE -I. -o "$work/bench_obj" \
+    tests/bench/bench_obj.cpp "$build/libfacet.a" -ltinyobjloader_double -lm
 echo "bench_obj: $(du -h "$work/roof.obj" | cut -f1) OBJ, 1M triangles"
 line=$("$work/bench_obj" "$work/roof.obj" "$runs")
 echo "$line"
 ratio=$(echo "$line" | sed -n 's/.*ratio \([0-9.]*\)x.*/\1/p')
 if ! awk -v r="$ratio" 'BEGIN { exit !(r >= 5) }'; then
-    echo "bench_obj: ratio ${ratio}x is below the 5x target"
+    echo "OBJ loading: ${ratio}x tinyobjloader (double) (target: at least 5x): not met"
     [ "${BENCH_STRICT:-0}" = 1 ] && exit 1
+    exit 0
 fi
+echo "OBJ loading: ${ratio}x tinyobjloader (double) (target: at least 5x): met"
 exit 0
