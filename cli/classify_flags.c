@@ -192,13 +192,15 @@ int classify_flags_apply(const struct classify_flags *f,
                 "--sp-fit: '%s' is not yes or no", f->sp_fit);
     }
     if (f->max_gap) {
-        if ((rc = numparse_number(f->max_gap, 1e-6, 1e6, "--max-gap",
+        if ((rc = numparse_number(f->max_gap, CLASSIFY_MAX_GAP_MIN_MM,
+                                  CLASSIFY_MAX_GAP_MAX_MM, "--max-gap",
                                   &number, err)))
             return rc;
         params->classify.max_gap = number / 1000;
     }
     if (f->max_kink) {
-        if ((rc = numparse_number(f->max_kink, 1e-9, 180, "--max-kink",
+        if ((rc = numparse_number(f->max_kink, CLASSIFY_MAX_KINK_MIN_DEG,
+                                  CLASSIFY_MAX_KINK_MAX_DEG, "--max-kink",
                                   &number, err)))
             return rc;
         params->classify.max_kink = number * M_PI / 180;

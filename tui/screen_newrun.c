@@ -34,14 +34,16 @@
 
 enum field { F_SURFACE, F_UNITS, F_U, F_V, F_THRESHOLD, F_METHOD, F_SEED,
              F_PRICES, F_SP_AS_FP, F_MAX_AREA, F_PANEL_COST, F_JOINT_COST,
-             F_MOULD_COST, F_MOULD_TOL, F_MOULD_MIRROR, F_NAME, F_COUNT };
+             F_MOULD_COST, F_MOULD_TOL, F_MOULD_MIRROR, F_SP_FIT, F_MAX_GAP,
+             F_MAX_KINK, F_NAME, F_COUNT };
 
 /* At most LABEL_WIDTH - 1 columns each. */
 static const char *const field_label[F_COUNT] = {
     "Surface (OBJ)", "Units", "U (panels)", "V (panels)", "Threshold (mm)",
     "Method", "Seed", "Prices FP,SP,DP", "SP priced as FP", "Max panel m^2",
     "Panel cost USD/panel", "Joint cost USD/m", "Mould cost SP,DP USD",
-    "Mould tolerance (mm)", "Mirrors share moulds", "Name"};
+    "Mould tolerance (mm)", "Mirrors share moulds", "SP panels fitted",
+    "Max gap (mm)", "Max kink (deg)", "Name"};
 #define LABEL_WIDTH 22
 static const char *const field_hint[F_COUNT] = {
     "path of the OBJ file; Tab completes it (directories, .obj files)",
@@ -57,6 +59,9 @@ static const char *const field_hint[F_COUNT] = {
     "USD per mould: a bending jig for SP, a mould for DP (e.g. 2000,15000)",
     "curved panels within it share a mould; empty: the flatness threshold",
     "yes or no: a panel and its mirror image share a mould",
+    "yes: an SP panel no cylinder or cone fits within t is built DP",
+    "feasible only when no joint's gap exceeds it; empty: no limit",
+    "feasible only when no joint's kink exceeds it; empty: no limit",
     "optional"};
 
 struct newrun_screen {
@@ -221,6 +226,38 @@ static int parse_number(const struct newrun_screen *s, enum field f,
                            err);
 }
 
+/* An optional limit of field f (empty: none, 0), in [min, max] times
+ * scale, into *out. */
+static int parse_limit(const struct newrun_screen *s, enum field f,
+                       double min, double max, double scale, double *out,
+                       struct facet_error *err)
+{
+    *out = 0;
+    if (s->field[f].text[0] == '\0')
+        return FACET_OK;
+    int rc = parse_number(s, f, min, max, out, err);
+    *out *= scale;
+    return rc;
+}
+
+/* Panels as built: the SP fit and the limits on gaps and kinks, into c. */
+static int build_as_built(const struct newrun_screen *s,
+                          struct classify_options *c,
+                          struct facet_error *err)
+{
+    int fitted;
+    int rc = parse_yes_no(s, F_SP_FIT, &fitted, err);
+    if (rc == FACET_OK)
+        rc = parse_limit(s, F_MAX_GAP, CLASSIFY_MAX_GAP_MIN_MM,
+                         CLASSIFY_MAX_GAP_MAX_MM, 1e-3, &c->max_gap, err);
+    if (rc == FACET_OK)
+        rc = parse_limit(s, F_MAX_KINK, CLASSIFY_MAX_KINK_MIN_DEG,
+                         CLASSIFY_MAX_KINK_MAX_DEG, M_PI / 180, &c->max_kink,
+                         err);
+    c->sp_by_class = !fitted;
+    return rc;
+}
+
 /* The cost model beyond area and the mould settings, into params. */
 static int build_costs(const struct newrun_screen *s,
                        struct option_params *params, struct facet_error *err)
@@ -246,7 +283,9 @@ static int build_costs(const struct newrun_screen *s,
             return rc;
         params->mould_tol = mm / 1000;
     }
-    return parse_yes_no(s, F_MOULD_MIRROR, &params->mould_mirror, err);
+    if ((rc = parse_yes_no(s, F_MOULD_MIRROR, &params->mould_mirror, err)))
+        return rc;
+    return build_as_built(s, &params->classify, err);
 }
 
 /* The request the form describes, over study_request_defaults;
@@ -463,13 +502,25 @@ static void set_number(struct newrun_screen *s, enum field f, double value)
     tui_input_set(&s->field[f], text);
 }
 
-/* The fields of the prices, the size limit and the cost model from
- * params, the defaults' or a run's, with the mould tolerance mould_tol_mm
- * (NaN: each option's flatness threshold, an empty field). */
+/* An optional limit's field: empty for NaN (none). */
+static void set_limit(struct newrun_screen *s, enum field f, double value)
+{
+    if (isnan(value))
+        tui_input_set(&s->field[f], "");
+    else
+        set_number(s, f, value);
+}
+
+/* The fields of the prices, the size limit, the cost model and panels as
+ * built from params, the defaults' or a run's, with the mould tolerance
+ * and the limits on gaps and kinks in the run's own units from limits
+ * (NaN: none, an empty field; the tolerance's none is each option's
+ * flatness threshold), so that they read back as the run's numbers. */
 static void set_classification(struct newrun_screen *s,
                                const struct option_params *params,
-                               double mould_tol_mm)
+                               const struct run_info *limits)
 {
+    double mould_tol_mm = limits->mould_tol_mm;
     const struct classify_options *c = &params->classify;
     char text[3 * NUMBER_EXACT_SIZE + 2], n[TYPE_COUNT][NUMBER_EXACT_SIZE];
     for (int t = 0; t < TYPE_COUNT; t++)
@@ -491,6 +542,9 @@ static void set_classification(struct newrun_screen *s,
         tui_input_set(&s->field[F_MOULD_TOL], "");
     tui_input_set(&s->field[F_MOULD_MIRROR],
                   params->mould_mirror ? "yes" : "no");
+    tui_input_set(&s->field[F_SP_FIT], c->sp_by_class ? "no" : "yes");
+    set_limit(s, F_MAX_GAP, limits->max_gap_mm);
+    set_limit(s, F_MAX_KINK, limits->max_kink_deg);
 }
 
 struct tui_screen *screen_newrun_new(struct tui_app *app,
@@ -518,9 +572,13 @@ struct tui_screen *screen_newrun_new(struct tui_app *app,
     for (int f = 0; f < F_COUNT; f++)
         if (defaults[f] != NULL)
             tui_input_set(&s->field[f], defaults[f]);
-    set_classification(s, &r.settings.base,
-                       r.settings.base.mould_tol_given
-                           ? r.settings.base.mould_tol * 1000 : NAN);
+    /* the defaults in a run's units: none of the limits given */
+    struct run_info none;
+    memset(&none, 0, sizeof none);
+    none.mould_tol_mm = r.settings.base.mould_tol_given
+                            ? r.settings.base.mould_tol * 1000 : NAN;
+    none.max_gap_mm = none.max_kink_deg = NAN;
+    set_classification(s, &r.settings.base, &none);
     measure_rate(s, app, surface_path);
     if (surface_path) {
         tui_input_set(&s->field[F_SURFACE], surface_path);
@@ -567,7 +625,7 @@ struct tui_screen *screen_newrun_like(struct tui_app *app,
     struct facet_error err;
     int rc = study_settings(run, &settings, &mesh, &flip, &err);
     if (rc == FACET_OK)
-        set_classification(s, &settings.base, run->mould_tol_mm);
+        set_classification(s, &settings.base, run);
     snprintf(text, sizeof text, "like No. %lld of run %lld",
              (long long)option->number, (long long)run->id);
     tui_input_set(&s->field[F_NAME], text);

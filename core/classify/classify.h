@@ -214,6 +214,10 @@ void classify_price_terms(const struct classify_options *options,
 #define CLASSIFY_PANEL_AREA_MAX 1e9
 #define CLASSIFY_MOULD_TOL_MAX_MM 1e6  /* mm: the mould tolerance; the
                                           least is 0 */
+#define CLASSIFY_MAX_GAP_MIN_MM 1e-6   /* mm: the limit on a joint's gap */
+#define CLASSIFY_MAX_GAP_MAX_MM 1e6
+#define CLASSIFY_MAX_KINK_MIN_DEG 1e-9 /* degrees: the limit on its kink */
+#define CLASSIFY_MAX_KINK_MAX_DEG 180
 
 /* Parses "SP,DP", the cost of a mould of each curved type (USD, finite, 0
  * to CLASSIFY_AMOUNT_MAX), into mould_cost[TYPE_SP] and [TYPE_DP];

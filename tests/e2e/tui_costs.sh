@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
 # End-to-end: the cost model in the workbench's New-run form (issue 15),
+# and its panels-as-built settings (issue 16: SP fit, gap and kink limits),
 # in tmux at 80x24 on a small example torus (its options have DP moulds;
 # its SP-classed panels fit no cylinder or cone, so the SP term is priced
 # at 0 moulds here: e2e/cost.sh prices SP moulds from the CLI, and the
@@ -26,6 +27,9 @@ fi
 q() { sqlite3 "$WORK/costs.db" "$1"; }
 # The cost model the form is given, odd amounts so that none is a default.
 PANEL=37.5 JOINT=12.25 SP=1999.5 DP=15000.25 TOL=4.5
+# Panels as built: the paper's typing (no SP fit), odd limits on gaps and
+# kinks; a kink limit whose degrees are no whole number of radians' worth.
+GAP=6.75 KINK=1.3
 
 # wait_run ID: polls the database until run ID is done (up to 4 x POLLS).
 wait_run() {
@@ -55,6 +59,9 @@ H_MOULD='USD per mould: a bending jig for SP'
 H_TOL='curved panels within it share a mould'
 H_MIRROR='yes or no: a panel and its mirror image'
 H_AREA='the largest panel that can be made'
+H_FIT='yes: an SP panel no cylinder or cone fits'
+H_GAP="feasible only when no joint's gap exceeds it"
+H_KINK="feasible only when no joint's kink exceeds it"
 H_NAME='optional'
 
 # --- the form at 80x24: every field, its hint, the paper's zero costs ---
@@ -69,20 +76,22 @@ check "the joint cost field, 0 by default" '^ Joint cost USD/m +0 *$'
 check "the mould cost field, 0,0 by default" '^ Mould cost SP,DP USD +0,0 *$'
 check "the mould tolerance field, empty by default (the threshold)" '^ Mould tolerance \(mm\) *$'
 check "the mirror field, no by default" '^ Mirrors share moulds +no *$'
+check "the SP fit field, yes by default (panels as built)" '^ SP panels fitted +yes *$'
 if [ "$(screen | grep -nE '^ Max panel m\^2 ' | cut -d: -f1)" = 12 ] &&
     [ "$(screen | grep -nE '^ Panel cost USD/panel ' | cut -d: -f1)" = 13 ] &&
-    [ "$(screen | grep -nE '^ Name( |$)' | cut -d: -f1)" = 18 ]; then
-    pass "the five cost fields sit between Max panel m^2 and Name, all on the screen"
+    [ "$(screen | grep -nE '^ Mirrors share moulds ' | cut -d: -f1)" = 17 ] &&
+    screen | sed -n 19p | grep -q '^vMax gap'; then
+    pass "the five cost fields sit under Max panel m^2, the fields below them marked as more"
 else
-    echo "not ok - the five cost fields sit between Max panel m^2 and Name, all on the screen"
+    echo "not ok - the five cost fields sit under Max panel m^2, the fields below them marked as more"
     screen | sed 's/^/  screen: /'
 fi
 check "(the estimate)" 'Not ready: name the surface'
-if screen | sed -n 20p | grep -q '^ path of the OBJ file; Tab completes it' &&
-    screen | sed -n 21p | grep -q '^ Not ready: name the surface'; then
-    pass "the hint and the estimate fit under the sixteen fields (lines 20, 21)"
+if screen | sed -n 21p | grep -q '^ path of the OBJ file; Tab completes it' &&
+    screen | sed -n 22p | grep -q '^ Not ready: name the surface'; then
+    pass "the hint and the estimate fit under the fields shown (lines 21, 22)"
 else
-    echo "not ok - the hint and the estimate fit under the sixteen fields (lines 20, 21)"
+    echo "not ok - the hint and the estimate fit under the fields shown (lines 21, 22)"
     screen | sed 's/^/  screen: /'
 fi
 keys Tab
@@ -112,6 +121,17 @@ check "the mould tolerance's hint says what empty means" "^ $H_TOL; empty: the f
 keys Down
 set_field "$H_MIRROR" yes
 keys Down
+set_field "$H_FIT" no
+check "the SP fit field's hint" "^ $H_FIT within t is built DP"
+keys Down
+set_field "$H_GAP" "$GAP"
+check "the gap limit's hint says what empty means" "^ $H_GAP; empty: no limit"
+keys Down
+set_field "$H_KINK" "$KINK"
+check "  ... and the fields scrolled with the focus, one up" '^\^Units'
+check "  ... the more below marked" '^vMax kink \(deg\) +1\.3'
+
+keys Down
 set_field "$H_NAME" 'costs from the form'
 check "the form counts the run (3 x 3 x 3 = 27)" 'F5 starts: 27 options \(exhaustive\)'
 keys F5
@@ -120,6 +140,15 @@ if wait_run 1; then pass "the run is done"; else fail "the run is done"; fi
 same "the run row keeps the form's costs" \
     "$(q 'SELECT price_panel, price_joint, price_sp_mould, price_dp_mould, mould_tol_mm, mould_mirror FROM runs WHERE id = 1')" \
     "$PANEL|$JOINT|$SP|$DP|$TOL|1"
+same "the run row keeps the form's panels as built (no SP fit, the limits)" \
+    "$(q 'SELECT sp_fit, max_gap_mm, max_kink_deg FROM runs WHERE id = 1')" \
+    "0|$GAP|$KINK"
+# The limits judge feasibility: an option is feasible only with no joint
+# over them and no panel over the size limit, judged again in SQL.
+same "an option is feasible just when no joint is over the limits and no panel over the size" \
+    "$(q "SELECT count(*) FROM options WHERE run = 1 AND
+          feasible = (gaps_over = 0 AND kinks_over = 0 AND max_panel_area <=
+            (SELECT max_panel_area_limit FROM runs WHERE id = 1) * (1 + 1e-9))")" 27
 same "27 options" "$(q 'SELECT count(*) FROM options WHERE run = 1')" 27
 # Each option's cost, its terms summed again from its own columns (to 1e-9
 # of the cost: Facet sums the terms in its own order).
@@ -142,8 +171,9 @@ same "the options have panels, joints and DP moulds to price" \
 # The same run from the command line: the same options, to the bit.
 "$FACET" optimize "$WORK/torus.obj" --db "$WORK/cli.db" --u 4:6 --v 4:6 \
     --threshold 3:9:3 --panel-cost "$PANEL" --joint-cost "$JOINT" \
-    --mould-cost "$SP,$DP" --mould-tol "$TOL" --mould-mirror >/dev/null 2>&1
-OPTS='SELECT number, nu, nv, threshold_mm, sp_moulds, dp_moulds, joint_length, cost FROM options ORDER BY number'
+    --mould-cost "$SP,$DP" --mould-tol "$TOL" --mould-mirror --sp-fit no \
+    --max-gap "$GAP" --max-kink "$KINK" >/dev/null 2>&1
+OPTS='SELECT number, nu, nv, threshold_mm, sp_moulds, dp_moulds, joint_length, cost, max_gap, max_kink, gaps_over, kinks_over, feasible, sp_misfits FROM options ORDER BY number'
 same "facet optimize with the same flags gives the same options" \
     "$(q "$OPTS")" "$(sqlite3 "$WORK/cli.db" "$OPTS")"
 
@@ -155,6 +185,10 @@ check "like this: the joint cost" "^ Joint cost USD/m +$JOINT *\$"
 check "like this: the mould costs" "^ Mould cost SP,DP USD +$SP,$DP *\$"
 check "like this: the mould tolerance" "^ Mould tolerance \(mm\) +$TOL *\$"
 check "like this: mirrors share moulds" '^ Mirrors share moulds +yes *$'
+check "like this: no SP fit" '^ SP panels fitted +no *$'
+keys Down Down Down Down Down Down Down Down Down Down Down Down Down Down Down
+check "like this: the gap limit as the run has it" "^ Max gap \(mm\) +$GAP *\$"
+check "like this: the kink limit as the run has it (degrees, not radians back)" "^[ v]Max kink \(deg\) +$KINK *\$"
 
 # --- a bad value names the field and starts nothing ---
 # bad FIELDS HINT VALUE MESSAGE: FIELDS on from Panel cost, VALUE refused
@@ -175,6 +209,10 @@ bad 1 "$H_JOINT" -5 'Joint cost USD/m: -5 is out of range \(0 to 1e\+09\)'
 bad 3 "$H_TOL" 1e999 'Mould tolerance \(mm\): 1e999 is out of range \(0 to 1e\+06\)'
 bad 2 "$H_MOULD" 5000 "Mould cost SP,DP USD: '5000' is not SP,DP in USD per mould"
 bad 4 "$H_MIRROR" maybe "Mirrors share moulds: 'maybe' is not yes or no"
+bad 5 "$H_FIT" maybe "SP panels fitted: 'maybe' is not yes or no"
+bad 6 "$H_GAP" 0 'Max gap \(mm\): 0 is out of range \(1e-06 to 1e\+06\)'
+bad 7 "$H_KINK" 200 'Max kink \(deg\): 200 is out of range \(1e-09 to 180\)'
+bad 7 "$H_KINK" nan "Max kink \(deg\): 'nan' is not a number"
 bad -1 "$H_AREA" 1e999 'Max panel m\^2: 1e999 is out of range'
 if screen | grep -qE 'new run: Max panel m\^2: ' &&
     ! screen | grep -E 'Not ready|new run:' | grep -qE -- '--[a-z]'; then
@@ -200,6 +238,10 @@ check "like run 2: the panel cost as stored (1e9, whole)" '^ Panel cost USD/pane
 check "like run 2: the mould costs" '^ Mould cost SP,DP USD +0\.1,2000 *$'
 check "like run 2: no mould tolerance, an empty field" '^ Mould tolerance \(mm\) *$'
 check "like run 2: mirrors do not share moulds" '^ Mirrors share moulds +no *$'
+check "like run 2: SP panels fitted (the default)" '^ SP panels fitted +yes *$'
+keys Down Down Down Down Down Down Down Down Down Down Down Down Down Down Down
+check "like run 2: no gap limit, an empty field" '^ Max gap \(mm\) *$'
+check "like run 2: no kink limit, an empty field" '^[ v]Max kink \(deg\) *$'
 keys F10
 check_exit "(F10 quits, run 2)"
 
@@ -211,15 +253,15 @@ check "(the form, 80x18)" '^ New run into costs\.db'
 check "(its first field)" '^ Surface \(OBJ\)'
 keys Up
 check "(Up from the first field goes to Name)" '^ optional'
-if screen | sed -n 12p | grep -q '^ Mirrors share moulds ' &&
+if screen | sed -n 12p | grep -qE '^ Max kink \(deg\)( |$)' &&
     screen | sed -n 13p | grep -qE '^ Name *$' &&
     screen | sed -n 15p | grep -q '^ optional'; then
-    pass "the fields scroll: Name on the last row of them, the cost fields above, its hint under"
+    pass "the fields scroll: Name on the last row of them, the as-built fields above, its hint under"
 else
-    echo "not ok - the fields scroll: Name on the last row of them, the cost fields above, its hint under"
+    echo "not ok - the fields scroll: Name on the last row of them, the as-built fields above, its hint under"
     screen | sed 's/^/  screen: /'
 fi
 check_not "  ... and the first fields scrolled away" '^ Surface \(OBJ\)'
-check_line "  ... marked as more above" 3 '^\^Method'
+check_line "  ... marked as more above" 3 '^\^SP priced as FP'
 keys F10
 check_exit "(F10 quits, 80x18)"
