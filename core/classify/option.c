@@ -3,6 +3,7 @@
  */
 #include "core/classify/option.h"
 
+#include <assert.h>
 #include <math.h>
 #include <string.h>
 
@@ -58,13 +59,15 @@ int option_evaluate_lattice(const struct surface *surface,
                                   totals, err);
 }
 
-int option_evaluate_shared(const struct surface *surface,
-                           const struct panel_lattice *lattice,
-                           const struct joint_lines *lines,
-                           const struct option_params *params,
-                           struct panelization *panels,
-                           struct option_totals *totals,
-                           struct facet_error *err)
+/* Builds the panels of params' grid over surface: from lattice when it
+ * holds the grid and params ask for PANEL_EXTREMES, else panels_build_fast.
+ * The checks every evaluation starts with come first. */
+static int build_panels(const struct surface *surface,
+                        const struct panel_lattice *lattice,
+                        const struct option_params *params,
+                        struct panelization *panels,
+                        struct option_totals *totals,
+                        struct facet_error *err)
 {
     memset(panels, 0, sizeof *panels);
     memset(totals, 0, sizeof *totals);
@@ -76,11 +79,21 @@ int option_evaluate_shared(const struct surface *surface,
         return rc;
     if (lattice != NULL && params->mode == PANEL_EXTREMES &&
         panel_lattice_has(lattice, params->nu, params->nv))
-        rc = panels_build_lattice(lattice, params->nu, params->nv, panels,
-                                  err);
-    else
-        rc = panels_build_fast(&surface->panels, params->mode, params->nu,
-                               params->nv, panels, err);
+        return panels_build_lattice(lattice, params->nu, params->nv, panels,
+                                    err);
+    return panels_build_fast(&surface->panels, params->mode, params->nu,
+                             params->nv, panels, err);
+}
+
+int option_evaluate_shared(const struct surface *surface,
+                           const struct panel_lattice *lattice,
+                           const struct joint_lines *lines,
+                           const struct option_params *params,
+                           struct panelization *panels,
+                           struct option_totals *totals,
+                           struct facet_error *err)
+{
+    int rc = build_panels(surface, lattice, params, panels, totals, err);
     if (rc != FACET_OK)
         return rc;
     return option_classify(surface, params,
@@ -88,6 +101,26 @@ int option_evaluate_shared(const struct surface *surface,
                                               &surface->mesh, &surface->uv,
                                               panels),
                            panels, totals, err);
+}
+
+int option_evaluate_unmoulded(const struct surface *surface,
+                              const struct panel_lattice *lattice,
+                              const struct joint_lines *lines,
+                              const struct option_params *params,
+                              struct panelization *panels,
+                              struct option_totals *totals,
+                              struct facet_error *err)
+{
+    int rc = build_panels(surface, lattice, params, panels, totals, err);
+    if (rc != FACET_OK)
+        return rc;
+    return option_classify_unmoulded(surface, params,
+                                     joint_length_lines(lines,
+                                                        &surface->joints,
+                                                        &surface->mesh,
+                                                        &surface->uv,
+                                                        panels),
+                                     panels, totals, err);
 }
 
 /* A limit of 0 is none: no joint is over it. */
@@ -169,6 +202,7 @@ static int build_and_measure(const struct surface *surface,
         totals->mean_kink_deg = joints.mean_kink * 180 / M_PI;
         totals->gaps_over = joints.gaps_over;
         totals->kinks_over = joints.kinks_over;
+        totals->joints = joints.nedges;
         totals->feasible =
             classify_violation(totals, options->max_panel_area) == 0;
     }
@@ -178,10 +212,12 @@ static int build_and_measure(const struct surface *surface,
     return rc;
 }
 
-int option_classify(const struct surface *surface,
-                    const struct option_params *params, double joints,
-                    struct panelization *panels,
-                    struct option_totals *totals, struct facet_error *err)
+int option_classify_unmoulded(const struct surface *surface,
+                              const struct option_params *params,
+                              double joint_length,
+                              struct panelization *panels,
+                              struct option_totals *totals,
+                              struct facet_error *err)
 {
     memset(totals, 0, sizeof *totals);
     int rc = classify_check_options(&params->classify, err);
@@ -191,21 +227,55 @@ int option_classify(const struct surface *surface,
     rc = build_and_measure(surface, &params->classify, panels, totals, err);
     if (rc != FACET_OK)
         return rc;
+    for (size_t k = 0; k < panels->npanels; k++)
+        panels->panels[k].mould = -1;
+    totals->joint_length = joint_length;
+    classify_price_terms(&params->classify, totals);
+    return FACET_OK;
+}
+
+void option_moulds_set(const struct option_params *params,
+                       const struct mould_families *families, size_t first,
+                       struct panelization *panels,
+                       struct option_totals *totals)
+{
+    assert(first + panels->npanels <= families->npanels);
+    for (int t = 0; t < TYPE_COUNT; t++)
+        totals->moulds_of[t] = 0;
+    totals->moulds = 0;
+    totals->largest_family = 0;
+    totals->singleton_families = 0;
+    for (size_t k = 0; k < panels->npanels; k++) {
+        int f = families->family[first + k];
+        panels->panels[k].mould = f;
+        /* A family starts at its representative, its first panel. */
+        if (f < 0 || families->representative[f] != first + k)
+            continue;
+        size_t size = families->size[f];
+        totals->moulds_of[panels->panels[k].type]++;
+        totals->moulds++;
+        totals->largest_family = size > totals->largest_family
+                                     ? size : totals->largest_family;
+        totals->singleton_families += size == 1;
+    }
+    classify_price_terms(&params->classify, totals);
+}
+
+int option_classify(const struct surface *surface,
+                    const struct option_params *params, double joints,
+                    struct panelization *panels,
+                    struct option_totals *totals, struct facet_error *err)
+{
+    int rc = option_classify_unmoulded(surface, params, joints, panels,
+                                       totals, err);
+    if (rc != FACET_OK)
+        return rc;
     struct mould_options mould = option_mould_options(params);
     struct mould_families families;
     rc = mould_families_build(&surface->mesh, &surface->uv, panels, &mould,
                               &families, err);
-    if (rc == FACET_OK) {
-        for (size_t k = 0; k < panels->npanels; k++)
-            panels->panels[k].mould = families.family[k];
-        for (int t = 0; t < TYPE_COUNT; t++)
-            totals->moulds_of[t] = families.count[t];
-        totals->moulds = families.nfamilies;
-        totals->largest_family = families.largest;
-        totals->singleton_families = families.singletons;
-        totals->joint_length = joints;
-        classify_price_terms(&params->classify, totals);
-    }
+    if (rc == FACET_OK)
+        option_moulds_set(params, &families, 0, panels, totals);
     mould_families_free(&families);
     return rc;
 }

@@ -93,10 +93,49 @@ int option_evaluate_shared(const struct surface *surface,
  * (m), the joint length of the grid (joint_length.h), which does not
  * depend on the threshold: a search evaluating several thresholds on one
  * grid measures it once. Returns FACET_OK, FACET_EINPUT for a bad option
- * value, FACET_EWORK when out of memory. */
+ * value, FACET_EWORK when out of memory. It is option_classify_unmoulded,
+ * then mould_families_build over panels and option_moulds_set. */
 int option_classify(const struct surface *surface,
                     const struct option_params *params, double joint_length,
                     struct panelization *panels,
                     struct option_totals *totals, struct facet_error *err);
+
+/* option_classify up to the mould families: every panel's mould is -1 and
+ * the totals' mould counts 0, priced without moulds. What an option over
+ * a project (core/project/project_option.h) runs on each surface before
+ * the building's families are found over all of them at once. Same
+ * returns. */
+int option_classify_unmoulded(const struct surface *surface,
+                              const struct option_params *params,
+                              double joint_length,
+                              struct panelization *panels,
+                              struct option_totals *totals,
+                              struct facet_error *err);
+
+/* option_evaluate_shared up to the mould families, as
+ * option_classify_unmoulded. Same returns. */
+int option_evaluate_unmoulded(const struct surface *surface,
+                              const struct panel_lattice *lattice,
+                              const struct joint_lines *lines,
+                              const struct option_params *params,
+                              struct panelization *panels,
+                              struct option_totals *totals,
+                              struct facet_error *err);
+
+struct mould_families;
+
+/* Gives panels (classified: option_classify_unmoulded) their moulds from
+ * families, found over a list of panels in which panel k of panels is
+ * number first + k (mould.h: 0 for a surface's own families, its offset
+ * among a building's), and sets totals' mould counts to those of the
+ * families its panels start, a family starting at its first panel (its
+ * representative): moulds, moulds_of, largest_family and
+ * singleton_families (the size of a family is over every part). Then
+ * re-prices totals (classify_price_terms). For a surface's own families
+ * every family starts on it, so these are the families' own counts. */
+void option_moulds_set(const struct option_params *params,
+                       const struct mould_families *families, size_t first,
+                       struct panelization *panels,
+                       struct option_totals *totals);
 
 #endif
