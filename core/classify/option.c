@@ -85,6 +85,26 @@ static int build_panels(const struct surface *surface,
                              params->nv, panels, err);
 }
 
+/* option_evaluate_shared, with the mould families or without
+ * (option_evaluate_unmoulded). */
+static int evaluate(const struct surface *surface,
+                    const struct panel_lattice *lattice,
+                    const struct joint_lines *lines,
+                    const struct option_params *params, int moulds,
+                    struct panelization *panels,
+                    struct option_totals *totals, struct facet_error *err)
+{
+    int rc = build_panels(surface, lattice, params, panels, totals, err);
+    if (rc != FACET_OK)
+        return rc;
+    double joints = joint_length_lines(lines, &surface->joints,
+                                       &surface->mesh, &surface->uv, panels);
+    return moulds ? option_classify(surface, params, joints, panels, totals,
+                                    err)
+                  : option_classify_unmoulded(surface, params, joints,
+                                              panels, totals, err);
+}
+
 int option_evaluate_shared(const struct surface *surface,
                            const struct panel_lattice *lattice,
                            const struct joint_lines *lines,
@@ -93,14 +113,7 @@ int option_evaluate_shared(const struct surface *surface,
                            struct option_totals *totals,
                            struct facet_error *err)
 {
-    int rc = build_panels(surface, lattice, params, panels, totals, err);
-    if (rc != FACET_OK)
-        return rc;
-    return option_classify(surface, params,
-                           joint_length_lines(lines, &surface->joints,
-                                              &surface->mesh, &surface->uv,
-                                              panels),
-                           panels, totals, err);
+    return evaluate(surface, lattice, lines, params, 1, panels, totals, err);
 }
 
 int option_evaluate_unmoulded(const struct surface *surface,
@@ -111,16 +124,7 @@ int option_evaluate_unmoulded(const struct surface *surface,
                               struct option_totals *totals,
                               struct facet_error *err)
 {
-    int rc = build_panels(surface, lattice, params, panels, totals, err);
-    if (rc != FACET_OK)
-        return rc;
-    return option_classify_unmoulded(surface, params,
-                                     joint_length_lines(lines,
-                                                        &surface->joints,
-                                                        &surface->mesh,
-                                                        &surface->uv,
-                                                        panels),
-                                     panels, totals, err);
+    return evaluate(surface, lattice, lines, params, 0, panels, totals, err);
 }
 
 /* A limit of 0 is none: no joint is over it. */

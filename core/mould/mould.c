@@ -202,12 +202,7 @@ static int sample_panels(const struct mould_part *parts, size_t nparts,
                          struct family_work *w)
 {
     struct sample_job job[PARALLEL_MAX];
-    if (jobs < 1)
-        jobs = 1;
-    if (jobs > PARALLEL_MAX)
-        jobs = PARALLEL_MAX;
-    if ((size_t)jobs > nparts)
-        jobs = nparts > 0 ? (int)nparts : 1;
+    jobs = parallel_jobs(jobs, nparts);
     for (int k = 0; k < jobs; k++)
         job[k] = (struct sample_job){parts, offset, nparts, (size_t)k,
                                      (size_t)jobs, w, 0, 0, FACET_OK};

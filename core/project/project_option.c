@@ -22,18 +22,15 @@ struct surface_work {
     const struct surface_grid *grids;
     const struct option_params *params;
     struct project_option *out;
-    atomic_size_t *next;     /* the next surface not taken */
-    size_t failed;           /* this thread's first failed surface, or
-                                SIZE_MAX */
-    int rc;
-    struct facet_error err;
+    atomic_size_t *next;                /* the next surface not taken */
+    struct parallel_failure failure;    /* this thread's first failed
+                                           surface */
 };
 
 static void surface_run(void *argument)
 {
     struct surface_work *job = argument;
-    job->failed = SIZE_MAX;
-    job->rc = FACET_OK;
+    parallel_failure_clear(&job->failure);
     for (;;) {
         size_t i = atomic_fetch_add(job->next, 1);
         if (i >= job->project->nsurfaces)
@@ -50,18 +47,17 @@ static void surface_run(void *argument)
                                            &err);
         /* Threads take surfaces in rising order, so its first failure is
          * its least. */
-        if (rc != FACET_OK && job->failed == SIZE_MAX) {
-            job->failed = i;
-            job->rc = rc;
-            facet_error_set(&job->err, rc, "surface %s: %s", s->name,
+        if (rc != FACET_OK && job->failure.piece == SIZE_MAX) {
+            job->failure.piece = i;
+            job->failure.rc = rc;
+            facet_error_set(&job->failure.err, rc, "surface %s: %s", s->name,
                             err.message);
         }
     }
 }
 
-/* Evaluates every surface without its moulds on up to jobs threads.
- * Returns FACET_OK or the first failed surface's error, in project
- * order. */
+/* Evaluates every surface without its moulds on jobs threads. Returns
+ * FACET_OK or the first failed surface's error, in project order. */
 static int evaluate_surfaces(const struct project *project,
                              const struct surface_grid *grids,
                              const struct option_params *params, int jobs,
@@ -73,17 +69,10 @@ static int evaluate_surfaces(const struct project *project,
     atomic_init(&next, 0);
     for (int k = 0; k < jobs; k++)
         work[k] = (struct surface_work){project, grids, params, out, &next,
-                                        SIZE_MAX, FACET_OK, {0}};
+                                        {0}};
     parallel_run(work, sizeof work[0], jobs, surface_run);
-    const struct surface_work *first = NULL;
-    for (int k = 0; k < jobs; k++)
-        if (work[k].failed != SIZE_MAX &&
-            (first == NULL || work[k].failed < first->failed))
-            first = &work[k];
-    if (first == NULL)
-        return FACET_OK;
-    *err = first->err;
-    return first->rc;
+    return parallel_first_failure(&work[0].failure, sizeof work[0], jobs,
+                                  err);
 }
 
 /* Finds the building's families over every surface's panels and gives
@@ -220,12 +209,7 @@ int project_option_evaluate(const struct project *project,
                                "out of memory for an option over %zu "
                                "surfaces", n);
     out->nsurfaces = n;
-    if (jobs < 1)
-        jobs = 1;
-    if (jobs > PARALLEL_MAX)
-        jobs = PARALLEL_MAX;
-    if ((size_t)jobs > n)
-        jobs = n > 0 ? (int)n : 1;
+    jobs = parallel_jobs(jobs, n);
     int rc = evaluate_surfaces(project, grids, params, jobs, out, err);
     if (rc == FACET_OK)
         rc = find_moulds(project, params, jobs, out, err);

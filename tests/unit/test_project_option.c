@@ -39,6 +39,7 @@
 #include "core/project/project_option.h"
 #include "core/surface/example.h"
 #include "core/surface/example_skin.h"
+#include "tests/support/temp_dir.h"
 
 #define PI 3.14159265358979323846
 
@@ -47,16 +48,13 @@ static char dir[64];
 static int make_dir(void **state)
 {
     (void)state;
-    snprintf(dir, sizeof dir, "/tmp/facet_project_option_XXXXXX");
-    return mkdtemp(dir) == NULL ? -1 : 0;
+    return temp_dir_make(dir, sizeof dir, "project_option");
 }
 
 static int remove_dir(void **state)
 {
     (void)state;
-    char command[128];
-    snprintf(command, sizeof command, "rm -rf '%s'", dir);
-    return system(command) == 0 ? 0 : -1;
+    return temp_dir_remove(dir);
 }
 
 static void same_bits(double a, double b, const char *what)
@@ -202,6 +200,17 @@ static void evaluate(const struct project *p, const struct surface_grid *g,
     struct facet_error err;
     if (project_option_evaluate(p, g, params, jobs, out, &err) != FACET_OK)
         fail_msg("project_option_evaluate: %s", err.message);
+}
+
+/* The example skin at res quads a face, prepared, into *p, and room for
+ * its grids (free them). */
+static struct surface_grid *open_skin(int res, struct project *p)
+{
+    open_project(write_example("skin", res), p);
+    assert_int_equal(p->nsurfaces, SKIN_FACES);
+    struct surface_grid *g = malloc(p->nsurfaces * sizeof *g);
+    assert_non_null(g);
+    return g;
 }
 
 /* A project of one surface is that surface's option_evaluate. */
@@ -420,10 +429,7 @@ static void test_skin_brute_force(void **state)
 {
     (void)state;
     struct project p;
-    open_project(write_example("skin", 6), &p);
-    assert_int_equal(p.nsurfaces, SKIN_FACES);
-    struct surface_grid *g = malloc(p.nsurfaces * sizeof *g);
-    assert_non_null(g);
+    struct surface_grid *g = open_skin(6, &p);
     project_module_grids(&p, 3.2, 2.9, g);
     struct option_params params = test_params(3);
     struct project_option option;
@@ -526,9 +532,7 @@ static void test_threads(void **state)
 {
     (void)state;
     struct project p;
-    open_project(write_example("skin", 5), &p);
-    struct surface_grid *g = malloc(p.nsurfaces * sizeof *g);
-    assert_non_null(g);
+    struct surface_grid *g = open_skin(5, &p);
     project_module_grids(&p, 2.5, 2.5, g);
     struct option_params params = test_params(3);
     struct project_option one;
@@ -563,9 +567,7 @@ static void test_module_grids(void **state)
 {
     (void)state;
     struct project p;
-    open_project(write_example("skin", 4), &p);
-    struct surface_grid *g = malloc(p.nsurfaces * sizeof *g);
-    assert_non_null(g);
+    struct surface_grid *g = open_skin(4, &p);
     project_module_grids(&p, 1.5, 1.5, g);
     const struct project_surface *s = project_find(&p, "skin_r00_c00");
     assert_non_null(s);
@@ -606,10 +608,9 @@ static void test_grids_dedupe(void **state)
     assert_int_equal(surface_grids_cells(known, 2), 42);
 
     struct project p;
-    open_project(write_example("skin", 4), &p);
+    struct surface_grid *a = open_skin(4, &p);
     size_t n = p.nsurfaces;
-    struct surface_grid *a = malloc(n * sizeof *a), *b = malloc(n * sizeof *b);
-    assert_non_null(a);
+    struct surface_grid *b = malloc(n * sizeof *b);
     assert_non_null(b);
     /* Every face's u length is 12 to 17.9 m, away from 13.5 to 13.8 m
      * (none between 13.42 and 14.11), and its v length 20 to 22.2 m: a
