@@ -112,9 +112,6 @@ struct option_totals {
     size_t gaps_over;                /* joints whose gap exceeds max_gap
                                         (0 without a limit) */
     size_t kinks_over;               /* likewise for max_kink */
-    size_t joints;                   /* joints measured, the count the
-                                        means are over (the store does not
-                                        keep it: 0 when read back) */
     size_t sp_misfits;               /* panels classed SP that no cylinder
                                         or cone fits within t */
     size_t sp_fitted;                /* SP panels fitted (built SP) */

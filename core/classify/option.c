@@ -92,7 +92,8 @@ static int evaluate(const struct surface *surface,
                     const struct joint_lines *lines,
                     const struct option_params *params, int moulds,
                     struct panelization *panels,
-                    struct option_totals *totals, struct facet_error *err)
+                    struct option_totals *totals, size_t *measured,
+                    struct facet_error *err)
 {
     int rc = build_panels(surface, lattice, params, panels, totals, err);
     if (rc != FACET_OK)
@@ -102,7 +103,8 @@ static int evaluate(const struct surface *surface,
     return moulds ? option_classify(surface, params, joints, panels, totals,
                                     err)
                   : option_classify_unmoulded(surface, params, joints,
-                                              panels, totals, err);
+                                              panels, totals, measured,
+                                              err);
 }
 
 int option_evaluate_shared(const struct surface *surface,
@@ -113,7 +115,8 @@ int option_evaluate_shared(const struct surface *surface,
                            struct option_totals *totals,
                            struct facet_error *err)
 {
-    return evaluate(surface, lattice, lines, params, 1, panels, totals, err);
+    return evaluate(surface, lattice, lines, params, 1, panels, totals,
+                    NULL, err);
 }
 
 int option_evaluate_unmoulded(const struct surface *surface,
@@ -121,10 +124,11 @@ int option_evaluate_unmoulded(const struct surface *surface,
                               const struct joint_lines *lines,
                               const struct option_params *params,
                               struct panelization *panels,
-                              struct option_totals *totals,
+                              struct option_totals *totals, size_t *joints,
                               struct facet_error *err)
 {
-    return evaluate(surface, lattice, lines, params, 0, panels, totals, err);
+    return evaluate(surface, lattice, lines, params, 0, panels, totals,
+                    joints, err);
 }
 
 /* A limit of 0 is none: no joint is over it. */
@@ -160,12 +164,13 @@ static void set_worst_sides(struct panelization *panels,
  * type, misfit and deviation from its fit, the misfits retyped DP unless
  * the options type SP by class alone; then prices them and sums *totals
  * (classify_totals) and measures the joints of the panels as built
- * (joint.h) into the panels' worst gap and kink and the totals. */
+ * (joint.h) into the panels' worst gap and kink and the totals, and how
+ * many it measured into *measured. */
 static int build_and_measure(const struct surface *surface,
                              const struct classify_options *options,
                              struct panelization *panels,
                              struct option_totals *totals,
-                             struct facet_error *err)
+                             size_t *measured, struct facet_error *err)
 {
     struct cell_sides sides;
     struct built_option built;
@@ -206,7 +211,7 @@ static int build_and_measure(const struct surface *surface,
         totals->mean_kink_deg = joints.mean_kink * 180 / M_PI;
         totals->gaps_over = joints.gaps_over;
         totals->kinks_over = joints.kinks_over;
-        totals->joints = joints.nedges;
+        *measured = joints.nedges;
         totals->feasible =
             classify_violation(totals, options->max_panel_area) == 0;
     }
@@ -220,15 +225,21 @@ int option_classify_unmoulded(const struct surface *surface,
                               const struct option_params *params,
                               double joint_length,
                               struct panelization *panels,
-                              struct option_totals *totals,
+                              struct option_totals *totals, size_t *joints,
                               struct facet_error *err)
 {
     memset(totals, 0, sizeof *totals);
+    size_t measured = 0;
+    if (joints != NULL)
+        *joints = 0;
     int rc = classify_check_options(&params->classify, err);
     if (rc != FACET_OK)
         return rc;
     classify_types(panels, &params->classify);
-    rc = build_and_measure(surface, &params->classify, panels, totals, err);
+    rc = build_and_measure(surface, &params->classify, panels, totals,
+                           &measured, err);
+    if (joints != NULL)
+        *joints = measured;
     if (rc != FACET_OK)
         return rc;
     for (size_t k = 0; k < panels->npanels; k++)
@@ -271,7 +282,7 @@ int option_classify(const struct surface *surface,
                     struct option_totals *totals, struct facet_error *err)
 {
     int rc = option_classify_unmoulded(surface, params, joints, panels,
-                                       totals, err);
+                                       totals, NULL, err);
     if (rc != FACET_OK)
         return rc;
     struct mould_options mould = option_mould_options(params);

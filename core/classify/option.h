@@ -103,13 +103,15 @@ int option_classify(const struct surface *surface,
 /* option_classify up to the mould families: every panel's mould is -1 and
  * the totals' mould counts 0, priced without moulds. What an option over
  * a project (core/project/project_option.h) runs on each surface before
- * the building's families are found over all of them at once. Same
- * returns. */
+ * the building's families are found over all of them at once. *joints
+ * (when not NULL) receives the joints measured, the count the totals'
+ * mean gap and kink are over, so that a building can weigh its surfaces'
+ * means (0 after a failure). Same returns. */
 int option_classify_unmoulded(const struct surface *surface,
                               const struct option_params *params,
                               double joint_length,
                               struct panelization *panels,
-                              struct option_totals *totals,
+                              struct option_totals *totals, size_t *joints,
                               struct facet_error *err);
 
 /* option_evaluate_shared up to the mould families, as
@@ -119,7 +121,7 @@ int option_evaluate_unmoulded(const struct surface *surface,
                               const struct joint_lines *lines,
                               const struct option_params *params,
                               struct panelization *panels,
-                              struct option_totals *totals,
+                              struct option_totals *totals, size_t *joints,
                               struct facet_error *err);
 
 struct mould_families;

@@ -44,7 +44,7 @@ static void surface_run(void *argument)
         struct facet_error err;
         int rc = option_evaluate_unmoulded(&s->surface, NULL, NULL, &params,
                                            &slot->panels, &slot->totals,
-                                           &err);
+                                           &slot->joints, &err);
         /* Threads take surfaces in rising order, so its first failure is
          * its least. */
         if (rc != FACET_OK && job->failure.piece == SIZE_MAX) {
@@ -127,11 +127,12 @@ static int find_moulds(const struct project *project,
 
 /* The building's totals from its surfaces' and its families, as
  * project_option.h says. */
-static void building_totals(const struct project_option *option,
-                            const struct option_params *params,
-                            struct option_totals *t)
+static void building_totals(struct project_option *option,
+                            const struct option_params *params)
 {
+    struct option_totals *t = &option->totals;
     memset(t, 0, sizeof *t);
+    option->joints = 0;
     struct exact_sum area_of[TYPE_COUNT], class_area[CLASS_COUNT];
     struct exact_sum area, planarity, p_dist, joint_length;
     for (int k = 0; k < TYPE_COUNT; k++)
@@ -165,7 +166,7 @@ static void building_totals(const struct project_option *option,
         t->kinks_over += s->kinks_over;
         t->sp_misfits += s->sp_misfits;
         t->sp_fitted += s->sp_fitted;
-        t->joints += s->joints;
+        option->joints += option->surfaces[i].joints;
     }
     for (int k = 0; k < TYPE_COUNT; k++)
         t->area_of[k] = exact_sum_value(&area_of[k]);
@@ -177,9 +178,10 @@ static void building_totals(const struct project_option *option,
     t->joint_length = exact_sum_value(&joint_length);
     /* Each surface's mean weighted by its share of the joints: one
      * surface's mean is kept to the bit (a weight of exactly 1). */
-    for (size_t i = 0; i < option->nsurfaces && t->joints > 0; i++) {
+    for (size_t i = 0; i < option->nsurfaces && option->joints > 0; i++) {
         const struct option_totals *s = &option->surfaces[i].totals;
-        double share = (double)s->joints / (double)t->joints;
+        double share = (double)option->surfaces[i].joints /
+                       (double)option->joints;
         t->mean_gap_mm += share * s->mean_gap_mm;
         t->mean_kink_deg += share * s->mean_kink_deg;
     }
@@ -214,7 +216,7 @@ int project_option_evaluate(const struct project *project,
     if (rc == FACET_OK)
         rc = find_moulds(project, params, jobs, out, err);
     if (rc == FACET_OK)
-        building_totals(out, params, &out->totals);
+        building_totals(out, params);
     return rc;
 }
 

@@ -34,7 +34,7 @@
  *
  * The building's totals:
  *   - sums over the surfaces: panels and every count (per type, per class,
- *     SP misfits and fits, joints, gaps and kinks over their limits), and
+ *     SP misfits and fits, gaps and kinks over their limits), and
  *     the areas (per type, per class, in all), planarity, P_dist and the
  *     joint length, each an order-free sum (exact_sum.h) of the surfaces'
  *     values;
@@ -42,7 +42,8 @@
  *     and kink;
  *   - the mean gap and mean kink: the mean over every joint of the
  *     building, each surface's mean weighted by its share of the joints
- *     (sum of mean_s x joints_s / joints), 0 without joints;
+ *     (sum of joints_s / joints x mean_s, in surface order), 0 without
+ *     joints;
  *   - the moulds from the shared families (not the sum of what each
  *     surface would need on its own): moulds, moulds_of, largest_family,
  *     singleton_families;
@@ -80,6 +81,8 @@ struct project_surface_option {
                                      (above) */
     size_t moulds_used;           /* families its panels belong to */
     size_t moulds_used_of[TYPE_COUNT];  /* the same per type (FP: 0) */
+    size_t joints;                /* joints measured: the count its mean
+                                     gap and kink are over */
 };
 
 struct project_option {
@@ -87,6 +90,7 @@ struct project_option {
     struct project_surface_option *surfaces;  /* owned, nsurfaces, in the
                                                  project's order */
     struct option_totals totals;  /* the building's (above) */
+    size_t joints;                /* joints measured, over every surface */
     struct mould_families families;  /* the building's families, over the
         panels of every surface in order (surface i's panel k is number
         first_panel(i) + k, first_panel the panels of the surfaces before

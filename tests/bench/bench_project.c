@@ -97,7 +97,7 @@ static int run_option(const char *path, int runs, int fd)
                 f.moulds = t->moulds;
                 for (size_t i = 0; i < option.nsurfaces; i++)
                     f.moulds_by_face += option.surfaces[i].moulds_used;
-                f.joints = t->joints;
+                f.joints = option.joints;
                 f.max_gap_mm = t->max_gap_mm;
                 f.max_kink_deg = t->max_kink_deg;
                 f.cost = t->cost;
