@@ -5,6 +5,7 @@
 
 #include <assert.h>
 #include <pthread.h>
+#include <stdint.h>
 #include <unistd.h>
 
 struct call {
@@ -48,4 +49,37 @@ int parallel_cpus(int limit)
     if (cpus < 1)
         cpus = 1;
     return cpus < limit ? (int)cpus : limit;
+}
+
+int parallel_jobs(int jobs, size_t pieces)
+{
+    if (jobs > PARALLEL_MAX)
+        jobs = PARALLEL_MAX;
+    if (jobs > 0 && (size_t)jobs > pieces)
+        jobs = (int)pieces;
+    return jobs < 1 ? 1 : jobs;
+}
+
+void parallel_failure_clear(struct parallel_failure *failure)
+{
+    failure->piece = SIZE_MAX;
+    failure->rc = FACET_OK;
+    facet_error_clear(&failure->err);
+}
+
+int parallel_first_failure(const struct parallel_failure *first,
+                           size_t stride, int n, struct facet_error *err)
+{
+    const struct parallel_failure *least = NULL;
+    for (int k = 0; k < n; k++) {
+        const struct parallel_failure *f =
+            (const struct parallel_failure *)((const char *)first +
+                                              (size_t)k * stride);
+        if (f->piece != SIZE_MAX && (least == NULL || f->piece < least->piece))
+            least = f;
+    }
+    if (least == NULL)
+        return FACET_OK;
+    *err = least->err;
+    return least->rc;
 }

@@ -212,6 +212,14 @@ void classify_totals(struct panelization *p,
     totals->area = exact_sum_value(&area);
     totals->planarity = exact_sum_value(&planarity);
     totals->p_dist = exact_sum_value(&p_dist);
+    classify_price_areas(options, totals);
+    totals->feasible =
+        classify_violation(totals, options->max_panel_area) == 0;
+}
+
+void classify_price_areas(const struct classify_options *options,
+                          struct option_totals *totals)
+{
     /* Cost from the areas per type, not from the panels one by one: two
      * options whose type areas are equal then cost the same to the bit,
      * whatever order their panels were summed in. */
@@ -224,8 +232,6 @@ void classify_totals(struct panelization *p,
     totals->area_cost = totals->cost_of[TYPE_FP] + totals->cost_of[TYPE_SP] +
                         totals->cost_of[TYPE_DP];
     totals->cost = totals->area_cost;
-    totals->feasible =
-        classify_violation(totals, options->max_panel_area) == 0;
 }
 
 double classify_violation(const struct option_totals *totals,

@@ -182,6 +182,13 @@ void classify_totals(struct panelization *p,
                      const struct classify_options *options,
                      struct option_totals *totals);
 
+/* Prices totals' areas per type (area_of) by options' prices: cost_of,
+ * and area_cost and cost their sum (the terms beyond area are
+ * classify_price_terms'). classify_totals ends with it; a building's
+ * totals, whose areas are its surfaces' summed, are priced by it too. */
+void classify_price_areas(const struct classify_options *options,
+                          struct option_totals *totals);
+
 /* How far an option is from feasible (0: feasible): its largest panel's
  * excess over the size limit max_panel_area (m^2, classify_area_excess)
  * plus the joints over the gap limit and over the kink limit, each

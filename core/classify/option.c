@@ -3,6 +3,7 @@
  */
 #include "core/classify/option.h"
 
+#include <assert.h>
 #include <math.h>
 #include <string.h>
 
@@ -58,24 +59,17 @@ int option_evaluate_lattice(const struct surface *surface,
                                   totals, err);
 }
 
-static int classify_built(const struct surface *surface,
-                          const struct option_params *params, double joints,
-                          struct grid_fits *fits,
-                          struct panelization *panels,
-                          struct option_totals *totals,
-                          struct facet_error *err);
-
-/* option_evaluate_shared, or with fits, option_evaluate_kept. */
-static int evaluate(const struct surface *surface,
-                    const struct panel_lattice *lattice,
-                    const struct joint_lines *lines,
-                    const struct option_params *params,
-                    struct grid_fits *fits, struct panelization *panels,
-                    struct option_totals *totals, struct facet_error *err)
+/* Builds the panels of params' grid over surface: from lattice when it
+ * holds the grid and params ask for PANEL_EXTREMES, else panels_build_fast.
+ * The checks every evaluation starts with come first. */
+static int build_panels(const struct surface *surface,
+                        const struct panel_lattice *lattice,
+                        const struct option_params *params,
+                        struct panelization *panels,
+                        struct option_totals *totals,
+                        struct facet_error *err)
 {
     memset(panels, 0, sizeof *panels);
-    if (fits != NULL)
-        memset(fits, 0, sizeof *fits);
     memset(totals, 0, sizeof *totals);
     if (!surface->prepared)
         return facet_error_set(err, FACET_EWORK,
@@ -85,11 +79,39 @@ static int evaluate(const struct surface *surface,
         return rc;
     if (lattice != NULL && params->mode == PANEL_EXTREMES &&
         panel_lattice_has(lattice, params->nu, params->nv))
-        rc = panels_build_lattice(lattice, params->nu, params->nv, panels,
-                                  err);
-    else
-        rc = panels_build_fast(&surface->panels, params->mode, params->nu,
-                               params->nv, panels, err);
+        return panels_build_lattice(lattice, params->nu, params->nv, panels,
+                                    err);
+    return panels_build_fast(&surface->panels, params->mode, params->nu,
+                             params->nv, panels, err);
+}
+
+static int classify_unmoulded(const struct surface *surface,
+                              const struct option_params *params,
+                              double joint_length, struct grid_fits *fits,
+                              struct panelization *panels,
+                              struct option_totals *totals, size_t *joints,
+                              struct facet_error *err);
+static int classify_moulded(const struct surface *surface,
+                            const struct option_params *params,
+                            double joint_length, struct grid_fits *fits,
+                            struct panelization *panels,
+                            struct option_totals *totals,
+                            struct facet_error *err);
+
+/* option_evaluate_shared, with the mould families or without
+ * (option_evaluate_unmoulded), and with fits, the grid's fits kept
+ * (option_evaluate_kept). */
+static int evaluate(const struct surface *surface,
+                    const struct panel_lattice *lattice,
+                    const struct joint_lines *lines,
+                    const struct option_params *params, int moulds,
+                    struct grid_fits *fits, struct panelization *panels,
+                    struct option_totals *totals, size_t *measured,
+                    struct facet_error *err)
+{
+    if (fits != NULL)
+        memset(fits, 0, sizeof *fits);
+    int rc = build_panels(surface, lattice, params, panels, totals, err);
     if (rc != FACET_OK)
         return rc;
     if (fits != NULL) {
@@ -99,11 +121,12 @@ static int evaluate(const struct surface *surface,
         if (rc != FACET_OK)
             return rc;
     }
-    return classify_built(surface, params,
-                          joint_length_lines(lines, &surface->joints,
-                                             &surface->mesh, &surface->uv,
-                                             panels),
-                          fits, panels, totals, err);
+    double joints = joint_length_lines(lines, &surface->joints,
+                                       &surface->mesh, &surface->uv, panels);
+    return moulds ? classify_moulded(surface, params, joints, fits, panels,
+                                     totals, err)
+                  : classify_unmoulded(surface, params, joints, fits, panels,
+                                       totals, measured, err);
 }
 
 int option_evaluate_shared(const struct surface *surface,
@@ -114,8 +137,8 @@ int option_evaluate_shared(const struct surface *surface,
                            struct option_totals *totals,
                            struct facet_error *err)
 {
-    return evaluate(surface, lattice, lines, params, NULL, panels, totals,
-                    err);
+    return evaluate(surface, lattice, lines, params, 1, NULL, panels,
+                    totals, NULL, err);
 }
 
 int option_evaluate_kept(const struct surface *surface,
@@ -126,8 +149,20 @@ int option_evaluate_kept(const struct surface *surface,
                          struct option_totals *totals,
                          struct facet_error *err)
 {
-    return evaluate(surface, lattice, lines, params, fits, panels, totals,
-                    err);
+    return evaluate(surface, lattice, lines, params, 1, fits, panels, totals,
+                    NULL, err);
+}
+
+int option_evaluate_unmoulded(const struct surface *surface,
+                              const struct panel_lattice *lattice,
+                              const struct joint_lines *lines,
+                              const struct option_params *params,
+                              struct panelization *panels,
+                              struct option_totals *totals, size_t *joints,
+                              struct facet_error *err)
+{
+    return evaluate(surface, lattice, lines, params, 0, NULL, panels, totals,
+                    joints, err);
 }
 
 /* A limit of 0 is none: no joint is over it. */
@@ -163,13 +198,16 @@ static void set_worst_sides(struct panelization *panels,
  * type, misfit and deviation from its fit, the misfits retyped DP unless
  * the options type SP by class alone; then prices them and sums *totals
  * (classify_totals) and measures the joints of the panels as built
- * (joint.h) into the panels' worst gap and kink and the totals. */
+ * (joint.h) into the panels' worst gap and kink and the totals, and how
+ * many it measured into *measured. With fits, the grid's SP fits and
+ * sides kept across its thresholds (sp_fit.h's grid_fits) serve, to the
+ * same results. */
 static int build_and_measure(const struct surface *surface,
                              const struct classify_options *options,
                              struct grid_fits *fits,
                              struct panelization *panels,
                              struct option_totals *totals,
-                             struct facet_error *err)
+                             size_t *measured, struct facet_error *err)
 {
     struct cell_sides sides;
     struct built_option built;
@@ -217,6 +255,7 @@ static int build_and_measure(const struct surface *surface,
         totals->mean_kink_deg = joints.mean_kink * 180 / M_PI;
         totals->gaps_over = joints.gaps_over;
         totals->kinks_over = joints.kinks_over;
+        *measured = joints.nedges;
         totals->feasible =
             classify_violation(totals, options->max_panel_area) == 0;
     }
@@ -227,13 +266,80 @@ static int build_and_measure(const struct surface *surface,
     return rc;
 }
 
+int option_classify_unmoulded(const struct surface *surface,
+                              const struct option_params *params,
+                              double joint_length,
+                              struct panelization *panels,
+                              struct option_totals *totals, size_t *joints,
+                              struct facet_error *err)
+{
+    return classify_unmoulded(surface, params, joint_length, NULL, panels,
+                              totals, joints, err);
+}
+
+/* option_classify_unmoulded, with fits when not NULL. */
+static int classify_unmoulded(const struct surface *surface,
+                              const struct option_params *params,
+                              double joint_length, struct grid_fits *fits,
+                              struct panelization *panels,
+                              struct option_totals *totals, size_t *joints,
+                              struct facet_error *err)
+{
+    memset(totals, 0, sizeof *totals);
+    size_t measured = 0;
+    if (joints != NULL)
+        *joints = 0;
+    int rc = classify_check_options(&params->classify, err);
+    if (rc != FACET_OK)
+        return rc;
+    classify_types(panels, &params->classify);
+    rc = build_and_measure(surface, &params->classify, fits, panels, totals,
+                           &measured, err);
+    if (joints != NULL)
+        *joints = measured;
+    if (rc != FACET_OK)
+        return rc;
+    for (size_t k = 0; k < panels->npanels; k++)
+        panels->panels[k].mould = -1;
+    totals->joint_length = joint_length;
+    classify_price_terms(&params->classify, totals);
+    return FACET_OK;
+}
+
+void option_moulds_set(const struct option_params *params,
+                       const struct mould_families *families, size_t first,
+                       struct panelization *panels,
+                       struct option_totals *totals)
+{
+    assert(first + panels->npanels <= families->npanels);
+    for (int t = 0; t < TYPE_COUNT; t++)
+        totals->moulds_of[t] = 0;
+    totals->moulds = 0;
+    totals->largest_family = 0;
+    totals->singleton_families = 0;
+    for (size_t k = 0; k < panels->npanels; k++) {
+        int f = families->family[first + k];
+        panels->panels[k].mould = f;
+        /* A family starts at its representative, its first panel. */
+        if (f < 0 || families->representative[f] != first + k)
+            continue;
+        size_t size = families->size[f];
+        totals->moulds_of[panels->panels[k].type]++;
+        totals->moulds++;
+        totals->largest_family = size > totals->largest_family
+                                     ? size : totals->largest_family;
+        totals->singleton_families += size == 1;
+    }
+    classify_price_terms(&params->classify, totals);
+}
+
 int option_classify(const struct surface *surface,
                     const struct option_params *params, double joints,
                     struct panelization *panels,
                     struct option_totals *totals, struct facet_error *err)
 {
-    return classify_built(surface, params, joints, NULL, panels, totals,
-                          err);
+    return classify_moulded(surface, params, joints, NULL, panels, totals,
+                            err);
 }
 
 int option_classify_kept(const struct surface *surface,
@@ -243,42 +349,28 @@ int option_classify_kept(const struct surface *surface,
                          struct option_totals *totals,
                          struct facet_error *err)
 {
-    return classify_built(surface, params, joint_length, fits, panels,
-                          totals, err);
+    return classify_moulded(surface, params, joint_length, fits, panels,
+                            totals, err);
 }
 
-/* option_classify, or with fits, option_classify_kept. */
-static int classify_built(const struct surface *surface,
-                          const struct option_params *params, double joints,
-                          struct grid_fits *fits,
-                          struct panelization *panels,
-                          struct option_totals *totals,
-                          struct facet_error *err)
+/* option_classify, with fits when not NULL (option_classify_kept). */
+static int classify_moulded(const struct surface *surface,
+                            const struct option_params *params,
+                            double joints, struct grid_fits *fits,
+                            struct panelization *panels,
+                            struct option_totals *totals,
+                            struct facet_error *err)
 {
-    memset(totals, 0, sizeof *totals);
-    int rc = classify_check_options(&params->classify, err);
-    if (rc != FACET_OK)
-        return rc;
-    classify_types(panels, &params->classify);
-    rc = build_and_measure(surface, &params->classify, fits, panels, totals,
-                           err);
+    int rc = classify_unmoulded(surface, params, joints, fits, panels,
+                                totals, NULL, err);
     if (rc != FACET_OK)
         return rc;
     struct mould_options mould = option_mould_options(params);
     struct mould_families families;
     rc = mould_families_build(&surface->mesh, &surface->uv, panels, &mould,
                               &families, err);
-    if (rc == FACET_OK) {
-        for (size_t k = 0; k < panels->npanels; k++)
-            panels->panels[k].mould = families.family[k];
-        for (int t = 0; t < TYPE_COUNT; t++)
-            totals->moulds_of[t] = families.count[t];
-        totals->moulds = families.nfamilies;
-        totals->largest_family = families.largest;
-        totals->singleton_families = families.singletons;
-        totals->joint_length = joints;
-        classify_price_terms(&params->classify, totals);
-    }
+    if (rc == FACET_OK)
+        option_moulds_set(params, &families, 0, panels, totals);
     mould_families_free(&families);
     return rc;
 }

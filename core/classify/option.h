@@ -93,15 +93,17 @@ int option_evaluate_shared(const struct surface *surface,
  * (m), the joint length of the grid (joint_length.h), which does not
  * depend on the threshold: a search evaluating several thresholds on one
  * grid measures it once. Returns FACET_OK, FACET_EINPUT for a bad option
- * value, FACET_EWORK when out of memory. */
+ * value, FACET_EWORK when out of memory. It is option_classify_unmoulded,
+ * then mould_families_build over panels and option_moulds_set. */
 int option_classify(const struct surface *surface,
                     const struct option_params *params, double joint_length,
                     struct panelization *panels,
                     struct option_totals *totals, struct facet_error *err);
 
-/* One grid at several thresholds: option_evaluate_shared for the first,
- * which also sets up *fits (sp_fit.h's grid_fits) from the grid's panels,
- * then option_classify_kept for each other threshold with the same panels
+/* One grid at several thresholds: option_evaluate_kept for the first, as
+ * option_evaluate_shared but also setting up *fits (sp_fit.h's grid_fits)
+ * from the grid's panels, then option_classify_kept for each other
+ * threshold with the same panels
  * and fits. A panel's SP fits are then made once, the first time it is SP,
  * and judged at each threshold; its sides are sampled once. The results
  * are those of option_evaluate_shared and option_classify to the bit
@@ -124,5 +126,45 @@ int option_classify_kept(const struct surface *surface,
                          struct panelization *panels,
                          struct option_totals *totals,
                          struct facet_error *err);
+
+/* option_classify up to the mould families: every panel's mould is -1 and
+ * the totals' mould counts 0, priced without moulds. What an option over
+ * a project (core/project/project_option.h) runs on each surface before
+ * the building's families are found over all of them at once. *joints
+ * (when not NULL) receives the joints measured, the count the totals'
+ * mean gap and kink are over, so that a building can weigh its surfaces'
+ * means (0 after a failure). Same returns. */
+int option_classify_unmoulded(const struct surface *surface,
+                              const struct option_params *params,
+                              double joint_length,
+                              struct panelization *panels,
+                              struct option_totals *totals, size_t *joints,
+                              struct facet_error *err);
+
+/* option_evaluate_shared up to the mould families, as
+ * option_classify_unmoulded. Same returns. */
+int option_evaluate_unmoulded(const struct surface *surface,
+                              const struct panel_lattice *lattice,
+                              const struct joint_lines *lines,
+                              const struct option_params *params,
+                              struct panelization *panels,
+                              struct option_totals *totals, size_t *joints,
+                              struct facet_error *err);
+
+struct mould_families;
+
+/* Gives panels (classified: option_classify_unmoulded) their moulds from
+ * families, found over a list of panels in which panel k of panels is
+ * number first + k (mould.h: 0 for a surface's own families, its offset
+ * among a building's), and sets totals' mould counts to those of the
+ * families its panels start, a family starting at its first panel (its
+ * representative): moulds, moulds_of, largest_family and
+ * singleton_families (the size of a family is over every part). Then
+ * re-prices totals (classify_price_terms). For a surface's own families
+ * every family starts on it, so these are the families' own counts. */
+void option_moulds_set(const struct option_params *params,
+                       const struct mould_families *families, size_t first,
+                       struct panelization *panels,
+                       struct option_totals *totals);
 
 #endif

@@ -22,6 +22,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "core/base/parallel.h"
 #include "core/base/vec3.h"
 #include "core/classify/classify.h"
 #include "core/mould/mould_fit.h"
@@ -36,9 +37,11 @@ struct bucket {
     int head;  /* the latest family filed here, -1 for an empty slot */
 };
 
-/* Everything one build works on. */
+/* Everything one build works on. Panels are numbered across the parts:
+ * part 0's, then part 1's, and so on (mould.h). */
 struct family_work {
-    const struct panelization *panels;
+    size_t npanels;
+    const struct panel **panel;            /* npanels: each panel */
     const struct mould_options *options;
     struct mould_labels labels;
     double (*point)[MOULD_SAMPLES][3];     /* npanels: the samples */
@@ -133,33 +136,83 @@ static void grid_key(const struct family_work *w, const double d[DESCRIPTOR],
     key[1] = (int64_t)floor(d[1] / w->cell);
 }
 
-/* Samples and describes every SP and DP panel (w->sampled holds which
- * it could); sets w->cell. Returns FACET_OK or FACET_EWORK. */
-static int sample_panels(const struct mesh *mesh,
-                         const struct uv_index *index,
-                         struct family_work *w)
+/* Samples and describes every SP and DP panel of part, whose first panel
+ * is first in w's numbering (w->sampled holds which it could), and raises
+ * *diameter and *extent to the largest diameter and grid coordinate of
+ * those it could. Each part writes only its own panels' entries, so parts
+ * may be sampled at once. Returns FACET_OK or FACET_EWORK. */
+static int sample_part(const struct mould_part *part, size_t first,
+                       struct family_work *w, double *diameter,
+                       double *extent)
 {
-    const struct panelization *p = w->panels;
+    const struct panelization *p = part->panels;
+    unsigned char *sampled = w->sampled + first;
     for (size_t n = 0; n < p->npanels; n++)
-        w->sampled[n] = p->panels[n].type != TYPE_FP;
-    if (mould_sample_grid(mesh, index, p, w->sampled, w->point,
-                          w->sampled) != FACET_OK)
+        sampled[n] = p->panels[n].type != TYPE_FP;
+    if (mould_sample_grid(part->mesh, part->index, p, sampled,
+                          w->point + first, sampled) != FACET_OK)
         return FACET_EWORK;
-    double diameter = 0, extent = 0;
-    for (size_t n = 0; n < p->npanels; n++) {
+    for (size_t k = 0; k < p->npanels; k++) {
+        size_t n = first + k;
         if (!w->sampled[n])
             continue;
         w->sampled[n] = 0;
         mould_shape_measure((const double (*)[3])w->point[n], &w->shape[n]);
         describe(&w->shape[n], w->descriptor[n]);
         int finite = 1;
-        for (int k = 0; k < DESCRIPTOR; k++)
-            finite &= isfinite(w->descriptor[n][k]);
-        if (!finite || !isfinite(p->panels[n].diameter))
+        for (int d = 0; d < DESCRIPTOR; d++)
+            finite &= isfinite(w->descriptor[n][d]);
+        if (!finite || !isfinite(p->panels[k].diameter))
             continue;
         w->sampled[n] = 1;
-        diameter = fmax(diameter, p->panels[n].diameter);
-        extent = fmax(extent, fmax(w->descriptor[n][0], w->descriptor[n][1]));
+        *diameter = fmax(*diameter, p->panels[k].diameter);
+        *extent = fmax(*extent, fmax(w->descriptor[n][0], w->descriptor[n][1]));
+    }
+    return FACET_OK;
+}
+
+/* One thread's share of the sampling: parts first, first + step, ... */
+struct sample_job {
+    const struct mould_part *parts;
+    const size_t *offset;        /* each part's first panel */
+    size_t nparts, first, step;
+    struct family_work *work;
+    double diameter, extent;     /* the largest of its parts' */
+    int rc;
+};
+
+static void sample_run(void *argument)
+{
+    struct sample_job *job = argument;
+    job->diameter = 0;
+    job->extent = 0;
+    job->rc = FACET_OK;
+    for (size_t i = job->first; i < job->nparts && job->rc == FACET_OK;
+         i += job->step)
+        job->rc = sample_part(&job->parts[i], job->offset[i], job->work,
+                              &job->diameter, &job->extent);
+}
+
+/* Samples and describes every part's SP and DP panels on up to jobs
+ * threads, and sets w->cell from the largest diameter and grid
+ * coordinate over all of them (a maximum: the same whatever the threads).
+ * Returns FACET_OK or FACET_EWORK. */
+static int sample_panels(const struct mould_part *parts, size_t nparts,
+                         const size_t *offset, int jobs,
+                         struct family_work *w)
+{
+    struct sample_job job[PARALLEL_MAX];
+    jobs = parallel_jobs(jobs, nparts);
+    for (int k = 0; k < jobs; k++)
+        job[k] = (struct sample_job){parts, offset, nparts, (size_t)k,
+                                     (size_t)jobs, w, 0, 0, FACET_OK};
+    parallel_run(job, sizeof job[0], jobs, sample_run);
+    double diameter = 0, extent = 0;
+    for (int k = 0; k < jobs; k++) {
+        if (job[k].rc != FACET_OK)
+            return job[k].rc;
+        diameter = fmax(diameter, job[k].diameter);
+        extent = fmax(extent, job[k].extent);
     }
     /* Wider than any pair's allowance, with a margin for the division's
      * rounding: keys of panels within it differ by at most 1. */
@@ -175,7 +228,7 @@ static int sample_panels(const struct mesh *mesh,
 static int candidates(const struct family_work *w,
                       const struct mould_families *out, size_t n)
 {
-    const struct panel *panel = &w->panels->panels[n];
+    const struct panel *panel = w->panel[n];
     int64_t key[2];
     grid_key(w, w->descriptor[n], key);
     int count = 0;
@@ -183,8 +236,7 @@ static int candidates(const struct family_work *w,
         for (int dy = -1; dy <= 1; dy++) {
             size_t slot = bucket_slot(w, key[0] + dx, key[1] + dy);
             for (int f = w->bucket[slot].head; f >= 0; f = w->next[f]) {
-                const struct panel *rep =
-                    &w->panels->panels[out->representative[f]];
+                const struct panel *rep = w->panel[out->representative[f]];
                 double limit = mould_limit(w->options, rep->diameter,
                                            panel->diameter);
                 if (rep->type == panel->type &&
@@ -212,7 +264,7 @@ static void start_family(struct family_work *w, struct mould_families *out,
     out->family[n] = f;
     out->representative[f] = n;
     out->size[f] = 1;
-    out->count[w->panels->panels[n].type]++;
+    out->count[w->panel[n]->type]++;
     w->next[f] = -1;
     if (!w->sampled[n]) {
         out->trimmed++;
@@ -231,9 +283,8 @@ static void start_family(struct family_work *w, struct mould_families *out,
 
 static void group_panels(struct family_work *w, struct mould_families *out)
 {
-    const struct panelization *p = w->panels;
-    for (size_t n = 0; n < p->npanels; n++) {
-        const struct panel *panel = &p->panels[n];
+    for (size_t n = 0; n < w->npanels; n++) {
+        const struct panel *panel = w->panel[n];
         out->family[n] = -1;
         if (panel->type == TYPE_FP)
             continue;
@@ -242,7 +293,7 @@ static void group_panels(struct family_work *w, struct mould_families *out)
         for (int c = 0; c < count && !joined; c++) {
             int f = w->candidate[c];
             size_t r = out->representative[f];
-            double limit = mould_limit(w->options, p->panels[r].diameter,
+            double limit = mould_limit(w->options, w->panel[r]->diameter,
                                        panel->diameter);
             struct mould_fit fit;
             out->fits++;
@@ -272,22 +323,43 @@ int mould_families_build(const struct mesh *mesh,
                          struct mould_families *out,
                          struct facet_error *err)
 {
+    struct mould_part part = {mesh, index, panels};
+    return mould_families_build_parts(&part, 1, options, 1, out, err);
+}
+
+int mould_families_build_parts(const struct mould_part *parts,
+                               size_t nparts,
+                               const struct mould_options *options,
+                               int jobs, struct mould_families *out,
+                               struct facet_error *err)
+{
     memset(out, 0, sizeof *out);
     if (!(options->tolerance >= 0) || !isfinite(options->tolerance))
         return facet_error_set(err, FACET_EINPUT,
             "mould tolerance %g m: must be a finite length of 0 or more",
             options->tolerance);
-    if (panels->npanels > 0 &&
-        (panels->umin != index->umin || panels->vmin != index->vmin ||
-         panels->umax != index->umax || panels->vmax != index->vmax))
-        return facet_error_set(err, FACET_EINPUT,
-            "the panels were not built over this UV map");
-    size_t n = panels->npanels, one = n ? n : 1;
+    size_t n = 0;
+    for (size_t i = 0; i < nparts; i++) {
+        const struct panelization *p = parts[i].panels;
+        const struct uv_index *index = parts[i].index;
+        if (p->npanels > 0 &&
+            (p->umin != index->umin || p->vmin != index->vmin ||
+             p->umax != index->umax || p->vmax != index->vmax))
+            return nparts == 1
+                ? facet_error_set(err, FACET_EINPUT,
+                      "the panels were not built over this UV map")
+                : facet_error_set(err, FACET_EINPUT,
+                      "the panels of part %zu were not built over its UV "
+                      "map", i + 1);
+        n += p->npanels;
+    }
+    size_t one = n ? n : 1;
     size_t slots = 16;
     while (slots < 2 * one)
         slots *= 2;
     struct family_work w = {
-        .panels = panels, .options = options,
+        .npanels = n, .options = options,
+        .panel = malloc(one * sizeof *w.panel),
         .point = malloc(one * sizeof *w.point),
         .shape = malloc(one * sizeof *w.shape),
         .descriptor = malloc(one * sizeof *w.descriptor),
@@ -297,28 +369,40 @@ int mould_families_build(const struct mesh *mesh,
         .next = malloc(one * sizeof *w.next),
         .candidate = malloc(one * sizeof *w.candidate),
     };
+    size_t *offset = malloc((nparts ? nparts : 1) * sizeof *offset);
     out->npanels = n;
     out->family = malloc(one * sizeof *out->family);
     out->representative = malloc(one * sizeof *out->representative);
     out->size = malloc(one * sizeof *out->size);
     int rc = FACET_OK;
-    if (w.point == NULL || w.shape == NULL || w.descriptor == NULL || w.sampled == NULL ||
-        w.bucket == NULL || w.next == NULL || w.candidate == NULL ||
+    if (w.panel == NULL || w.point == NULL || w.shape == NULL ||
+        w.descriptor == NULL || w.sampled == NULL || w.bucket == NULL ||
+        w.next == NULL || w.candidate == NULL || offset == NULL ||
         out->family == NULL || out->representative == NULL ||
         out->size == NULL) {
         rc = facet_error_set(err, FACET_EWORK,
                              "out of memory for the mould families of %zu "
                              "panels", n);
     } else {
+        size_t first = 0;
+        for (size_t i = 0; i < nparts; i++) {
+            const struct panelization *p = parts[i].panels;
+            offset[i] = first;
+            for (size_t k = 0; k < p->npanels; k++)
+                w.panel[first + k] = &p->panels[k];
+            first += p->npanels;
+        }
         for (size_t s = 0; s < slots; s++)
             w.bucket[s].head = -1;
         mould_labels_make(&w.labels);
-        if (sample_panels(mesh, index, &w) == FACET_OK)
+        if (sample_panels(parts, nparts, offset, jobs, &w) == FACET_OK)
             group_panels(&w, out);
         else
             rc = facet_error_set(err, FACET_EWORK,
                                  "out of memory for the mould samples");
     }
+    free(offset);
+    free(w.panel);
     free(w.point);
     free(w.shape);
     free(w.descriptor);

@@ -20,7 +20,8 @@
  * hides.
  *
  * Families. FP panels need no mould (family -1). SP and DP panels are
- * taken in panel order, each type on its own (a single-curved mould is not
+ * taken in panel order (over several surfaces, mould_families_build_parts:
+ * surface order, then panel order), each type on its own (a single-curved mould is not
  * a double-curved one): each panel joins the first family (in the order
  * families were started) whose representative, the family's first panel,
  * it is congruent to, or starts a family. So every member lies within the
@@ -42,6 +43,13 @@
  * skips the fits that lower bounds show cannot be within the tolerance
  * (mould_congruent). None of this changes a family or a deviation:
  * tests/unit/test_cost_fast.c holds them to the plain greedy, to the bit.
+ *
+ * A building. A mould serves congruent panels of any surface of a
+ * project, so one search runs over the panels of every surface (parts):
+ * each part's panels are sampled on its own surface's mesh and UV, in
+ * world coordinates, and then taken as one list. Sampling is a part's own
+ * work and may run on several threads; the greedy itself is one pass in
+ * that fixed order, so the families do not depend on the threads.
  */
 #ifndef FACET_MOULD_H
 #define FACET_MOULD_H
@@ -91,6 +99,29 @@ int mould_families_build(const struct mesh *mesh,
                          const struct mould_options *options,
                          struct mould_families *out,
                          struct facet_error *err);
+
+/* One surface's panels for mould_families_build_parts: panels built over
+ * mesh and index (for a prepared surface s: &s->mesh, &s->uv), classified,
+ * in world coordinates (m) as every part of one search must be. */
+struct mould_part {
+    const struct mesh *mesh;
+    const struct uv_index *index;
+    const struct panelization *panels;
+};
+
+/* The mould families of the panels of parts[0 .. nparts), taken as one
+ * list: part 0's panels, then part 1's, and so on, so that panel k of
+ * part i is number offset_i + k in *out (family, representative), offset_i
+ * the panels of the parts before it. Samples the parts on up to jobs
+ * threads (1..PARALLEL_MAX, parallel.h); *out does not depend on jobs.
+ * With one part it is mould_families_build, to the bit. Same returns,
+ * FACET_EINPUT naming the part (1-based) whose panels are not built over
+ * its UV map. */
+int mould_families_build_parts(const struct mould_part *parts,
+                               size_t nparts,
+                               const struct mould_options *options,
+                               int jobs, struct mould_families *out,
+                               struct facet_error *err);
 
 void mould_families_free(struct mould_families *families);
 

@@ -338,23 +338,20 @@ struct prepare_job {
     size_t first, step;
     int flip_normals;
     enum param_method method;
-    size_t failed;             /* the surface that failed, or SIZE_MAX */
-    int rc;
-    struct facet_error err;
+    struct parallel_failure failure;  /* the surface that failed */
 };
 
 static void prepare_run(void *argument)
 {
     struct prepare_job *job = argument;
-    job->failed = SIZE_MAX;
-    job->rc = FACET_OK;
+    parallel_failure_clear(&job->failure);
     for (size_t i = job->first; i < job->project->nsurfaces; i += job->step) {
         struct project_surface *s = &job->project->surfaces[i];
         int rc = surface_prepare(&s->surface, job->flip_normals,
-                                 job->method, &job->err);
+                                 job->method, &job->failure.err);
         if (rc != FACET_OK) {
-            job->failed = i;
-            job->rc = rc;
+            job->failure.piece = i;
+            job->failure.rc = rc;
             return;
         }
         surface_uv_lengths(&s->surface.mesh, s->surface.param.uv,
@@ -369,23 +366,13 @@ int project_prepare(struct project *project, int flip_normals,
      * and small ones mix. The error reported is the first surface's in
      * project order that fails, whatever the threads' timing. */
     struct prepare_job jobs[PROJECT_THREADS_MAX];
-    int n = parallel_cpus(PROJECT_THREADS_MAX);
-    if ((size_t)n > project->nsurfaces)
-        n = project->nsurfaces > 0 ? (int)project->nsurfaces : 1;
+    int n = parallel_jobs(parallel_cpus(PROJECT_THREADS_MAX),
+                          project->nsurfaces);
     for (int k = 0; k < n; k++)
         jobs[k] = (struct prepare_job){project, (size_t)k, (size_t)n,
-                                       flip_normals, method, SIZE_MAX,
-                                       FACET_OK, {0}};
+                                       flip_normals, method, {0}};
     parallel_run(jobs, sizeof jobs[0], n, prepare_run);
-    const struct prepare_job *first = NULL;
-    for (int k = 0; k < n; k++)
-        if (jobs[k].failed != SIZE_MAX &&
-            (first == NULL || jobs[k].failed < first->failed))
-            first = &jobs[k];
-    if (first == NULL)
-        return FACET_OK;
-    *err = first->err;
-    return first->rc;
+    return parallel_first_failure(&jobs[0].failure, sizeof jobs[0], n, err);
 }
 
 const struct project_surface *project_find(const struct project *project,

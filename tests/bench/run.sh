@@ -24,7 +24,7 @@ echo
 echo "== NSGA-II: Facet against DEAP on ZDT1 (population 100 x 250 generations)"
 tests/bench/bench_nsga2.sh "$build"
 echo
-echo "== A whole building: load and prepare the example skin (180 faces, 2,025,000 triangles) against a bare read of its file"
+echo "== A whole building: load and prepare the example skin (180 faces, 2,025,000 triangles) against a bare read of its file; one option of about 50,000 panels over it"
 "$build/bench/bench_project"
 echo
 echo "== The TUI's options table on 1,000,000 options: open, sort, filter, page, end"

@@ -4,7 +4,8 @@
  * `facet optimize` and the TUI's New run all use: the count is the online
  * CPUs as sysconf reports them, clamped to [1, limit]; every job runs
  * exactly once, job 0 on the calling thread; more jobs than PARALLEL_MAX
- * stop the program (they were silently left undone).
+ * stop the program (they were silently left undone); the threads for
+ * pieces of work, and the failure reported from several jobs', by hand.
  */
 #include <setjmp.h>
 #include <stdarg.h>
@@ -79,12 +80,65 @@ static void test_too_many_jobs_stop(void **state)
     assert_int_equal(WTERMSIG(status), SIGABRT);
 }
 
+/* Threads for pieces of work: 1 .. PARALLEL_MAX, no more than the
+ * pieces. */
+static void test_jobs_clamped(void **state)
+{
+    (void)state;
+    assert_int_equal(parallel_jobs(0, 10), 1);
+    assert_int_equal(parallel_jobs(-3, 10), 1);
+    assert_int_equal(parallel_jobs(2, 0), 1);
+    assert_int_equal(parallel_jobs(2, 1), 1);
+    assert_int_equal(parallel_jobs(2, 180), 2);
+    assert_int_equal(parallel_jobs(8, 3), 3);
+    assert_int_equal(parallel_jobs(PARALLEL_MAX + 5, 1000), PARALLEL_MAX);
+}
+
+/* Failures kept in the jobs' own structs: the least piece's is
+ * reported, whichever job holds it. */
+struct failing_job {
+    int other;
+    struct parallel_failure failure;
+    double more;
+};
+
+static void test_first_failure(void **state)
+{
+    (void)state;
+    struct failing_job jobs[3];
+    for (int k = 0; k < 3; k++)
+        parallel_failure_clear(&jobs[k].failure);
+    struct facet_error err;
+    facet_error_clear(&err);
+    assert_int_equal(parallel_first_failure(&jobs[0].failure,
+                                            sizeof jobs[0], 3, &err),
+                     FACET_OK);
+    assert_string_equal(err.message, "");
+    jobs[0].failure.piece = 9;
+    jobs[0].failure.rc = facet_error_set(&jobs[0].failure.err, FACET_EWORK,
+                                         "piece 9");
+    jobs[2].failure.piece = 4;
+    jobs[2].failure.rc = facet_error_set(&jobs[2].failure.err, FACET_EINPUT,
+                                         "piece 4");
+    assert_int_equal(parallel_first_failure(&jobs[0].failure,
+                                            sizeof jobs[0], 3, &err),
+                     FACET_EINPUT);
+    assert_string_equal(err.message, "piece 4");
+    /* Only the first two jobs: piece 9. */
+    assert_int_equal(parallel_first_failure(&jobs[0].failure,
+                                            sizeof jobs[0], 2, &err),
+                     FACET_EWORK);
+    assert_string_equal(err.message, "piece 9");
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_cpus_clamped),
         cmocka_unit_test(test_every_job_once),
         cmocka_unit_test(test_too_many_jobs_stop),
+        cmocka_unit_test(test_jobs_clamped),
+        cmocka_unit_test(test_first_failure),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -25,6 +25,7 @@
 #include "core/surface/example.h"
 #include "core/surface/example_skin.h"
 #include "tests/support/quadrature.h"
+#include "tests/support/temp_dir.h"
 
 #define PI 3.14159265358979323846
 
@@ -33,16 +34,13 @@ static char dir[64];
 static int make_dir(void **state)
 {
     (void)state;
-    snprintf(dir, sizeof dir, "/tmp/facet_project_XXXXXX");
-    return mkdtemp(dir) == NULL ? -1 : 0;
+    return temp_dir_make(dir, sizeof dir, "project");
 }
 
 static int remove_dir(void **state)
 {
     (void)state;
-    char command[128];
-    snprintf(command, sizeof command, "rm -rf '%s'", dir);
-    return system(command) == 0 ? 0 : -1;
+    return temp_dir_remove(dir);
 }
 
 /* Writes text to dir/name and returns the path (static storage, one of

@@ -1,0 +1,230 @@
+/*
+ * project_option.c: an option over every surface of a project. See
+ * project_option.h.
+ */
+#include "core/project/project_option.h"
+
+#include <assert.h>
+#include <math.h>
+#include <stdatomic.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "core/base/exact_sum.h"
+#include "core/base/parallel.h"
+
+/* The surfaces, taken one at a time by whichever thread is free: each
+ * writes only its own surface's slot, so the taking order changes
+ * nothing. */
+struct surface_work {
+    const struct project *project;
+    const struct surface_grid *grids;
+    const struct option_params *params;
+    struct project_option *out;
+    atomic_size_t *next;                /* the next surface not taken */
+    struct parallel_failure failure;    /* this thread's first failed
+                                           surface */
+};
+
+static void surface_run(void *argument)
+{
+    struct surface_work *job = argument;
+    parallel_failure_clear(&job->failure);
+    for (;;) {
+        size_t i = atomic_fetch_add(job->next, 1);
+        if (i >= job->project->nsurfaces)
+            return;
+        const struct project_surface *s = &job->project->surfaces[i];
+        struct project_surface_option *slot = &job->out->surfaces[i];
+        struct option_params params = *job->params;
+        params.nu = job->grids[i].nu;
+        params.nv = job->grids[i].nv;
+        slot->grid = job->grids[i];
+        struct facet_error err;
+        int rc = option_evaluate_unmoulded(&s->surface, NULL, NULL, &params,
+                                           &slot->panels, &slot->totals,
+                                           &slot->joints, &err);
+        /* Threads take surfaces in rising order, so its first failure is
+         * its least. */
+        if (rc != FACET_OK && job->failure.piece == SIZE_MAX) {
+            job->failure.piece = i;
+            job->failure.rc = rc;
+            facet_error_set(&job->failure.err, rc, "surface %s: %s", s->name,
+                            err.message);
+        }
+    }
+}
+
+/* Evaluates every surface without its moulds on jobs threads. Returns
+ * FACET_OK or the first failed surface's error, in project order. */
+static int evaluate_surfaces(const struct project *project,
+                             const struct surface_grid *grids,
+                             const struct option_params *params, int jobs,
+                             struct project_option *out,
+                             struct facet_error *err)
+{
+    struct surface_work work[PARALLEL_MAX];
+    atomic_size_t next;
+    atomic_init(&next, 0);
+    for (int k = 0; k < jobs; k++)
+        work[k] = (struct surface_work){project, grids, params, out, &next,
+                                        {0}};
+    parallel_run(work, sizeof work[0], jobs, surface_run);
+    return parallel_first_failure(&work[0].failure, sizeof work[0], jobs,
+                                  err);
+}
+
+/* Finds the building's families over every surface's panels and gives
+ * each surface its own (option_moulds_set) and the families it uses. */
+static int find_moulds(const struct project *project,
+                       const struct option_params *params, int jobs,
+                       struct project_option *out, struct facet_error *err)
+{
+    size_t n = project->nsurfaces;
+    struct mould_part *parts = malloc((n ? n : 1) * sizeof *parts);
+    if (parts == NULL)
+        return facet_error_set(err, FACET_EWORK,
+                               "out of memory for the mould families of "
+                               "%zu surfaces", n);
+    for (size_t i = 0; i < n; i++) {
+        const struct surface *s = &project->surfaces[i].surface;
+        parts[i] = (struct mould_part){&s->mesh, &s->uv,
+                                       &out->surfaces[i].panels};
+    }
+    struct mould_options mould = option_mould_options(params);
+    int rc = mould_families_build_parts(parts, n, &mould, jobs,
+                                        &out->families, err);
+    free(parts);
+    if (rc != FACET_OK)
+        return rc;
+    /* used[f]: the last surface whose panels were seen in family f. */
+    size_t nf = out->families.nfamilies;
+    size_t *used = malloc((nf ? nf : 1) * sizeof *used);
+    if (used == NULL)
+        return facet_error_set(err, FACET_EWORK,
+                               "out of memory for %zu mould families", nf);
+    for (size_t f = 0; f < nf; f++)
+        used[f] = SIZE_MAX;
+    size_t first = 0;
+    for (size_t i = 0; i < n; i++) {
+        struct project_surface_option *s = &out->surfaces[i];
+        option_moulds_set(params, &out->families, first, &s->panels,
+                          &s->totals);
+        for (size_t k = 0; k < s->panels.npanels; k++) {
+            int f = s->panels.panels[k].mould;
+            if (f < 0 || used[f] == i)
+                continue;
+            used[f] = i;
+            s->moulds_used++;
+            s->moulds_used_of[s->panels.panels[k].type]++;
+        }
+        first += s->panels.npanels;
+    }
+    free(used);
+    return FACET_OK;
+}
+
+/* The building's totals from its surfaces' and its families, as
+ * project_option.h says. */
+static void building_totals(struct project_option *option,
+                            const struct option_params *params)
+{
+    struct option_totals *t = &option->totals;
+    memset(t, 0, sizeof *t);
+    option->joints = 0;
+    struct exact_sum area_of[TYPE_COUNT], class_area[CLASS_COUNT];
+    struct exact_sum area, planarity, p_dist, joint_length;
+    for (int k = 0; k < TYPE_COUNT; k++)
+        exact_sum_init(&area_of[k]);
+    for (int c = 0; c < CLASS_COUNT; c++)
+        exact_sum_init(&class_area[c]);
+    exact_sum_init(&area);
+    exact_sum_init(&planarity);
+    exact_sum_init(&p_dist);
+    exact_sum_init(&joint_length);
+    for (size_t i = 0; i < option->nsurfaces; i++) {
+        const struct option_totals *s = &option->surfaces[i].totals;
+        t->panels += s->panels;
+        for (int k = 0; k < TYPE_COUNT; k++) {
+            t->count[k] += s->count[k];
+            exact_sum_add(&area_of[k], s->area_of[k]);
+        }
+        for (int c = 0; c < CLASS_COUNT; c++) {
+            t->class_count[c] += s->class_count[c];
+            exact_sum_add(&class_area[c], s->class_area[c]);
+        }
+        exact_sum_add(&area, s->area);
+        exact_sum_add(&planarity, s->planarity);
+        exact_sum_add(&p_dist, s->p_dist);
+        exact_sum_add(&joint_length, s->joint_length);
+        t->max_deviation = fmax(t->max_deviation, s->max_deviation);
+        t->max_panel_area = fmax(t->max_panel_area, s->max_panel_area);
+        t->max_gap_mm = fmax(t->max_gap_mm, s->max_gap_mm);
+        t->max_kink_deg = fmax(t->max_kink_deg, s->max_kink_deg);
+        t->gaps_over += s->gaps_over;
+        t->kinks_over += s->kinks_over;
+        t->sp_misfits += s->sp_misfits;
+        t->sp_fitted += s->sp_fitted;
+        option->joints += option->surfaces[i].joints;
+    }
+    for (int k = 0; k < TYPE_COUNT; k++)
+        t->area_of[k] = exact_sum_value(&area_of[k]);
+    for (int c = 0; c < CLASS_COUNT; c++)
+        t->class_area[c] = exact_sum_value(&class_area[c]);
+    t->area = exact_sum_value(&area);
+    t->planarity = exact_sum_value(&planarity);
+    t->p_dist = exact_sum_value(&p_dist);
+    t->joint_length = exact_sum_value(&joint_length);
+    /* Each surface's mean weighted by its share of the joints: one
+     * surface's mean is kept to the bit (a weight of exactly 1). */
+    for (size_t i = 0; i < option->nsurfaces && option->joints > 0; i++) {
+        const struct option_totals *s = &option->surfaces[i].totals;
+        double share = (double)option->surfaces[i].joints /
+                       (double)option->joints;
+        t->mean_gap_mm += share * s->mean_gap_mm;
+        t->mean_kink_deg += share * s->mean_kink_deg;
+    }
+    const struct mould_families *f = &option->families;
+    for (int k = 0; k < TYPE_COUNT; k++)
+        t->moulds_of[k] = f->count[k];
+    t->moulds = f->nfamilies;
+    t->largest_family = f->largest;
+    t->singleton_families = f->singletons;
+    classify_price_areas(&params->classify, t);
+    classify_price_terms(&params->classify, t);
+    t->feasible =
+        classify_violation(t, params->classify.max_panel_area) == 0;
+}
+
+int project_option_evaluate(const struct project *project,
+                            const struct surface_grid *grids,
+                            const struct option_params *params, int jobs,
+                            struct project_option *out,
+                            struct facet_error *err)
+{
+    memset(out, 0, sizeof *out);
+    size_t n = project->nsurfaces;
+    out->surfaces = calloc(n ? n : 1, sizeof *out->surfaces);
+    if (out->surfaces == NULL)
+        return facet_error_set(err, FACET_EWORK,
+                               "out of memory for an option over %zu "
+                               "surfaces", n);
+    out->nsurfaces = n;
+    jobs = parallel_jobs(jobs, n);
+    int rc = evaluate_surfaces(project, grids, params, jobs, out, err);
+    if (rc == FACET_OK)
+        rc = find_moulds(project, params, jobs, out, err);
+    if (rc == FACET_OK)
+        building_totals(out, params);
+    return rc;
+}
+
+void project_option_free(struct project_option *option)
+{
+    for (size_t i = 0; i < option->nsurfaces; i++)
+        panelization_free(&option->surfaces[i].panels);
+    free(option->surfaces);
+    mould_families_free(&option->families);
+    memset(option, 0, sizeof *option);
+}
