@@ -550,6 +550,13 @@ static int open_writer(const char *path, int create, struct store **out,
         rc = store_schema_migrate(store, version, STORE_SCHEMA_VERSION, err);
     if (rc == FACET_OK)
         rc = reap_orphans(store, err);
+    /* A writer killed while its run stored options without the indexes
+     * by metric left them dropped: built now that it is gone. */
+    int built = 0;
+    if (rc == FACET_OK)
+        rc = store_indexes_build(store, 0, &built, err);
+    if (rc == FACET_OK && built)
+        rc = store_analyze(store, err);
     if (rc != FACET_OK) {
         store_close(store);
         return rc;

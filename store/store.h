@@ -308,6 +308,38 @@ int store_options_set_pareto(struct store *store, int64_t run,
                              const double *crowding, size_t n, int64_t knee,
                              double hypervolume, struct facet_error *err);
 
+/* --- a run of many options (store_index.c) --- */
+
+/* Runs expected to store at least this many options store them with the
+ * indexes by metric dropped (store_indexes_defer). */
+#define STORE_BULK_ROWS 50000
+
+/* Before a run stores about rows options: when they are many
+ * (STORE_BULK_ROWS or more) and at least as many as the file holds
+ * already, drops the options table's indexes by metric (all but the one
+ * by rank), so that an option is written once, not into thirteen B-trees
+ * at random places (a million options: 5,000 a second with them). Sets
+ * *deferred when it did; the writer must then call store_indexes_build
+ * when the run ends, however it ends. Queries give the same rows
+ * meanwhile, reading the table instead of an index (a reader sorting a
+ * million options of a live run by cost reads them all). */
+int store_indexes_defer(struct store *store, int64_t rows, int *deferred,
+                        struct facet_error *err);
+
+/* Builds the indexes by metric that are missing, each from the whole
+ * table in one transaction of its own (about a second a million options
+ * each), unless a run other than writing_run (0: none) is being written
+ * by a live writer, which builds them when it ends. *built (may be NULL)
+ * is set when any was built: statistics are then due (store_analyze).
+ * store_open calls it, so a file whose writer was killed while they were
+ * dropped gets them back when its run is marked interrupted. */
+int store_indexes_build(struct store *store, int64_t writing_run,
+                        int *built, struct facet_error *err);
+
+/* The name of index k of those by metric, k from 0; NULL past the last
+ * (for tests that check the file against the list). */
+const char *store_metric_index_name(size_t k);
+
 /* --- panels --- */
 
 /* Stores the panels of option number of run (replacing any stored). */
