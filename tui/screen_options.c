@@ -771,9 +771,7 @@ static enum tui_result options_key(struct tui_screen *base,
         break;
     case ACTION_TOP: rc = table_model_select(m, 0, &err); break;
     case ACTION_BOTTOM:
-        rc = m->count_exact ? FACET_OK : table_model_count_exact(m, &err);
-        if (rc == FACET_OK)
-            rc = table_model_select(m, m->count - 1, &err);
+        rc = table_model_select_last(m, &err);
         break;
     case ACTION_LEFT:
         if (cursor_place(s) > 0)
