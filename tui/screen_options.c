@@ -835,8 +835,8 @@ static int options_tick(struct tui_screen *base, struct tui_app *app)
     }
     if (!s->model.count_exact) {
         int exact;
-        if (table_model_count_step(&s->model, 200000, &exact, &err) !=
-            FACET_OK)
+        if (table_model_count_step(&s->model, TABLE_COUNT_STEP, &exact,
+                                   &err) != FACET_OK)
             tui_error(app, "%s", err.message);
         return 1;
     }

@@ -26,6 +26,10 @@
  * passes at most TABLE_FILTER_FIRST options is read by the filter's own
  * index or a scan and sorted, not by walking the order's index. */
 #define TABLE_COUNT_CAP 2000
+/* Options one step of a count looks at, one step a tick while no key
+ * comes (table_model_count_step): about 50 ms a step, counting and
+ * keeping the last page of a filter, so a key waits no longer. */
+#define TABLE_COUNT_STEP 100000
 #define TABLE_POSITION_CAP 2000
 #define TABLE_FILTER_FIRST 2000
 

@@ -386,11 +386,9 @@ static void time_pages(struct table_model *m, const char *what)
 }
 
 /* Times the jump to the last row from the first (the screen's G/End:
- * select count - 1), counting exactly when the model must. */
-/* Times the jump to the last row from the first (the screen's G/End:
  * select count - 1). counted: the count finished first by the steps the
- * screen takes between keystrokes (200,000 rows a tick), whose time
- * (*steps_ms, may be NULL) is not the jump's. The last row is checked
+ * screen takes between keystrokes (TABLE_COUNT_STEP rows a tick), whose
+ * time (*steps_ms, may be NULL) is not the jump's. The last row is checked
  * against the store's own last page. */
 static void time_end(struct table_model *m, const char *what,
                      const char *filter, int fresh_model, int counted,
@@ -409,7 +407,7 @@ static void time_end(struct table_model *m, const char *what,
         double start = bench_now();
         int exact = !counted;
         while (!exact)
-            check(table_model_count_step(m, 200000, &exact, &err),
+            check(table_model_count_step(m, TABLE_COUNT_STEP, &exact, &err),
                   "counting", &err);
         steps[r] = (bench_now() - start) * 1e3;
         start = bench_now();
@@ -508,8 +506,8 @@ int main(int argc, char **argv)
     double steps_ms = 0;
     time_end(&m, "the same, counted between keys first",
              "cost < 1.2e6 and dp_area < 200", 1, 1, &steps_ms, store, run);
-    printf("  (counting it between keys: %.0f ms in steps of 200,000 rows,"
-           " one a tick while no key comes)\n", steps_ms);
+    printf("  (counting it between keys: %.0f ms in steps of %d rows, one"
+           " a tick while no key comes)\n", steps_ms, TABLE_COUNT_STEP);
     printf("TUI on 1M options (issue 18): every keystroke at most %.0f ms at"
            " the median: %s%s%s\n", TARGET_MS, over[0] ? "not met (" : "met",
            over, over[0] ? ")" : "");

@@ -105,11 +105,11 @@ static int64_t put_run(struct store *store, int n, int64_t expected,
         o->totals.area_of[TYPE_DP] = fmod(k * 31.0, 997.0);
         o->totals.area = 1000;
     }
-    for (int first = 0; first < n; first += 500)
+    for (int first = 0; first < n; first += 500) {
+        size_t batch = n - first < 500 ? (size_t)(n - first) : 500;
         assert_int_equal(store_options_put(store, run.id, rows + first,
-                                           n - first < 500 ? (size_t)(n - first)
-                                                           : 500, &err),
-                         FACET_OK);
+                                           batch, &err), FACET_OK);
+    }
     free(rows);
     return run.id;
 }
