@@ -248,11 +248,11 @@ static int prepare(struct store *store, struct sql_text *s,
 
 /* What collect_numbers returns when a progress handler interrupted its
  * statement (no FACET_E* code: err is not filled). */
-#define FACET_INTERRUPTED (-1)
+#define WALK_INTERRUPTED (-1)
 
 /* Steps stmt (rows of one column, an option number), collecting at most
  * limit numbers into *numbers (malloc'ed, *n of them), and finalizes it.
- * FACET_INTERRUPTED (err untouched) when a progress handler stopped it. */
+ * WALK_INTERRUPTED (err untouched) when a progress handler stopped it. */
 static int collect_numbers(struct store *store, sqlite3_stmt *stmt,
                            int64_t limit, int64_t **numbers, size_t *n,
                            const char *doing, struct facet_error *err)
@@ -278,7 +278,7 @@ static int collect_numbers(struct store *store, sqlite3_stmt *stmt,
         }
     }
     if (rc == FACET_OK && step == SQLITE_INTERRUPT)
-        rc = FACET_INTERRUPTED;
+        rc = WALK_INTERRUPTED;
     else if (rc == FACET_OK && step != SQLITE_DONE)
         rc = store_fail(store, doing, err);
     sqlite3_finalize(stmt);
@@ -323,7 +323,7 @@ static int deliver(struct store *store, const struct option_browse *b,
     int64_t *numbers;
     size_t n;
     int rc = collect_numbers(store, stmt, limit, &numbers, &n, doing, err);
-    if (rc == FACET_INTERRUPTED)
+    if (rc == WALK_INTERRUPTED)
         rc = store_fail(store, doing, err);
     if (rc == FACET_OK)
         rc = deliver_numbers(store, b, numbers, n, row, context, err);
@@ -408,7 +408,7 @@ int store_browse_page(struct store *store, const struct option_browse *b,
     rc = collect_numbers(store, stmt, limit, &numbers, &n,
                          "browsing options", err);
     sqlite3_progress_handler(store->db, 0, NULL, NULL);
-    if (rc == FACET_INTERRUPTED) {
+    if (rc == WALK_INTERRUPTED) {
         struct option_browse scan = *b;
         scan.filter_first = BROWSE_SCAN;
         rc = prepare_after(store, &scan, after, backward, "SELECT number", 1,
@@ -523,7 +523,7 @@ static int tail_step(struct store *store, const struct option_browse *b,
     size_t n;
     rc = collect_numbers(store, stmt, BROWSE_TAIL, &slice, &n,
                          "counting options", err);
-    if (rc == FACET_INTERRUPTED)
+    if (rc == WALK_INTERRUPTED)
         rc = store_fail(store, "counting options", err);
     if (rc != FACET_OK || n == 0) {
         free(slice);
@@ -549,7 +549,7 @@ static int tail_step(struct store *store, const struct option_browse *b,
     int64_t *merged;
     rc = collect_numbers(store, stmt, BROWSE_TAIL, &merged, &n,
                          "counting options", err);
-    if (rc == FACET_INTERRUPTED)
+    if (rc == WALK_INTERRUPTED)
         rc = store_fail(store, "counting options", err);
     if (rc == FACET_OK) {
         memcpy(tail->numbers, merged, n * sizeof *merged);
