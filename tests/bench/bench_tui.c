@@ -7,12 +7,14 @@
  *   bench_tui [--options N] [--db PATH] [--reps R]
  *
  * Generates N options (default 1,000,000) of one run with store_run_create
- * and store_options_put in batches of 10,000: synthetic but plausible
- * totals (grids up to 1000 x 1000, DP area against planarity, so cost and
- * planarity trade off), ranked only on the (cost, planarity) front: the
- * front's options get rank 1 through store_options_set_pareto, every other
- * option stays unranked (rank NULL), as after a run whose ranking was not
- * written. With --db PATH the database is kept and reused when it already
+ * and store_options_put in batches of 10,000, the indexes by metric built
+ * at the end as a run of many options does (store_indexes_defer and
+ * store_indexes_build; fewer than 50,000 options keep them): synthetic
+ * but plausible totals (grids up to 1000 x 1000, DP area against
+ * planarity, so cost and planarity trade off), ranked only on the (cost,
+ * planarity) front: the front's options get rank 1 through
+ * store_options_set_pareto, every other option stays unranked (rank
+ * NULL), as after a run whose ranking was not written. With --db PATH the database is kept and reused when it already
  * holds such a run (generation is most of the bench's time); without it a
  * temporary file is removed at the end.
  *
