@@ -308,6 +308,38 @@ int store_options_set_pareto(struct store *store, int64_t run,
                              const double *crowding, size_t n, int64_t knee,
                              double hypervolume, struct facet_error *err);
 
+/* --- a run of many options (store_index.c) --- */
+
+/* Runs expected to store at least this many options store them with the
+ * indexes by metric dropped (store_indexes_defer). */
+#define STORE_BULK_ROWS 50000
+
+/* Before a run stores about rows options: when they are many
+ * (STORE_BULK_ROWS or more) and at least as many as the file holds
+ * already, drops the options table's indexes by metric (all but the one
+ * by rank), so that an option is written once, not into thirteen B-trees
+ * at random places (a million options: 5,000 a second with them). Sets
+ * *deferred when it did; the writer must then call store_indexes_build
+ * when the run ends, however it ends. Queries give the same rows
+ * meanwhile, reading the table instead of an index (a reader sorting a
+ * million options of a live run by cost reads them all). */
+int store_indexes_defer(struct store *store, int64_t rows, int *deferred,
+                        struct facet_error *err);
+
+/* Builds the indexes by metric that are missing, each from the whole
+ * table in one transaction of its own (about a second a million options
+ * each), unless a run other than writing_run (0: none) is being written
+ * by a live writer, which builds them when it ends. *built (may be NULL)
+ * is set when any was built: statistics are then due (store_analyze).
+ * store_open calls it, so a file whose writer was killed while they were
+ * dropped gets them back when its run is marked interrupted. */
+int store_indexes_build(struct store *store, int64_t writing_run,
+                        int *built, struct facet_error *err);
+
+/* The name of index k of those by metric, k from 0; NULL past the last
+ * (for tests that check the file against the list). */
+const char *store_metric_index_name(size_t k);
+
 /* --- panels --- */
 
 /* Stores the panels of option number of run (replacing any stored). */
@@ -394,14 +426,23 @@ struct option_browse {
     int filter_first;          /* the filter passes few options: find them
                                   by the filter's own index (or a scan) and
                                   sort them, instead of walking the order's
-                                  index past rows that fail it */
+                                  index past rows that fail it;
+                                  BROWSE_SCAN: read every row of the run
+                                  by number, filter and sort them (what a
+                                  page falls back to, store_browse_page) */
 };
+
+#define BROWSE_SCAN 2
+
 
 /* Calls row(context, option) for up to limit options of b that come after
  * *after in b's order (after NULL: from the first), or, backward, for
  * those before *after (after NULL: from the last) nearest first, so the
  * caller receives them in reverse order. Stops early when row returns
- * non-zero. Unknown columns are FACET_EINPUT naming the column. */
+ * non-zero. Unknown columns are FACET_EINPUT naming the column. A filter
+ * that fails the rows of a long stretch of the order is not walked for
+ * more than 20 ms: the page is then read by a scan of the run (0.3 s a
+ * million options, instead of seconds of lookups). */
 int store_browse_page(struct store *store, const struct option_browse *b,
                       const struct option_row *after, int backward,
                       int64_t limit,
@@ -432,15 +473,27 @@ int store_browse_count_capped(struct store *store,
                               int64_t cap, int64_t *count,
                               struct facet_error *err);
 
+/* The last options of a browse's order, gathered by the steps of a count
+ * (store_browse_count_step): their numbers, the last first, n of them. */
+#define BROWSE_TAIL 200
+struct browse_tail {
+    int64_t numbers[BROWSE_TAIL];
+    int n;
+};
+
 /* One slice of an exact count in steps: looks at the next at most rows
  * options of b's run by number after number *from (0: from the first),
  * adds those b sees to *count and sets *from to the last number looked
  * at; *done is set when no option is left after it. The cost of a step
  * is bounded by rows, so a caller can count a million options between
- * keystrokes. */
+ * keystrokes. With tail (NULL: none; n 0 before the first step) the step
+ * also keeps the last BROWSE_TAIL options of b's order seen so far, so
+ * that when the count is done, so is the table's last page (a filter's
+ * last page otherwise reads the whole run: store_browse_page). */
 int store_browse_count_step(struct store *store,
                             const struct option_browse *b, int64_t rows,
                             int64_t *from, int64_t *count, int *done,
+                            struct browse_tail *tail,
                             struct facet_error *err);
 
 /* How many options of b come before *option in b's order (its 0-based

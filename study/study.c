@@ -715,6 +715,13 @@ static int study_go(struct store *store, struct run_info *run,
         stage(hooks, "dividing the surface along the space's grid lines");
         rc = optimize_lattice(surface, settings, &lattice, err);
     }
+    /* A run of many options stores them without the indexes by metric
+     * and builds those once at its end (store_indexes_defer). */
+    int deferred = 0;
+    if (rc == FACET_OK)
+        rc = store_indexes_defer(store,
+                                 optimize_total(settings) - (int64_t)nstored,
+                                 &deferred, err);
     stage(hooks, "evaluating options");
     if (rc == FACET_OK)
         rc = optimize_run(surface, lattice, settings, stored, nstored,
@@ -724,6 +731,16 @@ static int study_go(struct store *store, struct run_info *run,
 
     struct facet_error later;
     facet_error_clear(&later);
+    /* Built however the run ended (ranking does not touch them), before
+     * the statistics and the front's panels read them; the error of a
+     * failed run stays the one told. */
+    if (deferred) {
+        stage(hooks, "indexing options");
+        int index_rc = store_indexes_build(store, run->id, NULL,
+                                           rc == FACET_OK ? err : &later);
+        if (rc == FACET_OK)
+            rc = index_rc;
+    }
     if (rc == FACET_OK)
         rc = study_finish(store, run, surface, lattice, settings, hooks,
                           outcome, err);

@@ -379,11 +379,18 @@ static int write_merged(const char *path, const struct shard_file *f, int n,
     }
     if (rc == FACET_OK)
         rc = store_run_set_shard(store, &run, err);
+    /* Many options go in without the indexes by metric, built once
+     * after (store_indexes_defer). */
+    int deferred = 0;
+    if (rc == FACET_OK)
+        rc = store_indexes_defer(store, (int64_t)nrows, &deferred, err);
     const size_t chunk = 10000;
     for (size_t first = 0; rc == FACET_OK && first < nrows; first += chunk)
         rc = store_options_put(store, run.id, rows + first,
                                nrows - first < chunk ? nrows - first : chunk,
                                err);
+    if (rc == FACET_OK && deferred)
+        rc = store_indexes_build(store, run.id, NULL, err);
     /* The end of every run: ranks, and the front's panels on the surface
      * when it can be found (else computed when shown). */
     struct optimize_settings settings;

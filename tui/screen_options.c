@@ -42,6 +42,8 @@ struct options_screen {
     int exporting;               /* the marked options' CSV line is open */
     struct tui_input export_to;
     struct timespec last_refresh;
+    double refresh_seconds;      /* what the last refresh of a live run
+                                    took */
     int64_t runs_finished;       /* app->runs_finished when last seen */
     int64_t job_samples;         /* app->job_samples when last seen */
 };
@@ -771,9 +773,7 @@ static enum tui_result options_key(struct tui_screen *base,
         break;
     case ACTION_TOP: rc = table_model_select(m, 0, &err); break;
     case ACTION_BOTTOM:
-        rc = m->count_exact ? FACET_OK : table_model_count_exact(m, &err);
-        if (rc == FACET_OK)
-            rc = table_model_select(m, m->count - 1, &err);
+        rc = table_model_select_last(m, &err);
         break;
     case ACTION_LEFT:
         if (cursor_place(s) > 0)
@@ -813,8 +813,14 @@ static int options_tick(struct tui_screen *base, struct tui_app *app)
     /* this workbench's own run: at the gauge's sample; another
      * process's: every second */
     int own = app->job != NULL && app->job_run == s->run.id;
+    /* A refresh that reads much (a run of many options stores them
+     * without the indexes by metric: a sorted page reads the whole run,
+     * 0.4 s a refresh at a million) comes no oftener than four times its
+     * own time, so that keys keep most of the time. */
+    double since = tui_seconds_since(&s->last_refresh);
     int due = own ? app->job_sampling && app->job_samples != s->job_samples
-                  : tui_seconds_since(&s->last_refresh) >= 1.0;
+                  : since >= 1.0;
+    due = due && since >= 4 * s->refresh_seconds;
     if (finished || (live && due)) {
         s->runs_finished = app->runs_finished;
         s->job_samples = app->job_samples;
@@ -825,6 +831,7 @@ static int options_tick(struct tui_screen *base, struct tui_app *app)
             tui_error(app, "%s", err.message);
             return 1;
         }
+        s->refresh_seconds = tui_seconds_since(&s->last_refresh);
         /* without a filter the count is the run's index, cheap even for a
          * million options: counted whole now, so that the title, the
          * count and the gauge are one moment's (a step between samples
@@ -837,8 +844,8 @@ static int options_tick(struct tui_screen *base, struct tui_app *app)
     }
     if (!s->model.count_exact) {
         int exact;
-        if (table_model_count_step(&s->model, 200000, &exact, &err) !=
-            FACET_OK)
+        if (table_model_count_step(&s->model, TABLE_COUNT_STEP, &exact,
+                                   &err) != FACET_OK)
             tui_error(app, "%s", err.message);
         return 1;
     }

@@ -482,9 +482,7 @@ static enum tui_result parallel_key(struct tui_screen *base,
         break;
     case ACTION_TOP: rc = table_model_select(m, 0, &err); break;
     case ACTION_BOTTOM:
-        rc = m->count_exact ? FACET_OK : table_model_count_exact(m, &err);
-        if (rc == FACET_OK)
-            rc = table_model_select(m, m->count - 1, &err);
+        rc = table_model_select_last(m, &err);
         break;
     default:
         return RESULT_UNHANDLED;
@@ -502,8 +500,8 @@ static int parallel_tick(struct tui_screen *base, struct tui_app *app)
     struct facet_error err;
     if (!s->model->count_exact) {
         int exact;
-        if (table_model_count_step(s->model, 200000, &exact, &err) !=
-            FACET_OK)
+        if (table_model_count_step(s->model, TABLE_COUNT_STEP, &exact,
+                                   &err) != FACET_OK)
             tui_error(app, "%s", err.message);
         return 1;
     }

@@ -100,6 +100,7 @@ static void window_set(struct table_model *m, const struct batch *b,
         m->rows[k] = b->rows[backward ? b->n - 1 - k : k];
     m->nrows = b->n;
     m->base = base;
+    m->at_end = 0;
 }
 
 /* Appends batch after the window, dropping rows at the front to fit. */
@@ -134,12 +135,32 @@ static int64_t window_prepend(struct table_model *m, const struct batch *b)
     int64_t keep = m->nrows;
     if (keep + b->n > TABLE_WINDOW)
         keep = TABLE_WINDOW - b->n;
+    if (keep < m->nrows)
+        m->at_end = 0;  /* the last rows held are dropped */
     memmove(m->rows + b->n, m->rows, (size_t)keep * sizeof *m->rows);
     for (int k = 0; k < b->n; k++)
         m->rows[b->n - 1 - k] = b->rows[k];
     m->nrows = keep + b->n;
     m->base -= b->n;
     return shift;
+}
+
+_Static_assert(TABLE_PAGE <= BROWSE_TAIL,
+               "the count's steps keep a whole last page");
+
+/* The last page as the steps of the count kept it (m->tail, the last
+ * first), into b. */
+static int tail_page(struct table_model *m, struct batch *b,
+                     struct facet_error *err)
+{
+    for (int k = 0; k < m->tail.n && k < TABLE_PAGE; k++) {
+        int rc = store_option_get(m->store, m->browse.run,
+                                  m->tail.numbers[k], &b->rows[b->n], err);
+        if (rc != FACET_OK)
+            return rc;
+        b->n++;
+    }
+    return FACET_OK;
 }
 
 int table_model_fetch(struct table_model *m, int64_t from, int64_t n,
@@ -210,12 +231,16 @@ int table_model_fetch(struct table_model *m, int64_t from, int64_t n,
                 end += shift;
             }
         } else if (m->count_exact && end > m->count - TABLE_PAGE) {
-            /* near the end: the last page, read backwards */
-            rc = store_browse_page(m->store, &m->browse, NULL, 1,
-                                   TABLE_PAGE, collect, b, err);
+            /* near the end: the last page, read backwards, or as the
+             * count's steps found it */
+            rc = m->tail_ready ? tail_page(m, b, err)
+                               : store_browse_page(m->store, &m->browse,
+                                                   NULL, 1, TABLE_PAGE,
+                                                   collect, b, err);
             if (rc == FACET_OK) {
                 window_set(m, b, 1, m->count - b->n);
                 m->estimated = 0;
+                m->at_end = 1;
             }
             if (rc == FACET_OK && (b->n == 0 || from >= m->base))
                 break;
@@ -259,18 +284,55 @@ static int count_further(struct table_model *m, struct facet_error *err)
     return FACET_OK;
 }
 
+/* Makes the window the last page of the table while the count is a lower
+ * bound, without counting: read backwards from the end, placed just past
+ * the rows known, its positions estimates (lower bounds) until the count
+ * is exact (table_model_count_step), then numbered from the count. */
+static int window_last(struct table_model *m, struct facet_error *err)
+{
+    struct batch *b = malloc(sizeof *b);
+    if (b == NULL)
+        return facet_error_set(err, FACET_EWORK, "out of memory");
+    b->n = 0;
+    m->fetches++;
+    int rc = store_browse_page(m->store, &m->browse, NULL, 1, TABLE_PAGE,
+                               collect, b, err);
+    if (rc == FACET_OK && b->n > 0) {
+        int64_t known = m->count > m->base + m->nrows ? m->count
+                                                      : m->base + m->nrows;
+        window_set(m, b, 1, known > b->n ? known - b->n : 0);
+        m->at_end = 1;
+        m->estimated = 1;
+        m->count = m->base + m->nrows;
+        m->selected = m->count - 1;
+    }
+    free(b);
+    return rc;
+}
+
+int table_model_select_last(struct table_model *m, struct facet_error *err)
+{
+    int rc = FACET_OK;
+    /* Without a filter the count is the run's index: exact at once.
+     * With one it reads every row: left to the steps between keys. */
+    if (!m->count_exact && m->browse.where == NULL &&
+        !m->browse.pareto_only)
+        rc = table_model_count_exact(m, err);
+    if (rc != FACET_OK)
+        return rc;
+    if (m->count_exact || m->count == 0)
+        return table_model_select(m, m->count - 1, err);
+    return window_last(m, err);
+}
+
 int table_model_select(struct table_model *m, int64_t position,
                        struct facet_error *err)
 {
     if (!m->count_exact && m->count > 0 && position >= m->count - 1) {
-        int rc;
         if (position == m->count - 1 &&
-            position - m->selected > TABLE_PAGE) {
-            rc = table_model_count_exact(m, err);  /* End, G */
-            position = m->count - 1;
-        } else {
-            rc = count_further(m, err);
-        }
+            position - m->selected > TABLE_PAGE)
+            return table_model_select_last(m, err);  /* End, G */
+        int rc = count_further(m, err);
         if (rc != FACET_OK)
             return rc;
     }
@@ -285,6 +347,16 @@ int table_model_select(struct table_model *m, int64_t position,
     return rc;
 }
 
+/* The count is exact and the window holds the last rows: its positions
+ * (estimates) become exact, numbered back from the count. */
+static void rebase_at_end(struct table_model *m)
+{
+    int64_t shift = m->count - m->nrows - m->base;
+    m->base += shift;
+    m->selected += shift;
+    m->estimated = 0;
+}
+
 int table_model_count_exact(struct table_model *m, struct facet_error *err)
 {
     if (m->count_exact)
@@ -296,7 +368,9 @@ int table_model_count_exact(struct table_model *m, struct facet_error *err)
         return rc;
     m->count = count;
     m->count_exact = 1;
-    if (m->estimated) {
+    if (m->estimated && m->at_end && m->nrows > 0) {
+        rebase_at_end(m);
+    } else if (m->estimated) {
         /* the window's numbering is a guess: start again from the top */
         m->estimated = 0;
         m->nrows = 0;
@@ -313,9 +387,12 @@ int table_model_count_step(struct table_model *m, int64_t rows, int *exact,
         return FACET_OK;
     int done;
     m->fetches++;
+    /* with a filter the steps keep the table's last page too: End is
+     * then a page read by number (it would read every row again) */
+    int gather = m->browse.where != NULL || m->browse.pareto_only;
     int rc = store_browse_count_step(m->store, &m->browse, rows,
                                      &m->count_from, &m->count_sofar, &done,
-                                     err);
+                                     gather ? &m->tail : NULL, err);
     if (rc != FACET_OK)
         return rc;
     if (!done) {
@@ -330,7 +407,11 @@ int table_model_count_step(struct table_model *m, int64_t rows, int *exact,
     m->count = m->count_sofar;
     m->count_exact = 1;
     m->count_from = m->count_sofar = 0;
-    if (m->estimated) {
+    m->tail_ready = gather && m->tail.n == (m->count < TABLE_PAGE
+                                                ? m->count : TABLE_PAGE);
+    if (m->estimated && m->at_end && m->nrows > 0) {
+        rebase_at_end(m);
+    } else if (m->estimated) {
         const struct option_row *selection = table_model_selection(m);
         struct option_row keep;
         int64_t position = 0;
@@ -423,6 +504,7 @@ static int recount(struct table_model *m, struct facet_error *err)
 {
     m->browse.filter_first = 0;
     m->count_from = m->count_sofar = 0;
+    m->tail.n = 0;
     m->fetches++;
     int rc = store_browse_count_capped(m->store, &m->browse, NULL, 0,
                                        TABLE_COUNT_CAP, &m->count, err);
@@ -467,6 +549,12 @@ static int keep_at(struct table_model *m, const struct option_row *keep,
 static int reload(struct table_model *m, const struct option_row *keep,
                   int64_t fallback, int do_recount, struct facet_error *err)
 {
+    /* the last page kept was of the order before; a count under way
+     * starts again, so that its steps keep the new order's */
+    m->tail_ready = 0;
+    m->tail.n = 0;
+    if (!m->count_exact)
+        m->count_from = m->count_sofar = 0;
     int rc = do_recount ? recount(m, err) : FACET_OK;
     if (rc != FACET_OK)
         return rc;

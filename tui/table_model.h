@@ -26,6 +26,10 @@
  * passes at most TABLE_FILTER_FIRST options is read by the filter's own
  * index or a scan and sorted, not by walking the order's index. */
 #define TABLE_COUNT_CAP 2000
+/* Options one step of a count looks at, one step a tick while no key
+ * comes (table_model_count_step): about 50 ms a step, counting and
+ * keeping the last page of a filter, so a key waits no longer. */
+#define TABLE_COUNT_STEP 100000
 #define TABLE_POSITION_CAP 2000
 #define TABLE_FILTER_FIRST 2000
 
@@ -42,8 +46,14 @@ struct table_model {
                                      grows as the table is scrolled */
     int count_exact;              /* count is the exact count */
     int estimated;                /* positions are lower bounds (a deep
-                                     option kept across a re-sort) */
+                                     option kept across a re-sort, or the
+                                     last page read before the count) */
+    int at_end;                   /* rows[nrows - 1] is the table's last
+                                     row */
     int64_t count_from, count_sofar;  /* table_model_count_step's place */
+    struct browse_tail tail;      /* with a filter, the last page as the
+                                     count's steps find it */
+    int tail_ready;               /* tail is the table's last page */
     int64_t selected;             /* position of the selected row, or 0 */
     int64_t base;                 /* position of rows[0] */
     struct option_row *rows;      /* rows[0..nrows): window */
@@ -78,9 +88,17 @@ int table_model_fetch(struct table_model *m, int64_t from, int64_t n,
 /* Moves the selection to position (clamped) and fetches around it. While
  * the count is a lower bound, a position at or past the last row known
  * counts further (TABLE_COUNT_CAP more), except a far jump to exactly
- * count - 1 (the last row: End, G), which counts exactly first. */
+ * count - 1 (the last row: End, G), which is table_model_select_last. */
 int table_model_select(struct table_model *m, int64_t position,
                        struct facet_error *err);
+
+/* Selects the last row (End, G). Without a filter the count is made exact
+ * first (the run's index, 35 ms a million options). With one, counting
+ * reads every row: the last page is read by itself instead, placed after
+ * the rows known with positions that are lower bounds ("row 2,200+ of
+ * 2,200+"), numbered exactly from the count when the steps between keys
+ * (table_model_count_step) or table_model_count_exact finish it. */
+int table_model_select_last(struct table_model *m, struct facet_error *err);
 
 /* Selects the first row of the order, exactly: the window is read again
  * from the start (positions kept as estimates are dropped), as a new

@@ -255,4 +255,25 @@ dump() { sqlite3 "$1" "SELECT * FROM options ORDER BY number" | cut -d'|' -f2- |
 same "after $kills kill -9s and resumes the run equals an uninterrupted one" \
     "$(sqlite3 "$WORK/killed.db" 'PRAGMA quick_check; SELECT status FROM runs' | paste -sd' ') $(dump "$WORK/killed.db")" \
     "ok done $(dump "$WORK/whole.db")"
+
+# A run of many options stores them with its indexes by metric dropped,
+# and is killed with kill -9 meanwhile: the file is whole (quick_check),
+# the run reads as interrupted, and resumed it ends with every option and
+# every index (SQLite's own schema table counts them).
+"$FACET" example roof --res 8 -o "$WORK/small.obj" || exit 1
+indexes() { sqlite3 "$WORK/bulk.db" "SELECT count(*) FROM sqlite_schema WHERE type = 'index' AND tbl_name = 'options'"; }
+bulk() { sqlite3 "$WORK/bulk.db" "SELECT count(*) FROM options" 2>/dev/null || echo 0; }
+many=(--method random --evals 60000 --u 1:6 --v 1:6 --threshold 1:5 --jobs 1)
+"$FACET" optimize "$WORK/small.obj" --db "$WORK/bulk.db" "${many[@]}" >/dev/null 2>&1 & pid=$!
+for _ in $(seq 1200); do [ "$(bulk)" -gt 2000 ] && break; sleep 0.05; done
+during=$(indexes)
+kill -KILL $pid 2>/dev/null; wait $pid 2>/dev/null
+same "a run of 60,000 options stores them with the index by rank alone" "$during" 1
+same "killed meanwhile, the file is whole" "$(sqlite3 "$WORK/bulk.db" 'PRAGMA quick_check')" ok
+run "$FACET" runs "$WORK/bulk.db"
+stdout_has "killed meanwhile, the run reads as interrupted" interrupted
+expect "the killed run resumes to its end" 0 "$FACET" optimize --db "$WORK/bulk.db" --resume 1
+same "resumed, it ends done with its 60,000 options, every index and a whole file" \
+    "$(sqlite3 "$WORK/bulk.db" 'SELECT status, options FROM runs; PRAGMA quick_check' | paste -sd' ') $(indexes)" \
+    "done|60000 ok 14"
 exit 0

@@ -383,6 +383,147 @@ static void test_count_step_stops(void **state)
     drop_store(store);
 }
 
+/* End on a filter that passes more options than the count's cap: the
+ * last page is read without counting (the oracle's last rows, positions
+ * lower bounds, "+" shown), walking up from it gives the oracle's rows,
+ * and once the steps have counted, every position is the oracle's. Without
+ * a filter End counts exactly at once. Counted by the steps first, End
+ * reads the last page they kept, in any order of keys. */
+static void test_end_before_count(void **state)
+{
+    (void)state;
+    int64_t run;
+    struct store *store = make_store(&run);
+    struct table_model m;
+    struct facet_error err;
+    assert_int_equal(table_model_open(&m, store, run, &err), FACET_OK);
+    const struct browse_key keys[2] = {{"cost", 1}, {"planarity", 0}};
+    assert_int_equal(table_model_set_sort(&m, keys, 2, &err), FACET_OK);
+    assert_int_equal(table_model_select_last(&m, &err), FACET_OK);
+    assert_true(m.count_exact);
+    assert_int_equal(m.selected, N - 1);
+
+    const char *text = "planarity > 0.05";
+    struct filter *f;
+    assert_int_equal(filter_compile(text, &f, &err), FACET_OK);
+    static struct option_row want[N];
+    size_t n = oracle(f, 0, keys, 2, want);
+    assert_true(n > TABLE_COUNT_CAP);
+    assert_int_equal(table_model_set_filter(&m, text, &err), FACET_OK);
+    assert_false(m.count_exact);
+    assert_int_equal(table_model_select(&m, m.count - 1, &err), FACET_OK);
+    assert_false(m.count_exact);
+    assert_true(m.estimated);
+    assert_int_equal(m.selected, m.count - 1);
+    assert_int_equal(table_model_selection(&m)->number, want[n - 1].number);
+    char words[64];
+    table_model_position_text(&m, words, sizeof words);
+    assert_non_null(strstr(words, "+ of "));
+    table_model_count_text(&m, words, sizeof words);
+    assert_non_null(strchr(words, '+'));
+    int64_t last = m.selected;
+    for (int64_t back = 0; back < 450; back++) {
+        assert_int_equal(table_model_select(&m, last - back, &err),
+                         FACET_OK);
+        assert_int_equal(table_model_selection(&m)->number,
+                         want[n - 1 - (size_t)back].number);
+    }
+    int done = 0, steps = 0;
+    while (!done && steps++ < 100)
+        assert_int_equal(table_model_count_step(&m, 300, &done, &err),
+                         FACET_OK);
+    assert_int_equal(done, 1);
+    assert_int_equal(m.count, (int64_t)n);
+    assert_false(m.estimated);
+    assert_int_equal(table_model_selection(&m)->number, want[n - 450].number);
+    assert_int_equal(m.selected, (int64_t)n - 450);
+    for (int64_t p = (int64_t)n - 1; p >= (int64_t)n - 700; p--) {
+        assert_int_equal(table_model_select(&m, p, &err), FACET_OK);
+        assert_int_equal(table_model_selection(&m)->number, want[p].number);
+    }
+
+    /* Counted first by the steps, which keep the last page: End reads
+     * it by number (one fetch), the oracle's rows; after a re-sort the
+     * page kept is of the old order and is not used. */
+    const struct browse_key other[1] = {{"planarity", 1}};
+    for (int sort = 0; sort < 2; sort++) {
+        if (sort)
+            assert_int_equal(table_model_set_sort(&m, other, 1, &err),
+                             FACET_OK);
+        assert_int_equal(table_model_set_filter(&m, text, &err), FACET_OK);
+        assert_int_equal(table_model_select(&m, 0, &err), FACET_OK);
+        n = oracle(f, 0, sort ? other : keys, sort ? 1 : 2, want);
+        done = 0;
+        steps = 0;
+        while (!done && steps++ < 100)
+            assert_int_equal(table_model_count_step(&m, 700, &done, &err),
+                             FACET_OK);
+        assert_true(m.tail_ready);
+        int64_t fetches = m.fetches;
+        assert_int_equal(table_model_select(&m, m.count - 1, &err),
+                         FACET_OK);
+        assert_int_equal(m.fetches - fetches, 1);
+        for (int64_t p = (int64_t)n - 1; p >= (int64_t)n - 500; p--) {
+            assert_int_equal(table_model_select(&m, p, &err), FACET_OK);
+            assert_int_equal(table_model_selection(&m)->number,
+                             want[p].number);
+        }
+    }
+    assert_int_equal(table_model_set_sort(&m, keys, 2, &err), FACET_OK);
+    assert_false(m.tail_ready);
+    n = oracle(f, 0, keys, 2, want);
+    assert_int_equal(table_model_select(&m, m.count - 1, &err), FACET_OK);
+    assert_int_equal(table_model_selection(&m)->number, want[n - 1].number);
+    filter_free(f);
+    table_model_close(&m);
+    drop_store(store);
+}
+
+static int gather(void *context, const struct option_row *option)
+{
+    struct option_row **at = context;
+    *(*at)++ = *option;
+    return 0;
+}
+
+/* A filtered page read by a scan of the run (what a page whose walk runs
+ * too long falls back to) is the page the walk gives, forward and
+ * backward, from either end and from rows in the middle. */
+static void test_page_by_scan(void **state)
+{
+    (void)state;
+    int64_t run;
+    struct store *store = make_store(&run);
+    struct facet_error err;
+    struct filter *f;
+    assert_int_equal(filter_compile("cost < 50k and nu >= 3", &f, &err),
+                     FACET_OK);
+    struct option_browse walk = {run, 0, f, {{"cost", 1}, {"nv", 0}}, 2, 0};
+    struct option_browse scan = walk;
+    scan.filter_first = BROWSE_SCAN;
+    static struct option_row want[N];
+    size_t n = oracle(f, 0, walk.keys, 2, want);
+    assert_true(n > 400);
+    static struct option_row a[N], b[N];
+    const struct option_row *from[] = {NULL, &want[0], &want[n / 2],
+                                       &want[n - 1]};
+    for (size_t k = 0; k < sizeof from / sizeof from[0]; k++)
+        for (int backward = 0; backward < 2; backward++) {
+            struct option_row *at = a, *bt = b;
+            assert_int_equal(store_browse_page(store, &walk, from[k],
+                                               backward, 150, gather, &at,
+                                               &err), FACET_OK);
+            assert_int_equal(store_browse_page(store, &scan, from[k],
+                                               backward, 150, gather, &bt,
+                                               &err), FACET_OK);
+            assert_int_equal(at - a, bt - b);
+            for (struct option_row *p = a, *q = b; p < at; p++, q++)
+                assert_int_equal(p->number, q->number);
+        }
+    filter_free(f);
+    drop_store(store);
+}
+
 /* A new sort shows its top: after a re-sort kept an option deeper than
  * the position cap (positions estimated), selecting the first row gives
  * the order's first option at position 0 and exact positions after it
@@ -462,6 +603,8 @@ int main(void)
         cmocka_unit_test(test_scroll),
         cmocka_unit_test(test_count_step_stops),
         cmocka_unit_test(test_select_first),
+        cmocka_unit_test(test_end_before_count),
+        cmocka_unit_test(test_page_by_scan),
         cmocka_unit_test(test_marks_full),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
