@@ -172,17 +172,8 @@ void classify_totals(struct panelization *p,
 {
     memset(totals, 0, sizeof *totals);
     totals->feasible = 1;
-    /* Sums independent of the panels' order (exact_sum.h), so that options
-     * equal in exact arithmetic get bit-equal totals. */
-    struct exact_sum area_of[TYPE_COUNT], class_area[CLASS_COUNT];
-    struct exact_sum area, planarity, p_dist;
-    for (int t = 0; t < TYPE_COUNT; t++)
-        exact_sum_init(&area_of[t]);
-    for (int c = 0; c < CLASS_COUNT; c++)
-        exact_sum_init(&class_area[c]);
-    exact_sum_init(&area);
-    exact_sum_init(&planarity);
-    exact_sum_init(&p_dist);
+    struct option_area_sums sums;
+    option_area_sums_init(&sums);
     for (size_t n = 0; n < p->npanels; n++) {
         struct panel *panel = &p->panels[n];
         enum panel_type priced_as = panel->type;
@@ -193,28 +184,64 @@ void classify_totals(struct panelization *p,
 
         totals->panels++;
         totals->count[panel->type]++;
-        exact_sum_add(&area_of[panel->type], panel->area);
         totals->class_count[panel->class]++;
-        exact_sum_add(&class_area[panel->class], panel->area);
-        exact_sum_add(&area, panel->area);
-        if (panel->type != TYPE_DP) {
-            exact_sum_add(&planarity, panel->deviation);
-            exact_sum_add(&p_dist, panel->p_dist);
+        option_area_sums_add_panel(&sums, panel);
+        if (panel->type != TYPE_DP)
             totals->max_deviation = fmax(totals->max_deviation,
                                          panel->deviation);
-        }
         totals->max_panel_area = fmax(totals->max_panel_area, panel->area);
     }
-    for (int t = 0; t < TYPE_COUNT; t++)
-        totals->area_of[t] = exact_sum_value(&area_of[t]);
-    for (int c = 0; c < CLASS_COUNT; c++)
-        totals->class_area[c] = exact_sum_value(&class_area[c]);
-    totals->area = exact_sum_value(&area);
-    totals->planarity = exact_sum_value(&planarity);
-    totals->p_dist = exact_sum_value(&p_dist);
+    option_area_sums_value(&sums, totals);
     classify_price_areas(options, totals);
     totals->feasible =
         classify_violation(totals, options->max_panel_area) == 0;
+}
+
+void option_area_sums_init(struct option_area_sums *sums)
+{
+    for (int t = 0; t < TYPE_COUNT; t++)
+        exact_sum_init(&sums->area_of[t]);
+    for (int c = 0; c < CLASS_COUNT; c++)
+        exact_sum_init(&sums->class_area[c]);
+    exact_sum_init(&sums->area);
+    exact_sum_init(&sums->planarity);
+    exact_sum_init(&sums->p_dist);
+}
+
+void option_area_sums_add_panel(struct option_area_sums *sums,
+                                const struct panel *panel)
+{
+    exact_sum_add(&sums->area_of[panel->type], panel->area);
+    exact_sum_add(&sums->class_area[panel->class], panel->area);
+    exact_sum_add(&sums->area, panel->area);
+    if (panel->type != TYPE_DP) {
+        exact_sum_add(&sums->planarity, panel->deviation);
+        exact_sum_add(&sums->p_dist, panel->p_dist);
+    }
+}
+
+void option_area_sums_add_totals(struct option_area_sums *sums,
+                                 const struct option_totals *totals)
+{
+    for (int t = 0; t < TYPE_COUNT; t++)
+        exact_sum_add(&sums->area_of[t], totals->area_of[t]);
+    for (int c = 0; c < CLASS_COUNT; c++)
+        exact_sum_add(&sums->class_area[c], totals->class_area[c]);
+    exact_sum_add(&sums->area, totals->area);
+    exact_sum_add(&sums->planarity, totals->planarity);
+    exact_sum_add(&sums->p_dist, totals->p_dist);
+}
+
+void option_area_sums_value(const struct option_area_sums *sums,
+                            struct option_totals *totals)
+{
+    for (int t = 0; t < TYPE_COUNT; t++)
+        totals->area_of[t] = exact_sum_value(&sums->area_of[t]);
+    for (int c = 0; c < CLASS_COUNT; c++)
+        totals->class_area[c] = exact_sum_value(&sums->class_area[c]);
+    totals->area = exact_sum_value(&sums->area);
+    totals->planarity = exact_sum_value(&sums->planarity);
+    totals->p_dist = exact_sum_value(&sums->p_dist);
 }
 
 void classify_price_areas(const struct classify_options *options,

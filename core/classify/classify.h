@@ -31,6 +31,7 @@
 #include <stdint.h>
 
 #include "core/base/error.h"
+#include "core/base/exact_sum.h"
 #include "core/panel/panel.h"
 
 /* The rounding allowance of every limit a panel is held to: a computed
@@ -188,6 +189,33 @@ void classify_totals(struct panelization *p,
  * totals, whose areas are its surfaces' summed, are priced by it too. */
 void classify_price_areas(const struct classify_options *options,
                           struct option_totals *totals);
+
+/* The sums behind an option's areas, planarity and P_dist, each
+ * independent of the order of its terms (exact_sum.h), so that options
+ * equal in exact arithmetic get bit-equal totals: over a surface's panels
+ * (classify_totals) or over a building's surfaces (project_option.h). */
+struct option_area_sums {
+    struct exact_sum area_of[TYPE_COUNT];
+    struct exact_sum class_area[CLASS_COUNT];
+    struct exact_sum area, planarity, p_dist;
+};
+
+void option_area_sums_init(struct option_area_sums *sums);
+
+/* Adds one panel: its area by type and class, and its deviation and
+ * P_dist unless it is DP (which follows the surface). */
+void option_area_sums_add_panel(struct option_area_sums *sums,
+                                const struct panel *panel);
+
+/* Adds another option's (a surface's) area_of, class_area, area,
+ * planarity and p_dist. */
+void option_area_sums_add_totals(struct option_area_sums *sums,
+                                 const struct option_totals *totals);
+
+/* The sums, rounded once, into totals' area_of, class_area, area,
+ * planarity and p_dist. */
+void option_area_sums_value(const struct option_area_sums *sums,
+                            struct option_totals *totals);
 
 /* How far an option is from feasible (0: feasible): its largest panel's
  * excess over the size limit max_panel_area (m^2, classify_area_excess)

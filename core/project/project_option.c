@@ -133,30 +133,18 @@ static void building_totals(struct project_option *option,
     struct option_totals *t = &option->totals;
     memset(t, 0, sizeof *t);
     option->joints = 0;
-    struct exact_sum area_of[TYPE_COUNT], class_area[CLASS_COUNT];
-    struct exact_sum area, planarity, p_dist, joint_length;
-    for (int k = 0; k < TYPE_COUNT; k++)
-        exact_sum_init(&area_of[k]);
-    for (int c = 0; c < CLASS_COUNT; c++)
-        exact_sum_init(&class_area[c]);
-    exact_sum_init(&area);
-    exact_sum_init(&planarity);
-    exact_sum_init(&p_dist);
+    struct option_area_sums sums;
+    struct exact_sum joint_length;
+    option_area_sums_init(&sums);
     exact_sum_init(&joint_length);
     for (size_t i = 0; i < option->nsurfaces; i++) {
         const struct option_totals *s = &option->surfaces[i].totals;
         t->panels += s->panels;
-        for (int k = 0; k < TYPE_COUNT; k++) {
+        for (int k = 0; k < TYPE_COUNT; k++)
             t->count[k] += s->count[k];
-            exact_sum_add(&area_of[k], s->area_of[k]);
-        }
-        for (int c = 0; c < CLASS_COUNT; c++) {
+        for (int c = 0; c < CLASS_COUNT; c++)
             t->class_count[c] += s->class_count[c];
-            exact_sum_add(&class_area[c], s->class_area[c]);
-        }
-        exact_sum_add(&area, s->area);
-        exact_sum_add(&planarity, s->planarity);
-        exact_sum_add(&p_dist, s->p_dist);
+        option_area_sums_add_totals(&sums, s);
         exact_sum_add(&joint_length, s->joint_length);
         t->max_deviation = fmax(t->max_deviation, s->max_deviation);
         t->max_panel_area = fmax(t->max_panel_area, s->max_panel_area);
@@ -168,13 +156,7 @@ static void building_totals(struct project_option *option,
         t->sp_fitted += s->sp_fitted;
         option->joints += option->surfaces[i].joints;
     }
-    for (int k = 0; k < TYPE_COUNT; k++)
-        t->area_of[k] = exact_sum_value(&area_of[k]);
-    for (int c = 0; c < CLASS_COUNT; c++)
-        t->class_area[c] = exact_sum_value(&class_area[c]);
-    t->area = exact_sum_value(&area);
-    t->planarity = exact_sum_value(&planarity);
-    t->p_dist = exact_sum_value(&p_dist);
+    option_area_sums_value(&sums, t);
     t->joint_length = exact_sum_value(&joint_length);
     /* Each surface's mean weighted by its share of the joints: one
      * surface's mean is kept to the bit (a weight of exactly 1). */
