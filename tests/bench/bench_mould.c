@@ -65,8 +65,8 @@ static void report(const char *what, double wall, double cpu,
            what, wall * 1e3, cpu * 1e3, cpu / baseline, f->count[TYPE_SP],
            f->count[TYPE_DP], f->largest, f->singletons, f->fits,
            f->worst * 1e3);
-    printf("  target <= 10 ms: %s in CPU time, %s in wall time\n",
-           verdict(cpu), verdict(wall));
+    printf("  %s: target <= 10 ms: %s in CPU time, %s in wall time\n",
+           what, verdict(cpu), verdict(wall));
 }
 
 int main(int argc, char **argv)

@@ -15,7 +15,7 @@
  *     the 336 evaluations alone on every core, and storage alone (the
  *     same rows put again into a fresh file), rows/s;
  *   - evaluation on one thread, the baseline for the parallel speed-up;
- *   - the stages of the evaluation on one thread, medians of 5 in CPU
+ *   - the stages of the evaluation on one thread, medians of 3 in CPU
  *     time: panels and classes alone; with the joint length and mould
  *     families (issue 15's target: at most 2x the first); the whole
  *     evaluation, panels as built with their SP fits, gaps and kinks
@@ -216,7 +216,7 @@ int main(int argc, char **argv)
      * kinks too (issue 16). Medians of COST_RUNS each, in the thread's
      * CPU time (on a machine shared with other work the wall time counts
      * their turns too) and in wall time. */
-    enum { COST_RUNS = 5 };
+    enum { COST_RUNS = 3 };
     double stage_cpu[3][COST_RUNS], stage_wall[3][COST_RUNS];
     for (int rep = 0; rep < COST_RUNS; rep++) {
         for (int stage = 0; stage < 3; stage++) {
