@@ -302,7 +302,8 @@ int store_option_get(struct store *store, int64_t run, int64_t number,
                      struct option_row *row, struct facet_error *err);
 /* Writes Pareto rank, crowding and the knee flag of every option given
  * (numbers[k] gets rank[k], crowding[k]), and the run's hypervolume,
- * knee, pareto_options and best_cost, in one transaction. */
+ * knee, pareto_options, best_cost and options (its count of stored
+ * options), in one transaction. */
 int store_options_set_pareto(struct store *store, int64_t run,
                              const int64_t *numbers, const int *rank,
                              const double *crowding, size_t n, int64_t knee,

@@ -263,6 +263,7 @@ int store_options_set_pareto(struct store *store, int64_t run,
     if (rc == FACET_OK)
         rc = store_prepare(store,
             "UPDATE runs SET knee = nullif(?2, 0), hypervolume = ?3,"
+            " options = (SELECT count(*) FROM options WHERE run = ?1),"
             " pareto_options = (SELECT count(*) FROM options"
             "  WHERE run = ?1 AND rank = 1),"
             " best_cost = (SELECT min(cost) FROM options"

@@ -552,6 +552,25 @@ static int should_stop(const struct study_hooks *hooks)
 
 /* Stores the panels of every Pareto option of run not stored yet,
  * evaluating them on every core. */
+size_t study_front_budget(int64_t options)
+{
+    int64_t budget = options / STUDY_FRONT_SHARE;
+    return budget < STUDY_FRONT_MIN ? STUDY_FRONT_MIN : (size_t)budget;
+}
+
+/* The order a front larger than its budget is stored in: the knee, then
+ * the largest crowding distance (the ends of the front, at infinity,
+ * first), then the option's number. */
+static int knee_then_spread(const void *a, const void *b)
+{
+    const struct option_row *x = a, *y = b;
+    if (x->knee != y->knee)
+        return x->knee ? -1 : 1;
+    if (x->crowding != y->crowding)
+        return x->crowding > y->crowding ? -1 : 1;
+    return (x->number > y->number) - (x->number < y->number);
+}
+
 static int store_front_panels(struct store *store, const struct run_info *run,
                               const struct surface *surface,
                               const struct panel_lattice *lattice,
@@ -573,11 +592,21 @@ static int store_front_panels(struct store *store, const struct run_info *run,
     int64_t *numbers = malloc((n ? n : 1) * sizeof *numbers);
     if (rc == FACET_OK && (points == NULL || numbers == NULL))
         rc = facet_error_set(err, FACET_EWORK, "out of memory");
+    /* A front larger than its share of the run: the knee and the most
+     * spread of the others, the rest when first looked at. */
+    struct run_info ranked;  /* its options counted by the ranking */
+    if (rc == FACET_OK)
+        rc = store_run_get(store, run->id, &ranked, err);
+    size_t budget = rc == FACET_OK ? study_front_budget(ranked.options) : 0;
+    if (rc == FACET_OK && !knee_only && n > budget)
+        qsort(rows, n, sizeof *rows, knee_then_spread);
+    else
+        budget = n;
     int64_t knee = 0;
     for (size_t k = 0; rc == FACET_OK && k < n; k++) {
         if (rows[k].knee)
             knee = rows[k].number;
-        if (knee_only && !rows[k].knee)
+        if ((knee_only && !rows[k].knee) || k >= budget)
             continue;
         int stored;
         rc = store_panels_exist(store, run->id, rows[k].number, &stored,

@@ -67,6 +67,21 @@ void study_request_defaults(struct study_request *request);
 #define STUDY_PANEL_BYTES 320
 #define STUDY_OPTION_BYTES 400
 
+/* How many Pareto options' panels a run of options options stores when it
+ * ends (store_panels front): one option in STUDY_FRONT_SHARE of the run's,
+ * and at least STUDY_FRONT_MIN. Storing a panel set evaluates its option
+ * again and writes its panels, about three evaluations' worth as the
+ * search runs them (tests/bench/bench_front.c), so the end of a large run
+ * takes under a tenth of it (issue 18); a small run's front, such as the
+ * paper study's 12 options, is stored whole. A larger front stores the knee,
+ * then the options of the largest crowding distance (its ends first: the
+ * most spread of it); the others' panels are computed, and stored, when
+ * first looked at (study_option_panels: facet show, facet export, the
+ * TUI's map). */
+#define STUDY_FRONT_SHARE 40
+#define STUDY_FRONT_MIN 16
+size_t study_front_budget(int64_t options);
+
 /* The largest space the automatic method searches exhaustively; a larger
  * one, or a continuous threshold range, goes to NSGA-II. */
 #define STUDY_EXHAUSTIVE_LIMIT 100000
