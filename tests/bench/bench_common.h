@@ -17,6 +17,15 @@
 #include "core/surface/example.h"
 #include "core/surface/surface.h"
 
+/* Says on stderr which benchmark failed doing what, and why, and exits:
+ * a benchmark that cannot do its work has no figure to give. */
+static inline void bench_die(const char *bench, const char *what,
+                             const struct facet_error *err)
+{
+    fprintf(stderr, "%s: %s: %s\n", bench, what, err->message);
+    exit(1);
+}
+
 static inline double bench_now(void)
 {
     struct timespec t;

@@ -39,12 +39,6 @@
 #define GOAL_SECONDS 25.0
 #define CORES 2
 
-static void die(const char *what, const struct facet_error *err)
-{
-    fprintf(stderr, "bench_space: %s: %s\n", what, err->message);
-    exit(1);
-}
-
 int main(int argc, char **argv)
 {
     int res = argc > 1 ? atoi(argv[1]) : 224;
@@ -66,7 +60,7 @@ int main(int argc, char **argv)
     s->jobs = 1;
     struct panel_lattice *lattice;
     if (optimize_lattice(&surface, s, &lattice, &err) != FACET_OK)
-        die("lattice", &err);
+        bench_die("bench_space", "lattice", &err);
     if (lattice != NULL) {
         fprintf(stderr, "bench_space: the space fits a lattice after all; "
                 "this bench measures one that does not\n");
@@ -93,7 +87,7 @@ int main(int argc, char **argv)
             double start = bench_cpu_now();
             if (optimize_evaluate(&surface, NULL, &s->base, &points[k], 1, 1,
                                   &totals, &err) != FACET_OK)
-                die("evaluation", &err);
+                bench_die("bench_space", "evaluation", &err);
             times[k * (size_t)rounds + (size_t)r] = bench_cpu_now() - start;
             panels[k] = (double)totals.panels;
         }

@@ -44,12 +44,6 @@
 #define TARGET_MS 50.0
 #define MAX_REPS 50
 
-static void die(const char *what, const struct facet_error *err)
-{
-    fprintf(stderr, "bench_tui: %s: %s\n", what, err->message);
-    exit(1);
-}
-
 /* A well-mixed 64-bit hash of k (splitmix64's finaliser). */
 static uint64_t mix(uint64_t k)
 {
@@ -138,7 +132,7 @@ static int64_t generate(struct store *store, int64_t n)
     info.max_panel_area = 7.06;
     info.jobs = 1;
     if (store_run_create(store, &info, &err) != FACET_OK)
-        die("creating the run", &err);
+        bench_die("bench_tui", "creating the run", &err);
     struct option_row *batch = malloc(BATCH * sizeof *batch);
     double *cost = malloc((size_t)n * sizeof *cost);
     double *planarity = malloc((size_t)n * sizeof *planarity);
@@ -152,7 +146,7 @@ static int64_t generate(struct store *store, int64_t n)
      * once at the end */
     int deferred = 0;
     if (store_indexes_defer(store, n, &deferred, &err) != FACET_OK)
-        die("dropping the indexes", &err);
+        bench_die("bench_tui", "dropping the indexes", &err);
     for (int64_t first = 0; first < n; first += BATCH) {
         size_t m = (size_t)(n - first < BATCH ? n - first : BATCH);
         for (size_t k = 0; k < m; k++) {
@@ -162,11 +156,11 @@ static int64_t generate(struct store *store, int64_t n)
             planarity[number] = batch[k].totals.planarity;
         }
         if (store_options_put(store, info.id, batch, m, &err) != FACET_OK)
-            die("storing options", &err);
+            bench_die("bench_tui", "storing options", &err);
     }
     if (deferred &&
         store_indexes_build(store, info.id, NULL, &err) != FACET_OK)
-        die("building the indexes", &err);
+        bench_die("bench_tui", "building the indexes", &err);
     double put = bench_now() - start;
     /* the front: by cost, each option less planar than every cheaper one */
     for (int64_t k = 0; k < n; k++)
@@ -195,7 +189,7 @@ static int64_t generate(struct store *store, int64_t n)
                                  &err) != FACET_OK ||
         store_run_set_status(store, info.id, RUN_DONE, put, &err) != FACET_OK ||
         store_analyze(store, &err) != FACET_OK)  /* as a run's end does */
-        die("ranking", &err);
+        bench_die("bench_tui", "ranking", &err);
     printf("generated %lld options in %.1f s (%.0f rows/s, batches of %d);"
            " %zu on the front (rank 1), the rest unranked; ranking %.2f s\n",
            (long long)n, put, (double)n / put, BATCH, front,
@@ -219,7 +213,7 @@ static int64_t find_run(struct store *store, int64_t n)
     char name[128];
     snprintf(name, sizeof name, "bench_tui %lld", (long long)n);
     if (store_run_list(store, &runs, &count, &err) != FACET_OK)
-        die("listing runs", &err);
+        bench_die("bench_tui", "listing runs", &err);
     int64_t id = 0;
     for (size_t k = 0; k < count; k++)
         if (strcmp(runs[k].name, name) == 0 && runs[k].options == n &&
@@ -277,7 +271,7 @@ static double baseline(struct store *store, int64_t run)
         double start = bench_now();
         if (store_options_query(store, &q, count_rows, &got, &err) !=
             FACET_OK)
-            die("baseline", &err);
+            bench_die("bench_tui", "baseline", &err);
         times[r] = (bench_now() - start) * 1e3;
     }
     qsort(times, (size_t)reps, sizeof *times, compare_double);
@@ -287,7 +281,7 @@ static double baseline(struct store *store, int64_t run)
 static void check(int rc, const char *what, const struct facet_error *err)
 {
     if (rc != FACET_OK)
-        die(what, err);
+        bench_die("bench_tui", what, err);
 }
 
 static int last_row(void *context, const struct option_row *o)
@@ -321,7 +315,7 @@ static void open_table(struct table_model *m, struct store *store,
     if (table_model_open(m, store, run, &err) != FACET_OK ||
         table_model_set_sort(m, by_cost_key, 1, &err) != FACET_OK ||
         table_model_select(m, 0, &err) != FACET_OK)
-        die("opening the table", &err);
+        bench_die("bench_tui", "opening the table", &err);
 }
 
 /* What the status line says of the count ("12,345" or "10,000+"). */
@@ -461,7 +455,7 @@ int main(int argc, char **argv)
     struct store *store;
     struct facet_error err;
     if (store_open(path, &store, &err) != FACET_OK)
-        die("opening the database", &err);
+        bench_die("bench_tui", "opening the database", &err);
     int64_t run = find_run(store, n);
     if (run == 0)
         run = generate(store, n);
