@@ -241,8 +241,23 @@ def check_ranks(path, run):
     elif info["hypervolume"] is not None:
         problem("hypervolume %s with no feasible option" % info["hypervolume"])
 
-    # The panels of every Pareto option are stored, one row per panel.
-    for i in first:
+    # The panels of the Pareto options are stored, one row per panel: all
+    # of them up to the run's budget, max(16, options / 40); of a larger
+    # front the knee first, then the largest crowding distance (the ends,
+    # at infinity, stored as NULL, first), then the lowest number.
+    budget = max(16, len(rows) // 40)
+    order = sorted(first, key=lambda i: (
+        -rows[i]["knee"], rows[i]["crowding"] is not None,
+        -(rows[i]["crowding"] or 0), rows[i]["number"]))
+    kept = order[:budget]
+    stored = sorted(o for (o,) in db.execute(
+        "SELECT option FROM panel_sets s JOIN options o ON o.run = s.run "
+        "AND o.number = s.option WHERE s.run = ? AND o.rank = 1", (run,)))
+    if stored != sorted(rows[i]["number"] for i in kept):
+        problem("Pareto options with panels %s, want %s (budget %d of %d)"
+                % (stored, sorted(rows[i]["number"] for i in kept), budget,
+                   len(first)))
+    for i in kept:
         r = rows[i]
         sets = db.execute("SELECT nu, nv FROM panel_sets WHERE run = ? AND "
                           "option = ?", (run, r["number"])).fetchall()
