@@ -10,6 +10,7 @@
  */
 #include "core/fit/developable.h"
 
+#include <assert.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -154,6 +155,118 @@ static void apply_step(const struct developable *d, const double e1[3],
     recentre(out, centroid);
 }
 
+/* Points are linearised a chunk of this many at a time: first each
+ * point's residual and row of the Jacobian (independent of the other
+ * points, so that their square roots and divisions overlap), then their
+ * sums, in the points' order as one pass adds them. */
+#define LINEARIZE_CHUNK 32
+
+/* linearize for np parameters (5 or 6), a constant where it is inlined:
+ * the sums are kept in locals, each added to in the points' order, so
+ * that they come out as summed point by point into jtj and jtr. */
+static inline double linearize_np(const struct developable *d,
+                                  const double *points, size_t n,
+                                  const int np, const double e1[3],
+                                  const double e2[3], double jtj[36],
+                                  double jtr[6])
+{
+    double w = 1 / sqrt(1 + d->slope * d->slope), sum = 0;
+    double b0 = 0, b1 = 0, b2 = 0, b3 = 0, b4 = 0, b5 = 0;
+    double a00 = 0;
+    double a10 = 0, a11 = 0;
+    double a20 = 0, a21 = 0, a22 = 0;
+    double a30 = 0, a31 = 0, a32 = 0, a33 = 0;
+    double a40 = 0, a41 = 0, a42 = 0, a43 = 0, a44 = 0;
+    double a50 = 0, a51 = 0, a52 = 0, a53 = 0, a54 = 0, a55 = 0;
+    for (size_t from = 0; from < n; from += LINEARIZE_CHUNK) {
+        size_t m = n - from < LINEARIZE_CHUNK ? n - from : LINEARIZE_CHUNK;
+        double f[LINEARIZE_CHUNK], row[6][LINEARIZE_CHUNK];
+        for (size_t k = 0; k < m; k++) {
+            double q[3];
+            vec3_sub(points + 3 * (from + k), d->base, q);
+            double x = vec3_dot(q, e1), y = vec3_dot(q, e2);
+            double h = vec3_dot(q, d->axis), rho = sqrt(x * x + y * y);
+            double ux = rho > 0 ? x / rho : 1, uy = rho > 0 ? y / rho : 0;
+            double g = rho - d->radius - d->slope * h;
+            f[k] = g * w;
+            row[0][k] = -ux * w;
+            row[1][k] = -uy * w;
+            row[2][k] = (-h * ux - d->slope * x) * w;
+            row[3][k] = (-h * uy - d->slope * y) * w;
+            row[4][k] = -w;
+            if (np == 6)
+                row[5][k] = -h * w - g * d->slope * w * w * w;
+        }
+        for (size_t k = 0; k < m; k++) {
+            double r0 = row[0][k], r1 = row[1][k], r2 = row[2][k];
+            double r3 = row[3][k], r4 = row[4][k], fk = f[k];
+            sum += fk * fk;
+            b0 += r0 * fk;
+            b1 += r1 * fk;
+            b2 += r2 * fk;
+            b3 += r3 * fk;
+            b4 += r4 * fk;
+            a00 += r0 * r0;
+            a10 += r1 * r0;
+            a11 += r1 * r1;
+            a20 += r2 * r0;
+            a21 += r2 * r1;
+            a22 += r2 * r2;
+            a30 += r3 * r0;
+            a31 += r3 * r1;
+            a32 += r3 * r2;
+            a33 += r3 * r3;
+            a40 += r4 * r0;
+            a41 += r4 * r1;
+            a42 += r4 * r2;
+            a43 += r4 * r3;
+            a44 += r4 * r4;
+            if (np == 6) {
+                double r5 = row[5][k];
+                b5 += r5 * fk;
+                a50 += r5 * r0;
+                a51 += r5 * r1;
+                a52 += r5 * r2;
+                a53 += r5 * r3;
+                a54 += r5 * r4;
+                a55 += r5 * r5;
+            }
+        }
+    }
+    memset(jtj, 0, 36 * sizeof *jtj);
+    memset(jtr, 0, 6 * sizeof *jtr);
+    jtr[0] = b0;
+    jtr[1] = b1;
+    jtr[2] = b2;
+    jtr[3] = b3;
+    jtr[4] = b4;
+    jtj[0] = a00;
+    jtj[6] = a10;
+    jtj[7] = a11;
+    jtj[12] = a20;
+    jtj[13] = a21;
+    jtj[14] = a22;
+    jtj[18] = a30;
+    jtj[19] = a31;
+    jtj[20] = a32;
+    jtj[21] = a33;
+    jtj[24] = a40;
+    jtj[25] = a41;
+    jtj[26] = a42;
+    jtj[27] = a43;
+    jtj[28] = a44;
+    if (np == 6) {
+        jtr[5] = b5;
+        jtj[30] = a50;
+        jtj[31] = a51;
+        jtj[32] = a52;
+        jtj[33] = a53;
+        jtj[34] = a54;
+        jtj[35] = a55;
+    }
+    return sum;
+}
+
 /* The sum of squared distances of points from d, and the normal
  * equations of its linearisation in the parameters of apply_step (frame
  * e1, e2 of d's axis) into jtj (6 x 6, lower triangle of the leading np x
@@ -164,31 +277,10 @@ static double linearize(const struct developable *d, const double *points,
                         size_t n, int np, const double e1[3],
                         const double e2[3], double jtj[36], double jtr[6])
 {
-    memset(jtj, 0, 36 * sizeof *jtj);
-    memset(jtr, 0, 6 * sizeof *jtr);
-    double w = 1 / sqrt(1 + d->slope * d->slope), sum = 0;
-    for (size_t k = 0; k < n; k++) {
-        double q[3];
-        vec3_sub(points + 3 * k, d->base, q);
-        double x = vec3_dot(q, e1), y = vec3_dot(q, e2);
-        double h = vec3_dot(q, d->axis), rho = sqrt(x * x + y * y);
-        double ux = rho > 0 ? x / rho : 1, uy = rho > 0 ? y / rho : 0;
-        double g = rho - d->radius - d->slope * h, f = g * w;
-        double row[6] = {
-            -ux * w, -uy * w,
-            (-h * ux - d->slope * x) * w,
-            (-h * uy - d->slope * y) * w,
-            -w,
-            -h * w - g * d->slope * w * w * w,
-        };
-        sum += f * f;
-        for (int r = 0; r < np; r++) {
-            jtr[r] += row[r] * f;
-            for (int c = 0; c <= r; c++)
-                jtj[r * 6 + c] += row[r] * row[c];
-        }
-    }
-    return sum;
+    assert(np == 5 || np == 6);
+    if (np == 5)
+        return linearize_np(d, points, n, 5, e1, e2, jtj, jtr);
+    return linearize_np(d, points, n, 6, e1, e2, jtj, jtr);
 }
 
 /* Sets d's radius and slope to the best for its axis: in the half-plane
