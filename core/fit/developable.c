@@ -91,12 +91,34 @@ void developable_nearest(const struct developable *d, const double x[3],
     }
 }
 
+/* The distance from the axis of a point at q from the base, h along the
+ * axis: sqrt(q.q - h^2), 0 where rounding makes that negative (or it is
+ * NaN). fmax(q.q - h^2, 0) without the library call; the two differ at
+ * most in the sign of a zero, which no caller can tell (they take the
+ * absolute value of what it is in, or add it to sums that start at +0,
+ * which adding a zero of either sign leaves as they are). */
+static double off_axis(const double q[3], double h)
+{
+    double s = vec3_dot(q, q) - h * h;
+    return sqrt(s > 0 ? s : 0);
+}
+
 double developable_max_distance(const struct developable *d,
                                 const double *points, size_t n)
 {
-    double worst = 0;
-    for (size_t k = 0; k < n; k++)
-        worst = fmax(worst, fabs(developable_distance(d, points + 3 * k)));
+    /* developable_distance point by point, its divisor computed once and
+     * the largest kept without the library's fmax: worst is never NaN
+     * (a NaN distance leaves it, as fmax does) and never -0. */
+    double worst = 0, norm = sqrt(1 + d->slope * d->slope);
+    for (size_t k = 0; k < n; k++) {
+        double q[3];
+        vec3_sub(points + 3 * k, d->base, q);
+        double h = vec3_dot(q, d->axis);
+        double distance = fabs((off_axis(q, h) - d->radius - d->slope * h) /
+                               norm);
+        if (distance > worst)
+            worst = distance;
+    }
     return worst;
 }
 
@@ -161,9 +183,11 @@ static void apply_step(const struct developable *d, const double e1[3],
  * sums, in the points' order as one pass adds them. */
 #define LINEARIZE_CHUNK 32
 
-/* linearize for np parameters (5 or 6), a constant where it is inlined:
- * the sums are kept in locals, each added to in the points' order, so
- * that they come out as summed point by point into jtj and jtr. */
+/* linearize for np parameters (5 or 6), a constant where it is inlined
+ * (always, so that the loops hold no test of np): the sums are kept in
+ * locals, each added to in the points' order, so that they come out as
+ * summed point by point into jtj and jtr. */
+__attribute__((always_inline))
 static inline double linearize_np(const struct developable *d,
                                   const double *points, size_t n,
                                   const int np, const double e1[3],
@@ -298,7 +322,7 @@ static void best_line(struct developable *d, const double *points, size_t n)
         double q[3];
         vec3_sub(points + 3 * k, d->base, q);
         double h = vec3_dot(q, d->axis);
-        double rho = sqrt(fmax(vec3_dot(q, q) - h * h, 0));
+        double rho = off_axis(q, h);
         mh += h;
         mr += rho;
         hh += h * h;
