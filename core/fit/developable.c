@@ -353,12 +353,11 @@ static double quadratic(const double m[36], const double x[6], int np)
     return sum;
 }
 
-/* Levenberg-Marquardt on d over np parameters (5: cylinder, 6: cone).
- * Each trial step is linearised where it lands, so that an accepted step
- * (the usual case) costs one pass over the points. Returns 0, or -1 when
- * the surface leaves the finite. */
-static int refine(struct developable *d, const double *points, size_t n,
-                  int np)
+/* refine for np parameters, a constant where it is inlined (always: the
+ * loops over the parameters, and linearize's, then hold no test of np). */
+__attribute__((always_inline))
+static inline int refine_np(struct developable *d, const double *points,
+                            size_t n, const int np)
 {
     double centroid[3], e1[3], e2[3], jtj[36], jtr[6];
     centroid_of(points, n, centroid);
@@ -433,6 +432,19 @@ static int refine(struct developable *d, const double *points, size_t n,
     if (!isfinite(d->radius) || !isfinite(d->slope) || !(d->radius > 0))
         return -1;
     return 0;
+}
+
+/* Levenberg-Marquardt on d over np parameters (5: cylinder, 6: cone).
+ * Each trial step is linearised where it lands, so that an accepted step
+ * (the usual case) costs one pass over the points. Returns 0, or -1 when
+ * the surface leaves the finite. */
+static int refine(struct developable *d, const double *points, size_t n,
+                  int np)
+{
+    assert(np == 5 || np == 6);
+    if (np == 5)
+        return refine_np(d, points, n, 5);
+    return refine_np(d, points, n, 6);
 }
 
 int developable_fit_cylinder(const double *points, size_t n,
