@@ -59,11 +59,15 @@ static void cylindrical(const struct developable *d, const double x[3],
     *h = vec3_dot(q, d->axis);
     for (int k = 0; k < 3; k++)
         u[k] = q[k] - *h * d->axis[k];
+    /* vec3_normalize(u), its length computed once for both. */
     *rho = vec3_length(u);
-    if (!vec3_normalize(u)) {
+    if (!(*rho > 0) || !isfinite(*rho)) {
         double e2[3];
         frame(d->axis, u, e2);
+        return;
     }
+    for (int k = 0; k < 3; k++)
+        u[k] /= *rho;
 }
 
 double developable_distance(const struct developable *d, const double x[3])
