@@ -361,10 +361,10 @@ static double quadratic(const double m[36], const double x[6], int np)
  * loops over the parameters, and linearize's, then hold no test of np). */
 __attribute__((always_inline))
 static inline int refine_np(struct developable *d, const double *points,
-                            size_t n, const int np)
+                            size_t n, const double centroid[3],
+                            const int np)
 {
-    double centroid[3], e1[3], e2[3], jtj[36], jtr[6];
-    centroid_of(points, n, centroid);
+    double e1[3], e2[3], jtj[36], jtr[6];
     recentre(d, centroid);
     if (np == 6)
         best_line(d, points, n);
@@ -438,17 +438,18 @@ static inline int refine_np(struct developable *d, const double *points,
     return 0;
 }
 
-/* Levenberg-Marquardt on d over np parameters (5: cylinder, 6: cone).
- * Each trial step is linearised where it lands, so that an accepted step
- * (the usual case) costs one pass over the points. Returns 0, or -1 when
- * the surface leaves the finite. */
+/* Levenberg-Marquardt on d over np parameters (5: cylinder, 6: cone),
+ * centroid the points' (centroid_of, which the callers need too). Each
+ * trial step is linearised where it lands, so that an accepted step (the
+ * usual case) costs one pass over the points. Returns 0, or -1 when the
+ * surface leaves the finite. */
 static int refine(struct developable *d, const double *points, size_t n,
-                  int np)
+                  const double centroid[3], int np)
 {
     assert(np == 5 || np == 6);
     if (np == 5)
-        return refine_np(d, points, n, 5);
-    return refine_np(d, points, n, 6);
+        return refine_np(d, points, n, centroid, 5);
+    return refine_np(d, points, n, centroid, 6);
 }
 
 int developable_fit_cylinder(const double *points, size_t n,
@@ -491,7 +492,7 @@ int developable_fit_cylinder(const double *points, size_t n,
         d.base[k] = centroid[k] + cx * e1[k] + cy * e2[k];
     d.radius = sqrt(r2);
     d.slope = 0;
-    if (refine(&d, points, n, 5) != 0)
+    if (refine(&d, points, n, centroid, 5) != 0)
         return -1;
     *out = d;
     return 0;
@@ -568,13 +569,13 @@ int developable_fit_cone(const double *points, size_t n,
         return -1;
     struct developable d = *start;
     d.shape = DEVELOPABLE_CONE;
-    if (refine(&d, points, n, 6) != 0)
+    double centroid[3], apex[3], extent = 0;
+    centroid_of(points, n, centroid);
+    if (refine(&d, points, n, centroid, 6) != 0)
         return -1;
     /* A cone whose apex lies among the points is no panel one can roll
      * (its curvature grows without bound there), and the fit that finds
      * one is a nearly flat cone wandering about a nearly flat patch. */
-    double centroid[3], apex[3], extent = 0;
-    centroid_of(points, n, centroid);
     for (size_t k = 0; k < n; k++)
         extent = fmax(extent, vec3_distance(points + 3 * k, centroid));
     for (int x = 0; x < 3; x++)
