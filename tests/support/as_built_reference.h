@@ -3,12 +3,12 @@
  * as the truth the faster code is pinned to.
  *
  * The cell sides (cell_sides.h), the SP fits (developable.h, sp_fit.h)
- * as they were written first: one pass over the points per use, the
- * normal equations summed through loops over a run-time parameter count,
- * the fit points bucketed by a scan of all of them per option. The
- * faster code in core/ must give every sample, fit, deviation and verdict
- * the same to the bit (test_as_built); this copy is not to be made
- * faster.
+ * and the joints (joint.h) as they were written first: the normal
+ * equations summed point by point through loops over a run-time parameter
+ * count, the library's fmin and fmax, each fit's centroid computed where
+ * it is used. The faster code in core/ must give every sample, fit,
+ * deviation, verdict, gap and kink the same to the bit (test_as_built);
+ * this copy is not to be made faster.
  *
  * Test support, not part of Facet: tests/ links it, the binary does not.
  * Each function is its core/ namesake's contract, prefixed reference_;
@@ -20,6 +20,7 @@
 #include "core/fit/developable.h"
 #include "core/fit/sp_fit.h"
 #include "core/joint/cell_sides.h"
+#include "core/joint/joint.h"
 
 double reference_developable_distance(const struct developable *d,
                                       const double x[3]);
@@ -57,5 +58,11 @@ int reference_built_option_fit(const struct mesh *mesh,
                                const struct cell_sides *sides,
                                double threshold, struct built_option *out,
                                struct facet_error *err);
+
+int reference_joints_measure(const struct panelization *panels,
+                             const struct built_option *built,
+                             const struct cell_sides *sides, double max_gap,
+                             double max_kink, struct joints *out,
+                             struct facet_error *err);
 
 #endif

@@ -175,8 +175,8 @@ static void reference_option(const struct surface *s,
                                     sides, &err) != FACET_OK ||
         reference_built_option_fit(&s->mesh, &s->fit, panels, sides, t,
                                    built, &err) != FACET_OK ||
-        joints_measure(panels, built, sides, 0.006, PI / 180, joints,
-                       &err) != FACET_OK)
+        reference_joints_measure(panels, built, sides, 0.006, PI / 180,
+                                 joints, &err) != FACET_OK)
         fail_msg("%s", err.message);
 }
 
