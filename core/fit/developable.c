@@ -10,6 +10,7 @@
  */
 #include "core/fit/developable.h"
 
+#include <assert.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -58,11 +59,15 @@ static void cylindrical(const struct developable *d, const double x[3],
     *h = vec3_dot(q, d->axis);
     for (int k = 0; k < 3; k++)
         u[k] = q[k] - *h * d->axis[k];
+    /* vec3_normalize(u), its length computed once for both. */
     *rho = vec3_length(u);
-    if (!vec3_normalize(u)) {
+    if (!(*rho > 0) || !isfinite(*rho)) {
         double e2[3];
         frame(d->axis, u, e2);
+        return;
     }
+    for (int k = 0; k < 3; k++)
+        u[k] /= *rho;
 }
 
 double developable_distance(const struct developable *d, const double x[3])
@@ -90,12 +95,34 @@ void developable_nearest(const struct developable *d, const double x[3],
     }
 }
 
+/* The distance from the axis of a point at q from the base, h along the
+ * axis: sqrt(q.q - h^2), 0 where rounding makes that negative (or it is
+ * NaN). fmax(q.q - h^2, 0) without the library call; the two differ at
+ * most in the sign of a zero, which no caller can tell (they take the
+ * absolute value of what it is in, or add it to sums that start at +0,
+ * which adding a zero of either sign leaves as they are). */
+static double off_axis(const double q[3], double h)
+{
+    double s = vec3_dot(q, q) - h * h;
+    return sqrt(s > 0 ? s : 0);
+}
+
 double developable_max_distance(const struct developable *d,
                                 const double *points, size_t n)
 {
-    double worst = 0;
-    for (size_t k = 0; k < n; k++)
-        worst = fmax(worst, fabs(developable_distance(d, points + 3 * k)));
+    /* developable_distance point by point, its divisor computed once and
+     * the largest kept without the library's fmax: worst is never NaN
+     * (a NaN distance leaves it, as fmax does) and never -0. */
+    double worst = 0, norm = sqrt(1 + d->slope * d->slope);
+    for (size_t k = 0; k < n; k++) {
+        double q[3];
+        vec3_sub(points + 3 * k, d->base, q);
+        double h = vec3_dot(q, d->axis);
+        double distance = fabs((off_axis(q, h) - d->radius - d->slope * h) /
+                               norm);
+        if (distance > worst)
+            worst = distance;
+    }
     return worst;
 }
 
@@ -154,6 +181,120 @@ static void apply_step(const struct developable *d, const double e1[3],
     recentre(out, centroid);
 }
 
+/* Points are linearised a chunk of this many at a time: first each
+ * point's residual and row of the Jacobian (independent of the other
+ * points, so that their square roots and divisions overlap), then their
+ * sums, in the points' order as one pass adds them. */
+#define LINEARIZE_CHUNK 32
+
+/* linearize for np parameters (5 or 6), a constant where it is inlined
+ * (always, so that the loops hold no test of np): the sums are kept in
+ * locals, each added to in the points' order, so that they come out as
+ * summed point by point into jtj and jtr. */
+__attribute__((always_inline))
+static inline double linearize_np(const struct developable *d,
+                                  const double *points, size_t n,
+                                  const int np, const double e1[3],
+                                  const double e2[3], double jtj[36],
+                                  double jtr[6])
+{
+    double w = 1 / sqrt(1 + d->slope * d->slope), sum = 0;
+    double b0 = 0, b1 = 0, b2 = 0, b3 = 0, b4 = 0, b5 = 0;
+    double a00 = 0;
+    double a10 = 0, a11 = 0;
+    double a20 = 0, a21 = 0, a22 = 0;
+    double a30 = 0, a31 = 0, a32 = 0, a33 = 0;
+    double a40 = 0, a41 = 0, a42 = 0, a43 = 0, a44 = 0;
+    double a50 = 0, a51 = 0, a52 = 0, a53 = 0, a54 = 0, a55 = 0;
+    for (size_t from = 0; from < n; from += LINEARIZE_CHUNK) {
+        size_t m = n - from < LINEARIZE_CHUNK ? n - from : LINEARIZE_CHUNK;
+        double f[LINEARIZE_CHUNK], row[6][LINEARIZE_CHUNK];
+        for (size_t k = 0; k < m; k++) {
+            double q[3];
+            vec3_sub(points + 3 * (from + k), d->base, q);
+            double x = vec3_dot(q, e1), y = vec3_dot(q, e2);
+            double h = vec3_dot(q, d->axis), rho = sqrt(x * x + y * y);
+            double ux = rho > 0 ? x / rho : 1, uy = rho > 0 ? y / rho : 0;
+            double g = rho - d->radius - d->slope * h;
+            f[k] = g * w;
+            row[0][k] = -ux * w;
+            row[1][k] = -uy * w;
+            row[2][k] = (-h * ux - d->slope * x) * w;
+            row[3][k] = (-h * uy - d->slope * y) * w;
+            row[4][k] = -w;
+            if (np == 6)
+                row[5][k] = -h * w - g * d->slope * w * w * w;
+        }
+        for (size_t k = 0; k < m; k++) {
+            double r0 = row[0][k], r1 = row[1][k], r2 = row[2][k];
+            double r3 = row[3][k], r4 = row[4][k], fk = f[k];
+            sum += fk * fk;
+            b0 += r0 * fk;
+            b1 += r1 * fk;
+            b2 += r2 * fk;
+            b3 += r3 * fk;
+            b4 += r4 * fk;
+            a00 += r0 * r0;
+            a10 += r1 * r0;
+            a11 += r1 * r1;
+            a20 += r2 * r0;
+            a21 += r2 * r1;
+            a22 += r2 * r2;
+            a30 += r3 * r0;
+            a31 += r3 * r1;
+            a32 += r3 * r2;
+            a33 += r3 * r3;
+            a40 += r4 * r0;
+            a41 += r4 * r1;
+            a42 += r4 * r2;
+            a43 += r4 * r3;
+            a44 += r4 * r4;
+            if (np == 6) {
+                double r5 = row[5][k];
+                b5 += r5 * fk;
+                a50 += r5 * r0;
+                a51 += r5 * r1;
+                a52 += r5 * r2;
+                a53 += r5 * r3;
+                a54 += r5 * r4;
+                a55 += r5 * r5;
+            }
+        }
+    }
+    memset(jtj, 0, 36 * sizeof *jtj);
+    memset(jtr, 0, 6 * sizeof *jtr);
+    jtr[0] = b0;
+    jtr[1] = b1;
+    jtr[2] = b2;
+    jtr[3] = b3;
+    jtr[4] = b4;
+    jtj[0] = a00;
+    jtj[6] = a10;
+    jtj[7] = a11;
+    jtj[12] = a20;
+    jtj[13] = a21;
+    jtj[14] = a22;
+    jtj[18] = a30;
+    jtj[19] = a31;
+    jtj[20] = a32;
+    jtj[21] = a33;
+    jtj[24] = a40;
+    jtj[25] = a41;
+    jtj[26] = a42;
+    jtj[27] = a43;
+    jtj[28] = a44;
+    if (np == 6) {
+        jtr[5] = b5;
+        jtj[30] = a50;
+        jtj[31] = a51;
+        jtj[32] = a52;
+        jtj[33] = a53;
+        jtj[34] = a54;
+        jtj[35] = a55;
+    }
+    return sum;
+}
+
 /* The sum of squared distances of points from d, and the normal
  * equations of its linearisation in the parameters of apply_step (frame
  * e1, e2 of d's axis) into jtj (6 x 6, lower triangle of the leading np x
@@ -164,31 +305,10 @@ static double linearize(const struct developable *d, const double *points,
                         size_t n, int np, const double e1[3],
                         const double e2[3], double jtj[36], double jtr[6])
 {
-    memset(jtj, 0, 36 * sizeof *jtj);
-    memset(jtr, 0, 6 * sizeof *jtr);
-    double w = 1 / sqrt(1 + d->slope * d->slope), sum = 0;
-    for (size_t k = 0; k < n; k++) {
-        double q[3];
-        vec3_sub(points + 3 * k, d->base, q);
-        double x = vec3_dot(q, e1), y = vec3_dot(q, e2);
-        double h = vec3_dot(q, d->axis), rho = sqrt(x * x + y * y);
-        double ux = rho > 0 ? x / rho : 1, uy = rho > 0 ? y / rho : 0;
-        double g = rho - d->radius - d->slope * h, f = g * w;
-        double row[6] = {
-            -ux * w, -uy * w,
-            (-h * ux - d->slope * x) * w,
-            (-h * uy - d->slope * y) * w,
-            -w,
-            -h * w - g * d->slope * w * w * w,
-        };
-        sum += f * f;
-        for (int r = 0; r < np; r++) {
-            jtr[r] += row[r] * f;
-            for (int c = 0; c <= r; c++)
-                jtj[r * 6 + c] += row[r] * row[c];
-        }
-    }
-    return sum;
+    assert(np == 5 || np == 6);
+    if (np == 5)
+        return linearize_np(d, points, n, 5, e1, e2, jtj, jtr);
+    return linearize_np(d, points, n, 6, e1, e2, jtj, jtr);
 }
 
 /* Sets d's radius and slope to the best for its axis: in the half-plane
@@ -206,7 +326,7 @@ static void best_line(struct developable *d, const double *points, size_t n)
         double q[3];
         vec3_sub(points + 3 * k, d->base, q);
         double h = vec3_dot(q, d->axis);
-        double rho = sqrt(fmax(vec3_dot(q, q) - h * h, 0));
+        double rho = off_axis(q, h);
         mh += h;
         mr += rho;
         hh += h * h;
@@ -237,15 +357,14 @@ static double quadratic(const double m[36], const double x[6], int np)
     return sum;
 }
 
-/* Levenberg-Marquardt on d over np parameters (5: cylinder, 6: cone).
- * Each trial step is linearised where it lands, so that an accepted step
- * (the usual case) costs one pass over the points. Returns 0, or -1 when
- * the surface leaves the finite. */
-static int refine(struct developable *d, const double *points, size_t n,
-                  int np)
+/* refine for np parameters, a constant where it is inlined (always: the
+ * loops over the parameters, and linearize's, then hold no test of np). */
+__attribute__((always_inline))
+static inline int refine_np(struct developable *d, const double *points,
+                            size_t n, const double centroid[3],
+                            const int np)
 {
-    double centroid[3], e1[3], e2[3], jtj[36], jtr[6];
-    centroid_of(points, n, centroid);
+    double e1[3], e2[3], jtj[36], jtr[6];
     recentre(d, centroid);
     if (np == 6)
         best_line(d, points, n);
@@ -319,6 +438,20 @@ static int refine(struct developable *d, const double *points, size_t n,
     return 0;
 }
 
+/* Levenberg-Marquardt on d over np parameters (5: cylinder, 6: cone),
+ * centroid the points' (centroid_of, which the callers need too). Each
+ * trial step is linearised where it lands, so that an accepted step (the
+ * usual case) costs one pass over the points. Returns 0, or -1 when the
+ * surface leaves the finite. */
+static int refine(struct developable *d, const double *points, size_t n,
+                  const double centroid[3], int np)
+{
+    assert(np == 5 || np == 6);
+    if (np == 5)
+        return refine_np(d, points, n, centroid, 5);
+    return refine_np(d, points, n, centroid, 6);
+}
+
 int developable_fit_cylinder(const double *points, size_t n,
                              const double axis_guess[3],
                              struct developable *out)
@@ -359,7 +492,7 @@ int developable_fit_cylinder(const double *points, size_t n,
         d.base[k] = centroid[k] + cx * e1[k] + cy * e2[k];
     d.radius = sqrt(r2);
     d.slope = 0;
-    if (refine(&d, points, n, 5) != 0)
+    if (refine(&d, points, n, centroid, 5) != 0)
         return -1;
     *out = d;
     return 0;
@@ -436,13 +569,13 @@ int developable_fit_cone(const double *points, size_t n,
         return -1;
     struct developable d = *start;
     d.shape = DEVELOPABLE_CONE;
-    if (refine(&d, points, n, 6) != 0)
+    double centroid[3], apex[3], extent = 0;
+    centroid_of(points, n, centroid);
+    if (refine(&d, points, n, centroid, 6) != 0)
         return -1;
     /* A cone whose apex lies among the points is no panel one can roll
      * (its curvature grows without bound there), and the fit that finds
      * one is a nearly flat cone wandering about a nearly flat patch. */
-    double centroid[3], apex[3], extent = 0;
-    centroid_of(points, n, centroid);
     for (size_t k = 0; k < n; k++)
         extent = fmax(extent, vec3_distance(points + 3 * k, centroid));
     for (int x = 0; x < 3; x++)

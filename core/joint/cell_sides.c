@@ -24,6 +24,18 @@
  * from. */
 #define INSIDE_MARGIN 1e-12
 
+/* fmin(a, b) without the library call, as far as a comparison with a
+ * number tells: the smaller, the other where one is NaN (the two may
+ * differ in the sign of a zero). */
+static double least_of(double a, double b)
+{
+    if (isnan(a))
+        return b;
+    if (isnan(b))
+        return a;
+    return b < a ? b : a;
+}
+
 /* The triangle holding (u, v), found by walking from hint across the edge
  * the point lies beyond (a few steps, as consecutive samples are close),
  * else by the lookup; UINT32_MAX when none holds it. A point the walk finds
@@ -38,7 +50,7 @@ static uint32_t locate_near(const struct mesh *mesh,
     for (int step = 0; step < 4 && t != UINT32_MAX; step++) {
         if (!uv_index_barycentric(index, t, u, v, b))
             break;
-        double least = fmin(b[0], fmin(b[1], b[2]));
+        double least = least_of(b[0], least_of(b[1], b[2]));
         if (least > INSIDE_MARGIN)
             return t;
         if (least >= -LOCATE_TOLERANCE)

@@ -83,6 +83,15 @@ static void normal_of(const struct joint_side *s, const double x[3],
     }
 }
 
+/* Raises *gap to distance when that is larger: fmax(*gap, distance)
+ * without the library call, for a gap that starts at 0 and distances that
+ * are square roots (never -0; a NaN leaves the gap, as fmax does). */
+static void widen(double *gap, double distance)
+{
+    if (distance > *gap)
+        *gap = distance;
+}
+
 /* Measures one joint on side of sides between a and b; returns 0 when the
  * surface does not reach the side. A side between two full DP panels is
  * not sampled: both follow the surface, so the places of every point of
@@ -113,7 +122,7 @@ static int measure(const struct cell_sides *sides, size_t side,
             double pa[3], pb[3];
             place_of(a, end[e], pa);
             place_of(b, end[e], pb);
-            edge->gap = fmax(edge->gap, vec3_distance(pa, pb));
+            widen(&edge->gap, vec3_distance(pa, pb));
         }
         edge->kink = angle_between(a->panel->normal, b->panel->normal);
         return 1;
@@ -127,7 +136,7 @@ static int measure(const struct cell_sides *sides, size_t side,
         double pa[3], pb[3];
         place_of(a, sides->point + 3 * at, pa);
         place_of(b, sides->point + 3 * at, pb);
-        edge->gap = fmax(edge->gap, vec3_distance(pa, pb));
+        widen(&edge->gap, vec3_distance(pa, pb));
     }
     int middle = sides->middle[side];
     if (!any || middle < 0)

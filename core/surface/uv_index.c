@@ -145,22 +145,6 @@ static inline double min_number(double a, double b)
     return b < a ? b : a;
 }
 
-int uv_index_barycentric(const struct uv_index *index, uint32_t t, double u,
-                         double v, double b[3])
-{
-    const double *c = index->uv + 6 * (size_t)t;
-    double x1 = c[2] - c[0], y1 = c[3] - c[1];
-    double x2 = c[4] - c[0], y2 = c[5] - c[1];
-    double det = x1 * y2 - x2 * y1;
-    if (det == 0)
-        return 0;
-    double px = u - c[0], py = v - c[1];
-    b[1] = (px * y2 - x2 * py) / det;
-    b[2] = (x1 * py - px * y1) / det;
-    b[0] = 1 - b[1] - b[2];
-    return 1;
-}
-
 uint32_t uv_index_locate(const struct uv_index *index, double u, double v,
                          double tolerance, double barycentric[3])
 {
