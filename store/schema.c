@@ -250,7 +250,9 @@ static const char schema_v7[] =
  *   order: surface (0-based), name (its o or g name, or the file's), file
  *   (absolute path), file_sha256 (hex SHA-256 of the file's bytes),
  *   triangles, area (m^2), u_length and v_length (m, the mean length of
- *   its iso-lines: project_lengths.h), uv_method (the UV it took).
+ *   its iso-lines: project_lengths.h), uv_method (the UV it took),
+ *   grid_nu and grid_nv (the grid given to this surface whatever the
+ *   module, NULL for none: every option then has it).
  * option_surfaces: one row per surface per option of a project run, that
  *   surface's part of the option (project_option.h): nu, nv its grid;
  *   panels, fp_count, sp_count, dp_count; fp_area, sp_area, dp_area, area
@@ -284,6 +286,7 @@ static const char schema_v8[] =
     " area REAL NOT NULL,"
     " u_length REAL NOT NULL, v_length REAL NOT NULL,"
     " uv_method TEXT NOT NULL,"
+    " grid_nu INTEGER, grid_nv INTEGER,"
     " PRIMARY KEY (run, surface)"
     ") WITHOUT ROWID;"
     "CREATE TABLE option_surfaces ("

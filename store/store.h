@@ -365,6 +365,8 @@ struct surface_row {
     double area;               /* m^2 */
     double u_length, v_length; /* m */
     enum param_method uv_method;
+    int grid_nu, grid_nv;      /* its own grid whatever the module; 0 for
+                                  none */
 };
 
 /* One surface's part of an option of a project run (option_surfaces). */

@@ -59,8 +59,8 @@ int store_surfaces_put(struct store *store, int64_t run,
     sqlite3_stmt *s = NULL;
     rc = store_prepare(store,
         "INSERT INTO surfaces (run, surface, name, file, file_sha256,"
-        " triangles, area, u_length, v_length, uv_method)"
-        " VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10)", &s, doing, err);
+        " triangles, area, u_length, v_length, uv_method, grid_nu, grid_nv)"
+        " VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10, ?11, ?12)", &s, doing, err);
     for (size_t k = 0; rc == FACET_OK && k < n; k++) {
         const struct surface_row *r = &rows[k];
         sqlite3_reset(s);
@@ -75,6 +75,13 @@ int store_surfaces_put(struct store *store, int64_t run,
         sqlite3_bind_double(s, 9, r->v_length);
         sqlite3_bind_text(s, 10, param_method_name(r->uv_method), -1,
                           SQLITE_STATIC);
+        if (r->grid_nu > 0) {
+            sqlite3_bind_int(s, 11, r->grid_nu);
+            sqlite3_bind_int(s, 12, r->grid_nv);
+        } else {
+            sqlite3_bind_null(s, 11);
+            sqlite3_bind_null(s, 12);
+        }
         if (sqlite3_step(s) != SQLITE_DONE)
             rc = store_fail(store, doing, err);
     }
@@ -102,7 +109,8 @@ int store_surfaces_get(struct store *store, int64_t run,
     sqlite3_stmt *s;
     int rc = store_prepare(store,
         "SELECT name, file, file_sha256, triangles, area, u_length,"
-        " v_length, uv_method FROM surfaces WHERE run = ?1"
+        " v_length, uv_method, coalesce(grid_nu, 0), coalesce(grid_nv, 0)"
+        " FROM surfaces WHERE run = ?1"
         " ORDER BY surface", &s, doing, err);
     if (rc != FACET_OK)
         return rc;
@@ -129,6 +137,8 @@ int store_surfaces_get(struct store *store, int64_t run,
         r->area = sqlite3_column_double(s, 4);
         r->u_length = sqlite3_column_double(s, 5);
         r->v_length = sqlite3_column_double(s, 6);
+        r->grid_nu = sqlite3_column_int(s, 8);
+        r->grid_nv = sqlite3_column_int(s, 9);
         const unsigned char *uv = sqlite3_column_text(s, 7);
         if (uv == NULL ||
             param_method_parse((const char *)uv, &r->uv_method) != 0)

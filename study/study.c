@@ -12,6 +12,7 @@
 #include <time.h>
 #include <unistd.h>
 
+#include "core/project/project_search.h"
 #include "core/surface/coarse_mesh.h"
 #include "core/search/front.h"
 #include "core/base/parallel.h"
@@ -28,6 +29,9 @@ struct study_state {
     double free_before;          /* bytes free on the database's disk
                                     before the last batch; < 0: unknown */
     double batch_bytes;          /* what the last batch took of it */
+    struct project_search *project;  /* a project run's, else NULL */
+    struct option_surface_row *surface_rows;  /* a batch's, per surface */
+    size_t surface_capacity;
 };
 
 /* What a run keeps free on its database's disk beyond its next batch, so
@@ -86,6 +90,8 @@ static void option_row_of(const struct evaluated_option *e,
     row->nv = e->point.nv;
     row->threshold_mm = e->point.threshold_mm;
     row->totals = e->totals;
+    row->module_w = row->module_h = NAN;
+    row->modules = TOTALS_UNKNOWN;
 }
 
 static void evaluated_of(const struct option_row *row,
@@ -116,7 +122,34 @@ static int store_batch(void *context, const struct evaluated_option *options,
     int rc = check_batch_room(state, err);
     if (rc != FACET_OK)
         return rc;
-    return store_options_put(state->store, state->run, state->rows, n, err);
+    if (state->project == NULL)
+        return store_options_put(state->store, state->run, state->rows, n,
+                                 err);
+    /* A project's options come with their surfaces' rows, which its
+     * evaluator kept from this very batch (optimize.h). */
+    const struct project_search *p = state->project;
+    size_t ns = p->project->nsurfaces;
+    if (n * ns > state->surface_capacity) {
+        struct option_surface_row *grown =
+            realloc(state->surface_rows, n * ns * sizeof *grown);
+        if (grown == NULL)
+            return facet_error_set(err, FACET_EWORK, "out of memory");
+        state->surface_rows = grown;
+        state->surface_capacity = n * ns;
+    }
+    for (size_t k = 0; k < n; k++) {
+        struct option_row *row = &state->rows[k];
+        project_search_module(p, &options[k].point, &row->module_w,
+                              &row->module_h);
+        row->modules = project_search_modules(p, &options[k].point);
+        const struct project_surface_row *from = project_search_rows(p, k);
+        for (size_t i = 0; i < ns; i++)
+            state->surface_rows[k * ns + i] = (struct option_surface_row){
+                from[i].grid.nu, from[i].grid.nv, from[i].totals,
+                (int64_t)from[i].moulds_used, (int64_t)from[i].joints};
+    }
+    return store_project_options_put(state->store, state->run, state->rows,
+                                     n, state->surface_rows, ns, err);
 }
 
 static void report_progress(void *context, int64_t done, int64_t total)
@@ -322,6 +355,12 @@ int study_open_surface(const struct store *store, const struct run_info *run,
     struct mesh_options mesh;
     int flip;
     memset(surface, 0, sizeof *surface);
+    if (store_run_is_project(run))
+        return facet_error_set(err, FACET_EINPUT,
+            "run %lld is a project of several surfaces: its options' "
+            "panels are not kept yet, only each surface's totals (facet "
+            "show %lld OPTION lists them)", (long long)run->id,
+            (long long)run->id);
     int rc = study_settings(run, &settings, &mesh, &flip, err);
     if (rc != FACET_OK)
         return rc;
@@ -689,11 +728,13 @@ int study_finish(struct store *store, const struct run_info *run,
  * sessions. */
 static int study_go(struct store *store, struct run_info *run,
                     const struct surface *surface,
+                    struct project_search *project,
                     const struct optimize_settings *settings,
                     const struct study_hooks *hooks, double started,
                     enum optimize_outcome *outcome, struct facet_error *err)
 {
-    struct study_state state = {store, run->id, hooks, NULL, 0, -1, 0};
+    struct study_state state = {store, run->id, hooks, NULL, 0, -1, 0,
+                                project, NULL, 0};
     struct optimize_hooks optimize_hooks = {&state, store_batch,
                                             report_progress, stop_requested};
     struct option_row *rows = NULL;
@@ -711,7 +752,7 @@ static int study_go(struct store *store, struct run_info *run,
     /* The panels of the run and of its front from one lattice, so that
      * the stored panels add up to their options' totals. */
     struct panel_lattice *lattice = NULL;
-    if (rc == FACET_OK) {
+    if (rc == FACET_OK && project == NULL) {
         stage(hooks, "dividing the surface along the space's grid lines");
         rc = optimize_lattice(surface, settings, &lattice, err);
     }
@@ -723,11 +764,15 @@ static int study_go(struct store *store, struct run_info *run,
                                  optimize_total(settings) - (int64_t)nstored,
                                  &deferred, err);
     stage(hooks, "evaluating options");
-    if (rc == FACET_OK)
+    if (rc == FACET_OK && project != NULL)
+        rc = optimize_run_with(&project->evaluator, settings, stored,
+                               nstored, &optimize_hooks, outcome, err);
+    else if (rc == FACET_OK)
         rc = optimize_run(surface, lattice, settings, stored, nstored,
                           &optimize_hooks, outcome, err);
     free(stored);
     free(state.rows);
+    free(state.surface_rows);
 
     struct facet_error later;
     facet_error_clear(&later);
@@ -836,6 +881,177 @@ int study_request_check(const struct study_request *request,
     return design_space_check(&request->settings.space, NULL, err);
 }
 
+/* Reads and prepares the single surface of request into *surface,
+ * recording what it is into run (its path already there): its SHA-256,
+ * area, triangles, UV and warnings. A file that names several objects (or
+ * groups) is a project: refused unless request selects one of them. */
+static int surface_read(const struct study_request *request,
+                        const struct study_hooks *hooks,
+                        struct surface *surface, struct run_info *run,
+                        struct facet_error *err)
+{
+    stage(hooks, "reading the surface");
+    int rc = read_surface(request->surface_path, &request->mesh,
+                          run->surface_sha256, surface, err);
+    size_t named = rc == FACET_OK && !surface->selected
+                       ? project_count_named(&surface->obj) : 0;
+    if (named > 1)
+        return facet_error_about(err, FACET_SETTING_MODULE, FACET_EINPUT,
+            "%s: a project of %zu surfaces (its objects or groups) needs a "
+            "panel module", request->surface_path, named);
+    if (rc == FACET_OK) {
+        stage(hooks, "preparing the surface (UV, curvature)");
+        rc = surface_prepare(surface, request->flip_normals, request->uv,
+                             err);
+    }
+    if (rc != FACET_OK)
+        return rc;
+    collect_warnings(surface, &request->settings.space, hooks, run->warnings,
+                     sizeof run->warnings);
+    run->surface_area = surface->mesh.area;
+    run->triangles = (int64_t)surface->mesh.ntriangles;
+    run->uv_method = surface->param.method;
+    return FACET_OK;
+}
+
+/* The SHA-256 of every file of a project, files[0..n), into digest[]. */
+static int project_digests(const char *const *files, size_t n,
+                           char (*digest)[65], struct facet_error *err)
+{
+    for (size_t k = 0; k < n; k++) {
+        int rc = sha256_file(files[k], digest[k], err);
+        if (rc != FACET_OK)
+            return rc;
+    }
+    return FACET_OK;
+}
+
+/* The surface rows of a prepared project whose files' digests are
+ * digest[] into *rows (malloc'ed). */
+static int project_rows(const struct project *project,
+                        char (*digest)[65], struct surface_row **rows,
+                        struct facet_error *err)
+{
+    *rows = calloc(project->nsurfaces ? project->nsurfaces : 1,
+                   sizeof **rows);
+    if (*rows == NULL)
+        return facet_error_set(err, FACET_EWORK, "out of memory");
+    for (size_t i = 0; i < project->nsurfaces; i++) {
+        const struct project_surface *ps = &project->surfaces[i];
+        struct surface_row *r = &(*rows)[i];
+        size_t f = 0;
+        while (f + 1 < project->nfiles && project->files[f] != ps->file)
+            f++;
+        char absolute[4096];
+        const char *path = realpath(ps->file, absolute) ? absolute
+                                                        : ps->file;
+        if (strlen(ps->name) >= sizeof r->name ||
+            strlen(path) >= sizeof r->file)
+            return facet_error_set(err, FACET_EINPUT,
+                "%.200s: object '%.200s': name or path too long", path,
+                ps->name);
+        snprintf(r->name, sizeof r->name, "%s", ps->name);
+        snprintf(r->file, sizeof r->file, "%s", path);
+        memcpy(r->file_sha256, digest[f], 65);
+        r->triangles = (int64_t)ps->surface.mesh.ntriangles;
+        r->area = ps->surface.mesh.area;
+        r->u_length = ps->u_length;
+        r->v_length = ps->v_length;
+        r->uv_method = ps->surface.param.method;
+    }
+    return FACET_OK;
+}
+
+/* Reads and prepares the project of request into *project, its surface
+ * rows into *rows (malloc'ed), and what the run records of it into run:
+ * the first file's SHA-256 (its path is there already), the building's
+ * area and triangles, the first surface's UV, the module range. */
+static int project_read(const struct study_request *request,
+                        const struct study_hooks *hooks,
+                        struct project *project, struct surface_row **rows,
+                        struct run_info *run, struct facet_error *err)
+{
+    *rows = NULL;
+    if (request->mesh.object != NULL || request->mesh.group != NULL)
+        return facet_error_set(err, FACET_EINPUT,
+            "a project takes every object of its files: no object or "
+            "group is selected in one");
+    char (*digest)[65] = calloc(request->nfiles, sizeof *digest);
+    if (digest == NULL)
+        return facet_error_set(err, FACET_EWORK, "out of memory");
+    stage(hooks, "reading the project");
+    int rc = project_digests(request->files, request->nfiles, digest, err);
+    if (rc == FACET_OK)
+        rc = project_open(request->files, request->nfiles,
+                          request->mesh.units, project, err);
+    if (rc == FACET_OK) {
+        stage(hooks, "preparing the project's surfaces (UV, curvature)");
+        rc = project_prepare(project, request->flip_normals, request->uv,
+                             err);
+    }
+    if (rc == FACET_OK)
+        rc = project_rows(project, digest, rows, err);
+    if (rc == FACET_OK) {
+        memcpy(run->surface_sha256, digest[0], 65);
+        run->surface_area = project->area;
+        run->triangles = (int64_t)project->ntriangles;
+        run->uv_method = project->surfaces[0].surface.param.method;
+        run->module_w_min = request->module.width_min;
+        run->module_w_max = request->module.width_max;
+        run->module_w_step = request->module.width_step;
+        run->module_h_min = request->module.height_min;
+        run->module_h_max = request->module.height_max;
+        run->module_h_step = request->module.height_step;
+    }
+    free(digest);
+    return rc;
+}
+
+/* The search over project's modules that request asks for, its
+ * overrides found by name. */
+static int project_search_of(const struct study_request *request,
+                             const struct project *project,
+                             struct project_search *search,
+                             struct facet_error *err)
+{
+    struct surface_grid *grids = NULL;
+    if (request->noverrides > 0) {
+        grids = calloc(project->nsurfaces, sizeof *grids);
+        if (grids == NULL)
+            return facet_error_set(err, FACET_EWORK, "out of memory");
+    }
+    for (size_t k = 0; k < request->noverrides; k++) {
+        const struct project_surface *ps =
+            project_find(project, request->override_names[k]);
+        if (ps == NULL) {
+            free(grids);
+            return facet_error_set(err, FACET_EINPUT,
+                "no surface named '%s' in the project (facet info lists "
+                "them)", request->override_names[k]);
+        }
+        grids[ps - project->surfaces] = request->overrides[k];
+    }
+    int rc = project_search_init(search, project, &request->module, grids,
+                                 err);
+    free(grids);
+    return rc;
+}
+
+int study_project_space(const struct module_range *range,
+                        struct design_space *space, struct facet_error *err)
+{
+    size_t widths = module_widths(range), heights = module_heights(range);
+    if (widths > PANEL_MAX_GRID || heights > PANEL_MAX_GRID)
+        return facet_error_set(err, FACET_EINPUT,
+            "the module range holds %zu widths and %zu heights: at most %d "
+            "each (take a larger step)", widths, heights, PANEL_MAX_GRID);
+    space->u_min = 1;
+    space->u_max = (int)widths;
+    space->v_min = 1;
+    space->v_max = (int)heights;
+    return FACET_OK;
+}
+
 int study_start(struct store *store, const struct study_request *request,
                 const struct study_hooks *hooks, int64_t *run_id,
                 enum optimize_outcome *outcome, struct facet_error *err)
@@ -866,26 +1082,33 @@ int study_start(struct store *store, const struct study_request *request,
         return facet_error_set(err, FACET_EINPUT, "%.200s...: path too long",
                                recorded);
     memcpy(run.surface_path, recorded, strlen(recorded) + 1);
-    stage(hooks, "reading the surface");
     struct surface surface;
     memset(&surface, 0, sizeof surface);
-    rc = read_surface(request->surface_path, &request->mesh,
-                      run.surface_sha256, &surface, err);
-    if (rc == FACET_OK) {
-        stage(hooks, "preparing the surface (UV, curvature)");
-        rc = surface_prepare(&surface, request->flip_normals, request->uv,
-                             err);
+    struct project project;
+    memset(&project, 0, sizeof project);
+    struct project_search search;
+    memset(&search, 0, sizeof search);
+    struct surface_row *surfaces = NULL;
+    int is_project = request->nfiles > 0;
+    if (is_project) {
+        rc = project_read(request, hooks, &project, &surfaces, &run, err);
+        if (rc == FACET_OK)
+            rc = project_search_of(request, &project, &search, err);
+        for (size_t i = 0; rc == FACET_OK && i < project.nsurfaces; i++) {
+            surfaces[i].grid_nu = search.overrides[i].nu;
+            surfaces[i].grid_nv = search.overrides[i].nv;
+        }
+    } else {
+        rc = surface_read(request, hooks, &surface, &run, err);
     }
     if (rc != FACET_OK) {
+        project_search_free(&search);
+        project_close(&project);
+        free(surfaces);
         surface_close(&surface);
         return rc;
     }
-    collect_warnings(&surface, &s->space, hooks, run.warnings,
-                     sizeof run.warnings);
     run.units = request->mesh.units;
-    run.surface_area = surface.mesh.area;
-    run.triangles = (int64_t)surface.mesh.ntriangles;
-    run.uv_method = surface.param.method;
     run.uv = request->uv;
     run.method = s->method;
     run.seed = s->seed;
@@ -916,14 +1139,119 @@ int study_start(struct store *store, const struct study_request *request,
     run.shard_index = s->shard.index;
     run.shard_count = s->shard.count;
     rc = store_run_create(store, &run, err);
+    if (rc == FACET_OK && is_project)
+        rc = store_surfaces_put(store, run.id, surfaces, project.nsurfaces,
+                                err);
     if (rc == FACET_OK) {
         *run_id = run.id;
         if (hooks != NULL && hooks->started != NULL)
             hooks->started(hooks->context, run.id);
-        rc = study_go(store, &run, &surface, s, hooks, started, outcome,
-                      err);
+        rc = study_go(store, &run, is_project ? NULL : &surface,
+                      is_project ? &search : NULL, s, hooks, started,
+                      outcome, err);
+    } else if (run.id > 0) {
+        /* Recorded, its surfaces not: failed, not left running. */
+        struct facet_error ignored;
+        store_run_set_status(store, run.id, RUN_FAILED, 0, &ignored);
     }
+    project_search_free(&search);
+    project_close(&project);
+    free(surfaces);
     surface_close(&surface);
+    return rc;
+}
+
+/* Opens and prepares the project of run (a project run) into *project,
+ * each of its files looked for as study_open_surface looks for a
+ * surface, and refused unless its SHA-256 is the one recorded; then
+ * checks that the files still hold the surfaces recorded, by name, with
+ * the UV they took. *overrides (malloc'ed, nsurfaces) receives the
+ * grids the run gave surfaces whatever the module (nu 0: none). Release
+ * with project_close and free, also after a failure. */
+static int project_reopen(struct store *store, const struct run_info *run,
+                          struct project *project,
+                          struct surface_grid **overrides,
+                          struct facet_error *err)
+{
+    memset(project, 0, sizeof *project);
+    *overrides = NULL;
+    struct surface_row *rows;
+    size_t n;
+    int rc = store_surfaces_get(store, run->id, &rows, &n, err);
+    if (rc != FACET_OK)
+        return rc;
+    if (n == 0) {
+        free(rows);
+        return facet_error_set(err, FACET_EINPUT,
+            "run %lld: a project run without its surfaces recorded",
+            (long long)run->id);
+    }
+    /* The files in order, each once, and where each is now. */
+    char (*place)[4096] = calloc(n, sizeof *place);
+    const char **files = calloc(n, sizeof *files);
+    size_t nfiles = 0;
+    if (place == NULL || files == NULL)
+        rc = facet_error_set(err, FACET_EWORK, "out of memory");
+    for (size_t i = 0; rc == FACET_OK && i < n; i++) {
+        if (i > 0 && strcmp(rows[i].file, rows[i - 1].file) == 0)
+            continue;
+        char candidate[3][4096];
+        int ncandidates = surface_candidates(store_path(store), rows[i].file,
+                                             candidate);
+        int found = 0, changed = 0;
+        for (int k = 0; rc == FACET_OK && !found && k < ncandidates; k++) {
+            if (access(candidate[k], F_OK) != 0)
+                continue;
+            char digest[65];
+            rc = sha256_file(candidate[k], digest, err);
+            if (rc == FACET_OK && strcmp(digest, rows[i].file_sha256) == 0) {
+                memcpy(place[nfiles], candidate[k], sizeof candidate[k]);
+                files[nfiles] = place[nfiles];
+                nfiles++;
+                found = 1;
+            } else if (rc == FACET_OK) {
+                changed = 1;
+            }
+        }
+        if (rc == FACET_OK && !found)
+            rc = facet_error_set(err, FACET_EINPUT,
+                changed ? "%s: the file has changed since run %lld was made "
+                          "from it (SHA-256 was %.12s...)"
+                        : "%s: no such file (run %lld's, SHA-256 %.12s..., "
+                          "nor beside the database)",
+                rows[i].file, (long long)run->id, rows[i].file_sha256);
+    }
+    if (rc == FACET_OK)
+        rc = project_open(files, nfiles, run->units, project, err);
+    if (rc == FACET_OK)
+        rc = store_run_setting_check(run, RUN_SETTING_UV, err);
+    if (rc == FACET_OK)
+        rc = project_prepare(project, run->flip_normals, run->uv, err);
+    if (rc == FACET_OK && project->nsurfaces != n)
+        rc = facet_error_set(err, FACET_EINPUT,
+            "run %lld: its files hold %zu surfaces, the run %zu",
+            (long long)run->id, project->nsurfaces, n);
+    for (size_t i = 0; rc == FACET_OK && i < n; i++) {
+        const struct project_surface *ps = &project->surfaces[i];
+        if (strcmp(ps->name, rows[i].name) != 0 ||
+            ps->surface.param.method != rows[i].uv_method)
+            rc = facet_error_set(err, FACET_EINPUT,
+                "run %lld: surface %zu is '%s' with UV %s, the run's '%s' "
+                "with UV %s", (long long)run->id, i + 1, ps->name,
+                param_method_name(ps->surface.param.method), rows[i].name,
+                param_method_name(rows[i].uv_method));
+    }
+    if (rc == FACET_OK) {
+        *overrides = calloc(n, sizeof **overrides);
+        if (*overrides == NULL)
+            rc = facet_error_set(err, FACET_EWORK, "out of memory");
+        for (size_t i = 0; rc == FACET_OK && i < n; i++)
+            (*overrides)[i] = (struct surface_grid){rows[i].grid_nu,
+                                                    rows[i].grid_nv};
+    }
+    free(place);
+    free(files);
+    free(rows);
     return rc;
 }
 
@@ -950,9 +1278,28 @@ int study_resume(struct store *store, int64_t run_id,
         rc = store_run_claim(store, run_id, &run, err);
     if (rc != FACET_OK)
         return rc;
-    stage(hooks, "preparing the surface (UV, curvature)");
     struct surface surface;
-    rc = study_open_surface(store, &run, &surface, err);
+    memset(&surface, 0, sizeof surface);
+    struct project project;
+    memset(&project, 0, sizeof project);
+    struct project_search search;
+    memset(&search, 0, sizeof search);
+    int is_project = store_run_is_project(&run);
+    if (is_project) {
+        stage(hooks, "preparing the project's surfaces (UV, curvature)");
+        struct surface_grid *overrides = NULL;
+        rc = project_reopen(store, &run, &project, &overrides, err);
+        struct module_range range = {run.module_w_min, run.module_w_max,
+                                     run.module_w_step, run.module_h_min,
+                                     run.module_h_max, run.module_h_step};
+        if (rc == FACET_OK)
+            rc = project_search_init(&search, &project, &range, overrides,
+                                     err);
+        free(overrides);
+    } else {
+        stage(hooks, "preparing the surface (UV, curvature)");
+        rc = study_open_surface(store, &run, &surface, err);
+    }
     if (rc != FACET_OK) {
         /* Given back as it was found, resumable once the surface is. */
         struct facet_error ignored;
@@ -962,9 +1309,12 @@ int study_resume(struct store *store, int64_t run_id,
     if (rc == FACET_OK) {
         if (hooks != NULL && hooks->started != NULL)
             hooks->started(hooks->context, run_id);
-        rc = study_go(store, &run, &surface, &settings, hooks, started,
-                      outcome, err);
+        rc = study_go(store, &run, is_project ? NULL : &surface,
+                      is_project ? &search : NULL, &settings, hooks,
+                      started, outcome, err);
     }
+    project_search_free(&search);
+    project_close(&project);
     surface_close(&surface);
     return rc;
 }
