@@ -132,6 +132,8 @@ static int options_main(int argc, char **argv, struct facet_error *err)
                    sizeof option_table_paper);
             listing.listed[LISTED - 1] =
                 (struct option_table_column){"feasible", 3, 4};
+            if (run_id > 0 && store_run_is_project(&info))
+                option_table_for_project(listing.listed, LISTED);
             option_table_heads(listing.listed, LISTED, listing.heads);
             listing.heads[LISTED] = (struct text_column){"", "", 4, 1, 6, 0};
             listing.table = (struct text_table){listing.heads, LISTED + 1,

@@ -411,6 +411,10 @@ int study_repoint_surface(struct store *store, int64_t run_id,
     int rc = store_run_get(store, run_id, &run, err);
     if (rc != FACET_OK)
         return rc;
+    if (store_run_is_project(&run))
+        return facet_error_set(err, FACET_EINPUT,
+            "run %lld is a project: its files are looked for where they "
+            "were and beside the database", (long long)run_id);
     char digest[65];
     if ((rc = sha256_file(path, digest, err)) != FACET_OK)
         return rc;
@@ -1323,10 +1327,24 @@ int study_front_edge_note(const struct run_info *run,
                           const struct front_bounds *b, char *text,
                           size_t size)
 {
-    static const char *const variable[3] = {"U", "V", "the threshold"};
-    static const char *const unit[3] = {"", "", " mm"};
+    static const char *const grid_variable[3] = {"U", "V",
+                                                 "the threshold"};
+    static const char *const module_variable[3] = {
+        "the module width", "the module height", "the threshold"};
+    static const char *const grid_unit[3] = {"", "", " mm"};
+    static const char *const module_unit[3] = {" m", " m", " mm"};
+    int project = store_run_is_project(run);
+    const char *const *variable = project ? module_variable : grid_variable;
+    const char *const *unit = project ? module_unit : grid_unit;
     double low[3] = {run->u_min, run->v_min, run->threshold_min_mm};
     double high[3] = {run->u_max, run->v_max, run->threshold_max_mm};
+    if (project) {
+        /* The bounds of a project's range are modules, not indices. */
+        low[0] = run->module_w_min;
+        high[0] = run->module_w_min + (run->u_max - 1) * run->module_w_step;
+        low[1] = run->module_h_min;
+        high[1] = run->module_h_min + (run->v_max - 1) * run->module_h_step;
+    }
     size_t used = 0;
     text[0] = '\0';
     for (int k = 0; k < FRONT_BOUNDS; k++) {
