@@ -166,3 +166,18 @@ same "--grid: every option gives the dome 5 x 4" \
 same "--grid: recorded with the surface" \
     "$(sql "$WORK/grid.db" "SELECT grid_nu, grid_nv FROM surfaces WHERE name = 'dome'")" "5|4"
 check "--grid: surface rows add up" "${CHECK[@]}" sums "$WORK/grid.db" 1
+
+# 8. The workbench opens a project run: its table of building options, and
+# where it would show panels, a message saying they are not kept (no map
+# of a project yet), never a crash.
+. "$HERE/tui_lib.sh"
+start 160 40 -- four.db
+check "tui: the project run listed" '^ +1 done'
+keys Enter
+check "tui: the project run's table" '^ Run 1 '
+keys K
+check "tui: its knee" 'knee option [0-9]+'
+keys Enter
+check "tui: a project option's map says its panels are not kept" 'project of several surfaces'
+keys F10
+check_exit "tui: quits cleanly after a project run"
