@@ -51,8 +51,9 @@ static int project_rows(const struct project *project,
             return facet_error_set(err, FACET_EINPUT,
                 "%.200s: object '%.200s': name or path too long", path,
                 ps->name);
-        snprintf(r->name, sizeof r->name, "%s", ps->name);
-        snprintf(r->file, sizeof r->file, "%s", path);
+        /* Whole, as checked above. */
+        memcpy(r->name, ps->name, strlen(ps->name) + 1);
+        memcpy(r->file, path, strlen(path) + 1);
         memcpy(r->file_sha256, digest[f], 65);
         r->triangles = (int64_t)ps->surface.mesh.ntriangles;
         r->area = ps->surface.mesh.area;
