@@ -64,6 +64,33 @@ static int project_rows(const struct project *project,
     return FACET_OK;
 }
 
+/* Each surface's warnings, "NAME: what", to the warning hook and, one per
+ * line, into text (size bytes: those that fit). */
+static void project_warnings(const struct project *project,
+                             const struct study_hooks *hooks, char *text,
+                             size_t size)
+{
+    size_t used = 0;
+    text[0] = '\0';
+    for (size_t i = 0; i < project->nsurfaces; i++) {
+        const struct project_surface *ps = &project->surfaces[i];
+        for (int k = 0; k < ps->surface.nwarnings; k++) {
+            char line[400];
+            snprintf(line, sizeof line, "%.60s: %s", ps->name,
+                     ps->surface.warnings[k]);
+            if (hooks != NULL && hooks->warning != NULL)
+                hooks->warning(hooks->context, line);
+            int wrote = snprintf(text + used, size - used, "%s%s",
+                                 used ? "\n" : "", line);
+            if (wrote < 0 || (size_t)wrote >= size - used) {
+                text[used] = '\0';
+                continue;  /* told, not stored: the column is full */
+            }
+            used += (size_t)wrote;
+        }
+    }
+}
+
 /* Reads and prepares the project of request into *project, its surface
  * rows into *rows (malloc'ed), and what the run records of it into run:
  * the first file's SHA-256 (its path is there already), the building's
@@ -93,6 +120,9 @@ int study_project_read(const struct study_request *request,
     }
     if (rc == FACET_OK)
         rc = project_rows(project, digest, rows, err);
+    if (rc == FACET_OK)
+        project_warnings(project, hooks, run->warnings,
+                         sizeof run->warnings);
     if (rc == FACET_OK) {
         memcpy(run->surface_sha256, digest[0], 65);
         run->surface_area = project->area;

@@ -167,6 +167,15 @@ same "--grid: recorded with the surface" \
     "$(sql "$WORK/grid.db" "SELECT grid_nu, grid_nv FROM surfaces WHERE name = 'dome'")" "5|4"
 check "--grid: surface rows add up" "${CHECK[@]}" sums "$WORK/grid.db" 1
 
+# 7b. A surface's warning is told and recorded with the run, named.
+printf 'o a\nv 0 0 0\nv 4 0 0\nv 4 3 0\nv 0 3 0\nf 1 2 3\nf 1 3 4\nf 1 2 2\no b\nv 0 0 1\nv 4 0 1\nv 4 3 1\nv 0 3 1\nf 5 6 7\nf 5 7 8\n' >"$WORK/warn.obj"
+expect "a project with a degenerate triangle" 0 "$FACET" optimize "$WORK/warn.obj" --db "$WORK/warn.db" \
+    --module 1x1 --threshold 3 --table 0
+if grep -q "warning: a: 1 triangles dropped" "$ERR"; then pass "the surface's warning is told, named"; else fail "the surface's warning is told, named"; fi
+same "the surface's warning is recorded with the run" \
+    "$(sql "$WORK/warn.db" 'SELECT warnings FROM runs')" \
+    "a: 1 triangles dropped: their corners weld into fewer than three vertices"
+
 # 8. The workbench opens a project run: its table of building options, and
 # where it would show panels, a message saying they are not kept (no map
 # of a project yet), never a crash.
