@@ -21,7 +21,11 @@
 #include "signals.h"
 #include "core/base/numformat.h"
 #include "core/obj/infile.h"
+#include "core/project/module.h"
 #include "study/study.h"
+
+/* The most OBJ files a project may have on the command line. */
+#define PROJECT_FILES_MAX 256
 
 /* Rows of the table a run ends with, unless --table says. */
 #define TABLE_ROWS 20
@@ -64,6 +68,7 @@ static void show_started(void *context, int64_t run)
 struct search_flags {
     const char *u, *v, *threshold, *method, *evals, *pop, *gens, *seed;
     const char *objectives, *jobs, *shard;
+    const char *module, *grid;
 };
 
 /* The flags' names in the messages of the design space's checks. */
@@ -77,6 +82,9 @@ static int parse_search(const struct search_flags *f,
 {
     int rc;
     long number;
+    if (f->module && (f->u || f->v))
+        return facet_error_set(err, FACET_EINPUT,
+            "--module sizes a project's panels: no --u or --v with it");
     if (f->u && (rc = design_space_parse_sides(f->u, "--u", &s->space.u_min,
                                       &s->space.u_max, err)))
         return rc;
@@ -131,6 +139,50 @@ static int parse_search(const struct search_flags *f,
     return FACET_OK;
 }
 
+/* --grid NAME=NUxNV[,NAME=NUxNV...]: surfaces of a project given their
+ * own grid whatever the module. The names point into text's copy. */
+#define GRID_OVERRIDES_MAX 256
+struct grid_overrides {
+    char text[4096];
+    char *name[GRID_OVERRIDES_MAX];
+    struct surface_grid grid[GRID_OVERRIDES_MAX];
+    size_t n;
+};
+
+static int grid_overrides_parse(const char *text, struct grid_overrides *g,
+                                struct facet_error *err)
+{
+    if (strlen(text) >= sizeof g->text)
+        return facet_error_set(err, FACET_EINPUT, "--grid: too long");
+    snprintf(g->text, sizeof g->text, "%s", text);
+    g->n = 0;
+    for (char *item = g->text; item != NULL;) {
+        char *next = strchr(item, ',');
+        if (next != NULL)
+            *next++ = '\0';
+        char *equals = strrchr(item, '=');
+        char *x = equals ? strchr(equals + 1, 'x') : NULL;
+        long nu = 0, nv = 0;
+        struct facet_error ignored;
+        if (equals == NULL || equals == item || x == NULL ||
+            g->n == GRID_OVERRIDES_MAX)
+            return facet_error_set(err, FACET_EINPUT,
+                "--grid: '%s' is not NAME=NUxNV (e.g. roof_3=12x40)", item);
+        *equals = '\0';
+        *x = '\0';
+        if (args_int(equals + 1, 1, PANEL_MAX_GRID, "--grid", &nu,
+                     &ignored) ||
+            args_int(x + 1, 1, PANEL_MAX_GRID, "--grid", &nv, &ignored))
+            return facet_error_set(err, FACET_EINPUT,
+                "--grid: '%s' needs a grid NUxNV of whole numbers 1 to %d",
+                item, PANEL_MAX_GRID);
+        g->name[g->n] = item;
+        g->grid[g->n++] = (struct surface_grid){(int)nu, (int)nv};
+        item = next;
+    }
+    return FACET_OK;
+}
+
 static int optimize_main(int argc, char **argv, struct facet_error *err)
 {
     struct search_flags search;
@@ -159,12 +211,14 @@ static int optimize_main(int argc, char **argv, struct facet_error *err)
         {"surface", 0, ARG_STRING, &surface, NULL},
         {"wide", 0, ARG_FLAG, NULL, &wide},
         {"store-panels", 0, ARG_STRING, &store_panels, NULL},
+        {"module", 0, ARG_STRING, &search.module, NULL},
+        {"grid", 0, ARG_STRING, &search.grid, NULL},
         {NULL, 0, ARG_FLAG, NULL, NULL},
     };
-    const char *path[1];
+    const char *path[PROJECT_FILES_MAX];
     int count;
-    int rc = args_parse_shared(argc, argv, options, flags.table, path, 1,
-                               &count, err);
+    int rc = args_parse_shared(argc, argv, options, flags.table, path,
+                               PROJECT_FILES_MAX, &count, err);
     if (rc != FACET_OK)
         return rc;
     if (db == NULL)
@@ -185,14 +239,47 @@ static int optimize_main(int argc, char **argv, struct facet_error *err)
         return facet_error_set(err, FACET_EINPUT,
             "optimize: --surface re-points a run for --resume; a new run "
             "takes its OBJ file as its argument");
-    } else if (count != 1) {
+    } else if (count == 0) {
         return facet_error_set(err, FACET_EINPUT,
-            "optimize: name one OBJ file (facet optimize FILE.obj --db "
+            "optimize: name an OBJ file (facet optimize FILE.obj --db "
             "runs.db)");
+    } else if (count > 1 && search.module == NULL) {
+        return facet_error_set(err, FACET_EINPUT,
+            "optimize: a project of %d files needs a panel module: give "
+            "--module WMIN:WMAX x HMIN:HMAX", count);
     }
+    if (resume && (search.module || search.grid))
+        return facet_error_set(err, FACET_EINPUT,
+            "optimize --resume: the run knows its module range; give no "
+            "--module or --grid");
+    if (search.grid && !search.module)
+        return facet_error_set(err, FACET_EINPUT,
+            "optimize: --grid gives a project's surface its own grid; "
+            "it needs --module");
+    if (search.module && search.shard)
+        return facet_error_set(err, FACET_EINPUT,
+            "optimize: a project is searched on one machine (no --shard "
+            "with --module)");
 
     struct study_request request;
     study_request_defaults(&request);
+    struct grid_overrides grids;
+    memset(&grids, 0, sizeof grids);
+    if (!resume && search.module) {
+        if ((rc = module_parse(search.module, "--module", &request.module,
+                               err)) ||
+            (rc = study_project_space(&request.module,
+                                      &request.settings.space, err)))
+            return rc;
+        if (search.grid && (rc = grid_overrides_parse(search.grid, &grids,
+                                                      err)))
+            return rc;
+        request.files = path;
+        request.nfiles = (size_t)count;
+        request.override_names = (const char *const *)grids.name;
+        request.overrides = grids.grid;
+        request.noverrides = grids.n;
+    }
     if (!resume) {
         if ((rc = classify_flags_apply(&flags, &request.settings.base,
                                        &request.mesh, &request.uv, err)))
@@ -211,12 +298,15 @@ static int optimize_main(int argc, char **argv, struct facet_error *err)
     /* A surface that cannot be read is refused before the database is
      * created or touched. */
     if (!resume) {
-        int fd;
-        struct stat st;
-        if ((rc = study_request_check(&request, err)) ||
-            (rc = infile_open(request.surface_path, &fd, &st, err)))
+        if ((rc = study_request_check(&request, err)))
             return rc;
-        close(fd);
+        for (int k = 0; k < count; k++) {
+            int fd;
+            struct stat st;
+            if ((rc = infile_open(path[k], &fd, &st, err)))
+                return rc;
+            close(fd);
+        }
     }
     struct store *store;
     if ((rc = store_open(db, &store, err)) != FACET_OK)
@@ -282,6 +372,12 @@ static void optimize_options_print(FILE *out)
         "  --shard I/N         evaluate shard I of N only (exhaustive, random:\n"
         "                      every Nth grid or point; nsga2: an island with\n"
         "                      its own seed); join them with facet merge\n"
+        "  --module W x H      a project (an OBJ of many objects, or several\n"
+        "                      files): panel modules WMIN:WMAX x HMIN:HMAX in\n"
+        "                      m, each range optionally :STEP (default 0.1);\n"
+        "                      each surface takes round(length / module)\n"
+        "  --grid NAME=NUxNV   with --module: that surface's own grid\n"
+        "                      whatever the module (comma-separated list)\n"
         "  --resume RUN        go on with an interrupted run\n"
         "  --surface FILE      with --resume: the run's surface has moved;\n"
         "                      record its new place (same SHA-256)\n"
@@ -298,7 +394,9 @@ static void optimize_options_print(FILE *out)
         "  facet optimize roof.obj --db runs.db --sp-as-fp "
         "--max-panel-area 1.92\n"
         "  facet optimize roof.obj --db runs.db --threshold 1:10 --method "
-        "nsga2 --seed 7\n",
+        "nsga2 --seed 7\n"
+        "  facet optimize skin.obj --db runs.db --module 1.2:2.0x1.0:1.6 "
+        "--threshold 2:6:2\n",
         s->space.u_min, s->space.u_max, s->space.v_min, s->space.v_max,
         s->space.t_min_mm, grouped, (long long)s->evaluations,
         s->population, s->generations, (unsigned long long)s->seed,
@@ -314,6 +412,9 @@ const struct command cmd_optimize = {
              "       [--seed S] [--objectives LIST] [--jobs N] [--name TEXT]"
              " [--table N]\n"
              "       [classification options]\n"
+             "   or: facet optimize PROJECT.obj [MORE.obj ...] --db FILE "
+             "--module WMIN:WMAX x HMIN:HMAX\n"
+             "       [--grid NAME=NUxNV,...] [--threshold ...] [...]\n"
              "   or: facet optimize --db FILE --resume RUN [--surface FILE]",
     .summary = "Search grid sizes and thresholds for the Pareto-optimal "
                "options; store them.",

@@ -10,6 +10,7 @@
 #include "args.h"
 #include "command.h"
 #include "option_text.h"
+#include "surface_table.h"
 #include "core/out/report.h"
 #include "core/base/text.h"
 #include "study/study.h"
@@ -48,6 +49,10 @@ static int show_main(int argc, char **argv, struct facet_error *err)
         rc = study_repoint_surface(store, run_id, surface, err);
     if (rc == FACET_OK)
         rc = study_option_load(store, run_id, number, 0, &o, err);
+    if (rc == FACET_OK && json && o.nsurfaces > 0)
+        rc = facet_error_set(err, FACET_EINPUT,
+            "show --json: run %ld is a project; its option's rows per "
+            "surface are in the store's option_surfaces table", run_id);
     if (rc == FACET_OK) {
         if (json) {
             struct report_source source;
@@ -62,13 +67,30 @@ static int show_main(int argc, char **argv, struct facet_error *err)
             text_for_terminal(o.run.surface_path, shown, sizeof shown);
             printf("%-16s %s (%s)\n", "surface", shown,
                    store_run_setting_text(&o.run, RUN_SETTING_UNITS));
-            printf("%-16s %d x %d (%zu panels)\n", "grid", o.row.nu,
-                   o.row.nv, o.totals.panels);
+            if (o.nsurfaces > 0) {
+                printf("%-16s %zu surfaces, %lld triangles, %.3f m^2\n",
+                       "project", o.nsurfaces, (long long)o.run.triangles,
+                       o.run.surface_area);
+                printf("%-16s %.2f m x %.2f m (%zu panels; %zu module%s "
+                       "of the range give%s these grids)\n", "module",
+                       o.row.module_w, o.row.module_h, o.totals.panels,
+                       o.row.modules, o.row.modules == 1 ? "" : "s",
+                       o.row.modules == 1 ? "s" : "");
+            } else {
+                printf("%-16s %d x %d (%zu panels)\n", "grid", o.row.nu,
+                       o.row.nv, o.totals.panels);
+            }
             printf("%-16s %g mm\n", "threshold", o.row.threshold_mm);
             printf("%-16s %d%s\n", "Pareto rank", o.row.rank,
                    o.row.rank == 0 ? " (not ranked yet)" : "");
             option_text_totals(stdout, &o.totals, &o.classify);
-            option_text_map(stdout, &o.panels);
+            if (o.nsurfaces > 0) {
+                printf("\n");
+                surface_table_print(stdout, o.surfaces, o.surface_rows,
+                                    o.nsurfaces);
+            }
+            else
+                option_text_map(stdout, &o.panels);
         }
     }
     study_option_free(&o);

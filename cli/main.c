@@ -26,6 +26,8 @@ static const struct {
     [FACET_SETTING_STORE] = {"", "; facet optimize --db FILE makes one"},
     [FACET_SETTING_FILTER] = {"--where: ", ""},
     [FACET_SETTING_SORT] = {"--sort: ", ""},
+    [FACET_SETTING_MODULE] = {"", ": give --module WMIN:WMAX x HMIN:HMAX "
+                                  "(or --object NAME for one surface)"},
 };
 
 static void print_error(const struct facet_error *err)

@@ -46,6 +46,20 @@ int option_table_for_objectives(const char *objectives,
     return n;
 }
 
+void option_table_for_project(struct option_table_column *columns, int n)
+{
+    for (int k = 0; k < n; k++) {
+        if (columns[k].column == NULL)
+            continue;
+        if (strcmp(columns[k].column, "nu") == 0)
+            columns[k] = (struct option_table_column){"module_w", 6,
+                                                      columns[k].rank};
+        else if (strcmp(columns[k].column, "nv") == 0)
+            columns[k] = (struct option_table_column){"module_h", 6,
+                                                      columns[k].rank};
+    }
+}
+
 void option_table_heads(const struct option_table_column *columns, int n,
                         struct text_column *heads)
 {

@@ -36,6 +36,11 @@ extern const struct option_table_column option_table_paper[OPTION_TABLE_PAPER];
 int option_table_for_objectives(const char *objectives,
                                 struct option_table_column *columns);
 
+/* For a project run's table: the module's width and height in place of
+ * the grid U and V (a project's nu and nv are module indices), in
+ * columns[0..n). */
+void option_table_for_project(struct option_table_column *columns, int n);
+
 /* The longest cell text, with its terminator. */
 #define OPTION_TABLE_CELL 64
 

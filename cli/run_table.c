@@ -86,6 +86,8 @@ int run_table_print(FILE *out, struct store *store, const char *db,
     }
     struct option_table_column columns[OPTION_TABLE_MAX];
     int ncolumns = option_table_for_objectives(info.objectives, columns);
+    if (store_run_is_project(&info))
+        option_table_for_project(columns, ncolumns);
     struct text_column heads[OPTION_TABLE_MAX + 1];
     option_table_heads(columns, ncolumns, heads);
     heads[ncolumns] = (struct text_column){"", "", 15, 1, 9, 0};

@@ -172,6 +172,13 @@ const struct option_column store_option_columns[] = {
      FIELD_SIZE, TOTAL(sp_misfits), WRITTEN_WITH_OPTION},
     {"sp_fitted", "SP fitted", "fitted", "", "", 1, 0, 0, 0, 0, "100",
      FIELD_SIZE, TOTAL(sp_fitted), WRITTEN_WITH_OPTION},
+    /* A project's module (schema v8); NULL for a single surface. */
+    {"module_w", "module width", "mod w", "m", "m", 1, 2, 2, 0, 0, "1.5",
+     FIELD_DOUBLE, ROW(module_w), WRITTEN_WITH_OPTION},
+    {"module_h", "module height", "mod h", "m", "m", 1, 2, 2, 0, 0, "1.2",
+     FIELD_DOUBLE, ROW(module_h), WRITTEN_WITH_OPTION},
+    {"modules", "modules of this option", "mods", "", "", 1, 0, 0, 0, 0, "2",
+     FIELD_SIZE, ROW(modules), WRITTEN_WITH_OPTION},
     /* New columns go here, before run. */
     {"run", "run", "run", "", "", 1, 0, 0, 0, 0, "1",
      FIELD_NONE, 0, WRITTEN_AS_KEY},

@@ -77,7 +77,7 @@ struct option_column {
 
 /* Every column of the options table, in its order (pragma_table_info) but
  * run last. */
-#define STORE_OPTION_COLUMNS 60
+#define STORE_OPTION_COLUMNS 63
 extern const struct option_column store_option_columns[STORE_OPTION_COLUMNS];
 
 /* The column named name (exactly, lowercase), or NULL. */

@@ -230,6 +230,91 @@ static const char schema_v7[] =
     "CREATE INDEX options_by_max_kink ON options(run, max_kink);"
     "CREATE INDEX options_by_sp_misfits ON options(run, sp_misfits);";
 
+/* Version 8: projects, a building of many surfaces (issue 17,
+ * core/project/project.h). Every column is NULL, and the new tables hold
+ * no row, for a run of a single surface (every run before).
+ *
+ * runs: the module range a project run searched (module.h), in m: widths
+ *   module_w_min, module_w_min + module_w_step, ... up to module_w_max,
+ *   heights likewise. A project run's u_min..u_max and v_min..v_max are
+ *   then the width and height indices it walks (1..widths, 1..heights),
+ *   its surface_path and surface_sha256 its first file's (the surfaces
+ *   table has every file's).
+ * options: module_w, module_h (m), the module the option was met as (the
+ *   first, by index in the range, of those giving every surface the same
+ *   grid), and modules, how many modules of the range give that grid
+ *   vector; nu and nv are the module's width and height indices (1-based,
+ *   in the run's range). Every other column holds the building's totals
+ *   (project_option.h).
+ * surfaces: one row per surface of a project run, in the project's
+ *   order: surface (0-based), name (its o or g name, or the file's), file
+ *   (absolute path), file_sha256 (hex SHA-256 of the file's bytes),
+ *   triangles, area (m^2), u_length and v_length (m, the mean length of
+ *   its iso-lines: project_lengths.h), uv_method (the UV it took),
+ *   grid_nu and grid_nv (the grid given to this surface whatever the
+ *   module, NULL for none: every option then has it).
+ * option_surfaces: one row per surface per option of a project run, that
+ *   surface's part of the option (project_option.h): nu, nv its grid;
+ *   panels, fp_count, sp_count, dp_count; fp_area, sp_area, dp_area, area
+ *   (m^2); cost and its parts area_cost, panel_cost, joint_cost,
+ *   mould_cost (USD); planarity (m), max_deviation (m), max_panel_area
+ *   (m^2), p_dist (m^4), joint_length (m); moulds (the mould families it
+ *   starts: the first panel of the family in the building's order is its
+ *   own; they add up to the option's moulds), sp_moulds, dp_moulds;
+ *   moulds_used (the families its panels belong to, started here or on an
+ *   earlier surface); max_gap, mean_gap (mm), max_kink, mean_kink
+ *   (degrees) at its joints, joints (how many were measured: its means
+ *   are over those), gaps_over, kinks_over, sp_misfits; feasible (1 when
+ *   the surface on its own is). */
+static const char schema_v8[] =
+    "ALTER TABLE runs ADD COLUMN module_w_min REAL;"
+    "ALTER TABLE runs ADD COLUMN module_w_max REAL;"
+    "ALTER TABLE runs ADD COLUMN module_w_step REAL;"
+    "ALTER TABLE runs ADD COLUMN module_h_min REAL;"
+    "ALTER TABLE runs ADD COLUMN module_h_max REAL;"
+    "ALTER TABLE runs ADD COLUMN module_h_step REAL;"
+    "ALTER TABLE options ADD COLUMN module_w REAL;"
+    "ALTER TABLE options ADD COLUMN module_h REAL;"
+    "ALTER TABLE options ADD COLUMN modules INTEGER;"
+    "CREATE TABLE surfaces ("
+    " run INTEGER NOT NULL REFERENCES runs(id) ON DELETE CASCADE,"
+    " surface INTEGER NOT NULL,"
+    " name TEXT NOT NULL,"
+    " file TEXT NOT NULL,"
+    " file_sha256 TEXT NOT NULL,"
+    " triangles INTEGER NOT NULL,"
+    " area REAL NOT NULL,"
+    " u_length REAL NOT NULL, v_length REAL NOT NULL,"
+    " uv_method TEXT NOT NULL,"
+    " grid_nu INTEGER, grid_nv INTEGER,"
+    " PRIMARY KEY (run, surface)"
+    ") WITHOUT ROWID;"
+    "CREATE TABLE option_surfaces ("
+    " run INTEGER NOT NULL, option INTEGER NOT NULL,"
+    " surface INTEGER NOT NULL,"
+    " nu INTEGER NOT NULL, nv INTEGER NOT NULL,"
+    " panels INTEGER NOT NULL,"
+    " fp_count INTEGER NOT NULL, sp_count INTEGER NOT NULL,"
+    " dp_count INTEGER NOT NULL,"
+    " fp_area REAL NOT NULL, sp_area REAL NOT NULL, dp_area REAL NOT NULL,"
+    " area REAL NOT NULL,"
+    " cost REAL NOT NULL, area_cost REAL NOT NULL, panel_cost REAL NOT NULL,"
+    " joint_cost REAL NOT NULL, mould_cost REAL NOT NULL,"
+    " planarity REAL NOT NULL, max_deviation REAL NOT NULL,"
+    " max_panel_area REAL NOT NULL, p_dist REAL NOT NULL,"
+    " joint_length REAL NOT NULL,"
+    " moulds INTEGER NOT NULL, sp_moulds INTEGER NOT NULL,"
+    " dp_moulds INTEGER NOT NULL, moulds_used INTEGER NOT NULL,"
+    " max_gap REAL, mean_gap REAL, max_kink REAL, mean_kink REAL,"
+    " joints INTEGER NOT NULL,"
+    " gaps_over INTEGER NOT NULL, kinks_over INTEGER NOT NULL,"
+    " sp_misfits INTEGER NOT NULL,"
+    " feasible INTEGER NOT NULL,"
+    " PRIMARY KEY (run, option, surface),"
+    " FOREIGN KEY (run, option) REFERENCES options(run, number)"
+    "  ON DELETE CASCADE"
+    ") WITHOUT ROWID;";
+
 static const char *const migrations[STORE_SCHEMA_VERSION] = {
     schema_v1,
     schema_v2,
@@ -238,6 +323,7 @@ static const char *const migrations[STORE_SCHEMA_VERSION] = {
     schema_v5,
     schema_v6_shards,
     schema_v7,
+    schema_v8,
 };
 
 int store_fail(struct store *store, const char *doing,

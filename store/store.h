@@ -140,7 +140,15 @@ struct run_info {
      * and shards_merged of them (incomplete when fewer than N); every
      * other run 0, 0, 0. */
     int shard_index, shard_count, shards_merged;
+    /* A project run (schema v8): the module range it searched (m;
+     * module.h); NaN for a run of a single surface. Its u and v ranges
+     * are then the width and height indices it walks. */
+    double module_w_min, module_w_max, module_w_step;
+    double module_h_min, module_h_max, module_h_step;
 };
+
+/* Whether run is a project's (a building of surfaces). */
+int store_run_is_project(const struct run_info *run);
 
 /* Whether run is a merge that lacks some of its shards. */
 int store_run_incomplete(const struct run_info *run);
@@ -177,6 +185,12 @@ struct option_row {
                                   ranked */
     double crowding;           /* crowding distance (INFINITY at the ends) */
     int knee;                  /* 1 for the run's knee option */
+    /* A project's option (schema v8), NaN and TOTALS_UNKNOWN for a single
+     * surface's: the module (m) it was met as, and how many modules of
+     * the run's range give the same grid on every surface. Its nu and nv
+     * are then the module's width and height indices in the range. */
+    double module_w, module_h;
+    size_t modules;
 };
 
 /* Opens or creates the database at path. A new file gets the current
@@ -340,6 +354,56 @@ int store_indexes_build(struct store *store, int64_t writing_run,
 /* The name of index k of those by metric, k from 0; NULL past the last
  * (for tests that check the file against the list). */
 const char *store_metric_index_name(size_t k);
+
+/* --- projects (store_project.c) --- */
+
+/* A surface of a project run (the surfaces table). */
+struct surface_row {
+    char name[256];
+    char file[1024];           /* absolute path */
+    char file_sha256[65];
+    int64_t triangles;
+    double area;               /* m^2 */
+    double u_length, v_length; /* m */
+    enum param_method uv_method;
+    int grid_nu, grid_nv;      /* its own grid whatever the module; 0 for
+                                  none */
+};
+
+/* One surface's part of an option of a project run (option_surfaces). */
+struct option_surface_row {
+    int nu, nv;
+    struct option_totals totals;  /* that surface's (project_option.h) */
+    int64_t moulds_used;          /* families its panels belong to */
+    int64_t joints;               /* joints measured on it */
+};
+
+/* Stores rows[0..n) as run's surfaces 0..n-1, in one transaction. */
+int store_surfaces_put(struct store *store, int64_t run,
+                       const struct surface_row *rows, size_t n,
+                       struct facet_error *err);
+/* run's surfaces in order into *rows (malloc'ed, free()); *n 0 for a run
+ * of a single surface. */
+int store_surfaces_get(struct store *store, int64_t run,
+                       struct surface_row **rows, size_t *n,
+                       struct facet_error *err);
+
+/* store_options_put for a project run: with each option rows[k], its
+ * nsurfaces surface rows surfaces[k * nsurfaces .. (k + 1) * nsurfaces),
+ * all in the one transaction, so that an option is never stored without
+ * them. An option already stored is left as it is, its surface rows too. */
+int store_project_options_put(struct store *store, int64_t run,
+                              const struct option_row *rows, size_t n,
+                              const struct option_surface_row *surfaces,
+                              size_t nsurfaces, struct facet_error *err);
+
+/* The surface rows of option number of run, in surface order, into
+ * *rows (malloc'ed, free()); *n 0 when it has none (a single surface's
+ * option). */
+int store_option_surfaces_get(struct store *store, int64_t run,
+                              int64_t number,
+                              struct option_surface_row **rows, size_t *n,
+                              struct facet_error *err);
 
 /* --- panels --- */
 

@@ -12,7 +12,7 @@
 
 /* The schema this Facet writes (PRAGMA user_version) and the
  * application_id that marks a file as Facet's: "FCET". */
-#define STORE_SCHEMA_VERSION 7
+#define STORE_SCHEMA_VERSION 8
 #define STORE_APPLICATION_ID 0x46434554
 
 struct store {
@@ -69,6 +69,31 @@ int store_schema_migrate(struct store *store, int from, int to,
     "coalesce(shard_index, 0), coalesce(shard_count, 0)," \
     " coalesce(shards_merged, 0)"
 void store_shard_from_row(sqlite3_stmt *stmt, int col, struct run_info *run);
+
+/* store_options_put, and with surfaces (not NULL: a project run's
+ * options, nsurfaces rows each) store_project_options_put. */
+int store_options_put_with(struct store *store, int64_t run,
+                           const struct option_row *rows, size_t n,
+                           const struct option_surface_row *surfaces,
+                           size_t nsurfaces, struct facet_error *err);
+
+/* Inserts the n surface rows of option number of run (store_project.c),
+ * inside the caller's transaction. */
+int store_option_surfaces_insert(struct store *store, int64_t run,
+                                 int64_t number,
+                                 const struct option_surface_row *rows,
+                                 size_t n, struct facet_error *err);
+
+/* The module range columns of runs (schema v8), read after the shard
+ * columns by store_module_from_row from result column col on. */
+#define STORE_MODULE_COLUMNS \
+    "module_w_min, module_w_max, module_w_step, module_h_min," \
+    " module_h_max, module_h_step"
+void store_module_from_row(sqlite3_stmt *stmt, int col,
+                           struct run_info *run);
+/* Writes run's module range to its row. */
+int store_run_set_module(struct store *store, const struct run_info *run,
+                         struct facet_error *err);
 
 /* The current UTC time as ISO 8601 ("2026-11-25T01:30:00Z"). */
 void store_now(char out[32]);

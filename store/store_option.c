@@ -47,10 +47,18 @@ static int option_columns_sql(char *sql, size_t size, int insert)
 /* Room for the SQL of every column, with room to grow. */
 #define OPTION_COLUMNS_SQL 4096
 
+static int is_module_column(const struct option_column *c)
+{
+    return c->offset == offsetof(struct option_row, module_w) ||
+           c->offset == offsetof(struct option_row, module_h) ||
+           c->offset == offsetof(struct option_row, modules);
+}
+
 /* Binds run to ?1 and row's values of the columns written with the option
- * to ?2.. in the order of option_columns_sql. */
+ * to ?2.. in the order of option_columns_sql; a single surface's option
+ * (project 0) has no module: NULL, whatever its row holds. */
 static void option_bind(sqlite3_stmt *s, int64_t run,
-                        const struct option_row *o)
+                        const struct option_row *o, int project)
 {
     int p = 1;
     sqlite3_bind_int64(s, p++, run);
@@ -59,7 +67,9 @@ static void option_bind(sqlite3_stmt *s, int64_t run,
         if (c->writer != WRITTEN_WITH_OPTION)
             continue;
         const void *field = (const char *)o + c->offset;
-        if (c->field == FIELD_DOUBLE)
+        if (!project && is_module_column(c))
+            sqlite3_bind_null(s, p++);
+        else if (c->field == FIELD_DOUBLE)
             sqlite3_bind_double(s, p++, *(const double *)field);
         else if (c->field == FIELD_INT)
             sqlite3_bind_int(s, p++, *(const int *)field);
@@ -127,6 +137,26 @@ int store_options_put(struct store *store, int64_t run,
                       const struct option_row *rows, size_t n,
                       struct facet_error *err)
 {
+    return store_options_put_with(store, run, rows, n, NULL, 0, err);
+}
+
+int store_project_options_put(struct store *store, int64_t run,
+                              const struct option_row *rows, size_t n,
+                              const struct option_surface_row *surfaces,
+                              size_t nsurfaces, struct facet_error *err)
+{
+    assert(surfaces != NULL || n == 0 || nsurfaces == 0);
+    static const struct option_surface_row none;
+    return store_options_put_with(store, run, rows, n,
+                                  surfaces ? surfaces : &none, nsurfaces,
+                                  err);
+}
+
+int store_options_put_with(struct store *store, int64_t run,
+                           const struct option_row *rows, size_t n,
+                           const struct option_surface_row *surfaces,
+                           size_t nsurfaces, struct facet_error *err)
+{
     int rc = FACET_OK;
     if (store->option_insert == NULL) {
         char columns[OPTION_COLUMNS_SQL], sql[2 * OPTION_COLUMNS_SQL];
@@ -148,9 +178,15 @@ int store_options_put(struct store *store, int64_t run,
     int64_t added = 0;
     for (size_t k = 0; k < n && rc == FACET_OK; k++) {
         sqlite3_clear_bindings(store->option_insert);
-        option_bind(store->option_insert, run, &rows[k]);
+        option_bind(store->option_insert, run, &rows[k], surfaces != NULL);
         rc = step_done(store, store->option_insert, "storing options", err);
-        added += sqlite3_changes(store->db);
+        int fresh = sqlite3_changes(store->db) > 0;
+        added += fresh;
+        /* An option already stored keeps the rows it has. */
+        if (rc == FACET_OK && fresh && surfaces != NULL && nsurfaces > 0)
+            rc = store_option_surfaces_insert(store, run, rows[k].number,
+                                              surfaces + k * nsurfaces,
+                                              nsurfaces, err);
     }
     sqlite3_stmt *count = NULL;
     if (rc == FACET_OK)

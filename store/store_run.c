@@ -31,7 +31,7 @@
 #define RUN_COST_COLUMNS \
     "price_panel, price_joint, price_sp_mould, price_dp_mould," \
     " mould_tol_mm, mould_mirror, sp_fit, max_gap_mm, max_kink_deg, " \
-    STORE_SHARD_COLUMNS
+    STORE_SHARD_COLUMNS ", " STORE_MODULE_COLUMNS
 
 static void copy_text(char *to, size_t size, sqlite3_stmt *stmt, int col)
 {
@@ -178,6 +178,7 @@ static void run_costs_from_row(sqlite3_stmt *s, int c, struct run_info *r)
     r->max_gap_mm = store_column_or_nan(s, c++);
     r->max_kink_deg = store_column_or_nan(s, c++);
     store_shard_from_row(s, c, r);
+    store_module_from_row(s, c + 3, r);
 }
 
 /* Writes r's RUN_COST_COLUMNS to its row. */
@@ -364,6 +365,8 @@ int store_run_create(struct store *store, struct run_info *r,
         rc = run_costs_write(store, r, err);
     if (rc == FACET_OK)
         rc = store_run_set_shard(store, r, err);
+    if (rc == FACET_OK)
+        rc = store_run_set_module(store, r, err);
     return rc;
 }
 

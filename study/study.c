@@ -2,6 +2,7 @@
  * study.c: an optimisation run written through the store. See study.h.
  */
 #include "study.h"
+#include "study_internal.h"
 
 #include <errno.h>
 #include <sys/statvfs.h>
@@ -12,6 +13,7 @@
 #include <time.h>
 #include <unistd.h>
 
+#include "core/project/project_search.h"
 #include "core/surface/coarse_mesh.h"
 #include "core/search/front.h"
 #include "core/base/parallel.h"
@@ -28,6 +30,9 @@ struct study_state {
     double free_before;          /* bytes free on the database's disk
                                     before the last batch; < 0: unknown */
     double batch_bytes;          /* what the last batch took of it */
+    struct project_search *project;  /* a project run's, else NULL */
+    struct option_surface_row *surface_rows;  /* a batch's, per surface */
+    size_t surface_capacity;
 };
 
 /* What a run keeps free on its database's disk beyond its next batch, so
@@ -70,7 +75,7 @@ static double clock_seconds(void)
     return (double)t.tv_sec + (double)t.tv_nsec * 1e-9;
 }
 
-static void stage(const struct study_hooks *hooks, const char *what)
+void study_stage(const struct study_hooks *hooks, const char *what)
 {
     if (hooks != NULL && hooks->stage != NULL)
         hooks->stage(hooks->context, what);
@@ -86,6 +91,8 @@ static void option_row_of(const struct evaluated_option *e,
     row->nv = e->point.nv;
     row->threshold_mm = e->point.threshold_mm;
     row->totals = e->totals;
+    row->module_w = row->module_h = NAN;
+    row->modules = TOTALS_UNKNOWN;
 }
 
 static void evaluated_of(const struct option_row *row,
@@ -116,7 +123,34 @@ static int store_batch(void *context, const struct evaluated_option *options,
     int rc = check_batch_room(state, err);
     if (rc != FACET_OK)
         return rc;
-    return store_options_put(state->store, state->run, state->rows, n, err);
+    if (state->project == NULL)
+        return store_options_put(state->store, state->run, state->rows, n,
+                                 err);
+    /* A project's options come with their surfaces' rows, which its
+     * evaluator kept from this very batch (optimize.h). */
+    const struct project_search *p = state->project;
+    size_t ns = p->project->nsurfaces;
+    if (n * ns > state->surface_capacity) {
+        struct option_surface_row *grown =
+            realloc(state->surface_rows, n * ns * sizeof *grown);
+        if (grown == NULL)
+            return facet_error_set(err, FACET_EWORK, "out of memory");
+        state->surface_rows = grown;
+        state->surface_capacity = n * ns;
+    }
+    for (size_t k = 0; k < n; k++) {
+        struct option_row *row = &state->rows[k];
+        project_search_module(p, &options[k].point, &row->module_w,
+                              &row->module_h);
+        row->modules = project_search_modules(p, &options[k].point);
+        const struct project_surface_row *from = project_search_rows(p, k);
+        for (size_t i = 0; i < ns; i++)
+            state->surface_rows[k * ns + i] = (struct option_surface_row){
+                from[i].grid.nu, from[i].grid.nv, from[i].totals,
+                (int64_t)from[i].moulds_used, (int64_t)from[i].joints};
+    }
+    return store_project_options_put(state->store, state->run, state->rows,
+                                     n, state->surface_rows, ns, err);
 }
 
 static void report_progress(void *context, int64_t done, int64_t total)
@@ -286,8 +320,8 @@ static int read_surface(const char *path, const struct mesh_options *mesh,
  * then a relative path against the database's folder, then the file's name
  * in the database's folder (a database copied with its surface beside
  * it). Returns how many it wrote into place[]. */
-static int surface_candidates(const char *db_path, const char *stored,
-                              char place[3][4096])
+int study_surface_candidates(const char *db_path, const char *stored,
+                             char place[3][4096])
 {
     int n = 0;
     snprintf(place[n++], sizeof place[0], "%s", stored);
@@ -322,6 +356,12 @@ int study_open_surface(const struct store *store, const struct run_info *run,
     struct mesh_options mesh;
     int flip;
     memset(surface, 0, sizeof *surface);
+    if (store_run_is_project(run))
+        return facet_error_set(err, FACET_EINPUT,
+            "run %lld is a project of several surfaces: its options' "
+            "panels are not kept yet, only each surface's totals (facet "
+            "show %lld OPTION lists them)", (long long)run->id,
+            (long long)run->id);
     int rc = study_settings(run, &settings, &mesh, &flip, err);
     if (rc != FACET_OK)
         return rc;
@@ -331,7 +371,7 @@ int study_open_surface(const struct store *store, const struct run_info *run,
         return rc;
     enum param_method uv = run->uv_method;
     char place[3][4096];
-    int nplaces = surface_candidates(store_path(store), run->surface_path,
+    int nplaces = study_surface_candidates(store_path(store), run->surface_path,
                                      place);
     int changed = 0;
     struct facet_error first;
@@ -372,6 +412,10 @@ int study_repoint_surface(struct store *store, int64_t run_id,
     int rc = store_run_get(store, run_id, &run, err);
     if (rc != FACET_OK)
         return rc;
+    if (store_run_is_project(&run))
+        return facet_error_set(err, FACET_EINPUT,
+            "run %lld is a project: its files are looked for where they "
+            "were and beside the database", (long long)run_id);
     char digest[65];
     if ((rc = sha256_file(path, digest, err)) != FACET_OK)
         return rc;
@@ -694,7 +738,7 @@ int study_finish(struct store *store, const struct run_info *run,
                  const struct study_hooks *hooks,
                  enum optimize_outcome *outcome, struct facet_error *err)
 {
-    stage(hooks, "ranking options");
+    study_stage(hooks, "ranking options");
     int rc = study_rank(store, run->id, err);
     if (rc == FACET_OK)
         rc = store_analyze(store, err);
@@ -703,7 +747,7 @@ int study_finish(struct store *store, const struct run_info *run,
     if (rc == FACET_OK && *outcome == OPTIMIZE_DONE && should_stop(hooks))
         *outcome = OPTIMIZE_INTERRUPTED;
     if (rc == FACET_OK && *outcome == OPTIMIZE_DONE && surface != NULL) {
-        stage(hooks, "storing the Pareto options' panels");
+        study_stage(hooks, "storing the Pareto options' panels");
         int stopped;
         rc = store_front_panels(store, run, surface, lattice, settings,
                                 hooks, &stopped, err);
@@ -718,11 +762,13 @@ int study_finish(struct store *store, const struct run_info *run,
  * sessions. */
 static int study_go(struct store *store, struct run_info *run,
                     const struct surface *surface,
+                    struct project_search *project,
                     const struct optimize_settings *settings,
                     const struct study_hooks *hooks, double started,
                     enum optimize_outcome *outcome, struct facet_error *err)
 {
-    struct study_state state = {store, run->id, hooks, NULL, 0, -1, 0};
+    struct study_state state = {store, run->id, hooks, NULL, 0, -1, 0,
+                                project, NULL, 0};
     struct optimize_hooks optimize_hooks = {&state, store_batch,
                                             report_progress, stop_requested};
     struct option_row *rows = NULL;
@@ -740,8 +786,8 @@ static int study_go(struct store *store, struct run_info *run,
     /* The panels of the run and of its front from one lattice, so that
      * the stored panels add up to their options' totals. */
     struct panel_lattice *lattice = NULL;
-    if (rc == FACET_OK) {
-        stage(hooks, "dividing the surface along the space's grid lines");
+    if (rc == FACET_OK && project == NULL) {
+        study_stage(hooks, "dividing the surface along the space's grid lines");
         rc = optimize_lattice(surface, settings, &lattice, err);
     }
     /* A run of many options stores them without the indexes by metric
@@ -751,12 +797,16 @@ static int study_go(struct store *store, struct run_info *run,
         rc = store_indexes_defer(store,
                                  optimize_total(settings) - (int64_t)nstored,
                                  &deferred, err);
-    stage(hooks, "evaluating options");
-    if (rc == FACET_OK)
+    study_stage(hooks, "evaluating options");
+    if (rc == FACET_OK && project != NULL)
+        rc = optimize_run_with(&project->evaluator, settings, stored,
+                               nstored, &optimize_hooks, outcome, err);
+    else if (rc == FACET_OK)
         rc = optimize_run(surface, lattice, settings, stored, nstored,
                           &optimize_hooks, outcome, err);
     free(stored);
     free(state.rows);
+    free(state.surface_rows);
 
     struct facet_error later;
     facet_error_clear(&later);
@@ -764,7 +814,7 @@ static int study_go(struct store *store, struct run_info *run,
      * the statistics and the front's panels read them; the error of a
      * failed run stays the one told. */
     if (deferred) {
-        stage(hooks, "indexing options");
+        study_stage(hooks, "indexing options");
         int index_rc = store_indexes_build(store, run->id, NULL,
                                            rc == FACET_OK ? err : &later);
         if (rc == FACET_OK)
@@ -865,6 +915,39 @@ int study_request_check(const struct study_request *request,
     return design_space_check(&request->settings.space, NULL, err);
 }
 
+/* Reads and prepares the single surface of request into *surface,
+ * recording what it is into run (its path already there): its SHA-256,
+ * area, triangles, UV and warnings. A file that names several objects (or
+ * groups) is a project: refused unless request selects one of them. */
+static int surface_read(const struct study_request *request,
+                        const struct study_hooks *hooks,
+                        struct surface *surface, struct run_info *run,
+                        struct facet_error *err)
+{
+    study_stage(hooks, "reading the surface");
+    int rc = read_surface(request->surface_path, &request->mesh,
+                          run->surface_sha256, surface, err);
+    size_t named = rc == FACET_OK && !surface->selected
+                       ? project_count_named(&surface->obj) : 0;
+    if (named > 1)
+        return facet_error_about(err, FACET_SETTING_MODULE, FACET_EINPUT,
+            "%s: a project of %zu surfaces (its objects or groups) needs a "
+            "panel module", request->surface_path, named);
+    if (rc == FACET_OK) {
+        study_stage(hooks, "preparing the surface (UV, curvature)");
+        rc = surface_prepare(surface, request->flip_normals, request->uv,
+                             err);
+    }
+    if (rc != FACET_OK)
+        return rc;
+    collect_warnings(surface, &request->settings.space, hooks, run->warnings,
+                     sizeof run->warnings);
+    run->surface_area = surface->mesh.area;
+    run->triangles = (int64_t)surface->mesh.ntriangles;
+    run->uv_method = surface->param.method;
+    return FACET_OK;
+}
+
 int study_start(struct store *store, const struct study_request *request,
                 const struct study_hooks *hooks, int64_t *run_id,
                 enum optimize_outcome *outcome, struct facet_error *err)
@@ -895,26 +978,33 @@ int study_start(struct store *store, const struct study_request *request,
         return facet_error_set(err, FACET_EINPUT, "%.200s...: path too long",
                                recorded);
     memcpy(run.surface_path, recorded, strlen(recorded) + 1);
-    stage(hooks, "reading the surface");
     struct surface surface;
     memset(&surface, 0, sizeof surface);
-    rc = read_surface(request->surface_path, &request->mesh,
-                      run.surface_sha256, &surface, err);
-    if (rc == FACET_OK) {
-        stage(hooks, "preparing the surface (UV, curvature)");
-        rc = surface_prepare(&surface, request->flip_normals, request->uv,
-                             err);
+    struct project project;
+    memset(&project, 0, sizeof project);
+    struct project_search search;
+    memset(&search, 0, sizeof search);
+    struct surface_row *surfaces = NULL;
+    int is_project = request->nfiles > 0;
+    if (is_project) {
+        rc = study_project_read(request, hooks, &project, &surfaces, &run, err);
+        if (rc == FACET_OK)
+            rc = study_project_search(request, &project, &search, err);
+        for (size_t i = 0; rc == FACET_OK && i < project.nsurfaces; i++) {
+            surfaces[i].grid_nu = search.overrides[i].nu;
+            surfaces[i].grid_nv = search.overrides[i].nv;
+        }
+    } else {
+        rc = surface_read(request, hooks, &surface, &run, err);
     }
     if (rc != FACET_OK) {
+        project_search_free(&search);
+        project_close(&project);
+        free(surfaces);
         surface_close(&surface);
         return rc;
     }
-    collect_warnings(&surface, &s->space, hooks, run.warnings,
-                     sizeof run.warnings);
     run.units = request->mesh.units;
-    run.surface_area = surface.mesh.area;
-    run.triangles = (int64_t)surface.mesh.ntriangles;
-    run.uv_method = surface.param.method;
     run.uv = request->uv;
     run.method = s->method;
     run.seed = s->seed;
@@ -945,13 +1035,24 @@ int study_start(struct store *store, const struct study_request *request,
     run.shard_index = s->shard.index;
     run.shard_count = s->shard.count;
     rc = store_run_create(store, &run, err);
+    if (rc == FACET_OK && is_project)
+        rc = store_surfaces_put(store, run.id, surfaces, project.nsurfaces,
+                                err);
     if (rc == FACET_OK) {
         *run_id = run.id;
         if (hooks != NULL && hooks->started != NULL)
             hooks->started(hooks->context, run.id);
-        rc = study_go(store, &run, &surface, s, hooks, started, outcome,
-                      err);
+        rc = study_go(store, &run, is_project ? NULL : &surface,
+                      is_project ? &search : NULL, s, hooks, started,
+                      outcome, err);
+    } else if (run.id > 0) {
+        /* Recorded, its surfaces not: failed, not left running. */
+        struct facet_error ignored;
+        store_run_set_status(store, run.id, RUN_FAILED, 0, &ignored);
     }
+    project_search_free(&search);
+    project_close(&project);
+    free(surfaces);
     surface_close(&surface);
     return rc;
 }
@@ -979,9 +1080,28 @@ int study_resume(struct store *store, int64_t run_id,
         rc = store_run_claim(store, run_id, &run, err);
     if (rc != FACET_OK)
         return rc;
-    stage(hooks, "preparing the surface (UV, curvature)");
     struct surface surface;
-    rc = study_open_surface(store, &run, &surface, err);
+    memset(&surface, 0, sizeof surface);
+    struct project project;
+    memset(&project, 0, sizeof project);
+    struct project_search search;
+    memset(&search, 0, sizeof search);
+    int is_project = store_run_is_project(&run);
+    if (is_project) {
+        study_stage(hooks, "preparing the project's surfaces (UV, curvature)");
+        struct surface_grid *overrides = NULL;
+        rc = study_project_reopen(store, &run, &project, &overrides, err);
+        struct module_range range = {run.module_w_min, run.module_w_max,
+                                     run.module_w_step, run.module_h_min,
+                                     run.module_h_max, run.module_h_step};
+        if (rc == FACET_OK)
+            rc = project_search_init(&search, &project, &range, overrides,
+                                     err);
+        free(overrides);
+    } else {
+        study_stage(hooks, "preparing the surface (UV, curvature)");
+        rc = study_open_surface(store, &run, &surface, err);
+    }
     if (rc != FACET_OK) {
         /* Given back as it was found, resumable once the surface is. */
         struct facet_error ignored;
@@ -991,9 +1111,12 @@ int study_resume(struct store *store, int64_t run_id,
     if (rc == FACET_OK) {
         if (hooks != NULL && hooks->started != NULL)
             hooks->started(hooks->context, run_id);
-        rc = study_go(store, &run, &surface, &settings, hooks, started,
-                      outcome, err);
+        rc = study_go(store, &run, is_project ? NULL : &surface,
+                      is_project ? &search : NULL, &settings, hooks,
+                      started, outcome, err);
     }
+    project_search_free(&search);
+    project_close(&project);
     surface_close(&surface);
     return rc;
 }
@@ -1002,10 +1125,24 @@ int study_front_edge_note(const struct run_info *run,
                           const struct front_bounds *b, char *text,
                           size_t size)
 {
-    static const char *const variable[3] = {"U", "V", "the threshold"};
-    static const char *const unit[3] = {"", "", " mm"};
+    static const char *const grid_variable[3] = {"U", "V",
+                                                 "the threshold"};
+    static const char *const module_variable[3] = {
+        "the module width", "the module height", "the threshold"};
+    static const char *const grid_unit[3] = {"", "", " mm"};
+    static const char *const module_unit[3] = {" m", " m", " mm"};
+    int project = store_run_is_project(run);
+    const char *const *variable = project ? module_variable : grid_variable;
+    const char *const *unit = project ? module_unit : grid_unit;
     double low[3] = {run->u_min, run->v_min, run->threshold_min_mm};
     double high[3] = {run->u_max, run->v_max, run->threshold_max_mm};
+    if (project) {
+        /* The bounds of a project's range are modules, not indices. */
+        low[0] = run->module_w_min;
+        high[0] = run->module_w_min + (run->u_max - 1) * run->module_w_step;
+        low[1] = run->module_h_min;
+        high[1] = run->module_h_min + (run->v_max - 1) * run->module_h_step;
+    }
     size_t used = 0;
     text[0] = '\0';
     for (int k = 0; k < FRONT_BOUNDS; k++) {

@@ -15,6 +15,8 @@
 #ifndef FACET_STUDY_H
 #define FACET_STUDY_H
 
+#include "core/project/module.h"
+#include "core/project/project_grids.h"
 #include "core/surface/mesh.h"
 #include "core/search/optimize.h"
 #include "core/surface/surface.h"
@@ -40,6 +42,20 @@ struct study_hooks {
 /* What a new run is made of. */
 struct study_request {
     const char *surface_path;
+    /* A project (core/project/project.h): its files (nfiles of them, the
+     * first surface_path's), searched over the panel modules of module
+     * (module.h; the space's u and v study_project_space's). nfiles 0: a
+     * single surface, surface_path, as it always was; a file that names
+     * several objects (or groups) is then refused unless mesh selects
+     * one: a project needs a module. */
+    const char *const *files;
+    size_t nfiles;
+    struct module_range module;
+    /* Per surface of the project, by name: a grid of its own whatever
+     * the module (nu 0: none); noverrides of them. */
+    const char *const *override_names;
+    const struct surface_grid *overrides;
+    size_t noverrides;
     struct mesh_options mesh;        /* units, object, group */
     int flip_normals;
     enum param_method uv;            /* asked for; PARAM_AUTO: the first
@@ -103,6 +119,13 @@ int study_method_parse(const char *text, const char *what,
  * space. FACET_EINPUT naming what is wrong. study_start checks it too. */
 int study_request_check(const struct study_request *request,
                         struct facet_error *err);
+
+/* The design space of a project searched over the modules of range: u
+ * 1..widths and v 1..heights (the width and height indices,
+ * project_search.h) into space's grid sides, its threshold kept.
+ * FACET_EINPUT when a range holds more values than a grid side may. */
+int study_project_space(const struct module_range *range,
+                        struct design_space *space, struct facet_error *err);
 
 /* Runs a new study into store. *run receives its id (0 if it failed
  * before one was recorded), *outcome DONE or INTERRUPTED. Returns

@@ -56,6 +56,19 @@ int study_option_load(struct store *store, int64_t run, int64_t number,
         return rc;
     p->classify = option_params_at(&settings.base, p->row.nu, p->row.nv,
                                    p->row.threshold_mm).classify;
+    if (store_run_is_project(&p->run) && !geometry) {
+        size_t nrows = 0;
+        p->totals = p->row.totals;
+        rc = store_surfaces_get(store, run, &p->surfaces, &p->nsurfaces, err);
+        if (rc == FACET_OK)
+            rc = store_option_surfaces_get(store, run, number,
+                                           &p->surface_rows, &nrows, err);
+        if (rc == FACET_OK && nrows != p->nsurfaces)
+            rc = facet_error_set(err, FACET_EINPUT,
+                "run %lld option %lld: %zu surface rows for %zu surfaces",
+                (long long)run, (long long)number, nrows, p->nsurfaces);
+        return rc;
+    }
     if (geometry) {
         rc = study_open_surface(store, &p->run, &p->surface, err);
         p->have_surface = 1;
@@ -79,6 +92,8 @@ void study_option_free(struct study_option *p)
     panelization_free(&p->panels);
     if (p->have_surface)
         surface_close(&p->surface);
+    free(p->surfaces);
+    free(p->surface_rows);
     memset(p, 0, sizeof *p);
 }
 

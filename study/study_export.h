@@ -30,12 +30,20 @@ struct study_option {
     struct surface surface;
     struct panel_geometry geometry;
     int have_surface, have_geometry;
+    /* A project run's option (store_run_is_project): no panels (not kept
+     * yet; totals are the row's), its surfaces and their rows instead,
+     * nsurfaces each (malloc'ed); NULL, 0 otherwise. */
+    struct surface_row *surfaces;
+    struct option_surface_row *surface_rows;
+    size_t nsurfaces;
 };
 
 /* Reads option number of run into *out (caller-owned, released with
  * study_option_free, also after a failure): its run, row and classify
  * settings, its panels (computed and stored first when not stored), and
- * with geometry set the panels' surface patches too. */
+ * with geometry set the panels' surface patches too. Of a project run,
+ * its surfaces and their rows instead of panels; geometry is then
+ * refused (FACET_EINPUT). */
 int study_option_load(struct store *store, int64_t run, int64_t number,
                       int geometry, struct study_option *out,
                       struct facet_error *err);

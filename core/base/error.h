@@ -50,6 +50,8 @@ enum facet_setting {
     FACET_SETTING_STORE,      /* fix: a run that creates the result store */
     FACET_SETTING_FILTER,     /* about: the filter expression */
     FACET_SETTING_SORT,       /* about: the sort columns */
+    FACET_SETTING_MODULE,     /* fix: a panel module for a project, or one
+                                 object or group of the file */
     FACET_SETTING_COUNT
 };
 

@@ -442,14 +442,14 @@ static int same_point(const struct design_point *a,
            llround(a->threshold_mm * 1000) == llround(b->threshold_mm * 1000);
 }
 
-int search_init(struct search *s, const struct surface *surface,
+int search_init(struct search *s, const struct option_evaluator *evaluator,
                 const struct optimize_settings *settings,
                 const struct evaluated_option *stored, size_t nstored,
                 const struct optimize_hooks *hooks, int64_t total,
                 struct facet_error *err)
 {
     memset(s, 0, sizeof *s);
-    s->surface = surface;
+    s->evaluator = evaluator;
     s->settings = settings;
     s->hooks = hooks;
     s->total = total;
@@ -480,6 +480,12 @@ void search_free(struct search *s)
     free(s->known);
     free(s->met);
     memset(s, 0, sizeof *s);
+}
+
+void search_canonical(const struct search *s, struct design_point *p)
+{
+    if (s->evaluator->canonical != NULL)
+        s->evaluator->canonical(s->evaluator->context, p);
 }
 
 /* The index into known of point p, or SIZE_MAX. */
@@ -541,13 +547,15 @@ int search_batch(struct search *s, const struct design_point *points,
         return rc;
     size_t first_new = s->nknown;
     for (size_t k = 0; k < n; k++) {
-        size_t found = search_find(s, &points[k]);
+        struct design_point point = points[k];
+        search_canonical(s, &point);
+        size_t found = search_find(s, &point);
         if (found == SIZE_MAX) {
             struct evaluated_option *o = &s->known[s->nknown];
             memset(o, 0, sizeof *o);
-            o->point = points[k];
+            o->point = point;
             o->generation = generation;
-            size_t h = point_key_hash(&points[k]) & (s->capacity - 1);
+            size_t h = point_key_hash(&point) & (s->capacity - 1);
             while (s->slot[h] != SIZE_MAX)
                 h = (h + 1) & (s->capacity - 1);
             s->slot[h] = found = s->nknown++;
@@ -574,9 +582,9 @@ int search_batch(struct search *s, const struct design_point *points,
         }
         for (size_t k = 0; k < fresh; k++)
             points_new[k] = s->known[first_new + k].point;
-        rc = evaluate(s->surface, s->lattice, s->lines, &s->settings->base,
-                      points_new, fresh, s->settings->jobs, totals, NULL,
-                      err);
+        rc = s->evaluator->evaluate(s->evaluator->context,
+                                    &s->settings->base, points_new, fresh,
+                                    s->settings->jobs, totals, err);
         for (size_t k = 0; rc == FACET_OK && k < fresh; k++)
             s->known[first_new + k].totals = totals[k];
         free(points_new);
@@ -636,7 +644,7 @@ static int run_exhaustive(struct search *s, enum optimize_outcome *outcome,
     if (points == NULL || index == NULL || numbers == NULL)
         rc = facet_error_set(err, FACET_EWORK, "out of memory");
     /* Option k + 1 is point k of the space, in a shard as in the whole
-     * run. */
+     * run (of a single surface: every point is its own option). */
     uint64_t next = 0;
     while (rc == FACET_OK && next < total) {
         if (stop_requested(s->hooks)) {
@@ -651,8 +659,13 @@ static int run_exhaustive(struct search *s, enum optimize_outcome *outcome,
                 point_of_index(&settings->space, next, &points[n]);
                 numbers[n++] = (int64_t)next + 1;
             }
+        /* A shard's options keep their numbers in the whole run; a whole
+         * run numbers them as met, which is the same but where points are
+         * one option (a project's modules): then 1, 2, ... without gaps. */
         if (n > 0)
-            rc = search_batch(s, points, n, 0, index, numbers, err);
+            rc = search_batch(s, points, n, 0, index,
+                              settings->shard.count > 0 ? numbers : NULL,
+                              err);
     }
     free(points);
     free(index);
@@ -767,6 +780,9 @@ static int run_random(struct search *s, enum optimize_outcome *outcome,
             struct design_point p;
             int fresh;
             random_point(&settings->space, &rng, &p);
+            /* Distinct options, not points: a project's modules that
+             * are one option are drawn once. */
+            search_canonical(s, &p);
             rc = drawn_add(&drawn, &p, &fresh, err);
             if (rc != FACET_OK || !fresh) {
                 misses++;
@@ -803,6 +819,50 @@ int64_t optimize_total(const struct optimize_settings *settings)
     }
 }
 
+/* The single surface's evaluation: its panels from the lattice (or
+ * none), the joint lengths from the run's lines (or none). */
+struct surface_evaluation {
+    const struct surface *surface;
+    const struct panel_lattice *lattice;
+    const struct joint_lines *lines;
+};
+
+static int surface_evaluate(void *context, const struct option_params *base,
+                            const struct design_point *points, size_t n,
+                            int jobs, struct option_totals *totals,
+                            struct facet_error *err)
+{
+    const struct surface_evaluation *e = context;
+    return evaluate(e->surface, e->lattice, e->lines, base, points, n, jobs,
+                    totals, NULL, err);
+}
+
+int optimize_run_with(const struct option_evaluator *evaluator,
+                      const struct optimize_settings *settings,
+                      const struct evaluated_option *stored, size_t nstored,
+                      const struct optimize_hooks *hooks,
+                      enum optimize_outcome *outcome, struct facet_error *err)
+{
+    *outcome = OPTIMIZE_DONE;
+    int rc = design_space_check(&settings->space, NULL, err);
+    if (rc != FACET_OK)
+        return rc;
+    int64_t total = optimize_total(settings);
+    struct search s;
+    rc = search_init(&s, evaluator, settings, stored, nstored, hooks, total,
+                     err);
+    if (rc == FACET_OK) {
+        if (settings->method == METHOD_EXHAUSTIVE)
+            rc = run_exhaustive(&s, outcome, err);
+        else if (settings->method == METHOD_RANDOM)
+            rc = run_random(&s, outcome, err);
+        else
+            rc = run_nsga2(&s, outcome, err);
+    }
+    search_free(&s);
+    return rc;
+}
+
 int optimize_run(const struct surface *surface,
                  const struct panel_lattice *lattice,
                  const struct optimize_settings *settings,
@@ -814,29 +874,20 @@ int optimize_run(const struct surface *surface,
     int rc = design_space_check(&settings->space, NULL, err);
     if (rc != FACET_OK)
         return rc;
-    int64_t total = optimize_total(settings);
-    struct search s;
-    rc = search_init(&s, surface, settings, stored, nstored, hooks, total,
-                     err);
-    s.lattice = lattice;
+    struct surface_evaluation e = {surface, lattice, NULL};
     /* With a lattice, the run's grids share lines: measure the joints of
      * every line of the space once, for all its batches. */
     struct joint_lines lines;
     memset(&lines, 0, sizeof lines);
-    if (rc == FACET_OK && lattice != NULL) {
+    if (lattice != NULL) {
         rc = optimize_joint_lines(surface, &settings->space, settings->jobs,
                                   &lines, err);
-        s.lines = &lines;
+        e.lines = &lines;
     }
-    if (rc == FACET_OK) {
-        if (settings->method == METHOD_EXHAUSTIVE)
-            rc = run_exhaustive(&s, outcome, err);
-        else if (settings->method == METHOD_RANDOM)
-            rc = run_random(&s, outcome, err);
-        else
-            rc = run_nsga2(&s, outcome, err);
-    }
-    search_free(&s);
+    struct option_evaluator evaluator = {&e, NULL, surface_evaluate};
+    if (rc == FACET_OK)
+        rc = optimize_run_with(&evaluator, settings, stored, nstored, hooks,
+                               outcome, err);
     joint_lines_free(&lines);
     return rc;
 }

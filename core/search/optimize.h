@@ -135,6 +135,37 @@ int optimize_method_check(enum optimize_method method,
  * them (an NSGA-II island evaluates as many as a whole run). */
 int64_t optimize_total(const struct optimize_settings *settings);
 
+/* What evaluates a run's options: a single surface's evaluation (what
+ * optimize_run gives the search) or a project's (core/project/
+ * project_search.h). The search itself (methods, the point cache,
+ * batches, numbering, the hooks) is the same for both. */
+struct option_evaluator {
+    void *context;
+    /* Replaces *point by the point that stands for every point whose
+     * option is the same (a project's modules that give every surface
+     * the same grid), the same whatever the order points are met in;
+     * NULL: every point is its own. The search dedupes, numbers and
+     * stores the points it gives. */
+    void (*canonical)(void *context, struct design_point *point);
+    /* Evaluates points[0..n) (canonical) with base on up to jobs threads
+     * into totals[0..n). The store hook's next call receives exactly
+     * these options, in this order, so an evaluator may keep what it
+     * computed beside the totals (a project's per-surface rows) for the
+     * store to take. */
+    int (*evaluate)(void *context, const struct option_params *base,
+                    const struct design_point *points, size_t n, int jobs,
+                    struct option_totals *totals, struct facet_error *err);
+};
+
+/* Runs the search of settings with evaluator, as optimize_run (below)
+ * does for a surface. */
+int optimize_run_with(const struct option_evaluator *evaluator,
+                      const struct optimize_settings *settings,
+                      const struct evaluated_option *stored, size_t nstored,
+                      const struct optimize_hooks *hooks,
+                      enum optimize_outcome *outcome,
+                      struct facet_error *err);
+
 /* Runs the search on the prepared surface, the panels of the grids
  * lattice holds (or NULL; see optimize_lattice) taken from it. stored[0..
  * nstored) are the options of the run already committed (resume), else

@@ -9,12 +9,9 @@
 #include "core/search/optimize.h"
 
 struct search {
-    const struct surface *surface;
+    const struct option_evaluator *evaluator;
     const struct optimize_settings *settings;
     const struct optimize_hooks *hooks;
-    const struct panel_lattice *lattice;  /* or NULL: see optimize_lattice */
-    const struct joint_lines *lines;      /* or NULL: the joint lines of
-                                             the lattice's grids */
     struct evaluated_option *known;  /* stored at start, then new ones */
     unsigned char *met;              /* known[k] met in this pass */
     size_t nknown, known_capacity;
@@ -25,14 +22,18 @@ struct search {
 };
 
 /* Sets up *s with the run's stored options. Release with search_free. */
-int search_init(struct search *s, const struct surface *surface,
+int search_init(struct search *s, const struct option_evaluator *evaluator,
                 const struct optimize_settings *settings,
                 const struct evaluated_option *stored, size_t nstored,
                 const struct optimize_hooks *hooks, int64_t total,
                 struct facet_error *err);
 void search_free(struct search *s);
 
-/* Meets points[0..n) in order: a point met for the first time gets the
+/* The point that stands for p in s (the evaluator's canonical one, or p
+ * itself). */
+void search_canonical(const struct search *s, struct design_point *p);
+
+/* Meets points[0..n) in order, each as search_canonical gives it: a point met for the first time gets the
  * next option number, or numbers[k] when numbers is not NULL (a shard's
  * points keep their numbers in the unsharded run); those the run does not have yet are evaluated (in
  * parallel) and stored through the hook. index[k] receives the position in
