@@ -295,10 +295,11 @@ static void map_draw(struct tui_screen *base, struct tui_app *app,
         map_surface_title(title, sizeof title, s->surface,
                           (int)s->building.nsurfaces,
                           s->surfaces[s->surface].name, nu, nv);
+        /* "Map" alone: at 80 columns the surface's name needs the room */
         tui_putf(0, 0, width, tui_attr(ROLE_TITLE),
-                 " Panel map: option %lld of run %lld | %s | by %s | t %.2f "
-                 "mm", (long long)s->option.number, (long long)s->run.id,
-                 title, colour_name(s->colour), s->option.threshold_mm);
+                 " Map: option %lld of run %lld | %s | t %.2f mm | by %s",
+                 (long long)s->option.number, (long long)s->run.id, title,
+                 s->option.threshold_mm, colour_name(s->colour));
     } else {
         tui_putf(0, 0, width, tui_attr(ROLE_TITLE),
                  " Panel map: option %lld of run %lld | grid %d x %d | t "
