@@ -66,8 +66,7 @@ static const struct tui_key_help map_help[] = {
     {"z", "zoom in: fit the screen, 1, then 2 columns per panel"},
     {"Z", "zoom out, back to the whole grid fitted to the screen"},
     {"e, F9", "export: PREFIX.obj (+ .mtl), PREFIX.csv and PREFIX.svg; "
-              "end the prefix with ! to overwrite (a single surface's "
-              "option)"},
+              "end the prefix with ! to overwrite"},
     {"] / [", "a project's option: the next / previous surface of the "
               "building"},
     {NULL, NULL},
@@ -552,9 +551,8 @@ static enum tui_result map_key(struct tui_screen *base, struct tui_app *app,
     }
     case 'e': case KEY_F(9): {
         if (s->project) {
-            tui_status(app, "export: not for a project's option yet (facet "
-                       "show --run %lld --option %lld lists its surfaces)",
-                       (long long)s->run.id, (long long)s->option.number);
+            tui_status(app, "export: not for a project's option yet (o on "
+                       "the options table lists its surfaces)");
             return RESULT_HANDLED;
         }
         char prefix[128];
