@@ -129,6 +129,21 @@ check "Enter opens the map at the selected surface" \
 keys F10
 check_exit "the workbench quits cleanly (short terminal)"
 
+# A wide terminal: the side pane gives the knee's module, not the module
+# indices nu and nv stand for; Compare's maps say why a project's
+# options have none here.
+read -r mw mh <<<"$(q "select printf('%.2f', module_w), printf('%.2f', module_h) from options where run = 1 and number = $knee" | tr '|' ' ')"
+start 130 30 -- p.db
+check "a wide terminal: the runs" '^ +1 done'
+keys Enter K
+check "the side pane gives the knee's module width ($mw m)" "module width +$mw m"
+check "... and height ($mh m)" "module height +$mh m"
+keys g ' ' j ' ' c
+check "Compare's maps of a project's options say where its map is" \
+    "no map: a project's option; its panel map"
+keys F10
+check_exit "the workbench quits cleanly (wide terminal)"
+
 # A single surface's run: o says there are no surfaces, the map as ever.
 "$FACET" optimize "$WORK/dome.obj" --db "$WORK/one.db" --u 4:5 --v 4:5 \
     --threshold 3 --table 0 >/dev/null 2>&1 || exit 1
