@@ -268,6 +268,8 @@ static void draw_waiting(struct map_screen *s, struct tui_app *app,
         return;
     }
     struct tui_project_load_state st;
+    if (app->project == NULL)
+        return;  /* the next tick starts it again */
     tui_project_load_state(app->project, &st);
     char seconds[32];
     tui_fmt_elapsed(seconds, sizeof seconds, st.seconds);
@@ -624,10 +626,22 @@ static void map_destroy(struct tui_screen *base)
 /* Gives the map the building once app->project is prepared: evaluates
  * the option over it (study_project_view_option). Returns 1 when the
  * screen changed. */
+static int project_start(struct map_screen *s, struct tui_app *app,
+                         struct facet_error *err);
+
 static int project_poll(struct map_screen *s, struct tui_app *app)
 {
     if (!s->loading)
         return 0;
+    if (app->project == NULL || app->project_run != s->run.id) {
+        /* another run's map took the room: prepare this run's again */
+        struct facet_error err;
+        if (project_start(s, app, &err) != FACET_OK) {
+            s->loading = 0;
+            snprintf(s->failed, sizeof s->failed, "%s", err.message);
+        }
+        return 1;
+    }
     struct tui_project_load_state st;
     tui_project_load_state(app->project, &st);
     if (!st.finished)
