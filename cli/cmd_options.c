@@ -13,6 +13,7 @@
 #include "core/out/json.h"
 #include "core/base/numformat.h"
 #include "option_table.h"
+#include "surface_table.h"
 #include "text_table.h"
 #include "store/filter.h"
 #include "store/store.h"
@@ -30,7 +31,47 @@ struct listing {
     struct text_column heads[LISTED + 1];  /* listed, then the knee mark */
     struct text_table table;
     int64_t rows;
+    /* --surfaces: a project option's rows per surface with it, the
+     * surfaces of the run last met kept (names). */
+    int surfaces;
+    struct store *store;
+    int64_t surfaces_run;
+    struct surface_row *surface;
+    size_t nsurfaces;
+    struct facet_error err;
 };
+
+/* The rows per surface of option o of run (a project's: its module
+ * known), the run's surfaces read once; *rows malloc'ed. Returns
+ * non-zero with l->err set on a failure. */
+static int surface_rows_of(struct listing *l, int64_t run,
+                           const struct option_row *o,
+                           struct option_surface_row **rows, size_t *n)
+{
+    *rows = NULL;
+    *n = 0;
+    if (isnan(o->module_w))
+        return 0;
+    if (l->surfaces_run != run) {
+        free(l->surface);
+        l->surface = NULL;
+        l->nsurfaces = 0;
+        l->surfaces_run = run;
+        if (store_surfaces_get(l->store, run, &l->surface, &l->nsurfaces,
+                               &l->err) != FACET_OK)
+            return 1;
+    }
+    if (store_option_surfaces_get(l->store, run, o->number, rows, n,
+                                  &l->err) != FACET_OK)
+        return 1;
+    if (*n != l->nsurfaces) {
+        facet_error_set(&l->err, FACET_EINPUT,
+            "run %lld option %lld: %zu surface rows for %zu surfaces",
+            (long long)run, (long long)o->number, *n, l->nsurfaces);
+        return 1;
+    }
+    return 0;
+}
 
 static int list_row(void *context, int64_t run, const struct option_row *o)
 {
@@ -41,6 +82,17 @@ static int list_row(void *context, int64_t run, const struct option_row *o)
         option_table_cells(l->listed, LISTED, run, o, text, cell);
         cell[LISTED] = o->knee ? "knee" : "";
         text_table_row(stdout, &l->table, cell);
+        if (l->surfaces) {
+            struct option_surface_row *rows;
+            size_t n;
+            if (surface_rows_of(l, run, o, &rows, &n))
+                return 1;
+            if (n > 0) {
+                surface_table_print(stdout, l->surface, rows, n);
+                putchar('\n');
+            }
+            free(rows);
+        }
     } else if (l->format == LISTING_JSON) {
         json_begin_object(&l->json);
         json_key(&l->json, "run");
@@ -57,6 +109,18 @@ static int list_row(void *context, int64_t run, const struct option_row *o)
                 json_integer(&l->json, (long long)value);
             else
                 json_number(&l->json, value);
+        }
+        if (l->surfaces) {
+            struct option_surface_row *rows;
+            size_t n;
+            if (surface_rows_of(l, run, o, &rows, &n))
+                return 1;
+            json_key(&l->json, "surfaces");
+            if (n > 0)
+                surface_table_json(&l->json, l->surface, rows, n);
+            else
+                json_null(&l->json);
+            free(rows);
         }
         json_end_object(&l->json);
     } else {
@@ -82,7 +146,7 @@ static int list_row(void *context, int64_t run, const struct option_row *o)
 static int options_main(int argc, char **argv, struct facet_error *err)
 {
     const char *run = NULL, *sort = NULL, *where = NULL, *limit = NULL;
-    int pareto = 0, desc = 0, json = 0, csv = 0, wide = 0;
+    int pareto = 0, desc = 0, json = 0, csv = 0, wide = 0, surfaces = 0;
     const struct arg_option options[] = {
         {"run", 0, ARG_STRING, &run, NULL},
         {"pareto", 0, ARG_FLAG, NULL, &pareto},
@@ -93,6 +157,7 @@ static int options_main(int argc, char **argv, struct facet_error *err)
         {"json", 0, ARG_FLAG, NULL, &json},
         {"csv", 0, ARG_FLAG, NULL, &csv},
         {"wide", 0, ARG_FLAG, NULL, &wide},
+        {"surfaces", 0, ARG_FLAG, NULL, &surfaces},
         {NULL, 0, ARG_FLAG, NULL, NULL},
     };
     const char *path;
@@ -103,6 +168,10 @@ static int options_main(int argc, char **argv, struct facet_error *err)
     if (json && csv)
         return facet_error_set(err, FACET_EINPUT,
             "options: choose one of --json and --csv");
+    if (surfaces && csv)
+        return facet_error_set(err, FACET_EINPUT,
+            "options --surfaces: a table or --json (a project's rows per "
+            "surface are in its option_surfaces table for CSV)");
     long run_id = 0, rows = 0;
     if (run && (rc = args_int(run, 1, 1L << 62, "--run", &run_id, err)))
         return rc;
@@ -125,6 +194,8 @@ static int options_main(int argc, char **argv, struct facet_error *err)
     struct listing listing;
     memset(&listing, 0, sizeof listing);
     listing.format = json ? LISTING_JSON : csv ? LISTING_CSV : LISTING_TABLE;
+    listing.surfaces = surfaces;
+    listing.store = store;
     if (rc == FACET_OK) {
         if (listing.format == LISTING_TABLE) {
             listing.listed[0] = (struct option_table_column){"run", 4, 2};
@@ -152,6 +223,10 @@ static int options_main(int argc, char **argv, struct facet_error *err)
         }
         struct option_query q = {run_id, pareto, filter, sort, desc, rows, 0};
         rc = store_options_query(store, &q, list_row, &listing, err);
+        if (rc == FACET_OK && listing.err.code != FACET_OK) {
+            *err = listing.err;
+            rc = err->code;
+        }
         if (listing.format == LISTING_JSON) {
             json_end_array(&listing.json);
             json_finish(&listing.json);
@@ -162,6 +237,7 @@ static int options_main(int argc, char **argv, struct facet_error *err)
             text_table_foot(stdout, &listing.table);
         }
     }
+    free(listing.surface);
     store_close(store);
     filter_free(filter);
     return rc;
@@ -170,7 +246,8 @@ static int options_main(int argc, char **argv, struct facet_error *err)
 const struct command cmd_options = {
     .name = "options",
     .usage = "DB [--run N] [--pareto] [--sort KEY[,KEY]] [--desc]\n"
-             "       [--where EXPR] [--limit N] [--wide] [--json|--csv]",
+             "       [--where EXPR] [--limit N] [--wide] [--surfaces] "
+             "[--json|--csv]",
     .summary = "List, filter and sort the design options of a result "
                "store.",
     .options =
@@ -182,6 +259,8 @@ const struct command cmd_options = {
         "  --where EXPR        e.g. 'cost < 1.5e6 and dp_area <= 900 or\n"
         "                      pareto' (columns: see README)\n"
         "  --limit N           at most N options\n"
+        "  --surfaces          a project's options with their rows per\n"
+        "                      surface (table or --json: \"surfaces\")\n"
         "  --json              one JSON array, every column\n"
         "  --csv               CSV with a header row, every column\n"
         "  --wide              every column of the table, whatever the\n"

@@ -10,68 +10,11 @@
 #include "args.h"
 #include "command.h"
 #include "option_text.h"
-#include "text_table.h"
+#include "surface_table.h"
 #include "core/out/report.h"
 #include "core/base/text.h"
 #include "study/study.h"
 #include "study/study_export.h"
-
-/* A project option's surfaces, a row each: its grid, panels by type, cost,
- * the moulds it starts and those its panels use, and its worst deviation,
- * gap and kink. */
-static void show_surfaces(const struct study_option *o)
-{
-    static const struct text_column heads[] = {
-        {"surface", "", 8, 1, 0, 0},
-        {"grid", "", 9, 0, 0, 0},
-        {"panels", "", 7, 0, 9, 0},
-        {"FP", "", 6, 0, 5, 0},
-        {"SP", "", 6, 0, 5, 0},
-        {"DP", "", 6, 0, 5, 0},
-        {"cost", "USD", 13, 0, 8, 0},
-        {"moulds", "started", 8, 0, 6, 0},
-        {"moulds", "used", 7, 0, 6, 0},
-        {"max dev", "mm", 8, 0, 7, 0},
-        {"max gap", "mm", 8, 0, 4, 0},
-        {"max kink", "deg", 9, 0, 4, 0},
-    };
-    enum { COLUMNS = sizeof heads / sizeof *heads };
-    struct text_column column[COLUMNS];
-    memcpy(column, heads, sizeof heads);
-    for (size_t i = 0; i < o->nsurfaces; i++) {
-        int len = (int)strlen(o->surfaces[i].name);
-        if (len > column[0].width)
-            column[0].width = len < 40 ? len : 40;
-    }
-    struct text_table t = {column, COLUMNS, {0}, 0, 0};
-    text_table_fit(&t, text_table_width(stdout, 0));
-    printf("\n");
-    text_table_head(stdout, &t);
-    for (size_t i = 0; i < o->nsurfaces; i++) {
-        const struct option_surface_row *r = &o->surface_rows[i];
-        const struct option_totals *s = &r->totals;
-        char text[COLUMNS][64], name[256];
-        const char *cell[COLUMNS];
-        text_for_terminal(o->surfaces[i].name, name, sizeof name);
-        snprintf(text[0], sizeof text[0], "%.40s", name);
-        snprintf(text[1], sizeof text[1], "%d x %d", r->nu, r->nv);
-        snprintf(text[2], sizeof text[2], "%zu", s->panels);
-        snprintf(text[3], sizeof text[3], "%zu", s->count[TYPE_FP]);
-        snprintf(text[4], sizeof text[4], "%zu", s->count[TYPE_SP]);
-        snprintf(text[5], sizeof text[5], "%zu", s->count[TYPE_DP]);
-        store_number_text(text[6], sizeof text[6], s->cost, 0, 1);
-        snprintf(text[7], sizeof text[7], "%zu", s->moulds);
-        snprintf(text[8], sizeof text[8], "%lld", (long long)r->moulds_used);
-        store_number_text(text[9], sizeof text[9], s->max_deviation * 1000,
-                          2, 0);
-        store_number_text(text[10], sizeof text[10], s->max_gap_mm, 2, 0);
-        store_number_text(text[11], sizeof text[11], s->max_kink_deg, 2, 0);
-        for (int k = 0; k < COLUMNS; k++)
-            cell[k] = text[k];
-        text_table_row(stdout, &t, cell);
-    }
-    text_table_foot(stdout, &t);
-}
 
 static int show_main(int argc, char **argv, struct facet_error *err)
 {
@@ -141,8 +84,11 @@ static int show_main(int argc, char **argv, struct facet_error *err)
             printf("%-16s %d%s\n", "Pareto rank", o.row.rank,
                    o.row.rank == 0 ? " (not ranked yet)" : "");
             option_text_totals(stdout, &o.totals, &o.classify);
-            if (o.nsurfaces > 0)
-                show_surfaces(&o);
+            if (o.nsurfaces > 0) {
+                printf("\n");
+                surface_table_print(stdout, o.surfaces, o.surface_rows,
+                                    o.nsurfaces);
+            }
             else
                 option_text_map(stdout, &o.panels);
         }

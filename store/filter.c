@@ -529,12 +529,12 @@ static int fail_unknown_name(struct parser *p, const struct token *t)
         if (!per_class)
             listed[nlisted++] = names[k];
     }
-    char list[400];
+    char list[460];
     size_t used = 0;
     for (size_t k = 0; k < nlisted && used < sizeof list; k++)
         used += list_name(list, sizeof list, used, listed, nlisted, k);
     return fail_at(p, t->at, "unknown column '%s' (columns: %s, "
-                   "CLASS_count, CLASS_area (e.g. saddle_area))",
+                   "CLASS_{count,area})",
                    shown(p, t, buf), list);
 }
 

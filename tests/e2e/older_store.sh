@@ -66,6 +66,37 @@ for key in moulds joint_length; do
     fi
 done
 
+# Migrated on to schema 8 (projects): the run intact, its options no
+# module (NULL), no surfaces recorded.
+same "(sqlite3: v4 migrated to 8, the run's options without a module)" \
+    "$(q 'SELECT (SELECT user_version FROM pragma_user_version), count(*), count(module_w), count(module_h), count(modules), (SELECT count(*) FROM surfaces), (SELECT count(*) FROM option_surfaces), (SELECT module_w_min IS NULL FROM runs) FROM options')" \
+    "8|4|0|0|0|0|0|1"
+
+# A run of schema 7 (the last before projects) and one of schema 3: both
+# open and migrate to 8 with their runs as they were.
+for version in 7 3; do
+    db=$WORK/v$version.db
+    "$FACET" optimize "$WORK/torus.obj" --db "$db" --u 4:5 --v 4:5 --threshold 3 >/dev/null 2>&1 || exit 1
+    before=$(sqlite3 "$db" 'SELECT id, name, status, surface_sha256, u_min, u_max, v_min, v_max, options, knee, hypervolume FROM runs;
+                             SELECT number, nu, nv, cost, rank FROM options ORDER BY number')
+    if [ "$version" = 7 ]; then
+        "$store_v4" "$db" 7 || exit 1
+    else
+        "$store_v4" "$db" || exit 1
+        sqlite3 "$db" "ALTER TABLE runs DROP COLUMN uv; ALTER TABLE runs DROP COLUMN warnings;
+                       ALTER TABLE runs DROP COLUMN store_panels; PRAGMA user_version = 3;"
+    fi
+    same "(the file is at schema $version)" "$(sqlite3 "$db" 'PRAGMA user_version')" "$version"
+    expect "schema $version: facet runs opens and migrates it" 0 "$FACET" runs "$db"
+    same "schema $version: migrated to 8, with the project tables" \
+        "$(sqlite3 "$db" "SELECT (SELECT user_version FROM pragma_user_version), count(*) FROM sqlite_master WHERE name IN ('surfaces', 'option_surfaces')")" "8|2"
+    same "schema $version: the run and its options as they were" \
+        "$(sqlite3 "$db" 'SELECT id, name, status, surface_sha256, u_min, u_max, v_min, v_max, options, knee, hypervolume FROM runs;
+                          SELECT number, nu, nv, cost, rank FROM options ORDER BY number')" "$before"
+    same "schema $version: no module, no surfaces for the old run" \
+        "$(sqlite3 "$db" 'SELECT count(module_w) + count(modules), (SELECT count(*) FROM surfaces), (SELECT count(module_w_min) FROM runs) FROM options')" "0|0|0"
+done
+
 # The workbench: the detail pane and the map's legend by mould family.
 . "$(dirname "$0")/tui_lib.sh"
 start 160 40 -- old.db

@@ -57,6 +57,25 @@ run "$FACET" show "$DB" --run 1 --option "$number"
 stdout_has "show: a row per surface" '^ *dome +1[01] x 7 '
 stdout_has "show: the module" 'module +2(\.00)? m x 3(\.00)? m'
 
+run "$FACET" options "$DB" --run 1 --where "module_w = 2 and module_h = 3 and threshold = 2" --surfaces
+stdout_has "options --surfaces: a row per surface under the option" '^ *hypar +1[01] x 7 '
+run "$FACET" options "$DB" --run 1 --limit 5 --surfaces --json
+/usr/bin/python3 - "$OUT" "$DB" >"$WORK/check.out" 2>&1 <<'PY'
+import json, sqlite3, sys
+rows = json.load(open(sys.argv[1]))
+db = sqlite3.connect(sys.argv[2])
+bad = 0
+for o in rows:
+    want = db.execute("SELECT f.name, s.nu, s.nv, s.panels, s.cost FROM option_surfaces s"
+                      " JOIN surfaces f ON f.run = s.run AND f.surface = s.surface"
+                      " WHERE s.run = 1 AND s.option = ? ORDER BY s.surface",
+                      (o["number"],)).fetchall()
+    got = [(s["name"], s["nu"], s["nv"], s["panels"], s["cost"]) for s in o["surfaces"]]
+    bad += got != [tuple(w) for w in want]
+sys.exit(1 if bad or len(rows) != 5 else 0)
+PY
+if [ $? -eq 0 ]; then pass "options --surfaces --json: each option's surfaces as stored"; else fail "options --surfaces --json: each option's surfaces as stored"; fi
+
 # 3. A project of one surface is the single surface: --module on the dome
 # alone gives what --u NU --v NV gives, NU and NV from its stored lengths.
 expect "one-surface project run" 0 "$FACET" optimize "$WORK/dome.obj" --db "$WORK/one.db" \
@@ -65,9 +84,9 @@ read -r nu nv <<<"$(sqlite3 -batch "$WORK/one.db" 'SELECT max(1, CAST(u_length /
 expect "the same grid on the single surface" 0 "$FACET" optimize "$WORK/dome.obj" --db "$WORK/single.db" \
     --u "$nu" --v "$nv" --threshold 3 --table 0
 metrics="panels, fp_count, sp_count, dp_count, fp_area, sp_area, dp_area, area, cost, planarity, max_deviation, max_panel_area, p_dist, feasible, joint_length, moulds, area_cost, panel_cost, joint_cost, mould_cost, max_gap, mean_gap, max_kink, mean_kink"
+want=$(sql "$WORK/single.db" "SELECT $metrics FROM options")
 same "one surface with --module: the single surface's option, every metric" \
-    "$(sql "$WORK/one.db" "SELECT $metrics FROM options")" \
-    "$(sql "$WORK/single.db" "SELECT $metrics FROM options")"
+    "$(sql "$WORK/one.db" "SELECT $metrics FROM options")" "${want:-(no option of the single surface)}"
 same "one surface with --module: its grid is the module's" \
     "$(sql "$WORK/one.db" 'SELECT nu, nv FROM option_surfaces')" "$nu|$nv"
 
@@ -147,3 +166,18 @@ same "--grid: every option gives the dome 5 x 4" \
 same "--grid: recorded with the surface" \
     "$(sql "$WORK/grid.db" "SELECT grid_nu, grid_nv FROM surfaces WHERE name = 'dome'")" "5|4"
 check "--grid: surface rows add up" "${CHECK[@]}" sums "$WORK/grid.db" 1
+
+# 8. The workbench opens a project run: its table of building options,
+# and the map of an option, surface by surface (tui_project.sh checks
+# its figures), never a crash.
+. "$HERE/tui_lib.sh"
+start 160 40 -- four.db
+check "tui: the project run listed" '^ +1 done'
+keys Enter
+check "tui: the project run's table" '^ Run 1 '
+keys K
+check "tui: its knee" 'knee option [0-9]+'
+keys Enter
+check "tui: a project option's map shows its first surface" 'surface 1 of 4: plane'
+keys F10
+check_exit "tui: quits cleanly after a project run"

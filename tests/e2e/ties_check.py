@@ -97,7 +97,9 @@ def check_order(path, run, sort, descending, listing, form):
         with open(listing, newline="") as f:
             reader = csv.reader(f)
             header = next(reader)
-            got = [{k: (math.inf if v == "" else float(v))
+            # An empty field is NULL: crowding's infinity, or a column the
+            # option has no value in (a single surface's module).
+            got = [{k: (None if v == "" else float(v))
                     for k, v in zip(header, row)} for row in reader]
     numbers = [int(g["number"]) for g in got]
     if numbers != want[:len(numbers)] or not numbers:
@@ -111,6 +113,8 @@ def check_order(path, run, sort, descending, listing, form):
         for c, v in g.items():
             if c == "run" or (c == "crowding" and (v is None or
                                                    math.isinf(v))):
+                continue
+            if v is None and r[c] is None:
                 continue
             if not same_double(v, r[c]):
                 problem("option %s %s: printed %r, stored %r"

@@ -14,10 +14,25 @@
  * cost, a 1 x 1 grid, one job) that store_run_create accepts. */
 void store_fixture_run(struct run_info *run);
 
+/* SQL that takes a current file back to schema version 7: the tables and
+ * columns version 8 added (projects), dropped (set user_version after
+ * it). */
+#define STORE_FIXTURE_UNDO_V8 \
+    "DROP TABLE option_surfaces; DROP TABLE surfaces;" \
+    "ALTER TABLE runs DROP COLUMN module_w_min;" \
+    "ALTER TABLE runs DROP COLUMN module_w_max;" \
+    "ALTER TABLE runs DROP COLUMN module_w_step;" \
+    "ALTER TABLE runs DROP COLUMN module_h_min;" \
+    "ALTER TABLE runs DROP COLUMN module_h_max;" \
+    "ALTER TABLE runs DROP COLUMN module_h_step;" \
+    "ALTER TABLE options DROP COLUMN module_w;" \
+    "ALTER TABLE options DROP COLUMN module_h;" \
+    "ALTER TABLE options DROP COLUMN modules;"
+
 /* SQL that takes a current file back to schema version 6: the columns
- * and indexes version 7 added (panels as built, gaps and kinks), dropped
- * (set user_version after it). */
-#define STORE_FIXTURE_UNDO_V7 \
+ * and indexes versions 7 (panels as built, gaps and kinks) and 8 added,
+ * dropped (set user_version after it). */
+#define STORE_FIXTURE_UNDO_V7 STORE_FIXTURE_UNDO_V8 \
     "DROP INDEX options_by_max_gap; DROP INDEX options_by_max_kink;" \
     "DROP INDEX options_by_sp_misfits;" \
     "ALTER TABLE runs DROP COLUMN sp_fit;" \

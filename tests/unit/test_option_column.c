@@ -92,6 +92,9 @@ static struct option_row option_k(int k)
     t->kinks_over = (size_t)(17 + k);
     t->sp_misfits = (size_t)(19 + k);
     t->sp_fitted = (size_t)(23 + k);
+    o.module_w = 1.25 + k;
+    o.module_h = 0.75 + k;
+    o.modules = (size_t)(2 + k);
     return o;
 }
 
@@ -131,6 +134,9 @@ static double by_hand(const struct option_row *o, const char *name)
         {"kinks_over", (double)t->kinks_over},
         {"sp_misfits", (double)t->sp_misfits},
         {"sp_fitted", (double)t->sp_fitted},
+        {"module_w", o->module_w},
+        {"module_h", o->module_h},
+        {"modules", (double)o->modules},
     };
     for (size_t k = 0; k < sizeof fields / sizeof fields[0]; k++)
         if (strcmp(fields[k].name, name) == 0)
@@ -262,8 +268,10 @@ static struct store *ranked_store(int64_t *run, struct option_row rows[ROWS],
         rows[k].crowding = crowding[k] = k == 0 ? INFINITY : 0.125 * k;
         rows[k].knee = k == 1;
     }
-    assert_int_equal(store_options_put(store, *run, rows, ROWS, &err),
-                     FACET_OK);
+    /* As a project's options (no surfaces): their module columns are
+     * written, which a single surface's are not. */
+    assert_int_equal(store_project_options_put(store, *run, rows, ROWS, NULL,
+                                               0, &err), FACET_OK);
     assert_int_equal(store_options_set_pareto(store, *run, numbers, rank,
                                               crowding, ROWS, 2, 0.5, &err),
                      FACET_OK);
@@ -444,6 +452,9 @@ static const char *stored_unit_by_name(const char *name)
         return "m";
     if (strcmp(name, "p_dist") == 0)
         return "m^4";
+    /* a project's module, its width and height in m (README) */
+    if (strcmp(name, "module_w") == 0 || strcmp(name, "module_h") == 0)
+        return "m";
     /* a joint's gap in mm, its kink in degrees (README: Panels as built) */
     if (n >= 4 && strcmp(name + n - 4, "_gap") == 0)
         return "mm";

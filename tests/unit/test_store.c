@@ -619,7 +619,7 @@ static const char *older_file(const char *name, const char *statements,
 }
 
 /* A file of schema version 1 (no views, no indexes, no runs.uv) is
- * brought up to the current version (7) when opened, and keeps its runs. */
+ * brought up to the current version (8) when opened, and keeps its runs. */
 static void test_migrates_older_schema(void **state)
 {
     (void)state;
@@ -649,7 +649,7 @@ static void test_migrates_older_schema(void **state)
                      " type = 'index' AND name LIKE 'options_by_%')",
                      -1, &s, NULL), SQLITE_OK);
     assert_int_equal(sqlite3_step(s), SQLITE_ROW);
-    assert_int_equal(sqlite3_column_int(s, 0), 7);
+    assert_int_equal(sqlite3_column_int(s, 0), 8);
     assert_int_equal(sqlite3_column_int(s, 1), info.pareto_options);
     assert_int_equal(sqlite3_column_int(s, 2), 14);
     sqlite3_finalize(s);
@@ -693,7 +693,7 @@ static void test_migrates_v3(void **state)
     sqlite3_bind_int64(s, 1, old);
     sqlite3_bind_int64(s, 2, run);
     assert_int_equal(sqlite3_step(s), SQLITE_ROW);
-    assert_int_equal(sqlite3_column_int(s, 0), 7);
+    assert_int_equal(sqlite3_column_int(s, 0), 8);
     assert_int_equal(sqlite3_column_int(s, 1), 1);
     assert_int_equal(sqlite3_column_int(s, 2), 1);
     assert_string_equal((const char *)sqlite3_column_text(s, 3), "plane");
@@ -960,7 +960,7 @@ static void test_migrates_v4(void **state)
     sqlite3_bind_int64(s, 1, old);
     sqlite3_bind_int64(s, 2, run);
     assert_int_equal(sqlite3_step(s), SQLITE_ROW);
-    assert_int_equal(sqlite3_column_int(s, 0), 7);
+    assert_int_equal(sqlite3_column_int(s, 0), 8);
     assert_int_equal(sqlite3_column_int(s, 1), 48);
     assert_int_equal(sqlite3_column_int(s, 2), sqlite3_column_int(s, 3));
     assert_true(sqlite3_column_int(s, 3) > 0);
@@ -1031,7 +1031,7 @@ static void test_migrates_v6(void **state)
     sqlite3_bind_int64(s, 1, old);
     sqlite3_bind_int64(s, 2, run);
     assert_int_equal(sqlite3_step(s), SQLITE_ROW);
-    assert_int_equal(sqlite3_column_int(s, 0), 7);
+    assert_int_equal(sqlite3_column_int(s, 0), 8);
     assert_int_equal(sqlite3_column_int(s, 1), 48);
     int n = sqlite3_column_int(s, 2);
     assert_true(n > 0);

@@ -1,0 +1,53 @@
+/*
+ * study_internal.h: what the study's files share (internal to study/):
+ * telling the stage, where a run's file may be now, and a project's
+ * part of a run (study_project.c).
+ */
+#ifndef FACET_STUDY_INTERNAL_H
+#define FACET_STUDY_INTERNAL_H
+
+#include "core/project/project.h"
+#include "core/project/project_search.h"
+#include "study.h"
+
+/* Tells hooks (may be NULL) what the study is doing now. */
+void study_stage(const struct study_hooks *hooks, const char *what);
+
+/* The places a run's file may be, first first: as stored (absolute since
+ * runs record it so; relative to the working folder in older files), then
+ * a relative path against the database's folder, then the file's name in
+ * the database's folder (a database copied with its files beside it).
+ * Returns how many it wrote into place[]. */
+int study_surface_candidates(const char *db_path, const char *stored,
+                             char place[3][4096]);
+
+/* Reads and prepares the project of request into *project, its surface
+ * rows into *rows (malloc'ed, free()), and what the run records of it
+ * into run: the first file's SHA-256 (its path is there already), the
+ * building's area and triangles, the first surface's UV, the module
+ * range. Release project with project_close, also after a failure. */
+int study_project_read(const struct study_request *request,
+                       const struct study_hooks *hooks,
+                       struct project *project, struct surface_row **rows,
+                       struct run_info *run, struct facet_error *err);
+
+/* The search over project's modules that request asks for, its grid
+ * overrides found by name (FACET_EINPUT for a name no surface has). */
+int study_project_search(const struct study_request *request,
+                         const struct project *project,
+                         struct project_search *search,
+                         struct facet_error *err);
+
+/* Opens and prepares the project of run (a project run) into *project,
+ * each of its files looked for as study_open_surface looks for a surface
+ * and refused unless its SHA-256 is the one recorded; then checks that
+ * the files still hold the surfaces recorded, by name, with the UV they
+ * took. *overrides (malloc'ed, nsurfaces) receives the grids the run gave
+ * surfaces whatever the module (nu 0: none). Release with project_close
+ * and free, also after a failure. */
+int study_project_reopen(struct store *store, const struct run_info *run,
+                         struct project *project,
+                         struct surface_grid **overrides,
+                         struct facet_error *err);
+
+#endif
