@@ -4,93 +4,10 @@
  */
 #include "study_project_view.h"
 
-#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <unistd.h>
 
-#include "core/base/sha256.h"
-
-static void stage(const struct study_hooks *hooks, const char *what)
-{
-    if (hooks != NULL && hooks->stage != NULL)
-        hooks->stage(hooks->context, what);
-}
-
-/* Where the run's file stored may be now, first first: as stored, then
- * its name in the folder of the database at db_path. Returns how many it
- * wrote into place[] (1 or 2). */
-static int file_places(const char *db_path, const char *stored,
-                       char place[2][4096])
-{
-    snprintf(place[0], sizeof place[0], "%s", stored);
-    const char *slash = strrchr(db_path, '/');
-    int folder = slash ? (int)(slash - db_path + 1) : 0;
-    const char *name = strrchr(stored, '/');
-    name = name ? name + 1 : stored;
-    int n = snprintf(place[1], sizeof place[1], "%.*s%s", folder, db_path,
-                     name);
-    if (n <= 0 || (size_t)n >= sizeof place[1] ||
-        strcmp(place[1], place[0]) == 0)
-        return 1;
-    return 2;
-}
-
-/* The file of surface row r, where it is now, into path: the first place
- * whose content has the SHA-256 the run recorded. */
-static int locate_file(const struct store *store, int64_t run,
-                       const struct surface_row *r, char path[4096],
-                       struct facet_error *err)
-{
-    char place[2][4096];
-    int n = file_places(store_path(store), r->file, place);
-    int changed = 0;
-    for (int k = 0; k < n; k++) {
-        if (access(place[k], F_OK) != 0)
-            continue;
-        char digest[65];
-        int rc = sha256_file(place[k], digest, err);
-        if (rc != FACET_OK)
-            return rc;
-        if (strcmp(digest, r->file_sha256) == 0) {
-            memcpy(path, place[k], sizeof place[k]);
-            return FACET_OK;
-        }
-        changed = 1;
-    }
-    return facet_error_set(err, FACET_EINPUT,
-        changed ? "%s: the file has changed since run %lld was made from "
-                  "it (SHA-256 was %.12s...)"
-                : "%s: no such file (run %lld's, SHA-256 %.12s..., nor "
-                  "beside the database)",
-        r->file, (long long)run, r->file_sha256);
-}
-
-/* Opens the files of the surfaces rows[0..n) (each file once, in order)
- * into project, unprepared. */
-static int open_files(const struct store *store, const struct run_info *run,
-                      const struct surface_row *rows, size_t n,
-                      struct project *project, struct facet_error *err)
-{
-    char (*place)[4096] = calloc(n, sizeof *place);
-    const char **files = calloc(n, sizeof *files);
-    size_t nfiles = 0;
-    int rc = place && files ? FACET_OK
-                            : facet_error_set(err, FACET_EWORK,
-                                              "out of memory");
-    for (size_t i = 0; rc == FACET_OK && i < n; i++) {
-        if (i > 0 && strcmp(rows[i].file, rows[i - 1].file) == 0)
-            continue;
-        rc = locate_file(store, run->id, &rows[i], place[nfiles], err);
-        files[nfiles] = place[nfiles];
-        nfiles++;
-    }
-    if (rc == FACET_OK)
-        rc = project_open(files, nfiles, run->units, project, err);
-    free(place);
-    free(files);
-    return rc;
-}
+#include "study_internal.h"
 
 int study_project_view_open(struct store *store, const struct run_info *run,
                             const struct study_hooks *hooks,
@@ -109,35 +26,20 @@ int study_project_view_open(struct store *store, const struct run_info *run,
     size_t n = 0;
     if (rc == FACET_OK)
         rc = store_surfaces_get(store, run->id, &view->surfaces, &n, err);
-    if (rc == FACET_OK && n == 0)
-        rc = facet_error_set(err, FACET_EINPUT,
-            "run %lld: a project run without its surfaces recorded",
-            (long long)run->id);
-    if (rc == FACET_OK)
-        rc = store_run_setting_check(run, RUN_SETTING_UV, err);
     if (rc == FACET_OK) {
-        stage(hooks, "checking and reading the project's files");
-        rc = open_files(store, run, view->surfaces, n, &view->project, err);
-    }
-    if (rc == FACET_OK) {
-        stage(hooks, "preparing the project's surfaces (UV, curvature)");
-        rc = project_prepare(&view->project, flip, run->uv, err);
+        /* the files found, checked and read: most of the time, with
+         * preparing (no stage of its own there to tell) */
+        study_stage(hooks, "reading, checking and preparing the project's "
+                    "surfaces (UV, curvature)");
+        struct surface_grid *overrides = NULL;
+        rc = study_project_reopen(store, run, &view->project, &overrides,
+                                  err);
+        free(overrides);
     }
     if (rc == FACET_OK && view->project.nsurfaces != n)
         rc = facet_error_set(err, FACET_EINPUT,
             "run %lld: its files hold %zu surfaces, the run %zu",
             (long long)run->id, view->project.nsurfaces, n);
-    for (size_t i = 0; rc == FACET_OK && i < n; i++) {
-        const struct project_surface *ps = &view->project.surfaces[i];
-        const struct surface_row *r = &view->surfaces[i];
-        if (strcmp(ps->name, r->name) != 0 ||
-            ps->surface.param.method != r->uv_method)
-            rc = facet_error_set(err, FACET_EINPUT,
-                "run %lld: surface %zu is '%s' with UV %s, the run's '%s' "
-                "with UV %s", (long long)run->id, i + 1, ps->name,
-                param_method_name(ps->surface.param.method), r->name,
-                param_method_name(r->uv_method));
-    }
     return rc;
 }
 

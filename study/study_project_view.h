@@ -34,14 +34,13 @@ struct study_project_view {
 };
 
 /* Opens and prepares the project of run (a project run: store_run_is_
- * project) into *view. Each file the run recorded (the surfaces table) is
- * looked for where it was, then beside store's file (as
- * study_open_surface looks for a surface) and refused unless its SHA-256
- * is the one recorded; the surfaces it holds must be the run's, by name
- * and UV. hooks (may be NULL) hears the stages ("checking the project's
- * files", "preparing the project's surfaces (UV, curvature)"). Returns
- * FACET_OK, FACET_EINPUT for a run of a single surface, a file missing or
- * changed, FACET_EWORK when out of memory, with err naming the file. */
+ * project) into *view, with study_project_reopen (study_internal.h):
+ * each file the run recorded (the surfaces table) looked for where it
+ * was, then beside store's file, and refused unless its SHA-256 is the
+ * one recorded; the surfaces it holds must be the run's, by name and UV.
+ * hooks (may be NULL) hears the stage. Returns FACET_OK, FACET_EINPUT for
+ * a run of a single surface, a file missing or changed, FACET_EWORK when
+ * out of memory, with err naming the file. */
 int study_project_view_open(struct store *store, const struct run_info *run,
                             const struct study_hooks *hooks,
                             struct study_project_view *view,
