@@ -71,6 +71,8 @@ struct tui_mouse {
 };
 
 struct tui_job;  /* a New run working in a thread (job.h) */
+struct tui_project_load;  /* a project prepared in a thread
+                             (project_load.h) */
 
 struct tui_app {
     struct store *store;
@@ -103,6 +105,12 @@ struct tui_app {
                                      (store/snapshot.h) until the ticks
                                      have read the run too */
     struct timespec job_sampled;
+    /* The project of the run whose project options' maps are browsed
+     * (project_run), prepared once for all of them; NULL when none. It
+     * goes when a map of another run's project needs the room, and when
+     * the stack is back at its first screen. */
+    struct tui_project_load *project;
+    int64_t project_run;
 };
 
 /* Pushes screen (NULL: nothing, the constructor reported its error). */
@@ -145,6 +153,14 @@ struct tui_screen *screen_runs_new(struct tui_app *app);
 struct tui_screen *screen_options_new(struct tui_app *app, int64_t run);
 struct tui_screen *screen_map_new(struct tui_app *app, int64_t run,
                                   int64_t option);
+/* The map of option of a project run opened at its surface (0-based; a
+ * single surface's option ignores it). */
+struct tui_screen *screen_map_at(struct tui_app *app, int64_t run,
+                                 int64_t option, int surface);
+/* The surfaces of option of a project run, a row each (option_surfaces):
+ * grid, panels, FP/SP/DP, cost, moulds, largest deviation, gap, kink. */
+struct tui_screen *screen_surfaces_new(struct tui_app *app, int64_t run,
+                                       int64_t option);
 struct tui_screen *screen_scatter_new(struct tui_app *app,
                                       struct table_model *model);
 /* Parallel coordinates over model (the options table's, borrowed): its

@@ -4,6 +4,7 @@
 #include "map_model.h"
 
 #include <math.h>
+#include <stdio.h>
 
 #include "core/classify/classify.h"
 
@@ -218,4 +219,21 @@ void map_cell_of(const struct panelization *p, int cols, int rows, int i,
     *c = (int)floor((i + 0.5) * cols / p->nu);
     int rb = (int)floor((j + 0.5) * rows / p->nv);
     *r = rows - 1 - rb;
+}
+
+int map_surface_step(int current, int n, int step)
+{
+    int k = current + step;
+    if (k < 0)
+        k = 0;
+    if (k > n - 1)
+        k = n - 1;
+    return k < 0 ? 0 : k;
+}
+
+void map_surface_title(char *out, size_t size, int k, int n,
+                       const char *name, int nu, int nv)
+{
+    snprintf(out, size, "surface %d of %d: %s (%d x %d)", k + 1, n, name,
+             nu, nv);
 }

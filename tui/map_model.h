@@ -9,6 +9,8 @@
 #ifndef FACET_TUI_MAP_MODEL_H
 #define FACET_TUI_MAP_MODEL_H
 
+#include <stddef.h>
+
 #include "core/panel/panel.h"
 
 /* A terminal character is about twice as tall as it is wide. */
@@ -84,5 +86,16 @@ size_t map_family_size(const struct panelization *p, int family);
  * cell (i, j) falls in (r from v's top). */
 void map_cell_of(const struct panelization *p, int cols, int rows, int i,
                  int j, int *c, int *r);
+
+/* The surface a project option's map shows after step (+1 the next, -1
+ * the previous) from current, of n (n >= 1): clamped to 0 .. n-1, never
+ * wrapping round (the header's "surface K of N" is a place in the
+ * building's order, and the last surface is not followed by the first). */
+int map_surface_step(int current, int n, int step);
+
+/* The header of surface k (0-based) of n, name with grid nu x nv:
+ * "surface K of N: NAME (NU x NV)", K counted from 1. */
+void map_surface_title(char *out, size_t size, int k, int n,
+                       const char *name, int nu, int nv);
 
 #endif

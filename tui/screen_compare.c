@@ -267,6 +267,15 @@ static void load_maps(struct compare_screen *s, struct tui_app *app)
                      err.message);
         return;
     }
+    if (store_run_is_project(&run)) {
+        /* the panels of a building are the panel map's, surface by
+         * surface */
+        for (int k = 0; k < s->n; k++)
+            snprintf(s->map_error[k], sizeof s->map_error[k],
+                     "no map: a project's option; its panel map (Enter "
+                     "on the table) pages its surfaces");
+        return;
+    }
     struct surface surface;
     int opened = 0, open_failed = 0;
     memset(&surface, 0, sizeof surface);

@@ -23,13 +23,27 @@
 #include "map_model.h"
 #include "study/study.h"
 #include "study/study_export.h"
+#include "project_load.h"
 
 struct map_screen {
     struct tui_screen base;
     struct run_info run;
     struct option_row option;
-    struct panelization panels;
-    struct option_totals totals;
+    /* What the map shows: a single surface's own panels and the option's
+     * totals, or one surface of a project option's building. */
+    const struct panelization *panels;
+    const struct option_totals *totals;
+    struct panelization own;       /* a single surface's panels */
+    struct option_totals own_totals;
+    /* A project run's option (issue 17): its building evaluated over the
+     * project app->project holds, surface by surface ([ and ]). */
+    int project;
+    int loading;                   /* app->project is being prepared */
+    char failed[sizeof ((struct facet_error *)0)->message];  /* why no map */
+    struct project_option building;
+    struct surface_row *surfaces;  /* the run's, as stored (names) */
+    size_t nsurfaces;
+    int surface;                   /* shown, 0-based */
     enum map_colour colour;  /* c cycles type, class, mould family, gap,
                                 kink */
     double bound[MAP_LEVELS];  /* by gap or kink: the levels' bounds */
@@ -53,6 +67,8 @@ static const struct tui_key_help map_help[] = {
     {"Z", "zoom out, back to the whole grid fitted to the screen"},
     {"e, F9", "export: PREFIX.obj (+ .mtl), PREFIX.csv and PREFIX.svg; "
               "end the prefix with ! to overwrite"},
+    {"] / [", "a project's option: the next / previous surface of the "
+              "building"},
     {NULL, NULL},
 };
 
@@ -67,11 +83,11 @@ static const char *const class_label[CLASS_COUNT] = {
 
 static const struct panel *panel_at(const struct map_screen *s, int i, int j)
 {
-    if (i < 0 || j < 0 || i >= s->panels.nu || j >= s->panels.nv)
+    if (i < 0 || j < 0 || i >= s->panels->nu || j >= s->panels->nv)
         return NULL;
-    int k = s->panels.cell_panel[(size_t)j * (size_t)s->panels.nu +
+    int k = s->panels->cell_panel[(size_t)j * (size_t)s->panels->nu +
                                  (size_t)i];
-    return k >= 0 ? &s->panels.panels[k] : NULL;
+    return k >= 0 ? &s->panels->panels[k] : NULL;
 }
 
 /* The letter and colour of mould family k: eight colours and 36 letters
@@ -81,6 +97,15 @@ static void family_look(int k, char *letter, attr_t *attr)
     static const char digits[] = "0123456789abcdefghijklmnopqrstuvwxyz";
     *letter = digits[k % 36];
     *attr = tui_attr(ROLE_CLASS0 + k % CLASS_COUNT);
+}
+
+/* The panels of mould family k: of the whole building for a project's
+ * option (its families are the building's), else of the surface. */
+static size_t family_size(const struct map_screen *s, int k)
+{
+    if (s->project && k >= 0 && (size_t)k < s->building.families.nfamilies)
+        return s->building.families.size[k];
+    return map_family_size(s->panels, k);
 }
 
 /* 1 when the map colours by gap or kink. */
@@ -104,20 +129,20 @@ static void set_bounds(struct map_screen *s)
         return;
     double limit = joint_limit(s);
     map_level_bounds(isnan(limit) ? 0 : limit,
-                     s->colour == MAP_BY_KINK ? s->totals.max_kink_deg
-                                              : s->totals.max_gap_mm,
+                     s->colour == MAP_BY_KINK ? s->totals->max_kink_deg
+                                              : s->totals->max_gap_mm,
                      s->bound);
 }
 
 /* The levels of the gap or kink colouring, their bounds and panels. */
 static void draw_joint_legend(struct map_screen *s, int y, int x, int width)
 {
-    const struct option_totals *t = &s->totals;
+    const struct option_totals *t = s->totals;
     int kink = s->colour == MAP_BY_KINK;
     const char *unit = kink ? "deg" : "mm";
     size_t count[MAP_LEVELS] = {0}, unknown = 0;
-    for (size_t k = 0; k < s->panels.npanels; k++) {
-        int level = map_level(map_panel_measure(&s->panels.panels[k],
+    for (size_t k = 0; k < s->panels->npanels; k++) {
+        int level = map_level(map_panel_measure(&s->panels->panels[k],
                                                 s->colour), s->bound);
         if (level < 0)
             unknown++;
@@ -153,7 +178,7 @@ static void draw_joint_legend(struct map_screen *s, int y, int x, int width)
 
 static void draw_legend(struct map_screen *s, int y, int x, int width)
 {
-    const struct option_totals *t = &s->totals;
+    const struct option_totals *t = s->totals;
     tui_put(y++, x, width, tui_attr(ROLE_HEADER),
             s->colour == MAP_BY_CLASS ? " class              count       m^2"
             : s->colour == MAP_BY_MOULD ? " moulds           families  panels"
@@ -185,6 +210,10 @@ static void draw_legend(struct map_screen *s, int y, int x, int width)
             tui_putf(y++, x, width, A_NORMAL,
                      "   largest family %zu, %zu of one", t->largest_family,
                      t->singleton_families);
+        if (s->project)
+            tui_putf(y++, x, width, A_NORMAL,
+                     "   started here; %zu used here",
+                     s->building.surfaces[s->surface].moulds_used);
         tui_putf(y++, x, width, A_NORMAL, "   (greedy: at most this many)");
     } else if (s->colour == MAP_BY_CLASS) {
         for (int c = 0; c < CLASS_COUNT; c++) {
@@ -216,20 +245,69 @@ static void draw_legend(struct map_screen *s, int y, int x, int width)
              t->max_panel_area, t->feasible ? "feasible" : "infeasible");
 }
 
+static const char *colour_name(enum map_colour colour)
+{
+    return colour == MAP_BY_CLASS ? "class"
+           : colour == MAP_BY_MOULD ? "mould family"
+           : colour == MAP_BY_GAP ? "worst gap"
+           : colour == MAP_BY_KINK ? "worst kink" : "type";
+}
+
+/* A project option's map before its building shows: the stage of the
+ * preparing and its seconds, or why it failed. */
+static void draw_waiting(struct map_screen *s, struct tui_app *app,
+                         int width)
+{
+    tui_fill(0, 0, width, tui_attr(ROLE_TITLE));
+    tui_putf(0, 0, width, tui_attr(ROLE_TITLE),
+             " Panel map: option %lld of run %lld | a project of several "
+             "surfaces", (long long)s->option.number, (long long)s->run.id);
+    if (!s->loading) {
+        tui_put(2, 1, width - 1, tui_attr(ROLE_ERROR), "no map:");
+        tui_put(3, 1, width - 1, A_NORMAL, s->failed);
+        return;
+    }
+    struct tui_project_load_state st;
+    if (app->project == NULL)
+        return;  /* the next tick starts it again */
+    tui_project_load_state(app->project, &st);
+    char seconds[32];
+    tui_fmt_elapsed(seconds, sizeof seconds, st.seconds);
+    tui_putf(2, 1, width - 1, A_NORMAL, "Preparing run %lld's project once "
+             "for the maps of its options:", (long long)s->run.id);
+    tui_putf(3, 1, width - 1, tui_attr(ROLE_STATUS), "%s ... %s",
+             st.stage, seconds);
+    tui_put(5, 1, width - 1, tui_attr(ROLE_DIM),
+            "q goes back; the project is kept while this run is browsed");
+}
+
 static void map_draw(struct tui_screen *base, struct tui_app *app,
                      int height, int width)
 {
     struct map_screen *s = (struct map_screen *)base;
-    int nu = s->panels.nu, nv = s->panels.nv;
+    if (s->project && s->building.nsurfaces == 0) {
+        draw_waiting(s, app, width);
+        return;
+    }
+    int nu = s->panels->nu, nv = s->panels->nv;
     tui_fill(0, 0, width, tui_attr(ROLE_TITLE));
-    tui_putf(0, 0, width, tui_attr(ROLE_TITLE),
-             " Panel map: option %lld of run %lld | grid %d x %d | t %.2f mm "
-             "| by %s", (long long)s->option.number, (long long)s->run.id,
-             nu, nv, s->option.threshold_mm,
-             s->colour == MAP_BY_CLASS ? "class"
-             : s->colour == MAP_BY_MOULD ? "mould family"
-             : s->colour == MAP_BY_GAP ? "worst gap"
-             : s->colour == MAP_BY_KINK ? "worst kink" : "type");
+    if (s->project) {
+        char title[512];
+        map_surface_title(title, sizeof title, s->surface,
+                          (int)s->building.nsurfaces,
+                          s->surfaces[s->surface].name, nu, nv);
+        /* "Map" alone: at 80 columns the surface's name needs the room */
+        tui_putf(0, 0, width, tui_attr(ROLE_TITLE),
+                 " Map: option %lld of run %lld | %s | t %.2f mm | by %s",
+                 (long long)s->option.number, (long long)s->run.id, title,
+                 s->option.threshold_mm, colour_name(s->colour));
+    } else {
+        tui_putf(0, 0, width, tui_attr(ROLE_TITLE),
+                 " Panel map: option %lld of run %lld | grid %d x %d | t "
+                 "%.2f mm | by %s", (long long)s->option.number,
+                 (long long)s->run.id, nu, nv, s->option.threshold_mm,
+                 colour_name(s->colour));
+    }
     int legend = width >= 70 ? 36 : 0;
     int map_w = width - legend - 2, map_h = height - 5;
     if (map_h < 1)
@@ -254,13 +332,13 @@ static void map_draw(struct tui_screen *base, struct tui_app *app,
     }
     int cursor_c = -1, cursor_r = -1;
     if (zoom == 0)
-        map_cell_of(&s->panels, cols, lines, s->ci, s->cj, &cursor_c,
+        map_cell_of(s->panels, cols, lines, s->ci, s->cj, &cursor_c,
                     &cursor_r);
     for (int r = 0; r < lines; r++) {
         for (int c = 0; c < cols; c++) {
             int value, here;
             if (zoom == 0) {
-                value = map_cell_value(&s->panels, cols, lines, c, r,
+                value = map_cell_value(s->panels, cols, lines, c, r,
                                        s->colour, s->bound);
                 here = c == cursor_c && r == cursor_r;
             } else {
@@ -349,9 +427,9 @@ static void map_draw(struct tui_screen *base, struct tui_app *app,
                  p->deviation * 1000, fit);
     } else if (s->colour == MAP_BY_MOULD && p->mould >= 0)
         tui_putf(y + 2, 0, width, A_NORMAL,
-                 " mould family %d (%zu panels) | deviation %.2f mm",
-                 p->mould, map_family_size(&s->panels, p->mould),
-                 p->deviation * 1000);
+                 " mould family %d (%zu panels%s) | deviation %.2f mm",
+                 p->mould, family_size(s, p->mould),
+                 s->project ? " in the building" : "", p->deviation * 1000);
     else if (s->colour == MAP_BY_MOULD && p->type != TYPE_FP)
         /* a curved panel of a run an older Facet stored (NULL) */
         tui_putf(y + 2, 0, width, A_NORMAL,
@@ -368,6 +446,20 @@ static void map_draw(struct tui_screen *base, struct tui_app *app,
                  p->deviation * 1000);
 }
 
+/* Shows surface k of the building, its cursor at the top left. */
+static void show_surface(struct map_screen *s, int k)
+{
+    const struct project_surface_option *so = &s->building.surfaces[k];
+    s->surface = k;
+    s->panels = &so->panels;
+    s->totals = &so->totals;
+    s->ci = 0;
+    s->cj = s->panels->nv > 0 ? s->panels->nv - 1 : 0;
+    s->left = s->top = 0;
+    map_surface_size(s->panels, &s->width_m, &s->height_m);
+    set_bounds(s);
+}
+
 /* Moves the cursor by (di, dj), clamped to the grid. */
 static void move_cursor(struct map_screen *s, int di, int dj)
 {
@@ -375,12 +467,12 @@ static void move_cursor(struct map_screen *s, int di, int dj)
     s->cj += dj;
     if (s->ci < 0)
         s->ci = 0;
-    if (s->ci >= s->panels.nu)
-        s->ci = s->panels.nu - 1;
+    if (s->ci >= s->panels->nu)
+        s->ci = s->panels->nu - 1;
     if (s->cj < 0)
         s->cj = 0;
-    if (s->cj >= s->panels.nv)
-        s->cj = s->panels.nv - 1;
+    if (s->cj >= s->panels->nv)
+        s->cj = s->panels->nv - 1;
 }
 
 /* Splits "PREFIX" or "PREFIX!" (overwrite) into the export's paths. */
@@ -441,8 +533,30 @@ static enum tui_result map_key(struct tui_screen *base, struct tui_app *app,
     int page = LINES - 7 > 1 ? LINES - 7 : 1;
     if (s->exporting)
         return export_key(s, app, key);
+    if (s->project && s->building.nsurfaces == 0)
+        return RESULT_UNHANDLED;  /* preparing, or failed: q goes back */
     switch (key) {
+    case ']': case '[': {
+        if (!s->project) {
+            tui_status(app, "%c: a single surface's option has no other "
+                       "surface to go to", key);
+            return RESULT_HANDLED;
+        }
+        int n = (int)s->building.nsurfaces;
+        int k = map_surface_step(s->surface, n, key == ']' ? 1 : -1);
+        if (k == s->surface)
+            tui_status(app, "surface %d of %d is the %s", k + 1, n,
+                       key == ']' ? "last" : "first");
+        else
+            show_surface(s, k);
+        return RESULT_HANDLED;
+    }
     case 'e': case KEY_F(9): {
+        if (s->project) {
+            tui_status(app, "export: not for a project's option yet (o on "
+                       "the options table lists its surfaces)");
+            return RESULT_HANDLED;
+        }
         char prefix[128];
         snprintf(prefix, sizeof prefix, "facet-run%lld-option%lld",
                  (long long)s->run.id, (long long)s->option.number);
@@ -473,7 +587,7 @@ static enum tui_result map_key(struct tui_screen *base, struct tui_app *app,
         s->ci = 0;
         return RESULT_HANDLED;
     case '$':
-        s->ci = s->panels.nu - 1;
+        s->ci = s->panels->nu - 1;
         return RESULT_HANDLED;
     default:
         break;
@@ -488,10 +602,10 @@ static enum tui_result map_key(struct tui_screen *base, struct tui_app *app,
     case ACTION_PAGE_DOWN: move_cursor(s, 0, -page); break;
     case ACTION_TOP:
         s->ci = 0;
-        s->cj = s->panels.nv - 1;
+        s->cj = s->panels->nv - 1;
         break;
     case ACTION_BOTTOM:
-        s->ci = s->panels.nu - 1;
+        s->ci = s->panels->nu - 1;
         s->cj = 0;
         break;
     default:
@@ -503,19 +617,106 @@ static enum tui_result map_key(struct tui_screen *base, struct tui_app *app,
 static void map_destroy(struct tui_screen *base)
 {
     struct map_screen *s = (struct map_screen *)base;
-    panelization_free(&s->panels);
+    panelization_free(&s->own);
+    project_option_free(&s->building);
+    free(s->surfaces);
     free(s);
+}
+
+/* Gives the map the building once app->project is prepared: evaluates
+ * the option over it (study_project_view_option). Returns 1 when the
+ * screen changed. */
+static int project_start(struct map_screen *s, struct tui_app *app,
+                         struct facet_error *err);
+
+static int project_poll(struct map_screen *s, struct tui_app *app)
+{
+    if (!s->loading)
+        return 0;
+    if (app->project == NULL || app->project_run != s->run.id) {
+        /* another run's map took the room: prepare this run's again */
+        struct facet_error err;
+        if (project_start(s, app, &err) != FACET_OK) {
+            s->loading = 0;
+            snprintf(s->failed, sizeof s->failed, "%s", err.message);
+        }
+        return 1;
+    }
+    struct tui_project_load_state st;
+    tui_project_load_state(app->project, &st);
+    if (!st.finished)
+        return 1;  /* the seconds move */
+    s->loading = 0;
+    struct facet_error err = st.err;
+    const struct study_project_view *view =
+        tui_project_load_view(app->project);
+    int rc = st.rc;
+    if (rc == FACET_OK)
+        rc = study_project_view_option(app->store, view, s->option.number,
+                                       &s->building, &err);
+    if (rc == FACET_OK && (s->building.nsurfaces == 0 ||
+                           s->building.nsurfaces != s->nsurfaces))
+        rc = facet_error_set(&err, FACET_EWORK, "the project has %zu "
+                             "surfaces, the run %zu",
+                             s->building.nsurfaces, s->nsurfaces);
+    if (rc != FACET_OK) {
+        snprintf(s->failed, sizeof s->failed, "%s", err.message);
+        tui_error(app, "panel map: %s", err.message);
+        if (st.rc != FACET_OK) {
+            /* not kept: the next map tries again (a file put back) */
+            tui_project_load_free(app->project);
+            app->project = NULL;
+            app->project_run = 0;
+        }
+        return 1;
+    }
+    int k = s->surface;
+    show_surface(s, k >= 0 && (size_t)k < s->building.nsurfaces ? k : 0);
+    return 1;
+}
+
+/* Starts preparing the run's project unless app->project holds it
+ * already (prepared or being prepared). */
+static int project_start(struct map_screen *s, struct tui_app *app,
+                         struct facet_error *err)
+{
+    if (app->project != NULL && app->project_run != s->run.id) {
+        tui_project_load_free(app->project);
+        app->project = NULL;
+        app->project_run = 0;
+    }
+    if (app->project == NULL) {
+        int rc = tui_project_load_start(app->db_path, s->run.id,
+                                        &app->project, err);
+        if (rc != FACET_OK)
+            return rc;
+        app->project_run = s->run.id;
+    }
+    s->loading = 1;
+    project_poll(s, app);
+    return FACET_OK;
+}
+
+static int map_tick(struct tui_screen *base, struct tui_app *app)
+{
+    return project_poll((struct map_screen *)base, app);
 }
 
 static const struct tui_screen_class map_class = {
     "Panel map", map_help,
     {"Help", "Colour", NULL, NULL, NULL, NULL, NULL, NULL, "Export",
      "Quit"},
-    map_draw, map_key, NULL, map_destroy,
+    map_draw, map_key, map_tick, map_destroy,
 };
 
 struct tui_screen *screen_map_new(struct tui_app *app, int64_t run,
                                   int64_t option)
+{
+    return screen_map_at(app, run, option, 0);
+}
+
+struct tui_screen *screen_map_at(struct tui_app *app, int64_t run,
+                                 int64_t option, int surface)
 {
     struct map_screen *s = calloc(1, sizeof *s);
     struct facet_error err;
@@ -524,21 +725,32 @@ struct tui_screen *screen_map_new(struct tui_app *app, int64_t run,
         return NULL;
     }
     s->base.cls = &map_class;
+    s->panels = &s->own;
+    s->totals = &s->own_totals;
     int rc = store_run_get(app->store, run, &s->run, &err);
     if (rc == FACET_OK)
         rc = store_option_get(app->store, run, option, &s->option, &err);
-    if (rc == FACET_OK)
-        rc = study_option_panels(app->store, &s->run, NULL, option,
-                                 &s->panels, &s->totals, &err);
-    if (rc == FACET_OK && (s->panels.nu < 1 || s->panels.nv < 1))
-        rc = facet_error_set(&err, FACET_EWORK, "option %lld has no panels",
-                             (long long)option);
+    if (rc == FACET_OK && store_run_is_project(&s->run)) {
+        s->project = 1;
+        s->surface = surface;
+        rc = store_surfaces_get(app->store, run, &s->surfaces,
+                                &s->nsurfaces, &err);
+        if (rc == FACET_OK)
+            rc = project_start(s, app, &err);
+    } else if (rc == FACET_OK) {
+        rc = study_option_panels(app->store, &s->run, NULL, option, &s->own,
+                                 &s->own_totals, &err);
+        if (rc == FACET_OK && (s->own.nu < 1 || s->own.nv < 1))
+            rc = facet_error_set(&err, FACET_EWORK,
+                                 "option %lld has no panels",
+                                 (long long)option);
+        s->cj = s->own.nv - 1;  /* top left, as the map reads */
+        map_surface_size(s->panels, &s->width_m, &s->height_m);
+    }
     if (rc != FACET_OK) {
         tui_error(app, "panel map: %s", err.message);
         map_destroy(&s->base);
         return NULL;
     }
-    s->cj = s->panels.nv - 1;  /* top left, as the map reads */
-    map_surface_size(&s->panels, &s->width_m, &s->height_m);
     return &s->base;
 }

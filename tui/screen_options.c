@@ -63,7 +63,10 @@ static const struct tui_key_help options_help[] = {
     {"Space", "mark / unmark the option for Compare"},
     {"u", "clear every mark"},
     {"c, F7", "compare the marked options (2 to 4)"},
-    {"Enter, m, F8", "panel map of the option"},
+    {"Enter, m, F8", "panel map of the option (a project's: surface by "
+                     "surface, ] and [)"},
+    {"o", "a project run's option: its surfaces, a row each (grid, "
+          "panels, FP/SP/DP, cost, moulds, deviation, gap, kink)"},
     {"x, F5", "scatter plot (planarity vs cost)"},
     {"|, a", "parallel coordinates (brushing sets the filter)"},
     {"C, F2", "column chooser: show, hide and reorder the columns"},
@@ -203,10 +206,19 @@ static int detail_lines(const struct option_row *o, char lines[][160])
     tui_fmt_number(sc, sizeof sc, t->cost_of[TYPE_SP], 0, 1);
     tui_fmt_number(dc, sizeof dc, t->cost_of[TYPE_DP], 0, 1);
     tui_fmt_number(area, sizeof area, t->area, 1, 1);
-    snprintf(lines[0], 160, "No. %lld: %d x %d, t %.2f mm, rank %d%s, %s, "
-             "largest panel %.2f m^2", (long long)o->number, o->nu, o->nv,
-             o->threshold_mm, o->rank, o->knee ? " (knee)" : "",
-             t->feasible ? "feasible" : "infeasible", t->max_panel_area);
+    if (!isnan(o->module_w))
+        /* a project's: its nu and nv index the module range; o lists the
+         * surfaces' own grids */
+        snprintf(lines[0], 160, "No. %lld: module %.2f x %.2f m, t %.2f mm, "
+                 "rank %d%s, %s; o: its surfaces", (long long)o->number,
+                 o->module_w, o->module_h, o->threshold_mm, o->rank,
+                 o->knee ? " (knee)" : "",
+                 t->feasible ? "feasible" : "infeasible");
+    else
+        snprintf(lines[0], 160, "No. %lld: %d x %d, t %.2f mm, rank %d%s, "
+                 "%s, largest panel %.2f m^2", (long long)o->number, o->nu,
+                 o->nv, o->threshold_mm, o->rank, o->knee ? " (knee)" : "",
+                 t->feasible ? "feasible" : "infeasible", t->max_panel_area);
     snprintf(lines[1], 160, "cost %s USD = FP %s + SP %s + DP %s", cost, fc,
              sc, dc);
     snprintf(lines[2], 160, "%zu panels, %s m^2: FP %zu %.1f, SP %zu %.1f, "
@@ -225,8 +237,13 @@ static void draw_detail_side(const struct option_row *o, int y, int x,
     tui_put(y, x, width, tui_attr(ROLE_HEADER), " Selected option");
     tui_fill(y, x + 16, width - 16, tui_attr(ROLE_HEADER));
     for (int k = 0; k < tui_metric_column_count && k + 1 < height; k++) {
-        const struct option_column *c =
-            store_option_column(tui_metric_columns[k]);
+        const char *name = tui_metric_columns[k];
+        /* a project's nu and nv index its module range: the module */
+        if (!isnan(o->module_w) && strcmp(name, "nu") == 0)
+            name = "module_w";
+        else if (!isnan(o->module_w) && strcmp(name, "nv") == 0)
+            name = "module_h";
+        const struct option_column *c = store_option_column(name);
         char value[64];
         tui_fmt_value(value, sizeof value, c,
                       store_option_column_value(c, o));
@@ -737,8 +754,19 @@ static enum tui_result options_key(struct tui_screen *base,
     case 't': case 'T':
         tui_push(app, screen_stats_new(app, m, key == 'T' ? 5 : 0));
         return RESULT_HANDLED;
+    case 'o':
+        if (o != NULL && store_run_is_project(&s->run))
+            tui_push(app, screen_surfaces_new(app, s->run.id, o->number));
+        else if (o != NULL)
+            tui_status(app, "o: run %lld is of a single surface: its "
+                       "options have no surfaces to list (Enter: the map)",
+                       (long long)s->run.id);
+        return RESULT_HANDLED;
     case 'L':
-        if (o != NULL)
+        if (o != NULL && store_run_is_project(&s->run))
+            tui_status(app, "like this: the New run form takes a single "
+                       "surface, not a project's modules yet");
+        else if (o != NULL)
             tui_push(app, screen_newrun_like(app, &s->run, o));
         return RESULT_HANDLED;
     case 'E':

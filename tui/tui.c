@@ -25,6 +25,7 @@
 #include "job.h"
 #include "keys.h"
 #include "layout.h"
+#include "project_load.h"
 #include "store/snapshot.h"
 
 #define CTRL(c) ((c) & 0x1f)
@@ -196,6 +197,12 @@ static void pop(struct tui_app *app)
     struct tui_screen *s = app->stack[--app->depth];
     s->cls->destroy(s);
     tui_prompt(app, NULL, NULL);
+    /* Back at the first screen: no run is browsed, its project goes. */
+    if (app->depth <= 1 && app->project != NULL) {
+        tui_project_load_free(app->project);
+        app->project = NULL;
+        app->project_run = 0;
+    }
 }
 
 /* The background run's line: stage, gauge, count. */

@@ -176,9 +176,9 @@ same "the surface's warning is recorded with the run" \
     "$(sql "$WORK/warn.db" 'SELECT warnings FROM runs')" \
     "a: 1 triangles dropped: their corners weld into fewer than three vertices"
 
-# 8. The workbench opens a project run: its table of building options, and
-# where it would show panels, a message saying they are not kept (no map
-# of a project yet), never a crash.
+# 8. The workbench opens a project run: its table of building options,
+# and the map of an option, surface by surface (tui_project.sh checks
+# its figures), never a crash.
 . "$HERE/tui_lib.sh"
 start 160 40 -- four.db
 check "tui: the project run listed" '^ +1 done'
@@ -187,6 +187,6 @@ check "tui: the project run's table" '^ Run 1 '
 keys K
 check "tui: its knee" 'knee option [0-9]+'
 keys Enter
-check "tui: a project option's map says its panels are not kept" 'project of several surfaces'
+check "tui: a project option's map shows its first surface" 'surface 1 of 4: plane'
 keys F10
 check_exit "tui: quits cleanly after a project run"
