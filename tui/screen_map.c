@@ -9,7 +9,11 @@
  * zoom to one and two columns per panel, where the view pans with the
  * cursor, and back. Deviations are in mm, as the threshold. Panels come
  * from study_option_panels, which evaluates and stores them when
- * missing.
+ * missing. A project run's option (a building of many surfaces) shows
+ * one surface at a time, ] and [ paging through them: its panels are not
+ * stored, so the option is evaluated again over the run's project
+ * (study_project_view.h), which app->project prepares in a thread once
+ * for every map of the run while the map shows the stage.
  */
 #include <math.h>
 #include <stdio.h>
