@@ -114,9 +114,23 @@ void tui_fmt_cell(char *out, size_t size, const struct tui_column *c,
                   const struct option_row *option)
 {
     const struct option_column *column = tui_column_of(c);
+    /* A project's option: its nu and nv index the run's module range, a
+     * count of nothing on the building; the module (m) stands in their
+     * place, to 0.1 m in the narrow column (the side pane and o give it
+     * whole). */
+    int module = !isnan(option->module_w) &&
+                 (strcmp(column->name, "nu") == 0 ||
+                  strcmp(column->name, "nv") == 0);
+    if (module)
+        column = store_option_column(column->name[1] == 'u' ? "module_w"
+                                                            : "module_h");
     double value = store_option_column_value(column, option);
     char text[64];
-    if (c->pareto_mark)
+    if (module) {
+        store_option_text(text, sizeof text, column, value, 1);
+        if ((int)strlen(text) > c->width)
+            store_option_text(text, sizeof text, column, value, 0);
+    } else if (c->pareto_mark)
         text[0] = '\0';  /* the caller draws the glyph */
     else if (strcmp(column->name, "rank") == 0 && value == 0)
         snprintf(text, sizeof text, "-");  /* not ranked yet */

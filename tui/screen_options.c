@@ -149,8 +149,15 @@ static void draw_header(struct options_screen *s, struct tui_app *app,
         tui_fill(y, x, col->width, attr);
         tui_fill(y + 1, x, col->width, attr);
         const char *unit = tui_column_unit(col);
-        tui_putf(y, x, width - x, attr, "%*s", col->width,
-                 tui_column_title(col));
+        const char *title = tui_column_title(col);
+        /* a project run's U and V are its module (tui_fmt_cell) */
+        if (store_run_is_project(&s->run) &&
+            (strcmp(col->column, "nu") == 0 ||
+             strcmp(col->column, "nv") == 0)) {
+            title = col->column[1] == 'u' ? "W" : "H";
+            unit = "m";
+        }
+        tui_putf(y, x, width - x, attr, "%*s", col->width, title);
         tui_putf(y + 1, x, width - x, attr, "%*s", col->width, unit);
         if (key >= 0) {
             /* the direction just left of the unit; "2" marks the

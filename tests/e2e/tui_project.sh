@@ -53,6 +53,12 @@ start 80 24 -- p.db
 check "the runs list the project run" '^ +1 done +exhaustive'
 keys Enter
 check "run 1 opens" "^ Run 1 .*knee $knee"
+# A project option's nu and nv index the run's module range: the table
+# shows the module (m) in their place, headed W and H.
+check "the table heads the module W and H (m) where U and V stand" '^ +No\. .* W +H +t '
+check "... in metres" ' m +m +mm( |$)'
+mod=$(q "select printf('%.1f +%.1f', module_w, module_h) from options where run = 1 and number = $knee")
+check "the knee's row shows its module, as sqlite3 reads it ($mod)" "^ +$knee .* $mod +[0-9.]+ +yes"
 keys K o
 check "o lists the knee's surfaces" \
     "^ Surfaces of option $knee of run 1 \| module [0-9.]+ x [0-9.]+ m"
