@@ -51,11 +51,10 @@ void option_table_for_project(struct option_table_column *columns, int n)
     for (int k = 0; k < n; k++) {
         if (columns[k].column == NULL)
             continue;
-        if (strcmp(columns[k].column, "nu") == 0)
-            columns[k] = (struct option_table_column){"module_w", 6,
-                                                      columns[k].rank};
-        else if (strcmp(columns[k].column, "nv") == 0)
-            columns[k] = (struct option_table_column){"module_h", 6,
+        const struct option_column *shown =
+            store_option_column_of_project(columns[k].column);
+        if (shown != NULL && strcmp(shown->name, columns[k].column) != 0)
+            columns[k] = (struct option_table_column){shown->name, 6,
                                                       columns[k].rank};
     }
 }

@@ -192,6 +192,16 @@ const struct option_column *store_option_column(const char *name)
     return NULL;
 }
 
+const struct option_column *store_option_column_of_project(
+    const char *name)
+{
+    if (strcmp(name, "nu") == 0)
+        return store_option_column("module_w");
+    if (strcmp(name, "nv") == 0)
+        return store_option_column("module_h");
+    return store_option_column(name);
+}
+
 double store_option_column_value(const struct option_column *c,
                                  const struct option_row *option)
 {

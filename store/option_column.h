@@ -83,6 +83,14 @@ extern const struct option_column store_option_columns[STORE_OPTION_COLUMNS];
 /* The column named name (exactly, lowercase), or NULL. */
 const struct option_column *store_option_column(const char *name);
 
+/* What a project's option shows in place of the column named name: its
+ * nu and nv index the run's module range, a count of nothing on the
+ * building, so module_w stands for nu and module_h for nv; any other
+ * column is itself (NULL for no column). The CLI's tables and the TUI's
+ * both ask it. */
+const struct option_column *store_option_column_of_project(
+    const char *name);
+
 /* c's value in option, as stored (a deviation in m), yes/no as 0 or 1;
  * NaN for a value not known (NULL in the file: a column added after the
  * option was stored; a count then reads as TOTALS_UNKNOWN, classify.h),

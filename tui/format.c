@@ -110,20 +110,21 @@ void tui_fmt_value(char *out, size_t size, const struct option_column *c,
     store_option_text(out, size, c, value, c->decimals);
 }
 
+const struct option_column *tui_shown_column(const struct option_column *c,
+                                             const struct option_row *option)
+{
+    return isnan(option->module_w) ? c
+                                   : store_option_column_of_project(c->name);
+}
+
 void tui_fmt_cell(char *out, size_t size, const struct tui_column *c,
                   const struct option_row *option)
 {
-    const struct option_column *column = tui_column_of(c);
-    /* A project's option: its nu and nv index the run's module range, a
-     * count of nothing on the building; the module (m) stands in their
-     * place, to 0.1 m in the narrow column (the side pane and o give it
-     * whole). */
-    int module = !isnan(option->module_w) &&
-                 (strcmp(column->name, "nu") == 0 ||
-                  strcmp(column->name, "nv") == 0);
-    if (module)
-        column = store_option_column(column->name[1] == 'u' ? "module_w"
-                                                            : "module_h");
+    const struct option_column *column =
+        tui_shown_column(tui_column_of(c), option);
+    /* A project's module, to 0.1 m in the narrow U or V column (the side
+     * pane and o give it whole). */
+    int module = column != tui_column_of(c);
     double value = store_option_column_value(column, option);
     char text[64];
     if (module) {

@@ -57,6 +57,13 @@ extern const int tui_metric_column_count;
  * (ASCII only, so width is the display width), with the column's
  * list_decimals; an unranked rank is "-". The mark column is blank: the
  * caller draws its glyph for rank 1. */
+/* The column shown in c's place for option: c itself, but for a
+ * project's option the module (module_w, module_h) where nu and nv stand,
+ * since they index the run's module range, a count of nothing on the
+ * building. */
+const struct option_column *tui_shown_column(const struct option_column *c,
+                                             const struct option_row *option);
+
 void tui_fmt_cell(char *out, size_t size, const struct tui_column *c,
                   const struct option_row *option);
 

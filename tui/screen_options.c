@@ -244,13 +244,8 @@ static void draw_detail_side(const struct option_row *o, int y, int x,
     tui_put(y, x, width, tui_attr(ROLE_HEADER), " Selected option");
     tui_fill(y, x + 16, width - 16, tui_attr(ROLE_HEADER));
     for (int k = 0; k < tui_metric_column_count && k + 1 < height; k++) {
-        const char *name = tui_metric_columns[k];
-        /* a project's nu and nv index its module range: the module */
-        if (!isnan(o->module_w) && strcmp(name, "nu") == 0)
-            name = "module_w";
-        else if (!isnan(o->module_w) && strcmp(name, "nv") == 0)
-            name = "module_h";
-        const struct option_column *c = store_option_column(name);
+        const struct option_column *c = tui_shown_column(
+            store_option_column(tui_metric_columns[k]), o);
         char value[64];
         tui_fmt_value(value, sizeof value, c,
                       store_option_column_value(c, o));
