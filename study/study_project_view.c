@@ -23,9 +23,6 @@ int study_project_view_open(struct store *store, const struct run_info *run,
     struct mesh_options mesh;
     int flip;
     int rc = study_settings(run, &view->settings, &mesh, &flip, err);
-    size_t n = 0;
-    if (rc == FACET_OK)
-        rc = store_surfaces_get(store, run->id, &view->surfaces, &n, err);
     if (rc == FACET_OK) {
         /* the files found, checked and read: most of the time, with
          * preparing (no stage of its own there to tell) */
@@ -36,10 +33,6 @@ int study_project_view_open(struct store *store, const struct run_info *run,
                                   err);
         free(overrides);
     }
-    if (rc == FACET_OK && view->project.nsurfaces != n)
-        rc = facet_error_set(err, FACET_EINPUT,
-            "run %lld: its files hold %zu surfaces, the run %zu",
-            (long long)run->id, view->project.nsurfaces, n);
     return rc;
 }
 
@@ -83,6 +76,5 @@ int study_project_view_option(struct store *store,
 void study_project_view_close(struct study_project_view *view)
 {
     project_close(&view->project);
-    free(view->surfaces);
     memset(view, 0, sizeof *view);
 }

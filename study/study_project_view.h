@@ -29,8 +29,6 @@ struct study_project_view {
     int64_t run;                      /* the run's id */
     struct project project;           /* its surfaces, prepared */
     struct optimize_settings settings;  /* the run's */
-    struct surface_row *surfaces;     /* as the run recorded them, owned,
-                                         project.nsurfaces of them */
 };
 
 /* Opens and prepares the project of run (a project run: store_run_is_
