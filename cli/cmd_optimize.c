@@ -256,10 +256,6 @@ static int optimize_main(int argc, char **argv, struct facet_error *err)
         return facet_error_set(err, FACET_EINPUT,
             "optimize: --grid gives a project's surface its own grid; "
             "it needs --module");
-    if (search.module && search.shard)
-        return facet_error_set(err, FACET_EINPUT,
-            "optimize: a project is searched on one machine (no --shard "
-            "with --module)");
 
     struct study_request request;
     study_request_defaults(&request);

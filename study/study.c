@@ -793,10 +793,13 @@ static int study_go(struct store *store, struct run_info *run,
     /* A run of many options stores them without the indexes by metric
      * and builds those once at its end (store_indexes_defer). */
     int deferred = 0;
+    int64_t total = 0;
     if (rc == FACET_OK)
-        rc = store_indexes_defer(store,
-                                 optimize_total(settings) - (int64_t)nstored,
-                                 &deferred, err);
+        rc = optimize_total_with(project ? &project->evaluator : NULL,
+                                 settings, &total, err);
+    if (rc == FACET_OK)
+        rc = store_indexes_defer(store, total - (int64_t)nstored, &deferred,
+                                 err);
     study_stage(hooks, "evaluating options");
     if (rc == FACET_OK && project != NULL)
         rc = optimize_run_with(&project->evaluator, settings, stored,

@@ -14,20 +14,26 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "core/base/numformat.h"
+
 /* One shard file as read. */
 struct shard_file {
     const char *path;
     struct run_info run;
     struct option_row *rows;
     size_t n;
+    /* A project run's surfaces (the surfaces table), nsurfaces of them;
+     * NULL, 0 for a single surface's. */
+    struct surface_row *surfaces;
+    size_t nsurfaces;
 };
 
 /* The settings that make two runs shards of one run, as text (doubles to
  * the bit), in a fixed order with their names: what a merge compares. */
-enum { RUN_KEYS = 25 };
+enum { RUN_KEYS = 26, KEY_TEXT = 200 };
 static const char *const key_name[RUN_KEYS] = {
     "surface (SHA-256)", "units", "object", "group", "method", "seed",
-    "u", "v", "threshold", "prices (FP, SP, DP)", "sp_as_fp",
+    "module range (m)", "u", "v", "threshold", "prices (FP, SP, DP)", "sp_as_fp",
     "max_panel_area", "curvature_tol", "per_panel", "flip_normals", "uv",
     "uv_method", "objectives", "population and generations", "evaluations",
     "cost model (panel, joint, SP and DP moulds)",
@@ -35,62 +41,113 @@ static const char *const key_name[RUN_KEYS] = {
     "panels as built (SP fit, gap limit mm, kink limit deg)", "store_panels",
     "number of shards"};
 
-static void run_keys(const struct run_info *r, char text[RUN_KEYS][160])
+static void run_keys(const struct run_info *r, char text[RUN_KEYS][KEY_TEXT])
 {
     int k = 0;
-    snprintf(text[k++], 160, "%s", r->surface_sha256);
-    snprintf(text[k++], 160, "%s",
+    snprintf(text[k++], KEY_TEXT, "%s", r->surface_sha256);
+    snprintf(text[k++], KEY_TEXT, "%s",
              store_run_setting_text(r, RUN_SETTING_UNITS));
-    snprintf(text[k++], 160, "%s", r->object);
-    snprintf(text[k++], 160, "%s", r->group);
-    snprintf(text[k++], 160, "%s",
+    snprintf(text[k++], KEY_TEXT, "%s", r->object);
+    snprintf(text[k++], KEY_TEXT, "%s", r->group);
+    snprintf(text[k++], KEY_TEXT, "%s",
              store_run_setting_text(r, RUN_SETTING_METHOD));
-    snprintf(text[k++], 160, "%llu", (unsigned long long)r->seed);
-    snprintf(text[k++], 160, "%d:%d", r->u_min, r->u_max);
-    snprintf(text[k++], 160, "%d:%d", r->v_min, r->v_max);
-    snprintf(text[k++], 160, "%.17g:%.17g:%.17g", r->threshold_min_mm,
+    snprintf(text[k++], KEY_TEXT, "%llu", (unsigned long long)r->seed);
+    /* Before u and v, which of a project are indices into it. */
+    if (store_run_is_project(r)) {
+        const double module[6] = {r->module_w_min, r->module_w_max,
+                                  r->module_w_step, r->module_h_min,
+                                  r->module_h_max, r->module_h_step};
+        char m[6][NUMBER_EXACT_SIZE];
+        for (int j = 0; j < 6; j++)
+            number_exact(m[j], module[j]);
+        snprintf(text[k++], KEY_TEXT, "%s:%s:%s x %s:%s:%s", m[0], m[1], m[2],
+                 m[3], m[4], m[5]);
+    } else
+        snprintf(text[k++], KEY_TEXT, "none (a single surface)");
+    snprintf(text[k++], KEY_TEXT, "%d:%d", r->u_min, r->u_max);
+    snprintf(text[k++], KEY_TEXT, "%d:%d", r->v_min, r->v_max);
+    snprintf(text[k++], KEY_TEXT, "%.17g:%.17g:%.17g", r->threshold_min_mm,
              r->threshold_max_mm, r->threshold_step_mm);
-    snprintf(text[k++], 160, "%.17g, %.17g, %.17g", r->price[TYPE_FP],
+    snprintf(text[k++], KEY_TEXT, "%.17g, %.17g, %.17g", r->price[TYPE_FP],
              r->price[TYPE_SP], r->price[TYPE_DP]);
-    snprintf(text[k++], 160, "%d", r->sp_as_fp);
-    snprintf(text[k++], 160, "%.17g", r->max_panel_area);
-    snprintf(text[k++], 160, "%.17g", r->curvature_tol);
-    snprintf(text[k++], 160, "%s",
+    snprintf(text[k++], KEY_TEXT, "%d", r->sp_as_fp);
+    snprintf(text[k++], KEY_TEXT, "%.17g", r->max_panel_area);
+    snprintf(text[k++], KEY_TEXT, "%.17g", r->curvature_tol);
+    snprintf(text[k++], KEY_TEXT, "%s",
              store_run_setting_text(r, RUN_SETTING_PER_PANEL));
-    snprintf(text[k++], 160, "%d", r->flip_normals);
-    snprintf(text[k++], 160, "%s", store_run_setting_text(r, RUN_SETTING_UV));
-    snprintf(text[k++], 160, "%s",
+    snprintf(text[k++], KEY_TEXT, "%d", r->flip_normals);
+    snprintf(text[k++], KEY_TEXT, "%s", store_run_setting_text(r, RUN_SETTING_UV));
+    snprintf(text[k++], KEY_TEXT, "%s",
              store_run_setting_text(r, RUN_SETTING_UV_METHOD));
-    snprintf(text[k++], 160, "%s", r->objectives);
-    snprintf(text[k++], 160, "%d x %d", r->population, r->generations);
-    snprintf(text[k++], 160, "%lld", (long long)r->evaluations);
-    snprintf(text[k++], 160, "%.17g, %.17g, %.17g, %.17g", r->panel_cost,
+    snprintf(text[k++], KEY_TEXT, "%s", r->objectives);
+    snprintf(text[k++], KEY_TEXT, "%d x %d", r->population, r->generations);
+    snprintf(text[k++], KEY_TEXT, "%lld", (long long)r->evaluations);
+    snprintf(text[k++], KEY_TEXT, "%.17g, %.17g, %.17g, %.17g", r->panel_cost,
              r->joint_cost, r->mould_cost[TYPE_SP], r->mould_cost[TYPE_DP]);
-    snprintf(text[k++], 160, "%.17g, %d", r->mould_tol_mm, r->mould_mirror);
-    snprintf(text[k++], 160, "%d, %.17g, %.17g", r->sp_fit, r->max_gap_mm,
+    snprintf(text[k++], KEY_TEXT, "%.17g, %d", r->mould_tol_mm, r->mould_mirror);
+    snprintf(text[k++], KEY_TEXT, "%d, %.17g, %.17g", r->sp_fit, r->max_gap_mm,
              r->max_kink_deg);
-    snprintf(text[k++], 160, "%s",
+    snprintf(text[k++], KEY_TEXT, "%s",
              store_run_setting_text(r, RUN_SETTING_STORE_PANELS));
-    snprintf(text[k++], 160, "%d", r->shard_count);
+    snprintf(text[k++], KEY_TEXT, "%d", r->shard_count);
     assert(k == RUN_KEYS);
 }
 
 /* The first setting in which b differs from a, or -1; its texts into
  * ta, tb. */
 static int first_difference(const struct run_info *a,
-                            const struct run_info *b, char ta[160],
-                            char tb[160])
+                            const struct run_info *b, char ta[KEY_TEXT],
+                            char tb[KEY_TEXT])
 {
-    char x[RUN_KEYS][160], y[RUN_KEYS][160];
+    char x[RUN_KEYS][KEY_TEXT], y[RUN_KEYS][KEY_TEXT];
     run_keys(a, x);
     run_keys(b, y);
     for (int k = 0; k < RUN_KEYS; k++)
         if (strcmp(x[k], y[k]) != 0) {
-            memcpy(ta, x[k], 160);
-            memcpy(tb, y[k], 160);
+            memcpy(ta, x[k], KEY_TEXT);
+            memcpy(tb, y[k], KEY_TEXT);
             return k;
         }
     return -1;
+}
+
+/* Where the surfaces b differ from a's, as a project's shards must not:
+ * the first surface that differs in its name, file (by SHA-256), UV or
+ * grid of its own, or a count that differs, described into text (size
+ * bytes). Returns 1 when they differ, 0 when they are the same (a single
+ * surface's runs have none, and so never differ here). The files' paths
+ * are not compared: each shard may have read its copy from its own
+ * node's folder. */
+static int surfaces_differ(const struct surface_row *a, size_t na,
+                           const struct surface_row *b, size_t nb,
+                           char *text, size_t size)
+{
+    if (na != nb) {
+        snprintf(text, size, "%zu surfaces, not %zu", nb, na);
+        return 1;
+    }
+    for (size_t i = 0; i < na; i++) {
+        const struct surface_row *x = &a[i], *y = &b[i];
+        if (strcmp(x->name, y->name) != 0)
+            snprintf(text, size, "surface %zu: '%.100s', not '%.100s'",
+                     i + 1, y->name, x->name);
+        else if (strcmp(x->file_sha256, y->file_sha256) != 0)
+            snprintf(text, size, "surface %zu ('%.100s'): a file of "
+                     "SHA-256 %.12s..., not %.12s...", i + 1, y->name,
+                     y->file_sha256, x->file_sha256);
+        else if (x->uv_method != y->uv_method)
+            snprintf(text, size, "surface %zu ('%.100s'): UV %s, not %s",
+                     i + 1, y->name, param_method_name(y->uv_method),
+                     param_method_name(x->uv_method));
+        else if (x->grid_nu != y->grid_nu || x->grid_nv != y->grid_nv)
+            snprintf(text, size, "surface %zu ('%.100s'): its own grid "
+                     "%d x %d, not %d x %d (0 x 0: none)", i + 1, y->name,
+                     y->grid_nu, y->grid_nv, x->grid_nu, x->grid_nv);
+        else
+            continue;
+        return 1;
+    }
+    return 0;
 }
 
 /* Reads the one finished shard run of path into *f. */
@@ -129,6 +186,14 @@ static int read_shard(const char *path, struct shard_file *f,
             (long long)f->run.id, run_status_name(f->run.status));
     if (rc == FACET_OK)
         rc = store_options_get(store, f->run.id, &f->rows, &f->n, err);
+    if (rc == FACET_OK && store_run_is_project(&f->run)) {
+        rc = store_surfaces_get(store, f->run.id, &f->surfaces,
+                                &f->nsurfaces, err);
+        if (rc == FACET_OK && f->nsurfaces == 0)
+            rc = facet_error_set(err, FACET_EINPUT,
+                "%s: shard %d/%d is a project's without its surfaces "
+                "recorded", path, f->run.shard_index, f->run.shard_count);
+    }
     free(runs);
     store_close(store);
     return rc;
@@ -140,7 +205,7 @@ static int check_shards(const struct shard_file *f, int n,
                         struct facet_error *err)
 {
     for (int k = 1; k < n; k++) {
-        char a[160], b[160];
+        char a[KEY_TEXT], b[KEY_TEXT];
         int d = first_difference(&f[0].run, &f[k].run, a, b);
         if (d == 0)
             return facet_error_set(err, FACET_EINPUT,
@@ -154,6 +219,13 @@ static int check_shards(const struct shard_file *f, int n,
                 "merge only shards of one run", f[k].path,
                 f[k].run.shard_index, f[k].run.shard_count, f[0].path,
                 key_name[d], b, a);
+        char why[400];
+        if (surfaces_differ(f[0].surfaces, f[0].nsurfaces, f[k].surfaces,
+                            f[k].nsurfaces, why, sizeof why))
+            return facet_error_set(err, FACET_EINPUT,
+                "%s (shard %d/%d) is of another project than %s: %s: "
+                "merge only shards of one run", f[k].path,
+                f[k].run.shard_index, f[k].run.shard_count, f[0].path, why);
         for (int j = 0; j < k; j++)
             if (f[j].run.shard_index == f[k].run.shard_index)
                 return facet_error_set(err, FACET_EINPUT,
@@ -164,10 +236,19 @@ static int check_shards(const struct shard_file *f, int n,
     return FACET_OK;
 }
 
+/* Where a merged option came from: the shard file (its index among the
+ * files given) and its number there, which a project's surface rows
+ * (option_surfaces) are read by. */
+struct row_origin {
+    int file;
+    int64_t number;
+};
+
 /* A row of the union and the shard it came from. */
 struct merged_row {
     struct option_row row;
     int shard;
+    struct row_origin origin;
 };
 
 static int by_number(const void *a, const void *b)
@@ -212,20 +293,24 @@ static int by_shard(const void *a, const void *b)
 }
 
 /* The union of the shards' options, numbered as the merged run numbers
- * them, into *out (malloc'ed), *nout of them. */
+ * them, into *out (malloc'ed), *nout of them, with where each came from
+ * in (*origin)[k] (malloc'ed). */
 static int union_rows(const struct shard_file *f, int n,
-                      struct option_row **out, size_t *nout,
-                      struct facet_error *err)
+                      struct option_row **out, struct row_origin **origin,
+                      size_t *nout, struct facet_error *err)
 {
     size_t total = 0;
     for (int k = 0; k < n; k++)
         total += f[k].n;
     struct merged_row *all = malloc((total ? total : 1) * sizeof *all);
     *out = malloc((total ? total : 1) * sizeof **out);
-    if (all == NULL || *out == NULL) {
+    *origin = malloc((total ? total : 1) * sizeof **origin);
+    if (all == NULL || *out == NULL || *origin == NULL) {
         free(all);
         free(*out);
+        free(*origin);
         *out = NULL;
+        *origin = NULL;
         return facet_error_set(err, FACET_EWORK, "out of memory");
     }
     size_t m = 0;
@@ -235,6 +320,7 @@ static int union_rows(const struct shard_file *f, int n,
             all[m].row.rank = 0;
             all[m].row.crowding = 0;
             all[m].row.knee = 0;
+            all[m].origin = (struct row_origin){k, f[k].rows[j].number};
             all[m++].shard = f[k].run.shard_index;
         }
     int rc = FACET_OK;
@@ -250,6 +336,7 @@ static int union_rows(const struct shard_file *f, int n,
                     (long long)all[j].row.number);
                 break;
             }
+            (*origin)[kept] = all[j].origin;
             (*out)[kept++] = all[j].row;
         }
     } else {
@@ -262,6 +349,7 @@ static int union_rows(const struct shard_file *f, int n,
                 all[distinct++] = all[j];
         qsort(all, distinct, sizeof *all, by_shard);
         for (size_t j = 0; j < distinct; j++) {
+            (*origin)[kept] = all[j].origin;
             (*out)[kept] = all[j].row;
             (*out)[kept].number = (int64_t)kept + 1;
             kept++;
@@ -270,7 +358,9 @@ static int union_rows(const struct shard_file *f, int n,
     free(all);
     if (rc != FACET_OK) {
         free(*out);
+        free(*origin);
         *out = NULL;
+        *origin = NULL;
         return rc;
     }
     *nout = kept;
@@ -324,28 +414,101 @@ static void tell_warning(const struct study_hooks *hooks, const char *text)
         hooks->warning(hooks->context, text);
 }
 
-/* The merged run of f's settings in store, or 0. */
-static int find_merged(struct store *store, const struct run_info *like,
-                       int64_t *id, struct facet_error *err)
+/* The merged run of f's settings (and, of a project, its surfaces) in
+ * store, or 0. */
+static int find_merged(struct store *store, const struct shard_file *f,
+                       const struct run_info *like, int64_t *id,
+                       struct facet_error *err)
 {
     *id = 0;
     struct run_info *runs;
     size_t n;
     int rc = store_run_list(store, &runs, &n, err);
     for (size_t k = 0; rc == FACET_OK && k < n; k++) {
-        char a[160], b[160];
-        if (runs[k].shard_index == 0 && runs[k].shard_count > 0 &&
-            first_difference(like, &runs[k], a, b) < 0)
+        char a[KEY_TEXT], b[KEY_TEXT];
+        if (runs[k].shard_index != 0 || runs[k].shard_count == 0 ||
+            first_difference(like, &runs[k], a, b) >= 0)
+            continue;
+        struct surface_row *surfaces;
+        size_t nsurfaces;
+        rc = store_surfaces_get(store, runs[k].id, &surfaces, &nsurfaces,
+                                err);
+        char why[400];
+        if (rc == FACET_OK &&
+            !surfaces_differ(f->surfaces, f->nsurfaces, surfaces, nsurfaces,
+                             why, sizeof why))
             *id = runs[k].id;
+        free(surfaces);
     }
     if (rc == FACET_OK)
         free(runs);
     return rc;
 }
 
+/* Options per transaction when a project's options are written with
+ * their surface rows. */
+#define PROJECT_CHUNK 256
+
+/* Writes a project's merged options rows[0..nrows) into run with their
+ * surface rows, read from the shard each came from (origin): shard by
+ * shard, so each file is opened once and only a chunk of rows is held. */
+static int put_project_options(struct store *store, int64_t run,
+                               const struct shard_file *f, int nfiles,
+                               const struct option_row *rows,
+                               const struct row_origin *origin,
+                               size_t nrows, struct facet_error *err)
+{
+    size_t ns = f[0].nsurfaces;
+    struct option_row *chunk = malloc(PROJECT_CHUNK * sizeof *chunk);
+    struct option_surface_row *surfaces =
+        malloc(PROJECT_CHUNK * ns * sizeof *surfaces);
+    int rc = FACET_OK;
+    if (chunk == NULL || surfaces == NULL)
+        rc = facet_error_set(err, FACET_EWORK, "out of memory");
+    for (int k = 0; rc == FACET_OK && k < nfiles; k++) {
+        struct store *shard;
+        if ((rc = store_open_read(f[k].path, &shard, err)) != FACET_OK)
+            break;
+        size_t n = 0;
+        for (size_t j = 0; rc == FACET_OK && j <= nrows; j++) {
+            if (j < nrows && origin[j].file != k)
+                continue;
+            if (j < nrows) {
+                struct option_surface_row *got;
+                size_t ngot;
+                rc = store_option_surfaces_get(shard, f[k].run.id,
+                                               origin[j].number, &got,
+                                               &ngot, err);
+                if (rc == FACET_OK && ngot != ns)
+                    rc = facet_error_set(err, FACET_EINPUT,
+                        "%s: option %lld of shard %d/%d has %zu surface "
+                        "rows, not %zu", f[k].path,
+                        (long long)origin[j].number, f[k].run.shard_index,
+                        f[k].run.shard_count, ngot, ns);
+                if (rc == FACET_OK) {
+                    chunk[n] = rows[j];
+                    memcpy(surfaces + n * ns, got, ns * sizeof *got);
+                    n++;
+                }
+                free(got);
+            }
+            if (rc == FACET_OK && n > 0 && (n == PROJECT_CHUNK || j == nrows)) {
+                rc = store_project_options_put(store, run, chunk, n,
+                                               surfaces, ns, err);
+                n = 0;
+            }
+        }
+        store_close(shard);
+    }
+    free(chunk);
+    free(surfaces);
+    return rc;
+}
+
 /* Writes the merged run into the (temporary) database at path. */
 static int write_merged(const char *path, const struct shard_file *f, int n,
-                        const struct option_row *rows, size_t nrows,
+                        const struct option_row *rows,
+                        const struct row_origin *origin, size_t nrows,
                         const struct study_hooks *hooks,
                         struct merge_report *report, struct facet_error *err)
 {
@@ -359,7 +522,8 @@ static int write_merged(const char *path, const struct shard_file *f, int n,
     double elapsed = 0;
     for (int k = 0; k < n; k++)
         elapsed += f[k].run.elapsed;
-    rc = find_merged(store, &run, &run.id, err);
+    int project = store_run_is_project(&run);
+    rc = find_merged(store, &f[0], &run, &run.id, err);
     report->replaced = run.id != 0;
     if (rc == FACET_OK && run.id != 0) {
         rc = store_run_clear_options(store, run.id, err);
@@ -368,6 +532,11 @@ static int write_merged(const char *path, const struct shard_file *f, int n,
                                       err);
     } else if (rc == FACET_OK) {
         rc = store_run_create(store, &run, err);
+        /* The first shard's surfaces: every shard's are the same but
+         * for where its node read the files. */
+        if (rc == FACET_OK && project)
+            rc = store_surfaces_put(store, run.id, f[0].surfaces,
+                                    f[0].nsurfaces, err);
     }
     /* The shards' warnings (of one surface and space: the first's), and
      * the shards missing. */
@@ -385,7 +554,11 @@ static int write_merged(const char *path, const struct shard_file *f, int n,
     if (rc == FACET_OK)
         rc = store_indexes_defer(store, (int64_t)nrows, &deferred, err);
     const size_t chunk = 10000;
-    for (size_t first = 0; rc == FACET_OK && first < nrows; first += chunk)
+    if (rc == FACET_OK && project)
+        rc = put_project_options(store, run.id, f, n, rows, origin, nrows,
+                                 err);
+    for (size_t first = 0; rc == FACET_OK && !project && first < nrows;
+         first += chunk)
         rc = store_options_put(store, run.id, rows + first,
                                nrows - first < chunk ? nrows - first : chunk,
                                err);
@@ -402,7 +575,9 @@ static int write_merged(const char *path, const struct shard_file *f, int n,
     struct panel_lattice *lattice = NULL;
     if (rc == FACET_OK)
         rc = study_settings(&run, &settings, &mesh, &flip, err);
-    if (rc == FACET_OK && run.store_panels != KEEP_NONE) {
+    /* A project's options keep their surfaces' totals, not panels
+     * (study_project_view.h evaluates them again when looked at). */
+    if (rc == FACET_OK && run.store_panels != KEEP_NONE && !project) {
         struct facet_error why;
         if (study_open_surface(store, &run, &surface, &why) == FACET_OK &&
             optimize_lattice(&surface, &settings, &lattice, &why) ==
@@ -456,9 +631,10 @@ int study_merge(const char *out, const char *const *paths, int nshards,
     if (rc == FACET_OK)
         rc = check_shards(f, nshards, err);
     struct option_row *rows = NULL;
+    struct row_origin *origin = NULL;
     size_t nrows = 0;
     if (rc == FACET_OK)
-        rc = union_rows(f, nshards, &rows, &nrows, err);
+        rc = union_rows(f, nshards, &rows, &origin, &nrows, err);
     if (rc == FACET_OK) {
         report->shard_count = f[0].run.shard_count;
         report->shards_merged = nshards;
@@ -501,7 +677,8 @@ int study_merge(const char *out, const char *const *paths, int nshards,
         }
     }
     if (rc == FACET_OK)
-        rc = write_merged(temp, f, nshards, rows, nrows, hooks, report, err);
+        rc = write_merged(temp, f, nshards, rows, origin, nrows, hooks,
+                          report, err);
     if (temp[0] != '\0')
         remove_side_files(temp);
     if (rc == FACET_OK && rename(temp, out) != 0)
@@ -513,9 +690,12 @@ int study_merge(const char *out, const char *const *paths, int nshards,
     } else if (temp[0] != '\0') {
         unlink(temp);
     }
-    for (int k = 0; k < nshards; k++)
+    for (int k = 0; k < nshards; k++) {
         free(f[k].rows);
+        free(f[k].surfaces);
+    }
     free(f);
     free(rows);
+    free(origin);
     return rc;
 }

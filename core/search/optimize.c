@@ -5,6 +5,7 @@
  */
 #include "core/search/optimize.h"
 
+#include <assert.h>
 #include <math.h>
 #include <stdatomic.h>
 #include <stdio.h>
@@ -617,34 +618,106 @@ static int stop_requested(const struct optimize_hooks *hooks)
     return hooks->should_stop != NULL && hooks->should_stop(hooks->context);
 }
 
-static void point_of_index(const struct design_space *space, uint64_t index,
-                           struct design_point *p)
+/* The grids an exhaustive walk evaluates, each distinct option's once:
+ * of a single surface every grid of the space, in its order (nu and nv
+ * NULL: computed from the index); of an evaluator with a canonical hook
+ * (a project's modules) the distinct canonical grids, in the order the
+ * walk (u outermost, then v) first meets them. Thresholds do not change
+ * under the hook, so a grid's thresholds are all met together, the first
+ * time its grid is: grid g's are options g x steps + 1 .. (g + 1) x
+ * steps, in a whole run as in every shard. */
+struct exhaustive_grids {
+    const struct design_space *space;
+    int *nu, *nv;        /* n of them; NULL: every grid of the space */
+    uint64_t n;
+};
+
+static void exhaustive_grids_free(struct exhaustive_grids *g)
 {
+    free(g->nu);
+    free(g->nv);
+    memset(g, 0, sizeof *g);
+}
+
+static int exhaustive_grids_init(const struct option_evaluator *evaluator,
+                                 const struct design_space *space,
+                                 struct exhaustive_grids *g,
+                                 struct facet_error *err)
+{
+    memset(g, 0, sizeof *g);
+    g->space = space;
+    size_t us = (size_t)(space->u_max - space->u_min + 1);
+    size_t vs = (size_t)(space->v_max - space->v_min + 1);
+    if (evaluator == NULL || evaluator->canonical == NULL) {
+        g->n = (uint64_t)us * vs;
+        return FACET_OK;
+    }
+    unsigned char *seen = calloc(us * vs, 1);
+    g->nu = malloc(us * vs * sizeof *g->nu);
+    g->nv = malloc(us * vs * sizeof *g->nv);
+    if (seen == NULL || g->nu == NULL || g->nv == NULL) {
+        free(seen);
+        exhaustive_grids_free(g);
+        return facet_error_set(err, FACET_EWORK, "out of memory");
+    }
+    for (int u = space->u_min; u <= space->u_max; u++)
+        for (int v = space->v_min; v <= space->v_max; v++) {
+            struct design_point p = {u, v, space->t_min_mm};
+            evaluator->canonical(evaluator->context, &p);
+            assert(p.nu >= space->u_min && p.nu <= space->u_max &&
+                   p.nv >= space->v_min && p.nv <= space->v_max);
+            size_t at = (size_t)(p.nu - space->u_min) * vs +
+                        (size_t)(p.nv - space->v_min);
+            if (seen[at])
+                continue;
+            seen[at] = 1;
+            g->nu[g->n] = p.nu;
+            g->nv[g->n++] = p.nv;
+        }
+    free(seen);
+    return FACET_OK;
+}
+
+/* Point number point (0-based) of the walk over g. */
+static void exhaustive_point(const struct exhaustive_grids *g,
+                             uint64_t point, struct design_point *p)
+{
+    const struct design_space *space = g->space;
     uint64_t steps = threshold_steps(space);
-    uint64_t nv = (uint64_t)(space->v_max - space->v_min + 1);
-    p->threshold_mm = space->t_min_mm + (double)(index % steps) *
+    uint64_t grid = point / steps;
+    p->threshold_mm = space->t_min_mm + (double)(point % steps) *
                                             space->t_step_mm;
     if (p->threshold_mm > space->t_max_mm)
         p->threshold_mm = space->t_max_mm;
-    index /= steps;
-    p->nv = space->v_min + (int)(index % nv);
-    p->nu = space->u_min + (int)(index / nv);
+    if (g->nu != NULL) {
+        p->nu = g->nu[grid];
+        p->nv = g->nv[grid];
+    } else {
+        uint64_t nv = (uint64_t)(space->v_max - space->v_min + 1);
+        p->nv = space->v_min + (int)(grid % nv);
+        p->nu = space->u_min + (int)(grid / nv);
+    }
 }
 
 static int run_exhaustive(struct search *s, enum optimize_outcome *outcome,
                           struct facet_error *err)
 {
     const struct optimize_settings *settings = s->settings;
-    uint64_t total = design_space_size(&settings->space);
+    struct exhaustive_grids grids;
+    int rc = exhaustive_grids_init(s->evaluator, &settings->space, &grids,
+                                   err);
+    if (rc != FACET_OK)
+        return rc;
+    uint64_t steps = threshold_steps(&settings->space);
+    uint64_t total = grids.n * steps;
     size_t size = batch_size(settings);
     struct design_point *points = malloc(size * sizeof *points);
     size_t *index = malloc(size * sizeof *index);
     int64_t *numbers = malloc(size * sizeof *numbers);
-    int rc = FACET_OK;
     if (points == NULL || index == NULL || numbers == NULL)
         rc = facet_error_set(err, FACET_EWORK, "out of memory");
-    /* Option k + 1 is point k of the space, in a shard as in the whole
-     * run (of a single surface: every point is its own option). */
+    /* Option k + 1 is point k of the walk, in a shard as in the whole
+     * run: a shard's options keep their numbers in the whole run. */
     uint64_t next = 0;
     while (rc == FACET_OK && next < total) {
         if (stop_requested(s->hooks)) {
@@ -654,22 +727,18 @@ static int run_exhaustive(struct search *s, enum optimize_outcome *outcome,
         size_t n = 0;
         for (; n < size && next < total; next++)
             if (shard_owns(&settings->shard,
-                           shard_exhaustive_unit(&settings->space,
-                                                 &settings->shard, next))) {
-                point_of_index(&settings->space, next, &points[n]);
+                           shard_grid_unit(grids.n, steps, &settings->shard,
+                                           next))) {
+                exhaustive_point(&grids, next, &points[n]);
                 numbers[n++] = (int64_t)next + 1;
             }
-        /* A shard's options keep their numbers in the whole run; a whole
-         * run numbers them as met, which is the same but where points are
-         * one option (a project's modules): then 1, 2, ... without gaps. */
         if (n > 0)
-            rc = search_batch(s, points, n, 0, index,
-                              settings->shard.count > 0 ? numbers : NULL,
-                              err);
+            rc = search_batch(s, points, n, 0, index, numbers, err);
     }
     free(points);
     free(index);
     free(numbers);
+    exhaustive_grids_free(&grids);
     return rc;
 }
 
@@ -806,16 +875,36 @@ static int run_random(struct search *s, enum optimize_outcome *outcome,
 
 int64_t optimize_total(const struct optimize_settings *settings)
 {
+    int64_t total = 0;
+    struct facet_error ignored;
+    /* Without a canonical hook the walk's grids need no memory. */
+    optimize_total_with(NULL, settings, &total, &ignored);
+    return total;
+}
+
+int optimize_total_with(const struct option_evaluator *evaluator,
+                        const struct optimize_settings *settings,
+                        int64_t *total, struct facet_error *err)
+{
+    struct exhaustive_grids grids;
+    int rc;
     switch (settings->method) {
     case METHOD_EXHAUSTIVE:
-        return (int64_t)shard_exhaustive_points(&settings->space,
-                                                &settings->shard);
+        rc = exhaustive_grids_init(evaluator, &settings->space, &grids, err);
+        *total = rc != FACET_OK ? 0
+                 : (int64_t)shard_grid_points(
+                       grids.n, threshold_steps(&settings->space),
+                       &settings->shard);
+        exhaustive_grids_free(&grids);
+        return rc;
     case METHOD_RANDOM:
-        return (int64_t)shard_share(&settings->shard,
-                                    (uint64_t)settings->evaluations);
+        *total = (int64_t)shard_share(&settings->shard,
+                                      (uint64_t)settings->evaluations);
+        return FACET_OK;
     default:
-        return (int64_t)settings->population *
-               ((int64_t)settings->generations + 1);
+        *total = (int64_t)settings->population *
+                 ((int64_t)settings->generations + 1);
+        return FACET_OK;
     }
 }
 
@@ -847,7 +936,9 @@ int optimize_run_with(const struct option_evaluator *evaluator,
     int rc = design_space_check(&settings->space, NULL, err);
     if (rc != FACET_OK)
         return rc;
-    int64_t total = optimize_total(settings);
+    int64_t total;
+    if ((rc = optimize_total_with(evaluator, settings, &total, err)))
+        return rc;
     struct search s;
     rc = search_init(&s, evaluator, settings, stored, nstored, hooks, total,
                      err);

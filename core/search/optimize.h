@@ -135,6 +135,17 @@ int optimize_method_check(enum optimize_method method,
  * them (an NSGA-II island evaluates as many as a whole run). */
 int64_t optimize_total(const struct optimize_settings *settings);
 
+/* optimize_total for a search with evaluator (NULL: a single surface's),
+ * into *total: an exhaustive walk of an evaluator with a canonical hook
+ * evaluates each distinct canonical grid's thresholds once, so its total
+ * (and a shard's deal, shard.h's shard_grid_unit) is over those grids,
+ * in the order the walk first meets them. FACET_EWORK when out of
+ * memory. */
+struct option_evaluator;
+int optimize_total_with(const struct option_evaluator *evaluator,
+                        const struct optimize_settings *settings,
+                        int64_t *total, struct facet_error *err);
+
 /* What evaluates a run's options: a single surface's evaluation (what
  * optimize_run gives the search) or a project's (core/project/
  * project_search.h). The search itself (methods, the point cache,

@@ -34,13 +34,24 @@ int shard_owns(const struct shard *shard, uint64_t unit)
            unit % (uint64_t)shard->count == (uint64_t)(shard->index - 1);
 }
 
+static uint64_t space_grids(const struct design_space *space)
+{
+    return (uint64_t)(space->u_max - space->u_min + 1) *
+           (uint64_t)(space->v_max - space->v_min + 1);
+}
+
+uint64_t shard_grid_unit(uint64_t grids, uint64_t steps,
+                         const struct shard *shard, uint64_t point)
+{
+    return grids >= (uint64_t)shard->count ? point / steps : point;
+}
+
 uint64_t shard_exhaustive_unit(const struct design_space *space,
                                const struct shard *shard, uint64_t point)
 {
-    uint64_t grids = (uint64_t)(space->u_max - space->u_min + 1) *
-                     (uint64_t)(space->v_max - space->v_min + 1);
-    uint64_t steps = design_space_size(space) / grids;
-    return grids >= (uint64_t)shard->count ? point / steps : point;
+    uint64_t grids = space_grids(space);
+    return shard_grid_unit(grids, design_space_size(space) / grids, shard,
+                           point);
 }
 
 uint64_t shard_share(const struct shard *shard, uint64_t count)
@@ -51,17 +62,22 @@ uint64_t shard_share(const struct shard *shard, uint64_t count)
     return count / n + ((uint64_t)(shard->index - 1) < count % n);
 }
 
+uint64_t shard_grid_points(uint64_t grids, uint64_t steps,
+                           const struct shard *shard)
+{
+    if (shard->count <= 1)
+        return grids * steps;
+    if (grids < (uint64_t)shard->count)
+        return shard_share(shard, grids * steps);
+    return shard_share(shard, grids) * steps;
+}
+
 uint64_t shard_exhaustive_points(const struct design_space *space,
                                  const struct shard *shard)
 {
-    uint64_t total = design_space_size(space);
-    if (shard->count <= 1)
-        return total;
-    uint64_t grids = (uint64_t)(space->u_max - space->u_min + 1) *
-                     (uint64_t)(space->v_max - space->v_min + 1);
-    if (grids < (uint64_t)shard->count)
-        return shard_share(shard, total);
-    return shard_share(shard, grids) * (total / grids);
+    uint64_t grids = space_grids(space);
+    return shard_grid_points(grids, design_space_size(space) / grids,
+                             shard);
 }
 
 uint64_t shard_island_seed(uint64_t seed, const struct shard *shard)

@@ -8,7 +8,12 @@
  *               that order) belongs to shard g mod N + 1, with all of its
  *               thresholds, so each grid is panelized once. A space of
  *               fewer grids than shards is dealt point by point instead
- *               (point p to shard p mod N + 1).
+ *               (point p to shard p mod N + 1). Of a project, whose
+ *               modules that give every surface the same grid are one
+ *               option, the grids dealt are its distinct options' (the
+ *               canonical grids, in the order the walk first meets
+ *               them: optimize_total_with), so no two shards evaluate
+ *               one option.
  *   random      the unsharded run's sequence of distinct points (drawn with
  *               the run's seed; every shard draws it all) is dealt point by
  *               point: the k-th (0-based) to shard k mod N + 1.
@@ -55,6 +60,19 @@ int shard_owns(const struct shard *shard, uint64_t unit);
  * than shards. */
 uint64_t shard_exhaustive_unit(const struct design_space *space,
                                const struct shard *shard, uint64_t point);
+
+/* The same deal over a list of grids, each with steps thresholds: what
+ * a space whose grids are not all distinct options (a project's modules
+ * that give every surface the same grid, core/project/project_search.h)
+ * is dealt by, its distinct grids numbered in the order the exhaustive
+ * walk first meets them. Grid g's thresholds are points g x steps ..
+ * g x steps + steps - 1; the unit of point is its grid, or itself when
+ * there are fewer grids than shards. */
+uint64_t shard_grid_unit(uint64_t grids, uint64_t steps,
+                         const struct shard *shard, uint64_t point);
+/* How many of the grids x steps points shard evaluates. */
+uint64_t shard_grid_points(uint64_t grids, uint64_t steps,
+                           const struct shard *shard);
 
 /* How many of count units numbered 0..count-1 shard takes. */
 uint64_t shard_share(const struct shard *shard, uint64_t count);

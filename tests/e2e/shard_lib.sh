@@ -30,3 +30,22 @@ same_options() {
     n=$(sqlite3 -batch "$2" "SELECT count(*) FROM options")
     same "$1" "$diff runs:$runs" "0 $n $n runs:0"
 }
+
+# same_rows NAME A B TABLE: every row of TABLE in A's file is in B's and
+# back, over every column but the run id (SQLite compares the values
+# exactly), and both hold the same number of rows.
+same_rows() {
+    local c diff n
+    c=$(sqlite3 -batch "$2" "SELECT group_concat(name, ',') FROM
+        (SELECT name FROM pragma_table_info('$4') WHERE name <> 'run'
+         ORDER BY cid)")
+    diff=$(sqlite3 -batch "$2" "ATTACH '$3' AS b;
+        SELECT ((SELECT count(*) FROM (SELECT $c FROM main.$4
+                                       EXCEPT SELECT $c FROM b.$4))
+              + (SELECT count(*) FROM (SELECT $c FROM b.$4
+                                       EXCEPT SELECT $c FROM main.$4)))
+             || ' ' || (SELECT count(*) FROM main.$4)
+             || ' ' || (SELECT count(*) FROM b.$4)")
+    n=$(sqlite3 -batch "$2" "SELECT count(*) FROM $4")
+    same "$1" "$diff" "0 $n $n"
+}
