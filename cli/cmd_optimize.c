@@ -24,9 +24,6 @@
 #include "core/project/module.h"
 #include "study/study.h"
 
-/* The most OBJ files a project may have on the command line. */
-#define PROJECT_FILES_MAX 256
-
 /* Rows of the table a run ends with, unless --table says. */
 #define TABLE_ROWS 20
 

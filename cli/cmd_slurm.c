@@ -1,7 +1,8 @@
 /*
- * cmd_slurm.c: `facet slurm SURFACE.obj --shards N --results DIR [-- OPTIMIZE
- * OPTIONS]`: the Slurm batch scripts of a run spread over a cluster: a job
- * array of N shard tasks (facet optimize --shard I/N) and a merge job
+ * cmd_slurm.c: `facet slurm SURFACE.obj [MORE.obj ...] --shards N --results
+ * DIR [-- OPTIMIZE OPTIONS]`: the Slurm batch scripts of a run spread over
+ * a cluster (of one surface, or of a project's files): a job array of N
+ * shard tasks (facet optimize --shard I/N) and a merge job
  * that runs when every task has succeeded (afterok), and submit.sh, which
  * submits both.
  *
@@ -27,7 +28,9 @@
 /* What the scripts are made of. */
 struct slurm_plan {
     char facet[PATH_MAX];        /* the facet binary, absolute */
-    char surface[PATH_MAX];      /* absolute */
+    /* The surface, or a project's files, absolute: nsurfaces of them. */
+    char (*surface)[PATH_MAX];
+    int nsurfaces;
     char results[PATH_MAX];      /* absolute */
     char merged[256];            /* file name of the merged run */
     long shards, cpus;
@@ -84,8 +87,11 @@ static void write_shards(FILE *out, const struct slurm_plan *p)
         " is\n# written on the node's own disk and copied when finished.\n"
         "SCRATCH=$(mktemp -d \"${TMPDIR:-/tmp}/facet-shard-$I.XXXXXX\")\n"
         "trap 'rm -rf \"$SCRATCH\"' EXIT\n"
-        "\"$FACET\" optimize ");
-    shell_word(out, p->surface);
+        "\"$FACET\" optimize");
+    for (int k = 0; k < p->nsurfaces; k++) {
+        fputc(' ', out);
+        shell_word(out, p->surface[k]);
+    }
     fprintf(out, " --db \"$SCRATCH/shard-$I.db\" --shard \"$I/%ld\" \\\n"
             "    --jobs \"${SLURM_CPUS_PER_TASK:-1}\" --table 5", p->shards);
     for (int k = 0; k < p->noptimize; k++) {
@@ -236,12 +242,16 @@ static int slurm_main(int argc, char **argv, struct facet_error *err)
         {"output", 'o', ARG_STRING, &folder, NULL},
         {NULL, 0, ARG_FLAG, NULL, NULL},
     };
-    const char *surface;
-    int rc = args_parse_one(split, argv, options, NULL, &surface,
-        "slurm: name the surface (facet slurm SURFACE.obj --shards N "
-        "--results DIR [-- optimize options])", err);
+    const char *surface[PROJECT_FILES_MAX];
+    int nsurfaces;
+    int rc = args_parse_shared(split, argv, options, NULL, surface,
+                               PROJECT_FILES_MAX, &nsurfaces, err);
     if (rc != FACET_OK)
         return rc;
+    if (nsurfaces == 0)
+        return facet_error_set(err, FACET_EINPUT,
+            "slurm: name the surface (facet slurm SURFACE.obj [MORE.obj "
+            "...] --shards N --results DIR [-- optimize options])");
     if (shards == NULL || results == NULL)
         return facet_error_set(err, FACET_EINPUT,
             "slurm: give --shards N and --results DIR (a folder every node "
@@ -261,9 +271,14 @@ static int slurm_main(int argc, char **argv, struct facet_error *err)
     plan.noptimize = split < argc ? argc - split - 1 : 0;
     if ((rc = check_optimize_options(plan.optimize, plan.noptimize, err)))
         return rc;
-    if (realpath(surface, plan.surface) == NULL || access(surface, R_OK))
-        return facet_error_set(err, FACET_EINPUT, "%s: %s", surface,
-                               strerror(errno));
+    char place[PROJECT_FILES_MAX][PATH_MAX];
+    plan.surface = place;
+    plan.nsurfaces = nsurfaces;
+    for (int k = 0; k < nsurfaces; k++)
+        if (realpath(surface[k], place[k]) == NULL ||
+            access(surface[k], R_OK))
+            return facet_error_set(err, FACET_EINPUT, "%s: %s", surface[k],
+                                   strerror(errno));
     if ((rc = absolute(results, plan.results, "--results", err)))
         return rc;
     if (facet != NULL) {
@@ -295,7 +310,7 @@ static int slurm_main(int argc, char **argv, struct facet_error *err)
 
 const struct command cmd_slurm = {
     .name = "slurm",
-    .usage = "SURFACE.obj --shards N --results DIR [--cpus C] "
+    .usage = "SURFACE.obj [MORE.obj ...] --shards N --results DIR [--cpus C] "
              "[--partition P]\n"
              "       [--time T] [--facet PATH] [--merged NAME] [-o FOLDER]"
              " [-- OPTIMIZE OPTIONS]",
@@ -325,6 +340,9 @@ const struct command cmd_slurm = {
         "  facet slurm roof.obj --shards 16 --cpus 8 --results "
         "/shared/roof -- \\\n"
         "      --u 20:80 --v 35:120 --threshold 1:10:0.5\n"
-        "  /shared/roof/submit.sh\n",
+        "  /shared/roof/submit.sh\n"
+        "  facet slurm skin.obj --shards 8 --cpus 4 --results /shared/skin "
+        "-- \\\n"
+        "      --module 1.0:2.0x1.0:1.6 --threshold 2:6:2\n",
     .run = slurm_main,
 };

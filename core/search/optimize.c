@@ -866,6 +866,15 @@ static int run_random(struct search *s, enum optimize_outcome *outcome,
         if (rc == FACET_OK && n > 0)
             rc = search_batch(s, points, n, 0, index, numbers, err);
     }
+    /* A space of fewer distinct options than the draws asked for is
+     * spent: the run is done with what it drew, and its progress says so
+     * rather than stopping short of a total it could never reach. */
+    if (rc == FACET_OK && *outcome == OPTIMIZE_DONE && drawn_points < wanted &&
+        s->done < s->total) {
+        s->total = s->done;
+        if (s->hooks->progress != NULL)
+            s->hooks->progress(s->hooks->context, s->done, s->total);
+    }
     drawn_free(&drawn);
     free(points);
     free(index);

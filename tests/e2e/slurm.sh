@@ -3,7 +3,8 @@
 # (munged, slurmctld, slurmd, all in a temporary folder, on ports of their
 # own), the scripts of `facet slurm` submitted with sbatch (a job array of
 # 4 shards, then the merge after them), and the merged run compared by
-# SQLite with the unsharded one. The daemons are stopped and everything
+# SQLite with the unsharded one; then the same for a project of two files
+# searched over panel modules (3 shards), its surface rows compared too. The daemons are stopped and everything
 # removed whatever happens. Where the daemons cannot run (not root, Slurm
 # or munge not installed: `make deps` installs them), every check is
 # reported as skipped with the reason, never as passed.
@@ -118,51 +119,89 @@ done
     skip_all "the node did not come up (state '${state:-none}'): slurmctld: $(daemon_log slurmctld) slurmd: $(daemon_log slurmd)"
 echo "# cluster: node $HOST idle ($(sinfo -h -o '%P %c CPUs %T'))"
 
+# submit_and_compare NAME SHARDS RESULTS WHOLE.db SLURM ARGS...: writes the
+# scripts with facet slurm SLURM ARGS (--shards SHARDS --results RESULTS
+# given here), submits them with sbatch, waits for the array and the merge,
+# and compares the merged run with the unsharded WHOLE.db by SQLite.
+submit_and_compare() {
+    local name=$1 shards=$2 results=$3 whole=$4
+    shift 4
+    local facet_args=() optimize_args=()
+    while [ "$1" != "--" ]; do facet_args+=("$1"); shift; done
+    shift
+    optimize_args=("$@")
+    mkdir -p "$results"
+    expect "$name: facet slurm writes the scripts" 0 "$FACET" slurm "${facet_args[@]}" \
+        --shards "$shards" --results "$results" --cpus 1 -- "${optimize_args[@]}"
+    sed 's/^/# /' "$OUT"
+    run bash "$results/submit.sh"
+    if [ "$STATUS" -eq 0 ]; then pass "$name: submit.sh submits the array and the merge"; else fail "$name: submit.sh submits the array and the merge"; fi
+    sed 's/^/# /' "$OUT"
+    local merge_job array_job
+    merge_job=$(sed -n 's/.*merge: job \([0-9]*\).*/\1/p' "$OUT")
+    array_job=$(sed -n 's/.*shards: job \([0-9]*\).*/\1/p' "$OUT")
+    same "$name: the merge depends on the array (afterok)" \
+        "$(scontrol show job "$merge_job" 2>/dev/null | grep -o "Dependency=afterok:${array_job}[^ ]*" | head -n 1 | cut -d'(' -f1)" \
+        "Dependency=afterok:${array_job}_*"
+
+    # Waits, bounded, for every job of the two to leave the queue.
+    local waited=0
+    while [ "$waited" -lt $((WAIT_SECONDS * 5)) ]; do
+        [ -z "$(squeue -h -j "$array_job,$merge_job" 2>/dev/null)" ] && break
+        sleep 0.2
+        waited=$((waited + 1))
+    done
+    echo "# $name: jobs done after $((waited / 5)) s"
+    same "$name: the jobs finished within $WAIT_SECONDS s" "$(squeue -h -j "$array_job,$merge_job" 2>/dev/null | wc -l)" "0"
+    # What Slurm says of them (kept by slurmctld for MinJobAge, 300 s).
+    scontrol -o show job "$array_job" 2>/dev/null >"$WORK/jobs"
+    scontrol -o show job "$merge_job" 2>/dev/null >>"$WORK/jobs"
+    sed -n 's/^JobId=\([0-9]*\) \(ArrayJobId=[0-9]* ArrayTaskId=[0-9]* \)\{0,1\}JobName=\([^ ]*\).* JobState=\([A-Z]*\).*/# job \1 \2\3 \4/p' "$WORK/jobs" | sort -u
+    same "$name: Slurm ran the $shards shard tasks and the merge to completion" \
+        "$(grep -o 'JobState=[A-Z]*' "$WORK/jobs" | sort | uniq -c | sed 's/^ *//')" \
+        "$((shards + 1)) JobState=COMPLETED"
+    same "$name: every shard was copied to the results" \
+        "$(ls "$results" | grep -c '^shard-[0-9]*\.db$')" "$shards"
+    same "$name: only finished files are in the results (no partial copies)" \
+        "$(ls -A "$results" | grep -c '\.part$')" "0"
+    local log
+    for log in "$results"/*.log; do
+        echo "# --- $(basename "$log")"
+        sed 's/^/#   /' "$log" | head -n 12
+    done
+    if [ -f "$results/merged.db" ]; then
+        pass "$name: the merge job wrote the merged run"
+        same_options "$name: merged run from Slurm = unsharded run, option for option and rank for rank" \
+            "$whole" "$results/merged.db"
+        run "$FACET" runs "$results/merged.db"
+        sed 's/^/# /' "$OUT"
+    else
+        echo "not ok - $name: the merge job wrote the merged run"
+        daemon_log slurmctld
+    fi
+}
+
 "$FACET" example roof --res 40 -o "$WORK/roof.obj" >/dev/null || exit 1
 expect "unsharded run" 0 "$FACET" optimize "$WORK/roof.obj" --db "$WORK/whole.db" "${SPACE[@]}" --table 1
-expect "facet slurm writes the scripts" 0 "$FACET" slurm "$WORK/roof.obj" \
-    --shards "$SHARDS" --results "$D/results" --cpus 1 -- "${SPACE[@]}"
-sed 's/^/# /' "$OUT"
-run bash "$D/results/submit.sh"
-if [ "$STATUS" -eq 0 ]; then pass "submit.sh submits the array and the merge"; else fail "submit.sh submits the array and the merge"; fi
-sed 's/^/# /' "$OUT"
-merge_job=$(sed -n 's/.*merge: job \([0-9]*\).*/\1/p' "$OUT")
-array_job=$(sed -n 's/.*shards: job \([0-9]*\).*/\1/p' "$OUT")
-same "the merge depends on the array (afterok)" \
-    "$(scontrol show job "$merge_job" 2>/dev/null | grep -o "Dependency=afterok:${array_job}[^ ]*" | head -n 1 | cut -d'(' -f1)" \
-    "Dependency=afterok:${array_job}_*"
+submit_and_compare "roof" "$SHARDS" "$D/results" "$WORK/whole.db" "$WORK/roof.obj" -- "${SPACE[@]}"
 
-# Waits, bounded, for every job of the two to leave the queue.
-waited=0
-while [ "$waited" -lt $((WAIT_SECONDS * 5)) ]; do
-    [ -z "$(squeue -h -j "$array_job,$merge_job" 2>/dev/null)" ] && break
-    sleep 0.2
-    waited=$((waited + 1))
+# A project of two files (one of four objects, one of a fifth), searched
+# over panel modules: its shards, their merge, and each option's surface
+# rows as the unsharded run's.
+for e in plane cylinder dome hypar; do
+    "$FACET" example "$e" --res 16 -o "$WORK/$e.obj" >/dev/null || exit 1
 done
-echo "# jobs done after $((waited / 5)) s"
-same "the jobs finished within $WAIT_SECONDS s" "$(squeue -h -j "$array_job,$merge_job" 2>/dev/null | wc -l)" "0"
-# What Slurm says of them (kept by slurmctld for MinJobAge, 300 s).
-scontrol -o show job "$array_job" 2>/dev/null >"$WORK/jobs"
-scontrol -o show job "$merge_job" 2>/dev/null >>"$WORK/jobs"
-sed -n 's/^JobId=\([0-9]*\) \(ArrayJobId=[0-9]* ArrayTaskId=[0-9]* \)\{0,1\}JobName=\([^ ]*\).* JobState=\([A-Z]*\).*/# job \1 \2\3 \4/p' "$WORK/jobs" | sort -u
-same "Slurm ran the $SHARDS shard tasks and the merge to completion" \
-    "$(grep -o 'JobState=[A-Z]*' "$WORK/jobs" | sort | uniq -c | sed 's/^ *//')" \
-    "$((SHARDS + 1)) JobState=COMPLETED"
-same "every shard was copied to the results" \
-    "$(ls "$D/results" | grep -c '^shard-[0-9]*\.db$')" "$SHARDS"
-same "only finished files are in the results (no partial copies)" \
-    "$(ls -A "$D/results" | grep -c '\.part$')" "0"
-for log in "$D"/results/*.log; do
-    echo "# --- $(basename "$log")"
-    sed 's/^/#   /' "$log" | head -n 12
-done
-if [ -f "$D/results/merged.db" ]; then
-    pass "the merge job wrote the merged run"
-    same_options "merged run from Slurm = unsharded run, option for option and rank for rank" \
-        "$WORK/whole.db" "$D/results/merged.db"
-    run "$FACET" runs "$D/results/merged.db"
-    sed 's/^/# /' "$OUT"
-else
-    echo "not ok - the merge job wrote the merged run"
-    daemon_log slurmctld
+/usr/bin/python3 "$(dirname "$0")/project_combine.py" "$WORK/four.obj" \
+    "$WORK/plane.obj" "$WORK/cylinder.obj" "$WORK/dome.obj" "$WORK/hypar.obj" || exit 1
+"$FACET" example wave --res 16 -o "$WORK/wave.obj" >/dev/null || exit 1
+PROJECT_SPACE=(--module 1:4:0.25x1:4:0.25 --threshold 2:6:2 --method exhaustive)
+expect "unsharded project run" 0 "$FACET" optimize "$WORK/four.obj" "$WORK/wave.obj" \
+    --db "$WORK/project.db" "${PROJECT_SPACE[@]}" --table 1
+submit_and_compare "project" 3 "$D/project" "$WORK/project.db" \
+    "$WORK/four.obj" "$WORK/wave.obj" -- "${PROJECT_SPACE[@]}"
+if [ -f "$D/project/merged.db" ]; then
+    same_rows "project: every surface row of every option as the unsharded run's" \
+        "$WORK/project.db" "$D/project/merged.db" option_surfaces
+    same_rows "project: its five surfaces as the unsharded run's" \
+        "$WORK/project.db" "$D/project/merged.db" surfaces
 fi

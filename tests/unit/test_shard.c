@@ -3,7 +3,10 @@
  * against brute force: the shards of a space partition its points, each
  * grid's thresholds stay in one shard when there are grids enough, the
  * counts the progress and the disk check take are the counts of the
- * points dealt, and the parser takes I/N and nothing else.
+ * points dealt, and the parser takes I/N and nothing else; and, for a
+ * search whose points are not all distinct options (a project's
+ * modules), that the shards partition its distinct options, each under
+ * the number a brute-force walk gives it.
  */
 #include <setjmp.h>
 #include <stdarg.h>
@@ -133,6 +136,199 @@ static void test_parse(void **state)
     assert_string_equal(text, "3/5");
 }
 
+/* --- shards of a search whose points are not all distinct options ---
+ *
+ * An evaluator with a canonical hook, as a project's (several modules
+ * give every surface the same grid): nu stands for its class of three
+ * (1-3 -> 1, 4-6 -> 4, ...) and nv for the lowest of its pair (2k, 2k+1)
+ * in the space. The truth is a brute-force walk of the space in the
+ * exhaustive order, numbering each canonical point the first time it is
+ * met. */
+
+static void canonical_classes(void *context, struct design_point *p)
+{
+    const struct design_space *space = context;
+    p->nu = (p->nu - 1) / 3 * 3 + 1;
+    if (p->nu < space->u_min)
+        p->nu = space->u_min;
+    if (p->nv % 2 == 1 && p->nv > space->v_min)
+        p->nv -= 1;
+}
+
+/* What a search with the fake evaluator met, evaluated and stored. */
+struct fake_run {
+    struct evaluated_option *stored;
+    size_t nstored, capacity;
+    size_t evaluated;
+    int64_t last_done, last_total;
+};
+
+static int fake_evaluate(void *context, const struct option_params *base,
+                         const struct design_point *points, size_t n,
+                         int jobs, struct option_totals *totals,
+                         struct facet_error *err)
+{
+    (void)context;
+    (void)base;
+    (void)jobs;
+    (void)err;
+    for (size_t k = 0; k < n; k++) {
+        memset(&totals[k], 0, sizeof totals[k]);
+        totals[k].cost = points[k].nu * 1000.0 + points[k].nv +
+                         points[k].threshold_mm / 100;
+    }
+    return FACET_OK;
+}
+
+static int fake_store(void *context, const struct evaluated_option *options,
+                      size_t n, struct facet_error *err)
+{
+    (void)err;
+    struct fake_run *r = context;
+    if (r->nstored + n > r->capacity) {
+        r->capacity = 2 * (r->nstored + n);
+        r->stored = realloc(r->stored, r->capacity * sizeof *r->stored);
+        assert_non_null(r->stored);
+    }
+    memcpy(r->stored + r->nstored, options, n * sizeof *options);
+    r->nstored += n;
+    r->evaluated += n;
+    return FACET_OK;
+}
+
+static void fake_progress(void *context, int64_t done, int64_t total)
+{
+    struct fake_run *r = context;
+    r->last_done = done;
+    r->last_total = total;
+}
+
+static int by_option_number(const void *a, const void *b)
+{
+    const struct evaluated_option *p = a, *q = b;
+    return (p->number > q->number) - (p->number < q->number);
+}
+
+static void run_fake(const struct design_space *space,
+                     enum optimize_method method, struct shard shard,
+                     struct fake_run *r)
+{
+    memset(r, 0, sizeof *r);
+    struct optimize_settings settings;
+    memset(&settings, 0, sizeof settings);
+    settings.method = method;
+    settings.space = *space;
+    settings.seed = 9;
+    settings.evaluations = 40;
+    settings.jobs = 1;
+    settings.shard = shard;
+    struct option_evaluator evaluator = {(void *)space, canonical_classes,
+                                         fake_evaluate};
+    struct optimize_hooks hooks = {r, fake_store, fake_progress, NULL};
+    enum optimize_outcome outcome;
+    struct facet_error err;
+    assert_int_equal(optimize_run_with(&evaluator, &settings, NULL, 0,
+                                       &hooks, &outcome, &err), FACET_OK);
+    assert_int_equal(outcome, OPTIMIZE_DONE);
+    int64_t total;
+    assert_int_equal(optimize_total_with(&evaluator, &settings, &total,
+                                         &err), FACET_OK);
+    /* The progress ends at its total; an exhaustive walk's is the one
+     * it announced, the count of points it evaluates (a random run that
+     * spends its space before its draws ends where it stops). */
+    assert_int_equal(r->last_done, r->last_total);
+    if (method == METHOD_EXHAUSTIVE) {
+        assert_int_equal(r->last_total, total);
+        assert_int_equal((int64_t)r->nstored, total);
+    }
+    qsort(r->stored, r->nstored, sizeof *r->stored, by_option_number);
+}
+
+static void test_canonical_shards(void **state)
+{
+    (void)state;
+    static const struct design_space canonical_spaces[] = {
+        {1, 10, 3, 9, 1, 3, 1},    /* 4 x 4 distinct grids x 3 */
+        {2, 5, 1, 2, 2, 2, 0},     /* 2 x 2 distinct grids, 1 threshold */
+        {1, 7, 1, 3, 0.5, 2, 0.5}, /* 3 x 2 distinct grids x 4 */
+    };
+    for (size_t s = 0; s < sizeof canonical_spaces / sizeof *canonical_spaces;
+         s++) {
+        const struct design_space *space = &canonical_spaces[s];
+        /* Brute force: the distinct canonical points in walk order. */
+        struct design_point truth[4096];
+        size_t ntruth = 0;
+        uint64_t steps = design_space_size(space) /
+                         (uint64_t)((space->u_max - space->u_min + 1) *
+                                    (space->v_max - space->v_min + 1));
+        for (int u = space->u_min; u <= space->u_max; u++)
+            for (int v = space->v_min; v <= space->v_max; v++)
+                for (uint64_t t = 0; t < steps; t++) {
+                    struct design_point p = {u, v, space->t_min_mm +
+                                             (double)t * space->t_step_mm};
+                    canonical_classes((void *)space, &p);
+                    size_t k = 0;
+                    while (k < ntruth &&
+                           !(truth[k].nu == p.nu && truth[k].nv == p.nv &&
+                             truth[k].threshold_mm == p.threshold_mm))
+                        k++;
+                    if (k == ntruth)
+                        truth[ntruth++] = p;
+                }
+        struct fake_run whole;
+        run_fake(space, METHOD_EXHAUSTIVE, (struct shard){0, 0}, &whole);
+        assert_int_equal(whole.nstored, ntruth);
+        for (size_t k = 0; k < ntruth; k++) {
+            assert_int_equal(whole.stored[k].number, (int64_t)k + 1);
+            assert_int_equal(whole.stored[k].point.nu, truth[k].nu);
+            assert_int_equal(whole.stored[k].point.nv, truth[k].nv);
+            assert_true(whole.stored[k].point.threshold_mm ==
+                        truth[k].threshold_mm);
+        }
+        for (int method = METHOD_EXHAUSTIVE; method <= METHOD_RANDOM;
+             method++) {
+            struct fake_run unsharded;
+            run_fake(space, (enum optimize_method)method,
+                     (struct shard){0, 0}, &unsharded);
+            for (int n = 1; n <= 6; n++) {
+                /* Every option in exactly one shard, under its unsharded
+                 * number and point; no shard evaluates another's. */
+                unsigned char *owner = calloc(unsharded.nstored + 1, 1);
+                size_t evaluated = 0;
+                for (int i = 1; i <= n; i++) {
+                    struct fake_run part;
+                    run_fake(space, (enum optimize_method)method,
+                             (struct shard){i, n}, &part);
+                    evaluated += part.evaluated;
+                    for (size_t k = 0; k < part.nstored; k++) {
+                        int64_t number = part.stored[k].number;
+                        assert_true(number >= 1 &&
+                                    number <= (int64_t)unsharded.nstored);
+                        const struct evaluated_option *w =
+                            &unsharded.stored[number - 1];
+                        assert_int_equal(w->number, number);
+                        assert_int_equal(part.stored[k].point.nu,
+                                         w->point.nu);
+                        assert_int_equal(part.stored[k].point.nv,
+                                         w->point.nv);
+                        assert_true(part.stored[k].point.threshold_mm ==
+                                    w->point.threshold_mm);
+                        assert_int_equal(owner[number], 0);
+                        owner[number] = (unsigned char)i;
+                    }
+                    free(part.stored);
+                }
+                assert_int_equal(evaluated, unsharded.nstored);
+                for (size_t k = 1; k <= unsharded.nstored; k++)
+                    assert_true(owner[k] != 0);
+                free(owner);
+            }
+            free(unsharded.stored);
+        }
+        free(whole.stored);
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -140,6 +336,7 @@ int main(void)
         cmocka_unit_test(test_share_counts),
         cmocka_unit_test(test_island_seeds),
         cmocka_unit_test(test_parse),
+        cmocka_unit_test(test_canonical_shards),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
