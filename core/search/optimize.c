@@ -699,17 +699,23 @@ static void exhaustive_point(const struct exhaustive_grids *g,
     }
 }
 
-static int run_exhaustive(struct search *s, enum optimize_outcome *outcome,
+/* The points of the walk over grids that shard evaluates. */
+static int64_t exhaustive_total(const struct exhaustive_grids *grids,
+                                const struct shard *shard)
+{
+    return (int64_t)shard_grid_points(grids->n,
+                                      threshold_steps(grids->space), shard);
+}
+
+static int run_exhaustive(struct search *s,
+                          const struct exhaustive_grids *grids,
+                          enum optimize_outcome *outcome,
                           struct facet_error *err)
 {
     const struct optimize_settings *settings = s->settings;
-    struct exhaustive_grids grids;
-    int rc = exhaustive_grids_init(s->evaluator, &settings->space, &grids,
-                                   err);
-    if (rc != FACET_OK)
-        return rc;
+    int rc = FACET_OK;
     uint64_t steps = threshold_steps(&settings->space);
-    uint64_t total = grids.n * steps;
+    uint64_t total = grids->n * steps;
     size_t size = batch_size(settings);
     struct design_point *points = malloc(size * sizeof *points);
     size_t *index = malloc(size * sizeof *index);
@@ -727,9 +733,9 @@ static int run_exhaustive(struct search *s, enum optimize_outcome *outcome,
         size_t n = 0;
         for (; n < size && next < total; next++)
             if (shard_owns(&settings->shard,
-                           shard_grid_unit(grids.n, steps, &settings->shard,
-                                           next))) {
-                exhaustive_point(&grids, next, &points[n]);
+                           shard_grid_unit(grids->n, steps,
+                                           &settings->shard, next))) {
+                exhaustive_point(grids, next, &points[n]);
                 numbers[n++] = (int64_t)next + 1;
             }
         if (n > 0)
@@ -738,7 +744,6 @@ static int run_exhaustive(struct search *s, enum optimize_outcome *outcome,
     free(points);
     free(index);
     free(numbers);
-    exhaustive_grids_free(&grids);
     return rc;
 }
 
@@ -901,9 +906,7 @@ int optimize_total_with(const struct option_evaluator *evaluator,
     case METHOD_EXHAUSTIVE:
         rc = exhaustive_grids_init(evaluator, &settings->space, &grids, err);
         *total = rc != FACET_OK ? 0
-                 : (int64_t)shard_grid_points(
-                       grids.n, threshold_steps(&settings->space),
-                       &settings->shard);
+                                : exhaustive_total(&grids, &settings->shard);
         exhaustive_grids_free(&grids);
         return rc;
     case METHOD_RANDOM:
@@ -945,21 +948,32 @@ int optimize_run_with(const struct option_evaluator *evaluator,
     int rc = design_space_check(&settings->space, NULL, err);
     if (rc != FACET_OK)
         return rc;
+    /* An exhaustive walk's grids, listed once: its total is theirs. */
+    struct exhaustive_grids grids;
+    memset(&grids, 0, sizeof grids);
     int64_t total;
-    if ((rc = optimize_total_with(evaluator, settings, &total, err)))
-        return rc;
+    if (settings->method == METHOD_EXHAUSTIVE) {
+        rc = exhaustive_grids_init(evaluator, &settings->space, &grids, err);
+        total = rc != FACET_OK ? 0
+                               : exhaustive_total(&grids, &settings->shard);
+    } else {
+        rc = optimize_total_with(evaluator, settings, &total, err);
+    }
     struct search s;
-    rc = search_init(&s, evaluator, settings, stored, nstored, hooks, total,
-                     err);
+    memset(&s, 0, sizeof s);
+    if (rc == FACET_OK)
+        rc = search_init(&s, evaluator, settings, stored, nstored, hooks,
+                         total, err);
     if (rc == FACET_OK) {
         if (settings->method == METHOD_EXHAUSTIVE)
-            rc = run_exhaustive(&s, outcome, err);
+            rc = run_exhaustive(&s, &grids, outcome, err);
         else if (settings->method == METHOD_RANDOM)
             rc = run_random(&s, outcome, err);
         else
             rc = run_nsga2(&s, outcome, err);
     }
     search_free(&s);
+    exhaustive_grids_free(&grids);
     return rc;
 }
 
