@@ -33,7 +33,8 @@ struct shard_file {
 enum { RUN_KEYS = 26, KEY_TEXT = 200 };
 static const char *const key_name[RUN_KEYS] = {
     "surface (SHA-256)", "units", "object", "group", "method", "seed",
-    "module range (m)", "u", "v", "threshold", "prices (FP, SP, DP)", "sp_as_fp",
+    "module range (m)", "u", "v", "threshold", "prices (FP, SP, DP)",
+    "sp_as_fp",
     "max_panel_area", "curvature_tol", "per_panel", "flip_normals", "uv",
     "uv_method", "objectives", "population and generations", "evaluations",
     "cost model (panel, joint, SP and DP moulds)",
@@ -76,7 +77,8 @@ static void run_keys(const struct run_info *r, char text[RUN_KEYS][KEY_TEXT])
     snprintf(text[k++], KEY_TEXT, "%s",
              store_run_setting_text(r, RUN_SETTING_PER_PANEL));
     snprintf(text[k++], KEY_TEXT, "%d", r->flip_normals);
-    snprintf(text[k++], KEY_TEXT, "%s", store_run_setting_text(r, RUN_SETTING_UV));
+    snprintf(text[k++], KEY_TEXT, "%s",
+             store_run_setting_text(r, RUN_SETTING_UV));
     snprintf(text[k++], KEY_TEXT, "%s",
              store_run_setting_text(r, RUN_SETTING_UV_METHOD));
     snprintf(text[k++], KEY_TEXT, "%s", r->objectives);
@@ -84,7 +86,8 @@ static void run_keys(const struct run_info *r, char text[RUN_KEYS][KEY_TEXT])
     snprintf(text[k++], KEY_TEXT, "%lld", (long long)r->evaluations);
     snprintf(text[k++], KEY_TEXT, "%.17g, %.17g, %.17g, %.17g", r->panel_cost,
              r->joint_cost, r->mould_cost[TYPE_SP], r->mould_cost[TYPE_DP]);
-    snprintf(text[k++], KEY_TEXT, "%.17g, %d", r->mould_tol_mm, r->mould_mirror);
+    snprintf(text[k++], KEY_TEXT, "%.17g, %d", r->mould_tol_mm,
+             r->mould_mirror);
     snprintf(text[k++], KEY_TEXT, "%d, %.17g, %.17g", r->sp_fit, r->max_gap_mm,
              r->max_kink_deg);
     snprintf(text[k++], KEY_TEXT, "%s",
@@ -462,37 +465,49 @@ static int put_project_options(struct store *store, int64_t run,
     struct option_row *chunk = malloc(PROJECT_CHUNK * sizeof *chunk);
     struct option_surface_row *surfaces =
         malloc(PROJECT_CHUNK * ns * sizeof *surfaces);
+    /* The rows of each file together, in merged order (a counting sort
+     * by file): file k's are order[first[k] .. first[k + 1]). */
+    size_t *order = malloc((nrows ? nrows : 1) * sizeof *order);
+    size_t *first = calloc((size_t)nfiles + 1, sizeof *first);
+    size_t *next = malloc((size_t)nfiles * sizeof *next);
     int rc = FACET_OK;
-    if (chunk == NULL || surfaces == NULL)
+    if (chunk == NULL || surfaces == NULL || order == NULL ||
+        first == NULL || next == NULL)
         rc = facet_error_set(err, FACET_EWORK, "out of memory");
+    for (size_t j = 0; rc == FACET_OK && j < nrows; j++)
+        first[origin[j].file + 1]++;
+    for (int k = 0; rc == FACET_OK && k < nfiles; k++) {
+        first[k + 1] += first[k];
+        next[k] = first[k];
+    }
+    for (size_t j = 0; rc == FACET_OK && j < nrows; j++)
+        order[next[origin[j].file]++] = j;
     for (int k = 0; rc == FACET_OK && k < nfiles; k++) {
         struct store *shard;
         if ((rc = store_open_read(f[k].path, &shard, err)) != FACET_OK)
             break;
         size_t n = 0;
-        for (size_t j = 0; rc == FACET_OK && j <= nrows; j++) {
-            if (j < nrows && origin[j].file != k)
-                continue;
-            if (j < nrows) {
-                struct option_surface_row *got;
-                size_t ngot;
-                rc = store_option_surfaces_get(shard, f[k].run.id,
-                                               origin[j].number, &got,
-                                               &ngot, err);
-                if (rc == FACET_OK && ngot != ns)
-                    rc = facet_error_set(err, FACET_EINPUT,
-                        "%s: option %lld of shard %d/%d has %zu surface "
-                        "rows, not %zu", f[k].path,
-                        (long long)origin[j].number, f[k].run.shard_index,
-                        f[k].run.shard_count, ngot, ns);
-                if (rc == FACET_OK) {
-                    chunk[n] = rows[j];
-                    memcpy(surfaces + n * ns, got, ns * sizeof *got);
-                    n++;
-                }
-                free(got);
+        for (size_t at = first[k]; rc == FACET_OK && at < first[k + 1];
+             at++) {
+            size_t j = order[at];
+            struct option_surface_row *got;
+            size_t ngot;
+            rc = store_option_surfaces_get(shard, f[k].run.id,
+                                           origin[j].number, &got, &ngot,
+                                           err);
+            if (rc == FACET_OK && ngot != ns)
+                rc = facet_error_set(err, FACET_EINPUT,
+                    "%s: option %lld of shard %d/%d has %zu surface rows, "
+                    "not %zu", f[k].path, (long long)origin[j].number,
+                    f[k].run.shard_index, f[k].run.shard_count, ngot, ns);
+            if (rc == FACET_OK) {
+                chunk[n] = rows[j];
+                memcpy(surfaces + n * ns, got, ns * sizeof *got);
+                n++;
             }
-            if (rc == FACET_OK && n > 0 && (n == PROJECT_CHUNK || j == nrows)) {
+            free(got);
+            if (rc == FACET_OK &&
+                (n == PROJECT_CHUNK || at + 1 == first[k + 1])) {
                 rc = store_project_options_put(store, run, chunk, n,
                                                surfaces, ns, err);
                 n = 0;
@@ -502,6 +517,9 @@ static int put_project_options(struct store *store, int64_t run,
     }
     free(chunk);
     free(surfaces);
+    free(order);
+    free(first);
+    free(next);
     return rc;
 }
 
