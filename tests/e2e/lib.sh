@@ -87,3 +87,16 @@ same() {
         echo "  want: $3" | head -n 5
     fi
 }
+
+# four_surfaces: writes Facet's plane, cylinder, dome and hypar examples
+# (--res 16) into $WORK, and $WORK/four.obj, a project of their four
+# objects in one file (project_combine.py), for the project tests.
+four_surfaces() {
+    local e
+    for e in plane cylinder dome hypar; do
+        "$FACET" example "$e" --res 16 -o "$WORK/$e.obj" >/dev/null || return 1
+    done
+    /usr/bin/python3 "$(dirname "${BASH_SOURCE[0]}")/project_combine.py" \
+        "$WORK/four.obj" "$WORK/plane.obj" "$WORK/cylinder.obj" \
+        "$WORK/dome.obj" "$WORK/hypar.obj"
+}

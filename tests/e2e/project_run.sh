@@ -23,11 +23,7 @@ check() {
     fi
 }
 
-for e in plane cylinder dome hypar; do
-    "$FACET" example "$e" --res 16 -o "$WORK/$e.obj" || exit 1
-done
-/usr/bin/python3 "$HERE/project_combine.py" "$WORK/four.obj" \
-    "$WORK/plane.obj" "$WORK/cylinder.obj" "$WORK/dome.obj" "$WORK/hypar.obj" || exit 1
+four_surfaces || exit 1
 
 # 1. Exhaustive over 13 x 13 modules and 3 thresholds: one option per grid
 # vector and threshold, its surface rows adding up to it.

@@ -12,14 +12,9 @@
 # the difference; merging twice changes nothing; a missing shard is named.
 . "$(dirname "$0")/lib.sh"
 . "$(dirname "$0")/shard_lib.sh"
-HERE=$(dirname "$0")
 sql() { sqlite3 -batch "$1" "$2"; }
 
-for e in plane cylinder dome hypar; do
-    "$FACET" example "$e" --res 16 -o "$WORK/$e.obj" || exit 1
-done
-/usr/bin/python3 "$HERE/project_combine.py" "$WORK/four.obj" \
-    "$WORK/plane.obj" "$WORK/cylinder.obj" "$WORK/dome.obj" "$WORK/hypar.obj" || exit 1
+four_surfaces || exit 1
 P=$WORK/four.obj
 # 13 x 13 modules x 3 thresholds = 507 points; far fewer distinct options.
 SPACE=(--module 1:4:0.25x1:4:0.25 --threshold 2:6:2 --method exhaustive)

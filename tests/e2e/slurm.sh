@@ -188,11 +188,7 @@ submit_and_compare "roof" "$SHARDS" "$D/results" "$WORK/whole.db" "$WORK/roof.ob
 # A project of two files (one of four objects, one of a fifth), searched
 # over panel modules: its shards, their merge, and each option's surface
 # rows as the unsharded run's.
-for e in plane cylinder dome hypar; do
-    "$FACET" example "$e" --res 16 -o "$WORK/$e.obj" >/dev/null || exit 1
-done
-/usr/bin/python3 "$(dirname "$0")/project_combine.py" "$WORK/four.obj" \
-    "$WORK/plane.obj" "$WORK/cylinder.obj" "$WORK/dome.obj" "$WORK/hypar.obj" || exit 1
+four_surfaces || exit 1
 "$FACET" example wave --res 16 -o "$WORK/wave.obj" >/dev/null || exit 1
 PROJECT_SPACE=(--module 1:4:0.25x1:4:0.25 --threshold 2:6:2 --method exhaustive)
 expect "unsharded project run" 0 "$FACET" optimize "$WORK/four.obj" "$WORK/wave.obj" \

@@ -17,12 +17,7 @@ if ! command -v sqlite3 >/dev/null; then
     echo "skip - every project view check (sqlite3 is not installed)"
     exit 0
 fi
-HERE=$(dirname "$0")
-for e in plane cylinder dome hypar; do
-    "$FACET" example "$e" --res 16 -o "$WORK/$e.obj" >/dev/null || exit 1
-done
-/usr/bin/python3 "$HERE/project_combine.py" "$WORK/four.obj" \
-    "$WORK/plane.obj" "$WORK/cylinder.obj" "$WORK/dome.obj" "$WORK/hypar.obj" || exit 1
+four_surfaces || exit 1
 "$FACET" optimize "$WORK/four.obj" --db "$WORK/p.db" --module 1:3:0.5x1:3:0.5 \
     --threshold 3 --method exhaustive --table 0 >/dev/null 2>&1 || exit 1
 q() { sqlite3 -batch "$WORK/p.db" "$1"; }
