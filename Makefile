@@ -1,7 +1,10 @@
 # Facet: build, test, demo and benchmark.
 #
 #   make          build ./facet (optimised)
-#   make check    run every test, then every test again under ASan+UBSan
+#   make check    build the release and the ASan+UBSan builds, then run every
+#                 test of both, side by side on every core (tests/run.py)
+#   make check-fast  the edit-test loop: the release build's unit tests and
+#                 the end-to-end suites of the layers the change touches
 #   make demo     run the main job on a bundled example (no TTY needed)
 #   make bench    benchmarks, reported as ratios against a baseline
 #   make deps     install the Debian packages Facet needs (as root)
@@ -13,6 +16,7 @@ CC      ?= gcc
 CXX     ?= g++
 VARIANT ?= release
 BUILD   := build/$(VARIANT)
+JOBS    ?= $(shell nproc 2>/dev/null || echo 2)
 VERSION := 0.1.0
 
 DEBIAN_PACKAGES := gcc g++ make pkg-config libncurses-dev libsqlite3-dev librsvg2-bin \
@@ -62,7 +66,7 @@ FUZZ_SEED ?= 1
 BENCH_SRC := $(wildcard tests/bench/*.c)
 BENCH_BIN := $(BENCH_SRC:tests/bench/%.c=$(BUILD)/bench/%)
 
-.PHONY: all check test demo bench deps clean fuzz fuzz-run
+.PHONY: all check check-fast test test-build demo bench deps clean fuzz fuzz-run
 
 # Objects built on the way (the tests' support) are kept, not removed.
 .SECONDARY:
@@ -109,13 +113,23 @@ $(BUILD)/bench/%: tests/bench/%.c $(SUPPORT_OBJ) $(BUILD)/libfacet.a
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS) $(LDFLAGS) -o $@ $< $(SUPPORT_OBJ) $(BUILD)/libfacet.a $(LDLIBS)
 
-# Build and run every test of one variant.
-test: $(BUILD)/facet $(UNIT_BIN) $(TOOL_BIN) $(REPLAY_BIN)
-	tests/run.sh $(BUILD)
+# Everything one variant's tests run.
+test-build: $(BUILD)/facet $(UNIT_BIN) $(TOOL_BIN) $(REPLAY_BIN)
 
+# Build and run every test of one variant.
+test: test-build
+	tests/run.py --jobs $(JOBS) $(BUILD)
+
+# Both builds' suites in one queue, so that both cores stay busy to the end;
+# the fixtures are made once, by the release build, for both.
 check: deps
-	$(MAKE) VARIANT=release facet test
-	$(MAKE) VARIANT=san test
+	$(MAKE) -j$(JOBS) VARIANT=release facet test-build
+	$(MAKE) -j$(JOBS) VARIANT=san test-build
+	tests/run.py --jobs $(JOBS) build/release build/san
+
+check-fast:
+	$(MAKE) -j$(JOBS) VARIANT=release facet test-build
+	tests/run.py --jobs $(JOBS) --changed build/release
 
 # Every fuzz target under libFuzzer with ASan and UBSan for FUZZ_SECONDS
 # each (default 60), from a copy of its seed corpus, with the mutations of

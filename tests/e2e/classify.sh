@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # End-to-end: facet classify on generated and real surfaces, its JSON, its
 # CSV schedule, its map, and its errors.
+# layers: core cli
 . "$(dirname "$0")/lib.sh"
 
-"$FACET" example roof -o "$WORK/roof.obj" || exit 1
+fixture roof.obj || exit 1
 "$FACET" example hypar --res 40 -o "$WORK/hypar.obj" || exit 1
 "$FACET" example plane --res 8 -o "$WORK/plane.obj" || exit 1
 

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # End-to-end: the facet command's help, examples, info and its errors, run
 # as a user would run them.
+# layers: cli
 . "$(dirname "$0")/lib.sh"
 
 # Help, from the one command table.

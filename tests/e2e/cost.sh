@@ -5,12 +5,13 @@
 # terms are 0: the options of the paper's space, to the last bit, as the
 # Facet before the cost model (commit 55c44a9) stored them
 # (data/paper_space_55c44a9.csv, made by that binary with sqlite3).
+# layers: core study store
 . "$(dirname "$0")/lib.sh"
 
 HERE=$(cd "$(dirname "$0")" && pwd)
 sql() { sqlite3 -batch "$1" "$2"; }
 
-"$FACET" example roof --force -o "$WORK/roof.obj" >/dev/null || exit 1
+fixture roof.obj || exit 1
 ROOF=$WORK/roof.obj
 COSTS=(--panel-cost 250 --joint-cost 40 --mould-cost 3000,20000)
 
@@ -18,8 +19,9 @@ COSTS=(--panel-cost 250 --joint-cost 40 --mould-cost 3000,20000)
 # The paper types SP by class alone (--sp-fit no); as built (the default)
 # the panels no cylinder or cone fits are DP and its numbers change (README:
 # "Panels as built").
-run "$FACET" optimize "$ROOF" --db "$WORK/paper.db" --u 20:40 --v 35:50 \
-    --threshold 3 --sp-as-fp --max-panel-area 1.92 --sp-fit no --name paper
+# (the fixture paper.db: --u 20:40 --v 35:50 --threshold 3 --sp-as-fp
+# --max-panel-area 1.92 --sp-fit no --name paper)
+fixture_run paper.db "$WORK/paper.db"
 if [ "$STATUS" -ne 0 ]; then fail "paper space runs"; else pass "paper space runs"; fi
 sqlite3 -batch -csv "$WORK/paper.db" "SELECT nu,nv,printf('%.17g',threshold_mm),panels,fp_count,sp_count,dp_count,printf('%.17g',fp_area),printf('%.17g',sp_area),printf('%.17g',dp_area),printf('%.17g',cost),printf('%.17g',planarity),printf('%.17g',max_deviation),printf('%.17g',max_panel_area),feasible,rank,printf('%.17g',crowding),knee FROM options ORDER BY number" >"$WORK/paper.csv"
 if cmp -s "$WORK/paper.csv" "$HERE/data/paper_space_55c44a9.csv"; then

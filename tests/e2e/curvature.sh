@@ -3,6 +3,7 @@
 # their CAD's analysis, against the formulas of the generated examples
 # (a sphere of R = 20 m: k1 = k2 = -1/20; a cylinder of R = 10 m: -1/10
 # across, 0 along), in its CSV, its JSON and its errors.
+# layers: core cli
 . "$(dirname "$0")/lib.sh"
 
 "$FACET" example dome --res 40 -o "$WORK/dome.obj" || exit 1

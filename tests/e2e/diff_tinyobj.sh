@@ -9,6 +9,7 @@
 # comes from $FACET_DATA or ../shared/data. Uses Debian's /usr/bin/python3,
 # which has the tinyobjloader module. Prints one "ok"/"not ok" line per
 # file and exits 1 if any file disagrees.
+# layers: core
 set -uo pipefail
 cd "$(dirname "$0")/../.."
 build=${1:-${BUILD:-build/release}}

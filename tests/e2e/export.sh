@@ -1,11 +1,12 @@
 #!/usr/bin/env bash
 # End-to-end: facet export (OBJ + MTL, CSV, JSON, SVG map) of a stored
 # option, facet plot of runs, and their errors.
+# layers: cli study store
 . "$(dirname "$0")/lib.sh"
 CHECK="/usr/bin/python3 $(dirname "$0")/export_check.py"
 DB=$WORK/r.db
 
-"$FACET" example roof --res 40 -o "$WORK/roof.obj" >/dev/null 2>&1 || exit 1
+fixture roof40.obj "$WORK/roof.obj" || exit 1
 "$FACET" optimize "$WORK/roof.obj" --db "$DB" --u 6:10 --v 6:10 \
     --max-panel-area 100 >/dev/null 2>&1 || exit 1
 "$FACET" optimize "$WORK/roof.obj" --db "$DB" --u 5:9 --v 7:11 \

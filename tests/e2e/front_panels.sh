@@ -6,15 +6,16 @@
 # front (infinite crowding), then the largest crowding distance, the
 # order SQLite gives below; the others' panels are computed when first
 # looked at, and then stored.
+# layers: study store
 . "$(dirname "$0")/lib.sh"
 
-"$FACET" example roof -o "$WORK/roof.obj" >/dev/null || exit 1
+fixture roof.obj || exit 1
 q() { sqlite3 "$WORK/f.db" "$1"; }
 
-# The paper's study: 336 options, a front of about a dozen: all stored.
-expect "the paper's study runs" 0 "$FACET" optimize "$WORK/roof.obj" \
-    --db "$WORK/f.db" --u 20:40 --v 35:50 --threshold 3 --sp-as-fp \
-    --max-panel-area 1.92 --sp-fit no
+# The paper's study: 336 options, a front of about a dozen: all stored
+# (the fixture paper.db: --u 20:40 --v 35:50 --threshold 3 --sp-as-fp
+# --max-panel-area 1.92 --sp-fit no).
+expect_fixture "the paper's study runs" 0 paper.db "$WORK/f.db"
 front=$(q "select count(*) from options where run = 1 and rank = 1")
 if [ "$front" -gt 16 ]; then
     echo "not ok - the paper's front ($front) is within the least budget, 16"

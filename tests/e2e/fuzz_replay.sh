@@ -3,6 +3,7 @@
 # every input that once crashed it (tests/fuzz/crashes/NAME), in the
 # build's own variant (ASan + UBSan in build/san): a crash found by
 # `make fuzz` stays a regression test.
+# layers: core store
 . "$(dirname "$0")/lib.sh"
 root=$(cd "$(dirname "$0")/../.." && pwd)
 for replay in "$root/$BUILD"/fuzz/replay_*; do

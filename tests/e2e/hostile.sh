@@ -2,6 +2,7 @@
 # End-to-end: hostile files, special paths, full disks and overflow (issue
 # 14): every case is refused in one line with a non-zero exit, or written
 # where it should be, and nothing outside the command's own files changes.
+# layers: cli study store
 . "$(dirname "$0")/lib.sh"
 
 "$FACET" example plane --res 8 -o "$WORK/p.obj" || exit 1

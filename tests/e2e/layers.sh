@@ -17,10 +17,11 @@
 # a caller names its fields instead. Comments may name flags.
 #
 # Prints one "ok - ..." or "not ok - ..." line per floor, with the
-# offending lines below a failure; tests/run.sh counts them. Reads only the
+# offending lines below a failure; tests/run.py counts them. Reads only the
 # sources: it needs no build.
 #
 #   tests/e2e/layers.sh [ROOT]      (ROOT: the repository, by default this one)
+# layers: core store study tui cli
 set -uo pipefail
 root=${1:-$(dirname "$0")/../..}
 cd "$root" || exit 1

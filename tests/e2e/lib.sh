@@ -1,6 +1,6 @@
 # lib.sh: helpers for the end-to-end scripts, which run the real facet
 # binary ($FACET) and print one "ok - NAME" or "not ok - NAME" line per check.
-# Each script sources this file; tests/run.sh counts the lines.
+# Each script sources this file; tests/run.py counts the lines.
 
 FACET=${FACET:?set FACET to the facet binary}
 FACET_DATA=${FACET_DATA:-../shared/data}
@@ -16,7 +16,7 @@ run() {
 }
 
 pass() { echo "ok - $1"; }
-# skip NAME WHY: a check that could not run here; tests/run.sh counts it
+# skip NAME WHY: a check that could not run here; tests/run.py counts it
 # apart, never as passed.
 skip() { echo "skip - $1 ($2)"; }
 
@@ -88,15 +88,67 @@ same() {
     fi
 }
 
-# four_surfaces: writes Facet's plane, cylinder, dome and hypar examples
+# fixture NAME [DEST]: copies the shared fixture NAME (tests/e2e/fixtures.sh
+# says what each is) to DEST (default $WORK/NAME), so that a script may
+# change its copy; a database fixture's NAME.status, NAME.out and NAME.err
+# (how its command went) come with it. tests/run.py makes the fixtures once
+# per run; a script run on its own makes the ones it asks for into $WORK.
+fixture() {
+    local name=$1 dest=${2:-$WORK/$1} part
+    fixture_make "$name" || return 1
+    cp "$FACET_FIXTURES/$name" "$dest" || return 1
+    for part in status out err; do
+        if [ -e "$FACET_FIXTURES/$name.$part" ]; then
+            cp "$FACET_FIXTURES/$name.$part" "$dest.$part" || return 1
+        fi
+    done
+}
+
+# fixture_make NAME: makes the fixture NAME unless it is made already.
+fixture_make() {
+    if [ -z "${FACET_FIXTURES:-}" ]; then
+        FACET_FIXTURES=$WORK/fixtures
+    fi
+    [ -e "$FACET_FIXTURES/$1" ] && return 0
+    FACET_FIXTURES=$FACET_FIXTURES bash "$(dirname "${BASH_SOURCE[0]}")/fixtures.sh" "$1"
+}
+
+# fixture_path NAME: the shared fixture NAME's own path, for a script that
+# only reads it and needs the very path a database fixture names (a run
+# records its surfaces' files).
+fixture_path() {
+    fixture_make "$1" >&2 || return 1
+    echo "$FACET_FIXTURES/$1"
+}
+
+# fixture_run NAME DB: as run, for the command that made the database
+# fixture NAME, copied to DB: its status, stdout and stderr are the last
+# run's, for expect-like checks of that command.
+fixture_run() {
+    STATUS=127
+    : >"$OUT"
+    echo "the fixture $1 could not be made" >"$ERR"
+    fixture "$1" "$2" || return 1
+    STATUS=$(cat "$2.status")
+    cp "$2.out" "$OUT"
+    cp "$2.err" "$ERR"
+}
+
+# expect_fixture NAME STATUS FIXTURE DB: as expect, of the command that
+# made the database fixture FIXTURE (copied to DB).
+expect_fixture() {
+    local name=$1 want=$2
+    fixture_run "$3" "$4"
+    if [ "$STATUS" -eq "$want" ]; then pass "$name"; else fail "$name (want status $want)"; fi
+}
+
+# four_surfaces: copies Facet's plane, cylinder, dome and hypar examples
 # (--res 16) into $WORK, and $WORK/four.obj, a project of their four
-# objects in one file (project_combine.py), for the project tests.
+# objects in one file (project_combine.py), for the project tests: the
+# fixtures of those names.
 four_surfaces() {
     local e
-    for e in plane cylinder dome hypar; do
-        "$FACET" example "$e" --res 16 -o "$WORK/$e.obj" >/dev/null || return 1
+    for e in plane cylinder dome hypar four; do
+        fixture "$e.obj" || return 1
     done
-    /usr/bin/python3 "$(dirname "${BASH_SOURCE[0]}")/project_combine.py" \
-        "$WORK/four.obj" "$WORK/plane.obj" "$WORK/cylinder.obj" \
-        "$WORK/dome.obj" "$WORK/hypar.obj"
 }

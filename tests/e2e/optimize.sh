@@ -5,12 +5,13 @@
 # the same seed gives the same options, an interrupted or killed run resumes
 # to what an uninterrupted run stores, readers are never locked out, and
 # bad input is refused in one line.
+# layers: study store core
 . "$(dirname "$0")/lib.sh"
 
 HERE=$(cd "$(dirname "$0")" && pwd)
 CHECK=(/usr/bin/python3 "$HERE/optimize_check.py")
 
-"$FACET" example roof --res 40 -o "$WORK/roof.obj" || exit 1
+fixture roof40.obj "$WORK/roof.obj" || exit 1
 ROOF=$WORK/roof.obj
 # 6 x 6 grids x 4 thresholds = 144 options, feasible and infeasible ones.
 SMALL=(--u 10:15 --v 12:17 --threshold 1:4:1)

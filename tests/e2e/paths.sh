@@ -3,6 +3,7 @@
 # and read-only commands neither create nor write a database (issue 12,
 # items 1 and 4): the real binary, the real SQLite file, checked with
 # sqlite3.
+# layers: cli study
 . "$(dirname "$0")/lib.sh"
 
 mkdir -p "$WORK/project/surfaces" "$WORK/elsewhere" "$WORK/moved"

@@ -2,6 +2,7 @@
 # End-to-end: projects of many surfaces. The example skin and small files
 # through `facet info`, checked against a Python reading of the files and
 # Debian's tinyobjloader (project_check.py), and the project's errors.
+# layers: core cli
 . "$(dirname "$0")/lib.sh"
 CHECK=$(dirname "$0")/project_check.py
 

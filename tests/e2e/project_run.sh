@@ -6,6 +6,7 @@
 # nu = max(1, round half up(L / w)) applied to the u and v lengths the run
 # stored, against a single-surface run of the same grid, and against an
 # uninterrupted run for a resumed one.
+# layers: study store
 . "$(dirname "$0")/lib.sh"
 HERE=$(dirname "$0")
 CHECK=(/usr/bin/python3 "$HERE/project_run_check.py")
@@ -27,9 +28,10 @@ four_surfaces || exit 1
 
 # 1. Exhaustive over 13 x 13 modules and 3 thresholds: one option per grid
 # vector and threshold, its surface rows adding up to it.
+# The run is the fixture four.db: --module 1:4:0.25x1:4:0.25 --threshold
+# 2:6:2 --method exhaustive --jobs 2 --table 5 (project_shard.sh shards it).
 DB=$WORK/four.db
-expect "exhaustive project run" 0 "$FACET" optimize "$WORK/four.obj" --db "$DB" \
-    --module 1:4:0.25x1:4:0.25 --threshold 2:6:2 --method exhaustive --jobs 2 --table 5
+expect_fixture "exhaustive project run" 0 four.db "$DB"
 stdout_has "the run's table names the run done" '^run 1 \(done\)'
 same "the run records its four surfaces" \
     "$(sql "$DB" 'SELECT group_concat(name) FROM (SELECT name FROM surfaces WHERE run = 1 ORDER BY surface)')" \

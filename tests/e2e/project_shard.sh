@@ -10,12 +10,14 @@
 # one ranked run with each island's surface rows; shards of another module
 # range, of other files or of other per-surface grids are refused naming
 # the difference; merging twice changes nothing; a missing shard is named.
+# layers: study store
 . "$(dirname "$0")/lib.sh"
 . "$(dirname "$0")/shard_lib.sh"
 sql() { sqlite3 -batch "$1" "$2"; }
 
 four_surfaces || exit 1
-P=$WORK/four.obj
+# The fixture's own file: the unsharded run (the fixture four.db) names it.
+P=$(fixture_path four.obj) || exit 1
 # 13 x 13 modules x 3 thresholds = 507 points; far fewer distinct options.
 SPACE=(--module 1:4:0.25x1:4:0.25 --threshold 2:6:2 --method exhaustive)
 
@@ -35,7 +37,9 @@ make_shards() {
 }
 
 # --- exhaustive: 3 shards dealt by distinct grid vector
-expect "unsharded exhaustive project run" 0 "$FACET" optimize "$P" --db "$WORK/whole.db" "${SPACE[@]}" --table 1
+# The unsharded run is the fixture four.db (SPACE, --jobs 2), which
+# project_run.sh checks on its own.
+expect_fixture "unsharded exhaustive project run" 0 four.db "$WORK/whole.db"
 make_shards 3 "$WORK/ex" "$P" -- "${SPACE[@]}" --jobs 1
 whole=$(sql "$WORK/whole.db" 'SELECT count(*) FROM options')
 got=$(sql "$WORK/ex1.db" "ATTACH '$WORK/ex2.db' AS b; ATTACH '$WORK/ex3.db' AS c;

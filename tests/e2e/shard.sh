@@ -7,10 +7,11 @@
 # changes nothing; a missing shard is named and the run marked incomplete;
 # shards of different runs and bad files are refused in one line, with the
 # output left as it was.
+# layers: study store
 . "$(dirname "$0")/lib.sh"
 . "$(dirname "$0")/shard_lib.sh"
 
-"$FACET" example roof --res 40 -o "$WORK/roof.obj" || exit 1
+fixture roof40.obj "$WORK/roof.obj" || exit 1
 ROOF=$WORK/roof.obj
 # 6 x 6 grids x 4 thresholds = 144 options.
 SPACE=(--u 10:15 --v 12:17 --threshold 1:4:1)

@@ -8,6 +8,8 @@
 # removed whatever happens. Where the daemons cannot run (not root, Slurm
 # or munge not installed: `make deps` installs them), every check is
 # reported as skipped with the reason, never as passed.
+# layers: study cli
+# lock: slurm
 . "$(dirname "$0")/lib.sh"
 . "$(dirname "$0")/shard_lib.sh"
 
@@ -181,7 +183,7 @@ submit_and_compare() {
     fi
 }
 
-"$FACET" example roof --res 40 -o "$WORK/roof.obj" >/dev/null || exit 1
+fixture roof40.obj "$WORK/roof.obj" || exit 1
 expect "unsharded run" 0 "$FACET" optimize "$WORK/roof.obj" --db "$WORK/whole.db" "${SPACE[@]}" --table 1
 submit_and_compare "roof" "$SHARDS" "$D/results" "$WORK/whole.db" "$WORK/roof.obj" -- "${SPACE[@]}"
 

@@ -9,11 +9,12 @@
 # terminal given back every time.
 # Every step polls the captured screen (no fixed sleeps); every tmux
 # server this script starts is killed on exit.
+# layers: tui
 . "$(dirname "$0")/lib.sh"
 
 . "$(dirname "$0")/tui_lib.sh"
 
-"$FACET" example roof --res 40 -o "$WORK/roof.obj" || exit 1
+fixture roof40.obj "$WORK/roof.obj" || exit 1
 # Typed by class alone (the figures below are that run's; as built, this
 # coarse roof's SP panels are misfits: README "Panels as built").
 "$FACET" optimize "$WORK/roof.obj" --db "$WORK/t.db" --u 4:8 --v 4:8 \

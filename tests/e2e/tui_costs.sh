@@ -13,6 +13,7 @@
 # is refused by the field's label and starts nothing; on a short screen
 # the form scrolls. Truths come from sqlite3 and the CLI, never from the
 # form's own earlier screens. Every step polls the captured screen.
+# layers: tui
 . "$(dirname "$0")/lib.sh"
 
 . "$(dirname "$0")/tui_lib.sh"

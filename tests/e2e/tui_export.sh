@@ -4,10 +4,11 @@
 # run's plot; the files are whole and valid, an existing file is refused
 # unless the name ends with '!', and the UI reports it all on its status
 # line.
+# layers: tui
 . "$(dirname "$0")/lib.sh"
 . "$(dirname "$0")/tui_lib.sh"
 
-"$FACET" example roof --res 40 -o "$WORK/roof.obj" || exit 1
+fixture roof40.obj "$WORK/roof.obj" || exit 1
 "$FACET" optimize "$WORK/roof.obj" --db "$WORK/t.db" --u 4:8 --v 4:8 \
     --threshold 2:4:1 >/dev/null 2>&1 || exit 1
 KNEE=$(sqlite3 "$WORK/t.db" 'SELECT knee FROM runs WHERE id = 1')

@@ -11,11 +11,12 @@
 # the wheel (12); a database that does not exist is asked about (4).
 # Every truth comes from sqlite3 on the database, not from Facet.
 # Every step polls the captured screen (no fixed sleeps).
+# layers: tui
 . "$(dirname "$0")/lib.sh"
 
 . "$(dirname "$0")/tui_lib.sh"
 
-"$FACET" example roof --force -o "$WORK/roof.obj" >/dev/null || exit 1
+fixture roof.obj || exit 1
 "$FACET" optimize "$WORK/roof.obj" --db "$WORK/demo.db" --u 20:40 --v 35:50 \
     --threshold 3 --sp-as-fp --max-panel-area 1.92 --name "paper space" \
     >/dev/null 2>&1 || exit 1

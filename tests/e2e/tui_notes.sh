@@ -3,12 +3,13 @@
 # issue 12 item 18), at 80x24: a run on a mesh coarser than its finest
 # panels warns in the status line; a run whose Pareto options sit on a
 # bound of its space names the bound; a run with neither says nothing.
+# layers: tui
 . "$(dirname "$0")/lib.sh"
 
 . "$(dirname "$0")/tui_lib.sh"
 
 "$FACET" example dome --res 4 -o "$WORK/dome4.obj" || exit 1
-"$FACET" example roof --res 40 -o "$WORK/roof.obj" || exit 1
+fixture roof40.obj "$WORK/roof.obj" || exit 1
 "$FACET" optimize "$WORK/dome4.obj" --db "$WORK/n.db" --u 10:50 --v 10:50 --threshold 3 >/dev/null 2>&1 || exit 1
 "$FACET" optimize "$WORK/roof.obj" --db "$WORK/n.db" --u 3:9 --v 3:9 --threshold 3 --max-panel-area 1000 >/dev/null 2>&1 || exit 1
 pareto=$(sqlite3 "$WORK/n.db" "SELECT count(*) FROM options WHERE run = 2 AND rank = 1")

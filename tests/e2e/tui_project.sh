@@ -9,6 +9,7 @@
 # the surface's FP, SP and DP panels as option_surfaces does, though the
 # map evaluates the panels again over the project's files. Keys that do
 # not work for a project's option say so on the status line.
+# layers: tui
 . "$(dirname "$0")/lib.sh"
 
 . "$(dirname "$0")/tui_lib.sh"

@@ -3,6 +3,7 @@
 # shards and merges: a shard's status carries its I/N, and a merge that
 # lacks a shard reads "incomplete", not "done" (its status alone says the
 # merge finished, not that the run is whole).
+# layers: tui
 . "$(dirname "$0")/lib.sh"
 
 . "$(dirname "$0")/tui_lib.sh"

@@ -9,6 +9,7 @@
 # the marked options' CSV. Figures are checked against sqlite3 and
 # arithmetic, never against Facet's own earlier output. Every step polls
 # the captured screen (no fixed sleeps).
+# layers: tui
 . "$(dirname "$0")/lib.sh"
 
 . "$(dirname "$0")/tui_lib.sh"
@@ -17,12 +18,11 @@ if ! command -v sqlite3 >/dev/null; then
     echo "skip - every view check (sqlite3 is not installed)"
     exit 0
 fi
-"$FACET" example roof -o "$WORK/roof.obj" >/dev/null || exit 1
+fixture roof.obj || exit 1
 # The paper's study, typed as the paper types (--sp-fit no: the figures
-# below are its); the gaps and kinks are measured all the same.
-"$FACET" optimize "$WORK/roof.obj" --db "$WORK/v.db" --u 20:40 --v 35:50 \
-    --threshold 3 --sp-as-fp --max-panel-area 1.92 --sp-fit no \
-    >/dev/null 2>&1 || exit 1
+# below are its); the gaps and kinks are measured all the same (the
+# fixture paper.db).
+fixture paper.db "$WORK/v.db" || exit 1
 "$FACET" optimize "$WORK/roof.obj" --db "$WORK/v.db" --method nsga2 \
     --pop 24 --gens 8 --u 20:40 --v 35:50 --threshold 1:5 --sp-as-fp \
     --max-panel-area 1.92 --sp-fit no >/dev/null 2>&1 || exit 1

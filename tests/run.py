@@ -1,0 +1,401 @@
+#!/usr/bin/env python3
+"""Runs the test suites of one or more builds, side by side.
+
+    tests/run.py [--jobs N] [--changed] [--fail-fast] [--only NAME ...] BUILD...
+
+A suite is a cmocka unit test (BUILD/tests/test_*) or an end-to-end script
+(tests/e2e/*.sh, which runs BUILD/facet). Every suite of every BUILD named
+goes into one queue, longest first, and N of them (default: the machine's
+cores) run at a time. Each suite's output goes to a log of its own, printed
+whole when the suite fails; a line per suite gives its counts and its wall
+time, and the end gives the slowest twenty suites and the totals.
+
+Counting is the one tests/e2e/lib.sh and cmocka define: "ok - ",
+"not ok - " and "skip - " lines of a script; cmocka's PASSED, FAILED and
+SKIPPED summaries. A suite that exits non-zero with no failure counted is
+one failure; a skip is counted apart, never as passed. The run fails when
+anything failed or nothing passed.
+
+Fixtures (the surfaces and databases several scripts start from, see
+tests/e2e/fixtures.sh) are made once per run, into a fresh folder named by
+FACET_FIXTURES, by the first build's facet, and shared by every suite of
+every build.
+
+--changed keeps the unit tests and the end-to-end scripts whose "# layers:"
+line names a layer (core, store, study, tui, cli) that the working tree
+changes against HEAD (or, on a clean tree, that HEAD changed), plus any
+script changed itself; a change to the test harness keeps every script.
+This is make check-fast, the edit-test loop; make check runs everything.
+
+Suites that share a machine-wide resource say so with a "# lock: NAME" line
+(the single-node Slurm cluster); two suites of one lock never run at once.
+"""
+
+import argparse
+import os
+import re
+import shutil
+import subprocess
+import sys
+import tempfile
+import threading
+import time
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+E2E = os.path.join(ROOT, "tests", "e2e")
+LAYERS = ("core", "store", "study", "tui", "cli")
+# A suite that runs this long is stopped and failed: a hang is a defect,
+# and the run must end.
+SUITE_TIMEOUT = 1200
+TIMES_FILE = "suite-times.tsv"
+
+
+class Suite:
+    def __init__(self, build, kind, name, path):
+        self.build = build
+        self.kind = kind          # "unit" or "e2e"
+        self.name = name          # test_obj, e2e/optimize
+        self.path = path
+        self.layers = set()
+        self.lock = None
+        self.estimate = 0.0
+        self.passed = self.failed = self.skipped = 0
+        self.seconds = 0.0
+        self.log = None
+        self.skips = []
+        if kind == "e2e":
+            self.read_header()
+
+    def key(self):
+        return self.build + "\t" + self.name
+
+    def read_header(self):
+        with open(self.path, encoding="utf-8") as f:
+            for line in f:
+                if not line.startswith("#"):
+                    if line.strip():
+                        break
+                    continue
+                m = re.match(r"#\s*layers:\s*(.*)$", line)
+                if m:
+                    self.layers = set(m.group(1).split())
+                m = re.match(r"#\s*lock:\s*(\S+)", line)
+                if m:
+                    self.lock = m.group(1)
+
+
+def find_suites(builds, only):
+    suites = []
+    scripts = sorted(
+        f for f in os.listdir(E2E)
+        if f.endswith(".sh") and not f.endswith("lib.sh") and f != "fixtures.sh")
+    for build in builds:
+        tests = os.path.join(ROOT, build, "tests")
+        if os.path.isdir(tests):
+            for f in sorted(os.listdir(tests)):
+                path = os.path.join(tests, f)
+                if f.startswith("test_") and os.access(path, os.X_OK) and \
+                        not f.endswith(".d"):
+                    suites.append(Suite(build, "unit", f, path))
+        for f in scripts:
+            suites.append(Suite(build, "e2e", "e2e/" + f[:-3],
+                                os.path.join(E2E, f)))
+    if only:
+        wanted = set(only)
+        suites = [s for s in suites
+                  if s.name in wanted or s.name.replace("e2e/", "") in wanted]
+    return suites
+
+
+def changed_files():
+    def git(*args):
+        r = subprocess.run(("git",) + args, cwd=ROOT, capture_output=True,
+                           text=True)
+        if r.returncode != 0:
+            return None
+        return [line for line in r.stdout.splitlines() if line]
+    files = git("diff", "--name-only", "HEAD")
+    if files is None:
+        return None
+    files += git("ls-files", "--others", "--exclude-standard") or []
+    if not files:
+        files = git("diff", "--name-only", "HEAD~1", "HEAD") or []
+    return files
+
+
+def keep_changed(suites):
+    files = changed_files()
+    if files is None:
+        print("run.py: not a git checkout; --changed keeps every suite")
+        return suites
+    layers = set()
+    scripts = set()
+    everything = False
+    for f in files:
+        top = f.split("/")[0]
+        if top in LAYERS:
+            layers.add(top)
+        elif f.startswith("tests/e2e/"):
+            base = os.path.basename(f)
+            if base.endswith(".sh") and not base.endswith("lib.sh") and \
+                    base != "fixtures.sh":
+                scripts.add("e2e/" + base[:-3])
+            else:
+                everything = True
+        elif f in ("Makefile", "tests/run.py"):
+            everything = True
+    print("run.py: changed layers: %s%s" % (
+        " ".join(sorted(layers)) or "none",
+        "; the harness changed, so every script" if everything else ""))
+    return [s for s in suites
+            if s.kind == "unit" or everything or s.name in scripts or
+            (s.layers & layers)]
+
+
+def read_times(builds):
+    times = {}
+    for build in builds:
+        path = os.path.join(ROOT, build, TIMES_FILE)
+        try:
+            with open(path, encoding="utf-8") as f:
+                for line in f:
+                    parts = line.rstrip("\n").split("\t")
+                    if len(parts) == 3:
+                        times[parts[0] + "\t" + parts[1]] = float(parts[2])
+        except OSError:
+            pass
+    return times
+
+
+def write_times(suites):
+    by_build = {}
+    for s in suites:
+        by_build.setdefault(s.build, []).append(s)
+    for build, group in by_build.items():
+        path = os.path.join(ROOT, build, TIMES_FILE)
+        old = read_times([build])
+        for s in group:
+            old[s.key()] = s.seconds
+        tmp = path + ".tmp"
+        with open(tmp, "w", encoding="utf-8") as f:
+            for k in sorted(old):
+                f.write("%s\t%.2f\n" % (k, old[k]))
+        os.replace(tmp, path)
+
+
+def default_estimate(s):
+    # With no earlier run's times: scripts before unit tests, a sanitizer
+    # build's before the release's, the longer script first.
+    weight = os.path.getsize(s.path) / 1000.0 if s.kind == "e2e" else 1.0
+    if "san" in s.build:
+        weight *= 3
+    return weight
+
+
+def count(suite, status, log_text):
+    if suite.kind == "unit":
+        ok = sum(int(n) for n in re.findall(r"\[  PASSED  \] (\d+)", log_text))
+        bad = sum(int(n) for n in
+                  re.findall(r"\[  FAILED  \] (\d+) test", log_text))
+        skip = sum(int(n) for n in
+                   re.findall(r"\[  SKIPPED \] (\d+) test", log_text))
+        skips = [line for line in log_text.splitlines()
+                 if line.startswith("skipped: ")]
+    else:
+        lines = log_text.splitlines()
+        ok = sum(1 for line in lines if line.startswith("ok "))
+        bad = sum(1 for line in lines if line.startswith("not ok "))
+        skip = sum(1 for line in lines if line.startswith("skip "))
+        skips = [line for line in lines if line.startswith("skip ")]
+    if status != 0 and bad == 0:
+        bad = 1
+    suite.passed, suite.failed, suite.skipped = ok, bad, skip
+    suite.skips = skips
+
+
+def run_suite(suite, env, logs):
+    safe = suite.build.replace("/", "_") + "__" + suite.name.replace("/", "_")
+    suite.log = os.path.join(logs, safe + ".log")
+    suite_env = dict(env)
+    suite_env["BUILD"] = suite.build
+    suite_env["FACET"] = os.path.join(ROOT, suite.build, "facet")
+    cmd = [suite.path] if suite.kind == "unit" else ["bash", suite.path]
+    start = time.monotonic()
+    with open(suite.log, "wb") as log:
+        try:
+            proc = subprocess.Popen(cmd, cwd=ROOT, env=suite_env, stdout=log,
+                                    stderr=subprocess.STDOUT,
+                                    stdin=subprocess.DEVNULL,
+                                    start_new_session=True)
+        except OSError as e:
+            log.write(("cannot start %s: %s\n" % (suite.path, e)).encode())
+            status = 127
+        else:
+            try:
+                status = proc.wait(timeout=SUITE_TIMEOUT)
+            except subprocess.TimeoutExpired:
+                os.killpg(proc.pid, 9)
+                proc.wait()
+                log.write(("not ok - %s: still running after %d s, stopped\n"
+                           % (suite.name, SUITE_TIMEOUT)).encode())
+                status = 124
+    suite.seconds = time.monotonic() - start
+    with open(suite.log, encoding="utf-8", errors="replace") as f:
+        count(suite, status, f.read())
+
+
+def label(suite, builds):
+    if len(builds) == 1:
+        return suite.name
+    return "%s %s" % (os.path.basename(suite.build), suite.name)
+
+
+def make_fixtures(env, builds):
+    """Runs tests/e2e/fixtures.sh once with the first build's facet."""
+    script = os.path.join(E2E, "fixtures.sh")
+    if not os.path.exists(script):
+        return True
+    fixture_env = dict(env)
+    fixture_env["BUILD"] = builds[0]
+    fixture_env["FACET"] = os.path.join(ROOT, builds[0], "facet")
+    start = time.monotonic()
+    r = subprocess.run(["bash", script], cwd=ROOT, env=fixture_env,
+                       capture_output=True, text=True)
+    print("%-40s %s in %.1f s" % ("fixtures (%s/facet)" % builds[0],
+                                   "made" if r.returncode == 0 else "FAILED",
+                                   time.monotonic() - start), flush=True)
+    if r.returncode != 0:
+        sys.stdout.write(r.stdout + r.stderr)
+    return r.returncode == 0
+
+
+def main():
+    ap = argparse.ArgumentParser(description="Runs the test suites.")
+    ap.add_argument("builds", nargs="+", metavar="BUILD")
+    ap.add_argument("--jobs", type=int, default=os.cpu_count() or 1)
+    ap.add_argument("--changed", action="store_true")
+    ap.add_argument("--fail-fast", action="store_true",
+                    help="start no suite after one has failed")
+    ap.add_argument("--only", nargs="*", default=[])
+    ap.add_argument("--quiet", action="store_true",
+                    help="no line per suite that passed")
+    args = ap.parse_args()
+    builds = [b.rstrip("/") for b in args.builds]
+    for b in builds:
+        if not os.access(os.path.join(ROOT, b, "facet"), os.X_OK):
+            print("run.py: %s/facet is not built" % b)
+            return 2
+
+    suites = find_suites(builds, args.only)
+    if args.changed:
+        suites = keep_changed(suites)
+    times = read_times(builds)
+    for s in suites:
+        s.estimate = times.get(s.key(), default_estimate(s))
+    queue = sorted(suites, key=lambda s: -s.estimate)
+
+    env = dict(os.environ)
+    env.setdefault("FACET_DATA", os.path.join(os.path.dirname(ROOT),
+                                              "shared", "data"))
+    env.setdefault("ASAN_OPTIONS", "detect_leaks=1:abort_on_error=0")
+    env.setdefault("UBSAN_OPTIONS", "print_stacktrace=1:halt_on_error=1")
+    logs = tempfile.mkdtemp(prefix="facet-tests.")
+    fixtures = os.path.join(logs, "fixtures")
+    os.mkdir(fixtures)
+    env["FACET_FIXTURES"] = fixtures
+    started = time.monotonic()
+    try:
+        if not make_fixtures(env, builds):
+            # The suites that need the missing fixtures fail on their own,
+            # each naming it; the others still run.
+            print("run.py: some fixtures could not be made; see above")
+        done = run_queue(queue, env, logs, args, builds)
+        return report(done, queue, builds, started, args)
+    finally:
+        shutil.rmtree(logs, ignore_errors=True)
+
+
+def run_queue(queue, env, logs, args, builds):
+    lock = threading.Condition()
+    held = set()
+    done = []
+    failed = [False]
+
+    def take():
+        with lock:
+            while True:
+                if not queue or (args.fail_fast and failed[0]):
+                    return None
+                for i, s in enumerate(queue):
+                    if s.lock is None or s.lock not in held:
+                        queue.pop(i)
+                        if s.lock:
+                            held.add(s.lock)
+                        return s
+                lock.wait()
+
+    def worker():
+        while True:
+            s = take()
+            if s is None:
+                return
+            run_suite(s, env, logs)
+            with lock:
+                if s.lock:
+                    held.discard(s.lock)
+                done.append(s)
+                if s.failed:
+                    failed[0] = True
+                if not (args.quiet and s.failed == 0):
+                    print("%-36s %4d passed %3d failed %3d skipped %7.1f s" %
+                          (label(s, builds), s.passed, s.failed, s.skipped,
+                           s.seconds), flush=True)
+                if s.failed:
+                    print_log(s, builds)
+                lock.notify_all()
+
+    threads = [threading.Thread(target=worker) for _ in range(max(1, args.jobs))]
+    for t in threads:
+        t.start()
+    for t in threads:
+        t.join()
+    return done
+
+
+def print_log(s, builds):
+    print("==== %s: the whole log" % label(s, builds))
+    with open(s.log, encoding="utf-8", errors="replace") as f:
+        sys.stdout.write(f.read())
+    print("==== end of %s" % label(s, builds), flush=True)
+
+
+def report(done, left, builds, started, args):
+    wall = time.monotonic() - started
+    if done:
+        write_times(done)
+    print("\nslowest suites (wall time):")
+    for s in sorted(done, key=lambda s: -s.seconds)[:20]:
+        print("  %7.1f s  %s" % (s.seconds, label(s, builds)))
+    for s in done:
+        for line in s.skips:
+            print("SKIPPED %s: %s" % (label(s, builds), line))
+    if left:
+        print("NOT RUN (after a failure, --fail-fast): %d suites" % len(left))
+    failed_names = [label(s, builds) for s in done if s.failed]
+    if failed_names:
+        print("FAILED: " + ", ".join(failed_names))
+    total_p = total_f = total_s = 0
+    for b in builds:
+        group = [s for s in done if s.build == b]
+        p = sum(s.passed for s in group)
+        f = sum(s.failed for s in group)
+        k = sum(s.skipped for s in group)
+        total_p, total_f, total_s = total_p + p, total_f + f, total_s + k
+        print("%s: %d passed, %d failed, %d skipped "
+              "(not run here, not counted as passed)" % (b, p, f, k))
+    print("%d suites in %.0f s wall on %d jobs" % (len(done), wall, args.jobs))
+    return 0 if total_f == 0 and total_p > 0 and not left else 1
+
+
+if __name__ == "__main__":
+    sys.exit(main())
