@@ -5,6 +5,7 @@
 #                 test of both, side by side on every core (tests/run.py)
 #   make check-fast  the edit-test loop: the release build's unit tests and
 #                 the end-to-end suites of the layers the change touches
+#   make check-mutants  a defect in each layer is caught (CI runs it)
 #   make demo     run the main job on a bundled example (no TTY needed)
 #   make bench    benchmarks, reported as ratios against a baseline
 #   make deps     install the Debian packages Facet needs (as root)
@@ -66,7 +67,7 @@ FUZZ_SEED ?= 1
 BENCH_SRC := $(wildcard tests/bench/*.c)
 BENCH_BIN := $(BENCH_SRC:tests/bench/%.c=$(BUILD)/bench/%)
 
-.PHONY: all check check-fast test test-build demo bench deps clean fuzz fuzz-run
+.PHONY: all check check-fast check-mutants test test-build demo bench deps clean fuzz fuzz-run
 
 # Objects built on the way (the tests' support) are kept, not removed.
 .SECONDARY:
@@ -131,13 +132,19 @@ check-fast:
 	$(MAKE) -j$(JOBS) VARIANT=release facet test-build
 	tests/run.py --jobs $(JOBS) --changed build/release
 
+# Each layer's tests can still fail: a defect written into each layer of a
+# scratch copy is caught by the suites check-fast picks for it (CI).
+check-mutants:
+	$(MAKE) -j$(JOBS) VARIANT=release facet test-build
+	tests/mutants.sh build/release
+
 # Every fuzz target under libFuzzer with ASan and UBSan for FUZZ_SECONDS
 # each (default 60), from a copy of its seed corpus, with the mutations of
 # FUZZ_SEED (default 1, so a run is repeatable; FUZZ_SEED=0 picks one); a crash stops it, and
 # its input (build/fuzz/crashes/) belongs in tests/fuzz/crashes/NAME/ as a
 # regression test that make check replays.
 fuzz: deps
-	$(MAKE) VARIANT=fuzz CC=clang fuzz-run
+	$(MAKE) -j$(JOBS) VARIANT=fuzz CC=clang fuzz-run
 
 fuzz-run: $(FUZZ_BIN)
 	@mkdir -p $(BUILD)/crashes

@@ -29,6 +29,15 @@ This is make check-fast, the edit-test loop; make check runs everything.
 
 Suites that share a machine-wide resource say so with a "# lock: NAME" line
 (the single-node Slurm cluster); two suites of one lock never run at once.
+
+"Longest first" uses the wall time each suite took in this build's last
+run (BUILD/suite-times.tsv, written at the end of every run), else the
+times of a quiet run kept in tests/suite-times.tsv (a fresh clone: CI).
+The order changes how long a run takes, never what it checks.
+
+--fail-fast starts no suite once one has failed; --first-failure also
+stops every running suite at the first failing check (tests/mutants.sh).
+A suite still running after SUITE_TIMEOUT seconds is stopped and failed.
 """
 
 import argparse
@@ -63,6 +72,7 @@ class Suite:
         self.seconds = 0.0
         self.log = None
         self.skips = []
+        self.stopped = False      # stopped by --first-failure
         if kind == "e2e":
             self.read_header()
 
@@ -123,8 +133,9 @@ def changed_files():
     return files
 
 
-def keep_changed(suites):
-    files = changed_files()
+def keep_changed(suites, files=None):
+    if files is None:
+        files = changed_files()
     if files is None:
         print("run.py: not a git checkout; --changed keeps every suite")
         return suites
@@ -152,18 +163,31 @@ def keep_changed(suites):
             (s.layers & layers)]
 
 
+def read_times_file(path, build, times):
+    """Adds the times of path (lines: variant, suite, seconds) for build."""
+    variant = os.path.basename(build)
+    try:
+        with open(path, encoding="utf-8") as f:
+            for line in f:
+                parts = line.rstrip("\n").split("\t")
+                if len(parts) == 3 and parts[0] in (variant, "release"):
+                    key = build + "\t" + parts[1]
+                    # A variant's own time over the release's.
+                    if parts[0] == variant or key not in times:
+                        times[key] = float(parts[2])
+    except (OSError, ValueError):
+        pass
+
+
 def read_times(builds):
+    """The wall time each suite took last, to start the longest first: this
+    build's last run (BUILD/suite-times.tsv), else tests/suite-times.tsv, a
+    quiet run's times kept with the sources for a fresh clone (CI); a
+    variant with no times of its own (clang) takes the release's."""
     times = {}
     for build in builds:
-        path = os.path.join(ROOT, build, TIMES_FILE)
-        try:
-            with open(path, encoding="utf-8") as f:
-                for line in f:
-                    parts = line.rstrip("\n").split("\t")
-                    if len(parts) == 3:
-                        times[parts[0] + "\t" + parts[1]] = float(parts[2])
-        except OSError:
-            pass
+        read_times_file(os.path.join(ROOT, "tests", TIMES_FILE), build, times)
+        read_times_file(os.path.join(ROOT, build, TIMES_FILE), build, times)
     return times
 
 
@@ -173,14 +197,20 @@ def write_times(suites):
         by_build.setdefault(s.build, []).append(s)
     for build, group in by_build.items():
         path = os.path.join(ROOT, build, TIMES_FILE)
-        old = read_times([build])
+        variant = os.path.basename(build)
+        old = {}
+        read_times_file(path, build, old)
         for s in group:
             old[s.key()] = s.seconds
         tmp = path + ".tmp"
-        with open(tmp, "w", encoding="utf-8") as f:
-            for k in sorted(old):
-                f.write("%s\t%.2f\n" % (k, old[k]))
-        os.replace(tmp, path)
+        try:
+            with open(tmp, "w", encoding="utf-8") as f:
+                for k in sorted(old):
+                    f.write("%s\t%s\t%.1f\n" % (variant, k.split("\t")[1],
+                                                 old[k]))
+            os.replace(tmp, path)
+        except OSError as e:
+            print("run.py: cannot keep the suites' times in %s: %s" % (path, e))
 
 
 def default_estimate(s):
@@ -213,7 +243,13 @@ def count(suite, status, log_text):
     suite.skips = skips
 
 
-def run_suite(suite, env, logs):
+FAILURE_MARK = re.compile(rb"^(not ok |\[  FAILED  \])", re.M)
+
+
+def run_suite(suite, env, logs, stop=None, first_failure=False):
+    """Runs one suite into its log. With stop (a threading.Event), the suite
+    is stopped when stop is set; with first_failure, its first failing check
+    sets stop (the mutants need a failure, not the whole suite)."""
     safe = suite.build.replace("/", "_") + "__" + suite.name.replace("/", "_")
     suite.log = os.path.join(logs, safe + ".log")
     suite_env = dict(env)
@@ -231,17 +267,36 @@ def run_suite(suite, env, logs):
             log.write(("cannot start %s: %s\n" % (suite.path, e)).encode())
             status = 127
         else:
-            try:
-                status = proc.wait(timeout=SUITE_TIMEOUT)
-            except subprocess.TimeoutExpired:
-                os.killpg(proc.pid, 9)
-                proc.wait()
-                log.write(("not ok - %s: still running after %d s, stopped\n"
-                           % (suite.name, SUITE_TIMEOUT)).encode())
-                status = 124
+            status = watch(proc, suite, log, start, stop, first_failure)
     suite.seconds = time.monotonic() - start
     with open(suite.log, encoding="utf-8", errors="replace") as f:
         count(suite, status, f.read())
+
+
+def watch(proc, suite, log, start, stop, first_failure):
+    """Waits for a suite's process; the exit status, or 124 for a suite
+    that ran past SUITE_TIMEOUT (a hang), both failures."""
+    while True:
+        try:
+            return proc.wait(timeout=0.2)
+        except subprocess.TimeoutExpired:
+            pass
+        if first_failure:
+            log.flush()
+            with open(suite.log, "rb") as f:
+                if FAILURE_MARK.search(f.read()):
+                    stop.set()
+        if stop is not None and stop.is_set():
+            os.killpg(proc.pid, 9)
+            proc.wait()
+            suite.stopped = True
+            return 0
+        if time.monotonic() - start > SUITE_TIMEOUT:
+            os.killpg(proc.pid, 9)
+            proc.wait()
+            log.write(("not ok - %s: still running after %d s, stopped\n"
+                       % (suite.name, SUITE_TIMEOUT)).encode())
+            return 124
 
 
 def label(suite, builds):
@@ -274,8 +329,12 @@ def main():
     ap.add_argument("builds", nargs="+", metavar="BUILD")
     ap.add_argument("--jobs", type=int, default=os.cpu_count() or 1)
     ap.add_argument("--changed", action="store_true")
+    ap.add_argument("--changed-files", nargs="+", metavar="FILE",
+                    help="as --changed, for these files (tests/mutants.sh)")
     ap.add_argument("--fail-fast", action="store_true",
                     help="start no suite after one has failed")
+    ap.add_argument("--first-failure", action="store_true",
+                    help="stop every suite at the first failing check")
     ap.add_argument("--only", nargs="*", default=[])
     ap.add_argument("--quiet", action="store_true",
                     help="no line per suite that passed")
@@ -287,7 +346,9 @@ def main():
             return 2
 
     suites = find_suites(builds, args.only)
-    if args.changed:
+    if args.changed_files:
+        suites = keep_changed(suites, args.changed_files)
+    elif args.changed:
         suites = keep_changed(suites)
     times = read_times(builds)
     for s in suites:
@@ -320,11 +381,13 @@ def run_queue(queue, env, logs, args, builds):
     held = set()
     done = []
     failed = [False]
+    stop = threading.Event()
 
     def take():
         with lock:
             while True:
-                if not queue or (args.fail_fast and failed[0]):
+                if not queue or stop.is_set() or \
+                        (args.fail_fast and failed[0]):
                     return None
                 for i, s in enumerate(queue):
                     if s.lock is None or s.lock not in held:
@@ -339,14 +402,17 @@ def run_queue(queue, env, logs, args, builds):
             s = take()
             if s is None:
                 return
-            run_suite(s, env, logs)
+            run_suite(s, env, logs, stop, args.first_failure)
             with lock:
                 if s.lock:
                     held.discard(s.lock)
                 done.append(s)
                 if s.failed:
                     failed[0] = True
-                if not (args.quiet and s.failed == 0):
+                if s.stopped and not s.failed:
+                    print("%-36s stopped (another suite failed) %7.1f s" %
+                          (label(s, builds), s.seconds), flush=True)
+                elif not (args.quiet and s.failed == 0):
                     print("%-36s %4d passed %3d failed %3d skipped %7.1f s" %
                           (label(s, builds), s.passed, s.failed, s.skipped,
                            s.seconds), flush=True)
@@ -380,7 +446,7 @@ def report(done, left, builds, started, args):
         for line in s.skips:
             print("SKIPPED %s: %s" % (label(s, builds), line))
     if left:
-        print("NOT RUN (after a failure, --fail-fast): %d suites" % len(left))
+        print("NOT RUN (after a failure): %d suites" % len(left))
     failed_names = [label(s, builds) for s in done if s.failed]
     if failed_names:
         print("FAILED: " + ", ".join(failed_names))

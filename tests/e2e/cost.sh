@@ -5,7 +5,7 @@
 # terms are 0: the options of the paper's space, to the last bit, as the
 # Facet before the cost model (commit 55c44a9) stored them
 # (data/paper_space_55c44a9.csv, made by that binary with sqlite3).
-# layers: core study store
+# layers: core study store cli
 . "$(dirname "$0")/lib.sh"
 
 HERE=$(cd "$(dirname "$0")" && pwd)

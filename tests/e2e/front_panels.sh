@@ -6,7 +6,7 @@
 # front (infinite crowding), then the largest crowding distance, the
 # order SQLite gives below; the others' panels are computed when first
 # looked at, and then stored.
-# layers: study store
+# layers: study store cli
 . "$(dirname "$0")/lib.sh"
 
 fixture roof.obj || exit 1

@@ -10,7 +10,7 @@
 #   - --max-gap and --max-kink as constraints: the feasible options are the
 #     ones those formulas put within the limits, and SQLite counts them from
 #     the options' own columns.
-# layers: core study store
+# layers: core study store cli
 . "$(dirname "$0")/lib.sh"
 
 sql() { sqlite3 -batch "$1" "$2"; }

@@ -6,7 +6,7 @@
 # known, never as 0: empty in --csv, null in --json, "- (not stored ...)"
 # in show and "-" in the workbench's detail pane and map legend; a sort by
 # them keeps every option.
-# layers: store
+# layers: store cli
 . "$(dirname "$0")/lib.sh"
 
 build=${BUILD:-build/release}

@@ -5,7 +5,7 @@
 # the same seed gives the same options, an interrupted or killed run resumes
 # to what an uninterrupted run stores, readers are never locked out, and
 # bad input is refused in one line.
-# layers: study store core
+# layers: study store core cli
 . "$(dirname "$0")/lib.sh"
 
 HERE=$(cd "$(dirname "$0")" && pwd)

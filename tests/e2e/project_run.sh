@@ -6,7 +6,7 @@
 # nu = max(1, round half up(L / w)) applied to the u and v lengths the run
 # stored, against a single-surface run of the same grid, and against an
 # uninterrupted run for a resumed one.
-# layers: study store
+# layers: study store cli
 . "$(dirname "$0")/lib.sh"
 HERE=$(dirname "$0")
 CHECK=(/usr/bin/python3 "$HERE/project_run_check.py")

@@ -10,7 +10,7 @@
 # one ranked run with each island's surface rows; shards of another module
 # range, of other files or of other per-surface grids are refused naming
 # the difference; merging twice changes nothing; a missing shard is named.
-# layers: study store
+# layers: study store cli
 . "$(dirname "$0")/lib.sh"
 . "$(dirname "$0")/shard_lib.sh"
 sql() { sqlite3 -batch "$1" "$2"; }

@@ -7,7 +7,7 @@
 # changes nothing; a missing shard is named and the run marked incomplete;
 # shards of different runs and bad files are refused in one line, with the
 # output left as it was.
-# layers: study store
+# layers: study store cli
 . "$(dirname "$0")/lib.sh"
 . "$(dirname "$0")/shard_lib.sh"
 

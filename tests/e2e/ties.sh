@@ -7,7 +7,7 @@
 # --sort` and of Table 2 (a tie falls to the next key, then to the
 # number); and every double of --json and --csv, read back, is the stored
 # one bit for bit.
-# layers: core study
+# layers: core study cli
 . "$(dirname "$0")/lib.sh"
 
 HERE=$(cd "$(dirname "$0")" && pwd)

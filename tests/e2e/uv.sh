@@ -2,7 +2,7 @@
 # End-to-end: the UV a surface takes (vt, structured grid, plane, harmonic
 # with holes capped), --uv forcing one and refusing what cannot apply, a
 # texture atlas refused, and --uv kept with a run for --resume.
-# layers: core store
+# layers: core store cli
 . "$(dirname "$0")/lib.sh"
 sql() { sqlite3 -batch "$1" "$2"; }
 
