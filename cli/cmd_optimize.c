@@ -180,129 +180,154 @@ static int grid_overrides_parse(const char *text, struct grid_overrides *g,
     return FACET_OK;
 }
 
-static int optimize_main(int argc, char **argv, struct facet_error *err)
-{
+/* Everything facet optimize takes from its arguments, parsed and checked
+ * before any file is opened. The caller owns it and must not move it once
+ * parsed: the request and the flags' table point into it. */
+struct optimize_command {
     struct search_flags search;
     struct classify_flags flags;
-    const char *db = NULL, *resume = NULL, *name = NULL, *table = NULL;
-    const char *surface = NULL, *store_panels = NULL;
-    int wide = 0;
-    memset(&search, 0, sizeof search);
-    classify_flags_init(&flags);
-    const struct arg_option options[] = {
-        {"db", 0, ARG_STRING, &db, NULL},
-        {"u", 0, ARG_STRING, &search.u, NULL},
-        {"v", 0, ARG_STRING, &search.v, NULL},
-        {"threshold", 0, ARG_STRING, &search.threshold, NULL},
-        {"method", 0, ARG_STRING, &search.method, NULL},
-        {"evals", 0, ARG_STRING, &search.evals, NULL},
-        {"pop", 0, ARG_STRING, &search.pop, NULL},
-        {"gens", 0, ARG_STRING, &search.gens, NULL},
-        {"seed", 0, ARG_STRING, &search.seed, NULL},
-        {"objectives", 0, ARG_STRING, &search.objectives, NULL},
-        {"jobs", 'j', ARG_STRING, &search.jobs, NULL},
-        {"shard", 0, ARG_STRING, &search.shard, NULL},
-        {"resume", 0, ARG_STRING, &resume, NULL},
-        {"name", 0, ARG_STRING, &name, NULL},
-        {"table", 0, ARG_STRING, &table, NULL},
-        {"surface", 0, ARG_STRING, &surface, NULL},
-        {"wide", 0, ARG_FLAG, NULL, &wide},
-        {"store-panels", 0, ARG_STRING, &store_panels, NULL},
-        {"module", 0, ARG_STRING, &search.module, NULL},
-        {"grid", 0, ARG_STRING, &search.grid, NULL},
-        {NULL, 0, ARG_FLAG, NULL, NULL},
-    };
+    const char *db, *resume, *name, *table, *surface, *store_panels;
+    int wide;
     const char *path[PROJECT_FILES_MAX];
     int count;
-    int rc = args_parse_shared(argc, argv, options, flags.table, path,
-                               PROJECT_FILES_MAX, &count, err);
+    long rows, run_number;
+    struct study_request request;
+    struct grid_overrides grids;
+};
+
+/* Parses and checks argv into *c (cleared here); opens no file. */
+static int optimize_parse(int argc, char **argv, struct optimize_command *c,
+                          struct facet_error *err)
+{
+    memset(c, 0, sizeof *c);
+    classify_flags_init(&c->flags);
+    struct search_flags *search = &c->search;
+    const struct arg_option options[] = {
+        {"db", 0, ARG_STRING, &c->db, NULL},
+        {"u", 0, ARG_STRING, &search->u, NULL},
+        {"v", 0, ARG_STRING, &search->v, NULL},
+        {"threshold", 0, ARG_STRING, &search->threshold, NULL},
+        {"method", 0, ARG_STRING, &search->method, NULL},
+        {"evals", 0, ARG_STRING, &search->evals, NULL},
+        {"pop", 0, ARG_STRING, &search->pop, NULL},
+        {"gens", 0, ARG_STRING, &search->gens, NULL},
+        {"seed", 0, ARG_STRING, &search->seed, NULL},
+        {"objectives", 0, ARG_STRING, &search->objectives, NULL},
+        {"jobs", 'j', ARG_STRING, &search->jobs, NULL},
+        {"shard", 0, ARG_STRING, &search->shard, NULL},
+        {"resume", 0, ARG_STRING, &c->resume, NULL},
+        {"name", 0, ARG_STRING, &c->name, NULL},
+        {"table", 0, ARG_STRING, &c->table, NULL},
+        {"surface", 0, ARG_STRING, &c->surface, NULL},
+        {"wide", 0, ARG_FLAG, NULL, &c->wide},
+        {"store-panels", 0, ARG_STRING, &c->store_panels, NULL},
+        {"module", 0, ARG_STRING, &search->module, NULL},
+        {"grid", 0, ARG_STRING, &search->grid, NULL},
+        {NULL, 0, ARG_FLAG, NULL, NULL},
+    };
+    int rc = args_parse_shared(argc, argv, options, c->flags.table, c->path,
+                               PROJECT_FILES_MAX, &c->count, err);
     if (rc != FACET_OK)
         return rc;
-    if (db == NULL)
+    if (c->db == NULL)
         return facet_error_set(err, FACET_EINPUT,
             "optimize: name the result database, e.g. --db runs.db");
-    long rows = TABLE_ROWS, run_number = 0;
-    if (table && (rc = args_int(table, 0, 1000000000, "--table", &rows, err)))
+    c->rows = TABLE_ROWS;
+    if (c->table &&
+        (rc = args_int(c->table, 0, 1000000000, "--table", &c->rows, err)))
         return rc;
-    if (resume) {
-        if ((rc = args_int(resume, 1, 1L << 62, "--resume", &run_number,
-                           err)))
+    if (c->resume) {
+        if ((rc = args_int(c->resume, 1, 1L << 62, "--resume",
+                           &c->run_number, err)))
             return rc;
-        if (count != 0)
+        if (c->count != 0)
             return facet_error_set(err, FACET_EINPUT,
                 "optimize --resume: the run knows its surface; give no "
                 "OBJ file");
-    } else if (surface != NULL) {
+    } else if (c->surface != NULL) {
         return facet_error_set(err, FACET_EINPUT,
             "optimize: --surface re-points a run for --resume; a new run "
             "takes its OBJ file as its argument");
-    } else if (count == 0) {
+    } else if (c->count == 0) {
         return facet_error_set(err, FACET_EINPUT,
             "optimize: name an OBJ file (facet optimize FILE.obj --db "
             "runs.db)");
-    } else if (count > 1 && search.module == NULL) {
+    } else if (c->count > 1 && search->module == NULL) {
         return facet_error_set(err, FACET_EINPUT,
             "optimize: a project of %d files needs a panel module: give "
-            "--module WMIN:WMAX x HMIN:HMAX", count);
+            "--module WMIN:WMAX x HMIN:HMAX", c->count);
     }
-    if (resume && (search.module || search.grid))
+    if (c->resume && (search->module || search->grid))
         return facet_error_set(err, FACET_EINPUT,
             "optimize --resume: the run knows its module range; give no "
             "--module or --grid");
-    if (search.grid && !search.module)
+    if (search->grid && !search->module)
         return facet_error_set(err, FACET_EINPUT,
             "optimize: --grid gives a project's surface its own grid; "
             "it needs --module");
 
-    struct study_request request;
-    study_request_defaults(&request);
-    struct grid_overrides grids;
-    memset(&grids, 0, sizeof grids);
-    if (!resume && search.module) {
-        if ((rc = module_parse(search.module, "--module", &request.module,
+    struct study_request *request = &c->request;
+    study_request_defaults(request);
+    if (!c->resume && search->module) {
+        if ((rc = module_parse(search->module, "--module", &request->module,
                                err)) ||
-            (rc = study_project_space(&request.module,
-                                      &request.settings.space, err)))
+            (rc = study_project_space(&request->module,
+                                      &request->settings.space, err)))
             return rc;
-        if (search.grid && (rc = grid_overrides_parse(search.grid, &grids,
-                                                      err)))
+        if (search->grid &&
+            (rc = grid_overrides_parse(search->grid, &c->grids, err)))
             return rc;
-        request.files = path;
-        request.nfiles = (size_t)count;
-        request.override_names = (const char *const *)grids.name;
-        request.overrides = grids.grid;
-        request.noverrides = grids.n;
+        request->files = c->path;
+        request->nfiles = (size_t)c->count;
+        request->override_names = (const char *const *)c->grids.name;
+        request->overrides = c->grids.grid;
+        request->noverrides = c->grids.n;
     }
-    if (!resume) {
-        if ((rc = classify_flags_apply(&flags, &request.settings.base,
-                                       &request.mesh, &request.uv, err)))
+    if (!c->resume) {
+        if ((rc = classify_flags_apply(&c->flags, &request->settings.base,
+                                       &request->mesh, &request->uv, err)))
             return rc;
-        if ((rc = parse_search(&search, &request.settings, err)))
+        if ((rc = parse_search(search, &request->settings, err)))
             return rc;
-        if (store_panels &&
-            (rc = study_keep_panels_parse(store_panels, "--store-panels",
-                                          &request.store_panels, err)))
+        if (c->store_panels &&
+            (rc = study_keep_panels_parse(c->store_panels, "--store-panels",
+                                          &request->store_panels, err)))
             return rc;
-        request.surface_path = path[0];
-        request.flip_normals = flags.flip_normals;
-        request.name = name ? name : "";
+        request->surface_path = c->path[0];
+        request->flip_normals = c->flags.flip_normals;
+        request->name = c->name ? c->name : "";
+        if ((rc = study_request_check(request, err)))
+            return rc;
     }
+    return FACET_OK;
+}
 
+int optimize_args_check(int argc, char **argv, struct facet_error *err)
+{
+    struct optimize_command *c = malloc(sizeof *c);
+    if (c == NULL)
+        return facet_error_set(err, FACET_EWORK, "out of memory");
+    int rc = optimize_parse(argc, argv, c, err);
+    free(c);
+    return rc;
+}
+
+static int optimize_with(struct optimize_command *c, struct facet_error *err)
+{
+    int rc;
     /* A surface that cannot be read is refused before the database is
      * created or touched. */
-    if (!resume) {
-        if ((rc = study_request_check(&request, err)))
-            return rc;
-        for (int k = 0; k < count; k++) {
+    if (!c->resume) {
+        for (int k = 0; k < c->count; k++) {
             int fd;
             struct stat st;
-            if ((rc = infile_open(path[k], &fd, &st, err)))
+            if ((rc = infile_open(c->path[k], &fd, &st, err)))
                 return rc;
             close(fd);
         }
     }
     struct store *store;
-    if ((rc = store_open(db, &store, err)) != FACET_OK)
+    if ((rc = store_open(c->db, &store, err)) != FACET_OK)
         return rc;
     signals_catch_stop();
     struct optimize_view view;
@@ -312,21 +337,23 @@ static int optimize_main(int argc, char **argv, struct facet_error *err)
                                 stop_requested, show_started,
                                 progress_show_warning};
     enum optimize_outcome outcome;
-    int64_t run = run_number;
-    if (resume && surface != NULL)
-        rc = study_repoint_surface(store, run, surface, err);
-    if (resume && rc == FACET_OK)
+    int64_t run = c->run_number;
+    if (c->resume && c->surface != NULL)
+        rc = study_repoint_surface(store, run, c->surface, err);
+    if (c->resume && rc == FACET_OK)
         rc = study_resume(store, run, &hooks, &outcome, err);
     else
-        rc = study_start(store, &request, &hooks, &run, &outcome, err);
+        rc = study_start(store, &c->request, &hooks, &run, &outcome, err);
     if (view.bar_started && !view.bar.finished)
         fputc('\n', stderr);
     if (rc == FACET_OK) {
         if (outcome == OPTIMIZE_INTERRUPTED)
             fprintf(stderr, "facet: run %lld interrupted; every evaluated "
                     "option is stored. Go on with: facet optimize --db %s "
-                    "--resume %lld\n", (long long)run, db, (long long)run);
-        rc = run_table_print(stdout, store, db, run, rows, wide, err);
+                    "--resume %lld\n", (long long)run, c->db,
+                    (long long)run);
+        rc = run_table_print(stdout, store, c->db, run, c->rows, c->wide,
+                             err);
     }
     store_close(store);
     /* 128 + the signal, as a shell reports it: 130 for Ctrl-C (or a stop
@@ -334,6 +361,18 @@ static int optimize_main(int argc, char **argv, struct facet_error *err)
     if (rc == FACET_OK && outcome == OPTIMIZE_INTERRUPTED)
         return 128 + (signals_stop_requested() ? signals_stop_requested()
                                                : SIGINT);
+    return rc;
+}
+
+static int optimize_main(int argc, char **argv, struct facet_error *err)
+{
+    struct optimize_command *c = malloc(sizeof *c);
+    if (c == NULL)
+        return facet_error_set(err, FACET_EWORK, "out of memory");
+    int rc = optimize_parse(argc, argv, c, err);
+    if (rc == FACET_OK)
+        rc = optimize_with(c, err);
+    free(c);
     return rc;
 }
 

@@ -13,16 +13,19 @@
  * never reads half a file); the merge job copies the shards to its own
  * disk, merges there, and copies the merged run back the same way.
  */
+#include <assert.h>
 #include <errno.h>
 #include <limits.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <strings.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
 #include "args.h"
 #include "command.h"
+#include "core/base/text.h"
 #include "core/out/outfile.h"
 
 /* What the scripts are made of. */
@@ -199,6 +202,110 @@ static int absolute(const char *path, char out[PATH_MAX], const char *what,
     return FACET_OK;
 }
 
+/* --partition: a Slurm partition name or a comma-separated list of them,
+ * which the #SBATCH line holds as it is (letters, digits, '_', '-', '.'). */
+static int check_partition(const char *text, struct facet_error *err)
+{
+    int name = 0;
+    for (const char *c = text;; c++) {
+        if (*c == ',' || *c == '\0') {
+            if (name == 0)
+                break;
+            if (*c == '\0')
+                return FACET_OK;
+            name = 0;
+        } else if ((*c >= 'a' && *c <= 'z') || (*c >= 'A' && *c <= 'Z') ||
+                   (*c >= '0' && *c <= '9') || *c == '_' || *c == '-' ||
+                   *c == '.') {
+            name++;
+        } else {
+            break;
+        }
+    }
+    char shown[128];
+    text_for_terminal(text, shown, sizeof shown);
+    return facet_error_set(err, FACET_EINPUT,
+        "--partition: '%s' is not a Slurm partition name (letters, digits, "
+        "'_', '-' and '.', several separated by commas)", shown);
+}
+
+/* Reads a run of 1 to 9 digits at *c, moving past it; 0 when there is none. */
+static int digits(const char **c)
+{
+    int n = 0;
+    while (**c >= '0' && **c <= '9' && n < 10) {
+        (*c)++;
+        n++;
+    }
+    return n > 0 && n < 10;
+}
+
+/* --time: a Slurm time limit, one of the forms sbatch takes: MM, MM:SS,
+ * HH:MM:SS, DD-HH, DD-HH:MM, DD-HH:MM:SS, or UNLIMITED (INFINITE). */
+static int check_time(const char *text, struct facet_error *err)
+{
+    if (strcasecmp(text, "unlimited") == 0 ||
+        strcasecmp(text, "infinite") == 0)
+        return FACET_OK;
+    const char *c = text;
+    int fields = 1, ok = digits(&c);
+    if (ok && *c == '-') {
+        c++;
+        ok = digits(&c);
+    }
+    while (ok && *c == ':' && fields < 3) {
+        c++;
+        ok = digits(&c);
+        fields++;
+    }
+    if (ok && *c == '\0')
+        return FACET_OK;
+    char shown[128];
+    text_for_terminal(text, shown, sizeof shown);
+    return facet_error_set(err, FACET_EINPUT,
+        "--time: '%s' is not a Slurm time limit (MM, MM:SS, HH:MM:SS, "
+        "DD-HH, DD-HH:MM, DD-HH:MM:SS or UNLIMITED)", shown);
+}
+
+/* The options after "--", checked as facet optimize checks them, in the
+ * call the shard script makes (its files, --db, --shard, --jobs and
+ * --table, then the options): a script that every task would refuse is
+ * not written. */
+static int check_optimize_call(const struct slurm_plan *p,
+                               struct facet_error *err)
+{
+    int most = 1 + p->nsurfaces + 8 + p->noptimize;
+    char **argv = calloc((size_t)most + 1, sizeof *argv);
+    if (argv == NULL)
+        return facet_error_set(err, FACET_EWORK, "out of memory");
+    char shard[64];
+    snprintf(shard, sizeof shard, "1/%ld", p->shards);
+    int n = 0;
+    argv[n++] = "optimize";
+    for (int k = 0; k < p->nsurfaces; k++)
+        argv[n++] = p->surface[k];
+    argv[n++] = "--db";
+    argv[n++] = "shard.db";
+    argv[n++] = "--shard";
+    argv[n++] = shard;
+    argv[n++] = "--jobs";
+    argv[n++] = "1";
+    argv[n++] = "--table";
+    argv[n++] = "5";
+    for (int k = 0; k < p->noptimize; k++)
+        argv[n++] = p->optimize[k];
+    assert(n <= most);
+    struct facet_error why;
+    facet_error_clear(&why);
+    int rc = optimize_args_check(n, argv, &why);
+    free(argv);
+    if (rc != FACET_OK)
+        return facet_error_set(err, rc,
+            "slurm: facet optimize would refuse the options after --, on "
+            "every node: %s", why.message);
+    return FACET_OK;
+}
+
 /* The optimize options the scripts set themselves. */
 static int check_optimize_options(char **options, int n,
                                   struct facet_error *err)
@@ -258,6 +365,10 @@ static int slurm_main(int argc, char **argv, struct facet_error *err)
             "sees)");
     if ((rc = args_int(shards, 1, 100000, "--shards", &plan.shards, err)))
         return rc;
+    if (plan.partition && (rc = check_partition(plan.partition, err)))
+        return rc;
+    if (plan.time && (rc = check_time(plan.time, err)))
+        return rc;
     plan.cpus = 1;
     if (cpus && (rc = args_int(cpus, 1, 4096, "--cpus", &plan.cpus, err)))
         return rc;
@@ -279,6 +390,8 @@ static int slurm_main(int argc, char **argv, struct facet_error *err)
             access(surface[k], R_OK))
             return facet_error_set(err, FACET_EINPUT, "%s: %s", surface[k],
                                    strerror(errno));
+    if ((rc = check_optimize_call(&plan, err)))
+        return rc;
     if ((rc = absolute(results, plan.results, "--results", err)))
         return rc;
     if (facet != NULL) {

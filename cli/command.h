@@ -35,6 +35,13 @@ struct command {
     int (*run)(int argc, char **argv, struct facet_error *err);
 };
 
+/* Checks facet optimize's arguments argv[0..argc) (argv[0] "optimize") as
+ * facet optimize would, without opening any file or database: facet slurm
+ * refuses the options it would write into its scripts if optimize would
+ * refuse them on every node. FACET_OK, or FACET_EINPUT with optimize's
+ * own message. */
+int optimize_args_check(int argc, char **argv, struct facet_error *err);
+
 /* Every subcommand, NULL-terminated, in the order --help lists them. */
 extern const struct command *const command_table[];
 

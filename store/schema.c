@@ -678,6 +678,14 @@ static int require_file(const char *path, struct facet_error *err)
 int store_open(const char *path, struct store **out,
                struct facet_error *err)
 {
+    /* A database is a regular file or a new one: SQLite would write its
+     * journal beside anything else (/dev/null-journal, as root). */
+    struct stat st;
+    if (stat(path, &st) == 0 && !S_ISREG(st.st_mode))
+        return facet_error_set(err, FACET_EINPUT,
+                               "%s: not a regular file, not a database "
+                               "(name a Facet database or a new file)",
+                               path);
     return open_writer(path, 1, out, err);
 }
 

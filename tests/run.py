@@ -19,7 +19,7 @@ anything failed or nothing passed.
 Fixtures (the surfaces and databases several scripts start from, see
 tests/e2e/fixtures.sh) are made once per run, into a fresh folder named by
 FACET_FIXTURES, by the first build's facet, and shared by every suite of
-every build.
+every build (with --only or --changed, when a suite first asks for one).
 
 --changed keeps the unit tests and the end-to-end scripts whose "# layers:"
 line names a layer (core, store, study, tui, cli) that the working tree
@@ -366,7 +366,10 @@ def main():
     env["FACET_FIXTURES"] = fixtures
     started = time.monotonic()
     try:
-        if not make_fixtures(env, builds):
+        # A run of some suites only makes each fixture when a suite first
+        # asks for it (lib.sh), with that suite's build.
+        if not (args.only or args.changed or args.changed_files) and \
+                not make_fixtures(env, builds):
             # The suites that need the missing fixtures fail on their own,
             # each naming it; the others still run.
             print("run.py: some fixtures could not be made; see above")

@@ -31,8 +31,10 @@ static int parse_range(const char *text, const char *end, double out[3])
     out[0] = v[0];
     out[1] = n >= 2 ? v[1] : v[0];
     out[2] = n == 3 ? v[2] : MODULE_DEFAULT_STEP;
-    if (!(out[0] > 0) || !(out[1] >= out[0]) || !(out[2] > 0) ||
-        !isfinite(out[1]) || !isfinite(out[2]))
+    /* Below MODULE_MIN a module is no panel, and it would round to 0 at
+     * the 1e-9 m to which module values are kept (value_at). */
+    if (!(out[0] >= MODULE_MIN) || !(out[1] >= out[0]) ||
+        !(out[2] >= MODULE_MIN) || !isfinite(out[1]) || !isfinite(out[2]))
         return -1;
     if ((out[1] - out[0]) / out[2] >= MODULE_MAX_VALUES)
         return -1;
@@ -65,8 +67,8 @@ int module_parse(const char *text, const char *what,
         return facet_error_set(err, FACET_EINPUT,
             "%s: '%s' is not a module range (WMIN:WMAX x HMIN:HMAX in "
             "metres, each optionally :STEP, such as 1.2:2.0x1.0:1.6; "
-            "positive, min <= max, at most %d values a range)", what, text,
-            MODULE_MAX_VALUES);
+            "modules and steps of at least %g m, min <= max, at most %d "
+            "values a range)", what, text, MODULE_MIN, MODULE_MAX_VALUES);
     out->width_min = w[0];
     out->width_max = w[1];
     out->width_step = w[2];

@@ -30,6 +30,7 @@
 #define MODULE_DEFAULT_STEP 0.1  /* m */
 #define MODULE_MAX_VALUES 10000  /* values along one range */
 #define MODULE_MAX_COUNT 100000  /* panels along one side of a surface */
+#define MODULE_MIN 0.001         /* m: the least module and step */
 
 struct module_range {
     double width_min, width_max, width_step;     /* m */
@@ -39,8 +40,8 @@ struct module_range {
 /* Parses "WMIN:WMAX x HMIN:HMAX" (metres; blanks around the x allowed)
  * into *out: "1.2:2.0x1.0:1.6". Each range may give its step after a
  * second colon ("1.2:2.0:0.2", else MODULE_DEFAULT_STEP) or be one value
- * ("1.5x1.2"). Values must be positive and finite, min <= max, step > 0,
- * at most MODULE_MAX_VALUES per range. FACET_EINPUT otherwise, the message
+ * ("1.5x1.2"). Values and steps must be finite and at least MODULE_MIN,
+ * min <= max, at most MODULE_MAX_VALUES per range. FACET_EINPUT otherwise, the message
  * naming what (the caller's name for the setting) and the text. */
 int module_parse(const char *text, const char *what,
                  struct module_range *out, struct facet_error *err);

@@ -7,9 +7,10 @@
 #
 # Makes every fixture named (default: all of them) that DIR does not hold
 # yet. tests/run.py runs it once per run, with the first build's facet, into
-# a fresh folder, and every suite of every build reads from there; a script
-# run on its own makes what it asks for into its own $WORK (lib.sh,
-# fixture). A database fixture also keeps how its command went: NAME.status
+# a fresh folder, and every suite of every build reads from there (a run of
+# some suites only, --only or --changed, makes each fixture when a suite
+# first asks for it); a script run on its own makes what it asks for into
+# its own $WORK (lib.sh, fixture). A database fixture also keeps how its command went: NAME.status
 # (the exit status), NAME.out and NAME.err, for the scripts whose checks
 # are about that run. A fixture is written under a temporary name and moved
 # into place whole, so a reader never sees half of one.
@@ -83,6 +84,10 @@ make_one() {
     esac
 }
 
+# Suites that make what they need on demand share the folder: one maker
+# at a time (flock), and a fixture another made meanwhile is not made twice.
+exec 9>"$DIR/.lock" || exit 1
+flock 9 || exit 1
 status=0
 [ $# -gt 0 ] || set -- "${ALL[@]}"
 for name in "$@"; do

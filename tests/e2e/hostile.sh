@@ -64,6 +64,22 @@ for input in /dev/zero /dev/urandom "$WORK/in.fifo"; do
     done
 done
 if [ -e "$WORK/never.db" ]; then fail "no database made for an input refused"; else pass "no database made for an input refused"; fi
+# 11 (round 3). A database that is a device or a FIFO is refused, and no
+# journal is made beside it (as root, --db /dev/null made /dev/null-journal;
+# here a device node of /dev/null's numbers in $WORK stands for it).
+mkfifo "$WORK/db.fifo"
+devices=("$WORK/db.fifo")
+if [ "$(id -u)" -eq 0 ] && mknod "$WORK/null" c 1 3 2>/dev/null; then
+    devices+=("$WORK/null")
+else
+    skip "--db on a device node" "mknod needs root"
+fi
+for db in "${devices[@]}"; do
+    run timeout 20 "$FACET" optimize "$WORK/p.obj" --db "$db" --u 2:2 --v 2:2
+    same "--db $(basename "$db"): refused in one line (2), no journal beside it" \
+        "$STATUS $(grep -c 'not a regular file, not a database' "$ERR") $(wc -l <"$ERR") $(ls "$WORK" | grep -c "^$(basename "$db")-")" \
+        "2 1 1 0"
+done
 cp "$WORK/r.db" "$WORK/moved.db"
 sqlite3 "$WORK/moved.db" "UPDATE runs SET status = 'interrupted', surface_path = '/dev/zero'"
 run timeout 20 "$FACET" optimize --db "$WORK/moved.db" --resume 1

@@ -142,6 +142,11 @@ cp "$WORK/four.keep" "$WORK/four.obj"
 # 6. Bad input: one line, status 2, nothing stored.
 expect_error "--module malformed" "module: '1:2x' is not a module range" \
     "$FACET" optimize "$WORK/four.obj" --db "$WORK/bad.db" --module 1:2x
+expect_error "--module below 1 mm (it rounds to 0): refused, no assertion" \
+    "module: '1e-10x0.5' is not a module range.*at least 0.001 m" \
+    "$FACET" optimize "$WORK/four.obj" --db "$WORK/bad.db" --module 1e-10x0.5
+expect_error "--module of a step below 1 mm" "module: '1:2:1e-12x1' is not a module range" \
+    "$FACET" optimize "$WORK/four.obj" --db "$WORK/bad.db" --module 1:2:1e-12x1
 expect_error "--module of a zero width" "module: '0:1x1:1' is not a module range" \
     "$FACET" optimize "$WORK/four.obj" --db "$WORK/bad.db" --module 0:1x1:1
 expect_error "a project file without --module" \

@@ -174,6 +174,44 @@ expect_error "facet slurm leaves the shard's own flags to its scripts" "slurm: .
 expect_error "facet slurm needs --shards and --results" "give --shards N and --results DIR" \
     "$FACET" slurm "$ROOF" --shards 3
 
+# Values written into the scripts' #SBATCH lines are Slurm's words or
+# refused (hardening round 3, item 5): a newline in --partition or --time
+# put a shell command before "set -euo pipefail" in both scripts, a blank
+# let options into the #SBATCH line. Nothing is written when refused.
+marker=$WORK/injected
+for bad in "--partition|$(printf 'x\ntouch %s' "$marker")" "--partition|gpu --qos=high" \
+    "--partition|," "--time|$(printf '1:00\ntouch %s' "$marker")" "--time|1:00 --x" \
+    "--time|1::00" "--time|-1"; do
+    flag=${bad%%|*} value=${bad#*|}
+    rm -rf "$WORK/inj"
+    run "$FACET" slurm "$ROOF" --shards 2 --results "$WORK/inj" "$flag" "$value" -- "${SPACE[@]}"
+    same "slurm $flag $(printf '%q' "$value"): refused in one line (2), no script written" \
+        "$STATUS $(wc -l <"$ERR") $(grep -c "^facet: $flag: '.*' is not a Slurm" "$ERR") $(ls "$WORK/inj" 2>/dev/null | wc -l)" "2 1 1 0"
+done
+[ -e "$marker" ] && fail "no injected command ran" || pass "no injected command ran"
+for good in "--partition|gpu" "--partition|gpu,cpu_1.a-b" "--time|30" "--time|30:00" \
+    "--time|02:00:00" "--time|1-12" "--time|1-12:30" "--time|7-00:00:00" "--time|UNLIMITED"; do
+    flag=${good%%|*} value=${good#*|}
+    rm -rf "$WORK/ok"
+    run "$FACET" slurm "$ROOF" --shards 2 --results "$WORK/ok" "$flag" "$value" -- "${SPACE[@]}"
+    same "slurm $flag $value: written as given, valid bash" \
+        "$STATUS $(grep -c "^#SBATCH $flag=$value\$" "$WORK/ok/facet-shards.sbatch") $(bash -n "$WORK/ok/facet-shards.sbatch" && bash -n "$WORK/ok/facet-merge.sbatch" && echo bash)" \
+        "0 1 bash"
+done
+# The options after -- are checked by optimize's own parser, in the call
+# the shard script makes: what every array task would refuse is refused
+# here, in optimize's words, and no script is written.
+for bad in "--modul 1x1|unknown option '--modul' \(did you mean --module\?\)" \
+    "--threshold banana|--threshold: 'banana' is not" "-j4|unknown option '-j4'" \
+    "--u 0:5|--u 0:5" "--objectives nosuch|nosuch"; do
+    args=${bad%%|*} pattern=${bad#*|}
+    rm -rf "$WORK/inj"
+    # shellcheck disable=SC2086
+    run "$FACET" slurm "$ROOF" --shards 2 --results "$WORK/inj" -- $args
+    same "slurm -- $args: refused as optimize refuses it, no script written" \
+        "$STATUS $(wc -l <"$ERR") $(grep -cE "^facet: slurm: facet optimize would refuse the options after --, on every node: .*$pattern" "$ERR") $(ls "$WORK/inj" 2>/dev/null | wc -l)" "2 1 1 0"
+done
+
 # --- refusals: one line, status 2, the output as it was
 out_sum=$(sha256sum "$WORK/merged.db" | cut -d' ' -f1)
 "$FACET" optimize "$ROOF" --db "$WORK/other.db" --u 10:15 --v 12:17 --threshold 1:5:1 --shard 2/3 --table 1 >/dev/null 2>&1
