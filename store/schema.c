@@ -451,24 +451,42 @@ static int writer_gone(int64_t pid, const char *host)
     return pid <= 0 || (kill((pid_t)pid, 0) != 0 && errno == ESRCH);
 }
 
-/* Marks "running" runs whose writer is gone as "interrupted". */
-static int reap_orphans(struct store *store, struct facet_error *err)
+/* Lists into orphan (64 at most) the "running" runs whose writer is gone. */
+static int find_orphans(struct store *store, int64_t orphan[64],
+                        int *norphans, struct facet_error *err)
 {
     sqlite3_stmt *stmt;
+    *norphans = 0;
     int rc = store_prepare(store,
         "SELECT id, writer_pid, coalesce(writer_host, '') FROM runs"
         " WHERE status = 'running'", &stmt, "reading runs", err);
     if (rc != FACET_OK)
         return rc;
-    int64_t orphan[64];
-    int norphans = 0, step;
-    while ((step = sqlite3_step(stmt)) == SQLITE_ROW && norphans < 64)
+    int step;
+    while ((step = sqlite3_step(stmt)) == SQLITE_ROW && *norphans < 64)
         if (writer_gone(sqlite3_column_int64(stmt, 1),
                         (const char *)sqlite3_column_text(stmt, 2)))
-            orphan[norphans++] = sqlite3_column_int64(stmt, 0);
+            orphan[(*norphans)++] = sqlite3_column_int64(stmt, 0);
     sqlite3_finalize(stmt);
     if (step != SQLITE_ROW && step != SQLITE_DONE)
         return store_fail(store, "reading runs", err);
+    return FACET_OK;
+}
+
+/* Marks "running" runs whose writer is gone as "interrupted". Found again
+ * and marked in one write transaction: a --resume that claimed the run
+ * between a first look and the mark would otherwise lose its claim to the
+ * mark, and a second --resume take the run too. */
+static int reap_orphans(struct store *store, struct facet_error *err)
+{
+    int64_t orphan[64];
+    int norphans;
+    int rc = find_orphans(store, orphan, &norphans, err);
+    if (rc != FACET_OK || norphans == 0)
+        return rc;
+    if ((rc = store_exec(store, "BEGIN IMMEDIATE", "reading runs", err)))
+        return rc;
+    rc = find_orphans(store, orphan, &norphans, err);
     for (int k = 0; k < norphans && rc == FACET_OK; k++) {
         struct run_info run;
         rc = store_run_get(store, orphan[k], &run, err);
@@ -476,6 +494,10 @@ static int reap_orphans(struct store *store, struct facet_error *err)
             rc = store_run_set_status(store, orphan[k], RUN_INTERRUPTED,
                                       run.elapsed, err);
     }
+    if (rc == FACET_OK)
+        rc = store_exec(store, "COMMIT", "marking orphaned runs", err);
+    if (rc != FACET_OK)
+        sqlite3_exec(store->db, "ROLLBACK", NULL, NULL, NULL);
     return rc;
 }
 

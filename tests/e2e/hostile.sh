@@ -147,6 +147,26 @@ same "two resumes at once: one goes on (0), one is refused (2), naming the other
     "$(printf '%s\n' $sa $sb | sort | paste -sd' ') $refused" "0 2 1"
 same "the run ends done with every option" \
     "$(sqlite3 "$WORK/two.db" "SELECT status, options FROM runs")" "done|$total"
+# 9 (round 3). Two --resume of a run whose writer died (still "running")
+# at once: the orphan is found and marked inside the write transaction,
+# so one claims it and the other is refused, every time (before: both
+# went on in 14 of 20 trials here).
+fixture four.obj || exit 1
+"$FACET" optimize "$WORK/four.obj" --db "$WORK/orph.db" --module 1:3:0.5x1:3:0.5 \
+    --threshold 3 --table 0 >/dev/null 2>&1 || exit 1
+all=$(sqlite3 "$WORK/orph.db" "SELECT count(*) FROM options")
+outcomes=
+for trial in 1 2 3 4 5 6 7 8 9 10; do
+    cp "$WORK/orph.db" "$WORK/orph-$trial.db"
+    sqlite3 "$WORK/orph-$trial.db" "DELETE FROM option_surfaces WHERE option > 3; DELETE FROM options WHERE number > 3; UPDATE runs SET status = 'running', writer_pid = 2147483646, writer_host = '$(hostname)'"
+    "$FACET" optimize --db "$WORK/orph-$trial.db" --resume 1 --table 0 >/dev/null 2>"$WORK/oa.err" & a=$!
+    "$FACET" optimize --db "$WORK/orph-$trial.db" --resume 1 --table 0 >/dev/null 2>"$WORK/ob.err" & b=$!
+    wait $a; sa=$?
+    wait $b; sb=$?
+    outcomes="$outcomes $(printf '%s\n' $sa $sb | sort | paste -sd,)/$(sqlite3 "$WORK/orph-$trial.db" 'SELECT status, options FROM runs')"
+done
+same "two resumes of an orphaned project run, 10 trials: one goes on, one is refused, the run done whole" \
+    "$outcomes" "$(for _ in 1 2 3 4 5 6 7 8 9 10; do printf ' 0,2/done|%s' "$all"; done)"
 # 9. A writer that ends leaves no WAL behind (truncated to 0 bytes).
 "$FACET" optimize "$WORK/p.obj" --db "$WORK/wal.db" --u 2:30 --v 2:30 >/dev/null 2>&1
 same "after a run the -wal is empty" "$(stat -c %s "$WORK/wal.db-wal")" 0
