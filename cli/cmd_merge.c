@@ -13,7 +13,11 @@
 
 static int merge_main(int argc, char **argv, struct facet_error *err)
 {
-    const struct arg_option options[] = {{NULL, 0, ARG_FLAG, NULL, NULL}};
+    int fewer = 0;
+    const struct arg_option options[] = {
+        {"fewer", 0, ARG_FLAG, NULL, &fewer},
+        {NULL, 0, ARG_FLAG, NULL, NULL},
+    };
     const char **path = malloc((size_t)(argc > 1 ? argc : 1) * sizeof *path);
     if (path == NULL)
         return facet_error_set(err, FACET_EWORK, "out of memory");
@@ -27,8 +31,8 @@ static int merge_main(int argc, char **argv, struct facet_error *err)
     struct study_hooks hooks = {NULL, progress_show_stage, NULL, NULL, NULL,
                                 progress_show_warning};
     if (rc == FACET_OK)
-        rc = study_merge(path[0], path + 1, count - 1, &hooks, &report,
-                         err);
+        rc = study_merge(path[0], path + 1, count - 1, fewer, &hooks,
+                         &report, err);
     if (rc == FACET_OK) {
         if (report.missing[0] != '\0')
             fprintf(stderr, "facet: warning: shard%s %s of %d missing: run "
@@ -49,7 +53,7 @@ static int merge_main(int argc, char **argv, struct facet_error *err)
 
 const struct command cmd_merge = {
     .name = "merge",
-    .usage = "OUT.db SHARD.db...",
+    .usage = "OUT.db SHARD.db... [--fewer]",
     .summary = "Join the shards of a run (optimize --shard I/N) into one "
                "run.",
     .options = "  OUT.db is written whole or not at all (other runs in it "
@@ -57,6 +61,11 @@ const struct command cmd_merge = {
                "  merging the same shards again changes nothing; a shard "
                "missing is\n"
                "  named, the run marked incomplete until it is merged in.\n"
+               "  --fewer             replace a merged run in OUT.db with "
+               "one of fewer\n"
+               "                      shards (refused otherwise: its other "
+               "shards'\n"
+               "                      options would be lost)\n"
                "example:\n"
                "  facet merge all.db shard-1.db shard-2.db shard-3.db\n",
     .run = merge_main,

@@ -525,7 +525,7 @@ static int put_project_options(struct store *store, int64_t run,
 
 /* Writes the merged run into the (temporary) database at path. */
 static int write_merged(const char *path, const struct shard_file *f, int n,
-                        const struct option_row *rows,
+                        int allow_fewer, const struct option_row *rows,
                         const struct row_origin *origin, size_t nrows,
                         const struct study_hooks *hooks,
                         struct merge_report *report, struct facet_error *err)
@@ -543,6 +543,16 @@ static int write_merged(const char *path, const struct shard_file *f, int n,
     int project = store_run_is_project(&run);
     rc = find_merged(store, &f[0], &run, &run.id, err);
     report->replaced = run.id != 0;
+    if (rc == FACET_OK && run.id != 0 && !allow_fewer) {
+        struct run_info held;
+        rc = store_run_get(store, run.id, &held, err);
+        if (rc == FACET_OK && held.shards_merged > n)
+            rc = facet_error_set(err, FACET_EINPUT,
+                "run %lld there holds %d of %d shards merged; these %d would "
+                "replace it with fewer (the other shards' options lost): "
+                "give every shard it holds, or --fewer to replace it",
+                (long long)run.id, held.shards_merged, held.shard_count, n);
+    }
     if (rc == FACET_OK && run.id != 0) {
         rc = store_run_clear_options(store, run.id, err);
         if (rc == FACET_OK)
@@ -629,7 +639,7 @@ static int write_merged(const char *path, const struct shard_file *f, int n,
 }
 
 int study_merge(const char *out, const char *const *paths, int nshards,
-                const struct study_hooks *hooks,
+                int allow_fewer, const struct study_hooks *hooks,
                 struct merge_report *report, struct facet_error *err)
 {
     memset(report, 0, sizeof *report);
@@ -695,8 +705,8 @@ int study_merge(const char *out, const char *const *paths, int nshards,
         }
     }
     if (rc == FACET_OK)
-        rc = write_merged(temp, f, nshards, rows, origin, nrows, hooks,
-                          report, err);
+        rc = write_merged(temp, f, nshards, allow_fewer, rows, origin,
+                          nrows, hooks, report, err);
     if (temp[0] != '\0')
         remove_side_files(temp);
     if (rc == FACET_OK && rename(temp, out) != 0)

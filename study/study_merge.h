@@ -43,9 +43,13 @@ struct merge_report {
  * runs (naming the first setting that differs), a shard given twice, an
  * output that is one of the shards, or an output folder that cannot be
  * written; out is then as it was. Shards missing from the run make it
- * incomplete (report->missing), which is not an error. */
+ * incomplete (report->missing), which is not an error. A run out holds
+ * already, merged from more shards than given now, is not replaced by the
+ * fewer (FACET_EINPUT, naming both counts) unless allow_fewer: merging
+ * again after the shard files were cleaned up must not make a complete run
+ * incomplete. */
 int study_merge(const char *out, const char *const *shards, int nshards,
-                const struct study_hooks *hooks,
+                int allow_fewer, const struct study_hooks *hooks,
                 struct merge_report *report, struct facet_error *err);
 
 #endif

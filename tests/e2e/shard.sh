@@ -60,6 +60,20 @@ expect "merging again" 0 "$FACET" merge "$WORK/merged.db" "$WORK/ex1.db" "$WORK/
 same "merging again changes nothing" \
     "$(dump "$WORK/merged.db") $(sqlite3 -batch "$WORK/merged.db" 'SELECT count(*) FROM runs')" "$before 1"
 same "no temporary file is left" "$(ls "$WORK" | grep -c merge-)" "0"
+# A complete merged run is not made less complete unasked (hardening round
+# 3, item 4): merging again after two shard files were cleaned up is
+# refused, the file untouched; --fewer asks for it.
+sum=$(sha256sum <"$WORK/merged.db")
+expect_error "merging 1 shard over a run of 3 of 3 is refused, naming both" \
+    "run 1 there holds 3 of 3 shards merged; these 1 would replace it with fewer.*--fewer" \
+    "$FACET" merge "$WORK/merged.db" "$WORK/ex2.db"
+same "the complete run's file is untouched, no temporary file left" \
+    "$(sha256sum <"$WORK/merged.db") $(ls "$WORK" | grep -c merge-)" "$sum 0"
+cp "$WORK/merged.db" "$WORK/fewer.db"
+expect "--fewer replaces it with the one shard's options" 0 \
+    "$FACET" merge "$WORK/fewer.db" "$WORK/ex2.db" --fewer
+same "--fewer: 48 options, incomplete, 1 of 3" \
+    "$(sqlite3 -batch "$WORK/fewer.db" 'SELECT options, shards_merged, shard_count FROM runs')" "48|1|3"
 
 # --- 4 shards of 4 threshold steps on 2 grids: fewer grids than shards,
 # dealt point by point
