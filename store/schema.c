@@ -6,6 +6,7 @@
  */
 #include "store_internal.h"
 
+#include <assert.h>
 #include <errno.h>
 #include <math.h>
 #include <signal.h>
@@ -821,6 +822,22 @@ int store_check(struct store *store, struct facet_error *err)
     }
     sqlite3_finalize(stmt);
     return rc;
+}
+
+int store_seal(struct store *store, struct facet_error *err)
+{
+    assert(!store->read_only);
+    int frames = -1, moved = -1;
+    int step = sqlite3_wal_checkpoint_v2(store->db, NULL,
+                                         SQLITE_CHECKPOINT_TRUNCATE, &frames,
+                                         &moved);
+    if (step != SQLITE_OK)
+        return store_fail(store, "writing the file whole (checkpoint)", err);
+    if (frames != moved)
+        return facet_error_set(err, FACET_EWORK,
+            "%s: the checkpoint moved %d of %d pages into the file: it is "
+            "not whole", store->path, moved, frames);
+    return store_check(store, err);
 }
 
 void store_close(struct store *store)

@@ -237,6 +237,14 @@ int store_analyze(struct store *store, struct facet_error *err);
  * options). */
 int store_check(struct store *store, struct facet_error *err);
 
+/* Makes a writer's file hold everything itself, for a file about to take
+ * another's place: every page of the WAL moved into it (a checkpoint that
+ * must complete, the WAL then empty), then read whole (store_check).
+ * FACET_EWORK naming the file when the checkpoint cannot finish (a full
+ * disk), FACET_EINPUT when the file reads as damaged; either way its WAL
+ * still holds what the file lacks and must not be deleted. */
+int store_seal(struct store *store, struct facet_error *err);
+
 /* --- runs --- */
 
 /* Inserts run (id, started, status RUN_RUNNING, writer pid/host are set here

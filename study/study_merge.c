@@ -379,6 +379,24 @@ static int same_file(const char *a, const char *b)
 }
 
 /* Removes path's SQLite side files (-wal, -shm). */
+/* Flushes path's contents to the disk, so that the rename that puts it in
+ * place never shows a file the disk does not hold. */
+static int sync_file(const char *path, struct facet_error *err)
+{
+    int fd = open(path, O_RDONLY);
+    if (fd < 0 || fsync(fd) != 0) {
+        int code = errno;
+        if (fd >= 0)
+            close(fd);
+        return facet_error_set(err, FACET_EWORK, "%s: cannot write it to "
+                               "the disk (%s)", path, strerror(code));
+    }
+    if (close(fd) != 0)
+        return facet_error_set(err, FACET_EWORK, "%s: cannot write it to "
+                               "the disk (%s)", path, strerror(errno));
+    return FACET_OK;
+}
+
 static void remove_side_files(const char *path)
 {
     char side[4200];
@@ -634,6 +652,10 @@ static int write_merged(const char *path, const struct shard_file *f, int n,
         report->options = run.options;
         report->pareto_options = run.pareto_options;
     }
+    /* The copy takes the output's place with its side files deleted: it
+     * must hold every page itself, and read whole, first. */
+    if (rc == FACET_OK)
+        rc = store_seal(store, err);
     store_close(store);
     return rc;
 }
@@ -707,8 +729,12 @@ int study_merge(const char *out, const char *const *paths, int nshards,
     if (rc == FACET_OK)
         rc = write_merged(temp, f, nshards, allow_fewer, rows, origin,
                           nrows, hooks, report, err);
+    /* Sealed (store_seal), the copy's WAL is empty; unsealed, the copy is
+     * dropped whole with its side files below. */
     if (temp[0] != '\0')
         remove_side_files(temp);
+    if (rc == FACET_OK)
+        rc = sync_file(temp, err);
     if (rc == FACET_OK && rename(temp, out) != 0)
         rc = facet_error_set(err, FACET_EINPUT, "%s: cannot replace it "
                              "(%s)", out, strerror(errno));

@@ -237,6 +237,38 @@ if [ "$(id -u)" -eq 0 ] && mount -t tmpfs -o size=400k tmpfs "$disk" 2>/dev/null
             "0 1 done 0"
         umount "$disk"
     fi
+    # Round 3, item 1: facet merge into a nearly full disk. Its copy's last
+    # checkpoint failed unheard, the WAL that held the data was deleted and
+    # the broken copy renamed over an OUT.db holding another run (exit 0,
+    # quick_check failing, at 2100, 2400 and 4500 kB here). Now at every
+    # size: done and whole (quick_check ok, both runs), or refused with
+    # OUT.db exactly as it was, and no copy left.
+    for i in 1 2 3; do
+        "$FACET" optimize "$WORK/p.obj" --db "$WORK/ms$i.db" --u 2:30 --v 2:30 \
+            --threshold 1:3:1 --shard $i/3 --table 0 >/dev/null 2>&1 || exit 1
+    done
+    "$FACET" optimize "$WORK/p.obj" --db "$WORK/mo.db" --u 2:12 --v 2:12 --table 0 >/dev/null 2>&1 || exit 1
+    sum=$(sha256sum <"$WORK/mo.db")
+    outcomes=
+    for kb in 1200 1800 2100 2400 2700 3300 4500 5000; do
+        mount -t tmpfs -o size=${kb}k tmpfs "$disk" 2>/dev/null || break
+        cp "$WORK/mo.db" "$disk/out.db"
+        run "$FACET" merge "$disk/out.db" "$WORK/ms1.db" "$WORK/ms2.db" "$WORK/ms3.db"
+        check=$(sqlite3 "$disk/out.db" 'PRAGMA quick_check; SELECT count(*) FROM runs' 2>&1 | paste -sd' ')
+        if [ "$STATUS" -eq 0 ] && [ "$check" = "ok 2" ] && [ "$(ls "$disk")" = out.db ]; then
+            outcomes="$outcomes $kb:merged"
+        elif [ "$STATUS" -ne 0 ] && [ "$(sha256sum <"$disk/out.db")" = "$sum" ] &&
+            [ "$(ls "$disk")" = out.db ]; then
+            outcomes="$outcomes $kb:refused"
+        else
+            outcomes="$outcomes $kb:BROKEN"
+            echo "# $kb kB: status $STATUS, $(echo "$check" | cut -c1-120), left: $(ls "$disk" | paste -sd,)"
+        fi
+        umount "$disk"
+    done
+    same "merge into a nearly full disk, 8 sizes: merged whole or refused, OUT.db intact" \
+        "$(echo "$outcomes" | grep -o BROKEN | wc -l) $(echo "$outcomes" | wc -w)" "0 8"
+    echo "#$outcomes"
 else
     skip "full-disk checks" "they need root to mount a small tmpfs"
 fi
