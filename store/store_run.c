@@ -455,6 +455,25 @@ int store_run_claim(struct store *store, int64_t id, struct run_info *run,
     return rc;
 }
 
+int store_run_live_writer(struct store *store, struct run_info *run,
+                          int *live, struct facet_error *err)
+{
+    *live = 0;
+    struct run_info *runs;
+    size_t n;
+    int rc = store_run_list(store, &runs, &n, err);
+    if (rc != FACET_OK)
+        return rc;
+    for (size_t k = 0; k < n && !*live; k++)
+        if (runs[k].status == RUN_RUNNING &&
+            !store_run_writer_gone(runs[k].writer_pid, runs[k].writer_host)) {
+            *run = runs[k];
+            *live = 1;
+        }
+    free(runs);
+    return FACET_OK;
+}
+
 int store_run_set_surface(struct store *store, int64_t id, const char *path,
                           struct facet_error *err)
 {

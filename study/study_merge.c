@@ -379,6 +379,23 @@ static int same_file(const char *a, const char *b)
 }
 
 /* Removes path's SQLite side files (-wal, -shm). */
+/* Refuses to replace out (open in store) while another Facet writes a run
+ * into it: the writer would go on into the file replaced, and its options
+ * be lost, as --resume refuses a run that is being written. */
+static int refuse_live_writer(struct store *store, const char *out,
+                              struct facet_error *err)
+{
+    struct run_info run;
+    int live;
+    int rc = store_run_live_writer(store, &run, &live, err);
+    if (rc == FACET_OK && live)
+        rc = facet_error_set(err, FACET_EINPUT,
+            "%s: run %lld in it is being written by process %lld on %s: "
+            "merge when it ends, or into another file", out,
+            (long long)run.id, (long long)run.writer_pid, run.writer_host);
+    return rc;
+}
+
 /* Flushes path's contents to the disk, so that the rename that puts it in
  * place never shows a file the disk does not hold. */
 static int sync_file(const char *path, struct facet_error *err)
@@ -721,10 +738,11 @@ int study_merge(const char *out, const char *const *paths, int nshards,
     if (rc == FACET_OK && access(out, F_OK) == 0) {
         struct store *old;
         rc = store_open_read(out, &old, err);
-        if (rc == FACET_OK) {
+        if (rc == FACET_OK)
+            rc = refuse_live_writer(old, out, err);
+        if (rc == FACET_OK)
             rc = store_copy(old, temp, err);
-            store_close(old);
-        }
+        store_close(old);
     }
     if (rc == FACET_OK)
         rc = write_merged(temp, f, nshards, allow_fewer, rows, origin,
@@ -735,6 +753,15 @@ int study_merge(const char *out, const char *const *paths, int nshards,
         remove_side_files(temp);
     if (rc == FACET_OK)
         rc = sync_file(temp, err);
+    /* Asked again at the last moment: a writer that opened the output
+     * while the merge worked would lose its work to the rename too. */
+    if (rc == FACET_OK && access(out, F_OK) == 0) {
+        struct store *old;
+        rc = store_open_read(out, &old, err);
+        if (rc == FACET_OK)
+            rc = refuse_live_writer(old, out, err);
+        store_close(old);
+    }
     if (rc == FACET_OK && rename(temp, out) != 0)
         rc = facet_error_set(err, FACET_EINPUT, "%s: cannot replace it "
                              "(%s)", out, strerror(errno));

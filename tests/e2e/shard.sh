@@ -69,6 +69,23 @@ expect_error "merging 1 shard over a run of 3 of 3 is refused, naming both" \
     "$FACET" merge "$WORK/merged.db" "$WORK/ex2.db"
 same "the complete run's file is untouched, no temporary file left" \
     "$(sha256sum <"$WORK/merged.db") $(ls "$WORK" | grep -c merge-)" "$sum 0"
+# Nor is a file another Facet is writing replaced (round 3, item 2): the
+# writer would go on into the file the merge renamed over, its options
+# lost (before: both exited 0, the writer's run was left "running" with
+# 192 of its options, beside the merged run).
+"$FACET" optimize "$ROOF" --db "$WORK/live.db" --u 4:40 --v 4:40 --threshold 2:4:1 \
+    --jobs 1 --table 0 >/dev/null 2>&1 & writer=$!
+for _ in $(seq 600); do
+    [ "$(sqlite3 -batch "$WORK/live.db" 'SELECT count(*) FROM options' 2>/dev/null)" -gt 0 ] 2>/dev/null && break
+    sleep 0.05
+done
+expect_error "merge into a file another facet is writing: refused, naming it" \
+    "live\.db: run 1 in it is being written by process $writer on " \
+    "$FACET" merge "$WORK/live.db" "$WORK/ex1.db" "$WORK/ex2.db" "$WORK/ex3.db"
+wait $writer
+same "the writer's run ends done with every option (SQLite counts them)" \
+    "$(sqlite3 -batch "$WORK/live.db" "SELECT status, options, (SELECT count(*) FROM options) FROM runs")" \
+    "done|4107|4107"
 cp "$WORK/merged.db" "$WORK/fewer.db"
 expect "--fewer replaces it with the one shard's options" 0 \
     "$FACET" merge "$WORK/fewer.db" "$WORK/ex2.db" --fewer
