@@ -289,6 +289,17 @@ int store_run_set_status(struct store *store, int64_t id,
 int store_run_set_shard(struct store *store, const struct run_info *run,
                         struct facet_error *err);
 
+/* Checks that the shard run (read from store) holds what a shard made by
+ * Facet holds, before a merge takes its options: its index within its
+ * count, as many options as its run recorded, and every value of every
+ * option of the type and range its column takes (a number where a number
+ * goes, finite, counts and areas not negative, a grid within the grid's
+ * bounds). FACET_EINPUT naming the file, the shard and the first option
+ * and column that do not add up; a value a reader would take as 0 or a
+ * NOT NULL insert would drop is never merged. */
+int store_shard_check(struct store *store, const struct run_info *run,
+                      struct facet_error *err);
+
 /* Deletes every option of run (and their panels), keeping the run: a
  * merge made again refills the run it made before. */
 int store_run_clear_options(struct store *store, int64_t run,

@@ -188,6 +188,8 @@ static int read_shard(const char *path, struct shard_file *f,
             path, f->run.shard_index, f->run.shard_count,
             (long long)f->run.id, run_status_name(f->run.status));
     if (rc == FACET_OK)
+        rc = store_shard_check(store, &f->run, err);
+    if (rc == FACET_OK)
         rc = store_options_get(store, f->run.id, &f->rows, &f->n, err);
     if (rc == FACET_OK && store_run_is_project(&f->run)) {
         rc = store_surfaces_get(store, f->run.id, &f->surfaces,

@@ -86,6 +86,24 @@ wait $writer
 same "the writer's run ends done with every option (SQLite counts them)" \
     "$(sqlite3 -batch "$WORK/live.db" "SELECT status, options, (SELECT count(*) FROM options) FROM runs")" \
     "done|4107|4107"
+# Edited shards are refused, naming the shard and the option (round 3,
+# item 3): before, a deleted option merged as 143 of 144, text 'NaN' read
+# as a cost of 0, and +Inf, nu = 2e9, nv = -7 or shard 7 of 3 went through.
+for edit in "DELETE FROM options WHERE number = 4|holds 47 options, and its run recorded 48" \
+    "UPDATE options SET cost = 'NaN' WHERE number = 4|option 4: cost is 'NaN'" \
+    "UPDATE options SET cost = 9e999 WHERE number = 4|option 4: cost is " \
+    "UPDATE options SET planarity = -1 WHERE number = 4|option 4: planarity is -1" \
+    "UPDATE options SET nu = 2e9 WHERE number = 4|option 4: nu is 2000000000" \
+    "UPDATE options SET nv = -7 WHERE number = 4|option 4: nv is -7" \
+    "UPDATE runs SET shard_index = 7|shard 7 of 3 is no shard"; do
+    sql=${edit%%|*} pattern=${edit#*|}
+    cp "$WORK/ex1.db" "$WORK/edited.db"
+    sqlite3 -batch "$WORK/edited.db" "$sql"
+    rm -f "$WORK/edited-out.db"
+    run "$FACET" merge "$WORK/edited-out.db" "$WORK/edited.db" "$WORK/ex2.db" "$WORK/ex3.db"
+    same "an edited shard ($sql): refused in one line, naming it, nothing written" \
+        "$STATUS $(wc -l <"$ERR") $(grep -c "edited\.db: .*$pattern" "$ERR") $([ -e "$WORK/edited-out.db" ] && echo written)" "2 1 1 "
+done
 cp "$WORK/merged.db" "$WORK/fewer.db"
 expect "--fewer replaces it with the one shard's options" 0 \
     "$FACET" merge "$WORK/fewer.db" "$WORK/ex2.db" --fewer
