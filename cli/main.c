@@ -28,6 +28,7 @@ static const struct {
     [FACET_SETTING_SORT] = {"--sort: ", ""},
     [FACET_SETTING_MODULE] = {"", ": give --module WMIN:WMAX x HMIN:HMAX "
                                   "(or --object NAME for one surface)"},
+    [FACET_SETTING_FEWER] = {"", ", or pass --fewer to replace it"},
 };
 
 static void print_error(const struct facet_error *err)

@@ -584,11 +584,11 @@ static int write_merged(const char *path, const struct shard_file *f, int n,
         struct run_info held;
         rc = store_run_get(store, run.id, &held, err);
         if (rc == FACET_OK && held.shards_merged > n)
-            rc = facet_error_set(err, FACET_EINPUT,
+            rc = facet_error_about(err, FACET_SETTING_FEWER, FACET_EINPUT,
                 "run %lld there holds %d of %d shards merged; these %d would "
                 "replace it with fewer (the other shards' options lost): "
-                "give every shard it holds, or --fewer to replace it",
-                (long long)run.id, held.shards_merged, held.shard_count, n);
+                "give every shard it holds", (long long)run.id,
+                held.shards_merged, held.shard_count, n);
     }
     if (rc == FACET_OK && run.id != 0) {
         rc = store_run_clear_options(store, run.id, err);

@@ -63,7 +63,7 @@ PY
         continue
     fi
     start=$EPOCHREALTIME
-    (cd "$tree" && tests/run.py --quiet --first-failure --jobs "$jobs" \
+    (cd "$tree" && tests/run.py --quiet --first-failure --shortest-first --jobs "$jobs" \
         --changed-files "$file" -- "$build") >"$tree/run.log" 2>&1
     status=$?
     seconds=$(echo "$EPOCHREALTIME - $start" | bc)

@@ -335,6 +335,9 @@ def main():
                     help="start no suite after one has failed")
     ap.add_argument("--first-failure", action="store_true",
                     help="stop every suite at the first failing check")
+    ap.add_argument("--shortest-first", action="store_true",
+                    help="the shortest suites first: a first failure "
+                    "sooner (tests/mutants.sh)")
     ap.add_argument("--only", nargs="*", default=[])
     ap.add_argument("--quiet", action="store_true",
                     help="no line per suite that passed")
@@ -353,7 +356,8 @@ def main():
     times = read_times(builds)
     for s in suites:
         s.estimate = times.get(s.key(), default_estimate(s))
-    queue = sorted(suites, key=lambda s: -s.estimate)
+    queue = sorted(suites, key=lambda s: s.estimate if args.shortest_first
+                   else -s.estimate)
 
     env = dict(os.environ)
     env.setdefault("FACET_DATA", os.path.join(os.path.dirname(ROOT),

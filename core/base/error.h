@@ -52,6 +52,8 @@ enum facet_setting {
     FACET_SETTING_SORT,       /* about: the sort columns */
     FACET_SETTING_MODULE,     /* fix: a panel module for a project, or one
                                  object or group of the file */
+    FACET_SETTING_FEWER,      /* fix: let a merge replace a merged run with
+                                 one of fewer shards */
     FACET_SETTING_COUNT
 };
 
