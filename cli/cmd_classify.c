@@ -13,6 +13,7 @@
 #include "classify_flags.h"
 #include "command.h"
 #include "option_text.h"
+#include "shown.h"
 #include "core/surface/coarse_mesh.h"
 #include "core/base/numparse.h"
 #include "core/classify/option.h"
@@ -57,9 +58,9 @@ static void print_human(const struct surface *s,
                         const struct option_totals *t)
 {
     const struct classify_options *o = &params->classify;
-    printf("%-16s %s (%s, %.3f m^2, %zu triangles, UV from %s)\n",
-           "surface", s->path, mesh_units_name(s->units), s->mesh.area,
-           s->mesh.ntriangles, param_method_name(s->param.method));
+    shown_line(stdout, "%-16s %s (%s, %.3f m^2, %zu triangles, UV from %s)",
+               "surface", s->path, mesh_units_name(s->units), s->mesh.area,
+               s->mesh.ntriangles, param_method_name(s->param.method));
     printf("%-16s %d x %d (%zu panels)\n", "grid", p->nu, p->nv, t->panels);
     printf("%-16s %g mm\n", "threshold", o->threshold * 1000);
     if (o->curvature_tol > 0)
@@ -178,7 +179,7 @@ static int classify_run(int argc, char **argv, struct facet_error *err)
     }
     if (rc == FACET_OK) {
         for (int i = 0; i < surface.nwarnings; i++)
-            fprintf(stderr, "facet: warning: %s\n", surface.warnings[i]);
+            shown_line(stderr, "facet: warning: %s", surface.warnings[i]);
         if (is_coarse)
             fprintf(stderr, "facet: warning: %s\n", coarse);
         if (json) {

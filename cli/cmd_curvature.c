@@ -18,6 +18,7 @@
 #include "core/out/json.h"
 #include "core/out/outfile.h"
 #include "core/surface/surface.h"
+#include "shown.h"
 
 static const char csv_header[] =
     "v,x,y,z,k1,k2,K,H,normal_x,normal_y,normal_z,boundary\n";
@@ -105,7 +106,7 @@ static void print_summary(const struct surface *s, const struct curvature *c)
         lo[b][1] = fmin(lo[b][1], c->k2[v]);
         hi[b][1] = fmax(hi[b][1], c->k2[v]);
     }
-    printf("%-15s %s\n", "surface", s->path);
+    shown_line(stdout, "%-15s %s", "surface", s->path);
     printf("%-15s %zu\n", "vertices", m->nvertices);
     static const char *const where[2] = {"inside", "boundary"};
     for (int b = 0; b < 2; b++) {
@@ -153,7 +154,7 @@ static int curvature_run(int argc, char **argv, struct facet_error *err)
         rc = curvature_at_vertices(&surface.mesh, flip, &curvature, err);
     if (rc == FACET_OK) {
         for (int i = 0; i < surface.nwarnings; i++)
-            fprintf(stderr, "facet: warning: %s\n", surface.warnings[i]);
+            shown_line(stderr, "facet: warning: %s", surface.warnings[i]);
         if (csv != NULL) {
             struct outfile f;
             rc = outfile_open(&f, csv, force, err);

@@ -12,6 +12,7 @@
 
 #include "args.h"
 #include "command.h"
+#include "shown.h"
 #include "study/study.h"
 #include "study/study_export.h"
 
@@ -86,7 +87,7 @@ static int export_main(int argc, char **argv, struct facet_error *err)
             say = stderr;
     for (int k = 0; rc == FACET_OK && k < EXPORT_FILES; k++)
         if (request.written[k][0])
-            fprintf(say, "wrote %s\n", request.written[k]);
+            shown_line(say, "wrote %s", request.written[k]);
     store_close(store);
     return rc;
 }

@@ -17,6 +17,7 @@
 #include "core/project/project_lengths.h"
 #include "core/surface/surface.h"
 #include "core/surface/uv_index.h"
+#include "shown.h"
 
 static const char *uv_verdict(const struct mesh *mesh,
                               const struct uv_report *uv)
@@ -36,8 +37,10 @@ static void print_names(const char *label, const struct obj_name *names,
         printf(" -\n");
         return;
     }
-    for (size_t i = 1; i < count; i++)
-        printf("%s%s", i == 1 ? " " : ", ", names[i].text);
+    for (size_t i = 1; i < count; i++) {
+        fputs(i == 1 ? " " : ", ", stdout);
+        shown_text(stdout, names[i].text);  /* the file's, not ours */
+    }
     printf("\n");
 }
 
@@ -54,7 +57,9 @@ static void print_human(const struct surface *s, const struct uv_report *uv,
 {
     const struct mesh *m = &s->mesh;
     const struct obj_file *o = &s->obj;
-    printf("%-15s %s\n", "surface", s->path);
+    /* The path, names, reasons and warnings can quote the file: each line
+     * that carries one is cleaned (shown.h). */
+    shown_line(stdout, "%-15s %s", "surface", s->path);
     printf("%-15s %s\n", "units", mesh_units_name(s->units));
     printf("%-15s %zu in file, %zu welded\n", "vertices", o->nvertices,
            m->nvertices);
@@ -77,18 +82,18 @@ static void print_human(const struct surface *s, const struct uv_report *uv,
                uv->overlapping, uv->degenerate);
     printf("\n");
     if (choice->ok)
-        printf("%-15s %s (%s)\n", "UV map",
-               param_method_name(choice->param->method),
-               choice->param->reason);
+        shown_line(stdout, "%-15s %s (%s)", "UV map",
+                   param_method_name(choice->param->method),
+                   choice->param->reason);
     else
-        printf("%-15s none: %s\n", "UV map", choice->why_not);
+        shown_line(stdout, "%-15s none: %s", "UV map", choice->why_not);
     printf("%-15s %zu\n", "components", m->ncomponents);
     printf("%-15s %zu\n", "boundary loops", m->nloops);
     print_names("objects", o->objects, o->nobjects);
     print_names("groups", o->groups, o->ngroups);
     print_names("materials", o->materials, o->nmaterials);
     for (int i = 0; i < s->nwarnings; i++)
-        printf("warning: %s\n", s->warnings[i]);
+        shown_line(stdout, "warning: %s", s->warnings[i]);
 }
 
 static void json_names(struct json_writer *w, const char *key,
@@ -218,8 +223,11 @@ static void print_project_human(const struct project *p,
     for (size_t i = 0; i < p->nsurfaces; i++) {
         const struct surface_row *r = &rows[i];
         const char *slash = strrchr(r->s->file, '/');
-        printf("%-20s %-20s %10zu %12.3f %-9s", r->s->name,
-               slash ? slash + 1 : r->s->file, r->s->surface.mesh.ntriangles,
+        /* the name and file are the user's: shown, not obeyed */
+        shown_cell(stdout, r->s->name, 20);
+        fputc(' ', stdout);
+        shown_cell(stdout, slash ? slash + 1 : r->s->file, 20);
+        printf(" %10zu %12.3f %-9s", r->s->surface.mesh.ntriangles,
                r->s->surface.mesh.area,
                r->uv_ok ? param_method_name(r->method) : "none");
         if (r->uv_ok)
@@ -230,10 +238,11 @@ static void print_project_human(const struct project *p,
     for (size_t i = 0; i < p->nsurfaces; i++) {
         const struct surface_row *r = &rows[i];
         if (!r->uv_ok)
-            printf("warning: %s: no UV: %s\n", r->s->name, r->reason);
+            shown_line(stdout, "warning: %s: no UV: %s", r->s->name,
+                       r->reason);
         for (int w = 0; w < r->s->surface.nwarnings; w++)
-            printf("warning: %s: %s\n", r->s->name,
-                   r->s->surface.warnings[w]);
+            shown_line(stdout, "warning: %s: %s", r->s->name,
+                       r->s->surface.warnings[w]);
     }
 }
 

@@ -9,6 +9,7 @@
 #include "args.h"
 #include "command.h"
 #include "progress.h"
+#include "shown.h"
 #include "study/study_merge.h"
 
 static int merge_main(int argc, char **argv, struct facet_error *err)
@@ -41,8 +42,8 @@ static int merge_main(int argc, char **argv, struct facet_error *err)
                     ? "s" : "", report.missing, report.shard_count,
                     (long long)report.run, report.shards_merged + 1 <
                     report.shard_count ? "them" : "it");
-        printf("%s: run %lld %s from %d of %d shards: %lld options, %lld "
-               "Pareto-optimal\n", path[0], (long long)report.run,
+        shown_line(stdout, "%s: run %lld %s from %d of %d shards: %lld "
+               "options, %lld Pareto-optimal", path[0], (long long)report.run,
                report.replaced ? "merged again" : "merged",
                report.shards_merged, report.shard_count,
                (long long)report.options, (long long)report.pareto_options);

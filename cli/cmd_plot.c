@@ -8,6 +8,7 @@
 
 #include "args.h"
 #include "command.h"
+#include "shown.h"
 #include "study/study_export.h"
 
 static int plot_main(int argc, char **argv, struct facet_error *err)
@@ -62,7 +63,7 @@ static int plot_main(int argc, char **argv, struct facet_error *err)
         return rc;
     rc = study_plot(store, &request, output, err);
     if (rc == FACET_OK)
-        printf("wrote %s\n", output);
+        shown_line(stdout, "wrote %s", output);
     store_close(store);
     return rc;
 }

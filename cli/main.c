@@ -9,6 +9,7 @@
 
 #include "command.h"
 #include "core/base/spelling.h"
+#include "shown.h"
 
 /* The CLI's words for the setting an error is about (core/base/error.h):
  * its flag, before the message or after it. */
@@ -31,14 +32,18 @@ static const struct {
     [FACET_SETTING_FEWER] = {"", ", or pass --fewer to replace it"},
 };
 
+/* Prints the error in one line. Its message can quote what Facet did not
+ * write (a stored path, an OBJ token, SQLite's own text, a trigger's
+ * message), so all of it is cleaned (shown.h): no escape sequence reaches
+ * the terminal, no newline makes a second line. */
 static void print_error(const struct facet_error *err)
 {
     enum facet_setting s = err->setting;
     if ((unsigned)s >= FACET_SETTING_COUNT || setting_words[s].before == NULL)
         s = FACET_SETTING_NONE;
-    fprintf(stderr, "facet: %s%s%s\n", setting_words[s].before,
-            err->message[0] ? err->message : "failed",
-            setting_words[s].after);
+    shown_line(stderr, "facet: %s%s%s", setting_words[s].before,
+               err->message[0] ? err->message : "failed",
+               setting_words[s].after);
 }
 
 static int wants_help(int argc, char **argv)
@@ -75,11 +80,11 @@ int main(int argc, char **argv)
         const char *near = spelling_closest(argv[1], strlen(argv[1]), names,
                                             n);
         if (near != NULL)
-            fprintf(stderr, "facet: unknown command '%s' (did you mean "
-                    "'facet %s'?)\n", argv[1], near);
+            shown_line(stderr, "facet: unknown command '%s' (did you mean "
+                       "'facet %s'?)", argv[1], near);
         else
-            fprintf(stderr, "facet: unknown command '%s' (see 'facet "
-                    "--help')\n", argv[1]);
+            shown_line(stderr, "facet: unknown command '%s' (see 'facet "
+                       "--help')", argv[1]);
         return 2;
     }
     if (wants_help(argc - 1, argv + 1)) {

@@ -7,6 +7,7 @@
 #include <time.h>
 #include <unistd.h>
 
+#include "shown.h"
 double progress_now(void)
 {
     struct timespec t;
@@ -88,11 +89,12 @@ void progress_show_stage(void *context, const char *what)
 {
     (void)context;
     if (isatty(STDERR_FILENO))
-        fprintf(stderr, "facet: %s\n", what);
+        shown_line(stderr, "facet: %s", what);
 }
 
 void progress_show_warning(void *context, const char *text)
 {
     (void)context;
-    fprintf(stderr, "facet: warning: %s\n", text);
+    /* a warning can quote the surface file (shown.h) */
+    shown_line(stderr, "facet: warning: %s", text);
 }

@@ -8,6 +8,8 @@
 #include <sys/ioctl.h>
 #include <unistd.h>
 
+#include "shown.h"
+
 int text_table_width(FILE *out, int wide)
 {
     if (wide)
@@ -109,7 +111,11 @@ static void line_out(FILE *out, const struct text_table *t,
     fclose(line);
     while (length > 0 && text[length - 1] == ' ')
         length--;
-    fprintf(out, "%.*s\n", (int)length, text);
+    /* Cells hold stored names, paths and times: shown, not obeyed. A cut
+     * inside a character shows as '?' too. */
+    text[length] = '\0';
+    shown_text(out, text);
+    fputc('\n', out);
     free(text);
 }
 
@@ -144,6 +150,8 @@ void text_table_foot(FILE *out, const struct text_table *t)
 
 void text_wrap(FILE *out, const char *text, int width)
 {
+    /* Each line cleaned (shown.h): the text can quote a stored warning,
+     * and a newline in it would forge a line. */
     const char *line = text;
     int room = width;
     while (width > 20 && (int)strlen(line) > room) {
@@ -154,9 +162,10 @@ void text_wrap(FILE *out, const char *text, int width)
             cut = strchr(line + room, ' ');
         if (cut == NULL)
             break;
-        fprintf(out, "%.*s\n  ", (int)(cut - line), line);
+        shown_line(out, "%.*s", (int)(cut - line), line);
+        fputs("  ", out);
         line = cut + 1;
         room = width - 2;
     }
-    fprintf(out, "%s\n", line);
+    shown_line(out, "%s", line);
 }

@@ -20,6 +20,7 @@
 #include <unistd.h>
 
 #include "app.h"
+#include "core/base/text.h"
 #include "format.h"
 #include "input.h"
 #include "job.h"
@@ -140,11 +141,18 @@ int tui_put(int y, int x, int width, attr_t attr, const char *text)
     move(y, x);
     int columns = 0;
     const unsigned char *p = (const unsigned char *)text;
+    /* Names, paths and warnings came from files and stores: a control
+     * character or a byte that is not UTF-8 is shown as '?', as the CLI
+     * shows it (text_for_terminal), never handed to curses. */
     while (*p && columns < width) {
-        size_t n = *p < 0x80 ? 1 : *p < 0xe0 ? 2 : *p < 0xf0 ? 3 : 4;
-        size_t have = strnlen((const char *)p, n);
-        addnstr((const char *)p, (int)have);
-        p += have;
+        size_t n = text_char_length((const char *)p);
+        if (n == 0 || text_char_is_control((const char *)p, n)) {
+            addch('?');
+            n = 1;
+        } else {
+            addnstr((const char *)p, (int)n);
+        }
+        p += n;
         columns++;
     }
     attr_set(old_attr, old_pair, NULL);

@@ -43,6 +43,16 @@ static int is_control(const unsigned char *s, size_t n)
     return n == 2 && s[0] == 0xc2 && s[1] < 0xa0;
 }
 
+size_t text_char_length(const char *text)
+{
+    return utf8_length((const unsigned char *)text);
+}
+
+int text_char_is_control(const char *text, size_t n)
+{
+    return is_control((const unsigned char *)text, n);
+}
+
 int text_is_clean(const char *text)
 {
     const unsigned char *s = (const unsigned char *)text;

@@ -20,4 +20,14 @@ int text_is_clean(const char *text);
  * is cut on a character boundary. */
 void text_for_terminal(const char *text, char *out, size_t size);
 
+/* The bytes (1 to 4) of the valid UTF-8 character text starts with, or 0
+ * when they are not one; text is not empty. With text_char_is_control,
+ * for writers that clean as they go (JSON keeps a control character,
+ * escaped, where a terminal gets '?'). */
+size_t text_char_length(const char *text);
+
+/* 1 when the character of n bytes at text (text_char_length) is a control
+ * character: C0, DEL or C1. */
+int text_char_is_control(const char *text, size_t n);
+
 #endif

@@ -6,6 +6,7 @@
 #include <math.h>
 
 #include "core/base/numformat.h"
+#include "core/base/text.h"
 
 void json_init(struct json_writer *w, FILE *out)
 {
@@ -48,22 +49,37 @@ void json_end_object(struct json_writer *w) { close_level(w, '}'); }
 void json_begin_array(struct json_writer *w) { open_level(w, '['); }
 void json_end_array(struct json_writer *w) { close_level(w, ']'); }
 
+/* Writes text as a JSON string. JSON must be UTF-8, and names, paths and
+ * warnings come from files and stores that need not be: a byte that is not
+ * part of a valid UTF-8 character becomes '?', as on a terminal
+ * (text_for_terminal). Control characters (C0, DEL, C1) are kept but
+ * escaped, so that no reader of the JSON is sent one raw. */
 static void write_string(FILE *out, const char *text)
 {
     fputc('"', out);
-    for (const unsigned char *c = (const unsigned char *)text; *c; c++) {
-        switch (*c) {
-        case '"':  fputs("\\\"", out); break;
-        case '\\': fputs("\\\\", out); break;
-        case '\n': fputs("\\n", out); break;
-        case '\r': fputs("\\r", out); break;
-        case '\t': fputs("\\t", out); break;
-        default:
-            if (*c < 0x20)
-                fprintf(out, "\\u%04x", *c);
-            else
-                fputc(*c, out);
+    for (const char *c = text; *c != '\0';) {
+        size_t n = text_char_length(c);
+        unsigned char first = (unsigned char)c[0];
+        if (n == 0) {
+            fputc('?', out);
+            n = 1;
+        } else if (first == '"') {
+            fputs("\\\"", out);
+        } else if (first == '\\') {
+            fputs("\\\\", out);
+        } else if (first == '\n') {
+            fputs("\\n", out);
+        } else if (first == '\r') {
+            fputs("\\r", out);
+        } else if (first == '\t') {
+            fputs("\\t", out);
+        } else if (text_char_is_control(c, n)) {
+            /* C1 is U+0080 to U+009F, its second byte the code point */
+            fprintf(out, "\\u%04x", n == 1 ? first : (unsigned char)c[1]);
+        } else {
+            fwrite(c, 1, n, out);
         }
+        c += n;
     }
     fputc('"', out);
 }

@@ -132,6 +132,88 @@ for cmd in runs "show --run 1 --option 1"; do
 done
 run "$FACET" runs "$WORK/esc.db" --json
 json_check "runs --json: the name as stored, escaped by JSON" 'j[0]["name"] == "x\x1b[2J\x07y"'
+# 7 (round 3). Every byte Facet did not write (OBJ names and tokens, stored
+# warnings, SQLite's and a trigger's messages) is cleaned on its way to a
+# terminal, and JSON is valid UTF-8: no ESC or BEL, no byte that is not
+# UTF-8, no second line forged by a newline.
+shown_clean() {  # shown_clean NAME: the last run's stdout and stderr
+    if /usr/bin/python3 -c '
+import sys
+for path in sys.argv[1:]:
+    data = open(path, "rb").read()
+    data.decode("utf-8")
+    if b"\x1b" in data or b"\x07" in data:
+        sys.exit(1)' "$OUT" "$ERR" 2>/dev/null; then
+        pass "$1"
+    else
+        fail "$1 (an ESC, BEL or a byte that is not UTF-8 was printed)"
+    fi
+}
+json_utf8() {  # json_utf8 NAME: the last run's stdout is JSON in strict UTF-8
+    if /usr/bin/python3 -c 'import json, sys; json.loads(open(sys.argv[1], "rb").read().decode("utf-8"))' "$OUT" 2>/dev/null; then
+        pass "$1"
+    else
+        fail "$1 (not JSON in valid UTF-8)"
+    fi
+}
+/usr/bin/python3 - "$WORK" <<'PY'
+import sys
+work = sys.argv[1]
+esc = b"\x1b]0;pwned\x07"
+square = b"v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\n"
+with open(work + "/names.obj", "wb") as f:
+    f.write(b"o a" + esc + b"\xff\ng g" + esc + b"\xfe\nusemtl m" + esc +
+            b"\xff\n" + square + b"f 1 2 3\nf 2 4 3\n")
+with open(work + "/token.obj", "wb") as f:
+    f.write(square + b"f 1 2 3\nv 1 x" + esc + b"\xff 0\n")
+# a project: two objects on a 3 x 3 grid each, with vt
+body, n = b"", 0
+for k, name in enumerate([b"p" + esc + b"\xff", b"q\xff" + esc]):
+    body += b"o " + name + b"\n"
+    for y in range(3):
+        for x in range(3):
+            body += b"v %d %d 0\nvt %g %g\n" % (x + 10 * k, y, x / 2, y / 2)
+    for y in range(2):
+        for x in range(2):
+            a = n + y * 3 + x + 1
+            body += b"f %d/%d %d/%d %d/%d %d/%d\n" % (a, a, a + 1, a + 1, a + 4, a + 4, a + 3, a + 3)
+    n += 9
+with open(work + "/names-project.obj", "wb") as f:
+    f.write(body)
+PY
+run "$FACET" info "$WORK/names.obj"
+shown_clean "info: object, group and material names shown, not obeyed"
+run "$FACET" info "$WORK/names.obj" --json
+json_utf8 "info --json: names with bytes not UTF-8 still make valid JSON"
+shown_clean "info --json: no ESC or BEL raw in the JSON"
+expect_error "a bad token in the OBJ: quoted in one line" 'token.obj:6: number does not parse' \
+    "$FACET" info "$WORK/token.obj"
+shown_clean "a bad token in the OBJ: quoted, not obeyed"
+run "$FACET" info "$WORK/names-project.obj"
+shown_clean "info of a project: surface names shown, not obeyed"
+run "$FACET" info "$WORK/names-project.obj" --json
+json_utf8 "info --json of a project: valid JSON in UTF-8"
+"$FACET" optimize "$WORK/names-project.obj" --db "$WORK/names.db" --module 0.5:1x0.5:1 >/dev/null 2>&1
+run "$FACET" options "$WORK/names.db" --surfaces --json
+json_utf8 "options --surfaces --json of a project: valid JSON in UTF-8"
+run "$FACET" options "$WORK/names.db" --surfaces
+shown_clean "options --surfaces of a project: names shown, not obeyed"
+cp "$WORK/r.db" "$WORK/warn.db"
+sqlite3 "$WORK/warn.db" "UPDATE runs SET warnings = 'w' || char(27) || ']0;pwned' || char(7) || ' ' || CAST(X'FF' AS TEXT) || char(10) || 'second'"
+run "$FACET" runs "$WORK/warn.db"
+shown_clean "runs: stored warnings shown, not obeyed"
+run "$FACET" runs "$WORK/warn.db" --json
+json_utf8 "runs --json: stored warnings make valid JSON in UTF-8"
+cp "$WORK/r.db" "$WORK/trigger.db"
+sqlite3 "$WORK/trigger.db" "UPDATE runs SET status = 'interrupted'; $(printf "CREATE TRIGGER t BEFORE UPDATE ON runs BEGIN SELECT RAISE(ABORT, 'x\033[2J\nforged'); END")"
+run "$FACET" optimize --db "$WORK/trigger.db" --resume 1
+same "a trigger's message: the error in one line (1)" \
+    "$STATUS $(wc -l <"$ERR") $(grep -c 'x?\[2J?forged' "$ERR")" "1 1 1"
+shown_clean "a trigger's message: shown, not obeyed"
+cp "$WORK/r.db" "$WORK/path.db"
+sqlite3 "$WORK/path.db" "UPDATE runs SET status = 'interrupted', surface_path = '/nonexistent/' || char(27) || ']0;t' || char(7) || CAST(X'FF' AS TEXT) || '.obj'"
+run "$FACET" optimize --db "$WORK/path.db" --resume 1
+shown_clean "an error naming a stored path: shown, not obeyed"
 # 5. Two --resume of one run at once: one goes on, the other is refused,
 # naming the first (pid, host); the run ends with all its options.
 "$FACET" example roof --res 160 -o "$WORK/roof.obj" || exit 1

@@ -50,6 +50,26 @@ static void test_nested_document(void **state)
     free(text);
 }
 
+/* Text from files need not be UTF-8: JSON gets '?' for a byte that is not,
+ * keeps valid characters whole, and escapes every control character (C0,
+ * DEL, C1), so the document is valid UTF-8 with no raw ESC or BEL. A
+ * cut character (E2 82 C0) and a surrogate (ED A0 80) are '?' a byte. */
+static void test_strings_are_clean_utf8(void **state)
+{
+    (void)state;
+    char *text = NULL;
+    size_t size = 0;
+    FILE *out = open_memstream(&text, &size);
+    struct json_writer w;
+    json_init(&w, out);
+    json_string(&w, "a\x1b]0;t\x07\xff\xc3\xa9\x7f\xc2\x9b\xe2\x82\xac"
+                    "\xe2\x82\xc0\xed\xa0\x80");
+    fclose(out);
+    assert_string_equal(text, "\"a\\u001b]0;t\\u0007?\xc3\xa9\\u007f"
+                              "\\u009b\xe2\x82\xac???\?\?\?\"");
+    free(text);
+}
+
 /* Writes one number as JSON and reads it back. */
 static double round_trip(double value, char *text, size_t size)
 {
@@ -98,6 +118,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_nested_document),
         cmocka_unit_test(test_numbers_read_back),
+        cmocka_unit_test(test_strings_are_clean_utf8),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
