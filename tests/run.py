@@ -284,8 +284,15 @@ def watch(proc, suite, log, start, stop, first_failure):
         if first_failure:
             log.flush()
             with open(suite.log, "rb") as f:
-                if FAILURE_MARK.search(f.read()):
-                    stop.set()
+                found = FAILURE_MARK.search(f.read())
+            if found:
+                # Its own failure: stopped before a summary could count it
+                # (cmocka names a failing test long before its totals).
+                stop.set()
+                os.killpg(proc.pid, 9)
+                proc.wait()
+                log.write(b"not ok - stopped at its first failure\n")
+                return 1
         if stop is not None and stop.is_set():
             os.killpg(proc.pid, 9)
             proc.wait()
