@@ -380,7 +380,6 @@ static int same_file(const char *a, const char *b)
            x.st_ino == y.st_ino;
 }
 
-/* Removes path's SQLite side files (-wal, -shm). */
 /* Refuses to replace out (open in store) while another Facet writes a run
  * into it: the writer would go on into the file replaced, and its options
  * be lost, as --resume refuses a run that is being written. */
@@ -416,6 +415,7 @@ static int sync_file(const char *path, struct facet_error *err)
     return FACET_OK;
 }
 
+/* Removes path's SQLite side files (-wal, -shm). */
 static void remove_side_files(const char *path)
 {
     char side[4200];
