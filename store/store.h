@@ -264,13 +264,15 @@ int store_run_list(struct store *store, struct run_info **runs,
 int store_run_claim(struct store *store, int64_t id, struct run_info *run,
                     struct facet_error *err);
 
-/* Fills *run with a run of the file that a Facet still there is writing
- * (status running, its writer alive on this host, or on another host,
- * where it cannot be told), and sets *live; *live 0 when there is none.
- * Whoever would replace the file (facet merge) asks first: the writer
- * would go on into the file replaced, and its work be lost. */
-int store_run_live_writer(struct store *store, struct run_info *run,
-                          int *live, struct facet_error *err);
+/* Fills *run with a run of the file other than except (0: any) that a
+ * Facet still there is writing (status running, its writer alive on this
+ * host, or on another host, where it cannot be told), and sets *live;
+ * *live 0 when there is none. Whoever would replace the file (facet merge)
+ * asks first: the writer would go on into the file replaced, and its work
+ * be lost; a run that dropped the indexes asks before building them. */
+int store_run_live_writer(struct store *store, int64_t except,
+                          struct run_info *run, int *live,
+                          struct facet_error *err);
 
 /* Records path as run id's surface (study_repoint_surface checks it). */
 int store_run_set_surface(struct store *store, int64_t id, const char *path,

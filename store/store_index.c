@@ -84,33 +84,6 @@ static int indexes_present(struct store *store, int64_t *present,
     return query_int(store, sql, 0, present, "reading the schema", err);
 }
 
-/* Sets *live when a run other than except is being written by a writer
- * that is still there (this process's own connections included): it may
- * be storing many options with the indexes dropped, and builds them when
- * it ends. */
-static int other_writer_live(struct store *store, int64_t except, int *live,
-                             struct facet_error *err)
-{
-    *live = 0;
-    sqlite3_stmt *stmt;
-    int rc = store_prepare(store,
-        "SELECT coalesce(writer_pid, 0), coalesce(writer_host, '')"
-        " FROM runs WHERE status = 'running' AND id <> ?1", &stmt,
-        "reading runs", err);
-    if (rc != FACET_OK)
-        return rc;
-    sqlite3_bind_int64(stmt, 1, except);
-    int step;
-    while ((step = sqlite3_step(stmt)) == SQLITE_ROW && !*live)
-        *live = !store_run_writer_gone(
-            sqlite3_column_int64(stmt, 0),
-            (const char *)sqlite3_column_text(stmt, 1));
-    if (step != SQLITE_ROW && step != SQLITE_DONE)
-        rc = store_fail(store, "reading runs", err);
-    sqlite3_finalize(stmt);
-    return rc;
-}
-
 int store_indexes_defer(struct store *store, int64_t rows, int *deferred,
                         struct facet_error *err)
 {
@@ -153,7 +126,11 @@ int store_indexes_build(struct store *store, int64_t writing_run,
     if (rc != FACET_OK || present == (int64_t)METRIC_INDEXES)
         return rc;
     int live = 0;
-    rc = other_writer_live(store, writing_run, &live, err);
+    /* Another run's writer, still there (this process's own connections
+     * included), may be storing many options with the indexes dropped,
+     * and builds them when it ends. */
+    struct run_info other;
+    rc = store_run_live_writer(store, writing_run, &other, &live, err);
     if (rc != FACET_OK || live)
         return rc;
     /* One transaction each: the write lock is held for one sort at a

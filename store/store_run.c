@@ -455,8 +455,9 @@ int store_run_claim(struct store *store, int64_t id, struct run_info *run,
     return rc;
 }
 
-int store_run_live_writer(struct store *store, struct run_info *run,
-                          int *live, struct facet_error *err)
+int store_run_live_writer(struct store *store, int64_t except,
+                          struct run_info *run, int *live,
+                          struct facet_error *err)
 {
     *live = 0;
     struct run_info *runs;
@@ -465,7 +466,7 @@ int store_run_live_writer(struct store *store, struct run_info *run,
     if (rc != FACET_OK)
         return rc;
     for (size_t k = 0; k < n && !*live; k++)
-        if (runs[k].status == RUN_RUNNING &&
+        if (runs[k].id != except && runs[k].status == RUN_RUNNING &&
             !store_run_writer_gone(runs[k].writer_pid, runs[k].writer_host)) {
             *run = runs[k];
             *live = 1;

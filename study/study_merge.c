@@ -388,7 +388,7 @@ static int refuse_live_writer(struct store *store, const char *out,
 {
     struct run_info run;
     int live;
-    int rc = store_run_live_writer(store, &run, &live, err);
+    int rc = store_run_live_writer(store, 0, &run, &live, err);
     if (rc == FACET_OK && live)
         rc = facet_error_set(err, FACET_EINPUT,
             "%s: run %lld in it is being written by process %lld on %s: "
