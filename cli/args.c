@@ -148,6 +148,29 @@ int args_parse_one(int argc, char **argv, const struct arg_option *options,
     return rc;
 }
 
+int args_parse_surfaces(int argc, char **argv,
+                        const struct arg_option *options,
+                        const struct arg_option *shared, const char **files,
+                        int *count, struct facet_error *err)
+{
+    /* Every word is taken, so that too many files is said as such, not
+     * as an argument the command does not expect. */
+    const char **all = calloc((size_t)argc + 1, sizeof *all);
+    if (all == NULL)
+        return facet_error_set(err, FACET_EWORK, "out of memory");
+    int n = 0;
+    int rc = args_parse_shared(argc, argv, options, shared, all, argc, &n,
+                               err);
+    if (rc == FACET_OK)
+        rc = project_files_check((size_t)n, err);
+    if (rc == FACET_OK) {
+        memcpy(files, all, (size_t)n * sizeof *files);
+        *count = n;
+    }
+    free(all);
+    return rc;
+}
+
 int args_int(const char *text, long min, long max, const char *what,
              long *out, struct facet_error *err)
 {

@@ -10,6 +10,7 @@
 #define FACET_ARGS_H
 
 #include "core/base/error.h"
+#include "core/project/project.h"
 
 enum arg_kind {
     ARG_FLAG,    /* no value: sets *flag to 1 */
@@ -51,6 +52,15 @@ int args_parse_shared(int argc, char **argv,
 int args_parse_one(int argc, char **argv, const struct arg_option *options,
                    const struct arg_option *shared, const char **positional,
                    const char *missing, struct facet_error *err);
+
+/* args_parse_shared for a command that names surface files (a project):
+ * at most PROJECT_FILES_MAX (core/project/project.h) into files, which
+ * has room for as many; more is FACET_EINPUT with project_files_check's
+ * message, the same for every command. */
+int args_parse_surfaces(int argc, char **argv,
+                        const struct arg_option *options,
+                        const struct arg_option *shared, const char **files,
+                        int *count, struct facet_error *err);
 
 /* Parses text as an integer in [min, max] into *out. what names the value in
  * the error ("--res"). Returns FACET_OK or FACET_EINPUT. (A number that

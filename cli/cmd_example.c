@@ -2,13 +2,12 @@
  * cmd_example.c: `facet example NAME [-o FILE] [--res N]`, writing one of the
  * example surfaces that the README and `make demo` use.
  */
-#include <errno.h>
 #include <stdio.h>
 #include <string.h>
-#include <unistd.h>
 
 #include "args.h"
 #include "command.h"
+#include "core/out/outfile.h"
 #include "core/surface/example.h"
 
 static int example_run(int argc, char **argv, struct facet_error *err)
@@ -46,29 +45,17 @@ static int example_run(int argc, char **argv, struct facet_error *err)
     if (output == NULL || strcmp(output, "-") == 0)
         return example_write(name[0], (int)res, stdout, err);
 
-    if (!force && access(output, F_OK) == 0)
-        return facet_error_set(err, FACET_EINPUT,
-            "example: %s exists (pass --force to overwrite it)", output);
-    /* Write beside the target and rename, so a failure never leaves a
-     * half-written surface under the name the user asked for. */
-    char partial[4096];
-    if (snprintf(partial, sizeof partial, "%s.partial", output) >=
-        (int)sizeof partial)
-        return facet_error_set(err, FACET_EINPUT,
-                               "example: output path too long");
-    FILE *out = fopen(partial, "w");
-    if (out == NULL)
-        return facet_error_set(err, FACET_EINPUT, "example: cannot write %s: %s",
-                               output, strerror(errno));
-    rc = example_write(name[0], (int)res, out, err);
-    if (fclose(out) != 0 && rc == FACET_OK)
-        rc = facet_error_set(err, FACET_EWORK, "example: writing %s: %s",
-                             output, strerror(errno));
-    if (rc == FACET_OK && rename(partial, output) != 0)
-        rc = facet_error_set(err, FACET_EWORK, "example: cannot write %s: %s",
-                             output, strerror(errno));
-    if (rc != FACET_OK)
-        remove(partial);
+    /* The same writer as every export: PATH.partial renamed at the end,
+     * an existing file only with --force, a link or a directory never. */
+    struct outfile f;
+    if ((rc = outfile_open(&f, output, force, err)) != FACET_OK)
+        return rc;
+    rc = example_write(name[0], (int)res, f.out, err);
+    if (rc != FACET_OK) {
+        outfile_abort(&f);
+        return rc;
+    }
+    rc = outfile_commit(&f, err);
     return rc;
 }
 

@@ -378,15 +378,12 @@ static int info_run(int argc, char **argv, struct facet_error *err)
         {"uv", 0, ARG_STRING, &uv_text, NULL},
         {NULL, 0, ARG_FLAG, NULL, NULL},
     };
-    const char **paths = calloc((size_t)argc + 1, sizeof *paths);
-    if (paths == NULL)
-        return facet_error_set(err, FACET_EWORK, "out of memory");
+    const char *paths[PROJECT_FILES_MAX];
     int npaths;
-    int rc = args_parse_shared(argc, argv, options, which.table, paths,
-                               argc, &npaths, err);
+    int rc = args_parse_surfaces(argc, argv, options, which.table, paths,
+                                 &npaths, err);
     if (rc == FACET_OK)
         rc = info_files(paths, npaths, &which, uv_text, json, err);
-    free(paths);
     return rc;
 }
 

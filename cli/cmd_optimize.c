@@ -225,8 +225,8 @@ static int optimize_parse(int argc, char **argv, struct optimize_command *c,
         {"grid", 0, ARG_STRING, &search->grid, NULL},
         {NULL, 0, ARG_FLAG, NULL, NULL},
     };
-    int rc = args_parse_shared(argc, argv, options, c->flags.table, c->path,
-                               PROJECT_FILES_MAX, &c->count, err);
+    int rc = args_parse_surfaces(argc, argv, options, c->flags.table,
+                                 c->path, &c->count, err);
     if (rc != FACET_OK)
         return rc;
     if (c->db == NULL)

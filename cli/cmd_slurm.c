@@ -351,8 +351,8 @@ static int slurm_main(int argc, char **argv, struct facet_error *err)
     };
     const char *surface[PROJECT_FILES_MAX];
     int nsurfaces;
-    int rc = args_parse_shared(split, argv, options, NULL, surface,
-                               PROJECT_FILES_MAX, &nsurfaces, err);
+    int rc = args_parse_surfaces(split, argv, options, NULL, surface,
+                                 &nsurfaces, err);
     if (rc != FACET_OK)
         return rc;
     if (nsurfaces == 0)

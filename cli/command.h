@@ -12,10 +12,6 @@
 
 #include "core/base/error.h"
 
-/* The most OBJ files a project may have on the command line (facet
- * optimize's, and the scripts facet slurm writes for it). */
-#define PROJECT_FILES_MAX 256
-
 struct command {
     const char *name;
     const char *usage;    /* arguments after the name, one line */

@@ -6,6 +6,8 @@
  */
 #include "store_internal.h"
 
+#include "core/out/outfile.h"
+
 #include <assert.h>
 #include <errno.h>
 #include <math.h>
@@ -702,7 +704,11 @@ int store_open(const char *path, struct store **out,
                struct facet_error *err)
 {
     /* A database is a regular file or a new one: SQLite would write its
-     * journal beside anything else (/dev/null-journal, as root). */
+     * journal beside anything else (/dev/null-journal, as root). Nor is
+     * it a link: Facet writes through none (outfile.h). */
+    int rc = outfile_refuse_link(path, err);
+    if (rc != FACET_OK)
+        return rc;
     struct stat st;
     if (stat(path, &st) == 0 && !S_ISREG(st.st_mode))
         return facet_error_set(err, FACET_EINPUT,

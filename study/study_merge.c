@@ -15,6 +15,7 @@
 #include <unistd.h>
 
 #include "core/base/numformat.h"
+#include "core/out/outfile.h"
 
 /* One shard file as read. */
 struct shard_file {
@@ -686,6 +687,11 @@ int study_merge(const char *out, const char *const *paths, int nshards,
     memset(report, 0, sizeof *report);
     if (nshards < 1)
         return facet_error_set(err, FACET_EINPUT, "no shard to merge");
+    /* The merge replaces out by a rename, which would put a file where
+     * the link was; reading through it first would be a second rule. */
+    int rc = outfile_refuse_link(out, err);
+    if (rc != FACET_OK)
+        return rc;
     for (int k = 0; k < nshards; k++)
         if (same_file(out, paths[k]) || strcmp(out, paths[k]) == 0)
             return facet_error_set(err, FACET_EINPUT,
@@ -694,7 +700,6 @@ int study_merge(const char *out, const char *const *paths, int nshards,
     struct shard_file *f = calloc((size_t)nshards, sizeof *f);
     if (f == NULL)
         return facet_error_set(err, FACET_EWORK, "out of memory");
-    int rc = FACET_OK;
     for (int k = 0; rc == FACET_OK && k < nshards; k++)
         rc = read_shard(paths[k], &f[k], err);
     if (rc == FACET_OK)

@@ -21,6 +21,21 @@ int outfile_is_stream(const char *path)
            (S_ISCHR(st.st_mode) || S_ISFIFO(st.st_mode));
 }
 
+int outfile_refuse_link(const char *path, struct facet_error *err)
+{
+    struct stat st;
+    if (lstat(path, &st) != 0 || !S_ISLNK(st.st_mode))
+        return FACET_OK;
+    char target[1024];
+    ssize_t n = readlink(path, target, sizeof target - 1);
+    if (n < 0)
+        n = 0;
+    target[n] = '\0';
+    return facet_error_set(err, FACET_EINPUT,
+        "%s is a symbolic link (to %s): Facet does not write through or "
+        "over one; name the file itself", path, n > 0 ? target : "?");
+}
+
 int outfile_check(const char *path, int force, struct facet_error *err)
 {
     if (strcmp(path, "-") == 0)
@@ -34,9 +49,7 @@ int outfile_check(const char *path, int force, struct facet_error *err)
     if (outfile_is_stream(path))
         return FACET_OK;
     if (S_ISLNK(st.st_mode))
-        return facet_error_set(err, FACET_EINPUT,
-            "%s is a symbolic link: Facet does not replace it (give the "
-            "file it points to, or - for standard output)", path);
+        return outfile_refuse_link(path, err);
     if (S_ISDIR(st.st_mode))
         return facet_error_set(err, FACET_EINPUT,
                                "%s is a directory, not a file to write",

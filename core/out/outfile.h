@@ -32,6 +32,14 @@ struct outfile {
  * (an OBJ's MTL, a schedule's totals) have no place beside a stream. */
 int outfile_is_stream(const char *path);
 
+/* Fails with FACET_EINPUT when path is a symbolic link, naming the file
+ * it points to; FACET_OK when it is anything else or nothing. Facet reads
+ * through links but never writes through or over one: an output, or a
+ * database written into, whose name is a link is refused, so a link
+ * planted where an output goes cannot make Facet replace another file
+ * (a system file, when run as root). Every writer asks this. */
+int outfile_refuse_link(const char *path, struct facet_error *err);
+
 /* Fails with FACET_EINPUT, "PATH exists" about FACET_SETTING_OVERWRITE
  * (error.h), when a regular file exists at path and force is 0, and whatever force
  * is when path is a symbolic link, a directory or a special file other

@@ -293,12 +293,25 @@ static int check_unique(const struct project *p, struct facet_error *err)
     return rc;
 }
 
+int project_files_check(size_t npaths, struct facet_error *err)
+{
+    if (npaths <= PROJECT_FILES_MAX)
+        return FACET_OK;
+    return facet_error_set(err, FACET_EINPUT,
+        "%zu surface files: a project is read from at most %d (name its "
+        "surfaces as objects in fewer OBJ files)", npaths,
+        PROJECT_FILES_MAX);
+}
+
 int project_open(const char *const *paths, size_t npaths,
                  enum mesh_units units, struct project *out,
                  struct facet_error *err)
 {
     memset(out, 0, sizeof *out);
     assert(npaths >= 1);
+    int checked = project_files_check(npaths, err);
+    if (checked != FACET_OK)
+        return checked;
     out->files = calloc(npaths, sizeof *out->files);
     if (out->files == NULL)
         return out_of_memory(err);

@@ -60,6 +60,17 @@ struct project_surface {
     double v_length;
 };
 
+/* The most OBJ files one project is read from. A building of more surfaces
+ * names them as objects (or groups) inside fewer files, where there is no
+ * limit; the file list is hashed, stored with every run and written into
+ * every Slurm script, so it stays short. */
+#define PROJECT_FILES_MAX 256
+
+/* FACET_OK when npaths files may make one project, else FACET_EINPUT
+ * saying how many were named and what the limit is. project_open asks it;
+ * commands ask it before they read any file. */
+int project_files_check(size_t npaths, struct facet_error *err);
+
 struct project {
     size_t nfiles;
     char **files;            /* owned copies of the paths */
