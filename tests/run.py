@@ -111,7 +111,8 @@ def find_suites(builds, only):
             suites.append(Suite(build, "e2e", "e2e/" + f[:-3],
                                 os.path.join(E2E, f)))
     if only:
-        wanted = set(only)
+        # A script's file name (optimize.sh) names its suite too.
+        wanted = {w[:-3] if w.endswith(".sh") else w for w in only}
         suites = [s for s in suites
                   if s.name in wanted or s.name.replace("e2e/", "") in wanted]
     return suites
