@@ -318,6 +318,17 @@ static const char schema_v8[] =
     "  ON DELETE CASCADE"
     ") WITHOUT ROWID;";
 
+/* Version 9: a run measures only what it needs (issue 27). runs.measured
+ * lists what every option of the run was measured for beyond its classed
+ * panels, comma-separated from fits (SP panels built on fitted cylinders
+ * and cones: sp_misfits, sp_fitted), joints (max_gap .. kinks_over),
+ * moulds (moulds .. single_moulds) and joint_length; '' for none of them.
+ * An option's column of a measure its run did not take is NULL: not
+ * measured, never 0. The run's Pareto options are measured in full. NULL
+ * for every run before: all of them. */
+static const char schema_v9[] =
+    "ALTER TABLE runs ADD COLUMN measured TEXT;";
+
 static const char *const migrations[STORE_SCHEMA_VERSION] = {
     schema_v1,
     schema_v2,
@@ -327,6 +338,7 @@ static const char *const migrations[STORE_SCHEMA_VERSION] = {
     schema_v6_shards,
     schema_v7,
     schema_v8,
+    schema_v9,
 };
 
 int store_fail(struct store *store, const char *doing,

@@ -135,6 +135,12 @@ struct run_info {
                                   paper's typing, and every run before) */
     double max_gap_mm;         /* gap limit on feasibility (mm); NaN: none */
     double max_kink_deg;       /* kink limit (degrees); NaN: none */
+    /* What every option of the run was measured for beyond its classed
+     * panels (option.h's option_measure bits; schema v9): what its
+     * objectives, limits and prices read, or all of them. Its Pareto
+     * options are measured in full. OPTION_MEASURE_ALL for every run
+     * before. */
+    unsigned measured;
     /* Spread over machines (core/search/shard.h): a shard is shard_index
      * of shard_count; a merge of shards has shard_index 0, shard_count N
      * and shards_merged of them (incomplete when fewer than N); every
@@ -325,6 +331,13 @@ int store_run_delete(struct store *store, int64_t id,
 int store_options_put(struct store *store, int64_t run,
                       const struct option_row *rows, size_t n,
                       struct facet_error *err);
+/* Writes the values of rows[0..n), options of run already stored, over
+ * theirs, in one transaction: for options measured in full after the run
+ * measured them for what it reads (its Pareto options; option.h). Their
+ * rank, crowding and knee stay. */
+int store_options_measured(struct store *store, int64_t run,
+                           const struct option_row *rows, size_t n,
+                           struct facet_error *err);
 /* Every option of run, by number; *rows malloc'ed (free()). */
 int store_options_get(struct store *store, int64_t run,
                       struct option_row **rows, size_t *n,

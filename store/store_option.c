@@ -206,6 +206,49 @@ int store_options_put_with(struct store *store, int64_t run,
     return rc;
 }
 
+int store_options_measured(struct store *store, int64_t run,
+                           const struct option_row *rows, size_t n,
+                           struct facet_error *err)
+{
+    /* The same columns and binding as the INSERT, so that a value is
+     * written the one way whether first or again. */
+    char columns[OPTION_COLUMNS_SQL], sql[2 * OPTION_COLUMNS_SQL];
+    int values = option_columns_sql(columns, sizeof columns, 1);
+    int number = 0;
+    for (int k = 0, p = 2; k < STORE_OPTION_COLUMNS; k++) {
+        const struct option_column *c = &store_option_columns[k];
+        if (c->writer != WRITTEN_WITH_OPTION)
+            continue;
+        if (strcmp(c->name, "number") == 0)
+            number = p;
+        p++;
+    }
+    assert(number > 0);
+    int len = snprintf(sql, sizeof sql, "UPDATE options SET (%s) = (?2",
+                       columns);
+    for (int k = 3; k <= 1 + values; k++)
+        len += snprintf(sql + len, sizeof sql - (size_t)len, ", ?%d", k);
+    snprintf(sql + len, sizeof sql - (size_t)len,
+             ") WHERE run = ?1 AND number = ?%d", number);
+    sqlite3_stmt *s;
+    int rc = store_prepare(store, sql, &s, "storing measured options", err);
+    if (rc != FACET_OK)
+        return rc;
+    rc = store_exec(store, "BEGIN IMMEDIATE", "storing measured options",
+                    err);
+    for (size_t k = 0; k < n && rc == FACET_OK; k++) {
+        sqlite3_clear_bindings(s);
+        option_bind(s, run, &rows[k], 0);
+        rc = step_done(store, s, "storing measured options", err);
+    }
+    sqlite3_finalize(s);
+    if (rc == FACET_OK)
+        rc = store_exec(store, "COMMIT", "storing measured options", err);
+    if (rc != FACET_OK)
+        sqlite3_exec(store->db, "ROLLBACK", NULL, NULL, NULL);
+    return rc;
+}
+
 int store_options_get(struct store *store, int64_t run,
                       struct option_row **rows, size_t *n,
                       struct facet_error *err)

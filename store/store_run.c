@@ -30,7 +30,8 @@
  * after RUN_COLUMNS, then the shards' (schema v6, store_shard.c). */
 #define RUN_COST_COLUMNS \
     "price_panel, price_joint, price_sp_mould, price_dp_mould," \
-    " mould_tol_mm, mould_mirror, sp_fit, max_gap_mm, max_kink_deg, " \
+    " mould_tol_mm, mould_mirror, sp_fit, max_gap_mm, max_kink_deg," \
+    " measured, " \
     STORE_SHARD_COLUMNS ", " STORE_MODULE_COLUMNS
 
 static void copy_text(char *to, size_t size, sqlite3_stmt *stmt, int col)
@@ -177,6 +178,10 @@ static void run_costs_from_row(sqlite3_stmt *s, int c, struct run_info *r)
     r->sp_fit = sqlite3_column_int(s, c++);
     r->max_gap_mm = store_column_or_nan(s, c++);
     r->max_kink_deg = store_column_or_nan(s, c++);
+    const unsigned char *measured = sqlite3_column_text(s, c++);
+    r->measured = measured == NULL
+                      ? OPTION_MEASURE_ALL
+                      : option_measures_parse((const char *)measured);
     store_shard_from_row(s, c, r);
     store_module_from_row(s, c + 3, r);
 }
@@ -190,7 +195,8 @@ static int run_costs_write(struct store *store, const struct run_info *r,
         "UPDATE runs SET price_panel = ?2, price_joint = ?3,"
         " price_sp_mould = ?4, price_dp_mould = ?5, mould_tol_mm = ?6,"
         " mould_mirror = ?7, sp_fit = ?8, max_gap_mm = ?9,"
-        " max_kink_deg = ?10 WHERE id = ?1", &s, "creating a run", err);
+        " max_kink_deg = ?10, measured = ?11 WHERE id = ?1", &s,
+        "creating a run", err);
     if (rc != FACET_OK)
         return rc;
     sqlite3_bind_int64(s, 1, r->id);
@@ -203,6 +209,9 @@ static int run_costs_write(struct store *store, const struct run_info *r,
     sqlite3_bind_int(s, 8, r->sp_fit);
     store_bind_or_null(s, 9, r->max_gap_mm);
     store_bind_or_null(s, 10, r->max_kink_deg);
+    char measured[OPTION_MEASURES_TEXT];
+    option_measures_format(r->measured, measured, sizeof measured);
+    sqlite3_bind_text(s, 11, measured, -1, SQLITE_TRANSIENT);
     if (sqlite3_step(s) != SQLITE_DONE)
         rc = store_fail(store, "creating a run", err);
     sqlite3_finalize(s);

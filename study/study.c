@@ -4,6 +4,7 @@
 #include "study.h"
 #include "study_internal.h"
 
+#include <assert.h>
 #include <errno.h>
 #include <sys/statvfs.h>
 #include <math.h>
@@ -615,6 +616,11 @@ static int knee_then_spread(const void *a, const void *b)
     return (x->number > y->number) - (x->number < y->number);
 }
 
+/* Measures run's Pareto options in full where the run measured them only
+ * for what it reads, and stores the panels of those its panel policy
+ * keeps (the knee, the whole front, or the knee and the most spread when
+ * the front is larger than its share of the run), from one evaluation
+ * each, on every core. */
 static int store_front_panels(struct store *store, const struct run_info *run,
                               const struct surface *surface,
                               const struct panel_lattice *lattice,
@@ -625,16 +631,19 @@ static int store_front_panels(struct store *store, const struct run_info *run,
     *stopped = 0;
     /* Only the front is read (by the rank index), not the whole run. */
     struct option_query q = {run->id, 1, NULL, NULL, 0, 0, 0};
-    struct option_row *rows;
-    size_t n, nfront = 0;
+    struct option_row *rows = NULL;
+    size_t n = 0, nfront = 0;
     int rc = store_run_setting_check(run, RUN_SETTING_STORE_PANELS, err);
-    if (rc != FACET_OK || run->store_panels == KEEP_NONE)
+    if (rc != FACET_OK)
         return rc;
+    int keep = run->store_panels != KEEP_NONE;
     int knee_only = run->store_panels == KEEP_KNEE;
     rc = store_options_query_rows(store, &q, &rows, &n, err);
     struct design_point *points = malloc((n ? n : 1) * sizeof *points);
-    int64_t *numbers = malloc((n ? n : 1) * sizeof *numbers);
-    if (rc == FACET_OK && (points == NULL || numbers == NULL))
+    size_t *from = malloc((n ? n : 1) * sizeof *from);
+    int *wants_panels = calloc(n ? n : 1, sizeof *wants_panels);
+    if (rc == FACET_OK &&
+        (points == NULL || from == NULL || wants_panels == NULL))
         rc = facet_error_set(err, FACET_EWORK, "out of memory");
     /* A front larger than its share of the run: the knee and the most
      * spread of the others, the rest when first looked at. */
@@ -642,44 +651,45 @@ static int store_front_panels(struct store *store, const struct run_info *run,
     if (rc == FACET_OK)
         rc = store_run_get(store, run->id, &ranked, err);
     size_t budget = rc == FACET_OK ? study_front_budget(ranked.options) : 0;
-    if (rc == FACET_OK && !knee_only && n > budget)
+    if (rc == FACET_OK && keep && !knee_only && n > budget)
         qsort(rows, n, sizeof *rows, knee_then_spread);
     else
         budget = n;
-    int64_t knee = 0;
     for (size_t k = 0; rc == FACET_OK && k < n; k++) {
-        if (rows[k].knee)
-            knee = rows[k].number;
-        if ((knee_only && !rows[k].knee) || k >= budget)
-            continue;
-        int stored;
-        rc = store_panels_exist(store, run->id, rows[k].number, &stored,
-                                err);
-        if (rc == FACET_OK && !stored) {
+        int stored = 1;
+        if (keep && !(knee_only && !rows[k].knee) && k < budget)
+            rc = store_panels_exist(store, run->id, rows[k].number, &stored,
+                                    err);
+        wants_panels[k] = !stored;
+        int unmeasured =
+            (OPTION_MEASURE_ALL & ~option_totals_measures(&rows[k].totals))
+            != 0 && run->measured != OPTION_MEASURE_ALL;
+        if (rc == FACET_OK && (wants_panels[k] || unmeasured)) {
             points[nfront] = (struct design_point){rows[k].nu, rows[k].nv,
                                                    rows[k].threshold_mm};
-            numbers[nfront++] = rows[k].number;
+            from[nfront++] = k;
         }
     }
-    free(rows);
-    /* What they take on disk, against what it has: a front of fine grids
-     * can need more than the disk holds (two 1000 x 1000 options: 611 MB).
-     * Then the knee alone, or nothing, with the reason said; facet show and
-     * export compute an option's panels when asked. */
+    /* What the panels take on disk, against what it has: a front of fine
+     * grids can need more than the disk holds (two 1000 x 1000 options:
+     * 611 MB). Then the knee alone, or nothing, with the reason said;
+     * facet show and export compute an option's panels when asked. */
     double free_bytes = disk_free_bytes(store_path(store));
     double need = 0, knee_need = 0;
-    size_t knee_at = nfront;
-    for (size_t k = 0; k < nfront; k++) {
-        need += (double)points[k].nu * points[k].nv * STUDY_PANEL_BYTES;
-        if (numbers[k] == knee) {
-            knee_at = k;
-            knee_need = (double)points[k].nu * points[k].nv *
-                        STUDY_PANEL_BYTES;
+    size_t knee_at = n;
+    for (size_t f = 0; f < nfront; f++) {
+        const struct option_row *r = &rows[from[f]];
+        if (!wants_panels[from[f]])
+            continue;
+        need += (double)r->nu * r->nv * STUDY_PANEL_BYTES;
+        if (r->knee) {
+            knee_at = from[f];
+            knee_need = (double)r->nu * r->nv * STUDY_PANEL_BYTES;
         }
     }
     if (rc == FACET_OK && free_bytes >= 0 && need > free_bytes) {
         char text[400], a[32], b[32];
-        int keep_knee = knee_at < nfront && knee_need <= free_bytes;
+        int keep_knee = knee_at < n && knee_need <= free_bytes;
         format_bytes(need, a, sizeof a);
         format_bytes(free_bytes, b, sizeof b);
         snprintf(text, sizeof text, "the front's panels need about %s and "
@@ -688,20 +698,20 @@ static int store_front_panels(struct store *store, const struct run_info *run,
                  keep_knee ? "only the knee's are" : "none are");
         if (hooks != NULL && hooks->warning != NULL)
             hooks->warning(hooks->context, text);
-        if (keep_knee) {
-            points[0] = points[knee_at];
-            numbers[0] = numbers[knee_at];
-            nfront = 1;
-        } else {
-            nfront = 0;
-        }
+        for (size_t k = 0; k < n; k++)
+            wants_panels[k] = wants_panels[k] && keep_knee && k == knee_at;
     }
+    /* Measured in full, with the panels a designer opens. */
+    struct option_params full = settings->base;
+    full.unmeasured = 0;
     struct panelization *panels = NULL;
     struct option_totals *totals = NULL;
+    struct option_row *measured = NULL;
     if (rc == FACET_OK && nfront > 0) {
         panels = calloc(nfront, sizeof *panels);
         totals = malloc(nfront * sizeof *totals);
-        if (panels == NULL || totals == NULL)
+        measured = malloc(nfront * sizeof *measured);
+        if (panels == NULL || totals == NULL || measured == NULL)
             rc = facet_error_set(err, FACET_EWORK, "out of memory");
         /* In chunks, with a stop heard between them: a front of fine
          * grids takes a while, and Ctrl-C must leave the run resumable. */
@@ -713,21 +723,40 @@ static int store_front_panels(struct store *store, const struct run_info *run,
                 break;
             }
             size_t count = nfront - first < chunk ? nfront - first : chunk;
-            rc = optimize_evaluate_panels(surface, lattice, &settings->base,
+            rc = optimize_evaluate_panels(surface, lattice, &full,
                                           points + first, count,
                                           settings->jobs, panels + first,
                                           totals + first, err);
-            for (size_t k = first; rc == FACET_OK && k < first + count; k++)
-                rc = store_panels_put(store, run->id, numbers[k], &panels[k],
-                                      err);
-            for (size_t k = first; k < first + count; k++)
-                panelization_free(&panels[k]);
+            size_t nmeasured = 0;
+            for (size_t f = first; rc == FACET_OK && f < first + count;
+                 f++) {
+                const struct option_row *r = &rows[from[f]];
+                /* What the run measured, measured again: the same. */
+                assert(totals[f].cost == r->totals.cost &&
+                       totals[f].planarity == r->totals.planarity &&
+                       totals[f].panels == r->totals.panels);
+                if (run->measured != OPTION_MEASURE_ALL) {
+                    measured[nmeasured] = *r;
+                    measured[nmeasured++].totals = totals[f];
+                }
+                if (wants_panels[from[f]])
+                    rc = store_panels_put(store, run->id, r->number,
+                                          &panels[f], err);
+            }
+            if (rc == FACET_OK && nmeasured > 0)
+                rc = store_options_measured(store, run->id, measured,
+                                            nmeasured, err);
+            for (size_t f = first; f < first + count; f++)
+                panelization_free(&panels[f]);
         }
     }
     free(panels);
     free(totals);
+    free(measured);
     free(points);
-    free(numbers);
+    free(from);
+    free(wants_panels);
+    free(rows);
     return rc;
 }
 
@@ -763,10 +792,15 @@ int study_finish(struct store *store, const struct run_info *run,
 static int study_go(struct store *store, struct run_info *run,
                     const struct surface *surface,
                     struct project_search *project,
-                    const struct optimize_settings *settings,
+                    const struct optimize_settings *asked,
                     const struct study_hooks *hooks, double started,
                     enum optimize_outcome *outcome, struct facet_error *err)
 {
+    /* Every option measured for what the run recorded it needs, however
+     * often it is resumed; its front in full at its end. */
+    struct optimize_settings run_settings = *asked;
+    run_settings.base.unmeasured = OPTION_MEASURE_ALL & ~run->measured;
+    const struct optimize_settings *settings = &run_settings;
     struct study_state state = {store, run->id, hooks, NULL, 0, -1, 0,
                                 project, NULL, 0};
     struct optimize_hooks optimize_hooks = {&state, store_batch,
@@ -1037,6 +1071,11 @@ int study_start(struct store *store, const struct study_request *request,
     run.jobs = s->jobs;
     run.shard_index = s->shard.index;
     run.shard_count = s->shard.count;
+    /* A building is measured in full: its per-surface rows hold every
+     * quantity (issue 27 leaves projects for later). */
+    run.measured = request->measure_all || is_project
+                       ? OPTION_MEASURE_ALL
+                       : optimize_measures_needed(s);
     rc = store_run_create(store, &run, err);
     if (rc == FACET_OK && is_project)
         rc = store_surfaces_put(store, run.id, surfaces, project.nsurfaces,

@@ -63,6 +63,9 @@ struct study_request {
     struct optimize_settings settings;
     const char *name;                /* "" for none */
     enum study_keep_panels store_panels;
+    int measure_all;                 /* every option measured in full, not
+                                        only for what the run reads
+                                        (optimize_measures_needed) */
 };
 
 /* What a new run takes when its user does not say, the one policy of

@@ -264,19 +264,29 @@ void classify_price_areas(const struct classify_options *options,
 double classify_violation(const struct option_totals *totals,
                           double max_panel_area)
 {
+    /* Joints not measured are none over a limit: a run measures them
+     * whenever it has a gap or kink limit (option_measures_needed). */
+    double gaps = totals->gaps_over == TOTALS_UNKNOWN
+                      ? 0 : (double)totals->gaps_over;
+    double kinks = totals->kinks_over == TOTALS_UNKNOWN
+                       ? 0 : (double)totals->kinks_over;
     return classify_area_excess(totals->max_panel_area, max_panel_area) +
-           (double)totals->gaps_over + (double)totals->kinks_over;
+           gaps + kinks;
 }
 
 void classify_price_terms(const struct classify_options *options,
                           struct option_totals *totals)
 {
+    /* A term without a price is 0 whether or not its quantity was
+     * measured (a run measures what it prices: option_measures_needed). */
     totals->panel_cost = (double)totals->panels * options->panel_cost;
-    totals->joint_cost = totals->joint_length * options->joint_cost;
+    totals->joint_cost = options->joint_cost == 0
+                             ? 0 : totals->joint_length * options->joint_cost;
     totals->mould_cost = 0;
     for (int t = 0; t < TYPE_COUNT; t++)
-        totals->mould_cost += (double)totals->moulds_of[t] *
-                              options->mould_cost[t];
+        if (options->mould_cost[t] != 0)
+            totals->mould_cost += totals_count(totals->moulds_of[t]) *
+                                  options->mould_cost[t];
     totals->cost = totals->area_cost + totals->panel_cost +
                    totals->joint_cost + totals->mould_cost;
 }

@@ -5,6 +5,7 @@
 
 #include <assert.h>
 #include <math.h>
+#include <stdio.h>
 #include <string.h>
 
 #include "core/fit/sp_fit.h"
@@ -20,6 +21,72 @@ struct mould_options option_mould_options(const struct option_params *params)
                                 : params->classify.threshold,
         params->mould_mirror};
     return mould;
+}
+
+static const char *const measure_names[] = {"fits", "joints", "moulds",
+                                            "joint_length"};
+enum { MEASURE_NAMES = sizeof measure_names / sizeof *measure_names };
+
+void option_measures_format(unsigned measures, char *out, size_t size)
+{
+    assert(size >= OPTION_MEASURES_TEXT);
+    size_t len = 0;
+    out[0] = '\0';
+    for (int k = 0; k < MEASURE_NAMES; k++)
+        if (measures & (1u << k))
+            len += (size_t)snprintf(out + len, size - len, "%s%s",
+                                    len ? "," : "", measure_names[k]);
+}
+
+unsigned option_measures_parse(const char *text)
+{
+    unsigned measures = 0;
+    while (*text != '\0') {
+        size_t length = strcspn(text, ",");
+        int known = 0;
+        for (int k = 0; k < MEASURE_NAMES; k++)
+            if (strlen(measure_names[k]) == length &&
+                strncmp(measure_names[k], text, length) == 0) {
+                measures |= 1u << k;
+                known = 1;
+            }
+        if (!known)
+            return OPTION_MEASURE_ALL;
+        text += length + (text[length] == ',');
+    }
+    return measures;
+}
+
+unsigned option_totals_measures(const struct option_totals *totals)
+{
+    unsigned measures = 0;
+    if (totals->sp_fitted != TOTALS_UNKNOWN)
+        measures |= OPTION_MEASURE_FITS;
+    if (totals->gaps_over != TOTALS_UNKNOWN)
+        measures |= OPTION_MEASURE_JOINTS;
+    if (totals->moulds != TOTALS_UNKNOWN)
+        measures |= OPTION_MEASURE_MOULDS;
+    if (!isnan(totals->joint_length))
+        measures |= OPTION_MEASURE_JOINT_LENGTH;
+    return measures;
+}
+
+unsigned option_measures_needed(const struct classify_options *classify,
+                                unsigned objective_measures)
+{
+    unsigned needed = objective_measures;
+    if (classify->max_gap > 0 || classify->max_kink > 0)
+        needed |= OPTION_MEASURE_JOINTS;
+    if (classify->joint_cost != 0)
+        needed |= OPTION_MEASURE_JOINT_LENGTH;
+    for (int t = 0; t < TYPE_COUNT; t++)
+        if (classify->mould_cost[t] != 0)
+            needed |= OPTION_MEASURE_MOULDS;
+    /* Joints are measured on the panels as built; a type by fit is the
+     * fit's verdict. */
+    if (!classify->sp_by_class || (needed & OPTION_MEASURE_JOINTS))
+        needed |= OPTION_MEASURE_FITS;
+    return needed;
 }
 
 void option_params_defaults(struct option_params *params)
@@ -114,15 +181,18 @@ static int evaluate(const struct surface *surface,
     int rc = build_panels(surface, lattice, params, panels, totals, err);
     if (rc != FACET_OK)
         return rc;
-    if (fits != NULL) {
+    if (fits != NULL && !(params->unmeasured & OPTION_MEASURE_FITS)) {
         rc = grid_fits_init(&surface->mesh, &surface->uv,
                             &surface->curvature, &surface->fit, panels, fits,
                             err);
         if (rc != FACET_OK)
             return rc;
     }
-    double joints = joint_length_lines(lines, &surface->joints,
-                                       &surface->mesh, &surface->uv, panels);
+    double joints = params->unmeasured & OPTION_MEASURE_JOINT_LENGTH
+                        ? NAN
+                        : joint_length_lines(lines, &surface->joints,
+                                             &surface->mesh, &surface->uv,
+                                             panels);
     return moulds ? classify_moulded(surface, params, joints, fits, panels,
                                      totals, err)
                   : classify_unmoulded(surface, params, joints, fits, panels,
@@ -202,13 +272,53 @@ static void set_worst_sides(struct panelization *panels,
  * many it measured into *measured. With fits, the grid's SP fits and
  * sides kept across its thresholds (sp_fit.h's grid_fits) serve, to the
  * same results. */
+/* Sets what build_and_measure would without fits or joints: every panel
+ * built as typed, its fit and joints not known; the totals summed and
+ * their as-built counts and joints not known. */
+static void leave_unbuilt(const struct classify_options *options,
+                          struct panelization *panels,
+                          struct option_totals *totals)
+{
+    for (size_t k = 0; k < panels->npanels; k++) {
+        struct panel *panel = &panels->panels[k];
+        panel->built = panel->type;
+        panel->misfit = 0;
+        panel->sp_deviation = NAN;
+        panel->best_cylinder = NAN;
+        panel->best_cone = NAN;
+        panel->worst_gap_mm = NAN;
+        panel->worst_gap_side = -1;
+        panel->worst_kink_deg = NAN;
+    }
+    classify_totals(panels, options, totals);
+    totals->sp_misfits = TOTALS_UNKNOWN;
+    totals->sp_fitted = TOTALS_UNKNOWN;
+    totals->max_gap_mm = NAN;
+    totals->mean_gap_mm = NAN;
+    totals->max_kink_deg = NAN;
+    totals->mean_kink_deg = NAN;
+    totals->gaps_over = TOTALS_UNKNOWN;
+    totals->kinks_over = TOTALS_UNKNOWN;
+    totals->feasible =
+        classify_violation(totals, options->max_panel_area) == 0;
+}
+
 static int build_and_measure(const struct surface *surface,
                              const struct classify_options *options,
-                             struct grid_fits *fits,
+                             unsigned unmeasured, struct grid_fits *fits,
                              struct panelization *panels,
                              struct option_totals *totals,
                              size_t *measured, struct facet_error *err)
 {
+    /* Joints are measured on the panels as built: no fits, no joints. */
+    assert(!(unmeasured & OPTION_MEASURE_FITS) ||
+           (unmeasured & OPTION_MEASURE_JOINTS));
+    if (unmeasured & OPTION_MEASURE_FITS) {
+        assert(options->sp_by_class);
+        leave_unbuilt(options, panels, totals);
+        *measured = 0;
+        return FACET_OK;
+    }
     struct cell_sides sides;
     struct built_option built;
     struct joints joints;
@@ -227,7 +337,8 @@ static int build_and_measure(const struct surface *surface,
             rc = built_option_fit(&surface->mesh, &surface->fit, panels,
                                   &sides, options->threshold, &built, err);
     }
-    if (rc == FACET_OK)
+    int measure_joints = !(unmeasured & OPTION_MEASURE_JOINTS);
+    if (rc == FACET_OK && measure_joints)
         rc = joints_measure(panels, &built, &sides,
                             limit_or_none(options->max_gap),
                             limit_or_none(options->max_kink), &joints, err);
@@ -240,21 +351,32 @@ static int build_and_measure(const struct surface *surface,
             panel->sp_deviation = b->sp_deviation;
             panel->best_cylinder = b->best_cylinder;
             panel->best_cone = b->best_cone;
-            panel->worst_gap_mm = joints.worst_gap[k] * 1000;
-            panel->worst_kink_deg = joints.worst_kink[k] * 180 / M_PI;
+            panel->worst_gap_mm = measure_joints ? joints.worst_gap[k] * 1000
+                                                 : NAN;
+            panel->worst_kink_deg =
+                measure_joints ? joints.worst_kink[k] * 180 / M_PI : NAN;
             if (b->misfit && !options->sp_by_class)
                 panel->type = TYPE_DP;
         }
-        set_worst_sides(panels, &joints);
+        if (measure_joints) {
+            set_worst_sides(panels, &joints);
+        } else {
+            for (size_t k = 0; k < panels->npanels; k++)
+                panels->panels[k].worst_gap_side = -1;
+        }
         classify_totals(panels, options, totals);
         totals->sp_misfits = built.sp_misfits;
         totals->sp_fitted = built.sp_fitted;
-        totals->max_gap_mm = joints.max_gap * 1000;
-        totals->mean_gap_mm = joints.mean_gap * 1000;
-        totals->max_kink_deg = joints.max_kink * 180 / M_PI;
-        totals->mean_kink_deg = joints.mean_kink * 180 / M_PI;
-        totals->gaps_over = joints.gaps_over;
-        totals->kinks_over = joints.kinks_over;
+        totals->max_gap_mm = measure_joints ? joints.max_gap * 1000 : NAN;
+        totals->mean_gap_mm = measure_joints ? joints.mean_gap * 1000 : NAN;
+        totals->max_kink_deg =
+            measure_joints ? joints.max_kink * 180 / M_PI : NAN;
+        totals->mean_kink_deg =
+            measure_joints ? joints.mean_kink * 180 / M_PI : NAN;
+        totals->gaps_over = measure_joints ? joints.gaps_over
+                                           : TOTALS_UNKNOWN;
+        totals->kinks_over = measure_joints ? joints.kinks_over
+                                            : TOTALS_UNKNOWN;
         *measured = joints.nedges;
         totals->feasible =
             classify_violation(totals, options->max_panel_area) == 0;
@@ -293,8 +415,8 @@ static int classify_unmoulded(const struct surface *surface,
     if (rc != FACET_OK)
         return rc;
     classify_types(panels, &params->classify);
-    rc = build_and_measure(surface, &params->classify, fits, panels, totals,
-                           &measured, err);
+    rc = build_and_measure(surface, &params->classify, params->unmeasured,
+                           fits, panels, totals, &measured, err);
     if (joints != NULL)
         *joints = measured;
     if (rc != FACET_OK)
@@ -365,6 +487,15 @@ static int classify_moulded(const struct surface *surface,
                                 totals, NULL, err);
     if (rc != FACET_OK)
         return rc;
+    if (params->unmeasured & OPTION_MEASURE_MOULDS) {
+        for (int t = 0; t < TYPE_COUNT; t++)
+            totals->moulds_of[t] = TOTALS_UNKNOWN;
+        totals->moulds = TOTALS_UNKNOWN;
+        totals->largest_family = TOTALS_UNKNOWN;
+        totals->singleton_families = TOTALS_UNKNOWN;
+        classify_price_terms(&params->classify, totals);
+        return FACET_OK;
+    }
     struct mould_options mould = option_mould_options(params);
     struct mould_families families;
     rc = mould_families_build(&surface->mesh, &surface->uv, panels, &mould,

@@ -25,8 +25,54 @@
 #include "core/panel/panel_lattice.h"
 #include "core/surface/surface.h"
 
+/* What an evaluation may leave out. It always classifies and types the
+ * panels and sums their counts, areas, deviations and area costs; these
+ * are the measures beyond that. A measure left out leaves its totals not
+ * known (NaN, TOTALS_UNKNOWN: stored NULL, shown "not measured"), never 0,
+ * and every other number as it would be: a run leaves out what none of its
+ * objectives, constraints and prices read (option_measures_needed), and an
+ * option a designer opens is measured in full. */
+enum option_measure {
+    /* SP panels built on fitted cylinders and cones: each panel's built
+     * type, misfit and sp_deviation; sp_misfits, sp_fitted. Typing by fit
+     * (not sp_by_class) cannot do without it. */
+    OPTION_MEASURE_FITS = 1 << 0,
+    /* Gap and kink at every joint of the panels as built: the panels'
+     * worst, max_gap_mm .. kinks_over. Needs FITS. */
+    OPTION_MEASURE_JOINTS = 1 << 1,
+    /* Mould families: each panel's mould, moulds .. singleton_families. */
+    OPTION_MEASURE_MOULDS = 1 << 2,
+    /* The length of the grid's joint lines: joint_length. */
+    OPTION_MEASURE_JOINT_LENGTH = 1 << 3,
+    OPTION_MEASURE_ALL = (1 << 4) - 1
+};
+
+/* The measures as text, as the store keeps them: "fits,joints,moulds,
+ * joint_length" in that order, each present when its bit is, "" for none;
+ * into out (OPTION_MEASURES_TEXT bytes). */
+#define OPTION_MEASURES_TEXT 64
+void option_measures_format(unsigned measures, char *out, size_t size);
+
+/* The bits of text as option_measures_format writes it; a name it does
+ * not know counts as every measure (a newer Facet's: nothing is taken as
+ * not measured that might have been). */
+unsigned option_measures_parse(const char *text);
+
+/* The measures an option needs under classify's options (its typing, its
+ * limits and its prices) when its objectives need objective_measures
+ * besides (metric.h's metric_measures, or'ed): FITS when SP is typed by
+ * fit or JOINTS are needed, JOINTS for a gap or kink limit, MOULDS and
+ * JOINT_LENGTH for a price on them. */
+unsigned option_measures_needed(const struct classify_options *classify,
+                                unsigned objective_measures);
+
+/* The measures totals hold: each whose quantities are known. */
+unsigned option_totals_measures(const struct option_totals *totals);
+
 struct option_params {
     int nu, nv;                          /* grid */
+    unsigned unmeasured;                 /* option_measure bits left out;
+                                            0 (a zeroed struct): none */
     enum panel_curvature_mode mode;      /* how panels take curvature */
     struct classify_options classify;    /* threshold, eps, prices, limit,
                                             cost terms */

@@ -3,6 +3,8 @@
  */
 #include "core/search/metric.h"
 
+#include "core/classify/option.h"
+
 #include <stdio.h>
 #include <string.h>
 
@@ -40,6 +42,20 @@ double metric_value(const struct option_totals *t, enum metric metric)
     case METRIC_MAX_GAP:        return t->max_gap_mm;
     case METRIC_MAX_KINK:       return t->max_kink_deg;
     case METRIC_SP_MISFITS:     return (double)t->sp_misfits;
+    default:                    return 0;
+    }
+}
+
+unsigned metric_measures(enum metric metric)
+{
+    switch (metric) {
+    case METRIC_MOULDS:
+    case METRIC_SP_MOULDS:
+    case METRIC_DP_MOULDS:      return OPTION_MEASURE_MOULDS;
+    case METRIC_JOINT_LENGTH:   return OPTION_MEASURE_JOINT_LENGTH;
+    case METRIC_MAX_GAP:
+    case METRIC_MAX_KINK:       return OPTION_MEASURE_JOINTS;
+    case METRIC_SP_MISFITS:     return OPTION_MEASURE_FITS;
     default:                    return 0;
     }
 }

@@ -48,6 +48,12 @@ const char *metric_name(enum metric metric);
 /* The metric's value in totals. */
 double metric_value(const struct option_totals *totals, enum metric metric);
 
+/* The measures (option.h's option_measure bits) metric needs beyond the
+ * classified panels: FITS for sp_misfits, JOINTS for the gap and kink,
+ * MOULDS for the mould counts, JOINT_LENGTH for the joint length; 0 for
+ * the rest. cost's own terms are the prices' (option_measures_needed). */
+unsigned metric_measures(enum metric metric);
+
 /* Parses "cost,planarity,dp_area" (each optionally "max:NAME") into
  * objectives[0..*count). Returns FACET_OK or FACET_EINPUT naming the
  * field what (the caller's name for it), the unknown metric and listing the valid ones, a repeated one, or more than

@@ -368,7 +368,8 @@ static int evaluate(const struct surface *surface,
      * once a line for the batch, unless the run's lines are given. */
     struct joint_lines batch_lines;
     memset(&batch_lines, 0, sizeof batch_lines);
-    if (lines == NULL && lattice != NULL && ngroups > 1) {
+    if (lines == NULL && lattice != NULL && ngroups > 1 &&
+        !(base->unmeasured & OPTION_MEASURE_JOINT_LENGTH)) {
         int rc = batch_joint_lines(surface, points, order, group, ngroups,
                                    jobs, &batch_lines, err);
         if (rc != FACET_OK) {
@@ -885,6 +886,14 @@ static int run_random(struct search *s, enum optimize_outcome *outcome,
     free(index);
     free(numbers);
     return rc;
+}
+
+unsigned optimize_measures_needed(const struct optimize_settings *s)
+{
+    unsigned objectives = 0;
+    for (int k = 0; k < s->nobjectives; k++)
+        objectives |= metric_measures(s->objectives[k].metric);
+    return option_measures_needed(&s->base.classify, objectives);
 }
 
 int64_t optimize_total(const struct optimize_settings *settings)

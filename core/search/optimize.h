@@ -57,6 +57,11 @@ struct optimize_settings {
                                            count 0: the whole space */
 };
 
+/* What every option of a run under s needs measured (option.h's
+ * option_measure bits): option_measures_needed for its classification,
+ * limits and prices and what its objectives read (metric_measures). */
+unsigned optimize_measures_needed(const struct optimize_settings *s);
+
 struct evaluated_option {
     int64_t number;                     /* 1-based, in order met */
     int generation;                     /* nsga2 generation, else 0 */
