@@ -187,6 +187,7 @@ struct optimize_command {
     struct search_flags search;
     struct classify_flags flags;
     const char *db, *resume, *name, *table, *surface, *store_panels;
+    const char *measure;
     int wide;
     const char *path[PROJECT_FILES_MAX];
     int count;
@@ -221,6 +222,7 @@ static int optimize_parse(int argc, char **argv, struct optimize_command *c,
         {"surface", 0, ARG_STRING, &c->surface, NULL},
         {"wide", 0, ARG_FLAG, NULL, &c->wide},
         {"store-panels", 0, ARG_STRING, &c->store_panels, NULL},
+        {"measure", 0, ARG_STRING, &c->measure, NULL},
         {"module", 0, ARG_STRING, &search->module, NULL},
         {"grid", 0, ARG_STRING, &search->grid, NULL},
         {NULL, 0, ARG_FLAG, NULL, NULL},
@@ -293,6 +295,11 @@ static int optimize_parse(int argc, char **argv, struct optimize_command *c,
             (rc = study_keep_panels_parse(c->store_panels, "--store-panels",
                                           &request->store_panels, err)))
             return rc;
+        if (c->measure && strcmp(c->measure, "all") != 0 &&
+            strcmp(c->measure, "needed") != 0)
+            return facet_error_set(err, FACET_EINPUT,
+                "--measure: '%s' is neither all nor needed", c->measure);
+        request->measure_all = c->measure && strcmp(c->measure, "all") == 0;
         request->surface_path = c->path[0];
         request->flip_normals = c->flags.flip_normals;
         request->name = c->name ? c->name : "";
@@ -421,6 +428,11 @@ static void optimize_options_print(FILE *out)
         "                      or none (default %s); fewer when the disk\n"
         "                      cannot hold them (said); any other option's\n"
         "                      when first looked at (show, export, tui)\n"
+        "  --measure M         needed (default): each option is measured\n"
+        "                      for what the objectives, limits and prices\n"
+        "                      read, the Pareto options in full (the rest\n"
+        "                      read 'not measured', NULL in SQL); all: every\n"
+        "                      option in full (a shard always is)\n"
         "  --table N           rows of the final table (default %d; 0 all)\n"
         "  --wide              every column of it, whatever the terminal\n"
         "examples:\n"

@@ -529,9 +529,20 @@ int study_option_panels(struct store *store, const struct run_info *run,
     }
     if (rc == FACET_OK)
         rc = evaluate_option(run, surface, &option, panels, totals, err);
-    /* Stored for the next look, when the file may be written. */
+    /* Stored for the next look, when the file may be written: the panels,
+     * and the option's row measured in full where its run measured it
+     * only for what the run reads. */
     if (rc == FACET_OK && !store_read_only(store))
         rc = store_panels_put(store, run->id, number, panels, err);
+    if (rc == FACET_OK &&
+        option_totals_measures(&option.totals) != OPTION_MEASURE_ALL) {
+        /* What the run measured stays as it measured it, to the bit; the
+         * rest is this evaluation's. */
+        struct option_row measured = option;
+        option_totals_fill(&measured.totals, totals);
+        if (!store_read_only(store))
+            rc = store_options_measured(store, run->id, &measured, 1, err);
+    }
     if (surface == &own)
         surface_close(&own);
     return rc;
@@ -1071,9 +1082,10 @@ int study_start(struct store *store, const struct study_request *request,
     run.jobs = s->jobs;
     run.shard_index = s->shard.index;
     run.shard_count = s->shard.count;
-    /* A building is measured in full: its per-surface rows hold every
-     * quantity (issue 27 leaves projects for later). */
-    run.measured = request->measure_all || is_project
+    /* Measured in full: a building, whose per-surface rows hold every
+     * quantity; and a shard, since the whole run's front is known only
+     * at the merge, which has no surface to measure it with. */
+    run.measured = request->measure_all || is_project || s->shard.count > 0
                        ? OPTION_MEASURE_ALL
                        : optimize_measures_needed(s);
     rc = store_run_create(store, &run, err);

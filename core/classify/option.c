@@ -71,6 +71,32 @@ unsigned option_totals_measures(const struct option_totals *totals)
     return measures;
 }
 
+void option_totals_fill(struct option_totals *t,
+                        const struct option_totals *m)
+{
+    unsigned missing = ~option_totals_measures(t) & option_totals_measures(m);
+    if (missing & OPTION_MEASURE_FITS) {
+        t->sp_misfits = m->sp_misfits;
+        t->sp_fitted = m->sp_fitted;
+    }
+    if (missing & OPTION_MEASURE_JOINTS) {
+        t->max_gap_mm = m->max_gap_mm;
+        t->mean_gap_mm = m->mean_gap_mm;
+        t->max_kink_deg = m->max_kink_deg;
+        t->mean_kink_deg = m->mean_kink_deg;
+        t->gaps_over = m->gaps_over;
+        t->kinks_over = m->kinks_over;
+    }
+    if (missing & OPTION_MEASURE_MOULDS) {
+        t->moulds = m->moulds;
+        memcpy(t->moulds_of, m->moulds_of, sizeof t->moulds_of);
+        t->largest_family = m->largest_family;
+        t->singleton_families = m->singleton_families;
+    }
+    if (missing & OPTION_MEASURE_JOINT_LENGTH)
+        t->joint_length = m->joint_length;
+}
+
 unsigned option_measures_needed(const struct classify_options *classify,
                                 unsigned objective_measures)
 {
@@ -488,8 +514,9 @@ static int classify_moulded(const struct surface *surface,
     if (rc != FACET_OK)
         return rc;
     if (params->unmeasured & OPTION_MEASURE_MOULDS) {
+        /* An FP panel needs no mould: 0 is known without measuring. */
         for (int t = 0; t < TYPE_COUNT; t++)
-            totals->moulds_of[t] = TOTALS_UNKNOWN;
+            totals->moulds_of[t] = t == TYPE_FP ? 0 : TOTALS_UNKNOWN;
         totals->moulds = TOTALS_UNKNOWN;
         totals->largest_family = TOTALS_UNKNOWN;
         totals->singleton_families = TOTALS_UNKNOWN;

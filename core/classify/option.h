@@ -69,6 +69,14 @@ unsigned option_measures_needed(const struct classify_options *classify,
 /* The measures totals hold: each whose quantities are known. */
 unsigned option_totals_measures(const struct option_totals *totals);
 
+/* Copies into *totals the quantities of each measure it does not hold
+ * that measured holds (the same option measured in full), leaving every
+ * number it holds as it is: an option a run measured for what it reads,
+ * measured in full when a designer opens it. Its price terms and cost do
+ * not change: a run measures what it prices. */
+void option_totals_fill(struct option_totals *totals,
+                        const struct option_totals *measured);
+
 struct option_params {
     int nu, nv;                          /* grid */
     unsigned unmeasured;                 /* option_measure bits left out;

@@ -32,8 +32,17 @@ else
 fi
 same "paper space: terms 0, cost = area cost" \
     "$(sql "$WORK/paper.db" "SELECT count(*) FROM options WHERE panel_cost = 0 AND joint_cost = 0 AND mould_cost = 0 AND cost = fp_cost + sp_cost + dp_cost")" 336
-same "paper space: moulds counted all the same" \
-    "$(sql "$WORK/paper.db" "SELECT count(*) FROM options WHERE moulds = sp_moulds + dp_moulds AND moulds > 0 AND joint_length > 0")" 336
+# Nothing it reads needs moulds or joints (issue 27): the run records
+# that it measured none of them; its Pareto options are measured in full,
+# every other option's moulds and joint length are not measured (NULL),
+# never 0.
+same "paper space: the run measured nothing beyond the classed panels" \
+    "$(sql "$WORK/paper.db" "SELECT quote(measured) FROM runs")" "''"
+same "paper space: the Pareto options' moulds counted, all the same" \
+    "$(sql "$WORK/paper.db" "SELECT count(*) = (SELECT count(*) FROM options WHERE rank = 1) FROM options WHERE rank = 1 AND moulds = sp_moulds + dp_moulds AND moulds > 0 AND joint_length > 0 AND max_gap >= 0 AND sp_fitted >= 0")" 1
+same "paper space: the other options' moulds, joints and fits not measured (NULL)" \
+    "$(sql "$WORK/paper.db" "SELECT count(*) FROM options WHERE rank > 1 AND moulds IS NULL AND sp_moulds IS NULL AND joint_length IS NULL AND max_gap IS NULL AND gaps_over IS NULL AND sp_misfits IS NULL")" \
+    "$(sql "$WORK/paper.db" "SELECT count(*) FROM options WHERE rank > 1")"
 
 # --- classify: the terms, the totals CSV, the schedule's families --------
 run "$FACET" classify "$ROOF" --grid 20x24 "${COSTS[@]}" --csv "$WORK/c.csv"

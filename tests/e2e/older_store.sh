@@ -67,11 +67,12 @@ for key in moulds joint_length; do
     fi
 done
 
-# Migrated on to schema 8 (projects): the run intact, its options no
-# module (NULL), no surfaces recorded.
-same "(sqlite3: v4 migrated to 8, the run's options without a module)" \
-    "$(q 'SELECT (SELECT user_version FROM pragma_user_version), count(*), count(module_w), count(module_h), count(modules), (SELECT count(*) FROM surfaces), (SELECT count(*) FROM option_surfaces), (SELECT module_w_min IS NULL FROM runs) FROM options')" \
-    "8|4|0|0|0|0|0|1"
+# Migrated on to schema 9: the run intact, its options no module (NULL),
+# no surfaces recorded (8, projects), what it measured not recorded (9:
+# NULL, every measure, as every run before took them).
+same "(sqlite3: v4 migrated to 9, the run's options without a module)" \
+    "$(q 'SELECT (SELECT user_version FROM pragma_user_version), count(*), count(module_w), count(module_h), count(modules), (SELECT count(*) FROM surfaces), (SELECT count(*) FROM option_surfaces), (SELECT module_w_min IS NULL FROM runs), (SELECT measured IS NULL FROM runs) FROM options')" \
+    "9|4|0|0|0|0|0|1|1"
 
 # A run of schema 7 (the last before projects) and one of schema 3: both
 # open and migrate to 8 with their runs as they were.
@@ -89,8 +90,8 @@ for version in 7 3; do
     fi
     same "(the file is at schema $version)" "$(sqlite3 "$db" 'PRAGMA user_version')" "$version"
     expect "schema $version: facet runs opens and migrates it" 0 "$FACET" runs "$db"
-    same "schema $version: migrated to 8, with the project tables" \
-        "$(sqlite3 "$db" "SELECT (SELECT user_version FROM pragma_user_version), count(*) FROM sqlite_master WHERE name IN ('surfaces', 'option_surfaces')")" "8|2"
+    same "schema $version: migrated to 9, with the project tables" \
+        "$(sqlite3 "$db" "SELECT (SELECT user_version FROM pragma_user_version), count(*) FROM sqlite_master WHERE name IN ('surfaces', 'option_surfaces')")" "9|2"
     same "schema $version: the run and its options as they were" \
         "$(sqlite3 "$db" 'SELECT id, name, status, surface_sha256, u_min, u_max, v_min, v_max, options, knee, hypervolume FROM runs;
                           SELECT number, nu, nv, cost, rank FROM options ORDER BY number')" "$before"

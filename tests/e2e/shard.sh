@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # End-to-end: facet optimize --shard I/N and facet merge, without a
 # scheduler. The truth is the unsharded run, compared by SQLite itself
-# (EXCEPT both ways over every column of options but the run id): the
+# (EXCEPT both ways over every column of options but the run id; a shard
+# measures every option in full, so the unsharded truth does too,
+# --measure all): the
 # merge of an exhaustive or random run's shards is that run, option for
 # option and rank for rank; the shards partition its points; merging again
 # changes nothing; a missing shard is named and the run marked incomplete;
@@ -29,7 +31,7 @@ make_shards() {
 }
 
 # --- exhaustive: 3 shards (dealt by grid) merge into the unsharded run
-expect "unsharded exhaustive run" 0 "$FACET" optimize "$ROOF" --db "$WORK/whole.db" "${SPACE[@]}" --table 1
+expect "unsharded exhaustive run" 0 "$FACET" optimize "$ROOF" --db "$WORK/whole.db" "${SPACE[@]}" --measure all --table 1
 make_shards 3 "$WORK/ex" "${SPACE[@]}" --jobs 1
 # A partition: every number once, 1..144, none in two shards.
 got=$(sqlite3 -batch "$WORK/ex1.db" "ATTACH '$WORK/ex2.db' AS b;
@@ -113,21 +115,21 @@ same "--fewer: 48 options, incomplete, 1 of 3" \
 # --- 4 shards of 4 threshold steps on 2 grids: fewer grids than shards,
 # dealt point by point
 SMALL=(--u 10 --v 12:13 --threshold 1:4:1)
-expect "unsharded small run" 0 "$FACET" optimize "$ROOF" --db "$WORK/small.db" "${SMALL[@]}" --table 1
+expect "unsharded small run" 0 "$FACET" optimize "$ROOF" --db "$WORK/small.db" "${SMALL[@]}" --measure all --table 1
 make_shards 4 "$WORK/sm" "${SMALL[@]}"
 expect "merge of 4 shards of 2 grids" 0 "$FACET" merge "$WORK/small-merged.db" "$WORK"/sm{1,2,3,4}.db
 same_options "fewer grids than shards: merged = unsharded" "$WORK/small.db" "$WORK/small-merged.db"
 
 # --- random: the unsharded run's draws dealt out
 RANDOM_SPACE=(--u 10:30 --v 12:30 --threshold 1:6 --method random --evals 90 --seed 5)
-expect "unsharded random run" 0 "$FACET" optimize "$ROOF" --db "$WORK/rand.db" "${RANDOM_SPACE[@]}" --table 1
+expect "unsharded random run" 0 "$FACET" optimize "$ROOF" --db "$WORK/rand.db" "${RANDOM_SPACE[@]}" --measure all --table 1
 make_shards 4 "$WORK/rs" "${RANDOM_SPACE[@]}"
 expect "merge of 4 random shards" 0 "$FACET" merge "$WORK/rand-merged.db" "$WORK"/rs{1,2,3,4}.db
 same_options "merged random run = unsharded" "$WORK/rand.db" "$WORK/rand-merged.db"
 
 # --- NSGA-II: islands; island 1 keeps the run's seed, island 2 has its own
 NSGA=(--u 10:20 --v 12:24 --threshold 1:20 --method nsga2 --pop 12 --gens 4 --seed 3)
-expect "unsharded nsga2 run" 0 "$FACET" optimize "$ROOF" --db "$WORK/nsga.db" "${NSGA[@]}" --table 1
+expect "unsharded nsga2 run" 0 "$FACET" optimize "$ROOF" --db "$WORK/nsga.db" "${NSGA[@]}" --measure all --table 1
 make_shards 2 "$WORK/ns" "${NSGA[@]}"
 same_options "island 1 is the run with the run's seed" "$WORK/nsga.db" "$WORK/ns1.db"
 same "island 2 searches other points (its own seed)" \
@@ -158,7 +160,7 @@ json_check "no longer incomplete" 'len(j) == 1 and j[0]["incomplete"] is False'
 # --- a shard stopped halfway: refused by the merge until resumed; resumed,
 # it evaluates the rest of its share and the merge is the unsharded run
 BIG=(--u 10:15 --v 12:17 --threshold 1:20:0.25)
-expect "unsharded run of 2772 options" 0 "$FACET" optimize "$ROOF" --db "$WORK/big.db" "${BIG[@]}" --table 1
+expect "unsharded run of 2772 options" 0 "$FACET" optimize "$ROOF" --db "$WORK/big.db" "${BIG[@]}" --measure all --table 1
 "$FACET" optimize "$ROOF" --db "$WORK/bs2.db" "${BIG[@]}" --shard 2/2 --table 1 >/dev/null 2>&1
 "$FACET" optimize "$ROOF" --db "$WORK/bs1.db" "${BIG[@]}" --shard 1/2 --jobs 1 --table 1 >/dev/null 2>&1 &
 pid=$!

@@ -184,7 +184,7 @@ submit_and_compare() {
 }
 
 fixture roof40.obj "$WORK/roof.obj" || exit 1
-expect "unsharded run" 0 "$FACET" optimize "$WORK/roof.obj" --db "$WORK/whole.db" "${SPACE[@]}" --table 1
+expect "unsharded run" 0 "$FACET" optimize "$WORK/roof.obj" --db "$WORK/whole.db" "${SPACE[@]}" --measure all --table 1
 submit_and_compare "roof" "$SHARDS" "$D/results" "$WORK/whole.db" "$WORK/roof.obj" -- "${SPACE[@]}"
 
 # A project of two files (one of four objects, one of a fifth), searched

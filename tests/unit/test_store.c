@@ -141,8 +141,15 @@ static void test_run_roundtrip(void **state)
     assert_true(isfinite(info.hypervolume));
     assert_int_equal(strlen(info.surface_sha256), 64);
 
+    /* The run measured what its objectives (cost, planarity, dp_area),
+     * its typing (by fit, the default) and its prices (areas only) read:
+     * the SP fits and nothing else; its Pareto options in full. */
+    assert_int_equal(info.measured, OPTION_MEASURE_FITS);
+
     /* Every option equals a fresh evaluation of its design point, bit for
-     * bit: nothing is rounded on the way through SQLite. */
+     * bit, measured as the run measured it (its Pareto options in full):
+     * nothing is rounded on the way through SQLite, and what was not
+     * measured reads as not known. */
     struct option_row *rows;
     size_t n;
     get_options(store, run, &rows, &n);
@@ -157,11 +164,18 @@ static void test_run_roundtrip(void **state)
         params.nu = rows[k].nu;
         params.nv = rows[k].nv;
         params.classify.threshold = rows[k].threshold_mm / 1000;
+        params.unmeasured = rows[k].rank == 1
+                                ? 0 : OPTION_MEASURE_ALL & ~info.measured;
         struct panelization panels;
         struct option_totals totals;
         assert_int_equal(option_evaluate(&surface, &params, &panels,
                                          &totals, &err), FACET_OK);
         assert_memory_equal(&totals, &rows[k].totals, sizeof totals);
+        if (rows[k].rank != 1)
+            assert_true(isnan(rows[k].totals.joint_length) &&
+                        rows[k].totals.moulds == TOTALS_UNKNOWN &&
+                        rows[k].totals.sp_fitted != TOTALS_UNKNOWN &&
+                        rows[k].totals.gaps_over == TOTALS_UNKNOWN);
         panelization_free(&panels);
         knees += rows[k].knee;
         pareto += rows[k].rank == 1;
@@ -649,7 +663,7 @@ static void test_migrates_older_schema(void **state)
                      " type = 'index' AND name LIKE 'options_by_%')",
                      -1, &s, NULL), SQLITE_OK);
     assert_int_equal(sqlite3_step(s), SQLITE_ROW);
-    assert_int_equal(sqlite3_column_int(s, 0), 8);
+    assert_int_equal(sqlite3_column_int(s, 0), 9);
     assert_int_equal(sqlite3_column_int(s, 1), info.pareto_options);
     assert_int_equal(sqlite3_column_int(s, 2), 14);
     sqlite3_finalize(s);
@@ -693,7 +707,7 @@ static void test_migrates_v3(void **state)
     sqlite3_bind_int64(s, 1, old);
     sqlite3_bind_int64(s, 2, run);
     assert_int_equal(sqlite3_step(s), SQLITE_ROW);
-    assert_int_equal(sqlite3_column_int(s, 0), 8);
+    assert_int_equal(sqlite3_column_int(s, 0), 9);
     assert_int_equal(sqlite3_column_int(s, 1), 1);
     assert_int_equal(sqlite3_column_int(s, 2), 1);
     assert_string_equal((const char *)sqlite3_column_text(s, 3), "plane");
@@ -960,7 +974,7 @@ static void test_migrates_v4(void **state)
     sqlite3_bind_int64(s, 1, old);
     sqlite3_bind_int64(s, 2, run);
     assert_int_equal(sqlite3_step(s), SQLITE_ROW);
-    assert_int_equal(sqlite3_column_int(s, 0), 8);
+    assert_int_equal(sqlite3_column_int(s, 0), 9);
     assert_int_equal(sqlite3_column_int(s, 1), 48);
     assert_int_equal(sqlite3_column_int(s, 2), sqlite3_column_int(s, 3));
     assert_true(sqlite3_column_int(s, 3) > 0);
@@ -1031,7 +1045,7 @@ static void test_migrates_v6(void **state)
     sqlite3_bind_int64(s, 1, old);
     sqlite3_bind_int64(s, 2, run);
     assert_int_equal(sqlite3_step(s), SQLITE_ROW);
-    assert_int_equal(sqlite3_column_int(s, 0), 8);
+    assert_int_equal(sqlite3_column_int(s, 0), 9);
     assert_int_equal(sqlite3_column_int(s, 1), 48);
     int n = sqlite3_column_int(s, 2);
     assert_true(n > 0);
