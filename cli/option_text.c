@@ -10,28 +10,31 @@
 #include <sys/ioctl.h>
 #include <unistd.h>
 
-/* What a value of an option not known shows (NULL in the store: an
- * option of a run an older Facet stored, before it measured joints and
- * moulds). */
+/* What a value of an option not known shows (NULL in the store): its
+ * run did not need it (a run measures what its objectives, limits and
+ * prices read; facet show measures the rest), or an older Facet stored
+ * the option before it measured joints and moulds. */
 static const char not_stored[] =
-    "- (not stored with this option: an older Facet's run)";
+    "- (not measured in this run, or stored by an older Facet)";
 
 /* The SP misfits, gaps and kinks of t, against o's limits. */
 static void joints_text(FILE *out, const struct option_totals *t,
                         const struct classify_options *o)
 {
+    if (t->sp_misfits == TOTALS_UNKNOWN || t->sp_fitted == TOTALS_UNKNOWN) {
+        fprintf(out, "\n%-16s %s\n", "SP misfits", not_stored);
+    } else {
+        size_t classed_sp = t->sp_fitted + t->sp_misfits;
+        fprintf(out, "\n%-16s %zu of %zu SP panels (by class) fit no "
+                "cylinder or cone within %g mm: %s\n", "SP misfits",
+                t->sp_misfits, classed_sp, o->threshold * 1000,
+                o->sp_by_class ? "kept SP (SP by class alone)"
+                               : "built and priced DP");
+    }
     if (isnan(t->max_gap_mm)) {
-        /* An option stored before Facet built its panels (schema v7). */
-        fprintf(out, "\n%-16s not measured (stored before Facet measured "
-                "panels as built)\n", "gaps, kinks");
+        fprintf(out, "%-16s %s\n", "gaps, kinks", not_stored);
         return;
     }
-    size_t classed_sp = t->sp_fitted + t->sp_misfits;
-    fprintf(out, "\n%-16s %zu of %zu SP panels (by class) fit no cylinder "
-            "or cone within %g mm: %s\n", "SP misfits", t->sp_misfits,
-            classed_sp, o->threshold * 1000,
-            o->sp_by_class ? "kept SP (SP by class alone)"
-                           : "built and priced DP");
     char limit[64] = "no limit";
     if (o->max_gap > 0)
         snprintf(limit, sizeof limit, "%zu over the %g mm limit",

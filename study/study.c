@@ -534,7 +534,7 @@ int study_option_panels(struct store *store, const struct run_info *run,
      * only for what the run reads. */
     if (rc == FACET_OK && !store_read_only(store))
         rc = store_panels_put(store, run->id, number, panels, err);
-    if (rc == FACET_OK &&
+    if (rc == FACET_OK && run->measured != OPTION_MEASURE_ALL &&
         option_totals_measures(&option.totals) != OPTION_MEASURE_ALL) {
         /* What the run measured stays as it measured it, to the bit; the
          * rest is this evaluation's. */
