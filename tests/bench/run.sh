@@ -37,6 +37,8 @@ section "Panels as built: the SP fit, gaps and kinks of one 37x49 option of the 
     "$build/bench/bench_joint"
 section "The paper's whole space (336 grids) on the 100k-triangle roof, into SQLite" \
     "$build/bench/bench_optimize"
+section "The paper's study as make demo runs it, and as built by default, against d218719 (issue 27)" \
+    tests/bench/bench_study.sh "$build"
 section "A space beyond the lattice: u 10:120 x v 10:120 at 3 mm (12,321 grids) on the 100k-triangle roof" \
     "$build/bench/bench_space"
 section "An NSGA-II run's end: storing its Pareto options' panels, against the run" \
