@@ -123,6 +123,7 @@ static int take_vertex_uv(const struct mesh *mesh, double *vertex_uv,
 
 /* The file's vt: refused when they fold or form several charts. */
 static int try_vt(const struct mesh *mesh, const char *name,
+                  const struct facet_stop *stop,
                   struct parameterization *out, struct facet_error *err)
 {
     if (!mesh->has_uv)
@@ -134,6 +135,8 @@ static int try_vt(const struct mesh *mesh, const char *name,
         return facet_error_set(err, FACET_EWORK, "out of memory (UV)");
     memcpy(out->uv, mesh->uv, sizeof(double) * 6 * mesh->ntriangles);
     int rc = uv_check(out->uv, mesh->ntriangles, &out->report, err);
+    if (rc == FACET_OK)
+        rc = facet_stop_check(stop, err);
     if (rc != FACET_OK)
         return rc;
     if (folds(&out->report))
@@ -170,6 +173,7 @@ static int try_vt(const struct mesh *mesh, const char *name,
 }
 
 static int try_grid(const struct mesh *mesh, const char *name,
+                    const struct facet_stop *stop,
                     struct parameterization *out, char *why, size_t size,
                     struct facet_error *err)
 {
@@ -182,6 +186,10 @@ static int try_grid(const struct mesh *mesh, const char *name,
     if (rc != FACET_OK)
         return facet_error_set(err, FACET_EINPUT,
             "%s is not a structured quad grid: %s", name, why);
+    if ((rc = facet_stop_check(stop, err)) != FACET_OK) {
+        free(vertex_uv);
+        return rc;
+    }
     rc = take_vertex_uv(mesh, vertex_uv, out, err);
     if (rc != FACET_OK)
         return rc;
@@ -224,13 +232,16 @@ static int try_plane(const struct mesh *mesh, const char *name,
 }
 
 static int try_harmonic(const struct mesh *mesh, const char *name,
+                        const struct facet_stop *stop,
                         struct parameterization *out, char *why, size_t size,
                         struct facet_error *err)
 {
     double *vertex_uv;
-    int rc = param_harmonic(mesh, &vertex_uv, &out->holes, why, size);
+    int rc = param_harmonic(mesh, stop, &vertex_uv, &out->holes, why, size);
     if (rc == FACET_EWORK)
         return facet_error_set(err, FACET_EWORK, "out of memory (UV)");
+    if (rc == FACET_ESTOP)
+        return facet_stop_error(err);
     if (rc != FACET_OK)
         return facet_error_set(err, FACET_EINPUT,
             "%s: no harmonic map: %s", name, why);
@@ -263,18 +274,26 @@ int param_choose(const struct mesh *mesh, enum param_method want,
                  const char *name, struct parameterization *out,
                  struct facet_error *err)
 {
+    return param_choose_stoppable(mesh, want, name, NULL, out, err);
+}
+
+int param_choose_stoppable(const struct mesh *mesh, enum param_method want,
+                           const char *name, const struct facet_stop *stop,
+                           struct parameterization *out,
+                           struct facet_error *err)
+{
     memset(out, 0, sizeof *out);
     char why[200] = "";
     out->method = want;
     switch (want) {
     case PARAM_VT:
-        return try_vt(mesh, name, out, err);
+        return try_vt(mesh, name, stop, out, err);
     case PARAM_GRID:
-        return try_grid(mesh, name, out, why, sizeof why, err);
+        return try_grid(mesh, name, stop, out, why, sizeof why, err);
     case PARAM_PLANE:
         return try_plane(mesh, name, out, why, sizeof why, err);
     case PARAM_HARMONIC:
-        return try_harmonic(mesh, name, out, why, sizeof why, err);
+        return try_harmonic(mesh, name, stop, out, why, sizeof why, err);
     default:
         break;
     }
@@ -283,10 +302,10 @@ int param_choose(const struct mesh *mesh, enum param_method want,
      * replaced by a map of Facet's own. */
     if (mesh->has_uv) {
         out->method = PARAM_VT;
-        return try_vt(mesh, name, out, err);
+        return try_vt(mesh, name, stop, out, err);
     }
     out->method = PARAM_GRID;
-    int rc = try_grid(mesh, name, out, why, sizeof why, err);
+    int rc = try_grid(mesh, name, stop, out, why, sizeof why, err);
     if (rc != FACET_EINPUT)
         return rc;
     char not_grid[240];
@@ -295,6 +314,8 @@ int param_choose(const struct mesh *mesh, enum param_method want,
 
     out->method = PARAM_PLANE;
     out->reason[0] = '\0';
+    if ((rc = facet_stop_check(stop, err)) != FACET_OK)
+        return rc;
     rc = try_plane(mesh, name, out, why, sizeof why, err);
     if (rc == FACET_OK) {
         char plane[sizeof out->reason];
@@ -311,7 +332,9 @@ int param_choose(const struct mesh *mesh, enum param_method want,
     out->uv = NULL;
     memset(&out->report, 0, sizeof out->report);
     out->method = PARAM_HARMONIC;
-    rc = try_harmonic(mesh, name, out, why, sizeof why, err);
+    if ((rc = facet_stop_check(stop, err)) != FACET_OK)
+        return rc;
+    rc = try_harmonic(mesh, name, stop, out, why, sizeof why, err);
     if (rc == FACET_OK) {
         char harmonic[sizeof out->reason];
         snprintf(harmonic, sizeof harmonic, "%s", out->reason);
