@@ -110,6 +110,7 @@ static double *plane_projection(const struct mesh *mesh)
 
 /* Sets out->uv from per-vertex UV (which it frees) and checks it. */
 static int take_vertex_uv(const struct mesh *mesh, double *vertex_uv,
+                          const struct facet_stop *stop,
                           struct parameterization *out,
                           struct facet_error *err)
 {
@@ -118,7 +119,8 @@ static int take_vertex_uv(const struct mesh *mesh, double *vertex_uv,
     free(vertex_uv);
     if (out->uv == NULL)
         return facet_error_set(err, FACET_EWORK, "out of memory (UV)");
-    return uv_check(out->uv, mesh->ntriangles, &out->report, err);
+    return uv_check_stoppable(out->uv, mesh->ntriangles, stop, &out->report,
+                              err);
 }
 
 /* The file's vt: refused when they fold or form several charts. */
@@ -134,7 +136,8 @@ static int try_vt(const struct mesh *mesh, const char *name,
     if (out->uv == NULL)
         return facet_error_set(err, FACET_EWORK, "out of memory (UV)");
     memcpy(out->uv, mesh->uv, sizeof(double) * 6 * mesh->ntriangles);
-    int rc = uv_check(out->uv, mesh->ntriangles, &out->report, err);
+    int rc = uv_check_stoppable(out->uv, mesh->ntriangles, stop,
+                                &out->report, err);
     if (rc == FACET_OK)
         rc = facet_stop_check(stop, err);
     if (rc != FACET_OK)
@@ -190,7 +193,7 @@ static int try_grid(const struct mesh *mesh, const char *name,
         free(vertex_uv);
         return rc;
     }
-    rc = take_vertex_uv(mesh, vertex_uv, out, err);
+    rc = take_vertex_uv(mesh, vertex_uv, stop, out, err);
     if (rc != FACET_OK)
         return rc;
     if (folds(&out->report) || out->report.degenerate > 0)
@@ -207,13 +210,14 @@ static int try_grid(const struct mesh *mesh, const char *name,
 /* The plane projection; refused when it folds or squashes a triangle,
  * with what it did in why. */
 static int try_plane(const struct mesh *mesh, const char *name,
+                     const struct facet_stop *stop,
                      struct parameterization *out, char *why, size_t size,
                      struct facet_error *err)
 {
     double *vertex_uv = plane_projection(mesh);
     if (vertex_uv == NULL)
         return facet_error_set(err, FACET_EWORK, "out of memory (UV)");
-    int rc = take_vertex_uv(mesh, vertex_uv, out, err);
+    int rc = take_vertex_uv(mesh, vertex_uv, stop, out, err);
     if (rc != FACET_OK)
         return rc;
     const struct uv_report *r = &out->report;
@@ -245,7 +249,7 @@ static int try_harmonic(const struct mesh *mesh, const char *name,
     if (rc != FACET_OK)
         return facet_error_set(err, FACET_EINPUT,
             "%s: no harmonic map: %s", name, why);
-    rc = take_vertex_uv(mesh, vertex_uv, out, err);
+    rc = take_vertex_uv(mesh, vertex_uv, stop, out, err);
     if (rc != FACET_OK)
         return rc;
     if (folds(&out->report)) {
@@ -291,7 +295,7 @@ int param_choose_stoppable(const struct mesh *mesh, enum param_method want,
     case PARAM_GRID:
         return try_grid(mesh, name, stop, out, why, sizeof why, err);
     case PARAM_PLANE:
-        return try_plane(mesh, name, out, why, sizeof why, err);
+        return try_plane(mesh, name, stop, out, why, sizeof why, err);
     case PARAM_HARMONIC:
         return try_harmonic(mesh, name, stop, out, why, sizeof why, err);
     default:
@@ -316,7 +320,7 @@ int param_choose_stoppable(const struct mesh *mesh, enum param_method want,
     out->reason[0] = '\0';
     if ((rc = facet_stop_check(stop, err)) != FACET_OK)
         return rc;
-    rc = try_plane(mesh, name, out, why, sizeof why, err);
+    rc = try_plane(mesh, name, stop, out, why, sizeof why, err);
     if (rc == FACET_OK) {
         char plane[sizeof out->reason];
         snprintf(plane, sizeof plane, "%s", out->reason);
