@@ -817,7 +817,17 @@ static int study_go(struct store *store, struct run_info *run,
     struct panel_lattice *lattice = NULL;
     if (rc == FACET_OK && project == NULL) {
         study_stage(hooks, "dividing the surface along the space's grid lines");
-        rc = optimize_lattice(surface, settings, &lattice, err);
+        struct facet_stop stop = study_stop(hooks);
+        rc = optimize_lattice_stoppable(surface, settings, &stop, &lattice,
+                                        err);
+    }
+    /* Stopped while dividing: the run, recorded, ends interrupted like
+     * one stopped between batches, and resumes. */
+    int stopped = rc == FACET_ESTOP;
+    if (stopped) {
+        facet_error_clear(err);
+        rc = FACET_OK;
+        *outcome = OPTIMIZE_INTERRUPTED;
     }
     /* A run of many options stores them without the indexes by metric
      * and builds those once at its end (store_indexes_defer). */
@@ -829,11 +839,12 @@ static int study_go(struct store *store, struct run_info *run,
     if (rc == FACET_OK)
         rc = store_indexes_defer(store, total - (int64_t)nstored, &deferred,
                                  err);
-    study_stage(hooks, "evaluating options");
-    if (rc == FACET_OK && project != NULL)
+    if (!stopped)
+        study_stage(hooks, "evaluating options");
+    if (rc == FACET_OK && !stopped && project != NULL)
         rc = optimize_run_with(&project->evaluator, settings, stored,
                                nstored, &optimize_hooks, outcome, err);
-    else if (rc == FACET_OK)
+    else if (rc == FACET_OK && !stopped)
         rc = optimize_run(surface, lattice, settings, stored, nstored,
                           &optimize_hooks, outcome, err);
     free(stored);

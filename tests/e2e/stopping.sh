@@ -139,6 +139,43 @@ EOF
 same "a second signal kills at once (killed by SIGTERM)" "$got" -15
 same "killed so, the database is sound" "$(sql "$WORK/twice.db" 'PRAGMA integrity_check')" ok
 
+# --- SIGINT while the run, recorded, divides the surface along the grid
+# lines of the paper's space (seconds on this surface), before the
+# search: the run ends interrupted, at once. The stage shows on a
+# terminal only: the run is given one (a pty).
+got=$(python3 - "$FACET" "$WORK/big.obj" "$WORK/divide.db" <<'EOF'
+import os, pty, select, signal, sys, time
+facet, obj, db = sys.argv[1:]
+pid, fd = pty.fork()
+if pid == 0:
+    os.execv(facet, [facet, 'optimize', obj, '--db', db, '--table', '0'])
+seen, sent, status, deadline = b'', None, None, time.time() + 300
+while status is None and time.time() < deadline:
+    if select.select([fd], [], [], 0.05)[0]:
+        try:
+            seen += os.read(fd, 4096)
+        except OSError:
+            pass
+    if sent is None and b'dividing the surface' in seen:
+        time.sleep(0.2)
+        sent = time.time()
+        os.kill(pid, signal.SIGINT)
+    done, code = os.waitpid(pid, os.WNOHANG)
+    if done:
+        status = os.waitstatus_to_exitcode(code)
+if status is None:
+    os.kill(pid, signal.SIGKILL)
+    os.waitpid(pid, 0)
+print('never divided' if sent is None else
+      '%s %.2f' % (status, time.time() - sent))
+EOF
+)
+read -r STATUS LATENCY <<<"$got"
+same "SIGINT while dividing: exit status 130" "$STATUS" 130
+within "SIGINT while dividing: exits within 2 s" 2
+same "SIGINT while dividing: the run is interrupted, resumable" \
+    "$(sql "$WORK/divide.db" 'SELECT status FROM runs')" interrupted
+
 # --- merge: shards large enough that the merge takes seconds
 "$FACET" example plane --res 2 -o "$WORK/plane.obj" || exit 1
 SPACE=(--u 1:20 --v 1:20 --threshold 1:20:0.1 --method exhaustive --store-panels none --table 0)
