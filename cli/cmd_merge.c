@@ -10,7 +10,14 @@
 #include "command.h"
 #include "progress.h"
 #include "shown.h"
+#include "signals.h"
 #include "study/study_merge.h"
+
+static int stop_requested(void *context)
+{
+    (void)context;
+    return signals_stop_requested() != 0;
+}
 
 static int merge_main(int argc, char **argv, struct facet_error *err)
 {
@@ -29,11 +36,21 @@ static int merge_main(int argc, char **argv, struct facet_error *err)
             "merge: name the output and the shards (facet merge OUT.db "
             "SHARD.db...)");
     struct merge_report report;
-    struct study_hooks hooks = {NULL, progress_show_stage, NULL, NULL, NULL,
-                                progress_show_warning};
-    if (rc == FACET_OK)
+    struct study_hooks hooks = {NULL, progress_show_stage, NULL,
+                                stop_requested, NULL, progress_show_warning};
+    if (rc == FACET_OK) {
+        /* Ctrl-C or SIGTERM stops the merge between its steps: its side
+         * file removed, OUT.db as it was. */
+        signals_catch_stop();
         rc = study_merge(path[0], path + 1, count - 1, fewer, &hooks,
                          &report, err);
+    }
+    if (rc == FACET_ESTOP) {
+        shown_line(stderr, "facet: merge interrupted; %s is as it was",
+                   path[0]);
+        free(path);
+        return signals_stop_status();
+    }
     if (rc == FACET_OK) {
         if (report.missing[0] != '\0')
             fprintf(stderr, "facet: warning: shard%s %s of %d missing: run "

@@ -353,6 +353,13 @@ static int optimize_with(struct optimize_command *c, struct facet_error *err)
         rc = study_start(store, &c->request, &hooks, &run, &outcome, err);
     if (view.bar_started && !view.bar.finished)
         fputc('\n', stderr);
+    if (rc == FACET_ESTOP) {
+        /* Stopped before the run was recorded: nothing to resume. */
+        store_close(store);
+        fprintf(stderr, "facet: interrupted while reading and preparing the "
+                "surface; no run was recorded\n");
+        return signals_stop_status();
+    }
     if (rc == FACET_OK) {
         if (outcome == OPTIMIZE_INTERRUPTED)
             fprintf(stderr, "facet: run %lld interrupted; every evaluated "
@@ -363,11 +370,8 @@ static int optimize_with(struct optimize_command *c, struct facet_error *err)
                              err);
     }
     store_close(store);
-    /* 128 + the signal, as a shell reports it: 130 for Ctrl-C (or a stop
-     * without a signal), 129 for a dropped SSH session, 143 for SIGTERM. */
     if (rc == FACET_OK && outcome == OPTIMIZE_INTERRUPTED)
-        return 128 + (signals_stop_requested() ? signals_stop_requested()
-                                               : SIGINT);
+        return signals_stop_status();
     return rc;
 }
 

@@ -4,13 +4,31 @@
 #include "signals.h"
 
 #include <signal.h>
+#include <stddef.h>
 #include <string.h>
 
 static volatile sig_atomic_t stop_signal;
 
+static const int stop_signals[3] = {SIGINT, SIGTERM, SIGHUP};
+
 static void on_stop(int signal_number)
 {
     stop_signal = signal_number;
+    /* The first signal asks for a stop; the next one kills at once, as
+     * it would without Facet's handler, for a user who will not wait for
+     * the stop to be heard. That loses nothing a kill -9 would not, and
+     * Facet survives those: every option is committed in an SQLite
+     * transaction, so the file holds whole batches only; a run left
+     * "running" by a dead writer is marked interrupted by the next one
+     * and resumes; a merge's side file is its own, OUT.db is replaced
+     * only by an atomic rename, and a later merge removes a side file
+     * whose process is gone. sigaction is async-signal-safe. */
+    struct sigaction action;
+    memset(&action, 0, sizeof action);
+    action.sa_handler = SIG_DFL;
+    sigemptyset(&action.sa_mask);
+    for (size_t k = 0; k < sizeof stop_signals / sizeof stop_signals[0]; k++)
+        sigaction(stop_signals[k], &action, NULL);
 }
 
 void signals_catch_stop(void)
@@ -22,14 +40,22 @@ void signals_catch_stop(void)
      * with EINTR: the stop is honoured between batches. */
     action.sa_flags = SA_RESTART;
     sigemptyset(&action.sa_mask);
-    sigaction(SIGINT, &action, NULL);
-    sigaction(SIGTERM, &action, NULL);
-    /* An SSH session that drops sends SIGHUP: the run stops as for
-     * Ctrl-C, resumable, rather than dying mid-batch. */
-    sigaction(SIGHUP, &action, NULL);
+    /* SIGHUP is there because an SSH session that drops sends it: the run
+     * stops as for Ctrl-C, resumable, rather than dying mid-batch. The
+     * other two are blocked while the handler runs, so that two signals
+     * at once still count as one request. */
+    for (size_t k = 0; k < sizeof stop_signals / sizeof stop_signals[0]; k++)
+        sigaddset(&action.sa_mask, stop_signals[k]);
+    for (size_t k = 0; k < sizeof stop_signals / sizeof stop_signals[0]; k++)
+        sigaction(stop_signals[k], &action, NULL);
 }
 
 int signals_stop_requested(void)
 {
     return stop_signal;
+}
+
+int signals_stop_status(void)
+{
+    return 128 + (stop_signal ? stop_signal : SIGINT);
 }

@@ -1,19 +1,28 @@
 /*
  * signals.h: SIGINT, SIGTERM and SIGHUP as a request to stop, not a kill.
  *
- * Long commands (optimize) install the handler, check signals_stop_requested
- * between batches, commit what they have and mark the run interrupted. The
- * flag is the one piece of global state outside main: a signal handler can
- * reach nothing else.
+ * Long commands (optimize, merge) install the handler, check
+ * signals_stop_requested between batches and, through their stop hook,
+ * every few milliseconds while a surface is read and prepared; they commit
+ * what they have and mark the run interrupted (a merge removes its side
+ * file). The first signal asks; a second one kills at once, as without the
+ * handler (signals.c says why that loses nothing). The flag is the one
+ * piece of global state outside main: a signal handler can reach nothing
+ * else.
  */
 #ifndef FACET_SIGNALS_H
 #define FACET_SIGNALS_H
 
 /* Installs handlers for SIGINT, SIGTERM and SIGHUP that set the stop
- * flag. */
+ * flag and put back the default action for the next of them. */
 void signals_catch_stop(void);
 
 /* Non-zero once one of them arrived: the signal's number. */
 int signals_stop_requested(void);
+
+/* 128 + the signal that asked to stop, as a shell reports a command
+ * killed by it: 130 for Ctrl-C (or a stop without a signal), 129 for a
+ * dropped SSH session, 143 for SIGTERM. */
+int signals_stop_status(void);
 
 #endif

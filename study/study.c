@@ -82,6 +82,16 @@ void study_stage(const struct study_hooks *hooks, const char *what)
         hooks->stage(hooks->context, what);
 }
 
+struct facet_stop study_stop(const struct study_hooks *hooks)
+{
+    struct facet_stop stop = {NULL, NULL};
+    if (hooks != NULL) {
+        stop.requested = hooks->should_stop;
+        stop.context = hooks->context;
+    }
+    return stop;
+}
+
 static void option_row_of(const struct evaluated_option *e,
                           struct option_row *row)
 {
@@ -282,6 +292,7 @@ struct read_job {
     const struct mesh_options *mesh;  /* NULL: the hash's job */
     char *digest;                     /* 65 bytes: the hash in hex */
     struct surface *surface;
+    const struct facet_stop *stop;
     int rc;
     struct facet_error err;
 };
@@ -290,24 +301,32 @@ static void read_run(void *argument)
 {
     struct read_job *job = argument;
     if (job->mesh == NULL)
-        job->rc = sha256_file(job->path, job->digest, &job->err);
+        job->rc = sha256_file_stoppable(job->path, job->stop, job->digest,
+                                        &job->err);
     else
-        job->rc = surface_open(job->path, job->mesh, job->surface,
-                               &job->err);
+        job->rc = surface_open_stoppable(job->path, job->mesh, job->stop,
+                                         job->surface, &job->err);
 }
 
 /* The SHA-256 of path into digest and the surface it holds into *surface
  * (the caller's to release with surface_close, also after a failure).
  * The hash's error comes first: it names the file as it was read. */
 static int read_surface(const char *path, const struct mesh_options *mesh,
-                        char digest[65], struct surface *surface,
-                        struct facet_error *err)
+                        const struct facet_stop *stop, char digest[65],
+                        struct surface *surface, struct facet_error *err)
 {
     struct read_job job[2] = {
-        {path, NULL, digest, NULL, FACET_OK, {0, FACET_SETTING_NONE, ""}},
-        {path, mesh, NULL, surface, FACET_OK, {0, FACET_SETTING_NONE, ""}},
+        {path, NULL, digest, NULL, stop, FACET_OK,
+         {0, FACET_SETTING_NONE, ""}},
+        {path, mesh, NULL, surface, stop, FACET_OK,
+         {0, FACET_SETTING_NONE, ""}},
     };
     parallel_run(job, sizeof *job, 2, read_run);
+    /* A stop heard by either job is the answer: the other's error, if
+     * any, may be only the stop's too. */
+    for (int k = 0; k < 2; k++)
+        if (job[k].rc == FACET_ESTOP)
+            return facet_stop_error(err);
     for (int k = 0; k < 2; k++)
         if (job[k].rc != FACET_OK) {
             *err = job[k].err;
@@ -353,6 +372,16 @@ int study_surface_candidates(const char *db_path, const char *stored,
 int study_open_surface(const struct store *store, const struct run_info *run,
                        struct surface *surface, struct facet_error *err)
 {
+    return study_open_surface_stoppable(store, run, NULL, surface, err);
+}
+
+int study_open_surface_stoppable(const struct store *store,
+                                 const struct run_info *run,
+                                 const struct study_hooks *hooks,
+                                 struct surface *surface,
+                                 struct facet_error *err)
+{
+    struct facet_stop stop = study_stop(hooks);
     struct optimize_settings settings;
     struct mesh_options mesh;
     int flip;
@@ -381,11 +410,11 @@ int study_open_surface(const struct store *store, const struct run_info *run,
         if (access(place[k], F_OK) != 0)
             continue;
         char digest[65];
-        rc = read_surface(place[k], &mesh, digest, surface, err);
+        rc = read_surface(place[k], &mesh, &stop, digest, surface, err);
         if (rc != FACET_OK)
             return rc;
         if (strcmp(digest, run->surface_sha256) == 0)
-            return surface_prepare(surface, flip, uv, err);
+            return surface_prepare_stoppable(surface, flip, uv, &stop, err);
         if (!changed)
             facet_error_about(&first, FACET_SETTING_SURFACE, FACET_EINPUT,
                 "%s: the file has changed since run %lld was made from it "
@@ -833,7 +862,17 @@ static int study_go(struct store *store, struct run_info *run,
     struct panel_lattice *lattice = NULL;
     if (rc == FACET_OK && project == NULL) {
         study_stage(hooks, "dividing the surface along the space's grid lines");
-        rc = optimize_lattice(surface, settings, &lattice, err);
+        struct facet_stop stop = study_stop(hooks);
+        rc = optimize_lattice_stoppable(surface, settings, &stop, &lattice,
+                                        err);
+    }
+    /* Stopped while dividing: the run, recorded, ends interrupted like
+     * one stopped between batches, and resumes. */
+    int stopped = rc == FACET_ESTOP;
+    if (stopped) {
+        facet_error_clear(err);
+        rc = FACET_OK;
+        *outcome = OPTIMIZE_INTERRUPTED;
     }
     /* A run of many options stores them without the indexes by metric
      * and builds those once at its end (store_indexes_defer). */
@@ -845,11 +884,12 @@ static int study_go(struct store *store, struct run_info *run,
     if (rc == FACET_OK)
         rc = store_indexes_defer(store, total - (int64_t)nstored, &deferred,
                                  err);
-    study_stage(hooks, "evaluating options");
-    if (rc == FACET_OK && project != NULL)
+    if (!stopped)
+        study_stage(hooks, "evaluating options");
+    if (rc == FACET_OK && !stopped && project != NULL)
         rc = optimize_run_with(&project->evaluator, settings, stored,
                                nstored, &optimize_hooks, outcome, err);
-    else if (rc == FACET_OK)
+    else if (rc == FACET_OK && !stopped)
         rc = optimize_run(surface, lattice, settings, stored, nstored,
                           &optimize_hooks, outcome, err);
     free(stored);
@@ -973,7 +1013,8 @@ static int surface_read(const struct study_request *request,
                         struct facet_error *err)
 {
     study_stage(hooks, "reading the surface");
-    int rc = read_surface(request->surface_path, &request->mesh,
+    struct facet_stop stop = study_stop(hooks);
+    int rc = read_surface(request->surface_path, &request->mesh, &stop,
                           run->surface_sha256, surface, err);
     size_t named = rc == FACET_OK && !surface->selected
                        ? project_count_named(&surface->obj) : 0;
@@ -983,8 +1024,8 @@ static int surface_read(const struct study_request *request,
             "panel module", request->surface_path, named);
     if (rc == FACET_OK) {
         study_stage(hooks, "preparing the surface (UV, curvature)");
-        rc = surface_prepare(surface, request->flip_normals, request->uv,
-                             err);
+        rc = surface_prepare_stoppable(surface, request->flip_normals,
+                                       request->uv, &stop, err);
     }
     if (rc != FACET_OK)
         return rc;
@@ -1144,7 +1185,8 @@ int study_resume(struct store *store, int64_t run_id,
     if (is_project) {
         study_stage(hooks, "preparing the project's surfaces (UV, curvature)");
         struct surface_grid *overrides = NULL;
-        rc = study_project_reopen(store, &run, &project, &overrides, err);
+        rc = study_project_reopen(store, &run, hooks, &project, &overrides,
+                                  err);
         struct module_range range = {run.module_w_min, run.module_w_max,
                                      run.module_w_step, run.module_h_min,
                                      run.module_h_max, run.module_h_step};
@@ -1154,13 +1196,24 @@ int study_resume(struct store *store, int64_t run_id,
         free(overrides);
     } else {
         study_stage(hooks, "preparing the surface (UV, curvature)");
-        rc = study_open_surface(store, &run, &surface, err);
+        rc = study_open_surface_stoppable(store, &run, hooks, &surface, err);
     }
     if (rc != FACET_OK) {
         /* Given back as it was found, resumable once the surface is. */
         struct facet_error ignored;
         store_run_set_status(store, run_id, RUN_INTERRUPTED, run.elapsed,
                              &ignored);
+    }
+    if (rc == FACET_ESTOP) {
+        /* Stopped while reading: the run is interrupted as it was, and
+         * that is the outcome, not an error. */
+        facet_error_clear(err);
+        rc = FACET_OK;
+        *outcome = OPTIMIZE_INTERRUPTED;
+        project_search_free(&search);
+        project_close(&project);
+        surface_close(&surface);
+        return rc;
     }
     if (rc == FACET_OK) {
         if (hooks != NULL && hooks->started != NULL)

@@ -28,7 +28,10 @@ struct study_hooks {
     void (*stage)(void *context, const char *what);
     /* Options done (stored or reused) of total. */
     void (*progress)(void *context, int64_t done, int64_t total);
-    /* Non-zero when the user asked to stop; checked between batches. */
+    /* Non-zero when the user asked to stop; checked between batches, and
+     * every few milliseconds while the surface is read and prepared, from
+     * several threads at once (core/base/stop.h): it must be cheap and
+     * thread-safe. */
     int (*should_stop)(void *context);
     /* The run's id, once it is recorded (the TUI follows it live). */
     void (*started)(void *context, int64_t run);
@@ -132,13 +135,17 @@ int study_project_space(const struct module_range *range,
 
 /* Runs a new study into store. *run receives its id (0 if it failed
  * before one was recorded), *outcome DONE or INTERRUPTED. Returns
- * FACET_OK, or the first error (the run, if recorded, is then "failed"). */
+ * FACET_OK, or the first error (the run, if recorded, is then "failed").
+ * A stop heard while the surface is read or prepared, before the run is
+ * recorded, returns FACET_ESTOP with *run 0: nothing was stored. */
 int study_start(struct store *store, const struct study_request *request,
                 const struct study_hooks *hooks, int64_t *run,
                 enum optimize_outcome *outcome, struct facet_error *err);
 
 /* Goes on with run (status interrupted or failed; a running run whose
- * writer is alive is refused, a done one too). */
+ * writer is alive is refused, a done one too). A stop heard while its
+ * surface is read gives the run back interrupted: FACET_OK, *outcome
+ * INTERRUPTED. */
 int study_resume(struct store *store, int64_t run,
                  const struct study_hooks *hooks,
                  enum optimize_outcome *outcome, struct facet_error *err);

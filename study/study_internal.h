@@ -13,6 +13,10 @@
 /* Tells hooks (may be NULL) what the study is doing now. */
 void study_stage(const struct study_hooks *hooks, const char *what);
 
+/* The stop that reading and preparing ask (core/base/stop.h): the hooks'
+ * should_stop, or one that never fires. */
+struct facet_stop study_stop(const struct study_hooks *hooks);
+
 /* The places a run's file may be, first first: as stored (absolute since
  * runs record it so; relative to the working folder in older files), then
  * a relative path against the database's folder, then the file's name in
@@ -30,6 +34,7 @@ int study_project_read(const struct study_request *request,
                        const struct study_hooks *hooks,
                        struct project *project, struct surface_row **rows,
                        struct run_info *run, struct facet_error *err);
+/* (FACET_ESTOP, as every reading here, when the hooks' stop fires.) */
 
 /* The search over project's modules that request asks for, its grid
  * overrides found by name (FACET_EINPUT for a name no surface has). */
@@ -46,8 +51,17 @@ int study_project_search(const struct study_request *request,
  * surfaces whatever the module (nu 0: none). Release with project_close
  * and free, also after a failure. */
 int study_project_reopen(struct store *store, const struct run_info *run,
+                         const struct study_hooks *hooks,
                          struct project *project,
                          struct surface_grid **overrides,
                          struct facet_error *err);
+
+/* study_open_surface, asking the hooks' stop while reading and preparing
+ * (FACET_ESTOP when it fires). */
+int study_open_surface_stoppable(const struct store *store,
+                                 const struct run_info *run,
+                                 const struct study_hooks *hooks,
+                                 struct surface *surface,
+                                 struct facet_error *err);
 
 #endif

@@ -16,6 +16,8 @@
 
 #include "core/base/numformat.h"
 #include "core/out/outfile.h"
+#include "merge_side.h"
+#include "study_internal.h"
 
 /* One shard file as read. */
 struct shard_file {
@@ -416,14 +418,15 @@ static int sync_file(const char *path, struct facet_error *err)
     return FACET_OK;
 }
 
-/* Removes path's SQLite side files (-wal, -shm). */
-static void remove_side_files(const char *path)
+/* FACET_ESTOP when the hooks' stop fires: asked between the merge's
+ * steps, each a few seconds at most on shards of a million options, so
+ * that a stopped merge leaves the output as it was and its side file
+ * removed. */
+static int merge_stop(const struct study_hooks *hooks,
+                      struct facet_error *err)
 {
-    char side[4200];
-    snprintf(side, sizeof side, "%s-wal", path);
-    unlink(side);
-    snprintf(side, sizeof side, "%s-shm", path);
-    unlink(side);
+    struct facet_stop stop = study_stop(hooks);
+    return facet_stop_check(&stop, err);
 }
 
 /* The indices of 1..count not in f[0..n) into text, "" when none. */
@@ -625,9 +628,12 @@ static int write_merged(const char *path, const struct shard_file *f, int n,
                                  err);
     for (size_t first = 0; rc == FACET_OK && !project && first < nrows;
          first += chunk)
-        rc = store_options_put(store, run.id, rows + first,
-                               nrows - first < chunk ? nrows - first : chunk,
-                               err);
+        if ((rc = merge_stop(hooks, err)) == FACET_OK)
+            rc = store_options_put(store, run.id, rows + first,
+                                   nrows - first < chunk ? nrows - first
+                                                         : chunk, err);
+    if (rc == FACET_OK && deferred)
+        rc = merge_stop(hooks, err);
     if (rc == FACET_OK && deferred)
         rc = store_indexes_build(store, run.id, NULL, err);
     /* The end of every run: ranks, and the front's panels on the surface
@@ -643,11 +649,19 @@ static int write_merged(const char *path, const struct shard_file *f, int n,
         rc = study_settings(&run, &settings, &mesh, &flip, err);
     /* A project's options keep their surfaces' totals, not panels
      * (study_project_view.h evaluates them again when looked at). */
+    if (rc == FACET_OK)
+        rc = merge_stop(hooks, err);
     if (rc == FACET_OK && run.store_panels != KEEP_NONE && !project) {
         struct facet_error why;
-        if (study_open_surface(store, &run, &surface, &why) == FACET_OK &&
-            optimize_lattice(&surface, &settings, &lattice, &why) ==
-                FACET_OK) {
+        int opened = study_open_surface_stoppable(store, &run, hooks,
+                                                  &surface, &why);
+        if (opened == FACET_OK)
+            opened = merge_stop(hooks, &why);
+        if (opened == FACET_OK)
+            opened = optimize_lattice(&surface, &settings, &lattice, &why);
+        if (opened == FACET_ESTOP) {
+            rc = facet_stop_error(err);
+        } else if (opened == FACET_OK) {
             have_surface = 1;
         } else {
             char text[800];
@@ -661,6 +675,10 @@ static int write_merged(const char *path, const struct shard_file *f, int n,
     if (rc == FACET_OK)
         rc = study_finish(store, &run, have_surface ? &surface : NULL,
                           lattice, &settings, hooks, &outcome, err);
+    /* A merge has no half: stopped while it ranked or stored panels, it
+     * is dropped whole like any other stop. */
+    if (rc == FACET_OK && outcome == OPTIMIZE_INTERRUPTED)
+        rc = facet_stop_error(err);
     panel_lattice_free(lattice);
     surface_close(&surface);
     if (rc == FACET_OK)
@@ -700,8 +718,12 @@ int study_merge(const char *out, const char *const *paths, int nshards,
     struct shard_file *f = calloc((size_t)nshards, sizeof *f);
     if (f == NULL)
         return facet_error_set(err, FACET_EWORK, "out of memory");
+    /* Side files of merges into out that were killed: no one else
+     * removes them. */
+    merge_side_sweep(out);
     for (int k = 0; rc == FACET_OK && k < nshards; k++)
-        rc = read_shard(paths[k], &f[k], err);
+        if ((rc = merge_stop(hooks, err)) == FACET_OK)
+            rc = read_shard(paths[k], &f[k], err);
     if (rc == FACET_OK)
         rc = check_shards(f, nshards, err);
     struct option_row *rows = NULL;
@@ -727,8 +749,11 @@ int study_merge(const char *out, const char *const *paths, int nshards,
                              out);
     }
     int fd = -1;
+    if (rc == FACET_OK)
+        rc = merge_stop(hooks, err);
     if (rc == FACET_OK) {
         unlink(temp);  /* a merge of this pid killed long ago */
+        merge_side_remove_sqlite(temp);
         fd = open(temp, O_WRONLY | O_CREAT | O_EXCL, 0666);
         if (fd < 0) {
             rc = facet_error_set(err, FACET_EINPUT,
@@ -751,15 +776,19 @@ int study_merge(const char *out, const char *const *paths, int nshards,
             rc = store_copy(old, temp, err);
         store_close(old);
     }
-    if (rc == FACET_OK)
+    if (rc == FACET_OK && (rc = merge_stop(hooks, err)) == FACET_OK)
         rc = write_merged(temp, f, nshards, allow_fewer, rows, origin,
                           nrows, hooks, report, err);
     /* Sealed (store_seal), the copy's WAL is empty; unsealed, the copy is
      * dropped whole with its side files below. */
     if (temp[0] != '\0')
-        remove_side_files(temp);
+        merge_side_remove_sqlite(temp);
     if (rc == FACET_OK)
         rc = sync_file(temp, err);
+    /* The last moment a stop is heard: after the rename the merge is
+     * done, and said so. */
+    if (rc == FACET_OK)
+        rc = merge_stop(hooks, err);
     /* Asked again at the last moment: a writer that opened the output
      * while the merge worked would lose its work to the rename too. */
     if (rc == FACET_OK && access(out, F_OK) == 0) {
@@ -774,9 +803,10 @@ int study_merge(const char *out, const char *const *paths, int nshards,
                              "(%s)", out, strerror(errno));
     if (rc == FACET_OK) {
         /* The old file's side files would be taken for the new one's. */
-        remove_side_files(out);
+        merge_side_remove_sqlite(out);
     } else if (temp[0] != '\0') {
         unlink(temp);
+        merge_side_remove_sqlite(temp);
     }
     for (int k = 0; k < nshards; k++) {
         free(f[k].rows);

@@ -17,10 +17,11 @@
 
 /* The SHA-256 of every file of a project, files[0..n), into digest[]. */
 static int project_digests(const char *const *files, size_t n,
+                           const struct facet_stop *stop,
                            char (*digest)[65], struct facet_error *err)
 {
     for (size_t k = 0; k < n; k++) {
-        int rc = sha256_file(files[k], digest[k], err);
+        int rc = sha256_file_stoppable(files[k], stop, digest[k], err);
         if (rc != FACET_OK)
             return rc;
     }
@@ -109,14 +110,17 @@ int study_project_read(const struct study_request *request,
     if (digest == NULL)
         return facet_error_set(err, FACET_EWORK, "out of memory");
     study_stage(hooks, "reading the project");
-    int rc = project_digests(request->files, request->nfiles, digest, err);
+    struct facet_stop stop = study_stop(hooks);
+    int rc = project_digests(request->files, request->nfiles, &stop, digest,
+                             err);
     if (rc == FACET_OK)
-        rc = project_open(request->files, request->nfiles,
-                          request->mesh.units, project, err);
+        rc = project_open_stoppable(request->files, request->nfiles,
+                                    request->mesh.units, &stop, project,
+                                    err);
     if (rc == FACET_OK) {
         study_stage(hooks, "preparing the project's surfaces (UV, curvature)");
-        rc = project_prepare(project, request->flip_normals, request->uv,
-                             err);
+        rc = project_prepare_stoppable(project, request->flip_normals,
+                                       request->uv, &stop, err);
     }
     if (rc == FACET_OK)
         rc = project_rows(project, digest, rows, err);
@@ -192,10 +196,12 @@ int study_project_space(const struct module_range *range,
  * grids the run gave surfaces whatever the module (nu 0: none). Release
  * with project_close and free, also after a failure. */
 int study_project_reopen(struct store *store, const struct run_info *run,
-                          struct project *project,
-                          struct surface_grid **overrides,
-                          struct facet_error *err)
+                         const struct study_hooks *hooks,
+                         struct project *project,
+                         struct surface_grid **overrides,
+                         struct facet_error *err)
 {
+    struct facet_stop stop = study_stop(hooks);
     memset(project, 0, sizeof *project);
     *overrides = NULL;
     struct surface_row *rows;
@@ -226,7 +232,7 @@ int study_project_reopen(struct store *store, const struct run_info *run,
             if (access(candidate[k], F_OK) != 0)
                 continue;
             char digest[65];
-            rc = sha256_file(candidate[k], digest, err);
+            rc = sha256_file_stoppable(candidate[k], &stop, digest, err);
             if (rc == FACET_OK && strcmp(digest, rows[i].file_sha256) == 0) {
                 memcpy(place[nfiles], candidate[k], sizeof candidate[k]);
                 files[nfiles] = place[nfiles];
@@ -245,11 +251,13 @@ int study_project_reopen(struct store *store, const struct run_info *run,
                 rows[i].file, (long long)run->id, rows[i].file_sha256);
     }
     if (rc == FACET_OK)
-        rc = project_open(files, nfiles, run->units, project, err);
+        rc = project_open_stoppable(files, nfiles, run->units, &stop,
+                                    project, err);
     if (rc == FACET_OK)
         rc = store_run_setting_check(run, RUN_SETTING_UV, err);
     if (rc == FACET_OK)
-        rc = project_prepare(project, run->flip_normals, run->uv, err);
+        rc = project_prepare_stoppable(project, run->flip_normals, run->uv,
+                                       &stop, err);
     if (rc == FACET_OK && project->nsurfaces != n)
         rc = facet_error_set(err, FACET_EINPUT,
             "run %lld: its files hold %zu surfaces, the run %zu",

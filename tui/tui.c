@@ -474,7 +474,10 @@ static int poll_job(struct tui_app *app)
     tui_job_free(app->job);
     app->job = NULL;
     app->runs_finished++;  /* every screen of it refreshes */
-    if (st.rc != FACET_OK)
+    if (st.rc == FACET_ESTOP)
+        tui_status(app, "stopped while reading the surface: no run was "
+                   "recorded");
+    else if (st.rc != FACET_OK)
         tui_error(app, "run %lld failed: %s", (long long)st.run,
                   st.err.message);
     else if (st.outcome == OPTIMIZE_INTERRUPTED)

@@ -33,7 +33,10 @@
 enum {
     FACET_OK = 0,
     FACET_EWORK = 1,  /* failure while working: out of memory, I/O error */
-    FACET_EINPUT = 2  /* bad usage or bad input: the user can fix it */
+    FACET_EINPUT = 2, /* bad usage or bad input: the user can fix it */
+    FACET_ESTOP = 3   /* stopped at the caller's request (stop.h): not a
+                         failure; the front-end says what was stopped and
+                         exits as for the signal that asked */
 };
 
 /* The setting a message is about, or whose change puts the error right;

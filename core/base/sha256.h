@@ -10,6 +10,7 @@
 #include <stdint.h>
 
 #include "core/base/error.h"
+#include "core/base/stop.h"
 
 struct sha256 {
     uint32_t state[8];
@@ -26,5 +27,10 @@ void sha256_hex(struct sha256 *h, char hex[65]);
 /* The digest of the file at path, as hex. FACET_EINPUT when it cannot be
  * read. */
 int sha256_file(const char *path, char hex[65], struct facet_error *err);
+
+/* sha256_file, asking stop (stop.h) every few megabytes: FACET_ESTOP when
+ * it fires. */
+int sha256_file_stoppable(const char *path, const struct facet_stop *stop,
+                          char hex[65], struct facet_error *err);
 
 #endif

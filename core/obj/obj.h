@@ -24,6 +24,7 @@
 #include <stdint.h>
 
 #include "core/base/error.h"
+#include "core/base/stop.h"
 
 #define OBJ_NONE UINT32_MAX  /* an absent vt or vn index */
 
@@ -81,6 +82,12 @@ struct obj_file {
  * FACET_EWORK for out of memory or an I/O error, with err naming the
  * file, the line and what is wrong. */
 int obj_load(const char *path, struct obj_file *out, struct facet_error *err);
+
+/* obj_load, asking stop (stop.h) every few milliseconds of reading and
+ * parsing: FACET_ESTOP when it fires, *out then to be released as after
+ * any failure. */
+int obj_load_stoppable(const char *path, const struct facet_stop *stop,
+                       struct obj_file *out, struct facet_error *err);
 
 /* Parses an OBJ held in memory. name is used in error messages only. The
  * text need not be NUL-terminated. Ownership as obj_load. */

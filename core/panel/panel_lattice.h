@@ -25,6 +25,7 @@
 #define FACET_PANEL_LATTICE_H
 
 #include "core/base/error.h"
+#include "core/base/stop.h"
 #include "core/panel/panel.h"
 
 #define PANEL_LATTICE_MAX_NODES 600000
@@ -41,6 +42,15 @@ struct panel_lattice;
 int panel_lattice_build(const struct panel_prep *prep, int u_lo, int u_hi,
                         int v_lo, int v_hi, int jobs,
                         struct panel_lattice **out, struct facet_error *err);
+
+/* panel_lattice_build, asking stop (core/base/stop.h) while it divides
+ * the triangles, the longest of its steps (seconds on ten million
+ * triangles): FACET_ESTOP when it fires, *out NULL. */
+int panel_lattice_build_stoppable(const struct panel_prep *prep, int u_lo,
+                                  int u_hi, int v_lo, int v_hi, int jobs,
+                                  const struct facet_stop *stop,
+                                  struct panel_lattice **out,
+                                  struct facet_error *err);
 
 /* The memory the lattice holds (bytes). */
 size_t panel_lattice_bytes(const struct panel_lattice *lattice);

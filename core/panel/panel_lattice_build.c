@@ -94,7 +94,11 @@ struct divide_job {
     struct lattice_extra *extra;    /* this job's points on lines */
     size_t nextra, capacity;
     int rc;
+    const struct facet_stop *stop;  /* asked every STOP_EVERY triangles */
 };
+
+/* Triangles divided between two questions to the stop: milliseconds. */
+#define STOP_EVERY ((size_t)1 << 15)
 
 static int note_extra(struct divide_job *job, uint32_t point, size_t column,
                       size_t row)
@@ -234,8 +238,14 @@ static void divide_run(void *argument)
     memset(&L->fine[first], 0, cells * sizeof *L->fine);
     memset(&job.fine_pieces[first], 0, cells * sizeof *job.fine_pieces);
     for (size_t t = 0; t < prep->mesh->ntriangles && job.rc == FACET_OK;
-         t++)
+         t++) {
+        if (t % STOP_EVERY == STOP_EVERY - 1 &&
+            facet_stop_requested(job.stop)) {
+            job.rc = FACET_ESTOP;
+            break;
+        }
         job.rc = divide_triangle(&job, (uint32_t)t);
+    }
     *(struct divide_job *)argument = job;
 }
 
@@ -505,6 +515,16 @@ int panel_lattice_build(const struct panel_prep *prep, int u_lo, int u_hi,
                         int v_lo, int v_hi, int jobs,
                         struct panel_lattice **out, struct facet_error *err)
 {
+    return panel_lattice_build_stoppable(prep, u_lo, u_hi, v_lo, v_hi, jobs,
+                                         NULL, out, err);
+}
+
+int panel_lattice_build_stoppable(const struct panel_prep *prep, int u_lo,
+                                  int u_hi, int v_lo, int v_hi, int jobs,
+                                  const struct facet_stop *stop,
+                                  struct panel_lattice **out,
+                                  struct facet_error *err)
+{
     *out = NULL;
     if (jobs < 1)
         jobs = 1;
@@ -598,14 +618,23 @@ int panel_lattice_build(const struct panel_prep *prep, int u_lo, int u_hi,
         divide[k] = (struct divide_job){L, fine_pieces,
             L->nrows * (size_t)k / (size_t)bands,
             L->nrows * (size_t)(k + 1) / (size_t)bands, NULL, 0, 0,
-            FACET_OK};
+            FACET_OK, stop};
     parallel_run(divide, sizeof *divide, bands, divide_run);
-    int rc = FACET_OK;
+    int rc = FACET_OK, stopped = 0;
     size_t nextra = 0;
     for (int k = 0; k < bands; k++) {
-        if (divide[k].rc != FACET_OK)
+        if (divide[k].rc == FACET_ESTOP)
+            stopped = 1;
+        else if (divide[k].rc != FACET_OK)
             rc = divide[k].rc;
         nextra += divide[k].nextra;
+    }
+    if (stopped) {
+        for (int k = 0; k < bands; k++)
+            free(divide[k].extra);
+        free(fine_pieces);
+        panel_lattice_free(L);
+        return facet_stop_error(err);
     }
     L->extra = malloc((nextra ? nextra : 1) * sizeof *L->extra);
     if (L->extra == NULL)
@@ -630,6 +659,11 @@ int panel_lattice_build(const struct panel_prep *prep, int u_lo, int u_hi,
             L->extra[distinct++] = L->extra[e];
     L->nextra = distinct;
 
+    if (facet_stop_requested(stop)) {
+        free(fine_pieces);
+        panel_lattice_free(L);
+        return facet_stop_error(err);
+    }
     /* ...the cuts of each axis's lines, an axis a job... */
     unsigned char *owned = owned_edges(prep);
     if (owned == NULL)

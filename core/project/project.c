@@ -199,7 +199,7 @@ size_t project_count_named(const struct obj_file *obj)
 /* Adds the surfaces of the file path, read into *obj, and frees *obj. */
 static int add_file(struct project *p, size_t *capacity, const char *path,
                     struct obj_file *obj_read, enum mesh_units units,
-                    struct facet_error *err)
+                    const struct facet_stop *stop, struct facet_error *err)
 {
     struct obj_file obj = *obj_read;
     memset(obj_read, 0, sizeof *obj_read);
@@ -228,7 +228,11 @@ static int add_file(struct project *p, size_t *capacity, const char *path,
             break;
         }
         rc = mesh_build_triangles(&obj, units, b.list + b.start[i], count,
-                                  &mesh, err);
+                                  stop, &mesh, err);
+        if (rc == FACET_ESTOP) {
+            mesh_free(&mesh);
+            break;
+        }
         if (rc != FACET_OK) {
             char message[sizeof err->message];
             snprintf(message, sizeof message, "%s", err->message);
@@ -246,15 +250,16 @@ static int add_file(struct project *p, size_t *capacity, const char *path,
 }
 
 static int read_file(struct project *p, size_t *capacity, const char *path,
-                     enum mesh_units units, struct facet_error *err)
+                     enum mesh_units units, const struct facet_stop *stop,
+                     struct facet_error *err)
 {
     struct obj_file obj;
-    int rc = obj_load(path, &obj, err);
+    int rc = obj_load_stoppable(path, stop, &obj, err);
     if (rc != FACET_OK) {
         obj_free(&obj);
         return rc;
     }
-    return add_file(p, capacity, path, &obj, units, err);
+    return add_file(p, capacity, path, &obj, units, stop, err);
 }
 
 static int compare_names(const void *a, const void *b)
@@ -307,6 +312,14 @@ int project_open(const char *const *paths, size_t npaths,
                  enum mesh_units units, struct project *out,
                  struct facet_error *err)
 {
+    return project_open_stoppable(paths, npaths, units, NULL, out, err);
+}
+
+int project_open_stoppable(const char *const *paths, size_t npaths,
+                           enum mesh_units units,
+                           const struct facet_stop *stop,
+                           struct project *out, struct facet_error *err)
+{
     memset(out, 0, sizeof *out);
     assert(npaths >= 1);
     int checked = project_files_check(npaths, err);
@@ -322,7 +335,7 @@ int project_open(const char *const *paths, size_t npaths,
     }
     size_t capacity = 0;
     for (size_t i = 0; i < npaths; i++) {
-        int rc = read_file(out, &capacity, out->files[i], units, err);
+        int rc = read_file(out, &capacity, out->files[i], units, stop, err);
         if (rc != FACET_OK)
             return rc;
     }
@@ -341,7 +354,7 @@ int project_from_obj(const char *path, struct obj_file *obj,
     }
     out->nfiles = 1;
     size_t capacity = 0;
-    return add_file(out, &capacity, out->files[0], obj, units, err);
+    return add_file(out, &capacity, out->files[0], obj, units, NULL, err);
 }
 
 /* One thread's share of project_prepare: surfaces first, first + step,
@@ -351,6 +364,7 @@ struct prepare_job {
     size_t first, step;
     int flip_normals;
     enum param_method method;
+    const struct facet_stop *stop;
     struct parallel_failure failure;  /* the surface that failed */
 };
 
@@ -360,8 +374,9 @@ static void prepare_run(void *argument)
     parallel_failure_clear(&job->failure);
     for (size_t i = job->first; i < job->project->nsurfaces; i += job->step) {
         struct project_surface *s = &job->project->surfaces[i];
-        int rc = surface_prepare(&s->surface, job->flip_normals,
-                                 job->method, &job->failure.err);
+        int rc = surface_prepare_stoppable(&s->surface, job->flip_normals,
+                                           job->method, job->stop,
+                                           &job->failure.err);
         if (rc != FACET_OK) {
             job->failure.piece = i;
             job->failure.rc = rc;
@@ -375,6 +390,15 @@ static void prepare_run(void *argument)
 int project_prepare(struct project *project, int flip_normals,
                     enum param_method method, struct facet_error *err)
 {
+    return project_prepare_stoppable(project, flip_normals, method, NULL,
+                                     err);
+}
+
+int project_prepare_stoppable(struct project *project, int flip_normals,
+                              enum param_method method,
+                              const struct facet_stop *stop,
+                              struct facet_error *err)
+{
     /* Surfaces are independent: dealt round the threads, so that large
      * and small ones mix. The error reported is the first surface's in
      * project order that fails, whatever the threads' timing. */
@@ -383,8 +407,13 @@ int project_prepare(struct project *project, int flip_normals,
                           project->nsurfaces);
     for (int k = 0; k < n; k++)
         jobs[k] = (struct prepare_job){project, (size_t)k, (size_t)n,
-                                       flip_normals, method, {0}};
+                                       flip_normals, method, stop, {0}};
     parallel_run(jobs, sizeof jobs[0], n, prepare_run);
+    /* A stop heard by any thread is the answer: the surface that failed
+     * first in project order may only have been cut short by it. */
+    for (int k = 0; k < n; k++)
+        if (jobs[k].failure.rc == FACET_ESTOP)
+            return facet_stop_error(err);
     return parallel_first_failure(&jobs[0].failure, sizeof jobs[0], n, err);
 }
 

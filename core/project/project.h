@@ -89,6 +89,14 @@ int project_open(const char *const *paths, size_t npaths,
                  enum mesh_units units, struct project *out,
                  struct facet_error *err);
 
+/* project_open, asking stop (stop.h) every few milliseconds of reading
+ * and building: FACET_ESTOP when it fires (release *out with
+ * project_close). */
+int project_open_stoppable(const char *const *paths, size_t npaths,
+                           enum mesh_units units,
+                           const struct facet_stop *stop,
+                           struct project *out, struct facet_error *err);
+
 /* project_open of one file already read into *obj, which it takes over
  * and frees (a command that read the file to see whether it is a project,
  * project_count_named, does not read it again). */
@@ -105,6 +113,13 @@ size_t project_count_named(const struct obj_file *obj);
  * surface's error, which names it. */
 int project_prepare(struct project *project, int flip_normals,
                     enum param_method method, struct facet_error *err);
+
+/* project_prepare, asking stop (surface_prepare_stoppable): FACET_ESTOP
+ * when it fires. */
+int project_prepare_stoppable(struct project *project, int flip_normals,
+                              enum param_method method,
+                              const struct facet_stop *stop,
+                              struct facet_error *err);
 
 /* The surface named name, or NULL. */
 const struct project_surface *project_find(const struct project *project,

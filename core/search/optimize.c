@@ -1022,6 +1022,15 @@ int optimize_lattice(const struct surface *surface,
                      const struct optimize_settings *settings,
                      struct panel_lattice **out, struct facet_error *err)
 {
+    return optimize_lattice_stoppable(surface, settings, NULL, out, err);
+}
+
+int optimize_lattice_stoppable(const struct surface *surface,
+                               const struct optimize_settings *settings,
+                               const struct facet_stop *stop,
+                               struct panel_lattice **out,
+                               struct facet_error *err)
+{
     *out = NULL;
     const struct design_space *space = &settings->space;
     int rc = design_space_check(space, NULL, err);
@@ -1039,9 +1048,10 @@ int optimize_lattice(const struct surface *surface,
         grids = evaluations;
     if (settings->base.mode != PANEL_EXTREMES || grids < LATTICE_MIN_GRIDS)
         return FACET_OK;
-    return panel_lattice_build(&surface->panels, space->u_min, space->u_max,
-                               space->v_min, space->v_max, settings->jobs,
-                               out, err);
+    return panel_lattice_build_stoppable(&surface->panels, space->u_min,
+                                         space->u_max, space->v_min,
+                                         space->v_max, settings->jobs, stop,
+                                         out, err);
 }
 
 int optimize_joint_lines(const struct surface *surface,

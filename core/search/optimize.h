@@ -225,6 +225,14 @@ int optimize_lattice(const struct surface *surface,
                      const struct optimize_settings *settings,
                      struct panel_lattice **out, struct facet_error *err);
 
+/* optimize_lattice, asking stop (core/base/stop.h) while the surface is
+ * divided: FACET_ESTOP when it fires, *out NULL. */
+int optimize_lattice_stoppable(const struct surface *surface,
+                               const struct optimize_settings *settings,
+                               const struct facet_stop *stop,
+                               struct panel_lattice **out,
+                               struct facet_error *err);
+
 /* The joint lines (joint_length.h) of every grid of space, measured once
  * on jobs threads into *out (caller-owned, released with joint_lines_free,
  * also after a failure): what a run with a lattice takes every option's

@@ -924,6 +924,8 @@ struct vertex_job {
     struct curvature *out;
     atomic_size_t *next;         /* the next chunk's first vertex */
     struct workspace ws;
+    const struct facet_stop *stop;  /* asked before each chunk */
+    int stopped;                 /* this job heard it */
 };
 
 enum { VERTEX_CHUNK = 512, VERTEX_THREADS_MAX = 8 };
@@ -933,6 +935,10 @@ static void vertex_job_run(void *argument)
     struct vertex_job *job = argument;
     size_t nv = job->mesh->nvertices;
     for (;;) {
+        if (facet_stop_requested(job->stop)) {
+            job->stopped = 1;
+            break;
+        }
         size_t first = atomic_fetch_add(job->next, VERTEX_CHUNK);
         if (first >= nv)
             break;
@@ -943,17 +949,37 @@ static void vertex_job_run(void *argument)
     }
 }
 
+static int estimate(const struct mesh *mesh, int flip_normals, int jobs,
+                    const struct facet_stop *stop, struct curvature *out,
+                    struct facet_error *err);
+
 int curvature_at_vertices(const struct mesh *mesh, int flip_normals,
                           struct curvature *out, struct facet_error *err)
 {
-    return curvature_at_vertices_jobs(mesh, flip_normals,
-                                      parallel_cpus(VERTEX_THREADS_MAX), out,
-                                      err);
+    return estimate(mesh, flip_normals, parallel_cpus(VERTEX_THREADS_MAX),
+                    NULL, out, err);
 }
 
 int curvature_at_vertices_jobs(const struct mesh *mesh, int flip_normals,
                                int jobs, struct curvature *out,
                                struct facet_error *err)
+{
+    return estimate(mesh, flip_normals, jobs, NULL, out, err);
+}
+
+int curvature_at_vertices_stoppable(const struct mesh *mesh,
+                                    int flip_normals,
+                                    const struct facet_stop *stop,
+                                    struct curvature *out,
+                                    struct facet_error *err)
+{
+    return estimate(mesh, flip_normals, parallel_cpus(VERTEX_THREADS_MAX),
+                    stop, out, err);
+}
+
+static int estimate(const struct mesh *mesh, int flip_normals, int jobs,
+                    const struct facet_stop *stop, struct curvature *out,
+                    struct facet_error *err)
 {
     size_t nv = mesh->nvertices;
 
@@ -987,7 +1013,8 @@ int curvature_at_vertices_jobs(const struct mesh *mesh, int flip_normals,
     int rc = FACET_OK, made = 0;
     for (; made < njobs; made++) {
         job[made] = (struct vertex_job){mesh, flip_normals, out, &next,
-                                        {nv, NULL, 0, NULL, NULL, NULL, NULL}};
+                                        {nv, NULL, 0, NULL, NULL, NULL, NULL},
+                                        stop, 0};
         job[made].ws.mark = calloc(n1, sizeof(uint32_t));
         job[made].ws.points = malloc(POINTS_MAX * sizeof(uint32_t));
         job[made].ws.offset = malloc(3 * POINTS_MAX * sizeof(double));
@@ -1011,6 +1038,9 @@ int curvature_at_vertices_jobs(const struct mesh *mesh, int flip_normals,
         /* Job 0 runs here; one whose thread cannot start runs here after
          * it, and finds every chunk claimed. */
         parallel_run(job, sizeof job[0], njobs, vertex_job_run);
+        for (int k = 0; k < njobs; k++)
+            if (job[k].stopped)
+                rc = facet_stop_error(err);
     }
     for (int k = 0; k < made; k++) {
         free(job[k].ws.mark);

@@ -22,6 +22,7 @@
 #include <stddef.h>
 
 #include "core/base/error.h"
+#include "core/base/stop.h"
 #include "core/surface/mesh.h"
 
 struct curvature {
@@ -48,6 +49,14 @@ int curvature_at_vertices(const struct mesh *mesh, int flip_normals,
 int curvature_at_vertices_jobs(const struct mesh *mesh, int flip_normals,
                                int jobs, struct curvature *out,
                                struct facet_error *err);
+
+/* curvature_at_vertices, asking stop (stop.h) before each chunk of 512
+ * vertices (about a millisecond of work): FACET_ESTOP when it fires. */
+int curvature_at_vertices_stoppable(const struct mesh *mesh,
+                                    int flip_normals,
+                                    const struct facet_stop *stop,
+                                    struct curvature *out,
+                                    struct facet_error *err);
 
 void curvature_free(struct curvature *curvature);
 

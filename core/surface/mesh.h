@@ -19,6 +19,7 @@
 #include <stdint.h>
 
 #include "core/base/error.h"
+#include "core/base/stop.h"
 #include "core/obj/obj.h"
 
 #define MESH_NONE UINT32_MAX  /* no neighbour across a boundary edge */
@@ -94,15 +95,23 @@ const char *mesh_units_name(enum mesh_units u);
 int mesh_build(const struct obj_file *obj, const struct mesh_options *options,
                struct mesh *out, struct facet_error *err);
 
+/* mesh_build, asking stop (stop.h) every few milliseconds: FACET_ESTOP
+ * when it fires. */
+int mesh_build_stoppable(const struct obj_file *obj,
+                         const struct mesh_options *options,
+                         const struct facet_stop *stop, struct mesh *out,
+                         struct facet_error *err);
+
 /* Builds *out, as mesh_build does, from the selected triangles list[0 ..
  * count) of obj (indices into its triangles, in the order the mesh keeps
  * them), with positions in units: how a project builds each of its
  * surfaces from one file read once. FACET_EINPUT when count is 0 or every
- * triangle is degenerate. Release *out with mesh_free, also after a
- * failure. */
+ * triangle is degenerate, FACET_ESTOP when stop (or NULL) fires. Release
+ * *out with mesh_free, also after a failure. */
 int mesh_build_triangles(const struct obj_file *obj, enum mesh_units units,
                          const uint32_t *list, size_t count,
-                         struct mesh *out, struct facet_error *err);
+                         const struct facet_stop *stop, struct mesh *out,
+                         struct facet_error *err);
 
 /* Writes into warning (size bytes) a one-line warning when the bounding box
  * suggests the units are wrong (a 40 km facade is probably millimetres, a

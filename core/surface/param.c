@@ -110,6 +110,7 @@ static double *plane_projection(const struct mesh *mesh)
 
 /* Sets out->uv from per-vertex UV (which it frees) and checks it. */
 static int take_vertex_uv(const struct mesh *mesh, double *vertex_uv,
+                          const struct facet_stop *stop,
                           struct parameterization *out,
                           struct facet_error *err)
 {
@@ -118,11 +119,13 @@ static int take_vertex_uv(const struct mesh *mesh, double *vertex_uv,
     free(vertex_uv);
     if (out->uv == NULL)
         return facet_error_set(err, FACET_EWORK, "out of memory (UV)");
-    return uv_check(out->uv, mesh->ntriangles, &out->report, err);
+    return uv_check_stoppable(out->uv, mesh->ntriangles, stop, &out->report,
+                              err);
 }
 
 /* The file's vt: refused when they fold or form several charts. */
 static int try_vt(const struct mesh *mesh, const char *name,
+                  const struct facet_stop *stop,
                   struct parameterization *out, struct facet_error *err)
 {
     if (!mesh->has_uv)
@@ -133,7 +136,10 @@ static int try_vt(const struct mesh *mesh, const char *name,
     if (out->uv == NULL)
         return facet_error_set(err, FACET_EWORK, "out of memory (UV)");
     memcpy(out->uv, mesh->uv, sizeof(double) * 6 * mesh->ntriangles);
-    int rc = uv_check(out->uv, mesh->ntriangles, &out->report, err);
+    int rc = uv_check_stoppable(out->uv, mesh->ntriangles, stop,
+                                &out->report, err);
+    if (rc == FACET_OK)
+        rc = facet_stop_check(stop, err);
     if (rc != FACET_OK)
         return rc;
     if (folds(&out->report))
@@ -170,6 +176,7 @@ static int try_vt(const struct mesh *mesh, const char *name,
 }
 
 static int try_grid(const struct mesh *mesh, const char *name,
+                    const struct facet_stop *stop,
                     struct parameterization *out, char *why, size_t size,
                     struct facet_error *err)
 {
@@ -182,7 +189,11 @@ static int try_grid(const struct mesh *mesh, const char *name,
     if (rc != FACET_OK)
         return facet_error_set(err, FACET_EINPUT,
             "%s is not a structured quad grid: %s", name, why);
-    rc = take_vertex_uv(mesh, vertex_uv, out, err);
+    if ((rc = facet_stop_check(stop, err)) != FACET_OK) {
+        free(vertex_uv);
+        return rc;
+    }
+    rc = take_vertex_uv(mesh, vertex_uv, stop, out, err);
     if (rc != FACET_OK)
         return rc;
     if (folds(&out->report) || out->report.degenerate > 0)
@@ -199,13 +210,14 @@ static int try_grid(const struct mesh *mesh, const char *name,
 /* The plane projection; refused when it folds or squashes a triangle,
  * with what it did in why. */
 static int try_plane(const struct mesh *mesh, const char *name,
+                     const struct facet_stop *stop,
                      struct parameterization *out, char *why, size_t size,
                      struct facet_error *err)
 {
     double *vertex_uv = plane_projection(mesh);
     if (vertex_uv == NULL)
         return facet_error_set(err, FACET_EWORK, "out of memory (UV)");
-    int rc = take_vertex_uv(mesh, vertex_uv, out, err);
+    int rc = take_vertex_uv(mesh, vertex_uv, stop, out, err);
     if (rc != FACET_OK)
         return rc;
     const struct uv_report *r = &out->report;
@@ -224,17 +236,20 @@ static int try_plane(const struct mesh *mesh, const char *name,
 }
 
 static int try_harmonic(const struct mesh *mesh, const char *name,
+                        const struct facet_stop *stop,
                         struct parameterization *out, char *why, size_t size,
                         struct facet_error *err)
 {
     double *vertex_uv;
-    int rc = param_harmonic(mesh, &vertex_uv, &out->holes, why, size);
+    int rc = param_harmonic(mesh, stop, &vertex_uv, &out->holes, why, size);
     if (rc == FACET_EWORK)
         return facet_error_set(err, FACET_EWORK, "out of memory (UV)");
+    if (rc == FACET_ESTOP)
+        return facet_stop_error(err);
     if (rc != FACET_OK)
         return facet_error_set(err, FACET_EINPUT,
             "%s: no harmonic map: %s", name, why);
-    rc = take_vertex_uv(mesh, vertex_uv, out, err);
+    rc = take_vertex_uv(mesh, vertex_uv, stop, out, err);
     if (rc != FACET_OK)
         return rc;
     if (folds(&out->report)) {
@@ -263,18 +278,26 @@ int param_choose(const struct mesh *mesh, enum param_method want,
                  const char *name, struct parameterization *out,
                  struct facet_error *err)
 {
+    return param_choose_stoppable(mesh, want, name, NULL, out, err);
+}
+
+int param_choose_stoppable(const struct mesh *mesh, enum param_method want,
+                           const char *name, const struct facet_stop *stop,
+                           struct parameterization *out,
+                           struct facet_error *err)
+{
     memset(out, 0, sizeof *out);
     char why[200] = "";
     out->method = want;
     switch (want) {
     case PARAM_VT:
-        return try_vt(mesh, name, out, err);
+        return try_vt(mesh, name, stop, out, err);
     case PARAM_GRID:
-        return try_grid(mesh, name, out, why, sizeof why, err);
+        return try_grid(mesh, name, stop, out, why, sizeof why, err);
     case PARAM_PLANE:
-        return try_plane(mesh, name, out, why, sizeof why, err);
+        return try_plane(mesh, name, stop, out, why, sizeof why, err);
     case PARAM_HARMONIC:
-        return try_harmonic(mesh, name, out, why, sizeof why, err);
+        return try_harmonic(mesh, name, stop, out, why, sizeof why, err);
     default:
         break;
     }
@@ -283,10 +306,10 @@ int param_choose(const struct mesh *mesh, enum param_method want,
      * replaced by a map of Facet's own. */
     if (mesh->has_uv) {
         out->method = PARAM_VT;
-        return try_vt(mesh, name, out, err);
+        return try_vt(mesh, name, stop, out, err);
     }
     out->method = PARAM_GRID;
-    int rc = try_grid(mesh, name, out, why, sizeof why, err);
+    int rc = try_grid(mesh, name, stop, out, why, sizeof why, err);
     if (rc != FACET_EINPUT)
         return rc;
     char not_grid[240];
@@ -295,7 +318,9 @@ int param_choose(const struct mesh *mesh, enum param_method want,
 
     out->method = PARAM_PLANE;
     out->reason[0] = '\0';
-    rc = try_plane(mesh, name, out, why, sizeof why, err);
+    if ((rc = facet_stop_check(stop, err)) != FACET_OK)
+        return rc;
+    rc = try_plane(mesh, name, stop, out, why, sizeof why, err);
     if (rc == FACET_OK) {
         char plane[sizeof out->reason];
         snprintf(plane, sizeof plane, "%s", out->reason);
@@ -311,7 +336,9 @@ int param_choose(const struct mesh *mesh, enum param_method want,
     out->uv = NULL;
     memset(&out->report, 0, sizeof out->report);
     out->method = PARAM_HARMONIC;
-    rc = try_harmonic(mesh, name, out, why, sizeof why, err);
+    if ((rc = facet_stop_check(stop, err)) != FACET_OK)
+        return rc;
+    rc = try_harmonic(mesh, name, stop, out, why, sizeof why, err);
     if (rc == FACET_OK) {
         char harmonic[sizeof out->reason];
         snprintf(harmonic, sizeof harmonic, "%s", out->reason);

@@ -21,6 +21,7 @@
 #define FACET_PARAM_H
 
 #include "core/base/error.h"
+#include "core/base/stop.h"
 #include "core/surface/mesh.h"
 #include "core/surface/uv_index.h"
 
@@ -49,6 +50,13 @@ struct parameterization {
 int param_choose(const struct mesh *mesh, enum param_method want,
                  const char *name, struct parameterization *out,
                  struct facet_error *err);
+
+/* param_choose, asking stop (stop.h) between its steps and at every
+ * iteration of the harmonic solve: FACET_ESTOP when it fires. */
+int param_choose_stoppable(const struct mesh *mesh, enum param_method want,
+                           const char *name, const struct facet_stop *stop,
+                           struct parameterization *out,
+                           struct facet_error *err);
 
 /* "auto", "vt", "grid", "plane" or "harmonic". */
 const char *param_method_name(enum param_method method);

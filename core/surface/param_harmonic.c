@@ -298,9 +298,11 @@ static double dot_n(const double *a, const double *b, size_t n)
 /* Solves A x = b by BiCGSTAB with a Jacobi preconditioner (the mean-value
  * matrix is not symmetric). x holds the initial guess. Returns 0 when it
  * converged to a relative residual under 1e-10, 1 when it did not, -1
- * when out of memory. */
+ * when out of memory, 2 when stop fired (asked every iteration: a few
+ * matrix products, milliseconds even on millions of vertices, where the
+ * whole solve can take minutes). */
 static int solve(const struct mean_value_system *s, const unsigned char *fixed,
-                 const double *b, double *x)
+                 const double *b, double *x, const struct facet_stop *stop)
 {
     size_t n = s->n;
     double *work = malloc(sizeof(double) * 8 * (n ? n : 1));
@@ -320,6 +322,10 @@ static int solve(const struct mean_value_system *s, const unsigned char *fixed,
         norm_b = 1;
     int status = 1;
     for (int iteration = 0; iteration < 20000; iteration++) {
+        if (facet_stop_requested(stop)) {
+            status = 2;
+            break;
+        }
         if (sqrt(dot_n(r, r, n)) <= 1e-10 * norm_b) {
             status = 0;
             break;
@@ -383,8 +389,9 @@ static int is_holed_disk(const struct mesh *mesh, char *why, size_t size)
     return 1;
 }
 
-int param_harmonic(const struct mesh *mesh, double **vertex_uv_out,
-                   size_t *holes, char *why, size_t size)
+int param_harmonic(const struct mesh *mesh, const struct facet_stop *stop,
+                   double **vertex_uv_out, size_t *holes, char *why,
+                   size_t size)
 {
     *vertex_uv_out = NULL;
     *holes = 0;
@@ -433,9 +440,13 @@ int param_harmonic(const struct mesh *mesh, double **vertex_uv_out,
             b[i] = sum;
             x[i] = 0;
         }
-        int solved = solve(&system, fixed, b, x);
+        int solved = solve(&system, fixed, b, x, stop);
         if (solved < 0)
             goto done;
+        if (solved == 2) {
+            rc = FACET_ESTOP;
+            goto done;
+        }
         if (solved > 0) {
             snprintf(why, size, "the harmonic parameterization did not "
                      "converge");

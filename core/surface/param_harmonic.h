@@ -17,6 +17,7 @@
 
 #include <stddef.h>
 
+#include "core/base/stop.h"
 #include "core/surface/mesh.h"
 
 /* Computes per-vertex (u, v) for mesh into *vertex_uv (#V x 2, malloc'ed,
@@ -24,8 +25,9 @@
  * Returns FACET_OK; FACET_EINPUT when the surface is not a disk with holes
  * (several pieces, closed, non-manifold, a handle) or the solve did not
  * converge, with why (size bytes) saying which; FACET_EWORK when out of
- * memory. */
-int param_harmonic(const struct mesh *mesh, double **vertex_uv,
-                   size_t *holes, char *why, size_t size);
+ * memory; FACET_ESTOP when stop (stop.h, or NULL) fired. */
+int param_harmonic(const struct mesh *mesh, const struct facet_stop *stop,
+                   double **vertex_uv, size_t *holes, char *why,
+                   size_t size);
 
 #endif

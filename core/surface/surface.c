@@ -88,22 +88,43 @@ int surface_from_mesh(const char *path, enum mesh_units units,
     return check_mesh(out, err);
 }
 
+static int from_obj(const char *path, struct obj_file *obj,
+                    const struct mesh_options *options,
+                    const struct facet_stop *stop, struct surface *out,
+                    struct facet_error *err);
+
 int surface_open(const char *path, const struct mesh_options *options,
                  struct surface *out, struct facet_error *err)
 {
+    return surface_open_stoppable(path, options, NULL, out, err);
+}
+
+int surface_open_stoppable(const char *path,
+                           const struct mesh_options *options,
+                           const struct facet_stop *stop,
+                           struct surface *out, struct facet_error *err)
+{
     struct obj_file obj;
-    int rc = obj_load(path, &obj, err);
+    int rc = obj_load_stoppable(path, stop, &obj, err);
     if (rc != FACET_OK) {
         obj_free(&obj);
         memset(out, 0, sizeof *out);
         return rc;
     }
-    return surface_from_obj(path, &obj, options, out, err);
+    return from_obj(path, &obj, options, stop, out, err);
 }
 
 int surface_from_obj(const char *path, struct obj_file *obj,
                      const struct mesh_options *options,
                      struct surface *out, struct facet_error *err)
+{
+    return from_obj(path, obj, options, NULL, out, err);
+}
+
+static int from_obj(const char *path, struct obj_file *obj,
+                    const struct mesh_options *options,
+                    const struct facet_stop *stop, struct surface *out,
+                    struct facet_error *err)
 {
     memset(out, 0, sizeof *out);
     out->obj = *obj;
@@ -113,7 +134,9 @@ int surface_from_obj(const char *path, struct obj_file *obj,
     out->path = strdup(path);
     if (out->path == NULL)
         return facet_error_set(err, FACET_EWORK, "out of memory");
-    int rc = mesh_build(&out->obj, options, &out->mesh, err);
+    int rc = mesh_build_stoppable(&out->obj, options, stop, &out->mesh, err);
+    if (rc == FACET_ESTOP)
+        return rc;
     if (rc != FACET_OK) {
         /* mesh errors do not know the file name; add it. */
         char message[sizeof err->message];
@@ -174,33 +197,41 @@ int surface_require_single(const struct surface *surface,
 int surface_prepare(struct surface *surface, int flip_normals,
                     enum param_method uv, struct facet_error *err)
 {
+    return surface_prepare_stoppable(surface, flip_normals, uv, NULL, err);
+}
+
+int surface_prepare_stoppable(struct surface *surface, int flip_normals,
+                              enum param_method uv,
+                              const struct facet_stop *stop,
+                              struct facet_error *err)
+{
     int rc = surface_require_single(surface, err);
     if (rc != FACET_OK)
         return rc;
-    rc = param_choose(&surface->mesh, uv, surface->path, &surface->param,
-                      err);
+    rc = param_choose_stoppable(&surface->mesh, uv, surface->path, stop,
+                                &surface->param, err);
     if (rc != FACET_OK)
         return rc;
     if (surface->param.report.degenerate > 0)
         warn(surface, "%zu triangles have no extent in UV and add no area "
              "to any panel", surface->param.report.degenerate);
-    rc = uv_index_build(surface->param.uv, surface->mesh.ntriangles,
-                        &surface->uv, err);
-    if (rc != FACET_OK)
-        return rc;
-    rc = curvature_at_vertices(&surface->mesh, flip_normals,
-                               &surface->curvature, err);
-    if (rc != FACET_OK)
-        return rc;
-    rc = panel_prep_build(&surface->mesh, &surface->uv, &surface->curvature,
-                          &surface->panels, err);
-    if (rc != FACET_OK)
-        return rc;
-    rc = joint_prep_build(&surface->mesh, &surface->uv, &surface->joints,
-                          err);
-    if (rc != FACET_OK)
-        return rc;
-    rc = fit_points_build(&surface->panels, &surface->fit, err);
+    /* Each step below takes up to a second or two on ten million
+     * triangles; the stop is asked between them (and within the
+     * curvature, the longest). */
+    if ((rc = facet_stop_check(stop, err)) == FACET_OK)
+        rc = uv_index_build(surface->param.uv, surface->mesh.ntriangles,
+                            &surface->uv, err);
+    if (rc == FACET_OK)
+        rc = curvature_at_vertices_stoppable(&surface->mesh, flip_normals,
+                                             stop, &surface->curvature, err);
+    if (rc == FACET_OK && (rc = facet_stop_check(stop, err)) == FACET_OK)
+        rc = panel_prep_build(&surface->mesh, &surface->uv,
+                              &surface->curvature, &surface->panels, err);
+    if (rc == FACET_OK && (rc = facet_stop_check(stop, err)) == FACET_OK)
+        rc = joint_prep_build(&surface->mesh, &surface->uv, &surface->joints,
+                              err);
+    if (rc == FACET_OK && (rc = facet_stop_check(stop, err)) == FACET_OK)
+        rc = fit_points_build(&surface->panels, &surface->fit, err);
     if (rc != FACET_OK)
         return rc;
     surface->prepared = 1;

@@ -50,6 +50,14 @@ struct surface {
 int surface_open(const char *path, const struct mesh_options *options,
                  struct surface *out, struct facet_error *err);
 
+/* surface_open, asking stop (stop.h) every few milliseconds of reading and
+ * building: FACET_ESTOP when it fires. A command its user can interrupt
+ * reads with this one. */
+int surface_open_stoppable(const char *path,
+                           const struct mesh_options *options,
+                           const struct facet_stop *stop,
+                           struct surface *out, struct facet_error *err);
+
 /* surface_open of a file already read into *obj, which it takes over
  * (and zeroes). */
 int surface_from_obj(const char *path, struct obj_file *obj,
@@ -82,6 +90,14 @@ int surface_require_single(const struct surface *surface,
  * error; surface_close releases what it made. */
 int surface_prepare(struct surface *surface, int flip_normals,
                     enum param_method uv, struct facet_error *err);
+
+/* surface_prepare, asking stop (stop.h) between its steps and within the
+ * long ones (UV, curvature): FACET_ESTOP when it fires; surface_close
+ * releases what was made. */
+int surface_prepare_stoppable(struct surface *surface, int flip_normals,
+                              enum param_method uv,
+                              const struct facet_stop *stop,
+                              struct facet_error *err);
 
 void surface_close(struct surface *surface);
 

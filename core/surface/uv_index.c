@@ -257,6 +257,8 @@ struct overlap_job {
     double tiny_area, tolerance;
     int j0, j1;
     size_t overlapping;   /* out: the overlapping pairs found */
+    const struct facet_stop *stop;  /* asked before each row of cells */
+    int stopped;          /* out: it fired */
 };
 
 enum { OVERLAP_THREADS_MAX = 8, OVERLAP_THREADS_FROM = 20000 };
@@ -266,7 +268,11 @@ static void overlap_rows(void *argument)
     struct overlap_job *job = argument;
     const struct uv_index *index = job->index;
     const double *uv = job->uv;
-    for (int j = job->j0; j < job->j1; j++)
+    for (int j = job->j0; j < job->j1; j++) {
+        if (facet_stop_requested(job->stop)) {
+            job->stopped = 1;
+            return;
+        }
         for (int i = 0; i < index->ncells_u; i++) {
             size_t c = (size_t)j * index->ncells_u + i;
             for (uint32_t x = index->cell_start[c];
@@ -299,10 +305,18 @@ static void overlap_rows(void *argument)
                 }
             }
         }
+    }
 }
 
 int uv_check(const double *uv, size_t ntriangles, struct uv_report *report,
              struct facet_error *err)
+{
+    return uv_check_stoppable(uv, ntriangles, NULL, report, err);
+}
+
+int uv_check_stoppable(const double *uv, size_t ntriangles,
+                       const struct facet_stop *stop,
+                       struct uv_report *report, struct facet_error *err)
 {
     memset(report, 0, sizeof *report);
     report->triangles = ntriangles;
@@ -345,8 +359,13 @@ int uv_check(const double *uv, size_t ntriangles, struct uv_report *report,
     for (int k = 0; k < njobs; k++)
         job[k] = (struct overlap_job){&index, uv, tiny_area, tolerance,
             (int)((long)index.ncells_v * k / njobs),
-            (int)((long)index.ncells_v * (k + 1) / njobs), 0};
+            (int)((long)index.ncells_v * (k + 1) / njobs), 0, stop, 0};
     parallel_run(job, sizeof job[0], njobs, overlap_rows);
+    for (int k = 0; k < njobs; k++)
+        if (job[k].stopped) {
+            uv_index_free(&index);
+            return facet_stop_error(err);
+        }
     for (int k = 1; k < njobs; k++)
         job[0].overlapping += job[k].overlapping;
     report->overlapping = job[0].overlapping;

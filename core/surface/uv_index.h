@@ -16,6 +16,7 @@
 #include <stdint.h>
 
 #include "core/base/error.h"
+#include "core/base/stop.h"
 
 struct uv_index {
     const double *uv;          /* #T x 3 x 2 per-corner (u, v), borrowed */
@@ -93,5 +94,11 @@ struct uv_report {
  * for a non-finite UV value, FACET_EWORK when out of memory. */
 int uv_check(const double *uv, size_t ntriangles, struct uv_report *report,
              struct facet_error *err);
+
+/* uv_check, asking stop (stop.h) before each row of the lookup's cells:
+ * FACET_ESTOP when it fires. */
+int uv_check_stoppable(const double *uv, size_t ntriangles,
+                       const struct facet_stop *stop,
+                       struct uv_report *report, struct facet_error *err);
 
 #endif

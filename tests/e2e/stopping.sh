@@ -1,0 +1,250 @@
+#!/usr/bin/env bash
+# End-to-end: Ctrl-C and SIGTERM are heard in every phase (issue 28, item
+# 10). A run stopped while it reads or prepares a large surface (tens of
+# MB, made here) exits within 2 s with 128 + the signal, says so in one
+# line and records no run; a project of several files too; a second signal
+# kills at once. A merge stopped midway removes its side file and leaves
+# OUT.db as it was, byte for byte; a later merge removes the side files of
+# merges that are gone, and only those.
+# layers: core study store cli
+. "$(dirname "$0")/lib.sh"
+sql() { sqlite3 -batch "$1" "$2"; }
+now() { date +%s.%N; }
+
+# grid_obj N FILE: an N x N quad grid with vt, 10 m square, gently curved.
+grid_obj() {
+    python3 - "$1" "$2" <<'EOF'
+import math, sys
+n, out = int(sys.argv[1]), sys.argv[2]
+with open(out, 'w') as f:
+    w = f.write
+    for j in range(n + 1):
+        w(''.join('v %.6f %.6f %.6f\n' % (i * 10.0 / n, j * 10.0 / n,
+              0.3 * math.sin(i * 3.0 / n) * math.cos(j * 2.0 / n))
+              for i in range(n + 1)))
+    for j in range(n + 1):
+        w(''.join('vt %.6f %.6f\n' % (i / n, j / n) for i in range(n + 1)))
+    m = n + 1
+    for j in range(n):
+        w(''.join('f %d/%d %d/%d %d/%d %d/%d\n' % (a, a, a + 1, a + 1,
+              a + m + 1, a + m + 1, a + m, a + m)
+              for a in (j * m + i + 1 for i in range(n))))
+EOF
+}
+
+# wait_for FILE PID: until FILE exists (the database: the stop handler is
+# installed right after it is opened), or PID is gone, at most 60 s.
+wait_for() {
+    local tries=0
+    while [ ! -e "$1" ] && kill -0 "$2" 2>/dev/null && [ "$tries" -lt 1200 ]; do
+        sleep 0.05
+        tries=$((tries + 1))
+    done
+}
+
+# stop_after PID SIGNAL DELAY: sends SIGNAL DELAY s from now and waits for
+# PID; sets STATUS and LATENCY (seconds from the signal to the exit). A
+# process still running 60 s after the signal is killed (status 137).
+stop_after() {
+    sleep "$3"
+    local sent tries=0
+    sent=$(now)
+    kill -"$2" "$1" 2>/dev/null
+    while kill -0 "$1" 2>/dev/null && [ "$tries" -lt 1200 ]; do
+        sleep 0.02
+        tries=$((tries + 1))
+    done
+    kill -KILL "$1" 2>/dev/null
+    wait "$1"
+    STATUS=$?
+    LATENCY=$(echo "$(now) - $sent" | bc)
+}
+
+# within NAME SECONDS: the last stop_after's process exited within SECONDS.
+within() {
+    if [ "$(echo "$LATENCY <= $2" | bc)" = 1 ]; then
+        pass "$1 (${LATENCY} s)"
+    else
+        fail "$1 (took ${LATENCY} s, want at most $2 s)"
+    fi
+}
+
+# 800 x 800 quads: about 70 MB, some seconds to read and prepare.
+grid_obj 800 "$WORK/big.obj" || exit 1
+SMALL=(--u 20:20 --v 20:20 --table 0)
+
+# --- optimize: SIGINT while the surface is read
+"$FACET" optimize "$WORK/big.obj" --db "$WORK/read.db" "${SMALL[@]}" >"$OUT" 2>"$ERR" &
+pid=$!
+wait_for "$WORK/read.db" "$pid"
+stop_after "$pid" INT 0.5
+same "SIGINT while reading: exit status 130" "$STATUS" 130
+within "SIGINT while reading: exits within 2 s" 2
+if [ "$(wc -l <"$ERR")" -eq 1 ] && grep -q "interrupted while reading.*no run was recorded" "$ERR"; then
+    pass "SIGINT while reading: one line says nothing was recorded"
+else
+    fail "SIGINT while reading: one line says nothing was recorded"
+fi
+same "SIGINT while reading: no run recorded" "$(sql "$WORK/read.db" 'SELECT count(*) FROM runs')" 0
+same "SIGINT while reading: integrity ok" "$(sql "$WORK/read.db" 'PRAGMA integrity_check')" ok
+
+# --- optimize: SIGTERM later, while the surface is prepared (UV,
+# curvature) or still read on a slow machine: the same
+"$FACET" optimize "$WORK/big.obj" --db "$WORK/prep.db" "${SMALL[@]}" >"$OUT" 2>"$ERR" &
+pid=$!
+wait_for "$WORK/prep.db" "$pid"
+stop_after "$pid" TERM 2.5
+same "SIGTERM while preparing: exit status 143" "$STATUS" 143
+within "SIGTERM while preparing: exits within 2 s" 2
+same "SIGTERM while preparing: no run recorded" "$(sql "$WORK/prep.db" 'SELECT count(*) FROM runs')" 0
+expect "the database stopped in is usable: a run into it" 0 "$FACET" optimize "$WORK/big.obj" --db "$WORK/prep.db" "${SMALL[@]}"
+same "that run is done" "$(sql "$WORK/prep.db" 'SELECT id, status FROM runs')" "1|done"
+
+# --- a project of several files: the same path
+grid_obj 400 "$WORK/east.obj" && grid_obj 400 "$WORK/west.obj" || exit 1
+"$FACET" optimize "$WORK/east.obj" "$WORK/west.obj" "$WORK/big.obj" --module 2x2 --db "$WORK/project.db" --table 0 >"$OUT" 2>"$ERR" &
+pid=$!
+wait_for "$WORK/project.db" "$pid"
+stop_after "$pid" INT 1.5
+same "project: SIGINT while reading: exit status 130" "$STATUS" 130
+within "project: SIGINT while reading: exits within 2 s" 2
+same "project: no run recorded" "$(sql "$WORK/project.db" 'SELECT count(*) FROM runs')" 0
+
+# --- a second signal kills at once: SIGINT and SIGTERM arrive together
+# (sent while the process is stopped); the first asks for a stop, the
+# second finds the default action back and kills (Python tells a death by
+# a signal, -15, from an exit with status 143)
+got=$(python3 - "$FACET" "$WORK/big.obj" "$WORK/twice.db" <<'EOF'
+import os, signal, subprocess, sys, time
+facet, obj, db = sys.argv[1:]
+p = subprocess.Popen([facet, 'optimize', obj, '--db', db, '--u', '20:20',
+                      '--v', '20:20', '--table', '0'],
+                     stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+for _ in range(1200):
+    if os.path.exists(db) or p.poll() is not None:
+        break
+    time.sleep(0.05)
+time.sleep(0.5)
+p.send_signal(signal.SIGSTOP)
+p.send_signal(signal.SIGINT)
+p.send_signal(signal.SIGTERM)
+p.send_signal(signal.SIGCONT)
+try:
+    print(p.wait(timeout=60))
+except subprocess.TimeoutExpired:
+    p.kill()
+    print('hung')
+EOF
+)
+same "a second signal kills at once (killed by SIGTERM)" "$got" -15
+same "killed so, the database is sound" "$(sql "$WORK/twice.db" 'PRAGMA integrity_check')" ok
+
+# --- SIGINT while the run, recorded, divides the surface along the grid
+# lines of the paper's space (seconds on this surface), before the
+# search: the run ends interrupted, at once. The stage shows on a
+# terminal only: the run is given one (a pty).
+got=$(python3 - "$FACET" "$WORK/big.obj" "$WORK/divide.db" <<'EOF'
+import os, pty, select, signal, sys, time
+facet, obj, db = sys.argv[1:]
+pid, fd = pty.fork()
+if pid == 0:
+    os.execv(facet, [facet, 'optimize', obj, '--db', db, '--table', '0'])
+seen, sent, status, deadline = b'', None, None, time.time() + 300
+while status is None and time.time() < deadline:
+    if select.select([fd], [], [], 0.05)[0]:
+        try:
+            seen += os.read(fd, 4096)
+        except OSError:
+            pass
+    if sent is None and b'dividing the surface' in seen:
+        time.sleep(0.2)
+        sent = time.time()
+        os.kill(pid, signal.SIGINT)
+    done, code = os.waitpid(pid, os.WNOHANG)
+    if done:
+        status = os.waitstatus_to_exitcode(code)
+if status is None:
+    os.kill(pid, signal.SIGKILL)
+    os.waitpid(pid, 0)
+print('never divided' if sent is None else
+      '%s %.2f' % (status, time.time() - sent))
+EOF
+)
+read -r STATUS LATENCY <<<"$got"
+same "SIGINT while dividing: exit status 130" "$STATUS" 130
+within "SIGINT while dividing: exits within 2 s" 2
+same "SIGINT while dividing: the run is interrupted, resumable" \
+    "$(sql "$WORK/divide.db" 'SELECT status FROM runs')" interrupted
+
+# --- merge: shards large enough that the merge takes seconds
+"$FACET" example plane --res 2 -o "$WORK/plane.obj" || exit 1
+SPACE=(--u 1:20 --v 1:20 --threshold 1:20:0.1 --method exhaustive --store-panels none --table 0)
+for i in 1 2; do
+    "$FACET" optimize "$WORK/plane.obj" --db "$WORK/s$i.db" "${SPACE[@]}" --shard "$i/2" >/dev/null 2>"$ERR" ||
+        { fail "shard $i/2 ran"; exit 1; }
+done
+# OUT.db holds another run already: it must come out of a stopped merge
+# byte for byte as it was.
+"$FACET" optimize "$WORK/plane.obj" --db "$WORK/out.db" --u 2:3 --v 2:3 --table 0 >/dev/null 2>&1
+before=$(sha256sum <"$WORK/out.db")
+
+# merge_stopped SIGNAL STATUS: a merge into out.db stopped by SIGNAL once
+# its side file exists.
+merge_stopped() {
+    "$FACET" merge "$WORK/out.db" "$WORK/s1.db" "$WORK/s2.db" >"$OUT" 2>"$ERR" &
+    local pid=$! tries=0
+    while ! ls "$WORK"/out.db.merge-* >/dev/null 2>&1 && kill -0 "$pid" 2>/dev/null &&
+        [ "$tries" -lt 1200 ]; do
+        sleep 0.02
+        tries=$((tries + 1))
+    done
+    stop_after "$pid" "$1" 0.3
+    same "merge, $1: exit status $2" "$STATUS" "$2"
+    within "merge, $1: exits within 2 s" 2
+    if [ "$(wc -l <"$ERR")" -eq 1 ] && grep -q "merge interrupted; .*out.db is as it was" "$ERR"; then
+        pass "merge, $1: one line says so"
+    else
+        fail "merge, $1: one line says so"
+    fi
+    same "merge, $1: no side file left" "$(ls "$WORK" | grep -c 'out\.db\.merge-')" 0
+    same "merge, $1: OUT.db unchanged (SHA-256)" "$(sha256sum <"$WORK/out.db")" "$before"
+}
+merge_stopped INT 130
+merge_stopped TERM 143
+
+# --- stale side files: one of a process that is gone (a pid spawned and
+# reaped), one whose pid now belongs to a process started after the file
+# last changed (a reused pid), and one of a live process (kept)
+dead=$(sh -c 'echo $$')
+echo "stale" >"$WORK/out.db.merge-$dead"
+echo "stale wal" >"$WORK/out.db.merge-$dead-wal"
+sleep 60 &
+live=$!
+echo "live" >"$WORK/out.db.merge-$live"
+sleep 60 &
+reused=$!
+echo "reused" >"$WORK/out.db.merge-$reused"
+touch -d '1 hour ago' "$WORK/out.db.merge-$reused"
+echo "not a side file" >"$WORK/out.db.merge-notes"
+expect "a merge after them" 0 "$FACET" merge "$WORK/out.db" "$WORK/s1.db" "$WORK/s2.db"
+same "the dead merge's side file is removed, its -wal too" \
+    "$(ls "$WORK" | grep -c "^out\.db\.merge-$dead")" 0
+if [ -e "$WORK/out.db.merge-$live" ]; then
+    pass "a live process's side file is kept"
+else
+    fail "a live process's side file is kept"
+fi
+if [ -r /proc/$reused/stat ]; then
+    same "a side file older than the process with its pid is removed" \
+        "$(ls "$WORK" | grep -c "^out\.db\.merge-$reused")" 0
+else
+    skip "a side file older than the process with its pid is removed" "no /proc here"
+fi
+if [ -e "$WORK/out.db.merge-notes" ]; then
+    pass "a file of another name is kept"
+else
+    fail "a file of another name is kept"
+fi
+kill "$live" "$reused" 2>/dev/null
+wait "$live" "$reused" 2>/dev/null
+same "the merged run is there beside the other" "$(sql "$WORK/out.db" 'SELECT count(*) FROM runs')" 2
