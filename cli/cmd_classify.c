@@ -4,7 +4,6 @@
  * class, type, area, deviation and cost, and the option's totals.
  */
 #include <errno.h>
-#include <limits.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -16,41 +15,10 @@
 #include "shown.h"
 #include "core/surface/coarse_mesh.h"
 #include "core/base/numparse.h"
+#include "core/base/numrange.h"
 #include "core/classify/option.h"
 #include "core/out/outfile.h"
 #include "core/out/report.h"
-
-/* Parses "37x49" into nu, nv, each side read as written (4294967297x5 is
- * out of range, not 1x5). */
-static int parse_grid(const char *text, int *nu, int *nv,
-                      struct facet_error *err)
-{
-    if (text == NULL)
-        return facet_error_set(err, FACET_EINPUT,
-            "classify: give the grid, e.g. --grid 37x49");
-    const char *end = text + strlen(text), *stop;
-    long long a = 0, b = 0;
-    int rc = numparse_whole(text, end, 0, LLONG_MAX, &a, &stop);
-    if (rc != NUMPARSE_SYNTAX && (*stop == 'x' || *stop == 'X'))
-        rc = rc == NUMPARSE_RANGE
-                 ? NUMPARSE_RANGE
-                 : numparse_whole(stop + 1, end, 0, LLONG_MAX, &b, &stop);
-    else if (rc == NUMPARSE_OK)
-        rc = NUMPARSE_SYNTAX;
-    if (rc == NUMPARSE_OK && stop != end)
-        rc = NUMPARSE_SYNTAX;
-    if (rc == NUMPARSE_SYNTAX)
-        return facet_error_set(err, FACET_EINPUT,
-            "--grid: '%s' is not NUxNV (e.g. 37x49)", text);
-    if (rc == NUMPARSE_RANGE || a < 1 || b < 1 || a > PANEL_MAX_GRID ||
-        b > PANEL_MAX_GRID)
-        return facet_error_set(err, FACET_EINPUT,
-            "--grid: %s is out of range (each side 1 to %d)", text,
-            PANEL_MAX_GRID);
-    *nu = (int)a;
-    *nv = (int)b;
-    return FACET_OK;
-}
 
 static void print_human(const struct surface *s,
                         const struct option_params *params,
@@ -141,12 +109,16 @@ static int classify_run(int argc, char **argv, struct facet_error *err)
     if ((rc = classify_flags_apply(&flags, &params, &mesh_options, &uv,
                                    err)))
         return rc;
-    if ((rc = parse_grid(grid, &params.nu, &params.nv, err)) != FACET_OK)
+    if (grid == NULL)
+        return facet_error_set(err, FACET_EINPUT,
+            "classify: give the grid, e.g. --grid 37x49");
+    if ((rc = numrange_grid(grid, PANEL_MAX_GRID, "--grid", &params.nu,
+                            &params.nv, err)))
         return rc;
     if (threshold) {
         double number;
-        if ((rc = numparse_number(threshold, 0, 1e6, "--threshold",
-                                  &number, err)))
+        if ((rc = numparse_number(threshold, 0, CLASSIFY_THRESHOLD_MAX_MM,
+                                  "--threshold", &number, err)))
             return rc;
         params = option_params_at(&params, params.nu, params.nv, number);
     }

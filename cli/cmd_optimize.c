@@ -20,6 +20,7 @@
 #include "run_table.h"
 #include "signals.h"
 #include "core/base/numformat.h"
+#include "core/base/numrange.h"
 #include "core/obj/infile.h"
 #include "core/project/module.h"
 #include "study/study.h"
@@ -158,23 +159,18 @@ static int grid_overrides_parse(const char *text, struct grid_overrides *g,
         if (next != NULL)
             *next++ = '\0';
         char *equals = strrchr(item, '=');
-        char *x = equals ? strchr(equals + 1, 'x') : NULL;
-        long nu = 0, nv = 0;
-        struct facet_error ignored;
-        if (equals == NULL || equals == item || x == NULL ||
-            g->n == GRID_OVERRIDES_MAX)
+        if (equals == NULL || equals == item || g->n == GRID_OVERRIDES_MAX)
             return facet_error_set(err, FACET_EINPUT,
                 "--grid: '%s' is not NAME=NUxNV (e.g. roof_3=12x40)", item);
         *equals = '\0';
-        *x = '\0';
-        if (args_int(equals + 1, 1, PANEL_MAX_GRID, "--grid", &nu,
-                     &ignored) ||
-            args_int(x + 1, 1, PANEL_MAX_GRID, "--grid", &nv, &ignored))
-            return facet_error_set(err, FACET_EINPUT,
-                "--grid: '%s' needs a grid NUxNV of whole numbers 1 to %d",
-                item, PANEL_MAX_GRID);
+        char what[160];
+        snprintf(what, sizeof what, "--grid %.140s", item);
+        int nu, nv, rc = numrange_grid(equals + 1, PANEL_MAX_GRID, what, &nu,
+                                       &nv, err);
+        if (rc != FACET_OK)
+            return rc;
         g->name[g->n] = item;
-        g->grid[g->n++] = (struct surface_grid){(int)nu, (int)nv};
+        g->grid[g->n++] = (struct surface_grid){nu, nv};
         item = next;
     }
     return FACET_OK;

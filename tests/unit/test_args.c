@@ -10,6 +10,7 @@
 #include <string.h>
 
 #include "cli/args.h"
+#include "cli/command.h"
 
 static void test_forms(void **state)
 {
@@ -112,6 +113,32 @@ static void test_shared_table(void **state)
     assert_non_null(strstr(err.message, "did you mean --flip-normals?"));
 }
 
+/* A project surface's own grid is a grid as facet classify reads one:
+ * 12X40 and 12 x 40 are 12x40 there too. */
+static void test_grid_override(void **state)
+{
+    (void)state;
+    const char *good[] = {"roof_3=12x40", "roof_3=12X40", "roof_3=12 x 40",
+                          "a=1x2,b=3X4"};
+    for (size_t k = 0; k < sizeof good / sizeof *good; k++) {
+        char *argv[] = {"optimize", "skin.obj", "--db", "runs.db",
+                        "--module", "1.2x1.0", "--grid", (char *)good[k]};
+        struct facet_error err;
+        if (optimize_args_check(8, argv, &err) != FACET_OK)
+            fail_msg("--grid %s: %s", good[k], err.message);
+    }
+    const char *bad[] = {"roof_3", "=12x40", "roof_3=12", "roof_3=0x40",
+                         "roof_3=12x40x2", "roof_3=12xx40", "a=1x2,"};
+    for (size_t k = 0; k < sizeof bad / sizeof *bad; k++) {
+        char *argv[] = {"optimize", "skin.obj", "--db", "runs.db",
+                        "--module", "1.2x1.0", "--grid", (char *)bad[k]};
+        struct facet_error err;
+        if (optimize_args_check(8, argv, &err) != FACET_EINPUT)
+            fail_msg("--grid %s accepted", bad[k]);
+        assert_non_null(strstr(err.message, "--grid"));
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -119,6 +146,7 @@ int main(void)
         cmocka_unit_test(test_errors),
         cmocka_unit_test(test_shared_table),
         cmocka_unit_test(test_numbers),
+        cmocka_unit_test(test_grid_override),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
