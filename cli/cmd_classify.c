@@ -83,25 +83,48 @@ static int write_csv(const char *path, const struct panelization *p,
     return rc;
 }
 
+/* The threshold the help states, option_params_defaults's. */
+static void default_threshold(char *out, size_t size)
+{
+    struct option_params p;
+    option_params_defaults(&p);
+    snprintf(out, size, "%g", p.classify.threshold * 1000);
+}
+
+/* The options as given (pointing into argv), NULL or 0 when absent. */
+struct classify_args {
+    const char *grid, *threshold, *csv;
+    int json;
+};
+
+static const struct arg_option classify_command_options[] = {
+    {"grid", 0, ARG_STRING, offsetof(struct classify_args, grid), "NUxNV",
+     "panels along u and v (e.g. 37x49, the paper's)", NULL},
+    {"threshold", 0, ARG_STRING, offsetof(struct classify_args, threshold),
+     "MM", "flatness threshold t: a panel within t of its best-fit plane "
+     "is made flat", default_threshold},
+    {"json", 0, ARG_FLAG, offsetof(struct classify_args, json), NULL,
+     "one JSON object (see README)", NULL},
+    {"csv", 0, ARG_STRING, offsetof(struct classify_args, csv), "FILE",
+     "the panel schedule, one row per panel", NULL},
+    {NULL, 0, ARG_FLAG, 0, NULL, NULL, NULL},
+};
+
 static int classify_run(int argc, char **argv, struct facet_error *err)
 {
-    const char *grid = NULL, *threshold = NULL, *csv = NULL;
-    int json = 0;
+    struct classify_args a = {NULL, NULL, NULL, 0};
     struct classify_flags flags;
-    classify_flags_init(&flags);
-    const struct arg_option options[] = {
-        {"grid", 0, ARG_STRING, &grid, NULL},
-        {"threshold", 0, ARG_STRING, &threshold, NULL},
-        {"json", 0, ARG_FLAG, NULL, &json},
-        {"csv", 0, ARG_STRING, &csv, NULL},
-        {NULL, 0, ARG_FLAG, NULL, NULL},
-    };
+    memset(&flags, 0, sizeof flags);
+    const struct arg_table own = {classify_command_options, &a};
+    const struct arg_table shared = {classify_flags_options, &flags};
     const char *path;
-    int rc = args_parse_one(argc, argv, options, flags.table, &path,
+    int rc = args_parse_one(argc, argv, &own, &shared, &path,
             "classify: name one OBJ file (facet classify FILE.obj --grid "
             "37x49)", err);
     if (rc != FACET_OK)
         return rc;
+    const char *grid = a.grid, *threshold = a.threshold, *csv = a.csv;
+    int json = a.json;
 
     struct option_params params;
     struct mesh_options mesh_options;
@@ -171,17 +194,6 @@ static int classify_run(int argc, char **argv, struct facet_error *err)
     return rc;
 }
 
-/* The threshold line, its default option_params_defaults's. */
-static void classify_options_print(FILE *out)
-{
-    struct option_params p;
-    option_params_defaults(&p);
-    fprintf(out,
-        "  --threshold MM      flatness threshold t: a panel within t of its\n"
-        "                      best-fit plane is made flat (default %g)\n",
-        p.classify.threshold * 1000);
-}
-
 const struct command cmd_classify = {
     .name = "classify",
     .usage = "SURFACE.obj --grid NUxNV [--threshold MM] [--units U]\n"
@@ -189,16 +201,15 @@ const struct command cmd_classify = {
              "[--flip-normals]\n"
              "       [--prices FP,SP,DP] [--sp-as-fp] [--max-panel-area M2]\n"
              "       [--panel-cost USD] [--joint-cost USD] [--mould-cost SP,DP]\n"
-             "       [--mould-tol MM] [--mould-mirror]\n"
+             "       [--mould-tol MM] [--mould-mirror] [--sp-fit yes|no]\n"
+             "       [--max-gap MM] [--max-kink DEG]\n"
              "       [--json] [--csv FILE] [--object NAME] [--group NAME]\n"
              "       [--uv vt|grid|plane|harmonic]",
     .summary = "Divide a surface into a UV grid of panels; classify, type "
                "and price them.",
-    .options =
-        "  --grid NUxNV        panels along u and v (e.g. 37x49, the paper's)\n"
-        "  --json              one JSON object (see README)\n"
-        "  --csv FILE          the panel schedule, one row per panel\n",
-    .options_print = classify_options_print,
-    .shared_options = classify_flags_usage,
+    .before = "",
+    .options = classify_command_options,
+    .shared = classify_flags_options,
+    .after = "",
     .run = classify_run,
 };
