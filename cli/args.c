@@ -3,6 +3,7 @@
  */
 #include "args.h"
 
+#include <assert.h>
 #include <errno.h>
 #include <limits.h>
 #include <stdio.h>
@@ -12,32 +13,43 @@
 #include "core/base/numparse.h"
 #include "core/base/spelling.h"
 
-/* The tables a command parses against: its own and the shared ones
- * (NULL when none), each ending with a NULL name. */
+/* The tables a command parses against: its own and the shared one
+ * (either NULL when none). */
 struct arg_tables {
-    const struct arg_option *table[2];
+    const struct arg_table *table[2];
 };
 
+/* The entry of the tables named name (length bytes), and in *values the
+ * struct its value goes into; NULL when none is. */
 static const struct arg_option *find_long(const struct arg_tables *tables,
-                                          const char *name, size_t length)
+                                          const char *name, size_t length,
+                                          void **values)
 {
     for (int t = 0; t < 2; t++)
-        for (const struct arg_option *o = tables->table[t];
+        for (const struct arg_option *o = tables->table[t]
+                                              ? tables->table[t]->options
+                                              : NULL;
              o != NULL && o->name != NULL; o++)
             if (strlen(o->name) == length &&
-                memcmp(o->name, name, length) == 0)
+                memcmp(o->name, name, length) == 0) {
+                *values = tables->table[t]->values;
                 return o;
+            }
     return NULL;
 }
 
 static const struct arg_option *find_alias(const struct arg_tables *tables,
-                                           char alias)
+                                           char alias, void **values)
 {
     for (int t = 0; t < 2; t++)
-        for (const struct arg_option *o = tables->table[t];
+        for (const struct arg_option *o = tables->table[t]
+                                              ? tables->table[t]->options
+                                              : NULL;
              o != NULL && o->name != NULL; o++)
-            if (o->alias != 0 && o->alias == alias)
+            if (o->alias != 0 && o->alias == alias) {
+                *values = tables->table[t]->values;
                 return o;
+            }
     return NULL;
 }
 
@@ -50,7 +62,9 @@ static int unknown_long(const char *command,
     const char *names[128];
     size_t n = 0;
     for (int t = 0; t < 2; t++)
-        for (const struct arg_option *o = tables->table[t];
+        for (const struct arg_option *o = tables->table[t]
+                                              ? tables->table[t]->options
+                                              : NULL;
              o != NULL && o->name != NULL && n < 128; o++)
             names[n++] = o->name;
     const char *near = spelling_closest(name, length, names, n);
@@ -63,26 +77,30 @@ static int unknown_long(const char *command,
         (int)length, name, command);
 }
 
-int args_parse(int argc, char **argv, const struct arg_option *options,
-               const char **positional, int max, int *count,
-               struct facet_error *err)
+/* Writes value (ARG_STRING) or 1 (ARG_FLAG) into option's field of
+ * values, where its table's offset says. */
+static void store_value(const struct arg_option *option, void *values,
+                        const char *value)
 {
-    return args_parse_shared(argc, argv, options, NULL, positional, max,
-                             count, err);
+    assert(values != NULL);
+    char *field = (char *)values + option->offset;
+    if (option->kind == ARG_FLAG)
+        *(int *)(void *)field = 1;
+    else
+        *(const char **)(void *)field = value;
 }
 
-int args_parse_shared(int argc, char **argv,
-                      const struct arg_option *options,
-                      const struct arg_option *shared,
-                      const char **positional, int max, int *count,
-                      struct facet_error *err)
+int args_parse(int argc, char **argv, const struct arg_table *own,
+               const struct arg_table *shared, const char **positional,
+               int max, int *count, struct facet_error *err)
 {
-    const struct arg_tables tables = {{options, shared}};
+    const struct arg_tables tables = {{own, shared}};
     int only_positional = 0;
     *count = 0;
     for (int i = 1; i < argc; i++) {
         const char *word = argv[i];
         const struct arg_option *option = NULL;
+        void *values = NULL;
         const char *value = NULL;
 
         if (!only_positional && strcmp(word, "--") == 0) {
@@ -93,7 +111,7 @@ int args_parse_shared(int argc, char **argv,
             const char *name = word + 2;
             const char *equals = strchr(name, '=');
             size_t length = equals ? (size_t)(equals - name) : strlen(name);
-            option = find_long(&tables, name, length);
+            option = find_long(&tables, name, length, &values);
             if (option == NULL)
                 return unknown_long(argv[0], &tables, name, length, err);
             if (equals != NULL) {
@@ -104,8 +122,9 @@ int args_parse_shared(int argc, char **argv,
                 value = equals + 1;
             }
         } else if (!only_positional && word[0] == '-' && word[1] != '\0' &&
-                   word[2] == '\0' && find_alias(&tables, word[1]) != NULL) {
-            option = find_alias(&tables, word[1]);
+                   word[2] == '\0' &&
+                   find_alias(&tables, word[1], &values) != NULL) {
+            option = find_alias(&tables, word[1], &values);
         } else if (!only_positional && word[0] == '-' && word[1] != '\0' &&
                    !(word[1] >= '0' && word[1] <= '9') && word[1] != '.') {
             return facet_error_set(err, FACET_EINPUT,
@@ -121,36 +140,30 @@ int args_parse_shared(int argc, char **argv,
             positional[(*count)++] = word;
             continue;
         }
-        if (option->kind == ARG_FLAG) {
-            *option->flag = 1;
-            continue;
-        }
-        if (value == NULL) {
+        if (option->kind == ARG_STRING && value == NULL) {
             if (i + 1 >= argc)
                 return facet_error_set(err, FACET_EINPUT,
                     "%s: option '--%s' needs a value", argv[0], option->name);
             value = argv[++i];
         }
-        *option->value = value;
+        store_value(option, values, value);
     }
     return FACET_OK;
 }
 
-int args_parse_one(int argc, char **argv, const struct arg_option *options,
-                   const struct arg_option *shared, const char **positional,
+int args_parse_one(int argc, char **argv, const struct arg_table *own,
+                   const struct arg_table *shared, const char **positional,
                    const char *missing, struct facet_error *err)
 {
     int count;
-    int rc = args_parse_shared(argc, argv, options, shared, positional, 1,
-                               &count, err);
+    int rc = args_parse(argc, argv, own, shared, positional, 1, &count, err);
     if (rc == FACET_OK && count != 1)
         rc = facet_error_set(err, FACET_EINPUT, "%s", missing);
     return rc;
 }
 
-int args_parse_surfaces(int argc, char **argv,
-                        const struct arg_option *options,
-                        const struct arg_option *shared, const char **files,
+int args_parse_surfaces(int argc, char **argv, const struct arg_table *own,
+                        const struct arg_table *shared, const char **files,
                         int *count, struct facet_error *err)
 {
     /* Every word is taken, so that too many files is said as such, not
@@ -159,8 +172,7 @@ int args_parse_surfaces(int argc, char **argv,
     if (all == NULL)
         return facet_error_set(err, FACET_EWORK, "out of memory");
     int n = 0;
-    int rc = args_parse_shared(argc, argv, options, shared, all, argc, &n,
-                               err);
+    int rc = args_parse(argc, argv, own, shared, all, argc, &n, err);
     if (rc == FACET_OK)
         rc = project_files_check((size_t)n, err);
     if (rc == FACET_OK) {
@@ -186,4 +198,80 @@ int args_int(const char *text, long min, long max, const char *what,
             "%s: %s is out of range (%ld to %ld)", what, text, min, max);
     *out = (long)number;
     return FACET_OK;
+}
+
+/* Columns of the help: the option from 3, its text from HELP_COLUMN + 1,
+ * no line past HELP_WIDTH. */
+#define HELP_COLUMN 22
+#define HELP_WIDTH 78
+
+/* Appends "--name VALUE[, -a VALUE]" of o to the size bytes of left. */
+static void append_names(char *left, size_t size, const struct arg_option *o)
+{
+    size_t n = strlen(left);
+    const char *value = o->kind == ARG_STRING ? o->value : NULL;
+    snprintf(left + n, size - n, "%s--%s%s%s", n > 2 ? ", " : "", o->name,
+             value ? " " : "", value ? value : "");
+    n = strlen(left);
+    if (o->alias != 0)
+        snprintf(left + n, size - n, ", -%c%s%s", o->alias,
+                 value ? " " : "", value ? value : "");
+}
+
+/* Prints text word by word from column HELP_COLUMN, the first line's
+ * start already written up to column at. */
+static void print_wrapped(FILE *out, const char *text, int at)
+{
+    int column = at;
+    for (const char *p = text; *p != '\0';) {
+        while (*p == ' ')
+            p++;
+        size_t word = strcspn(p, " ");
+        if (word == 0)
+            break;
+        if (column > HELP_COLUMN &&
+            column + 1 + (int)word > HELP_WIDTH) {
+            fputc('\n', out);
+            column = 0;
+        }
+        if (column < HELP_COLUMN) {
+            fprintf(out, "%*s", HELP_COLUMN - column, "");
+            column = HELP_COLUMN;
+        } else {
+            fputc(' ', out);
+            column++;
+        }
+        fwrite(p, 1, word, out);
+        column += (int)word;
+        p += word;
+    }
+    fputc('\n', out);
+}
+
+void args_print_help(FILE *out, const struct arg_option *options)
+{
+    for (const struct arg_option *o = options; o->name != NULL; o++) {
+        /* an entry without help is a spelling of the one before it */
+        assert(o->help != NULL || o != options);
+        assert(o->kind != ARG_STRING || o->value != NULL);
+        if (o->help == NULL)
+            continue;
+        char left[256] = "  ";
+        append_names(left, sizeof left, o);
+        for (const struct arg_option *other = o + 1;
+             other->name != NULL && other->help == NULL; other++)
+            append_names(left, sizeof left, other);
+        char text[1024], shown[256] = "";
+        if (o->default_text != NULL)
+            o->default_text(shown, sizeof shown);
+        snprintf(text, sizeof text, "%s%s%s%s", o->help,
+                 shown[0] ? " (default " : "", shown, shown[0] ? ")" : "");
+        fputs(left, out);
+        int at = (int)strlen(left);
+        if (at >= HELP_COLUMN) {
+            fputc('\n', out);
+            at = 0;
+        }
+        print_wrapped(out, text, at);
+    }
 }

@@ -1,66 +1,85 @@
 /*
- * args.h: the option parser every subcommand shares.
+ * args.h: the option parser every subcommand shares, and the option lines
+ * of its --help.
  *
  * Options are long (--name VALUE, --name=VALUE, or --flag), with an optional
  * one-letter alias (-o VALUE); everything else is positional; "--" ends the
- * options. A command describes its options in a table and gets its values
- * written where the table points.
+ * options. A command describes its options in one static table, which
+ * both the parser and the help read (command.h), so that a flag it takes
+ * cannot be missing from its --help: each entry says where its value goes
+ * in the command's struct of values (an offset), and how --help names
+ * and explains it.
  */
 #ifndef FACET_ARGS_H
 #define FACET_ARGS_H
+
+#include <stddef.h>
+#include <stdio.h>
 
 #include "core/base/error.h"
 #include "core/project/project.h"
 
 enum arg_kind {
-    ARG_FLAG,    /* no value: sets *flag to 1 */
-    ARG_STRING   /* one value: sets *value (points into argv) */
+    ARG_FLAG,    /* no value: sets its int field to 1 */
+    ARG_STRING   /* one value: sets its const char * field (into argv) */
 };
 
 struct arg_option {
-    const char *name;    /* without the leading "--" */
+    const char *name;    /* without the leading "--"; NULL ends a table */
     char alias;          /* one-letter alias after "-", or 0 */
     enum arg_kind kind;
-    const char **value;  /* for ARG_STRING */
-    int *flag;           /* for ARG_FLAG */
+    size_t offset;       /* offsetof its field in the values struct: an
+                            int for ARG_FLAG, a const char * for
+                            ARG_STRING */
+    const char *value;   /* ARG_STRING: its value in the help ("FILE") */
+    const char *help;    /* what it does, one paragraph (args_print_help
+                            wraps it); NULL: another spelling of the entry
+                            before it, named on that entry's line */
+    /* NULL, or writes the default the help line ends with, " (default
+     * X)", from the defaults the command takes (study_request_defaults,
+     * option_params_defaults), so that the help never drifts from them. */
+    void (*default_text)(char *out, size_t size);
 };
 
-/* Parses argv[1..argc) (argv[0] is the command name) against options, which
- * ends with an entry whose name is NULL. Positional arguments are stored in
- * positional[0..max) and counted in *count. Returns FACET_OK or FACET_EINPUT
- * with err naming the unknown option, the missing value or the surplus
- * argument. */
-int args_parse(int argc, char **argv, const struct arg_option *options,
-               const char **positional, int max, int *count,
-               struct facet_error *err);
+/* A table of options, ending with a NULL name, and the values struct its
+ * offsets point into, which the parse fills. */
+struct arg_table {
+    const struct arg_option *options;
+    void *values;
+};
 
-/* args_parse against two tables at once: the command's own options and
+/* Parses argv[1..argc) (argv[0] is the command name) against own and
  * shared (NULL: none), a table of flags several commands take (such as
- * classify_flags.h's), each ending with an entry whose name is NULL. Kept
- * apart, neither table is copied into the other at an offset. */
-int args_parse_shared(int argc, char **argv,
-                      const struct arg_option *options,
-                      const struct arg_option *shared,
-                      const char **positional, int max, int *count,
-                      struct facet_error *err);
+ * classify_flags.h's), writing each option's value into its table's
+ * values. Positional arguments are stored in positional[0..max) and
+ * counted in *count. Returns FACET_OK or FACET_EINPUT with err naming the
+ * unknown option (and the nearest known one), the missing value or the
+ * surplus argument. */
+int args_parse(int argc, char **argv, const struct arg_table *own,
+               const struct arg_table *shared, const char **positional,
+               int max, int *count, struct facet_error *err);
 
-/* args_parse_shared for a command of exactly one positional argument
- * (the surface or the database) into *positional; shared as there (NULL:
- * none). Returns FACET_OK, or FACET_EINPUT as args_parse does, or with
- * the one-line reminder missing ("runs: name the result database (facet
- * runs runs.db)") when the argument is not given. */
-int args_parse_one(int argc, char **argv, const struct arg_option *options,
-                   const struct arg_option *shared, const char **positional,
+/* args_parse for a command of exactly one positional argument (the
+ * surface or the database) into *positional. Returns FACET_OK, or
+ * FACET_EINPUT as args_parse does, or with the one-line reminder missing
+ * ("runs: name the result database (facet runs runs.db)") when the
+ * argument is not given. */
+int args_parse_one(int argc, char **argv, const struct arg_table *own,
+                   const struct arg_table *shared, const char **positional,
                    const char *missing, struct facet_error *err);
 
-/* args_parse_shared for a command that names surface files (a project):
- * at most PROJECT_FILES_MAX (core/project/project.h) into files, which
- * has room for as many; more is FACET_EINPUT with project_files_check's
- * message, the same for every command. */
-int args_parse_surfaces(int argc, char **argv,
-                        const struct arg_option *options,
-                        const struct arg_option *shared, const char **files,
+/* args_parse for a command that names surface files (a project): at most
+ * PROJECT_FILES_MAX (core/project/project.h) into files, which has room
+ * for as many; more is FACET_EINPUT with project_files_check's message,
+ * the same for every command. */
+int args_parse_surfaces(int argc, char **argv, const struct arg_table *own,
+                        const struct arg_table *shared, const char **files,
                         int *count, struct facet_error *err);
+
+/* Prints one line (or more, wrapped at 78 columns) per entry of options
+ * for --help: "  --name VALUE, -a VALUE" and, from column 23, its help and
+ * default; the other spellings of an entry on its line. */
+void args_print_help(FILE *out, const struct arg_option *options);
 
 /* Parses text as an integer in [min, max] into *out. what names the value in
  * the error ("--res"). Returns FACET_OK or FACET_EINPUT. (A number that

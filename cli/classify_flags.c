@@ -4,79 +4,150 @@
 #include "classify_flags.h"
 
 #include <math.h>
+#include <stddef.h>
 #include <stdio.h>
 #include <string.h>
 
 #include "core/base/numparse.h"
 
-void classify_flags_usage(FILE *out)
+/* --- the defaults the help states, option_params_defaults's --- */
+
+static struct classify_options default_classify(void)
 {
     struct option_params p;
     option_params_defaults(&p);
-    const struct classify_options *c = &p.classify;
-    struct surface_flags none;
-    struct mesh_options mesh;
-    struct facet_error ignored;
-    surface_flags_init(&none);
-    surface_flags_apply(&none, &mesh, &ignored);
-    fprintf(out,
-        "  --units U           m, cm, mm, in, ft (default %s)\n"
-        "  --curvature-tol K   |k| < K (1/m) counts as zero (default\n",
-        mesh_units_name(mesh.units));
-    if (c->curvature_tol > 0)
-        fprintf(out, "                      %g)\n", c->curvature_tol);
-    else
-        fputs("                      8 t / d^2, d the panel's diagonal)\n",
-              out);
-    fprintf(out,
-        "  --per-panel MODE    extremes: k1 = max, k2 = min over the panel's\n"
-        "                      samples (the paper's); mean: the\n"
-        "                      area-weighted mean shape operator (default\n"
-        "                      %s)\n"
-        "  --flip-normals      reverse the surface normal (and every sign)\n"
-        "  --prices FP,SP,DP   USD/m^2 (default %g,%g,%g)\n"
-        "  --sp-as-fp          price SP area as FP (the paper's MOGD)\n"
-        "  --max-panel-area M2 feasibility limit (default %g)\n"
-        "  --panel-cost USD    per panel, whatever its type (default %g)\n"
-        "  --joint-cost USD    per metre of joint (default %g)\n"
-        "  --mould-cost SP,DP  USD per mould: a bending jig for SP, a mould for\n"
-        "                      DP (default %g,%g); 0 everywhere is the paper's\n"
-        "                      model, area alone\n"
-        "  --mould-tol MM      curved panels within MM of each other share a\n"
-        "                      mould (default: the flatness threshold)\n"
-        "  --mould-mirror      mirror images share a mould too\n"
-        "  --sp-fit yes|no     yes: an SP panel no cylinder or cone fits\n"
-        "                      within t is built and priced DP (a misfit);\n"
-        "                      no: SP by its class alone, the paper's\n"
-        "                      typing (default %s)\n"
-        "  --max-gap MM        feasible only when no joint's gap exceeds MM\n"
-        "                      (default: no limit)\n"
-        "  --max-kink DEG      feasible only when no joint's kink exceeds\n"
-        "                      DEG degrees (default: no limit)\n"
-        "  --object NAME       only the faces of object NAME\n"
-        "  --group NAME        only the faces of group NAME\n"
-        "  --uv METHOD         the UV panels follow: vt, grid (a structured\n"
-        "                      quad grid's own i, j), plane, harmonic; default\n"
-        "                      the first of these that applies\n",
-        panel_mode_name(p.mode), c->price[TYPE_FP], c->price[TYPE_SP],
-        c->price[TYPE_DP], c->max_panel_area, c->panel_cost, c->joint_cost,
-        c->mould_cost[TYPE_SP], c->mould_cost[TYPE_DP],
-        c->sp_by_class ? "no" : "yes");
+    return p.classify;
 }
 
-void surface_flags_init(struct surface_flags *f)
+static void default_units(char *out, size_t size)
 {
-    memset(f, 0, sizeof *f);
-    const struct arg_option entries[] = {
-        {"units", 0, ARG_STRING, &f->units, NULL},
-        {"object", 0, ARG_STRING, &f->object, NULL},
-        {"group", 0, ARG_STRING, &f->group, NULL},
-        {NULL, 0, ARG_FLAG, NULL, NULL},
-    };
-    _Static_assert(sizeof entries == sizeof f->table,
-                   "the table holds every flag and its end");
-    memcpy(f->table, entries, sizeof entries);
+    struct surface_flags none = {NULL, NULL, NULL};
+    struct mesh_options mesh;
+    struct facet_error ignored;
+    surface_flags_apply(&none, &mesh, &ignored);
+    snprintf(out, size, "%s", mesh_units_name(mesh.units));
 }
+
+static void default_curvature_tol(char *out, size_t size)
+{
+    struct classify_options c = default_classify();
+    if (c.curvature_tol > 0)
+        snprintf(out, size, "%g", c.curvature_tol);
+    else
+        snprintf(out, size, "8 t / d^2, d the panel's diagonal");
+}
+
+static void default_per_panel(char *out, size_t size)
+{
+    struct option_params p;
+    option_params_defaults(&p);
+    snprintf(out, size, "%s", panel_mode_name(p.mode));
+}
+
+static void default_prices(char *out, size_t size)
+{
+    struct classify_options c = default_classify();
+    snprintf(out, size, "%g,%g,%g", c.price[TYPE_FP], c.price[TYPE_SP],
+             c.price[TYPE_DP]);
+}
+
+static void default_max_area(char *out, size_t size)
+{
+    snprintf(out, size, "%g", default_classify().max_panel_area);
+}
+
+static void default_panel_cost(char *out, size_t size)
+{
+    snprintf(out, size, "%g", default_classify().panel_cost);
+}
+
+static void default_joint_cost(char *out, size_t size)
+{
+    snprintf(out, size, "%g", default_classify().joint_cost);
+}
+
+static void default_mould_cost(char *out, size_t size)
+{
+    struct classify_options c = default_classify();
+    snprintf(out, size, "%g,%g", c.mould_cost[TYPE_SP],
+             c.mould_cost[TYPE_DP]);
+}
+
+static void default_sp_fit(char *out, size_t size)
+{
+    snprintf(out, size, "%s", default_classify().sp_by_class ? "no" : "yes");
+}
+
+/* --- the tables --- */
+
+/* The surface's flags say the same in both tables. */
+static const char units_help[] = "what one OBJ unit is: m, cm, mm, in, ft";
+static const char object_help[] =
+    "only the faces of object NAME (o statement)";
+static const char group_help[] = "only the faces of group NAME (g statement)";
+
+const struct arg_option surface_flags_options[] = {
+    {"units", 0, ARG_STRING, offsetof(struct surface_flags, units), "U",
+     units_help, default_units},
+    {"object", 0, ARG_STRING, offsetof(struct surface_flags, object), "NAME",
+     object_help, NULL},
+    {"group", 0, ARG_STRING, offsetof(struct surface_flags, group), "NAME",
+     group_help, NULL},
+    {NULL, 0, ARG_FLAG, 0, NULL, NULL, NULL},
+};
+
+const struct arg_option classify_flags_options[] = {
+    {"units", 0, ARG_STRING, offsetof(struct classify_flags, surface.units),
+     "U", units_help, default_units},
+    {"curvature-tol", 0, ARG_STRING,
+     offsetof(struct classify_flags, curvature_tol), "K",
+     "|k| < K (1/m) counts as zero", default_curvature_tol},
+    {"per-panel", 0, ARG_STRING, offsetof(struct classify_flags, per_panel),
+     "MODE", "extremes: k1 = max, k2 = min over the panel's samples (the "
+     "paper's); mean: the area-weighted mean shape operator",
+     default_per_panel},
+    {"flip-normals", 0, ARG_FLAG,
+     offsetof(struct classify_flags, flip_normals), NULL,
+     "reverse the surface normal (and every sign)", NULL},
+    {"prices", 0, ARG_STRING, offsetof(struct classify_flags, prices),
+     "FP,SP,DP", "USD/m^2", default_prices},
+    {"sp-as-fp", 0, ARG_FLAG, offsetof(struct classify_flags, sp_as_fp),
+     NULL, "price SP area as FP (the paper's MOGD)", NULL},
+    {"max-panel-area", 0, ARG_STRING,
+     offsetof(struct classify_flags, max_area), "M2", "feasibility limit",
+     default_max_area},
+    {"panel-cost", 0, ARG_STRING, offsetof(struct classify_flags, panel_cost),
+     "USD", "per panel, whatever its type", default_panel_cost},
+    {"joint-cost", 0, ARG_STRING, offsetof(struct classify_flags, joint_cost),
+     "USD", "per metre of joint", default_joint_cost},
+    {"mould-cost", 0, ARG_STRING, offsetof(struct classify_flags, mould_cost),
+     "SP,DP", "USD per mould: a bending jig for SP, a mould for DP; 0 "
+     "everywhere is the paper's model, area alone", default_mould_cost},
+    {"mould-tol", 0, ARG_STRING, offsetof(struct classify_flags, mould_tol),
+     "MM", "curved panels within MM of each other share a mould (default: "
+     "the flatness threshold)", NULL},
+    {"mould-mirror", 0, ARG_FLAG,
+     offsetof(struct classify_flags, mould_mirror), NULL,
+     "mirror images share a mould too", NULL},
+    {"sp-fit", 0, ARG_STRING, offsetof(struct classify_flags, sp_fit),
+     "yes|no", "yes: an SP panel no cylinder or cone fits within t is built "
+     "and priced DP (a misfit); no: SP by its class alone, the paper's "
+     "typing", default_sp_fit},
+    {"max-gap", 0, ARG_STRING, offsetof(struct classify_flags, max_gap), "MM",
+     "feasible only when no joint's gap exceeds MM (default: no limit)",
+     NULL},
+    {"max-kink", 0, ARG_STRING, offsetof(struct classify_flags, max_kink),
+     "DEG", "feasible only when no joint's kink exceeds DEG degrees "
+     "(default: no limit)", NULL},
+    {"object", 0, ARG_STRING, offsetof(struct classify_flags, surface.object),
+     "NAME", object_help, NULL},
+    {"group", 0, ARG_STRING, offsetof(struct classify_flags, surface.group),
+     "NAME", group_help, NULL},
+    {"uv", 0, ARG_STRING, offsetof(struct classify_flags, uv), "METHOD",
+     "the UV panels follow: vt, grid (a structured quad grid's own i, j), "
+     "plane, harmonic; default the first of these that applies", NULL},
+    {NULL, 0, ARG_FLAG, 0, NULL, NULL, NULL},
+};
 
 int surface_flags_apply(const struct surface_flags *f,
                         struct mesh_options *mesh, struct facet_error *err)
@@ -85,36 +156,6 @@ int surface_flags_apply(const struct surface_flags *f,
     if (f->units != NULL)
         return mesh_units_parse(f->units, "--units", &mesh->units, err);
     return FACET_OK;
-}
-
-void classify_flags_init(struct classify_flags *f)
-{
-    memset(f, 0, sizeof *f);
-    /* In the order of the usage lines, the surface's flags among them. */
-    const struct arg_option entries[] = {
-        {"units", 0, ARG_STRING, &f->surface.units, NULL},
-        {"curvature-tol", 0, ARG_STRING, &f->curvature_tol, NULL},
-        {"per-panel", 0, ARG_STRING, &f->per_panel, NULL},
-        {"flip-normals", 0, ARG_FLAG, NULL, &f->flip_normals},
-        {"prices", 0, ARG_STRING, &f->prices, NULL},
-        {"sp-as-fp", 0, ARG_FLAG, NULL, &f->sp_as_fp},
-        {"max-panel-area", 0, ARG_STRING, &f->max_area, NULL},
-        {"panel-cost", 0, ARG_STRING, &f->panel_cost, NULL},
-        {"joint-cost", 0, ARG_STRING, &f->joint_cost, NULL},
-        {"mould-cost", 0, ARG_STRING, &f->mould_cost, NULL},
-        {"mould-tol", 0, ARG_STRING, &f->mould_tol, NULL},
-        {"mould-mirror", 0, ARG_FLAG, NULL, &f->mould_mirror},
-        {"sp-fit", 0, ARG_STRING, &f->sp_fit, NULL},
-        {"max-gap", 0, ARG_STRING, &f->max_gap, NULL},
-        {"max-kink", 0, ARG_STRING, &f->max_kink, NULL},
-        {"object", 0, ARG_STRING, &f->surface.object, NULL},
-        {"group", 0, ARG_STRING, &f->surface.group, NULL},
-        {"uv", 0, ARG_STRING, &f->uv, NULL},
-        {NULL, 0, ARG_FLAG, NULL, NULL},
-    };
-    _Static_assert(sizeof entries == sizeof f->table,
-                   "the table holds every flag and its end");
-    memcpy(f->table, entries, sizeof entries);
 }
 
 int classify_flags_uv(const char *text, enum param_method *uv,

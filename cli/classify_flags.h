@@ -8,8 +8,6 @@
 #ifndef FACET_CLASSIFY_FLAGS_H
 #define FACET_CLASSIFY_FLAGS_H
 
-#include <stdio.h>
-
 #include "args.h"
 #include "core/surface/mesh.h"
 #include "core/classify/option.h"
@@ -17,16 +15,14 @@
 
 /* The flags that pick the surface of a file and its units (--units,
  * --object, --group), as given (pointing into argv), NULL when absent:
- * what every command that reads a surface takes; and the table that parses
- * them (args_parse_shared), pointing at them. */
+ * what every command that reads a surface takes. */
 struct surface_flags {
     const char *units, *object, *group;
-    struct arg_option table[4];  /* the three flags, then the end */
 };
 
-/* Clears flags and fills flags->table, pointing at flags itself (which
- * must not move before the parse). */
-void surface_flags_init(struct surface_flags *flags);
+/* The table that parses them into a struct surface_flags (args.h), and
+ * says them in --help. */
+extern const struct arg_option surface_flags_options[];
 
 /* Sets *mesh from the flags (metres, the whole file, when absent).
  * Returns FACET_OK or FACET_EINPUT naming a bad --units. */
@@ -34,8 +30,7 @@ int surface_flags_apply(const struct surface_flags *flags,
                         struct mesh_options *mesh, struct facet_error *err);
 
 /* The classification flags' values as given (pointing into argv), NULL
- * when absent, the surface's among them, and the table that parses them
- * all (args_parse_shared), pointing at them. */
+ * (or 0) when absent, the surface's among them. */
 struct classify_flags {
     struct surface_flags surface;
     const char *curvature_tol, *per_panel, *prices, *max_area, *uv;
@@ -43,12 +38,12 @@ struct classify_flags {
     const char *panel_cost, *joint_cost, *mould_cost, *mould_tol;
     int mould_mirror;
     const char *sp_fit, *max_gap, *max_kink;
-    struct arg_option table[19];  /* the eighteen flags, then the end */
 };
 
-/* Clears flags and fills flags->table, pointing at flags itself (which
- * must not move before the parse). */
-void classify_flags_init(struct classify_flags *flags);
+/* The table that parses them all into a struct classify_flags (args.h),
+ * and says them in --help with the defaults option_params_defaults
+ * gives. */
+extern const struct arg_option classify_flags_options[];
 
 /* Sets params (all but grid and threshold, which it leaves at the
  * defaults' values), mesh and the UV method asked for (PARAM_AUTO when
@@ -62,8 +57,5 @@ int classify_flags_apply(const struct classify_flags *flags,
 /* Parses the text of --uv into *uv. */
 int classify_flags_uv(const char *text, enum param_method *uv,
                       struct facet_error *err);
-
-/* The usage lines of the flags, for a command's --help. */
-void classify_flags_usage(FILE *out);
 
 #endif

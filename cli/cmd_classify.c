@@ -4,7 +4,6 @@
  * class, type, area, deviation and cost, and the option's totals.
  */
 #include <errno.h>
-#include <limits.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -16,41 +15,10 @@
 #include "shown.h"
 #include "core/surface/coarse_mesh.h"
 #include "core/base/numparse.h"
+#include "core/base/numrange.h"
 #include "core/classify/option.h"
 #include "core/out/outfile.h"
 #include "core/out/report.h"
-
-/* Parses "37x49" into nu, nv, each side read as written (4294967297x5 is
- * out of range, not 1x5). */
-static int parse_grid(const char *text, int *nu, int *nv,
-                      struct facet_error *err)
-{
-    if (text == NULL)
-        return facet_error_set(err, FACET_EINPUT,
-            "classify: give the grid, e.g. --grid 37x49");
-    const char *end = text + strlen(text), *stop;
-    long long a = 0, b = 0;
-    int rc = numparse_whole(text, end, 0, LLONG_MAX, &a, &stop);
-    if (rc != NUMPARSE_SYNTAX && (*stop == 'x' || *stop == 'X'))
-        rc = rc == NUMPARSE_RANGE
-                 ? NUMPARSE_RANGE
-                 : numparse_whole(stop + 1, end, 0, LLONG_MAX, &b, &stop);
-    else if (rc == NUMPARSE_OK)
-        rc = NUMPARSE_SYNTAX;
-    if (rc == NUMPARSE_OK && stop != end)
-        rc = NUMPARSE_SYNTAX;
-    if (rc == NUMPARSE_SYNTAX)
-        return facet_error_set(err, FACET_EINPUT,
-            "--grid: '%s' is not NUxNV (e.g. 37x49)", text);
-    if (rc == NUMPARSE_RANGE || a < 1 || b < 1 || a > PANEL_MAX_GRID ||
-        b > PANEL_MAX_GRID)
-        return facet_error_set(err, FACET_EINPUT,
-            "--grid: %s is out of range (each side 1 to %d)", text,
-            PANEL_MAX_GRID);
-    *nu = (int)a;
-    *nv = (int)b;
-    return FACET_OK;
-}
 
 static void print_human(const struct surface *s,
                         const struct option_params *params,
@@ -115,25 +83,48 @@ static int write_csv(const char *path, const struct panelization *p,
     return rc;
 }
 
+/* The threshold the help states, option_params_defaults's. */
+static void default_threshold(char *out, size_t size)
+{
+    struct option_params p;
+    option_params_defaults(&p);
+    snprintf(out, size, "%g", p.classify.threshold * 1000);
+}
+
+/* The options as given (pointing into argv), NULL or 0 when absent. */
+struct classify_args {
+    const char *grid, *threshold, *csv;
+    int json;
+};
+
+static const struct arg_option classify_command_options[] = {
+    {"grid", 0, ARG_STRING, offsetof(struct classify_args, grid), "NUxNV",
+     "panels along u and v (e.g. 37x49, the paper's)", NULL},
+    {"threshold", 0, ARG_STRING, offsetof(struct classify_args, threshold),
+     "MM", "flatness threshold t: a panel within t of its best-fit plane "
+     "is made flat", default_threshold},
+    {"json", 0, ARG_FLAG, offsetof(struct classify_args, json), NULL,
+     "one JSON object (see README)", NULL},
+    {"csv", 0, ARG_STRING, offsetof(struct classify_args, csv), "FILE",
+     "the panel schedule, one row per panel", NULL},
+    {NULL, 0, ARG_FLAG, 0, NULL, NULL, NULL},
+};
+
 static int classify_run(int argc, char **argv, struct facet_error *err)
 {
-    const char *grid = NULL, *threshold = NULL, *csv = NULL;
-    int json = 0;
+    struct classify_args a = {NULL, NULL, NULL, 0};
     struct classify_flags flags;
-    classify_flags_init(&flags);
-    const struct arg_option options[] = {
-        {"grid", 0, ARG_STRING, &grid, NULL},
-        {"threshold", 0, ARG_STRING, &threshold, NULL},
-        {"json", 0, ARG_FLAG, NULL, &json},
-        {"csv", 0, ARG_STRING, &csv, NULL},
-        {NULL, 0, ARG_FLAG, NULL, NULL},
-    };
+    memset(&flags, 0, sizeof flags);
+    const struct arg_table own = {classify_command_options, &a};
+    const struct arg_table shared = {classify_flags_options, &flags};
     const char *path;
-    int rc = args_parse_one(argc, argv, options, flags.table, &path,
+    int rc = args_parse_one(argc, argv, &own, &shared, &path,
             "classify: name one OBJ file (facet classify FILE.obj --grid "
             "37x49)", err);
     if (rc != FACET_OK)
         return rc;
+    const char *grid = a.grid, *threshold = a.threshold, *csv = a.csv;
+    int json = a.json;
 
     struct option_params params;
     struct mesh_options mesh_options;
@@ -141,12 +132,16 @@ static int classify_run(int argc, char **argv, struct facet_error *err)
     if ((rc = classify_flags_apply(&flags, &params, &mesh_options, &uv,
                                    err)))
         return rc;
-    if ((rc = parse_grid(grid, &params.nu, &params.nv, err)) != FACET_OK)
+    if (grid == NULL)
+        return facet_error_set(err, FACET_EINPUT,
+            "classify: give the grid, e.g. --grid 37x49");
+    if ((rc = numrange_grid(grid, PANEL_MAX_GRID, "--grid", &params.nu,
+                            &params.nv, err)))
         return rc;
     if (threshold) {
         double number;
-        if ((rc = numparse_number(threshold, 0, 1e6, "--threshold",
-                                  &number, err)))
+        if ((rc = numparse_number(threshold, 0, CLASSIFY_THRESHOLD_MAX_MM,
+                                  "--threshold", &number, err)))
             return rc;
         params = option_params_at(&params, params.nu, params.nv, number);
     }
@@ -199,17 +194,6 @@ static int classify_run(int argc, char **argv, struct facet_error *err)
     return rc;
 }
 
-/* The threshold line, its default option_params_defaults's. */
-static void classify_options_print(FILE *out)
-{
-    struct option_params p;
-    option_params_defaults(&p);
-    fprintf(out,
-        "  --threshold MM      flatness threshold t: a panel within t of its\n"
-        "                      best-fit plane is made flat (default %g)\n",
-        p.classify.threshold * 1000);
-}
-
 const struct command cmd_classify = {
     .name = "classify",
     .usage = "SURFACE.obj --grid NUxNV [--threshold MM] [--units U]\n"
@@ -217,16 +201,15 @@ const struct command cmd_classify = {
              "[--flip-normals]\n"
              "       [--prices FP,SP,DP] [--sp-as-fp] [--max-panel-area M2]\n"
              "       [--panel-cost USD] [--joint-cost USD] [--mould-cost SP,DP]\n"
-             "       [--mould-tol MM] [--mould-mirror]\n"
+             "       [--mould-tol MM] [--mould-mirror] [--sp-fit yes|no]\n"
+             "       [--max-gap MM] [--max-kink DEG]\n"
              "       [--json] [--csv FILE] [--object NAME] [--group NAME]\n"
              "       [--uv vt|grid|plane|harmonic]",
     .summary = "Divide a surface into a UV grid of panels; classify, type "
                "and price them.",
-    .options =
-        "  --grid NUxNV        panels along u and v (e.g. 37x49, the paper's)\n"
-        "  --json              one JSON object (see README)\n"
-        "  --csv FILE          the panel schedule, one row per panel\n",
-    .options_print = classify_options_print,
-    .shared_options = classify_flags_usage,
+    .before = "",
+    .options = classify_command_options,
+    .shared = classify_flags_options,
+    .after = "",
     .run = classify_run,
 };

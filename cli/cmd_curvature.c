@@ -118,24 +118,39 @@ static void print_summary(const struct surface *s, const struct curvature *c)
     printf("(--csv FILE or --json for every vertex)\n");
 }
 
+/* The options as given (pointing into argv), NULL or 0 when absent. */
+struct curvature_args {
+    const char *csv;
+    int json, flip, force;
+};
+
+static const struct arg_option curvature_options[] = {
+    {"csv", 0, ARG_STRING, offsetof(struct curvature_args, csv), "FILE",
+     "one row per vertex: v (the OBJ index), x, y, z (m), k1, k2 (1/m), K "
+     "(1/m^2), H (1/m), normal_x/y/z, boundary (1 on the boundary)", NULL},
+    {"json", 0, ARG_FLAG, offsetof(struct curvature_args, json), NULL,
+     "the same as one JSON object: file, units, flip_normals, vertices [{v, "
+     "position, k1, k2, K, H, normal, boundary}]", NULL},
+    {"flip-normals", 0, ARG_FLAG, offsetof(struct curvature_args, flip),
+     NULL, "reverse the normal, and so every sign", NULL},
+    {"force", 'f', ARG_FLAG, offsetof(struct curvature_args, force), NULL,
+     "overwrite an existing --csv file", NULL},
+    {NULL, 0, ARG_FLAG, 0, NULL, NULL, NULL},
+};
+
 static int curvature_run(int argc, char **argv, struct facet_error *err)
 {
-    struct surface_flags which;
-    surface_flags_init(&which);
-    const char *csv = NULL;
-    int json = 0, flip = 0, force = 0;
-    const struct arg_option options[] = {
-        {"csv", 0, ARG_STRING, &csv, NULL},
-        {"json", 0, ARG_FLAG, NULL, &json},
-        {"flip-normals", 0, ARG_FLAG, NULL, &flip},
-        {"force", 'f', ARG_FLAG, NULL, &force},
-        {NULL, 0, ARG_FLAG, NULL, NULL},
-    };
+    struct surface_flags which = {NULL, NULL, NULL};
+    struct curvature_args a = {NULL, 0, 0, 0};
+    const struct arg_table own = {curvature_options, &a};
+    const struct arg_table shared = {surface_flags_options, &which};
     const char *path;
-    int rc = args_parse_one(argc, argv, options, which.table, &path,
+    int rc = args_parse_one(argc, argv, &own, &shared, &path,
             "curvature: name one OBJ file (facet curvature FILE.obj)", err);
     if (rc != FACET_OK)
         return rc;
+    const char *csv = a.csv;
+    int json = a.json, flip = a.flip, force = a.force;
     if (csv != NULL && json)
         return facet_error_set(err, FACET_EINPUT,
             "curvature: give --csv FILE or --json, not both");
@@ -178,18 +193,10 @@ const struct command cmd_curvature = {
     .usage = "SURFACE.obj [--csv FILE | --json] [--units U] [--object NAME]\n"
              "       [--group NAME] [--flip-normals] [--force]",
     .summary = "Curvature at every vertex: position, k1, k2, K, H, normal.",
-    .options =
-        "  --csv FILE      one row per vertex: v (the OBJ index), x, y, z (m),\n"
-        "                  k1, k2 (1/m), K (1/m^2), H (1/m), normal_x/y/z,\n"
-        "                  boundary (1 on the boundary)\n"
-        "  --json          the same as one JSON object: file, units,\n"
-        "                  flip_normals, vertices [{v, position, k1, k2, K,\n"
-        "                  H, normal, boundary}]\n"
-        "  --units U       what one OBJ unit is: m (default), cm, mm, in, ft\n"
-        "  --object NAME   only the faces of object NAME (o statement)\n"
-        "  --group NAME    only the faces of group NAME (g statement)\n"
-        "  --flip-normals  reverse the normal, and so every sign\n"
-        "  --force, -f     overwrite an existing --csv file\n"
+    .before = "",
+    .options = curvature_options,
+    .shared = surface_flags_options,
+    .after =
         "Without --csv or --json: the ranges of k1 and k2 inside and on the\n"
         "boundary. Every number is written so that it reads back exactly.\n",
     .run = curvature_run,

@@ -10,21 +10,34 @@
 #include "core/out/outfile.h"
 #include "core/surface/example.h"
 
+/* The options as given (pointing into argv), NULL or 0 when absent. */
+struct example_args {
+    const char *output, *res;
+    int force;
+};
+
+static const struct arg_option example_options[] = {
+    {"output", 'o', ARG_STRING, offsetof(struct example_args, output), "F",
+     "write to F instead of standard output", NULL},
+    {"res", 0, ARG_STRING, offsetof(struct example_args, res), "N",
+     "N x N quads (1..4096; default about 20k vertices); skin: per face "
+     "(1..1024, default 75)", NULL},
+    {"force", 0, ARG_FLAG, offsetof(struct example_args, force), NULL,
+     "overwrite F if it exists", NULL},
+    {NULL, 0, ARG_FLAG, 0, NULL, NULL, NULL},
+};
+
 static int example_run(int argc, char **argv, struct facet_error *err)
 {
-    const char *output = NULL, *res_text = NULL;
-    int force = 0;
-    const struct arg_option options[] = {
-        {"output", 'o', ARG_STRING, &output, NULL},
-        {"res", 0, ARG_STRING, &res_text, NULL},
-        {"force", 0, ARG_FLAG, NULL, &force},
-        {NULL, 0, ARG_FLAG, NULL, NULL},
-    };
+    struct example_args a = {NULL, NULL, 0};
+    const struct arg_table own = {example_options, &a};
     const char *name[1];
     int count;
-    int rc = args_parse(argc, argv, options, name, 1, &count, err);
+    int rc = args_parse(argc, argv, &own, NULL, name, 1, &count, err);
     if (rc != FACET_OK)
         return rc;
+    const char *output = a.output, *res_text = a.res;
+    int force = a.force;
     if (count != 1) {
         char names[256] = "";
         for (int i = 0; example_names[i] != NULL; i++) {
@@ -64,15 +77,17 @@ const struct command cmd_example = {
     .usage = "NAME [-o FILE] [--res N] [--force]",
     .summary = "Write an example surface (OBJ, metres, vt = surface "
                "parameters).",
-    .options =
-        "  NAME           plane, cylinder, dome, hypar, torus, wave, roof or\n"
-        "                 skin (roof: a free-form roof of about 1,240 m^2\n"
-        "                 with flat, single- and double-curved regions;\n"
-        "                 skin: a 180 m tower of 180 faces, one o each with\n"
-        "                 its own vt, 2,025,000 triangles)\n"
-        "  -o, --output F write to F instead of standard output\n"
-        "  --res N        N x N quads (1..4096; default about 20k vertices);\n"
-        "                 skin: per face (1..1024, default 75)\n"
-        "  --force        overwrite F if it exists\n",
+    .before =
+        "  NAME                plane, cylinder, dome, hypar, torus, wave, "
+        "roof or\n"
+        "                      skin (roof: a free-form roof of about 1,240 "
+        "m^2\n"
+        "                      with flat, single- and double-curved "
+        "regions;\n"
+        "                      skin: a 180 m tower of 180 faces, one o each "
+        "with\n"
+        "                      its own vt, 2,025,000 triangles)\n",
+    .options = example_options,
+    .after = "",
     .run = example_run,
 };

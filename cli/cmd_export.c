@@ -27,35 +27,61 @@ static int is_stdout(const char *path)
            a.st_dev == b.st_dev && a.st_ino == b.st_ino;
 }
 
+/* The options as given (pointing into argv), NULL or 0 when absent; the
+ * files to write go straight into the request. */
+struct export_args {
+    const char *run, *option, *view, *colour, *surface;
+    int triangles;
+    struct export_request request;
+};
+
+static const struct arg_option export_options[] = {
+    {"run", 0, ARG_STRING, offsetof(struct export_args, run), "N",
+     "the run (see facet runs)", NULL},
+    {"option", 0, ARG_STRING, offsetof(struct export_args, option), "M",
+     "the option's number in the run (see facet options)", NULL},
+    {"obj", 0, ARG_STRING, offsetof(struct export_args, request.obj),
+     "FILE.obj", "every panel a group panel_I_J: FP panels as planar "
+     "polygons on their best-fit plane, SP and DP as the surface patch; "
+     "FILE.mtl beside", NULL},
+    {"csv", 0, ARG_STRING, offsetof(struct export_args, request.csv),
+     "FILE.csv", "the panel schedule with a totals row", NULL},
+    {"json", 0, ARG_STRING, offsetof(struct export_args, request.json),
+     "FILE.json", "the option as facet classify --json", NULL},
+    {"svg", 0, ARG_STRING, offsetof(struct export_args, request.svg),
+     "FILE.svg", "the panel map with legend and title block", NULL},
+    {"view", 0, ARG_STRING, offsetof(struct export_args, view), "V",
+     "the map in uv (default), or projected: top, front, side", NULL},
+    {"colour", 0, ARG_STRING, offsetof(struct export_args, colour), "C",
+     "panels coloured by type (default) or class", NULL},
+    {"color", 0, ARG_STRING, offsetof(struct export_args, colour), "C",
+     NULL, NULL},
+    {"triangles", 0, ARG_FLAG, offsetof(struct export_args, triangles), NULL,
+     "draw each panel's triangles, not its outline", NULL},
+    {"surface", 0, ARG_STRING, offsetof(struct export_args, surface), "FILE",
+     "the run's surface has moved: record its new place (its SHA-256 must "
+     "be the run's)", NULL},
+    {"force", 'f', ARG_FLAG, offsetof(struct export_args, request.force),
+     NULL, "overwrite existing files", NULL},
+    {NULL, 0, ARG_FLAG, 0, NULL, NULL, NULL},
+};
+
 static int export_main(int argc, char **argv, struct facet_error *err)
 {
-    const char *run = NULL, *option = NULL, *view = NULL, *colour = NULL;
-    const char *surface = NULL;
-    struct export_request request;
-    memset(&request, 0, sizeof request);
-    int triangles = 0;
-    const struct arg_option options[] = {
-        {"run", 0, ARG_STRING, &run, NULL},
-        {"option", 0, ARG_STRING, &option, NULL},
-        {"obj", 0, ARG_STRING, &request.obj, NULL},
-        {"csv", 0, ARG_STRING, &request.csv, NULL},
-        {"json", 0, ARG_STRING, &request.json, NULL},
-        {"svg", 0, ARG_STRING, &request.svg, NULL},
-        {"view", 0, ARG_STRING, &view, NULL},
-        {"colour", 0, ARG_STRING, &colour, NULL},
-        {"color", 0, ARG_STRING, &colour, NULL},
-        {"triangles", 0, ARG_FLAG, NULL, &triangles},
-        {"surface", 0, ARG_STRING, &surface, NULL},
-        {"force", 'f', ARG_FLAG, NULL, &request.force},
-        {NULL, 0, ARG_FLAG, NULL, NULL},
-    };
+    struct export_args a;
+    memset(&a, 0, sizeof a);
+    const struct arg_table own = {export_options, &a};
     const char *path;
     const char *missing =
         "export: give the database, the run and the option (facet "
         "export runs.db --run 1 --option 12 --obj knee.obj)";
-    int rc = args_parse_one(argc, argv, options, NULL, &path, missing, err);
+    int rc = args_parse_one(argc, argv, &own, NULL, &path, missing, err);
     if (rc != FACET_OK)
         return rc;
+    const char *run = a.run, *option = a.option, *view = a.view;
+    const char *colour = a.colour, *surface = a.surface;
+    int triangles = a.triangles;
+    struct export_request request = a.request;
     if (run == NULL || option == NULL)
         return facet_error_set(err, FACET_EINPUT, "%s", missing);
     if (!request.obj && !request.csv && !request.json && !request.svg)
@@ -101,20 +127,8 @@ const struct command cmd_export = {
              "[--force]",
     .summary = "Export one option: OBJ + MTL, CSV panel schedule, JSON, "
                "SVG panel map.",
-    .options =
-        "  --run N, --option M the option (see facet options)\n"
-        "  --obj FILE.obj      every panel a group panel_I_J: FP panels as\n"
-        "                      planar polygons on their best-fit plane, SP\n"
-        "                      and DP as the surface patch; FILE.mtl beside\n"
-        "  --csv FILE.csv      the panel schedule with a totals row\n"
-        "  --json FILE.json    the option as facet classify --json\n"
-        "  --svg FILE.svg      the panel map with legend and title block\n"
-        "  --view V            the map in uv (default), or projected: top,\n"
-        "                      front, side\n"
-        "  --colour C          panels coloured by type (default) or class\n"
-        "  --triangles         draw each panel's triangles, not its outline\n"
-        "  --surface FILE      the run's surface has moved: record its new\n"
-        "                      place (its SHA-256 must be the run's)\n"
-        "  --force, -f         overwrite existing files\n",
+    .before = "",
+    .options = export_options,
+    .after = "",
     .run = export_main,
 };

@@ -26,6 +26,7 @@ const struct command cmd_help = {
     .name = "help",
     .usage = "[COMMAND]",
     .summary = "Show the commands, or one command's usage and options.",
-    .options = "",
+    .before = "",
+    .after = "",
     .run = help_run,
 };

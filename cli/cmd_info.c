@@ -367,23 +367,37 @@ static int info_files(const char **paths, int npaths,
                       const char *uv_text, int json,
                       struct facet_error *err);
 
+/* The options as given (pointing into argv), NULL or 0 when absent. */
+struct info_args {
+    const char *uv;
+    int json;
+};
+
+static const struct arg_option info_options[] = {
+    {"uv", 0, ARG_STRING, offsetof(struct info_args, uv), "METHOD",
+     "whether that UV (vt, grid, plane, harmonic) applies; default: say "
+     "which is taken and why", NULL},
+    {"json", 0, ARG_FLAG, offsetof(struct info_args, json), NULL,
+     "one JSON object: vertices, texcoords, normals, faces (as in the "
+     "file), triangles, has_uv, uv_valid, uv_method (the UV taken, or "
+     "null), uv_reason, bbox [[xmin,ymin,zmin],[xmax,ymax,zmax]] (m), area "
+     "(m^2), components, boundary_loops, objects, groups, materials, "
+     "warnings", NULL},
+    {NULL, 0, ARG_FLAG, 0, NULL, NULL, NULL},
+};
+
 static int info_run(int argc, char **argv, struct facet_error *err)
 {
-    struct surface_flags which;
-    surface_flags_init(&which);
-    const char *uv_text = NULL;
-    int json = 0;
-    const struct arg_option options[] = {
-        {"json", 0, ARG_FLAG, NULL, &json},
-        {"uv", 0, ARG_STRING, &uv_text, NULL},
-        {NULL, 0, ARG_FLAG, NULL, NULL},
-    };
+    struct surface_flags which = {NULL, NULL, NULL};
+    struct info_args a = {NULL, 0};
+    const struct arg_table own = {info_options, &a};
+    const struct arg_table shared = {surface_flags_options, &which};
     const char *paths[PROJECT_FILES_MAX];
     int npaths;
-    int rc = args_parse_surfaces(argc, argv, options, which.table, paths,
-                                 &npaths, err);
+    int rc = args_parse_surfaces(argc, argv, &own, &shared, paths, &npaths,
+                                 err);
     if (rc == FACET_OK)
-        rc = info_files(paths, npaths, &which, uv_text, json, err);
+        rc = info_files(paths, npaths, &which, a.uv, a.json, err);
     return rc;
 }
 
@@ -453,7 +467,7 @@ const struct command cmd_info = {
              "[--uv METHOD] [--json]",
     .summary = "Describe a surface: counts, size, area, UV, topology, "
                "warnings; or list a project's surfaces.",
-    .options =
+    .before =
         "  A file that names several objects (o), or without any several\n"
         "  groups (g), or several files, are a project: one line per\n"
         "  surface with its name, file, triangles, area (m^2), the UV its\n"
@@ -462,17 +476,9 @@ const struct command cmd_info = {
         "  u = const. With --json: files, triangles, area and surfaces, each\n"
         "  with name, file, kind (object, group, file), triangles, area,\n"
         "  has_uv, uv_method, uv_reason, u_length, v_length, components,\n"
-        "  warnings.\n"
-        "  --units U      what one OBJ unit is: m (default), cm, mm, in, ft\n"
-        "  --object NAME  only the faces of object NAME (o statement)\n"
-        "  --group NAME   only the faces of group NAME (g statement)\n"
-        "  --uv METHOD    whether that UV (vt, grid, plane, harmonic)\n"
-        "                 applies; default: say which is taken and why\n"
-        "  --json         one JSON object: vertices, texcoords, normals,\n"
-        "                 faces (as in the file), triangles, has_uv, uv_valid,\n"
-        "                 uv_method (the UV taken, or null), uv_reason,\n"
-        "                 bbox [[xmin,ymin,zmin],[xmax,ymax,zmax]] (m),\n"
-        "                 area (m^2), components, boundary_loops, objects,\n"
-        "                 groups, materials, warnings\n",
+        "  warnings.\n",
+    .options = info_options,
+    .shared = surface_flags_options,
+    .after = "",
     .run = info_run,
 };

@@ -19,18 +19,27 @@ static int stop_requested(void *context)
     return signals_stop_requested() != 0;
 }
 
+/* The options as given, 0 when absent. */
+struct merge_args {
+    int fewer;
+};
+
+static const struct arg_option merge_options[] = {
+    {"fewer", 0, ARG_FLAG, offsetof(struct merge_args, fewer), NULL,
+     "replace a merged run in OUT.db with one of fewer shards (refused "
+     "otherwise: its other shards' options would be lost)", NULL},
+    {NULL, 0, ARG_FLAG, 0, NULL, NULL, NULL},
+};
+
 static int merge_main(int argc, char **argv, struct facet_error *err)
 {
-    int fewer = 0;
-    const struct arg_option options[] = {
-        {"fewer", 0, ARG_FLAG, NULL, &fewer},
-        {NULL, 0, ARG_FLAG, NULL, NULL},
-    };
+    struct merge_args a = {0};
+    const struct arg_table own = {merge_options, &a};
     const char **path = malloc((size_t)(argc > 1 ? argc : 1) * sizeof *path);
     if (path == NULL)
         return facet_error_set(err, FACET_EWORK, "out of memory");
     int count;
-    int rc = args_parse(argc, argv, options, path, argc, &count, err);
+    int rc = args_parse(argc, argv, &own, NULL, path, argc, &count, err);
     if (rc == FACET_OK && count < 2)
         rc = facet_error_set(err, FACET_EINPUT,
             "merge: name the output and the shards (facet merge OUT.db "
@@ -42,7 +51,7 @@ static int merge_main(int argc, char **argv, struct facet_error *err)
         /* Ctrl-C or SIGTERM stops the merge between its steps: its side
          * file removed, OUT.db as it was. */
         signals_catch_stop();
-        rc = study_merge(path[0], path + 1, count - 1, fewer, &hooks,
+        rc = study_merge(path[0], path + 1, count - 1, a.fewer, &hooks,
                          &report, err);
     }
     if (rc == FACET_ESTOP) {
@@ -74,17 +83,13 @@ const struct command cmd_merge = {
     .usage = "OUT.db SHARD.db... [--fewer]",
     .summary = "Join the shards of a run (optimize --shard I/N) into one "
                "run.",
-    .options = "  OUT.db is written whole or not at all (other runs in it "
-               "are kept);\n"
-               "  merging the same shards again changes nothing; a shard "
-               "missing is\n"
-               "  named, the run marked incomplete until it is merged in.\n"
-               "  --fewer             replace a merged run in OUT.db with "
-               "one of fewer\n"
-               "                      shards (refused otherwise: its other "
-               "shards'\n"
-               "                      options would be lost)\n"
-               "example:\n"
-               "  facet merge all.db shard-1.db shard-2.db shard-3.db\n",
+    .before = "  OUT.db is written whole or not at all (other runs in it "
+              "are kept);\n"
+              "  merging the same shards again changes nothing; a shard "
+              "missing is\n"
+              "  named, the run marked incomplete until it is merged in.\n",
+    .options = merge_options,
+    .after = "example:\n"
+             "  facet merge all.db shard-1.db shard-2.db shard-3.db\n",
     .run = merge_main,
 };

@@ -20,6 +20,7 @@
 #include "run_table.h"
 #include "signals.h"
 #include "core/base/numformat.h"
+#include "core/base/numrange.h"
 #include "core/obj/infile.h"
 #include "core/project/module.h"
 #include "study/study.h"
@@ -158,23 +159,18 @@ static int grid_overrides_parse(const char *text, struct grid_overrides *g,
         if (next != NULL)
             *next++ = '\0';
         char *equals = strrchr(item, '=');
-        char *x = equals ? strchr(equals + 1, 'x') : NULL;
-        long nu = 0, nv = 0;
-        struct facet_error ignored;
-        if (equals == NULL || equals == item || x == NULL ||
-            g->n == GRID_OVERRIDES_MAX)
+        if (equals == NULL || equals == item || g->n == GRID_OVERRIDES_MAX)
             return facet_error_set(err, FACET_EINPUT,
                 "--grid: '%s' is not NAME=NUxNV (e.g. roof_3=12x40)", item);
         *equals = '\0';
-        *x = '\0';
-        if (args_int(equals + 1, 1, PANEL_MAX_GRID, "--grid", &nu,
-                     &ignored) ||
-            args_int(x + 1, 1, PANEL_MAX_GRID, "--grid", &nv, &ignored))
-            return facet_error_set(err, FACET_EINPUT,
-                "--grid: '%s' needs a grid NUxNV of whole numbers 1 to %d",
-                item, PANEL_MAX_GRID);
+        char what[160];
+        snprintf(what, sizeof what, "--grid %.140s", item);
+        int nu, nv, rc = numrange_grid(equals + 1, PANEL_MAX_GRID, what, &nu,
+                                       &nv, err);
+        if (rc != FACET_OK)
+            return rc;
         g->name[g->n] = item;
-        g->grid[g->n++] = (struct surface_grid){(int)nu, (int)nv};
+        g->grid[g->n++] = (struct surface_grid){nu, nv};
         item = next;
     }
     return FACET_OK;
@@ -182,7 +178,7 @@ static int grid_overrides_parse(const char *text, struct grid_overrides *g,
 
 /* Everything facet optimize takes from its arguments, parsed and checked
  * before any file is opened. The caller owns it and must not move it once
- * parsed: the request and the flags' table point into it. */
+ * parsed: the request points into it. */
 struct optimize_command {
     struct search_flags search;
     struct classify_flags flags;
@@ -196,39 +192,161 @@ struct optimize_command {
     struct grid_overrides grids;
 };
 
+/* --- the defaults the help states, study_request_defaults's --- */
+
+static struct optimize_settings default_settings(void)
+{
+    struct study_request r;
+    study_request_defaults(&r);
+    return r.settings;
+}
+
+static void default_u(char *out, size_t size)
+{
+    struct optimize_settings s = default_settings();
+    snprintf(out, size, "%d:%d, the paper's", s.space.u_min, s.space.u_max);
+}
+
+static void default_v(char *out, size_t size)
+{
+    struct optimize_settings s = default_settings();
+    snprintf(out, size, "%d:%d, the paper's", s.space.v_min, s.space.v_max);
+}
+
+static void default_threshold(char *out, size_t size)
+{
+    snprintf(out, size, "%g", default_settings().space.t_min_mm);
+}
+
+static void default_method(char *out, size_t size)
+{
+    char grouped[32];
+    number_grouped(grouped, sizeof grouped, STUDY_EXHAUSTIVE_LIMIT, 0);
+    snprintf(out, size, "auto: exhaustive up to %s points, nsga2 above",
+             grouped);
+}
+
+static void default_evals(char *out, size_t size)
+{
+    snprintf(out, size, "%lld", (long long)default_settings().evaluations);
+}
+
+static void default_pop(char *out, size_t size)
+{
+    snprintf(out, size, "%d", default_settings().population);
+}
+
+static void default_gens(char *out, size_t size)
+{
+    snprintf(out, size, "%d", default_settings().generations);
+}
+
+static void default_seed(char *out, size_t size)
+{
+    snprintf(out, size, "%llu", (unsigned long long)default_settings().seed);
+}
+
+static void default_objectives(char *out, size_t size)
+{
+    struct optimize_settings s = default_settings();
+    objectives_format(out, size, s.objectives, s.nobjectives);
+}
+
+static void default_store_panels(char *out, size_t size)
+{
+    struct study_request r;
+    study_request_defaults(&r);
+    snprintf(out, size, "%s", study_keep_panels_name(r.store_panels));
+}
+
+static void default_measure(char *out, size_t size)
+{
+    struct study_request r;
+    study_request_defaults(&r);
+    snprintf(out, size, "%s", r.measure_all ? "all" : "needed");
+}
+
+static void default_table(char *out, size_t size)
+{
+    snprintf(out, size, "%d", TABLE_ROWS);
+}
+
+static const struct arg_option optimize_options[] = {
+    {"db", 0, ARG_STRING, offsetof(struct optimize_command, db), "FILE",
+     "the SQLite result store (created if missing)", NULL},
+    {"u", 0, ARG_STRING, offsetof(struct optimize_command, search.u), "A:B",
+     "panels along u", default_u},
+    {"v", 0, ARG_STRING, offsetof(struct optimize_command, search.v), "A:B",
+     "panels along v", default_v},
+    {"threshold", 0, ARG_STRING,
+     offsetof(struct optimize_command, search.threshold), "T",
+     "flatness threshold in mm: one value, a range A:B, or A:B:STEP for "
+     "exhaustive", default_threshold},
+    {"method", 0, ARG_STRING,
+     offsetof(struct optimize_command, search.method), "M",
+     "auto, exhaustive, random or nsga2", default_method},
+    {"evals", 0, ARG_STRING, offsetof(struct optimize_command, search.evals),
+     "N", "random: points to draw", default_evals},
+    {"pop", 0, ARG_STRING, offsetof(struct optimize_command, search.pop), "N",
+     "nsga2: population", default_pop},
+    {"gens", 0, ARG_STRING, offsetof(struct optimize_command, search.gens),
+     "N", "nsga2: generations", default_gens},
+    {"seed", 0, ARG_STRING, offsetof(struct optimize_command, search.seed),
+     "S", "the same seed gives the same options", default_seed},
+    {"objectives", 0, ARG_STRING,
+     offsetof(struct optimize_command, search.objectives), "LIST",
+     "metrics to minimise, max:NAME to maximise", default_objectives},
+    {"jobs", 'j', ARG_STRING, offsetof(struct optimize_command, search.jobs),
+     "N", "threads (default: every core)", NULL},
+    {"shard", 0, ARG_STRING, offsetof(struct optimize_command, search.shard),
+     "I/N", "evaluate shard I of N only (exhaustive, random: every Nth grid "
+     "or point, of a project every Nth distinct grid vector; nsga2: an "
+     "island with its own seed); join them with facet merge", NULL},
+    {"module", 0, ARG_STRING,
+     offsetof(struct optimize_command, search.module), "W x H",
+     "a project (an OBJ of many objects, or several files): panel modules "
+     "WMIN:WMAX x HMIN:HMAX in m, each range optionally :STEP (default "
+     "0.1); each surface takes round(length / module)", NULL},
+    {"grid", 0, ARG_STRING, offsetof(struct optimize_command, search.grid),
+     "NAME=NUxNV", "with --module: that surface's own grid whatever the "
+     "module (comma-separated list)", NULL},
+    {"resume", 0, ARG_STRING, offsetof(struct optimize_command, resume),
+     "RUN", "go on with an interrupted run", NULL},
+    {"surface", 0, ARG_STRING, offsetof(struct optimize_command, surface),
+     "FILE", "with --resume: the run's surface has moved; record its new "
+     "place (same SHA-256)", NULL},
+    {"name", 0, ARG_STRING, offsetof(struct optimize_command, name), "TEXT",
+     "a name for the run", NULL},
+    {"store-panels", 0, ARG_STRING,
+     offsetof(struct optimize_command, store_panels), "W",
+     "whose panels to store at the end: front (the Pareto options', up to "
+     "16 or 1 in 40 of the run's: the knee, then the most spread), knee or "
+     "none; fewer when the disk cannot hold them (said); any other "
+     "option's when first looked at: show, export, tui",
+     default_store_panels},
+    {"measure", 0, ARG_STRING, offsetof(struct optimize_command, measure),
+     "M",
+     "needed: each option is measured for what the objectives, limits and "
+     "prices read, the Pareto options in full (the rest read 'not "
+     "measured', NULL in SQL); all: every option in full (a shard always "
+     "is)", default_measure},
+    {"table", 0, ARG_STRING, offsetof(struct optimize_command, table), "N",
+     "rows of the final table, 0 for all", default_table},
+    {"wide", 0, ARG_FLAG, offsetof(struct optimize_command, wide), NULL,
+     "every column of it, whatever the terminal", NULL},
+    {NULL, 0, ARG_FLAG, 0, NULL, NULL, NULL},
+};
+
 /* Parses and checks argv into *c (cleared here); opens no file. */
 static int optimize_parse(int argc, char **argv, struct optimize_command *c,
                           struct facet_error *err)
 {
     memset(c, 0, sizeof *c);
-    classify_flags_init(&c->flags);
     struct search_flags *search = &c->search;
-    const struct arg_option options[] = {
-        {"db", 0, ARG_STRING, &c->db, NULL},
-        {"u", 0, ARG_STRING, &search->u, NULL},
-        {"v", 0, ARG_STRING, &search->v, NULL},
-        {"threshold", 0, ARG_STRING, &search->threshold, NULL},
-        {"method", 0, ARG_STRING, &search->method, NULL},
-        {"evals", 0, ARG_STRING, &search->evals, NULL},
-        {"pop", 0, ARG_STRING, &search->pop, NULL},
-        {"gens", 0, ARG_STRING, &search->gens, NULL},
-        {"seed", 0, ARG_STRING, &search->seed, NULL},
-        {"objectives", 0, ARG_STRING, &search->objectives, NULL},
-        {"jobs", 'j', ARG_STRING, &search->jobs, NULL},
-        {"shard", 0, ARG_STRING, &search->shard, NULL},
-        {"resume", 0, ARG_STRING, &c->resume, NULL},
-        {"name", 0, ARG_STRING, &c->name, NULL},
-        {"table", 0, ARG_STRING, &c->table, NULL},
-        {"surface", 0, ARG_STRING, &c->surface, NULL},
-        {"wide", 0, ARG_FLAG, NULL, &c->wide},
-        {"store-panels", 0, ARG_STRING, &c->store_panels, NULL},
-        {"measure", 0, ARG_STRING, &c->measure, NULL},
-        {"module", 0, ARG_STRING, &search->module, NULL},
-        {"grid", 0, ARG_STRING, &search->grid, NULL},
-        {NULL, 0, ARG_FLAG, NULL, NULL},
-    };
-    int rc = args_parse_surfaces(argc, argv, options, c->flags.table,
-                                 c->path, &c->count, err);
+    const struct arg_table own = {optimize_options, c};
+    const struct arg_table shared = {classify_flags_options, &c->flags};
+    int rc = args_parse_surfaces(argc, argv, &own, &shared, c->path,
+                                 &c->count, err);
     if (rc != FACET_OK)
         return rc;
     if (c->db == NULL)
@@ -387,71 +505,6 @@ static int optimize_main(int argc, char **argv, struct facet_error *err)
     return rc;
 }
 
-/* The option lines, their defaults study_request_defaults's. */
-static void optimize_options_print(FILE *out)
-{
-    struct study_request r;
-    study_request_defaults(&r);
-    const struct optimize_settings *s = &r.settings;
-    char grouped[32], objectives[128];
-    number_grouped(grouped, sizeof grouped, STUDY_EXHAUSTIVE_LIMIT, 0);
-    objectives_format(objectives, sizeof objectives, s->objectives,
-                      s->nobjectives);
-    fprintf(out,
-        "  --db FILE           the SQLite result store (created if missing)\n"
-        "  --u A:B             panels along u (default %d:%d, the paper's)\n"
-        "  --v A:B             panels along v (default %d:%d, the paper's)\n"
-        "  --threshold T       flatness threshold in mm: one value (default\n"
-        "                      %g), a range A:B, or A:B:STEP for exhaustive\n"
-        "  --method M          auto (default: exhaustive up to %s\n"
-        "                      points, nsga2 above), exhaustive, random\n"
-        "                      or nsga2\n"
-        "  --evals N           random: points to draw (default %lld)\n"
-        "  --pop N, --gens N   nsga2: population (%d), generations (%d)\n"
-        "  --seed S            the same seed gives the same options (%llu)\n"
-        "  --objectives LIST   metrics to minimise, max:NAME to maximise\n"
-        "                      (default %s)\n"
-        "  --jobs N, -j N      threads (default: every core)\n"
-        "  --shard I/N         evaluate shard I of N only (exhaustive, random:\n"
-        "                      every Nth grid or point, of a project every Nth\n"
-        "                      distinct grid vector; nsga2: an island with\n"
-        "                      its own seed); join them with facet merge\n"
-        "  --module W x H      a project (an OBJ of many objects, or several\n"
-        "                      files): panel modules WMIN:WMAX x HMIN:HMAX in\n"
-        "                      m, each range optionally :STEP (default 0.1);\n"
-        "                      each surface takes round(length / module)\n"
-        "  --grid NAME=NUxNV   with --module: that surface's own grid\n"
-        "                      whatever the module (comma-separated list)\n"
-        "  --resume RUN        go on with an interrupted run\n"
-        "  --surface FILE      with --resume: the run's surface has moved;\n"
-        "                      record its new place (same SHA-256)\n"
-        "  --name TEXT         a name for the run\n"
-        "  --store-panels W    whose panels to store at the end: front (the\n"
-        "                      Pareto options', up to 16 or 1 in 40 of the\n"
-        "                      run's: the knee, then the most spread), knee\n"
-        "                      or none (default %s); fewer when the disk\n"
-        "                      cannot hold them (said); any other option's\n"
-        "                      when first looked at (show, export, tui)\n"
-        "  --measure M         needed (default): each option is measured\n"
-        "                      for what the objectives, limits and prices\n"
-        "                      read, the Pareto options in full (the rest\n"
-        "                      read 'not measured', NULL in SQL); all: every\n"
-        "                      option in full (a shard always is)\n"
-        "  --table N           rows of the final table (default %d; 0 all)\n"
-        "  --wide              every column of it, whatever the terminal\n"
-        "examples:\n"
-        "  facet optimize roof.obj --db runs.db --sp-as-fp "
-        "--max-panel-area 1.92\n"
-        "  facet optimize roof.obj --db runs.db --threshold 1:10 --method "
-        "nsga2 --seed 7\n"
-        "  facet optimize skin.obj --db runs.db --module 1.2:2.0x1.0:1.6 "
-        "--threshold 2:6:2\n",
-        s->space.u_min, s->space.u_max, s->space.v_min, s->space.v_max,
-        s->space.t_min_mm, grouped, (long long)s->evaluations,
-        s->population, s->generations, (unsigned long long)s->seed,
-        objectives, study_keep_panels_name(r.store_panels), TABLE_ROWS);
-}
-
 const struct command cmd_optimize = {
     .name = "optimize",
     .usage = "SURFACE.obj --db FILE [--u A:B] [--v A:B] "
@@ -467,8 +520,16 @@ const struct command cmd_optimize = {
              "   or: facet optimize --db FILE --resume RUN [--surface FILE]",
     .summary = "Search grid sizes and thresholds for the Pareto-optimal "
                "options; store them.",
-    .options = "",
-    .options_print = optimize_options_print,
-    .shared_options = classify_flags_usage,
+    .before = "",
+    .options = optimize_options,
+    .shared = classify_flags_options,
+    .after =
+        "examples:\n"
+        "  facet optimize roof.obj --db runs.db --sp-as-fp "
+        "--max-panel-area 1.92\n"
+        "  facet optimize roof.obj --db runs.db --threshold 1:10 --method "
+        "nsga2 --seed 7\n"
+        "  facet optimize skin.obj --db runs.db --module 1.2:2.0x1.0:1.6 "
+        "--threshold 2:6:2\n",
     .run = optimize_main,
 };

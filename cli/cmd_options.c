@@ -143,28 +143,52 @@ static int list_row(void *context, int64_t run, const struct option_row *o)
     return 0;
 }
 
+/* The options as given (pointing into argv), NULL or 0 when absent. */
+struct options_args {
+    const char *run, *sort, *where, *limit;
+    int pareto, desc, json, csv, wide, surfaces;
+};
+
+static const struct arg_option options_options[] = {
+    {"run", 0, ARG_STRING, offsetof(struct options_args, run), "N",
+     "only run N (default every run)", NULL},
+    {"pareto", 0, ARG_FLAG, offsetof(struct options_args, pareto), NULL,
+     "only Pareto-optimal options (rank 1)", NULL},
+    {"sort", 0, ARG_STRING, offsetof(struct options_args, sort), "KEYS",
+     "columns to sort by, e.g. cost,dp_area (default run, number)", NULL},
+    {"desc", 0, ARG_FLAG, offsetof(struct options_args, desc), NULL,
+     "sort descending", NULL},
+    {"where", 0, ARG_STRING, offsetof(struct options_args, where), "EXPR",
+     "e.g. 'cost < 1.5e6 and dp_area <= 900 or pareto' (columns: see "
+     "README)", NULL},
+    {"limit", 0, ARG_STRING, offsetof(struct options_args, limit), "N",
+     "at most N options", NULL},
+    {"surfaces", 0, ARG_FLAG, offsetof(struct options_args, surfaces), NULL,
+     "a project's options with their rows per surface (table or --json: "
+     "\"surfaces\")", NULL},
+    {"json", 0, ARG_FLAG, offsetof(struct options_args, json), NULL,
+     "one JSON array, every column", NULL},
+    {"csv", 0, ARG_FLAG, offsetof(struct options_args, csv), NULL,
+     "CSV with a header row, every column", NULL},
+    {"wide", 0, ARG_FLAG, offsetof(struct options_args, wide), NULL,
+     "every column of the table, whatever the terminal's width", NULL},
+    {NULL, 0, ARG_FLAG, 0, NULL, NULL, NULL},
+};
+
 static int options_main(int argc, char **argv, struct facet_error *err)
 {
-    const char *run = NULL, *sort = NULL, *where = NULL, *limit = NULL;
-    int pareto = 0, desc = 0, json = 0, csv = 0, wide = 0, surfaces = 0;
-    const struct arg_option options[] = {
-        {"run", 0, ARG_STRING, &run, NULL},
-        {"pareto", 0, ARG_FLAG, NULL, &pareto},
-        {"sort", 0, ARG_STRING, &sort, NULL},
-        {"desc", 0, ARG_FLAG, NULL, &desc},
-        {"where", 0, ARG_STRING, &where, NULL},
-        {"limit", 0, ARG_STRING, &limit, NULL},
-        {"json", 0, ARG_FLAG, NULL, &json},
-        {"csv", 0, ARG_FLAG, NULL, &csv},
-        {"wide", 0, ARG_FLAG, NULL, &wide},
-        {"surfaces", 0, ARG_FLAG, NULL, &surfaces},
-        {NULL, 0, ARG_FLAG, NULL, NULL},
-    };
+    struct options_args a;
+    memset(&a, 0, sizeof a);
+    const struct arg_table own = {options_options, &a};
     const char *path;
-    int rc = args_parse_one(argc, argv, options, NULL, &path,
+    int rc = args_parse_one(argc, argv, &own, NULL, &path,
             "options: name the result database (facet options runs.db)", err);
     if (rc != FACET_OK)
         return rc;
+    const char *run = a.run, *sort = a.sort, *where = a.where;
+    const char *limit = a.limit;
+    int pareto = a.pareto, desc = a.desc, json = a.json, csv = a.csv;
+    int wide = a.wide, surfaces = a.surfaces;
     if (json && csv)
         return facet_error_set(err, FACET_EINPUT,
             "options: choose one of --json and --csv");
@@ -250,22 +274,9 @@ const struct command cmd_options = {
              "[--json|--csv]",
     .summary = "List, filter and sort the design options of a result "
                "store.",
-    .options =
-        "  --run N             only run N (default every run)\n"
-        "  --pareto            only Pareto-optimal options (rank 1)\n"
-        "  --sort KEYS         columns to sort by, e.g. cost,dp_area\n"
-        "                      (default run, number)\n"
-        "  --desc              sort descending\n"
-        "  --where EXPR        e.g. 'cost < 1.5e6 and dp_area <= 900 or\n"
-        "                      pareto' (columns: see README)\n"
-        "  --limit N           at most N options\n"
-        "  --surfaces          a project's options with their rows per\n"
-        "                      surface (table or --json: \"surfaces\")\n"
-        "  --json              one JSON array, every column\n"
-        "  --csv               CSV with a header row, every column\n"
-        "  --wide              every column of the table, whatever the\n"
-        "                      terminal's width\n"
-        "examples:\n"
+    .before = "",
+    .options = options_options,
+    .after = "examples:\n"
         "  facet options runs.db --run 1 --pareto --sort cost\n"
         "  facet options runs.db --where 'dp_area < 300 and feasible' "
         "--csv > cheap.csv\n",

@@ -11,31 +11,50 @@
 #include "shown.h"
 #include "study/study_export.h"
 
+/* The options as given (pointing into argv), the defaults or 0 when
+ * absent. */
+struct plot_args {
+    const char *run, *runs, *output, *x, *y, *size, *title;
+    int force, no_size;
+};
+
+static const struct arg_option plot_options[] = {
+    {"run", 0, ARG_STRING, offsetof(struct plot_args, run), "N",
+     "the run to plot", NULL},
+    {"runs", 0, ARG_STRING, offsetof(struct plot_args, runs), "N,M",
+     "several runs overlaid, one colour each", NULL},
+    {"x", 0, ARG_STRING, offsetof(struct plot_args, x), "METRIC",
+     "across (default planarity, m)", NULL},
+    {"y", 0, ARG_STRING, offsetof(struct plot_args, y), "METRIC",
+     "up (default cost, USD)", NULL},
+    {"size", 0, ARG_STRING, offsetof(struct plot_args, size), "METRIC",
+     "bubble size (default dp_area, m^2)", NULL},
+    {"no-size", 0, ARG_FLAG, offsetof(struct plot_args, no_size), NULL,
+     "equal dots", NULL},
+    {"title", 0, ARG_STRING, offsetof(struct plot_args, title), "TEXT",
+     "the plot's title", NULL},
+    {"output", 'o', ARG_STRING, offsetof(struct plot_args, output), "FILE",
+     "the SVG to write", NULL},
+    {"force", 'f', ARG_FLAG, offsetof(struct plot_args, force), NULL,
+     "overwrite an existing file", NULL},
+    {NULL, 0, ARG_FLAG, 0, NULL, NULL, NULL},
+};
+
 static int plot_main(int argc, char **argv, struct facet_error *err)
 {
-    const char *run = NULL, *runs = NULL, *output = NULL;
-    const char *x = "planarity", *y = "cost", *size = "dp_area";
-    const char *title = NULL;
-    int force = 0, no_size = 0;
-    const struct arg_option options[] = {
-        {"run", 0, ARG_STRING, &run, NULL},
-        {"runs", 0, ARG_STRING, &runs, NULL},
-        {"x", 0, ARG_STRING, &x, NULL},
-        {"y", 0, ARG_STRING, &y, NULL},
-        {"size", 0, ARG_STRING, &size, NULL},
-        {"no-size", 0, ARG_FLAG, NULL, &no_size},
-        {"title", 0, ARG_STRING, &title, NULL},
-        {"output", 'o', ARG_STRING, &output, NULL},
-        {"force", 'f', ARG_FLAG, NULL, &force},
-        {NULL, 0, ARG_FLAG, NULL, NULL},
-    };
+    struct plot_args a = {NULL, NULL, NULL, "planarity", "cost", "dp_area",
+                          NULL, 0, 0};
+    const struct arg_table own = {plot_options, &a};
     const char *path;
     const char *missing =
         "plot: give the database, --run N (or --runs N,M) and -o "
         "FILE.svg";
-    int rc = args_parse_one(argc, argv, options, NULL, &path, missing, err);
+    int rc = args_parse_one(argc, argv, &own, NULL, &path, missing, err);
     if (rc != FACET_OK)
         return rc;
+    const char *run = a.run, *runs = a.runs, *output = a.output;
+    const char *x = a.x, *y = a.y, *size = a.size, *title = a.title;
+    int force = a.force, no_size = a.no_size;
     if ((run == NULL) == (runs == NULL) || output == NULL)
         return facet_error_set(err, FACET_EINPUT, "%s", missing);
     if (no_size)
@@ -74,15 +93,8 @@ const struct command cmd_plot = {
              "[--size METRIC]\n"
              "       [--no-size] [--title TEXT] -o FILE.svg [--force]",
     .summary = "Plot a run's options as SVG: Pareto front, knee, bubbles.",
-    .options =
-        "  --run N             the run to plot\n"
-        "  --runs N,M          several runs overlaid, one colour each\n"
-        "  --x METRIC          across (default planarity, m)\n"
-        "  --y METRIC          up (default cost, USD)\n"
-        "  --size METRIC       bubble size (default dp_area, m^2)\n"
-        "  --no-size           equal dots\n"
-        "  --title TEXT        the plot's title\n"
-        "  -o, --output FILE   the SVG to write\n"
-        "  --force, -f         overwrite an existing file\n",
+    .before = "",
+    .options = plot_options,
+    .after = "",
     .run = plot_main,
 };

@@ -213,19 +213,29 @@ static void print_human(const struct run_info *runs,
     }
 }
 
+/* The options as given, 0 when absent. */
+struct runs_args {
+    int json, wide;
+};
+
+static const struct arg_option runs_options[] = {
+    {"wide", 0, ARG_FLAG, offsetof(struct runs_args, wide), NULL,
+     "every column, whatever the terminal's width", NULL},
+    {"json", 0, ARG_FLAG, offsetof(struct runs_args, json), NULL,
+     "one JSON array of runs", NULL},
+    {NULL, 0, ARG_FLAG, 0, NULL, NULL, NULL},
+};
+
 static int runs_main(int argc, char **argv, struct facet_error *err)
 {
-    int json = 0, wide = 0;
-    const struct arg_option options[] = {
-        {"json", 0, ARG_FLAG, NULL, &json},
-        {"wide", 0, ARG_FLAG, NULL, &wide},
-        {NULL, 0, ARG_FLAG, NULL, NULL},
-    };
+    struct runs_args a = {0, 0};
+    const struct arg_table own = {runs_options, &a};
     const char *path;
-    int rc = args_parse_one(argc, argv, options, NULL, &path,
+    int rc = args_parse_one(argc, argv, &own, NULL, &path,
             "runs: name the result database (facet runs runs.db)", err);
     if (rc != FACET_OK)
         return rc;
+    int json = a.json, wide = a.wide;
     struct store *store;
     if ((rc = store_open_read(path, &store, err)) != FACET_OK)
         return rc;
@@ -253,10 +263,9 @@ const struct command cmd_runs = {
     .name = "runs",
     .usage = "DB [--wide] [--json]",
     .summary = "List the runs of a result store, one line each.",
-    .options = "  --wide              every column, whatever the terminal's "
-               "width\n"
-               "  --json              one JSON array of runs\n"
-               "examples:\n"
+    .before = "",
+    .options = runs_options,
+    .after = "examples:\n"
                "  facet runs runs.db\n"
                "  facet runs runs.db --json | python3 -c 'import json,sys; "
                "print(json.load(sys.stdin)[-1][\"status\"])'\n",

@@ -4,6 +4,7 @@
  * when they are not stored yet.
  */
 #include <math.h>
+#include <stddef.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -16,24 +17,38 @@
 #include "study/study.h"
 #include "study/study_export.h"
 
+/* The options as given (pointing into argv), NULL or 0 when absent. */
+struct show_args {
+    const char *run, *option, *surface;
+    int json;
+};
+
+static const struct arg_option show_options[] = {
+    {"run", 0, ARG_STRING, offsetof(struct show_args, run), "N", "the run",
+     NULL},
+    {"option", 0, ARG_STRING, offsetof(struct show_args, option), "M",
+     "the option's number in the run", NULL},
+    {"json", 0, ARG_FLAG, offsetof(struct show_args, json), NULL,
+     "the option as facet classify --json writes it", NULL},
+    {"surface", 0, ARG_STRING, offsetof(struct show_args, surface), "FILE",
+     "the run's surface has moved: record its new place (its SHA-256 must "
+     "be the run's)", NULL},
+    {NULL, 0, ARG_FLAG, 0, NULL, NULL, NULL},
+};
+
 static int show_main(int argc, char **argv, struct facet_error *err)
 {
-    const char *run = NULL, *option = NULL, *surface = NULL;
-    int json = 0;
-    const struct arg_option options[] = {
-        {"run", 0, ARG_STRING, &run, NULL},
-        {"option", 0, ARG_STRING, &option, NULL},
-        {"json", 0, ARG_FLAG, NULL, &json},
-        {"surface", 0, ARG_STRING, &surface, NULL},
-        {NULL, 0, ARG_FLAG, NULL, NULL},
-    };
+    struct show_args a = {NULL, NULL, NULL, 0};
+    const struct arg_table own = {show_options, &a};
     const char *path;
     const char *missing =
         "show: give the database, the run and the option (facet show "
         "runs.db --run 1 --option 12)";
-    int rc = args_parse_one(argc, argv, options, NULL, &path, missing, err);
+    int rc = args_parse_one(argc, argv, &own, NULL, &path, missing, err);
     if (rc != FACET_OK)
         return rc;
+    const char *run = a.run, *option = a.option, *surface = a.surface;
+    int json = a.json;
     if (run == NULL || option == NULL)
         return facet_error_set(err, FACET_EINPUT, "%s", missing);
     long run_id, number;
@@ -102,12 +117,8 @@ const struct command cmd_show = {
     .name = "show",
     .usage = "DB --run N --option M [--json] [--surface FILE]",
     .summary = "Show one stored option: totals and panel map.",
-    .options =
-        "  --run N             the run\n"
-        "  --option M          the option's number in the run\n"
-        "  --json              the option as facet classify --json writes "
-        "it\n"
-        "  --surface FILE      the run's surface has moved: record its new\n"
-        "                      place (its SHA-256 must be the run's)\n",
+    .before = "",
+    .options = show_options,
+    .after = "",
     .run = show_main,
 };

@@ -325,10 +325,40 @@ static int check_optimize_options(char **options, int n,
     return FACET_OK;
 }
 
+/* The options as given (pointing into argv), NULL or the default when
+ * absent. */
+struct slurm_args {
+    const char *shards, *results, *cpus, *partition, *time, *facet;
+    const char *merged, *folder;
+};
+
+static const struct arg_option slurm_options[] = {
+    {"shards", 'n', ARG_STRING, offsetof(struct slurm_args, shards), "N",
+     "shard tasks of the job array", NULL},
+    {"results", 0, ARG_STRING, offsetof(struct slurm_args, results), "DIR",
+     "where the shards and the merged run are copied: a folder every node "
+     "sees (the work itself is done on each node's $TMPDIR or /tmp: "
+     "SQLite's WAL does not work over network filesystems)", NULL},
+    {"cpus", 0, ARG_STRING, offsetof(struct slurm_args, cpus), "C",
+     "CPUs per task, facet's threads (default 1)", NULL},
+    {"partition", 0, ARG_STRING, offsetof(struct slurm_args, partition), "P",
+     "the Slurm partition (default: the cluster's)", NULL},
+    {"time", 0, ARG_STRING, offsetof(struct slurm_args, time), "T",
+     "time limit per task (e.g. 02:00:00)", NULL},
+    {"facet", 0, ARG_STRING, offsetof(struct slurm_args, facet), "PATH",
+     "facet on the nodes (default: this one)", NULL},
+    {"merged", 0, ARG_STRING, offsetof(struct slurm_args, merged), "NAME",
+     "the merged run's file in DIR (default merged.db)", NULL},
+    {"output", 'o', ARG_STRING, offsetof(struct slurm_args, folder),
+     "FOLDER", "where the scripts go (default: DIR)", NULL},
+    {NULL, 0, ARG_FLAG, 0, NULL, NULL, NULL},
+};
+
 static int slurm_main(int argc, char **argv, struct facet_error *err)
 {
-    const char *shards = NULL, *results = NULL, *cpus = NULL;
-    const char *folder = NULL, *facet = NULL, *merged = "merged.db";
+    struct slurm_args a = {NULL, NULL, NULL, NULL, NULL, NULL, "merged.db",
+                           NULL};
+    const struct arg_table own = {slurm_options, &a};
     struct slurm_plan plan;
     memset(&plan, 0, sizeof plan);
     /* The options after "--" are facet optimize's, for every shard. */
@@ -338,23 +368,16 @@ static int slurm_main(int argc, char **argv, struct facet_error *err)
             split = k;
             break;
         }
-    const struct arg_option options[] = {
-        {"shards", 'n', ARG_STRING, &shards, NULL},
-        {"results", 0, ARG_STRING, &results, NULL},
-        {"cpus", 0, ARG_STRING, &cpus, NULL},
-        {"partition", 0, ARG_STRING, &plan.partition, NULL},
-        {"time", 0, ARG_STRING, &plan.time, NULL},
-        {"facet", 0, ARG_STRING, &facet, NULL},
-        {"merged", 0, ARG_STRING, &merged, NULL},
-        {"output", 'o', ARG_STRING, &folder, NULL},
-        {NULL, 0, ARG_FLAG, NULL, NULL},
-    };
     const char *surface[PROJECT_FILES_MAX];
     int nsurfaces;
-    int rc = args_parse_surfaces(split, argv, options, NULL, surface,
+    int rc = args_parse_surfaces(split, argv, &own, NULL, surface,
                                  &nsurfaces, err);
     if (rc != FACET_OK)
         return rc;
+    const char *shards = a.shards, *results = a.results, *cpus = a.cpus;
+    const char *folder = a.folder, *facet = a.facet, *merged = a.merged;
+    plan.partition = a.partition;
+    plan.time = a.time;
     if (nsurfaces == 0)
         return facet_error_set(err, FACET_EINPUT,
             "slurm: name the surface (facet slurm SURFACE.obj [MORE.obj "
@@ -429,23 +452,9 @@ const struct command cmd_slurm = {
              " [-- OPTIMIZE OPTIONS]",
     .summary = "Write Slurm batch scripts that run a search as N shards "
                "and merge them.",
-    .options =
-        "  --shards N, -n N    shard tasks of the job array\n"
-        "  --results DIR       where the shards and the merged run are "
-        "copied: a\n"
-        "                      folder every node sees (the work itself is "
-        "done on\n"
-        "                      each node's $TMPDIR or /tmp: SQLite's WAL "
-        "does not\n"
-        "                      work over network filesystems)\n"
-        "  --cpus C            CPUs per task, facet's threads (default 1)\n"
-        "  --partition P       the Slurm partition (default: the "
-        "cluster's)\n"
-        "  --time T            time limit per task (e.g. 02:00:00)\n"
-        "  --facet PATH        facet on the nodes (default: this one)\n"
-        "  --merged NAME       the merged run's file in DIR (default "
-        "merged.db)\n"
-        "  -o FOLDER           where the scripts go (default: DIR)\n"
+    .before = "",
+    .options = slurm_options,
+    .after =
         "  -- OPTIONS          facet optimize's options for every shard "
         "(the\n"
         "                      scripts set --db, --shard and --jobs)\n"

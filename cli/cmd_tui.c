@@ -3,6 +3,7 @@
  * (tui/tui.h). The command line says which file is the database and which
  * the surface; tui_run is told both.
  */
+#include <stddef.h>
 #include <string.h>
 #include <strings.h>
 
@@ -18,19 +19,29 @@ static int names_obj(const char *path)
     return n > 4 && strcasecmp(path + n - 4, ".obj") == 0;
 }
 
+/* The options as given (pointing into argv), NULL when absent. */
+struct tui_args {
+    const char *db, *surface;
+};
+
+static const struct arg_option tui_options[] = {
+    {"db", 0, ARG_STRING, offsetof(struct tui_args, db), "FILE",
+     "the same as DB", NULL},
+    {"surface", 0, ARG_STRING, offsetof(struct tui_args, surface), "FILE",
+     "the same as SURFACE.obj, whatever the file's name", NULL},
+    {NULL, 0, ARG_FLAG, 0, NULL, NULL, NULL},
+};
+
 static int tui_main(int argc, char **argv, struct facet_error *err)
 {
-    const char *db = NULL, *surface = NULL;
-    const struct arg_option options[] = {
-        {"db", 0, ARG_STRING, &db, NULL},
-        {"surface", 0, ARG_STRING, &surface, NULL},
-        {NULL, 0, ARG_FLAG, NULL, NULL},
-    };
+    struct tui_args a = {NULL, NULL};
+    const struct arg_table own = {tui_options, &a};
     const char *path[2] = {NULL, NULL};
     int count;
-    int rc = args_parse(argc, argv, options, path, 2, &count, err);
+    int rc = args_parse(argc, argv, &own, NULL, path, 2, &count, err);
     if (rc != FACET_OK)
         return rc;
+    const char *db = a.db, *surface = a.surface;
     const char *given_db = NULL, *given_surface = NULL;
     if (count == 2) {
         given_db = path[0];
@@ -57,12 +68,13 @@ const struct command cmd_tui = {
              "   or: facet tui [--db FILE] [--surface FILE]",
     .summary = "The terminal workbench: browse, filter, compare and start "
                "runs.",
-    .options =
-        "  DB, --db FILE       the result store (default facet.db here;\n"
+    .before =
+        "  DB                  the result store (default facet.db here;\n"
         "                      a missing one is created after a y/n)\n"
         "  SURFACE.obj         open the New run form for this surface;\n"
         "                      alone, a name ending in .obj is the surface\n"
-        "                      (into facet.db)\n"
-        "  --surface FILE      the same, whatever the file's name\n",
+        "                      (into facet.db)\n",
+    .options = tui_options,
+    .after = "",
     .run = tui_main,
 };

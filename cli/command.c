@@ -35,14 +35,15 @@ void command_print_usage(const struct command *cmd, FILE *out)
 {
     fprintf(out, "usage: facet %s %s\n\n%s\n", cmd->name, cmd->usage,
             cmd->summary);
-    if (cmd->options[0] == '\0' && cmd->options_print == NULL &&
-        cmd->shared_options == NULL)
+    if (cmd->before[0] == '\0' && cmd->options == NULL &&
+        cmd->shared == NULL && cmd->after[0] == '\0')
         return;
-    fprintf(out, "\noptions:\n%s", cmd->options);
-    if (cmd->options_print != NULL)
-        cmd->options_print(out);
-    if (cmd->shared_options != NULL)
-        cmd->shared_options(out);
+    fprintf(out, "\noptions:\n%s", cmd->before);
+    if (cmd->options != NULL)
+        args_print_help(out, cmd->options);
+    if (cmd->shared != NULL)
+        args_print_help(out, cmd->shared);
+    fputs(cmd->after, out);
 }
 
 void command_print_overview(FILE *out)

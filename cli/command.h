@@ -3,28 +3,30 @@
  *
  * One subcommand, one file (cli/cmd_NAME.c), one table entry. The usage text
  * printed by `facet --help`, `facet help CMD` and `facet CMD --help` is made
- * from the same entry, so it never drifts from the code.
+ * from the same entry, its option lines from the very tables the command
+ * parses with, so it never drifts from the code.
  */
 #ifndef FACET_COMMAND_H
 #define FACET_COMMAND_H
 
 #include <stdio.h>
 
+#include "args.h"
 #include "core/base/error.h"
 
 struct command {
     const char *name;
     const char *usage;    /* arguments after the name, one line */
     const char *summary;  /* what it does, one line */
-    const char *options;  /* one option per line, "  --flag X  what", or "" */
-    /* Prints the option lines that state defaults, formatted at run time
-     * from the defaults the command takes (study_request_defaults,
-     * option_params_defaults), so that the help cannot drift from them;
-     * after options. NULL: none. */
-    void (*options_print)(FILE *out);
-    /* Prints the option lines shared with other commands
-     * (classify_flags_usage), or NULL. */
-    void (*shared_options)(FILE *out);
+    /* Lines before the option lines (its arguments, what it writes), each
+     * ending with a newline, or "". */
+    const char *before;
+    /* The table the command parses its options with (args.h), NULL for
+     * none, and the shared one it takes too (classify_flags.h), or NULL:
+     * --help names every entry of both, from the tables themselves. */
+    const struct arg_option *options;
+    const struct arg_option *shared;
+    const char *after;    /* lines after them (examples, notes), or "" */
     /* Runs the command on argv[0..argc) (argv[0] is the command's name).
      * Returns the exit code: 0 success, 1 failure while working, 2 bad
      * usage or bad input, with err filled for 1 and 2. */
@@ -44,7 +46,9 @@ extern const struct command *const command_table[];
 /* The entry named name, or NULL. */
 const struct command *command_find(const char *name);
 
-/* Prints the usage of one command (name, usage, summary, options). */
+/* Prints the usage of one command: name, usage, summary, and under
+ * "options:" its before lines, a line per entry of its tables
+ * (args_print_help) and its after lines. */
 void command_print_usage(const struct command *cmd, FILE *out);
 
 /* Prints the program's usage: every command with its summary. */

@@ -235,24 +235,3 @@ int numparse_number(const char *text, double min, double max,
     *out = number;
     return FACET_OK;
 }
-
-int numparse_colon_list(const char *text, const char *end, double *out,
-                        int max, int *n)
-{
-    *n = 0;
-    const char *p = text;
-    for (;;) {
-        if (*n == max)
-            return NUMPARSE_SYNTAX;
-        const char *stop;
-        int rc = numparse_double(p, end, &out[*n], &stop);
-        if (rc != NUMPARSE_OK)
-            return rc;
-        (*n)++;
-        if (stop == end)
-            return NUMPARSE_OK;
-        if (*stop != ':')
-            return NUMPARSE_SYNTAX;
-        p = stop + 1;
-    }
-}

@@ -13,6 +13,7 @@
  * Accepted: [+-] digits [. digits] [(e|E) [+-] digits], with at least one
  * digit in the mantissa ("5.", ".5" and "5" are fine). Not accepted: nan,
  * inf, hexadecimal floats, and anything that would overflow to infinity.
+ * Ranges and pairs of numbers ("1:5:0.5", "37x49") are numrange.h's.
  */
 #ifndef FACET_NUMPARSE_H
 #define FACET_NUMPARSE_H
@@ -42,15 +43,6 @@ int numparse_double(const char *text, const char *end, double *value,
  * is not 1); NUMPARSE_SYNTAX when no digit starts at text. */
 int numparse_whole(const char *text, const char *end, long long min,
                    long long max, long long *value, const char **stop);
-
-/* Parses all of [text, end) as up to max numbers (numparse_double's
- * syntax) separated by ':', as "3", "1:5" or "1:5:0.5" are written, into
- * out[0..*n). Returns NUMPARSE_OK, NUMPARSE_RANGE for a number too large
- * for a double, NUMPARSE_SYNTAX for anything else (a part that is no
- * number, more than max of them, any other character). The caller judges
- * the values (finite, signs, order). */
-int numparse_colon_list(const char *text, const char *end, double *out,
-                        int max, int *n);
 
 /* Parses all of the NUL-terminated text as a decimal number (as
  * numparse_double: no hexadecimal, nan or inf) into *value. Returns

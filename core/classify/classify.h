@@ -253,6 +253,8 @@ void classify_price_terms(const struct classify_options *options,
 #define CLASSIFY_MAX_GAP_MAX_MM 1e6
 #define CLASSIFY_MAX_KINK_MIN_DEG 1e-9 /* degrees: the limit on its kink */
 #define CLASSIFY_MAX_KINK_MAX_DEG 180
+#define CLASSIFY_THRESHOLD_MAX_MM 1e6  /* mm: the flatness threshold, one
+                                          or a range's; the least is 0 */
 
 /* Parses "SP,DP", the cost of a mould of each curved type (USD, finite, 0
  * to CLASSIFY_AMOUNT_MAX), into mould_cost[TYPE_SP] and [TYPE_DP];

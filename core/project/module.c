@@ -4,16 +4,20 @@
 #include "core/project/module.h"
 
 #include <assert.h>
+#include <float.h>
 #include <math.h>
-#include <stdlib.h>
+#include <stdio.h>
 #include <string.h>
 
-#include "core/base/numparse.h"
+#include "core/base/numrange.h"
 
-/* Values on [min, max] in steps of step (module.h). */
+/* A module range's values counted and walked as module.h says: the
+ * nanometre to which they are kept forgives a billionth of a step. */
+#define MODULE_SLACK 1e-9
+
 static size_t steps(double min, double max, double step)
 {
-    return (size_t)floor((max - min) / step + 1e-9) + 1;
+    return (size_t)numrange_count(min, max, step, MODULE_SLACK);
 }
 
 static double value_at(double min, double step, size_t k)
@@ -21,60 +25,35 @@ static double value_at(double min, double step, size_t k)
     return round((min + (double)k * step) * 1e9) / 1e9;
 }
 
-/* Parses "MIN[:MAX[:STEP]]" from [text, end) into min, max, step. */
-static int parse_range(const char *text, const char *end, double out[3])
-{
-    double v[3];
-    int n;
-    if (numparse_colon_list(text, end, v, 3, &n) != NUMPARSE_OK)
-        return -1;
-    out[0] = v[0];
-    out[1] = n >= 2 ? v[1] : v[0];
-    out[2] = n == 3 ? v[2] : MODULE_DEFAULT_STEP;
-    /* Below MODULE_MIN a module is no panel, and it would round to 0 at
-     * the 1e-9 m to which module values are kept (value_at). */
-    if (!(out[0] >= MODULE_MIN) || !(out[1] >= out[0]) ||
-        !(out[2] >= MODULE_MIN) || !isfinite(out[1]) || !isfinite(out[2]))
-        return -1;
-    if ((out[1] - out[0]) / out[2] >= MODULE_MAX_VALUES)
-        return -1;
-    return 0;
-}
-
-static const char *trim_end(const char *start, const char *end)
-{
-    while (end > start && (end[-1] == ' ' || end[-1] == '\t'))
-        end--;
-    return end;
-}
-
-static const char *trim_start(const char *start)
-{
-    while (*start == ' ' || *start == '\t')
-        start++;
-    return start;
-}
+/* Below MODULE_MIN a module is no panel, and it would round to 0 at the
+ * 1e-9 m to which module values are kept (value_at). */
+static const struct numrange_spec side_spec = {
+    .whole = 0, .least = MODULE_MIN, .most = DBL_MAX, .stepped = 1,
+    .step_least = MODULE_MIN, .step_default = MODULE_DEFAULT_STEP,
+    .slack = MODULE_SLACK, .values_max = MODULE_MAX_VALUES,
+};
 
 int module_parse(const char *text, const char *what,
                  struct module_range *out, struct facet_error *err)
 {
-    const char *x = strchr(text, 'x');
-    double w[3], h[3];
-    if (x == NULL || strchr(x + 1, 'x') != NULL ||
-        parse_range(trim_start(text), trim_end(text, x), w) != 0 ||
-        parse_range(trim_start(x + 1), trim_end(x + 1, x + strlen(x)),
-                    h) != 0)
+    struct numrange_pair pair;
+    if (numrange_pair_split(text, text + strlen(text), &pair) != 0)
         return facet_error_set(err, FACET_EINPUT,
             "%s: '%s' is not a module range (WMIN:WMAX x HMIN:HMAX in "
-            "metres, each optionally :STEP, such as 1.2:2.0x1.0:1.6; "
-            "modules and steps of at least %g m, min <= max, at most %d "
-            "values a range)", what, text, MODULE_MIN, MODULE_MAX_VALUES);
-    out->width_min = w[0];
-    out->width_max = w[1];
-    out->width_step = w[2];
-    out->height_min = h[0];
-    out->height_max = h[1];
-    out->height_step = h[2];
+            "metres, each optionally :STEP, such as 1.2:2.0x1.0:1.6)",
+            what, text);
+    char width[128], height[128];
+    snprintf(width, sizeof width, "%s width", what);
+    snprintf(height, sizeof height, "%s height", what);
+    struct numrange w, h;
+    int rc = numrange_parse(pair.left, pair.left_end, &side_spec, width, &w,
+                            err);
+    if (rc == FACET_OK)
+        rc = numrange_parse(pair.right, pair.right_end, &side_spec, height,
+                            &h, err);
+    if (rc != FACET_OK)
+        return rc;
+    *out = (struct module_range){w.min, w.max, w.step, h.min, h.max, h.step};
     return FACET_OK;
 }
 

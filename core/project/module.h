@@ -37,12 +37,14 @@ struct module_range {
     double height_min, height_max, height_step;  /* m */
 };
 
-/* Parses "WMIN:WMAX x HMIN:HMAX" (metres; blanks around the x allowed)
- * into *out: "1.2:2.0x1.0:1.6". Each range may give its step after a
- * second colon ("1.2:2.0:0.2", else MODULE_DEFAULT_STEP) or be one value
- * ("1.5x1.2"). Values and steps must be finite and at least MODULE_MIN,
- * min <= max, at most MODULE_MAX_VALUES per range. FACET_EINPUT otherwise, the message
- * naming what (the caller's name for the setting) and the text. */
+/* Parses "WMIN:WMAX x HMIN:HMAX" (metres) into *out: "1.2:2.0x1.0:1.6",
+ * a pair of ranges in numrange.h's syntax (blanks around the x allowed,
+ * and X for x). Each range may give its step after a second colon
+ * ("1.2:2.0:0.2", else MODULE_DEFAULT_STEP) or be one value ("1.5x1.2").
+ * Values and steps must be at least MODULE_MIN, min <= max, at most
+ * MODULE_MAX_VALUES values a range. FACET_EINPUT otherwise, the message
+ * naming what (the caller's name for the setting) and, for a bad range,
+ * which ("--module width: '0:1' is out of range (at least 0.001)"). */
 int module_parse(const char *text, const char *what,
                  struct module_range *out, struct facet_error *err);
 

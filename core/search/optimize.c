@@ -12,7 +12,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "core/base/numparse.h"
+#include "core/base/numrange.h"
 #include "core/base/parallel.h"
 #include "core/fit/sp_fit.h"
 #include "core/joint/joint_length.h"
@@ -46,12 +46,12 @@ int optimize_method_parse(const char *text, const char *what,
 
 /* Threshold steps of an exhaustive space: t_min, t_min + step, ... up to
  * t_max, forgiving a thousandth of a step of rounding. */
+#define THRESHOLD_SLACK 1e-3
+
 static uint64_t threshold_steps(const struct design_space *s)
 {
-    if (!(s->t_step_mm > 0) || s->t_max_mm <= s->t_min_mm)
-        return 1;
-    return (uint64_t)floor((s->t_max_mm - s->t_min_mm) / s->t_step_mm +
-                           1e-3) + 1;
+    return (uint64_t)numrange_count(s->t_min_mm, s->t_max_mm, s->t_step_mm,
+                                    THRESHOLD_SLACK);
 }
 
 uint64_t design_space_size(const struct design_space *s)
@@ -60,60 +60,41 @@ uint64_t design_space_size(const struct design_space *s)
            (uint64_t)(s->v_max - s->v_min + 1) * threshold_steps(s);
 }
 
+/* The ranges of a design space as a designer types them (numrange.h). */
+static const struct numrange_spec sides_spec = {
+    .whole = 1, .least = 1, .most = PANEL_MAX_GRID,
+};
+
+static const struct numrange_spec threshold_spec = {
+    .whole = 0, .least = 0, .most = CLASSIFY_THRESHOLD_MAX_MM, .stepped = 1,
+    .slack = THRESHOLD_SLACK, .values_max = DESIGN_THRESHOLD_STEPS_MAX,
+};
+
 int design_space_parse_sides(const char *text, const char *what, int *lo,
                              int *hi, struct facet_error *err)
 {
-    /* Read as written: 4294967297 is far out of range, not 1. */
-    const char *end = text + strlen(text), *stop;
-    long long a, b;
-    int rc = numparse_whole(text, end, 0, PANEL_MAX_GRID, &a, &stop);
-    if (rc == NUMPARSE_OK && stop == end) {
-        *lo = *hi = (int)a;
-        return FACET_OK;
-    }
-    if (rc == NUMPARSE_OK && *stop == ':') {
-        const char *second = stop + 1;
-        rc = numparse_whole(second, end, 0, PANEL_MAX_GRID, &b, &stop);
-        if (rc == NUMPARSE_OK && stop == end) {
-            *lo = (int)a;
-            *hi = (int)b;
-            return FACET_OK;
-        }
-    }
-    if (rc == NUMPARSE_RANGE)
-        return facet_error_set(err, FACET_EINPUT,
-            "%s: '%s' is out of range (grid sides 1 to %d)", what, text,
-            PANEL_MAX_GRID);
-    return facet_error_set(err, FACET_EINPUT,
-        "%s: '%s' is not a range A:B of whole numbers (e.g. 20:40)", what,
-        text);
+    struct numrange r;
+    int rc = numrange_parse(text, text + strlen(text), &sides_spec, what, &r,
+                            err);
+    if (rc != FACET_OK)
+        return rc;
+    *lo = (int)r.min;
+    *hi = (int)r.max;
+    return FACET_OK;
 }
 
 int design_space_parse_threshold(const char *text, const char *what,
                                  struct design_space *space,
                                  struct facet_error *err)
 {
-    double value[3] = {0, 0, 0};
-    int n = 0;
-    /* Decimal only: 0x10 is no threshold, not 16 mm. */
-    int rc = numparse_colon_list(text, text + strlen(text), value, 3, &n);
-    for (int k = 0; rc == NUMPARSE_OK && k < n; k++)
-        if (!isfinite(value[k]) || value[k] < 0 || value[k] > 1e6)
-            rc = NUMPARSE_RANGE;
-    if (rc != NUMPARSE_OK)
-        return facet_error_set(err, FACET_EINPUT,
-            "%s: '%s' is not MM, A:B or A:B:STEP (mm, 0 to 1e6)", what,
-            text);
-    space->t_min_mm = value[0];
-    space->t_max_mm = n >= 2 ? value[1] : value[0];
-    space->t_step_mm = n == 3 ? value[2] : 0;
-    if (space->t_max_mm < space->t_min_mm)
-        return facet_error_set(err, FACET_EINPUT,
-            "%s: %g:%g runs backwards", what, space->t_min_mm,
-            space->t_max_mm);
-    if (n == 3 && !(space->t_step_mm > 0))
-        return facet_error_set(err, FACET_EINPUT,
-            "%s: the step of '%s' must be above 0", what, text);
+    struct numrange r;
+    int rc = numrange_parse(text, text + strlen(text), &threshold_spec, what,
+                            &r, err);
+    if (rc != FACET_OK)
+        return rc;
+    space->t_min_mm = r.min;
+    space->t_max_mm = r.max;
+    space->t_step_mm = r.step;
     return FACET_OK;
 }
 
@@ -145,8 +126,8 @@ int design_space_check(const struct design_space *s,
     /* Counted in floating point first: 1e6 / 1e-300 steps does not fit a
      * count, and must not wrap into one. */
     if (s->t_step_mm > 0 && s->t_max_mm > s->t_min_mm) {
-        double steps = floor((s->t_max_mm - s->t_min_mm) / s->t_step_mm +
-                             1e-3) + 1;
+        double steps = numrange_count(s->t_min_mm, s->t_max_mm, s->t_step_mm,
+                                      THRESHOLD_SLACK);
         if (!(steps <= DESIGN_THRESHOLD_STEPS_MAX))
             return facet_error_set(err, FACET_EINPUT,
                 "%s %g:%g:%g is %.3g steps (at most %d: take a "

@@ -102,16 +102,19 @@ int optimize_method_parse(const char *text, const char *what,
  * t_min to t_max inclusive, to within a thousandth of a step). */
 uint64_t design_space_size(const struct design_space *space);
 
-/* Parses a grid range as a designer writes it, "20:40" or "30", into
- * *lo, *hi. what names the field in the error ("--u"). */
+/* Parses a grid range as a designer writes it, "20:40" or "30" (a
+ * numrange.h range of whole numbers, 1 to PANEL_MAX_GRID, no step), into
+ * *lo, *hi. FACET_EINPUT with numrange.h's message naming the field what
+ * ("--u", "U (panels)"). */
 int design_space_parse_sides(const char *text, const char *what, int *lo,
                              int *hi, struct facet_error *err);
 
 /* Parses a threshold as a designer writes it (mm): "3" (one value), "1:5"
- * (a continuous range) or "1:5:0.5" (stepped), into space's t_min_mm,
- * t_max_mm and t_step_mm. FACET_EINPUT naming the field what for anything
- * else, a backward range, a negative or non-finite value, or a step that
- * is not above 0. */
+ * (a continuous range) or "1:5:0.5" (stepped), a numrange.h range of
+ * decimals 0 to CLASSIFY_THRESHOLD_MAX_MM of at most
+ * DESIGN_THRESHOLD_STEPS_MAX steps, into space's t_min_mm, t_max_mm and
+ * t_step_mm (0 for none). FACET_EINPUT with numrange.h's message naming
+ * the field what. */
 int design_space_parse_threshold(const char *text, const char *what,
                                  struct design_space *space,
                                  struct facet_error *err);

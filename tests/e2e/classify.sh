@@ -128,6 +128,11 @@ fi
 # Bad input.
 expect_error "unknown units" "units 'yard'" "$FACET" classify "$WORK/roof.obj" --grid 5x5 --units yard
 expect_error "no grid" 'grid' "$FACET" classify "$WORK/roof.obj"
+# A grid is a pair as --module's is: X for x, blanks around it.
+expect "grid 4X3" 0 "$FACET" classify "$WORK/roof.obj" --grid 4X3 --json
+json_check "grid 4X3 is 4 x 3" 'j["grid"]["nu"] == 4 and j["grid"]["nv"] == 3'
+expect "grid ' 4 x 3 '" 0 "$FACET" classify "$WORK/roof.obj" --grid " 4 x 3 " --json
+json_check "grid ' 4 x 3 ' is 4 x 3" 'j["grid"]["nu"] == 4 and j["grid"]["nv"] == 3'
 expect_error "malformed grid" "'37by49' is not NUxNV" "$FACET" classify "$WORK/roof.obj" --grid 37by49
 expect_error "absurd grid" 'out of range' "$FACET" classify "$WORK/roof.obj" --grid 100000x5
 expect_error "zero grid" 'out of range' "$FACET" classify "$WORK/roof.obj" --grid 0x5

@@ -482,8 +482,8 @@ expect_error "resume of a done run" 'run 1 is done' "$FACET" optimize --db "$DB"
 expect_error "resume of a run that does not exist" 'no run 99' "$FACET" optimize --db "$DB" --resume 99
 expect_error "missing OBJ" 'nothere.obj' \
     "$FACET" optimize "$WORK/nothere.obj" --db "$WORK/fresh.db" "${SMALL[@]}"
-expect_error "--u 0:5" "facet: --u 0:5" "$FACET" optimize "$ROOF" --db "$WORK/fresh.db" --u 0:5
-expect_error "--u 10:5 (backwards)" "facet: --u 10:5" "$FACET" optimize "$ROOF" --db "$WORK/fresh.db" --u 10:5
+expect_error "--u 0:5" "facet: --u: '0:5' is out of range \(1 to 2000\)" "$FACET" optimize "$ROOF" --db "$WORK/fresh.db" --u 0:5
+expect_error "--u 10:5 (backwards)" "facet: --u: 10:5 runs backwards" "$FACET" optimize "$ROOF" --db "$WORK/fresh.db" --u 10:5
 expect_error "--threshold 5:1 (backwards)" "facet: --threshold: 5:1" \
     "$FACET" optimize "$ROOF" --db "$WORK/fresh.db" --threshold 5:1
 expect_error "--threshold 1:5 --method exhaustive needs a step" "facet: --threshold 1:5: .*step" \

@@ -143,11 +143,11 @@ cp "$WORK/four.keep" "$WORK/four.obj"
 expect_error "--module malformed" "module: '1:2x' is not a module range" \
     "$FACET" optimize "$WORK/four.obj" --db "$WORK/bad.db" --module 1:2x
 expect_error "--module below 1 mm (it rounds to 0): refused, no assertion" \
-    "module: '1e-10x0.5' is not a module range.*at least 0.001 m" \
+    "module width: '1e-10' is out of range \(at least 0.001\)" \
     "$FACET" optimize "$WORK/four.obj" --db "$WORK/bad.db" --module 1e-10x0.5
-expect_error "--module of a step below 1 mm" "module: '1:2:1e-12x1' is not a module range" \
+expect_error "--module of a step below 1 mm" "module width: the step of '1:2:1e-12' must be at least 0.001" \
     "$FACET" optimize "$WORK/four.obj" --db "$WORK/bad.db" --module 1:2:1e-12x1
-expect_error "--module of a zero width" "module: '0:1x1:1' is not a module range" \
+expect_error "--module of a zero width" "module width: '0:1' is out of range" \
     "$FACET" optimize "$WORK/four.obj" --db "$WORK/bad.db" --module 0:1x1:1
 expect_error "a project file without --module" \
     "four\.obj: a project of 4 surfaces .*needs a panel module: give --module" \

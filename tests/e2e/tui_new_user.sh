@@ -227,7 +227,7 @@ check "runs (form words)" '^ +1 done'
 keys a
 check "the New run form (form words)" '^ New run into demo\.db'
 keys roof.obj Down Down C-u 0:5
-check "a bad U range names the form's field" 'Not ready: U \(panels\) 0:5 is not a range within 1\.\.'
+check "a bad U range names the form's field" 'Not ready: U \(panels\): .0:5. is out of range \(1 to 2000\)'
 keys C-u 20:40 Down Down C-u 5:1
 check "a backward threshold names the form's field" 'Not ready: Threshold \(mm\): 5:1 runs backwards'
 keys F5

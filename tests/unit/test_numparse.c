@@ -258,43 +258,6 @@ static void test_number_refuses(void **state)
                         "Max panel m^2: 1e-400 is out of range (1e-09 to 1)");
 }
 
-/* A colon list, as design ranges are written, against the values as
- * written: each part read as numparse_double reads it, at most max. */
-static void test_colon_list(void **state)
-{
-    (void)state;
-    const struct {
-        const char *text;
-        int rc, n;
-        double v[3];
-    } cases[] = {
-        {"3", NUMPARSE_OK, 1, {3, 0, 0}},
-        {"1:5", NUMPARSE_OK, 2, {1, 5, 0}},
-        {"1.2:2.0:0.1", NUMPARSE_OK, 3, {1.2, 2.0, 0.1}},
-        {"-1:1e2:.5", NUMPARSE_OK, 3, {-1, 100, 0.5}},
-        {"1:2:3:4", NUMPARSE_SYNTAX, 0, {0}},
-        {"1:x", NUMPARSE_SYNTAX, 0, {0}},
-        {"1:", NUMPARSE_SYNTAX, 0, {0}},
-        {"", NUMPARSE_SYNTAX, 0, {0}},
-        {"0x10", NUMPARSE_SYNTAX, 0, {0}},
-        {"1;2", NUMPARSE_SYNTAX, 0, {0}},
-        {"1e999:2", NUMPARSE_RANGE, 0, {0}},
-    };
-    for (size_t k = 0; k < sizeof cases / sizeof *cases; k++) {
-        double v[3];
-        int n = -1;
-        const char *t = cases[k].text;
-        int rc = numparse_colon_list(t, t + strlen(t), v, 3, &n);
-        if (rc != cases[k].rc)
-            fail_msg("'%s': %d, want %d", t, rc, cases[k].rc);
-        if (rc != NUMPARSE_OK)
-            continue;
-        assert_int_equal(n, cases[k].n);
-        for (int i = 0; i < n; i++)
-            assert_true(v[i] == cases[k].v[i]);
-    }
-}
-
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -304,7 +267,6 @@ int main(void)
         cmocka_unit_test(test_million_random_within_one_ulp),
         cmocka_unit_test(test_number_takes),
         cmocka_unit_test(test_number_refuses),
-        cmocka_unit_test(test_colon_list),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

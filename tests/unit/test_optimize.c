@@ -505,6 +505,10 @@ static void test_parse_space(void **state)
                      FACET_OK);
     assert_true(s.t_step_mm == 0.5);
     assert_int_equal(design_space_size(&s), 9);
+    /* -0 is the 0 it means: no "-0 mm" in a run's settings */
+    assert_int_equal(design_space_parse_threshold("-0:-0", "t", &s, &err),
+                     FACET_OK);
+    assert_false(signbit(s.t_min_mm) || signbit(s.t_max_mm));
     const char *bad[] = {"", "x", "5:1", "1:5:0", "1:2:3:4", "-1", "1e9",
                          "2:", "nan", "1::2"};
     for (size_t k = 0; k < sizeof bad / sizeof *bad; k++) {

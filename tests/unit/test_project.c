@@ -448,10 +448,16 @@ static void test_module_range(void **state)
     assert_int_equal(module_parse("1x1:1.3:0.1", "module", &r, &err),
                      FACET_OK);
     assert_int_equal(module_count(&r), 4);    /* 1.3 on a step */
+    /* a pair as a grid is written: X for x, as --grid 37X49 */
+    assert_int_equal(module_parse("1.2:1.4X1.0", "module", &r, &err),
+                     FACET_OK);
+    assert_int_equal(module_count(&r), 3);
 
     const char *bad[] = {"1.2:2.0", "2.0:1.2x1:1.6", "0:1x1:2", "1x-1",
                          "ax1", "1x1x1", "1:2:0x1", "1:2:3:4x1", "",
-                         "1:100000:0.001x1", "1.2:2.0x1.0:1.6 junk"};
+                         "1:100000:0.001x1", "1.2:2.0x1.0:1.6 junk",
+                         /* 10001 widths as module_widths counts them */
+                         "1:10000.9999999995:1x1"};
     for (size_t k = 0; k < sizeof bad / sizeof bad[0]; k++) {
         if (module_parse(bad[k], "module", &r, &err) != FACET_EINPUT)
             fail_msg("'%s' accepted", bad[k]);
