@@ -19,6 +19,8 @@
 #include <time.h>
 #include <unistd.h>
 
+#include "core/base/text.h"
+
 /* Version 1: the tables. Every length m, area m^2, money USD, threshold
  * mm, time UTC ISO 8601, elapsed seconds. */
 static const char schema_v1[] =
@@ -353,9 +355,13 @@ int store_fail(struct store *store, const char *doing,
         hint = "; the file is damaged or not a Facet database";
     else if (code == SQLITE_BUSY || code == SQLITE_LOCKED)
         hint = "; another process holds it, try again";
+    /* SQLite's message quotes the file's own text (a damaged schema's
+     * SQL, a trigger's RAISE): made one line (error.h), its control
+     * characters not passed on. */
+    char said[400];
+    text_for_terminal(sqlite3_errmsg(store->db), said, sizeof said);
     return facet_error_set(err, input ? FACET_EINPUT : FACET_EWORK,
-                           "%s: %s (%s)%s", store->path,
-                           sqlite3_errmsg(store->db), doing, hint);
+                           "%s: %s (%s)%s", store->path, said, doing, hint);
 }
 
 int store_exec(struct store *store, const char *sql, const char *doing,

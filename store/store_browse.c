@@ -552,7 +552,10 @@ static int tail_step(struct store *store, const struct option_browse *b,
     if (rc == WALK_INTERRUPTED)
         rc = store_fail(store, "counting options", err);
     if (rc == FACET_OK) {
-        memcpy(tail->numbers, merged, n * sizeof *merged);
+        /* None when a damaged file's numbers do not read back as they
+         * were found (merged is then NULL, which memcpy may not take). */
+        if (n > 0)
+            memcpy(tail->numbers, merged, n * sizeof *merged);
         tail->n = (int)n;
     }
     free(merged);

@@ -10,6 +10,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "core/base/text.h"
+
 int store_run_is_project(const struct run_info *run)
 {
     return run->module_w_step > 0;
@@ -141,11 +143,15 @@ int store_surfaces_get(struct store *store, int64_t run,
         r->grid_nv = sqlite3_column_int(s, 9);
         const unsigned char *uv = sqlite3_column_text(s, 7);
         if (uv == NULL ||
-            param_method_parse((const char *)uv, &r->uv_method) != 0)
+            param_method_parse((const char *)uv, &r->uv_method) != 0) {
+            /* The file's own text, made one line (error.h). */
+            char shown[64];
+            text_for_terminal(uv ? (const char *)uv : "", shown,
+                              sizeof shown);
             rc = facet_error_set(err, FACET_EINPUT,
                 "run %lld: surfaces.uv_method holds '%s', which this Facet "
-                "does not know", (long long)run,
-                uv ? (const char *)uv : "");
+                "does not know", (long long)run, shown);
+        }
         if (rc != FACET_OK)
             break;
     }

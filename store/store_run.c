@@ -11,6 +11,8 @@
 #include <string.h>
 #include <unistd.h>
 
+#include "core/base/text.h"
+
 /* The columns of runs in the order run_from_row reads them. */
 #define RUN_COLUMNS \
     "id, name, status, started, coalesce(finished, ''), elapsed," \
@@ -139,10 +141,14 @@ int store_run_setting_check(const struct run_info *run,
     assert((unsigned)setting < RUN_SETTINGS);
     if (run->unknown[setting][0] == '\0')
         return FACET_OK;
+    /* The file's own text: a newline or an escape in it would break the
+     * one-line message (error.h) or reach the terminal. */
+    char shown[sizeof run->unknown[setting]];
+    text_for_terminal(run->unknown[setting], shown, sizeof shown);
     return facet_error_set(err, FACET_EINPUT,
         "run %lld: runs.%s holds '%s', which this Facet does not know "
         "(written by a newer Facet?)", (long long)run->id,
-        setting_column[setting], run->unknown[setting]);
+        setting_column[setting], shown);
 }
 
 const char *store_run_setting_text(const struct run_info *run,

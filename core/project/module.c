@@ -22,7 +22,12 @@ static size_t steps(double min, double max, double step)
 
 static double value_at(double min, double step, size_t k)
 {
-    return round((min + (double)k * step) * 1e9) / 1e9;
+    double value = min + (double)k * step;
+    /* Past about 1.8e299 m the product overflows to infinity, a module no
+     * surface can take; a double that large holds no nanometres to round
+     * to anyway. */
+    double rounded = round(value * 1e9) / 1e9;
+    return isfinite(rounded) ? rounded : value;
 }
 
 /* Below MODULE_MIN a module is no panel, and it would round to 0 at the

@@ -452,6 +452,11 @@ static void test_module_range(void **state)
     assert_int_equal(module_parse("1.2:1.4X1.0", "module", &r, &err),
                      FACET_OK);
     assert_int_equal(module_count(&r), 3);
+    /* Too large to round to the nanometre: the module itself, not
+     * infinity (fuzz_project). */
+    assert_int_equal(module_parse("1e300x1", "module", &r, &err), FACET_OK);
+    module_at(&r, 0, &w, &h);
+    assert_true(w == 1e300 && h == 1.0);
 
     const char *bad[] = {"1.2:2.0", "2.0:1.2x1:1.6", "0:1x1:2", "1x-1",
                          "ax1", "1x1x1", "1:2:0x1", "1:2:3:4x1", "",
