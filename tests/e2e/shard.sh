@@ -254,7 +254,7 @@ done
 # here, in optimize's words, and no script is written.
 for bad in "--modul 1x1|unknown option '--modul' \(did you mean --module\?\)" \
     "--threshold banana|--threshold: 'banana' is not" "-j4|unknown option '-j4'" \
-    "--u 0:5|--u 0:5" "--objectives nosuch|nosuch"; do
+    "--u 0:5|--u: '0:5' is out of range" "--objectives nosuch|nosuch"; do
     args=${bad%%|*} pattern=${bad#*|}
     rm -rf "$WORK/inj"
     # shellcheck disable=SC2086

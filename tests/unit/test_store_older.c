@@ -193,9 +193,12 @@ static void test_display(void **state)
     option_text_totals(out, &row.totals, &classify);
     fclose(out);
     assert_null(strstr(shown, "nan"));
-    assert_non_null(strstr(shown, "\nmoulds           - (not stored"));
-    assert_non_null(strstr(shown, "\njoint length     - (not stored"));
-    assert_non_null(strstr(shown, "\ncost terms       - (not stored"));
+    assert_non_null(strstr(shown, "\nmoulds           - (not measured in "
+                                  "this run, or stored by an older Facet"));
+    assert_non_null(strstr(shown, "\njoint length     - (not measured in "
+                                  "this run, or stored by an older Facet"));
+    assert_non_null(strstr(shown, "\ncost terms       - (not measured in "
+                                  "this run, or stored by an older Facet"));
     assert_null(strstr(shown, "moulds           0"));
     free(shown);
 
