@@ -97,6 +97,61 @@ static int find_column(const struct column_text *cols, int n,
     return -1;
 }
 
+/* Looks up the entry of store's schema named name (any case, as SQLite
+ * resolves names): its type into type ("" when none) and its SQL into
+ * *sql (malloc'ed; NULL when none). */
+static int schema_entry(struct store *store, const char *name, char *type,
+                        size_t type_size, char **sql,
+                        struct facet_error *err)
+{
+    sqlite3_stmt *s;
+    int rc = store_prepare(store, "SELECT type, coalesce(sql, '') FROM"
+                           " sqlite_schema WHERE name = ?1 COLLATE NOCASE",
+                           &s, "checking the schema", err);
+    if (rc != FACET_OK)
+        return rc;
+    sqlite3_bind_text(s, 1, name, -1, SQLITE_TRANSIENT);
+    type[0] = '\0';
+    *sql = NULL;
+    if (sqlite3_step(s) == SQLITE_ROW) {
+        snprintf(type, type_size, "%s",
+                 (const char *)sqlite3_column_text(s, 0));
+        const char *text = (const char *)sqlite3_column_text(s, 1);
+        *sql = strdup(text ? text : "");
+        if (*sql == NULL)
+            rc = facet_error_set(err, FACET_EWORK, "out of memory");
+    }
+    sqlite3_finalize(s);
+    return rc;
+}
+
+/* An index of the user's own on one of Facet's tables is let be, as
+ * long as Facet's writes run none of its SQL: an index on an expression
+ * or with a WHERE (Facet makes neither) is refused. */
+static int check_indexes(struct store *store, const char *table,
+                         struct facet_error *err)
+{
+    sqlite3_stmt *s;
+    int rc = store_prepare(store, "SELECT il.name FROM pragma_index_list(?1)"
+                           " AS il WHERE il.partial OR EXISTS (SELECT 1 FROM"
+                           " pragma_index_xinfo(il.name) WHERE cid = -2)"
+                           " LIMIT 1", &s, "checking the schema", err);
+    if (rc != FACET_OK)
+        return rc;
+    sqlite3_bind_text(s, 1, table, -1, SQLITE_TRANSIENT);
+    int step = sqlite3_step(s);
+    if (step == SQLITE_ROW)
+        rc = facet_error_set(err, FACET_EINPUT,
+            "%s: holds index '%.60s' on %s, on an expression or with a "
+            "WHERE, which Facet never makes: the file's own SQL is not run; "
+            "the file is not opened", store->path,
+            (const char *)sqlite3_column_text(s, 0), table);
+    else if (step != SQLITE_DONE)
+        rc = store_fail(store, "checking the schema", err);
+    sqlite3_finalize(s);
+    return rc;
+}
+
 /* The most columns a table of Facet's has, with room to spare: a table
  * wider than this is not Facet's anyway. */
 #define COLUMNS_MOST 256
@@ -151,33 +206,27 @@ static int check_table(struct store *store, struct store *expected,
             "%s: table %s's keys or kind (%.120s) are not those of Facet's "
             "schema %d (%.120s): the file was altered; it is not opened",
             store->path, name, have_keys, version, want_keys);
-    return rc;
-}
-
-/* Looks up what expected has by name (any case, as SQLite resolves
- * names): its type into type ("" when nothing) and its SQL into sql. */
-static int expected_entry(struct store *expected, const char *name,
-                          char *type, size_t type_size, char **sql,
-                          struct facet_error *err)
-{
-    sqlite3_stmt *s;
-    int rc = store_prepare(expected, "SELECT type, sql FROM sqlite_schema"
-                           " WHERE name = ?1 COLLATE NOCASE", &s,
-                           "checking the schema", err);
-    if (rc != FACET_OK)
-        return rc;
-    sqlite3_bind_text(s, 1, name, -1, SQLITE_TRANSIENT);
-    type[0] = '\0';
-    *sql = NULL;
-    if (sqlite3_step(s) == SQLITE_ROW) {
-        snprintf(type, type_size, "%s",
-                 (const char *)sqlite3_column_text(s, 0));
-        const char *text = (const char *)sqlite3_column_text(s, 1);
-        *sql = strdup(text ? text : "");
-        if (*sql == NULL)
-            rc = facet_error_set(err, FACET_EWORK, "out of memory");
-    }
-    sqlite3_finalize(s);
+    /* What the pragmas do not show (a CHECK, a collation, a generated
+     * column's expression) is in the declaration: Facet's own is the
+     * text its migrations leave (an ALTER TABLE adds to it, and a DROP
+     * COLUMN takes it back out, word for word). */
+    char type[16];
+    char *want_sql = NULL, *have_sql = NULL;
+    if (rc == FACET_OK)
+        rc = schema_entry(expected, name, type, sizeof type, &want_sql, err);
+    if (rc == FACET_OK)
+        rc = schema_entry(store, name, type, sizeof type, &have_sql, err);
+    if (rc == FACET_OK && (want_sql == NULL || have_sql == NULL ||
+                           strcmp(want_sql, have_sql) != 0))
+        rc = facet_error_set(err, FACET_EINPUT,
+            "%s: table %s is not declared as Facet's schema %d declares it "
+            "(a constraint, collation or generated column of the file's "
+            "own): the file was altered; it is not opened", store->path,
+            name, version);
+    free(want_sql);
+    free(have_sql);
+    if (rc == FACET_OK)
+        rc = check_indexes(store, name, err);
     return rc;
 }
 
@@ -205,8 +254,8 @@ static int check_entry(struct store *store, struct store *expected,
         return FACET_OK;
     char want_type[16];
     char *want_sql = NULL;
-    int rc = expected_entry(expected, name, want_type, sizeof want_type,
-                            &want_sql, err);
+    int rc = schema_entry(expected, name, want_type, sizeof want_type,
+                          &want_sql, err);
     if (rc == FACET_OK && strcmp(want_type, "table") == 0)
         rc = facet_error_set(err, FACET_EINPUT,
             "%s: '%.60s' is a view where Facet keeps a table: the file was "

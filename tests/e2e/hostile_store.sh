@@ -141,7 +141,7 @@ refused "show: a trigger that never ends is refused, not fired" "holds trigger '
     "$WORK/triggerloop.db" "$FACET" show "$WORK/triggerloop.db" --run 2 --option 1
 
 # (d) Facet's tables as Facet declares them: a column's type changed, a
-# column dropped, NOT NULL taken off.
+# column dropped.
 hostile texttype "PRAGMA writable_schema = ON;
     UPDATE sqlite_schema SET sql = replace(sql, ' cost REAL NOT NULL,', ' cost TEXT NOT NULL,')
     WHERE name = 'options';"
@@ -153,6 +153,19 @@ refused "options: a column's type changed is refused, naming it" \
 hostile dropped "ALTER TABLE options DROP COLUMN knee;"
 refused "runs: a column dropped is refused, naming it" "table options has no column knee" \
     "$WORK/dropped.db" "$FACET" runs "$WORK/dropped.db"
+
+# What the pragmas do not show: a CHECK of the file's own on a Facet
+# table, and an index on an expression, both run by Facet's writes.
+hostile check "PRAGMA writable_schema = ON;
+    UPDATE sqlite_schema SET sql = replace(sql, ' cost REAL NOT NULL,',
+        ' cost REAL NOT NULL CHECK (length(printf(''%.*c'', 100000000, ''x'')) > 0),')
+    WHERE name = 'options';"
+refused "options: a CHECK of the file's own on options is refused" \
+    "table options is not declared as Facet's schema 8 declares it" \
+    "$WORK/check.db" "$FACET" options "$WORK/check.db"
+hostile expression "CREATE INDEX spin ON panels(length(printf('%.*c', 100000000, 'x')));"
+refused "show: an index on an expression is refused" "holds index 'spin' on panels, on an expression" \
+    "$WORK/expression.db" "$FACET" show "$WORK/expression.db" --run 1 --option "$unstored"
 
 # What the file may add of its own: an index and a table of its own read
 # as before.
