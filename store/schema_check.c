@@ -114,8 +114,8 @@ static int schema_entry(struct store *store, const char *name, char *type,
     type[0] = '\0';
     *sql = NULL;
     if (sqlite3_step(s) == SQLITE_ROW) {
-        snprintf(type, type_size, "%s",
-                 (const char *)sqlite3_column_text(s, 0));
+        const char *kind = (const char *)sqlite3_column_text(s, 0);
+        snprintf(type, type_size, "%s", kind ? kind : "");
         const char *text = (const char *)sqlite3_column_text(s, 1);
         *sql = strdup(text ? text : "");
         if (*sql == NULL)
@@ -310,8 +310,8 @@ static int check_tables(struct store *store, struct store *expected,
     while (rc == FACET_OK && sqlite3_step(s) == SQLITE_ROW) {
         const char *name = (const char *)sqlite3_column_text(s, 0);
         sqlite3_stmt *find;
-        rc = store_prepare(store, "SELECT type FROM sqlite_schema"
-                           " WHERE name = ?1 COLLATE NOCASE", &find,
+        rc = store_prepare(store, "SELECT coalesce(type, '') FROM"
+                           " sqlite_schema WHERE name = ?1 COLLATE NOCASE", &find,
                            "checking the schema", err);
         if (rc != FACET_OK)
             break;
