@@ -27,6 +27,8 @@ done
 q() { sqlite3 -batch "$1" "$2"; }
 costs() { q "$1" "SELECT group_concat(cost, ',') FROM options WHERE run = 2"; }
 truth=$(costs "$WORK/r.db")
+# The schema this Facet writes, as SQLite reads it from the file it made.
+V=$(q "$WORK/r.db" 'PRAGMA user_version')
 same "(run 2's costs are its own, not 1)" "$(echo "$truth" | grep -c '^1.0')" 0
 # An option of run 1 whose panels are not stored: show and export compute
 # and store them, as a writer.
@@ -90,15 +92,15 @@ cp "$WORK/r.db" "$WORK/old.db"
 for cmd in "runs" "options" "show --run 1 --option $unstored" "plot --run 1 -o $WORK/plot.svg"; do
     # shellcheck disable=SC2086
     refused "${cmd%% *} on an older file: refused, saying how to migrate it, the file unchanged" \
-        'old\.db: written by an older Facet \(schema 4; this one reads 8\).*facet migrate FILE' \
+        "old\\.db: written by an older Facet \\(schema 4; this one reads $V\\).*facet migrate FILE" \
         "$WORK/old.db" "$FACET" ${cmd%% *} "$WORK/old.db" ${cmd#"${cmd%% *}"}
 done
 expect "facet migrate migrates it" 0 "$FACET" migrate "$WORK/old.db"
-stdout_has "  ... saying from and to" 'old\.db: migrated from schema 4 to 8$'
-same "  ... schema 8 (sqlite3)" "$(q "$WORK/old.db" 'PRAGMA user_version')" 8
+stdout_has "  ... saying from and to" "old\\.db: migrated from schema 4 to $V\$"
+same "  ... schema $V (sqlite3)" "$(q "$WORK/old.db" 'PRAGMA user_version')" "$V"
 expect "  ... and facet runs reads it" 0 "$FACET" runs "$WORK/old.db"
 expect "facet migrate again: nothing to do" 0 "$FACET" migrate "$WORK/old.db"
-stdout_has "  ... and says so" 'already at schema 8; nothing to do'
+stdout_has "  ... and says so" "already at schema $V; nothing to do"
 # What the issue saw: facet runs migrated an older file as a writer, and
 # a trigger then forged another run's costs.
 cp "$WORK/r.db" "$WORK/oldtrigger.db"
@@ -148,7 +150,7 @@ hostile texttype "PRAGMA writable_schema = ON;
 same "(sqlite3: options.cost is TEXT)" \
     "$(q "$WORK/texttype.db" "SELECT type FROM pragma_table_info('options') WHERE name = 'cost'")" TEXT
 refused "options: a column's type changed is refused, naming it" \
-    "column options\.cost is 'TEXT NOT NULL' where Facet's schema 8 has 'REAL NOT NULL'" \
+    "column options\.cost is 'TEXT NOT NULL' where Facet's schema $V has 'REAL NOT NULL'" \
     "$WORK/texttype.db" "$FACET" options "$WORK/texttype.db"
 hostile dropped "ALTER TABLE options DROP COLUMN knee;"
 refused "runs: a column dropped is refused, naming it" "table options has no column knee" \
@@ -161,7 +163,7 @@ hostile check "PRAGMA writable_schema = ON;
         ' cost REAL NOT NULL CHECK (length(printf(''%.*c'', 100000000, ''x'')) > 0),')
     WHERE name = 'options';"
 refused "options: a CHECK of the file's own on options is refused" \
-    "table options is not declared as Facet's schema 8 declares it" \
+    "table options is not declared as Facet's schema $V declares it" \
     "$WORK/check.db" "$FACET" options "$WORK/check.db"
 hostile expression "CREATE INDEX spin ON panels(length(printf('%.*c', 100000000, 'x')));"
 refused "show: an index on an expression is refused" "holds index 'spin' on panels, on an expression" \
@@ -188,7 +190,7 @@ same "(sqlite3: shard 1 holds a NULL cost)" \
     "$(q "$WORK/shard1.db" 'SELECT count(*) FROM options WHERE cost IS NULL')" 1
 run timeout 20 "$FACET" merge "$WORK/merged.db" "$WORK/shard1.db" "$WORK/shard2.db"
 same "merge: a shard without NOT NULL on cost is refused in one line, naming it, nothing written" \
-    "$STATUS $(wc -l <"$ERR") $(grep -c "shard1\.db: column options\.cost is 'REAL' where Facet's schema 8 has 'REAL NOT NULL'" "$ERR") $(ls "$WORK" | grep -c '^merged\.db')" \
+    "$STATUS $(wc -l <"$ERR") $(grep -c "shard1\.db: column options\.cost is 'REAL' where Facet's schema $V has 'REAL NOT NULL'" "$ERR") $(ls "$WORK" | grep -c '^merged\.db')" \
     "2 1 1 0"
 
 # (f) The workbench opening a hostile file: the message, not a hang.
@@ -217,5 +219,5 @@ tui_refused "tui: a trigger that never ends: refused" "holds trigger 'spin' on r
 cp "$WORK/r.db" "$WORK/oldtui.db"
 "$store_v4" "$WORK/oldtui.db" || exit 1
 tui_refused "tui: an older file is not migrated behind the user's back" \
-    'written by an older Facet \(schema 4; this one reads 8\).*facet migrate FILE' "$WORK/oldtui.db"
+    "written by an older Facet \\(schema 4; this one reads $V\\).*facet migrate FILE" "$WORK/oldtui.db"
 exit 0
