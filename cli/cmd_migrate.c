@@ -14,11 +14,8 @@
 
 static int migrate_main(int argc, char **argv, struct facet_error *err)
 {
-    const struct arg_option options[] = {
-        {NULL, 0, ARG_FLAG, NULL, NULL},
-    };
     const char *path;
-    int rc = args_parse_one(argc, argv, options, NULL, &path,
+    int rc = args_parse_one(argc, argv, NULL, NULL, &path,
             "migrate: name the result database (facet migrate runs.db)",
             err);
     if (rc != FACET_OK)
@@ -41,8 +38,11 @@ const struct command cmd_migrate = {
     .usage = "DB",
     .summary = "Bring an older Facet's result store to this Facet's "
                "schema.",
-    .options = "examples:\n"
-               "  facet migrate runs.db   (the file is written: keep a copy "
-               "for an older Facet)\n",
+    .before = "",
+    .options = NULL,
+    .after = "The file is written, and no older Facet opens it after: keep "
+             "a copy for one.\n"
+             "examples:\n"
+             "  facet migrate runs.db\n",
     .run = migrate_main,
 };
