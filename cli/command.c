@@ -18,6 +18,7 @@ const struct command *const command_table[] = {
     &cmd_tui,
     &cmd_export,
     &cmd_plot,
+    &cmd_migrate,
     &cmd_example,
     &cmd_help,
     NULL

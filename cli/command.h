@@ -68,5 +68,6 @@ extern const struct command cmd_show;
 extern const struct command cmd_tui;
 extern const struct command cmd_export;
 extern const struct command cmd_plot;
+extern const struct command cmd_migrate;
 
 #endif

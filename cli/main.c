@@ -30,6 +30,7 @@ static const struct {
     [FACET_SETTING_MODULE] = {"", ": give --module WMIN:WMAX x HMIN:HMAX "
                                   "(or --object NAME for one surface)"},
     [FACET_SETTING_FEWER] = {"", ", or pass --fewer to replace it"},
+    [FACET_SETTING_MIGRATE] = {"", " (facet migrate FILE migrates it)"},
 };
 
 /* Prints the error in one line. Its message can quote what Facet did not

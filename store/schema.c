@@ -580,6 +580,34 @@ static int file_uri(const char *path, const char *query, char *uri,
     return tail >= 0 && (size_t)tail < size - n;
 }
 
+/* Sets the connection up for a file anyone may have written (SQLite's
+ * "Defense against the dark arts"): no SQL of the file's own runs on it.
+ * Facet makes no trigger, and reads none of the views it makes for the
+ * user (pareto, run_summary): both are switched off, so that a trigger
+ * does not fire and a view is not read even if one were missed by
+ * store_schema_check. Functions the schema calls (a CHECK, an index on
+ * an expression) may only be innocuous ones; and SQL cannot corrupt the
+ * file on purpose (DEFENSIVE). */
+static int defend(struct store *store, struct facet_error *err)
+{
+    static const int settings[][2] = {
+        {SQLITE_DBCONFIG_DEFENSIVE, 1},
+        {SQLITE_DBCONFIG_TRUSTED_SCHEMA, 0},
+        {SQLITE_DBCONFIG_ENABLE_TRIGGER, 0},
+        {SQLITE_DBCONFIG_ENABLE_VIEW, 0},
+    };
+    for (size_t k = 0; k < sizeof settings / sizeof settings[0]; k++) {
+        int now = -1;
+        if (sqlite3_db_config(store->db, settings[k][0], settings[k][1],
+                              &now) != SQLITE_OK || now != settings[k][1])
+            return facet_error_set(err, FACET_EWORK,
+                "%s: this SQLite (%s) cannot open a file defensively: "
+                "Facet needs SQLite 3.31 or later", store->path,
+                sqlite3_libversion());
+    }
+    return FACET_OK;
+}
+
 /* Opens path into *store (allocated here) with SQLite flags, reading the
  * header: *application and *version. The file name is given as a URI when
  * query is not NULL. */
@@ -611,6 +639,11 @@ static int open_connection(const char *path, const char *query, int flags,
         rc = store->db ? store_fail(store, "opening", err)
                        : facet_error_set(err, FACET_EWORK,
                                          "%s: cannot open", path);
+        store_close(store);
+        return rc;
+    }
+    rc = defend(store, err);
+    if (rc != FACET_OK) {
         store_close(store);
         return rc;
     }
@@ -652,6 +685,11 @@ static int open_connection(const char *path, const char *query, int flags,
             "%s: written by a newer Facet (schema %d; this Facet %s reads "
             "up to %d): upgrade Facet", path, *version, FACET_VERSION,
             STORE_SCHEMA_VERSION);
+    /* Before anything else is read or written: what the file holds
+     * besides data is Facet's own schema of its version, or it is not
+     * opened. */
+    if (rc == FACET_OK && *application == STORE_APPLICATION_ID)
+        rc = store_schema_check(store, *version, err);
     if (rc != FACET_OK) {
         store_close(store);
         return rc;
@@ -660,9 +698,34 @@ static int open_connection(const char *path, const char *query, int flags,
     return FACET_OK;
 }
 
+/* Refuses a file that is not at this Facet's schema, for an open that
+ * does not migrate (only reads, or writes only what it computes): an empty
+ * file holds no database, an older one says how to migrate it. Before
+ * anything is written, so the file is left as it was. */
+static int refuse_older(const char *path, int application, int version,
+                        struct facet_error *err)
+{
+    if (version >= STORE_SCHEMA_VERSION)
+        return FACET_OK;
+    if (application != STORE_APPLICATION_ID)
+        return facet_error_about(err, FACET_SETTING_STORE, FACET_EINPUT,
+                                 "%s: an empty file, no Facet database",
+                                 path);
+    return facet_error_about(err, FACET_SETTING_MIGRATE, FACET_EINPUT,
+        "%s: written by an older Facet (schema %d; this one reads %d), "
+        "and left as it is: migrating writes into it, and no older Facet "
+        "opens it after", path, version, STORE_SCHEMA_VERSION);
+}
+
+/* How open_writer treats a file of an older schema. */
+enum older { OLDER_MIGRATE, OLDER_REFUSE };
+
 /* Opens path for writing (creating it when create is set): WAL, foreign
- * keys, the schema migrated forward, orphaned runs marked. */
-static int open_writer(const char *path, int create, struct store **out,
+ * keys, the schema migrated forward (or refused: older), orphaned runs
+ * marked. *found (NULL: not wanted) gets the file's schema version as it
+ * was opened. */
+static int open_writer(const char *path, int create, enum older older,
+                       int *found, struct store **out,
                        struct facet_error *err)
 {
     int application = 0, version = 0;
@@ -672,7 +735,14 @@ static int open_writer(const char *path, int create, struct store **out,
                              &version, err);
     if (rc != FACET_OK)
         return rc;
-    rc = use_wal(store, err);
+    if (found != NULL)
+        *found = version;
+    /* A new or empty file is given the schema whatever older says: it
+     * holds nothing to keep as it is. */
+    if (older == OLDER_REFUSE && application == STORE_APPLICATION_ID)
+        rc = refuse_older(path, application, version, err);
+    if (rc == FACET_OK)
+        rc = use_wal(store, err);
     if (rc == FACET_OK)
         rc = store_exec(store, "PRAGMA synchronous = NORMAL;"
                         "PRAGMA foreign_keys = ON;"
@@ -718,12 +788,12 @@ static int require_file(const char *path, struct facet_error *err)
     return FACET_OK;
 }
 
-int store_open(const char *path, struct store **out,
-               struct facet_error *err)
+/* Refuses a path a writer may not open: anything but a regular file or
+ * a new one, for SQLite would write its journal beside it
+ * (/dev/null-journal, as root), and a link, for Facet writes through
+ * none (outfile.h). */
+static int writable_place(const char *path, struct facet_error *err)
 {
-    /* A database is a regular file or a new one: SQLite would write its
-     * journal beside anything else (/dev/null-journal, as root). Nor is
-     * it a link: Facet writes through none (outfile.h). */
     int rc = outfile_refuse_link(path, err);
     if (rc != FACET_OK)
         return rc;
@@ -733,7 +803,42 @@ int store_open(const char *path, struct store **out,
                                "%s: not a regular file, not a database "
                                "(name a Facet database or a new file)",
                                path);
-    return open_writer(path, 1, out, err);
+    return FACET_OK;
+}
+
+int store_open(const char *path, struct store **out,
+               struct facet_error *err)
+{
+    int rc = writable_place(path, err);
+    if (rc != FACET_OK)
+        return rc;
+    return open_writer(path, 1, OLDER_MIGRATE, NULL, out, err);
+}
+
+int store_open_current(const char *path, struct store **out,
+                       struct facet_error *err)
+{
+    int rc = writable_place(path, err);
+    if (rc != FACET_OK)
+        return rc;
+    return open_writer(path, 1, OLDER_REFUSE, NULL, out, err);
+}
+
+int store_migrate(const char *path, int *from, struct facet_error *err)
+{
+    int rc = require_file(path, err);
+    if (rc == FACET_OK)
+        rc = writable_place(path, err);
+    if (rc == FACET_OK && access(path, W_OK) != 0)
+        return facet_error_set(err, FACET_EINPUT,
+            "%s: read-only here (%s): copy it where it can be written and "
+            "migrate the copy", path, strerror(errno));
+    struct store *store;
+    if (rc == FACET_OK)
+        rc = open_writer(path, 0, OLDER_MIGRATE, from, &store, err);
+    if (rc == FACET_OK)
+        store_close(store);
+    return rc;
 }
 
 int store_open_existing(const char *path, struct store **out,
@@ -744,7 +849,7 @@ int store_open_existing(const char *path, struct store **out,
     if (rc != FACET_OK)
         return rc;
     if (access(path, W_OK) == 0)
-        return open_writer(path, 0, out, err);
+        return open_writer(path, 0, OLDER_REFUSE, NULL, out, err);
     return store_open_read(path, out, err);
 }
 
@@ -772,24 +877,21 @@ int store_open_read(const char *path, struct store **out,
     }
     if (rc != FACET_OK)
         return rc;
-    if (version < STORE_SCHEMA_VERSION) {
-        /* An older Facet's file: a reader cannot read the new columns, so
-         * the file is migrated once, when it may be written. */
+    /* A reader cannot read an older file's missing columns, and does not
+     * migrate it: that would write into a file it was asked to read, and
+     * shut every older Facet out of it. */
+    rc = refuse_older(path, application, version, err);
+    if (rc != FACET_OK) {
         store_close(store);
-        if (access(path, W_OK) != 0)
-            return facet_error_set(err, FACET_EINPUT,
-                "%s: written by an older Facet (schema %d; this one reads "
-                "%d) and read-only here: copy it where it can be written "
-                "and open it once to migrate it", path, version,
-                STORE_SCHEMA_VERSION);
-        rc = open_writer(path, 0, &store, err);
-        if (rc != FACET_OK)
-            return rc;
-        store_close(store);
-        return store_open_read(path, out, err);
+        return rc;
     }
     *out = store;
     return FACET_OK;
+}
+
+int store_schema_version(void)
+{
+    return STORE_SCHEMA_VERSION;
 }
 
 int store_read_only(const struct store *store)

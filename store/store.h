@@ -199,28 +199,55 @@ struct option_row {
     size_t modules;
 };
 
-/* Opens or creates the database at path. A new file gets the current
- * schema; an older Facet schema is migrated; a file of another application,
- * a newer schema, or a corrupt file is FACET_EINPUT with a message naming
- * the file and what is wrong. Runs left "running" by a writer that is gone
- * (same host, process not alive) are marked "interrupted". */
+/* Every open below treats the file as anyone's: SQLite is set up so that
+ * no SQL of the file's own runs (no trigger fires, no view is read, the
+ * schema may call innocuous functions only), and a file whose schema is
+ * not Facet's own of its version (a trigger, a view Facet did not make,
+ * a view where Facet keeps a table, a column changed, added or missing)
+ * is FACET_EINPUT naming the file and the first difference, before
+ * anything is read or written (store_schema_check). */
+
+/* Opens or creates the database at path, for writing. A new file gets the
+ * current schema; an older Facet schema is migrated; a file of another
+ * application, a newer schema, or a corrupt file is FACET_EINPUT with a
+ * message naming the file and what is wrong. Runs left "running" by a
+ * writer that is gone (same host, process not alive) are marked
+ * "interrupted". For the commands that write runs (optimize, merge). */
 int store_open(const char *path, struct store **out, struct facet_error *err);
+
+/* store_open, but a file of an older schema is refused as
+ * store_open_read refuses it, not migrated: for the workbench, opened to
+ * look before anything is written (a new file is still created). */
+int store_open_current(const char *path, struct store **out,
+                       struct facet_error *err);
+
+/* Brings the existing database at path to the current schema, as a
+ * writer, and closes it: *from gets the version it had (the current one:
+ * nothing was done). FACET_EINPUT when there is no such file, it may not
+ * be written, or it is not Facet's. The only way, with store_open, that
+ * an existing file's schema changes. */
+int store_migrate(const char *path, int *from, struct facet_error *err);
 
 /* Opens the database at path for reading only, for the commands that only
  * read (runs, options, plot): a missing path is FACET_EINPUT ("no such
  * database") and nothing is created; the file is opened read-only, as
  * immutable media when its folder is read-only (no -shm can be made
- * there). A file of an older schema is migrated first when it may be
- * written, and refused with what to do when not. A run left "running" by
- * a writer that is gone reads as "interrupted" (nothing is written). */
+ * there). A file of an older schema is FACET_EINPUT about
+ * FACET_SETTING_MIGRATE, and left as it is: reading never migrates. A run
+ * left "running" by a writer that is gone reads as "interrupted" (nothing
+ * is written). */
 int store_open_read(const char *path, struct store **out,
                     struct facet_error *err);
 
 /* Opens an existing database (FACET_EINPUT when there is none) for
  * writing when it may be written, else as store_open_read: for commands
- * that store what they compute only if they can (show, export). */
+ * that store what they compute only if they can (show, export). A file of
+ * an older schema is refused as store_open_read refuses it. */
 int store_open_existing(const char *path, struct store **out,
                         struct facet_error *err);
+
+/* The schema version this Facet reads and writes (PRAGMA user_version). */
+int store_schema_version(void);
 
 /* 1 when store was opened read-only: nothing can be stored. */
 int store_read_only(const struct store *store);

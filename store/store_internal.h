@@ -63,6 +63,17 @@ double store_column_or_nan(sqlite3_stmt *stmt, int col);
 int store_schema_migrate(struct store *store, int from, int to,
                          struct facet_error *err);
 
+/* Checks that what store's file holds besides data is Facet's schema of
+ * version (0 .. STORE_SCHEMA_VERSION), as store_schema_migrate makes it:
+ * no trigger, no view but Facet's own word for word, no virtual table,
+ * and each of Facet's tables an ordinary table with its columns (name,
+ * type, NOT NULL, default, key, in order), foreign keys and kind.
+ * Indexes and other ordinary tables are let be. FACET_EINPUT with a
+ * one-line message naming the file and the first difference; nothing is
+ * written. (schema_check.c) */
+int store_schema_check(struct store *store, int version,
+                       struct facet_error *err);
+
 /* The shard columns of runs (store_shard.c), read after the cost
  * columns by store_shard_from_row from result column col on. */
 #define STORE_SHARD_COLUMNS \

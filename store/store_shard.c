@@ -92,6 +92,10 @@ static int first_bad_value(struct store *store, int64_t run,
                            struct facet_error *err)
 {
     column[0] = '\0';
+    /* The shard's own table describes Facet's declared one: the open
+     * compared it with the schema Facet's migrations build
+     * (store_schema_check), types and NOT NULL included, so a table
+     * rebuilt without NOT NULL to hide a NULL was refused before this. */
     sqlite3_stmt *info;
     int rc = store_prepare(store, "SELECT name, upper(type), \"notnull\""
                            " FROM pragma_table_info('options')"
@@ -113,8 +117,8 @@ static int first_bad_value(struct store *store, int64_t run,
                                (const char *)sqlite3_column_text(info, 1),
                                sqlite3_column_int(info, 2));
     sqlite3_finalize(info);
-    /* The clauses are of Facet's own schema (checked when opened): a
-     * table too wide for them is not Facet's. */
+    /* The clauses are of Facet's own schema: a table too wide for them
+     * is not Facet's. */
     if (fits && (size_t)snprintf(sql + used, most - used,
                                  " END AS bad FROM options WHERE run = ?1"
                                  " AND bad IS NOT NULL LIMIT 1") <

@@ -723,7 +723,9 @@ int tui_run(const char *db_path, const char *surface,
         free(app);
         return FACET_OK;
     }
-    int rc = store_open(app->db_path, &app->store, err);
+    /* Opened to look: an older file is not migrated behind the user's
+     * back (store_open_current says how). */
+    int rc = store_open_current(app->db_path, &app->store, err);
     if (rc != FACET_OK) {
         free(app);
         return rc;

@@ -57,6 +57,8 @@ enum facet_setting {
                                  object or group of the file */
     FACET_SETTING_FEWER,      /* fix: let a merge replace a merged run with
                                  one of fewer shards */
+    FACET_SETTING_MIGRATE,    /* fix: bring an older Facet's database to
+                                 this Facet's schema, as a writer */
     FACET_SETTING_COUNT
 };
 

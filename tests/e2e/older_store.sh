@@ -5,7 +5,8 @@
 # columns are NULL (the truth, read with sqlite3). Facet shows them as not
 # known, never as 0: empty in --csv, null in --json, "- (not stored ...)"
 # in show and "-" in the workbench's detail pane and map legend; a sort by
-# them keeps every option.
+# them keeps every option. A command that reads refuses the older file
+# until facet migrate has migrated it.
 # layers: store cli
 . "$(dirname "$0")/lib.sh"
 
@@ -26,8 +27,17 @@ fi
 q() { sqlite3 "$WORK/old.db" "$1"; }
 same "(the file is at schema 4)" "$(q 'PRAGMA user_version')" 4
 
-expect "(facet options migrates it and lists the run)" 0 \
+# Reading never migrates (issue 28, item 6): options refuses the file in
+# one line that says how to migrate it, and leaves it byte for byte; facet
+# migrate, a writer asked for by name, migrates it.
+sum_before=$(sha256sum <"$WORK/old.db")
+expect_error "facet options refuses an older file, saying how to migrate it" \
+    'old.db: written by an older Facet \(schema 4; this one reads 9\).*facet migrate FILE' \
     "$FACET" options "$WORK/old.db" --csv
+same "(sha256: the older file is as it was)" "$(sha256sum <"$WORK/old.db")" "$sum_before"
+expect "facet migrate migrates it" 0 "$FACET" migrate "$WORK/old.db"
+stdout_has "  ... and says so" 'old.db: migrated from schema 4 to 9$'
+expect "(facet options lists the run)" 0 "$FACET" options "$WORK/old.db" --csv
 same "(sqlite3: migrated past 4, the old options' mould counts and joints NULL)" \
     "$(q 'SELECT (SELECT user_version >= 5 FROM pragma_user_version), count(*) FROM options
           WHERE moulds IS NULL AND sp_moulds IS NULL AND dp_moulds IS NULL
@@ -75,7 +85,7 @@ same "(sqlite3: v4 migrated to 9, the run's options without a module)" \
     "9|4|0|0|0|0|0|1|1"
 
 # A run of schema 7 (the last before projects) and one of schema 3: both
-# open and migrate to 8 with their runs as they were.
+# are refused by facet runs, and migrate to 9 with their runs as they were.
 for version in 7 3; do
     db=$WORK/v$version.db
     "$FACET" optimize "$WORK/torus.obj" --db "$db" --u 4:5 --v 4:5 --threshold 3 >/dev/null 2>&1 || exit 1
@@ -89,7 +99,9 @@ for version in 7 3; do
                        ALTER TABLE runs DROP COLUMN store_panels; PRAGMA user_version = 3;"
     fi
     same "(the file is at schema $version)" "$(sqlite3 "$db" 'PRAGMA user_version')" "$version"
-    expect "schema $version: facet runs opens and migrates it" 0 "$FACET" runs "$db"
+    expect_error "schema $version: facet runs refuses it, saying how to migrate it" \
+        "written by an older Facet \\(schema $version;.*facet migrate FILE" "$FACET" runs "$db"
+    expect "schema $version: facet migrate migrates it" 0 "$FACET" migrate "$db"
     same "schema $version: migrated to 9, with the project tables" \
         "$(sqlite3 "$db" "SELECT (SELECT user_version FROM pragma_user_version), count(*) FROM sqlite_master WHERE name IN ('surfaces', 'option_surfaces')")" "9|2"
     same "schema $version: the run and its options as they were" \

@@ -118,13 +118,14 @@ else
     fail "the grid run's options differ (the UV matters)"
 fi
 
-# A version-3 file (no runs.uv) is migrated to the current version when
-# opened.
+# A version-3 file (no runs.uv) is migrated to the current version by
+# facet migrate.
 # (tools/store_v4 takes it back to version 4 first, as a Facet before the
 # cost model left it.)
 "$(dirname "$FACET")/tools/store_v4" "$db" || fail "store_v4 took the file back to version 4"
 sql "$db" "ALTER TABLE runs DROP COLUMN uv; ALTER TABLE runs DROP COLUMN warnings; ALTER TABLE runs DROP COLUMN store_panels; PRAGMA user_version = 3;"
-expect "facet runs on a v3 file" 0 "$FACET" runs "$db"
+expect "facet migrate on a v3 file" 0 "$FACET" migrate "$db"
+expect "facet runs on the migrated file" 0 "$FACET" runs "$db"
 same "migrated: version 9, runs.uv back, NULL, runs.warnings empty" \
     "$(sql "$db" "SELECT (SELECT user_version FROM pragma_user_version), (SELECT count(*) FROM runs WHERE uv IS NULL), (SELECT count(*) FROM runs WHERE warnings = '')")" "9|2|2"
 exit 0

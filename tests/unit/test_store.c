@@ -1062,6 +1062,66 @@ static void test_migrates_v6(void **state)
     sqlite3_close(db);
 }
 
+/* The file's user_version, read by SQLite itself. */
+static int user_version(const char *path)
+{
+    sqlite3 *db;
+    sqlite3_stmt *s;
+    assert_int_equal(sqlite3_open(path, &db), SQLITE_OK);
+    assert_int_equal(sqlite3_prepare_v2(db, "PRAGMA user_version", -1, &s,
+                                        NULL), SQLITE_OK);
+    assert_int_equal(sqlite3_step(s), SQLITE_ROW);
+    int version = sqlite3_column_int(s, 0);
+    sqlite3_finalize(s);
+    sqlite3_close(db);
+    return version;
+}
+
+/* No open that reads migrates an older file (issue 28, item 6): each is
+ * refused in one line about FACET_SETTING_MIGRATE (the CLI names facet
+ * migrate), the file stays at its version (SQLite says), and
+ * store_migrate, asked for, migrates it once. */
+static void test_readers_never_migrate(void **state)
+{
+    (void)state;
+    struct study_request request;
+    int64_t run;
+    const char *path = older_file("readers", STORE_FIXTURE_UNDO_V5
+                                  "PRAGMA user_version = 4;", &run,
+                                  &request);
+    int (*const opens[])(const char *, struct store **,
+                         struct facet_error *) = {
+        store_open_read, store_open_existing, store_open_current};
+    for (size_t k = 0; k < sizeof opens / sizeof opens[0]; k++) {
+        struct facet_error err;
+        struct store *store = NULL;
+        assert_int_equal(opens[k](path, &store, &err), FACET_EINPUT);
+        assert_null(store);
+        assert_int_equal(err.setting, FACET_SETTING_MIGRATE);
+        char words[64];
+        snprintf(words, sizeof words, "older Facet (schema 4; this one "
+                 "reads %d)", store_schema_version());
+        if (strstr(err.message, words) == NULL ||
+            strstr(err.message, path) == NULL)
+            fail_msg("open %zu: '%s'", k, err.message);
+        assert_null(strchr(err.message, '\n'));
+        assert_int_equal(user_version(path), 4);
+    }
+    struct facet_error err;
+    int from = 0;
+    assert_int_equal(store_migrate(path, &from, &err), FACET_OK);
+    assert_int_equal(from, 4);
+    assert_int_equal(user_version(path), store_schema_version());
+    assert_int_equal(store_migrate(path, &from, &err), FACET_OK);
+    assert_int_equal(from, store_schema_version());
+    struct store *store;
+    assert_int_equal(store_open_read(path, &store, &err), FACET_OK);
+    struct run_info info;
+    assert_int_equal(store_run_get(store, run, &info, &err), FACET_OK);
+    assert_int_equal(info.options, 48);
+    store_close(store);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -1081,11 +1141,12 @@ int main(void)
         cmocka_unit_test(test_migrates_v5_shards),
         cmocka_unit_test(test_migrates_v6),
         cmocka_unit_test(test_resume_forced_uv),
+        cmocka_unit_test(test_readers_never_migrate),
     };
     int failed = cmocka_run_group_tests(tests, setup, teardown);
     const char *names[] = {"roundtrip", "queries", "resume", "orphan",
                            "text", "foreign", "newer", "corrupt",
-                           "migrate", "migrate3", "migrate4",
+                           "migrate", "migrate3", "migrate4", "readers",
                            "settings_by_name", "setting_unknown"};
     for (size_t k = 0; k < sizeof names / sizeof *names; k++) {
         fresh_db(names[k]);
