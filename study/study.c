@@ -287,52 +287,29 @@ int study_settings(const struct run_info *run,
 /* Reading a surface: its SHA-256 and the surface itself at once, the
  * hash on a thread of its own (it is a quarter of reading a
  * 100,000-triangle OBJ). */
-struct read_job {
+/* What reading a single surface parses: the file into the surface. */
+struct surface_read {
     const char *path;
-    const struct mesh_options *mesh;  /* NULL: the hash's job */
-    char *digest;                     /* 65 bytes: the hash in hex */
+    const struct mesh_options *mesh;
     struct surface *surface;
-    const struct facet_stop *stop;
-    int rc;
-    struct facet_error err;
 };
 
-static void read_run(void *argument)
+static int surface_parse(void *context, const struct facet_stop *stop,
+                         struct facet_error *err)
 {
-    struct read_job *job = argument;
-    if (job->mesh == NULL)
-        job->rc = sha256_file_stoppable(job->path, job->stop, job->digest,
-                                        &job->err);
-    else
-        job->rc = surface_open_stoppable(job->path, job->mesh, job->stop,
-                                         job->surface, &job->err);
+    struct surface_read *r = context;
+    return surface_open_stoppable(r->path, r->mesh, stop, r->surface, err);
 }
 
 /* The SHA-256 of path into digest and the surface it holds into *surface
- * (the caller's to release with surface_close, also after a failure).
- * The hash's error comes first: it names the file as it was read. */
+ * (the caller's to release with surface_close, also after a failure). */
 static int read_surface(const char *path, const struct mesh_options *mesh,
                         const struct facet_stop *stop, char digest[65],
                         struct surface *surface, struct facet_error *err)
 {
-    struct read_job job[2] = {
-        {path, NULL, digest, NULL, stop, FACET_OK,
-         {0, FACET_SETTING_NONE, ""}},
-        {path, mesh, NULL, surface, stop, FACET_OK,
-         {0, FACET_SETTING_NONE, ""}},
-    };
-    parallel_run(job, sizeof *job, 2, read_run);
-    /* A stop heard by either job is the answer: the other's error, if
-     * any, may be only the stop's too. */
-    for (int k = 0; k < 2; k++)
-        if (job[k].rc == FACET_ESTOP)
-            return facet_stop_error(err);
-    for (int k = 0; k < 2; k++)
-        if (job[k].rc != FACET_OK) {
-            *err = job[k].err;
-            return job[k].rc;
-        }
-    return FACET_OK;
+    struct surface_read read = {path, mesh, surface};
+    return study_read_hashed(&path, 1, (char (*)[65])digest, surface_parse,
+                             &read, stop, err);
 }
 
 /* The places a run's surface may be, first first: as stored (absolute

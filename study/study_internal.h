@@ -17,6 +17,20 @@ void study_stage(const struct study_hooks *hooks, const char *what);
  * should_stop, or one that never fires. */
 struct facet_stop study_stop(const struct study_hooks *hooks);
 
+/* Reads input files: the SHA-256 of paths[0..npaths) into digest[] on
+ * one thread while parse(context, stop, err) reads them on another
+ * (hashing is a fifth to a quarter of reading an OBJ). The hashes' error
+ * comes first, as it names the file as it was read; a stop heard by
+ * either is FACET_ESTOP. What parse made is the caller's to release, also
+ * after a failure. */
+int study_read_hashed(const char *const *paths, size_t npaths,
+                      char (*digest)[65],
+                      int (*parse)(void *context,
+                                   const struct facet_stop *stop,
+                                   struct facet_error *err),
+                      void *context, const struct facet_stop *stop,
+                      struct facet_error *err);
+
 /* The places a run's file may be, first first: as stored (absolute since
  * runs record it so; relative to the working folder in older files), then
  * a relative path against the database's folder, then the file's name in

@@ -12,71 +12,22 @@
 #include <string.h>
 #include <unistd.h>
 
-#include "core/base/parallel.h"
 #include "core/base/sha256.h"
 #include "core/panel/panel.h"
 
-/* The SHA-256 of every file of a project, files[0..n), into digest[]. */
-static int project_digests(const char *const *files, size_t n,
-                           const struct facet_stop *stop,
-                           char (*digest)[65], struct facet_error *err)
-{
-    for (size_t k = 0; k < n; k++) {
-        int rc = sha256_file_stoppable(files[k], stop, digest[k], err);
-        if (rc != FACET_OK)
-            return rc;
-    }
-    return FACET_OK;
-}
-
-/* Reading a project: its files' hashes on one thread while they are
- * parsed on another, as a single surface's are (study.c): hashing is
- * a fifth to a quarter of reading an OBJ. */
-struct project_read_job {
+/* What reading a project parses: its files into the project. */
+struct project_read {
     const struct study_request *request;
-    const struct facet_stop *stop;
-    char (*digest)[65];           /* NULL: the parse's job */
     struct project *project;
-    int rc;
-    struct facet_error err;
 };
 
-static void project_read_run(void *argument)
+static int project_parse(void *context, const struct facet_stop *stop,
+                         struct facet_error *err)
 {
-    struct project_read_job *job = argument;
-    const struct study_request *r = job->request;
-    if (job->digest != NULL)
-        job->rc = project_digests(r->files, r->nfiles, job->stop,
-                                  job->digest, &job->err);
-    else
-        job->rc = project_open_stoppable(r->files, r->nfiles,
-                                         r->mesh.units, job->stop,
-                                         job->project, &job->err);
-}
-
-/* Hashes and parses request's files at once. The hash's error comes
- * first, as a single surface's: it names the file as it was read. */
-static int project_hash_and_open(const struct study_request *request,
-                                 const struct facet_stop *stop,
-                                 char (*digest)[65], struct project *project,
-                                 struct facet_error *err)
-{
-    struct project_read_job job[2] = {
-        {request, stop, digest, NULL, FACET_OK,
-         {0, FACET_SETTING_NONE, ""}},
-        {request, stop, NULL, project, FACET_OK,
-         {0, FACET_SETTING_NONE, ""}},
-    };
-    parallel_run(job, sizeof *job, 2, project_read_run);
-    for (int k = 0; k < 2; k++)
-        if (job[k].rc == FACET_ESTOP)
-            return facet_stop_error(err);
-    for (int k = 0; k < 2; k++)
-        if (job[k].rc != FACET_OK) {
-            *err = job[k].err;
-            return job[k].rc;
-        }
-    return FACET_OK;
+    const struct project_read *r = context;
+    return project_open_stoppable(r->request->files, r->request->nfiles,
+                                  r->request->mesh.units, stop, r->project,
+                                  err);
 }
 
 /* The surface rows of a prepared project whose files' digests are
@@ -162,7 +113,9 @@ int study_project_read(const struct study_request *request,
         return facet_error_set(err, FACET_EWORK, "out of memory");
     study_stage(hooks, "reading the project");
     struct facet_stop stop = study_stop(hooks);
-    int rc = project_hash_and_open(request, &stop, digest, project, err);
+    struct project_read read = {request, project};
+    int rc = study_read_hashed(request->files, request->nfiles, digest,
+                               project_parse, &read, &stop, err);
     if (rc == FACET_OK) {
         study_stage(hooks, "preparing the project's surfaces (UV, curvature)");
         rc = project_prepare_stoppable(project, request->flip_normals,
