@@ -83,6 +83,7 @@
  * correction; shared by the online CPUs: vertices are independent, so the
  * threads change nothing in the result).
  */
+#include <assert.h>
 #include <math.h>
 #include <stdatomic.h>
 #include <stdint.h>
@@ -155,6 +156,8 @@ struct workspace {
     double *offset;     /* 3 x POINTS_MAX: the points less the centre */
     double *weight;     /* POINTS_MAX: their weights */
     double *local;      /* 3 x POINTS_MAX: their frame coordinates */
+    double *weighted;   /* TERMS_MAX x POINTS_MAX: their weighted monomials */
+    double *fitted;     /* TERMS_MAX x POINTS_MAX: those of a fit's terms */
 };
 
 /* A local orthonormal frame: tangents t1, t2 and normal n, world coords. */
@@ -397,6 +400,11 @@ struct hood {
     double *offset;     /* 3 x count, scaled by 1 / radius */
     double *weight;     /* count */
     double *local;      /* 3 x count: the last fit's x, y, z */
+    double *weighted;   /* TERMS_MAX x count: the weight times each monomial
+                         * at local, as the last normal equations took them
+                         * (kept for the osculating passes, which would
+                         * otherwise take them again, to the same bits) */
+    double *fitted;     /* TERMS_MAX x count: those of the fit's terms */
 };
 
 /* Prepares the count points (centre first) of ws->points into *h, in ws's
@@ -423,6 +431,8 @@ static int hood_prepare(const struct mesh *mesh, size_t count,
     h->offset = ws->offset;
     h->weight = ws->weight;
     h->local = ws->local;
+    h->weighted = ws->weighted;
+    h->fitted = ws->fitted;
     for (size_t i = 1; i < count; i++) {
         double *d = ws->offset + 3 * i;
         double r2 = vec3_dot(d, d);
@@ -450,23 +460,105 @@ static void monomials(double x, double y, double *m)
 
 /* The weighted normal equations of the first nterms monomials over h's
  * points at their coordinates in h->local: ata's lower triangle (row
- * stride TERMS_MAX) and atb. */
+ * stride TERMS_MAX) and atb; each point's weighted monomials into
+ * h->weighted. Inlined for the constant nterms of normal_equations, so
+ * that its loops unroll. */
+static inline void normal_equations_of(const struct hood *h, int nterms,
+                                       double *ata, double *atb)
+{
+    /* Sums in locals, which no store through h's pointers can alias, so
+     * that they stay in registers. */
+    double a[TERMS_MAX * TERMS_MAX] = {0}, b[TERMS_MAX] = {0};
+    for (size_t i = 1; i < h->count; i++) {
+        const double *l = h->local + 3 * i;
+        double w = h->weight[i], m[TERMS_MAX], wm[TERMS_MAX];
+        monomials(l[0], l[1], m);
+        for (int r = 0; r < nterms; r++) {
+            wm[r] = w * m[r];
+            b[r] += wm[r] * l[2];
+            for (int s = 0; s <= r; s++)
+                a[r * TERMS_MAX + s] += wm[r] * m[s];
+        }
+        memcpy(h->weighted + TERMS_MAX * i, wm, nterms * sizeof(double));
+    }
+    memcpy(ata, a, sizeof a);
+    memcpy(atb, b, sizeof b);
+}
+
+/* normal_equations_of for the quadric with gradient, most vertices' fit,
+ * written out so that its 20 sums stay in registers: the same products
+ * summed in the same order, so the same to the bit. */
+static void normal_equations5(const struct hood *h, double *ata, double *atb)
+{
+    double a00 = 0, a10 = 0, a11 = 0, a20 = 0, a21 = 0, a22 = 0;
+    double a30 = 0, a31 = 0, a32 = 0, a33 = 0;
+    double a40 = 0, a41 = 0, a42 = 0, a43 = 0, a44 = 0;
+    double b0 = 0, b1 = 0, b2 = 0, b3 = 0, b4 = 0;
+    for (size_t i = 1; i < h->count; i++) {
+        const double *l = h->local + 3 * i;
+        double x = l[0], y = l[1], z = l[2], w = h->weight[i];
+        double m0 = x * x, m1 = x * y, m2 = y * y, m3 = x, m4 = y;
+        double w0 = w * m0, w1 = w * m1, w2 = w * m2, w3 = w * m3;
+        double w4 = w * m4;
+        double *wm = h->weighted + TERMS_MAX * i;
+        wm[0] = w0;
+        wm[1] = w1;
+        wm[2] = w2;
+        wm[3] = w3;
+        wm[4] = w4;
+        b0 += w0 * z;
+        a00 += w0 * m0;
+        b1 += w1 * z;
+        a10 += w1 * m0;
+        a11 += w1 * m1;
+        b2 += w2 * z;
+        a20 += w2 * m0;
+        a21 += w2 * m1;
+        a22 += w2 * m2;
+        b3 += w3 * z;
+        a30 += w3 * m0;
+        a31 += w3 * m1;
+        a32 += w3 * m2;
+        a33 += w3 * m3;
+        b4 += w4 * z;
+        a40 += w4 * m0;
+        a41 += w4 * m1;
+        a42 += w4 * m2;
+        a43 += w4 * m3;
+        a44 += w4 * m4;
+    }
+    enum { S = TERMS_MAX };
+    ata[0] = a00;
+    ata[S] = a10;
+    ata[S + 1] = a11;
+    ata[2 * S] = a20;
+    ata[2 * S + 1] = a21;
+    ata[2 * S + 2] = a22;
+    ata[3 * S] = a30;
+    ata[3 * S + 1] = a31;
+    ata[3 * S + 2] = a32;
+    ata[3 * S + 3] = a33;
+    ata[4 * S] = a40;
+    ata[4 * S + 1] = a41;
+    ata[4 * S + 2] = a42;
+    ata[4 * S + 3] = a43;
+    ata[4 * S + 4] = a44;
+    atb[0] = b0;
+    atb[1] = b1;
+    atb[2] = b2;
+    atb[3] = b3;
+    atb[4] = b4;
+}
+
+/* normal_equations_of for nterms 5 or TERMS_MAX. */
 static void normal_equations(const struct hood *h, int nterms, double *ata,
                              double *atb)
 {
-    memset(ata, 0, TERMS_MAX * TERMS_MAX * sizeof(double));
-    memset(atb, 0, TERMS_MAX * sizeof(double));
-    for (size_t i = 1; i < h->count; i++) {
-        const double *l = h->local + 3 * i;
-        double w = h->weight[i], m[TERMS_MAX];
-        monomials(l[0], l[1], m);
-        for (int r = 0; r < nterms; r++) {
-            double wm = w * m[r];
-            atb[r] += wm * l[2];
-            for (int s = 0; s <= r; s++)
-                ata[r * TERMS_MAX + s] += wm * m[s];
-        }
-    }
+    assert(nterms == 5 || nterms == TERMS_MAX);
+    if (nterms == 5)
+        normal_equations5(h, ata, atb);
+    else
+        normal_equations_of(h, TERMS_MAX, ata, atb);
 }
 
 /* A fit's terms, which monomials (indices into the term order) and how
@@ -494,17 +586,89 @@ static int model_factor(struct model *model, const double *ata)
 }
 
 /* The monomial coefficients coef (those not in the model 0) for the
- * right-hand side b (all monomials) of the factored model. */
-static void model_solve(const struct model *model, const double *b,
+ * right-hand side rhs by the model's terms, of the factored model. */
+static void model_apply(const struct model *model, const double *rhs,
                         double *coef)
 {
-    double rhs[TERMS_MAX], x[TERMS_MAX];
-    for (int r = 0; r < model->n; r++)
-        rhs[r] = b[model->term[r]];
+    double x[TERMS_MAX];
     linalg_cholesky_apply(model->n, model->factor, rhs, x);
     memset(coef, 0, TERMS_MAX * sizeof(double));
     for (int r = 0; r < model->n; r++)
         coef[model->term[r]] = x[r];
+}
+
+/* model_apply for the right-hand side b by all monomials. */
+static void model_solve(const struct model *model, const double *b,
+                        double *coef)
+{
+    double rhs[TERMS_MAX];
+    for (int r = 0; r < model->n; r++)
+        rhs[r] = b[model->term[r]];
+    model_apply(model, rhs, coef);
+}
+
+/* The sums of one pass of the osculating correction (see excess_pass),
+ * for a model of n terms whose weighted monomials are h->fitted: rhs[0]
+ * of the heights less the excess of c, rhs[1..3] (when slope) of the
+ * excess's derivative by c, negated. Inlined for excess_pass's constant
+ * n and slope, so that its sums stay in registers. */
+static void excess_sums(const struct hood *h, int n, const double *c,
+                        int slope, double (*rhs)[TERMS_MAX])
+{
+    double b0[TERMS_MAX] = {0}, b1[TERMS_MAX] = {0};
+    double b2[TERMS_MAX] = {0}, b3[TERMS_MAX] = {0};
+    for (size_t i = 1; i < h->count; i++) {
+        const double *l = h->local + 3 * i;
+        const double *wm = h->fitted + n * i;
+        double grad[3];
+        double z = l[2] - osculating_excess(c, l[0], l[1],
+                                            slope ? grad : NULL);
+        for (int r = 0; r < n; r++)
+            b0[r] += wm[r] * z;
+        if (slope)
+            for (int r = 0; r < n; r++) {
+                b1[r] -= wm[r] * grad[0];
+                b2[r] -= wm[r] * grad[1];
+                b3[r] -= wm[r] * grad[2];
+            }
+    }
+    memcpy(rhs[0], b0, sizeof b0);
+    memcpy(rhs[1], b1, sizeof b1);
+    memcpy(rhs[2], b2, sizeof b2);
+    memcpy(rhs[3], b3, sizeof b3);
+}
+
+/* excess_sums of the quadric with gradient (its terms the first five, so
+ * its weighted monomials those of h->weighted), written out so that its
+ * sums stay in registers; the same to the bit. */
+static void excess_sums5(const struct hood *h, const double *c, int slope,
+                         double (*rhs)[TERMS_MAX])
+{
+    double b0 = 0, b1 = 0, b2 = 0, b3 = 0, b4 = 0;
+    double s[3][5] = {{0}};
+    for (size_t i = 1; i < h->count; i++) {
+        const double *l = h->local + 3 * i;
+        const double *wm = h->weighted + TERMS_MAX * i;
+        double grad[3];
+        double z = l[2] - osculating_excess(c, l[0], l[1],
+                                            slope ? grad : NULL);
+        b0 += wm[0] * z;
+        b1 += wm[1] * z;
+        b2 += wm[2] * z;
+        b3 += wm[3] * z;
+        b4 += wm[4] * z;
+        if (slope)
+            for (int j = 0; j < 3; j++)
+                for (int r = 0; r < 5; r++)
+                    s[j][r] -= wm[r] * grad[j];
+    }
+    rhs[0][0] = b0;
+    rhs[0][1] = b1;
+    rhs[0][2] = b2;
+    rhs[0][3] = b3;
+    rhs[0][4] = b4;
+    for (int j = 0; slope && j < 3; j++)
+        memcpy(rhs[j + 1], s[j], sizeof s[j]);
 }
 
 /* One pass of the osculating correction (see fit): the coefficients
@@ -514,29 +678,37 @@ static void model_solve(const struct model *model, const double *b,
 static void excess_pass(const struct hood *h, const struct model *model,
                         const double *c, double *next, double *slope)
 {
-    double rhs[4][TERMS_MAX] = {{0}};
-    int rows = slope ? 4 : 1;
-    for (size_t i = 1; i < h->count; i++) {
-        const double *l = h->local + 3 * i;
-        double m[TERMS_MAX], grad[3];
-        double z = l[2] - osculating_excess(c, l[0], l[1],
-                                            slope ? grad : NULL);
-        double w = h->weight[i];
-        monomials(l[0], l[1], m);
-        for (int r = 0; r < model->n; r++) {
-            int t = model->term[r];
-            double wm = w * m[t];
-            rhs[0][t] += wm * z;
-            for (int j = 1; j < rows; j++)
-                rhs[j][t] -= wm * grad[j - 1];
-        }
+    double rhs[4][TERMS_MAX];
+    if (model->n == 5 && model->term[4] == 4)
+        excess_sums5(h, c, slope != NULL, rhs);
+    else
+        excess_sums(h, model->n, c, slope != NULL, rhs);
+    if (!slope) {
+        model_apply(model, rhs[0], next);
+        return;
     }
-    model_solve(model, rhs[0], next);
-    for (int j = 1; j < rows; j++) {
-        double column[TERMS_MAX];
-        model_solve(model, rhs[j], column);
-        for (int r = 0; r < TERMS_MAX; r++)
-            slope[3 * r + j - 1] = column[r];
+    double x[4][TERMS_MAX];
+    linalg_cholesky_apply_many(model->n, model->factor, 4, TERMS_MAX,
+                               rhs[0], x[0]);
+    memset(next, 0, TERMS_MAX * sizeof(double));
+    memset(slope, 0, 3 * TERMS_MAX * sizeof(double));
+    for (int r = 0; r < model->n; r++) {
+        int t = model->term[r];
+        next[t] = x[0][r];
+        for (int j = 1; j < 4; j++)
+            slope[3 * t + j - 1] = x[j][r];
+    }
+}
+
+/* Keeps in h->fitted the weighted monomials of the model's terms, by
+ * point (model->n each), for the passes of the osculating correction. */
+static void model_keep(const struct hood *h, const struct model *model)
+{
+    for (size_t i = 1; i < h->count; i++) {
+        const double *wm = h->weighted + TERMS_MAX * i;
+        double *kept = h->fitted + model->n * i;
+        for (int r = 0; r < model->n; r++)
+            kept[r] = wm[model->term[r]];
     }
 }
 
@@ -586,10 +758,11 @@ static int fit(const struct hood *h, const struct frame *f, int nterms_max,
     model.n = 0;
     /* A thin fit's axes: x' = c x + s y, y' = -s x + c y, X' = Q X. */
     double rot_c = 1, rot_s = 0;
-    int thin = 0;
+    int thin = 0, probed = 0;
+    double probe[5 * 5];
     if (nterms_max >= 5 && count > 5) {
-        double probe[5 * 5];
         thin = !linalg_cholesky_factor(5, TERMS_MAX, ata, FIT_THIN_TOL, probe);
+        probed = !thin;
     }
     if (thin) {
         /* Principal axes of the points' spread about their centroid
@@ -633,14 +806,22 @@ static int fit(const struct hood *h, const struct frame *f, int nterms_max,
             model.n = tries[i];
             for (int r = 0; r < model.n; r++)
                 model.term[r] = r;
-            if (model_factor(&model, ata))
+            if (model.n == 5 && probed) {
+                /* the probe's factor, the same to the bit: it passed a
+                 * stricter pivot test than FIT_PIVOT_TOL */
+                memcpy(model.factor, probe, sizeof probe);
                 model_solve(&model, atb, coef);
-            else
+            } else if (model_factor(&model, ata)) {
+                model_solve(&model, atb, coef);
+            } else {
                 model.n = 0;
+            }
         }
     }
     if (model.n == 0)
         return 0;
+    if (!(model.n == 5 && model.term[4] == 4))
+        model_keep(h, &model);
     if (guess) {  /* start the correction from a fit close by, turned */
         double c = rot_c, s = rot_s;
         double hxx = guess->fxx, hxy = guess->fxy, hyy = guess->fyy;
@@ -987,20 +1168,27 @@ int curvature_at_vertices_jobs(const struct mesh *mesh, int flip_normals,
     int rc = FACET_OK, made = 0;
     for (; made < njobs; made++) {
         job[made] = (struct vertex_job){mesh, flip_normals, out, &next,
-                                        {nv, NULL, 0, NULL, NULL, NULL, NULL}};
+                                        {nv, NULL, 0, NULL, NULL, NULL, NULL,
+                                         NULL, NULL}};
         job[made].ws.mark = calloc(n1, sizeof(uint32_t));
         job[made].ws.points = malloc(POINTS_MAX * sizeof(uint32_t));
         job[made].ws.offset = malloc(3 * POINTS_MAX * sizeof(double));
         job[made].ws.weight = malloc(POINTS_MAX * sizeof(double));
         job[made].ws.local = malloc(3 * POINTS_MAX * sizeof(double));
+        job[made].ws.weighted =
+            malloc(TERMS_MAX * POINTS_MAX * sizeof(double));
+        job[made].ws.fitted = malloc(TERMS_MAX * POINTS_MAX * sizeof(double));
         if (!job[made].ws.mark || !job[made].ws.points ||
             !job[made].ws.offset || !job[made].ws.weight ||
-            !job[made].ws.local) {
+            !job[made].ws.local || !job[made].ws.weighted ||
+            !job[made].ws.fitted) {
             free(job[made].ws.mark);
             free(job[made].ws.points);
             free(job[made].ws.offset);
             free(job[made].ws.weight);
             free(job[made].ws.local);
+            free(job[made].ws.weighted);
+            free(job[made].ws.fitted);
             rc = facet_error_set(err, FACET_EWORK,
                                  "curvature: out of memory for %zu "
                                  "vertices", nv);
@@ -1018,6 +1206,8 @@ int curvature_at_vertices_jobs(const struct mesh *mesh, int flip_normals,
         free(job[k].ws.offset);
         free(job[k].ws.weight);
         free(job[k].ws.local);
+        free(job[k].ws.weighted);
+        free(job[k].ws.fitted);
     }
     return rc;
 }
