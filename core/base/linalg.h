@@ -45,4 +45,7 @@ void linalg_cholesky_apply_many(int n, const double *l, int m, int stride,
 void linalg_sym2_eigen(double p, double q, double r, double value[2],
                        double *theta);
 
+/* The eigenvalues of linalg_sym2_eigen alone, the same to the bit. */
+void linalg_sym2_values(double p, double q, double r, double value[2]);
+
 #endif

@@ -151,6 +151,9 @@ enum {
 struct workspace {
     size_t nvertices;
     uint32_t *mark;     /* #V: the stamp of the last gather that saw it */
+    size_t ntriangles;
+    uint32_t *taken;    /* #T: the stamp of the last gather that took its
+                         * whole OBJ face */
     uint32_t stamp;     /* the current gather's stamp, never 0 */
     uint32_t *points;   /* POINTS_MAX: the neighbourhood, centre first */
     double *offset;     /* 3 x POINTS_MAX: the points less the centre */
@@ -299,10 +302,18 @@ static size_t take_triangle(const struct mesh *mesh, size_t t, uint32_t stamp,
 static size_t take_face(const struct mesh *mesh, uint32_t t, uint32_t stamp,
                         struct workspace *ws, size_t count)
 {
+    if (ws->taken[t] == stamp)
+        return count;
     uint32_t face[FACE_TRIANGLES_MAX];
     size_t nface = face_triangles(mesh, t, face);
     for (size_t i = 0; i < nface; i++)
         count = take_triangle(mesh, face[i], stamp, ws, count);
+    /* A face found whole (not cut at FACE_TRIANGLES_MAX) is the same from
+     * any of its triangles, as neighbour links both ways, and now adds
+     * nothing: its triangles are skipped for the rest of this gather. */
+    if (nface < FACE_TRIANGLES_MAX)
+        for (size_t i = 0; i < nface; i++)
+            ws->taken[face[i]] = stamp;
     return count;
 }
 
@@ -318,6 +329,7 @@ static size_t gather(const struct mesh *mesh, uint32_t v, int min_rings,
 
     if (++ws->stamp == 0) {  /* wrapped: forget every old mark */
         memset(ws->mark, 0, ws->nvertices * sizeof(uint32_t));
+        memset(ws->taken, 0, ws->ntriangles * sizeof(uint32_t));
         ws->stamp = 1;
     }
     uint32_t stamp = ws->stamp;
@@ -351,8 +363,8 @@ static size_t gather(const struct mesh *mesh, uint32_t v, int min_rings,
  * distance. Its quartic and higher terms are what a quadric or cubic fit
  * cannot follow and so folds into its curvature: on a cylinder, the x^4
  * of the arc shows up in the straight direction's y^2 as noise. */
-static double osculating_excess(const double *c, double x, double y,
-                                double *grad)
+static inline double osculating_excess(const double *c, double x, double y,
+                                       double *grad)
 {
     double sx = 2 * c[0] * x + c[1] * y, sy = c[1] * x + 2 * c[2] * y;
     double q = x * sx + y * sy, p = sx * sx + sy * sy;
@@ -368,6 +380,13 @@ static double osculating_excess(const double *c, double x, double y,
         grad[2] = by_q * 2 * y * y + by_p * 4 * y * sy;
     }
     return q * lift - q / 2;
+}
+
+/* fmax(a, b) for an a that is not NaN, inline: the larger, and a when b
+ * is NaN. */
+static inline double larger(double a, double b)
+{
+    return b > a ? b : a;
 }
 
 /* Solves the 3 x 3 system a x = b (a row-major) by Cramer's rule. Returns
@@ -641,8 +660,8 @@ static void excess_sums(const struct hood *h, int n, const double *c,
 /* excess_sums of the quadric with gradient (its terms the first five, so
  * its weighted monomials those of h->weighted), written out so that its
  * sums stay in registers; the same to the bit. */
-static void excess_sums5(const struct hood *h, const double *c, int slope,
-                         double (*rhs)[TERMS_MAX])
+static inline void excess_sums5_of(const struct hood *h, const double *c,
+                                   int slope, double (*rhs)[TERMS_MAX])
 {
     double b0 = 0, b1 = 0, b2 = 0, b3 = 0, b4 = 0;
     double s[3][5] = {{0}};
@@ -669,6 +688,17 @@ static void excess_sums5(const struct hood *h, const double *c, int slope,
     rhs[0][4] = b4;
     for (int j = 0; slope && j < 3; j++)
         memcpy(rhs[j + 1], s[j], sizeof s[j]);
+}
+
+/* excess_sums5_of for each constant slope, so that the excess inlines
+ * into a loop that takes its derivative or not. */
+static void excess_sums5(const struct hood *h, const double *c, int slope,
+                         double (*rhs)[TERMS_MAX])
+{
+    if (slope)
+        excess_sums5_of(h, c, 1, rhs);
+    else
+        excess_sums5_of(h, c, 0, rhs);
 }
 
 /* One pass of the osculating correction (see fit): the coefficients
@@ -793,9 +823,7 @@ static int fit(const struct hood *h, const struct frame *f, int nterms_max,
         static const int straight[6] = {0, 1, 3, 4, 5, 6};
         model.n = nterms_max == 9 && count > 6 ? 6 : 4;
         memcpy(model.term, straight, sizeof straight);
-        if (model_factor(&model, ata))
-            model_solve(&model, atb, coef);
-        else
+        if (!model_factor(&model, ata))
             model.n = thin = 0;  /* not even that: as any other */
     }
     if (!thin) {
@@ -810,10 +838,7 @@ static int fit(const struct hood *h, const struct frame *f, int nterms_max,
                 /* the probe's factor, the same to the bit: it passed a
                  * stricter pivot test than FIT_PIVOT_TOL */
                 memcpy(model.factor, probe, sizeof probe);
-                model_solve(&model, atb, coef);
-            } else if (model_factor(&model, ata)) {
-                model_solve(&model, atb, coef);
-            } else {
+            } else if (!model_factor(&model, ata)) {
                 model.n = 0;
             }
         }
@@ -822,16 +847,23 @@ static int fit(const struct hood *h, const struct frame *f, int nterms_max,
         return 0;
     if (!(model.n == 5 && model.term[4] == 4))
         model_keep(h, &model);
-    if (guess) {  /* start the correction from a fit close by, turned */
+    /* The correction starts from the fit itself, or from a fit close by
+     * (guess, turned), whose fit then is needed only if no pass of the
+     * correction is taken (below). */
+    double start[3];
+    if (guess) {
         double c = rot_c, s = rot_s;
         double hxx = guess->fxx, hxy = guess->fxy, hyy = guess->fyy;
         /* H' = Q H Q^T, Q = [[c, s], [-s, c]] */
         double pxx = c * c * hxx + 2 * c * s * hxy + s * s * hyy;
         double pxy = (c * c - s * s) * hxy + c * s * (hyy - hxx);
         double pyy = s * s * hxx - 2 * c * s * hxy + c * c * hyy;
-        coef[0] = pxx * radius / 2;
-        coef[1] = pxy * radius;
-        coef[2] = thin ? 0 : pyy * radius / 2;
+        start[0] = pxx * radius / 2;
+        start[1] = pxy * radius;
+        start[2] = thin ? 0 : pyy * radius / 2;
+    } else {
+        model_solve(&model, atb, coef);
+        memcpy(start, coef, sizeof start);
     }
 
     /* The osculating correction: refit the heights less the excess of the
@@ -846,14 +878,14 @@ static int fit(const struct hood *h, const struct frame *f, int nterms_max,
      * converge slowly; a step that leaves the miss |F(c) - c| larger is
      * halved. The answer is F(c) for the c that came closest. */
     double best[TERMS_MAX], best_miss = INFINITY, step = 1;
-    double c3[3] = {coef[0], coef[1], coef[2]}, base[3] = {0}, dir[3] = {0};
+    double c3[3] = {start[0], start[1], start[2]};
+    double base[3] = {0}, dir[3] = {0};
     double slope[TERMS_MAX * 3];  /* dF/dc, all terms by the three */
-    double value[2], theta;
-    linalg_sym2_eigen(c3[0], c3[1] / 2, c3[2], value, &theta);
+    double value[2];
+    linalg_sym2_values(c3[0], c3[1] / 2, c3[2], value);
     double big = fmax(fabs(value[0]), fabs(value[1]));
     int newton = 4 * big * big > NEWTON_P_MIN;  /* p <= |2 c|^2 |X|^2 */
-    int need_slope = newton;
-    memcpy(best, coef, sizeof best);
+    int need_slope = newton, taken = 0;
     for (int it = 0; it < EXCESS_ITERATIONS; it++) {
         double next[TERMS_MAX];
         excess_pass(h, &model, c3, next, need_slope ? slope : NULL);
@@ -861,8 +893,8 @@ static int fit(const struct hood *h, const struct frame *f, int nterms_max,
         double miss = 0, size = 0, g[3];
         for (int r = 0; r < 3; r++) {
             g[r] = next[r] - c3[r];
-            miss = fmax(miss, fabs(g[r]));
-            size = fmax(size, fabs(next[r]));
+            miss = larger(miss, fabs(g[r]));
+            size = larger(size, fabs(next[r]));
         }
         if (!newton) {  /* c <- F(c) */
             /* Done when this pass, or what the passes still to come
@@ -872,6 +904,7 @@ static int fit(const struct hood *h, const struct frame *f, int nterms_max,
             double rest = it > 0 && ratio < 0.5 ? 2 * ratio * miss : miss;
             best_miss = miss;
             memcpy(best, next, sizeof best);
+            taken = 1;
             memcpy(c3, next, sizeof c3);
             if (!(rest > FIT_CONVERGED * (size + FIT_SCALE_MIN)))
                 break;
@@ -883,6 +916,7 @@ static int fit(const struct hood *h, const struct frame *f, int nterms_max,
             need_slope = !(miss < best_miss / 4);
             best_miss = miss;
             memcpy(best, next, sizeof best);
+            taken = 1;
             if (!(miss > FIT_CONVERGED * (size + FIT_SCALE_MIN)))
                 break;
             double a[9];
@@ -899,7 +933,12 @@ static int fit(const struct hood *h, const struct frame *f, int nterms_max,
         for (int r = 0; r < 3; r++)
             c3[r] = base[r] + step * dir[r];
     }
-    memcpy(coef, best, sizeof coef);
+    if (taken) {
+        memcpy(coef, best, sizeof coef);
+    } else if (guess) {  /* no pass came closer (NaN): the fit, as begun */
+        model_solve(&model, atb, coef);
+        memcpy(coef, start, sizeof start);
+    }
 
     /* Back to metres (z = a x^2 / radius for the scaled a) and, for a thin
      * fit, to the frame's axes: gradient Q^T g', Hessian Q^T H' Q. */
@@ -919,8 +958,8 @@ static int fit(const struct hood *h, const struct frame *f, int nterms_max,
 /* The largest |curvature| of the jet's Hessian (1/m). */
 static double jet_curvature_max(const struct jet *jet)
 {
-    double value[2], theta;
-    linalg_sym2_eigen(jet->fxx, jet->fxy, jet->fyy, value, &theta);
+    double value[2];
+    linalg_sym2_values(jet->fxx, jet->fxy, jet->fyy, value);
     return fmax(fabs(value[0]), fabs(value[1]));
 }
 
@@ -1071,19 +1110,21 @@ static void vertex_curvature(const struct mesh *mesh, uint32_t v,
      * tilts further from its frame than the last is not taken: on a wide
      * one-sided neighbourhood the refits can run away from the surface
      * (a coarse cap's corner turned its normal by 50 degrees in 5). */
+    double tilt = hypot(jet.fx, jet.fy);
     for (int it = 0; it < NORMAL_ITERATIONS; it++) {
-        double tilt = hypot(jet.fx, jet.fy);
         if (!(tilt > NORMAL_CONVERGED))
             break;
         struct frame g;
         struct jet refined;
         graph_normal(&f, &jet, g.n);
         frame_complete(&g);
+        double refined_tilt;
         if (!fit(&hood, &g, nterms, &jet, &refined) ||
-            !(hypot(refined.fx, refined.fy) < tilt))
+            !((refined_tilt = hypot(refined.fx, refined.fy)) < tilt))
             break;
         f = g;
         jet = refined;
+        tilt = refined_tilt;
     }
 
     double k1, k2, d1[3], d2[3], n[3];
@@ -1168,9 +1209,12 @@ int curvature_at_vertices_jobs(const struct mesh *mesh, int flip_normals,
     int rc = FACET_OK, made = 0;
     for (; made < njobs; made++) {
         job[made] = (struct vertex_job){mesh, flip_normals, out, &next,
-                                        {nv, NULL, 0, NULL, NULL, NULL, NULL,
-                                         NULL, NULL}};
+                                        {0}};
+        job[made].ws.nvertices = nv;
+        job[made].ws.ntriangles = mesh->ntriangles;
         job[made].ws.mark = calloc(n1, sizeof(uint32_t));
+        job[made].ws.taken = calloc(mesh->ntriangles ? mesh->ntriangles : 1,
+                                    sizeof(uint32_t));
         job[made].ws.points = malloc(POINTS_MAX * sizeof(uint32_t));
         job[made].ws.offset = malloc(3 * POINTS_MAX * sizeof(double));
         job[made].ws.weight = malloc(POINTS_MAX * sizeof(double));
@@ -1178,11 +1222,13 @@ int curvature_at_vertices_jobs(const struct mesh *mesh, int flip_normals,
         job[made].ws.weighted =
             malloc(TERMS_MAX * POINTS_MAX * sizeof(double));
         job[made].ws.fitted = malloc(TERMS_MAX * POINTS_MAX * sizeof(double));
-        if (!job[made].ws.mark || !job[made].ws.points ||
+        if (!job[made].ws.mark || !job[made].ws.taken ||
+            !job[made].ws.points ||
             !job[made].ws.offset || !job[made].ws.weight ||
             !job[made].ws.local || !job[made].ws.weighted ||
             !job[made].ws.fitted) {
             free(job[made].ws.mark);
+            free(job[made].ws.taken);
             free(job[made].ws.points);
             free(job[made].ws.offset);
             free(job[made].ws.weight);
@@ -1202,6 +1248,7 @@ int curvature_at_vertices_jobs(const struct mesh *mesh, int flip_normals,
     }
     for (int k = 0; k < made; k++) {
         free(job[k].ws.mark);
+        free(job[k].ws.taken);
         free(job[k].ws.points);
         free(job[k].ws.offset);
         free(job[k].ws.weight);
