@@ -631,8 +631,8 @@ static void model_solve(const struct model *model, const double *b,
  * of the heights less the excess of c, rhs[1..3] (when slope) of the
  * excess's derivative by c, negated. Inlined for excess_pass's constant
  * n and slope, so that its sums stay in registers. */
-static void excess_sums(const struct hood *h, int n, const double *c,
-                        int slope, double (*rhs)[TERMS_MAX])
+static inline void excess_sums(const struct hood *h, int n, const double *c,
+                               int slope, double (*rhs)[TERMS_MAX])
 {
     double b0[TERMS_MAX] = {0}, b1[TERMS_MAX] = {0};
     double b2[TERMS_MAX] = {0}, b3[TERMS_MAX] = {0};
@@ -711,6 +711,10 @@ static void excess_pass(const struct hood *h, const struct model *model,
     double rhs[4][TERMS_MAX];
     if (model->n == 5 && model->term[4] == 4)
         excess_sums5(h, c, slope != NULL, rhs);
+    else if (model->n == TERMS_MAX && slope)
+        excess_sums(h, TERMS_MAX, c, 1, rhs);
+    else if (model->n == TERMS_MAX)
+        excess_sums(h, TERMS_MAX, c, 0, rhs);
     else
         excess_sums(h, model->n, c, slope != NULL, rhs);
     if (!slope) {
