@@ -77,11 +77,17 @@
  *
  * Cost is O(V) for meshes of bounded valence: one pass, about two to four
  * fits per vertex (each refitted two to four times for the correction),
- * work buffers allocated once per thread (about 3.0 s of CPU for 1M
- * vertices of the roof example, one thread, against 2.7 s in the same run
- * before the thin fits and the Newton steps, and 1.7 s measured before the
- * correction; shared by the online CPUs: vertices are independent, so the
- * threads change nothing in the result).
+ * work buffers allocated once per thread, shared by the online CPUs
+ * (vertices are independent, so the threads change nothing in the
+ * result). tests/bench/bench_curvature times it against the estimator
+ * before the correction (d218719): on the 100k-triangle roof, one thread,
+ * about 1.6 times its time (2.2 before the passes were written out for
+ * the quadric's terms and a gather took each face once); on coarse real
+ * meshes, where nearly every fit takes Newton steps and five or six fits
+ * per vertex, 4 to 6 times. Most of what is left is the osculating
+ * passes, a square root and a division per point each, and the chains of
+ * divisions of their Cholesky solves: both bound by latency, and both
+ * needed for these results to the bit (test_curvature_pinned).
  */
 #include <assert.h>
 #include <math.h>
@@ -480,8 +486,8 @@ static void monomials(double x, double y, double *m)
 /* The weighted normal equations of the first nterms monomials over h's
  * points at their coordinates in h->local: ata's lower triangle (row
  * stride TERMS_MAX) and atb; each point's weighted monomials into
- * h->weighted. Inlined for the constant nterms of normal_equations, so
- * that its loops unroll. */
+ * h->weighted. Inlined for the cubic's constant nterms, so that its
+ * loops unroll. */
 static inline void normal_equations_of(const struct hood *h, int nterms,
                                        double *ata, double *atb)
 {
@@ -587,6 +593,13 @@ struct model {
     int term[TERMS_MAX];
     double factor[TERMS_MAX * TERMS_MAX];
 };
+
+/* Whether the model is the quadric with gradient, the first five terms
+ * (most vertices' fit, whose passes are written out). */
+static int model_is_quadric(const struct model *model)
+{
+    return model->n == 5 && model->term[4] == 4;
+}
 
 /* Restricts the normal equations ata (all monomials) to the model's terms
  * and factors them. Returns 0 when they are singular to within
@@ -709,7 +722,7 @@ static void excess_pass(const struct hood *h, const struct model *model,
                         const double *c, double *next, double *slope)
 {
     double rhs[4][TERMS_MAX];
-    if (model->n == 5 && model->term[4] == 4)
+    if (model_is_quadric(model))
         excess_sums5(h, c, slope != NULL, rhs);
     else if (model->n == TERMS_MAX && slope)
         excess_sums(h, TERMS_MAX, c, 1, rhs);
@@ -849,7 +862,7 @@ static int fit(const struct hood *h, const struct frame *f, int nterms_max,
     }
     if (model.n == 0)
         return 0;
-    if (!(model.n == 5 && model.term[4] == 4))
+    if (!model_is_quadric(&model))
         model_keep(h, &model);
     /* The correction starts from the fit itself, or from a fit close by
      * (guess, turned), whose fit then is needed only if no pass of the
