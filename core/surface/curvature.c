@@ -468,6 +468,16 @@ static int hood_prepare(const struct mesh *mesh, size_t count,
     return 1;
 }
 
+/* The coordinates l (x, y, z) in frame f of the offset d from the centre,
+ * scaled by the radius as d is, so that every monomial is O(1). */
+static inline void local_coordinates(const double *d, const struct frame *f,
+                                     double *l)
+{
+    l[0] = vec3_dot(d, f->t1);
+    l[1] = vec3_dot(d, f->t2);
+    l[2] = vec3_dot(d, f->n);
+}
+
 /* The monomials of the fit at the scaled point (x, y), in term order:
  * x^2 xy y^2 | x y | x^3 x^2y xy^2 y^3. */
 static void monomials(double x, double y, double *m)
@@ -513,14 +523,17 @@ static inline void normal_equations_of(const struct hood *h, int nterms,
 /* normal_equations_of for the quadric with gradient, most vertices' fit,
  * written out so that its 20 sums stay in registers: the same products
  * summed in the same order, so the same to the bit. */
-static void normal_equations5(const struct hood *h, double *ata, double *atb)
+static void normal_equations5(const struct hood *h, const struct frame *f,
+                              double *ata, double *atb)
 {
     double a00 = 0, a10 = 0, a11 = 0, a20 = 0, a21 = 0, a22 = 0;
     double a30 = 0, a31 = 0, a32 = 0, a33 = 0;
     double a40 = 0, a41 = 0, a42 = 0, a43 = 0, a44 = 0;
     double b0 = 0, b1 = 0, b2 = 0, b3 = 0, b4 = 0;
     for (size_t i = 1; i < h->count; i++) {
-        const double *l = h->local + 3 * i;
+        double *l = h->local + 3 * i;
+        if (f)
+            local_coordinates(h->offset + 3 * i, f, l);
         double x = l[0], y = l[1], z = l[2], w = h->weight[i];
         double m0 = x * x, m1 = x * y, m2 = y * y, m3 = x, m4 = y;
         double w0 = w * m0, w1 = w * m1, w2 = w * m2, w3 = w * m3;
@@ -575,15 +588,20 @@ static void normal_equations5(const struct hood *h, double *ata, double *atb)
     atb[4] = b4;
 }
 
-/* normal_equations_of for nterms 5 or TERMS_MAX. */
-static void normal_equations(const struct hood *h, int nterms, double *ata,
-                             double *atb)
+/* normal_equations_of for nterms 5 or TERMS_MAX, of h's points in frame f
+ * (their coordinates into h->local first) or, when f is NULL, at the
+ * coordinates h->local holds. */
+static void normal_equations(const struct hood *h, const struct frame *f,
+                             int nterms, double *ata, double *atb)
 {
     assert(nterms == 5 || nterms == TERMS_MAX);
-    if (nterms == 5)
-        normal_equations5(h, ata, atb);
-    else
-        normal_equations_of(h, TERMS_MAX, ata, atb);
+    if (nterms == 5) {  /* in the same loop: the points are read once */
+        normal_equations5(h, f, ata, atb);
+        return;
+    }
+    for (size_t i = 1; f && i < h->count; i++)
+        local_coordinates(h->offset + 3 * i, f, h->local + 3 * i);
+    normal_equations_of(h, TERMS_MAX, ata, atb);
 }
 
 /* A fit's terms, which monomials (indices into the term order) and how
@@ -787,16 +805,8 @@ static int fit(const struct hood *h, const struct frame *f, int nterms_max,
     double radius = h->radius;
     double *local = h->local;
 
-    /* Coordinates scaled by the radius, so every monomial is O(1). */
-    for (size_t i = 1; i < count; i++) {
-        const double *d = h->offset + 3 * i;
-        double *l = local + 3 * i;
-        l[0] = vec3_dot(d, f->t1);
-        l[1] = vec3_dot(d, f->t2);
-        l[2] = vec3_dot(d, f->n);
-    }
     double ata[TERMS_MAX * TERMS_MAX], atb[TERMS_MAX];
-    normal_equations(h, nterms_max, ata, atb);
+    normal_equations(h, f, nterms_max, ata, atb);
 
     /* The leading 9, 5 and 3 terms are the fits tried in turn, unless the
      * neighbourhood is thin. */
@@ -835,7 +845,7 @@ static int fit(const struct hood *h, const struct frame *f, int nterms_max,
             l[0] = rot_c * x + rot_s * y;
             l[1] = -rot_s * x + rot_c * y;
         }
-        normal_equations(h, TERMS_MAX, ata, atb);
+        normal_equations(h, NULL, TERMS_MAX, ata, atb);
         /* x'^2 x'y' x' y' | x'^3 x'^2y' */
         static const int straight[6] = {0, 1, 3, 4, 5, 6};
         model.n = nterms_max == 9 && count > 6 ? 6 : 4;
