@@ -114,6 +114,28 @@ $(BUILD)/bench/%: tests/bench/%.c $(SUPPORT_OBJ) $(BUILD)/libfacet.a
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS) $(LDFLAGS) -o $@ $< $(SUPPORT_OBJ) $(BUILD)/libfacet.a $(LDLIBS)
 
+# bench_curvature's baseline: the estimator as it was at CURVATURE_BASE
+# (before the osculating correction, the thin fits and the Newton steps;
+# issue 27 measures against it), taken from git at bench time and built
+# beside today's, its public names prefixed with base_.
+CURVATURE_BASE ?= d218719:core/curvature.c
+CURVATURE_BASE_RENAME := -Dcurvature_at_vertices=base_curvature_at_vertices \
+	-Dcurvature_at_vertices_jobs=base_curvature_at_vertices_jobs \
+	-Dcurvature_free=base_curvature_free
+
+$(BUILD)/bench/curvature_base.c:
+	@mkdir -p $(dir $@)
+	git show $(CURVATURE_BASE) > $@.tmp || { rm -f $@.tmp; \
+		echo "bench_curvature: $(CURVATURE_BASE) is not in this clone's history"; exit 1; }
+	mv $@.tmp $@
+
+$(BUILD)/bench/curvature_base.o: $(BUILD)/bench/curvature_base.c
+	$(CC) $(CFLAGS) -iquote core/surface -iquote core/base $(CURVATURE_BASE_RENAME) -c -o $@ $<
+
+$(BUILD)/bench/bench_curvature: tests/bench/bench_curvature.c $(BUILD)/bench/curvature_base.o $(SUPPORT_OBJ) $(BUILD)/libfacet.a
+	@mkdir -p $(dir $@)
+	$(CC) $(CFLAGS) $(LDFLAGS) -o $@ $< $(BUILD)/bench/curvature_base.o $(SUPPORT_OBJ) $(BUILD)/libfacet.a $(LDLIBS)
+
 # Everything one variant's tests run.
 test-build: $(BUILD)/facet $(UNIT_BIN) $(TOOL_BIN) $(REPLAY_BIN)
 

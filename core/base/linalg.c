@@ -53,6 +53,31 @@ void linalg_cholesky_apply(int n, const double *l, const double *b, double *x)
     }
 }
 
+void linalg_cholesky_apply_many(int n, const double *l, int m, int stride,
+                                const double *b, double *x)
+{
+    double y[LINALG_MAX * LINALG_MAX];
+    assert(n >= 1 && n <= LINALG_MAX && m >= 1 && m <= LINALG_MAX);
+    assert(stride >= n);
+
+    /* linalg_cholesky_apply's operations, in its order for each right-hand
+     * side, the sides innermost. */
+    for (int i = 0; i < n; i++)
+        for (int j = 0; j < m; j++) {
+            double t = b[j * stride + i];
+            for (int k = 0; k < i; k++)
+                t -= l[i * n + k] * y[j * LINALG_MAX + k];
+            y[j * LINALG_MAX + i] = t / l[i * n + i];
+        }
+    for (int i = n - 1; i >= 0; i--)
+        for (int j = 0; j < m; j++) {
+            double t = y[j * LINALG_MAX + i];
+            for (int k = i + 1; k < n; k++)
+                t -= l[k * n + i] * x[j * stride + k];
+            x[j * stride + i] = t / l[i * n + i];
+        }
+}
+
 int linalg_cholesky_solve(int n, int lda, const double *a, const double *b,
                           double rel_tol, double *x)
 {
@@ -64,14 +89,19 @@ int linalg_cholesky_solve(int n, int lda, const double *a, const double *b,
     return 1;
 }
 
-void linalg_sym2_eigen(double p, double q, double r, double value[2],
-                       double *theta)
+void linalg_sym2_values(double p, double q, double r, double value[2])
 {
     double mean = 0.5 * (p + r);
     double radius = hypot(0.5 * (p - r), q);
 
     value[0] = mean + radius;
     value[1] = mean - radius;
+}
+
+void linalg_sym2_eigen(double p, double q, double r, double value[2],
+                       double *theta)
+{
+    linalg_sym2_values(p, q, r, value);
     /* tan(2 theta) = 2q / (p - r) picks the direction of the larger value;
      * atan2(0, 0) is 0, so an isotropic matrix gets theta = 0. */
     *theta = 0.5 * atan2(2.0 * q, p - r);

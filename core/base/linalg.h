@@ -30,6 +30,13 @@ int linalg_cholesky_factor(int n, int lda, const double *a, double rel_tol,
                            double *l);
 void linalg_cholesky_apply(int n, const double *l, const double *b, double *x);
 
+/* linalg_cholesky_apply for m right-hand sides at once (m in
+ * 1..LINALG_MAX), b + k * stride to x + k * stride for k < m: each x the
+ * same to the bit as linalg_cholesky_apply's, in about the time of one,
+ * as their substitutions, each a chain of divisions, overlap. */
+void linalg_cholesky_apply_many(int n, const double *l, int m, int stride,
+                                const double *b, double *x);
+
 /* Eigen-decomposition of the symmetric matrix [[p, q], [q, r]]: value[0] >=
  * value[1], and the unit eigenvector of value[0] is (cos theta, sin theta),
  * that of value[1] is (-sin theta, cos theta); *theta is returned in
@@ -37,5 +44,8 @@ void linalg_cholesky_apply(int n, const double *l, const double *b, double *x);
  * matrix is a multiple of the identity). */
 void linalg_sym2_eigen(double p, double q, double r, double value[2],
                        double *theta);
+
+/* The eigenvalues of linalg_sym2_eigen alone, the same to the bit. */
+void linalg_sym2_values(double p, double q, double r, double value[2]);
 
 #endif

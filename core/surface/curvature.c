@@ -77,12 +77,19 @@
  *
  * Cost is O(V) for meshes of bounded valence: one pass, about two to four
  * fits per vertex (each refitted two to four times for the correction),
- * work buffers allocated once per thread (about 3.0 s of CPU for 1M
- * vertices of the roof example, one thread, against 2.7 s in the same run
- * before the thin fits and the Newton steps, and 1.7 s measured before the
- * correction; shared by the online CPUs: vertices are independent, so the
- * threads change nothing in the result).
+ * work buffers allocated once per thread, shared by the online CPUs
+ * (vertices are independent, so the threads change nothing in the
+ * result). tests/bench/bench_curvature times it against the estimator
+ * before the correction (d218719): on the 100k-triangle roof, one thread,
+ * about 1.6 times its time (2.2 before the passes were written out for
+ * the quadric's terms and a gather took each face once); on coarse real
+ * meshes, where nearly every fit takes Newton steps and five or six fits
+ * per vertex, 4 to 6 times. Most of what is left is the osculating
+ * passes, a square root and a division per point each, and the chains of
+ * divisions of their Cholesky solves: both bound by latency, and both
+ * needed for these results to the bit (test_curvature_pinned).
  */
+#include <assert.h>
 #include <math.h>
 #include <stdatomic.h>
 #include <stdint.h>
@@ -150,11 +157,16 @@ enum {
 struct workspace {
     size_t nvertices;
     uint32_t *mark;     /* #V: the stamp of the last gather that saw it */
+    size_t ntriangles;
+    uint32_t *taken;    /* #T: the stamp of the last gather that took its
+                         * whole OBJ face */
     uint32_t stamp;     /* the current gather's stamp, never 0 */
     uint32_t *points;   /* POINTS_MAX: the neighbourhood, centre first */
     double *offset;     /* 3 x POINTS_MAX: the points less the centre */
     double *weight;     /* POINTS_MAX: their weights */
     double *local;      /* 3 x POINTS_MAX: their frame coordinates */
+    double *weighted;   /* TERMS_MAX x POINTS_MAX: their weighted monomials */
+    double *fitted;     /* TERMS_MAX x POINTS_MAX: those of a fit's terms */
 };
 
 /* A local orthonormal frame: tangents t1, t2 and normal n, world coords. */
@@ -296,10 +308,18 @@ static size_t take_triangle(const struct mesh *mesh, size_t t, uint32_t stamp,
 static size_t take_face(const struct mesh *mesh, uint32_t t, uint32_t stamp,
                         struct workspace *ws, size_t count)
 {
+    if (ws->taken[t] == stamp)
+        return count;
     uint32_t face[FACE_TRIANGLES_MAX];
     size_t nface = face_triangles(mesh, t, face);
     for (size_t i = 0; i < nface; i++)
         count = take_triangle(mesh, face[i], stamp, ws, count);
+    /* A face found whole (not cut at FACE_TRIANGLES_MAX) is the same from
+     * any of its triangles, as neighbour links both ways, and now adds
+     * nothing: its triangles are skipped for the rest of this gather. */
+    if (nface < FACE_TRIANGLES_MAX)
+        for (size_t i = 0; i < nface; i++)
+            ws->taken[face[i]] = stamp;
     return count;
 }
 
@@ -315,6 +335,7 @@ static size_t gather(const struct mesh *mesh, uint32_t v, int min_rings,
 
     if (++ws->stamp == 0) {  /* wrapped: forget every old mark */
         memset(ws->mark, 0, ws->nvertices * sizeof(uint32_t));
+        memset(ws->taken, 0, ws->ntriangles * sizeof(uint32_t));
         ws->stamp = 1;
     }
     uint32_t stamp = ws->stamp;
@@ -348,8 +369,8 @@ static size_t gather(const struct mesh *mesh, uint32_t v, int min_rings,
  * distance. Its quartic and higher terms are what a quadric or cubic fit
  * cannot follow and so folds into its curvature: on a cylinder, the x^4
  * of the arc shows up in the straight direction's y^2 as noise. */
-static double osculating_excess(const double *c, double x, double y,
-                                double *grad)
+static inline double osculating_excess(const double *c, double x, double y,
+                                       double *grad)
 {
     double sx = 2 * c[0] * x + c[1] * y, sy = c[1] * x + 2 * c[2] * y;
     double q = x * sx + y * sy, p = sx * sx + sy * sy;
@@ -365,6 +386,13 @@ static double osculating_excess(const double *c, double x, double y,
         grad[2] = by_q * 2 * y * y + by_p * 4 * y * sy;
     }
     return q * lift - q / 2;
+}
+
+/* fmax(a, b) for an a that is not NaN, inline: the larger, and a when b
+ * is NaN. */
+static inline double larger(double a, double b)
+{
+    return b > a ? b : a;
 }
 
 /* Solves the 3 x 3 system a x = b (a row-major) by Cramer's rule. Returns
@@ -397,6 +425,11 @@ struct hood {
     double *offset;     /* 3 x count, scaled by 1 / radius */
     double *weight;     /* count */
     double *local;      /* 3 x count: the last fit's x, y, z */
+    double *weighted;   /* TERMS_MAX x count: the weight times each monomial
+                         * at local, as the last normal equations took them
+                         * (kept for the osculating passes, which would
+                         * otherwise take them again, to the same bits) */
+    double *fitted;     /* TERMS_MAX x count: those of the fit's terms */
 };
 
 /* Prepares the count points (centre first) of ws->points into *h, in ws's
@@ -423,6 +456,8 @@ static int hood_prepare(const struct mesh *mesh, size_t count,
     h->offset = ws->offset;
     h->weight = ws->weight;
     h->local = ws->local;
+    h->weighted = ws->weighted;
+    h->fitted = ws->fitted;
     for (size_t i = 1; i < count; i++) {
         double *d = ws->offset + 3 * i;
         double r2 = vec3_dot(d, d);
@@ -431,6 +466,16 @@ static int hood_prepare(const struct mesh *mesh, size_t count,
         ws->weight[i] = exp(-WEIGHT_SHARPNESS * r2 / radius2);
     }
     return 1;
+}
+
+/* The coordinates l (x, y, z) in frame f of the offset d from the centre,
+ * scaled by the radius as d is, so that every monomial is O(1). */
+static inline void local_coordinates(const double *d, const struct frame *f,
+                                     double *l)
+{
+    l[0] = vec3_dot(d, f->t1);
+    l[1] = vec3_dot(d, f->t2);
+    l[2] = vec3_dot(d, f->n);
 }
 
 /* The monomials of the fit at the scaled point (x, y), in term order:
@@ -450,23 +495,113 @@ static void monomials(double x, double y, double *m)
 
 /* The weighted normal equations of the first nterms monomials over h's
  * points at their coordinates in h->local: ata's lower triangle (row
- * stride TERMS_MAX) and atb. */
-static void normal_equations(const struct hood *h, int nterms, double *ata,
-                             double *atb)
+ * stride TERMS_MAX) and atb; each point's weighted monomials into
+ * h->weighted. Inlined for the cubic's constant nterms, so that its
+ * loops unroll. */
+static inline void normal_equations_of(const struct hood *h, int nterms,
+                                       double *ata, double *atb)
 {
-    memset(ata, 0, TERMS_MAX * TERMS_MAX * sizeof(double));
-    memset(atb, 0, TERMS_MAX * sizeof(double));
+    /* Sums in locals, which no store through h's pointers can alias, so
+     * that they stay in registers. */
+    double a[TERMS_MAX * TERMS_MAX] = {0}, b[TERMS_MAX] = {0};
     for (size_t i = 1; i < h->count; i++) {
         const double *l = h->local + 3 * i;
-        double w = h->weight[i], m[TERMS_MAX];
+        double w = h->weight[i], m[TERMS_MAX], wm[TERMS_MAX];
         monomials(l[0], l[1], m);
         for (int r = 0; r < nterms; r++) {
-            double wm = w * m[r];
-            atb[r] += wm * l[2];
+            wm[r] = w * m[r];
+            b[r] += wm[r] * l[2];
             for (int s = 0; s <= r; s++)
-                ata[r * TERMS_MAX + s] += wm * m[s];
+                a[r * TERMS_MAX + s] += wm[r] * m[s];
         }
+        memcpy(h->weighted + TERMS_MAX * i, wm, nterms * sizeof(double));
     }
+    memcpy(ata, a, sizeof a);
+    memcpy(atb, b, sizeof b);
+}
+
+/* normal_equations_of for the quadric with gradient, most vertices' fit,
+ * written out so that its 20 sums stay in registers: the same products
+ * summed in the same order, so the same to the bit. */
+static void normal_equations5(const struct hood *h, const struct frame *f,
+                              double *ata, double *atb)
+{
+    double a00 = 0, a10 = 0, a11 = 0, a20 = 0, a21 = 0, a22 = 0;
+    double a30 = 0, a31 = 0, a32 = 0, a33 = 0;
+    double a40 = 0, a41 = 0, a42 = 0, a43 = 0, a44 = 0;
+    double b0 = 0, b1 = 0, b2 = 0, b3 = 0, b4 = 0;
+    for (size_t i = 1; i < h->count; i++) {
+        double *l = h->local + 3 * i;
+        if (f)
+            local_coordinates(h->offset + 3 * i, f, l);
+        double x = l[0], y = l[1], z = l[2], w = h->weight[i];
+        double m0 = x * x, m1 = x * y, m2 = y * y, m3 = x, m4 = y;
+        double w0 = w * m0, w1 = w * m1, w2 = w * m2, w3 = w * m3;
+        double w4 = w * m4;
+        double *wm = h->weighted + TERMS_MAX * i;
+        wm[0] = w0;
+        wm[1] = w1;
+        wm[2] = w2;
+        wm[3] = w3;
+        wm[4] = w4;
+        b0 += w0 * z;
+        a00 += w0 * m0;
+        b1 += w1 * z;
+        a10 += w1 * m0;
+        a11 += w1 * m1;
+        b2 += w2 * z;
+        a20 += w2 * m0;
+        a21 += w2 * m1;
+        a22 += w2 * m2;
+        b3 += w3 * z;
+        a30 += w3 * m0;
+        a31 += w3 * m1;
+        a32 += w3 * m2;
+        a33 += w3 * m3;
+        b4 += w4 * z;
+        a40 += w4 * m0;
+        a41 += w4 * m1;
+        a42 += w4 * m2;
+        a43 += w4 * m3;
+        a44 += w4 * m4;
+    }
+    enum { S = TERMS_MAX };
+    ata[0] = a00;
+    ata[S] = a10;
+    ata[S + 1] = a11;
+    ata[2 * S] = a20;
+    ata[2 * S + 1] = a21;
+    ata[2 * S + 2] = a22;
+    ata[3 * S] = a30;
+    ata[3 * S + 1] = a31;
+    ata[3 * S + 2] = a32;
+    ata[3 * S + 3] = a33;
+    ata[4 * S] = a40;
+    ata[4 * S + 1] = a41;
+    ata[4 * S + 2] = a42;
+    ata[4 * S + 3] = a43;
+    ata[4 * S + 4] = a44;
+    atb[0] = b0;
+    atb[1] = b1;
+    atb[2] = b2;
+    atb[3] = b3;
+    atb[4] = b4;
+}
+
+/* normal_equations_of for nterms 5 or TERMS_MAX, of h's points in frame f
+ * (their coordinates into h->local first) or, when f is NULL, at the
+ * coordinates h->local holds. */
+static void normal_equations(const struct hood *h, const struct frame *f,
+                             int nterms, double *ata, double *atb)
+{
+    assert(nterms == 5 || nterms == TERMS_MAX);
+    if (nterms == 5) {  /* in the same loop: the points are read once */
+        normal_equations5(h, f, ata, atb);
+        return;
+    }
+    for (size_t i = 1; f && i < h->count; i++)
+        local_coordinates(h->offset + 3 * i, f, h->local + 3 * i);
+    normal_equations_of(h, TERMS_MAX, ata, atb);
 }
 
 /* A fit's terms, which monomials (indices into the term order) and how
@@ -476,6 +611,13 @@ struct model {
     int term[TERMS_MAX];
     double factor[TERMS_MAX * TERMS_MAX];
 };
+
+/* Whether the model is the quadric with gradient, the first five terms
+ * (most vertices' fit, whose passes are written out). */
+static int model_is_quadric(const struct model *model)
+{
+    return model->n == 5 && model->term[4] == 4;
+}
 
 /* Restricts the normal equations ata (all monomials) to the model's terms
  * and factors them. Returns 0 when they are singular to within
@@ -494,17 +636,100 @@ static int model_factor(struct model *model, const double *ata)
 }
 
 /* The monomial coefficients coef (those not in the model 0) for the
- * right-hand side b (all monomials) of the factored model. */
-static void model_solve(const struct model *model, const double *b,
+ * right-hand side rhs by the model's terms, of the factored model. */
+static void model_apply(const struct model *model, const double *rhs,
                         double *coef)
 {
-    double rhs[TERMS_MAX], x[TERMS_MAX];
-    for (int r = 0; r < model->n; r++)
-        rhs[r] = b[model->term[r]];
+    double x[TERMS_MAX];
     linalg_cholesky_apply(model->n, model->factor, rhs, x);
     memset(coef, 0, TERMS_MAX * sizeof(double));
     for (int r = 0; r < model->n; r++)
         coef[model->term[r]] = x[r];
+}
+
+/* model_apply for the right-hand side b by all monomials. */
+static void model_solve(const struct model *model, const double *b,
+                        double *coef)
+{
+    double rhs[TERMS_MAX];
+    for (int r = 0; r < model->n; r++)
+        rhs[r] = b[model->term[r]];
+    model_apply(model, rhs, coef);
+}
+
+/* The sums of one pass of the osculating correction (see excess_pass),
+ * for a model of n terms whose weighted monomials are h->fitted: rhs[0]
+ * of the heights less the excess of c, rhs[1..3] (when slope) of the
+ * excess's derivative by c, negated. Inlined for excess_pass's constant
+ * n and slope, so that its sums stay in registers. */
+static inline void excess_sums(const struct hood *h, int n, const double *c,
+                               int slope, double (*rhs)[TERMS_MAX])
+{
+    double b0[TERMS_MAX] = {0}, b1[TERMS_MAX] = {0};
+    double b2[TERMS_MAX] = {0}, b3[TERMS_MAX] = {0};
+    for (size_t i = 1; i < h->count; i++) {
+        const double *l = h->local + 3 * i;
+        const double *wm = h->fitted + n * i;
+        double grad[3];
+        double z = l[2] - osculating_excess(c, l[0], l[1],
+                                            slope ? grad : NULL);
+        for (int r = 0; r < n; r++)
+            b0[r] += wm[r] * z;
+        if (slope)
+            for (int r = 0; r < n; r++) {
+                b1[r] -= wm[r] * grad[0];
+                b2[r] -= wm[r] * grad[1];
+                b3[r] -= wm[r] * grad[2];
+            }
+    }
+    memcpy(rhs[0], b0, sizeof b0);
+    memcpy(rhs[1], b1, sizeof b1);
+    memcpy(rhs[2], b2, sizeof b2);
+    memcpy(rhs[3], b3, sizeof b3);
+}
+
+/* excess_sums of the quadric with gradient (its terms the first five, so
+ * its weighted monomials those of h->weighted), written out so that its
+ * sums stay in registers; the same to the bit. */
+static inline void excess_sums5_of(const struct hood *h, const double *c,
+                                   int slope, double (*rhs)[TERMS_MAX])
+{
+    double b0 = 0, b1 = 0, b2 = 0, b3 = 0, b4 = 0;
+    double s[3][5] = {{0}};
+    for (size_t i = 1; i < h->count; i++) {
+        const double *l = h->local + 3 * i;
+        const double *wm = h->weighted + TERMS_MAX * i;
+        double grad[3];
+        double z = l[2] - osculating_excess(c, l[0], l[1],
+                                            slope ? grad : NULL);
+        b0 += wm[0] * z;
+        b1 += wm[1] * z;
+        b2 += wm[2] * z;
+        b3 += wm[3] * z;
+        b4 += wm[4] * z;
+        if (slope)
+            for (int j = 0; j < 3; j++)
+                for (int r = 0; r < 5; r++)
+                    s[j][r] -= wm[r] * grad[j];
+    }
+    rhs[0][0] = b0;
+    rhs[0][1] = b1;
+    rhs[0][2] = b2;
+    rhs[0][3] = b3;
+    rhs[0][4] = b4;
+    for (int j = 0; slope && j < 3; j++)
+        memcpy(rhs[j + 1], s[j], sizeof s[j]);
+}
+
+/* excess_sums5_of for each constant slope, so that the excess inlines
+ * into a loop that takes its derivative or not. */
+static void excess_sums5(const struct hood *h, const double *c, int slope,
+                         double (*rhs)[TERMS_MAX])
+{
+    if (slope)
+        excess_sums5_of(h, c, 1, rhs);
+    else
+        excess_sums5_of(h, c, 0, rhs);
 }
 
 /* One pass of the osculating correction (see fit): the coefficients
@@ -514,29 +739,41 @@ static void model_solve(const struct model *model, const double *b,
 static void excess_pass(const struct hood *h, const struct model *model,
                         const double *c, double *next, double *slope)
 {
-    double rhs[4][TERMS_MAX] = {{0}};
-    int rows = slope ? 4 : 1;
-    for (size_t i = 1; i < h->count; i++) {
-        const double *l = h->local + 3 * i;
-        double m[TERMS_MAX], grad[3];
-        double z = l[2] - osculating_excess(c, l[0], l[1],
-                                            slope ? grad : NULL);
-        double w = h->weight[i];
-        monomials(l[0], l[1], m);
-        for (int r = 0; r < model->n; r++) {
-            int t = model->term[r];
-            double wm = w * m[t];
-            rhs[0][t] += wm * z;
-            for (int j = 1; j < rows; j++)
-                rhs[j][t] -= wm * grad[j - 1];
-        }
+    double rhs[4][TERMS_MAX];
+    if (model_is_quadric(model))
+        excess_sums5(h, c, slope != NULL, rhs);
+    else if (model->n == TERMS_MAX && slope)
+        excess_sums(h, TERMS_MAX, c, 1, rhs);
+    else if (model->n == TERMS_MAX)
+        excess_sums(h, TERMS_MAX, c, 0, rhs);
+    else
+        excess_sums(h, model->n, c, slope != NULL, rhs);
+    if (!slope) {
+        model_apply(model, rhs[0], next);
+        return;
     }
-    model_solve(model, rhs[0], next);
-    for (int j = 1; j < rows; j++) {
-        double column[TERMS_MAX];
-        model_solve(model, rhs[j], column);
-        for (int r = 0; r < TERMS_MAX; r++)
-            slope[3 * r + j - 1] = column[r];
+    double x[4][TERMS_MAX];
+    linalg_cholesky_apply_many(model->n, model->factor, 4, TERMS_MAX,
+                               rhs[0], x[0]);
+    memset(next, 0, TERMS_MAX * sizeof(double));
+    memset(slope, 0, 3 * TERMS_MAX * sizeof(double));
+    for (int r = 0; r < model->n; r++) {
+        int t = model->term[r];
+        next[t] = x[0][r];
+        for (int j = 1; j < 4; j++)
+            slope[3 * t + j - 1] = x[j][r];
+    }
+}
+
+/* Keeps in h->fitted the weighted monomials of the model's terms, by
+ * point (model->n each), for the passes of the osculating correction. */
+static void model_keep(const struct hood *h, const struct model *model)
+{
+    for (size_t i = 1; i < h->count; i++) {
+        const double *wm = h->weighted + TERMS_MAX * i;
+        double *kept = h->fitted + model->n * i;
+        for (int r = 0; r < model->n; r++)
+            kept[r] = wm[model->term[r]];
     }
 }
 
@@ -568,16 +805,8 @@ static int fit(const struct hood *h, const struct frame *f, int nterms_max,
     double radius = h->radius;
     double *local = h->local;
 
-    /* Coordinates scaled by the radius, so every monomial is O(1). */
-    for (size_t i = 1; i < count; i++) {
-        const double *d = h->offset + 3 * i;
-        double *l = local + 3 * i;
-        l[0] = vec3_dot(d, f->t1);
-        l[1] = vec3_dot(d, f->t2);
-        l[2] = vec3_dot(d, f->n);
-    }
     double ata[TERMS_MAX * TERMS_MAX], atb[TERMS_MAX];
-    normal_equations(h, nterms_max, ata, atb);
+    normal_equations(h, f, nterms_max, ata, atb);
 
     /* The leading 9, 5 and 3 terms are the fits tried in turn, unless the
      * neighbourhood is thin. */
@@ -586,10 +815,11 @@ static int fit(const struct hood *h, const struct frame *f, int nterms_max,
     model.n = 0;
     /* A thin fit's axes: x' = c x + s y, y' = -s x + c y, X' = Q X. */
     double rot_c = 1, rot_s = 0;
-    int thin = 0;
+    int thin = 0, probed = 0;
+    double probe[5 * 5];
     if (nterms_max >= 5 && count > 5) {
-        double probe[5 * 5];
         thin = !linalg_cholesky_factor(5, TERMS_MAX, ata, FIT_THIN_TOL, probe);
+        probed = !thin;
     }
     if (thin) {
         /* Principal axes of the points' spread about their centroid
@@ -615,14 +845,12 @@ static int fit(const struct hood *h, const struct frame *f, int nterms_max,
             l[0] = rot_c * x + rot_s * y;
             l[1] = -rot_s * x + rot_c * y;
         }
-        normal_equations(h, TERMS_MAX, ata, atb);
+        normal_equations(h, NULL, TERMS_MAX, ata, atb);
         /* x'^2 x'y' x' y' | x'^3 x'^2y' */
         static const int straight[6] = {0, 1, 3, 4, 5, 6};
         model.n = nterms_max == 9 && count > 6 ? 6 : 4;
         memcpy(model.term, straight, sizeof straight);
-        if (model_factor(&model, ata))
-            model_solve(&model, atb, coef);
-        else
+        if (!model_factor(&model, ata))
             model.n = thin = 0;  /* not even that: as any other */
     }
     if (!thin) {
@@ -633,24 +861,36 @@ static int fit(const struct hood *h, const struct frame *f, int nterms_max,
             model.n = tries[i];
             for (int r = 0; r < model.n; r++)
                 model.term[r] = r;
-            if (model_factor(&model, ata))
-                model_solve(&model, atb, coef);
-            else
+            if (model.n == 5 && probed) {
+                /* the probe's factor, the same to the bit: it passed a
+                 * stricter pivot test than FIT_PIVOT_TOL */
+                memcpy(model.factor, probe, sizeof probe);
+            } else if (!model_factor(&model, ata)) {
                 model.n = 0;
+            }
         }
     }
     if (model.n == 0)
         return 0;
-    if (guess) {  /* start the correction from a fit close by, turned */
+    if (!model_is_quadric(&model))
+        model_keep(h, &model);
+    /* The correction starts from the fit itself, or from a fit close by
+     * (guess, turned), whose fit then is needed only if no pass of the
+     * correction is taken (below). */
+    double start[3];
+    if (guess) {
         double c = rot_c, s = rot_s;
         double hxx = guess->fxx, hxy = guess->fxy, hyy = guess->fyy;
         /* H' = Q H Q^T, Q = [[c, s], [-s, c]] */
         double pxx = c * c * hxx + 2 * c * s * hxy + s * s * hyy;
         double pxy = (c * c - s * s) * hxy + c * s * (hyy - hxx);
         double pyy = s * s * hxx - 2 * c * s * hxy + c * c * hyy;
-        coef[0] = pxx * radius / 2;
-        coef[1] = pxy * radius;
-        coef[2] = thin ? 0 : pyy * radius / 2;
+        start[0] = pxx * radius / 2;
+        start[1] = pxy * radius;
+        start[2] = thin ? 0 : pyy * radius / 2;
+    } else {
+        model_solve(&model, atb, coef);
+        memcpy(start, coef, sizeof start);
     }
 
     /* The osculating correction: refit the heights less the excess of the
@@ -665,14 +905,14 @@ static int fit(const struct hood *h, const struct frame *f, int nterms_max,
      * converge slowly; a step that leaves the miss |F(c) - c| larger is
      * halved. The answer is F(c) for the c that came closest. */
     double best[TERMS_MAX], best_miss = INFINITY, step = 1;
-    double c3[3] = {coef[0], coef[1], coef[2]}, base[3] = {0}, dir[3] = {0};
+    double c3[3] = {start[0], start[1], start[2]};
+    double base[3] = {0}, dir[3] = {0};
     double slope[TERMS_MAX * 3];  /* dF/dc, all terms by the three */
-    double value[2], theta;
-    linalg_sym2_eigen(c3[0], c3[1] / 2, c3[2], value, &theta);
+    double value[2];
+    linalg_sym2_values(c3[0], c3[1] / 2, c3[2], value);
     double big = fmax(fabs(value[0]), fabs(value[1]));
     int newton = 4 * big * big > NEWTON_P_MIN;  /* p <= |2 c|^2 |X|^2 */
-    int need_slope = newton;
-    memcpy(best, coef, sizeof best);
+    int need_slope = newton, taken = 0;
     for (int it = 0; it < EXCESS_ITERATIONS; it++) {
         double next[TERMS_MAX];
         excess_pass(h, &model, c3, next, need_slope ? slope : NULL);
@@ -680,8 +920,8 @@ static int fit(const struct hood *h, const struct frame *f, int nterms_max,
         double miss = 0, size = 0, g[3];
         for (int r = 0; r < 3; r++) {
             g[r] = next[r] - c3[r];
-            miss = fmax(miss, fabs(g[r]));
-            size = fmax(size, fabs(next[r]));
+            miss = larger(miss, fabs(g[r]));
+            size = larger(size, fabs(next[r]));
         }
         if (!newton) {  /* c <- F(c) */
             /* Done when this pass, or what the passes still to come
@@ -691,6 +931,7 @@ static int fit(const struct hood *h, const struct frame *f, int nterms_max,
             double rest = it > 0 && ratio < 0.5 ? 2 * ratio * miss : miss;
             best_miss = miss;
             memcpy(best, next, sizeof best);
+            taken = 1;
             memcpy(c3, next, sizeof c3);
             if (!(rest > FIT_CONVERGED * (size + FIT_SCALE_MIN)))
                 break;
@@ -702,6 +943,7 @@ static int fit(const struct hood *h, const struct frame *f, int nterms_max,
             need_slope = !(miss < best_miss / 4);
             best_miss = miss;
             memcpy(best, next, sizeof best);
+            taken = 1;
             if (!(miss > FIT_CONVERGED * (size + FIT_SCALE_MIN)))
                 break;
             double a[9];
@@ -718,7 +960,12 @@ static int fit(const struct hood *h, const struct frame *f, int nterms_max,
         for (int r = 0; r < 3; r++)
             c3[r] = base[r] + step * dir[r];
     }
-    memcpy(coef, best, sizeof coef);
+    if (taken) {
+        memcpy(coef, best, sizeof coef);
+    } else if (guess) {  /* no pass came closer (NaN): the fit, as begun */
+        model_solve(&model, atb, coef);
+        memcpy(coef, start, sizeof start);
+    }
 
     /* Back to metres (z = a x^2 / radius for the scaled a) and, for a thin
      * fit, to the frame's axes: gradient Q^T g', Hessian Q^T H' Q. */
@@ -738,8 +985,8 @@ static int fit(const struct hood *h, const struct frame *f, int nterms_max,
 /* The largest |curvature| of the jet's Hessian (1/m). */
 static double jet_curvature_max(const struct jet *jet)
 {
-    double value[2], theta;
-    linalg_sym2_eigen(jet->fxx, jet->fxy, jet->fyy, value, &theta);
+    double value[2];
+    linalg_sym2_values(jet->fxx, jet->fxy, jet->fyy, value);
     return fmax(fabs(value[0]), fabs(value[1]));
 }
 
@@ -890,19 +1137,21 @@ static void vertex_curvature(const struct mesh *mesh, uint32_t v,
      * tilts further from its frame than the last is not taken: on a wide
      * one-sided neighbourhood the refits can run away from the surface
      * (a coarse cap's corner turned its normal by 50 degrees in 5). */
+    double tilt = hypot(jet.fx, jet.fy);
     for (int it = 0; it < NORMAL_ITERATIONS; it++) {
-        double tilt = hypot(jet.fx, jet.fy);
         if (!(tilt > NORMAL_CONVERGED))
             break;
         struct frame g;
         struct jet refined;
         graph_normal(&f, &jet, g.n);
         frame_complete(&g);
+        double refined_tilt;
         if (!fit(&hood, &g, nterms, &jet, &refined) ||
-            !(hypot(refined.fx, refined.fy) < tilt))
+            !((refined_tilt = hypot(refined.fx, refined.fy)) < tilt))
             break;
         f = g;
         jet = refined;
+        tilt = refined_tilt;
     }
 
     double k1, k2, d1[3], d2[3], n[3];
@@ -1012,22 +1261,35 @@ static int estimate(const struct mesh *mesh, int flip_normals, int jobs,
     struct vertex_job job[VERTEX_THREADS_MAX];
     int rc = FACET_OK, made = 0;
     for (; made < njobs; made++) {
-        job[made] = (struct vertex_job){mesh, flip_normals, out, &next,
-                                        {nv, NULL, 0, NULL, NULL, NULL, NULL},
-                                        stop, 0};
+        job[made] = (struct vertex_job){.mesh = mesh,
+                                        .flip_normals = flip_normals,
+                                        .out = out, .next = &next,
+                                        .stop = stop};
+        job[made].ws.nvertices = nv;
+        job[made].ws.ntriangles = mesh->ntriangles;
         job[made].ws.mark = calloc(n1, sizeof(uint32_t));
+        job[made].ws.taken = calloc(mesh->ntriangles ? mesh->ntriangles : 1,
+                                    sizeof(uint32_t));
         job[made].ws.points = malloc(POINTS_MAX * sizeof(uint32_t));
         job[made].ws.offset = malloc(3 * POINTS_MAX * sizeof(double));
         job[made].ws.weight = malloc(POINTS_MAX * sizeof(double));
         job[made].ws.local = malloc(3 * POINTS_MAX * sizeof(double));
-        if (!job[made].ws.mark || !job[made].ws.points ||
+        job[made].ws.weighted =
+            malloc(TERMS_MAX * POINTS_MAX * sizeof(double));
+        job[made].ws.fitted = malloc(TERMS_MAX * POINTS_MAX * sizeof(double));
+        if (!job[made].ws.mark || !job[made].ws.taken ||
+            !job[made].ws.points ||
             !job[made].ws.offset || !job[made].ws.weight ||
-            !job[made].ws.local) {
+            !job[made].ws.local || !job[made].ws.weighted ||
+            !job[made].ws.fitted) {
             free(job[made].ws.mark);
+            free(job[made].ws.taken);
             free(job[made].ws.points);
             free(job[made].ws.offset);
             free(job[made].ws.weight);
             free(job[made].ws.local);
+            free(job[made].ws.weighted);
+            free(job[made].ws.fitted);
             rc = facet_error_set(err, FACET_EWORK,
                                  "curvature: out of memory for %zu "
                                  "vertices", nv);
@@ -1044,10 +1306,13 @@ static int estimate(const struct mesh *mesh, int flip_normals, int jobs,
     }
     for (int k = 0; k < made; k++) {
         free(job[k].ws.mark);
+        free(job[k].ws.taken);
         free(job[k].ws.points);
         free(job[k].ws.offset);
         free(job[k].ws.weight);
         free(job[k].ws.local);
+        free(job[k].ws.weighted);
+        free(job[k].ws.fitted);
     }
     return rc;
 }

@@ -33,6 +33,8 @@ section "OBJ loader: Facet's obj_load against Debian's tinyobjloader (1M triangl
     tests/bench/bench_obj.sh "$build"
 section "One design option: a 37x49 evaluation of the 100k-triangle roof" \
     "$build/bench/bench_classify"
+section "Curvature at every vertex against the estimator of d218719 (issue 27): the 100k-triangle roof and real surfaces of ../shared/data" \
+    "$build/bench/bench_curvature"
 section "Panels as built: the SP fit, gaps and kinks of one 37x49 option of the 100k-triangle roof" \
     "$build/bench/bench_joint"
 section "The paper's whole space (336 grids) on the 100k-triangle roof, into SQLite" \
