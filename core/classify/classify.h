@@ -104,7 +104,7 @@ struct option_totals {
     double panel_cost;               /* panels x panel cost */
     double joint_cost;               /* joint_length x joint cost */
     double mould_cost;               /* moulds per type x mould cost */
-    /* Panels as built and their joints, set by option_classify (option.h),
+    /* Panels as built and their joints, set by option_evaluate (option.h),
      * 0 from classify_panels alone. In the store's units: */
     double max_gap_mm;               /* largest gap at a joint (mm) */
     double mean_gap_mm;              /* mean over the joints (mm) */

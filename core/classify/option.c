@@ -137,18 +137,7 @@ int option_evaluate(const struct surface *surface,
                     struct panelization *panels,
                     struct option_totals *totals, struct facet_error *err)
 {
-    return option_evaluate_lattice(surface, NULL, params, panels, totals,
-                                   err);
-}
-
-int option_evaluate_lattice(const struct surface *surface,
-                            const struct panel_lattice *lattice,
-                            const struct option_params *params,
-                            struct panelization *panels,
-                            struct option_totals *totals,
-                            struct facet_error *err)
-{
-    return option_evaluate_shared(surface, lattice, NULL, params, panels,
+    return option_evaluate_shared(surface, NULL, NULL, params, panels,
                                   totals, err);
 }
 
@@ -414,18 +403,8 @@ static int build_and_measure(const struct surface *surface,
     return rc;
 }
 
-int option_classify_unmoulded(const struct surface *surface,
-                              const struct option_params *params,
-                              double joint_length,
-                              struct panelization *panels,
-                              struct option_totals *totals, size_t *joints,
-                              struct facet_error *err)
-{
-    return classify_unmoulded(surface, params, joint_length, NULL, panels,
-                              totals, joints, err);
-}
-
-/* option_classify_unmoulded, with fits when not NULL. */
+/* Classifies, builds and measures panels without moulds (option_evaluate_unmoulded's
+ * part after the panels), with fits when not NULL. */
 static int classify_unmoulded(const struct surface *surface,
                               const struct option_params *params,
                               double joint_length, struct grid_fits *fits,
@@ -481,15 +460,6 @@ void option_moulds_set(const struct option_params *params,
     classify_price_terms(&params->classify, totals);
 }
 
-int option_classify(const struct surface *surface,
-                    const struct option_params *params, double joints,
-                    struct panelization *panels,
-                    struct option_totals *totals, struct facet_error *err)
-{
-    return classify_moulded(surface, params, joints, NULL, panels, totals,
-                            err);
-}
-
 int option_classify_kept(const struct surface *surface,
                          const struct option_params *params,
                          double joint_length, struct grid_fits *fits,
@@ -501,7 +471,8 @@ int option_classify_kept(const struct surface *surface,
                             totals, err);
 }
 
-/* option_classify, with fits when not NULL (option_classify_kept). */
+/* classify_unmoulded, then the mould families: option_classify_kept, and
+ * every evaluation's part after its panels. */
 static int classify_moulded(const struct surface *surface,
                             const struct option_params *params,
                             double joints, struct grid_fits *fits,

@@ -116,21 +116,14 @@ int option_evaluate(const struct surface *surface,
                     struct panelization *panels,
                     struct option_totals *totals, struct facet_error *err);
 
-/* option_evaluate with the panels taken from lattice (NULL: none) when it
- * holds the grid and params ask for PANEL_EXTREMES: the same panels, to
- * rounding, in a fraction of the time. */
-int option_evaluate_lattice(const struct surface *surface,
-                            const struct panel_lattice *lattice,
-                            const struct option_params *params,
-                            struct panelization *panels,
-                            struct option_totals *totals,
-                            struct facet_error *err);
-
 struct joint_lines;
 
-/* option_evaluate_lattice with the joint length taken from the lines of
- * lines (NULL: none) that the grid's are among (joint_lines_build): the
- * same length, to the bit, for a batch of grids that share lines. */
+/* option_evaluate with the panels taken from lattice (NULL: none) when it
+ * holds the grid and params ask for PANEL_EXTREMES (the same panels, to
+ * rounding, in a fraction of the time), and the joint length from the
+ * lines of lines (NULL: none) that the grid's are among
+ * (joint_lines_build): the same length, to the bit, for a batch of grids
+ * that share lines. */
 int option_evaluate_shared(const struct surface *surface,
                            const struct panel_lattice *lattice,
                            const struct joint_lines *lines,
@@ -139,28 +132,13 @@ int option_evaluate_shared(const struct surface *surface,
                            struct option_totals *totals,
                            struct facet_error *err);
 
-/* What option_evaluate does once the panels are built: classifies panels
- * (built for params' grid over surface), builds them as built and measures
- * their joints (setting each panel's built, misfit, sp_deviation and
- * worst gap and kink), finds their mould families (setting each panel's
- * mould), and fills *totals, priced with joint_length
- * (m), the joint length of the grid (joint_length.h), which does not
- * depend on the threshold: a search evaluating several thresholds on one
- * grid measures it once. Returns FACET_OK, FACET_EINPUT for a bad option
- * value, FACET_EWORK when out of memory. It is option_classify_unmoulded,
- * then mould_families_build over panels and option_moulds_set. */
-int option_classify(const struct surface *surface,
-                    const struct option_params *params, double joint_length,
-                    struct panelization *panels,
-                    struct option_totals *totals, struct facet_error *err);
-
 /* One grid at several thresholds: option_evaluate_kept for the first, as
  * option_evaluate_shared but also setting up *fits (sp_fit.h's grid_fits)
  * from the grid's panels, then option_classify_kept for each other
  * threshold with the same panels
  * and fits. A panel's SP fits are then made once, the first time it is SP,
  * and judged at each threshold; its sides are sampled once. The results
- * are those of option_evaluate_shared and option_classify to the bit
+ * are those of option_evaluate_shared at each threshold, to the bit
  * (sp_fit.h, cell_sides.h), so a run gives the same options however its
  * points are grouped, split among threads or among shards. The caller
  * releases *fits with grid_fits_free, also after a failure (it is zeroed
@@ -181,22 +159,13 @@ int option_classify_kept(const struct surface *surface,
                          struct option_totals *totals,
                          struct facet_error *err);
 
-/* option_classify up to the mould families: every panel's mould is -1 and
- * the totals' mould counts 0, priced without moulds. What an option over
- * a project (core/project/project_option.h) runs on each surface before
- * the building's families are found over all of them at once. *joints
- * (when not NULL) receives the joints measured, the count the totals'
- * mean gap and kink are over, so that a building can weigh its surfaces'
- * means (0 after a failure). Same returns. */
-int option_classify_unmoulded(const struct surface *surface,
-                              const struct option_params *params,
-                              double joint_length,
-                              struct panelization *panels,
-                              struct option_totals *totals, size_t *joints,
-                              struct facet_error *err);
-
-/* option_evaluate_shared up to the mould families, as
- * option_classify_unmoulded. Same returns. */
+/* option_evaluate_shared up to the mould families: every panel's mould
+ * is -1 and the totals' mould counts 0, priced without moulds. What an
+ * option over a project (core/project/project_option.h) runs on each
+ * surface before the building's families are found over all of them at
+ * once. *joints (when not NULL) receives the joints measured, the count
+ * the totals' mean gap and kink are over, so that a building can weigh its
+ * surfaces' means (0 after a failure). Same returns. */
 int option_evaluate_unmoulded(const struct surface *surface,
                               const struct panel_lattice *lattice,
                               const struct joint_lines *lines,
@@ -207,7 +176,7 @@ int option_evaluate_unmoulded(const struct surface *surface,
 
 struct mould_families;
 
-/* Gives panels (classified: option_classify_unmoulded) their moulds from
+/* Gives panels (classified: option_evaluate_unmoulded) their moulds from
  * families, found over a list of panels in which panel k of panels is
  * number first + k (mould.h: 0 for a surface's own families, its offset
  * among a building's), and sets totals' mould counts to those of the

@@ -200,7 +200,7 @@ int optimize_run(const struct surface *surface,
 
 /* Evaluates points[0..n) on up to jobs threads into totals[0..n), the
  * panels of the grids lattice holds from it (NULL: none; see
- * option_evaluate_lattice). */
+ * option_evaluate_shared). */
 int optimize_evaluate(const struct surface *surface,
                       const struct panel_lattice *lattice,
                       const struct option_params *base,

@@ -106,7 +106,7 @@ static void stepped_pass(const struct surface *surface,
                 struct option_params params = option_params_at(
                     &s->base, nu, nv, STEPPED_MM[x]);
                 struct option_totals totals;
-                if (option_evaluate_lattice(surface, lattice, &params,
+                if (option_evaluate_shared(surface, lattice, NULL, &params,
                                             &panels, &totals,
                                             &err) != FACET_OK)
                     fail(&err);
