@@ -104,7 +104,7 @@ static const struct arg_option classify_command_options[] = {
      "MM", "flatness threshold t: a panel within t of its best-fit plane "
      "is made flat", default_threshold},
     {"json", 0, ARG_FLAG, offsetof(struct classify_args, json), NULL,
-     "one JSON object (see README)", NULL},
+     "one JSON object (see docs/manual.md)", NULL},
     {"csv", 0, ARG_STRING, offsetof(struct classify_args, csv), "FILE",
      "the panel schedule, one row per panel", NULL},
     {NULL, 0, ARG_FLAG, 0, NULL, NULL, NULL},

@@ -1,6 +1,6 @@
 /*
  * cmd_example.c: `facet example NAME [-o FILE] [--res N]`, writing one of the
- * example surfaces that the README and `make demo` use.
+ * example surfaces that the README, docs/ and `make demo` use.
  */
 #include <stdio.h>
 #include <string.h>

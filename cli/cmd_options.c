@@ -160,7 +160,7 @@ static const struct arg_option options_options[] = {
      "sort descending", NULL},
     {"where", 0, ARG_STRING, offsetof(struct options_args, where), "EXPR",
      "e.g. 'cost < 1.5e6 and dp_area <= 900 or pareto' (columns: see "
-     "README)", NULL},
+     "docs/store.md)", NULL},
     {"limit", 0, ARG_STRING, offsetof(struct options_args, limit), "N",
      "at most N options", NULL},
     {"surfaces", 0, ARG_FLAG, offsetof(struct options_args, surfaces), NULL,

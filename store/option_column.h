@@ -1,12 +1,13 @@
 /*
  * option_column.h: the columns of a design option, in one registry.
  *
- * Every column of the options table (README: The result store) is one row
- * of store_option_columns, and everything that names, reads or shows an
- * option's column takes it from there: the store's INSERT and SELECT
- * lists (store_option.c), the words --where and --sort accept (filter.c),
- * the workbench's options table, detail pane and plots (tui/format.c), the
- * CLI's tables, --json and --csv (cli/cmd_options.c, cli/run_table.c).
+ * Every column of the options table (docs/store.md, the result store) is
+ * one row of store_option_columns, and everything that names, reads or
+ * shows an option's column takes it from there: the store's INSERT and
+ * SELECT lists (store_option.c), the words --where and --sort accept
+ * (filter.c), the workbench's options table, detail pane and plots
+ * (tui/format.c), the CLI's tables, --json and --csv (cli/cmd_options.c,
+ * cli/run_table.c).
  *
  * Adding a column to an option:
  *   1. the field, in struct option_totals (core/classify/classify.h) or
@@ -14,7 +15,7 @@
  *   2. one row of store_option_columns (option_column.c), after knee and
  *      before run: the table's order, as ALTER TABLE appends;
  *   3. the schema migration that adds it (store/schema.c) and its line in
- *      the README's options table;
+ *      the options table of docs/store.md;
  *   4. its field in by_hand of tests/unit/test_option_column.c, the
  *      test's own reading of a row.
  * test_option_column fails until the registry and the table agree

@@ -1,7 +1,7 @@
 /*
  * schema.c: opening a Facet database: recognising the file, creating or
  * migrating the schema, the connection settings a writer and a reader
- * share, and noticing runs whose writer is gone. README.md ("The result
+ * share, and noticing runs whose writer is gone. docs/store.md ("The result
  * store") documents every table, column and unit defined here.
  */
 #include "store_internal.h"
@@ -127,7 +127,7 @@ static const char schema_v1[] =
     ") WITHOUT ROWID;";
 
 /* Version 2: what readers query by (the TUI sorts a million options by a
- * metric without reading them all) and the two views of the README. */
+ * metric without reading them all) and the two views of docs/store.md. */
 static const char schema_v2[] =
     "CREATE INDEX options_by_rank ON options(run, rank, number);"
     "CREATE INDEX options_by_cost ON options(run, cost);"

@@ -6,7 +6,7 @@
  * panels of the options a designer looks at (every Pareto option, and any
  * other on demand) are stored too. The schema is versioned (application_id,
  * user_version), in WAL mode with foreign keys on and a busy timeout, so a
- * reader (the TUI, sqlite3) and the writer coexist. README.md documents
+ * reader (the TUI, sqlite3) and the writer coexist. docs/store.md documents
  * every table and column.
  *
  * Ownership: store_open returns a handle the caller releases with

@@ -36,8 +36,8 @@
 
 /* The rounding allowance of every limit a panel is held to: a computed
  * measure within 1e-9 of its panel's scale of the limit meets it. The three
- * ways of building panels agree to that (README: "Same panels, three
- * ways"), so a panel is never typed or judged by the order its sums were
+ * ways of building panels agree to that (docs/method.md: "Same panels,
+ * three ways"), so a panel is never typed or judged by the order its sums were
  * taken in. Applied as:
  *   - the threshold rule: deviation <= t + 1e-9 d (d the panel's diameter);
  *   - the zero test: |k| <= eps (1 + 1e-9);

@@ -1,7 +1,7 @@
 /*
  * report.h: writing an evaluated option as JSON or as a CSV panel schedule.
  *
- * The JSON is the format of `facet classify --json` (keys in README.md);
+ * The JSON is the format of `facet classify --json` (keys in docs/manual.md);
  * the CSV has one row per panel and a header row, for a spreadsheet. Units:
  * lengths m, areas m^2, curvatures 1/m (K 1/m^2), money USD.
  */

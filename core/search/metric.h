@@ -3,7 +3,7 @@
  * by name, and the objectives built from them.
  *
  * Each metric is a number of struct option_totals (classify.h) under the
- * name the JSON, the store and the README use. An objective is a metric to
+ * name the JSON, the store and docs/ use. An objective is a metric to
  * minimise, or, written "max:NAME", to maximise.
  */
 #ifndef FACET_METRIC_H

@@ -17,8 +17,8 @@ COSTS=(--panel-cost 250 --joint-cost 40 --mould-cost 3000,20000)
 
 # --- The paper's study: today's numbers when the new terms are 0 --------
 # The paper types SP by class alone (--sp-fit no); as built (the default)
-# the panels no cylinder or cone fits are DP and its numbers change (README:
-# "Panels as built").
+# the panels no cylinder or cone fits are DP and its numbers change
+# (docs/method.md, "Panels as built").
 # (the fixture paper.db: --u 20:40 --v 35:50 --threshold 3 --sp-as-fp
 # --max-panel-area 1.92 --sp-fit no --name paper)
 fixture_run paper.db "$WORK/paper.db"

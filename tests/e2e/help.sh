@@ -2,9 +2,9 @@
 # End-to-end: every option a command takes is in its --help, and every
 # option its --help names is one it takes. The truth is the binary itself:
 # a flag is taken when `facet CMD --flag` is not refused as an unknown
-# option. The flags tried are every one the README names and every one a
-# table in cli/ spells (`{"name", ...`), so that a flag the help forgets
-# is tried whatever the help says.
+# option. The flags tried are every one the README and docs/*.md name and
+# every one a table in cli/ spells (`{"name", ...`), so that a flag the
+# help forgets is tried whatever the help says.
 # layers: cli
 . "$(dirname "$0")/lib.sh"
 
@@ -12,10 +12,10 @@
 commands=$("$FACET" --help | sed -n 's/^  \([a-z][a-z]*\)  .*/\1/p')
 [ -n "$commands" ] || { echo "not ok - facet --help lists the commands"; exit 0; }
 
-# Every candidate: --name words of the README and of cli/'s tables, and
-# the one-letter aliases the tables give.
+# Every candidate: --name words of the README, of docs/*.md and of cli/'s
+# tables, and the one-letter aliases the tables give.
 {
-    grep -ohE -- '--[a-z][a-z0-9-]*' README.md
+    grep -ohE -- '--[a-z][a-z0-9-]*' README.md docs/*.md
     grep -ohE '\{"[a-z][a-z0-9-]*", ' cli/*.c | sed -E 's/\{"([^"]*)", /--\1/'
 } | sort -u >"$WORK/long"
 grep -ohE "\{\"[a-z][a-z0-9-]*\", '[a-z]'" cli/*.c | sed -E "s/.*'(.)'/-\1/" |

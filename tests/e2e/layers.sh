@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # layers.sh: the house keeps its shape. Every #include of the sources is
-# checked against the arrows of README "Layout":
+# checked against the arrows of docs/layout.md ("Layout"):
 #
 #   cli -> {study, store, tui, core}   tui -> {study, store, core}
 #   study -> {store, core}             store -> core       core -> nothing

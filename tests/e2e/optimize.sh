@@ -135,7 +135,7 @@ listing "options --pareto: the rank 1 options" json \
 listing "options --sort cost --limit 10" json \
     'SELECT * FROM options ORDER BY cost, run, number LIMIT 10' --sort cost --limit 10
 # Sorted on two keys the second of which ties to rounding (planarity 0
-# against 9e-16): the order of the tie rule (README, Decisions: ties), by a
+# against 9e-16): the order of the tie rule (docs/decisions.md: Ties), by a
 # brute force over the stored values, not SQL's exact ORDER BY.
 run "$FACET" options "$DB" --run 1 --sort dp_area,planarity --desc --limit 15 --json
 cp "$OUT" "$WORK/listing"
@@ -436,8 +436,9 @@ check "kill -9: the options equal the uninterrupted run's" "${CHECK[@]}" same "$
 check "kill -9: the run's results equal the uninterrupted run's" "${CHECK[@]}" summary "$KILL" 1 "$REF" 1
 
 # ---------------------------------------------------------------------------
-# 8. Bad input: one line on stderr naming what is wrong, and status 2 (the
-# README's "bad usage or bad input"; a damaged database is bad input too).
+# 8. Bad input: one line on stderr naming what is wrong, and status 2
+# (docs/manual.md: "bad usage or bad input"; a damaged database is bad
+# input too).
 echo "not a database" >"$WORK/text.db"
 expect_error "a text file as --db" 'text.db: not an SQLite database' \
     "$FACET" optimize "$ROOF" --db "$WORK/text.db" "${SMALL[@]}"

@@ -28,7 +28,7 @@ import sqlite3
 import sys
 
 # Every column of the options table but run (which comes first), in the
-# table's order: what --json and --csv must carry (README).
+# table's order: what --json and --csv must carry (docs/store.md).
 COLUMNS = ["number", "generation", "nu", "nv", "threshold_mm", "panels",
            "fp_count", "sp_count", "dp_count", "fp_area", "sp_area",
            "dp_area", "area", "fp_cost", "sp_cost", "dp_cost", "cost",
@@ -88,8 +88,8 @@ TIE = 1e-9
 
 def tolerances(points):
     """Values of an objective within a billionth of its range over the
-    run's options, or of its largest magnitude, are equal (README,
-    Decisions: ties)."""
+    run's options, or of its largest magnitude, are equal (docs/decisions.md,
+    Ties)."""
     tol = []
     for j in range(len(points[0]) if points else 0):
         v = [p[j] for p in points]

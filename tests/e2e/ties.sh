@@ -2,8 +2,8 @@
 # End-to-end: ties are ties. Runs on surfaces with exact symmetries (a
 # torus section, a barrel vault), whose mirror-image grids have totals
 # equal in exact arithmetic and different by rounding, checked against the
-# SQLite file and a brute force with the same tolerance (README,
-# Decisions): ranks, knee and hypervolume; the order of `facet options
+# SQLite file and a brute force with the same tolerance (docs/decisions.md,
+# Ties): ranks, knee and hypervolume; the order of `facet options
 # --sort` and of Table 2 (a tie falls to the next key, then to the
 # number); and every double of --json and --csv, read back, is the stored
 # one bit for bit.

@@ -7,7 +7,7 @@ prints what is wrong on stderr and exits 1.
   order DB RUN SORT DESC FILE FORMAT
         the rows of `facet options --run RUN --sort SORT [--desc]`
         (FORMAT json or csv, in FILE) come in the order of the sort keys
-        with ties as ties (README, Decisions): a key's values within a
+        with ties as ties (docs/decisions.md, Ties): a key's values within a
         billionth of its range over the run (or of its largest magnitude)
         are one tie class (single linkage), and a tie falls to the next
         key, then to the option's number; every double is the stored one

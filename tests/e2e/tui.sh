@@ -16,7 +16,7 @@
 
 fixture roof40.obj "$WORK/roof.obj" || exit 1
 # Typed by class alone (the figures below are that run's; as built, this
-# coarse roof's SP panels are misfits: README "Panels as built").
+# coarse roof's SP panels are misfits: docs/method.md, "Panels as built").
 "$FACET" optimize "$WORK/roof.obj" --db "$WORK/t.db" --u 4:8 --v 4:8 \
     --threshold 2:4:1 --sp-fit no >/dev/null 2>&1 || exit 1
 

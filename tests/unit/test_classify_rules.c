@@ -320,8 +320,8 @@ static void test_threshold_zero(void **state)
 /* The paper's validation (section 4.1): the hypar z = xy/20 on a 5 x 5
  * grid gives only K < 0 areas. By the extremes, every panel's k1 > 0 >
  * k2; the panels on the two diagonals, where H changes sign, are saddles
- * by the saddle rule, and the others split by the sign of H: the README
- * states the counts this test holds. */
+ * by the saddle rule, and the others split by the sign of H: docs/method.md
+ * ("The paper's hypar validation") states the counts this test holds. */
 static void test_paper_hypar(void **state)
 {
     (void)state;

@@ -303,7 +303,7 @@ static void test_store_round_trip(void **state)
         for (int r = 0; r < ROWS; r++) {
             assert_int_equal(sqlite3_step(s), SQLITE_ROW);
             double want = by_hand(&rows[r], name);
-            /* crowding: NULL stands for infinity (README) */
+            /* crowding: NULL stands for infinity (docs/store.md) */
             double got = sqlite3_column_type(s, 0) == SQLITE_NULL
                              ? INFINITY : sqlite3_column_double(s, 0);
             if (got != want)
@@ -371,7 +371,7 @@ static void test_every_column_filters_and_sorts(void **state)
         struct filter *f;
         if (filter_compile(where, &f, &err) != FACET_OK)
             fail_msg("--where '%s': %s", where, err.message);
-        /* crowding: NULL is infinite (README) */
+        /* crowding: NULL is infinite (docs/store.md) */
         snprintf(sql, sizeof sql, "SELECT count(*) FROM options"
                  " WHERE run = ?1 AND %s%s%s%s",
                  strcmp(c->name, "crowding") == 0 ? "ifnull(crowding, 1e999)"
@@ -432,7 +432,7 @@ static void test_every_column_filters_and_sorts(void **state)
 }
 
 
-/* The unit a column is stored in, by the README's rule (lengths m, areas
+/* The unit a column is stored in, by docs/store.md's rule (lengths m, areas
  * m^2, money USD, the threshold mm; a name ending in length is a length;
  * a joint's gap mm and kink degrees)
  * read off its name: the test's own
@@ -452,10 +452,11 @@ static const char *stored_unit_by_name(const char *name)
         return "m";
     if (strcmp(name, "p_dist") == 0)
         return "m^4";
-    /* a project's module, its width and height in m (README) */
+    /* a project's module, its width and height in m (docs/store.md) */
     if (strcmp(name, "module_w") == 0 || strcmp(name, "module_h") == 0)
         return "m";
-    /* a joint's gap in mm, its kink in degrees (README: Panels as built) */
+    /* a joint's gap in mm, its kink in degrees (docs/method.md: Panels as
+     * built) */
     if (n >= 4 && strcmp(name + n - 4, "_gap") == 0)
         return "mm";
     if (n >= 5 && strcmp(name + n - 5, "_kink") == 0)

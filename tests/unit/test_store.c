@@ -249,7 +249,7 @@ struct expected_row {
     double key[4];
 };
 
-/* The tie tolerance of each sort key (README, Decisions: a billionth of
+/* The tie tolerance of each sort key (docs/decisions.md, Ties: a billionth of
  * the key's range over the run, or of its largest magnitude), computed
  * here from the file. */
 static void key_tolerances(sqlite3 *db, const char *sort, double *tol,
