@@ -246,9 +246,15 @@ static void draw_detail_side(const struct option_row *o, int y, int x,
     for (int k = 0; k < tui_metric_column_count && k + 1 < height; k++) {
         const struct option_column *c = tui_shown_column(
             store_option_column(tui_metric_columns[k]), o);
+        double number = store_option_column_value(c, o);
+        if (isnan(number)) {
+            /* NULL in the store: never a number, and never 0 */
+            tui_putf(y + 1 + k, x, width, tui_attr(ROLE_DIM),
+                     " %-15s %14s", c->label, "not measured");
+            continue;
+        }
         char value[64];
-        tui_fmt_value(value, sizeof value, c,
-                      store_option_column_value(c, o));
+        tui_fmt_value(value, sizeof value, c, number);
         tui_putf(y + 1 + k, x, width, A_NORMAL, " %-15s %14s %s", c->label,
                  value, c->unit);
     }

@@ -8,6 +8,7 @@
 # what the run measured.
 # layers: cli core store study
 . "$(dirname "$0")/lib.sh"
+HERE=$(cd "$(dirname "$0")" && pwd)
 
 cd "$WORK" || exit 1
 "$FACET" example roof --res 30 -o roof.obj >/dev/null || exit 1
@@ -114,3 +115,16 @@ same "resumed: = the uninterrupted run, every column" "$(differ res.db paper.db 
 
 expect_error "--measure takes all or needed" "measure: 'some' is neither all nor needed" \
     "$FACET" optimize roof.obj --db bad.db --measure some
+
+# 6. The workbench says so too: its selected-option pane (wide terminal)
+# reads "not measured" for a NULL, a number for what was measured.
+. "$HERE/tui_lib.sh"
+cp fit.db tui.db
+start 200 60 -- tui.db
+check "workbench: the runs list the run" '^ +1 done +exhaustive'
+keys g Enter
+check "workbench: the run opens" '^ Run 1 '
+keys / && sleep 0.3 && keys "rank > 1" Enter
+check "workbench: an option off the front, moulds not measured" 'moulds +not measured'
+check "workbench: its SP fits measured (a number)" 'SP fitted +[0-9]+'
+check_not "workbench: no NULL shown as 0 or '-' for moulds" 'moulds +(0|-) *$'
