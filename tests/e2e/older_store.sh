@@ -3,9 +3,9 @@
 # and measured joints. A run of the example torus is taken back to schema 4
 # (tools/store_v4); the next Facet migrates it and its options' new
 # columns are NULL (the truth, read with sqlite3). Facet shows them as not
-# known, never as 0: empty in --csv, null in --json, "- (not stored ...)"
-# in show and "-" in the workbench's detail pane and map legend; a sort by
-# them keeps every option. A command that reads refuses the older file
+# known, never as 0: empty in --csv, null in --json, "- (not measured
+# ...)" in show, "not measured" in the workbench's detail pane and "-" in
+# its map legend; a sort by them keeps every option. A command that reads refuses the older file
 # until facet migrate has migrated it.
 # layers: store cli
 . "$(dirname "$0")/lib.sh"
@@ -119,8 +119,8 @@ keys Enter
 check "(the run's table)" '^ Run 1 '
 keys K
 check "(the knee)" "knee option $knee"
-check "the detail pane: moulds not known" '^ .* moulds +- *$'
-check "the detail pane: SP moulds not known" '^ .* SP moulds +- *$'
+check "the detail pane: moulds not known" '^ .* moulds +not measured *$'
+check "the detail pane: SP moulds not known" '^ .* SP moulds +not measured *$'
 keys Enter
 check "(its panel map)" '^ Panel map'
 keys F2 F2
