@@ -105,7 +105,11 @@ static void mesh_strip(struct mesh *mesh)
                         continue;
                     id[r + b][c + a] = next++;
                     double u = (c + a) * 1.5, v = (r + b) * 1.5;
-                    fprintf(out, "v %.17g %.17g %.17g\n", 4 * sin(u / 4), v,
+                    /* To the nanometre: the last bit of sin and cos
+                     * varies with the compiler (folded or called) and
+                     * the libm variant, and the pin is of the
+                     * estimator, not of them. */
+                    fprintf(out, "v %.9f %.9f %.9f\n", 4 * sin(u / 4), v,
                             4 * cos(u / 4));
                 }
     for (int r = 0; r < ROWS; r++)
@@ -133,7 +137,8 @@ static void mesh_cap(struct mesh *mesh)
     for (int j = 0; j <= n; j++)
         for (int i = 0; i <= n; i++) {
             double x = half * (2.0 * i / n - 1), y = half * (2.0 * j / n - 1);
-            fprintf(out, "v %.17g %.17g %.17g\n", x, y,
+            /* to the nanometre, as the strip's */
+            fprintf(out, "v %.9f %.9f %.9f\n", x, y,
                     sqrt(radius * radius - x * x - y * y));
         }
     for (int j = 0; j < n; j++)
@@ -239,8 +244,8 @@ static void test_strip(void **state)
     (void)state;
     struct mesh mesh;
     mesh_strip(&mesh);
-    check("strip", &mesh, 0x7066590e20df7408ULL,
-          0xce0071999368d730ULL);
+    check("strip", &mesh, 0x89b543f38c20daa3ULL,
+          0x9a3623e8ef91cfe8ULL);
 }
 
 static void test_cap(void **state)
@@ -248,8 +253,8 @@ static void test_cap(void **state)
     (void)state;
     struct mesh mesh;
     mesh_cap(&mesh);
-    check("cap", &mesh, 0xe520ac09db69ab55ULL,
-          0x111284b0d6bdb5b4ULL);
+    check("cap", &mesh, 0xd29620e953265c0aULL,
+          0xe080c62ba1b4e78fULL);
 }
 
 static void test_dome_vn(void **state)
