@@ -4,16 +4,34 @@
 #include "signals.h"
 
 #include <signal.h>
+#include <stdatomic.h>
 #include <stddef.h>
 #include <string.h>
 
-static volatile sig_atomic_t stop_signal;
+/* Atomic, not a sig_atomic_t: a run has several threads, and two signals
+ * sent together may land in two of them at once, each in its own handler
+ * (the mask below holds only within one thread). Lock-free atomics are
+ * async-signal-safe in C11. */
+static atomic_int stop_signal;
 
 static const int stop_signals[3] = {SIGINT, SIGTERM, SIGHUP};
 
 static void on_stop(int signal_number)
 {
-    stop_signal = signal_number;
+    int none = 0;
+    if (!atomic_compare_exchange_strong(&stop_signal, &none, signal_number)) {
+        /* A stop was asked already, perhaps in another thread whose
+         * handler has not yet put the defaults back: this is the second
+         * signal, and it kills. It is blocked here until the handler
+         * returns, and is then delivered with the default action. */
+        struct sigaction kill_now;
+        memset(&kill_now, 0, sizeof kill_now);
+        kill_now.sa_handler = SIG_DFL;
+        sigemptyset(&kill_now.sa_mask);
+        sigaction(signal_number, &kill_now, NULL);
+        raise(signal_number);
+        return;
+    }
     /* The first signal asks for a stop; the next one kills at once, as
      * it would without Facet's handler, for a user who will not wait for
      * the stop to be heard. That loses nothing a kill -9 would not, and
@@ -52,10 +70,11 @@ void signals_catch_stop(void)
 
 int signals_stop_requested(void)
 {
-    return stop_signal;
+    return atomic_load(&stop_signal);
 }
 
 int signals_stop_status(void)
 {
-    return 128 + (stop_signal ? stop_signal : SIGINT);
+    int signal_number = atomic_load(&stop_signal);
+    return 128 + (signal_number ? signal_number : SIGINT);
 }

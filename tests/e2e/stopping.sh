@@ -113,7 +113,9 @@ same "project: no run recorded" "$(sql "$WORK/project.db" 'SELECT count(*) FROM 
 # --- a second signal kills at once: SIGINT and SIGTERM arrive together
 # (sent while the process is stopped); the first asks for a stop, the
 # second finds the default action back and kills (Python tells a death by
-# a signal, -15, from an exit with status 143)
+# a signal, -15, from an exit with status 143). With threads, the two may
+# land in two threads at once, and then either may be the one that kills
+# (tests/unit/test_signals.c holds that race to account).
 got=$(python3 - "$FACET" "$WORK/big.obj" "$WORK/twice.db" <<'EOF'
 import os, signal, subprocess, sys, time
 facet, obj, db = sys.argv[1:]
@@ -136,7 +138,10 @@ except subprocess.TimeoutExpired:
     print('hung')
 EOF
 )
-same "a second signal kills at once (killed by SIGTERM)" "$got" -15
+case "$got" in
+-15 | -2) pass "a second signal kills at once (killed by a signal: $got)" ;;
+*) fail "a second signal kills at once (exited $got, want death by SIGINT or SIGTERM)" ;;
+esac
 same "killed so, the database is sound" "$(sql "$WORK/twice.db" 'PRAGMA integrity_check')" ok
 
 # --- SIGINT while the run, recorded, divides the surface along the grid
