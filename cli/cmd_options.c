@@ -97,11 +97,11 @@ static int list_row(void *context, int64_t run, const struct option_row *o)
         json_begin_object(&l->json);
         json_key(&l->json, "run");
         json_integer(&l->json, run);
-        for (int k = 0; k < STORE_OPTION_COLUMNS; k++) {
-            const struct option_column *c = &store_option_columns[k];
+        for (int k = 0; k < OPTION_QUANTITIES; k++) {
+            const struct quantity *c = &option_quantities[k];
             if (c->writer == WRITTEN_AS_KEY)
                 continue;
-            double value = store_option_column_value(c, o);
+            double value = quantity_value(c, o);
             json_key(&l->json, c->name);
             if (!isfinite(value))
                 json_null(&l->json);  /* crowding at a front's end */
@@ -125,11 +125,11 @@ static int list_row(void *context, int64_t run, const struct option_row *o)
         json_end_object(&l->json);
     } else {
         printf("%lld", (long long)run);
-        for (int k = 0; k < STORE_OPTION_COLUMNS; k++) {
-            const struct option_column *c = &store_option_columns[k];
+        for (int k = 0; k < OPTION_QUANTITIES; k++) {
+            const struct quantity *c = &option_quantities[k];
             if (c->writer == WRITTEN_AS_KEY)
                 continue;
-            double value = store_option_column_value(c, o);
+            double value = quantity_value(c, o);
             char text[NUMBER_EXACT_SIZE] = "";
             /* Crowding at a front's end is infinite: an empty field, as
              * SQL's NULL and JSON's null say it. */
@@ -240,9 +240,9 @@ static int options_main(int argc, char **argv, struct facet_error *err)
             json_begin_array(&listing.json);
         } else {
             printf("run");
-            for (int k = 0; k < STORE_OPTION_COLUMNS; k++)
-                if (store_option_columns[k].writer != WRITTEN_AS_KEY)
-                    printf(",%s", store_option_columns[k].name);
+            for (int k = 0; k < OPTION_QUANTITIES; k++)
+                if (option_quantities[k].writer != WRITTEN_AS_KEY)
+                    printf(",%s", option_quantities[k].name);
             putchar('\n');
         }
         struct option_query q = {run_id, pareto, filter, sort, desc, rows, 0};

@@ -32,7 +32,7 @@ int option_table_for_objectives(const char *objectives,
         size_t len = strcspn(p, ",");
         char name[64];
         snprintf(name, sizeof name, "%.*s", (int)len, p);
-        const struct option_column *c = store_option_column(name);
+        const struct quantity *c = quantity_named(name);
         int listed = c == NULL;
         for (int k = 0; k < n && !listed; k++)
             listed = columns[k].column != NULL &&
@@ -51,8 +51,8 @@ void option_table_for_project(struct option_table_column *columns, int n)
     for (int k = 0; k < n; k++) {
         if (columns[k].column == NULL)
             continue;
-        const struct option_column *shown =
-            store_option_column_of_project(columns[k].column);
+        const struct quantity *shown =
+            quantity_of_project(columns[k].column);
         if (shown != NULL && strcmp(shown->name, columns[k].column) != 0)
             columns[k] = (struct option_table_column){shown->name, 6,
                                                       columns[k].rank};
@@ -63,8 +63,8 @@ void option_table_heads(const struct option_table_column *columns, int n,
                         struct text_column *heads)
 {
     for (int k = 0; k < n; k++) {
-        const struct option_column *c =
-            columns[k].column ? store_option_column(columns[k].column)
+        const struct quantity *c =
+            columns[k].column ? quantity_named(columns[k].column)
                               : NULL;
         assert(columns[k].column == NULL || c != NULL);
         heads[k] = (struct text_column){c ? c->heading : "",
@@ -84,9 +84,9 @@ void option_table_cells(const struct option_table_column *columns, int n,
                      option->rank == 1 ? "*" : "");
             continue;
         }
-        const struct option_column *c = store_option_column(columns[k].column);
+        const struct quantity *c = quantity_named(columns[k].column);
         double value = c->writer == WRITTEN_AS_KEY
-                           ? (double)run : store_option_column_value(c, option);
-        store_option_text(text[k], OPTION_TABLE_CELL, c, value, c->decimals);
+                           ? (double)run : quantity_value(c, option);
+        quantity_text(text[k], OPTION_TABLE_CELL, c, value, c->decimals);
     }
 }

@@ -1,7 +1,7 @@
 /*
  * option_table.h: the columns of a design option in the CLI's tables
  * (`facet options`, a run's Table 2). Each is a column of the registry
- * (store/option_column.h), which gives its heading, unit and format, in
+ * (core/quantity/quantity.h), which gives its heading, unit and format, in
  * a width and with a rank (text_table.h) the table chooses.
  */
 #ifndef FACET_OPTION_TABLE_H
@@ -13,7 +13,7 @@
 #include "text_table.h"
 
 struct option_table_column {
-    const char *column;   /* store_option_columns name; NULL for the
+    const char *column;   /* option_quantities name; NULL for the
                              Pareto mark ("*" for rank 1) */
     int width;            /* characters, right-aligned */
     int rank;             /* higher stays longer; 0: never dropped */

@@ -50,13 +50,13 @@ void surface_table_print(FILE *out, const struct surface_row *surfaces,
         snprintf(text[3], sizeof text[3], "%zu", s->count[TYPE_FP]);
         snprintf(text[4], sizeof text[4], "%zu", s->count[TYPE_SP]);
         snprintf(text[5], sizeof text[5], "%zu", s->count[TYPE_DP]);
-        store_number_text(text[6], sizeof text[6], s->cost, 0, 1);
+        quantity_number_text(text[6], sizeof text[6], s->cost, 0, 1);
         snprintf(text[7], sizeof text[7], "%zu", s->moulds);
         snprintf(text[8], sizeof text[8], "%lld", (long long)r->moulds_used);
-        store_number_text(text[9], sizeof text[9], s->max_deviation * 1000,
+        quantity_number_text(text[9], sizeof text[9], s->max_deviation * 1000,
                           2, 0);
-        store_number_text(text[10], sizeof text[10], s->max_gap_mm, 2, 0);
-        store_number_text(text[11], sizeof text[11], s->max_kink_deg, 2, 0);
+        quantity_number_text(text[10], sizeof text[10], s->max_gap_mm, 2, 0);
+        quantity_number_text(text[11], sizeof text[11], s->max_kink_deg, 2, 0);
         for (int k = 0; k < COLUMNS; k++)
             cell[k] = text[k];
         text_table_row(out, &t, cell);

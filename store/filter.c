@@ -7,7 +7,7 @@
  * and an in-memory evaluator (filter_match) that follows SQL's three-valued
  * logic so that both always select the same options. The columns a filter
  * may name, which of them are yes/no and a number to compare each with are
- * the registry's (store/option_column.h). This file runs no SQL.
+ * the registry's (core/quantity/quantity.h). This file runs no SQL.
  *
  * Hostile text is bounded before any work: at most FILTER_MAX_LENGTH bytes,
  * at most FILTER_MAX_DEPTH nested '(' and 'not' (recursion depth), and
@@ -28,7 +28,7 @@
 #include "core/base/numparse.h"
 #include "core/base/spelling.h"
 
-enum { COLUMN_COUNT = STORE_OPTION_COLUMNS };
+enum { COLUMN_COUNT = OPTION_QUANTITIES };
 
 /* Other names a user may type for a column. */
 static const struct {
@@ -85,7 +85,7 @@ enum node_kind {
 struct node {
     enum node_kind kind;
     enum op op;      /* NODE_COMPARE */
-    int column;      /* index into store_option_columns */
+    int column;      /* index into option_quantities */
     size_t param;    /* NODE_COMPARE: index into filter->params */
     int child;       /* NOT, AND, OR: first operand */
     int next;        /* the next operand of the parent, -1 after the last */
@@ -431,7 +431,7 @@ static int new_node(struct parser *p, enum node_kind kind)
 static int column_index(const char *name)
 {
     for (int k = 0; k < COLUMN_COUNT; k++)
-        if (strcmp(store_option_columns[k].name, name) == 0)
+        if (strcmp(option_quantities[k].name, name) == 0)
             return k;
     return COLUMN_UNKNOWN;
 }
@@ -442,7 +442,7 @@ static int resolve(const struct parser *p, const struct token *t)
 {
     const char *s = p->text + t->at;
     for (int k = 0; k < COLUMN_COUNT; k++)
-        if (word_is(s, t->length, store_option_columns[k].name))
+        if (word_is(s, t->length, option_quantities[k].name))
             return k;
     for (size_t k = 0; k < ALIAS_COUNT; k++)
         if (word_is(s, t->length, aliases[k].name))
@@ -506,7 +506,7 @@ static int fail_unknown_name(struct parser *p, const struct token *t)
     const char *names[COLUMN_COUNT + ALIAS_COUNT + 1];
     size_t n = 0;
     for (int k = 0; k < COLUMN_COUNT; k++)
-        names[n++] = store_option_columns[k].name;
+        names[n++] = option_quantities[k].name;
     for (size_t k = 0; k < ALIAS_COUNT; k++)
         names[n++] = aliases[k].name;
     names[n++] = "pareto";
@@ -632,13 +632,13 @@ static int parse_term(struct parser *p, int *out)
         int ends = op->kind == TOK_END || op->kind == TOK_AND ||
                    op->kind == TOK_OR || op->kind == TOK_RPAREN;
         int yes_no = column == COLUMN_PARETO ||
-                     store_option_columns[column].yes_no;
+                     option_quantities[column].yes_no;
         if (!yes_no && ends)
             return fail_at(p, t->at, "'%s' is not a yes/no column; compare "
                                      "it, e.g. %s < %s",
                            shown(p, t, buf),
-                           store_option_columns[column].name,
-                           store_option_columns[column].example);
+                           option_quantities[column].name,
+                           option_quantities[column].example);
         if (!yes_no)
             return fail_at(p, op->at, "expected a comparison (<, <=, >, >=, "
                                       "=, !=) after '%s'",
@@ -814,14 +814,14 @@ static void write_text(const struct filter *f, int k, int operand,
     switch (n->kind) {
     case NODE_COMPARE:
         number_exact(number, f->params[n->param]);
-        put(b, store_option_columns[n->column].name);
+        put(b, option_quantities[n->column].name);
         put(b, " ");
         put(b, op_text[n->op]);
         put(b, " ");
         put(b, number);
         break;
     case NODE_YES_NO:
-        put(b, store_option_columns[n->column].name);
+        put(b, option_quantities[n->column].name);
         break;
     case NODE_PARETO:
         put(b, "pareto");
@@ -869,7 +869,7 @@ static void write_sql(const struct filter *f, int k, int first_param,
 {
     const char *plus = scan ? "+" : "";
     const struct node *n = &f->nodes[k];
-    const char *column = n->column >= 0 ? store_option_columns[n->column].name
+    const char *column = n->column >= 0 ? option_quantities[n->column].name
                                         : NULL;
     char text[192];
     switch (n->kind) {
@@ -1081,7 +1081,7 @@ static enum truth compare(enum op op, double a, double b)
 static enum truth evaluate(const struct match *m, int k)
 {
     const struct node *n = &m->filter->nodes[k];
-    const char *column = n->column >= 0 ? store_option_columns[n->column].name
+    const char *column = n->column >= 0 ? option_quantities[n->column].name
                                         : NULL;
     switch (n->kind) {
     case NODE_COMPARE:

@@ -52,7 +52,7 @@ void filter_free(struct filter *filter);  /* NULL is fine */
 const char *filter_text(const struct filter *filter);
 
 /* Whether an option with these column values matches. value(context,
- * column) returns the value of the named column of store_option_columns
+ * column) returns the value of the named column of option_quantities
  * (lowercase, as in store.h) as a double, booleans 0/1. A NaN value stands
  * for SQL NULL and is unknown, exactly as in the SQL of filter_sql.h: a
  * comparison with it is unknown, not unknown is unknown, and an option

@@ -3,7 +3,7 @@
  *
  * The store (store_browse.c, store_option.c) appends the fragment to its own WHERE clause and binds the
  * filter's numbers as parameters; no text the user typed reaches SQL (the
- * column names come from store_option_columns, the numbers are bound).
+ * column names come from option_quantities, the numbers are bound).
  * A column that is NULL makes a comparison unknown, with SQL's usual
  * three-valued logic; filter_match (filter.h) gives the same answers.
  */
@@ -16,7 +16,7 @@
 
 /* The WHERE fragment, e.g. "(\"cost\" < ?1 AND \"dp_area\" <= ?2) OR
  * (\"rank\" IS NOT NULL AND \"rank\" = 1)", over the columns of the
- * options table, which are named exactly as in store_option_columns.
+ * options table, which are named exactly as in option_quantities.
  * Parameters are numbered from first_param (>= 1, so the caller can bind
  * its own parameters first); every number of the user's text is a
  * parameter, never pasted. "1" for the empty filter (or NULL). Malloc'ed,

@@ -20,12 +20,13 @@
 #include <stdint.h>
 
 #include "core/classify/classify.h"
+#include "core/quantity/option_row.h"
 #include "core/base/error.h"
 #include "core/panel/panel.h"
 #include "core/search/optimize.h"
 #include "core/surface/mesh.h"
 #include "core/surface/param.h"
-#include "store/option_column.h"
+#include "core/quantity/quantity.h"
 
 struct store;  /* an open database */
 
@@ -179,25 +180,6 @@ int store_run_setting_check(const struct run_info *run,
  * nothing this Facet knows (a listing still shows every run). */
 const char *store_run_setting_text(const struct run_info *run,
                                    enum run_setting setting);
-
-/* One design option of a run: its variables and metrics. */
-struct option_row {
-    int64_t number;            /* No. within the run, 1-based */
-    int generation;            /* nsga2 generation, 0 otherwise */
-    int nu, nv;                /* grid */
-    double threshold_mm;       /* flatness threshold (mm) */
-    struct option_totals totals;
-    int rank;                  /* Pareto rank, 1 = on the front; 0 until
-                                  ranked */
-    double crowding;           /* crowding distance (INFINITY at the ends) */
-    int knee;                  /* 1 for the run's knee option */
-    /* A project's option (schema v8), NaN and TOTALS_UNKNOWN for a single
-     * surface's: the module (m) it was met as, and how many modules of
-     * the run's range give the same grid on every surface. Its nu and nv
-     * are then the module's width and height indices in the range. */
-    double module_w, module_h;
-    size_t modules;
-};
 
 /* Every open below treats the file as anyone's: SQLite is set up so that
  * no SQL of the file's own runs (no trigger fires, no view is read, the
@@ -533,14 +515,14 @@ int store_options_sort_check(const char *sort, struct facet_error *err);
 
 /* The columns of an option (their names, what a sort or filter may name,
  * how each is shown, and store_option_value) are the registry of
- * store/option_column.h, which this header includes. */
+ * core/quantity/quantity.h, which this header includes. */
 
 /* --- browsing one run (the TUI): keyset pages, counts, ranges ---
  * These serve a table that shows a page of a million options at a time:
  * no call reads more rows than it returns, except counts and ranges, which
  * scan the run's rows once (SQLite's count(*) and min/max, no rows built). */
 
-/* One sort key: a column of store_option_columns (not run), ascending
+/* One sort key: a column of option_quantities (not run), ascending
  * unless descending. */
 struct browse_key {
     const char *column;
@@ -661,7 +643,7 @@ struct column_stats {
 };
 
 /* The count, min, max and mean of columns[0..n) (names of
- * store_option_columns other than run) over the options b sees into
+ * option_quantities other than run) over the options b sees into
  * out[0..n), in one aggregate query over b's rows (one read of the run);
  * the medians are left NaN for store_browse_median. Unknown columns are
  * FACET_EINPUT. */
@@ -715,7 +697,7 @@ int store_browse_classes(struct store *store, const struct option_browse *b,
 
 /* --- the extent of a column over a run (store_column_range.c) --- */
 
-/* The least and greatest value of column (a name of store_option_columns
+/* The least and greatest value of column (a name of option_quantities
  * other than run) over every option of run, NULLs left out, each read
  * from one end of the column's index where it has one; both NaN when the
  * run has none. Unknown columns are FACET_EINPUT. */

@@ -42,9 +42,9 @@ static const char *key_expr(const char *column)
     for (size_t k = 0; k < sizeof special / sizeof special[0]; k++)
         if (strcmp(column, special[k][0]) == 0)
             return special[k][1];
-    for (int k = 0; k < STORE_OPTION_COLUMNS; k++)
-        if (strcmp(store_option_columns[k].name, "run") != 0 &&
-            strcmp(store_option_columns[k].name, column) == 0)
+    for (int k = 0; k < OPTION_QUANTITIES; k++)
+        if (strcmp(option_quantities[k].name, "run") != 0 &&
+            strcmp(option_quantities[k].name, column) == 0)
             return "";  /* a plain column: key_sql quotes it */
     return NULL;
 }
@@ -68,7 +68,7 @@ static void key_sql(const struct option_browse *b, const char *column,
 /* The value of column of option as the key expression sees it. */
 static double key_value(const struct option_row *option, const char *column)
 {
-    return store_option_value(option, column);
+    return option_quantity_value(option, column);
 }
 
 /* A growing SQL string; a failed append leaves failed set. */

@@ -42,9 +42,9 @@ int store_run_column_range(struct store *store, int64_t run,
 {
     *min = *max = NAN;
     int known = 0;
-    for (int k = 0; k < STORE_OPTION_COLUMNS; k++)
-        if (strcmp(store_option_columns[k].name, "run") != 0 &&
-            strcmp(store_option_columns[k].name, column) == 0)
+    for (int k = 0; k < OPTION_QUANTITIES; k++)
+        if (strcmp(option_quantities[k].name, "run") != 0 &&
+            strcmp(option_quantities[k].name, column) == 0)
             known = 1;
     if (!known)
         return facet_error_set(err, FACET_EINPUT, "unknown column '%s'",

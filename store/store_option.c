@@ -3,7 +3,7 @@
  * options, reading a run's options back, writing the Pareto analysis, and
  * the sorted, filtered queries of `facet options` and the TUI. See store.h.
  * Which columns an option has, and where its row holds each, is the
- * registry's (option_column.h): the INSERT and SELECT lists and the
+ * registry's (quantity.h): the INSERT and SELECT lists and the
  * binding and reading of a row are built from it.
  */
 #include "store_internal.h"
@@ -20,7 +20,7 @@
 #include "filter_sql.h"
 
 /* The SQL of the columns an option_row holds, from the registry
- * (option_column.h) in its order, into sql (size bytes): "number,
+ * (quantity.h) in its order, into sql (size bytes): "number,
  * generation, ..., rank, crowding, knee" for a SELECT, with rank as
  * store_rank_sql (0 until ranked); insert: only the columns written with
  * the option, for an INSERT. Returns how many. */
@@ -29,8 +29,8 @@ static int option_columns_sql(char *sql, size_t size, int insert)
     size_t len = 0;
     int n = 0;
     sql[0] = '\0';
-    for (int k = 0; k < STORE_OPTION_COLUMNS; k++) {
-        const struct option_column *c = &store_option_columns[k];
+    for (int k = 0; k < OPTION_QUANTITIES; k++) {
+        const struct quantity *c = &option_quantities[k];
         if (c->writer == WRITTEN_AS_KEY ||
             (insert && c->writer != WRITTEN_WITH_OPTION))
             continue;
@@ -47,7 +47,7 @@ static int option_columns_sql(char *sql, size_t size, int insert)
 /* Room for the SQL of every column, with room to grow. */
 #define OPTION_COLUMNS_SQL 4096
 
-static int is_module_column(const struct option_column *c)
+static int is_module_column(const struct quantity *c)
 {
     return c->offset == offsetof(struct option_row, module_w) ||
            c->offset == offsetof(struct option_row, module_h) ||
@@ -62,8 +62,8 @@ static void option_bind(sqlite3_stmt *s, int64_t run,
 {
     int p = 1;
     sqlite3_bind_int64(s, p++, run);
-    for (int k = 0; k < STORE_OPTION_COLUMNS; k++) {
-        const struct option_column *c = &store_option_columns[k];
+    for (int k = 0; k < OPTION_QUANTITIES; k++) {
+        const struct quantity *c = &option_quantities[k];
         if (c->writer != WRITTEN_WITH_OPTION)
             continue;
         const void *field = (const char *)o + c->offset;
@@ -90,8 +90,8 @@ static void option_from_row(sqlite3_stmt *s, int first,
 {
     memset(o, 0, sizeof *o);
     int c = first, crowding = -1;
-    for (int k = 0; k < STORE_OPTION_COLUMNS; k++) {
-        const struct option_column *col = &store_option_columns[k];
+    for (int k = 0; k < OPTION_QUANTITIES; k++) {
+        const struct quantity *col = &option_quantities[k];
         if (col->writer == WRITTEN_AS_KEY)
             continue;
         void *field = (char *)o + col->offset;
@@ -215,8 +215,8 @@ int store_options_measured(struct store *store, int64_t run,
     char columns[OPTION_COLUMNS_SQL], sql[2 * OPTION_COLUMNS_SQL];
     int values = option_columns_sql(columns, sizeof columns, 1);
     int number = 0;
-    for (int k = 0, p = 2; k < STORE_OPTION_COLUMNS; k++) {
-        const struct option_column *c = &store_option_columns[k];
+    for (int k = 0, p = 2; k < OPTION_QUANTITIES; k++) {
+        const struct quantity *c = &option_quantities[k];
         if (c->writer != WRITTEN_WITH_OPTION)
             continue;
         if (strcmp(c->name, "number") == 0)
@@ -371,15 +371,15 @@ const char store_crowding_sql[] =
     "ifnull(\"crowding\", CASE WHEN ifnull(\"rank\", 0) > 0 THEN 1e999"
     " ELSE 0 END)";
 
-/* The column of store_option_columns named by the length bytes at name,
+/* The column of option_quantities named by the length bytes at name,
  * in any case, or NULL. */
-static const struct option_column *sort_column(const char *name,
+static const struct quantity *sort_column(const char *name,
                                                size_t length)
 {
-    for (int k = 0; k < STORE_OPTION_COLUMNS; k++)
-        if (strlen(store_option_columns[k].name) == length &&
-            strncasecmp(store_option_columns[k].name, name, length) == 0)
-            return &store_option_columns[k];
+    for (int k = 0; k < OPTION_QUANTITIES; k++)
+        if (strlen(option_quantities[k].name) == length &&
+            strncasecmp(option_quantities[k].name, name, length) == 0)
+            return &option_quantities[k];
     return NULL;
 }
 
@@ -400,9 +400,9 @@ static int order_by(const char *sort, int descending, char *sql,
             n--;
         if (n == 0 || sort_column(p, n) == NULL) {
             char list[1024] = "";
-            for (int k = 0; k < STORE_OPTION_COLUMNS; k++)
+            for (int k = 0; k < OPTION_QUANTITIES; k++)
                 snprintf(list + strlen(list), sizeof list - strlen(list),
-                         "%s%s", k ? ", " : "", store_option_columns[k].name);
+                         "%s%s", k ? ", " : "", option_quantities[k].name);
             return facet_error_about(err, FACET_SETTING_SORT, FACET_EINPUT,
                 "unknown column '%.*s' (choose from %s)", (int)n, p, list);
         }
@@ -429,7 +429,7 @@ int store_options_sort_check(const char *sort, struct facet_error *err)
     return order_by(sort, 0, sql, sizeof sql, err);
 }
 
-/* The sort keys of a query, as store_option_columns names, with each
+/* The sort keys of a query, as option_quantities names, with each
  * key's tie tolerance (core/search/ties.h) over the options of the query's
  * run, or of every run. */
 struct sort_keys {
@@ -477,7 +477,7 @@ static int sort_keys_of(struct store *store, const struct option_query *q,
         }
         while (n > 0 && name[n - 1] == ' ')
             n--;
-        const struct option_column *c = sort_column(name, n);
+        const struct quantity *c = sort_column(name, n);
         if (c != NULL && keys->n < 30)
             keys->column[keys->n++] = c->name;
         p += strcspn(p, ",");
@@ -526,7 +526,7 @@ static double key_value(const struct option_row *o, int64_t run,
                         const char *column)
 {
     double value = strcmp(column, "run") == 0
-                       ? (double)run : store_option_value(o, column);
+                       ? (double)run : option_quantity_value(o, column);
     return isnan(value) ? -INFINITY : value;
 }
 

@@ -189,9 +189,9 @@ void study_request_defaults(struct study_request *r)
     s->space = (struct design_space){20, 40, 35, 50, 3, 3, 0};
     s->method = study_auto_method(&s->space);
     option_params_defaults(&s->base);
-    s->objectives[0] = (struct objective){METRIC_COST, 0};
-    s->objectives[1] = (struct objective){METRIC_PLANARITY, 0};
-    s->objectives[2] = (struct objective){METRIC_DP_AREA, 0};
+    s->objectives[0] = objective_named("cost");
+    s->objectives[1] = objective_named("planarity");
+    s->objectives[2] = objective_named("dp_area");
     s->nobjectives = 3;
     s->seed = 1;
     s->evaluations = 1000;

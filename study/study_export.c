@@ -199,15 +199,15 @@ int study_export(struct store *store, int64_t run, int64_t number,
 
 const char *study_column_unit(const char *column)
 {
-    const struct option_column *c = store_option_column(column);
+    const struct quantity *c = quantity_named(column);
     return c != NULL ? c->stored_unit : "";
 }
 
 static int check_column(const char *what, const char *column,
                         struct facet_error *err)
 {
-    for (int k = 0; k < STORE_OPTION_COLUMNS; k++)
-        if (strcmp(store_option_columns[k].name, column) == 0 &&
+    for (int k = 0; k < OPTION_QUANTITIES; k++)
+        if (strcmp(option_quantities[k].name, column) == 0 &&
             strcmp(column, "run") != 0)
             return FACET_OK;
     return facet_error_set(err, FACET_EINPUT,
@@ -251,10 +251,10 @@ static int load_points(struct store *store, int64_t run,
         return facet_error_set(err, FACET_EWORK, "out of memory");
     size_t knee = SIZE_MAX;
     for (size_t k = 0; k < p->n; k++) {
-        p->x[k] = store_option_value(&p->rows[k], r->x);
-        p->y[k] = store_option_value(&p->rows[k], r->y);
+        p->x[k] = option_quantity_value(&p->rows[k], r->x);
+        p->y[k] = option_quantity_value(&p->rows[k], r->y);
         p->size[k] = r->size
-            ? fmax(0, store_option_value(&p->rows[k], r->size)) : 0;
+            ? fmax(0, option_quantity_value(&p->rows[k], r->size)) : 0;
         p->rank[k] = p->rows[k].rank;
         if (p->rows[k].knee)
             knee = k;
@@ -335,9 +335,9 @@ int study_export_options_csv(struct store *store, int64_t run,
         return rc;
     }
     fprintf(f.out, "run");
-    for (int c = 0; c < STORE_OPTION_COLUMNS; c++)
-        if (strcmp(store_option_columns[c].name, "run") != 0)
-            fprintf(f.out, ",%s", store_option_columns[c].name);
+    for (int c = 0; c < OPTION_QUANTITIES; c++)
+        if (strcmp(option_quantities[c].name, "run") != 0)
+            fprintf(f.out, ",%s", option_quantities[c].name);
     fprintf(f.out, ",fp_cost,sp_cost,dp_cost");
     for (int c = 0; c < CLASS_COUNT; c++)
         fprintf(f.out, ",%s_count,%s_area",
@@ -347,10 +347,10 @@ int study_export_options_csv(struct store *store, int64_t run,
     for (size_t k = 0; k < n; k++) {
         const struct option_row *o = &rows[k];
         fprintf(f.out, "%lld", (long long)run);
-        for (int c = 0; c < STORE_OPTION_COLUMNS; c++) {
-            if (strcmp(store_option_columns[c].name, "run") == 0)
+        for (int c = 0; c < OPTION_QUANTITIES; c++) {
+            if (strcmp(option_quantities[c].name, "run") == 0)
                 continue;
-            double v = store_option_value(o, store_option_columns[c].name);
+            double v = option_quantity_value(o, option_quantities[c].name);
             if (!isfinite(v))
                 fprintf(f.out, ",");  /* crowding at a front's end */
             else if (v == floor(v) && fabs(v) < 1e15)

@@ -74,7 +74,7 @@ struct export_request {
 int study_export(struct store *store, int64_t run, int64_t number,
                  struct export_request *request, struct facet_error *err);
 
-/* What a scatter of runs shows: option columns (store_option_columns) */
+/* What a scatter of runs shows: option columns (option_quantities) */
 struct plot_request {
     const int64_t *runs;    /* the runs to overlay, one colour each */
     int nruns;              /* 1 to PLOT_MAX_RUNS */
@@ -102,7 +102,7 @@ int study_plot(struct store *store, const struct plot_request *request,
 
 /* Writes options numbers[0..n) of run to path as CSV, one row each in
  * the order given, with a header: run, then every option column of
- * store_option_columns, the cost per type (fp_cost, sp_cost, dp_cost)
+ * option_quantities, the cost per type (fp_cost, sp_cost, dp_cost)
  * and the count and area per class (CLASS_count, CLASS_area), as the
  * options table holds them (crowding empty where infinite). A path that
  * exists is refused unless force. FACET_EINPUT for an unknown option. */

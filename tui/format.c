@@ -11,7 +11,7 @@
 void tui_fmt_number(char *out, size_t size, double value, int decimals,
                     int thousands)
 {
-    store_number_text(out, size, value, decimals, thousands);
+    quantity_number_text(out, size, value, decimals, thousands);
 }
 
 void tui_fmt_elapsed(char *out, size_t size, double seconds)
@@ -87,9 +87,9 @@ const char *const tui_metric_columns[] = {
 const int tui_metric_column_count =
     (int)(sizeof tui_metric_columns / sizeof tui_metric_columns[0]);
 
-const struct option_column *tui_column_of(const struct tui_column *c)
+const struct quantity *tui_column_of(const struct tui_column *c)
 {
-    const struct option_column *column = store_option_column(c->column);
+    const struct quantity *column = quantity_named(c->column);
     assert(column != NULL);
     return column;
 }
@@ -104,39 +104,39 @@ const char *tui_column_unit(const struct tui_column *c)
     return c->pareto_mark ? "" : tui_column_of(c)->unit;
 }
 
-void tui_fmt_value(char *out, size_t size, const struct option_column *c,
+void tui_fmt_value(char *out, size_t size, const struct quantity *c,
                    double value)
 {
-    store_option_text(out, size, c, value, c->decimals);
+    quantity_text(out, size, c, value, c->decimals);
 }
 
-const struct option_column *tui_shown_column(const struct option_column *c,
+const struct quantity *tui_shown_column(const struct quantity *c,
                                              const struct option_row *option)
 {
     return isnan(option->module_w) ? c
-                                   : store_option_column_of_project(c->name);
+                                   : quantity_of_project(c->name);
 }
 
 void tui_fmt_cell(char *out, size_t size, const struct tui_column *c,
                   const struct option_row *option)
 {
-    const struct option_column *column =
+    const struct quantity *column =
         tui_shown_column(tui_column_of(c), option);
     /* A project's module, to 0.1 m in the narrow U or V column (the side
      * pane and o give it whole). */
     int module = column != tui_column_of(c);
-    double value = store_option_column_value(column, option);
+    double value = quantity_value(column, option);
     char text[64];
     if (module) {
-        store_option_text(text, sizeof text, column, value, 1);
+        quantity_text(text, sizeof text, column, value, 1);
         if ((int)strlen(text) > c->width)
-            store_option_text(text, sizeof text, column, value, 0);
+            quantity_text(text, sizeof text, column, value, 0);
     } else if (c->pareto_mark)
         text[0] = '\0';  /* the caller draws the glyph */
     else if (strcmp(column->name, "rank") == 0 && value == 0)
         snprintf(text, sizeof text, "-");  /* not ranked yet */
     else
-        store_option_text(text, sizeof text, column, value,
+        quantity_text(text, sizeof text, column, value,
                           column->list_decimals);
     snprintf(out, size, "%*s", c->width, text);
 }

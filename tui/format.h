@@ -2,18 +2,18 @@
  * format.h: how the workbench writes numbers: fixed decimals, thousands
  * separators, durations, and which option columns its tables show, in
  * what width (the columns' titles, units and formats are the registry's:
- * store/option_column.h). Pure text, no curses: the unit tests pin it.
+ * core/quantity/quantity.h). Pure text, no curses: the unit tests pin it.
  */
 #ifndef FACET_TUI_FORMAT_H
 #define FACET_TUI_FORMAT_H
 
 #include <stddef.h>
 
-#include "store/option_column.h"
+#include "core/quantity/quantity.h"
 #include "store/store.h"
 
 /* value with decimals places and thousands separators ("1,551,317.25");
- * "-" for NaN, "inf"/"-inf" for infinities: store_number_text. */
+ * "-" for NaN, "inf"/"-inf" for infinities: quantity_number_text. */
 void tui_fmt_number(char *out, size_t size, double value, int decimals,
                     int thousands);
 
@@ -24,10 +24,10 @@ void tui_fmt_elapsed(char *out, size_t size, double seconds);
 void tui_fmt_started(char *out, size_t size, const char *iso);
 
 /* A column of the options list: a column of the registry
- * (store/option_column.h), which says its heading, unit and format, in
+ * (core/quantity/quantity.h), which says its heading, unit and format, in
  * width characters; or the Pareto mark. */
 struct tui_column {
-    const char *column;   /* store_option_columns name it shows and sorts */
+    const char *column;   /* option_quantities name it shows and sorts */
     int width;            /* characters, right-aligned */
     int pareto_mark;      /* 1: rank 1 as a glyph the caller draws ("P") */
 };
@@ -42,14 +42,14 @@ extern const int tui_option_column_count;
 extern const int tui_option_column_default_count;
 
 /* c's registry column. */
-const struct option_column *tui_column_of(const struct tui_column *c);
+const struct quantity *tui_column_of(const struct tui_column *c);
 
 /* The header of c: its registry heading ("P" for the mark), and unit. */
 const char *tui_column_title(const struct tui_column *c);
 const char *tui_column_unit(const struct tui_column *c);
 
 /* The metrics of an option the detail pane and compare list, in order:
- * names of store_option_columns. */
+ * names of option_quantities. */
 extern const char *const tui_metric_columns[];
 extern const int tui_metric_column_count;
 
@@ -61,15 +61,15 @@ extern const int tui_metric_column_count;
  * project's option the module (module_w, module_h) where nu and nv stand,
  * since they index the run's module range, a count of nothing on the
  * building. */
-const struct option_column *tui_shown_column(const struct option_column *c,
+const struct quantity *tui_shown_column(const struct quantity *c,
                                              const struct option_row *option);
 
 void tui_fmt_cell(char *out, size_t size, const struct tui_column *c,
                   const struct option_row *option);
 
 /* value (as stored, in the store's unit) as column c shows it on its own
- * (store_option_text with c->decimals), not padded. */
-void tui_fmt_value(char *out, size_t size, const struct option_column *c,
+ * (quantity_text with c->decimals), not padded. */
+void tui_fmt_value(char *out, size_t size, const struct quantity *c,
                    double value);
 
 #endif

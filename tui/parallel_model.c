@@ -9,7 +9,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "store/option_column.h"
+#include "core/quantity/quantity.h"
 
 const struct pc_axis pc_axes[PC_AXES] = {
     {"nu"}, {"nv"}, {"threshold_mm"}, {"planarity"}, {"dp_area"}, {"cost"},
@@ -19,7 +19,7 @@ const struct pc_axis pc_axes[PC_AXES] = {
 /* Whether axis takes whole numbers only. */
 static int whole_numbers(int axis)
 {
-    return store_option_column(pc_axes[axis].column)->field != FIELD_DOUBLE;
+    return quantity_named(pc_axes[axis].column)->field != FIELD_DOUBLE;
 }
 
 int pc_axis_dot(double value, double min, double max, int dots)

@@ -13,11 +13,11 @@
 
 #include "core/base/error.h"
 
-/* One vertical axis: a column of the registry (store/option_column.h),
+/* One vertical axis: a column of the registry (core/quantity/quantity.h),
  * titled with its heading and unit; a column held as an integer (the grid
  * sides) is brushed in whole numbers. */
 struct pc_axis {
-    const char *column;   /* store_option_columns name */
+    const char *column;   /* option_quantities name */
 };
 
 /* U, V, threshold, planarity, DP area, cost, FP area, SP area. */

@@ -125,7 +125,7 @@ static int has_difference(const char *column)
 static int direction(const struct compare_screen *s, const char *column)
 {
     for (int k = 0; k < s->nobjectives; k++)
-        if (strcmp(metric_name(s->objectives[k].metric), column) == 0)
+        if (strcmp(s->objectives[k].quantity->name, column) == 0)
             return s->objectives[k].maximise ? 1 : -1;
     return 0;
 }
@@ -171,14 +171,14 @@ static void compare_draw(struct tui_screen *base, struct tui_app *app,
         s->top = tui_metric_column_count - rows > 0
                      ? tui_metric_column_count - rows : 0;
     for (int r = 0; r < rows && s->top + r < tui_metric_column_count; r++) {
-        const struct option_column *c =
-            store_option_column(tui_metric_columns[s->top + r]);
+        const struct quantity *c =
+            quantity_named(tui_metric_columns[s->top + r]);
         int y = 2 + r, dir = direction(s, c->name);
         tui_putf(y, 0, lw + 6, A_NORMAL, " %-14s %-4s %s", c->label,
                  c->unit, dir < 0 ? "min" : dir > 0 ? "max" : "");
-        double first = store_option_column_value(c, &s->options[0]);
+        double first = quantity_value(c, &s->options[0]);
         for (int k = 0; k < s->n; k++) {
-            double v = store_option_column_value(c, &s->options[k]);
+            double v = quantity_value(c, &s->options[k]);
             char value[48], diff[48], cell[100];
             tui_fmt_value(value, sizeof value, c, v);
             diff[0] = '\0';

@@ -244,9 +244,9 @@ static void draw_detail_side(const struct option_row *o, int y, int x,
     tui_put(y, x, width, tui_attr(ROLE_HEADER), " Selected option");
     tui_fill(y, x + 16, width - 16, tui_attr(ROLE_HEADER));
     for (int k = 0; k < tui_metric_column_count && k + 1 < height; k++) {
-        const struct option_column *c = tui_shown_column(
-            store_option_column(tui_metric_columns[k]), o);
-        double number = store_option_column_value(c, o);
+        const struct quantity *c = tui_shown_column(
+            quantity_named(tui_metric_columns[k]), o);
+        double number = quantity_value(c, o);
         if (isnan(number)) {
             /* NULL in the store: never a number, and never 0 */
             tui_putf(y + 1 + k, x, width, tui_attr(ROLE_DIM),

@@ -187,7 +187,7 @@ static void apply(struct parallel_screen *s, struct tui_app *app)
 static void axis_label(char *out, size_t size, int axis, double value,
                        int width)
 {
-    const struct option_column *c = store_option_column(pc_axes[axis].column);
+    const struct quantity *c = quantity_named(pc_axes[axis].column);
     if (c)
         tui_fmt_value(out, size, c, value);
     else
@@ -220,7 +220,7 @@ static void polyline(struct pc_canvas *c, const struct pc_state *st,
 {
     int px = -1, py = -1;
     for (int a = 0; a < PC_AXES; a++) {
-        double v = store_option_value(o, pc_axes[a].column);
+        double v = option_quantity_value(o, pc_axes[a].column);
         int y = pc_axis_dot(v, st->min[a], st->max[a], 4 * c->height);
         int x = 2 * ax[a];
         if (y < 0) {
@@ -315,7 +315,7 @@ static void parallel_draw(struct tui_screen *base, struct tui_app *app,
             lo_row = pc_axis_dot(b->lo, st->min[a], st->max[a], 4 * plot_h)
                      / 4;
         }
-        int sel_row = sel ? pc_axis_dot(store_option_value(sel,
+        int sel_row = sel ? pc_axis_dot(option_quantity_value(sel,
                                             pc_axes[a].column),
                                         st->min[a], st->max[a], 4 * plot_h)
                             / 4
@@ -336,7 +336,7 @@ static void parallel_draw(struct tui_screen *base, struct tui_app *app,
         }
         char title[32], hi[32], lo[32];
         snprintf(title, sizeof title, "%s%s%s%s", current ? "[" : "",
-                 store_option_column(pc_axes[a].column)->heading,
+                 quantity_named(pc_axes[a].column)->heading,
                  b->active ? "*" : "", current ? "]" : "");
         put_centred(2, ax[a], width, current ? tui_attr(ROLE_COLUMN)
                                              : tui_attr(ROLE_HEADER),
@@ -348,8 +348,8 @@ static void parallel_draw(struct tui_screen *base, struct tui_app *app,
     }
 
     /* the current axis's brush, and the selected option */
-    const struct option_column *cur =
-        store_option_column(pc_axes[s->axis].column);
+    const struct quantity *cur =
+        quantity_named(pc_axes[s->axis].column);
     const struct pc_brush *b = &st->brush[s->axis];
     char lo[32], hi[32];
     int y = bottom + 1;

@@ -84,7 +84,7 @@ static const char *axis_name(const struct scatter_screen *s, int a)
 static double colour_value(const struct scatter_screen *s, size_t k)
 {
     return s->axis[3] < 0 ? NAN
-                          : store_option_value(&s->rows[k], axis_name(s, 3));
+                          : option_quantity_value(&s->rows[k], axis_name(s, 3));
 }
 
 /* Fills the points' x, y, z from the rows, and the front. */
@@ -93,9 +93,9 @@ static void compute(struct scatter_screen *s)
     for (size_t k = 0; k < s->n; k++) {
         s->points[k].number = s->rows[k].number;
         s->points[k].rank = s->rows[k].rank;
-        s->points[k].x = store_option_value(&s->rows[k], axis_name(s, 0));
-        s->points[k].y = store_option_value(&s->rows[k], axis_name(s, 1));
-        s->points[k].z = store_option_value(&s->rows[k], axis_name(s, 2));
+        s->points[k].x = option_quantity_value(&s->rows[k], axis_name(s, 0));
+        s->points[k].y = option_quantity_value(&s->rows[k], axis_name(s, 1));
+        s->points[k].z = option_quantity_value(&s->rows[k], axis_name(s, 2));
     }
     s->nfront = scatter_front(s->points, s->n, s->front);
 }
@@ -173,7 +173,7 @@ static void follow(struct scatter_screen *s, struct tui_app *app)
 
 static void label(char *out, size_t size, const char *column, double value)
 {
-    const struct option_column *c = store_option_column(column);
+    const struct quantity *c = quantity_named(column);
     if (c)
         tui_fmt_value(out, size, c, value);
     else
@@ -185,7 +185,7 @@ static void label(char *out, size_t size, const char *column, double value)
 static void tick_label(char *out, size_t size, const char *column,
                        double value, double step)
 {
-    const struct option_column *c = store_option_column(column);
+    const struct quantity *c = quantity_named(column);
     double scale = c ? c->scale : 1;
     int decimals = step * scale > 0 ? (int)ceil(-log10(step * scale) - 1e-9)
                                     : 0;
@@ -199,7 +199,7 @@ static void tick_label(char *out, size_t size, const char *column,
 static void compact(char *out, size_t size, const char *column,
                     double value)
 {
-    const struct option_column *c = store_option_column(column);
+    const struct quantity *c = quantity_named(column);
     double v = value * (c ? c->scale : 1);
     if (fabs(v) >= 1e6)
         snprintf(out, size, "%.3gM", v / 1e6);
@@ -211,7 +211,7 @@ static void compact(char *out, size_t size, const char *column,
 
 static const char *unit_of(const char *column)
 {
-    const struct option_column *c = store_option_column(column);
+    const struct quantity *c = quantity_named(column);
     return c && c->unit[0] ? c->unit : "";
 }
 

@@ -157,7 +157,7 @@ static void show(struct stats_screen *s, struct tui_app *app, int section)
 
 static void fmt(char *out, size_t size, const char *column, double value)
 {
-    const struct option_column *c = store_option_column(column);
+    const struct quantity *c = quantity_named(column);
     if (c)
         tui_fmt_value(out, size, c, value);
     else
@@ -223,8 +223,8 @@ static void stats_draw(struct tui_screen *base, struct tui_app *app,
                 "         max        mean");
         for (int r = 0; r < rows && s->top + r < STATS; r++) {
             int k = s->top + r;
-            const struct option_column *col =
-                store_option_column(stat_columns[k]);
+            const struct quantity *col =
+                quantity_named(stat_columns[k]);
             const struct column_stats *st = &s->stats[k];
             fmt(a, sizeof a, stat_columns[k], st->min);
             if (k < s->medians)

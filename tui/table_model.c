@@ -457,7 +457,7 @@ void table_model_position_text(const struct table_model *m, char *out,
 /* filter_match's view of an option's columns. */
 static double option_value(void *context, const char *column)
 {
-    return store_option_value(context, column);
+    return option_quantity_value(context, column);
 }
 
 int table_model_shows(const struct table_model *m,
@@ -669,7 +669,7 @@ int table_model_set_sort(struct table_model *m, const struct browse_key *keys,
                                BROWSE_MAX_KEYS);
     for (int k = 0; k < n; k++)
         if (keys[k].column == NULL ||
-            isnan(store_option_value(&(struct option_row){0},
+            isnan(option_quantity_value(&(struct option_row){0},
                                      keys[k].column)))
             return facet_error_set(err, FACET_EINPUT,
                 "sort: unknown column '%s'",

@@ -220,18 +220,6 @@ void option_area_sums_add_panel(struct option_area_sums *sums,
     }
 }
 
-void option_area_sums_add_totals(struct option_area_sums *sums,
-                                 const struct option_totals *totals)
-{
-    for (int t = 0; t < TYPE_COUNT; t++)
-        exact_sum_add(&sums->area_of[t], totals->area_of[t]);
-    for (int c = 0; c < CLASS_COUNT; c++)
-        exact_sum_add(&sums->class_area[c], totals->class_area[c]);
-    exact_sum_add(&sums->area, totals->area);
-    exact_sum_add(&sums->planarity, totals->planarity);
-    exact_sum_add(&sums->p_dist, totals->p_dist);
-}
-
 void option_area_sums_value(const struct option_area_sums *sums,
                             struct option_totals *totals)
 {

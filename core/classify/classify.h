@@ -193,7 +193,7 @@ void classify_price_areas(const struct classify_options *options,
 /* The sums behind an option's areas, planarity and P_dist, each
  * independent of the order of its terms (exact_sum.h), so that options
  * equal in exact arithmetic get bit-equal totals: over a surface's panels
- * (classify_totals) or over a building's surfaces (project_option.h). */
+ * (classify_totals). */
 struct option_area_sums {
     struct exact_sum area_of[TYPE_COUNT];
     struct exact_sum class_area[CLASS_COUNT];
@@ -206,11 +206,6 @@ void option_area_sums_init(struct option_area_sums *sums);
  * P_dist unless it is DP (which follows the surface). */
 void option_area_sums_add_panel(struct option_area_sums *sums,
                                 const struct panel *panel);
-
-/* Adds another option's (a surface's) area_of, class_area, area,
- * planarity and p_dist. */
-void option_area_sums_add_totals(struct option_area_sums *sums,
-                                 const struct option_totals *totals);
 
 /* The sums, rounded once, into totals' area_of, class_area, area,
  * planarity and p_dist. */

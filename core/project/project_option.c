@@ -6,6 +6,7 @@
 
 #include <assert.h>
 #include <math.h>
+#include <stddef.h>
 #include <stdatomic.h>
 #include <stdint.h>
 #include <stdlib.h>
@@ -13,6 +14,7 @@
 
 #include "core/base/exact_sum.h"
 #include "core/base/parallel.h"
+#include "core/quantity/quantity.h"
 
 /* The surfaces, taken one at a time by whichever thread is free: each
  * writes only its own surface's slot, so the taking order changes
@@ -125,48 +127,65 @@ static int find_moulds(const struct project *project,
     return FACET_OK;
 }
 
+/* q's field in totals: a double or a size_t, as q->field says. */
+static void *field_of(const struct quantity *q, struct option_totals *totals)
+{
+    return (char *)totals + (q->offset - offsetof(struct option_row, totals));
+}
+
+/* The building's value of q, from its surfaces' as q's combine rule says;
+ * the rules that are not the surfaces' (COMBINE_RECOMPUTED) are left to
+ * building_totals. */
+static void combine_surfaces(const struct quantity *q,
+                             struct project_option *option)
+{
+    void *out = field_of(q, &option->totals);
+    struct exact_sum sum;
+    exact_sum_init(&sum);
+    for (size_t i = 0; i < option->nsurfaces; i++) {
+        void *in = field_of(q, &option->surfaces[i].totals);
+        double value = q->field == FIELD_DOUBLE ? *(double *)in : 0;
+        switch (q->combine) {
+        case COMBINE_SUM:
+            assert(q->field == FIELD_SIZE);
+            *(size_t *)out += *(size_t *)in;
+            break;
+        case COMBINE_EXACT_SUM:
+            exact_sum_add(&sum, value);
+            break;
+        case COMBINE_MAX:
+            *(double *)out = fmax(*(double *)out, value);
+            break;
+        case COMBINE_JOINT_MEAN:
+            /* Each surface's mean weighted by its share of the joints: one
+             * surface's mean is kept to the bit (a weight of exactly 1). */
+            if (option->joints > 0)
+                *(double *)out += (double)option->surfaces[i].joints /
+                                  (double)option->joints * value;
+            break;
+        default:
+            return;
+        }
+    }
+    if (q->combine == COMBINE_EXACT_SUM)
+        *(double *)out = exact_sum_value(&sum);
+}
+
 /* The building's totals from its surfaces' and its families, as
- * project_option.h says. */
+ * project_option.h says: each quantity by its combine rule (quantity.h),
+ * then what is recomputed on the building, its moulds, prices and
+ * feasibility. */
 static void building_totals(struct project_option *option,
                             const struct option_params *params)
 {
     struct option_totals *t = &option->totals;
     memset(t, 0, sizeof *t);
     option->joints = 0;
-    struct option_area_sums sums;
-    struct exact_sum joint_length;
-    option_area_sums_init(&sums);
-    exact_sum_init(&joint_length);
-    for (size_t i = 0; i < option->nsurfaces; i++) {
-        const struct option_totals *s = &option->surfaces[i].totals;
-        t->panels += s->panels;
-        for (int k = 0; k < TYPE_COUNT; k++)
-            t->count[k] += s->count[k];
-        for (int c = 0; c < CLASS_COUNT; c++)
-            t->class_count[c] += s->class_count[c];
-        option_area_sums_add_totals(&sums, s);
-        exact_sum_add(&joint_length, s->joint_length);
-        t->max_deviation = fmax(t->max_deviation, s->max_deviation);
-        t->max_panel_area = fmax(t->max_panel_area, s->max_panel_area);
-        t->max_gap_mm = fmax(t->max_gap_mm, s->max_gap_mm);
-        t->max_kink_deg = fmax(t->max_kink_deg, s->max_kink_deg);
-        t->gaps_over += s->gaps_over;
-        t->kinks_over += s->kinks_over;
-        t->sp_misfits += s->sp_misfits;
-        t->sp_fitted += s->sp_fitted;
+    for (size_t i = 0; i < option->nsurfaces; i++)
         option->joints += option->surfaces[i].joints;
-    }
-    option_area_sums_value(&sums, t);
-    t->joint_length = exact_sum_value(&joint_length);
-    /* Each surface's mean weighted by its share of the joints: one
-     * surface's mean is kept to the bit (a weight of exactly 1). */
-    for (size_t i = 0; i < option->nsurfaces && option->joints > 0; i++) {
-        const struct option_totals *s = &option->surfaces[i].totals;
-        double share = (double)option->surfaces[i].joints /
-                       (double)option->joints;
-        t->mean_gap_mm += share * s->mean_gap_mm;
-        t->mean_kink_deg += share * s->mean_kink_deg;
-    }
+    for (int k = 0; k < OPTION_QUANTITIES; k++)
+        if (quantity_in_totals(&option_quantities[k]))
+            combine_surfaces(&option_quantities[k], option);
     const struct mould_families *f = &option->families;
     for (int k = 0; k < TYPE_COUNT; k++)
         t->moulds_of[k] = f->count[k];

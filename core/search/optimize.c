@@ -871,10 +871,8 @@ static int run_random(struct search *s, enum optimize_outcome *outcome,
 
 unsigned optimize_measures_needed(const struct optimize_settings *s)
 {
-    unsigned objectives = 0;
-    for (int k = 0; k < s->nobjectives; k++)
-        objectives |= metric_measures(s->objectives[k].metric);
-    return option_measures_needed(&s->base.classify, objectives);
+    return option_measures_needed(
+        &s->base.classify, objectives_measures(s->objectives, s->nobjectives));
 }
 
 int64_t optimize_total(const struct optimize_settings *settings)

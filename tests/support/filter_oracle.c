@@ -11,12 +11,12 @@
 
 #include "store/filter_sql.h"
 
-enum { NCOLUMNS = STORE_OPTION_COLUMNS };
+enum { NCOLUMNS = OPTION_QUANTITIES };
 
 int oracle_column(const char *name)
 {
-    for (int k = 0; k < STORE_OPTION_COLUMNS; k++)
-        if (strcmp(store_option_columns[k].name, name) == 0)
+    for (int k = 0; k < OPTION_QUANTITIES; k++)
+        if (strcmp(option_quantities[k].name, name) == 0)
             return k;
     return -1;
 }
@@ -41,9 +41,9 @@ static bool integer_column(int k)
         "sp_count", "dp_count", "feasible", "rank", "knee", "run",
     };
     for (size_t j = 0; j < sizeof integers / sizeof *integers; j++)
-        if (strcmp(store_option_columns[k].name, integers[j]) == 0)
+        if (strcmp(option_quantities[k].name, integers[j]) == 0)
             return true;
-    const char *name = store_option_columns[k].name;
+    const char *name = option_quantities[k].name;
     size_t n = strlen(name);
     return n > 6 && strcmp(name + n - 6, "_count") == 0;
 }
@@ -76,8 +76,8 @@ void oracle_random_rows(struct rng *rng, struct oracle_row *rows, int n)
         set(r, "sp_cost",
             rng_below(rng, 3) == 0 ? 0 : 500 * (double)rng_below(rng, 100));
         set(r, "dp_cost", 1000 * (double)rng_below(rng, 2000));
-        for (int k = 0; k < STORE_OPTION_COLUMNS; k++) {
-            const char *c = store_option_columns[k].name;
+        for (int k = 0; k < OPTION_QUANTITIES; k++) {
+            const char *c = option_quantities[k].name;
             size_t len = strlen(c);
             if (len > 6 && strcmp(c + len - 6, "_count") == 0 &&
                 strcmp(c, "fp_count") && strcmp(c, "sp_count") &&
@@ -120,7 +120,7 @@ sqlite3 *oracle_database(const struct oracle_row *rows, int n)
     for (int k = 0; k < NCOLUMNS; k++) {
         char part[64];
         snprintf(part, sizeof part, "%s\"%s\" %s", k == 0 ? "" : ", ",
-                 store_option_columns[k].name,
+                 option_quantities[k].name,
                  integer_column(k) ? "INTEGER" : "REAL");
         strcat(create, part);
         strcat(insert, k == 0 ? "?" : ", ?");
@@ -139,7 +139,7 @@ sqlite3 *oracle_database(const struct oracle_row *rows, int n)
             /* As the store keeps them: rank NULL until ranked, crowding
              * NULL at a front's ends (infinity) and before ranking. */
             bool unranked = rows[i].v[oracle_column("rank")] == 0;
-            const char *name = store_option_columns[k].name;
+            const char *name = option_quantities[k].name;
             bool stored_null =
                 (strcmp(name, "rank") == 0 && unranked) ||
                 (strcmp(name, "crowding") == 0 && (unranked || isinf(v)));

@@ -21,12 +21,12 @@
 #include "store/store.h"
 
 /* An option as the value callback sees it: one double per column of
- * store_option_columns, NaN for NULL. */
+ * option_quantities, NaN for NULL. */
 struct oracle_row {
-    double v[STORE_OPTION_COLUMNS];
+    double v[OPTION_QUANTITIES];
 };
 
-/* The index of a column of store_option_columns, or -1. */
+/* The index of a column of option_quantities, or -1. */
 int oracle_column(const char *name);
 
 /* The value callback of filter_match over a struct oracle_row (context):

@@ -26,7 +26,7 @@
 #include "store/store.h"
 #include "tests/support/filter_oracle.h"
 
-enum { NCOLUMNS = STORE_OPTION_COLUMNS, NROWS = 400 };
+enum { NCOLUMNS = OPTION_QUANTITIES, NROWS = 400 };
 
 /* ---- helpers ------------------------------------------------------------- */
 
@@ -138,13 +138,13 @@ static void test_columns_table(void **state)
         "sp_fitted", "module_w", "module_h", "modules", "run",
     };
     for (int k = 0; k < NCOLUMNS; k++)
-        assert_string_equal(store_option_columns[k].name, expected[k]);
+        assert_string_equal(option_quantities[k].name, expected[k]);
 
     /* Every column can be compared; only feasible and knee stand alone. */
     char text[64];
     struct facet_error err;
     for (int k = 0; k < NCOLUMNS; k++) {
-        const char *c = store_option_columns[k].name;
+        const char *c = option_quantities[k].name;
         snprintf(text, sizeof text, "%s >= 2", c);
         struct filter *f = compile_ok(text);
         char expected_sql[160];
@@ -927,7 +927,7 @@ static void random_expression(struct rng *rng, int depth, char *out,
     size_t n = strlen(out);
     uint64_t kind = depth >= 3 ? rng_below(rng, 3) : rng_below(rng, 7);
     if (kind == 0) {
-        const char *c = store_option_columns[rng_below(rng, NCOLUMNS)].name;
+        const char *c = option_quantities[rng_below(rng, NCOLUMNS)].name;
         if (strcmp(c, "nu") == 0 && rng_below(rng, 2))
             c = "u";
         if (strcmp(c, "nv") == 0 && rng_below(rng, 2))

@@ -1,6 +1,6 @@
 /*
- * test_option_column.c: the registry of an option's columns
- * (store/option_column.h) against the truth it describes: the options
+ * test_quantity.c: the registry of an option's columns
+ * (core/quantity/quantity.h) against the truth it describes: the options
  * table SQLite creates (pragma_table_info: names, order, types), the
  * fields of struct option_row (written here by hand, field by field), the
  * search's metrics (core/search/metric.h), the values SQLite holds under
@@ -175,9 +175,9 @@ static void test_registry_is_the_table(void **state)
         const char *name = (const char *)sqlite3_column_text(s, 0);
         const char *type = (const char *)sqlite3_column_text(s, 1);
         /* run is the table's first column and the registry's last */
-        int k = n == 0 ? STORE_OPTION_COLUMNS - 1 : n - 1;
-        assert_true(k < STORE_OPTION_COLUMNS);
-        const struct option_column *c = &store_option_columns[k];
+        int k = n == 0 ? OPTION_QUANTITIES - 1 : n - 1;
+        assert_true(k < OPTION_QUANTITIES);
+        const struct quantity *c = &option_quantities[k];
         if (strcmp(c->name, name) != 0)
             fail_msg("table column %d is %s, registry row %d is %s", n,
                      name, k, c->name);
@@ -187,16 +187,16 @@ static void test_registry_is_the_table(void **state)
     }
     sqlite3_finalize(s);
     sqlite3_close(db);
-    if (n != STORE_OPTION_COLUMNS)
+    if (n != OPTION_QUANTITIES)
         fail_msg("the options table has %d columns, the registry %d: a row"
                  " without its migration (store/schema.c), or a column"
-                 " without its row", n, STORE_OPTION_COLUMNS);
+                 " without its row", n, OPTION_QUANTITIES);
     store_fixture_remove(db_path);
 
     /* Every row says what it needs to be shown and filtered. */
-    for (int k = 0; k < STORE_OPTION_COLUMNS; k++) {
-        const struct option_column *c = &store_option_columns[k];
-        assert_ptr_equal(store_option_column(c->name), c);
+    for (int k = 0; k < OPTION_QUANTITIES; k++) {
+        const struct quantity *c = &option_quantities[k];
+        assert_ptr_equal(quantity_named(c->name), c);
         assert_non_null(c->label);
         assert_non_null(c->heading);
         assert_non_null(c->unit);
@@ -206,7 +206,7 @@ static void test_registry_is_the_table(void **state)
         assert_true((c->field == FIELD_NONE) ==
                     (c->writer == WRITTEN_AS_KEY));
     }
-    assert_null(store_option_column("nosuch"));
+    assert_null(quantity_named("nosuch"));
 }
 
 /* Each column reads its own field of an option_row. */
@@ -217,9 +217,9 @@ static void test_values_read_the_row(void **state)
     o.rank = 2;
     o.crowding = 0.375;
     o.knee = 1;
-    for (int k = 0; k < STORE_OPTION_COLUMNS; k++) {
-        const struct option_column *c = &store_option_columns[k];
-        double v = store_option_column_value(c, &o);
+    for (int k = 0; k < OPTION_QUANTITIES; k++) {
+        const struct quantity *c = &option_quantities[k];
+        double v = quantity_value(c, &o);
         if (c->writer == WRITTEN_AS_KEY) {
             assert_true(isnan(v));
             continue;
@@ -227,25 +227,51 @@ static void test_values_read_the_row(void **state)
         if (v != by_hand(&o, c->name))
             fail_msg("%s reads %g, its field holds %g", c->name, v,
                      by_hand(&o, c->name));
-        assert_true(v == store_option_value(&o, c->name));
+        assert_true(v == option_quantity_value(&o, c->name));
     }
-    assert_true(isnan(store_option_value(&o, "nosuch")));
+    assert_true(isnan(option_quantity_value(&o, "nosuch")));
 }
 
-/* The objectives a search may take (core/search/metric.h) are columns,
- * and a metric's value is its column's: the front a run ranks by is the
- * front the tables show. */
+/* The objectives a search may take (core/search/metric.h) are
+ * quantities, and an objective's value is its column's: the front a run
+ * ranks by is the front the tables show. The names users' scripts give
+ * --objectives (the nineteen of every Facet since schema v7) all still
+ * parse. */
 static void test_metrics_are_columns(void **state)
 {
     (void)state;
     struct option_row o = option_k(4);
-    for (int m = 0; m < METRIC_COUNT; m++) {
-        const struct option_column *c =
-            store_option_column(metric_name((enum metric)m));
-        if (c == NULL)
-            fail_msg("metric %s is no column", metric_name((enum metric)m));
-        assert_true(metric_value(&o.totals, (enum metric)m) ==
-                    store_option_column_value(c, &o));
+    static const char *const names[] = {
+        "cost", "planarity", "dp_area", "fp_area", "sp_area", "panels",
+        "fp_count", "sp_count", "dp_count", "max_deviation",
+        "max_panel_area", "p_dist", "moulds", "sp_moulds", "dp_moulds",
+        "joint_length", "max_gap", "max_kink", "sp_misfits"};
+    int objectives = 0;
+    for (int k = 0; k < OPTION_QUANTITIES; k++)
+        objectives += option_quantities[k].objective;
+    assert_int_equal(objectives, (int)(sizeof names / sizeof names[0]));
+    for (size_t m = 0; m < sizeof names / sizeof names[0]; m++) {
+        struct objective parsed[OBJECTIVES_MAX];
+        int count;
+        struct facet_error err;
+        char text[64];
+        snprintf(text, sizeof text, "max:%s", names[m]);
+        if (objectives_parse(text, "objectives", parsed, &count, &err) !=
+            FACET_OK)
+            fail_msg("objective %s: %s", names[m], err.message);
+        assert_int_equal(count, 1);
+        assert_string_equal(parsed[0].quantity->name, names[m]);
+        assert_true(objective_value(&o.totals, &parsed[0]) ==
+                    -quantity_value(parsed[0].quantity, &o));
+    }
+    for (int k = 0; k < OPTION_QUANTITIES; k++) {
+        const struct quantity *q = &option_quantities[k];
+        if (!quantity_in_totals(q))
+            continue;
+        double a = quantity_of_totals(q, &o.totals);
+        double b = quantity_value(q, &o);
+        if (!(a == b || (isnan(a) && isnan(b))))
+            fail_msg("%s: %g in the totals, %g in the row", q->name, a, b);
     }
 }
 
@@ -289,9 +315,9 @@ static void test_store_round_trip(void **state)
     struct option_row rows[ROWS];
     sqlite3 *db;
     struct store *store = ranked_store(&run, rows, &db);
-    for (int k = 0; k < STORE_OPTION_COLUMNS; k++) {
-        const char *name = store_option_columns[k].name;
-        if (store_option_columns[k].writer == WRITTEN_AS_KEY)
+    for (int k = 0; k < OPTION_QUANTITIES; k++) {
+        const char *name = option_quantities[k].name;
+        if (option_quantities[k].writer == WRITTEN_AS_KEY)
             continue;
         char sql[160];
         snprintf(sql, sizeof sql, "SELECT \"%s\" FROM options"
@@ -318,10 +344,10 @@ static void test_store_round_trip(void **state)
         struct option_row back;
         assert_int_equal(store_option_get(store, run, r + 1, &back, &err),
                          FACET_OK);
-        for (int k = 0; k < STORE_OPTION_COLUMNS; k++)
-            if (store_option_columns[k].writer != WRITTEN_AS_KEY)
-                assert_true(by_hand(&back, store_option_columns[k].name) ==
-                            by_hand(&rows[r], store_option_columns[k].name));
+        for (int k = 0; k < OPTION_QUANTITIES; k++)
+            if (option_quantities[k].writer != WRITTEN_AS_KEY)
+                assert_true(by_hand(&back, option_quantities[k].name) ==
+                            by_hand(&rows[r], option_quantities[k].name));
     }
     store_close(store);
     store_fixture_remove(db_path);
@@ -358,8 +384,8 @@ static void test_every_column_filters_and_sorts(void **state)
     sqlite3 *db;
     struct store *store = ranked_store(&run, rows, &db);
     struct facet_error err;
-    for (int k = 0; k < STORE_OPTION_COLUMNS; k++) {
-        const struct option_column *c = &store_option_columns[k];
+    for (int k = 0; k < OPTION_QUANTITIES; k++) {
+        const struct quantity *c = &option_quantities[k];
         /* a value the third option has, so some pass and some do not */
         double middle = c->writer == WRITTEN_AS_KEY
                             ? (double)run : by_hand(&rows[2], c->name);
@@ -476,8 +502,8 @@ static void test_plot_axis_units(void **state)
     char svg_path[80];
     snprintf(svg_path, sizeof svg_path, "/tmp/facet_test_axis_%d.svg",
              (int)getpid());
-    for (int k = 0; k < STORE_OPTION_COLUMNS; k++) {
-        const struct option_column *c = &store_option_columns[k];
+    for (int k = 0; k < OPTION_QUANTITIES; k++) {
+        const struct quantity *c = &option_quantities[k];
         if (c->writer == WRITTEN_AS_KEY)
             continue;
         const char *want = stored_unit_by_name(c->name);

@@ -129,28 +129,28 @@ static void test_row_and_registry(void **state)
     assert_true(isnan(t->joint_length) && isnan(t->area_cost));
     assert_true(t->panels == 16 && t->cost == 151830);
     int nulls = 0;
-    for (int k = 0; k < STORE_OPTION_COLUMNS; k++) {
-        const struct option_column *c = &store_option_columns[k];
+    for (int k = 0; k < OPTION_QUANTITIES; k++) {
+        const struct quantity *c = &option_quantities[k];
         if (c->writer != WRITTEN_WITH_OPTION)
             continue;
         char query[256];
         snprintf(query, sizeof query, "SELECT %s IS NULL FROM options"
                  " WHERE run = 1 AND number = 1", c->name);
         int null = (int)sql_int(query);
-        double value = store_option_column_value(c, &rows[0]);
+        double value = quantity_value(c, &rows[0]);
         if (null != (isnan(value) != 0))
             fail_msg("%s: NULL %d in the file, %g read", c->name, null,
                      value);
         nulls += null;
         char text[64];
-        store_option_text(text, sizeof text, c, value, c->decimals);
+        quantity_text(text, sizeof text, c, value, c->decimals);
         if (null)
             assert_string_equal(text, "-");
     }
     assert_int_equal(nulls, 21);  /* the columns of versions 5 (10), 7 (8)
                                      and 8 (3: no module) */
-    assert_true(isnan(metric_value(t, METRIC_MOULDS)));
-    assert_true(isnan(metric_value(t, METRIC_DP_MOULDS)));
+    assert_true(isnan(quantity_of_totals(quantity_named("moulds"), t)));
+    assert_true(isnan(quantity_of_totals(quantity_named("dp_moulds"), t)));
     free(rows);
 }
 

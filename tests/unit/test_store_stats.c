@@ -100,7 +100,7 @@ static void drop_store(struct store *store)
 
 static double row_value(void *context, const char *column)
 {
-    return store_option_value(context, column);
+    return option_quantity_value(context, column);
 }
 
 /* The rows a browse with filter f (NULL: all) and pareto sees. */
@@ -156,7 +156,7 @@ static void check_browse(struct store *store, int64_t run, const char *text,
         double sum = 0;
         for (int k = 0; k < N; k++)
             if (passes(f, pareto, &all[k])) {
-                values[n] = store_option_value(&all[k], columns[c]);
+                values[n] = option_quantity_value(&all[k], columns[c]);
                 sum += values[n++];
             }
         qsort(values, (size_t)n, sizeof values[0], by_double);
@@ -189,7 +189,7 @@ static void check_browse(struct store *store, int64_t run, const char *text,
             for (int k = 0; k < N; k++) {
                 if (!passes(f, pareto, &all[k]))
                     continue;
-                double v = store_option_value(&all[k], column);
+                double v = option_quantity_value(&all[k], column);
                 double key = bin > 0 ? floor(v / bin) * bin : v;
                 if (!close_to(key, groups[g].value))
                     continue;

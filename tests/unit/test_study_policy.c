@@ -37,9 +37,9 @@ static void test_defaults_are_the_papers(void **state)
                 s->base.classify.price[TYPE_DP] == 1518);
     assert_int_equal(s->base.mode, PANEL_EXTREMES);
     assert_int_equal(s->nobjectives, 3);
-    assert_int_equal(s->objectives[0].metric, METRIC_COST);
-    assert_int_equal(s->objectives[1].metric, METRIC_PLANARITY);
-    assert_int_equal(s->objectives[2].metric, METRIC_DP_AREA);
+    assert_string_equal(s->objectives[0].quantity->name, "cost");
+    assert_string_equal(s->objectives[1].quantity->name, "planarity");
+    assert_string_equal(s->objectives[2].quantity->name, "dp_area");
     assert_true(s->seed == 1);
     assert_int_equal(s->evaluations, 1000);
     assert_int_equal(s->population, 100);

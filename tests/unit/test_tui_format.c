@@ -96,22 +96,22 @@ static void test_cells(void **state)
         if (c < tui_option_column_default_count)
             total += col->width + 1;
         /* every column the chooser offers is a store column */
-        assert_false(isnan(store_option_value(&o, col->column)));
+        assert_false(isnan(option_quantity_value(&o, col->column)));
     }
     assert_true(total - 1 <= 80);  /* the default table fits 80 columns */
     /* every metric the tables show is a store column */
     for (int c = 0; c < tui_metric_column_count; c++)
-        assert_non_null(store_option_column(tui_metric_columns[c]));
+        assert_non_null(quantity_named(tui_metric_columns[c]));
     /* on its own a value has the registry's decimals and unit scale */
     char out[64];
     o.totals.max_deviation = 0.03758;
-    tui_fmt_value(out, sizeof out, store_option_column("max_deviation"),
+    tui_fmt_value(out, sizeof out, quantity_named("max_deviation"),
                   o.totals.max_deviation);
     assert_string_equal(out, "37.58");
-    tui_fmt_value(out, sizeof out, store_option_column("planarity"),
+    tui_fmt_value(out, sizeof out, quantity_named("planarity"),
                   o.totals.planarity);
     assert_string_equal(out, "2.5217");
-    tui_fmt_value(out, sizeof out, store_option_column("knee"), 1);
+    tui_fmt_value(out, sizeof out, quantity_named("knee"), 1);
     assert_string_equal(out, "yes");
 }
 

@@ -105,8 +105,8 @@ static int oracle_compare(const void *a, const void *b)
 {
     const struct option_row *p = a, *q = b;
     for (int k = 0; k < oracle_nkeys; k++) {
-        double x = store_option_value(p, oracle_keys[k].column);
-        double y = store_option_value(q, oracle_keys[k].column);
+        double x = option_quantity_value(p, oracle_keys[k].column);
+        double y = option_quantity_value(q, oracle_keys[k].column);
         if (x != y)
             return (x < y) != oracle_keys[k].descending ? -1 : 1;
     }
@@ -115,7 +115,7 @@ static int oracle_compare(const void *a, const void *b)
 
 static double value_of(void *context, const char *column)
 {
-    return store_option_value(context, column);
+    return option_quantity_value(context, column);
 }
 
 static size_t oracle(const struct filter *filter, int pareto,

@@ -1,0 +1,343 @@
+/*
+ * quantity.c: the quantities of an option, and reading and writing a
+ * quantity's value. See quantity.h, which says how to add one.
+ */
+#include "core/quantity/quantity.h"
+
+#include <assert.h>
+#include <math.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "core/base/numformat.h"
+#include "core/classify/option.h"
+
+/* Where a field of struct option_row is. */
+#define ROW(member) offsetof(struct option_row, member)
+#define TOTAL(member) offsetof(struct option_row, totals.member)
+
+/* name, label, heading, unit, stored_unit, scale, decimals, list_decimals,
+ * thousands, yes_no, example, field, offset, writer, combine, measure,
+ * objective. (Sized by its rows: a
+ * count in the header that differs is a compile error.) */
+const struct quantity option_quantities[] = {
+    {"number", "No.", "No.", "", "", 1, 0, 0, 0, 0, "10",
+     FIELD_INT64, ROW(number), WRITTEN_WITH_OPTION,
+     COMBINE_NONE, 0, 0},
+    {"generation", "generation", "gen", "", "", 1, 0, 0, 0, 0, "5",
+     FIELD_INT, ROW(generation), WRITTEN_WITH_OPTION,
+     COMBINE_NONE, 0, 0},
+    {"nu", "U", "U", "", "", 1, 0, 0, 0, 0, "30",
+     FIELD_INT, ROW(nu), WRITTEN_WITH_OPTION,
+     COMBINE_NONE, 0, 0},
+    {"nv", "V", "V", "", "", 1, 0, 0, 0, 0, "30",
+     FIELD_INT, ROW(nv), WRITTEN_WITH_OPTION,
+     COMBINE_NONE, 0, 0},
+    {"threshold_mm", "threshold", "t", "mm", "mm", 1, 2, 2, 0, 0, "5",
+     FIELD_DOUBLE, ROW(threshold_mm), WRITTEN_WITH_OPTION,
+     COMBINE_NONE, 0, 0},
+    {"panels", "panels", "panels", "", "", 1, 0, 0, 0, 0, "500",
+     FIELD_SIZE, TOTAL(panels), WRITTEN_WITH_OPTION,
+     COMBINE_SUM, 0, 1},
+    {"fp_count", "FP panels", "FP n", "", "", 1, 0, 0, 0, 0, "100",
+     FIELD_SIZE, TOTAL(count[TYPE_FP]), WRITTEN_WITH_OPTION,
+     COMBINE_SUM, 0, 1},
+    {"sp_count", "SP panels", "SP n", "", "", 1, 0, 0, 0, 0, "100",
+     FIELD_SIZE, TOTAL(count[TYPE_SP]), WRITTEN_WITH_OPTION,
+     COMBINE_SUM, 0, 1},
+    {"dp_count", "DP panels", "DP n", "", "", 1, 0, 0, 0, 0, "100",
+     FIELD_SIZE, TOTAL(count[TYPE_DP]), WRITTEN_WITH_OPTION,
+     COMBINE_SUM, 0, 1},
+    {"fp_area", "FP area", "FP area", "m^2", "m^2", 1, 2, 1, 0, 0, "100",
+     FIELD_DOUBLE, TOTAL(area_of[TYPE_FP]), WRITTEN_WITH_OPTION,
+     COMBINE_EXACT_SUM, 0, 1},
+    {"sp_area", "SP area", "SP area", "m^2", "m^2", 1, 2, 1, 0, 0, "100",
+     FIELD_DOUBLE, TOTAL(area_of[TYPE_SP]), WRITTEN_WITH_OPTION,
+     COMBINE_EXACT_SUM, 0, 1},
+    {"dp_area", "DP area", "DP area", "m^2", "m^2", 1, 2, 1, 0, 0, "900",
+     FIELD_DOUBLE, TOTAL(area_of[TYPE_DP]), WRITTEN_WITH_OPTION,
+     COMBINE_EXACT_SUM, 0, 1},
+    {"area", "area", "area", "m^2", "m^2", 1, 2, 1, 0, 0, "1200",
+     FIELD_DOUBLE, TOTAL(area), WRITTEN_WITH_OPTION,
+     COMBINE_EXACT_SUM, 0, 0},
+    {"fp_cost", "FP cost", "FP cost", "USD", "USD", 1, 0, 0, 1, 0, "5e5",
+     FIELD_DOUBLE, TOTAL(cost_of[TYPE_FP]), WRITTEN_WITH_OPTION,
+     COMBINE_RECOMPUTED, 0, 0},
+    {"sp_cost", "SP cost", "SP cost", "USD", "USD", 1, 0, 0, 1, 0, "5e5",
+     FIELD_DOUBLE, TOTAL(cost_of[TYPE_SP]), WRITTEN_WITH_OPTION,
+     COMBINE_RECOMPUTED, 0, 0},
+    {"dp_cost", "DP cost", "DP cost", "USD", "USD", 1, 0, 0, 1, 0, "5e5",
+     FIELD_DOUBLE, TOTAL(cost_of[TYPE_DP]), WRITTEN_WITH_OPTION,
+     COMBINE_RECOMPUTED, 0, 0},
+    {"cost", "cost", "cost", "USD", "USD", 1, 0, 0, 1, 0, "1e6",
+     FIELD_DOUBLE, TOTAL(cost), WRITTEN_WITH_OPTION,
+     COMBINE_RECOMPUTED, 0, 1},
+    {"planarity", "planarity", "planarity", "m", "m", 1, 4, 3, 0, 0, "0.01",
+     FIELD_DOUBLE, TOTAL(planarity), WRITTEN_WITH_OPTION,
+     COMBINE_EXACT_SUM, 0, 1},
+    {"max_deviation", "max deviation", "max dev", "mm", "m", 1000, 2, 2, 0, 0,
+     "0.01", FIELD_DOUBLE, TOTAL(max_deviation), WRITTEN_WITH_OPTION,
+     COMBINE_MAX, 0, 1},
+    {"max_panel_area", "max panel area", "max pan",
+     "m^2", "m^2", 1, 2, 2, 0, 0,
+     "4", FIELD_DOUBLE, TOTAL(max_panel_area), WRITTEN_WITH_OPTION,
+     COMBINE_MAX, 0, 1},
+    {"p_dist", "P_dist", "P_dist", "m^4", "m^4", 1, 6, 4, 0, 0, "0.5",
+     FIELD_DOUBLE, TOTAL(p_dist), WRITTEN_WITH_OPTION,
+     COMBINE_EXACT_SUM, 0, 1},
+    {"feasible", "feasible", "ok", "", "", 1, 0, 0, 0, 1, NULL,
+     FIELD_INT, TOTAL(feasible), WRITTEN_WITH_OPTION,
+     COMBINE_RECOMPUTED, 0, 0},
+    /* Per class (core/panel/panel.h), in the order of enum panel_class. */
+    {"convex_feature_curve_count", "convex feature curve panels",
+     "convex feature curve panels", "", "",
+     1, 0, 0, 0, 0, "100", FIELD_SIZE,
+     TOTAL(class_count[CLASS_CONVEX_FEATURE_CURVE]), WRITTEN_WITH_OPTION,
+     COMBINE_SUM, 0, 0},
+    {"convex_feature_curve_area", "convex feature curve area",
+     "convex feature curve area", "m^2", "m^2",
+     1, 2, 1, 0, 0, "100", FIELD_DOUBLE,
+     TOTAL(class_area[CLASS_CONVEX_FEATURE_CURVE]), WRITTEN_WITH_OPTION,
+     COMBINE_EXACT_SUM, 0, 0},
+    {"saddle_count", "saddle panels", "saddle panels", "", "",
+     1, 0, 0, 0, 0, "100", FIELD_SIZE,
+     TOTAL(class_count[CLASS_SADDLE]), WRITTEN_WITH_OPTION,
+     COMBINE_SUM, 0, 0},
+    {"saddle_area", "saddle area", "saddle area", "m^2", "m^2",
+     1, 2, 1, 0, 0, "100", FIELD_DOUBLE,
+     TOTAL(class_area[CLASS_SADDLE]), WRITTEN_WITH_OPTION,
+     COMBINE_EXACT_SUM, 0, 0},
+    {"concave_feature_curve_count", "concave feature curve panels",
+     "concave feature curve panels", "", "",
+     1, 0, 0, 0, 0, "100", FIELD_SIZE,
+     TOTAL(class_count[CLASS_CONCAVE_FEATURE_CURVE]), WRITTEN_WITH_OPTION,
+     COMBINE_SUM, 0, 0},
+    {"concave_feature_curve_area", "concave feature curve area",
+     "concave feature curve area", "m^2", "m^2",
+     1, 2, 1, 0, 0, "100", FIELD_DOUBLE,
+     TOTAL(class_area[CLASS_CONCAVE_FEATURE_CURVE]), WRITTEN_WITH_OPTION,
+     COMBINE_EXACT_SUM, 0, 0},
+    {"ruled_convex_count", "ruled convex panels", "ruled convex panels",
+     "", "",
+     1, 0, 0, 0, 0, "100", FIELD_SIZE,
+     TOTAL(class_count[CLASS_RULED_CONVEX]), WRITTEN_WITH_OPTION,
+     COMBINE_SUM, 0, 0},
+    {"ruled_convex_area", "ruled convex area", "ruled convex area",
+     "m^2", "m^2",
+     1, 2, 1, 0, 0, "100", FIELD_DOUBLE,
+     TOTAL(class_area[CLASS_RULED_CONVEX]), WRITTEN_WITH_OPTION,
+     COMBINE_EXACT_SUM, 0, 0},
+    {"flat_count", "flat panels", "flat panels", "", "",
+     1, 0, 0, 0, 0, "100", FIELD_SIZE,
+     TOTAL(class_count[CLASS_FLAT]), WRITTEN_WITH_OPTION,
+     COMBINE_SUM, 0, 0},
+    {"flat_area", "flat area", "flat area", "m^2", "m^2",
+     1, 2, 1, 0, 0, "100", FIELD_DOUBLE,
+     TOTAL(class_area[CLASS_FLAT]), WRITTEN_WITH_OPTION,
+     COMBINE_EXACT_SUM, 0, 0},
+    {"ruled_concave_count", "ruled concave panels", "ruled concave panels",
+     "", "",
+     1, 0, 0, 0, 0, "100", FIELD_SIZE,
+     TOTAL(class_count[CLASS_RULED_CONCAVE]), WRITTEN_WITH_OPTION,
+     COMBINE_SUM, 0, 0},
+    {"ruled_concave_area", "ruled concave area", "ruled concave area",
+     "m^2", "m^2",
+     1, 2, 1, 0, 0, "100", FIELD_DOUBLE,
+     TOTAL(class_area[CLASS_RULED_CONCAVE]), WRITTEN_WITH_OPTION,
+     COMBINE_EXACT_SUM, 0, 0},
+    {"convex_round_count", "convex round panels", "convex round panels",
+     "", "",
+     1, 0, 0, 0, 0, "100", FIELD_SIZE,
+     TOTAL(class_count[CLASS_CONVEX_ROUND]), WRITTEN_WITH_OPTION,
+     COMBINE_SUM, 0, 0},
+    {"convex_round_area", "convex round area", "convex round area",
+     "m^2", "m^2",
+     1, 2, 1, 0, 0, "100", FIELD_DOUBLE,
+     TOTAL(class_area[CLASS_CONVEX_ROUND]), WRITTEN_WITH_OPTION,
+     COMBINE_EXACT_SUM, 0, 0},
+    {"concave_round_count", "concave round panels", "concave round panels",
+     "", "",
+     1, 0, 0, 0, 0, "100", FIELD_SIZE,
+     TOTAL(class_count[CLASS_CONCAVE_ROUND]), WRITTEN_WITH_OPTION,
+     COMBINE_SUM, 0, 0},
+    {"concave_round_area", "concave round area", "concave round area",
+     "m^2", "m^2",
+     1, 2, 1, 0, 0, "100", FIELD_DOUBLE,
+     TOTAL(class_area[CLASS_CONCAVE_ROUND]), WRITTEN_WITH_OPTION,
+     COMBINE_EXACT_SUM, 0, 0},
+    /* The Pareto analysis, written when the run ends. */
+    {"rank", "rank", "rank", "", "", 1, 0, 0, 0, 0, "2",
+     FIELD_INT, ROW(rank), WRITTEN_BY_RANKING,
+     COMBINE_NONE, 0, 0},
+    {"crowding", "crowding", "crowd", "", "", 1, 3, 3, 0, 0, "0.5",
+     FIELD_DOUBLE, ROW(crowding), WRITTEN_BY_RANKING,
+     COMBINE_NONE, 0, 0},
+    {"knee", "knee", "knee", "", "", 1, 0, 0, 0, 1, NULL,
+     FIELD_INT, ROW(knee), WRITTEN_BY_RANKING,
+     COMBINE_NONE, 0, 0},
+    /* The cost model beyond area (schema v5). */
+    {"joint_length", "joint length", "joints", "m", "m", 1, 1, 0, 1, 0, "2000",
+     FIELD_DOUBLE, TOTAL(joint_length), WRITTEN_WITH_OPTION,
+     COMBINE_EXACT_SUM, OPTION_MEASURE_JOINT_LENGTH, 1},
+    {"moulds", "moulds", "moulds", "", "", 1, 0, 0, 0, 0, "50",
+     FIELD_SIZE, TOTAL(moulds), WRITTEN_WITH_OPTION,
+     COMBINE_RECOMPUTED, OPTION_MEASURE_MOULDS, 1},
+    {"sp_moulds", "SP moulds", "SP mld", "", "", 1, 0, 0, 0, 0, "20",
+     FIELD_SIZE, TOTAL(moulds_of[TYPE_SP]), WRITTEN_WITH_OPTION,
+     COMBINE_RECOMPUTED, OPTION_MEASURE_MOULDS, 1},
+    {"dp_moulds", "DP moulds", "DP mld", "", "", 1, 0, 0, 0, 0, "20",
+     FIELD_SIZE, TOTAL(moulds_of[TYPE_DP]), WRITTEN_WITH_OPTION,
+     COMBINE_RECOMPUTED, OPTION_MEASURE_MOULDS, 1},
+    {"largest_family", "largest mould family", "big fam", "", "", 1, 0, 0, 0, 0,
+     "10", FIELD_SIZE, TOTAL(largest_family), WRITTEN_WITH_OPTION,
+     COMBINE_RECOMPUTED, OPTION_MEASURE_MOULDS, 0},
+    {"single_moulds", "moulds of one panel", "single", "", "", 1, 0, 0, 0, 0,
+     "10", FIELD_SIZE, TOTAL(singleton_families), WRITTEN_WITH_OPTION,
+     COMBINE_RECOMPUTED, OPTION_MEASURE_MOULDS, 0},
+    {"area_cost", "area cost", "area cost", "USD", "USD", 1, 0, 0, 1, 0, "1e6",
+     FIELD_DOUBLE, TOTAL(area_cost), WRITTEN_WITH_OPTION,
+     COMBINE_RECOMPUTED, 0, 0},
+    {"panel_cost", "panel cost", "pan cost", "USD", "USD", 1, 0, 0, 1, 0, "1e5",
+     FIELD_DOUBLE, TOTAL(panel_cost), WRITTEN_WITH_OPTION,
+     COMBINE_RECOMPUTED, 0, 0},
+    {"joint_cost", "joint cost", "jnt cost", "USD", "USD", 1, 0, 0, 1, 0, "1e5",
+     FIELD_DOUBLE, TOTAL(joint_cost), WRITTEN_WITH_OPTION,
+     COMBINE_RECOMPUTED, OPTION_MEASURE_JOINT_LENGTH, 0},
+    {"mould_cost", "mould cost", "mld cost", "USD", "USD", 1, 0, 0, 1, 0, "1e5",
+     FIELD_DOUBLE, TOTAL(mould_cost), WRITTEN_WITH_OPTION,
+     COMBINE_RECOMPUTED, OPTION_MEASURE_MOULDS, 0},
+    /* Panels as built and their joints (schema v7). */
+    {"max_gap", "max gap", "max gap", "mm", "mm", 1, 2, 2, 0, 0, "6",
+     FIELD_DOUBLE, TOTAL(max_gap_mm), WRITTEN_WITH_OPTION,
+     COMBINE_MAX, OPTION_MEASURE_JOINTS, 1},
+    {"mean_gap", "mean gap", "mean gap", "mm", "mm", 1, 3, 2, 0, 0, "1",
+     FIELD_DOUBLE, TOTAL(mean_gap_mm), WRITTEN_WITH_OPTION,
+     COMBINE_JOINT_MEAN, OPTION_MEASURE_JOINTS, 0},
+    {"max_kink", "max kink", "max kink", "deg", "deg", 1, 2, 2, 0, 0, "1",
+     FIELD_DOUBLE, TOTAL(max_kink_deg), WRITTEN_WITH_OPTION,
+     COMBINE_MAX, OPTION_MEASURE_JOINTS, 1},
+    {"mean_kink", "mean kink", "mean kink", "deg", "deg", 1, 3, 2, 0, 0,
+     "0.5", FIELD_DOUBLE, TOTAL(mean_kink_deg), WRITTEN_WITH_OPTION,
+     COMBINE_JOINT_MEAN, OPTION_MEASURE_JOINTS, 0},
+    {"gaps_over", "gaps over limit", "gaps>", "", "", 1, 0, 0, 0, 0, "0",
+     FIELD_SIZE, TOTAL(gaps_over), WRITTEN_WITH_OPTION,
+     COMBINE_SUM, OPTION_MEASURE_JOINTS, 0},
+    {"kinks_over", "kinks over limit", "kinks>", "", "", 1, 0, 0, 0, 0, "0",
+     FIELD_SIZE, TOTAL(kinks_over), WRITTEN_WITH_OPTION,
+     COMBINE_SUM, OPTION_MEASURE_JOINTS, 0},
+    {"sp_misfits", "SP misfits", "misfit", "", "", 1, 0, 0, 0, 0, "10",
+     FIELD_SIZE, TOTAL(sp_misfits), WRITTEN_WITH_OPTION,
+     COMBINE_SUM, OPTION_MEASURE_FITS, 1},
+    {"sp_fitted", "SP fitted", "fitted", "", "", 1, 0, 0, 0, 0, "100",
+     FIELD_SIZE, TOTAL(sp_fitted), WRITTEN_WITH_OPTION,
+     COMBINE_SUM, OPTION_MEASURE_FITS, 0},
+    /* A project's module (schema v8); NULL for a single surface. */
+    {"module_w", "module width", "mod w", "m", "m", 1, 2, 2, 0, 0, "1.5",
+     FIELD_DOUBLE, ROW(module_w), WRITTEN_WITH_OPTION,
+     COMBINE_NONE, 0, 0},
+    {"module_h", "module height", "mod h", "m", "m", 1, 2, 2, 0, 0, "1.2",
+     FIELD_DOUBLE, ROW(module_h), WRITTEN_WITH_OPTION,
+     COMBINE_NONE, 0, 0},
+    {"modules", "modules of this option", "mods", "", "", 1, 0, 0, 0, 0, "2",
+     FIELD_SIZE, ROW(modules), WRITTEN_WITH_OPTION,
+     COMBINE_NONE, 0, 0},
+    /* New columns go here, before run. */
+    {"run", "run", "run", "", "", 1, 0, 0, 0, 0, "1",
+     FIELD_NONE, 0, WRITTEN_AS_KEY,
+     COMBINE_NONE, 0, 0},
+};
+
+const struct quantity *quantity_named(const char *name)
+{
+    for (int k = 0; k < OPTION_QUANTITIES; k++)
+        if (strcmp(option_quantities[k].name, name) == 0)
+            return &option_quantities[k];
+    return NULL;
+}
+
+const struct quantity *quantity_of_project(
+    const char *name)
+{
+    if (strcmp(name, "nu") == 0)
+        return quantity_named("module_w");
+    if (strcmp(name, "nv") == 0)
+        return quantity_named("module_h");
+    return quantity_named(name);
+}
+
+double quantity_value(const struct quantity *c,
+                                 const struct option_row *option)
+{
+    const char *field = (const char *)option + c->offset;
+    double value;
+    switch (c->field) {
+    case FIELD_INT:    value = *(const int *)(const void *)field; break;
+    case FIELD_INT64:
+        value = (double)*(const int64_t *)(const void *)field;
+        break;
+    case FIELD_SIZE:   /* NaN for TOTALS_UNKNOWN */
+        value = totals_count(*(const size_t *)(const void *)field);
+        break;
+    case FIELD_DOUBLE: value = *(const double *)(const void *)field; break;
+    default:           return NAN;
+    }
+    return c->yes_no ? value != 0 : value;
+}
+
+double quantity_of_totals(const struct quantity *q,
+                          const struct option_totals *totals)
+{
+    assert(quantity_in_totals(q));
+    /* The offset is the row's; the totals sit at their own offset in it. */
+    const char *field = (const char *)totals +
+                        (q->offset - offsetof(struct option_row, totals));
+    switch (q->field) {
+    case FIELD_INT:    return *(const int *)(const void *)field;
+    case FIELD_SIZE:   return totals_count(*(const size_t *)(const void *)field);
+    case FIELD_DOUBLE: return *(const double *)(const void *)field;
+    default:           return NAN;
+    }
+}
+
+int quantity_in_totals(const struct quantity *q)
+{
+    size_t first = offsetof(struct option_row, totals);
+    return q->field != FIELD_NONE && q->offset >= first &&
+           q->offset < first + sizeof(struct option_totals);
+}
+
+double option_quantity_value(const struct option_row *option,
+                          const char *column)
+{
+    const struct quantity *c = quantity_named(column);
+    return c ? quantity_value(c, option) : NAN;
+}
+
+void quantity_number_text(char *out, size_t size, double value, int decimals,
+                       int thousands)
+{
+    if (size == 0)
+        return;
+    if (thousands && !(fabs(value) >= 1e18)) {
+        number_grouped(out, size, value, decimals);
+        return;
+    }
+    if (isnan(value))
+        snprintf(out, size, "-");
+    else if (isinf(value))
+        snprintf(out, size, value > 0 ? "inf" : "-inf");
+    else
+        snprintf(out, size, "%.*f", decimals, value);
+}
+
+void quantity_text(char *out, size_t size, const struct quantity *c,
+                       double value, int decimals)
+{
+    if (c->yes_no)
+        snprintf(out, size, "%s", isnan(value) ? "-" : value != 0 ? "yes"
+                                                                  : "no");
+    else
+        quantity_number_text(out, size, value * c->scale, decimals,
+                          c->thousands);
+}
