@@ -13,6 +13,7 @@
 #include "core/joint/joint.h"
 #include "core/joint/joint_length.h"
 #include "core/mould/mould.h"
+#include "core/quantity/quantity.h"
 
 struct mould_options option_mould_options(const struct option_params *params)
 {
@@ -75,26 +76,7 @@ void option_totals_fill(struct option_totals *t,
                         const struct option_totals *m)
 {
     unsigned missing = ~option_totals_measures(t) & option_totals_measures(m);
-    if (missing & OPTION_MEASURE_FITS) {
-        t->sp_misfits = m->sp_misfits;
-        t->sp_fitted = m->sp_fitted;
-    }
-    if (missing & OPTION_MEASURE_JOINTS) {
-        t->max_gap_mm = m->max_gap_mm;
-        t->mean_gap_mm = m->mean_gap_mm;
-        t->max_kink_deg = m->max_kink_deg;
-        t->mean_kink_deg = m->mean_kink_deg;
-        t->gaps_over = m->gaps_over;
-        t->kinks_over = m->kinks_over;
-    }
-    if (missing & OPTION_MEASURE_MOULDS) {
-        t->moulds = m->moulds;
-        memcpy(t->moulds_of, m->moulds_of, sizeof t->moulds_of);
-        t->largest_family = m->largest_family;
-        t->singleton_families = m->singleton_families;
-    }
-    if (missing & OPTION_MEASURE_JOINT_LENGTH)
-        t->joint_length = m->joint_length;
+    quantity_totals_copy(t, m, missing);
 }
 
 unsigned option_measures_needed(const struct classify_options *classify,
@@ -306,14 +288,7 @@ static void leave_unbuilt(const struct classify_options *options,
         panel->worst_kink_deg = NAN;
     }
     classify_totals(panels, options, totals);
-    totals->sp_misfits = TOTALS_UNKNOWN;
-    totals->sp_fitted = TOTALS_UNKNOWN;
-    totals->max_gap_mm = NAN;
-    totals->mean_gap_mm = NAN;
-    totals->max_kink_deg = NAN;
-    totals->mean_kink_deg = NAN;
-    totals->gaps_over = TOTALS_UNKNOWN;
-    totals->kinks_over = TOTALS_UNKNOWN;
+    quantity_totals_forget(totals, OPTION_MEASURE_FITS | OPTION_MEASURE_JOINTS);
     totals->feasible =
         classify_violation(totals, options->max_panel_area) == 0;
 }
@@ -486,11 +461,8 @@ static int classify_moulded(const struct surface *surface,
         return rc;
     if (params->unmeasured & OPTION_MEASURE_MOULDS) {
         /* An FP panel needs no mould: 0 is known without measuring. */
-        for (int t = 0; t < TYPE_COUNT; t++)
-            totals->moulds_of[t] = t == TYPE_FP ? 0 : TOTALS_UNKNOWN;
-        totals->moulds = TOTALS_UNKNOWN;
-        totals->largest_family = TOTALS_UNKNOWN;
-        totals->singleton_families = TOTALS_UNKNOWN;
+        quantity_totals_forget(totals, OPTION_MEASURE_MOULDS);
+        totals->moulds_of[TYPE_FP] = 0;
         classify_price_terms(&params->classify, totals);
         return FACET_OK;
     }

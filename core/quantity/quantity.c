@@ -203,10 +203,10 @@ const struct quantity option_quantities[] = {
      COMBINE_RECOMPUTED, 0, 0},
     {"joint_cost", "joint cost", "jnt cost", "USD", "USD", 1, 0, 0, 1, 0, "1e5",
      FIELD_DOUBLE, TOTAL(joint_cost), WRITTEN_WITH_OPTION,
-     COMBINE_RECOMPUTED, OPTION_MEASURE_JOINT_LENGTH, 0},
+     COMBINE_RECOMPUTED, 0, 0},
     {"mould_cost", "mould cost", "mld cost", "USD", "USD", 1, 0, 0, 1, 0, "1e5",
      FIELD_DOUBLE, TOTAL(mould_cost), WRITTEN_WITH_OPTION,
-     COMBINE_RECOMPUTED, OPTION_MEASURE_MOULDS, 0},
+     COMBINE_RECOMPUTED, 0, 0},
     /* Panels as built and their joints (schema v7). */
     {"max_gap", "max gap", "max gap", "mm", "mm", 1, 2, 2, 0, 0, "6",
      FIELD_DOUBLE, TOTAL(max_gap_mm), WRITTEN_WITH_OPTION,
@@ -305,6 +305,38 @@ int quantity_in_totals(const struct quantity *q)
     size_t first = offsetof(struct option_row, totals);
     return q->field != FIELD_NONE && q->offset >= first &&
            q->offset < first + sizeof(struct option_totals);
+}
+
+void quantity_totals_forget(struct option_totals *totals, unsigned measures)
+{
+    for (int k = 0; k < OPTION_QUANTITIES; k++) {
+        const struct quantity *q = &option_quantities[k];
+        if (!quantity_in_totals(q) || !(q->measure & measures))
+            continue;
+        void *field = (char *)totals +
+                      (q->offset - offsetof(struct option_row, totals));
+        if (q->field == FIELD_SIZE)
+            *(size_t *)field = TOTALS_UNKNOWN;
+        else if (q->field == FIELD_DOUBLE)
+            *(double *)field = NAN;
+    }
+}
+
+void quantity_totals_copy(struct option_totals *to,
+                          const struct option_totals *from,
+                          unsigned measures)
+{
+    size_t first = offsetof(struct option_row, totals);
+    for (int k = 0; k < OPTION_QUANTITIES; k++) {
+        const struct quantity *q = &option_quantities[k];
+        if (!quantity_in_totals(q) || !(q->measure & measures))
+            continue;
+        size_t size = q->field == FIELD_SIZE ? sizeof(size_t)
+                                             : sizeof(double);
+        assert(q->field == FIELD_SIZE || q->field == FIELD_DOUBLE);
+        memcpy((char *)to + (q->offset - first),
+               (const char *)from + (q->offset - first), size);
+    }
 }
 
 double option_quantity_value(const struct option_row *option,

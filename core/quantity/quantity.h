@@ -100,7 +100,9 @@ struct quantity {
     enum option_writer writer;
     enum quantity_combine combine;
     unsigned measure;      /* option.h's option_measure bits of the stage
-                              that measures it; 0: classifying does */
+                              that measures it; 0: classifying does, and
+                              for a price (what a price needs measured is
+                              option_measures_needed's) */
     int objective;         /* can be minimised or maximised (metric.h) */
 };
 
@@ -136,6 +138,17 @@ int quantity_in_totals(const struct quantity *q);
  * quantity_value reads it from a row. */
 double quantity_of_totals(const struct quantity *q,
                           const struct option_totals *totals);
+
+/* Sets every quantity of totals that a stage of measures (option.h's
+ * option_measure bits) measures to "not measured": NaN, or
+ * TOTALS_UNKNOWN for a count. What a run that leaves those stages out
+ * stores (NULL). */
+void quantity_totals_forget(struct option_totals *totals, unsigned measures);
+
+/* Copies from from into to every quantity a stage of measures measures. */
+void quantity_totals_copy(struct option_totals *to,
+                          const struct option_totals *from,
+                          unsigned measures);
 
 /* The value of the column named column of option (quantity_value),
  * NaN for a name it does not know. */
