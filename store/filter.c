@@ -529,7 +529,7 @@ static int fail_unknown_name(struct parser *p, const struct token *t)
         if (!per_class)
             listed[nlisted++] = names[k];
     }
-    char list[460];
+    char list[900];
     size_t used = 0;
     for (size_t k = 0; k < nlisted && used < sizeof list; k++)
         used += list_name(list, sizeof list, used, listed, nlisted, k);

@@ -331,6 +331,12 @@ static const char schema_v8[] =
 static const char schema_v9[] =
     "ALTER TABLE runs ADD COLUMN measured TEXT;";
 
+/* Version 10: the smallest radius an option's SP panels are bent to (m),
+ * measured with the fits; NULL where not measured, for an option with no
+ * panel built SP, and for every option stored before. */
+static const char schema_v10[] =
+    "ALTER TABLE options ADD COLUMN sp_min_radius REAL;";
+
 static const char *const migrations[STORE_SCHEMA_VERSION] = {
     schema_v1,
     schema_v2,
@@ -341,6 +347,7 @@ static const char *const migrations[STORE_SCHEMA_VERSION] = {
     schema_v7,
     schema_v8,
     schema_v9,
+    schema_v10,
 };
 
 int store_fail(struct store *store, const char *doing,

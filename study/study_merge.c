@@ -664,7 +664,7 @@ static int write_merged(const char *path, const struct shard_file *f, int n,
         } else if (opened == FACET_OK) {
             have_surface = 1;
         } else {
-            char text[800];
+            char text[sizeof why.message + 128];
             snprintf(text, sizeof text, "the Pareto options' panels are "
                      "not stored (facet show and export compute them when "
                      "asked): %s", why.message);

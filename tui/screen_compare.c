@@ -263,8 +263,8 @@ static void load_maps(struct compare_screen *s, struct tui_app *app)
     struct facet_error err;
     if (store_run_get(app->store, s->run, &run, &err) != FACET_OK) {
         for (int k = 0; k < s->n; k++)
-            snprintf(s->map_error[k], sizeof s->map_error[k], "%s",
-                     err.message);
+            snprintf(s->map_error[k], sizeof s->map_error[k], "%.*s",
+                     (int)sizeof s->map_error[k] - 1, err.message);
         return;
     }
     if (store_run_is_project(&run)) {
@@ -301,7 +301,8 @@ static void load_maps(struct compare_screen *s, struct tui_app *app)
         if (rc == FACET_OK && s->panels[k].nu > 0 && s->panels[k].nv > 0)
             s->has_map[k] = 1;
         else
-            snprintf(s->map_error[k], sizeof s->map_error[k], "no map: %s",
+            snprintf(s->map_error[k], sizeof s->map_error[k], "no map: %.*s",
+                     (int)sizeof s->map_error[k] - 9,
                      rc == FACET_OK ? "no panels" : err.message);
     }
     surface_close(&surface);

@@ -66,7 +66,7 @@ struct facet_error {
     int code;                   /* FACET_OK or FACET_E* */
     enum facet_setting setting; /* FACET_SETTING_NONE unless the message
                                    is about a setting (see above) */
-    char message[512];          /* one line, no trailing newline */
+    char message[1024];         /* one line, no trailing newline */
 };
 
 /* Clears err to FACET_OK with an empty message. err may be NULL. */

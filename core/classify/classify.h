@@ -116,6 +116,10 @@ struct option_totals {
     size_t sp_misfits;               /* panels classed SP that no cylinder
                                         or cone fits within t */
     size_t sp_fitted;                /* SP panels fitted (built SP) */
+    double sp_min_radius;            /* the smallest radius an SP panel is
+                                        bent to (m, sp_fit.h's
+                                        bending_radius); NaN when none is
+                                        built SP */
 };
 
 /* A count of struct option_totals that is not known: what the store reads

@@ -357,6 +357,11 @@ static int build_and_measure(const struct surface *surface,
         classify_totals(panels, options, totals);
         totals->sp_misfits = built.sp_misfits;
         totals->sp_fitted = built.sp_fitted;
+        totals->sp_min_radius = NAN;
+        for (size_t k = 0; k < panels->npanels; k++)
+            if (built.panels[k].fitted)
+                totals->sp_min_radius = fmin(totals->sp_min_radius,
+                                             built.panels[k].bending_radius);
         totals->max_gap_mm = measure_joints ? joints.max_gap * 1000 : NAN;
         totals->mean_gap_mm = measure_joints ? joints.mean_gap * 1000 : NAN;
         totals->max_kink_deg =

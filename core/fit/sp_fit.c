@@ -253,7 +253,27 @@ struct panel_fits {
     double best_cylinder;      /* NaN without a cylinder */
     struct developable cone;   /* the cone kept; zero when none */
     double best_cone;          /* NaN without a cone */
+    double cone_bending;       /* its bending radius (built_panel) */
 };
+
+/* The smallest radius of the cone d over points (n x 3, m): the normal
+ * curvature across the rulings at distance rho from the axis is cos a /
+ * rho (a the half-angle, tan a = |slope|), so the radius is rho sqrt(1 +
+ * slope^2), least where rho is. rho is the surface's at each point's place
+ * along the axis. */
+static double cone_bending_radius(const struct developable *d,
+                                  const double *points, size_t n)
+{
+    double least = INFINITY;
+    for (size_t k = 0; k < n; k++) {
+        const double *x = points + 3 * k;
+        double h = (x[0] - d->base[0]) * d->axis[0] +
+                   (x[1] - d->base[1]) * d->axis[1] +
+                   (x[2] - d->base[2]) * d->axis[2];
+        least = fmin(least, fabs(d->radius + d->slope * h));
+    }
+    return n > 0 ? least * sqrt(1 + d->slope * d->slope) : NAN;
+}
 
 static void fit_cylinder(const struct samples *s, struct panel_fits *f)
 {
@@ -286,6 +306,7 @@ static void fit_cones(const struct samples *s, struct panel_fits *f)
         if (isfinite(deviation) && !(deviation >= f->best_cone)) {
             f->best_cone = deviation;
             f->cone = cone;
+            f->cone_bending = cone_bending_radius(&cone, s->xyz, s->n);
         }
     }
 }
@@ -312,6 +333,7 @@ static void judge(const struct panel *panel, const struct panel_fits *f,
             b->fitted = 1;
             b->fit = f->cylinder;
             b->sp_deviation = f->best_cylinder;
+            b->bending_radius = fabs(f->cylinder.radius);
             return;
         }
         b->best_cone = f->best_cone;
@@ -319,6 +341,7 @@ static void judge(const struct panel *panel, const struct panel_fits *f,
         if (f->best_cone <= limit) {
             b->fitted = 1;
             b->sp_deviation = f->best_cone;
+            b->bending_radius = f->cone_bending;
             return;
         }
     }
@@ -360,6 +383,7 @@ static void build_panels(const struct mesh *mesh,
         struct built_panel *b = &out->panels[k];
         b->type = panel->type;
         b->sp_deviation = b->best_cylinder = b->best_cone = NAN;
+        b->bending_radius = NAN;
         if (panel->type != TYPE_SP)
             continue;
         struct panel_fits alone, *f = cache != NULL ? &cache[k] : &alone;

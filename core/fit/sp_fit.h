@@ -91,6 +91,12 @@ struct built_panel {
     double best_cylinder;      /* the fitted cylinder's deviation (m); NaN
                                   when not tried or none fits the samples */
     double best_cone;          /* the fitted cone's (m), NaN likewise */
+    double bending_radius;     /* the smallest radius the panel is bent to
+                                  on fit (m), over its samples: a
+                                  cylinder's radius; on a cone rho / cos a
+                                  at the sample nearest the apex (rho its
+                                  distance from the axis, a the
+                                  half-angle); NaN when not fitted */
 };
 
 struct built_option {

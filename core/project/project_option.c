@@ -156,6 +156,10 @@ static void combine_surfaces(const struct quantity *q,
         case COMBINE_MAX:
             *(double *)out = fmax(*(double *)out, value);
             break;
+        case COMBINE_MIN:
+            /* fmin ignores a NaN: the least of the surfaces that have one. */
+            *(double *)out = i == 0 ? value : fmin(*(double *)out, value);
+            break;
         case COMBINE_JOINT_MEAN:
             /* Each surface's mean weighted by its share of the joints: one
              * surface's mean is kept to the bit (a weight of exactly 1). */

@@ -242,6 +242,9 @@ const struct quantity option_quantities[] = {
     {"modules", "modules of this option", "mods", "", "", 1, 0, 0, 0, 0, "2",
      FIELD_SIZE, ROW(modules), WRITTEN_WITH_OPTION,
      COMBINE_NONE, 0, 0},
+    {"sp_min_radius", "smallest SP bending radius", "min R", "m", "m", 1, 2,
+     1, 0, 0, "5", FIELD_DOUBLE, TOTAL(sp_min_radius), WRITTEN_WITH_OPTION,
+     COMBINE_MIN, OPTION_MEASURE_FITS, 1},
     /* New columns go here, before run. */
     {"run", "run", "run", "", "", 1, 0, 0, 0, 0, "1",
      FIELD_NONE, 0, WRITTEN_AS_KEY,

@@ -59,6 +59,8 @@ enum quantity_combine {
                              exact arithmetic (core/base/exact_sum.h), so
                              the order of the surfaces cannot show */
     COMBINE_MAX,          /* the largest of the surfaces' */
+    COMBINE_MIN,          /* the least of the surfaces' that are known
+                             (NaN: none has one) */
     COMBINE_JOINT_MEAN,   /* a mean over joints: the surfaces' means, each
                              weighted by its share of the joints */
     COMBINE_RECOMPUTED,   /* priced, counted over the building's mould
@@ -108,7 +110,7 @@ struct quantity {
 
 /* Every column of the options table, in its order (pragma_table_info) but
  * run last. */
-#define OPTION_QUANTITIES 63
+#define OPTION_QUANTITIES 64
 extern const struct quantity option_quantities[OPTION_QUANTITIES];
 
 /* The column named name (exactly, lowercase), or NULL. */

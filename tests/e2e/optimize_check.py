@@ -41,7 +41,8 @@ COLUMNS = ["number", "generation", "nu", "nv", "threshold_mm", "panels",
            "dp_moulds", "largest_family", "single_moulds", "area_cost",
            "panel_cost", "joint_cost", "mould_cost", "max_gap", "mean_gap",
            "max_kink", "mean_kink", "gaps_over", "kinks_over", "sp_misfits",
-           "sp_fitted", "module_w", "module_h", "modules"]
+           "sp_fitted", "module_w", "module_h", "modules",
+           "sp_min_radius"]
 
 
 def connect(path):

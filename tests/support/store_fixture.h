@@ -14,10 +14,16 @@
  * cost, a 1 x 1 grid, one job) that store_run_create accepts. */
 void store_fixture_run(struct run_info *run);
 
+/* SQL that takes a current file back to schema version 9: the column
+ * version 10 added (the smallest SP bending radius), dropped (set
+ * user_version after it). */
+#define STORE_FIXTURE_UNDO_V10 \
+    "ALTER TABLE options DROP COLUMN sp_min_radius;"
+
 /* SQL that takes a current file back to schema version 8: the column
  * version 9 added (what a run measured), dropped (set user_version after
  * it). */
-#define STORE_FIXTURE_UNDO_V9 \
+#define STORE_FIXTURE_UNDO_V9 STORE_FIXTURE_UNDO_V10 \
     "ALTER TABLE runs DROP COLUMN measured;"
 
 /* SQL that takes a current file back to schema version 7: the tables and

@@ -135,7 +135,8 @@ static void test_columns_table(void **state)
         "dp_moulds", "largest_family", "single_moulds", "area_cost",
         "panel_cost", "joint_cost", "mould_cost", "max_gap", "mean_gap",
         "max_kink", "mean_kink", "gaps_over", "kinks_over", "sp_misfits",
-        "sp_fitted", "module_w", "module_h", "modules", "run",
+        "sp_fitted", "module_w", "module_h", "modules", "sp_min_radius",
+        "run",
     };
     for (int k = 0; k < NCOLUMNS; k++)
         assert_string_equal(option_quantities[k].name, expected[k]);
@@ -526,7 +527,8 @@ static void test_error_positions(void **state)
                            "moulds, {sp,dp,single}_moulds, largest_family, "
                            "{max,mean}_gap, {max,mean}_kink, "
                            "{gaps,kinks}_over, sp_misfits, sp_fitted, "
-                           "module_w, module_h, modules, run, u, v, "
+                           "module_w, module_h, modules, sp_min_radius, "
+                           "run, u, v, "
                            "threshold, pareto, CLASS_{count,area})");
 }
 

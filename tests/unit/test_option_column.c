@@ -92,6 +92,7 @@ static struct option_row option_k(int k)
     t->kinks_over = (size_t)(17 + k);
     t->sp_misfits = (size_t)(19 + k);
     t->sp_fitted = (size_t)(23 + k);
+    t->sp_min_radius = 4.375 + k;
     o.module_w = 1.25 + k;
     o.module_h = 0.75 + k;
     o.modules = (size_t)(2 + k);
@@ -134,6 +135,7 @@ static double by_hand(const struct option_row *o, const char *name)
         {"kinks_over", (double)t->kinks_over},
         {"sp_misfits", (double)t->sp_misfits},
         {"sp_fitted", (double)t->sp_fitted},
+        {"sp_min_radius", t->sp_min_radius},
         {"module_w", o->module_w},
         {"module_h", o->module_h},
         {"modules", (double)o->modules},
@@ -236,7 +238,7 @@ static void test_values_read_the_row(void **state)
  * quantities, and an objective's value is its column's: the front a run
  * ranks by is the front the tables show. The names users' scripts give
  * --objectives (the nineteen of every Facet since schema v7) all still
- * parse. */
+ * parse, and sp_min_radius (schema v10). */
 static void test_metrics_are_columns(void **state)
 {
     (void)state;
@@ -245,7 +247,8 @@ static void test_metrics_are_columns(void **state)
         "cost", "planarity", "dp_area", "fp_area", "sp_area", "panels",
         "fp_count", "sp_count", "dp_count", "max_deviation",
         "max_panel_area", "p_dist", "moulds", "sp_moulds", "dp_moulds",
-        "joint_length", "max_gap", "max_kink", "sp_misfits"};
+        "joint_length", "max_gap", "max_kink", "sp_misfits",
+        "sp_min_radius"};
     int objectives = 0;
     for (int k = 0; k < OPTION_QUANTITIES; k++)
         objectives += option_quantities[k].objective;
@@ -480,6 +483,9 @@ static const char *stored_unit_by_name(const char *name)
         return "m^4";
     /* a project's module, its width and height in m (docs/store.md) */
     if (strcmp(name, "module_w") == 0 || strcmp(name, "module_h") == 0)
+        return "m";
+    /* a radius in m (docs/store.md) */
+    if (strcmp(name, "sp_min_radius") == 0)
         return "m";
     /* a joint's gap in mm, its kink in degrees (docs/method.md: Panels as
      * built) */

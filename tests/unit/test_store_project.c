@@ -271,7 +271,7 @@ static void test_migrates_v7(void **state)
                                                2, &err), FACET_OK);
     store_close(store);
     assert_true(sql_number("SELECT user_version FROM pragma_user_version")
-                == 9);
+                == 10);
     assert_true(sql_number("SELECT count(*) FROM option_surfaces") == 2);
     assert_true(sql_number("SELECT count(*) FROM options WHERE run = 1 AND"
                            " module_w IS NULL") == 4);
