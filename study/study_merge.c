@@ -270,17 +270,18 @@ static int by_number(const void *a, const void *b)
 /* By design point (to a thousandth of a millimetre, as the search tells
  * points apart), then shard and number: the first of equal points is
  * the one met first in shard order. */
+static struct design_point point_of(const struct option_row *row)
+{
+    return (struct design_point){row->nu, row->nv, row->threshold_mm};
+}
+
 static int by_point(const void *a, const void *b)
 {
     const struct merged_row *p = a, *q = b;
-    long long tp = llround(p->row.threshold_mm * 1000);
-    long long tq = llround(q->row.threshold_mm * 1000);
-    if (p->row.nu != q->row.nu)
-        return p->row.nu < q->row.nu ? -1 : 1;
-    if (p->row.nv != q->row.nv)
-        return p->row.nv < q->row.nv ? -1 : 1;
-    if (tp != tq)
-        return tp < tq ? -1 : 1;
+    struct design_point pp = point_of(&p->row), qp = point_of(&q->row);
+    int order = design_point_compare(&pp, &qp);
+    if (order != 0)
+        return order;
     if (p->shard != q->shard)
         return p->shard < q->shard ? -1 : 1;
     return (p->row.number > q->row.number) - (p->row.number < q->row.number);
@@ -288,8 +289,8 @@ static int by_point(const void *a, const void *b)
 
 static int same_point(const struct option_row *a, const struct option_row *b)
 {
-    return a->nu == b->nu && a->nv == b->nv &&
-           llround(a->threshold_mm * 1000) == llround(b->threshold_mm * 1000);
+    struct design_point pa = point_of(a), pb = point_of(b);
+    return design_point_compare(&pa, &pb) == 0;
 }
 
 static int by_shard(const void *a, const void *b)

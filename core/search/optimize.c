@@ -410,19 +410,37 @@ int optimize_evaluate_panels(const struct surface *surface,
 
 /* --- the point cache and batches --- */
 
-static uint64_t point_key_hash(const struct design_point *p)
+/* The threshold as design points are told apart by: in thousandths of a
+ * millimetre. */
+static long long threshold_key(double threshold_mm)
+{
+    return llround(threshold_mm * 1000);
+}
+
+uint64_t design_point_hash(const struct design_point *p)
 {
     uint64_t h = (uint64_t)p->nu * 0x9E3779B97F4A7C15ull;
     h ^= (uint64_t)p->nv * 0xC2B2AE3D27D4EB4Full + (h << 6);
-    h ^= (uint64_t)llround(p->threshold_mm * 1000) * 0x165667B19E3779F9ull;
+    h ^= (uint64_t)threshold_key(p->threshold_mm) * 0x165667B19E3779F9ull;
     return h ^ (h >> 31);
+}
+
+int design_point_compare(const struct design_point *a,
+                         const struct design_point *b)
+{
+    if (a->nu != b->nu)
+        return a->nu < b->nu ? -1 : 1;
+    if (a->nv != b->nv)
+        return a->nv < b->nv ? -1 : 1;
+    long long ta = threshold_key(a->threshold_mm);
+    long long tb = threshold_key(b->threshold_mm);
+    return (ta > tb) - (ta < tb);
 }
 
 static int same_point(const struct design_point *a,
                       const struct design_point *b)
 {
-    return a->nu == b->nu && a->nv == b->nv &&
-           llround(a->threshold_mm * 1000) == llround(b->threshold_mm * 1000);
+    return design_point_compare(a, b) == 0;
 }
 
 int search_init(struct search *s, const struct option_evaluator *evaluator,
@@ -449,7 +467,7 @@ int search_init(struct search *s, const struct option_evaluator *evaluator,
         s->slot[k] = SIZE_MAX;
     for (size_t k = 0; k < nstored; k++) {
         s->known[s->nknown] = stored[k];
-        size_t h = point_key_hash(&stored[k].point) & (s->capacity - 1);
+        size_t h = design_point_hash(&stored[k].point) & (s->capacity - 1);
         while (s->slot[h] != SIZE_MAX)
             h = (h + 1) & (s->capacity - 1);
         s->slot[h] = s->nknown++;
@@ -474,7 +492,7 @@ void search_canonical(const struct search *s, struct design_point *p)
 /* The index into known of point p, or SIZE_MAX. */
 static size_t search_find(const struct search *s, const struct design_point *p)
 {
-    size_t h = point_key_hash(p) & (s->capacity - 1);
+    size_t h = design_point_hash(p) & (s->capacity - 1);
     while (s->slot[h] != SIZE_MAX) {
         if (same_point(&s->known[s->slot[h]].point, p))
             return s->slot[h];
@@ -509,7 +527,7 @@ static int search_grow(struct search *s, size_t more, struct facet_error *err)
         for (size_t k = 0; k < capacity; k++)
             slot[k] = SIZE_MAX;
         for (size_t k = 0; k < s->nknown; k++) {
-            size_t h = point_key_hash(&s->known[k].point) & (capacity - 1);
+            size_t h = design_point_hash(&s->known[k].point) & (capacity - 1);
             while (slot[h] != SIZE_MAX)
                 h = (h + 1) & (capacity - 1);
             slot[h] = k;
@@ -538,7 +556,7 @@ int search_batch(struct search *s, const struct design_point *points,
             memset(o, 0, sizeof *o);
             o->point = point;
             o->generation = generation;
-            size_t h = point_key_hash(&point) & (s->capacity - 1);
+            size_t h = design_point_hash(&point) & (s->capacity - 1);
             while (s->slot[h] != SIZE_MAX)
                 h = (h + 1) & (s->capacity - 1);
             s->slot[h] = found = s->nknown++;
@@ -780,7 +798,7 @@ static int drawn_add(struct drawn_set *d, const struct design_point *p,
         for (size_t k = 0; k < d->capacity; k++) {
             if (!d->used[k])
                 continue;
-            size_t h = point_key_hash(&d->point[k]) & (grown.capacity - 1);
+            size_t h = design_point_hash(&d->point[k]) & (grown.capacity - 1);
             while (grown.used[h])
                 h = (h + 1) & (grown.capacity - 1);
             grown.point[h] = d->point[k];
@@ -790,7 +808,7 @@ static int drawn_add(struct drawn_set *d, const struct design_point *p,
         drawn_free(d);
         *d = grown;
     }
-    size_t h = point_key_hash(p) & (d->capacity - 1);
+    size_t h = design_point_hash(p) & (d->capacity - 1);
     while (d->used[h]) {
         if (same_point(&d->point[h], p)) {
             *fresh = 0;

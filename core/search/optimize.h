@@ -41,6 +41,16 @@ struct design_point {
     double threshold_mm;
 };
 
+/* Whether two design points are the same, the one rule every search,
+ * resume and merge tells points apart by: the same grid and the same
+ * threshold to a thousandth of a millimetre (the finest step a design
+ * space takes). design_point_compare orders points by grid, then that
+ * threshold, and is 0 exactly when they are the same; design_point_hash
+ * is equal for the same points. */
+int design_point_compare(const struct design_point *a,
+                         const struct design_point *b);
+uint64_t design_point_hash(const struct design_point *p);
+
 enum optimize_method { METHOD_EXHAUSTIVE, METHOD_RANDOM, METHOD_NSGA2 };
 
 struct optimize_settings {
