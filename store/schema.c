@@ -332,10 +332,12 @@ static const char schema_v9[] =
     "ALTER TABLE runs ADD COLUMN measured TEXT;";
 
 /* Version 10: the smallest radius an option's SP panels are bent to (m),
- * measured with the fits; NULL where not measured, for an option with no
- * panel built SP, and for every option stored before. */
+ * measured with the fits, for the option and for each surface of a
+ * building's; NULL where not measured, where no panel is built SP, and
+ * for every option stored before. */
 static const char schema_v10[] =
-    "ALTER TABLE options ADD COLUMN sp_min_radius REAL;";
+    "ALTER TABLE options ADD COLUMN sp_min_radius REAL;"
+    "ALTER TABLE option_surfaces ADD COLUMN sp_min_radius REAL;";
 
 static const char *const migrations[STORE_SCHEMA_VERSION] = {
     schema_v1,

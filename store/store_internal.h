@@ -58,6 +58,20 @@ void store_bind_or_null(sqlite3_stmt *stmt, int col, double value);
 /* Column col of the current row, NaN when it is NULL. */
 double store_column_or_nan(sqlite3_stmt *stmt, int col);
 
+struct quantity;
+
+/* Binds the value of quantity q held at field (its type q->field) to
+ * parameter col: a double as is (NaN, not measured, is NULL), a count of
+ * TOTALS_UNKNOWN as NULL. */
+void store_bind_quantity(sqlite3_stmt *stmt, int col, const struct quantity *q,
+                         const void *field);
+
+/* Reads result column col into field as q holds it: NULL is NaN for a
+ * double and TOTALS_UNKNOWN for a count (not measured, or a column added
+ * after the row was stored; never 0). */
+void store_read_quantity(sqlite3_stmt *stmt, int col, const struct quantity *q,
+                         void *field);
+
 /* Brings a database at schema version `from` (0 = empty) up to `to`,
  * one migration at a time, each in its own transaction. */
 int store_schema_migrate(struct store *store, int from, int to,

@@ -69,18 +69,41 @@ static void option_bind(sqlite3_stmt *s, int64_t run,
         const void *field = (const char *)o + c->offset;
         if (!project && is_module_column(c))
             sqlite3_bind_null(s, p++);
-        else if (c->field == FIELD_DOUBLE)
-            sqlite3_bind_double(s, p++, *(const double *)field);
-        else if (c->field == FIELD_INT)
-            sqlite3_bind_int(s, p++, *(const int *)field);
-        else if (c->field == FIELD_INT64)
-            sqlite3_bind_int64(s, p++, *(const int64_t *)field);
-        else if (*(const size_t *)field == TOTALS_UNKNOWN)
-            sqlite3_bind_null(s, p++);  /* as it was read */
         else
-            sqlite3_bind_int64(s, p++,
-                               (sqlite3_int64)*(const size_t *)field);
+            store_bind_quantity(s, p++, c, field);
     }
+}
+
+void store_bind_quantity(sqlite3_stmt *s, int p, const struct quantity *c,
+                         const void *field)
+{
+    if (c->field == FIELD_DOUBLE)
+        sqlite3_bind_double(s, p, *(const double *)field);
+    else if (c->field == FIELD_INT)
+        sqlite3_bind_int(s, p, *(const int *)field);
+    else if (c->field == FIELD_INT64)
+        sqlite3_bind_int64(s, p, *(const int64_t *)field);
+    else if (*(const size_t *)field == TOTALS_UNKNOWN)
+        sqlite3_bind_null(s, p);  /* as it was read */
+    else
+        sqlite3_bind_int64(s, p, (sqlite3_int64)*(const size_t *)field);
+}
+
+void store_read_quantity(sqlite3_stmt *s, int c, const struct quantity *col,
+                         void *field)
+{
+    if (col->field == FIELD_DOUBLE)
+        /* NULL: a column added after the option was stored. */
+        *(double *)field = store_column_or_nan(s, c);
+    else if (col->field == FIELD_INT)
+        *(int *)field = sqlite3_column_int(s, c);
+    else if (col->field == FIELD_INT64)
+        *(int64_t *)field = sqlite3_column_int64(s, c);
+    else if (sqlite3_column_type(s, c) == SQLITE_NULL)
+        /* a count added after the option was stored: not known, never 0 */
+        *(size_t *)field = TOTALS_UNKNOWN;
+    else
+        *(size_t *)field = (size_t)sqlite3_column_int64(s, c);
 }
 
 /* Reads a row of the columns of option_columns_sql (SELECT) starting at
@@ -95,22 +118,10 @@ static void option_from_row(sqlite3_stmt *s, int first,
         if (col->writer == WRITTEN_AS_KEY)
             continue;
         void *field = (char *)o + col->offset;
-        if (col->field == FIELD_DOUBLE &&
-            col->offset != offsetof(struct option_row, crowding))
-            /* NULL: a column added after the option was stored. */
-            *(double *)field = store_column_or_nan(s, c);
-        else if (col->field == FIELD_DOUBLE)
+        if (col->offset == offsetof(struct option_row, crowding))
             *(double *)field = sqlite3_column_double(s, c);
-        else if (col->field == FIELD_INT)
-            *(int *)field = sqlite3_column_int(s, c);
-        else if (col->field == FIELD_INT64)
-            *(int64_t *)field = sqlite3_column_int64(s, c);
-        else if (sqlite3_column_type(s, c) == SQLITE_NULL)
-            /* a count added after the option was stored: not known,
-             * never 0 */
-            *(size_t *)field = TOTALS_UNKNOWN;
         else
-            *(size_t *)field = (size_t)sqlite3_column_int64(s, c);
+            store_read_quantity(s, c, col, field);
         if (col->offset == offsetof(struct option_row, crowding))
             crowding = c;
         c++;

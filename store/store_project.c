@@ -5,12 +5,15 @@
  */
 #include "store_internal.h"
 
+#include <assert.h>
 #include <math.h>
+#include <stddef.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "core/base/text.h"
+#include "core/quantity/quantity.h"
 
 int store_run_is_project(const struct run_info *run)
 {
@@ -166,16 +169,36 @@ int store_surfaces_get(struct store *store, int64_t run,
     return rc;
 }
 
-/* The columns of option_surfaces after (run, option, surface), in the
- * order surface_bind writes and surface_from_row reads them. */
-#define SURFACE_COLUMNS \
-    "nu, nv, panels, fp_count, sp_count, dp_count, fp_area, sp_area," \
-    " dp_area, area, cost, area_cost, panel_cost, joint_cost, mould_cost," \
-    " planarity, max_deviation, max_panel_area, p_dist, joint_length," \
-    " moulds, sp_moulds, dp_moulds, moulds_used, max_gap, mean_gap," \
-    " max_kink, mean_kink, joints, gaps_over, kinks_over, sp_misfits," \
-    " feasible"
-#define SURFACE_VALUES 33
+/* Where quantity q of a surface's row is: its field in the row's totals. */
+static void *surface_field(const struct quantity *q,
+                           struct option_surface_row *r)
+{
+    return (char *)&r->totals + (q->offset - offsetof(struct option_row,
+                                                      totals));
+}
+
+/* The columns of option_surfaces after (run, option, surface) into sql
+ * (size bytes): the row's own (nu, nv, moulds_used, joints), then every
+ * quantity kept per surface (quantity.h's per_surface), in the registry's
+ * order, as surface_bind writes and surface_from_row reads them. Returns
+ * how many. */
+static int surface_columns_sql(char *sql, size_t size)
+{
+    size_t len = (size_t)snprintf(sql, size, "nu, nv, moulds_used, joints");
+    int n = 4;
+    for (int k = 0; k < OPTION_QUANTITIES; k++) {
+        const struct quantity *q = &option_quantities[k];
+        if (!q->per_surface)
+            continue;
+        assert(quantity_in_totals(q));
+        len += (size_t)snprintf(sql + len, size - len, ", %s", q->name);
+        assert(len < size);
+        n++;
+    }
+    return n;
+}
+
+#define SURFACE_COLUMNS_SQL 2048
 
 int store_option_surfaces_insert(struct store *store, int64_t run,
                                  int64_t number,
@@ -183,52 +206,31 @@ int store_option_surfaces_insert(struct store *store, int64_t run,
                                  size_t n, struct facet_error *err)
 {
     const char *doing = "storing an option's surfaces";
-    char sql[1024];
+    char columns[SURFACE_COLUMNS_SQL], sql[SURFACE_COLUMNS_SQL + 1024];
+    int values = surface_columns_sql(columns, sizeof columns);
     int len = snprintf(sql, sizeof sql,
                        "INSERT INTO option_surfaces (run, option, surface, "
-                       SURFACE_COLUMNS ") VALUES (?1, ?2, ?3");
-    for (int k = 0; k < SURFACE_VALUES; k++)
+                       "%s) VALUES (?1, ?2, ?3", columns);
+    for (int k = 0; k < values; k++)
         len += snprintf(sql + len, sizeof sql - (size_t)len, ", ?%d", 4 + k);
     snprintf(sql + len, sizeof sql - (size_t)len, ")");
     sqlite3_stmt *s;
     int rc = store_prepare(store, sql, &s, doing, err);
     for (size_t i = 0; rc == FACET_OK && i < n; i++) {
-        const struct option_surface_row *r = &rows[i];
-        const struct option_totals *t = &r->totals;
+        struct option_surface_row r = rows[i];
         sqlite3_reset(s);
         int p = 1;
         sqlite3_bind_int64(s, p++, run);
         sqlite3_bind_int64(s, p++, number);
         sqlite3_bind_int64(s, p++, (int64_t)i);
-        sqlite3_bind_int(s, p++, r->nu);
-        sqlite3_bind_int(s, p++, r->nv);
-        const size_t counts_a[] = {t->panels, t->count[TYPE_FP],
-                                   t->count[TYPE_SP], t->count[TYPE_DP]};
-        for (int k = 0; k < 4; k++)
-            sqlite3_bind_int64(s, p++, (int64_t)counts_a[k]);
-        const double money[] = {
-            t->area_of[TYPE_FP], t->area_of[TYPE_SP], t->area_of[TYPE_DP],
-            t->area, t->cost, t->area_cost, t->panel_cost, t->joint_cost,
-            t->mould_cost, t->planarity, t->max_deviation,
-            t->max_panel_area, t->p_dist, t->joint_length};
-        for (size_t k = 0; k < sizeof money / sizeof *money; k++)
-            sqlite3_bind_double(s, p++, money[k]);
-        const int64_t moulds[] = {(int64_t)t->moulds,
-                                  (int64_t)t->moulds_of[TYPE_SP],
-                                  (int64_t)t->moulds_of[TYPE_DP],
-                                  r->moulds_used};
-        for (int k = 0; k < 4; k++)
-            sqlite3_bind_int64(s, p++, moulds[k]);
-        const double joints[] = {t->max_gap_mm, t->mean_gap_mm,
-                                 t->max_kink_deg, t->mean_kink_deg};
-        for (int k = 0; k < 4; k++)
-            store_bind_or_null(s, p++, joints[k]);
-        sqlite3_bind_int64(s, p++, r->joints);
-        const size_t counts_b[] = {t->gaps_over, t->kinks_over,
-                                   t->sp_misfits};
-        for (int k = 0; k < 3; k++)
-            sqlite3_bind_int64(s, p++, (int64_t)counts_b[k]);
-        sqlite3_bind_int(s, p++, t->feasible);
+        sqlite3_bind_int(s, p++, r.nu);
+        sqlite3_bind_int(s, p++, r.nv);
+        sqlite3_bind_int64(s, p++, r.moulds_used);
+        sqlite3_bind_int64(s, p++, r.joints);
+        for (int k = 0; k < OPTION_QUANTITIES; k++)
+            if (option_quantities[k].per_surface)
+                store_bind_quantity(s, p++, &option_quantities[k],
+                                    surface_field(&option_quantities[k], &r));
         if (sqlite3_step(s) != SQLITE_DONE)
             rc = store_fail(store, doing, err);
     }
@@ -245,9 +247,11 @@ int store_option_surfaces_get(struct store *store, int64_t run,
     *rows = NULL;
     *n = 0;
     sqlite3_stmt *s;
-    int rc = store_prepare(store,
-        "SELECT " SURFACE_COLUMNS " FROM option_surfaces"
-        " WHERE run = ?1 AND option = ?2 ORDER BY surface", &s, doing, err);
+    char columns[SURFACE_COLUMNS_SQL], sql[SURFACE_COLUMNS_SQL + 256];
+    surface_columns_sql(columns, sizeof columns);
+    snprintf(sql, sizeof sql, "SELECT %s FROM option_surfaces"
+             " WHERE run = ?1 AND option = ?2 ORDER BY surface", columns);
+    int rc = store_prepare(store, sql, &s, doing, err);
     if (rc != FACET_OK)
         return rc;
     sqlite3_bind_int64(s, 1, run);
@@ -266,36 +270,16 @@ int store_option_surfaces_get(struct store *store, int64_t run,
             *rows = grown;
         }
         struct option_surface_row *r = &(*rows)[(*n)++];
-        struct option_totals *t = &r->totals;
         memset(r, 0, sizeof *r);
         int c = 0;
         r->nu = sqlite3_column_int(s, c++);
         r->nv = sqlite3_column_int(s, c++);
-        size_t *counts_a[] = {&t->panels, &t->count[TYPE_FP],
-                              &t->count[TYPE_SP], &t->count[TYPE_DP]};
-        for (int k = 0; k < 4; k++)
-            *counts_a[k] = (size_t)sqlite3_column_int64(s, c++);
-        double *money[] = {
-            &t->area_of[TYPE_FP], &t->area_of[TYPE_SP], &t->area_of[TYPE_DP],
-            &t->area, &t->cost, &t->area_cost, &t->panel_cost,
-            &t->joint_cost, &t->mould_cost, &t->planarity,
-            &t->max_deviation, &t->max_panel_area, &t->p_dist,
-            &t->joint_length};
-        for (size_t k = 0; k < sizeof money / sizeof *money; k++)
-            *money[k] = sqlite3_column_double(s, c++);
-        t->moulds = (size_t)sqlite3_column_int64(s, c++);
-        t->moulds_of[TYPE_SP] = (size_t)sqlite3_column_int64(s, c++);
-        t->moulds_of[TYPE_DP] = (size_t)sqlite3_column_int64(s, c++);
         r->moulds_used = sqlite3_column_int64(s, c++);
-        t->max_gap_mm = store_column_or_nan(s, c++);
-        t->mean_gap_mm = store_column_or_nan(s, c++);
-        t->max_kink_deg = store_column_or_nan(s, c++);
-        t->mean_kink_deg = store_column_or_nan(s, c++);
         r->joints = sqlite3_column_int64(s, c++);
-        t->gaps_over = (size_t)sqlite3_column_int64(s, c++);
-        t->kinks_over = (size_t)sqlite3_column_int64(s, c++);
-        t->sp_misfits = (size_t)sqlite3_column_int64(s, c++);
-        t->feasible = sqlite3_column_int(s, c++);
+        for (int k = 0; k < OPTION_QUANTITIES; k++)
+            if (option_quantities[k].per_surface)
+                store_read_quantity(s, c++, &option_quantities[k],
+                                    surface_field(&option_quantities[k], r));
     }
     if (rc == FACET_OK && step != SQLITE_DONE)
         rc = store_fail(store, doing, err);

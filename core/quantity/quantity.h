@@ -15,7 +15,8 @@
  *   - the stage of the evaluation that measures it (measure: option.h's
  *     option_measure bits; 0 for what classifying the panels gives), so a
  *     run that does not need the stage leaves it NULL, "not measured";
- *   - whether it can be an objective (objective).
+ *   - whether it can be an objective (objective), and whether a
+ *     building's option keeps it for each of its surfaces (per_surface).
  * Everything that names, reads, combines or shows an option's number takes
  * it from here: the store's INSERT and SELECT lists and its migrations'
  * check (store/), --where and --sort (store/filter.c), the objectives
@@ -28,8 +29,9 @@
  *      its computation in the stage that measures it;
  *   2. one row of option_quantities (quantity.c), after modules and before
  *      run: the table's order, as ALTER TABLE appends;
- *   3. the schema migration that adds its column (store/schema.c), and its
- *      line in the options table of docs/store.md.
+ *   3. the schema migration that adds its column (store/schema.c) to
+ *      options, and to option_surfaces when per_surface, and its line in
+ *      the options table of docs/store.md.
  * test_option_column fails until the rows and the store's table agree
  * (pragma_table_info), reads every row back through SQLite, and checks
  * that --where, --sort and the building's totals take the new row.
@@ -106,6 +108,8 @@ struct quantity {
                               for a price (what a price needs measured is
                               option_measures_needed's) */
     int objective;         /* can be minimised or maximised (metric.h) */
+    int per_surface;       /* a building's option keeps it for each
+                              surface too (the store's option_surfaces) */
 };
 
 /* Every column of the options table, in its order (pragma_table_info) but

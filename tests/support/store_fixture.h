@@ -18,7 +18,8 @@ void store_fixture_run(struct run_info *run);
  * version 10 added (the smallest SP bending radius), dropped (set
  * user_version after it). */
 #define STORE_FIXTURE_UNDO_V10 \
-    "ALTER TABLE options DROP COLUMN sp_min_radius;"
+    "ALTER TABLE options DROP COLUMN sp_min_radius;" \
+    "ALTER TABLE option_surfaces DROP COLUMN sp_min_radius;"
 
 /* SQL that takes a current file back to schema version 8: the column
  * version 9 added (what a run measured), dropped (set user_version after

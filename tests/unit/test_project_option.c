@@ -439,7 +439,7 @@ static void test_skin_brute_force(void **state)
 
     struct option_totals sum;
     memset(&sum, 0, sizeof sum);
-    double mean_gap = 0, mean_kink = 0;
+    double mean_gap = 0, mean_kink = 0, min_radius = INFINITY;
     size_t alone_moulds = 0, started = 0, all_joints = 0;
     for (size_t i = 0; i < p.nsurfaces; i++) {
         struct option_params own = params;
@@ -478,6 +478,8 @@ static void test_skin_brute_force(void **state)
         sum.gaps_over += t.gaps_over;
         sum.kinks_over += t.kinks_over;
         sum.sp_misfits += t.sp_misfits;
+        if (!isnan(t.sp_min_radius))
+            min_radius = fmin(min_radius, t.sp_min_radius);
         /* Every cell of a face is a panel: each side between two is a
          * joint. */
         size_t joints = (size_t)(g[i].nu - 1) * (size_t)g[i].nv +
@@ -506,6 +508,11 @@ static void test_skin_brute_force(void **state)
     assert_int_equal(b->gaps_over, sum.gaps_over);
     assert_int_equal(b->kinks_over, sum.kinks_over);
     assert_int_equal(b->sp_misfits, sum.sp_misfits);
+    /* The least of the surfaces' that have SP panels built. */
+    if (isinf(min_radius))
+        assert_true(isnan(b->sp_min_radius));
+    else
+        same_bits(b->sp_min_radius, min_radius, "smallest SP radius");
     assert_int_equal(option.joints, all_joints);
     assert_true(relative(b->mean_gap_mm, mean_gap / (double)all_joints) <
                 1e-12);

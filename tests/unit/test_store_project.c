@@ -100,6 +100,8 @@ static void option_of(int k, struct option_row *row,
         s->totals.max_gap_mm = NAN;  /* not measured: NULL */
         s->totals.max_kink_deg = 0.5 * i;
         s->totals.feasible = i;
+        /* schema v10's, kept per surface; none on the second surface */
+        s->totals.sp_min_radius = i ? NAN : 2.5 + k;
         s->moulds_used = 5 + i;
         s->joints = 40 + i;
         row->totals.panels += s->totals.panels;
@@ -165,6 +167,8 @@ static void test_project_rows_round_trip(void **state)
         assert_int_equal(got[i].joints, per[1][i].joints);
         assert_true(isnan(got[i].totals.max_gap_mm));
         assert_int_equal(got[i].totals.feasible, i);
+        assert_true(i ? isnan(got[i].totals.sp_min_radius)
+                      : got[i].totals.sp_min_radius == 4.5);
     }
     free(got);
     struct option_row row;
@@ -186,6 +190,10 @@ static void test_project_rows_round_trip(void **state)
     assert_true(sql_number("SELECT max(nu) FROM option_surfaces") == 31);
     assert_true(sql_number("SELECT count(*) FROM option_surfaces"
                            " WHERE max_gap IS NULL") == 6);
+    assert_true(sql_number("SELECT sp_min_radius FROM option_surfaces"
+                           " WHERE option = 2 AND surface = 0") == 4.5);
+    assert_true(sql_number("SELECT count(*) FROM option_surfaces"
+                           " WHERE sp_min_radius IS NULL") == 3);
     assert_true(sql_number("SELECT sum(panels) FROM option_surfaces"
                            " WHERE option = 2") ==
                 sql_number("SELECT panels FROM options WHERE number = 2"));
