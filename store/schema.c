@@ -552,7 +552,7 @@ static int use_wal(struct store *store, struct facet_error *err)
         int code = sqlite3_errcode(store->db);
         if ((step == SQLITE_ROW || code == SQLITE_BUSY ||
              code == SQLITE_LOCKED) && attempt < 200) {
-            struct timespec pause = {0, 50 * 1000 * 1000};
+            struct timespec pause = {0, 50000000};  /* 50 ms */
             nanosleep(&pause, NULL);
             continue;
         }

@@ -3,6 +3,7 @@
  * panel_sets and panels tables). See store.h.
  */
 #include "store_internal.h"
+#include "core/base/units.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -176,7 +177,7 @@ int store_panels_get(struct store *store, int64_t run, int64_t option,
         p->umax = sqlite3_column_double(s, 4);
         p->vmax = sqlite3_column_double(s, 5);
         p->npanels = (size_t)sqlite3_column_int64(s, 6);
-        p->threshold = store_column_or_nan(s, 7) / 1000;
+        p->threshold = units_m_of_mm(store_column_or_nan(s, 7));
     }
     sqlite3_finalize(s);
     if (step == SQLITE_DONE)

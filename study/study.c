@@ -20,6 +20,7 @@
 #include "core/base/parallel.h"
 #include "core/base/sha256.h"
 #include "core/base/text.h"
+#include "core/base/units.h"
 
 /* What the optimiser's hooks need to reach the store. */
 struct study_state {
@@ -213,14 +214,14 @@ static void costs_from_run(struct option_params *params,
     memcpy(params->classify.mould_cost, run->mould_cost,
            sizeof run->mould_cost);
     params->mould_tol_given = !isnan(run->mould_tol_mm);
-    params->mould_tol = params->mould_tol_given ? run->mould_tol_mm / 1000
-                                                : 0;
+    params->mould_tol = params->mould_tol_given
+                            ? units_m_of_mm(run->mould_tol_mm) : 0;
     params->mould_mirror = run->mould_mirror;
     params->classify.sp_by_class = !run->sp_fit;
-    params->classify.max_gap = isnan(run->max_gap_mm) ? 0
-                                                      : run->max_gap_mm / 1000;
+    params->classify.max_gap = isnan(run->max_gap_mm)
+                                  ? 0 : units_m_of_mm(run->max_gap_mm);
     params->classify.max_kink = isnan(run->max_kink_deg)
-                                    ? 0 : run->max_kink_deg * M_PI / 180;
+                                    ? 0 : units_rad_of_deg(run->max_kink_deg);
 }
 
 static void costs_to_run(struct run_info *run,
@@ -230,14 +231,14 @@ static void costs_to_run(struct run_info *run,
     run->joint_cost = params->classify.joint_cost;
     memcpy(run->mould_cost, params->classify.mould_cost,
            sizeof run->mould_cost);
-    run->mould_tol_mm = params->mould_tol_given ? params->mould_tol * 1000
-                                                : NAN;
+    run->mould_tol_mm = params->mould_tol_given
+                           ? units_mm(params->mould_tol) : NAN;
     run->mould_mirror = params->mould_mirror;
     run->sp_fit = !params->classify.sp_by_class;
     run->max_gap_mm = params->classify.max_gap > 0
-                          ? params->classify.max_gap * 1000 : NAN;
+                          ? units_mm(params->classify.max_gap) : NAN;
     run->max_kink_deg = params->classify.max_kink > 0
-                            ? params->classify.max_kink * 180 / M_PI : NAN;
+                            ? units_deg(params->classify.max_kink) : NAN;
 }
 
 int study_settings(const struct run_info *run,
@@ -576,8 +577,9 @@ static double disk_free_bytes(const char *db_path)
 /* bytes as a person reads them: "850 kB", "12.3 MB", "4.1 GB". */
 static void format_bytes(double bytes, char *out, size_t size)
 {
+    const double kilobyte = 1000;
     if (bytes < 1e6)
-        snprintf(out, size, "%.0f kB", bytes / 1e3);
+        snprintf(out, size, "%.0f kB", bytes / kilobyte);
     else if (bytes < 1e9)
         snprintf(out, size, "%.1f MB", bytes / 1e6);
     else

@@ -11,6 +11,7 @@
 #include "core/base/exact_sum.h"
 #include "core/base/numparse.h"
 #include "core/fit/sp_fit.h"
+#include "core/base/units.h"
 
 double totals_count(size_t count)
 {
@@ -285,7 +286,7 @@ int classify_check_options(const struct classify_options *options,
     if (!isfinite(options->threshold) || options->threshold < 0)
         return facet_error_set(err, FACET_EINPUT,
             "threshold %g mm is not a length (give 0 or more)",
-            options->threshold * 1000);
+            units_mm(options->threshold));
     if (!isfinite(options->curvature_tol) || options->curvature_tol < 0)
         return facet_error_set(err, FACET_EINPUT,
             "curvature tolerance %g 1/m must be 0 or more",
@@ -298,11 +299,11 @@ int classify_check_options(const struct classify_options *options,
     if (!isfinite(options->max_gap) || options->max_gap < 0)
         return facet_error_set(err, FACET_EINPUT,
             "gap limit %g mm must be 0 (none) or more",
-            options->max_gap * 1000);
+            units_mm(options->max_gap));
     if (!isfinite(options->max_kink) || options->max_kink < 0)
         return facet_error_set(err, FACET_EINPUT,
             "kink limit %g degrees must be 0 (none) or more",
-            options->max_kink * 180 / M_PI);
+            units_deg(options->max_kink));
     if (!isfinite(options->max_panel_area) || options->max_panel_area <= 0)
         return facet_error_set(err, FACET_EINPUT,
             "maximum panel area %g m^2 must be more than 0",

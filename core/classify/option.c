@@ -14,6 +14,7 @@
 #include "core/joint/joint_length.h"
 #include "core/mould/mould.h"
 #include "core/quantity/quantity.h"
+#include "core/base/units.h"
 
 struct mould_options option_mould_options(const struct option_params *params)
 {
@@ -110,7 +111,7 @@ struct option_params option_params_at(const struct option_params *base,
     struct option_params params = *base;
     params.nu = nu;
     params.nv = nv;
-    params.classify.threshold = threshold_mm / 1000;
+    params.classify.threshold = units_m_of_mm(threshold_mm);
     return params;
 }
 
@@ -341,10 +342,10 @@ static int build_and_measure(const struct surface *surface,
             panel->sp_deviation = b->sp_deviation;
             panel->best_cylinder = b->best_cylinder;
             panel->best_cone = b->best_cone;
-            panel->worst_gap_mm = measure_joints ? joints.worst_gap[k] * 1000
+            panel->worst_gap_mm = measure_joints ? units_mm(joints.worst_gap[k])
                                                  : NAN;
             panel->worst_kink_deg =
-                measure_joints ? joints.worst_kink[k] * 180 / M_PI : NAN;
+                measure_joints ? units_deg(joints.worst_kink[k]) : NAN;
             if (b->misfit && !options->sp_by_class)
                 panel->type = TYPE_DP;
         }
@@ -362,12 +363,12 @@ static int build_and_measure(const struct surface *surface,
             if (built.panels[k].fitted)
                 totals->sp_min_radius = fmin(totals->sp_min_radius,
                                              built.panels[k].bending_radius);
-        totals->max_gap_mm = measure_joints ? joints.max_gap * 1000 : NAN;
-        totals->mean_gap_mm = measure_joints ? joints.mean_gap * 1000 : NAN;
+        totals->max_gap_mm = measure_joints ? units_mm(joints.max_gap) : NAN;
+        totals->mean_gap_mm = measure_joints ? units_mm(joints.mean_gap) : NAN;
         totals->max_kink_deg =
-            measure_joints ? joints.max_kink * 180 / M_PI : NAN;
+            measure_joints ? units_deg(joints.max_kink) : NAN;
         totals->mean_kink_deg =
-            measure_joints ? joints.mean_kink * 180 / M_PI : NAN;
+            measure_joints ? units_deg(joints.mean_kink) : NAN;
         totals->gaps_over = measure_joints ? joints.gaps_over
                                            : TOTALS_UNKNOWN;
         totals->kinks_over = measure_joints ? joints.kinks_over

@@ -12,6 +12,7 @@
 #include "core/base/sym3.h"
 #include "core/base/vec3.h"
 #include "core/classify/classify.h"
+#include "core/base/units.h"
 
 /* Of a panel's side samples, every FIT_SIDE_STRIDE-th joins the fit (the
  * corners and side midpoints); all count in its deviation. */
@@ -524,7 +525,7 @@ static void millimetres(double metres, char *text, size_t size)
     if (isnan(metres))
         snprintf(text, size, "none");
     else
-        snprintf(text, size, "%.1f mm", metres * 1e3);
+        snprintf(text, size, "%.1f mm", units_mm(metres));
 }
 
 void built_panel_reason(const struct built_option *built, size_t panel,
@@ -540,5 +541,5 @@ void built_panel_reason(const struct built_option *built, size_t panel,
     millimetres(b->best_cone, cone, sizeof cone);
     snprintf(text, size,
              "no cylinder or cone within t = %.1f mm: best cylinder %s, "
-             "best cone %s", built->threshold * 1e3, cylinder, cone);
+             "best cone %s", units_mm(built->threshold), cylinder, cone);
 }

@@ -7,6 +7,7 @@
 
 #include "core/out/json.h"
 #include "core/base/numformat.h"
+#include "core/base/units.h"
 
 /* A count, null when it is not known (TOTALS_UNKNOWN). */
 static void json_count(struct json_writer *w, size_t count)
@@ -93,7 +94,7 @@ void report_json(FILE *out, const struct report_source *source,
     json_key(&w, "nv");        json_integer(&w, panels->nv);
     json_end_object(&w);
     json_key(&w, "threshold_mm");
-    json_number(&w, options->threshold * 1000);
+    json_number(&w, units_mm(options->threshold));
     /* null: the tolerance is 8 t / d^2 per panel (each panel's "eps"). */
     json_key(&w, "curvature_tol");
     if (options->curvature_tol > 0)
@@ -114,9 +115,9 @@ void report_json(FILE *out, const struct report_source *source,
     json_key(&w, "sp_fit");     json_bool(&w, !options->sp_by_class);
     /* null without a limit (json_number writes NaN as null) */
     json_key(&w, "max_gap_mm");
-    json_number(&w, options->max_gap > 0 ? options->max_gap * 1000 : NAN);
+    json_number(&w, options->max_gap > 0 ? units_mm(options->max_gap) : NAN);
     json_key(&w, "max_kink_deg");
-    json_number(&w, options->max_kink > 0 ? options->max_kink * 180 / M_PI
+    json_number(&w, options->max_kink > 0 ? units_deg(options->max_kink)
                                           : NAN);
 
     json_key(&w, "panels");

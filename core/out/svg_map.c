@@ -10,6 +10,7 @@
 #include "core/out/outfile.h"
 #include "core/base/numformat.h"
 #include "core/out/svg.h"
+#include "core/base/units.h"
 
 #define MARGIN 16.0
 #define TITLE_HEIGHT 66.0
@@ -200,7 +201,7 @@ static void write_panel(struct svg *svg, const struct frame *f,
     fprintf(out, "\"><title>panel %d,%d: %s, %s, %s m^2, deviation %.1f mm"
             "</title></path>\n", panel->i, panel->j,
             panel_type_name(panel->type), words, area,
-            panel->deviation * 1000);
+            units_mm(panel->deviation));
 }
 
 /* A panel's worst joint: the panel, its gap (mm) and a key that names

@@ -410,11 +410,22 @@ int optimize_evaluate_panels(const struct surface *surface,
 
 /* --- the point cache and batches --- */
 
-/* The threshold as design points are told apart by: in thousandths of a
- * millimetre. */
+/* The finest step of a threshold, per millimetre: a design space's
+ * thresholds, and the points a search tells apart, are on a grid of
+ * micrometres. */
+#define THRESHOLD_STEPS_PER_MM 1000
+
+/* The threshold as design points are told apart by: in steps of the
+ * grid. */
 static long long threshold_key(double threshold_mm)
 {
-    return llround(threshold_mm * 1000);
+    return llround(threshold_mm * THRESHOLD_STEPS_PER_MM);
+}
+
+double design_point_threshold_on_grid(double threshold_mm)
+{
+    return round(threshold_mm * THRESHOLD_STEPS_PER_MM) /
+           THRESHOLD_STEPS_PER_MM;
 }
 
 uint64_t design_point_hash(const struct design_point *p)
@@ -763,7 +774,7 @@ static void random_point(const struct design_space *space, struct rng *rng,
     } else {
         double t = space->t_min_mm +
                    rng_uniform(rng) * (space->t_max_mm - space->t_min_mm);
-        p->threshold_mm = round(t * 1000) / 1000;
+        p->threshold_mm = design_point_threshold_on_grid(t);
     }
 }
 

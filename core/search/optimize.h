@@ -51,6 +51,10 @@ int design_point_compare(const struct design_point *a,
                          const struct design_point *b);
 uint64_t design_point_hash(const struct design_point *p);
 
+/* threshold_mm on the grid design points lie on: rounded to the nearest
+ * micrometre. */
+double design_point_threshold_on_grid(double threshold_mm);
+
 enum optimize_method { METHOD_EXHAUSTIVE, METHOD_RANDOM, METHOD_NSGA2 };
 
 struct optimize_settings {

@@ -38,7 +38,7 @@ static void point_of_vars(const struct nsga2_context *c, const double *vars,
                                                       space->t_step_mm,
                                space->t_max_mm);
     else
-        p->threshold_mm = round(vars[2] * 1000) / 1000;
+        p->threshold_mm = design_point_threshold_on_grid(vars[2]);
 }
 
 static int evaluate(void *context, size_t count, const double *vars,

@@ -19,6 +19,7 @@
 #include <string.h>
 
 #include "core/base/vec3.h"
+#include "core/base/units.h"
 
 /* Triangles welded or copied between two questions to the stop: a few
  * milliseconds of work. */
@@ -34,7 +35,7 @@ double mesh_units_scale(enum mesh_units u)
 {
     switch (u) {
     case UNITS_CM: return 0.01;
-    case UNITS_MM: return 0.001;
+    case UNITS_MM: return UNITS_METRES_PER_MM;
     case UNITS_IN: return 0.0254;
     case UNITS_FT: return 0.3048;
     default:       return 1.0;
@@ -553,14 +554,14 @@ int mesh_units_warning(const struct mesh *mesh, enum mesh_units units,
     if (diagonal > 2000) {
         snprintf(warning, size,
                  "the surface is %.1f km across in %s; if the file is in "
-                 "millimetres, set its units to mm", diagonal / 1000,
+                 "millimetres, set its units to mm", units_m_of_mm(diagonal),
                  mesh_units_name(units));
         return 1;
     }
     if (diagonal > 0 && diagonal < 0.05) {
         snprintf(warning, size,
                  "the surface is %.1f mm across in %s; if the file is in "
-                 "metres, set its units to m", diagonal * 1000,
+                 "metres, set its units to m", units_mm(diagonal),
                  mesh_units_name(units));
         return 1;
     }
