@@ -82,7 +82,7 @@ const char *const tui_metric_columns[] = {
     "dp_moulds", "joint_length", "largest_family", "single_moulds",
     "area_cost", "panel_cost", "joint_cost", "mould_cost", "max_gap",
     "mean_gap", "max_kink", "mean_kink", "gaps_over", "kinks_over",
-    "sp_misfits", "sp_fitted",
+    "sp_misfits", "sp_fitted", "sp_min_radius",
 };
 const int tui_metric_column_count =
     (int)(sizeof tui_metric_columns / sizeof tui_metric_columns[0]);

@@ -248,9 +248,12 @@ static void draw_detail_side(const struct option_row *o, int y, int x,
             quantity_named(tui_metric_columns[k]), o);
         double number = quantity_value(c, o);
         if (isnan(number)) {
-            /* NULL in the store: never a number, and never 0 */
+            /* NULL in the store: never a number, and never 0; "none"
+             * where the stage ran and found nothing to measure */
             tui_putf(y + 1 + k, x, width, tui_attr(ROLE_DIM),
-                     " %-15s %14s", c->label, "not measured");
+                     " %-15s %14s", c->label,
+                     quantity_none(c, &o->totals) ? "none"
+                                                  : "not measured");
             continue;
         }
         char value[64];

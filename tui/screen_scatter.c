@@ -33,7 +33,7 @@ static const char *const axis_columns[] = {
     "planarity", "cost", "dp_area", "fp_area", "sp_area", "max_deviation",
     "max_panel_area", "p_dist", "nu", "nv", "threshold_mm", "panels",
     "dp_count", "rank", "crowding", "moulds", "sp_moulds", "dp_moulds",
-    "joint_length", "max_gap", "max_kink", "sp_misfits",
+    "joint_length", "max_gap", "max_kink", "sp_misfits", "sp_min_radius",
 };
 #define AXES ((int)(sizeof axis_columns / sizeof axis_columns[0]))
 

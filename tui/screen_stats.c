@@ -32,7 +32,7 @@ static const char *const stat_columns[] = {
     "cost", "planarity", "dp_area", "fp_area", "sp_area", "area", "nu", "nv",
     "threshold_mm", "panels", "dp_count", "max_deviation", "max_panel_area",
     "p_dist", "rank", "generation", "moulds", "joint_length", "max_gap",
-    "max_kink", "sp_misfits"};
+    "max_kink", "sp_misfits", "sp_min_radius"};
 #define STATS ((int)(sizeof stat_columns / sizeof stat_columns[0]))
 
 struct stats_screen {

@@ -310,6 +310,13 @@ int quantity_in_totals(const struct quantity *q)
            q->offset < first + sizeof(struct option_totals);
 }
 
+int quantity_none(const struct quantity *q, const struct option_totals *totals)
+{
+    return quantity_in_totals(q) && q->measure != 0 &&
+           (q->measure & ~option_totals_measures(totals)) == 0 &&
+           isnan(quantity_of_totals(q, totals));
+}
+
 void quantity_totals_forget(struct option_totals *totals, unsigned measures)
 {
     for (int k = 0; k < OPTION_QUANTITIES; k++) {

@@ -145,6 +145,14 @@ int quantity_in_totals(const struct quantity *q);
 double quantity_of_totals(const struct quantity *q,
                           const struct option_totals *totals);
 
+/* Whether q has no value in totals although the stage that measures it
+ * ran: an option with no panel built SP has no smallest bending radius,
+ * one of a single panel no joint. What a view shows as "none", where a
+ * value a stage did not measure (option.h's option_totals_measures) is
+ * "not measured". 0 for a value that is there. */
+int quantity_none(const struct quantity *q,
+                  const struct option_totals *totals);
+
 /* Sets every quantity of totals that a stage of measures (option.h's
  * option_measure bits) measures to "not measured": NaN, or
  * TOTALS_UNKNOWN for a count. What a run that leaves those stages out

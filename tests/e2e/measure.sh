@@ -135,4 +135,8 @@ check "workbench: the run opens" '^ Run 1 '
 keys / && sleep 0.3 && keys "rank > 1" Enter
 check "workbench: an option off the front, moulds not measured" 'moulds +not measured'
 check "workbench: its SP fits measured (a number)" 'SP fitted +[0-9]+'
+# This option's SP panels are all misfits (SP fitted 0): no panel is
+# bent, and the pane says none, not "not measured" (the fits ran).
+check "workbench: SP fitted 0 here" 'SP fitted +0 *$'
+check "workbench: its smallest SP bending radius: none, measured with the fits" 'smallest SP bending radius +none *$'
 check_not "workbench: no NULL shown as 0 or '-' for moulds" 'moulds +(0|-) *$'

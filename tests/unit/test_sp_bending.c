@@ -4,8 +4,8 @@
  * cone of half-angle a, cut from slant s0 to s1 from its apex, gives the
  * radius of its normal curvature across the rulings at s0, s0 tan a (the
  * distance s0 sin a from the axis over cos a). A surface whose panels are
- * all flat has none (NaN, never 0), and a run that does not measure the
- * fits leaves it not measured.
+ * all flat has none (NaN, never 0, and shown "none"), and a run that does
+ * not measure the fits leaves it not measured.
  */
 #include <setjmp.h>
 #include <stdarg.h>
@@ -122,6 +122,7 @@ static void test_cylinder_gives_its_radius(void **state)
     printf("cylinder R %.6f m: sp_min_radius %.6f m\n", CYLINDER_R,
            t.sp_min_radius);
     assert_true(fabs(t.sp_min_radius - CYLINDER_R) < 1e-3);
+    assert_false(quantity_none(quantity_named("sp_min_radius"), &t));
 }
 
 static void test_cone_gives_its_radius_nearest_the_apex(void **state)
@@ -145,6 +146,8 @@ static void test_no_sp_panel_has_none(void **state)
     evaluate(plane, 6, 4, 3, 2, 3, 0, &t);
     assert_true(t.count[TYPE_SP] == 0);
     assert_true(isnan(t.sp_min_radius));
+    /* A view says "none", not "not measured": the fits ran. */
+    assert_true(quantity_none(quantity_named("sp_min_radius"), &t));
 }
 
 static void test_not_measured_without_fits(void **state)
@@ -155,6 +158,7 @@ static void test_not_measured_without_fits(void **state)
              OPTION_MEASURE_FITS | OPTION_MEASURE_JOINTS, &t);
     assert_true(isnan(t.sp_min_radius));
     assert_true(t.sp_fitted == TOTALS_UNKNOWN);
+    assert_false(quantity_none(quantity_named("sp_min_radius"), &t));
     /* And the quantity says so: measured with the fits. */
     const struct quantity *q = quantity_named("sp_min_radius");
     assert_non_null(q);
