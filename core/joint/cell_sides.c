@@ -75,6 +75,26 @@ static void point_at(const struct mesh *mesh, uint32_t t, const double b[3],
                    b[2] * mesh->position[3 * (size_t)tri[2] + x];
 }
 
+/* The point of triangle t at barycentric b on the smooth surface through
+ * its vertices (cell_sides.h: Phong, shape factor 1/2), given its point
+ * on the facet x. */
+static void smooth_at(const struct mesh *mesh,
+                      const struct curvature *curvature, uint32_t t,
+                      const double b[3], const double x[3], double out[3])
+{
+    const uint32_t *tri = mesh->triangle + 3 * (size_t)t;
+    memcpy(out, x, 3 * sizeof *out);
+    for (int k = 0; k < 3; k++) {
+        const double *p = mesh->position + 3 * (size_t)tri[k];
+        const double *n = curvature->normal + 3 * (size_t)tri[k];
+        double d[3];
+        vec3_sub(p, x, d);
+        double h = 0.5 * b[k] * vec3_dot(d, n);
+        for (int c = 0; c < 3; c++)
+            out[c] += h * n[c];
+    }
+}
+
 /* The unit surface normal in triangle t at barycentric b: the vertex
  * normals interpolated, on the side of the face normal. */
 static void normal_at(const struct mesh *mesh,
@@ -148,12 +168,13 @@ static int sample(const struct mesh *mesh, const struct uv_index *index,
                   (size_t)nu * (size_t)(nv + 1);
     size_t nsamples = out->nsides * CELL_SIDE_SAMPLES;
     out->point = malloc(nsamples * 3 * sizeof *out->point);
+    out->smooth = malloc(nsamples * 3 * sizeof *out->smooth);
     out->normal = malloc((out->nsides + 1) * 3 * sizeof *out->normal);
     out->middle = malloc(out->nsides + 1);
     out->on = malloc(nsamples);
     out->sampled = calloc(out->nsides + 1, 1);
-    if (out->point == NULL || out->normal == NULL || out->on == NULL ||
-        out->sampled == NULL || out->middle == NULL) {
+    if (out->point == NULL || out->smooth == NULL || out->normal == NULL ||
+        out->on == NULL || out->sampled == NULL || out->middle == NULL) {
         cell_sides_free(out);
         return facet_error_set(err, FACET_EWORK,
                                "out of memory sampling %zu cell sides",
@@ -195,6 +216,8 @@ static int sample(const struct mesh *mesh, const struct uv_index *index,
                     out->on[at] = out->on[from];
                     memcpy(out->point + 3 * at, out->point + 3 * from,
                            3 * sizeof *out->point);
+                    memcpy(out->smooth + 3 * at, out->smooth + 3 * from,
+                           3 * sizeof *out->smooth);
                 } else {
                     double f = (double)k / CELL_SIDE_SEGMENTS;
                     double u = panels->umin + (i + (along_v ? 0 : f)) * du;
@@ -204,11 +227,14 @@ static int sample(const struct mesh *mesh, const struct uv_index *index,
                     out->on[at] = triangle[k] != UINT32_MAX;
                     if (triangle[k] == UINT32_MAX) {
                         for (int x = 0; x < 3; x++)
-                            out->point[3 * at + x] = NAN;
+                            out->point[3 * at + x] = out->smooth[3 * at + x] =
+                                NAN;
                         continue;
                     }
                     hint = triangle[k];
                     point_at(mesh, triangle[k], bary[k], out->point + 3 * at);
+                    smooth_at(mesh, curvature, triangle[k], bary[k],
+                              out->point + 3 * at, out->smooth + 3 * at);
                 }
                 if (k > 0 && out->on[at] &&
                     (middle < 0 || abs(2 * k - CELL_SIDE_SEGMENTS) <
@@ -259,6 +285,7 @@ void cell_sides_free(struct cell_sides *sides)
     free(sides->sampled);
     free(sides->middle);
     free(sides->point);
+    free(sides->smooth);
     free(sides->normal);
     free(sides->on);
     memset(sides, 0, sizeof *sides);
