@@ -1068,6 +1068,8 @@ int study_start(struct store *store, const struct study_request *request,
             surfaces[i].grid_nu = search.overrides[i].nu;
             surfaces[i].grid_nv = search.overrides[i].nv;
         }
+        if (rc == FACET_OK)
+            study_project_warnings(request, &project, hooks, &run);
     } else {
         rc = surface_read(request, hooks, &surface, &run, err);
     }

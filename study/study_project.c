@@ -85,18 +85,14 @@ static void warn_line(const struct study_hooks *hooks, const char *line,
     *used += (size_t)wrote;
 }
 
-/* Each surface's warnings, "NAME: what", then one line for the surfaces
- * whose mesh is coarse for the smallest module (its facets at least
- * COARSE_MESH_RATIO of the module's side, sqrt(width x height)) and one
- * for those whose facets sag more than FACET_SAG_FRACTION of the smallest
- * threshold of request's space, each naming how many and the worst, to the
- * warning hook and, one per line, into text (size bytes: those that
- * fit). */
-static void project_warnings(const struct project *project,
-                             const struct study_request *request,
-                             const struct study_hooks *hooks, char *text,
-                             size_t size)
+/* See study_internal.h. */
+void study_project_warnings(const struct study_request *request,
+                            const struct project *project,
+                            const struct study_hooks *hooks,
+                            struct run_info *run)
 {
+    char *text = run->warnings;
+    size_t size = sizeof run->warnings;
     size_t used = 0;
     text[0] = '\0';
     double side = sqrt(request->module.width_min *
@@ -180,9 +176,6 @@ int study_project_read(const struct study_request *request,
     }
     if (rc == FACET_OK)
         rc = project_rows(project, digest, rows, err);
-    if (rc == FACET_OK)
-        project_warnings(project, request, hooks, run->warnings,
-                         sizeof run->warnings);
     if (rc == FACET_OK) {
         memcpy(run->surface_sha256, digest[0], 65);
         run->surface_area = project->area;
