@@ -64,8 +64,9 @@ struct cell_sides {
                              each moved off its facet as Phong tessellation
                              with shape factor 1/2 moves it, by
                              1/2 sum b_i ((p_i - x).n_i) n_i over the
-                             triangle's vertices p_i with their fitted
-                             normals n_i, b the sample's barycentrics. On a
+                             triangle's vertices p_i with their surface
+                             normals n_i (curvature.h), b the sample's
+                             barycentrics. On a
                              quadric with exact normals that is the height
                              of the surface over the facet to second order
                              (a cylinder of R = 7.567 m with facets sagging
@@ -75,9 +76,12 @@ struct cell_sides {
                              that lies on the surface (of samples 1 ..
                              CELL_SIDE_SEGMENTS), or -1 when none does */
     double *normal;       /* nsides x 3: the unit surface normal at that
-                             sample, the vertex normals interpolated in its
-                             triangle, on the side of the face normal (the
-                             side panel normals are on); NaN without one */
+                             sample: its triangle's corners' surface
+                             normals (curvature.h) each carried halfway to
+                             it by its shape operator, blended by its
+                             barycentrics (second-order exact), on the side
+                             of the face normal (the side panel normals are
+                             on); NaN without one */
     unsigned char *on;    /* nsides x CELL_SIDE_SAMPLES: 1 on the surface */
     unsigned char *sampled;  /* nsides: 1 when the side was sampled; point,
                                 on, middle and normal are unset
