@@ -87,7 +87,10 @@
  * per vertex, 4 to 6 times. Most of what is left is the osculating
  * passes, a square root and a division per point each, and the chains of
  * divisions of their Cholesky solves: both bound by latency, and both
- * needed for these results to the bit (test_curvature_pinned).
+ * needed for these results to the bit (test_curvature_pinned). The
+ * surface normal (curvature.h: one more fit, a cubic, per vertex whose fit
+ * was a quadric) takes the roof from 1.6 to 2.6 times the baseline, the
+ * coarse real meshes from 4.6 to 5.7 times (sum of their medians).
  */
 #include <assert.h>
 #include <math.h>
