@@ -158,8 +158,8 @@ static int classify_run(int argc, char **argv, struct facet_error *err)
         rc = option_evaluate(&surface, &params, &panels, &totals, err);
     if (rc == FACET_OK && csv != NULL)
         rc = write_csv(csv, &panels, &totals, err);
-    char coarse[400];
-    int is_coarse = 0;
+    char coarse[400], sag[400];
+    int is_coarse = 0, is_sagging = 0;
     if (rc == FACET_OK) {
         char grid_name[64];
         snprintf(grid_name, sizeof grid_name, "%d x %d panels", params.nu,
@@ -171,12 +171,20 @@ static int classify_run(int argc, char **argv, struct facet_error *err)
         if (rc == FACET_OK)
             is_coarse = coarse_mesh_warning(facet, side, grid_name, coarse,
                                             sizeof coarse);
+        char what[64];
+        snprintf(what, sizeof what, "t = %g mm",
+                 params.classify.threshold * 1000);
+        is_sagging = facet_sag_warning(surface.facet_sag,
+                                       params.classify.threshold, what, sag,
+                                       sizeof sag);
     }
     if (rc == FACET_OK) {
         for (int i = 0; i < surface.nwarnings; i++)
             shown_line(stderr, "facet: warning: %s", surface.warnings[i]);
         if (is_coarse)
             fprintf(stderr, "facet: warning: %s\n", coarse);
+        if (is_sagging)
+            fprintf(stderr, "facet: warning: %s\n", sag);
         if (json) {
             struct report_source source = {
                 surface.path, mesh_units_name(surface.units),

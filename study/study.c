@@ -904,15 +904,16 @@ static int study_go(struct store *store, struct run_info *run,
 }
 
 /* The warnings of a new run on the prepared surface: the surface's own,
- * and a mesh coarser than the finest grid of the space's panels (by the
- * UV's cover of its box, before any option is evaluated). Each goes to
+ * a mesh coarser than the finest grid of the space's panels (by the
+ * UV's cover of its box, before any option is evaluated), and facets that
+ * sag a fair part of the space's smallest threshold. Each goes to
  * the warning hook and, one per line, into text (size bytes). */
 static void collect_warnings(const struct surface *surface,
                              const struct design_space *space,
                              const struct study_hooks *hooks, char *text,
                              size_t size)
 {
-    char lines[SURFACE_MAX_WARNINGS + 1][400];
+    char lines[SURFACE_MAX_WARNINGS + 2][400];
     int n = 0;
     for (int k = 0; k < surface->nwarnings; k++)
         snprintf(lines[n++], sizeof lines[0], "%s", surface->warnings[k]);
@@ -928,6 +929,13 @@ static void collect_warnings(const struct surface *surface,
     if (mesh_facet_size(&surface->mesh, &facet, NULL) == FACET_OK &&
         facet > 0 && coarse_mesh_warning(facet, side, grid, lines[n],
                                          sizeof lines[0]))
+        n++;
+    /* Against the smallest threshold: the one the sag matters most to. */
+    char what[80];
+    snprintf(what, sizeof what, "the smallest threshold of the space, t = "
+             "%g mm", space->t_min_mm);
+    if (facet_sag_warning(surface->facet_sag, space->t_min_mm / 1000, what,
+                          lines[n], sizeof lines[0]))
         n++;
     size_t used = 0;
     text[0] = '\0';
@@ -1062,6 +1070,8 @@ int study_start(struct store *store, const struct study_request *request,
             surfaces[i].grid_nu = search.overrides[i].nu;
             surfaces[i].grid_nv = search.overrides[i].nv;
         }
+        if (rc == FACET_OK)
+            study_project_warnings(request, &project, hooks, &run);
     } else {
         rc = surface_read(request, hooks, &surface, &run, err);
     }

@@ -50,6 +50,19 @@ int study_project_read(const struct study_request *request,
                        struct run_info *run, struct facet_error *err);
 /* (FACET_ESTOP, as every reading here, when the hooks' stop fires.) */
 
+/* The warnings of a project run, once its request is known to be good
+ * (so that bad input stays one line): each surface's own, "NAME: what",
+ * then one line for the surfaces whose mesh is coarse for the smallest
+ * module (facets at least COARSE_MESH_RATIO of its side, sqrt(width x
+ * height)) and one for those whose facets sag more than
+ * FACET_SAG_FRACTION of the space's smallest threshold, each naming how
+ * many and the worst: to the warning hook and, one per line, into
+ * run->warnings (those that fit). */
+void study_project_warnings(const struct study_request *request,
+                            const struct project *project,
+                            const struct study_hooks *hooks,
+                            struct run_info *run);
+
 /* The search over project's modules that request asks for, its grid
  * overrides found by name (FACET_EINPUT for a name no surface has). */
 int study_project_search(const struct study_request *request,

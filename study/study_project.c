@@ -7,6 +7,7 @@
  */
 #include "study_internal.h"
 
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -14,6 +15,7 @@
 
 #include "core/base/sha256.h"
 #include "core/panel/panel.h"
+#include "core/surface/coarse_mesh.h"
 
 /* What reading a project parses: its files into the project. */
 struct project_read {
@@ -67,30 +69,81 @@ static int project_rows(const struct project *project,
     return FACET_OK;
 }
 
-/* Each surface's warnings, "NAME: what", to the warning hook and, one per
- * line, into text (size bytes: those that fit). */
-static void project_warnings(const struct project *project,
-                             const struct study_hooks *hooks, char *text,
-                             size_t size)
+/* Tells line to the warning hook and appends it to text (size bytes, *used
+ * of them taken) when it fits. */
+static void warn_line(const struct study_hooks *hooks, const char *line,
+                      char *text, size_t size, size_t *used)
 {
+    if (hooks != NULL && hooks->warning != NULL)
+        hooks->warning(hooks->context, line);
+    int wrote = snprintf(text + *used, size - *used, "%s%s",
+                         *used ? "\n" : "", line);
+    if (wrote < 0 || (size_t)wrote >= size - *used) {
+        text[*used] = '\0';
+        return;  /* told, not stored: the column is full */
+    }
+    *used += (size_t)wrote;
+}
+
+/* See study_internal.h. */
+void study_project_warnings(const struct study_request *request,
+                            const struct project *project,
+                            const struct study_hooks *hooks,
+                            struct run_info *run)
+{
+    char *text = run->warnings;
+    size_t size = sizeof run->warnings;
     size_t used = 0;
     text[0] = '\0';
+    double side = sqrt(request->module.width_min *
+                       request->module.height_min);
+    double t_min = request->settings.space.t_min_mm / 1000;
+    size_t coarse = 0, sagging = 0;
+    const char *coarsest = NULL, *saggiest = NULL;
+    double worst_facet = 0, worst_sag = 0;
     for (size_t i = 0; i < project->nsurfaces; i++) {
         const struct project_surface *ps = &project->surfaces[i];
         for (int k = 0; k < ps->surface.nwarnings; k++) {
             char line[400];
             snprintf(line, sizeof line, "%.60s: %s", ps->name,
                      ps->surface.warnings[k]);
-            if (hooks != NULL && hooks->warning != NULL)
-                hooks->warning(hooks->context, line);
-            int wrote = snprintf(text + used, size - used, "%s%s",
-                                 used ? "\n" : "", line);
-            if (wrote < 0 || (size_t)wrote >= size - used) {
-                text[used] = '\0';
-                continue;  /* told, not stored: the column is full */
-            }
-            used += (size_t)wrote;
+            warn_line(hooks, line, text, size, &used);
         }
+        double facet;
+        if (mesh_facet_size(&ps->surface.mesh, &facet, NULL) == FACET_OK &&
+            side > 0 && facet >= COARSE_MESH_RATIO * side) {
+            coarse++;
+            if (facet > worst_facet) {
+                worst_facet = facet;
+                coarsest = ps->name;
+            }
+        }
+        if (facet_sag_matters(ps->surface.facet_sag, t_min)) {
+            sagging++;
+            if (ps->surface.facet_sag > worst_sag) {
+                worst_sag = ps->surface.facet_sag;
+                saggiest = ps->name;
+            }
+        }
+    }
+    char line[600];
+    if (coarse > 0) {
+        char grid[160];
+        snprintf(grid, sizeof grid, "the smallest module, %g x %g m, on %zu "
+                 "of %zu surfaces (worst %.60s)", request->module.width_min,
+                 request->module.height_min, coarse, project->nsurfaces,
+                 coarsest);
+        if (coarse_mesh_warning(worst_facet, side, grid, line, sizeof line))
+            warn_line(hooks, line, text, size, &used);
+    }
+    if (sagging > 0) {
+        char what[160];
+        snprintf(what, sizeof what, "the smallest threshold, t = %g mm, on "
+                 "%zu of %zu surfaces (worst %.60s)",
+                 request->settings.space.t_min_mm, sagging,
+                 project->nsurfaces, saggiest);
+        if (facet_sag_warning(worst_sag, t_min, what, line, sizeof line))
+            warn_line(hooks, line, text, size, &used);
     }
 }
 
@@ -123,9 +176,6 @@ int study_project_read(const struct study_request *request,
     }
     if (rc == FACET_OK)
         rc = project_rows(project, digest, rows, err);
-    if (rc == FACET_OK)
-        project_warnings(project, hooks, run->warnings,
-                         sizeof run->warnings);
     if (rc == FACET_OK) {
         memcpy(run->surface_sha256, digest[0], 65);
         run->surface_area = project->area;

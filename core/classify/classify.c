@@ -380,6 +380,6 @@ void classify_misfit_reason(const struct panelization *p, size_t panel,
     built.best_cylinder = x->best_cylinder;
     built.best_cone = x->best_cone;
     struct built_option option = {1, &built, 0, (size_t)x->misfit,
-                                  p->threshold};
+                                  p->threshold, 0};
     built_panel_reason(&option, 0, text, size);
 }

@@ -2,6 +2,7 @@
  * option.c: evaluating one design option. See option.h.
  */
 #include "core/classify/option.h"
+#include "core/surface/coarse_mesh.h"
 
 #include <assert.h>
 #include <math.h>
@@ -317,16 +318,20 @@ static int build_and_measure(const struct surface *surface,
     memset(&built, 0, sizeof built);
     memset(&joints, 0, sizeof joints);
     int rc;
+    /* Facets that sag a fair part of t would be measured as the panels'
+     * own deviation: the fits are then measured on the smooth surface. */
+    int smooth = facet_sag_matters(surface->facet_sag, options->threshold);
     if (fits != NULL) {
         /* The sides are the grid's, borrowed: not freed here. */
-        rc = grid_fits_option(fits, panels, options->threshold, &built,
-                              &sides, err);
+        rc = grid_fits_option(fits, panels, options->threshold, smooth,
+                              &built, &sides, err);
     } else {
         rc = cell_sides_sample(&surface->mesh, &surface->uv,
                                &surface->curvature, panels, &sides, err);
         if (rc == FACET_OK)
             rc = built_option_fit(&surface->mesh, &surface->fit, panels,
-                                  &sides, options->threshold, &built, err);
+                                  &sides, options->threshold, smooth,
+                                  &built, err);
     }
     int measure_joints = !(unmeasured & OPTION_MEASURE_JOINTS);
     if (rc == FACET_OK && measure_joints)

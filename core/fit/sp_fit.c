@@ -96,14 +96,17 @@ static int point_panels(const struct fit_points *points, size_t p,
     return n;
 }
 
-/* Appends sample k of side s to xyz at *n when it is on the surface. */
+/* Appends sample k of side s to xyz at *n when it is on the surface: on
+ * the smooth surface through the vertices when smooth, else on the
+ * facets. */
 static void add_sample(const struct cell_sides *sides, size_t s, int k,
-                       double *xyz, size_t *n)
+                       int smooth, double *xyz, size_t *n)
 {
     size_t at = s * CELL_SIDE_SAMPLES + (size_t)k;
     if (!sides->on[at])
         return;
-    memcpy(xyz + 3 * *n, sides->point + 3 * at, 3 * sizeof *xyz);
+    const double *x = smooth ? sides->smooth : sides->point;
+    memcpy(xyz + 3 * *n, x + 3 * at, 3 * sizeof *xyz);
     (*n)++;
 }
 
@@ -196,7 +199,7 @@ struct samples {
  * largest bucket and four sides). */
 static void gather(const struct mesh *mesh, const struct fit_points *points,
                    const struct panel *panel, const struct buckets *buckets,
-                   size_t k, const struct cell_sides *sides,
+                   size_t k, const struct cell_sides *sides, int smooth,
                    struct samples *out)
 {
     double *xyz = out->xyz;
@@ -227,7 +230,7 @@ static void gather(const struct mesh *mesh, const struct fit_points *points,
             for (int step = 0; step < CELL_SIDE_SEGMENTS; step++) {
                 int at = e < 2 ? step : step + 1;
                 if ((at % FIT_SIDE_STRIDE == 0) == (pass == 0))
-                    add_sample(sides, around[e], at, xyz, &n);
+                    add_sample(sides, around[e], at, smooth, xyz, &n);
             }
         if (pass == 0)
             out->nfit = n;
@@ -377,7 +380,8 @@ static void build_panels(const struct mesh *mesh,
                          const struct cell_sides *sides,
                          const struct buckets *buckets,
                          struct panel_fits *cache, double threshold,
-                         struct samples *s, struct built_option *out)
+                         int smooth, struct samples *s,
+                         struct built_option *out)
 {
     for (size_t k = 0; k < panels->npanels; k++) {
         const struct panel *panel = &panels->panels[k];
@@ -392,13 +396,13 @@ static void build_panels(const struct mesh *mesh,
             memset(&alone, 0, sizeof alone);
         int gathered = 0;
         if (!f->cylinder_done) {
-            gather(mesh, points, panel, buckets, k, sides, s);
+            gather(mesh, points, panel, buckets, k, sides, smooth, s);
             gathered = 1;
             fit_cylinder(s, f);
         }
         if (!f->cone_done && needs_cones(panel, f, threshold)) {
             if (!gathered)
-                gather(mesh, points, panel, buckets, k, sides, s);
+                gather(mesh, points, panel, buckets, k, sides, smooth, s);
             fit_cones(s, f);
         }
         judge(panel, f, threshold, b);
@@ -412,11 +416,13 @@ static void build_panels(const struct mesh *mesh,
 int built_option_fit(const struct mesh *mesh, const struct fit_points *points,
                      const struct panelization *panels,
                      const struct cell_sides *sides, double threshold,
-                     struct built_option *out, struct facet_error *err)
+                     int smooth, struct built_option *out,
+                     struct facet_error *err)
 {
     memset(out, 0, sizeof *out);
     out->npanels = panels->npanels;
     out->threshold = threshold;
+    out->smooth = smooth;
     size_t np = panels->npanels;
     struct buckets buckets;
     struct samples s;
@@ -430,8 +436,8 @@ int built_option_fit(const struct mesh *mesh, const struct fit_points *points,
         return facet_error_set(err, FACET_EWORK,
                                "out of memory fitting %zu panels", np);
     }
-    build_panels(mesh, points, panels, sides, &buckets, NULL, threshold, &s,
-                 out);
+    build_panels(mesh, points, panels, sides, &buckets, NULL, threshold,
+                 smooth, &s, out);
     buckets_free(&buckets);
     samples_free(&s);
     return FACET_OK;
@@ -472,14 +478,20 @@ int grid_fits_init(const struct mesh *mesh, const struct uv_index *index,
 
 int grid_fits_option(struct grid_fits *grid,
                      const struct panelization *panels, double threshold,
-                     struct built_option *out, struct cell_sides *sides,
-                     struct facet_error *err)
+                     int smooth, struct built_option *out,
+                     struct cell_sides *sides, struct facet_error *err)
 {
     assert(panels->nu == grid->nu && panels->nv == grid->nv &&
            panels->npanels == grid->npanels);
     memset(out, 0, sizeof *out);
     out->npanels = panels->npanels;
     out->threshold = threshold;
+    out->smooth = smooth;
+    /* The fits kept were of the other samples: fit again. */
+    if (smooth != grid->smooth) {
+        memset(grid->fits, 0, grid->npanels * sizeof *grid->fits);
+        grid->smooth = smooth;
+    }
     struct samples s;
     out->panels = calloc(panels->npanels + 1, sizeof *out->panels);
     if (out->panels == NULL ||
@@ -491,7 +503,7 @@ int grid_fits_option(struct grid_fits *grid,
                                panels->npanels);
     }
     build_panels(grid->mesh, grid->points, panels, &grid->sides,
-                 grid->buckets, grid->fits, threshold, &s, out);
+                 grid->buckets, grid->fits, threshold, smooth, &s, out);
     samples_free(&s);
     /* The sides as cell_sides_sample would have sampled them for this
      * option's types: the samples of all, the marks of these. */

@@ -17,10 +17,22 @@
  *     no sign); a panel with no point inside starts from the longest
  *     extent of its samples;
  *   - sp_deviation is the largest distance of the samples from the fitted
- *     surface. It includes the mesh's own facet sag: the samples lie on
- *     the mesh, whose vertices lie on the designer's surface and whose
- *     facets may sag from it, so a panel of a true cylinder reads up to
- *     that sag (a coarse mesh can make misfits of panels that fit);
+ *     surface. The mesh points inside are vertices, on the designer's
+ *     surface; the side samples lie on the facets, which sag from it.
+ *     Measured there (smooth 0), a panel of a true cylinder reads up to
+ *     that sag: right on a fine mesh, whose sag is far below t, but a
+ *     coarse mesh makes misfits of panels that fit (a strip on a cylinder
+ *     of R = 7.567 m whose facets sag 4.1 mm: "best cylinder 3.8 mm" at
+ *     t = 3 mm, 95 % of its area DP at 20 x 35). With smooth 1 the side
+ *     samples are taken on the smooth surface through the vertices
+ *     instead (cell_sides.h's smooth points, second-order exact on a
+ *     quadric), so the fit and its deviation are the designer's surface's.
+ *     The caller asks for it when the facets sag more than
+ *     FACET_SAG_FRACTION of t (coarse_mesh.h), and only then, so that a
+ *     fine mesh's results stay those measured on its facets (which are
+ *     the surface there, to far below t). The vertices and not a
+ *     reconstruction alone would leave a panel smaller than its facets
+ *     with no sample inside and its edges unmeasured;
  *   - when the cylinder misses by more than t, a cone is fitted, from the
  *     cylinder (the cone whose rulings meet at infinity) and from the apex
  *     where the rulings of the points inside converge, the one nearer the
@@ -106,17 +118,21 @@ struct built_option {
     size_t sp_misfits;         /* SP panels no cylinder or cone fits within
                                   t, built DP */
     double threshold;          /* t (m) the fits were held to */
+    int smooth;                /* 1: side samples on the smooth surface
+                                  through the vertices, 0: on the facets */
 };
 
 /* Builds every panel of panels (classified) as above, from the mesh, the
  * surface's fit points and the cell sides of this
- * panelization, with flatness threshold threshold (m). Fills *out (release
- * with built_option_free, also after a failure). Returns FACET_OK or
- * FACET_EWORK when out of memory. */
+ * panelization, with flatness threshold threshold (m), the side samples
+ * taken on the smooth surface when smooth is 1, on the facets when 0.
+ * Fills *out (release with built_option_free, also after a failure).
+ * Returns FACET_OK or FACET_EWORK when out of memory. */
 int built_option_fit(const struct mesh *mesh, const struct fit_points *points,
                      const struct panelization *panels,
                      const struct cell_sides *sides, double threshold,
-                     struct built_option *out, struct facet_error *err);
+                     int smooth, struct built_option *out,
+                     struct facet_error *err);
 
 void built_option_free(struct built_option *built);
 
@@ -147,6 +163,8 @@ struct grid_fits {
     struct buckets *buckets;           /* each panel's fit points */
     struct panel_fits *fits;           /* npanels: the fits done so far */
     unsigned char *sampled;            /* nsides: the last option's sides */
+    int smooth;                        /* the samples fits holds were
+                                          taken with */
 };
 
 /* Prepares *out for the grid of panels, over the surface mesh with UV
@@ -160,8 +178,10 @@ int grid_fits_init(const struct mesh *mesh, const struct uv_index *index,
                    const struct panelization *panels, struct grid_fits *out,
                    struct facet_error *err);
 
-/* built_option_fit for panels (the grid's, classified at threshold, m)
- * from grid's fits, fitting those not yet done; fills *out (release with
+/* built_option_fit for panels (the grid's, classified at threshold, m,
+ * samples smooth or not) from grid's fits, fitting those not yet done
+ * (all of them again when smooth differs from the last call's); fills
+ * *out (release with
  * built_option_free) and *sides with the grid's sides as cell_sides_sample
  * would have marked them for these panels: for joints_measure; it borrows
  * grid's arrays until the next grid_fits_option or grid_fits_free (do not
@@ -169,8 +189,8 @@ int grid_fits_init(const struct mesh *mesh, const struct uv_index *index,
  * memory. */
 int grid_fits_option(struct grid_fits *grid,
                      const struct panelization *panels, double threshold,
-                     struct built_option *out, struct cell_sides *sides,
-                     struct facet_error *err);
+                     int smooth, struct built_option *out,
+                     struct cell_sides *sides, struct facet_error *err);
 
 void grid_fits_free(struct grid_fits *grid);
 

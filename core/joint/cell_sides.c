@@ -75,23 +75,59 @@ static void point_at(const struct mesh *mesh, uint32_t t, const double b[3],
                    b[2] * mesh->position[3 * (size_t)tri[2] + x];
 }
 
-/* The unit surface normal in triangle t at barycentric b: the vertex
- * normals interpolated, on the side of the face normal. */
-static void normal_at(const struct mesh *mesh,
+/* The point of triangle t at barycentric b on the smooth surface through
+ * its vertices (cell_sides.h: Phong, shape factor 1/2), given its point
+ * on the facet x. */
+static void smooth_at(const struct mesh *mesh,
                       const struct curvature *curvature, uint32_t t,
-                      const double b[3], double normal[3])
+                      const double b[3], const double x[3], double out[3])
 {
     const uint32_t *tri = mesh->triangle + 3 * (size_t)t;
-    for (int x = 0; x < 3; x++)
-        normal[x] = b[0] * curvature->normal[3 * (size_t)tri[0] + x] +
-                    b[1] * curvature->normal[3 * (size_t)tri[1] + x] +
-                    b[2] * curvature->normal[3 * (size_t)tri[2] + x];
+    memcpy(out, x, 3 * sizeof *out);
+    for (int k = 0; k < 3; k++) {
+        const double *p = mesh->position + 3 * (size_t)tri[k];
+        const double *n = curvature->surface_normal + 3 * (size_t)tri[k];
+        double d[3];
+        vec3_sub(p, x, d);
+        double h = 0.5 * b[k] * vec3_dot(d, n);
+        for (int c = 0; c < 3; c++)
+            out[c] += h * n[c];
+    }
+}
+
+/* The unit surface normal in triangle t at barycentric b, point x: each
+ * corner's surface normal n_i carried halfway to x by its shape operator,
+ * n_i - 1/2 S_i (x - p_i) with S_i = k1 d1 d1^T + k2 d2 d2^T (the normal
+ * turns by -k along a principal direction), blended by b. The vertex
+ * normals interpolated alone bulge out by as much as the corners' tangent
+ * extrapolations fall in (the interpolation error of a smooth field is
+ * +1/2 sum b_i d_i^T H d_i, the extrapolations' -1/2), so the half step
+ * leaves the normal field right to second order, as the smooth surface
+ * (smooth_at) is; on the side of the face normal. */
+static void normal_at(const struct mesh *mesh,
+                      const struct curvature *curvature, uint32_t t,
+                      const double b[3], const double x[3], double normal[3])
+{
+    const uint32_t *tri = mesh->triangle + 3 * (size_t)t;
+    memset(normal, 0, 3 * sizeof *normal);
+    for (int k = 0; k < 3; k++) {
+        size_t v = tri[k];
+        const double *n = curvature->surface_normal + 3 * v;
+        const double *d1 = curvature->dir1 + 3 * v;
+        const double *d2 = curvature->dir2 + 3 * v;
+        double d[3];
+        vec3_sub(x, mesh->position + 3 * v, d);
+        double s1 = 0.5 * curvature->k1[v] * vec3_dot(d, d1);
+        double s2 = 0.5 * curvature->k2[v] * vec3_dot(d, d2);
+        for (int c = 0; c < 3; c++)
+            normal[c] += b[k] * (n[c] - s1 * d1[c] - s2 * d2[c]);
+    }
     const double *face = mesh->face_normal + 3 * (size_t)t;
     if (!vec3_normalize(normal))
         memcpy(normal, face, 3 * sizeof *normal);
     if (vec3_dot(normal, face) < 0)
-        for (int x = 0; x < 3; x++)
-            normal[x] = -normal[x];
+        for (int c = 0; c < 3; c++)
+            normal[c] = -normal[c];
 }
 
 /* 1 when panel follows the surface over its whole cell: typed DP, not
@@ -148,12 +184,13 @@ static int sample(const struct mesh *mesh, const struct uv_index *index,
                   (size_t)nu * (size_t)(nv + 1);
     size_t nsamples = out->nsides * CELL_SIDE_SAMPLES;
     out->point = malloc(nsamples * 3 * sizeof *out->point);
+    out->smooth = malloc(nsamples * 3 * sizeof *out->smooth);
     out->normal = malloc((out->nsides + 1) * 3 * sizeof *out->normal);
     out->middle = malloc(out->nsides + 1);
     out->on = malloc(nsamples);
     out->sampled = calloc(out->nsides + 1, 1);
-    if (out->point == NULL || out->normal == NULL || out->on == NULL ||
-        out->sampled == NULL || out->middle == NULL) {
+    if (out->point == NULL || out->smooth == NULL || out->normal == NULL ||
+        out->on == NULL || out->sampled == NULL || out->middle == NULL) {
         cell_sides_free(out);
         return facet_error_set(err, FACET_EWORK,
                                "out of memory sampling %zu cell sides",
@@ -195,6 +232,8 @@ static int sample(const struct mesh *mesh, const struct uv_index *index,
                     out->on[at] = out->on[from];
                     memcpy(out->point + 3 * at, out->point + 3 * from,
                            3 * sizeof *out->point);
+                    memcpy(out->smooth + 3 * at, out->smooth + 3 * from,
+                           3 * sizeof *out->smooth);
                 } else {
                     double f = (double)k / CELL_SIDE_SEGMENTS;
                     double u = panels->umin + (i + (along_v ? 0 : f)) * du;
@@ -204,11 +243,14 @@ static int sample(const struct mesh *mesh, const struct uv_index *index,
                     out->on[at] = triangle[k] != UINT32_MAX;
                     if (triangle[k] == UINT32_MAX) {
                         for (int x = 0; x < 3; x++)
-                            out->point[3 * at + x] = NAN;
+                            out->point[3 * at + x] = out->smooth[3 * at + x] =
+                                NAN;
                         continue;
                     }
                     hint = triangle[k];
                     point_at(mesh, triangle[k], bary[k], out->point + 3 * at);
+                    smooth_at(mesh, curvature, triangle[k], bary[k],
+                              out->point + 3 * at, out->smooth + 3 * at);
                 }
                 if (k > 0 && out->on[at] &&
                     (middle < 0 || abs(2 * k - CELL_SIDE_SEGMENTS) <
@@ -226,6 +268,8 @@ static int sample(const struct mesh *mesh, const struct uv_index *index,
                 continue;
             }
             normal_at(mesh, curvature, triangle[middle], bary[middle],
+                      out->point + 3 * (s * CELL_SIDE_SAMPLES +
+                                        (size_t)middle),
                       out->normal + 3 * s);
         }
     }
@@ -259,6 +303,7 @@ void cell_sides_free(struct cell_sides *sides)
     free(sides->sampled);
     free(sides->middle);
     free(sides->point);
+    free(sides->smooth);
     free(sides->normal);
     free(sides->on);
     memset(sides, 0, sizeof *sides);

@@ -59,13 +59,29 @@ struct cell_sides {
     size_t nsides;        /* (nu + 1) nv + nu (nv + 1) */
     double *point;        /* nsides x CELL_SIDE_SAMPLES x 3 (m); NaN off
                              the surface */
+    double *smooth;       /* the same samples on the smooth surface through
+                             the mesh's vertices (m, NaN off the surface):
+                             each moved off its facet as Phong tessellation
+                             with shape factor 1/2 moves it, by
+                             1/2 sum b_i ((p_i - x).n_i) n_i over the
+                             triangle's vertices p_i with their surface
+                             normals n_i (curvature.h), b the sample's
+                             barycentrics. On a
+                             quadric with exact normals that is the height
+                             of the surface over the facet to second order
+                             (a cylinder of R = 7.567 m with facets sagging
+                             4.1 mm: within 0.02 mm), so a facet's sag is
+                             taken out of what is measured there */
     signed char *middle;  /* nsides: the sample nearest the side's middle
                              that lies on the surface (of samples 1 ..
                              CELL_SIDE_SEGMENTS), or -1 when none does */
     double *normal;       /* nsides x 3: the unit surface normal at that
-                             sample, the vertex normals interpolated in its
-                             triangle, on the side of the face normal (the
-                             side panel normals are on); NaN without one */
+                             sample: its triangle's corners' surface
+                             normals (curvature.h) each carried halfway to
+                             it by its shape operator, blended by its
+                             barycentrics (second-order exact), on the side
+                             of the face normal (the side panel normals are
+                             on); NaN without one */
     unsigned char *on;    /* nsides x CELL_SIDE_SAMPLES: 1 on the surface */
     unsigned char *sampled;  /* nsides: 1 when the side was sampled; point,
                                 on, middle and normal are unset

@@ -148,12 +148,17 @@ struct scratch {
 };
 
 /* Merges the raw vertices [v0, v1) of one panel whose UV agree within
- * tolerance: merged[k - v0] becomes a number 0.. in order of first
- * occurrence and first[] the first raw vertex (less v0) of each number;
- * returns how many numbers there are. */
+ * tolerance and whose positions agree within reach (m): merged[k - v0]
+ * becomes a number 0.. in order of first occurrence and first[] the first
+ * raw vertex (less v0) of each number; returns how many numbers there are.
+ * The UV alone is not enough: where the UV squeezes the surface (a
+ * harmonic map far from its outer boundary shrinks a tube's far end by
+ * e^(-length/radius)), points a whole facet apart agree in UV to far
+ * below a cell's 1e-9, and merging them dropped real triangles from the
+ * export while the schedule counted their area. */
 static size_t merge_vertices(const struct raw *r, size_t v0, size_t v1,
                              double umin, double vmin, double tolerance,
-                             struct scratch *s)
+                             double reach, struct scratch *s)
 {
     size_t m = v1 - v0;
     for (size_t k = 0; k < m; k++) {
@@ -181,8 +186,13 @@ static size_t merge_vertices(const struct raw *r, size_t v0, size_t v1,
                 if (s->root[other] == SIZE_MAX)
                     continue;
                 const double *o = &r->uv[2 * (v0 + other)];
+                const double *p = &r->position[3 * (v0 + k)];
+                const double *q = &r->position[3 * (v0 + other)];
                 if (fabs(o[0] - uv[0]) <= tolerance &&
-                    fabs(o[1] - uv[1]) <= tolerance) {
+                    fabs(o[1] - uv[1]) <= tolerance &&
+                    fabs(p[0] - q[0]) <= reach &&
+                    fabs(p[1] - q[1]) <= reach &&
+                    fabs(p[2] - q[2]) <= reach) {
                     root = s->root[other];
                     break;
                 }
@@ -408,8 +418,17 @@ int panel_geometry_build(const struct mesh *mesh,
         size_t v0 = r.piece_vertex_start[p0];
         size_t v1 = r.piece_vertex_start[p1];
         size_t base = out->nvertices;
+        /* The same point cut from two triangles differs in position by
+         * rounding in the coordinates' magnitude; 1e-9 of the panel's
+         * diameter is far above that and far below a facet. */
+        double magnitude3 = 0;
+        for (size_t k = v0; k < v1; k++)
+            for (int c = 0; c < 3; c++)
+                magnitude3 = fmax(magnitude3, fabs(r.position[3 * k + c]));
+        double reach = fmax(1e-9 * panels->panels[n].diameter,
+                            64 * DBL_EPSILON * magnitude3);
         size_t count = merge_vertices(&r, v0, v1, panels->umin, panels->vmin,
-                                      tolerance, &s);
+                                      tolerance, reach, &s);
         for (size_t k = 0; k < count; k++) {
             memcpy(&out->position[3 * (base + k)],
                    &r.position[3 * (v0 + s.first[k])], 3 * sizeof(double));

@@ -18,11 +18,13 @@
  *     panel->normal), the shape a flat (FP) panel is cut to.
  *
  * Vertices are shared within a panel (pieces of neighbouring triangles meet
- * at the same vertex, merged when their UV agree to within rounding:
- * 1e-9 of a cell) and never between panels, so each panel's arrays stand
- * alone. A piece thinner than that tolerance (a triangle corner a hair
- * off a cell line) collapses and is dropped, with an area of at most
- * about 1e-9 of the panel's. Loops and pieces keep the mesh's winding, so a polygon written
+ * at the same vertex, merged when their UV agree to within rounding,
+ * 1e-9 of a cell, and so do their positions, to 1e-9 of the panel's
+ * diameter) and never between panels, so each panel's arrays stand
+ * alone. A piece thinner than that in both UV and space (a triangle corner
+ * a hair off a cell line) collapses and is dropped, with an area of at
+ * most about 1e-9 of the panel's; a piece the UV squeezes to a point but
+ * space does not (far inside a harmonic map) is kept. Loops and pieces keep the mesh's winding, so a polygon written
  * from them faces the same way as the surface.
  *
  * Ownership: panel_geometry_build fills a caller-owned struct; every array

@@ -87,7 +87,10 @@
  * per vertex, 4 to 6 times. Most of what is left is the osculating
  * passes, a square root and a division per point each, and the chains of
  * divisions of their Cholesky solves: both bound by latency, and both
- * needed for these results to the bit (test_curvature_pinned).
+ * needed for these results to the bit (test_curvature_pinned). The
+ * surface normal (curvature.h: one more fit, a cubic, per vertex whose fit
+ * was a quadric) takes the roof from 1.6 to 2.6 times the baseline, the
+ * coarse real meshes from 4.6 to 5.7 times (sum of their medians).
  */
 #include <assert.h>
 #include <math.h>
@@ -1066,6 +1069,7 @@ static void store_flat(struct curvature *out, uint32_t v, const double *n0)
     }
     frame_complete(&f);
     store(out, v, 0, 0, f.t1, f.t2, f.n);
+    memcpy(out->surface_normal + 3 * (size_t)v, f.n, sizeof f.n);
 }
 
 /* Estimates vertex v (see the file comment) into out. */
@@ -1162,6 +1166,17 @@ static void vertex_curvature(const struct mesh *mesh, uint32_t v,
         return;
     }
     store(out, v, k1, k2, d1, d2, n);
+    /* The surface normal (curvature.h): a quadric's gradient takes in the
+     * cubic term of a curvature that changes, which the cubic's does not.
+     * Refitted once in the final frame, where it is all but level. */
+    struct jet cubic;
+    double *surface = out->surface_normal + 3 * (size_t)v;
+    if (nterms == 5 && fit(&hood, &f, TERMS_MAX, &jet, &cubic)) {
+        graph_normal(&f, &cubic, surface);
+        if (isfinite(vec3_dot(surface, surface)))
+            return;
+    }
+    memcpy(surface, n, 3 * sizeof *surface);
 }
 
 /* One thread's share of curvature_at_vertices: the vertices of every
@@ -1244,7 +1259,9 @@ static int estimate(const struct mesh *mesh, int flip_normals, int jobs,
     out->dir1 = malloc(3 * n1 * sizeof(double));
     out->dir2 = malloc(3 * n1 * sizeof(double));
     out->normal = malloc(3 * n1 * sizeof(double));
-    if (!out->k1 || !out->k2 || !out->dir1 || !out->dir2 || !out->normal)
+    out->surface_normal = malloc(3 * n1 * sizeof(double));
+    if (!out->k1 || !out->k2 || !out->dir1 || !out->dir2 || !out->normal ||
+        !out->surface_normal)
         return facet_error_set(err, FACET_EWORK,
                                "curvature: out of memory for %zu vertices",
                                nv);
@@ -1326,5 +1343,6 @@ void curvature_free(struct curvature *curvature)
     free(curvature->dir1);
     free(curvature->dir2);
     free(curvature->normal);
+    free(curvature->surface_normal);
     memset(curvature, 0, sizeof *curvature);
 }

@@ -32,6 +32,16 @@ struct curvature {
     double *dir1;      /* #V x 3 unit principal direction of k1 */
     double *dir2;      /* #V x 3 unit principal direction of k2 */
     double *normal;    /* #V x 3 unit vertex normal that fixes the sign */
+    double *surface_normal;  /* #V x 3 the surface's unit normal as exactly
+                                as the fit knows it: where the fit was a
+                                quadric, the normal of a cubic jet refitted
+                                in its final frame, whose gradient does not
+                                take in the cubic term of a changing
+                                curvature (z = x^2/8 at 60 x 40 quads: the
+                                quadric's normal 0.048 degrees off, the
+                                cubic's 0.0005); else normal. On normal's
+                                side; for joints and the smooth surface
+                                through the vertices (cell_sides.h) */
 };
 
 /* Estimates curvature at every vertex of mesh into *out (caller-owned,

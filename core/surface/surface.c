@@ -224,6 +224,9 @@ int surface_prepare_stoppable(struct surface *surface, int flip_normals,
     if (rc == FACET_OK)
         rc = curvature_at_vertices_stoppable(&surface->mesh, flip_normals,
                                              stop, &surface->curvature, err);
+    if (rc == FACET_OK)
+        rc = mesh_facet_sag(&surface->mesh, &surface->curvature,
+                            &surface->facet_sag, err);
     if (rc == FACET_OK && (rc = facet_stop_check(stop, err)) == FACET_OK)
         rc = panel_prep_build(&surface->mesh, &surface->uv,
                               &surface->curvature, &surface->panels, err);

@@ -42,6 +42,9 @@ struct surface {
                                        order, for every grid's joints */
     struct fit_points fit;          /* the mesh points in UV, for the
                                        fit of SP panels (sp_fit.h) */
+    double facet_sag;               /* how far the facets sag from the
+                                       surface the vertices sample (m,
+                                       mesh_facet_sag) */
 };
 
 /* Loads path with options into *out. Returns FACET_OK, or the loader's or

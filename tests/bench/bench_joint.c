@@ -37,6 +37,7 @@
 
 #include "bench_common.h"
 #include "core/classify/classify.h"
+#include "core/surface/coarse_mesh.h"
 #include "core/joint/joint.h"
 #include "study/study.h"
 
@@ -67,6 +68,7 @@ static void joints_alone(const struct surface *surface,
     if (cell_sides_sample(&surface->mesh, &surface->uv, &surface->curvature,
                           panels, &sides, &err) != FACET_OK ||
         built_option_fit(&surface->mesh, points, panels, &sides, threshold,
+                         facet_sag_matters(surface->facet_sag, threshold),
                          built, &err) != FACET_OK ||
         joints_measure(panels, built, &sides, MAX_GAP, MAX_KINK, &measured,
                        &err) != FACET_OK)
@@ -122,7 +124,10 @@ static void stepped_pass(const struct surface *surface,
                                     &surface->curvature, points, &panels,
                                     &grid, &err) != FACET_OK) ||
                     grid_fits_option(&grid, &panels,
-                                     params.classify.threshold, &cached,
+                                     params.classify.threshold,
+                                     facet_sag_matters(surface->facet_sag,
+                                         params.classify.threshold),
+                                     &cached,
                                      &view, &err) != FACET_OK ||
                     joints_measure(&panels, &cached, &view, MAX_GAP,
                                    MAX_KINK, &measured, &err) != FACET_OK)
@@ -219,7 +224,10 @@ int main(int argc, char **argv)
             fail(&err);
         double t1 = bench_cpu_now();
         if (built_option_fit(&surface.mesh, &points, &panels, &sides,
-                             options.threshold, &built, &err) != FACET_OK)
+                             options.threshold,
+                             facet_sag_matters(surface.facet_sag,
+                                               options.threshold),
+                             &built, &err) != FACET_OK)
             fail(&err);
         double t2 = bench_cpu_now();
         if (joints_measure(&panels, &built, &sides, max_gap, max_kink,

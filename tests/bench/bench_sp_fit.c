@@ -19,6 +19,7 @@
 
 #include "bench_common.h"
 #include "core/classify/classify.h"
+#include "core/surface/coarse_mesh.h"
 #include "core/fit/sp_fit.h"
 #include "core/joint/cell_sides.h"
 
@@ -63,7 +64,10 @@ int main(int argc, char **argv)
                     bench_die("bench_sp_fit", "sides", &err);
                 double start = bench_cpu_now();
                 if (built_option_fit(&surface.mesh, &surface.fit, &panels,
-                                     &sides, options.threshold, &built,
+                                     &sides, options.threshold,
+                                     facet_sag_matters(surface.facet_sag,
+                                         options.threshold),
+                                     &built,
                                      &err) != FACET_OK)
                     bench_die("bench_sp_fit", "fits", &err);
                 spent += bench_cpu_now() - start;

@@ -509,23 +509,33 @@ static void point_at(const struct mesh *mesh, uint32_t t, const double b[3],
                    b[2] * mesh->position[3 * (size_t)tri[2] + x];
 }
 
-/* The unit surface normal in triangle t at barycentric b: the vertex
- * normals interpolated, on the side of the face normal. */
+/* The unit surface normal in triangle t at barycentric b, point x: each
+ * corner's surface normal carried halfway to x by its shape operator,
+ * blended by b, on the side of the face normal (cell_sides.h). */
 static void normal_at(const struct mesh *mesh,
                       const struct curvature *curvature, uint32_t t,
-                      const double b[3], double normal[3])
+                      const double b[3], const double x[3], double normal[3])
 {
     const uint32_t *tri = mesh->triangle + 3 * (size_t)t;
-    for (int x = 0; x < 3; x++)
-        normal[x] = b[0] * curvature->normal[3 * (size_t)tri[0] + x] +
-                    b[1] * curvature->normal[3 * (size_t)tri[1] + x] +
-                    b[2] * curvature->normal[3 * (size_t)tri[2] + x];
+    memset(normal, 0, 3 * sizeof *normal);
+    for (int k = 0; k < 3; k++) {
+        size_t v = tri[k];
+        const double *n = curvature->surface_normal + 3 * v;
+        const double *d1 = curvature->dir1 + 3 * v;
+        const double *d2 = curvature->dir2 + 3 * v;
+        double d[3];
+        vec3_sub(x, mesh->position + 3 * v, d);
+        double s1 = 0.5 * curvature->k1[v] * vec3_dot(d, d1);
+        double s2 = 0.5 * curvature->k2[v] * vec3_dot(d, d2);
+        for (int c = 0; c < 3; c++)
+            normal[c] += b[k] * (n[c] - s1 * d1[c] - s2 * d2[c]);
+    }
     const double *face = mesh->face_normal + 3 * (size_t)t;
     if (!vec3_normalize(normal))
         memcpy(normal, face, 3 * sizeof *normal);
     if (vec3_dot(normal, face) < 0)
-        for (int x = 0; x < 3; x++)
-            normal[x] = -normal[x];
+        for (int c = 0; c < 3; c++)
+            normal[c] = -normal[c];
 }
 
 /* 1 when panel follows the surface over its whole cell: typed DP, not
@@ -661,6 +671,8 @@ static int sample(const struct mesh *mesh, const struct uv_index *index,
                 continue;
             }
             normal_at(mesh, curvature, triangle[middle], bary[middle],
+                      out->point + 3 * (s * CELL_SIDE_SAMPLES +
+                                        (size_t)middle),
                       out->normal + 3 * s);
         }
     }

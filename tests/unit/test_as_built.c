@@ -11,7 +11,10 @@
  * of ../shared/data (irregular triangles, trimmed boundaries, a conical
  * roof), every side's samples, marks and normal, every panel's verdict,
  * fit, deviations, and every joint's gap and kink must be the same, and
- * the grid's kept fits (grid_fits) too.
+ * the grid's kept fits (grid_fits) too. The reference samples the
+ * facets, so the fits here are asked for on the facets (smooth 0) whatever
+ * the surfaces' sag; the smooth samples are checked against the analytic
+ * cylinder in test_sp_fit_smooth.
  */
 #include <setjmp.h>
 #include <stdarg.h>
@@ -207,7 +210,7 @@ static void compare_grid(const char *name, const struct surface *s, int nu,
                          &truth_joints);
         if (cell_sides_sample(&s->mesh, &s->uv, &s->curvature, &panels,
                               &sides, &err) != FACET_OK ||
-            built_option_fit(&s->mesh, &s->fit, &panels, &sides, t[x],
+            built_option_fit(&s->mesh, &s->fit, &panels, &sides, t[x], 0,
                              &built, &err) != FACET_OK ||
             joints_measure(&panels, &built, &sides, 0.006, PI / 180,
                            &joints, &err) != FACET_OK)
@@ -225,7 +228,7 @@ static void compare_grid(const char *name, const struct surface *s, int nu,
             struct cell_sides view;
             struct tally ignored;
             memset(&ignored, 0, sizeof ignored);
-            if (grid_fits_option(&grid, &panels, t[x], &built, &view,
+            if (grid_fits_option(&grid, &panels, t[x], 0, &built, &view,
                                  &err) != FACET_OK ||
                 joints_measure(&panels, &built, &view, 0.006, PI / 180,
                                &joints, &err) != FACET_OK)

@@ -32,6 +32,7 @@
 #include <unistd.h>
 
 #include "core/classify/classify.h"
+#include "core/surface/coarse_mesh.h"
 #include "core/fit/sp_fit.h"
 #include "core/classify/option.h"
 #include "core/joint/joint.h"
@@ -141,7 +142,8 @@ static void build(const struct surface *s, double t, struct option *o)
         cell_sides_sample(&s->mesh, &s->uv, &s->curvature, &o->panels,
                           &o->sides, &err) != FACET_OK ||
         built_option_fit(&s->mesh, &o->points, &o->panels, &o->sides, t,
-                         &o->built, &err) != FACET_OK ||
+                         facet_sag_matters(s->facet_sag, t), &o->built,
+                         &err) != FACET_OK ||
         joints_measure(&o->panels, &o->built, &o->sides, 0.006, PI / 180,
                        &o->joints, &err) != FACET_OK)
         fail_msg("%s", err.message);
@@ -819,11 +821,13 @@ static void compare_grid_fits(const struct surface *s, int nu, int nv,
         if (cell_sides_sample(&s->mesh, &s->uv, &s->curvature, &o.panels,
                               &alone_sides, &err) != FACET_OK ||
             built_option_fit(&s->mesh, &points, &o.panels, &alone_sides,
-                             t[x], &alone, &err) != FACET_OK ||
+                             t[x], facet_sag_matters(s->facet_sag, t[x]),
+                             &alone, &err) != FACET_OK ||
             joints_measure(&o.panels, &alone, &alone_sides, 0.006, PI / 180,
                            &alone_joints, &err) != FACET_OK ||
-            grid_fits_option(&grid, &o.panels, t[x], &built, &sides,
-                             &err) != FACET_OK ||
+            grid_fits_option(&grid, &o.panels, t[x],
+                             facet_sag_matters(s->facet_sag, t[x]), &built,
+                             &sides, &err) != FACET_OK ||
             joints_measure(&o.panels, &built, &sides, 0.006, PI / 180,
                            &joints, &err) != FACET_OK)
             fail_msg("%s", err.message);
