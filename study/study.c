@@ -934,7 +934,7 @@ static void collect_warnings(const struct surface *surface,
     char what[80];
     snprintf(what, sizeof what, "the smallest threshold of the space, t = "
              "%g mm", space->t_min_mm);
-    if (facet_sag_warning(surface->facet_sag, space->t_min_mm / 1000, what,
+    if (facet_sag_warning(surface->facet_sag, units_m_of_mm(space->t_min_mm), what,
                           lines[n], sizeof lines[0]))
         n++;
     size_t used = 0;

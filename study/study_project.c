@@ -16,6 +16,7 @@
 #include "core/base/sha256.h"
 #include "core/panel/panel.h"
 #include "core/surface/coarse_mesh.h"
+#include "core/base/units.h"
 
 /* What reading a project parses: its files into the project. */
 struct project_read {
@@ -97,7 +98,7 @@ void study_project_warnings(const struct study_request *request,
     text[0] = '\0';
     double side = sqrt(request->module.width_min *
                        request->module.height_min);
-    double t_min = request->settings.space.t_min_mm / 1000;
+    double t_min = units_m_of_mm(request->settings.space.t_min_mm);
     size_t coarse = 0, sagging = 0;
     const char *coarsest = NULL, *saggiest = NULL;
     double worst_facet = 0, worst_sag = 0;

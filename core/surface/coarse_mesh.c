@@ -9,6 +9,7 @@
 #include <stdlib.h>
 
 #include "core/base/vec3.h"
+#include "core/base/units.h"
 
 
 
@@ -148,6 +149,6 @@ int facet_sag_warning(double sag, double threshold, const char *what,
              "more than a quarter of %s: single-curved panels are measured "
              "against the smooth surface through the vertices, but FP "
              "deviations and joints still include the sag (refine the mesh)",
-             sag * 1e3, what);
+             units_mm(sag), what);
     return 1;
 }
