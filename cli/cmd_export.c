@@ -27,6 +27,22 @@ static int is_stdout(const char *path)
            a.st_dev == b.st_dev && a.st_ino == b.st_ino;
 }
 
+/* What a building's option cannot be exported as yet is refused before
+ * any file is made, with the command that shows it instead. */
+static int refuse_building(struct store *store, const char *path,
+                           long run, long number, struct facet_error *err)
+{
+    struct run_info info;
+    int rc = store_run_get(store, run, &info, err);
+    if (rc != FACET_OK || !store_run_is_project(&info))
+        return rc;
+    return facet_error_set(err, FACET_EINPUT,
+        "export: run %ld is a building of several surfaces: --obj, --json "
+        "and --svg of its options are not written yet, only --csv; its "
+        "totals surface by surface: facet show %s --run %ld --option %ld",
+        run, path, run, number);
+}
+
 /* The options as given (pointing into argv), NULL or 0 when absent; the
  * files to write go straight into the request. */
 struct export_args {
@@ -104,6 +120,8 @@ static int export_main(int argc, char **argv, struct facet_error *err)
         return rc;
     if (surface != NULL)
         rc = study_repoint_surface(store, run_id, surface, err);
+    if (rc == FACET_OK && (request.obj || request.json || request.svg))
+        rc = refuse_building(store, path, run_id, number, err);
     if (rc == FACET_OK)
         rc = study_export(store, run_id, number, &request, err);
     /* What was written is said on stdout, unless a file went there. */

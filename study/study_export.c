@@ -3,6 +3,7 @@
  */
 #include "study_export.h"
 
+#include <assert.h>
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -85,8 +86,48 @@ int study_option_load(struct store *store, int64_t run, int64_t number,
     return rc;
 }
 
+int study_option_building(struct store *store, struct study_option *p,
+                          const struct study_hooks *hooks,
+                          struct facet_error *err)
+{
+    assert(store_run_is_project(&p->run) && !p->have_view);
+    int rc = study_project_view_open(store, &p->run, hooks, &p->view, err);
+    p->have_view = 1;
+    if (rc == FACET_OK)
+        rc = study_project_view_option(store, &p->view, p->row.number,
+                                       &p->building, err);
+    p->have_building = 1;
+    if (rc != FACET_OK)
+        return rc;
+    const struct project_option *b = &p->building;
+    if (b->nsurfaces != p->nsurfaces)
+        return facet_error_set(err, FACET_EINPUT,
+            "run %lld option %lld: its building has %zu surfaces, the run "
+            "recorded %zu", (long long)p->run.id, (long long)p->row.number,
+            b->nsurfaces, p->nsurfaces);
+    for (size_t s = 0; s < b->nsurfaces; s++)
+        if (b->surfaces[s].panels.npanels != p->surface_rows[s].totals.panels)
+            return facet_error_set(err, FACET_EINPUT,
+                "run %lld option %lld: surface %s evaluates to %zu panels, "
+                "the run stored %zu: its files or Facet have changed since",
+                (long long)p->run.id, (long long)p->row.number,
+                p->surfaces[s].name, b->surfaces[s].panels.npanels,
+                p->surface_rows[s].totals.panels);
+    if (b->totals.panels != p->row.totals.panels)
+        return facet_error_set(err, FACET_EINPUT,
+            "run %lld option %lld: its building evaluates to %zu panels, "
+            "the run stored %zu", (long long)p->run.id,
+            (long long)p->row.number, b->totals.panels,
+            p->row.totals.panels);
+    return FACET_OK;
+}
+
 void study_option_free(struct study_option *p)
 {
+    if (p->have_building)
+        project_option_free(&p->building);
+    if (p->have_view)
+        study_project_view_close(&p->view);
     if (p->have_geometry)
         panel_geometry_free(&p->geometry);
     panelization_free(&p->panels);
@@ -138,6 +179,18 @@ int study_export(struct store *store, int64_t run, int64_t number,
     const char *target[EXPORT_FILES] = {r->obj, r->obj ? mtl : NULL, r->csv,
                                         totals_file ? totals : NULL, r->json,
                                         r->svg};
+    /* A building's option: its schedule, every surface's panels in one,
+     * and its totals; the other formats are refused before any file is
+     * made rather than written empty. */
+    struct run_info info;
+    if ((rc = store_run_get(store, run, &info, err)))
+        return rc;
+    int building = store_run_is_project(&info);
+    if (building && (r->obj || r->json || r->svg))
+        return facet_error_set(err, FACET_EINPUT,
+            "run %lld is a project (a building of several surfaces): an "
+            "OBJ, JSON or SVG of its option is not written yet, only its "
+            "panel schedule (CSV)", (long long)run);
     struct outfile file[EXPORT_FILES];
     int open[EXPORT_FILES] = {0};
     if ((rc = open_all(target, r->force, file, open, err)))
@@ -145,14 +198,27 @@ int study_export(struct store *store, int64_t run, int64_t number,
 
     struct study_option p;
     rc = study_option_load(store, run, number, r->obj || r->svg, &p, err);
-    if (rc == FACET_OK && r->obj) {
+    if (rc == FACET_OK && building)
+        rc = study_option_building(store, &p, NULL, err);
+    if (rc == FACET_OK && building && r->csv) {
+        const struct project_option *b = &p.building;
+        report_csv_header(file[EXPORT_CSV].out, 1);
+        size_t id = 1;
+        for (size_t s = 0; s < b->nsurfaces; s++) {
+            report_csv_rows(file[EXPORT_CSV].out, &b->surfaces[s].panels,
+                            p.surfaces[s].name, id);
+            id += b->surfaces[s].panels.npanels;
+        }
+        if (totals_file)
+            report_totals_csv(file[EXPORT_TOTALS].out, &b->totals);
+    } else if (rc == FACET_OK && r->obj) {
         /* mtllib is relative to the OBJ: the MTL's own name. */
         const char *slash = strrchr(mtl, '/');
         export_obj_write(file[EXPORT_OBJ].out, slash ? slash + 1 : mtl,
                          &p.geometry, &p.panels);
         export_obj_write_mtl(file[EXPORT_MTL].out);
     }
-    if (rc == FACET_OK && r->csv) {
+    if (rc == FACET_OK && r->csv && !building) {
         report_csv(file[EXPORT_CSV].out, &p.panels);
         if (totals_file)
             report_totals_csv(file[EXPORT_TOTALS].out, &p.totals);

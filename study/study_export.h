@@ -17,6 +17,7 @@
 #include "core/surface/surface.h"
 #include "core/out/svg_map.h"
 #include "store/store.h"
+#include "study/study_project_view.h"
 
 /* A stored option with what showing or exporting it needs. */
 struct study_option {
@@ -36,6 +37,12 @@ struct study_option {
     struct surface_row *surfaces;
     struct option_surface_row *surface_rows;
     size_t nsurfaces;
+    /* A project run's option evaluated again over its building
+     * (study_option_building): every surface's panels, the building's
+     * totals and mould families; have_building set. */
+    struct study_project_view view;
+    struct project_option building;
+    int have_view, have_building;
 };
 
 /* Reads option number of run into *out (caller-owned, released with
@@ -48,6 +55,17 @@ int study_option_load(struct store *store, int64_t run, int64_t number,
                       int geometry, struct study_option *out,
                       struct facet_error *err);
 void study_option_free(struct study_option *option);
+
+/* Of a project run's option loaded by study_option_load: opens the run's
+ * building again (study_project_view_open: its files, checked by SHA-256)
+ * and evaluates the option over it into option->building, with the
+ * run's settings and the option's stored grids. The building's panels
+ * must be as many as the option's row says, surface by surface and in
+ * all, or FACET_EINPUT: a schedule that does not add up to the option
+ * shown is never written. hooks (may be NULL) hears the stage. */
+int study_option_building(struct store *store, struct study_option *option,
+                          const struct study_hooks *hooks,
+                          struct facet_error *err);
 
 /* What report_json writes about the option's surface. */
 void study_option_source(const struct study_option *option,
