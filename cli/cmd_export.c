@@ -38,7 +38,8 @@ static int refuse_building(struct store *store, const char *path,
         return rc;
     return facet_error_set(err, FACET_EINPUT,
         "export: run %ld is a building of several surfaces: --obj, --json "
-        "and --svg of its options are not written yet, only --csv; its "
+        "and --svg of its options are not written yet, only --csv and --xlsx; "
+        "its "
         "totals surface by surface: facet show %s --run %ld --option %ld",
         run, path, run, number);
 }
@@ -62,6 +63,9 @@ static const struct arg_option export_options[] = {
      "FILE.mtl beside", NULL},
     {"csv", 0, ARG_STRING, offsetof(struct export_args, request.csv),
      "FILE.csv", "the panel schedule with a totals row", NULL},
+    {"xlsx", 0, ARG_STRING, offsetof(struct export_args, request.xlsx),
+     "FILE.xlsx", "the panel schedule as a workbook: sheets of panels, "
+     "moulds, surfaces (a building) and totals", NULL},
     {"json", 0, ARG_STRING, offsetof(struct export_args, request.json),
      "FILE.json", "the option as facet classify --json", NULL},
     {"svg", 0, ARG_STRING, offsetof(struct export_args, request.svg),
@@ -100,9 +104,11 @@ static int export_main(int argc, char **argv, struct facet_error *err)
     struct export_request request = a.request;
     if (run == NULL || option == NULL)
         return facet_error_set(err, FACET_EINPUT, "%s", missing);
-    if (!request.obj && !request.csv && !request.json && !request.svg)
+    if (!request.obj && !request.csv && !request.json && !request.svg &&
+        !request.xlsx)
         return facet_error_set(err, FACET_EINPUT,
-            "export: say what to write: --obj, --csv, --json and/or --svg");
+            "export: say what to write: --obj, --csv, --xlsx, --json and/or "
+            "--svg");
     long run_id, number;
     if ((rc = args_int(run, 1, 1L << 62, "--run", &run_id, err)) ||
         (rc = args_int(option, 1, 1L << 62, "--option", &number, err)))
@@ -139,12 +145,13 @@ static int export_main(int argc, char **argv, struct facet_error *err)
 const struct command cmd_export = {
     .name = "export",
     .usage = "DB --run N --option M [--obj FILE.obj] [--csv FILE.csv]\n"
+             "       [--xlsx FILE.xlsx]\n"
              "       [--json FILE.json] [--svg FILE.svg] [--view "
              "uv|top|front|side]\n"
              "       [--colour type|class] [--triangles] [--surface FILE] "
              "[--force]",
-    .summary = "Export one option: OBJ + MTL, CSV panel schedule, JSON, "
-               "SVG panel map.",
+    .summary = "Export one option: OBJ + MTL, CSV or XLSX panel schedule, "
+               "JSON, SVG panel map.",
     .before = "",
     .options = export_options,
     .after = "",

@@ -3,7 +3,9 @@
  * `facet export`, `facet plot` and the TUI's export keys all do.
  *
  * An option goes out as OBJ + MTL (core/out/export_obj.h), a CSV panel
- * schedule and JSON (core/out/report.h) and an SVG panel map
+ * schedule and JSON (core/out/report.h), an XLSX panel schedule
+ * (core/out/xlsx_schedule.h: its workbook dated the run's start, so the
+ * same option gives the same bytes) and an SVG panel map
  * (core/out/svg_map.h); a run as an SVG scatter (core/out/svg_plot.h). Every
  * file is opened (as FILE.partial) before any work and renamed into place
  * only when all of them are written, so an export that fails leaves no file
@@ -72,10 +74,12 @@ void study_option_source(const struct study_option *option,
                          struct report_source *out);
 
 enum export_file { EXPORT_OBJ, EXPORT_MTL, EXPORT_CSV, EXPORT_TOTALS,
-                   EXPORT_JSON, EXPORT_SVG, EXPORT_FILES };
+                   EXPORT_JSON, EXPORT_SVG, EXPORT_XLSX, EXPORT_FILES };
 
 struct export_request {
     const char *obj, *csv, *json, *svg;   /* paths; NULL: not wanted */
+    const char *xlsx;                     /* the schedule as a workbook
+                                             (core/out/xlsx_schedule.h) */
     int force;                            /* overwrite existing files */
     struct svg_map_options map;           /* view and colouring of the SVG */
     /* Set by study_export: the paths written, in the order written (the
@@ -84,7 +88,10 @@ struct export_request {
     char written[EXPORT_FILES][4096];
 };
 
-/* Writes the files request asks for of option number of run. Panels not
+/* Writes the files request asks for of option number of run. Of a
+ * building's option (a project run) the CSV and XLSX schedules only,
+ * every surface's panels (study_option_building); the others are refused
+ * (FACET_EINPUT) before any file is made. Panels not
  * stored yet are computed and stored first (study_option_panels); the OBJ
  * and the SVG need the surface file, which must be unchanged. Returns
  * FACET_OK, FACET_EINPUT (no such run or option, a file that exists, a
