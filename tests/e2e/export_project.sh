@@ -8,6 +8,7 @@
 # layers: cli study store core
 . "$(dirname "$0")/lib.sh"
 DB=$WORK/b.db
+CHECK=$(cd "$(dirname "$0")" && pwd)/export_project.py
 cd "$WORK" || exit 1
 for s in plane cylinder dome hypar; do
     "$FACET" example "$s" --res 10 -o "$WORK/$s.obj" || exit 1
@@ -21,7 +22,7 @@ OPTION=$(sqlite3 "$DB" 'SELECT number FROM options WHERE run=1 ORDER BY number L
 expect "the building's schedule is written" 0 "$FACET" export "$DB" \
     --run 1 --option "$OPTION" --csv "$WORK/b.csv"
 stdout_has "it says what it wrote" '^wrote .*b\.csv$'
-/usr/bin/python3 "$(dirname "$0")/export_project.py" "$DB" 1 "$OPTION" \
+/usr/bin/python3 "$CHECK" "$DB" 1 "$OPTION" \
     "$WORK/b.csv" "$WORK/b-totals.csv" ||
     echo "not ok - export_project.py (status $?)"
 

@@ -1,4 +1,4 @@
-"""export_xlsx.py DB RUN OPTION BOOK.xlsx: an option's XLSX schedule read
+"""export_xlsx.py DB RUN OPTION BOOK.xlsx [RADIUS]: an option's XLSX schedule read
 back by openpyxl (not Facet) against the store read by Python's sqlite3.
 Prints one "ok - ..." or "not ok - ..." line per check.
 
@@ -129,6 +129,29 @@ else:
            not close(s["area (m^2)"], r["area"])]
     check("surfaces: grids, panels, areas and costs as stored", not bad,
           bad[:3])
+
+# The SP bending radius, where a panel is built on a fitted cylinder or
+# cone: as many as the option's fitted SP panels, the least of them the
+# option's sp_min_radius (the fits are made again for the schedule: the
+# same to sp_fit.h's precision).
+radii = [p["SP bending radius (m)"] for p in panels
+         if p["SP bending radius (m)"] is not None]
+check("panels: a bending radius for each of the %s SP panels built on a "
+      "fit" % row["sp_fitted"], len(radii) == row["sp_fitted"] and
+      all(p["type as built"] == "SP" for p in panels
+          if p["SP bending radius (m)"] is not None), len(radii))
+if radii:
+    check("panels: the least bending radius is sp_min_radius (%s m)" %
+          row["sp_min_radius"], close(min(radii), row["sp_min_radius"],
+                                      rel=1e-9),
+          (min(radii), row["sp_min_radius"]))
+if len(sys.argv) > 5:
+    # A cylinder of known radius: every panel bent to it, within the
+    # facets' sag (under 1 %).
+    r = float(sys.argv[5])
+    check("panels: every bending radius within 1 %% of the cylinder's %g m"
+          % r, radii and all(abs(x - r) <= 0.01 * r for x in radii),
+          radii[:5])
 
 moulds = table(wb["moulds"])
 check("moulds: one row per family (%s)" % row["moulds"],

@@ -6,7 +6,7 @@
 # in one line and leaves nothing.
 # layers: cli study store core
 . "$(dirname "$0")/lib.sh"
-CHECK="/usr/bin/python3 $(dirname "$0")/export_xlsx.py"
+CHECK="/usr/bin/python3 $(cd "$(dirname "$0")" && pwd)/export_xlsx.py"
 if ! /usr/bin/python3 -c 'import openpyxl' 2>/dev/null; then
     skip "every XLSX check" "python3-openpyxl is not installed (make deps)"
     exit 0
@@ -30,6 +30,16 @@ if cmp -s one.xlsx again.xlsx; then
 else
     echo "not ok - the same option twice differs"
 fi
+
+# A barrel vault of radius 10 m: its SP panels' bending radii.
+"$FACET" example cylinder --res 60 -o cyl.obj || exit 1
+expect "a cylinder runs" 0 "$FACET" optimize cyl.obj --db cyl.db --u 8 \
+    --v 8 --threshold 3
+expect "its schedule is written" 0 "$FACET" export cyl.db --run 1 \
+    --option 1 --xlsx cyl.xlsx
+same "its panels are all SP, fitted" \
+    "$(sqlite3 cyl.db 'SELECT sp_count, sp_fitted FROM options')" "64|64"
+$CHECK cyl.db 1 1 cyl.xlsx 10 || echo "not ok - export_xlsx.py on a cylinder (status $?)"
 
 # A building of four files: its panels evaluated again, against
 # option_surfaces.
