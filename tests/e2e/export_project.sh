@@ -26,6 +26,23 @@ stdout_has "it says what it wrote" '^wrote .*b\.csv$'
     "$WORK/b.csv" "$WORK/b-totals.csv" ||
     echo "not ok - export_project.py (status $?)"
 
+# The issue's case: the 180-face skin (coarse, 14,400 triangles), one
+# module.
+"$FACET" example skin --res 8 -o "$WORK/skin.obj" || exit 1
+expect "the skin runs" 0 "$FACET" optimize skin.obj --db skin.db \
+    --module 3x3 --threshold 4
+expect "the skin's schedule is written" 0 "$FACET" export skin.db --run 1 \
+    --option 1 --csv "$WORK/skin.csv"
+/usr/bin/python3 "$CHECK" skin.db 1 1 "$WORK/skin.csv" \
+    "$WORK/skin-totals.csv" >"$WORK/skin.checks" ||
+    echo "not ok - export_project.py on the skin (status $?)"
+# 180 surfaces, three checks each: one line for the lot.
+if grep -q '^not ok' "$WORK/skin.checks"; then
+    grep '^not ok' "$WORK/skin.checks" | head -5
+else
+    pass "the skin: $(grep -c '^ok' "$WORK/skin.checks") checks of its schedule against the store"
+fi
+
 # No format of a building writes an empty file and calls it done: those
 # not written yet are refused, before any file is made.
 for f in obj json svg; do

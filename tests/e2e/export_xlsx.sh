@@ -62,6 +62,15 @@ else
     echo "not ok - a building's option twice differs"
 fi
 
+# The 180-face skin (coarse): SP panels on many surfaces, moulds shared
+# across them.
+"$FACET" example skin --res 8 -o skin.obj || exit 1
+expect "the skin runs" 0 "$FACET" optimize skin.obj --db skin.db \
+    --module 3x3 --threshold 4 --mould-cost 900,4000
+expect "the skin's option as XLSX" 0 "$FACET" export skin.db --run 1 \
+    --option 1 --xlsx skin.xlsx
+$CHECK skin.db 1 1 skin.xlsx || echo "not ok - export_xlsx.py on the skin (status $?)"
+
 # Hostile paths: one line, a non-zero exit, nothing half-written.
 mkdir -p adir
 expect_error "--xlsx into a directory is refused" "adir is a directory" \
