@@ -129,6 +129,19 @@ else:
            not close(s["area (m^2)"], r["area"])]
     check("surfaces: grids, panels, areas and costs as stored", not bad,
           bad[:3])
+    # The example plane is a 20 m x 15 m rectangle (facet example): each
+    # of its panels is 20/U m along i and 15/V m across, by construction.
+    plane = [s for s in surfaces if s["surface"] == "plane"]
+    if plane:
+        u, v = plane[0]["U panels"], plane[0]["V panels"]
+        mine = [p for p in panels if p["surface"] == "plane"]
+        bad = [p for p in mine if not (
+            close(p["size along i (m)"], 20 / u, rel=1e-9) and
+            close(p["size across i (m)"], 15 / v, rel=1e-9))]
+        check("panels: the plane's %d panels are %g m x %g m" %
+              (len(mine), 20 / u, 15 / v), mine and not bad,
+              [(p["size along i (m)"], p["size across i (m)"])
+               for p in bad[:3]])
 
 # The SP bending radius, where a panel is built on a fitted cylinder or
 # cone: as many as the option's fitted SP panels, the least of them the
