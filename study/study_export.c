@@ -161,8 +161,8 @@ void study_option_source(const struct study_option *p,
  * panels' threshold). A panel the fits build otherwise than the
  * evaluation did gets NaN: no number that belongs to another build. */
 static int bending_radii(const struct surface *surface,
-                         const struct panelization *panels, double *radius,
-                         struct facet_error *err)
+                         const struct panelization *panels, double threshold,
+                         double *radius, struct facet_error *err)
 {
     for (size_t k = 0; k < panels->npanels; k++)
         radius[k] = NAN;
@@ -178,7 +178,7 @@ static int bending_radii(const struct surface *surface,
                                &surface->curvature, panels, &sides, err);
     if (rc == FACET_OK)
         rc = built_option_fit(&surface->mesh, &surface->fit, panels, &sides,
-                              panels->threshold, &built, err);
+                              threshold, &built, err);
     for (size_t k = 0; rc == FACET_OK && k < panels->npanels; k++) {
         const struct built_panel *b = &built.panels[k];
         if (b->fitted && b->type == TYPE_SP &&
@@ -240,7 +240,8 @@ static int write_xlsx(FILE *out, const struct study_option *p,
             rc = facet_error_set(err, FACET_EWORK, "out of memory");
             break;
         }
-        rc = bending_radii(surface, panels, radius[s], err);
+        rc = bending_radii(surface, panels, p->classify.threshold,
+                           radius[s], err);
         if (building) {
             surfaces[s] = (struct xlsx_surface){
                 p->surfaces[s].name, panels, radius[s],
