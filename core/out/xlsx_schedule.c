@@ -22,7 +22,15 @@ struct formats {
 struct sheet {
     lxw_worksheet *ws;
     lxw_row_t row;
+    lxw_error error;   /* the first cell libxlsxwriter refused, if any */
 };
+
+/* Keeps the first error of a cell written to s. */
+static void keep(struct sheet *s, lxw_error e)
+{
+    if (e != LXW_NO_ERROR && s->error == LXW_NO_ERROR)
+        s->error = e;
+}
 
 static void make_formats(lxw_workbook *wb, struct formats *f)
 {
@@ -77,8 +85,8 @@ static void write_header(struct sheet *s, const struct formats *f,
     for (int k = 0; k < n; k++) {
         worksheet_set_column(s->ws, (lxw_col_t)k, (lxw_col_t)k, c[k].width,
                              format_of(f, c[k].kind));
-        worksheet_write_string(s->ws, 0, (lxw_col_t)k, c[k].header,
-                               f->header);
+        keep(s, worksheet_write_string(s->ws, 0, (lxw_col_t)k, c[k].header,
+                                       f->header));
     }
     worksheet_set_row(s->ws, 0, 30, NULL);
     worksheet_freeze_panes(s->ws, 1, 0);
@@ -90,14 +98,14 @@ static void number(struct sheet *s, lxw_col_t col, double value,
                    lxw_format *format)
 {
     if (isfinite(value))
-        worksheet_write_number(s->ws, s->row, col, value, format);
+        keep(s, worksheet_write_number(s->ws, s->row, col, value, format));
     else
-        worksheet_write_blank(s->ws, s->row, col, format);
+        keep(s, worksheet_write_blank(s->ws, s->row, col, format));
 }
 
 static void text(struct sheet *s, lxw_col_t col, const char *value)
 {
-    worksheet_write_string(s->ws, s->row, col, value, NULL);
+    keep(s, worksheet_write_string(s->ws, s->row, col, value, NULL));
 }
 
 /* The extent of panel p's corners along two directions in its best-fit
@@ -404,6 +412,16 @@ static int copy_into(const char *path, FILE *out, struct facet_error *err)
 int xlsx_schedule_write(FILE *out, const struct xlsx_schedule *x,
                         struct facet_error *err)
 {
+    /* A sheet holds LXW_ROW_MAX rows, the header one of them: more panels
+     * would be cut off without a word. */
+    size_t npanels = 0;
+    for (size_t k = 0; k < x->nsurfaces; k++)
+        npanels += x->surfaces[k].panels->npanels;
+    if (npanels > (size_t)LXW_ROW_MAX - 1)
+        return facet_error_set(err, FACET_EINPUT, "%zu panels: more than "
+                               "an XLSX sheet holds (%lu rows); the CSV "
+                               "schedule holds them all", npanels,
+                               (unsigned long)LXW_ROW_MAX - 1);
     const char *folder = getenv("TMPDIR");
     if (folder == NULL || folder[0] == '\0')
         folder = "/tmp";
@@ -432,11 +450,11 @@ int xlsx_schedule_write(FILE *out, const struct xlsx_schedule *x,
     workbook_set_properties(wb, &properties);
     struct formats f;
     make_formats(wb, &f);
-    struct sheet panels = {workbook_add_worksheet(wb, "panels"), 0};
-    struct sheet moulds = {workbook_add_worksheet(wb, "moulds"), 0};
+    struct sheet panels = {workbook_add_worksheet(wb, "panels"), 0, 0};
+    struct sheet moulds = {workbook_add_worksheet(wb, "moulds"), 0, 0};
     struct sheet surfaces = {x->building ? workbook_add_worksheet(
-                                               wb, "surfaces") : NULL, 0};
-    struct sheet totals = {workbook_add_worksheet(wb, "totals"), 0};
+                                               wb, "surfaces") : NULL, 0, 0};
+    struct sheet totals = {workbook_add_worksheet(wb, "totals"), 0, 0};
     int rc = FACET_OK;
     if (!panels.ws || !moulds.ws || !totals.ws ||
         (x->building && !surfaces.ws))
@@ -449,6 +467,13 @@ int xlsx_schedule_write(FILE *out, const struct xlsx_schedule *x,
         write_surfaces(wb, &surfaces, &f, x);
     if (rc == FACET_OK)
         write_totals(wb, &totals, &f, x);
+    /* A cell refused is a schedule with a hole in it: not written. */
+    const struct sheet *sheets[4] = {&panels, &moulds, &surfaces, &totals};
+    for (int k = 0; rc == FACET_OK && k < 4; k++)
+        if (sheets[k]->error != LXW_NO_ERROR)
+            rc = facet_error_set(err, FACET_EWORK, "writing the workbook "
+                                 "failed: %s",
+                                 lxw_strerror(sheets[k]->error));
     lxw_error closed = workbook_close(wb);
     if (rc == FACET_OK && closed != LXW_NO_ERROR)
         rc = facet_error_set(err, FACET_EWORK, "writing the workbook "

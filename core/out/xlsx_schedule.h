@@ -66,7 +66,9 @@ struct xlsx_schedule {
     const struct classify_options *classify;  /* its prices */
 };
 
-/* Writes s as a workbook to out. Returns FACET_OK, or FACET_EWORK naming
+/* Writes s as a workbook to out. Returns FACET_OK, FACET_EINPUT for more
+ * panels than a sheet has rows (1,048,575 after the header), or
+ * FACET_EWORK naming
  * what failed (the temporary file, libxlsxwriter's error, a short copy);
  * out then holds a part of the file and the caller discards it
  * (outfile_abort). */
