@@ -270,6 +270,24 @@ static int write_xlsx(FILE *out, const struct study_option *p,
     return rc;
 }
 
+/* A building's schedule: one header, then every surface's panels in
+ * the run's order, ids running on across them; its totals the
+ * building's. */
+static void write_building_csv(const struct study_option *p, FILE *csv,
+                               FILE *totals)
+{
+    const struct project_option *b = &p->building;
+    report_csv_header(csv, 1);
+    size_t id = 1;
+    for (size_t s = 0; s < b->nsurfaces; s++) {
+        report_csv_rows(csv, &b->surfaces[s].panels, p->surfaces[s].name,
+                        id);
+        id += b->surfaces[s].panels.npanels;
+    }
+    if (totals != NULL)
+        report_totals_csv(totals, &b->totals);
+}
+
 int study_export(struct store *store, int64_t run, int64_t number,
                  struct export_request *r, struct facet_error *err)
 {
@@ -324,18 +342,10 @@ int study_export(struct store *store, int64_t run, int64_t number,
                            err);
     if (rc == FACET_OK && building)
         rc = study_option_building(store, &p, NULL, err);
-    if (rc == FACET_OK && building && r->csv) {
-        const struct project_option *b = &p.building;
-        report_csv_header(file[EXPORT_CSV].out, 1);
-        size_t id = 1;
-        for (size_t s = 0; s < b->nsurfaces; s++) {
-            report_csv_rows(file[EXPORT_CSV].out, &b->surfaces[s].panels,
-                            p.surfaces[s].name, id);
-            id += b->surfaces[s].panels.npanels;
-        }
-        if (totals_file)
-            report_totals_csv(file[EXPORT_TOTALS].out, &b->totals);
-    } else if (rc == FACET_OK && r->obj) {
+    if (rc == FACET_OK && building && r->csv)
+        write_building_csv(&p, file[EXPORT_CSV].out,
+                           totals_file ? file[EXPORT_TOTALS].out : NULL);
+    if (rc == FACET_OK && r->obj) {
         /* mtllib is relative to the OBJ: the MTL's own name. */
         const char *slash = strrchr(mtl, '/');
         export_obj_write(file[EXPORT_OBJ].out, slash ? slash + 1 : mtl,
