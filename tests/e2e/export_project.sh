@@ -43,6 +43,24 @@ else
     pass "the skin: $(grep -c '^ok' "$WORK/skin.checks") checks of its schedule against the store"
 fi
 
+# A surface named with a comma and quotes (Rhino allows both): its CSV
+# field quoted, read back whole by Python's csv.
+"$FACET" example skin --res 4 -o "$WORK/q.obj" || exit 1
+sed -i 's/^o skin_r00_c00$/o podium, "west"/' "$WORK/q.obj"
+expect "a skin with a quoted name runs" 0 "$FACET" optimize q.obj \
+    --db q.db --module 4x4 --threshold 4
+expect "its schedule is written" 0 "$FACET" export q.db --run 1 \
+    --option 1 --csv "$WORK/q.csv"
+/usr/bin/python3 "$CHECK" q.db 1 1 "$WORK/q.csv" "$WORK/q-totals.csv" \
+    >"$WORK/q.checks" || echo "not ok - export_project.py on the quoted name (status $?)"
+if grep -q '^not ok' "$WORK/q.checks" ||
+    ! grep -q '^ok - surface podium, "west": ' "$WORK/q.checks"; then
+    echo "not ok - the quoted name's panels read back"
+    grep '^not ok' "$WORK/q.checks" | head -5
+else
+    pass "a surface named 'podium, \"west\"': its panels read back whole"
+fi
+
 # No format of a building writes an empty file and calls it done: those
 # not written yet are refused, before any file is made.
 for f in obj json svg; do
