@@ -27,6 +27,23 @@ static int is_stdout(const char *path)
            a.st_dev == b.st_dev && a.st_ino == b.st_ino;
 }
 
+/* What a building's option cannot be exported as yet is refused before
+ * any file is made, with the command that shows it instead. */
+static int refuse_building(struct store *store, const char *path,
+                           long run, long number, struct facet_error *err)
+{
+    struct run_info info;
+    int rc = store_run_get(store, run, &info, err);
+    if (rc != FACET_OK || !store_run_is_project(&info))
+        return rc;
+    return facet_error_set(err, FACET_EINPUT,
+        "export: run %ld is a building of several surfaces: --obj, --json "
+        "and --svg of its options are not written yet, only --csv and "
+        "--xlsx; its totals surface by surface: facet show %s --run %ld "
+        "--option %ld",
+        run, path, run, number);
+}
+
 /* The options as given (pointing into argv), NULL or 0 when absent; the
  * files to write go straight into the request. */
 struct export_args {
@@ -46,6 +63,9 @@ static const struct arg_option export_options[] = {
      "FILE.mtl beside", NULL},
     {"csv", 0, ARG_STRING, offsetof(struct export_args, request.csv),
      "FILE.csv", "the panel schedule with a totals row", NULL},
+    {"xlsx", 0, ARG_STRING, offsetof(struct export_args, request.xlsx),
+     "FILE.xlsx", "the panel schedule as a workbook: sheets of panels, "
+     "moulds, surfaces (a building) and totals", NULL},
     {"json", 0, ARG_STRING, offsetof(struct export_args, request.json),
      "FILE.json", "the option as facet classify --json", NULL},
     {"svg", 0, ARG_STRING, offsetof(struct export_args, request.svg),
@@ -84,9 +104,11 @@ static int export_main(int argc, char **argv, struct facet_error *err)
     struct export_request request = a.request;
     if (run == NULL || option == NULL)
         return facet_error_set(err, FACET_EINPUT, "%s", missing);
-    if (!request.obj && !request.csv && !request.json && !request.svg)
+    if (!request.obj && !request.csv && !request.json && !request.svg &&
+        !request.xlsx)
         return facet_error_set(err, FACET_EINPUT,
-            "export: say what to write: --obj, --csv, --json and/or --svg");
+            "export: say what to write: --obj, --csv, --xlsx, --json and/or "
+            "--svg");
     long run_id, number;
     if ((rc = args_int(run, 1, 1L << 62, "--run", &run_id, err)) ||
         (rc = args_int(option, 1, 1L << 62, "--option", &number, err)))
@@ -104,6 +126,8 @@ static int export_main(int argc, char **argv, struct facet_error *err)
         return rc;
     if (surface != NULL)
         rc = study_repoint_surface(store, run_id, surface, err);
+    if (rc == FACET_OK && (request.obj || request.json || request.svg))
+        rc = refuse_building(store, path, run_id, number, err);
     if (rc == FACET_OK)
         rc = study_export(store, run_id, number, &request, err);
     /* What was written is said on stdout, unless a file went there. */
@@ -121,12 +145,13 @@ static int export_main(int argc, char **argv, struct facet_error *err)
 const struct command cmd_export = {
     .name = "export",
     .usage = "DB --run N --option M [--obj FILE.obj] [--csv FILE.csv]\n"
+             "       [--xlsx FILE.xlsx]\n"
              "       [--json FILE.json] [--svg FILE.svg] [--view "
              "uv|top|front|side]\n"
              "       [--colour type|class] [--triangles] [--surface FILE] "
              "[--force]",
-    .summary = "Export one option: OBJ + MTL, CSV panel schedule, JSON, "
-               "SVG panel map.",
+    .summary = "Export one option: OBJ + MTL, CSV or XLSX panel schedule, "
+               "JSON, SVG panel map.",
     .before = "",
     .options = export_options,
     .after = "",

@@ -366,9 +366,8 @@ int study_open_surface_stoppable(const struct store *store,
     memset(surface, 0, sizeof *surface);
     if (store_run_is_project(run))
         return facet_error_set(err, FACET_EINPUT,
-            "run %lld is a project of several surfaces: its options' "
-            "panels are not kept yet, only each surface's totals (facet "
-            "show %lld OPTION lists them)", (long long)run->id,
+            "run %lld is a project of several surfaces: its surfaces are "
+            "opened together, as its building, not one by one",
             (long long)run->id);
     int rc = study_settings(run, &settings, &mesh, &flip, err);
     if (rc != FACET_OK)

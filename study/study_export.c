@@ -3,17 +3,23 @@
  */
 #include "study_export.h"
 
+#include <assert.h>
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <strings.h>
+#include <time.h>
 
 #include "core/out/export_obj.h"
 #include "core/out/outfile.h"
 #include "core/panel/panel_geometry.h"
 #include "core/out/report.h"
 #include "core/out/svg_plot.h"
+#include "core/out/xlsx_schedule.h"
+#include "core/fit/sp_fit.h"
+#include "core/joint/cell_sides.h"
 #include "study.h"
 
 /* Opens every wanted file as FILE.partial; on failure none is left. */
@@ -85,8 +91,48 @@ int study_option_load(struct store *store, int64_t run, int64_t number,
     return rc;
 }
 
+int study_option_building(struct store *store, struct study_option *p,
+                          const struct study_hooks *hooks,
+                          struct facet_error *err)
+{
+    assert(store_run_is_project(&p->run) && !p->have_view);
+    int rc = study_project_view_open(store, &p->run, hooks, &p->view, err);
+    p->have_view = 1;
+    if (rc == FACET_OK)
+        rc = study_project_view_option(store, &p->view, p->row.number,
+                                       &p->building, err);
+    p->have_building = 1;
+    if (rc != FACET_OK)
+        return rc;
+    const struct project_option *b = &p->building;
+    if (b->nsurfaces != p->nsurfaces)
+        return facet_error_set(err, FACET_EINPUT,
+            "run %lld option %lld: its building has %zu surfaces, the run "
+            "recorded %zu", (long long)p->run.id, (long long)p->row.number,
+            b->nsurfaces, p->nsurfaces);
+    for (size_t s = 0; s < b->nsurfaces; s++)
+        if (b->surfaces[s].panels.npanels != p->surface_rows[s].totals.panels)
+            return facet_error_set(err, FACET_EINPUT,
+                "run %lld option %lld: surface %s evaluates to %zu panels, "
+                "the run stored %zu: its files or Facet have changed since",
+                (long long)p->run.id, (long long)p->row.number,
+                p->surfaces[s].name, b->surfaces[s].panels.npanels,
+                p->surface_rows[s].totals.panels);
+    if (b->totals.panels != p->row.totals.panels)
+        return facet_error_set(err, FACET_EINPUT,
+            "run %lld option %lld: its building evaluates to %zu panels, "
+            "the run stored %zu", (long long)p->run.id,
+            (long long)p->row.number, b->totals.panels,
+            p->row.totals.panels);
+    return FACET_OK;
+}
+
 void study_option_free(struct study_option *p)
 {
+    if (p->have_building)
+        project_option_free(&p->building);
+    if (p->have_view)
+        study_project_view_close(&p->view);
     if (p->have_geometry)
         panel_geometry_free(&p->geometry);
     panelization_free(&p->panels);
@@ -108,13 +154,147 @@ void study_option_source(const struct study_option *p,
         store_run_setting_text(r, RUN_SETTING_PER_PANEL)};
 }
 
+/* The smallest radius each panel of panels is bent to on its fitted
+ * cylinder or cone (sp_fit.h's bending_radius), NaN where it is not built
+ * SP on one, into radius (npanels): the fits made again over surface as
+ * the evaluation made them (cell sides, then built_option_fit at the
+ * panels' threshold). A panel the fits build otherwise than the
+ * evaluation did gets NaN: no number that belongs to another build. */
+static int bending_radii(const struct surface *surface,
+                         const struct panelization *panels, double threshold,
+                         double *radius, struct facet_error *err)
+{
+    for (size_t k = 0; k < panels->npanels; k++)
+        radius[k] = NAN;
+    size_t sp = 0;
+    for (size_t k = 0; k < panels->npanels; k++)
+        sp += panels->panels[k].type == TYPE_SP;
+    if (sp == 0)
+        return FACET_OK;
+    struct cell_sides sides;
+    struct built_option built;
+    memset(&built, 0, sizeof built);
+    int rc = cell_sides_sample(&surface->mesh, &surface->uv,
+                               &surface->curvature, panels, &sides, err);
+    if (rc == FACET_OK)
+        rc = built_option_fit(&surface->mesh, &surface->fit, panels, &sides,
+                              threshold, &built, err);
+    for (size_t k = 0; rc == FACET_OK && k < panels->npanels; k++) {
+        const struct built_panel *b = &built.panels[k];
+        if (b->fitted && b->type == TYPE_SP &&
+            panels->panels[k].built == TYPE_SP)
+            radius[k] = b->bending_radius;
+    }
+    built_option_free(&built);
+    cell_sides_free(&sides);
+    return rc;
+}
+
+/* The run's start as a time: the workbook's date, so that an option
+ * exported twice is the same file. */
+static time_t run_started(const struct run_info *run)
+{
+    struct tm t;
+    memset(&t, 0, sizeof t);
+    if (sscanf(run->started, "%d-%d-%dT%d:%d:%d", &t.tm_year, &t.tm_mon,
+               &t.tm_mday, &t.tm_hour, &t.tm_min, &t.tm_sec) != 6)
+        return 0;
+    t.tm_year -= 1900;
+    t.tm_mon -= 1;
+    return timegm(&t);
+}
+
+/* The base name of path, less ".obj": a single surface's name. */
+static void surface_name(const char *path, char *out, size_t size)
+{
+    const char *slash = strrchr(path, '/');
+    const char *base = slash ? slash + 1 : path;
+    size_t n = strlen(base);
+    if (n > size - 1)
+        n = size - 1;
+    memcpy(out, base, n);
+    out[n] = '\0';
+    if (n > 4 && strcasecmp(out + n - 4, ".obj") == 0)
+        out[n - 4] = '\0';
+}
+
+/* The option p as a workbook (xlsx_schedule.h) into out. */
+static int write_xlsx(FILE *out, const struct study_option *p,
+                      struct facet_error *err)
+{
+    int building = p->have_building;
+    size_t n = building ? p->building.nsurfaces : 1;
+    struct xlsx_surface *surfaces = calloc(n, sizeof *surfaces);
+    double **radius = calloc(n, sizeof *radius);
+    char single[256];
+    int rc = surfaces && radius ? FACET_OK
+        : facet_error_set(err, FACET_EWORK, "out of memory");
+    for (size_t s = 0; rc == FACET_OK && s < n; s++) {
+        const struct panelization *panels =
+            building ? &p->building.surfaces[s].panels : &p->panels;
+        const struct surface *surface =
+            building ? &p->view.project.surfaces[s].surface : &p->surface;
+        radius[s] = malloc((panels->npanels ? panels->npanels : 1) *
+                           sizeof *radius[s]);
+        if (radius[s] == NULL) {
+            rc = facet_error_set(err, FACET_EWORK, "out of memory");
+            break;
+        }
+        rc = bending_radii(surface, panels, p->classify.threshold,
+                           radius[s], err);
+        if (building) {
+            surfaces[s] = (struct xlsx_surface){
+                p->surfaces[s].name, panels, radius[s],
+                &p->building.surfaces[s].totals,
+                p->building.surfaces[s].moulds_used};
+        } else {
+            surface_name(p->run.surface_path, single, sizeof single);
+            surfaces[s] = (struct xlsx_surface){single, panels, radius[s],
+                                                &p->totals, 0};
+        }
+    }
+    if (rc == FACET_OK) {
+        char title[128];
+        snprintf(title, sizeof title, "Facet panel schedule: run %lld, "
+                 "option %lld", (long long)p->run.id,
+                 (long long)p->row.number);
+        struct xlsx_schedule x = {
+            title, run_started(&p->run), building, n, surfaces,
+            building ? &p->building.totals : &p->totals, &p->classify};
+        rc = xlsx_schedule_write(out, &x, err);
+    }
+    for (size_t s = 0; radius && s < n; s++)
+        free(radius[s]);
+    free(radius);
+    free(surfaces);
+    return rc;
+}
+
+/* A building's schedule: one header, then every surface's panels in
+ * the run's order, ids running on across them; its totals the
+ * building's. */
+static void write_building_csv(const struct study_option *p, FILE *csv,
+                               FILE *totals)
+{
+    const struct project_option *b = &p->building;
+    report_csv_header(csv, 1);
+    size_t id = 1;
+    for (size_t s = 0; s < b->nsurfaces; s++) {
+        report_csv_rows(csv, &b->surfaces[s].panels, p->surfaces[s].name,
+                        id);
+        id += b->surfaces[s].panels.npanels;
+    }
+    if (totals != NULL)
+        report_totals_csv(totals, &b->totals);
+}
+
 int study_export(struct store *store, int64_t run, int64_t number,
                  struct export_request *r, struct facet_error *err)
 {
     memset(r->written, 0, sizeof r->written);
-    if (!r->obj && !r->csv && !r->json && !r->svg)
+    if (!r->obj && !r->csv && !r->json && !r->svg && !r->xlsx)
         return facet_error_set(err, FACET_EINPUT,
-            "export: say what to write: OBJ, CSV, JSON and/or SVG");
+            "export: say what to write: OBJ, CSV, XLSX, JSON and/or SVG");
     char mtl[4096] = "", totals[4096] = "";
     int rc;
     if (r->obj && outfile_is_stream(r->obj))
@@ -130,6 +310,7 @@ int study_export(struct store *store, int64_t run, int64_t number,
                                              totals, sizeof totals, err)))
         return rc;
     int to_stdout = (r->csv && strcmp(r->csv, "-") == 0) +
+                    (r->xlsx && strcmp(r->xlsx, "-") == 0) +
                     (r->json && strcmp(r->json, "-") == 0) +
                     (r->svg && strcmp(r->svg, "-") == 0);
     if (to_stdout > 1)
@@ -137,14 +318,33 @@ int study_export(struct store *store, int64_t run, int64_t number,
             "export: one file at most to standard output (-)");
     const char *target[EXPORT_FILES] = {r->obj, r->obj ? mtl : NULL, r->csv,
                                         totals_file ? totals : NULL, r->json,
-                                        r->svg};
+                                        r->svg, r->xlsx};
+    /* A building's option: its schedule, every surface's panels in one,
+     * and its totals; the other formats are refused before any file is
+     * made rather than written empty. */
+    struct run_info info;
+    if ((rc = store_run_get(store, run, &info, err)))
+        return rc;
+    int building = store_run_is_project(&info);
+    if (building && (r->obj || r->json || r->svg))
+        return facet_error_set(err, FACET_EINPUT,
+            "run %lld is a project (a building of several surfaces): an "
+            "OBJ, JSON or SVG of its option is not written yet, only its "
+            "panel schedule (CSV, XLSX)", (long long)run);
     struct outfile file[EXPORT_FILES];
     int open[EXPORT_FILES] = {0};
     if ((rc = open_all(target, r->force, file, open, err)))
         return rc;
 
     struct study_option p;
-    rc = study_option_load(store, run, number, r->obj || r->svg, &p, err);
+    rc = study_option_load(store, run, number,
+                           r->obj || r->svg || (r->xlsx && !building), &p,
+                           err);
+    if (rc == FACET_OK && building)
+        rc = study_option_building(store, &p, NULL, err);
+    if (rc == FACET_OK && building && r->csv)
+        write_building_csv(&p, file[EXPORT_CSV].out,
+                           totals_file ? file[EXPORT_TOTALS].out : NULL);
     if (rc == FACET_OK && r->obj) {
         /* mtllib is relative to the OBJ: the MTL's own name. */
         const char *slash = strrchr(mtl, '/');
@@ -152,7 +352,7 @@ int study_export(struct store *store, int64_t run, int64_t number,
                          &p.geometry, &p.panels);
         export_obj_write_mtl(file[EXPORT_MTL].out);
     }
-    if (rc == FACET_OK && r->csv) {
+    if (rc == FACET_OK && r->csv && !building) {
         report_csv(file[EXPORT_CSV].out, &p.panels);
         if (totals_file)
             report_totals_csv(file[EXPORT_TOTALS].out, &p.totals);
@@ -176,10 +376,13 @@ int study_export(struct store *store, int64_t run, int64_t number,
         svg_map_write(file[EXPORT_SVG].out, &p.geometry, &p.panels,
                       &p.totals, &map);
     }
+    if (rc == FACET_OK && r->xlsx)
+        rc = write_xlsx(file[EXPORT_XLSX].out, &p, err);
     /* The MTL before the OBJ: an OBJ never names a missing MTL. */
     static const int order[EXPORT_FILES] = {EXPORT_MTL, EXPORT_OBJ,
                                             EXPORT_CSV, EXPORT_TOTALS,
-                                            EXPORT_JSON, EXPORT_SVG};
+                                            EXPORT_JSON, EXPORT_SVG,
+                                            EXPORT_XLSX};
     int n = 0;
     for (int k = 0; k < EXPORT_FILES; k++) {
         int f = order[k];

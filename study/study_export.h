@@ -3,7 +3,9 @@
  * `facet export`, `facet plot` and the TUI's export keys all do.
  *
  * An option goes out as OBJ + MTL (core/out/export_obj.h), a CSV panel
- * schedule and JSON (core/out/report.h) and an SVG panel map
+ * schedule and JSON (core/out/report.h), an XLSX panel schedule
+ * (core/out/xlsx_schedule.h: its workbook dated the run's start, so the
+ * same option gives the same bytes) and an SVG panel map
  * (core/out/svg_map.h); a run as an SVG scatter (core/out/svg_plot.h). Every
  * file is opened (as FILE.partial) before any work and renamed into place
  * only when all of them are written, so an export that fails leaves no file
@@ -17,6 +19,7 @@
 #include "core/surface/surface.h"
 #include "core/out/svg_map.h"
 #include "store/store.h"
+#include "study/study_project_view.h"
 
 /* A stored option with what showing or exporting it needs. */
 struct study_option {
@@ -36,6 +39,12 @@ struct study_option {
     struct surface_row *surfaces;
     struct option_surface_row *surface_rows;
     size_t nsurfaces;
+    /* A project run's option evaluated again over its building
+     * (study_option_building): every surface's panels, the building's
+     * totals and mould families; have_building set. */
+    struct study_project_view view;
+    struct project_option building;
+    int have_view, have_building;
 };
 
 /* Reads option number of run into *out (caller-owned, released with
@@ -49,15 +58,28 @@ int study_option_load(struct store *store, int64_t run, int64_t number,
                       struct facet_error *err);
 void study_option_free(struct study_option *option);
 
+/* Of a project run's option loaded by study_option_load: opens the run's
+ * building again (study_project_view_open: its files, checked by SHA-256)
+ * and evaluates the option over it into option->building, with the
+ * run's settings and the option's stored grids. The building's panels
+ * must be as many as the option's row says, surface by surface and in
+ * all, or FACET_EINPUT: a schedule that does not add up to the option
+ * shown is never written. hooks (may be NULL) hears the stage. */
+int study_option_building(struct store *store, struct study_option *option,
+                          const struct study_hooks *hooks,
+                          struct facet_error *err);
+
 /* What report_json writes about the option's surface. */
 void study_option_source(const struct study_option *option,
                          struct report_source *out);
 
 enum export_file { EXPORT_OBJ, EXPORT_MTL, EXPORT_CSV, EXPORT_TOTALS,
-                   EXPORT_JSON, EXPORT_SVG, EXPORT_FILES };
+                   EXPORT_JSON, EXPORT_SVG, EXPORT_XLSX, EXPORT_FILES };
 
 struct export_request {
     const char *obj, *csv, *json, *svg;   /* paths; NULL: not wanted */
+    const char *xlsx;                     /* the schedule as a workbook
+                                             (core/out/xlsx_schedule.h) */
     int force;                            /* overwrite existing files */
     struct svg_map_options map;           /* view and colouring of the SVG */
     /* Set by study_export: the paths written, in the order written (the
@@ -66,7 +88,10 @@ struct export_request {
     char written[EXPORT_FILES][4096];
 };
 
-/* Writes the files request asks for of option number of run. Panels not
+/* Writes the files request asks for of option number of run. Of a
+ * building's option (a project run) the CSV and XLSX schedules only,
+ * every surface's panels (study_option_building); the others are refused
+ * (FACET_EINPUT) before any file is made. Panels not
  * stored yet are computed and stored first (study_option_panels); the OBJ
  * and the SVG need the surface file, which must be unchanged. Returns
  * FACET_OK, FACET_EINPUT (no such run or option, a file that exists, a

@@ -4,6 +4,7 @@
 #include "core/out/report.h"
 
 #include <math.h>
+#include <string.h>
 
 #include "core/out/json.h"
 #include "core/base/numformat.h"
@@ -181,17 +182,45 @@ static void csv_number(FILE *out, double x)
     }
 }
 
-void report_csv(FILE *out, const struct panelization *panels)
+/* A CSV text field: as it is, or quoted (RFC 4180, quotes doubled) when
+ * it holds a comma, a quote or a line break. */
+static void csv_text(FILE *out, const char *text)
 {
-    fputs("id,i,j,class,type,area_m2,deviation_m,k1,k2,K,H,eps,p_dist_m4,"
+    if (strpbrk(text, ",\"\r\n") == NULL) {
+        fputs(text, out);
+        return;
+    }
+    fputc('"', out);
+    for (const char *c = text; *c; c++) {
+        if (*c == '"')
+            fputc('"', out);
+        fputc(*c, out);
+    }
+    fputc('"', out);
+}
+
+void report_csv_header(FILE *out, int with_surface)
+{
+    fputs(with_surface ? "id,surface,i,j" : "id,i,j", out);
+    fputs(",class,type,area_m2,deviation_m,k1,k2,K,H,eps,p_dist_m4,"
           "diameter_m,trimmed,corner_planarity_m,price_usd_m2,cost_usd", out);
     for (int c = 0; c < 4; c++)
         fprintf(out, ",c%d_x_m,c%d_y_m,c%d_z_m", c, c, c);
     fputs(",mould_family,built_type,sp_deviation_m,worst_gap_mm,"
           "worst_kink_deg,misfit_reason\n", out);
+}
+
+void report_csv_rows(FILE *out, const struct panelization *panels,
+                     const char *surface, size_t first_id)
+{
     for (size_t n = 0; n < panels->npanels; n++) {
         const struct panel *p = &panels->panels[n];
-        fprintf(out, "%zu,%d,%d,%s,%s", n + 1, p->i, p->j,
+        fprintf(out, "%zu,", first_id + n);
+        if (surface != NULL) {
+            csv_text(out, surface);
+            fputc(',', out);
+        }
+        fprintf(out, "%d,%d,%s,%s", p->i, p->j,
                 panel_class_name(p->class), panel_type_name(p->type));
         csv_number(out, p->area);
         csv_number(out, p->deviation);
@@ -225,6 +254,12 @@ void report_csv(FILE *out, const struct panelization *panels)
         else
             fputs(",\n", out);
     }
+}
+
+void report_csv(FILE *out, const struct panelization *panels)
+{
+    report_csv_header(out, 0);
+    report_csv_rows(out, panels, NULL, 1);
 }
 
 void report_totals_csv(FILE *out, const struct option_totals *t)

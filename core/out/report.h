@@ -45,6 +45,16 @@ void report_json(FILE *out, const struct report_source *source,
  * named in its header; every number reads back exactly. */
 void report_csv(FILE *out, const struct panelization *panels);
 
+/* The schedule in two parts, for a building's: the header row, with a
+ * surface column after id when with_surface; then panels' rows, numbered
+ * from first_id, each naming surface (CSV-quoted where it must be) when
+ * it is not NULL. A building's schedule is one header and every
+ * surface's rows in turn, ids running on across the surfaces so that
+ * each is unique in the building. */
+void report_csv_header(FILE *out, int with_surface);
+void report_csv_rows(FILE *out, const struct panelization *panels,
+                     const char *surface, size_t first_id);
+
 /* Writes the option's totals as a CSV of its own (a header row and one
  * row: panels, counts, areas and costs per type, cost, planarity, largest
  * deviation, largest panel, P_dist, feasible, then the joint length, the
