@@ -178,7 +178,10 @@ static int bending_radii(const struct surface *surface,
                                &surface->curvature, panels, &sides, err);
     if (rc == FACET_OK)
         rc = built_option_fit(&surface->mesh, &surface->fit, panels, &sides,
-                              threshold, &built, err);
+                              threshold,
+                              facet_sag_matters(surface->facet_sag,
+                                                threshold),
+                              &built, err);
     for (size_t k = 0; rc == FACET_OK && k < panels->npanels; k++) {
         const struct built_panel *b = &built.panels[k];
         if (b->fitted && b->type == TYPE_SP &&
