@@ -12,6 +12,7 @@
 #include <strings.h>
 #include <time.h>
 
+#include "core/surface/coarse_mesh.h"
 #include "core/out/export_obj.h"
 #include "core/out/outfile.h"
 #include "core/panel/panel_geometry.h"
