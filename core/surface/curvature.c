@@ -42,7 +42,14 @@
  *      straight across as the mesh is there: its curvature across is 0
  *      (a strip one face wide on a sphere reads as single-curved).
  *      Weights are Gaussian in distance relative to the neighbourhood
- *      radius.
+ *      radius. A vertex on the boundary then checks that fit against the
+ *      quadric over its 2-ring weighted sharper (BOUNDARY_SHARPNESS):
+ *      a boundary cubic that differs from it by more than
+ *      BOUNDARY_APART_MAX / radius, or any other boundary fit, gives way
+ *      to it (vertex_boundary; a coarse one-sided cubic that passed the
+ *      span test still swung: 30 % off on an 8 x 8 cylinder's straight
+ *      edges, 150 % on a catenoid's rim; tests/unit/test_curvature_boundary
+ *      has the figures beside CGAL's).
  *   4. Refinement: the normal of the fitted graph becomes the new n and the
  *      fit is repeated, until the normal turns by less than 1e-10 rad (a
  *      refit that tilts further than the last is not taken), so the result
@@ -139,6 +146,12 @@ enum {
  * (k d)^2 exceeds this, d the point's distance: near 1 the osculating
  * sphere turns vertical and its height has no Taylor series left. */
 #define EXCESS_P_MAX 0.75
+/* A boundary vertex's 2-ring quadric weighs its points
+ * exp(-BOUNDARY_SHARPNESS (d / radius)^2) (see vertex_boundary). */
+#define BOUNDARY_SHARPNESS 5.0
+/* ... and replaces the boundary cubic where the two differ by more than
+ * this in curvature times the cubic's radius (dimensionless). */
+#define BOUNDARY_APART_MAX 0.1
 enum {
     EXCESS_ITERATIONS = 6,  /* refits for the correction, at most */
     NORMAL_ITERATIONS = 6   /* refits about the fitted normal, at most */
@@ -1072,6 +1085,82 @@ static void store_flat(struct curvature *out, uint32_t v, const double *n0)
     memcpy(out->surface_normal + 3 * (size_t)v, f.n, sizeof f.n);
 }
 
+/* Refits the jet of h (nterms terms) about the normal of the fitted graph
+ * until it stays put, updating *f and *jet: the result then depends on the
+ * points alone, not on the initial normal (which depends on how the faces
+ * were triangulated). A refit that tilts further from its frame than the
+ * last is not taken: on a wide one-sided neighbourhood the refits can run
+ * away from the surface (a coarse cap's corner turned its normal by 50
+ * degrees in 5). */
+static void refine_normal(const struct hood *h, int nterms, struct frame *f,
+                          struct jet *jet)
+{
+    double tilt = hypot(jet->fx, jet->fy);
+    for (int it = 0; it < NORMAL_ITERATIONS; it++) {
+        if (!(tilt > NORMAL_CONVERGED))
+            break;
+        struct frame g;
+        struct jet refined;
+        graph_normal(f, jet, g.n);
+        frame_complete(&g);
+        double refined_tilt;
+        if (!fit(h, &g, nterms, jet, &refined) ||
+            !((refined_tilt = hypot(refined.fx, refined.fy)) < tilt))
+            break;
+        *f = g;
+        *jet = refined;
+        tilt = refined_tilt;
+    }
+}
+
+/* A vertex's principal curvatures, directions and normal. */
+struct principal {
+    double k1, k2, d1[3], d2[3], n[3];
+};
+
+/* The boundary vertex v's estimate from its 2-ring alone, by the quadric
+ * with gradient, weighted BOUNDARY_SHARPNESS (see vertex_boundary), from
+ * the initial frame f0, into *p. Returns 0 when there is none. */
+static int boundary_quadric(const struct mesh *mesh, uint32_t v,
+                            const struct frame *f0, struct workspace *ws,
+                            struct principal *p)
+{
+    size_t count = gather(mesh, v, RINGS_INTERIOR, POINTS_QUADRIC, ws);
+    struct hood hood;
+    struct frame f = *f0;
+    struct jet jet;
+    if (!hood_prepare(mesh, count, ws, &hood))
+        return 0;
+    for (size_t i = 1; i < count; i++) {
+        const double *d = hood.offset + 3 * i;  /* scaled by the radius */
+        hood.weight[i] = exp(-BOUNDARY_SHARPNESS * vec3_dot(d, d));
+    }
+    if (!fit(&hood, &f, 5, NULL, &jet))
+        return 0;
+    refine_normal(&hood, 5, &f, &jet);
+    shape_operator(&f, &jet, &p->k1, &p->k2, p->d1, p->d2, p->n);
+    return isfinite(p->k1) && isfinite(p->k2) &&
+           isfinite(vec3_dot(p->d1, p->d1)) &&
+           isfinite(vec3_dot(p->d2, p->d2)) && isfinite(vec3_dot(p->n, p->n));
+}
+
+/* The estimate of boundary vertex v: *p, the fit of vertex_curvature
+ * (nterms terms), or the sharp 2-ring quadric (boundary_quadric) where
+ * that fit is not a cubic or the cubic disagrees with it by more than
+ * BOUNDARY_AGREE of its largest |k|. */
+static void vertex_boundary(const struct mesh *mesh, uint32_t v,
+                            const struct frame *f0, int nterms,
+                            double radius, struct workspace *ws,
+                            struct principal *p)
+{
+    struct principal q;
+    if (!boundary_quadric(mesh, v, f0, ws, &q))
+        return;
+    double apart = fmax(fabs(p->k1 - q.k1), fabs(p->k2 - q.k2));
+    if (nterms != TERMS_MAX || !(apart * radius <= BOUNDARY_APART_MAX))
+        *p = q;
+}
+
 /* Estimates vertex v (see the file comment) into out. */
 static void vertex_curvature(const struct mesh *mesh, uint32_t v,
                              int flip_normals, struct workspace *ws,
@@ -1105,6 +1194,7 @@ static void vertex_curvature(const struct mesh *mesh, uint32_t v,
     struct hood hood;
 
     frame_complete(&f);
+    struct frame f0 = f;
     if (!hood_prepare(mesh, count, ws, &hood) ||
         !fit(&hood, &f, nterms, NULL, &jet)) {
         store_flat(out, v, f.n);
@@ -1135,37 +1225,19 @@ static void vertex_curvature(const struct mesh *mesh, uint32_t v,
             jet = cubic;
         }
     }
-    /* Refit about the normal of the fitted graph until it stays put: the
-     * result then depends on the points alone, not on the initial normal
-     * (which depends on how the faces were triangulated). A refit that
-     * tilts further from its frame than the last is not taken: on a wide
-     * one-sided neighbourhood the refits can run away from the surface
-     * (a coarse cap's corner turned its normal by 50 degrees in 5). */
-    double tilt = hypot(jet.fx, jet.fy);
-    for (int it = 0; it < NORMAL_ITERATIONS; it++) {
-        if (!(tilt > NORMAL_CONVERGED))
-            break;
-        struct frame g;
-        struct jet refined;
-        graph_normal(&f, &jet, g.n);
-        frame_complete(&g);
-        double refined_tilt;
-        if (!fit(&hood, &g, nterms, &jet, &refined) ||
-            !((refined_tilt = hypot(refined.fx, refined.fy)) < tilt))
-            break;
-        f = g;
-        jet = refined;
-        tilt = refined_tilt;
-    }
+    refine_normal(&hood, nterms, &f, &jet);
 
-    double k1, k2, d1[3], d2[3], n[3];
-    shape_operator(&f, &jet, &k1, &k2, d1, d2, n);
-    if (!isfinite(k1) || !isfinite(k2) || !isfinite(vec3_dot(d1, d1)) ||
-        !isfinite(vec3_dot(d2, d2)) || !isfinite(vec3_dot(n, n))) {
+    struct principal p;
+    shape_operator(&f, &jet, &p.k1, &p.k2, p.d1, p.d2, p.n);
+    if (!isfinite(p.k1) || !isfinite(p.k2) ||
+        !isfinite(vec3_dot(p.d1, p.d1)) || !isfinite(vec3_dot(p.d2, p.d2)) ||
+        !isfinite(vec3_dot(p.n, p.n))) {
         store_flat(out, v, f.n);
         return;
     }
-    store(out, v, k1, k2, d1, d2, n);
+    if (on_boundary)
+        vertex_boundary(mesh, v, &f0, nterms, jet.radius, ws, &p);
+    store(out, v, p.k1, p.k2, p.d1, p.d2, p.n);
     /* The surface normal (curvature.h): a quadric's gradient takes in the
      * cubic term of a curvature that changes, which the cubic's does not.
      * Refitted once in the final frame, where it is all but level. */
@@ -1176,7 +1248,7 @@ static void vertex_curvature(const struct mesh *mesh, uint32_t v,
         if (isfinite(vec3_dot(surface, surface)))
             return;
     }
-    memcpy(surface, n, 3 * sizeof *surface);
+    memcpy(surface, p.n, 3 * sizeof *surface);
 }
 
 /* One thread's share of curvature_at_vertices: the vertices of every

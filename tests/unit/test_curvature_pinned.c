@@ -9,6 +9,15 @@
  * on purpose says so in its commit, with its accuracy against the
  * analytic surfaces (test_curvature), and pins the new hashes here.
  *
+ * Re-pinned for issue 29 item 4 (the boundary's sharp 2-ring quadric):
+ * only boundary vertices changed (every other vertex the same to the bit,
+ * checked vertex by vertex), and on the surfaces with an analytic truth
+ * the changed vertices' worst error went down: cylinder at 5 4.0e-6 to
+ * 1.3e-6 1/m, dome at 5 1.2e-2 to 1.9e-9, hypar at 6 17.2 % to 13.2 %,
+ * torus at 8 21.0 % to 12.8 %, wave at 9 0.071 to 0.040 1/m, roof at 12
+ * 0.194 to 0.110 1/m, roof at 48 0.099 to 0.061 1/m, strip 3.0e-6 to
+ * 3.4e-7 1/m, cap 4.6 % to 1.3 %.
+ *
  * The hash is FNV-1a over the 64-bit patterns of k1, k2, dir1, dir2 and
  * normal, so it does not depend on the byte order.
  */
@@ -204,30 +213,30 @@ static void test_examples(void **state)
     } pinned[] = {
         {"plane", 6, 0x83440e6d18635338ULL,
          0x61dfee33e4f55db8ULL},
-        {"cylinder", 5, 0x5e4c547787b7ca95ULL,
-         0x89cfdfa8a347caa7ULL},
+        {"cylinder", 5, 0xc82aba4c4f4df9c1ULL,
+         0xf622064e9d067af1ULL},
         {"cylinder", 30, 0x19850a159c6d82b8ULL,
          0xbcedb746711cfcefULL},
-        {"dome", 5, 0xda85954f9bfee9ccULL,
-         0xfaf4a2af59a299afULL},
+        {"dome", 5, 0x3efbfba0e0579d4aULL,
+         0x555cfd8c5b5d1212ULL},
         {"dome", 30, 0xa2ea6ca159cb9a67ULL,
          0xe0378a5f9ee8faf4ULL},
-        {"hypar", 6, 0x8452eb43864dbdb3ULL,
-         0x48e5781948ca000cULL},
+        {"hypar", 6, 0x18ba4d9bf5f6ee39ULL,
+         0x81400ba0eaf6fbfdULL},
         {"hypar", 30, 0x7fe9d2eab31553b5ULL,
          0xd34f21d481d5d940ULL},
-        {"torus", 8, 0xa30db69aa53d6d75ULL,
-         0x9c97ad4e96682cddULL},
+        {"torus", 8, 0x7d24fd508d3025aaULL,
+         0xda830e441d1d1ce9ULL},
         {"torus", 30, 0xb93d1d334e0e8e71ULL,
          0xacc1a2bb2d6ae872ULL},
-        {"wave", 9, 0x655edcea2f6ca4f8ULL,
-         0x01f3c40d19305449ULL},
+        {"wave", 9, 0x516d594cc51fba42ULL,
+         0x29c0fea86bd6e3a1ULL},
         {"wave", 30, 0x334c69d46ae9749aULL,
          0xb263ddcdd0b4370dULL},
-        {"roof", 12, 0x42770d06d5fb535dULL,
-         0x0abb3d7f96638727ULL},
-        {"roof", 48, 0xc13a7f32f76ceefcULL,
-         0x0dafddee1018cad4ULL},
+        {"roof", 12, 0x02fba45a669ea152ULL,
+         0x733665e43e705f85ULL},
+        {"roof", 48, 0x955fc1893f63b548ULL,
+         0xee543062e58887b8ULL},
     };
     for (size_t i = 0; i < sizeof pinned / sizeof pinned[0]; i++) {
         char label[64];
@@ -244,8 +253,8 @@ static void test_strip(void **state)
     (void)state;
     struct mesh mesh;
     mesh_strip(&mesh);
-    check("strip", &mesh, 0x89b543f38c20daa3ULL,
-          0x9a3623e8ef91cfe8ULL);
+    check("strip", &mesh, 0xa776aba02fa0b006ULL,
+          0x5435dea5a586c605ULL);
 }
 
 static void test_cap(void **state)
@@ -253,8 +262,8 @@ static void test_cap(void **state)
     (void)state;
     struct mesh mesh;
     mesh_cap(&mesh);
-    check("cap", &mesh, 0xd29620e953265c0aULL,
-          0xe080c62ba1b4e78fULL);
+    check("cap", &mesh, 0x970d9d2de28e78c4ULL,
+          0xbd7d440e7875d8eeULL);
 }
 
 static void test_dome_vn(void **state)
