@@ -11,7 +11,10 @@
 "$FACET" example dome --res 4 -o "$WORK/dome4.obj" || exit 1
 fixture roof40.obj "$WORK/roof.obj" || exit 1
 "$FACET" optimize "$WORK/dome4.obj" --db "$WORK/n.db" --u 10:50 --v 10:50 --threshold 3 >/dev/null 2>&1 || exit 1
-"$FACET" optimize "$WORK/roof.obj" --db "$WORK/n.db" --u 3:9 --v 3:9 --threshold 3 --max-panel-area 1000 >/dev/null 2>&1 || exit 1
+# The roof at 40 quads has facets that sag 10 mm: at t = 3 mm the run
+# warns of it (issue 29, item 3), and the warning outranks the note in
+# the status line; at t = 45 mm the sag is under t/4 and the note shows.
+"$FACET" optimize "$WORK/roof.obj" --db "$WORK/n.db" --u 3:9 --v 3:9 --threshold 45 --max-panel-area 1000 >/dev/null 2>&1 || exit 1
 pareto=$(sqlite3 "$WORK/n.db" "SELECT count(*) FROM options WHERE run = 2 AND rank = 1")
 
 start 80 24 -- n.db
