@@ -54,8 +54,9 @@ static void child(int fd)
     spin(NULL);
 }
 
-/* One trial: returns the child's wait status. */
-static int two_signals_in_two_threads(int first, int second)
+/* Forks the child and reads its two threads' ids into tid; returns its
+ * pid. */
+static pid_t start_child(pid_t tid[2])
 {
     int fds[2];
     assert_int_equal(pipe(fds), 0);
@@ -66,11 +67,18 @@ static int two_signals_in_two_threads(int first, int second)
         child(fds[1]);
     }
     close(fds[1]);
-    pid_t tid[2];
     for (int k = 0; k < 2; k++)
         assert_int_equal(read(fds[0], &tid[k], sizeof tid[k]),
                          (ssize_t)sizeof tid[k]);
     close(fds[0]);
+    return pid;
+}
+
+/* One trial: returns the child's wait status. */
+static int two_signals_in_two_threads(int first, int second)
+{
+    pid_t tid[2];
+    pid_t pid = start_child(tid);
     /* Both threads are spinning. Stopped, each gets its own signal; on
      * SIGCONT both wake on the two cores and enter the handler together. */
     assert_int_equal(kill(pid, SIGSTOP), 0);
@@ -101,20 +109,8 @@ static void test_second_signal_in_another_thread_kills(void **state)
 static void test_one_signal_stops(void **state)
 {
     (void)state;
-    int fds[2];
-    assert_int_equal(pipe(fds), 0);
-    pid_t pid = fork();
-    assert_true(pid >= 0);
-    if (pid == 0) {
-        close(fds[0]);
-        child(fds[1]);
-    }
-    close(fds[1]);
     pid_t tid[2];
-    for (int k = 0; k < 2; k++)
-        assert_int_equal(read(fds[0], &tid[k], sizeof tid[k]),
-                         (ssize_t)sizeof tid[k]);
-    close(fds[0]);
+    pid_t pid = start_child(tid);
     assert_int_equal(kill(pid, SIGTERM), 0);
     int status = 0;
     assert_int_equal(waitpid(pid, &status, 0), pid);
