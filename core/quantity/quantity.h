@@ -34,7 +34,8 @@
  *      the options table of docs/store.md.
  * test_option_column fails until the rows and the store's table agree
  * (pragma_table_info), reads every row back through SQLite, and checks
- * that --where, --sort and the building's totals take the new row.
+ * that --where and --sort take the new row; test_project_option checks a
+ * building's totals against its own sums of the surfaces'.
  *
  * No SQL and no curses here: pure data and the formatting of a value.
  */
