@@ -7,7 +7,6 @@
 
 #include <assert.h>
 #include <math.h>
-#include <stddef.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -169,14 +168,6 @@ int store_surfaces_get(struct store *store, int64_t run,
     return rc;
 }
 
-/* Where quantity q of a surface's row is: its field in the row's totals. */
-static void *surface_field(const struct quantity *q,
-                           struct option_surface_row *r)
-{
-    return (char *)&r->totals + (q->offset - offsetof(struct option_row,
-                                                      totals));
-}
-
 /* The columns of option_surfaces after (run, option, surface) into sql
  * (size bytes): the row's own (nu, nv, moulds_used, joints), then every
  * quantity kept per surface (quantity.h's per_surface), in the registry's
@@ -217,20 +208,21 @@ int store_option_surfaces_insert(struct store *store, int64_t run,
     sqlite3_stmt *s;
     int rc = store_prepare(store, sql, &s, doing, err);
     for (size_t i = 0; rc == FACET_OK && i < n; i++) {
-        struct option_surface_row r = rows[i];
+        const struct option_surface_row *r = &rows[i];
         sqlite3_reset(s);
         int p = 1;
         sqlite3_bind_int64(s, p++, run);
         sqlite3_bind_int64(s, p++, number);
         sqlite3_bind_int64(s, p++, (int64_t)i);
-        sqlite3_bind_int(s, p++, r.nu);
-        sqlite3_bind_int(s, p++, r.nv);
-        sqlite3_bind_int64(s, p++, r.moulds_used);
-        sqlite3_bind_int64(s, p++, r.joints);
+        sqlite3_bind_int(s, p++, r->nu);
+        sqlite3_bind_int(s, p++, r->nv);
+        sqlite3_bind_int64(s, p++, r->moulds_used);
+        sqlite3_bind_int64(s, p++, r->joints);
         for (int k = 0; k < OPTION_QUANTITIES; k++)
             if (option_quantities[k].per_surface)
                 store_bind_quantity(s, p++, &option_quantities[k],
-                                    surface_field(&option_quantities[k], &r));
+                                    quantity_field(&option_quantities[k],
+                                                   &r->totals));
         if (sqlite3_step(s) != SQLITE_DONE)
             rc = store_fail(store, doing, err);
     }
@@ -279,7 +271,8 @@ int store_option_surfaces_get(struct store *store, int64_t run,
         for (int k = 0; k < OPTION_QUANTITIES; k++)
             if (option_quantities[k].per_surface)
                 store_read_quantity(s, c++, &option_quantities[k],
-                                    surface_field(&option_quantities[k], r));
+                                    quantity_field_to_set(
+                                        &option_quantities[k], &r->totals));
     }
     if (rc == FACET_OK && step != SQLITE_DONE)
         rc = store_fail(store, doing, err);

@@ -6,7 +6,6 @@
 
 #include <assert.h>
 #include <math.h>
-#include <stddef.h>
 #include <stdatomic.h>
 #include <stdint.h>
 #include <stdlib.h>
@@ -127,28 +126,22 @@ static int find_moulds(const struct project *project,
     return FACET_OK;
 }
 
-/* q's field in totals: a double or a size_t, as q->field says. */
-static void *field_of(const struct quantity *q, struct option_totals *totals)
-{
-    return (char *)totals + (q->offset - offsetof(struct option_row, totals));
-}
-
 /* The building's value of q, from its surfaces' as q's combine rule says;
  * the rules that are not the surfaces' (COMBINE_RECOMPUTED) are left to
  * building_totals. */
 static void combine_surfaces(const struct quantity *q,
                              struct project_option *option)
 {
-    void *out = field_of(q, &option->totals);
+    void *out = quantity_field_to_set(q, &option->totals);
     struct exact_sum sum;
     exact_sum_init(&sum);
     for (size_t i = 0; i < option->nsurfaces; i++) {
-        void *in = field_of(q, &option->surfaces[i].totals);
-        double value = q->field == FIELD_DOUBLE ? *(double *)in : 0;
+        const void *in = quantity_field(q, &option->surfaces[i].totals);
+        double value = q->field == FIELD_DOUBLE ? *(const double *)in : 0;
         switch (q->combine) {
         case COMBINE_SUM:
             assert(q->field == FIELD_SIZE);
-            *(size_t *)out += *(size_t *)in;
+            *(size_t *)out += *(const size_t *)in;
             break;
         case COMBINE_EXACT_SUM:
             exact_sum_add(&sum, value);

@@ -288,13 +288,25 @@ double quantity_value(const struct quantity *c,
     return c->yes_no ? value != 0 : value;
 }
 
-double quantity_of_totals(const struct quantity *q,
-                          const struct option_totals *totals)
+const void *quantity_field(const struct quantity *q,
+                           const struct option_totals *totals)
 {
     assert(quantity_in_totals(q));
     /* The offset is the row's; the totals sit at their own offset in it. */
-    const char *field = (const char *)totals +
-                        (q->offset - offsetof(struct option_row, totals));
+    return (const char *)totals +
+           (q->offset - offsetof(struct option_row, totals));
+}
+
+void *quantity_field_to_set(const struct quantity *q,
+                            struct option_totals *totals)
+{
+    return (void *)quantity_field(q, totals);
+}
+
+double quantity_of_totals(const struct quantity *q,
+                          const struct option_totals *totals)
+{
+    const char *field = quantity_field(q, totals);
     switch (q->field) {
     case FIELD_INT:    return *(const int *)(const void *)field;
     case FIELD_SIZE:   return totals_count(*(const size_t *)(const void *)field);
@@ -323,8 +335,7 @@ void quantity_totals_forget(struct option_totals *totals, unsigned measures)
         const struct quantity *q = &option_quantities[k];
         if (!quantity_in_totals(q) || !(q->measure & measures))
             continue;
-        void *field = (char *)totals +
-                      (q->offset - offsetof(struct option_row, totals));
+        void *field = quantity_field_to_set(q, totals);
         if (q->field == FIELD_SIZE)
             *(size_t *)field = TOTALS_UNKNOWN;
         else if (q->field == FIELD_DOUBLE)
@@ -336,7 +347,6 @@ void quantity_totals_copy(struct option_totals *to,
                           const struct option_totals *from,
                           unsigned measures)
 {
-    size_t first = offsetof(struct option_row, totals);
     for (int k = 0; k < OPTION_QUANTITIES; k++) {
         const struct quantity *q = &option_quantities[k];
         if (!quantity_in_totals(q) || !(q->measure & measures))
@@ -344,8 +354,7 @@ void quantity_totals_copy(struct option_totals *to,
         size_t size = q->field == FIELD_SIZE ? sizeof(size_t)
                                              : sizeof(double);
         assert(q->field == FIELD_SIZE || q->field == FIELD_DOUBLE);
-        memcpy((char *)to + (q->offset - first),
-               (const char *)from + (q->offset - first), size);
+        memcpy(quantity_field_to_set(q, to), quantity_field(q, from), size);
     }
 }
 

@@ -141,6 +141,14 @@ double quantity_value(const struct quantity *c,
  * ranking or module. */
 int quantity_in_totals(const struct quantity *q);
 
+/* Where totals hold q (q must be in them: quantity_in_totals): an int,
+ * size_t or double as q->field says. quantity_field_to_set is the same
+ * place, to write. */
+const void *quantity_field(const struct quantity *q,
+                           const struct option_totals *totals);
+void *quantity_field_to_set(const struct quantity *q,
+                            struct option_totals *totals);
+
 /* q's value in totals (q must be in them: quantity_in_totals), as
  * quantity_value reads it from a row. */
 double quantity_of_totals(const struct quantity *q,
