@@ -1263,3 +1263,13 @@ int reference_joints_measure(const struct panelization *panels,
     }
     return FACET_OK;
 }
+
+void as_built_classify_at(struct panelization *panels, double t)
+{
+    struct classify_options options;
+    struct option_totals totals;
+    classify_defaults(&options);
+    options.sp_as_fp = 1;
+    options.threshold = t;
+    classify_panels(panels, &options, &totals);
+}

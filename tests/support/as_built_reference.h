@@ -65,4 +65,9 @@ int reference_joints_measure(const struct panelization *panels,
                              double max_kink, struct joints *out,
                              struct facet_error *err);
 
+/* Classifies panels at threshold t (m), as the paper's space does (SP
+ * typed as FP panels priced as FP: sp_as_fp), for the tests that build the
+ * paper's panels as built. */
+void as_built_classify_at(struct panelization *panels, double t);
+
 #endif

@@ -154,17 +154,6 @@ static void grid_of(const struct surface *s, int nu, int nv,
         fail_msg("%s", err.message);
 }
 
-/* Classifies panels at threshold t (m), as the paper's space does. */
-static void classify_at(struct panelization *panels, double t)
-{
-    struct classify_options options;
-    struct option_totals totals;
-    classify_defaults(&options);
-    options.sp_as_fp = 1;
-    options.threshold = t;
-    classify_panels(panels, &options, &totals);
-}
-
 /* The option's sides, panels as built and joints by the reference, into
  * the given structs (release with the core/ free functions). */
 static void reference_option(const struct surface *s,
@@ -202,7 +191,7 @@ static void compare_grid(const char *name, const struct surface *s, int nu,
         char what[160];
         snprintf(what, sizeof what, "%s, %d x %d at %g mm", name, nu, nv,
                  t[x] * 1e3);
-        classify_at(&panels, t[x]);
+        as_built_classify_at(&panels, t[x]);
         struct cell_sides truth_sides, sides;
         struct built_option truth, built;
         struct joints truth_joints, joints;

@@ -25,6 +25,7 @@
 #include "core/fit/sp_fit.h"
 #include "core/joint/cell_sides.h"
 #include "core/surface/surface.h"
+#include "tests/support/as_built_reference.h"
 #include "tests/support/surface_fixture.h"
 
 /* The hash of c377b7e's fits. */
@@ -74,16 +75,6 @@ static void hash_built(uint64_t *h, const struct built_option *b)
     hash_bytes(h, counts, sizeof counts);
 }
 
-static void classify_at(struct panelization *panels, double t)
-{
-    struct classify_options options;
-    struct option_totals totals;
-    classify_defaults(&options);
-    options.sp_as_fp = 1;
-    options.threshold = t;
-    classify_panels(panels, &options, &totals);
-}
-
 /* The nu x nv grid of s at thresholds t[0..nt) (m), into *h; the counts
  * of SP panels, misfits and cones fitted into tally. */
 static void hash_grid(const struct surface *s, int nu, int nv,
@@ -102,7 +93,7 @@ static void hash_grid(const struct surface *s, int nu, int nv,
          * every t here, so its fits stay measured on the facets, and the
          * pin stays the pin (coarse_mesh.h). */
         assert_false(facet_sag_matters(s->facet_sag, t[x]));
-        classify_at(&panels, t[x]);
+        as_built_classify_at(&panels, t[x]);
         struct cell_sides sides, view;
         struct built_option alone, kept;
         if (cell_sides_sample(&s->mesh, &s->uv, &s->curvature, &panels,
