@@ -12,7 +12,9 @@
 
 #include "args.h"
 #include "command.h"
+#include "progress.h"
 #include "shown.h"
+#include "signals.h"
 #include "study/study.h"
 #include "study/study_export.h"
 
@@ -128,6 +130,14 @@ static int export_main(int argc, char **argv, struct facet_error *err)
         rc = study_repoint_surface(store, run_id, surface, err);
     if (rc == FACET_OK && (request.obj || request.json || request.svg))
         rc = refuse_building(store, path, run_id, number, err);
+    /* A building's files are read and prepared again, seconds on a big
+     * one: say so on a terminal, and let Ctrl-C stop it with no file
+     * written. */
+    struct study_hooks hooks = {NULL, progress_show_stage, NULL,
+                                signals_stop_hook, NULL,
+                                progress_show_warning};
+    request.hooks = &hooks;
+    signals_catch_stop();
     if (rc == FACET_OK)
         rc = study_export(store, run_id, number, &request, err);
     /* What was written is said on stdout, unless a file went there. */
@@ -139,6 +149,10 @@ static int export_main(int argc, char **argv, struct facet_error *err)
         if (request.written[k][0])
             shown_line(say, "wrote %s", request.written[k]);
     store_close(store);
+    if (rc == FACET_ESTOP) {
+        shown_line(stderr, "facet: export interrupted; no file written");
+        return signals_stop_status();
+    }
     return rc;
 }
 

@@ -13,12 +13,6 @@
 #include "signals.h"
 #include "study/study_merge.h"
 
-static int stop_requested(void *context)
-{
-    (void)context;
-    return signals_stop_requested() != 0;
-}
-
 /* The options as given, 0 when absent. */
 struct merge_args {
     int fewer;
@@ -46,7 +40,7 @@ static int merge_main(int argc, char **argv, struct facet_error *err)
             "SHARD.db...)");
     struct merge_report report;
     struct study_hooks hooks = {NULL, progress_show_stage, NULL,
-                                stop_requested, NULL, progress_show_warning};
+                                signals_stop_hook, NULL, progress_show_warning};
     if (rc == FACET_OK) {
         /* Ctrl-C or SIGTERM stops the merge between its steps: its side
          * file removed, OUT.db as it was. */

@@ -49,12 +49,6 @@ static void show_progress(void *context, int64_t done, int64_t total)
         progress_update(&view->bar, done, total);
 }
 
-static int stop_requested(void *context)
-{
-    (void)context;
-    return signals_stop_requested() != 0;
-}
-
 static void show_started(void *context, int64_t run)
 {
     (void)context;
@@ -459,7 +453,7 @@ static int optimize_with(struct optimize_command *c, struct facet_error *err)
     memset(&view, 0, sizeof view);
     /* Warnings come before the progress bar starts. */
     struct study_hooks hooks = {&view, progress_show_stage, show_progress,
-                                stop_requested, show_started,
+                                signals_stop_hook, show_started,
                                 progress_show_warning};
     enum optimize_outcome outcome;
     int64_t run = c->run_number;

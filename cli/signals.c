@@ -78,3 +78,9 @@ int signals_stop_status(void)
     int signal_number = atomic_load(&stop_signal);
     return 128 + (signal_number ? signal_number : SIGINT);
 }
+
+int signals_stop_hook(void *context)
+{
+    (void)context;
+    return signals_stop_requested() != 0;
+}

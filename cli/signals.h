@@ -1,7 +1,7 @@
 /*
  * signals.h: SIGINT, SIGTERM and SIGHUP as a request to stop, not a kill.
  *
- * Long commands (optimize, merge) install the handler, check
+ * Long commands (optimize, merge, export) install the handler, check
  * signals_stop_requested between batches and, through their stop hook,
  * every few milliseconds while a surface is read and prepared; they commit
  * what they have and mark the run interrupted (a merge removes its side
@@ -19,6 +19,10 @@ void signals_catch_stop(void);
 
 /* Non-zero once one of them arrived: the signal's number. */
 int signals_stop_requested(void);
+
+/* signals_stop_requested as a study's stop hook (study.h's
+ * should_stop): context is not used. */
+int signals_stop_hook(void *context);
 
 /* 128 + the signal that asked to stop, as a shell reports a command
  * killed by it: 130 for Ctrl-C (or a stop without a signal), 129 for a

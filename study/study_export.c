@@ -93,19 +93,31 @@ int study_option_load(struct store *store, int64_t run, int64_t number,
 }
 
 int study_option_building(struct store *store, struct study_option *p,
+                          const struct study_project_view *view,
+                          const struct project_option *building,
                           const struct study_hooks *hooks,
                           struct facet_error *err)
 {
-    assert(store_run_is_project(&p->run) && !p->have_view);
-    int rc = study_project_view_open(store, &p->run, hooks, &p->view, err);
-    p->have_view = 1;
-    if (rc == FACET_OK)
-        rc = study_project_view_option(store, &p->view, p->row.number,
-                                       &p->building, err);
-    p->have_building = 1;
+    assert(store_run_is_project(&p->run) && p->view == NULL);
+    assert(building == NULL || view != NULL);
+    int rc = FACET_OK;
+    if (view == NULL) {
+        rc = study_project_view_open(store, &p->run, hooks, &p->own_view,
+                                     err);
+        p->have_view = 1;
+        view = &p->own_view;
+    }
+    p->view = view;
+    if (rc == FACET_OK && building == NULL) {
+        rc = study_project_view_option(store, view, p->row.number,
+                                       &p->own_building, err);
+        p->have_building = 1;
+        building = &p->own_building;
+    }
+    p->building = building;
     if (rc != FACET_OK)
         return rc;
-    const struct project_option *b = &p->building;
+    const struct project_option *b = p->building;
     if (b->nsurfaces != p->nsurfaces)
         return facet_error_set(err, FACET_EINPUT,
             "run %lld option %lld: its building has %zu surfaces, the run "
@@ -131,9 +143,9 @@ int study_option_building(struct store *store, struct study_option *p,
 void study_option_free(struct study_option *p)
 {
     if (p->have_building)
-        project_option_free(&p->building);
+        project_option_free(&p->own_building);
     if (p->have_view)
-        study_project_view_close(&p->view);
+        study_project_view_close(&p->own_view);
     if (p->have_geometry)
         panel_geometry_free(&p->geometry);
     panelization_free(&p->panels);
@@ -226,8 +238,8 @@ static void surface_name(const char *path, char *out, size_t size)
 static int write_xlsx(FILE *out, const struct study_option *p,
                       struct facet_error *err)
 {
-    int building = p->have_building;
-    size_t n = building ? p->building.nsurfaces : 1;
+    int building = p->building != NULL;
+    size_t n = building ? p->building->nsurfaces : 1;
     struct xlsx_surface *surfaces = calloc(n, sizeof *surfaces);
     double **radius = calloc(n, sizeof *radius);
     char single[256];
@@ -235,9 +247,9 @@ static int write_xlsx(FILE *out, const struct study_option *p,
         : facet_error_set(err, FACET_EWORK, "out of memory");
     for (size_t s = 0; rc == FACET_OK && s < n; s++) {
         const struct panelization *panels =
-            building ? &p->building.surfaces[s].panels : &p->panels;
+            building ? &p->building->surfaces[s].panels : &p->panels;
         const struct surface *surface =
-            building ? &p->view.project.surfaces[s].surface : &p->surface;
+            building ? &p->view->project.surfaces[s].surface : &p->surface;
         radius[s] = malloc((panels->npanels ? panels->npanels : 1) *
                            sizeof *radius[s]);
         if (radius[s] == NULL) {
@@ -249,8 +261,8 @@ static int write_xlsx(FILE *out, const struct study_option *p,
         if (building) {
             surfaces[s] = (struct xlsx_surface){
                 p->surfaces[s].name, panels, radius[s],
-                &p->building.surfaces[s].totals,
-                p->building.surfaces[s].moulds_used};
+                &p->building->surfaces[s].totals,
+                p->building->surfaces[s].moulds_used};
         } else {
             surface_name(p->run.surface_path, single, sizeof single);
             surfaces[s] = (struct xlsx_surface){single, panels, radius[s],
@@ -264,7 +276,7 @@ static int write_xlsx(FILE *out, const struct study_option *p,
                  (long long)p->row.number);
         struct xlsx_schedule x = {
             title, run_started(&p->run), building, n, surfaces,
-            building ? &p->building.totals : &p->totals, &p->classify};
+            building ? &p->building->totals : &p->totals, &p->classify};
         rc = xlsx_schedule_write(out, &x, err);
     }
     for (size_t s = 0; radius && s < n; s++)
@@ -280,7 +292,7 @@ static int write_xlsx(FILE *out, const struct study_option *p,
 static void write_building_csv(const struct study_option *p, FILE *csv,
                                FILE *totals)
 {
-    const struct project_option *b = &p->building;
+    const struct project_option *b = p->building;
     report_csv_header(csv, 1);
     size_t id = 1;
     for (size_t s = 0; s < b->nsurfaces; s++) {
@@ -345,7 +357,8 @@ int study_export(struct store *store, int64_t run, int64_t number,
                            r->obj || r->svg || (r->xlsx && !building), &p,
                            err);
     if (rc == FACET_OK && building)
-        rc = study_option_building(store, &p, NULL, err);
+        rc = study_option_building(store, &p, r->view, r->building,
+                                   r->hooks, err);
     if (rc == FACET_OK && building && r->csv)
         write_building_csv(&p, file[EXPORT_CSV].out,
                            totals_file ? file[EXPORT_TOTALS].out : NULL);

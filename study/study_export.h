@@ -39,11 +39,16 @@ struct study_option {
     struct surface_row *surfaces;
     struct option_surface_row *surface_rows;
     size_t nsurfaces;
-    /* A project run's option evaluated again over its building
-     * (study_option_building): every surface's panels, the building's
-     * totals and mould families; have_building set. */
-    struct study_project_view view;
-    struct project_option building;
+    /* A project run's option evaluated over its building
+     * (study_option_building): the prepared building, and every surface's
+     * panels, the building's totals and mould families; NULL before.
+     * Borrowed when the caller had them (the workbench's map), else the
+     * option's own (own_view, own_building, released by study_option_free
+     * when have_view, have_building). */
+    const struct study_project_view *view;
+    const struct project_option *building;
+    struct study_project_view own_view;
+    struct project_option own_building;
     int have_view, have_building;
 };
 
@@ -58,14 +63,20 @@ int study_option_load(struct store *store, int64_t run, int64_t number,
                       struct facet_error *err);
 void study_option_free(struct study_option *option);
 
-/* Of a project run's option loaded by study_option_load: opens the run's
- * building again (study_project_view_open: its files, checked by SHA-256)
- * and evaluates the option over it into option->building, with the
- * run's settings and the option's stored grids. The building's panels
- * must be as many as the option's row says, surface by surface and in
- * all, or FACET_EINPUT: a schedule that does not add up to the option
- * shown is never written. hooks (may be NULL) hears the stage. */
+/* Of a project run's option loaded by study_option_load: its building
+ * and the option evaluated over it, into option->view and
+ * option->building. view is the run's building already prepared
+ * (borrowed: it must outlive option), or NULL to open it again
+ * (study_project_view_open: its files, checked by SHA-256); building is
+ * the option already evaluated over view (borrowed likewise; only with
+ * view), or NULL to evaluate it with the run's settings and the option's
+ * stored grids. Either way the building's panels must be as many as the
+ * option's row says, surface by surface and in all, or FACET_EINPUT: a
+ * schedule that does not add up to the option shown is never written.
+ * hooks (may be NULL) hears the stage. */
 int study_option_building(struct store *store, struct study_option *option,
+                          const struct study_project_view *view,
+                          const struct project_option *building,
                           const struct study_hooks *hooks,
                           struct facet_error *err);
 
@@ -81,6 +92,13 @@ struct export_request {
     const char *xlsx;                     /* the schedule as a workbook
                                              (core/out/xlsx_schedule.h) */
     int force;                            /* overwrite existing files */
+    /* A building's option already open (the workbench's map), borrowed;
+     * NULL: study_export opens the building and evaluates the option
+     * again (study_option_building). building only with view. */
+    const struct study_project_view *view;
+    const struct project_option *building;
+    const struct study_hooks *hooks;      /* hears the stage of long
+                                             work; NULL: nothing told */
     struct svg_map_options map;           /* view and colouring of the SVG */
     /* Set by study_export: the paths written, in the order written (the
      * MTL is obj's name with .mtl, the CSV's totals csv's name less .csv

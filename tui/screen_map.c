@@ -15,6 +15,7 @@
  * (study_project_view.h), which app->project prepares in a thread once
  * for every map of the run while the map shows the stage.
  */
+#include <assert.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -69,8 +70,9 @@ static const struct tui_key_help map_help[] = {
               "worst gap or by worst kink"},
     {"z", "zoom in: fit the screen, 1, then 2 columns per panel"},
     {"Z", "zoom out, back to the whole grid fitted to the screen"},
-    {"e, F9", "export: PREFIX.obj (+ .mtl), PREFIX.csv and PREFIX.svg; "
-              "end the prefix with ! to overwrite"},
+    {"e, F9", "export: PREFIX.obj (+ .mtl), .csv, .svg and .xlsx; a "
+              "building's option PREFIX.csv and .xlsx, every surface's "
+              "panels; end the prefix with ! to overwrite"},
     {"] / [", "a project's option: the next / previous surface of the "
               "building"},
     {NULL, NULL},
@@ -479,7 +481,10 @@ static void move_cursor(struct map_screen *s, int di, int dj)
         s->cj = s->panels->nv - 1;
 }
 
-/* Splits "PREFIX" or "PREFIX!" (overwrite) into the export's paths. */
+/* Splits "PREFIX" or "PREFIX!" (overwrite) into the export's paths: a
+ * single surface's PREFIX.obj (+ .mtl), .csv, .svg and .xlsx; a
+ * building's schedules, PREFIX.csv and .xlsx, from the building the map
+ * shows (no second evaluation). */
 static void export_option(struct map_screen *s, struct tui_app *app)
 {
     char prefix[TUI_INPUT_MAX];
@@ -493,16 +498,24 @@ static void export_option(struct map_screen *s, struct tui_app *app)
         return;
     }
     char obj[TUI_INPUT_MAX + 8], csv[TUI_INPUT_MAX + 8];
-    char svg[TUI_INPUT_MAX + 8];
+    char svg[TUI_INPUT_MAX + 8], xlsx[TUI_INPUT_MAX + 8];
     snprintf(obj, sizeof obj, "%s.obj", prefix);
     snprintf(csv, sizeof csv, "%s.csv", prefix);
     snprintf(svg, sizeof svg, "%s.svg", prefix);
+    snprintf(xlsx, sizeof xlsx, "%s.xlsx", prefix);
     struct export_request request;
     memset(&request, 0, sizeof request);
-    request.obj = obj;
     request.csv = csv;
-    request.svg = svg;
+    request.xlsx = xlsx;
     request.force = force;
+    if (s->project) {
+        request.view = tui_project_load_view(app->project);
+        request.building = &s->building;
+        assert(request.view != NULL);
+    } else {
+        request.obj = obj;
+        request.svg = svg;
+    }
     svg_map_defaults(&request.map);
     /* The SVG map knows types and classes; by mould it is drawn by type
      * (the families are in the OBJ's groups and the CSV's column). */
@@ -514,7 +527,12 @@ static void export_option(struct map_screen *s, struct tui_app *app)
         tui_error(app, "export: %s", err.message);
         return;
     }
-    tui_status(app, "wrote %s (+ .mtl), %s, %s", obj, csv, svg);
+    if (s->project)
+        tui_status(app, "wrote %s (+ -totals.csv), %s: the building's "
+                   "%zu panels", csv, xlsx, s->building.totals.panels);
+    else
+        tui_status(app, "wrote %s (+ .mtl), %s, %s, %s", obj, csv, svg,
+                   xlsx);
 }
 
 static enum tui_result export_key(struct map_screen *s, struct tui_app *app,
@@ -556,11 +574,6 @@ static enum tui_result map_key(struct tui_screen *base, struct tui_app *app,
         return RESULT_HANDLED;
     }
     case 'e': case KEY_F(9): {
-        if (s->project) {
-            tui_status(app, "export: not for a project's option yet (o on "
-                       "the options table lists its surfaces)");
-            return RESULT_HANDLED;
-        }
         char prefix[128];
         snprintf(prefix, sizeof prefix, "facet-run%lld-option%lld",
                  (long long)s->run.id, (long long)s->option.number);
