@@ -10,7 +10,7 @@
 
 #include "args.h"
 #include "core/surface/mesh.h"
-#include "core/classify/option.h"
+#include "core/evaluate/option.h"
 #include "core/surface/param.h"
 
 /* The flags that pick the surface of a file and its units (--units,

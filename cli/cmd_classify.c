@@ -16,7 +16,7 @@
 #include "core/surface/coarse_mesh.h"
 #include "core/base/numparse.h"
 #include "core/base/numrange.h"
-#include "core/classify/option.h"
+#include "core/evaluate/evaluate.h"
 #include "core/out/outfile.h"
 #include "core/out/report.h"
 
@@ -155,7 +155,7 @@ static int classify_run(int argc, char **argv, struct facet_error *err)
     if (rc == FACET_OK)
         rc = surface_prepare(&surface, flip, uv, err);
     if (rc == FACET_OK)
-        rc = option_evaluate(&surface, &params, &panels, &totals, err);
+        rc = option_evaluate(&surface, &params, NULL, &panels, &totals, err);
     if (rc == FACET_OK && csv != NULL)
         rc = write_csv(csv, &panels, &totals, err);
     char coarse[400], sag[400];

@@ -1,6 +1,7 @@
 /*
  * study.c: an optimisation run written through the store. See study.h.
  */
+#include "core/evaluate/evaluate.h"
 #include "study.h"
 #include "study_internal.h"
 
@@ -506,7 +507,7 @@ static int evaluate_option(const struct run_info *run,
         return rc;
     struct option_params params = option_params_at(
         &settings.base, option->nu, option->nv, option->threshold_mm);
-    return option_evaluate(surface, &params, panels, totals, err);
+    return option_evaluate(surface, &params, NULL, panels, totals, err);
 }
 
 int study_option_panels(struct store *store, const struct run_info *run,

@@ -65,11 +65,6 @@ int svg_map_colouring_parse(const char *text, enum svg_map_colouring *out,
                            "unknown colouring '%s' (use type or class)", text);
 }
 
-const char *svg_map_view_name(enum svg_map_view view)
-{
-    return (unsigned)view < 4 ? view_names[view] : "?";
-}
-
 /* Where the data goes on the page. */
 struct frame {
     enum svg_map_view view;

@@ -64,8 +64,6 @@ int svg_map_view_parse(const char *text, enum svg_map_view *out,
 int svg_map_colouring_parse(const char *text, enum svg_map_colouring *out,
                             struct facet_error *err);
 
-const char *svg_map_view_name(enum svg_map_view view);
-
 /* Writes the map of panels (classified: types and classes set), whose
  * geometry is g and totals are totals, to out. Errors are left on the
  * stream. */

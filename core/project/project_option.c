@@ -2,6 +2,7 @@
  * project_option.c: an option over every surface of a project. See
  * project_option.h.
  */
+#include "core/evaluate/evaluate.h"
 #include "core/project/project_option.h"
 
 #include <assert.h>
@@ -43,9 +44,10 @@ static void surface_run(void *argument)
         params.nv = job->grids[i].nv;
         slot->grid = job->grids[i];
         struct facet_error err;
-        int rc = option_evaluate_unmoulded(&s->surface, NULL, NULL, &params,
-                                           &slot->panels, &slot->totals,
-                                           &slot->joints, &err);
+        const struct evaluation_shared shared = {.unmoulded = 1,
+                                                 .joints = &slot->joints};
+        int rc = option_evaluate(&s->surface, &params, &shared,
+                                 &slot->panels, &slot->totals, &err);
         /* Threads take surfaces in rising order, so its first failure is
          * its least. */
         if (rc != FACET_OK && job->failure.piece == SIZE_MAX) {

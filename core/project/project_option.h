@@ -6,8 +6,8 @@
  * (option_params: the threshold, prices, limits, mould settings; its own
  * nu x nv is not read). Its evaluation:
  *
- *   1. evaluates every surface as a single surface is (option.h:
- *      option_evaluate_unmoulded with that surface's grid: panels,
+ *   1. evaluates every surface as a single surface is (evaluate.h:
+ *      option_evaluate, unmoulded, with that surface's grid: panels,
  *      classification, panels as built, gaps and kinks at its joints,
  *      joint length), the surfaces split across threads, each surface one
  *      piece of work with its own panels and totals;
@@ -66,7 +66,7 @@
 #include <stddef.h>
 
 #include "core/base/error.h"
-#include "core/classify/option.h"
+#include "core/evaluate/option.h"
 #include "core/mould/mould.h"
 #include "core/project/project.h"
 #include "core/project/project_grids.h"

@@ -152,17 +152,6 @@ void project_search_free(struct project_search *search)
     memset(search, 0, sizeof *search);
 }
 
-void project_search_space(const struct project_search *search,
-                          const struct design_space *thresholds,
-                          struct design_space *out)
-{
-    *out = *thresholds;
-    out->u_min = 1;
-    out->u_max = (int)search->widths;
-    out->v_min = 1;
-    out->v_max = (int)search->heights;
-}
-
 void project_search_module(const struct project_search *search,
                            const struct design_point *point, double *w,
                            double *h)

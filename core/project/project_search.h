@@ -7,7 +7,7 @@
  * module's width and height indices, 1-based, in the run's module range
  * (module.h: width index i is width_min + (i - 1) x width_step); the
  * design space the search is given is u 1..widths, v 1..heights, and the
- * run's threshold range (project_search_space). Each module maps to one
+ * run's threshold range. Each module maps to one
  * grid per surface (project_module_grids), and the evaluator evaluates a
  * point with project_option_evaluate: the building's totals go to the
  * search, which ranks and stores them as a single surface's.
@@ -80,12 +80,6 @@ int project_search_init(struct project_search *search,
                         const struct surface_grid *overrides,
                         struct facet_error *err);
 void project_search_free(struct project_search *search);
-
-/* The design space of the search: u 1..widths, v 1..heights, the
- * threshold range of thresholds (its t fields; its grid sides unread). */
-void project_search_space(const struct project_search *search,
-                          const struct design_space *thresholds,
-                          struct design_space *out);
 
 /* The module (m) of point (its nu, nv the width and height indices). */
 void project_search_module(const struct project_search *search,

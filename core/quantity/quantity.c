@@ -11,7 +11,7 @@
 #include <string.h>
 
 #include "core/base/numformat.h"
-#include "core/classify/option.h"
+#include "core/evaluate/option.h"
 
 /* Where a field of struct option_row is. */
 #define ROW(member) offsetof(struct option_row, member)

@@ -3,6 +3,7 @@
  * batch evaluation, and the exhaustive and random methods. NSGA-II's
  * generations come through the same batches (optimize_nsga2.c).
  */
+#include "core/evaluate/evaluate.h"
 #include "core/search/optimize.h"
 
 #include <assert.h>
@@ -203,23 +204,17 @@ static void evaluation_thread(void *argument)
             struct option_params params = option_params_at(
                 plan->base, plan->points[k].nu, plan->points[k].nv,
                 plan->points[k].threshold_mm);
-            if (x == plan->group[g]) {
-                job->rc = kept ? option_evaluate_kept(
-                                     plan->surface, plan->lattice,
-                                     plan->lines, &params, &fits, &panels,
-                                     &plan->totals[k], &job->err)
-                               : option_evaluate_shared(
-                                     plan->surface, plan->lattice,
-                                     plan->lines, &params, &panels,
-                                     &plan->totals[k], &job->err);
-            } else {
+            struct evaluation_shared shared = {plan->lattice, plan->lines,
+                                               kept ? &fits : NULL, 0, 0, 0,
+                                               NULL};
+            if (x > plan->group[g]) {
                 /* Same grid, same joints: measured with its first point. */
-                double joints =
+                shared.again = 1;
+                shared.joint_length =
                     plan->totals[plan->order[plan->group[g]]].joint_length;
-                job->rc = option_classify_kept(plan->surface, &params,
-                                               joints, &fits, &panels,
-                                               &plan->totals[k], &job->err);
             }
+            job->rc = option_evaluate(plan->surface, &params, &shared,
+                                      &panels, &plan->totals[k], &job->err);
             if (job->rc != FACET_OK)
                 break;
         }

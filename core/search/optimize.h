@@ -25,7 +25,7 @@
 
 #include "core/search/metric.h"
 #include "core/search/shard.h"
-#include "core/classify/option.h"
+#include "core/evaluate/evaluate.h"
 
 struct design_space {
     int u_min, u_max;         /* grid sides, inclusive */
@@ -214,7 +214,7 @@ int optimize_run(const struct surface *surface,
 
 /* Evaluates points[0..n) on up to jobs threads into totals[0..n), the
  * panels of the grids lattice holds from it (NULL: none; see
- * option_evaluate_shared). */
+ * option_evaluate's evaluation_shared). */
 int optimize_evaluate(const struct surface *surface,
                       const struct panel_lattice *lattice,
                       const struct option_params *base,

@@ -181,31 +181,6 @@ uint32_t uv_index_locate(const struct uv_index *index, double u, double v,
     return best;
 }
 
-int uv_index_visit_box(const struct uv_index *index, double u0, double v0,
-                       double u1, double v1,
-                       int (*visit)(uint32_t triangle, void *context),
-                       void *context)
-{
-    if (index->ntriangles == 0 || u1 < index->umin || u0 > index->umax ||
-        v1 < index->vmin || v0 > index->vmax)
-        return 0;
-    int i0 = cell_of(u0, index->umin, index->cell_u, index->ncells_u);
-    int i1 = cell_of(u1, index->umin, index->cell_u, index->ncells_u);
-    int j0 = cell_of(v0, index->vmin, index->cell_v, index->ncells_v);
-    int j1 = cell_of(v1, index->vmin, index->cell_v, index->ncells_v);
-    for (int j = j0; j <= j1; j++)
-        for (int i = i0; i <= i1; i++) {
-            size_t c = (size_t)j * index->ncells_u + i;
-            for (uint32_t k = index->cell_start[c];
-                 k < index->cell_start[c + 1]; k++) {
-                int stop = visit(index->cell_triangles[k], context);
-                if (stop)
-                    return stop;
-            }
-        }
-    return 0;
-}
-
 static double signed_area(const double *c)
 {
     return 0.5 * ((c[2] - c[0]) * (c[5] - c[1]) -

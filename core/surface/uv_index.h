@@ -66,16 +66,6 @@ static inline int uv_index_barycentric(const struct uv_index *index,
 uint32_t uv_index_locate(const struct uv_index *index, double u, double v,
                          double tolerance, double barycentric[3]);
 
-/* Calls visit(triangle, context) once for every triangle listed in a cell
- * that the box [u0,u1] x [v0,v1] touches (a triangle may be listed in
- * several such cells and is then visited once per cell; callers that care
- * deduplicate). Stops early when visit returns non-zero, and returns that
- * value; returns 0 otherwise. */
-int uv_index_visit_box(const struct uv_index *index, double u0, double v0,
-                       double u1, double v1,
-                       int (*visit)(uint32_t triangle, void *context),
-                       void *context);
-
 void uv_index_free(struct uv_index *index);
 
 /* What uv_check found in a UV map. */

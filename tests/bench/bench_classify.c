@@ -22,7 +22,7 @@
 #include <unistd.h>
 
 #include "bench_common.h"
-#include "core/classify/option.h"
+#include "core/evaluate/evaluate.h"
 
 #define EVAL_RUNS 31
 #define GOAL_RATIO 5.0  /* issue 18: one evaluation, in bare passes */
@@ -56,7 +56,7 @@ int main(int argc, char **argv)
     for (int run = 0; run < EVAL_RUNS; run++) {
         struct panelization panels;
         double start = bench_now();
-        option_evaluate(&surface, &params, &panels, &totals, &err);
+        option_evaluate(&surface, &params, NULL, &panels, &totals, &err);
         eval_times[run] = bench_now() - start;
         panelization_free(&panels);
     }

@@ -35,6 +35,7 @@
 #include <string.h>
 #include <time.h>
 
+#include "core/evaluate/evaluate.h"
 #include "bench_common.h"
 #include "core/classify/classify.h"
 #include "core/surface/coarse_mesh.h"
@@ -108,9 +109,10 @@ static void stepped_pass(const struct surface *surface,
                 struct option_params params = option_params_at(
                     &s->base, nu, nv, STEPPED_MM[x]);
                 struct option_totals totals;
-                if (option_evaluate_shared(surface, lattice, NULL, &params,
-                                            &panels, &totals,
-                                            &err) != FACET_OK)
+                const struct evaluation_shared shared = {.lattice =
+                                                             lattice};
+                if (option_evaluate(surface, &params, &shared, &panels,
+                                    &totals, &err) != FACET_OK)
                     fail(&err);
                 double t0 = bench_cpu_now();
                 struct cell_sides view;

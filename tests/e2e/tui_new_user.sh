@@ -164,7 +164,7 @@ check "panel map" '^ Panel map'
 no_labels_run_together "Map: the function-key labels stand apart"
 check "map: F2 colours, F9 exports" 'F2Colour +F9Export'
 keys '?'
-check "a help line wider than the screen goes on under its keys" '^ +the prefix with ! to overwrite *$'
+check "a help line wider than the screen goes on under its keys" '^ +panels; end the prefix with ! to overwrite *$'
 keys x
 check "closed" '^ Panel map'
 keys q g Space Space c

@@ -23,7 +23,7 @@
 #include <sys/mman.h>
 #include <unistd.h>
 
-#include "core/classify/option.h"
+#include "core/evaluate/evaluate.h"
 #include "core/panel/panel.h"
 #include "core/project/module.h"
 #include "core/project/project.h"
@@ -150,7 +150,7 @@ static void evaluate(const struct project *project,
     if (rc == FACET_OK && n == 1) {
         struct panelization panels;
         struct option_totals alone;
-        if (option_evaluate(&project->surfaces[0].surface, &params, &panels,
+        if (option_evaluate(&project->surfaces[0].surface, &params, NULL, &panels,
                             &alone, &err) != FACET_OK)
             abort();
         const struct option_totals *t = &option.totals;

@@ -11,7 +11,7 @@
 #include <sys/mman.h>
 #include <unistd.h>
 
-#include "core/classify/option.h"
+#include "core/evaluate/evaluate.h"
 #include "core/surface/surface.h"
 #include "fuzz.h"
 
@@ -43,7 +43,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         classify_defaults(&params.classify);
         struct panelization panels;
         struct option_totals totals;
-        if (option_evaluate(&surface, &params, &panels, &totals, &err) ==
+        if (option_evaluate(&surface, &params, NULL, &panels, &totals, &err) ==
             FACET_OK) {
             if (!isfinite(totals.cost) || !isfinite(totals.planarity))
                 abort();

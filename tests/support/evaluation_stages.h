@@ -1,17 +1,17 @@
 /*
  * evaluation_stages.h: one design option evaluated up to a stage of
- * option_evaluate_shared (option.h), for the benchmarks that time each
+ * option_evaluate (evaluate.h), for the benchmarks that time each
  * stage's cost against the stages before it: what a search paid per
  * option before the cost model (issue 15), and before panels as built
  * (issue 16).
  *
  * Test support, not part of Facet: tests/ links it, the binary does not.
- * The full evaluation is option_evaluate_shared itself, not a stage here.
+ * The full evaluation is option_evaluate itself, not a stage here.
  */
 #ifndef FACET_EVALUATION_STAGES_H
 #define FACET_EVALUATION_STAGES_H
 
-#include "core/classify/option.h"
+#include "core/evaluate/evaluate.h"
 #include "core/joint/joint_length.h"
 
 enum evaluation_stage {

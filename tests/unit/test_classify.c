@@ -13,7 +13,7 @@
 #include <string.h>
 
 #include "core/classify/classify.h"
-#include "core/classify/option.h"
+#include "core/evaluate/option.h"
 #include "core/base/sym3.h"
 
 static void test_table_one(void **state)

@@ -24,7 +24,7 @@
 
 #include "core/classify/classify.h"
 #include "core/surface/example.h"
-#include "core/classify/option.h"
+#include "core/evaluate/evaluate.h"
 #include "core/surface/surface.h"
 
 /* ---- Analytic surfaces, written as OBJ with vt = their parameters ---- */
@@ -122,7 +122,7 @@ static void evaluate(const struct surface *surface, int nu, int nv,
     classify_defaults(&params.classify);
     params.classify.threshold = threshold;
     struct facet_error err;
-    if (option_evaluate(surface, &params, panels, totals, &err) != FACET_OK)
+    if (option_evaluate(surface, &params, NULL, panels, totals, &err) != FACET_OK)
         fail_msg("option_evaluate %dx%d: %s", nu, nv, err.message);
 }
 
@@ -264,7 +264,7 @@ static void test_limits_to_rounding(void **state)
     struct panelization panels;
     struct option_totals totals;
     struct facet_error err;
-    assert_int_equal(option_evaluate(&surface, &params, &panels, &totals,
+    assert_int_equal(option_evaluate(&surface, &params, NULL, &panels, &totals,
                                      &err), FACET_OK);
     assert_int_equal(panels.npanels, 20);
     for (size_t n = 0; n < panels.npanels; n++)

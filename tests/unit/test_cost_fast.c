@@ -16,7 +16,7 @@
  *     order the families were started, under all 8 relabelings in order,
  *     the proper fit then (mirror) the mirrored one, by mould_fit_points;
  *   - a batch's totals (optimize_evaluate, lines shared): each option
- *     evaluated on its own (option_evaluate_shared).
+ *     evaluated on its own (option_evaluate, sharing the lattice).
  * Over every option of small spaces of three example surfaces, at several
  * tolerances, with and without mirrors, and grids of real surfaces from
  * ../shared/data (FACET_DATA).
@@ -34,7 +34,7 @@
 #include <unistd.h>
 
 #include "core/classify/classify.h"
-#include "core/classify/option.h"
+#include "core/evaluate/evaluate.h"
 #include "core/joint/joint_length.h"
 #include "core/mould/mould.h"
 #include "core/mould/mould_fit.h"
@@ -354,8 +354,9 @@ static void test_batch_totals(void **state)
             &base, points[k].nu, points[k].nv, points[k].threshold_mm);
         struct panelization p;
         struct option_totals alone;
-        assert_int_equal(option_evaluate_shared(&s, lattice, NULL, &params, &p,
-                                                 &alone, &err),
+        const struct evaluation_shared shared = {.lattice = lattice};
+        assert_int_equal(option_evaluate(&s, &params, &shared, &p, &alone,
+                                         &err),
                          FACET_OK);
         assert_same_double(batch[k].joint_length, alone.joint_length,
                            "batch joint length");

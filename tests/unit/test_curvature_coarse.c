@@ -18,7 +18,7 @@
 #include <string.h>
 #include <unistd.h>
 
-#include "core/classify/option.h"
+#include "core/evaluate/evaluate.h"
 
 /* Opens and prepares the OBJ text as a surface (through a temporary
  * file, as a designer's file would be read). */
@@ -57,7 +57,7 @@ static void evaluate(const struct surface *s, int nu, int nv,
     params.classify.sp_by_class = 1;
     struct panelization p;
     struct facet_error err;
-    if (option_evaluate(s, &params, &p, t, &err) != FACET_OK)
+    if (option_evaluate(s, &params, NULL, &p, t, &err) != FACET_OK)
         fail_msg("%s", err.message);
     panelization_free(&p);
 }

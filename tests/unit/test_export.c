@@ -22,7 +22,7 @@
 
 #include "core/surface/example.h"
 #include "core/out/export_obj.h"
-#include "core/classify/option.h"
+#include "core/evaluate/evaluate.h"
 #include "core/panel/panel_geometry.h"
 #include "core/search/pareto.h"
 #include "core/base/numformat.h"
@@ -59,7 +59,7 @@ static void evaluate(struct fixture *f, int nu, int nv, double threshold)
     classify_defaults(&params.classify);
     params.classify.threshold = threshold;
     struct facet_error err;
-    if (option_evaluate(&f->surface, &params, &f->panels, &f->totals,
+    if (option_evaluate(&f->surface, &params, NULL, &f->panels, &f->totals,
                         &err) != FACET_OK)
         fail_msg("%s", err.message);
     if (panel_geometry_build(&f->surface.mesh, &f->surface.uv, &f->panels,

@@ -34,7 +34,7 @@
 #include "core/classify/classify.h"
 #include "core/surface/coarse_mesh.h"
 #include "core/fit/sp_fit.h"
-#include "core/classify/option.h"
+#include "core/evaluate/evaluate.h"
 #include "core/joint/joint.h"
 #include "core/joint/joint_length.h"
 #include "core/surface/example.h"
@@ -1081,7 +1081,7 @@ static void test_cost_terms_plane(void **state)
     struct panelization panels;
     struct option_totals totals;
     struct facet_error err;
-    if (option_evaluate(&s, &params, &panels, &totals, &err) != FACET_OK)
+    if (option_evaluate(&s, &params, NULL, &panels, &totals, &err) != FACET_OK)
         fail_msg("%s", err.message);
     double w = sqrt(20.0 * 20 + 6 * 6), h = sqrt(15.0 * 15 + 3 * 3);
     double area = w * h * sqrt(1 - pow(-18 / (w * h), 2));
@@ -1104,7 +1104,7 @@ static void test_cost_terms_plane(void **state)
     params = option_params_at(&base, 7, 5, 3);
     memset(params.classify.mould_cost, 0, sizeof params.classify.mould_cost);
     params.classify.panel_cost = params.classify.joint_cost = 0;
-    if (option_evaluate(&s, &params, &panels, &totals, &err) != FACET_OK)
+    if (option_evaluate(&s, &params, NULL, &panels, &totals, &err) != FACET_OK)
         fail_msg("%s", err.message);
     assert_true(totals.cost == totals.area_of[TYPE_FP] * 701);
     panelization_free(&panels);
@@ -1126,7 +1126,7 @@ static void test_cost_terms_cylinder_moulds(void **state)
     struct panelization panels;
     struct option_totals totals;
     struct facet_error err;
-    if (option_evaluate(&s, &params, &panels, &totals, &err) != FACET_OK)
+    if (option_evaluate(&s, &params, NULL, &panels, &totals, &err) != FACET_OK)
         fail_msg("%s", err.message);
     assert_int_equal(totals.count[TYPE_SP], 15);
     assert_int_equal(totals.moulds_of[TYPE_SP], 1);
@@ -1140,7 +1140,7 @@ static void test_cost_terms_cylinder_moulds(void **state)
     panelization_free(&panels);
     /* A negative cost is refused, naming the term. */
     params.classify.joint_cost = -1;
-    assert_int_equal(option_evaluate(&s, &params, &panels, &totals, &err),
+    assert_int_equal(option_evaluate(&s, &params, NULL, &panels, &totals, &err),
                      FACET_EINPUT);
     assert_non_null(strstr(err.message, "joint cost"));
     panelization_free(&panels);

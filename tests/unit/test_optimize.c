@@ -17,6 +17,7 @@
 #include <string.h>
 #include <unistd.h>
 
+#include "core/evaluate/evaluate.h"
 #include "core/surface/example.h"
 #include "core/search/front.h"
 #include "core/search/optimize.h"
@@ -411,7 +412,7 @@ static void test_lattice_run(void **state)
 }
 
 /* A grid's thresholds evaluated together keep its SP fits and sides
- * (option_evaluate_kept): every option's totals are, to the bit, those of
+ * (option_evaluate with the grid's fits kept): every option's totals are, to the bit, those of
  * the option evaluated alone, as a shard holding only some of the grid's
  * thresholds evaluates them. */
 static void test_grid_thresholds_equal_alone(void **state)
@@ -440,7 +441,7 @@ static void test_grid_thresholds_equal_alone(void **state)
             &s.base, points[k].nu, points[k].nv, points[k].threshold_mm);
         struct panelization panels;
         struct option_totals alone;
-        if (option_evaluate(&fine, &params, &panels, &alone, &err) !=
+        if (option_evaluate(&fine, &params, NULL, &panels, &alone, &err) !=
             FACET_OK)
             fail_msg("%s", err.message);
         panelization_free(&panels);

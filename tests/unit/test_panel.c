@@ -19,7 +19,7 @@
 
 #include "core/surface/example.h"
 #include "core/search/optimize.h"
-#include "core/classify/option.h"
+#include "core/evaluate/evaluate.h"
 #include "core/panel/panel_lattice.h"
 #include "tests/support/surface_fixture.h"
 
@@ -49,7 +49,7 @@ static void evaluate_typed(const struct surface *s, int nu, int nv,
     params.classify.threshold = threshold;
     params.classify.sp_by_class = by_class;
     struct facet_error err;
-    int rc = option_evaluate(s, &params, p, t, &err);
+    int rc = option_evaluate(s, &params, NULL, p, t, &err);
     if (rc != FACET_OK)
         fail_msg("%s", err.message);
 }
@@ -327,12 +327,12 @@ static void test_bad_grid(void **state)
     struct panelization p;
     struct option_totals t;
     struct facet_error err;
-    assert_int_equal(option_evaluate(&s, &params, &p, &t, &err),
+    assert_int_equal(option_evaluate(&s, &params, NULL, &p, &t, &err),
                      FACET_EINPUT);
     assert_non_null(strstr(err.message, "0x3"));
     panelization_free(&p);
     params.nu = PANEL_MAX_GRID + 1;
-    assert_int_equal(option_evaluate(&s, &params, &p, &t, &err),
+    assert_int_equal(option_evaluate(&s, &params, NULL, &p, &t, &err),
                      FACET_EINPUT);
     panelization_free(&p);
     surface_close(&s);

@@ -22,7 +22,7 @@
 #include <string.h>
 #include <unistd.h>
 
-#include "core/classify/option.h"
+#include "core/evaluate/evaluate.h"
 #include "core/surface/surface.h"
 #include "core/base/vec3.h"
 #include "tests/support/surface_fixture.h"
@@ -91,7 +91,7 @@ static void evaluate(const struct surface *s, int nu, int nv,
     params.mode = PANEL_EXTREMES;
     classify_defaults(&params.classify);
     struct facet_error err;
-    if (option_evaluate(s, &params, p, t, &err) != FACET_OK)
+    if (option_evaluate(s, &params, NULL, p, t, &err) != FACET_OK)
         fail_msg("%s", err.message);
 }
 

@@ -33,7 +33,7 @@
 #include <string.h>
 #include <unistd.h>
 
-#include "core/classify/option.h"
+#include "core/evaluate/evaluate.h"
 #include "core/project/project.h"
 #include "core/project/project_grids.h"
 #include "core/project/project_option.h"
@@ -232,7 +232,7 @@ static void test_one_surface(void **state)
             struct panelization panels;
             struct option_totals totals;
             struct facet_error err;
-            assert_int_equal(option_evaluate(&p.surfaces[0].surface, &params,
+            assert_int_equal(option_evaluate(&p.surfaces[0].surface, &params, NULL,
                                              &panels, &totals, &err),
                              FACET_OK);
             char what[64];
@@ -387,7 +387,7 @@ static void test_copies_share_moulds(void **state)
         struct panelization panels;
         struct option_totals totals;
         struct facet_error err;
-        assert_int_equal(option_evaluate(&many.surfaces[k].surface, &own,
+        assert_int_equal(option_evaluate(&many.surfaces[k].surface, &own, NULL,
                                          &panels, &totals, &err),
                          FACET_OK);
         alone += totals.moulds;
@@ -448,7 +448,7 @@ static void test_skin_brute_force(void **state)
         struct panelization panels;
         struct option_totals t;
         struct facet_error err;
-        assert_int_equal(option_evaluate(&p.surfaces[i].surface, &own,
+        assert_int_equal(option_evaluate(&p.surfaces[i].surface, &own, NULL,
                                          &panels, &t, &err),
                          FACET_OK);
         const struct project_surface_option *s = &option.surfaces[i];

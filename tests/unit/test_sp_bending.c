@@ -17,7 +17,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 
-#include "core/classify/option.h"
+#include "core/evaluate/evaluate.h"
 #include "core/panel/panel.h"
 #include "core/quantity/quantity.h"
 #include "tests/support/surface_fixture.h"
@@ -104,7 +104,7 @@ static void evaluate(point_at point, int n, int m, int nu, int nv,
     base.classify.sp_by_class = (unmeasured & OPTION_MEASURE_FITS) != 0;
     struct option_params params = option_params_at(&base, nu, nv, t);
     struct panelization panels;
-    if (option_evaluate(&s, &params, &panels, totals, &err) != FACET_OK)
+    if (option_evaluate(&s, &params, NULL, &panels, totals, &err) != FACET_OK)
         fail_msg("%s", err.message);
     panelization_free(&panels);
     surface_close(&s);

@@ -18,6 +18,7 @@
 #include <string.h>
 #include <unistd.h>
 
+#include "core/evaluate/evaluate.h"
 #include "core/surface/example.h"
 #include "store/filter.h"
 #include "study/study.h"
@@ -168,7 +169,7 @@ static void test_run_roundtrip(void **state)
                                 ? 0 : OPTION_MEASURE_ALL & ~info.measured;
         struct panelization panels;
         struct option_totals totals;
-        assert_int_equal(option_evaluate(&surface, &params, &panels,
+        assert_int_equal(option_evaluate(&surface, &params, NULL, &panels,
                                          &totals, &err), FACET_OK);
         assert_memory_equal(&totals, &rows[k].totals, sizeof totals);
         if (rows[k].rank != 1)
@@ -190,7 +191,7 @@ static void test_run_roundtrip(void **state)
             struct panelization stored;
             assert_int_equal(store_panels_get(store, run, rows[k].number,
                                               &stored, &err), FACET_OK);
-            assert_int_equal(option_evaluate(&surface, &params, &panels,
+            assert_int_equal(option_evaluate(&surface, &params, NULL, &panels,
                                              &totals, &err), FACET_OK);
             assert_int_equal(stored.npanels, panels.npanels);
             assert_int_equal(stored.nu, panels.nu);

@@ -1,29 +1,13 @@
 /*
- * option.h: one design option, evaluated.
- *
- * A design option is a grid size and the classification settings; its
- * evaluation panelizes a prepared surface (surface_prepare), then, in this
- * order:
- *   1. classifies and types the panels (classify.h);
- *   2. builds them as a fabricator would (sp_fit.h): an SP panel on a
- *      fitted cylinder or cone; one that none fits within the threshold
- *      (a misfit) is built and typed DP, unless the classify options
- *      type SP by class alone (the paper's typing: sp_by_class);
- *   3. measures the gap and the kink at every joint of the panels as
- *      built (joint.h), against the gap and kink limits (feasibility);
- *   4. finds the mould families of the curved panels (mould.h);
- *   5. prices it all, the joint length (joint_length.h) included.
- * This is the one function that turns design variables into the numbers a
- * designer compares, used alike by `facet classify` and by the
- * optimiser.
+ * option.h: one design option: its grid and settings (option_params), the
+ * measures an evaluation may leave out (option_measure), and the mould
+ * families given to its panels. Its evaluation is evaluate.h.
  */
 #ifndef FACET_OPTION_H
 #define FACET_OPTION_H
 
 #include "core/classify/classify.h"
 #include "core/panel/panel.h"
-#include "core/panel/panel_lattice.h"
-#include "core/surface/surface.h"
 
 /* What an evaluation may leave out. It always classifies and types the
  * panels and sums their counts, areas, deviations and area costs; these
@@ -107,76 +91,9 @@ void option_params_defaults(struct option_params *params);
 struct option_params option_params_at(const struct option_params *base,
                                       int nu, int nv, double threshold_mm);
 
-/* Evaluates params on the prepared surface: fills *panels (caller-owned,
- * released with panelization_free, also after a failure) and *totals.
- * Returns FACET_OK, FACET_EINPUT for a bad grid or option value,
- * FACET_EWORK when out of memory. */
-int option_evaluate(const struct surface *surface,
-                    const struct option_params *params,
-                    struct panelization *panels,
-                    struct option_totals *totals, struct facet_error *err);
-
-struct joint_lines;
-
-/* option_evaluate with the panels taken from lattice (NULL: none) when it
- * holds the grid and params ask for PANEL_EXTREMES (the same panels, to
- * rounding, in a fraction of the time), and the joint length from the
- * lines of lines (NULL: none) that the grid's are among
- * (joint_lines_build): the same length, to the bit, for a batch of grids
- * that share lines. */
-int option_evaluate_shared(const struct surface *surface,
-                           const struct panel_lattice *lattice,
-                           const struct joint_lines *lines,
-                           const struct option_params *params,
-                           struct panelization *panels,
-                           struct option_totals *totals,
-                           struct facet_error *err);
-
-/* One grid at several thresholds: option_evaluate_kept for the first, as
- * option_evaluate_shared but also setting up *fits (sp_fit.h's grid_fits)
- * from the grid's panels, then option_classify_kept for each other
- * threshold with the same panels
- * and fits. A panel's SP fits are then made once, the first time it is SP,
- * and judged at each threshold; its sides are sampled once. The results
- * are those of option_evaluate_shared at each threshold, to the bit
- * (sp_fit.h, cell_sides.h), so a run gives the same options however its
- * points are grouped, split among threads or among shards. The caller
- * releases *fits with grid_fits_free, also after a failure (it is zeroed
- * first). */
-struct grid_fits;
-int option_evaluate_kept(const struct surface *surface,
-                         const struct panel_lattice *lattice,
-                         const struct joint_lines *lines,
-                         const struct option_params *params,
-                         struct grid_fits *fits, struct panelization *panels,
-                         struct option_totals *totals,
-                         struct facet_error *err);
-
-int option_classify_kept(const struct surface *surface,
-                         const struct option_params *params,
-                         double joint_length, struct grid_fits *fits,
-                         struct panelization *panels,
-                         struct option_totals *totals,
-                         struct facet_error *err);
-
-/* option_evaluate_shared up to the mould families: every panel's mould
- * is -1 and the totals' mould counts 0, priced without moulds. What an
- * option over a project (core/project/project_option.h) runs on each
- * surface before the building's families are found over all of them at
- * once. *joints (when not NULL) receives the joints measured, the count
- * the totals' mean gap and kink are over, so that a building can weigh its
- * surfaces' means (0 after a failure). Same returns. */
-int option_evaluate_unmoulded(const struct surface *surface,
-                              const struct panel_lattice *lattice,
-                              const struct joint_lines *lines,
-                              const struct option_params *params,
-                              struct panelization *panels,
-                              struct option_totals *totals, size_t *joints,
-                              struct facet_error *err);
-
 struct mould_families;
 
-/* Gives panels (classified: option_evaluate_unmoulded) their moulds from
+/* Gives panels (classified, unmoulded: evaluate.h) their moulds from
  * families, found over a list of panels in which panel k of panels is
  * number first + k (mould.h: 0 for a surface's own families, its offset
  * among a building's), and sets totals' mould counts to those of the
