@@ -155,18 +155,22 @@ void study_option_source(const struct study_option *p,
         store_run_setting_text(r, RUN_SETTING_PER_PANEL)};
 }
 
-/* The smallest radius each panel of panels is bent to on its fitted
- * cylinder or cone (sp_fit.h's bending_radius), NaN where it is not built
- * SP on one, into radius (npanels): the fits made again over surface as
- * the evaluation made them (cell sides, then built_option_fit at the
- * panels' threshold). A panel the fits build otherwise than the
- * evaluation did gets NaN: no number that belongs to another build. */
-static int bending_radii(const struct surface *surface,
-                         const struct panelization *panels, double threshold,
-                         double *radius, struct facet_error *err)
+/* Each panel's fitted cylinder or cone, the one exporters share: into
+ * fit (npanels), the fits made again over surface as the evaluation made
+ * them (cell sides, then built_option_fit at the panels' threshold), kept
+ * where the panel is built SP on it; every other panel gets fitted 0 and
+ * NaN numbers. A panel the fits build otherwise than the evaluation did
+ * gets none: no number that belongs to another build. */
+static int sp_fits(const struct surface *surface,
+                   const struct panelization *panels, double threshold,
+                   struct built_panel *fit, struct facet_error *err)
 {
+    static const struct built_panel none = {
+        TYPE_FP, 0, 0, {DEVELOPABLE_CYLINDER, {NAN, NAN, NAN},
+                        {NAN, NAN, NAN}, NAN, NAN},
+        NAN, NAN, NAN, NAN};
     for (size_t k = 0; k < panels->npanels; k++)
-        radius[k] = NAN;
+        fit[k] = none;
     size_t sp = 0;
     for (size_t k = 0; k < panels->npanels; k++)
         sp += panels->panels[k].type == TYPE_SP;
@@ -187,10 +191,48 @@ static int bending_radii(const struct surface *surface,
         const struct built_panel *b = &built.panels[k];
         if (b->fitted && b->type == TYPE_SP &&
             panels->panels[k].built == TYPE_SP)
-            radius[k] = b->bending_radius;
+            fit[k] = *b;
     }
     built_option_free(&built);
     cell_sides_free(&sides);
+    return rc;
+}
+
+/* Every surface's fits (sp_fits) of p, a single surface's or a
+ * building's: into *out (n arrays, each freed with free_fits). */
+static void free_fits(struct built_panel **fit, size_t n)
+{
+    for (size_t s = 0; fit && s < n; s++)
+        free(fit[s]);
+    free(fit);
+}
+
+static int option_fits(const struct study_option *p,
+                       struct built_panel ***out, struct facet_error *err)
+{
+    int building = p->have_building;
+    size_t n = building ? p->building.nsurfaces : 1;
+    struct built_panel **fit = calloc(n, sizeof *fit);
+    int rc = fit ? FACET_OK
+        : facet_error_set(err, FACET_EWORK, "out of memory");
+    for (size_t s = 0; rc == FACET_OK && s < n; s++) {
+        const struct panelization *panels =
+            building ? &p->building.surfaces[s].panels : &p->panels;
+        const struct surface *surface =
+            building ? &p->view.project.surfaces[s].surface : &p->surface;
+        fit[s] = malloc((panels->npanels ? panels->npanels : 1) *
+                        sizeof *fit[s]);
+        if (fit[s] == NULL)
+            rc = facet_error_set(err, FACET_EWORK, "out of memory");
+        else
+            rc = sp_fits(surface, panels, p->classify.threshold, fit[s],
+                         err);
+    }
+    if (rc != FACET_OK) {
+        free_fits(fit, n);
+        fit = NULL;
+    }
+    *out = fit;
     return rc;
 }
 
@@ -222,54 +264,37 @@ static void surface_name(const char *path, char *out, size_t size)
         out[n - 4] = '\0';
 }
 
-/* The option p as a workbook (xlsx_schedule.h) into out. */
+/* The option p as a workbook (xlsx_schedule.h) into out, its SP
+ * panels' fits fit (option_fits). */
 static int write_xlsx(FILE *out, const struct study_option *p,
+                      struct built_panel *const *fit,
                       struct facet_error *err)
 {
     int building = p->have_building;
     size_t n = building ? p->building.nsurfaces : 1;
     struct xlsx_surface *surfaces = calloc(n, sizeof *surfaces);
-    double **radius = calloc(n, sizeof *radius);
     char single[256];
-    int rc = surfaces && radius ? FACET_OK
-        : facet_error_set(err, FACET_EWORK, "out of memory");
-    for (size_t s = 0; rc == FACET_OK && s < n; s++) {
-        const struct panelization *panels =
-            building ? &p->building.surfaces[s].panels : &p->panels;
-        const struct surface *surface =
-            building ? &p->view.project.surfaces[s].surface : &p->surface;
-        radius[s] = malloc((panels->npanels ? panels->npanels : 1) *
-                           sizeof *radius[s]);
-        if (radius[s] == NULL) {
-            rc = facet_error_set(err, FACET_EWORK, "out of memory");
-            break;
-        }
-        rc = bending_radii(surface, panels, p->classify.threshold,
-                           radius[s], err);
+    if (surfaces == NULL)
+        return facet_error_set(err, FACET_EWORK, "out of memory");
+    for (size_t s = 0; s < n; s++) {
         if (building) {
             surfaces[s] = (struct xlsx_surface){
-                p->surfaces[s].name, panels, radius[s],
-                &p->building.surfaces[s].totals,
+                p->surfaces[s].name, &p->building.surfaces[s].panels,
+                fit[s], &p->building.surfaces[s].totals,
                 p->building.surfaces[s].moulds_used};
         } else {
             surface_name(p->run.surface_path, single, sizeof single);
-            surfaces[s] = (struct xlsx_surface){single, panels, radius[s],
+            surfaces[s] = (struct xlsx_surface){single, &p->panels, fit[s],
                                                 &p->totals, 0};
         }
     }
-    if (rc == FACET_OK) {
-        char title[128];
-        snprintf(title, sizeof title, "Facet panel schedule: run %lld, "
-                 "option %lld", (long long)p->run.id,
-                 (long long)p->row.number);
-        struct xlsx_schedule x = {
-            title, run_started(&p->run), building, n, surfaces,
-            building ? &p->building.totals : &p->totals, &p->classify};
-        rc = xlsx_schedule_write(out, &x, err);
-    }
-    for (size_t s = 0; radius && s < n; s++)
-        free(radius[s]);
-    free(radius);
+    char title[128];
+    snprintf(title, sizeof title, "Facet panel schedule: run %lld, "
+             "option %lld", (long long)p->run.id, (long long)p->row.number);
+    struct xlsx_schedule x = {
+        title, run_started(&p->run), building, n, surfaces,
+        building ? &p->building.totals : &p->totals, &p->classify};
+    int rc = xlsx_schedule_write(out, &x, err);
     free(surfaces);
     return rc;
 }
@@ -380,8 +405,13 @@ int study_export(struct store *store, int64_t run, int64_t number,
         svg_map_write(file[EXPORT_SVG].out, &p.geometry, &p.panels,
                       &p.totals, &map);
     }
+    /* The SP fits, made once for every format that shows them. */
+    struct built_panel **fit = NULL;
     if (rc == FACET_OK && r->xlsx)
-        rc = write_xlsx(file[EXPORT_XLSX].out, &p, err);
+        rc = option_fits(&p, &fit, err);
+    if (rc == FACET_OK && r->xlsx)
+        rc = write_xlsx(file[EXPORT_XLSX].out, &p, fit, err);
+    free_fits(fit, p.have_building ? p.building.nsurfaces : 1);
     /* The MTL before the OBJ: an OBJ never names a missing MTL. */
     static const int order[EXPORT_FILES] = {EXPORT_MTL, EXPORT_OBJ,
                                             EXPORT_CSV, EXPORT_TOTALS,
