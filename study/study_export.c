@@ -13,6 +13,8 @@
 #include <time.h>
 
 #include "core/surface/coarse_mesh.h"
+#include "core/base/units.h"
+#include "core/out/dxf_patterns.h"
 #include "core/out/export_obj.h"
 #include "core/out/outfile.h"
 #include "core/panel/panel_geometry.h"
@@ -20,6 +22,7 @@
 #include "core/out/svg_plot.h"
 #include "core/out/xlsx_schedule.h"
 #include "core/fit/sp_fit.h"
+#include "core/fit/unroll.h"
 #include "core/joint/cell_sides.h"
 #include "study.h"
 
@@ -299,6 +302,60 @@ static int write_xlsx(FILE *out, const struct study_option *p,
     return rc;
 }
 
+/* The option p's flat patterns (unroll.h) as DXF (dxf_patterns.h) into
+ * out, its SP panels developed on their fits fit (option_fits), on
+ * sheets of width x height (m). A building's surfaces each get their
+ * panels' geometry built here; a single surface's is p's. */
+static int write_dxf(FILE *out, const struct study_option *p,
+                     struct built_panel *const *fit, double width,
+                     double height, struct facet_error *err)
+{
+    int building = p->have_building;
+    assert(building || p->have_geometry);
+    size_t n = building ? p->building.nsurfaces : 1;
+    struct panel_geometry *geometry = calloc(n, sizeof *geometry);
+    struct flat_patterns *patterns = calloc(n, sizeof *patterns);
+    struct dxf_surface *surfaces = calloc(n, sizeof *surfaces);
+    char single[256];
+    int rc = geometry && patterns && surfaces ? FACET_OK
+        : facet_error_set(err, FACET_EWORK, "out of memory");
+    size_t id = 1, built = 0, laid = 0;
+    for (size_t s = 0; rc == FACET_OK && s < n; s++) {
+        const struct panelization *panels =
+            building ? &p->building.surfaces[s].panels : &p->panels;
+        const struct panel_geometry *g = &p->geometry;
+        if (building) {
+            const struct surface *surface =
+                &p->view.project.surfaces[s].surface;
+            rc = panel_geometry_build(&surface->mesh, &surface->uv, panels,
+                                      &geometry[s], err);
+            built = s + 1;
+            g = &geometry[s];
+        }
+        if (rc == FACET_OK)
+            rc = flat_patterns_build(g, panels, fit[s], &patterns[s], err);
+        laid = s + 1;
+        if (!building)
+            surface_name(p->run.surface_path, single, sizeof single);
+        surfaces[s] = (struct dxf_surface){
+            building ? p->surfaces[s].name : single, panels, g,
+            &patterns[s], id};
+        id += panels->npanels;
+    }
+    if (rc == FACET_OK) {
+        struct dxf_patterns x = {n, surfaces, width, height};
+        rc = dxf_patterns_write(out, &x, err);
+    }
+    for (size_t s = 0; s < built; s++)
+        panel_geometry_free(&geometry[s]);
+    for (size_t s = 0; s < laid; s++)
+        flat_patterns_free(&patterns[s]);
+    free(geometry);
+    free(patterns);
+    free(surfaces);
+    return rc;
+}
+
 /* A building's schedule: one header, then every surface's panels in
  * the run's order, ids running on across them; its totals the
  * building's. */
@@ -321,9 +378,21 @@ int study_export(struct store *store, int64_t run, int64_t number,
                  struct export_request *r, struct facet_error *err)
 {
     memset(r->written, 0, sizeof r->written);
-    if (!r->obj && !r->csv && !r->json && !r->svg && !r->xlsx)
+    if (!r->obj && !r->csv && !r->json && !r->svg && !r->xlsx && !r->dxf)
         return facet_error_set(err, FACET_EINPUT,
-            "export: say what to write: OBJ, CSV, XLSX, JSON and/or SVG");
+            "export: say what to write: OBJ, CSV, XLSX, JSON, SVG and/or "
+            "DXF");
+    double sheet_width = r->sheet_width ? r->sheet_width : DXF_SHEET_WIDTH;
+    double sheet_height = r->sheet_height ? r->sheet_height
+                                          : DXF_SHEET_HEIGHT;
+    if (r->dxf && !(sheet_width >= DXF_SHEET_MIN &&
+                    sheet_width <= DXF_SHEET_MAX &&
+                    sheet_height >= DXF_SHEET_MIN &&
+                    sheet_height <= DXF_SHEET_MAX))
+        return facet_error_set(err, FACET_EINPUT,
+            "export: a sheet of %g x %g mm: each side must be %g to %g mm",
+            units_mm(sheet_width), units_mm(sheet_height),
+            units_mm(DXF_SHEET_MIN), units_mm(DXF_SHEET_MAX));
     char mtl[4096] = "", totals[4096] = "";
     int rc;
     if (r->obj && outfile_is_stream(r->obj))
@@ -341,13 +410,14 @@ int study_export(struct store *store, int64_t run, int64_t number,
     int to_stdout = (r->csv && strcmp(r->csv, "-") == 0) +
                     (r->xlsx && strcmp(r->xlsx, "-") == 0) +
                     (r->json && strcmp(r->json, "-") == 0) +
-                    (r->svg && strcmp(r->svg, "-") == 0);
+                    (r->svg && strcmp(r->svg, "-") == 0) +
+                    (r->dxf && strcmp(r->dxf, "-") == 0);
     if (to_stdout > 1)
         return facet_error_set(err, FACET_EINPUT,
             "export: one file at most to standard output (-)");
     const char *target[EXPORT_FILES] = {r->obj, r->obj ? mtl : NULL, r->csv,
                                         totals_file ? totals : NULL, r->json,
-                                        r->svg, r->xlsx};
+                                        r->svg, r->xlsx, r->dxf};
     /* A building's option: its schedule, every surface's panels in one,
      * and its totals; the other formats are refused before any file is
      * made rather than written empty. */
@@ -367,7 +437,8 @@ int study_export(struct store *store, int64_t run, int64_t number,
 
     struct study_option p;
     rc = study_option_load(store, run, number,
-                           r->obj || r->svg || (r->xlsx && !building), &p,
+                           r->obj || r->svg ||
+                               ((r->xlsx || r->dxf) && !building), &p,
                            err);
     if (rc == FACET_OK && building)
         rc = study_option_building(store, &p, NULL, err);
@@ -407,16 +478,19 @@ int study_export(struct store *store, int64_t run, int64_t number,
     }
     /* The SP fits, made once for every format that shows them. */
     struct built_panel **fit = NULL;
-    if (rc == FACET_OK && r->xlsx)
+    if (rc == FACET_OK && (r->xlsx || r->dxf))
         rc = option_fits(&p, &fit, err);
     if (rc == FACET_OK && r->xlsx)
         rc = write_xlsx(file[EXPORT_XLSX].out, &p, fit, err);
+    if (rc == FACET_OK && r->dxf)
+        rc = write_dxf(file[EXPORT_DXF].out, &p, fit, sheet_width,
+                       sheet_height, err);
     free_fits(fit, p.have_building ? p.building.nsurfaces : 1);
     /* The MTL before the OBJ: an OBJ never names a missing MTL. */
     static const int order[EXPORT_FILES] = {EXPORT_MTL, EXPORT_OBJ,
                                             EXPORT_CSV, EXPORT_TOTALS,
                                             EXPORT_JSON, EXPORT_SVG,
-                                            EXPORT_XLSX};
+                                            EXPORT_XLSX, EXPORT_DXF};
     int n = 0;
     for (int k = 0; k < EXPORT_FILES; k++) {
         int f = order[k];
