@@ -10,6 +10,8 @@
 
 #include "core/base/vec3.h"
 
+#define QUARTER_TURN 1.57079632679489661923
+
 /* e1 across normal, along `along` where it has a part across normal, and
  * e2 = normal x e1: a right-handed frame of the plane seen from normal. */
 static void plane_frame(const double normal[3], const double along[3],
@@ -110,6 +112,88 @@ double unroll_polygon_area(const double *points, size_t n)
         sum += ax * by - ay * bx;
     }
     return sum / 2;
+}
+
+/* The points' order by x, then y (qsort cannot carry the points: an
+ * insertion of indices, the hull's points few hundred at most). */
+static void sort_points(const double *p, size_t n, size_t *order)
+{
+    for (size_t k = 0; k < n; k++) {
+        size_t m = k;
+        while (m > 0) {
+            const double *a = p + 2 * order[m - 1], *b = p + 2 * k;
+            if (a[0] < b[0] || (a[0] == b[0] && a[1] <= b[1]))
+                break;
+            order[m] = order[m - 1];
+            m--;
+        }
+        order[m] = k;
+    }
+}
+
+static double cross3(const double *o, const double *a, const double *b)
+{
+    return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0]);
+}
+
+double unroll_least_box_turn(const double *points, size_t n,
+                             double *hull, size_t *order)
+{
+    if (n < 3)
+        return 0;
+    /* Andrew's monotone chain: the hull counter-clockwise into hull. */
+    sort_points(points, n, order);
+    size_t h = 0;
+    for (size_t k = 0; k < n; k++) {
+        const double *p = points + 2 * order[k];
+        while (h >= 2 && cross3(hull + 2 * (h - 2), hull + 2 * (h - 1), p) <= 0)
+            h--;
+        hull[2 * h] = p[0];
+        hull[2 * h + 1] = p[1];
+        h++;
+    }
+    size_t lower = h + 1;
+    for (size_t k = n - 1; k-- > 0;) {
+        const double *p = points + 2 * order[k];
+        while (h >= lower &&
+               cross3(hull + 2 * (h - 2), hull + 2 * (h - 1), p) <= 0)
+            h--;
+        hull[2 * h] = p[0];
+        hull[2 * h + 1] = p[1];
+        h++;
+    }
+    h--;  /* the last is the first again */
+    if (h < 3)
+        return 0;
+    double best = INFINITY, turn = 0, wide = 0, tall = 0;
+    for (size_t e = 0; e < h; e++) {
+        const double *a = hull + 2 * e, *b = hull + 2 * ((e + 1) % h);
+        double dx = b[0] - a[0], dy = b[1] - a[1];
+        double length = hypot(dx, dy);
+        if (!(length > 0))
+            continue;
+        double c = dx / length, s = dy / length;
+        /* Along the edge (u) and across it (v). */
+        double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
+        for (size_t k = 0; k < h; k++) {
+            double x = hull[2 * k], y = hull[2 * k + 1];
+            double u = x * c + y * s, v = -x * s + y * c;
+            lo[0] = fmin(lo[0], u);
+            hi[0] = fmax(hi[0], u);
+            lo[1] = fmin(lo[1], v);
+            hi[1] = fmax(hi[1], v);
+        }
+        double area = (hi[0] - lo[0]) * (hi[1] - lo[1]);
+        if (area < best) {
+            best = area;
+            turn = -atan2(s, c);  /* turns the edge onto +x */
+            wide = hi[0] - lo[0];
+            tall = hi[1] - lo[1];
+        }
+    }
+    if (tall > wide)
+        turn += turn > 0 ? -QUARTER_TURN : QUARTER_TURN;
+    return isfinite(best) ? turn : 0;
 }
 
 void flat_patterns_free(struct flat_patterns *f)

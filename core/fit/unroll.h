@@ -77,6 +77,15 @@ int flat_patterns_build(const struct panel_geometry *geometry,
 
 void flat_patterns_free(struct flat_patterns *patterns);
 
+/* The turn (rad, counter-clockwise) that brings the points (n x 2)
+ * into their bounding box of least area, lying landscape (at least as
+ * wide as tall): the box of their convex hull along each hull edge, the
+ * least kept (ties: the first edge in the hull's order from its lowest,
+ * leftmost point). 0 for fewer than 3 points or no area. Scratch the
+ * caller gives: hull, 4 n + 2 doubles, and order, n. */
+double unroll_least_box_turn(const double *points, size_t n,
+                             double *scratch, size_t *order);
+
 /* The signed area (m^2) of the closed polygon points (n x 2):
  * positive counter-clockwise. */
 double unroll_polygon_area(const double *points, size_t n);

@@ -19,7 +19,10 @@ struct part {
     size_t surface, panel, id;
     double lo[2];        /* its bounding box's lower corner, as turned */
     double size[2];      /* its bounding box (m), as turned */
-    int turned;          /* 1: a quarter turn counter-clockwise */
+    double turn;         /* turned by this (rad, counter-clockwise): its
+                            least box, landscape (unroll.h), and a
+                            quarter more when only so it fits */
+    double c, s;         /* cos and sin of turn */
     size_t sheet;
     double at[2];        /* where lo goes on its sheet (m) */
 };
@@ -27,13 +30,8 @@ struct part {
 /* A pattern point of p (m), turned as p is. */
 static void turn(const struct part *p, const double in[2], double out[2])
 {
-    if (p->turned) {
-        out[0] = -in[1];
-        out[1] = in[0];
-    } else {
-        out[0] = in[0];
-        out[1] = in[1];
-    }
+    out[0] = p->c * in[0] - p->s * in[1];
+    out[1] = p->s * in[0] + p->c * in[1];
 }
 
 /* Where pattern point in (m) of p lies in the drawing (m). */
@@ -84,19 +82,29 @@ static int by_id(const void *a, const void *b)
 /* Sizes, turns and places every part; FACET_EINPUT for one that fits no
  * sheet. */
 static int layout(const struct dxf_patterns *x, struct part *parts,
-                  size_t n, size_t *nsheets, struct facet_error *err)
+                  size_t n, double *hull, size_t *order, size_t *nsheets,
+                  struct facet_error *err)
 {
     double room[2] = {x->sheet_width - 2 * DXF_MARGIN,
                       x->sheet_height - 2 * DXF_MARGIN};
     for (size_t k = 0; k < n; k++) {
         struct part *p = &parts[k];
         const struct dxf_surface *s = &x->surfaces[p->surface];
-        p->turned = 0;
+        const struct panel_geometry *g = s->geometry;
+        size_t first = g->loop_start[g->panel_loop[p->panel]];
+        size_t count = g->loop_start[g->panel_loop[p->panel + 1]] - first;
+        p->turn = unroll_least_box_turn(s->patterns->flat + 2 * first, count,
+                                        hull, order);
+        p->c = cos(p->turn);
+        p->s = sin(p->turn);
         bounding_box(p, s);
         if (p->size[0] <= room[0] && p->size[1] <= room[1])
             continue;
         double size[2] = {p->size[0], p->size[1]};
-        p->turned = 1;
+        /* A quarter turn more: exactly, (c, s) to (-s, c). */
+        double c = p->c;
+        p->c = -p->s;
+        p->s = c;
         bounding_box(p, s);
         if (p->size[0] <= room[0] && p->size[1] <= room[1])
             continue;
@@ -373,11 +381,28 @@ int dxf_patterns_write(FILE *out, const struct dxf_patterns *x,
             if (g->loop_start[l + 1] - g->loop_start[l] > most)
                 most = g->loop_start[l + 1] - g->loop_start[l];
     }
+    /* A panel's points, all its loops: the layout's hull and order. */
+    size_t most_panel = 0;
+    for (size_t s = 0; s < x->nsurfaces; s++) {
+        const struct panel_geometry *g = x->surfaces[s].geometry;
+        for (size_t k = 0; k < g->npanels; k++) {
+            size_t count = g->loop_start[g->panel_loop[k + 1]] -
+                           g->loop_start[g->panel_loop[k]];
+            if (count > most_panel)
+                most_panel = count;
+        }
+    }
+    if (most_panel > most)
+        most = most_panel;
     struct part *parts = malloc((n ? n : 1) * sizeof *parts);
     double *buffer = malloc((most ? most : 1) * 3 * sizeof *buffer);
-    if (parts == NULL || buffer == NULL) {
+    size_t *order = malloc((most ? most : 1) * sizeof *order);
+    double *hull = malloc((4 * most + 2) * sizeof *hull);
+    if (parts == NULL || buffer == NULL || order == NULL || hull == NULL) {
         free(parts);
         free(buffer);
+        free(order);
+        free(hull);
         return facet_error_set(err, FACET_EWORK, "out of memory");
     }
     size_t m = 0;
@@ -389,10 +414,11 @@ int dxf_patterns_write(FILE *out, const struct dxf_patterns *x,
         for (size_t k = 0; k < g->npanels; k++)
             if (g->panel_loop[k + 1] > g->panel_loop[k])
                 parts[m++] = (struct part){s, k, surface->first_id + k,
-                                           {0, 0}, {0, 0}, 0, 0, {0, 0}};
+                                           {0, 0}, {0, 0}, 0, 1, 0, 0,
+                                           {0, 0}};
     }
     size_t nsheets = 0;
-    int rc = layout(x, parts, m, &nsheets, err);
+    int rc = layout(x, parts, m, hull, order, &nsheets, err);
     if (rc == FACET_OK) {
         double step = x->sheet_width + SHEET_GAP;
         header(out, nsheets ? (double)nsheets * step - SHEET_GAP : 0,
@@ -438,5 +464,7 @@ int dxf_patterns_write(FILE *out, const struct dxf_patterns *x,
     }
     free(parts);
     free(buffer);
+    free(order);
+    free(hull);
     return rc;
 }

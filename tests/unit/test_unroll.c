@@ -303,6 +303,58 @@ static void test_describe_cylinder(void **state)
         assert_true(fabs(other[k] - direction[k]) < 1e-15);
 }
 
+/* A 3 x 1 rectangle turned by 0.4 rad, with points along its sides and
+ * inside: turned back into its 3 x 1 box, landscape. */
+static void test_least_box_turns_a_rectangle_back(void **state)
+{
+    (void)state;
+    double points[24 * 2], hull[4 * 24 + 2];
+    size_t order[24];
+    double a = 0.4, c = cos(a), s = sin(a);
+    static const double xy[12][2] = {{0, 0}, {1, 0}, {2, 0}, {3, 0},
+                                     {3, 0.5}, {3, 1}, {2, 1}, {1, 1},
+                                     {0, 1}, {0, 0.5}, {1.5, 0.5},
+                                     {2.5, 0.2}};
+    for (int k = 0; k < 12; k++) {
+        points[2 * k] = 7 + c * xy[k][0] - s * xy[k][1];
+        points[2 * k + 1] = -2 + s * xy[k][0] + c * xy[k][1];
+    }
+    double turn = unroll_least_box_turn(points, 12, hull, order);
+    double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
+    for (int k = 0; k < 12; k++) {
+        double x = cos(turn) * points[2 * k] - sin(turn) * points[2 * k + 1];
+        double y = sin(turn) * points[2 * k] + cos(turn) * points[2 * k + 1];
+        lo[0] = fmin(lo[0], x);
+        hi[0] = fmax(hi[0], x);
+        lo[1] = fmin(lo[1], y);
+        hi[1] = fmax(hi[1], y);
+    }
+    assert_relative(hi[0] - lo[0], 3, 1e-12);
+    assert_relative(hi[1] - lo[1], 1, 1e-12);
+    /* Tall, it is laid landscape: the same box. */
+    for (int k = 0; k < 12; k++) {
+        double x = points[2 * k], y = points[2 * k + 1];
+        points[2 * k] = -y;
+        points[2 * k + 1] = x;
+    }
+    turn = unroll_least_box_turn(points, 12, hull, order);
+    double w = 0, h = 0;
+    lo[0] = lo[1] = INFINITY;
+    hi[0] = hi[1] = -INFINITY;
+    for (int k = 0; k < 12; k++) {
+        double x = cos(turn) * points[2 * k] - sin(turn) * points[2 * k + 1];
+        double y = sin(turn) * points[2 * k] + cos(turn) * points[2 * k + 1];
+        lo[0] = fmin(lo[0], x);
+        hi[0] = fmax(hi[0], x);
+        lo[1] = fmin(lo[1], y);
+        hi[1] = fmax(hi[1], y);
+    }
+    w = hi[0] - lo[0];
+    h = hi[1] - lo[1];
+    assert_relative(w, 3, 1e-12);
+    assert_relative(h, 1, 1e-12);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -311,6 +363,7 @@ int main(void)
         cmocka_unit_test(test_cone_given_the_other_way_is_the_same),
         cmocka_unit_test(test_plane_keeps_every_distance),
         cmocka_unit_test(test_describe_cylinder),
+        cmocka_unit_test(test_least_box_turns_a_rectangle_back),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
