@@ -112,7 +112,7 @@ static int layout(const struct dxf_patterns *x, struct part *parts,
         return facet_error_set(err, FACET_EINPUT,
             "panel %zu (%s, cell %d, %d) lies flat in %.0f x %.0f mm: it "
             "does not fit a %.0f x %.0f mm sheet within its %.0f mm "
-            "margins, either way round; give a larger --sheet",
+            "margins, either way round: give a larger sheet",
             p->id, s->name, panel->i, panel->j, units_mm(size[0]),
             units_mm(size[1]), units_mm(x->sheet_width),
             units_mm(x->sheet_height), units_mm(DXF_MARGIN));

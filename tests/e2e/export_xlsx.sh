@@ -6,7 +6,8 @@
 # in one line and leaves nothing.
 # layers: cli study store core
 . "$(dirname "$0")/lib.sh"
-CHECK="/usr/bin/python3 $(cd "$(dirname "$0")" && pwd)/export_xlsx.py"
+HERE=$(cd "$(dirname "$0")" && pwd)
+CHECK="/usr/bin/python3 $HERE/export_xlsx.py"
 if ! /usr/bin/python3 -c 'import openpyxl' 2>/dev/null; then
     skip "every XLSX check" "python3-openpyxl is not installed (make deps)"
     exit 0
@@ -44,7 +45,6 @@ $CHECK cyl.db 1 1 cyl.xlsx 10 || echo "not ok - export_xlsx.py on a cylinder (st
 # A cylinder and a cone written from their formulas (developables.py),
 # on tilted axes: each SP panel's fitted surface in the schedule against
 # them (export_sp_fit.py).
-HERE=$(cd "$(dirname "$0")" && pwd)
 for kind in cylinder cone; do
     /usr/bin/python3 "$HERE/developables.py" $kind sp_$kind.obj >sp_$kind.truth ||
         exit 1
