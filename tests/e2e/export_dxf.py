@@ -296,7 +296,8 @@ def panel_of(i):
             "diameter": float(r["diameter_m"]),
             "sp_deviation": float(r["sp_deviation_m"] or "nan"),
             "k": max(abs(float(r["k1"])), abs(float(r["k2"]))),
-            "corners": [tuple(float(r["c%d_%s_m" % (c, x)]) for x in "xyz")
+            "corners": [tuple(float(r["c%d_%s_m" % (c, x)] or "nan")
+                              for x in "xyz")
                         for c in range(4)], "normal": None}
 
 
@@ -307,7 +308,8 @@ for i in range(1, n + 1):
     layer, poly, _ = pattern_of[i]
     out3 = [tuple(c / 1000 for c in p) for p in outlines[i - 1][1]]
     if not all(any(math.dist(c, p) < 1e-6 for p in out3)
-               for c in s["corners"] if not math.isnan(c[0])):
+               for c in s["corners"]
+               if c[0] is not None and not math.isnan(c[0])):
         bad_match.append(i)
         continue
     area = area2(poly) / 1e6  # mm^2 -> m^2

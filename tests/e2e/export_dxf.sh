@@ -85,6 +85,16 @@ else
     echo "not ok - a building's option twice differs"
 fi
 
+# Real surfaces (../shared/data): a barrel vault (SP), an igloo (FP, SP
+# and DP, trimmed panels at its door).
+for f in barrel igloo; do
+    if have_data $f.obj; then
+        expect "$f runs" 0 "$FACET" optimize "$FACET_DATA/$f.obj" \
+            --db real_$f.db --u 6 --v 6 --threshold 5
+        export_dxf real_$f.db 1 real_$f 20000x20000 "$FACET_DATA/$f.obj"
+    fi
+done
+
 # Bad sheets: one line, a non-zero exit, no file, no partial file.
 for sheet in 0x1500 -3000x1500 nanx1500 3000xinf axb 3000 3000x x1500 \
     3000x1500x2; do
