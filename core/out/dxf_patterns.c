@@ -176,7 +176,8 @@ static const char *const layer_of[TYPE_COUNT] = {"FP", "SP", "DP"};
 static const char *const outline_layer_of[TYPE_COUNT] = {
     "OUTLINE_3D_FP", "OUTLINE_3D_SP", "OUTLINE_3D_DP"};
 
-static void header(FILE *out, double width, double height)
+/* The header; lo and hi bound everything drawn (m). */
+static void header(FILE *out, const double lo[3], const double hi[3])
 {
     group(out, 0, "SECTION");
     group(out, 2, "HEADER");
@@ -187,9 +188,9 @@ static void header(FILE *out, double width, double height)
     group(out, 9, "$MEASUREMENT");
     integer(out, 70, 1);
     group(out, 9, "$EXTMIN");
-    point(out, 10, 0, 0, 0);
+    point(out, 10, lo[0], lo[1], lo[2]);
     group(out, 9, "$EXTMAX");
-    point(out, 10, width, height, 0);
+    point(out, 10, hi[0], hi[1], hi[2]);
     group(out, 0, "ENDSEC");
 
     group(out, 0, "SECTION");
@@ -421,8 +422,20 @@ int dxf_patterns_write(FILE *out, const struct dxf_patterns *x,
     int rc = layout(x, parts, m, hull, order, &nsheets, err);
     if (rc == FACET_OK) {
         double step = x->sheet_width + SHEET_GAP;
-        header(out, nsheets ? (double)nsheets * step - SHEET_GAP : 0,
-               x->sheet_height);
+        /* The extents: the sheets (and their labels under them) and
+         * the 3D outlines. */
+        double lo[3] = {0, -0.100, 0}, hi[3] = {0, x->sheet_height, 0};
+        hi[0] = nsheets ? (double)nsheets * step - SHEET_GAP : 0;
+        for (size_t s = 0; s < x->nsurfaces; s++) {
+            const struct panel_geometry *g = x->surfaces[s].geometry;
+            for (size_t k = 0; k < g->loop_start[g->nloops]; k++)
+                for (int c = 0; c < 3; c++) {
+                    double v = g->position[3 * g->outline[k] + c];
+                    lo[c] = fmin(lo[c], v);
+                    hi[c] = fmax(hi[c], v);
+                }
+        }
+        header(out, lo, hi);
         group(out, 0, "SECTION");
         group(out, 2, "ENTITIES");
         for (size_t k = 0; k < nsheets; k++) {
