@@ -40,8 +40,8 @@ static int refuse_building(struct store *store, const char *path,
         return rc;
     return facet_error_set(err, FACET_EINPUT,
         "export: run %ld is a building of several surfaces: --obj, --json "
-        "and --svg of its options are not written yet, only --csv and "
-        "--xlsx; its totals surface by surface: facet show %s --run %ld "
+        "and --svg of its options are not written yet, only --csv, --xlsx "
+        "and --dxf; its totals surface by surface: facet show %s --run %ld "
         "--option %ld",
         run, path, run, number);
 }

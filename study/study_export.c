@@ -429,7 +429,8 @@ int study_export(struct store *store, int64_t run, int64_t number,
         return facet_error_set(err, FACET_EINPUT,
             "run %lld is a project (a building of several surfaces): an "
             "OBJ, JSON or SVG of its option is not written yet, only its "
-            "panel schedule (CSV, XLSX)", (long long)run);
+            "panel schedule (CSV, XLSX) and flat patterns (DXF)",
+            (long long)run);
     struct outfile file[EXPORT_FILES];
     int open[EXPORT_FILES] = {0};
     if ((rc = open_all(target, r->force, file, open, err)))
