@@ -169,9 +169,11 @@ static int sp_fits(const struct surface *surface,
                    struct built_panel *fit, struct facet_error *err)
 {
     static const struct built_panel none = {
-        TYPE_FP, 0, 0, {DEVELOPABLE_CYLINDER, {NAN, NAN, NAN},
-                        {NAN, NAN, NAN}, NAN, NAN},
-        NAN, NAN, NAN, NAN};
+        .type = TYPE_FP, .fitted = 0, .misfit = 0,
+        .fit = {DEVELOPABLE_CYLINDER, {NAN, NAN, NAN}, {NAN, NAN, NAN}, NAN,
+                NAN},
+        .sp_deviation = NAN, .best_cylinder = NAN, .best_cone = NAN,
+        .bending_radius = NAN};
     for (size_t k = 0; k < panels->npanels; k++)
         fit[k] = none;
     size_t sp = 0;
@@ -201,8 +203,7 @@ static int sp_fits(const struct surface *surface,
     return rc;
 }
 
-/* Every surface's fits (sp_fits) of p, a single surface's or a
- * building's: into *out (n arrays, each freed with free_fits). */
+/* Releases what option_fits made (n: its surfaces); fit may be NULL. */
 static void free_fits(struct built_panel **fit, size_t n)
 {
     for (size_t s = 0; fit && s < n; s++)
@@ -210,6 +211,9 @@ static void free_fits(struct built_panel **fit, size_t n)
     free(fit);
 }
 
+/* Every surface's fits (sp_fits) of p, a single surface's or a
+ * building's: into *out, one array per surface (release with free_fits;
+ * NULL after a failure). */
 static int option_fits(const struct study_option *p,
                        struct built_panel ***out, struct facet_error *err)
 {
