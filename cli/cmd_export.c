@@ -1,7 +1,8 @@
 /*
  * cmd_export.c: `facet export DB --run N --option M`, a chosen option out
  * of Facet: OBJ + MTL for Rhino or Blender, a CSV panel schedule for the
- * cost plan, JSON, and an SVG panel map for the design review. Every file
+ * cost plan, JSON, an SVG panel map for the design review, and the flat
+ * patterns as DXF for the cutter. Every file
  * is checked before any work (refused when it exists, unless --force) and
  * written through FILE.partial.
  */
@@ -17,6 +18,7 @@
 #include "signals.h"
 #include "study/study.h"
 #include "study/study_export.h"
+#include "core/out/dxf_patterns.h"
 
 /* Whether path is standard output: "-", or the file stdout is open on
  * (/dev/stdout, a pipe's /proc/self/fd/1). */
@@ -40,8 +42,8 @@ static int refuse_building(struct store *store, const char *path,
         return rc;
     return facet_error_set(err, FACET_EINPUT,
         "export: run %ld is a building of several surfaces: --obj, --json "
-        "and --svg of its options are not written yet, only --csv and "
-        "--xlsx; its totals surface by surface: facet show %s --run %ld "
+        "and --svg of its options are not written yet, only --csv, --xlsx "
+        "and --dxf; its totals surface by surface: facet show %s --run %ld "
         "--option %ld",
         run, path, run, number);
 }
@@ -49,7 +51,7 @@ static int refuse_building(struct store *store, const char *path,
 /* The options as given (pointing into argv), NULL or 0 when absent; the
  * files to write go straight into the request. */
 struct export_args {
-    const char *run, *option, *view, *colour, *surface;
+    const char *run, *option, *view, *colour, *surface, *sheet;
     int triangles;
     struct export_request request;
 };
@@ -72,6 +74,13 @@ static const struct arg_option export_options[] = {
      "FILE.json", "the option as facet classify --json", NULL},
     {"svg", 0, ARG_STRING, offsetof(struct export_args, request.svg),
      "FILE.svg", "the panel map with legend and title block", NULL},
+    {"dxf", 0, ARG_STRING, offsetof(struct export_args, request.dxf),
+     "FILE.dxf", "the flat patterns to cut, in mm: FP in their plane, SP "
+     "unrolled on their fitted cylinder or cone, DP projected (not "
+     "developable), each labelled with its panel id and nested on sheets; "
+     "the 3D outlines on their own layers", NULL},
+    {"sheet", 0, ARG_STRING, offsetof(struct export_args, sheet), "WxH",
+     "the DXF's sheet in mm (default 3000x1500)", NULL},
     {"view", 0, ARG_STRING, offsetof(struct export_args, view), "V",
      "the map in uv (default), or projected: top, front, side", NULL},
     {"colour", 0, ARG_STRING, offsetof(struct export_args, colour), "C",
@@ -107,10 +116,17 @@ static int export_main(int argc, char **argv, struct facet_error *err)
     if (run == NULL || option == NULL)
         return facet_error_set(err, FACET_EINPUT, "%s", missing);
     if (!request.obj && !request.csv && !request.json && !request.svg &&
-        !request.xlsx)
+        !request.xlsx && !request.dxf)
         return facet_error_set(err, FACET_EINPUT,
-            "export: say what to write: --obj, --csv, --xlsx, --json and/or "
-            "--svg");
+            "export: say what to write: --obj, --csv, --xlsx, --json, --svg "
+            "and/or --dxf");
+    if (a.sheet && !request.dxf)
+        return facet_error_set(err, FACET_EINPUT,
+            "export: --sheet is the size of the --dxf's sheets; give --dxf");
+    if (a.sheet && (rc = dxf_sheet_parse(a.sheet, "--sheet",
+                                         &request.sheet_width,
+                                         &request.sheet_height, err)))
+        return rc;
     long run_id, number;
     if ((rc = args_int(run, 1, 1L << 62, "--run", &run_id, err)) ||
         (rc = args_int(option, 1, 1L << 62, "--option", &number, err)))
@@ -159,13 +175,13 @@ static int export_main(int argc, char **argv, struct facet_error *err)
 const struct command cmd_export = {
     .name = "export",
     .usage = "DB --run N --option M [--obj FILE.obj] [--csv FILE.csv]\n"
-             "       [--xlsx FILE.xlsx]\n"
+             "       [--xlsx FILE.xlsx] [--dxf FILE.dxf [--sheet WxH]]\n"
              "       [--json FILE.json] [--svg FILE.svg] [--view "
              "uv|top|front|side]\n"
              "       [--colour type|class] [--triangles] [--surface FILE] "
              "[--force]",
     .summary = "Export one option: OBJ + MTL, CSV or XLSX panel schedule, "
-               "JSON, SVG panel map.",
+               "JSON, SVG panel map, DXF flat patterns.",
     .before = "",
     .options = export_options,
     .after = "",

@@ -13,6 +13,8 @@
 #include <time.h>
 
 #include "core/surface/coarse_mesh.h"
+#include "core/base/units.h"
+#include "core/out/dxf_patterns.h"
 #include "core/out/export_obj.h"
 #include "core/out/outfile.h"
 #include "core/panel/panel_geometry.h"
@@ -20,6 +22,7 @@
 #include "core/out/svg_plot.h"
 #include "core/out/xlsx_schedule.h"
 #include "core/fit/sp_fit.h"
+#include "core/fit/unroll.h"
 #include "core/joint/cell_sides.h"
 #include "study.h"
 
@@ -167,18 +170,24 @@ void study_option_source(const struct study_option *p,
         store_run_setting_text(r, RUN_SETTING_PER_PANEL)};
 }
 
-/* The smallest radius each panel of panels is bent to on its fitted
- * cylinder or cone (sp_fit.h's bending_radius), NaN where it is not built
- * SP on one, into radius (npanels): the fits made again over surface as
- * the evaluation made them (cell sides, then built_option_fit at the
- * panels' threshold). A panel the fits build otherwise than the
- * evaluation did gets NaN: no number that belongs to another build. */
-static int bending_radii(const struct surface *surface,
-                         const struct panelization *panels, double threshold,
-                         double *radius, struct facet_error *err)
+/* Each panel's fitted cylinder or cone, the one exporters share: into
+ * fit (npanels), the fits made again over surface as the evaluation made
+ * them (cell sides, then built_option_fit at the panels' threshold), kept
+ * where the panel is built SP on it; every other panel gets fitted 0 and
+ * NaN numbers. A panel the fits build otherwise than the evaluation did
+ * gets none: no number that belongs to another build. */
+static int sp_fits(const struct surface *surface,
+                   const struct panelization *panels, double threshold,
+                   struct built_panel *fit, struct facet_error *err)
 {
+    static const struct built_panel none = {
+        .type = TYPE_FP, .fitted = 0, .misfit = 0,
+        .fit = {DEVELOPABLE_CYLINDER, {NAN, NAN, NAN}, {NAN, NAN, NAN}, NAN,
+                NAN},
+        .sp_deviation = NAN, .best_cylinder = NAN, .best_cone = NAN,
+        .bending_radius = NAN};
     for (size_t k = 0; k < panels->npanels; k++)
-        radius[k] = NAN;
+        fit[k] = none;
     size_t sp = 0;
     for (size_t k = 0; k < panels->npanels; k++)
         sp += panels->panels[k].type == TYPE_SP;
@@ -199,10 +208,50 @@ static int bending_radii(const struct surface *surface,
         const struct built_panel *b = &built.panels[k];
         if (b->fitted && b->type == TYPE_SP &&
             panels->panels[k].built == TYPE_SP)
-            radius[k] = b->bending_radius;
+            fit[k] = *b;
     }
     built_option_free(&built);
     cell_sides_free(&sides);
+    return rc;
+}
+
+/* Releases what option_fits made (n: its surfaces); fit may be NULL. */
+static void free_fits(struct built_panel **fit, size_t n)
+{
+    for (size_t s = 0; fit && s < n; s++)
+        free(fit[s]);
+    free(fit);
+}
+
+/* Every surface's fits (sp_fits) of p, a single surface's or a
+ * building's: into *out, one array per surface (release with free_fits;
+ * NULL after a failure). */
+static int option_fits(const struct study_option *p,
+                       struct built_panel ***out, struct facet_error *err)
+{
+    int building = p->building != NULL;
+    size_t n = building ? p->building->nsurfaces : 1;
+    struct built_panel **fit = calloc(n, sizeof *fit);
+    int rc = fit ? FACET_OK
+        : facet_error_set(err, FACET_EWORK, "out of memory");
+    for (size_t s = 0; rc == FACET_OK && s < n; s++) {
+        const struct panelization *panels =
+            building ? &p->building->surfaces[s].panels : &p->panels;
+        const struct surface *surface =
+            building ? &p->view->project.surfaces[s].surface : &p->surface;
+        fit[s] = malloc((panels->npanels ? panels->npanels : 1) *
+                        sizeof *fit[s]);
+        if (fit[s] == NULL)
+            rc = facet_error_set(err, FACET_EWORK, "out of memory");
+        else
+            rc = sp_fits(surface, panels, p->classify.threshold, fit[s],
+                         err);
+    }
+    if (rc != FACET_OK) {
+        free_fits(fit, n);
+        fit = NULL;
+    }
+    *out = fit;
     return rc;
 }
 
@@ -234,54 +283,91 @@ static void surface_name(const char *path, char *out, size_t size)
         out[n - 4] = '\0';
 }
 
-/* The option p as a workbook (xlsx_schedule.h) into out. */
+/* The option p as a workbook (xlsx_schedule.h) into out, its SP
+ * panels' fits fit (option_fits). */
 static int write_xlsx(FILE *out, const struct study_option *p,
+                      struct built_panel *const *fit,
                       struct facet_error *err)
 {
     int building = p->building != NULL;
     size_t n = building ? p->building->nsurfaces : 1;
     struct xlsx_surface *surfaces = calloc(n, sizeof *surfaces);
-    double **radius = calloc(n, sizeof *radius);
     char single[256];
-    int rc = surfaces && radius ? FACET_OK
-        : facet_error_set(err, FACET_EWORK, "out of memory");
-    for (size_t s = 0; rc == FACET_OK && s < n; s++) {
-        const struct panelization *panels =
-            building ? &p->building->surfaces[s].panels : &p->panels;
-        const struct surface *surface =
-            building ? &p->view->project.surfaces[s].surface : &p->surface;
-        radius[s] = malloc((panels->npanels ? panels->npanels : 1) *
-                           sizeof *radius[s]);
-        if (radius[s] == NULL) {
-            rc = facet_error_set(err, FACET_EWORK, "out of memory");
-            break;
-        }
-        rc = bending_radii(surface, panels, p->classify.threshold,
-                           radius[s], err);
+    if (surfaces == NULL)
+        return facet_error_set(err, FACET_EWORK, "out of memory");
+    for (size_t s = 0; s < n; s++) {
         if (building) {
             surfaces[s] = (struct xlsx_surface){
-                p->surfaces[s].name, panels, radius[s],
-                &p->building->surfaces[s].totals,
+                p->surfaces[s].name, &p->building->surfaces[s].panels,
+                fit[s], &p->building->surfaces[s].totals,
                 p->building->surfaces[s].moulds_used};
         } else {
             surface_name(p->run.surface_path, single, sizeof single);
-            surfaces[s] = (struct xlsx_surface){single, panels, radius[s],
+            surfaces[s] = (struct xlsx_surface){single, &p->panels, fit[s],
                                                 &p->totals, 0};
         }
     }
-    if (rc == FACET_OK) {
-        char title[128];
-        snprintf(title, sizeof title, "Facet panel schedule: run %lld, "
-                 "option %lld", (long long)p->run.id,
-                 (long long)p->row.number);
-        struct xlsx_schedule x = {
-            title, run_started(&p->run), building, n, surfaces,
-            building ? &p->building->totals : &p->totals, &p->classify};
-        rc = xlsx_schedule_write(out, &x, err);
+    char title[128];
+    snprintf(title, sizeof title, "Facet panel schedule: run %lld, "
+             "option %lld", (long long)p->run.id, (long long)p->row.number);
+    struct xlsx_schedule x = {
+        title, run_started(&p->run), building, n, surfaces,
+        building ? &p->building->totals : &p->totals, &p->classify};
+    int rc = xlsx_schedule_write(out, &x, err);
+    free(surfaces);
+    return rc;
+}
+
+/* The option p's flat patterns (unroll.h) as DXF (dxf_patterns.h) into
+ * out, its SP panels developed on their fits fit (option_fits), on
+ * sheets of width x height (m). A building's surfaces each get their
+ * panels' geometry built here; a single surface's is p's. */
+static int write_dxf(FILE *out, const struct study_option *p,
+                     struct built_panel *const *fit, double width,
+                     double height, struct facet_error *err)
+{
+    int building = p->building != NULL;
+    assert(building || p->have_geometry);
+    size_t n = building ? p->building->nsurfaces : 1;
+    struct panel_geometry *geometry = calloc(n, sizeof *geometry);
+    struct flat_patterns *patterns = calloc(n, sizeof *patterns);
+    struct dxf_surface *surfaces = calloc(n, sizeof *surfaces);
+    char single[256];
+    int rc = geometry && patterns && surfaces ? FACET_OK
+        : facet_error_set(err, FACET_EWORK, "out of memory");
+    size_t id = 1, built = 0, laid = 0;
+    for (size_t s = 0; rc == FACET_OK && s < n; s++) {
+        const struct panelization *panels =
+            building ? &p->building->surfaces[s].panels : &p->panels;
+        const struct panel_geometry *g = &p->geometry;
+        if (building) {
+            const struct surface *surface =
+                &p->view->project.surfaces[s].surface;
+            rc = panel_geometry_build(&surface->mesh, &surface->uv, panels,
+                                      &geometry[s], err);
+            built = s + 1;
+            g = &geometry[s];
+        }
+        if (rc == FACET_OK)
+            rc = flat_patterns_build(g, panels, fit[s], &patterns[s], err);
+        laid = s + 1;
+        if (!building)
+            surface_name(p->run.surface_path, single, sizeof single);
+        surfaces[s] = (struct dxf_surface){
+            building ? p->surfaces[s].name : single, panels, g,
+            &patterns[s], id};
+        id += panels->npanels;
     }
-    for (size_t s = 0; radius && s < n; s++)
-        free(radius[s]);
-    free(radius);
+    if (rc == FACET_OK) {
+        struct dxf_patterns x = {n, surfaces, width, height};
+        rc = dxf_patterns_write(out, &x, err);
+    }
+    for (size_t s = 0; s < built; s++)
+        panel_geometry_free(&geometry[s]);
+    for (size_t s = 0; s < laid; s++)
+        flat_patterns_free(&patterns[s]);
+    free(geometry);
+    free(patterns);
     free(surfaces);
     return rc;
 }
@@ -308,9 +394,21 @@ int study_export(struct store *store, int64_t run, int64_t number,
                  struct export_request *r, struct facet_error *err)
 {
     memset(r->written, 0, sizeof r->written);
-    if (!r->obj && !r->csv && !r->json && !r->svg && !r->xlsx)
+    if (!r->obj && !r->csv && !r->json && !r->svg && !r->xlsx && !r->dxf)
         return facet_error_set(err, FACET_EINPUT,
-            "export: say what to write: OBJ, CSV, XLSX, JSON and/or SVG");
+            "export: say what to write: OBJ, CSV, XLSX, JSON, SVG and/or "
+            "DXF");
+    double sheet_width = r->sheet_width ? r->sheet_width : DXF_SHEET_WIDTH;
+    double sheet_height = r->sheet_height ? r->sheet_height
+                                          : DXF_SHEET_HEIGHT;
+    if (r->dxf && !(sheet_width >= DXF_SHEET_MIN &&
+                    sheet_width <= DXF_SHEET_MAX &&
+                    sheet_height >= DXF_SHEET_MIN &&
+                    sheet_height <= DXF_SHEET_MAX))
+        return facet_error_set(err, FACET_EINPUT,
+            "export: a sheet of %g x %g mm: each side must be %g to %g mm",
+            units_mm(sheet_width), units_mm(sheet_height),
+            units_mm(DXF_SHEET_MIN), units_mm(DXF_SHEET_MAX));
     char mtl[4096] = "", totals[4096] = "";
     int rc;
     if (r->obj && outfile_is_stream(r->obj))
@@ -328,13 +426,14 @@ int study_export(struct store *store, int64_t run, int64_t number,
     int to_stdout = (r->csv && strcmp(r->csv, "-") == 0) +
                     (r->xlsx && strcmp(r->xlsx, "-") == 0) +
                     (r->json && strcmp(r->json, "-") == 0) +
-                    (r->svg && strcmp(r->svg, "-") == 0);
+                    (r->svg && strcmp(r->svg, "-") == 0) +
+                    (r->dxf && strcmp(r->dxf, "-") == 0);
     if (to_stdout > 1)
         return facet_error_set(err, FACET_EINPUT,
             "export: one file at most to standard output (-)");
     const char *target[EXPORT_FILES] = {r->obj, r->obj ? mtl : NULL, r->csv,
                                         totals_file ? totals : NULL, r->json,
-                                        r->svg, r->xlsx};
+                                        r->svg, r->xlsx, r->dxf};
     /* A building's option: its schedule, every surface's panels in one,
      * and its totals; the other formats are refused before any file is
      * made rather than written empty. */
@@ -346,7 +445,8 @@ int study_export(struct store *store, int64_t run, int64_t number,
         return facet_error_set(err, FACET_EINPUT,
             "run %lld is a project (a building of several surfaces): an "
             "OBJ, JSON or SVG of its option is not written yet, only its "
-            "panel schedule (CSV, XLSX)", (long long)run);
+            "panel schedule (CSV, XLSX) and flat patterns (DXF)",
+            (long long)run);
     struct outfile file[EXPORT_FILES];
     int open[EXPORT_FILES] = {0};
     if ((rc = open_all(target, r->force, file, open, err)))
@@ -354,7 +454,8 @@ int study_export(struct store *store, int64_t run, int64_t number,
 
     struct study_option p;
     rc = study_option_load(store, run, number,
-                           r->obj || r->svg || (r->xlsx && !building), &p,
+                           r->obj || r->svg ||
+                               ((r->xlsx || r->dxf) && !building), &p,
                            err);
     if (rc == FACET_OK && building)
         rc = study_option_building(store, &p, r->view, r->building,
@@ -393,13 +494,21 @@ int study_export(struct store *store, int64_t run, int64_t number,
         svg_map_write(file[EXPORT_SVG].out, &p.geometry, &p.panels,
                       &p.totals, &map);
     }
+    /* The SP fits, made once for every format that shows them. */
+    struct built_panel **fit = NULL;
+    if (rc == FACET_OK && (r->xlsx || r->dxf))
+        rc = option_fits(&p, &fit, err);
     if (rc == FACET_OK && r->xlsx)
-        rc = write_xlsx(file[EXPORT_XLSX].out, &p, err);
+        rc = write_xlsx(file[EXPORT_XLSX].out, &p, fit, err);
+    if (rc == FACET_OK && r->dxf)
+        rc = write_dxf(file[EXPORT_DXF].out, &p, fit, sheet_width,
+                       sheet_height, err);
+    free_fits(fit, p.building != NULL ? p.building->nsurfaces : 1);
     /* The MTL before the OBJ: an OBJ never names a missing MTL. */
     static const int order[EXPORT_FILES] = {EXPORT_MTL, EXPORT_OBJ,
                                             EXPORT_CSV, EXPORT_TOTALS,
                                             EXPORT_JSON, EXPORT_SVG,
-                                            EXPORT_XLSX};
+                                            EXPORT_XLSX, EXPORT_DXF};
     int n = 0;
     for (int k = 0; k < EXPORT_FILES; k++) {
         int f = order[k];

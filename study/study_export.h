@@ -6,7 +6,8 @@
  * schedule and JSON (core/out/report.h), an XLSX panel schedule
  * (core/out/xlsx_schedule.h: its workbook dated the run's start, so the
  * same option gives the same bytes) and an SVG panel map
- * (core/out/svg_map.h); a run as an SVG scatter (core/out/svg_plot.h). Every
+ * (core/out/svg_map.h), the flat patterns as DXF (core/fit/unroll.h,
+ * core/out/dxf_patterns.h); a run as an SVG scatter (core/out/svg_plot.h). Every
  * file is opened (as FILE.partial) before any work and renamed into place
  * only when all of them are written, so an export that fails leaves no file
  * behind, new or old; an existing file is refused unless force is set.
@@ -85,12 +86,18 @@ void study_option_source(const struct study_option *option,
                          struct report_source *out);
 
 enum export_file { EXPORT_OBJ, EXPORT_MTL, EXPORT_CSV, EXPORT_TOTALS,
-                   EXPORT_JSON, EXPORT_SVG, EXPORT_XLSX, EXPORT_FILES };
+                   EXPORT_JSON, EXPORT_SVG, EXPORT_XLSX, EXPORT_DXF,
+                   EXPORT_FILES };
 
 struct export_request {
     const char *obj, *csv, *json, *svg;   /* paths; NULL: not wanted */
     const char *xlsx;                     /* the schedule as a workbook
                                              (core/out/xlsx_schedule.h) */
+    const char *dxf;                      /* the flat patterns, nested on
+                                             sheets, and the 3D outlines
+                                             (core/out/dxf_patterns.h) */
+    double sheet_width, sheet_height;     /* the DXF's sheets (m); 0:
+                                             DXF_SHEET_WIDTH x _HEIGHT */
     int force;                            /* overwrite existing files */
     /* A building's option already open (the workbench's map), borrowed;
      * NULL: study_export opens the building and evaluates the option
@@ -108,12 +115,14 @@ struct export_request {
 
 /* Writes the files request asks for of option number of run. Of a
  * building's option (a project run) the CSV and XLSX schedules only,
- * every surface's panels (study_option_building); the others are refused
+ * every surface's panels (study_option_building), and the DXF of every
+ * surface's patterns, ids running on across them; the others are refused
  * (FACET_EINPUT) before any file is made. Panels not
  * stored yet are computed and stored first (study_option_panels); the OBJ
  * and the SVG need the surface file, which must be unchanged. Returns
  * FACET_OK, FACET_EINPUT (no such run or option, a file that exists, a
- * path that cannot be written, no file asked for) or FACET_EWORK. */
+ * path that cannot be written, no file asked for, a sheet size out of
+ * range, a pattern no sheet holds) or FACET_EWORK. */
 int study_export(struct store *store, int64_t run, int64_t number,
                  struct export_request *request, struct facet_error *err);
 

@@ -95,6 +95,38 @@ void developable_nearest(const struct developable *d, const double x[3],
     }
 }
 
+double developable_describe(const struct developable *d, const double x[3],
+                            double axis_point[3], double direction[3],
+                            double apex[3])
+{
+    double q[3];
+    vec3_sub(x, d->base, q);
+    double h = vec3_dot(q, d->axis);
+    for (int k = 0; k < 3; k++)
+        axis_point[k] = d->base[k] + h * d->axis[k];
+    int cone = d->shape == DEVELOPABLE_CONE && d->slope != 0;
+    double sign = 1;
+    if (cone) {
+        /* The apex is at h0 = -radius / slope; x's nappe lies where
+         * radius + slope h > 0, on the side of h0 that slope's sign
+         * gives. */
+        sign = d->slope > 0 ? 1 : -1;
+    } else {
+        int big = 0;
+        for (int k = 1; k < 3; k++)
+            if (fabs(d->axis[k]) > fabs(d->axis[big]))
+                big = k;
+        sign = d->axis[big] < 0 ? -1 : 1;
+    }
+    for (int k = 0; k < 3; k++)
+        direction[k] = sign * d->axis[k];
+    if (apex != NULL)
+        for (int k = 0; k < 3; k++)
+            apex[k] = cone ? d->base[k] - d->radius / d->slope * d->axis[k]
+                           : NAN;
+    return cone ? atan(fabs(d->slope)) : 0;
+}
+
 /* The distance from the axis of a point at q from the base, h along the
  * axis: sqrt(q.q - h^2), 0 where rounding makes that negative (or it is
  * NaN). fmax(q.q - h^2, 0) without the library call; the two differ at

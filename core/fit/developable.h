@@ -83,6 +83,17 @@ void developable_principal_axes(const double *points, size_t n,
                                 double mean[3], double value[3],
                                 double vector[3][3]);
 
+/* What a fabricator reads of d, seen from x (a point of the panel, m):
+ * the foot of x on the axis into axis_point (m) and the axis direction
+ * (unit) into direction, pointed from the apex towards x's side for a
+ * cone, with its largest component positive for a cylinder (the fit's
+ * own sign is arbitrary; this one is the same for the same surface).
+ * Of a cone also its apex (m, into apex; NaN for a cylinder) and its
+ * half-angle (rad, returned; 0 for a cylinder). apex may be NULL. */
+double developable_describe(const struct developable *d, const double x[3],
+                            double axis_point[3], double direction[3],
+                            double apex[3]);
+
 /* The largest |distance| (m) of points (n x 3) from d. */
 double developable_max_distance(const struct developable *d,
                                 const double *points, size_t n);

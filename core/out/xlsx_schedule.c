@@ -147,6 +147,35 @@ static void corner_size(const struct panel *p, double size[2])
     size[1] = hi[1] - lo[1];
 }
 
+/* The bending radius and the fitted surface of panel p (b: its fit, or
+ * NULL for none: empty cells), from column c; returns the next column. */
+static lxw_col_t write_fit(struct sheet *s, const struct formats *f,
+                           lxw_col_t c, const struct panel *p,
+                           const struct built_panel *b)
+{
+    double foot[3] = {NAN, NAN, NAN}, axis[3] = {NAN, NAN, NAN};
+    double apex[3] = {NAN, NAN, NAN}, alpha = NAN;
+    int cone = 0;
+    if (b != NULL) {
+        alpha = developable_describe(&b->fit, p->centroid, foot, axis, apex);
+        cone = isfinite(apex[0]);
+    }
+    number(s, c++, b ? b->bending_radius : NAN, f->metre);
+    if (b != NULL)
+        text(s, c, cone ? "cone" : "cylinder");
+    c++;
+    for (int d = 0; d < 3; d++)
+        number(s, c++, foot[d], f->metre);
+    for (int d = 0; d < 3; d++)
+        number(s, c++, axis[d], f->unit_vector);
+    number(s, c++, b && !cone ? b->fit.radius : NAN, f->metre);
+    for (int d = 0; d < 3; d++)
+        number(s, c++, apex[d], f->metre);
+    number(s, c++, cone ? units_deg(alpha) : NAN, f->degree);
+    number(s, c++, b ? units_mm(b->sp_deviation) : NAN, f->mm);
+    return c;
+}
+
 static const struct column panel_columns[] = {
     {"id", 7, K_COUNT},
     {"surface", 16, K_TEXT},
@@ -178,6 +207,19 @@ static const struct column panel_columns[] = {
     {"corner 3 z (m)", 11, K_METRE},
     {"deviation (mm)", 10, K_MM},
     {"SP bending radius (m)", 11, K_METRE},
+    {"SP fitted surface", 10, K_TEXT},
+    {"SP axis point x (m)", 11, K_METRE},
+    {"SP axis point y (m)", 11, K_METRE},
+    {"SP axis point z (m)", 11, K_METRE},
+    {"SP axis direction x", 10, K_UNIT},
+    {"SP axis direction y", 10, K_UNIT},
+    {"SP axis direction z", 10, K_UNIT},
+    {"SP cylinder radius (m)", 11, K_METRE},
+    {"SP cone apex x (m)", 11, K_METRE},
+    {"SP cone apex y (m)", 11, K_METRE},
+    {"SP cone apex z (m)", 11, K_METRE},
+    {"SP cone half-angle (deg)", 11, K_DEGREE},
+    {"SP deviation (mm)", 10, K_MM},
     {"worst gap (mm)", 10, K_MM},
     {"worst kink (deg)", 10, K_DEGREE},
     {"mould family", 9, K_COUNT},
@@ -216,9 +258,9 @@ static void write_panels(struct sheet *s, const struct formats *f,
                 for (int d = 0; d < 3; d++)
                     number(s, c++, p->corner[q][d], f->metre);
             number(s, c++, units_mm(p->deviation), f->mm);
-            number(s, c++, surface->bending_radius
-                               ? surface->bending_radius[n] : NAN,
-                   f->metre);
+            c = write_fit(s, f, c, p,
+                          surface->sp_fit && surface->sp_fit[n].fitted
+                              ? &surface->sp_fit[n] : NULL);
             number(s, c++, p->worst_gap_mm, f->mm);
             number(s, c++, p->worst_kink_deg, f->degree);
             number(s, c++, p->mould >= 0 ? p->mould : NAN, f->count);

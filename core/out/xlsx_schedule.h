@@ -12,7 +12,13 @@
  *     in-plane bounding size of its corners (m; empty for a trimmed
  *     panel, whose outline is not its corners), centroid (m), unit normal,
  *     the four cell corners (m), deviation (mm), SP bending radius (m,
- *     where fitted), worst gap (mm) and kink (deg), mould family (as the
+ *     where fitted), the fitted surface of a panel built SP (cylinder or
+ *     cone; its axis point, the foot of the panel's centroid on the axis,
+ *     m; its axis direction, unit, from the apex towards the panel for a
+ *     cone, largest component positive for a cylinder; a cylinder's
+ *     radius, m; a cone's apex, m, and half-angle, deg; the largest
+ *     distance of the panel's samples from it, mm: sp_fit.h), empty for
+ *     any other panel, worst gap (mm) and kink (deg), mould family (as the
  *     CSV's mould_family, 0-based; empty for none), price (USD/m^2), cost
  *     (USD);
  *   - moulds: one row per mould family, in family order: family, type
@@ -41,14 +47,17 @@
 
 #include "core/base/error.h"
 #include "core/classify/classify.h"
+#include "core/fit/sp_fit.h"
 #include "core/panel/panel.h"
 
 /* One surface of the option: a single surface's option has one. */
 struct xlsx_surface {
     const char *name;                    /* the surface's name */
     const struct panelization *panels;   /* classified, evaluated */
-    const double *bending_radius;        /* npanels (m), NaN where not
-                                            fitted; NULL: none known */
+    const struct built_panel *sp_fit;    /* npanels: each panel's fitted
+                                            cylinder or cone where
+                                            fitted, else fitted 0 (empty
+                                            cells); NULL: none known */
     /* A building's surface (xlsx_schedule.building): */
     const struct option_totals *totals;  /* its totals (project_option.h) */
     size_t moulds_used;                  /* families its panels use */

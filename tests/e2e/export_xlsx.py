@@ -45,6 +45,7 @@ check("sheets %s" % want, wb.sheetnames == want, wb.sheetnames)
 
 # Every sheet: its header frozen, its numbers numbers.
 TEXT = {"surface", "type as classed", "type as built", "class", "type",
+        "SP fitted surface",
         "quantity", "label", "unit"}
 for ws in wb:
     check("%s: the header row is frozen" % ws.title, ws.freeze_panes == "A2",

@@ -6,7 +6,8 @@
 # in one line and leaves nothing.
 # layers: cli study store core
 . "$(dirname "$0")/lib.sh"
-CHECK="/usr/bin/python3 $(cd "$(dirname "$0")" && pwd)/export_xlsx.py"
+HERE=$(cd "$(dirname "$0")" && pwd)
+CHECK="/usr/bin/python3 $HERE/export_xlsx.py"
 if ! /usr/bin/python3 -c 'import openpyxl' 2>/dev/null; then
     skip "every XLSX check" "python3-openpyxl is not installed (make deps)"
     exit 0
@@ -40,6 +41,20 @@ expect "its schedule is written" 0 "$FACET" export cyl.db --run 1 \
 same "its panels are all SP, fitted" \
     "$(sqlite3 cyl.db 'SELECT sp_count, sp_fitted FROM options')" "64|64"
 $CHECK cyl.db 1 1 cyl.xlsx 10 || echo "not ok - export_xlsx.py on a cylinder (status $?)"
+
+# A cylinder and a cone written from their formulas (developables.py),
+# on tilted axes: each SP panel's fitted surface in the schedule against
+# them (export_sp_fit.py).
+for kind in cylinder cone; do
+    /usr/bin/python3 "$HERE/developables.py" $kind sp_$kind.obj >sp_$kind.truth ||
+        exit 1
+    expect "a $kind runs" 0 "$FACET" optimize sp_$kind.obj --db sp_$kind.db \
+        --u 4 --v 3 --threshold 3
+    expect "its schedule is written" 0 "$FACET" export sp_$kind.db --run 1 \
+        --option 1 --xlsx sp_$kind.xlsx
+    /usr/bin/python3 "$HERE/export_sp_fit.py" sp_$kind.db sp_$kind.xlsx $kind \
+        sp_$kind.truth || echo "not ok - export_sp_fit.py on the $kind (status $?)"
+done
 
 # A building of four files: its panels evaluated again, against
 # option_surfaces.
