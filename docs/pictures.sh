@@ -8,7 +8,8 @@
 # The roof, the paper's space as the README's walk-through runs it, and
 # its knee exported as a schedule (XLSX) and flat patterns (DXF), then:
 #   OUT_DIR/schedule.png        rows of the panels sheet;
-#   OUT_DIR/flat-patterns.png   the DXF's first sheet of patterns.
+#   OUT_DIR/flat-patterns.png   the DXF's first sheet of patterns (4 m x
+#                               2 m sheets, so that a few panels share one).
 set -euo pipefail
 facet=$(realpath "${1:?usage: docs/pictures.sh FACET [OUT_DIR]}")
 here=$(cd "$(dirname "$0")" && pwd)
@@ -22,14 +23,8 @@ cd "$work"
     --sp-as-fp --max-panel-area 1.92 --sp-fit no --name "paper space" \
     --table 0 >/dev/null 2>&1
 knee=$(sqlite3 demo.db 'SELECT number FROM options WHERE run = 1 AND knee')
-formats=(--xlsx knee.xlsx)
-if "$facet" export --help 2>&1 | grep -q -- '--dxf'; then
-    formats+=(--dxf knee.dxf)
-fi
-"$facet" export demo.db --run 1 --option "$knee" "${formats[@]}" >/dev/null
+"$facet" export demo.db --run 1 --option "$knee" --xlsx knee.xlsx \
+    --dxf knee.dxf --sheet 4000x2000 >/dev/null
 /usr/bin/python3 "$here/render.py" xlsx knee.xlsx "$out/schedule.png"
-echo "wrote $out/schedule.png (run 1, option $knee)"
-if [ -f knee.dxf ]; then
-    /usr/bin/python3 "$here/render.py" dxf knee.dxf "$out/flat-patterns.png"
-    echo "wrote $out/flat-patterns.png"
-fi
+/usr/bin/python3 "$here/render.py" dxf knee.dxf "$out/flat-patterns.png"
+echo "wrote $out/schedule.png and $out/flat-patterns.png (run 1, option $knee)"

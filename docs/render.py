@@ -3,8 +3,9 @@ Facet's own files by readers that are not Facet's.
 
     render.py xlsx SCHEDULE.xlsx OUT.png   the panels sheet's first rows, as
                                            openpyxl reads them
-    render.py dxf  PATTERNS.dxf  OUT.png   the first sheet of flat patterns,
-                                           drawn by ezdxf's renderer
+    render.py dxf  PATTERNS.dxf  OUT.png   the first sheet of flat patterns
+                                           (its frame the first on layer
+                                           SHEETS), drawn by ezdxf's renderer
 
 Both draw with matplotlib (Debian: python3-openpyxl, python3-ezdxf,
 python3-matplotlib); the output is a PNG, its metadata stripped so that
@@ -63,17 +64,48 @@ def render_xlsx(path, out):
                 metadata={"Software": None})
 
 
+def first_point(entity):
+    if entity.dxftype() == "POLYLINE":
+        for vertex in entity.vertices:
+            return vertex.dxf.location
+        return None
+    return entity.dxf.insert
+
+
 def render_dxf(path, out):
+    import logging
+
     import ezdxf
     from ezdxf.addons.drawing import Frontend, RenderContext
     from ezdxf.addons.drawing.matplotlib import MatplotlibBackend
+    # The DXF names no font file; matplotlib's default stands in, and
+    # says so once per text.
+    logging.getLogger("matplotlib.font_manager").setLevel(logging.ERROR)
     doc = ezdxf.readfile(path)
-    fig = plt.figure(figsize=(12, 6.5))
+    msp = doc.modelspace()
+    frame = next(e for e in msp
+                 if e.dxftype() == "POLYLINE" and e.dxf.layer == "SHEETS")
+    xs = [v.dxf.location[0] for v in frame.vertices]
+    ys = [v.dxf.location[1] for v in frame.vertices]
+    x0, x1, y0, y1 = min(xs), max(xs), min(ys), max(ys)
+    # The labels of a sheet sit just outside its frame.
+    pad = 0.08 * (y1 - y0)
+
+    def on_first_sheet(entity):
+        if entity.dxf.layer.startswith("OUTLINE_3D"):
+            return False
+        p = first_point(entity)
+        return (p is not None and x0 <= p[0] <= x1 and
+                y0 - pad <= p[1] <= y1 + pad)
+
+    fig = plt.figure(figsize=(12, 12 * (y1 - y0 + 2 * pad) / (x1 - x0)))
     ax = fig.add_axes([0, 0, 1, 1])
     ctx = RenderContext(doc)
-    ctx.set_current_layout(doc.modelspace())
-    Frontend(ctx, MatplotlibBackend(ax)).draw_layout(doc.modelspace(),
-                                                    finalize=True)
+    ctx.set_current_layout(msp)
+    Frontend(ctx, MatplotlibBackend(ax)).draw_layout(
+        msp, finalize=True, filter_func=on_first_sheet)
+    ax.set_xlim(x0 - pad, x1 + pad)
+    ax.set_ylim(y0 - pad, y1 + pad)
     fig.savefig(out, dpi=110, facecolor="white", bbox_inches="tight",
                 pad_inches=0.05, metadata={"Software": None})
 

@@ -6,7 +6,7 @@
 # a PNG that Pillow opens, of a readable size, and not blank.
 # layers: cli study store core
 . "$(dirname "$0")/lib.sh"
-for m in openpyxl matplotlib PIL; do
+for m in openpyxl ezdxf matplotlib PIL; do
     if ! /usr/bin/python3 -c "import $m" 2>/dev/null; then
         skip "the README's pictures" "python3 module $m is not installed (make deps)"
         exit 0
@@ -15,11 +15,7 @@ done
 ROOT=$(cd "$(dirname "$0")/../.." && pwd)
 expect "docs/pictures.sh draws the pictures" 0 \
     "$ROOT/docs/pictures.sh" "$FACET" "$WORK/img"
-pictures=(schedule.png)
-if "$FACET" export --help 2>&1 | grep -q -- '--dxf'; then
-    pictures+=(flat-patterns.png)
-fi
-for p in "${pictures[@]}"; do
+for p in schedule.png flat-patterns.png; do
     if out=$(/usr/bin/python3 - "$WORK/img/$p" <<'PY' 2>&1
 import sys
 from PIL import Image
