@@ -1,7 +1,8 @@
 /*
  * cmd_export.c: `facet export DB --run N --option M`, a chosen option out
  * of Facet: OBJ + MTL for Rhino or Blender, a CSV panel schedule for the
- * cost plan, JSON, and an SVG panel map for the design review. Every file
+ * cost plan, an IFC4 model for BIM, JSON, and an SVG panel map for the
+ * design review. Every file
  * is checked before any work (refused when it exists, unless --force) and
  * written through FILE.partial.
  */
@@ -38,8 +39,8 @@ static int refuse_building(struct store *store, const char *path,
         return rc;
     return facet_error_set(err, FACET_EINPUT,
         "export: run %ld is a building of several surfaces: --obj, --json "
-        "and --svg of its options are not written yet, only --csv and "
-        "--xlsx; its totals surface by surface: facet show %s --run %ld "
+        "and --svg of its options are not written yet, only --csv, "
+        "--xlsx and --ifc; its totals surface by surface: facet show %s --run %ld "
         "--option %ld",
         run, path, run, number);
 }
@@ -66,6 +67,9 @@ static const struct arg_option export_options[] = {
     {"xlsx", 0, ARG_STRING, offsetof(struct export_args, request.xlsx),
      "FILE.xlsx", "the panel schedule as a workbook: sheets of panels, "
      "moulds, surfaces (a building) and totals", NULL},
+    {"ifc", 0, ARG_STRING, offsetof(struct export_args, request.ifc),
+     "FILE.ifc", "an IFC4 model: a curtain wall per surface, a plate per "
+     "panel with its body and its schedule's values", NULL},
     {"json", 0, ARG_STRING, offsetof(struct export_args, request.json),
      "FILE.json", "the option as facet classify --json", NULL},
     {"svg", 0, ARG_STRING, offsetof(struct export_args, request.svg),
@@ -105,10 +109,10 @@ static int export_main(int argc, char **argv, struct facet_error *err)
     if (run == NULL || option == NULL)
         return facet_error_set(err, FACET_EINPUT, "%s", missing);
     if (!request.obj && !request.csv && !request.json && !request.svg &&
-        !request.xlsx)
+        !request.xlsx && !request.ifc)
         return facet_error_set(err, FACET_EINPUT,
-            "export: say what to write: --obj, --csv, --xlsx, --json and/or "
-            "--svg");
+            "export: say what to write: --obj, --csv, --xlsx, --ifc, --json "
+            "and/or --svg");
     long run_id, number;
     if ((rc = args_int(run, 1, 1L << 62, "--run", &run_id, err)) ||
         (rc = args_int(option, 1, 1L << 62, "--option", &number, err)))
@@ -145,13 +149,13 @@ static int export_main(int argc, char **argv, struct facet_error *err)
 const struct command cmd_export = {
     .name = "export",
     .usage = "DB --run N --option M [--obj FILE.obj] [--csv FILE.csv]\n"
-             "       [--xlsx FILE.xlsx]\n"
+             "       [--xlsx FILE.xlsx] [--ifc FILE.ifc]\n"
              "       [--json FILE.json] [--svg FILE.svg] [--view "
              "uv|top|front|side]\n"
              "       [--colour type|class] [--triangles] [--surface FILE] "
              "[--force]",
     .summary = "Export one option: OBJ + MTL, CSV or XLSX panel schedule, "
-               "JSON, SVG panel map.",
+               "IFC4 model, JSON, SVG panel map.",
     .before = "",
     .options = export_options,
     .after = "",

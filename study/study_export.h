@@ -6,7 +6,9 @@
  * schedule and JSON (core/out/report.h), an XLSX panel schedule
  * (core/out/xlsx_schedule.h: its workbook dated the run's start, so the
  * same option gives the same bytes) and an SVG panel map
- * (core/out/svg_map.h); a run as an SVG scatter (core/out/svg_plot.h). Every
+ * (core/out/svg_map.h), an IFC4 model (core/out/ifc_model.h: dated the
+ * run's start, its GlobalIds derived from the option, so the same option
+ * gives the same bytes too); a run as an SVG scatter (core/out/svg_plot.h). Every
  * file is opened (as FILE.partial) before any work and renamed into place
  * only when all of them are written, so an export that fails leaves no file
  * behind, new or old; an existing file is refused unless force is set.
@@ -74,12 +76,15 @@ void study_option_source(const struct study_option *option,
                          struct report_source *out);
 
 enum export_file { EXPORT_OBJ, EXPORT_MTL, EXPORT_CSV, EXPORT_TOTALS,
-                   EXPORT_JSON, EXPORT_SVG, EXPORT_XLSX, EXPORT_FILES };
+                   EXPORT_JSON, EXPORT_SVG, EXPORT_XLSX, EXPORT_IFC,
+                   EXPORT_FILES };
 
 struct export_request {
     const char *obj, *csv, *json, *svg;   /* paths; NULL: not wanted */
     const char *xlsx;                     /* the schedule as a workbook
                                              (core/out/xlsx_schedule.h) */
+    const char *ifc;                      /* the IFC4 model
+                                             (core/out/ifc_model.h) */
     int force;                            /* overwrite existing files */
     struct svg_map_options map;           /* view and colouring of the SVG */
     /* Set by study_export: the paths written, in the order written (the
@@ -89,8 +94,9 @@ struct export_request {
 };
 
 /* Writes the files request asks for of option number of run. Of a
- * building's option (a project run) the CSV and XLSX schedules only,
- * every surface's panels (study_option_building); the others are refused
+ * building's option (a project run) the CSV and XLSX schedules and the
+ * IFC model only, every surface's panels (study_option_building; the
+ * model's geometry built surface by surface); the others are refused
  * (FACET_EINPUT) before any file is made. Panels not
  * stored yet are computed and stored first (study_option_panels); the OBJ
  * and the SVG need the surface file, which must be unchanged. Returns
