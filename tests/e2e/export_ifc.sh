@@ -37,6 +37,27 @@ else
     echo "not ok - the surface's name escaped as ISO 10303-21 says"
     grep -m1 IFCCURTAINWALL one.ifc | sed 's/^/  /'
 fi
+# SP by class alone (--sp-fit no): the panels no cylinder or cone fits stay
+# SP as classed and are built DP, so type as built is not type as classed.
+expect "the roof runs SP by class" 0 "$FACET" optimize "façade d'été.obj" \
+    --db class.db --u 8:10 --v 8:9 --threshold 3 --sp-fit no
+MISFIT=$(sqlite3 class.db 'SELECT number FROM options WHERE run=1 ORDER BY sp_count DESC, number LIMIT 1')
+expect "an option with SP panels as IFC" 0 "$FACET" export class.db --run 1 \
+    --option "$MISFIT" --ifc misfit.ifc
+same "its store has panels classed SP, built DP" \
+    "$(sqlite3 class.db "SELECT count(*) > 0 FROM panels WHERE run=1 AND option=$MISFIT AND type='SP' AND built_type='DP'")" 1
+$CHECK class.db 1 "$MISFIT" misfit.ifc "façade d'été" ||
+    echo "not ok - export_ifc.mjs on panels classed SP, built DP (status $?)"
+# Two options of one run: no object of one has the other's GlobalId.
+OTHER=$(sqlite3 one.db "SELECT number FROM options WHERE run=1 AND number != $KNEE LIMIT 1")
+expect "another option of the run as IFC" 0 "$FACET" export one.db --run 1 \
+    --option "$OTHER" --ifc other.ifc
+if [ -z "$(comm -12 <(grep -o "^#[0-9]*=IFCPLATE('[^']*'" one.ifc | cut -d"'" -f2 | sort) \
+                  <(grep -o "^#[0-9]*=IFCPLATE('[^']*'" other.ifc | cut -d"'" -f2 | sort))" ]; then
+    pass "two options of a run share no plate's GlobalId"
+else
+    echo "not ok - two options of a run share plates' GlobalIds"
+fi
 sleep 1  # a clock that shows would show now
 expect "exported again" 0 "$FACET" export one.db --run 1 --option "$KNEE" \
     --ifc again.ifc
@@ -76,6 +97,17 @@ if cmp -s b.ifc b2.ifc; then
 else
     echo "not ok - a building's option twice differs"
 fi
+
+# A building of the roof (its name escaped) and a plane.
+"$FACET" example plane --res 16 -o plane.obj --force || exit 1
+expect "a building with the roof runs" 0 "$FACET" optimize \
+    "façade d'été.obj" plane.obj --db rb.db --module 3:5x3:5 --threshold 3 \
+    --mould-cost 900,4000
+OPTION=$(sqlite3 rb.db 'SELECT number FROM options WHERE run=1 ORDER BY sp_misfits DESC, number LIMIT 1')
+expect "its option as IFC" 0 "$FACET" export rb.db --run 1 \
+    --option "$OPTION" --ifc rb.ifc
+$CHECK rb.db 1 "$OPTION" rb.ifc ||
+    echo "not ok - export_ifc.mjs on the roof's building (status $?)"
 
 # The 180-face skin (coarse): many surfaces, moulds shared across them.
 "$FACET" example skin --res 8 -o skin.obj || exit 1
