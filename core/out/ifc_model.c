@@ -297,8 +297,13 @@ static size_t write_panel(struct step *s, const struct frame *f,
                                 p->i, p->j, surface->name);
                 return 0;
             }
+    /* A body needs a triangle: a panel without one (no pieces) has none. */
+    size_t triangles = 0;
+    for (size_t q = q0; q < q1; q++)
+        if (g->piece_start[q + 1] - g->piece_start[q] >= 3)
+            triangles += g->piece_start[q + 1] - g->piece_start[q] - 2;
     size_t shape = 0;
-    if (q1 > q0 && v1 > v0) {
+    if (triangles > 0) {
         size_t points = begin(s);
         fputs("IFCCARTESIANPOINTLIST3D((", o);
         for (size_t v = v0; v < v1; v++) {

@@ -15,8 +15,8 @@
  *     schedules number them); its body an IfcTriangulatedFaceSet
  *     ('Body', 'Tessellation') of the panel's pieces (panel_geometry.h),
  *     each convex piece a fan of triangles from its first corner, in the
- *     mesh's winding, positions in metres; a panel without pieces has no
- *     body;
+ *     mesh's winding, positions in metres; a panel without a triangle
+ *     (no piece of three corners) has no body, not an empty face set;
  *   - per panel an IfcPropertySet 'Facet_Panel' (IfcRelDefinesByProperties)
  *     of single values: PanelId (IfcIdentifier), Surface (IfcLabel),
  *     ColumnI, RowJ (IfcInteger), TypeAsClassed, TypeAsBuilt, Class

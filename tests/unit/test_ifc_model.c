@@ -210,6 +210,31 @@ static void test_one_panel_model(void **state)
     free(other);
 }
 
+/* A panel without a triangle: a plate with no body, never an empty face
+ * set (IFC's CoordIndex holds one triangle at least). */
+static void test_panel_without_pieces(void **state)
+{
+    (void)state;
+    struct one_panel o;
+    one_panel(&o);
+    o.panel_piece[1] = 0;
+    o.geometry.npieces = 0;
+    char *text = model_of(&o.surface, "key");
+    assert_null(strstr(text, "IFCTRIANGULATEDFACESET"));
+    assert_null(strstr(text, "IFCSHAPEREPRESENTATION"));
+    assert_non_null(strstr(text, ",$,'1',.CURTAIN_PANEL.);"));
+    free(text);
+    /* Nor one whose only piece is a segment (two corners): no triangle. */
+    one_panel(&o);
+    o.panel_piece[1] = 1;
+    o.piece_start[1] = 2;
+    o.geometry.npieces = 1;
+    text = model_of(&o.surface, "key");
+    assert_null(strstr(text, "IFCTRIANGULATEDFACESET"));
+    assert_non_null(strstr(text, ",$,'1',.CURTAIN_PANEL.);"));
+    free(text);
+}
+
 /* A panel whose point is not finite is refused, not written as "nan". */
 static void test_not_finite_refused(void **state)
 {
@@ -234,6 +259,7 @@ int main(void)
         cmocka_unit_test(test_global_id_reads_back),
         cmocka_unit_test(test_string_escapes),
         cmocka_unit_test(test_one_panel_model),
+        cmocka_unit_test(test_panel_without_pieces),
         cmocka_unit_test(test_not_finite_refused),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
