@@ -163,6 +163,26 @@ check('one Facet_Panel property set per plate',
       plates.filter(p => (setOf.get(p) ?? []).length !== 1).slice(0, 3));
 const props = p => (setOf.get(p) ?? [{}])[0];
 
+// The units the values are in: Deviation in mm, Cost in USD, Area in the
+// project's (m^2).
+const unitOf = { Deviation: new Set(), Cost: new Set(), Area: new Set() };
+for (const n of ids(W.IFCPROPERTYSINGLEVALUE)) {
+    const p = line(n), name = text(p.Name);
+    if (!(name in unitOf))
+        continue;
+    const u = ref(p.Unit) === null ? null : line(ref(p.Unit));
+    unitOf[name].add(u === null ? 'project'
+        : u.Currency ? 'currency ' + text(u.Currency)
+        : (u.Prefix?.value ?? '') + ' ' + u.Name?.value);
+}
+check('Deviation in mm, Cost in USD, Area in the project\'s unit',
+      [...unitOf.Deviation].join() === 'MILLI METRE' &&
+      [...unitOf.Cost].join() === 'currency USD' &&
+      [...unitOf.Area].join() === 'project' &&
+      units.some(u => u.UnitType?.value === 'AREAUNIT' &&
+                 u.Name?.value === 'SQUARE_METRE' && u.Prefix === null),
+      Object.fromEntries(Object.entries(unitOf).map(([k, v]) => [k, [...v]])));
+
 // Panel ids 1..N in the order of the walls, each the plate's Name and Tag.
 const numbers = aggregated.map(p => text(props(p).PanelId));
 check('panel ids 1..N across the building, each the plate\'s Name and Tag',
