@@ -8,7 +8,8 @@
 #   make check-mutants  a defect in each layer is caught (CI runs it)
 #   make demo     run the main job on a bundled example (no TTY needed)
 #   make bench    benchmarks, reported as ratios against a baseline
-#   make deps     install the Debian packages Facet needs (as root)
+#   make deps     install the Debian packages Facet needs (as root) and
+#                 web-ifc (npm ci in tests/ifc), the IFC test's reader
 #
 # Objects go to build/$(VARIANT)/; VARIANT=release (default) or san.
 
@@ -24,7 +25,7 @@ DEBIAN_PACKAGES := gcc g++ make pkg-config libncurses-dev libsqlite3-dev librsvg
 	libcmocka-dev sqlite3 tmux python3 python3-tinyobjloader \
 	libtinyobjloader-dev libxml2-utils python3-deap clang libclang-rt-14-dev \
 	slurm-wlm munge libxlsxwriter-dev python3-openpyxl python3-ezdxf \
-	python3-matplotlib
+	python3-matplotlib nodejs npm
 
 WARN    := -Wall -Wextra -Werror -Wshadow -Wstrict-prototypes -Wvla
 DEFS    := -D_POSIX_C_SOURCE=200809L -D_DEFAULT_SOURCE -DFACET_VERSION=\"$(VERSION)\"
@@ -192,15 +193,25 @@ bench: deps facet
 
 deps:
 	@missing=$$(for p in $(DEBIAN_PACKAGES); do \
-		dpkg-query -W -f='$${Status}\n' $$p 2>/dev/null | grep -q 'ok installed' || echo $$p; done); \
-	if [ -z "$$missing" ]; then exit 0; fi; \
-	if [ "$$(id -u)" = 0 ]; then \
+		dpkg-query -W -f='$${Status}\n' $$p 2>/dev/null | grep -q 'ok installed' || \
+		{ [ $$p = npm ] && command -v npm >/dev/null; } || echo $$p; done); \
+	if [ -z "$$missing" ]; then :; \
+	elif [ "$$(id -u)" = 0 ]; then \
 		echo "installing:" $$missing; \
 		DEBIAN_FRONTEND=noninteractive apt-get install -y -q $$missing >/dev/null || \
 		{ apt-get update -q >/dev/null && DEBIAN_FRONTEND=noninteractive apt-get install -y -q $$missing >/dev/null; }; \
 	else \
 		echo "Facet needs Debian packages; run as root:"; \
 		echo "  apt-get install -y" $$missing; exit 1; \
+	fi
+	@# web-ifc, the IFC test's reader, as tests/ifc/package-lock.json pins it
+	@# (npm's own node_modules). Without it Facet still builds and tests; the
+	@# IFC test then says its checks were skipped.
+	@if [ ! -r tests/ifc/node_modules/web-ifc/package.json ] || \
+		[ tests/ifc/package-lock.json -nt tests/ifc/node_modules/.package-lock.json ]; then \
+		echo "installing web-ifc into tests/ifc/node_modules (npm ci)"; \
+		(cd tests/ifc && npm ci --no-audit --no-fund --loglevel=error >/dev/null) || \
+		echo "make deps: npm ci in tests/ifc failed: export_ifc.sh will say its checks were skipped"; \
 	fi
 
 clean:

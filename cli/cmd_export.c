@@ -1,8 +1,8 @@
 /*
  * cmd_export.c: `facet export DB --run N --option M`, a chosen option out
  * of Facet: OBJ + MTL for Rhino or Blender, a CSV panel schedule for the
- * cost plan, JSON, an SVG panel map for the design review, and the flat
- * patterns as DXF for the cutter. Every file
+ * cost plan, an IFC4 model for BIM, JSON, an SVG panel map for the
+ * design review, and the flat patterns as DXF for the cutter. Every file
  * is checked before any work (refused when it exists, unless --force) and
  * written through FILE.partial.
  */
@@ -42,8 +42,9 @@ static int refuse_building(struct store *store, const char *path,
         return rc;
     return facet_error_set(err, FACET_EINPUT,
         "export: run %ld is a building of several surfaces: --obj, --json "
-        "and --svg of its options are not written yet, only --csv, --xlsx "
-        "and --dxf; its totals surface by surface: facet show %s --run %ld "
+        "and --svg of its options are not written yet, only --csv, "
+        "--xlsx, --dxf and --ifc; its totals surface by surface: facet show "
+        "%s --run %ld "
         "--option %ld",
         run, path, run, number);
 }
@@ -70,6 +71,9 @@ static const struct arg_option export_options[] = {
     {"xlsx", 0, ARG_STRING, offsetof(struct export_args, request.xlsx),
      "FILE.xlsx", "the panel schedule as a workbook: sheets of panels, "
      "moulds, surfaces (a building) and totals", NULL},
+    {"ifc", 0, ARG_STRING, offsetof(struct export_args, request.ifc),
+     "FILE.ifc", "an IFC4 model: a curtain wall per surface, a plate per "
+     "panel with its body and its schedule's values", NULL},
     {"json", 0, ARG_STRING, offsetof(struct export_args, request.json),
      "FILE.json", "the option as facet classify --json", NULL},
     {"svg", 0, ARG_STRING, offsetof(struct export_args, request.svg),
@@ -116,10 +120,10 @@ static int export_main(int argc, char **argv, struct facet_error *err)
     if (run == NULL || option == NULL)
         return facet_error_set(err, FACET_EINPUT, "%s", missing);
     if (!request.obj && !request.csv && !request.json && !request.svg &&
-        !request.xlsx && !request.dxf)
+        !request.xlsx && !request.dxf && !request.ifc)
         return facet_error_set(err, FACET_EINPUT,
-            "export: say what to write: --obj, --csv, --xlsx, --json, --svg "
-            "and/or --dxf");
+            "export: say what to write: --obj, --csv, --xlsx, --dxf, --ifc, "
+            "--json and/or --svg");
     if (a.sheet && !request.dxf)
         return facet_error_set(err, FACET_EINPUT,
             "export: --sheet is the size of the --dxf's sheets; give --dxf");
@@ -176,12 +180,13 @@ const struct command cmd_export = {
     .name = "export",
     .usage = "DB --run N --option M [--obj FILE.obj] [--csv FILE.csv]\n"
              "       [--xlsx FILE.xlsx] [--dxf FILE.dxf [--sheet WxH]]\n"
+             "       [--ifc FILE.ifc]\n"
              "       [--json FILE.json] [--svg FILE.svg] [--view "
              "uv|top|front|side]\n"
              "       [--colour type|class] [--triangles] [--surface FILE] "
              "[--force]",
     .summary = "Export one option: OBJ + MTL, CSV or XLSX panel schedule, "
-               "JSON, SVG panel map, DXF flat patterns.",
+               "JSON, SVG panel map, DXF flat patterns, IFC4 model.",
     .before = "",
     .options = export_options,
     .after = "",

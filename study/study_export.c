@@ -20,6 +20,7 @@
 #include "core/panel/panel_geometry.h"
 #include "core/out/report.h"
 #include "core/out/svg_plot.h"
+#include "core/out/ifc_model.h"
 #include "core/out/xlsx_schedule.h"
 #include "core/fit/sp_fit.h"
 #include "core/fit/unroll.h"
@@ -372,6 +373,59 @@ static int write_dxf(FILE *out, const struct study_option *p,
     return rc;
 }
 
+/* The option p as an IFC4 model (ifc_model.h) into out. A building's
+ * surfaces each get their panels' geometry built here, over the surface
+ * the building's evaluation made them on. */
+static int write_ifc(FILE *out, const struct study_option *p,
+                     struct facet_error *err)
+{
+    int building = p->building != NULL;
+    size_t n = building ? p->building->nsurfaces : 1;
+    struct ifc_surface *surfaces = calloc(n, sizeof *surfaces);
+    struct panel_geometry *geometry =
+        building ? calloc(n, sizeof *geometry) : NULL;
+    size_t built = 0;
+    char single[256];
+    int rc = surfaces && (geometry || !building) ? FACET_OK
+        : facet_error_set(err, FACET_EWORK, "out of memory");
+    for (size_t s = 0; rc == FACET_OK && s < n; s++) {
+        if (building) {
+            const struct surface *surface =
+                &p->view->project.surfaces[s].surface;
+            const struct panelization *panels =
+                &p->building->surfaces[s].panels;
+            rc = panel_geometry_build(&surface->mesh, &surface->uv, panels,
+                                      &geometry[s], err);
+            built = s + 1;  /* freed also after a failure */
+            surfaces[s] = (struct ifc_surface){p->surfaces[s].name, panels,
+                                               &geometry[s]};
+        } else {
+            assert(p->have_geometry);
+            surface_name(p->run.surface_path, single, sizeof single);
+            surfaces[s] = (struct ifc_surface){single, &p->panels,
+                                               &p->geometry};
+        }
+    }
+    if (rc == FACET_OK) {
+        char title[128], key[256];
+        snprintf(title, sizeof title, "Facet run %lld, option %lld",
+                 (long long)p->run.id, (long long)p->row.number);
+        /* The run's start and surface with its number: two stores' run 1
+         * are not one model's objects. */
+        snprintf(key, sizeof key, "facet run %lld started %s surface %s "
+                 "option %lld", (long long)p->run.id, p->run.started,
+                 p->run.surface_sha256, (long long)p->row.number);
+        struct ifc_model m = {title, key, run_started(&p->run),
+                              "Facet " FACET_VERSION, n, surfaces};
+        rc = ifc_model_write(out, &m, err);
+    }
+    for (size_t s = 0; s < built; s++)
+        panel_geometry_free(&geometry[s]);
+    free(geometry);
+    free(surfaces);
+    return rc;
+}
+
 /* A building's schedule: one header, then every surface's panels in
  * the run's order, ids running on across them; its totals the
  * building's. */
@@ -394,10 +448,11 @@ int study_export(struct store *store, int64_t run, int64_t number,
                  struct export_request *r, struct facet_error *err)
 {
     memset(r->written, 0, sizeof r->written);
-    if (!r->obj && !r->csv && !r->json && !r->svg && !r->xlsx && !r->dxf)
+    if (!r->obj && !r->csv && !r->json && !r->svg && !r->xlsx && !r->dxf &&
+        !r->ifc)
         return facet_error_set(err, FACET_EINPUT,
-            "export: say what to write: OBJ, CSV, XLSX, JSON, SVG and/or "
-            "DXF");
+            "export: say what to write: OBJ, CSV, XLSX, JSON, SVG, DXF "
+            "and/or IFC");
     double sheet_width = r->sheet_width ? r->sheet_width : DXF_SHEET_WIDTH;
     double sheet_height = r->sheet_height ? r->sheet_height
                                           : DXF_SHEET_HEIGHT;
@@ -427,13 +482,14 @@ int study_export(struct store *store, int64_t run, int64_t number,
                     (r->xlsx && strcmp(r->xlsx, "-") == 0) +
                     (r->json && strcmp(r->json, "-") == 0) +
                     (r->svg && strcmp(r->svg, "-") == 0) +
-                    (r->dxf && strcmp(r->dxf, "-") == 0);
+                    (r->dxf && strcmp(r->dxf, "-") == 0) +
+                    (r->ifc && strcmp(r->ifc, "-") == 0);
     if (to_stdout > 1)
         return facet_error_set(err, FACET_EINPUT,
             "export: one file at most to standard output (-)");
     const char *target[EXPORT_FILES] = {r->obj, r->obj ? mtl : NULL, r->csv,
                                         totals_file ? totals : NULL, r->json,
-                                        r->svg, r->xlsx, r->dxf};
+                                        r->svg, r->xlsx, r->dxf, r->ifc};
     /* A building's option: its schedule, every surface's panels in one,
      * and its totals; the other formats are refused before any file is
      * made rather than written empty. */
@@ -445,8 +501,8 @@ int study_export(struct store *store, int64_t run, int64_t number,
         return facet_error_set(err, FACET_EINPUT,
             "run %lld is a project (a building of several surfaces): an "
             "OBJ, JSON or SVG of its option is not written yet, only its "
-            "panel schedule (CSV, XLSX) and flat patterns (DXF)",
-            (long long)run);
+            "panel schedule (CSV, XLSX), flat patterns (DXF) and IFC "
+            "model", (long long)run);
     struct outfile file[EXPORT_FILES];
     int open[EXPORT_FILES] = {0};
     if ((rc = open_all(target, r->force, file, open, err)))
@@ -455,8 +511,9 @@ int study_export(struct store *store, int64_t run, int64_t number,
     struct study_option p;
     rc = study_option_load(store, run, number,
                            r->obj || r->svg ||
-                               ((r->xlsx || r->dxf) && !building), &p,
-                           err);
+                               ((r->xlsx || r->dxf || r->ifc) &&
+                                !building),
+                           &p, err);
     if (rc == FACET_OK && building)
         rc = study_option_building(store, &p, r->view, r->building,
                                    r->hooks, err);
@@ -503,12 +560,15 @@ int study_export(struct store *store, int64_t run, int64_t number,
     if (rc == FACET_OK && r->dxf)
         rc = write_dxf(file[EXPORT_DXF].out, &p, fit, sheet_width,
                        sheet_height, err);
+    if (rc == FACET_OK && r->ifc)
+        rc = write_ifc(file[EXPORT_IFC].out, &p, err);
     free_fits(fit, p.building != NULL ? p.building->nsurfaces : 1);
     /* The MTL before the OBJ: an OBJ never names a missing MTL. */
     static const int order[EXPORT_FILES] = {EXPORT_MTL, EXPORT_OBJ,
                                             EXPORT_CSV, EXPORT_TOTALS,
                                             EXPORT_JSON, EXPORT_SVG,
-                                            EXPORT_XLSX, EXPORT_DXF};
+                                            EXPORT_XLSX, EXPORT_DXF,
+                                            EXPORT_IFC};
     int n = 0;
     for (int k = 0; k < EXPORT_FILES; k++) {
         int f = order[k];

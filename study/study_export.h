@@ -7,7 +7,9 @@
  * (core/out/xlsx_schedule.h: its workbook dated the run's start, so the
  * same option gives the same bytes) and an SVG panel map
  * (core/out/svg_map.h), the flat patterns as DXF (core/fit/unroll.h,
- * core/out/dxf_patterns.h); a run as an SVG scatter (core/out/svg_plot.h). Every
+ * core/out/dxf_patterns.h), an IFC4 model (core/out/ifc_model.h: dated the
+ * run's start, its GlobalIds derived from the option, so the same option
+ * gives the same bytes too); a run as an SVG scatter (core/out/svg_plot.h). Every
  * file is opened (as FILE.partial) before any work and renamed into place
  * only when all of them are written, so an export that fails leaves no file
  * behind, new or old; an existing file is refused unless force is set.
@@ -87,6 +89,7 @@ void study_option_source(const struct study_option *option,
 
 enum export_file { EXPORT_OBJ, EXPORT_MTL, EXPORT_CSV, EXPORT_TOTALS,
                    EXPORT_JSON, EXPORT_SVG, EXPORT_XLSX, EXPORT_DXF,
+                   EXPORT_IFC,
                    EXPORT_FILES };
 
 struct export_request {
@@ -98,6 +101,8 @@ struct export_request {
                                              (core/out/dxf_patterns.h) */
     double sheet_width, sheet_height;     /* the DXF's sheets (m); 0:
                                              DXF_SHEET_WIDTH x _HEIGHT */
+    const char *ifc;                      /* the IFC4 model
+                                             (core/out/ifc_model.h) */
     int force;                            /* overwrite existing files */
     /* A building's option already open (the workbench's map), borrowed;
      * NULL: study_export opens the building and evaluates the option
@@ -114,9 +119,10 @@ struct export_request {
 };
 
 /* Writes the files request asks for of option number of run. Of a
- * building's option (a project run) the CSV and XLSX schedules only,
- * every surface's panels (study_option_building), and the DXF of every
- * surface's patterns, ids running on across them; the others are refused
+ * building's option (a project run) the CSV and XLSX schedules, the DXF
+ * of every surface's patterns and the IFC model, every surface's panels
+ * (study_option_building), ids running on across them, the geometry built
+ * surface by surface; the others are refused
  * (FACET_EINPUT) before any file is made. Panels not
  * stored yet are computed and stored first (study_option_panels); the OBJ
  * and the SVG need the surface file, which must be unchanged. Returns
