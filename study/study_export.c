@@ -325,7 +325,7 @@ static int write_xlsx(FILE *out, const struct study_option *p,
  * panels' geometry built here; a single surface's is p's. */
 static int write_dxf(FILE *out, const struct study_option *p,
                      struct built_panel *const *fit, double width,
-                     double height, struct facet_error *err)
+                     double height, int grows, struct facet_error *err)
 {
     int building = p->building != NULL;
     assert(building || p->have_geometry);
@@ -360,7 +360,7 @@ static int write_dxf(FILE *out, const struct study_option *p,
         id += panels->npanels;
     }
     if (rc == FACET_OK) {
-        struct dxf_patterns x = {n, surfaces, width, height};
+        struct dxf_patterns x = {n, surfaces, width, height, grows};
         rc = dxf_patterns_write(out, &x, err);
     }
     for (size_t s = 0; s < built; s++)
@@ -559,7 +559,7 @@ int study_export(struct store *store, int64_t run, int64_t number,
         rc = write_xlsx(file[EXPORT_XLSX].out, &p, fit, err);
     if (rc == FACET_OK && r->dxf)
         rc = write_dxf(file[EXPORT_DXF].out, &p, fit, sheet_width,
-                       sheet_height, err);
+                       sheet_height, r->sheet_grows, err);
     if (rc == FACET_OK && r->ifc)
         rc = write_ifc(file[EXPORT_IFC].out, &p, err);
     free_fits(fit, p.building != NULL ? p.building->nsurfaces : 1);

@@ -101,6 +101,9 @@ struct export_request {
                                              (core/out/dxf_patterns.h) */
     double sheet_width, sheet_height;     /* the DXF's sheets (m); 0:
                                              DXF_SHEET_WIDTH x _HEIGHT */
+    int sheet_grows;                      /* 1: sheets grow to hold the
+                                             largest pattern (dxf_patterns.h)
+                                             rather than refuse it */
     const char *ifc;                      /* the IFC4 model
                                              (core/out/ifc_model.h) */
     int force;                            /* overwrite existing files */

@@ -70,9 +70,9 @@ static const struct tui_key_help map_help[] = {
               "worst gap or by worst kink"},
     {"z", "zoom in: fit the screen, 1, then 2 columns per panel"},
     {"Z", "zoom out, back to the whole grid fitted to the screen"},
-    {"e, F9", "export: PREFIX.obj (+ .mtl), .csv, .svg and .xlsx; a "
-              "building's option PREFIX.csv and .xlsx, every surface's "
-              "panels; end the prefix with ! to overwrite"},
+    {"e, F9", "export: PREFIX.csv, .xlsx, .dxf, .ifc, and of a single "
+              "surface .obj (+ .mtl) and .svg; a building's every "
+              "surface's panels; end the prefix with ! to overwrite"},
     {"] / [", "a project's option: the next / previous surface of the "
               "building"},
     {NULL, NULL},
@@ -481,10 +481,11 @@ static void move_cursor(struct map_screen *s, int di, int dj)
         s->cj = s->panels->nv - 1;
 }
 
-/* Splits "PREFIX" or "PREFIX!" (overwrite) into the export's paths: a
- * single surface's PREFIX.obj (+ .mtl), .csv, .svg and .xlsx; a
- * building's schedules, PREFIX.csv and .xlsx, from the building the map
- * shows (no second evaluation). */
+/* Splits "PREFIX" or "PREFIX!" (overwrite) into the export's paths: the
+ * fabrication package, PREFIX.csv (+ -totals.csv), .xlsx, .dxf (on the
+ * default sheets) and .ifc, and of a single surface PREFIX.obj (+ .mtl)
+ * and .svg too; a building's from the building the map shows (no second
+ * evaluation). */
 static void export_option(struct map_screen *s, struct tui_app *app)
 {
     char prefix[TUI_INPUT_MAX];
@@ -499,14 +500,22 @@ static void export_option(struct map_screen *s, struct tui_app *app)
     }
     char obj[TUI_INPUT_MAX + 8], csv[TUI_INPUT_MAX + 8];
     char svg[TUI_INPUT_MAX + 8], xlsx[TUI_INPUT_MAX + 8];
+    char dxf[TUI_INPUT_MAX + 8], ifc[TUI_INPUT_MAX + 8];
     snprintf(obj, sizeof obj, "%s.obj", prefix);
     snprintf(csv, sizeof csv, "%s.csv", prefix);
     snprintf(svg, sizeof svg, "%s.svg", prefix);
     snprintf(xlsx, sizeof xlsx, "%s.xlsx", prefix);
+    snprintf(dxf, sizeof dxf, "%s.dxf", prefix);
+    snprintf(ifc, sizeof ifc, "%s.ifc", prefix);
     struct export_request request;
     memset(&request, 0, sizeof request);
     request.csv = csv;
     request.xlsx = xlsx;
+    request.dxf = dxf;
+    request.ifc = ifc;
+    /* No sheet is asked for here: the default, grown to hold the
+     * largest panel rather than refuse it. */
+    request.sheet_grows = 1;
     request.force = force;
     if (s->project) {
         request.view = tui_project_load_view(app->project);
@@ -528,11 +537,12 @@ static void export_option(struct map_screen *s, struct tui_app *app)
         return;
     }
     if (s->project)
-        tui_status(app, "wrote %s (+ -totals.csv), %s: the building's "
-                   "%zu panels", csv, xlsx, s->building.totals.panels);
+        tui_status(app, "wrote %s.csv (+ -totals.csv), .xlsx, .dxf, .ifc: "
+                   "the building's %zu panels", prefix,
+                   s->building.totals.panels);
     else
-        tui_status(app, "wrote %s (+ .mtl), %s, %s, %s", obj, csv, svg,
-                   xlsx);
+        tui_status(app, "wrote %s.obj (+ .mtl), .csv, .svg, .xlsx, .dxf, "
+                   ".ifc", prefix);
 }
 
 static enum tui_result export_key(struct map_screen *s, struct tui_app *app,

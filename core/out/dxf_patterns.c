@@ -79,14 +79,20 @@ static int by_id(const void *a, const void *b)
     return p->id < q->id ? -1 : p->id > q->id;
 }
 
-/* Sizes, turns and places every part; FACET_EINPUT for one that fits no
- * sheet. */
-static int layout(const struct dxf_patterns *x, struct part *parts,
-                  size_t n, double *hull, size_t *order, size_t *nsheets,
-                  struct facet_error *err)
+/* A sheet side that holds a pattern side of size (m) within its
+ * margins, in whole steps of DXF_SHEET_STEP. */
+static double side_to_hold(double size)
 {
-    double room[2] = {x->sheet_width - 2 * DXF_MARGIN,
-                      x->sheet_height - 2 * DXF_MARGIN};
+    return ceil((size + 2 * DXF_MARGIN) / DXF_SHEET_STEP) * DXF_SHEET_STEP;
+}
+
+/* Sizes, turns and places every part on sheets of sheet[0] x sheet[1]
+ * (m), grown first to hold the largest pattern when x->sheet_grows;
+ * FACET_EINPUT for one that fits no sheet. */
+static int layout(const struct dxf_patterns *x, double sheet[2],
+                  struct part *parts, size_t n, double *hull, size_t *order,
+                  size_t *nsheets, struct facet_error *err)
+{
     for (size_t k = 0; k < n; k++) {
         struct part *p = &parts[k];
         const struct dxf_surface *s = &x->surfaces[p->surface];
@@ -98,6 +104,16 @@ static int layout(const struct dxf_patterns *x, struct part *parts,
         p->c = cos(p->turn);
         p->s = sin(p->turn);
         bounding_box(p, s);
+        /* The least box is landscape, as the sheets are. */
+        if (x->sheet_grows) {
+            sheet[0] = fmax(sheet[0], side_to_hold(p->size[0]));
+            sheet[1] = fmax(sheet[1], side_to_hold(p->size[1]));
+        }
+    }
+    double room[2] = {sheet[0] - 2 * DXF_MARGIN, sheet[1] - 2 * DXF_MARGIN};
+    for (size_t k = 0; k < n; k++) {
+        struct part *p = &parts[k];
+        const struct dxf_surface *s = &x->surfaces[p->surface];
         if (p->size[0] <= room[0] && p->size[1] <= room[1])
             continue;
         double size[2] = {p->size[0], p->size[1]};
@@ -114,33 +130,33 @@ static int layout(const struct dxf_patterns *x, struct part *parts,
             "does not fit a %.0f x %.0f mm sheet within its %.0f mm "
             "margins, either way round: give a larger sheet",
             p->id, s->name, panel->i, panel->j, units_mm(size[0]),
-            units_mm(size[1]), units_mm(x->sheet_width),
-            units_mm(x->sheet_height), units_mm(DXF_MARGIN));
+            units_mm(size[1]), units_mm(sheet[0]), units_mm(sheet[1]),
+            units_mm(DXF_MARGIN));
     }
     qsort(parts, n, sizeof *parts, taller_first);
-    size_t sheet = 0;
+    size_t current = 0;
     double shelf_y = DXF_MARGIN, shelf_height = 0, cursor = DXF_MARGIN;
     for (size_t k = 0; k < n; k++) {
         struct part *p = &parts[k];
-        if (cursor + p->size[0] > x->sheet_width - DXF_MARGIN) {
+        if (cursor + p->size[0] > sheet[0] - DXF_MARGIN) {
             /* The next shelf. */
             shelf_y += shelf_height + DXF_MARGIN;
             shelf_height = 0;
             cursor = DXF_MARGIN;
         }
-        if (shelf_y + p->size[1] > x->sheet_height - DXF_MARGIN) {
-            sheet++;
+        if (shelf_y + p->size[1] > sheet[1] - DXF_MARGIN) {
+            current++;
             shelf_y = DXF_MARGIN;
             shelf_height = 0;
             cursor = DXF_MARGIN;
         }
-        p->sheet = sheet;
+        p->sheet = current;
         p->at[0] = cursor;
         p->at[1] = shelf_y;
         cursor += p->size[0] + DXF_MARGIN;
         shelf_height = fmax(shelf_height, p->size[1]);
     }
-    *nsheets = n ? sheet + 1 : 0;
+    *nsheets = n ? current + 1 : 0;
     return FACET_OK;
 }
 
@@ -419,12 +435,13 @@ int dxf_patterns_write(FILE *out, const struct dxf_patterns *x,
                                            {0, 0}};
     }
     size_t nsheets = 0;
-    int rc = layout(x, parts, m, hull, order, &nsheets, err);
+    double sheet[2] = {x->sheet_width, x->sheet_height};
+    int rc = layout(x, sheet, parts, m, hull, order, &nsheets, err);
     if (rc == FACET_OK) {
-        double step = x->sheet_width + SHEET_GAP;
+        double step = sheet[0] + SHEET_GAP;
         /* The extents: the sheets (and their labels under them) and
          * the 3D outlines. */
-        double lo[3] = {0, -0.100, 0}, hi[3] = {0, x->sheet_height, 0};
+        double lo[3] = {0, -0.100, 0}, hi[3] = {0, sheet[1], 0};
         hi[0] = nsheets ? (double)nsheets * step - SHEET_GAP : 0;
         for (size_t s = 0; s < x->nsurfaces; s++) {
             const struct panel_geometry *g = x->surfaces[s].geometry;
@@ -440,13 +457,13 @@ int dxf_patterns_write(FILE *out, const struct dxf_patterns *x,
         group(out, 2, "ENTITIES");
         for (size_t k = 0; k < nsheets; k++) {
             double x0 = (double)k * step;
-            double frame[8] = {x0, 0, x0 + x->sheet_width, 0,
-                               x0 + x->sheet_width, x->sheet_height, x0,
-                               x->sheet_height};
+            double frame[8] = {x0, 0, x0 + sheet[0], 0,
+                               x0 + sheet[0], sheet[1], x0,
+                               sheet[1]};
             polyline(out, "SHEETS", 4, frame, NULL);
             char name[40];
             snprintf(name, sizeof name, "sheet %zu", k + 1);
-            text(out, "SHEETS", x0 + x->sheet_width / 2, -0.060, 0.040,
+            text(out, "SHEETS", x0 + sheet[0] / 2, -0.060, 0.040,
                  name);
         }
         /* The patterns in id order, whatever their places. */

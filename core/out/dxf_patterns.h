@@ -50,6 +50,14 @@ struct dxf_patterns {
     size_t nsurfaces;
     const struct dxf_surface *surfaces;
     double sheet_width, sheet_height;      /* m, finite, > 2 DXF_MARGIN */
+    int sheet_grows;                       /* 1: a sheet too small for the
+                                              largest pattern grows, each
+                                              side to hold it within the
+                                              margins, in whole
+                                              DXF_SHEET_STEPs (the frames
+                                              drawn are the sheets used);
+                                              0: such a pattern is
+                                              refused */
 };
 
 /* The default sheet (m): 3000 x 1500 mm, a standard sheet of metal. */
@@ -58,6 +66,8 @@ struct dxf_patterns {
 /* The sides a sheet may have (m). */
 #define DXF_SHEET_MIN 0.050
 #define DXF_SHEET_MAX 100.0
+/* What a grown sheet's sides are whole multiples of (m). */
+#define DXF_SHEET_STEP 0.100
 
 /* Parses text, "WxH" in mm ("3000x1500"), the sheet size given for the
  * setting what (the caller's name for it), into *width, *height (m).
@@ -68,8 +78,8 @@ int dxf_sheet_parse(const char *text, const char *what, double *width,
                     double *height, struct facet_error *err);
 
 /* Writes x to out. Returns FACET_OK, or FACET_EINPUT before writing
- * anything when a pattern does not fit on a sheet either way round
- * (naming its panel id, surface, cell and size in mm), FACET_EWORK when
+ * anything when a pattern does not fit on a sheet either way round and
+ * the sheet does not grow (naming its panel id, surface, cell and size in mm), FACET_EWORK when
  * out of memory. */
 int dxf_patterns_write(FILE *out, const struct dxf_patterns *x,
                        struct facet_error *err);

@@ -114,8 +114,9 @@ grep -c '^ok - ' "$WORK/tuiexp.checks" | grep -qv '^0$' ||
 sed -e 's/^ok - /ok - map export: /' -e 's/^not ok - /not ok - map export: /' \
     "$WORK/tuiexp.checks"
 "$FACET" export "$WORK/p.db" --run 1 --option "$knee" --csv "$WORK/cli.csv" \
-    --xlsx "$WORK/cli.xlsx" >/dev/null 2>&1
-for f in .csv -totals.csv .xlsx; do
+    --xlsx "$WORK/cli.xlsx" --dxf "$WORK/cli.dxf" --ifc "$WORK/cli.ifc" \
+    >/dev/null 2>&1
+for f in .csv -totals.csv .xlsx .dxf .ifc; do
     if [ -s "$WORK/tuiexp$f" ] && cmp -s "$WORK/tuiexp$f" "$WORK/cli$f"; then
         pass "map: its $f is the CLI's, byte for byte"
     else
