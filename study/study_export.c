@@ -26,6 +26,7 @@
 #include "core/fit/unroll.h"
 #include "core/joint/cell_sides.h"
 #include "study.h"
+#include "study_internal.h"
 
 /* Opens every wanted file as FILE.partial; on failure none is left. */
 static int open_all(const char *const target[EXPORT_FILES], int force,
@@ -444,6 +445,16 @@ static void write_building_csv(const struct study_option *p, FILE *csv,
         report_totals_csv(totals, &b->totals);
 }
 
+/* Tells hooks the export's next stage; FACET_ESTOP when a stop is asked
+ * for. */
+static int export_stage(const struct study_hooks *hooks, const char *what,
+                        struct facet_error *err)
+{
+    study_stage(hooks, what);
+    struct facet_stop stop = study_stop(hooks);
+    return facet_stop_check(&stop, err);
+}
+
 int study_export(struct store *store, int64_t run, int64_t number,
                  struct export_request *r, struct facet_error *err)
 {
@@ -551,16 +562,26 @@ int study_export(struct store *store, int64_t run, int64_t number,
         svg_map_write(file[EXPORT_SVG].out, &p.geometry, &p.panels,
                       &p.totals, &map);
     }
-    /* The SP fits, made once for every format that shows them. */
+    /* The SP fits, made once for every format that shows them. Each of
+     * these takes seconds on a big building: each says so, and a stop
+     * asked for between them leaves no file. */
     struct built_panel **fit = NULL;
-    if (rc == FACET_OK && (r->xlsx || r->dxf))
+    if (rc == FACET_OK && (r->xlsx || r->dxf) &&
+        (rc = export_stage(r->hooks, "fitting the SP panels again", err)) ==
+            FACET_OK)
         rc = option_fits(&p, &fit, err);
-    if (rc == FACET_OK && r->xlsx)
+    if (rc == FACET_OK && r->xlsx &&
+        (rc = export_stage(r->hooks, "writing the XLSX schedule", err)) ==
+            FACET_OK)
         rc = write_xlsx(file[EXPORT_XLSX].out, &p, fit, err);
-    if (rc == FACET_OK && r->dxf)
+    if (rc == FACET_OK && r->dxf &&
+        (rc = export_stage(r->hooks, "laying out the flat patterns (DXF)",
+                           err)) == FACET_OK)
         rc = write_dxf(file[EXPORT_DXF].out, &p, fit, sheet_width,
                        sheet_height, r->sheet_grows, err);
-    if (rc == FACET_OK && r->ifc)
+    if (rc == FACET_OK && r->ifc &&
+        (rc = export_stage(r->hooks, "writing the IFC model", err)) ==
+            FACET_OK)
         rc = write_ifc(file[EXPORT_IFC].out, &p, err);
     free_fits(fit, p.building != NULL ? p.building->nsurfaces : 1);
     /* The MTL before the OBJ: an OBJ never names a missing MTL. */

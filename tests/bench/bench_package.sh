@@ -25,8 +25,9 @@ trap 'rm -rf "$work"' EXIT
     --threshold 3 --method exhaustive --table 0 >/dev/null 2>&1
 panels=$(sqlite3 "$work/skin.db" 'SELECT panels FROM options WHERE run = 1 AND number = 1')
 # Every format facet export writes for a building's option.
-package=(--csv "$work/p.csv" --xlsx "$work/p.xlsx")
-formats="csv xlsx"
+package=(--csv "$work/p.csv" --xlsx "$work/p.xlsx" --dxf "$work/p.dxf"
+         --ifc "$work/p.ifc")
+formats="csv xlsx dxf ifc"
 time_one() {
     rm -f "$work"/p.* "$work"/p-*
     local start=$EPOCHREALTIME

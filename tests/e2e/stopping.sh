@@ -110,6 +110,27 @@ same "project: SIGINT while reading: exit status 130" "$STATUS" 130
 within "project: SIGINT while reading: exits within 2 s" 2
 same "project: no run recorded" "$(sql "$WORK/project.db" 'SELECT count(*) FROM runs')" 0
 
+# --- export: a building's option, whose files are read and prepared
+# again before anything is written: SIGINT then stops it with no file
+# (not one of the four, no .partial) and says so in one line.
+expect "export: a project of two files runs" 0 "$FACET" optimize \
+    "$WORK/east.obj" "$WORK/west.obj" --module 2x2 --db "$WORK/export.db" \
+    --table 0
+mkdir -p "$WORK/out"
+"$FACET" export "$WORK/export.db" --run 1 --option 1 --csv "$WORK/out/p.csv" \
+    --xlsx "$WORK/out/p.xlsx" --dxf "$WORK/out/p.dxf" --ifc "$WORK/out/p.ifc" \
+    >"$OUT" 2>"$ERR" &
+pid=$!
+stop_after "$pid" INT 0.4
+same "export: SIGINT while preparing: exit status 130" "$STATUS" 130
+within "export: SIGINT while preparing: exits within 2 s" 2
+same "export: no file written, none half-written" "$(ls -A "$WORK/out")" ""
+if [ "$(wc -l <"$ERR")" -eq 1 ] && grep -q "export interrupted; no file written" "$ERR"; then
+    pass "export: one line says no file was written"
+else
+    fail "export: one line says no file was written"
+fi
+
 # --- a second signal kills at once: SIGINT and SIGTERM arrive together
 # (sent while the process is stopped); the first asks for a stop, the
 # second finds the default action back and kills (Python tells a death by
