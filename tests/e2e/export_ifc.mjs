@@ -191,6 +191,17 @@ check('panel ids 1..N across the building, each the plate\'s Name and Tag',
                     text(plateOf.get(aggregated[k]).Tag) === n),
       numbers.slice(0, 5));
 
+// With IDS_OUT set, each plate's id, surface, column and row, as web-ifc
+// reads them, for the caller to hold against the other formats' ids.
+if (process.env.IDS_OUT) {
+    const { writeFileSync } = await import('fs');
+    writeFileSync(process.env.IDS_OUT, aggregated.map(p => {
+        const v = props(p);
+        return [text(v.PanelId), text(v.Surface), num(v.ColumnI),
+                num(v.RowJ)].join(',');
+    }).join('\n') + '\n');
+}
+
 // GlobalIds: unique, 22 characters of IFC's base 64.
 const gids = [];
 for (const type of [W.IFCPROJECT, W.IFCSITE, W.IFCBUILDING,

@@ -87,8 +87,40 @@ expect "a building runs" 0 "$FACET" optimize plane.obj cylinder.obj \
 OPTION=$(sqlite3 b.db 'SELECT number FROM options WHERE run=1 ORDER BY dp_count DESC, number LIMIT 1')
 expect "a building's option as IFC" 0 "$FACET" export b.db --run 1 \
     --option "$OPTION" --ifc b.ifc
-$CHECK b.db 1 "$OPTION" b.ifc ||
+IDS_OUT=$WORK/b.ids $CHECK b.db 1 "$OPTION" b.ifc ||
     echo "not ok - export_ifc.mjs on a building (status $?)"
+# The same ids in every format (issue 30): the IFC's, as web-ifc reads
+# them, are the CSV schedule's and the DXF's labels, panel by panel.
+"$FACET" export b.db --run 1 --option "$OPTION" --csv b.csv --dxf b.dxf --sheet 20000x20000 \
+    >/dev/null 2>&1
+if out=$(/usr/bin/python3 - "$WORK/b.ids" b.csv b.dxf <<'PY' 2>&1
+import csv, sys
+ifc = {}
+for line in open(sys.argv[1]):
+    pid, surface, i, j = line.strip().split(",")
+    ifc[int(pid)] = (surface, int(float(i)), int(float(j)))
+rows = list(csv.DictReader(open(sys.argv[2], newline="")))
+schedule = {int(r["id"]): (r["surface"], int(r["i"]), int(r["j"])) for r in rows}
+assert len(ifc) == len(schedule) > 0, "%d plates, %d rows" % (len(ifc), len(schedule))
+bad = [k for k in schedule if ifc.get(k) != schedule[k]]
+assert not bad, "id %d: IFC %s, CSV %s" % (bad[0], ifc.get(bad[0]), schedule[bad[0]])
+try:
+    import ezdxf
+except ImportError:
+    print("%d ids (no ezdxf: the DXF not read)" % len(ifc))
+    sys.exit(0)
+labels = sorted(int(e.dxf.text) for e in ezdxf.readfile(sys.argv[3]).modelspace()
+                .query("TEXT") if e.dxf.layer in ("FP", "SP", "DP")
+                and e.dxf.text.isdigit())
+assert labels == sorted(schedule), "DXF labels %s.. vs ids %s.." % (labels[:5], sorted(schedule)[:5])
+print("%d ids" % len(ifc))
+PY
+); then
+    pass "a building's panel ids are the same in the IFC, the CSV and the DXF ($out)"
+else
+    echo "not ok - a building's panel ids are the same in the IFC, the CSV and the DXF"
+    printf '%s\n' "$out" | tail -n 3 | sed 's/^/  /'
+fi
 sleep 1
 expect "exported again" 0 "$FACET" export b.db --run 1 --option "$OPTION" \
     --ifc b2.ifc
