@@ -29,7 +29,7 @@ int study_project_view_open(struct store *store, const struct run_info *run,
         study_stage(hooks, "reading, checking and preparing the project's "
                     "surfaces (UV, curvature)");
         struct surface_grid *overrides = NULL;
-        rc = study_project_reopen(store, run, NULL, &view->project,
+        rc = study_project_reopen(store, run, hooks, &view->project,
                                   &overrides, err);
         free(overrides);
     }
