@@ -153,6 +153,9 @@ void study_option_free(struct study_option *p)
         study_project_view_close(&p->own_view);
     if (p->have_geometry)
         panel_geometry_free(&p->geometry);
+    for (size_t s = 0; s < p->building_geometry_built; s++)
+        panel_geometry_free(&p->building_geometry[s]);
+    free(p->building_geometry);
     panelization_free(&p->panels);
     if (p->have_surface)
         surface_close(&p->surface);
@@ -320,6 +323,38 @@ static int write_xlsx(FILE *out, const struct study_option *p,
     return rc;
 }
 
+/* Builds every surface's panel patches of p's building (a single
+ * surface's are p->geometry), once for every file that draws them. */
+static int building_geometry(struct study_option *p, struct facet_error *err)
+{
+    assert(p->building != NULL && p->building_geometry == NULL);
+    size_t n = p->building->nsurfaces;
+    p->building_geometry = calloc(n ? n : 1, sizeof *p->building_geometry);
+    if (p->building_geometry == NULL)
+        return facet_error_set(err, FACET_EWORK, "out of memory");
+    int rc = FACET_OK;
+    for (size_t s = 0; rc == FACET_OK && s < n; s++) {
+        const struct surface *surface = &p->view->project.surfaces[s].surface;
+        rc = panel_geometry_build(&surface->mesh, &surface->uv,
+                                  &p->building->surfaces[s].panels,
+                                  &p->building_geometry[s], err);
+        p->building_geometry_built = s + 1;  /* freed also after a failure */
+    }
+    return rc;
+}
+
+/* The panel patches of surface s of p (0 for a single surface). */
+static const struct panel_geometry *geometry_of(const struct study_option *p,
+                                                size_t s)
+{
+    if (p->building == NULL) {
+        assert(s == 0 && p->have_geometry);
+        return &p->geometry;
+    }
+    assert(s < p->building_geometry_built);
+    return &p->building_geometry[s];
+}
+
 /* The option p's flat patterns (unroll.h) as DXF (dxf_patterns.h) into
  * out, its SP panels developed on their fits fit (option_fits), on
  * sheets of width x height (m). A building's surfaces each get their
@@ -329,29 +364,18 @@ static int write_dxf(FILE *out, const struct study_option *p,
                      double height, int grows, struct facet_error *err)
 {
     int building = p->building != NULL;
-    assert(building || p->have_geometry);
     size_t n = building ? p->building->nsurfaces : 1;
-    struct panel_geometry *geometry = calloc(n, sizeof *geometry);
     struct flat_patterns *patterns = calloc(n, sizeof *patterns);
     struct dxf_surface *surfaces = calloc(n, sizeof *surfaces);
     char single[256];
-    int rc = geometry && patterns && surfaces ? FACET_OK
+    int rc = patterns && surfaces ? FACET_OK
         : facet_error_set(err, FACET_EWORK, "out of memory");
-    size_t id = 1, built = 0, laid = 0;
+    size_t id = 1, laid = 0;
     for (size_t s = 0; rc == FACET_OK && s < n; s++) {
         const struct panelization *panels =
             building ? &p->building->surfaces[s].panels : &p->panels;
-        const struct panel_geometry *g = &p->geometry;
-        if (building) {
-            const struct surface *surface =
-                &p->view->project.surfaces[s].surface;
-            rc = panel_geometry_build(&surface->mesh, &surface->uv, panels,
-                                      &geometry[s], err);
-            built = s + 1;
-            g = &geometry[s];
-        }
-        if (rc == FACET_OK)
-            rc = flat_patterns_build(g, panels, fit[s], &patterns[s], err);
+        const struct panel_geometry *g = geometry_of(p, s);
+        rc = flat_patterns_build(g, panels, fit[s], &patterns[s], err);
         laid = s + 1;
         if (!building)
             surface_name(p->run.surface_path, single, sizeof single);
@@ -364,47 +388,32 @@ static int write_dxf(FILE *out, const struct study_option *p,
         struct dxf_patterns x = {n, surfaces, width, height, grows};
         rc = dxf_patterns_write(out, &x, err);
     }
-    for (size_t s = 0; s < built; s++)
-        panel_geometry_free(&geometry[s]);
     for (size_t s = 0; s < laid; s++)
         flat_patterns_free(&patterns[s]);
-    free(geometry);
     free(patterns);
     free(surfaces);
     return rc;
 }
 
-/* The option p as an IFC4 model (ifc_model.h) into out. A building's
- * surfaces each get their panels' geometry built here, over the surface
- * the building's evaluation made them on. */
+/* The option p as an IFC4 model (ifc_model.h) into out. */
 static int write_ifc(FILE *out, const struct study_option *p,
                      struct facet_error *err)
 {
     int building = p->building != NULL;
     size_t n = building ? p->building->nsurfaces : 1;
     struct ifc_surface *surfaces = calloc(n, sizeof *surfaces);
-    struct panel_geometry *geometry =
-        building ? calloc(n, sizeof *geometry) : NULL;
-    size_t built = 0;
     char single[256];
-    int rc = surfaces && (geometry || !building) ? FACET_OK
+    int rc = surfaces ? FACET_OK
         : facet_error_set(err, FACET_EWORK, "out of memory");
     for (size_t s = 0; rc == FACET_OK && s < n; s++) {
         if (building) {
-            const struct surface *surface =
-                &p->view->project.surfaces[s].surface;
-            const struct panelization *panels =
-                &p->building->surfaces[s].panels;
-            rc = panel_geometry_build(&surface->mesh, &surface->uv, panels,
-                                      &geometry[s], err);
-            built = s + 1;  /* freed also after a failure */
-            surfaces[s] = (struct ifc_surface){p->surfaces[s].name, panels,
-                                               &geometry[s]};
+            surfaces[s] = (struct ifc_surface){
+                p->surfaces[s].name, &p->building->surfaces[s].panels,
+                geometry_of(p, s)};
         } else {
-            assert(p->have_geometry);
             surface_name(p->run.surface_path, single, sizeof single);
             surfaces[s] = (struct ifc_surface){single, &p->panels,
-                                               &p->geometry};
+                                               geometry_of(p, s)};
         }
     }
     if (rc == FACET_OK) {
@@ -420,9 +429,6 @@ static int write_ifc(FILE *out, const struct study_option *p,
                               "Facet " FACET_VERSION, n, surfaces};
         rc = ifc_model_write(out, &m, err);
     }
-    for (size_t s = 0; s < built; s++)
-        panel_geometry_free(&geometry[s]);
-    free(geometry);
     free(surfaces);
     return rc;
 }
@@ -570,6 +576,11 @@ int study_export(struct store *store, int64_t run, int64_t number,
         (rc = export_stage(r->hooks, "fitting the SP panels again", err)) ==
             FACET_OK)
         rc = option_fits(&p, &fit, err);
+    if (rc == FACET_OK && building && (r->dxf || r->ifc) &&
+        (rc = export_stage(r->hooks, "building the panels' surface patches",
+                           err)) ==
+            FACET_OK)
+        rc = building_geometry(&p, err);
     if (rc == FACET_OK && r->xlsx &&
         (rc = export_stage(r->hooks, "writing the XLSX schedule", err)) ==
             FACET_OK)

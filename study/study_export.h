@@ -53,6 +53,11 @@ struct study_option {
     struct study_project_view own_view;
     struct project_option own_building;
     int have_view, have_building;
+    /* The building's panels' surface patches, surface by surface, built
+     * once for every file that draws them (malloc'ed, released by
+     * study_option_free); NULL until then. */
+    struct panel_geometry *building_geometry;
+    size_t building_geometry_built;
 };
 
 /* Reads option number of run into *out (caller-owned, released with
