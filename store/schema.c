@@ -339,6 +339,27 @@ static const char schema_v10[] =
     "ALTER TABLE options ADD COLUMN sp_min_radius REAL;"
     "ALTER TABLE option_surfaces ADD COLUMN sp_min_radius REAL;";
 
+/* Version 11: the cylinder or cone each SP panel is built on (issue 29,
+ * item 7B), as the XLSX schedule shows it: sp_surface 'cylinder' or
+ * 'cone', the foot of the panel's centroid on the axis (m) and the axis
+ * direction (a unit vector, from the apex towards the panel for a cone),
+ * a cylinder's radius (m), a cone's apex (m) and half-angle (degrees, as
+ * worst_kink); NULL for a panel not built on a fit and for every panel
+ * stored before. */
+static const char schema_v11[] =
+    "ALTER TABLE panels ADD COLUMN sp_surface TEXT;"
+    "ALTER TABLE panels ADD COLUMN sp_axis_x REAL;"
+    "ALTER TABLE panels ADD COLUMN sp_axis_y REAL;"
+    "ALTER TABLE panels ADD COLUMN sp_axis_z REAL;"
+    "ALTER TABLE panels ADD COLUMN sp_direction_x REAL;"
+    "ALTER TABLE panels ADD COLUMN sp_direction_y REAL;"
+    "ALTER TABLE panels ADD COLUMN sp_direction_z REAL;"
+    "ALTER TABLE panels ADD COLUMN sp_radius REAL;"
+    "ALTER TABLE panels ADD COLUMN sp_apex_x REAL;"
+    "ALTER TABLE panels ADD COLUMN sp_apex_y REAL;"
+    "ALTER TABLE panels ADD COLUMN sp_apex_z REAL;"
+    "ALTER TABLE panels ADD COLUMN sp_half_angle REAL;";
+
 static const char *const migrations[STORE_SCHEMA_VERSION] = {
     schema_v1,
     schema_v2,
@@ -350,6 +371,7 @@ static const char *const migrations[STORE_SCHEMA_VERSION] = {
     schema_v8,
     schema_v9,
     schema_v10,
+    schema_v11,
 };
 
 int store_fail(struct store *store, const char *doing,

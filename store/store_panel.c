@@ -9,6 +9,50 @@
 #include <stdlib.h>
 #include <string.h>
 
+static const char *const sp_surface_name[] = {NULL, "cylinder", "cone"};
+
+/* Binds fit into the 12 columns from c (sp_surface .. sp_half_angle, the
+ * half-angle in degrees as worst_kink); returns the next column. */
+static int bind_sp_fit(sqlite3_stmt *s, int c, const struct panel_sp_fit *fit)
+{
+    if (fit->shape == PANEL_SP_NONE) {
+        for (int k = 0; k < 12; k++)
+            sqlite3_bind_null(s, c++);
+        return c;
+    }
+    sqlite3_bind_text(s, c++, sp_surface_name[fit->shape], -1,
+                      SQLITE_STATIC);
+    for (int d = 0; d < 3; d++)
+        store_bind_or_null(s, c++, fit->axis_point[d]);
+    for (int d = 0; d < 3; d++)
+        store_bind_or_null(s, c++, fit->direction[d]);
+    store_bind_or_null(s, c++, fit->radius);
+    for (int d = 0; d < 3; d++)
+        store_bind_or_null(s, c++, fit->apex[d]);
+    store_bind_or_null(s, c++, units_deg(fit->half_angle));
+    return c;
+}
+
+/* The fit bind_sp_fit stored, from column c; returns the next column. A
+ * panel stored before schema v11, or not built on a fit: shape NONE. */
+static int read_sp_fit(sqlite3_stmt *s, int c, struct panel_sp_fit *fit)
+{
+    const char *name = (const char *)sqlite3_column_text(s, c++);
+    fit->shape = PANEL_SP_NONE;
+    for (int k = PANEL_SP_CYLINDER; name != NULL && k <= PANEL_SP_CONE; k++)
+        if (strcmp(name, sp_surface_name[k]) == 0)
+            fit->shape = (enum panel_sp_shape)k;
+    for (int d = 0; d < 3; d++)
+        fit->axis_point[d] = store_column_or_nan(s, c++);
+    for (int d = 0; d < 3; d++)
+        fit->direction[d] = store_column_or_nan(s, c++);
+    fit->radius = store_column_or_nan(s, c++);
+    for (int d = 0; d < 3; d++)
+        fit->apex[d] = store_column_or_nan(s, c++);
+    fit->half_angle = units_rad_of_deg(store_column_or_nan(s, c++));
+    return c;
+}
+
 int store_panels_put(struct store *store, int64_t run, int64_t option,
                      const struct panelization *p, struct facet_error *err)
 {
@@ -45,11 +89,15 @@ int store_panels_put(struct store *store, int64_t run, int64_t option,
             " c0_x, c0_y, c0_z, c1_x, c1_y, c1_z, c2_x, c2_y, c2_z,"
             " c3_x, c3_y, c3_z, mould_family, built_type, sp_deviation,"
             " worst_gap, worst_gap_side, worst_kink, best_cylinder,"
-            " best_cone, misfit_reason) VALUES (?1, ?2, ?3, ?4, ?5,"
+            " best_cone, misfit_reason, sp_surface, sp_axis_x, sp_axis_y,"
+            " sp_axis_z, sp_direction_x, sp_direction_y, sp_direction_z,"
+            " sp_radius, sp_apex_x, sp_apex_y, sp_apex_z, sp_half_angle)"
+            " VALUES (?1, ?2, ?3, ?4, ?5,"
             " ?6, ?7, ?8, ?9, ?10, ?11, ?12, ?13, ?14, ?15, ?16, ?17, ?18,"
             " ?19, ?20, ?21, ?22, ?23, ?24, ?25, ?26, ?27, ?28, ?29, ?30,"
             " ?31, ?32, ?33, ?34, ?35, ?36, ?37, ?38, ?39, ?40, ?41, ?42,"
-            " ?43, ?44, ?45, ?46, ?47)", &panel, "storing panels", err);
+            " ?43, ?44, ?45, ?46, ?47, ?48, ?49, ?50, ?51, ?52, ?53, ?54,"
+            " ?55, ?56, ?57, ?58, ?59)", &panel, "storing panels", err);
     for (size_t k = 0; k < p->npanels && rc == FACET_OK; k++) {
         const struct panel *x = &p->panels[k];
         int c = 1;
@@ -103,6 +151,7 @@ int store_panels_put(struct store *store, int64_t run, int64_t option,
             sqlite3_bind_text(panel, c++, reason, -1, SQLITE_TRANSIENT);
         else
             sqlite3_bind_null(panel, c++);
+        c = bind_sp_fit(panel, c, &x->sp_fit);
         if (sqlite3_step(panel) != SQLITE_DONE)
             rc = store_fail(store, "storing panels", err);
         sqlite3_reset(panel);
@@ -207,7 +256,10 @@ int store_panels_get(struct store *store, int64_t run, int64_t option,
         " c3_x, c3_y, c3_z, coalesce(mould_family, -1),"
         " coalesce(built_type, type), sp_deviation, worst_gap,"
         " coalesce(worst_gap_side, -1), worst_kink,"
-        " best_cylinder, best_cone, misfit_reason IS NOT NULL FROM panels"
+        " best_cylinder, best_cone, misfit_reason IS NOT NULL, sp_surface,"
+        " sp_axis_x, sp_axis_y, sp_axis_z, sp_direction_x, sp_direction_y,"
+        " sp_direction_z, sp_radius, sp_apex_x, sp_apex_y, sp_apex_z,"
+        " sp_half_angle FROM panels"
         " WHERE run = ?1 AND option = ?2"
         " ORDER BY j, i", &s, "reading panels", err);
     if (rc != FACET_OK)
@@ -270,6 +322,7 @@ int store_panels_get(struct store *store, int64_t run, int64_t option,
         x->best_cylinder = store_column_or_nan(s, c++);
         x->best_cone = store_column_or_nan(s, c++);
         x->misfit = sqlite3_column_int(s, c++);
+        c = read_sp_fit(s, c, &x->sp_fit);
         p->cell_panel[(size_t)x->j * (size_t)p->nu + (size_t)x->i] = (int)n;
         n++;
     }

@@ -79,6 +79,7 @@ static void leave_unbuilt(const struct classify_options *options,
                           struct panelization *panels,
                           struct option_totals *totals)
 {
+    static const struct built_panel unbuilt;  /* fitted 0: no surface */
     for (size_t k = 0; k < panels->npanels; k++) {
         struct panel *panel = &panels->panels[k];
         panel->built = panel->type;
@@ -89,6 +90,7 @@ static void leave_unbuilt(const struct classify_options *options,
         panel->worst_gap_mm = NAN;
         panel->worst_gap_side = -1;
         panel->worst_kink_deg = NAN;
+        built_panel_describe(&unbuilt, panel->centroid, &panel->sp_fit);
     }
     classify_totals(panels, options, totals);
     quantity_totals_forget(totals, OPTION_MEASURE_FITS | OPTION_MEASURE_JOINTS);
@@ -156,6 +158,7 @@ static int build_and_measure(const struct surface *surface,
             panel->sp_deviation = b->sp_deviation;
             panel->best_cylinder = b->best_cylinder;
             panel->best_cone = b->best_cone;
+            built_panel_describe(b, panel->centroid, &panel->sp_fit);
             panel->worst_gap_mm = measure_joints ? units_mm(joints.worst_gap[k])
                                                  : NAN;
             panel->worst_kink_deg =

@@ -555,3 +555,23 @@ void built_panel_reason(const struct built_option *built, size_t panel,
              "no cylinder or cone within t = %.1f mm: best cylinder %s, "
              "best cone %s", units_mm(built->threshold), cylinder, cone);
 }
+
+void built_panel_describe(const struct built_panel *b,
+                          const double centroid[3], struct panel_sp_fit *out)
+{
+    for (int d = 0; d < 3; d++)
+        out->axis_point[d] = out->direction[d] = out->apex[d] = NAN;
+    out->radius = out->half_angle = NAN;
+    out->shape = PANEL_SP_NONE;
+    if (!b->fitted)
+        return;
+    double alpha = developable_describe(&b->fit, centroid, out->axis_point,
+                                        out->direction, out->apex);
+    if (isfinite(out->apex[0])) {
+        out->shape = PANEL_SP_CONE;
+        out->half_angle = alpha;
+    } else {
+        out->shape = PANEL_SP_CYLINDER;
+        out->radius = b->fit.radius;
+    }
+}

@@ -136,6 +136,13 @@ int built_option_fit(const struct mesh *mesh, const struct fit_points *points,
 
 void built_option_free(struct built_option *built);
 
+/* What a fabricator reads of b's fit (panel.h's panel_sp_fit), seen from
+ * centroid (the panel's, m): shape NONE, its numbers NaN, when b is not
+ * built on a fit. */
+void built_panel_describe(const struct built_panel *b,
+                          const double centroid[3],
+                          struct panel_sp_fit *out);
+
 /* The fits of one panel grid, kept across the thresholds it is evaluated
  * at. A grid's panels (panels_build) are the same at every threshold; only
  * their types change. A panel's samples, its cylinder and its cones do not

@@ -55,6 +55,24 @@ int panel_mode_parse(const char *text, const char *what,
                      enum panel_curvature_mode *out,
                      struct facet_error *err);
 
+/* The cylinder or cone an SP panel is built on (sp_fit.h), as a
+ * fabricator reads it: the foot of the panel's centroid on the axis and
+ * the axis's direction (developable.h's developable_describe), a
+ * cylinder's radius, a cone's apex and half-angle. */
+enum panel_sp_shape { PANEL_SP_NONE, PANEL_SP_CYLINDER, PANEL_SP_CONE };
+
+struct panel_sp_fit {
+    enum panel_sp_shape shape;  /* NONE (0, as a zeroed panel): not built
+                                   on a fit, every number below NaN or
+                                   not read */
+    double axis_point[3];       /* m */
+    double direction[3];        /* unit; from the apex towards the panel
+                                   for a cone */
+    double radius;              /* a cylinder's (m); NaN for a cone */
+    double apex[3];             /* a cone's (m); NaN for a cylinder */
+    double half_angle;          /* a cone's (rad); NaN for a cylinder */
+};
+
 struct panel {
     int i, j;                 /* the UV cell: i along u, j along v */
     double area;              /* m^2 */
@@ -105,6 +123,7 @@ struct panel {
                                  (corners 0-1), 1 u = i + 1 (1-2), 2 v =
                                  j + 1 (2-3), 3 u = i (3-0); -1 for none */
     double worst_kink_deg;    /* largest kink at its joints (degrees) */
+    struct panel_sp_fit sp_fit;  /* the surface it is built on, when SP */
 };
 
 struct panelization {

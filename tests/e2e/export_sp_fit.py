@@ -115,6 +115,30 @@ for r in rows:
             why.append("a cone with a cylinder's radius")
     if why:
         bad.append(((r["column i"], r["row j"]), why))
+# The store keeps the same fit (schema v11's sp_* columns of panels),
+# made by the evaluation, not the export: each number the workbook's, the
+# half-angle in degrees as the workbook shows it.
+columns = [("sp_axis_%s" % x, "SP axis point %s (m)" % x) for x in "xyz"] + \
+    [("sp_direction_%s" % x, "SP axis direction %s" % x) for x in "xyz"] + \
+    [("sp_radius", "SP cylinder radius (m)")] + \
+    [("sp_apex_%s" % x, "SP cone apex %s (m)" % x) for x in "xyz"] + \
+    [("sp_half_angle", "SP cone half-angle (deg)")]
+mismatch = []
+for r in rows:
+    s = stored[(r["column i"], r["row j"])]
+    if s["sp_surface"] != r["SP fitted surface"]:
+        mismatch.append(((r["column i"], r["row j"]), "sp_surface",
+                         s["sp_surface"]))
+    for col, head in columns:
+        a, b = s[col], r[head]
+        same = (a is None and b is None) or (
+            a is not None and b is not None and
+            abs(a - b) <= 1e-12 * max(1.0, abs(b)))
+        if not same:
+            mismatch.append(((r["column i"], r["row j"]), col, a, b))
+check("the store's sp_* columns hold each SP panel's fitted %s as the "
+      "workbook does (%d panels)" % (kind, len(rows)),
+      rows and not mismatch, mismatch[:3])
 check("every SP panel's fitted %s: its axis, %s and deviation as the "
       "surface and the store give them" %
       (kind, "radius" if kind == "cylinder" else "apex and half-angle"),

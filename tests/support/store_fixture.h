@@ -14,10 +14,27 @@
  * cost, a 1 x 1 grid, one job) that store_run_create accepts. */
 void store_fixture_run(struct run_info *run);
 
+/* SQL that takes a current file back to schema version 10: the columns
+ * version 11 added (each SP panel's fitted surface), dropped (set
+ * user_version after it). */
+#define STORE_FIXTURE_UNDO_V11 \
+    "ALTER TABLE panels DROP COLUMN sp_surface;" \
+    "ALTER TABLE panels DROP COLUMN sp_axis_x;" \
+    "ALTER TABLE panels DROP COLUMN sp_axis_y;" \
+    "ALTER TABLE panels DROP COLUMN sp_axis_z;" \
+    "ALTER TABLE panels DROP COLUMN sp_direction_x;" \
+    "ALTER TABLE panels DROP COLUMN sp_direction_y;" \
+    "ALTER TABLE panels DROP COLUMN sp_direction_z;" \
+    "ALTER TABLE panels DROP COLUMN sp_radius;" \
+    "ALTER TABLE panels DROP COLUMN sp_apex_x;" \
+    "ALTER TABLE panels DROP COLUMN sp_apex_y;" \
+    "ALTER TABLE panels DROP COLUMN sp_apex_z;" \
+    "ALTER TABLE panels DROP COLUMN sp_half_angle;"
+
 /* SQL that takes a current file back to schema version 9: the column
  * version 10 added (the smallest SP bending radius), dropped (set
  * user_version after it). */
-#define STORE_FIXTURE_UNDO_V10 \
+#define STORE_FIXTURE_UNDO_V10 STORE_FIXTURE_UNDO_V11 \
     "ALTER TABLE options DROP COLUMN sp_min_radius;" \
     "ALTER TABLE option_surfaces DROP COLUMN sp_min_radius;"
 

@@ -666,7 +666,7 @@ static void test_migrates_older_schema(void **state)
                      " type = 'index' AND name LIKE 'options_by_%')",
                      -1, &s, NULL), SQLITE_OK);
     assert_int_equal(sqlite3_step(s), SQLITE_ROW);
-    assert_int_equal(sqlite3_column_int(s, 0), 10);
+    assert_int_equal(sqlite3_column_int(s, 0), store_schema_version());
     assert_int_equal(sqlite3_column_int(s, 1), info.pareto_options);
     assert_int_equal(sqlite3_column_int(s, 2), 14);
     sqlite3_finalize(s);
@@ -710,7 +710,7 @@ static void test_migrates_v3(void **state)
     sqlite3_bind_int64(s, 1, old);
     sqlite3_bind_int64(s, 2, run);
     assert_int_equal(sqlite3_step(s), SQLITE_ROW);
-    assert_int_equal(sqlite3_column_int(s, 0), 10);
+    assert_int_equal(sqlite3_column_int(s, 0), store_schema_version());
     assert_int_equal(sqlite3_column_int(s, 1), 1);
     assert_int_equal(sqlite3_column_int(s, 2), 1);
     assert_string_equal((const char *)sqlite3_column_text(s, 3), "plane");
@@ -977,7 +977,7 @@ static void test_migrates_v4(void **state)
     sqlite3_bind_int64(s, 1, old);
     sqlite3_bind_int64(s, 2, run);
     assert_int_equal(sqlite3_step(s), SQLITE_ROW);
-    assert_int_equal(sqlite3_column_int(s, 0), 10);
+    assert_int_equal(sqlite3_column_int(s, 0), store_schema_version());
     assert_int_equal(sqlite3_column_int(s, 1), 48);
     assert_int_equal(sqlite3_column_int(s, 2), sqlite3_column_int(s, 3));
     assert_true(sqlite3_column_int(s, 3) > 0);
@@ -1050,7 +1050,7 @@ static void test_migrates_v6(void **state)
     sqlite3_bind_int64(s, 1, old);
     sqlite3_bind_int64(s, 2, run);
     assert_int_equal(sqlite3_step(s), SQLITE_ROW);
-    assert_int_equal(sqlite3_column_int(s, 0), 10);
+    assert_int_equal(sqlite3_column_int(s, 0), store_schema_version());
     assert_int_equal(sqlite3_column_int(s, 1), 48);
     int n = sqlite3_column_int(s, 2);
     assert_true(n > 0);

@@ -279,7 +279,7 @@ static void test_migrates_v7(void **state)
                                                2, &err), FACET_OK);
     store_close(store);
     assert_true(sql_number("SELECT user_version FROM pragma_user_version")
-                == 10);
+                == store_schema_version());
     assert_true(sql_number("SELECT count(*) FROM option_surfaces") == 2);
     assert_true(sql_number("SELECT count(*) FROM options WHERE run = 1 AND"
                            " module_w IS NULL") == 4);
