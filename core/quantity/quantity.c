@@ -269,22 +269,25 @@ const struct quantity *quantity_of_project(
     return quantity_named(name);
 }
 
+/* The number at field, a field of q's type; NaN for a count not known
+ * (TOTALS_UNKNOWN) and for a quantity no row field holds. */
+static double field_number(const struct quantity *q, const void *field)
+{
+    switch (q->field) {
+    case FIELD_INT:    return *(const int *)field;
+    case FIELD_INT64:  return (double)*(const int64_t *)field;
+    case FIELD_SIZE:   return totals_count(*(const size_t *)field);
+    case FIELD_DOUBLE: return *(const double *)field;
+    default:           return NAN;
+    }
+}
+
 double quantity_value(const struct quantity *c,
                                  const struct option_row *option)
 {
-    const char *field = (const char *)option + c->offset;
-    double value;
-    switch (c->field) {
-    case FIELD_INT:    value = *(const int *)(const void *)field; break;
-    case FIELD_INT64:
-        value = (double)*(const int64_t *)(const void *)field;
-        break;
-    case FIELD_SIZE:   /* NaN for TOTALS_UNKNOWN */
-        value = totals_count(*(const size_t *)(const void *)field);
-        break;
-    case FIELD_DOUBLE: value = *(const double *)(const void *)field; break;
-    default:           return NAN;
-    }
+    if (c->field == FIELD_NONE)
+        return NAN;
+    double value = field_number(c, (const char *)option + c->offset);
     return c->yes_no ? value != 0 : value;
 }
 
@@ -306,13 +309,7 @@ void *quantity_field_to_set(const struct quantity *q,
 double quantity_of_totals(const struct quantity *q,
                           const struct option_totals *totals)
 {
-    const char *field = quantity_field(q, totals);
-    switch (q->field) {
-    case FIELD_INT:    return *(const int *)(const void *)field;
-    case FIELD_SIZE:   return totals_count(*(const size_t *)(const void *)field);
-    case FIELD_DOUBLE: return *(const double *)(const void *)field;
-    default:           return NAN;
-    }
+    return field_number(q, quantity_field(q, totals));
 }
 
 int quantity_in_totals(const struct quantity *q)
