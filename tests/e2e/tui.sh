@@ -214,6 +214,10 @@ check "the bar offers Resume" 'F6Resume'
 keys R
 check "R resumes it with a gauge in the status line" '^run 1 .*(options \([0-9]+%\)|Ctrl-X stops)'
 check_slow "the resumed run is watched to the end" '^ +1 done +exhaustive +4107 '
+# The table shows the run done (from the store) a moment before the job
+# that ran it ends and says so on the status line; R pressed between the
+# two had its answer overwritten by that line.
+check_slow "the status line says the run is done" '^run 1 done: 4107 options'
 keys R
 check "a done run does not resume" 'run 1 is done; only an interrupted or failed run resumes'
 keys '?'
