@@ -31,22 +31,17 @@ static int is_stdout(const char *path)
            a.st_dev == b.st_dev && a.st_ino == b.st_ino;
 }
 
-/* What a building's option cannot be exported as yet is refused before
- * any file is made, with the command that shows it instead. */
-static int refuse_building(struct store *store, const char *path,
-                           long run, long number, struct facet_error *err)
+/* study_export's refusal of a format a building's option is not written
+ * in, with the command that shows its numbers surface by surface. */
+static int building_refusal(const char *path, long run, long number,
+                            struct facet_error *err)
 {
-    struct run_info info;
-    int rc = store_run_get(store, run, &info, err);
-    if (rc != FACET_OK || !store_run_is_project(&info))
-        return rc;
-    return facet_error_set(err, FACET_EINPUT,
-        "export: run %ld is a building of several surfaces: --obj, --json "
-        "and --svg of its options are not written yet, only --csv, "
-        "--xlsx, --dxf and --ifc; its totals surface by surface: facet show "
-        "%s --run %ld "
-        "--option %ld",
-        run, path, run, number);
+    char said[sizeof err->message];
+    snprintf(said, sizeof said, "%s", err->message);
+    return facet_error_set(err, err->code,
+                           "export: %s; its totals surface by surface: "
+                           "facet show %s --run %ld --option %ld",
+                           said, path, run, number);
 }
 
 /* The options as given (pointing into argv), NULL or 0 when absent; the
@@ -148,8 +143,6 @@ static int export_main(int argc, char **argv, struct facet_error *err)
         return rc;
     if (surface != NULL)
         rc = study_repoint_surface(store, run_id, surface, err);
-    if (rc == FACET_OK && (request.obj || request.json || request.svg))
-        rc = refuse_building(store, path, run_id, number, err);
     /* A building's files are read and prepared again, seconds on a big
      * one: say so on a terminal, and let Ctrl-C stop it with no file
      * written. */
@@ -160,6 +153,8 @@ static int export_main(int argc, char **argv, struct facet_error *err)
     signals_catch_stop();
     if (rc == FACET_OK)
         rc = study_export(store, run_id, number, &request, err);
+    if (rc != FACET_OK && request.refused_building)
+        rc = building_refusal(path, run_id, number, err);
     /* What was written is said on stdout, unless a file went there. */
     FILE *say = stdout;
     for (int k = 0; k < EXPORT_FILES; k++)

@@ -175,6 +175,57 @@ void study_option_source(const struct study_option *p,
         store_run_setting_text(r, RUN_SETTING_PER_PANEL)};
 }
 
+/* The base name of path, less ".obj": a single surface's name. */
+static void surface_name(const char *path, char *out, size_t size)
+{
+    const char *slash = strrchr(path, '/');
+    const char *base = slash ? slash + 1 : path;
+    size_t n = strlen(base);
+    if (n > size - 1)
+        n = size - 1;
+    memcpy(out, base, n);
+    out[n] = '\0';
+    if (n > 4 && strcasecmp(out + n - 4, ".obj") == 0)
+        out[n - 4] = '\0';
+}
+
+/* Surface s of the option p as the files show it: a building's surface s,
+ * or a single surface (s = 0) named after its file. name points into p
+ * or into single (size bytes, the caller's); the rest is borrowed from p. */
+struct export_surface {
+    const char *name;
+    const struct panelization *panels;
+    const struct option_totals *totals;
+    size_t moulds_used;            /* a building's surface's; 0 alone */
+    const struct surface *surface; /* the mesh it was evaluated on; NULL
+                                      for a single surface opened without
+                                      geometry */
+};
+
+static struct export_surface export_surface(const struct study_option *p,
+                                            size_t s, char *single,
+                                            size_t size)
+{
+    if (p->building != NULL) {
+        assert(s < p->building->nsurfaces);
+        return (struct export_surface){
+            p->surfaces[s].name, &p->building->surfaces[s].panels,
+            &p->building->surfaces[s].totals,
+            p->building->surfaces[s].moulds_used,
+            &p->view->project.surfaces[s].surface};
+    }
+    assert(s == 0);
+    surface_name(p->run.surface_path, single, size);
+    return (struct export_surface){single, &p->panels, &p->totals, 0,
+                                   p->have_surface ? &p->surface : NULL};
+}
+
+/* The surfaces the option p's files show: a building's, or 1. */
+static size_t export_surfaces(const struct study_option *p)
+{
+    return p->building != NULL ? p->building->nsurfaces : 1;
+}
+
 /* Each panel's fitted cylinder or cone, the one exporters share: into
  * fit (npanels), the fits made again over surface as the evaluation made
  * them (cell sides, then built_option_fit at the panels' threshold), kept
@@ -234,22 +285,20 @@ static void free_fits(struct built_panel **fit, size_t n)
 static int option_fits(const struct study_option *p,
                        struct built_panel ***out, struct facet_error *err)
 {
-    int building = p->building != NULL;
-    size_t n = building ? p->building->nsurfaces : 1;
+    size_t n = export_surfaces(p);
     struct built_panel **fit = calloc(n, sizeof *fit);
     int rc = fit ? FACET_OK
         : facet_error_set(err, FACET_EWORK, "out of memory");
     for (size_t s = 0; rc == FACET_OK && s < n; s++) {
-        const struct panelization *panels =
-            building ? &p->building->surfaces[s].panels : &p->panels;
-        const struct surface *surface =
-            building ? &p->view->project.surfaces[s].surface : &p->surface;
-        fit[s] = malloc((panels->npanels ? panels->npanels : 1) *
+        char single[256];
+        struct export_surface e = export_surface(p, s, single, sizeof single);
+        assert(e.surface != NULL);
+        fit[s] = malloc((e.panels->npanels ? e.panels->npanels : 1) *
                         sizeof *fit[s]);
         if (fit[s] == NULL)
             rc = facet_error_set(err, FACET_EWORK, "out of memory");
         else
-            rc = sp_fits(surface, panels, p->classify.threshold, fit[s],
+            rc = sp_fits(e.surface, e.panels, p->classify.threshold, fit[s],
                          err);
     }
     if (rc != FACET_OK) {
@@ -274,20 +323,6 @@ static time_t run_started(const struct run_info *run)
     return timegm(&t);
 }
 
-/* The base name of path, less ".obj": a single surface's name. */
-static void surface_name(const char *path, char *out, size_t size)
-{
-    const char *slash = strrchr(path, '/');
-    const char *base = slash ? slash + 1 : path;
-    size_t n = strlen(base);
-    if (n > size - 1)
-        n = size - 1;
-    memcpy(out, base, n);
-    out[n] = '\0';
-    if (n > 4 && strcasecmp(out + n - 4, ".obj") == 0)
-        out[n - 4] = '\0';
-}
-
 /* The option p as a workbook (xlsx_schedule.h) into out, its SP
  * panels' fits fit (option_fits). */
 static int write_xlsx(FILE *out, const struct study_option *p,
@@ -295,22 +330,15 @@ static int write_xlsx(FILE *out, const struct study_option *p,
                       struct facet_error *err)
 {
     int building = p->building != NULL;
-    size_t n = building ? p->building->nsurfaces : 1;
+    size_t n = export_surfaces(p);
     struct xlsx_surface *surfaces = calloc(n, sizeof *surfaces);
     char single[256];
     if (surfaces == NULL)
         return facet_error_set(err, FACET_EWORK, "out of memory");
     for (size_t s = 0; s < n; s++) {
-        if (building) {
-            surfaces[s] = (struct xlsx_surface){
-                p->surfaces[s].name, &p->building->surfaces[s].panels,
-                fit[s], &p->building->surfaces[s].totals,
-                p->building->surfaces[s].moulds_used};
-        } else {
-            surface_name(p->run.surface_path, single, sizeof single);
-            surfaces[s] = (struct xlsx_surface){single, &p->panels, fit[s],
-                                                &p->totals, 0};
-        }
+        struct export_surface e = export_surface(p, s, single, sizeof single);
+        surfaces[s] = (struct xlsx_surface){e.name, e.panels, fit[s],
+                                            e.totals, e.moulds_used};
     }
     char title[128];
     snprintf(title, sizeof title, "Facet panel schedule: run %lld, "
@@ -363,8 +391,7 @@ static int write_dxf(FILE *out, const struct study_option *p,
                      struct built_panel *const *fit, double width,
                      double height, int grows, struct facet_error *err)
 {
-    int building = p->building != NULL;
-    size_t n = building ? p->building->nsurfaces : 1;
+    size_t n = export_surfaces(p);
     struct flat_patterns *patterns = calloc(n, sizeof *patterns);
     struct dxf_surface *surfaces = calloc(n, sizeof *surfaces);
     char single[256];
@@ -372,17 +399,13 @@ static int write_dxf(FILE *out, const struct study_option *p,
         : facet_error_set(err, FACET_EWORK, "out of memory");
     size_t id = 1, laid = 0;
     for (size_t s = 0; rc == FACET_OK && s < n; s++) {
-        const struct panelization *panels =
-            building ? &p->building->surfaces[s].panels : &p->panels;
+        struct export_surface e = export_surface(p, s, single, sizeof single);
         const struct panel_geometry *g = geometry_of(p, s);
-        rc = flat_patterns_build(g, panels, fit[s], &patterns[s], err);
+        rc = flat_patterns_build(g, e.panels, fit[s], &patterns[s], err);
         laid = s + 1;
-        if (!building)
-            surface_name(p->run.surface_path, single, sizeof single);
-        surfaces[s] = (struct dxf_surface){
-            building ? p->surfaces[s].name : single, panels, g,
-            &patterns[s], id};
-        id += panels->npanels;
+        surfaces[s] = (struct dxf_surface){e.name, e.panels, g, &patterns[s],
+                                           id};
+        id += e.panels->npanels;
     }
     if (rc == FACET_OK) {
         struct dxf_patterns x = {n, surfaces, width, height, grows};
@@ -399,22 +422,14 @@ static int write_dxf(FILE *out, const struct study_option *p,
 static int write_ifc(FILE *out, const struct study_option *p,
                      struct facet_error *err)
 {
-    int building = p->building != NULL;
-    size_t n = building ? p->building->nsurfaces : 1;
+    size_t n = export_surfaces(p);
     struct ifc_surface *surfaces = calloc(n, sizeof *surfaces);
     char single[256];
     int rc = surfaces ? FACET_OK
         : facet_error_set(err, FACET_EWORK, "out of memory");
     for (size_t s = 0; rc == FACET_OK && s < n; s++) {
-        if (building) {
-            surfaces[s] = (struct ifc_surface){
-                p->surfaces[s].name, &p->building->surfaces[s].panels,
-                geometry_of(p, s)};
-        } else {
-            surface_name(p->run.surface_path, single, sizeof single);
-            surfaces[s] = (struct ifc_surface){single, &p->panels,
-                                               geometry_of(p, s)};
-        }
+        struct export_surface e = export_surface(p, s, single, sizeof single);
+        surfaces[s] = (struct ifc_surface){e.name, e.panels, geometry_of(p, s)};
     }
     if (rc == FACET_OK) {
         char title[128], key[256];
@@ -465,6 +480,7 @@ int study_export(struct store *store, int64_t run, int64_t number,
                  struct export_request *r, struct facet_error *err)
 {
     memset(r->written, 0, sizeof r->written);
+    r->refused_building = 0;
     if (!r->obj && !r->csv && !r->json && !r->svg && !r->xlsx && !r->dxf &&
         !r->ifc)
         return facet_error_set(err, FACET_EINPUT,
@@ -514,12 +530,14 @@ int study_export(struct store *store, int64_t run, int64_t number,
     if ((rc = store_run_get(store, run, &info, err)))
         return rc;
     int building = store_run_is_project(&info);
-    if (building && (r->obj || r->json || r->svg))
+    if (building && (r->obj || r->json || r->svg)) {
+        r->refused_building = 1;
         return facet_error_set(err, FACET_EINPUT,
-            "run %lld is a project (a building of several surfaces): an "
-            "OBJ, JSON or SVG of its option is not written yet, only its "
-            "panel schedule (CSV, XLSX), flat patterns (DXF) and IFC "
-            "model", (long long)run);
+            "run %lld is a building of several surfaces: an OBJ, JSON or "
+            "SVG of its option is not written yet, only its panel schedule "
+            "(CSV, XLSX), flat patterns (DXF) and IFC model",
+            (long long)run);
+    }
     struct outfile file[EXPORT_FILES];
     int open[EXPORT_FILES] = {0};
     if ((rc = open_all(target, r->force, file, open, err)))

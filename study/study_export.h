@@ -120,6 +120,10 @@ struct export_request {
     const struct study_hooks *hooks;      /* hears the stage of long
                                              work; NULL: nothing told */
     struct svg_map_options map;           /* view and colouring of the SVG */
+    /* Set by study_export: 1 when it refused a format a building's option
+     * is not written in (the refusal's caller may say where its numbers
+     * are instead), else 0. */
+    int refused_building;
     /* Set by study_export: the paths written, in the order written (the
      * MTL is obj's name with .mtl, the CSV's totals csv's name less .csv
      * with -totals.csv), "" for those not wanted. */

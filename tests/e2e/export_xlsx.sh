@@ -58,9 +58,7 @@ done
 
 # A building of four files: its panels evaluated again, against
 # option_surfaces.
-for s in plane cylinder dome hypar; do
-    "$FACET" example "$s" --res 16 -o "$s.obj" || exit 1
-done
+four_surfaces || exit 1
 expect "a building runs" 0 "$FACET" optimize plane.obj cylinder.obj \
     dome.obj hypar.obj --db b.db --module 2:3x2:3 --threshold 4 \
     --mould-cost 900,4000 --joint-cost 12

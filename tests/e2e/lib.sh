@@ -142,6 +142,21 @@ expect_fixture() {
     if [ "$STATUS" -eq "$want" ]; then pass "$name"; else fail "$name (want status $want)"; fi
 }
 
+# exported_again WHAT FIRST AGAIN CMD...: runs CMD, an export of what
+# wrote FIRST into AGAIN, a second later, and passes when the two files
+# have the same bytes: a clock that shows would show by then.
+exported_again() {
+    local what=$1 first=$2 again=$3
+    shift 3
+    sleep 1
+    expect "$what exported again" 0 "$@"
+    if cmp -s "$first" "$again"; then
+        pass "$what twice: the same bytes"
+    else
+        echo "not ok - $what twice differs"
+    fi
+}
+
 # four_surfaces: copies Facet's plane, cylinder, dome and hypar examples
 # (--res 16) into $WORK, and $WORK/four.obj, a project of their four
 # objects in one file (project_combine.py), for the project tests: the
