@@ -117,6 +117,15 @@ const struct quantity *tui_shown_column(const struct quantity *c,
                                    : quantity_of_project(c->name);
 }
 
+void tui_fmt_grid(char *out, size_t size, const struct option_row *option)
+{
+    if (isnan(option->module_w))
+        snprintf(out, size, "%d x %d", option->nu, option->nv);
+    else
+        snprintf(out, size, "module %.2f x %.2f m", option->module_w,
+                 option->module_h);
+}
+
 void tui_fmt_cell(char *out, size_t size, const struct tui_column *c,
                   const struct option_row *option)
 {

@@ -67,6 +67,10 @@ const struct quantity *tui_shown_column(const struct quantity *c,
 void tui_fmt_cell(char *out, size_t size, const struct tui_column *c,
                   const struct option_row *option);
 
+/* option's design grid in words: "37 x 49" panels, or a project's module
+ * "module 2.40 x 1.80 m" (its nu and nv only index the module range). */
+void tui_fmt_grid(char *out, size_t size, const struct option_row *option);
+
 /* value (as stored, in the store's unit) as column c shows it on its own
  * (quantity_text with c->decimals), not padded. */
 void tui_fmt_value(char *out, size_t size, const struct quantity *c,

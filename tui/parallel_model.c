@@ -16,10 +16,16 @@ const struct pc_axis pc_axes[PC_AXES] = {
     {"fp_area"}, {"sp_area"},
 };
 
-/* Whether axis takes whole numbers only. */
-static int whole_numbers(int axis)
+const char *pc_axis_column(const struct pc_state *st, int axis)
 {
-    return quantity_named(pc_axes[axis].column)->field != FIELD_DOUBLE;
+    return st->project ? quantity_of_project(pc_axes[axis].column)->name
+                       : pc_axes[axis].column;
+}
+
+/* Whether axis takes whole numbers only. */
+static int whole_numbers(const struct pc_state *st, int axis)
+{
+    return quantity_named(pc_axis_column(st, axis))->field != FIELD_DOUBLE;
 }
 
 int pc_axis_dot(double value, double min, double max, int dots)
@@ -47,7 +53,7 @@ double pc_step(const struct pc_state *st, int axis)
     if (!has_range(st, axis) || !(st->max[axis] > st->min[axis]))
         return 1;
     double step = (st->max[axis] - st->min[axis]) / PC_STEPS;
-    if (whole_numbers(axis))
+    if (whole_numbers(st, axis))
         step = step < 1 ? 1 : round(step);
     return step;
 }
@@ -57,7 +63,7 @@ double pc_step(const struct pc_state *st, int axis)
 static double round_edge(const struct pc_state *st, int axis, double value,
                          int up)
 {
-    if (whole_numbers(axis))
+    if (whole_numbers(st, axis))
         return up ? ceil(value - 1e-9) : floor(value + 1e-9);
     double range = st->max[axis] - st->min[axis];
     if (!(range > 0))
@@ -239,13 +245,13 @@ int pc_filter_text(const struct pc_state *st, char *out, size_t size,
         if (!b->active)
             continue;
         if (b->lo > st->min[a]) {
-            snprintf(term, sizeof term, "%s >= %.15g", pc_axes[a].column,
+            snprintf(term, sizeof term, "%s >= %.15g", pc_axis_column(st, a),
                      b->lo);
             if (append(out, size, &used, term))
                 return too_long(err);
         }
         if (b->hi < st->max[a]) {
-            snprintf(term, sizeof term, "%s <= %.15g", pc_axes[a].column,
+            snprintf(term, sizeof term, "%s <= %.15g", pc_axis_column(st, a),
                      b->hi);
             if (append(out, size, &used, term))
                 return too_long(err);
@@ -255,10 +261,10 @@ int pc_filter_text(const struct pc_state *st, char *out, size_t size,
 }
 
 /* The axis of column, or -1. */
-static int axis_of(const char *column)
+static int axis_of(const struct pc_state *st, const char *column)
 {
     for (int a = 0; a < PC_AXES; a++)
-        if (strcmp(pc_axes[a].column, column) == 0)
+        if (strcmp(pc_axis_column(st, a), column) == 0)
             return a;
     return -1;
 }
@@ -277,7 +283,7 @@ static int read_edge(struct pc_state *st, const char *text, size_t n)
     part[n] = '\0';
     if (sscanf(part, "%31s %2s %63s %c", column, op, number, &extra) != 3)
         return -1;
-    int a = axis_of(column);
+    int a = axis_of(st, column);
     double v;
     if (a < 0 || !has_range(st, a) ||
         parse_number(number, number + strlen(number), &v) != 0)

@@ -37,7 +37,13 @@ struct pc_state {
     double min[PC_AXES], max[PC_AXES];  /* NaN when no option has one */
     struct pc_brush brush[PC_AXES];
     char base[1024];     /* the filter's other conjuncts, "" for none */
+    int project;         /* a project run's options: its module (metres)
+                            where U and V stand (pc_axis_column) */
 };
+
+/* The column axis shows: pc_axes[axis]'s, or a project's module in place
+ * of nu and nv, which only index its module range. */
+const char *pc_axis_column(const struct pc_state *st, int axis);
 
 /* The dot row (0 at the top, dots - 1 at the bottom) of value on an axis
  * from min (bottom) to max (top); -1 for a value that is not finite. A

@@ -63,6 +63,28 @@ static void map_box(const struct compare_screen *s, int cw, int max_rows,
                 cols, rows);
 }
 
+/* text in at most rows lines of width characters from (y, x), broken at
+ * spaces (a word longer than a line is cut): a message is read whole or
+ * to a word's end, never run into its neighbour's. */
+static void put_wrapped(int y, int x, int width, int rows, attr_t attr,
+                        const char *text)
+{
+    for (int r = 0; r < rows && *text && width > 0; r++) {
+        size_t n = strlen(text);
+        if ((int)n > width) {
+            n = (size_t)width;
+            while (n > 0 && text[n] != ' ')
+                n--;
+            if (n == 0)
+                n = (size_t)width;
+        }
+        tui_putf(y + r, x, width, attr, "%.*s", (int)n, text);
+        text += n;
+        while (*text == ' ')
+            text++;
+    }
+}
+
 static void draw_maps(struct compare_screen *s, struct tui_app *app, int y0,
                       int rows, int x0, int cw)
 {
@@ -76,13 +98,23 @@ static void draw_maps(struct compare_screen *s, struct tui_app *app, int y0,
             tui_putf(y0 + 1 + t, 2, x0 - 3, A_NORMAL, " %s", name);
         }
     }
+    /* one reason for every option (a project's) is said once, across */
+    int same = s->n > 0;
+    for (int k = 0; k < s->n; k++)
+        if (s->has_map[k] || strcmp(s->map_error[k], s->map_error[0]) != 0)
+            same = 0;
+    if (same) {
+        put_wrapped(y0 + 1, x0 + 1, s->n * cw - 2, rows - 1,
+                    tui_attr(ROLE_ERROR), s->map_error[0]);
+        return;
+    }
     int box_w, box_h;
     map_box(s, cw, rows - 1, &box_w, &box_h);
     for (int k = 0; k < s->n; k++) {
         int x = x0 + k * cw + 1;
         if (!s->has_map[k]) {
-            tui_put(y0 + 1, x, cw - 1, tui_attr(ROLE_ERROR),
-                    s->map_error[k]);
+            put_wrapped(y0 + 1, x, cw - 2, rows - 1, tui_attr(ROLE_ERROR),
+                        s->map_error[k]);
             continue;
         }
         const struct panelization *p = &s->panels[k];
@@ -171,8 +203,9 @@ static void compare_draw(struct tui_screen *base, struct tui_app *app,
         s->top = tui_metric_column_count - rows > 0
                      ? tui_metric_column_count - rows : 0;
     for (int r = 0; r < rows && s->top + r < tui_metric_column_count; r++) {
-        const struct quantity *c =
-            quantity_named(tui_metric_columns[s->top + r]);
+        /* a project's module in metres where U and V stand */
+        const struct quantity *c = tui_shown_column(
+            quantity_named(tui_metric_columns[s->top + r]), &s->options[0]);
         int y = 2 + r, dir = direction(s, c->name);
         tui_putf(y, 0, lw + 6, A_NORMAL, " %-14s %-4s %s", c->label,
                  c->unit, dir < 0 ? "min" : dir > 0 ? "max" : "");
@@ -272,8 +305,9 @@ static void load_maps(struct compare_screen *s, struct tui_app *app)
          * surface */
         for (int k = 0; k < s->n; k++)
             snprintf(s->map_error[k], sizeof s->map_error[k],
-                     "no map: a project's option; its panel map (Enter "
-                     "on the table) pages its surfaces");
+                     "no map here for a building's options: Enter on the "
+                     "options table opens an option's map, surface by "
+                     "surface");
         return;
     }
     struct surface surface;

@@ -213,18 +213,18 @@ static int detail_lines(const struct option_row *o, char lines[][160])
     tui_fmt_number(sc, sizeof sc, t->cost_of[TYPE_SP], 0, 1);
     tui_fmt_number(dc, sizeof dc, t->cost_of[TYPE_DP], 0, 1);
     tui_fmt_number(area, sizeof area, t->area, 1, 1);
+    char grid[64];
+    tui_fmt_grid(grid, sizeof grid, o);
     if (!isnan(o->module_w))
-        /* a project's: its nu and nv index the module range; o lists the
-         * surfaces' own grids */
-        snprintf(lines[0], 160, "No. %lld: module %.2f x %.2f m, t %.2f mm, "
-                 "rank %d%s, %s; o: its surfaces", (long long)o->number,
-                 o->module_w, o->module_h, o->threshold_mm, o->rank,
-                 o->knee ? " (knee)" : "",
+        /* o lists a project's surfaces' own grids */
+        snprintf(lines[0], 160, "No. %lld: %s, t %.2f mm, rank %d%s, %s; o: "
+                 "its surfaces", (long long)o->number, grid, o->threshold_mm,
+                 o->rank, o->knee ? " (knee)" : "",
                  t->feasible ? "feasible" : "infeasible");
     else
-        snprintf(lines[0], 160, "No. %lld: %d x %d, t %.2f mm, rank %d%s, "
-                 "%s, largest panel %.2f m^2", (long long)o->number, o->nu,
-                 o->nv, o->threshold_mm, o->rank, o->knee ? " (knee)" : "",
+        snprintf(lines[0], 160, "No. %lld: %s, t %.2f mm, rank %d%s, %s, "
+                 "largest panel %.2f m^2", (long long)o->number, grid,
+                 o->threshold_mm, o->rank, o->knee ? " (knee)" : "",
                  t->feasible ? "feasible" : "infeasible", t->max_panel_area);
     snprintf(lines[1], 160, "cost %s USD = FP %s + SP %s + DP %s", cost, fc,
              sc, dc);

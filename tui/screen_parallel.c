@@ -120,7 +120,7 @@ static int load_ranges(struct parallel_screen *s, struct tui_app *app,
 {
     for (int a = 0; a < PC_AXES; a++) {
         int rc = store_run_column_range(app->store, s->model->browse.run,
-                                        pc_axes[a].column, &s->st.min[a],
+                                        pc_axis_column(&s->st, a), &s->st.min[a],
                                         &s->st.max[a], err);
         if (rc != FACET_OK)
             return rc;
@@ -184,10 +184,10 @@ static void apply(struct parallel_screen *s, struct tui_app *app)
 /* --- drawing --- */
 
 /* value as the axis's metric shows, in at most width characters. */
-static void axis_label(char *out, size_t size, int axis, double value,
-                       int width)
+static void axis_label(char *out, size_t size, const struct pc_state *st,
+                       int axis, double value, int width)
 {
-    const struct quantity *c = quantity_named(pc_axes[axis].column);
+    const struct quantity *c = quantity_named(pc_axis_column(st, axis));
     if (c)
         tui_fmt_value(out, size, c, value);
     else
@@ -220,7 +220,7 @@ static void polyline(struct pc_canvas *c, const struct pc_state *st,
 {
     int px = -1, py = -1;
     for (int a = 0; a < PC_AXES; a++) {
-        double v = option_quantity_value(o, pc_axes[a].column);
+        double v = option_quantity_value(o, pc_axis_column(st, a));
         int y = pc_axis_dot(v, st->min[a], st->max[a], 4 * c->height);
         int x = 2 * ax[a];
         if (y < 0) {
@@ -316,7 +316,7 @@ static void parallel_draw(struct tui_screen *base, struct tui_app *app,
                      / 4;
         }
         int sel_row = sel ? pc_axis_dot(option_quantity_value(sel,
-                                            pc_axes[a].column),
+                                            pc_axis_column(&s->st, a)),
                                         st->min[a], st->max[a], 4 * plot_h)
                             / 4
                           : -1;
@@ -336,26 +336,26 @@ static void parallel_draw(struct tui_screen *base, struct tui_app *app,
         }
         char title[32], hi[32], lo[32];
         snprintf(title, sizeof title, "%s%s%s%s", current ? "[" : "",
-                 quantity_named(pc_axes[a].column)->heading,
+                 quantity_named(pc_axis_column(&s->st, a))->heading,
                  b->active ? "*" : "", current ? "]" : "");
         put_centred(2, ax[a], width, current ? tui_attr(ROLE_COLUMN)
                                              : tui_attr(ROLE_HEADER),
                     title);
-        axis_label(hi, sizeof hi, a, st->max[a], room);
-        axis_label(lo, sizeof lo, a, st->min[a], room);
+        axis_label(hi, sizeof hi, st, a, st->max[a], room);
+        axis_label(lo, sizeof lo, st, a, st->min[a], room);
         put_centred(3, ax[a], width, tui_attr(ROLE_DIM), hi);
         put_centred(bottom, ax[a], width, tui_attr(ROLE_DIM), lo);
     }
 
     /* the current axis's brush, and the selected option */
     const struct quantity *cur =
-        quantity_named(pc_axes[s->axis].column);
+        quantity_named(pc_axis_column(&s->st, s->axis));
     const struct pc_brush *b = &st->brush[s->axis];
     char lo[32], hi[32];
     int y = bottom + 1;
     if (b->active) {
-        axis_label(lo, sizeof lo, s->axis, b->lo, 20);
-        axis_label(hi, sizeof hi, s->axis, b->hi, 20);
+        axis_label(lo, sizeof lo, &s->st, s->axis, b->lo, 20);
+        axis_label(hi, sizeof hi, &s->st, s->axis, b->hi, 20);
         tui_putf(y, 0, width, tui_attr(ROLE_MARKED),
                  " %s %s: brush %s .. %s %s  ([ ] { } move, e types, x "
                  "clears)", cur->heading, cur->unit, lo, hi, cur->unit);
@@ -365,13 +365,14 @@ static void parallel_draw(struct tui_screen *base, struct tui_app *app,
                  "high one, e types)", cur->heading, cur->unit);
     }
     if (sel != NULL) {
-        char cost[32];
+        char cost[32], grid[64];
         tui_fmt_number(cost, sizeof cost, sel->totals.cost, 0, 1);
+        tui_fmt_grid(grid, sizeof grid, sel);
         tui_putf(y + 1, 0, width, A_NORMAL,
-                 " No. %lld%s: %d x %d, t %.2f, planarity %.3f, DP %.1f, "
-                 "cost %s, FP %.1f, SP %.1f", (long long)sel->number,
-                 sel->rank == 1 ? " (Pareto)" : "", sel->nu, sel->nv,
-                 sel->threshold_mm, sel->totals.planarity,
+                 " No. %lld%s: %s, t %.2f mm, planarity %.3f m, DP %.1f m^2, "
+                 "cost %s USD, FP %.1f m^2, SP %.1f m^2",
+                 (long long)sel->number, sel->rank == 1 ? " (Pareto)" : "",
+                 grid, sel->threshold_mm, sel->totals.planarity,
                  sel->totals.area_of[TYPE_DP], cost,
                  sel->totals.area_of[TYPE_FP], sel->totals.area_of[TYPE_SP]);
     } else {
@@ -390,7 +391,7 @@ static void open_range(struct parallel_screen *s, struct tui_app *app)
         snprintf(text, sizeof text, "%.15g:%.15g", b->lo, b->hi);
     tui_input_set(&s->range, text);
     snprintf(s->prompt, sizeof s->prompt, "Range of %s (LO:HI):",
-             pc_axes[s->axis].column);
+             pc_axis_column(&s->st, s->axis));
     s->editing = 1;
     tui_prompt(app, s->prompt, &s->range);
 }
@@ -540,6 +541,15 @@ struct tui_screen *screen_parallel_new(struct tui_app *app,
     s->base.cls = &parallel_class;
     s->model = model;
     s->axis = 5;  /* cost */
+    struct run_info run;
+    struct facet_error err;
+    if (store_run_get(app->store, model->browse.run, &run, &err) !=
+        FACET_OK) {
+        tui_error(app, "parallel coordinates: %s", err.message);
+        parallel_destroy(&s->base);
+        return NULL;
+    }
+    s->st.project = store_run_is_project(&run);
     if (load(s, app) != FACET_OK) {
         parallel_destroy(&s->base);
         return NULL;

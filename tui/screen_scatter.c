@@ -55,7 +55,17 @@ struct scatter_screen {
     struct tui_input plot_to;
     int picking;                 /* the metric picker is open */
     int pick;                    /* its cursor: an axis_columns index */
+    int project;                 /* a project run's: its module (m) where
+                                    U and V stand */
 };
+
+/* The column of axis_columns[k] as this run's options show it: a
+ * project's module for nu and nv, which only index its module range. */
+static const char *axis_column(const struct scatter_screen *s, int k)
+{
+    return s->project ? quantity_of_project(axis_columns[k])->name
+                      : axis_columns[k];
+}
 
 static const struct tui_key_help scatter_help[] = {
     {"h/j/k/l, arrows", "move the cursor to the nearest point that way"},
@@ -77,7 +87,7 @@ static const struct tui_key_help scatter_help[] = {
 
 static const char *axis_name(const struct scatter_screen *s, int a)
 {
-    return s->axis[a] < 0 ? "none" : axis_columns[s->axis[a]];
+    return s->axis[a] < 0 ? "none" : axis_column(s, s->axis[a]);
 }
 
 /* The colour metric's value of point k (NaN without one). */
@@ -238,7 +248,7 @@ static void draw_picker(struct scatter_screen *s, int height, int width)
         attr_t attr = k == s->pick ? tui_attr(ROLE_SELECTION) : A_NORMAL;
         tui_fill(y0 + 1 + r, x0, w, attr);
         tui_putf(y0 + 1 + r, x0, w, attr, " %s  %-16s %s", roles,
-                 axis_columns[k], unit_of(axis_columns[k]));
+                 axis_column(s, k), unit_of(axis_column(s, k)));
     }
 }
 
@@ -494,7 +504,7 @@ static enum tui_result scatter_key(struct tui_screen *base,
             if (key == role_key[a]) {
                 if (a < 2 && s->axis[1 - a] == s->pick) {
                     tui_error(app, "%s is on the other axis already",
-                              axis_columns[s->pick]);
+                              axis_column(s, s->pick));
                     return RESULT_HANDLED;
                 }
                 int64_t number = s->n ? s->points[s->cursor].number : 0;
@@ -617,6 +627,15 @@ struct tui_screen *screen_scatter_new(struct tui_app *app,
     s->axis[2] = 2;  /* DP area */
     s->axis[3] = -1; /* no colour until c */
     s->show_front = 1;
+    struct run_info run;
+    struct facet_error err;
+    if (store_run_get(app->store, model->browse.run, &run, &err) !=
+        FACET_OK) {
+        tui_error(app, "scatter: %s", err.message);
+        scatter_destroy(&s->base);
+        return NULL;
+    }
+    s->project = store_run_is_project(&run);
     if (load(s, app) != FACET_OK) {
         scatter_destroy(&s->base);
         return NULL;

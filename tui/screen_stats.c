@@ -25,6 +25,11 @@ enum section { SEC_COLUMNS, SEC_U, SEC_V, SEC_T, SEC_CLASS, SEC_GENERATION,
 
 static const char *const section_name[SEC_COUNT] = {
     "columns", "per U", "per V", "per t", "per class", "per generation"};
+/* A project's grid is its module, in metres: nu and nv only index the
+ * module range (tui_shown_column). */
+static const char *const project_section_name[SEC_COUNT] = {
+    "columns", "per module width", "per module height", "per t",
+    "per class", "per generation"};
 static const char *const group_column[SEC_COUNT] = {
     NULL, "nu", "nv", "threshold_mm", NULL, "generation"};
 
@@ -46,7 +51,13 @@ struct stats_screen {
     double bin[SEC_COUNT];         /* the bin of a binned table, or 0 */
     struct class_frequency classes[CLASS_COUNT];
     int loaded[SEC_COUNT];         /* the section's table is computed */
-    int medians;                   /* medians computed: stat_columns[0..) */
+    int medians;                   /* medians computed: column[0..) */
+    /* stat_columns and group_column as this run's options show them: a
+     * project's module (module_w, module_h) for nu and nv */
+    const char *column[STATS];
+    const char *group[SEC_COUNT];
+    int project;
+    struct run_info run;
     int64_t options;               /* the options summed */
 };
 
@@ -89,21 +100,24 @@ static int load_section(struct stats_screen *s, struct tui_app *app,
     int rc = FACET_OK;
     if (section == SEC_CLASS) {
         rc = store_browse_classes(app->store, b, s->classes, &err);
-    } else if (group_column[section] != NULL) {
+    } else if (s->group[section] != NULL) {
         /* more values than rows to show: bins, known before the query
          * from the range and the column's step (1 for U, V and the
          * generation, the run's for t; a continuous t takes any value) */
         int c = section == SEC_T ? 8 : section == SEC_U ? 6
                 : section == SEC_V ? 7 : 15;
         double min = s->stats[c].min, max = s->stats[c].max, step = 1;
-        if (section == SEC_T) {
-            struct run_info run;
-            step = store_run_get(app->store, b->run, &run, &err) == FACET_OK
-                       ? run.threshold_step_mm : 0;
-        }
+        if (section == SEC_T)
+            step = s->run.threshold_step_mm;
+        else if (s->project && section == SEC_U)
+            step = s->run.module_w_step;
+        else if (s->project && section == SEC_V)
+            step = s->run.module_h_step;
+        if (!(step >= 0))
+            step = 0;
         int many = max > min && (step > 0 ? (max - min) / step + 1 > 60 : 1);
         s->bin[section] = many ? round_bin(min, max) : 0;
-        rc = store_browse_groups(app->store, b, group_column[section],
+        rc = store_browse_groups(app->store, b, s->group[section],
                                  s->bin[section], &s->groups[section],
                                  &s->ngroups[section], &err);
     }
@@ -122,7 +136,7 @@ static int load(struct stats_screen *s, struct tui_app *app)
     release(s);
     memset(s->loaded, 0, sizeof s->loaded);
     s->medians = 0;
-    int rc = store_browse_stats(app->store, &s->model->browse, stat_columns,
+    int rc = store_browse_stats(app->store, &s->model->browse, s->column,
                                 STATS, s->stats, &err);
     s->options = rc == FACET_OK ? s->stats[0].count : 0;
     if (rc != FACET_OK) {
@@ -141,7 +155,7 @@ static int stats_tick(struct tui_screen *base, struct tui_app *app)
         return 0;
     struct facet_error err;
     int k = s->medians++;
-    if (store_browse_median(app->store, &s->model->browse, stat_columns[k],
+    if (store_browse_median(app->store, &s->model->browse, s->column[k],
                             s->stats[k].count, &s->stats[k].median, &err) !=
         FACET_OK)
         tui_error(app, "statistics: %s", err.message);
@@ -205,7 +219,8 @@ static void stats_draw(struct tui_screen *base, struct tui_app *app,
     int x = 0;
     for (int k = 0; k < SEC_COUNT; k++) {
         char tab[40];
-        snprintf(tab, sizeof tab, " %d %s ", k + 1, section_name[k]);
+        snprintf(tab, sizeof tab, " %d %s ", k + 1,
+                 (s->project ? project_section_name : section_name)[k]);
         x += tui_put(1, x, width - x, k == s->section
                                           ? tui_attr(ROLE_SELECTION)
                                           : A_NORMAL, tab);
@@ -224,19 +239,19 @@ static void stats_draw(struct tui_screen *base, struct tui_app *app,
         for (int r = 0; r < rows && s->top + r < STATS; r++) {
             int k = s->top + r;
             const struct quantity *col =
-                quantity_named(stat_columns[k]);
+                quantity_named(s->column[k]);
             const struct column_stats *st = &s->stats[k];
-            fmt(a, sizeof a, stat_columns[k], st->min);
+            fmt(a, sizeof a, s->column[k], st->min);
             if (k < s->medians)
-                fmt(b2, sizeof b2, stat_columns[k], st->median);
+                fmt(b2, sizeof b2, s->column[k], st->median);
             else
                 snprintf(b2, sizeof b2, "...");
-            fmt(c, sizeof c, stat_columns[k], st->max);
-            fmt(d, sizeof d, stat_columns[k], st->mean);
+            fmt(c, sizeof c, s->column[k], st->max);
+            fmt(d, sizeof d, s->column[k], st->mean);
             tui_fmt_number(e, sizeof e, (double)st->count, 0, 1);
             tui_putf(3 + r, 0, width, A_NORMAL,
                      " %-15s %-4s %7s %11s %11s %11s %11s",
-                     col ? col->label : stat_columns[k],
+                     col ? col->label : s->column[k],
                      col ? col->unit : "", e, a, b2, c, d);
         }
         return;
@@ -264,7 +279,7 @@ static void stats_draw(struct tui_screen *base, struct tui_app *app,
     }
     const struct option_group *g = s->groups[s->section];
     size_t ng = s->ngroups[s->section];
-    const char *column = group_column[s->section];
+    const char *column = s->group[s->section];
     int64_t most = 1;
     for (size_t k = 0; k < ng; k++)
         if (g[k].options > most)
@@ -272,8 +287,9 @@ static void stats_draw(struct tui_screen *base, struct tui_app *app,
     char head[160];
     int gen = s->section == SEC_GENERATION;
     snprintf(head, sizeof head, " %-7s options              Pareto feasible"
-             " %11s %10s %7s", gen ? "gen" : s->section == SEC_T
-                                   ? "t mm" : column[1] == 'u' ? "U" : "V",
+             " %11s %10s %7s", gen ? "gen" : s->section == SEC_T ? "t mm"
+                 : s->project ? (s->section == SEC_U ? "W m" : "H m")
+                 : s->section == SEC_U ? "U" : "V",
              gen ? "best USD" : "least USD", "planar. m", "DP m^2");
     tui_put(2, 0, width, tui_attr(ROLE_HEADER), head);
     if (ng == 0)
@@ -368,6 +384,22 @@ struct tui_screen *screen_stats_new(struct tui_app *app,
     }
     s->base.cls = &stats_class;
     s->model = model;
+    struct facet_error err;
+    if (store_run_get(app->store, model->browse.run, &s->run, &err) !=
+        FACET_OK) {
+        tui_error(app, "statistics: %s", err.message);
+        free(s);
+        return NULL;
+    }
+    s->project = store_run_is_project(&s->run);
+    for (int k = 0; k < STATS; k++)
+        s->column[k] = s->project
+                           ? quantity_of_project(stat_columns[k])->name
+                           : stat_columns[k];
+    for (int k = 0; k < SEC_COUNT; k++)
+        s->group[k] = s->project && group_column[k] != NULL
+                          ? quantity_of_project(group_column[k])->name
+                          : group_column[k];
     s->section = section >= 0 && section < SEC_COUNT ? section : 0;
     if (load(s, app) != FACET_OK) {
         stats_destroy(&s->base);

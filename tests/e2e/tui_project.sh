@@ -165,9 +165,61 @@ check "the side pane gives the knee's module width ($mw m)" "module width +$mw m
 check "... and height ($mh m)" "module height +$mh m"
 keys g ' ' j ' ' c
 check "Compare's maps of a project's options say where its map is" \
-    "no map: a project's option; its panel map"
+    "no map here for a building's options: Enter on the options table opens an option's map"
 keys F10
 check_exit "the workbench quits cleanly (wide terminal)"
+
+# Issue 31 item 4: Compare, Statistics, Parallel coordinates and the
+# scatter's metric picker give a project's option its module in metres,
+# as sqlite3 reads module_w and module_h, never the indices nu and nv
+# stand for; and Compare's word on its maps is said once, whole, at 80
+# columns, not cut and run into the next option's.
+start 80 24 -- p.db
+check "80x24: the runs" '^ +1 done'
+keys Enter g ' ' j ' ' c
+check "Compare of two project options opens" "^ Compare 2 options of run 1"
+# the two options compared, from Compare's own heading
+read -r n1 n2 <<<"$(screen | sed -n 2p | grep -oE 'No\. [0-9]+' | cut -d' ' -f2 | tr '\n' ' ')"
+module_of() { q "select printf('%.2f %.2f', module_w, module_h) from options where run = 1 and number = $1"; }
+read -r w1 h1 <<<"$(module_of "$n1")"
+read -r w2 h2 <<<"$(module_of "$n2")"
+check "Compare's word on the maps, once, at 80 columns" \
+    " no map here for a building's options: Enter on the"
+check "... its words go on on the next line, whole" "^ +S SP +options table opens an option's map, surface by\$"
+check_not "... never run into the next option's (no two 'no map' on a line)" "no map.*no map"
+keys j j j j j j
+check "Compare: the module width row of No. $n1 and $n2, in m, as sqlite3 reads it ($w1, $w2)" \
+    "^ module width +m +$w1 +$w2"
+check "Compare: the module height row ($h1, $h2)" "^ module height +m +$h1 +$h2"
+check_not "Compare: no U or V row of module indices" "^ [UV] +[0-9]"
+keys q t
+read -r wmin wmax <<<"$(q "select printf('%.2f', min(module_w)), printf('%.2f', max(module_w)) from options where run = 1" | tr '|' ' ')"
+read -r hmin hmax <<<"$(q "select printf('%.2f', min(module_h)), printf('%.2f', max(module_h)) from options where run = 1" | tr '|' ' ')"
+check "Statistics: the sections are per module width and height" "2 per module width +3 per module height"
+check "Statistics: module width in m, its least and largest as sqlite3's ($wmin, $wmax)" \
+    "^ module width +m +[0-9,]+ +$wmin +[0-9.]+ +$wmax "
+check "Statistics: module height ($hmin, $hmax)" "^ module height +m +[0-9,]+ +$hmin +[0-9.]+ +$hmax "
+keys 2
+nw=$(q "select count(distinct module_w) from options where run = 1")
+first=$(q "select printf('%.2f', module_w) || ' +' || count(*) from options where run = 1 group by module_w order by module_w limit 1")
+check "Statistics per module width: headed W m" "^ W m +options"
+check "... its first group is sqlite3's ($first)" "^ $first "
+groups=$(screen | grep -cE '^ [0-9]+\.[0-9]{2} +[0-9]+ ')
+if [ "$groups" -eq "$nw" ]; then
+    pass "... a group per module width ($groups of $nw shown)"
+else
+    echo "not ok - a group per module width: $groups rows, sqlite3 counts $nw"
+fi
+keys q a
+check "Parallel coordinates: the first axes are the module, headed mod w and mod h" \
+    "^ +mod w +mod h +t "
+check "... the module width axis tops at sqlite3's largest ($wmax)" "^ +$wmax +$hmax "
+check "... the selected option's line gives its module in m" "^ No\. [0-9]+.*: module [0-9.]+ x [0-9.]+ m, t [0-9.]+ mm"
+keys q x M
+check "Scatter's metric picker offers the module width, not nu" "^ .*module_w "
+check_not "... and no nu" " nu +"
+keys q F10
+check_exit "the workbench quits cleanly (the project's views)"
 
 # A single surface's run: o says there are no surfaces, the map as ever.
 "$FACET" optimize "$WORK/dome.obj" --db "$WORK/one.db" --u 4:5 --v 4:5 \
