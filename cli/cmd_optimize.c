@@ -131,45 +131,6 @@ static int parse_search(const struct search_flags *f,
     return FACET_OK;
 }
 
-/* --grid NAME=NUxNV[,NAME=NUxNV...]: surfaces of a project given their
- * own grid whatever the module. The names point into text's copy. */
-#define GRID_OVERRIDES_MAX 256
-struct grid_overrides {
-    char text[4096];
-    char *name[GRID_OVERRIDES_MAX];
-    struct surface_grid grid[GRID_OVERRIDES_MAX];
-    size_t n;
-};
-
-static int grid_overrides_parse(const char *text, struct grid_overrides *g,
-                                struct facet_error *err)
-{
-    if (strlen(text) >= sizeof g->text)
-        return facet_error_set(err, FACET_EINPUT, "--grid: too long");
-    snprintf(g->text, sizeof g->text, "%s", text);
-    g->n = 0;
-    for (char *item = g->text; item != NULL;) {
-        char *next = strchr(item, ',');
-        if (next != NULL)
-            *next++ = '\0';
-        char *equals = strrchr(item, '=');
-        if (equals == NULL || equals == item || g->n == GRID_OVERRIDES_MAX)
-            return facet_error_set(err, FACET_EINPUT,
-                "--grid: '%s' is not NAME=NUxNV (e.g. roof_3=12x40)", item);
-        *equals = '\0';
-        char what[160];
-        snprintf(what, sizeof what, "--grid %.140s", item);
-        int nu, nv, rc = numrange_grid(equals + 1, PANEL_MAX_GRID, what, &nu,
-                                       &nv, err);
-        if (rc != FACET_OK)
-            return rc;
-        g->name[g->n] = item;
-        g->grid[g->n++] = (struct surface_grid){nu, nv};
-        item = next;
-    }
-    return FACET_OK;
-}
-
 /* Everything facet optimize takes from its arguments, parsed and checked
  * before any file is opened. The caller owns it and must not move it once
  * parsed: the request points into it. */
@@ -183,7 +144,7 @@ struct optimize_command {
     int count;
     long rows, run_number;
     struct study_request request;
-    struct grid_overrides grids;
+    struct surface_grid_overrides grids;
 };
 
 /* --- the defaults the help states, study_request_defaults's --- */
@@ -389,7 +350,8 @@ static int optimize_parse(int argc, char **argv, struct optimize_command *c,
                                       &request->settings.space, err)))
             return rc;
         if (search->grid &&
-            (rc = grid_overrides_parse(search->grid, &c->grids, err)))
+            (rc = surface_grid_overrides_parse(search->grid, "--grid",
+                                               &c->grids, err)))
             return rc;
         request->files = c->path;
         request->nfiles = (size_t)c->count;

@@ -9,6 +9,9 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "core/project/project.h"
+#include "core/project/project_grids.h"
+
 struct tui_job {
     pthread_t thread;
     pthread_mutex_t lock;
@@ -16,6 +19,13 @@ struct tui_job {
     char surface_path[1024];
     char name[128];
     char object[128], group[128];
+    /* a project's files and its surfaces' own grids, the request's own
+     * copies: the form that asked may close while the run works */
+    char files_text[65536];
+    const char *files[PROJECT_FILES_MAX];
+    char override_text[8192];
+    const char *override_names[SURFACE_GRID_OVERRIDES_MAX];
+    struct surface_grid overrides[SURFACE_GRID_OVERRIDES_MAX];
     struct study_request request;
     int64_t resume;               /* the run to go on with, or 0 */
     struct tui_job_state state;   /* under lock */
@@ -125,6 +135,25 @@ int tui_job_resume(const char *db_path, int64_t run, struct tui_job **out,
     return launch(job, out, err);
 }
 
+/* names[0 .. n) copied one after another into text (size bytes), out[k]
+ * pointing at each copy; -1 when they do not fit or n exceeds max. */
+static int copy_names(const char *const *names, size_t n, size_t max,
+                      char *text, size_t size, const char **out)
+{
+    if (n > max)
+        return -1;
+    size_t used = 0;
+    for (size_t k = 0; k < n; k++) {
+        size_t length = strlen(names[k]) + 1;
+        if (length > size - used)
+            return -1;
+        memcpy(text + used, names[k], length);
+        out[k] = text + used;
+        used += length;
+    }
+    return 0;
+}
+
 int tui_job_start(const char *db_path, const struct study_request *request,
                   struct tui_job **out, struct facet_error *err)
 {
@@ -149,6 +178,23 @@ int tui_job_start(const char *db_path, const struct study_request *request,
         snprintf(job->group, sizeof job->group, "%s", request->mesh.group);
         job->request.mesh.group = job->group;
     }
+    if (copy_names(request->files, request->nfiles, PROJECT_FILES_MAX,
+                   job->files_text, sizeof job->files_text, job->files) ||
+        copy_names(request->override_names, request->noverrides,
+                   SURFACE_GRID_OVERRIDES_MAX, job->override_text,
+                   sizeof job->override_text, job->override_names)) {
+        free(job);
+        return facet_error_set(err, FACET_EINPUT,
+                               "the project's file or surface names are "
+                               "too many or too long to run from here; "
+                               "facet optimize takes them");
+    }
+    job->request.files = request->nfiles ? job->files : NULL;
+    for (size_t k = 0; k < request->noverrides; k++)
+        job->overrides[k] = request->overrides[k];
+    job->request.override_names =
+        request->noverrides ? job->override_names : NULL;
+    job->request.overrides = request->noverrides ? job->overrides : NULL;
     return launch(job, out, err);
 }
 

@@ -3,8 +3,12 @@
  * the design space (u and v ranges, flatness threshold), the method, the
  * seed, the prices of FP, SP and DP panels, SP priced as FP, the largest
  * panel, the cost model beyond area (per panel, per metre of joint, per
- * mould, the mould tolerance and whether mirror images share a mould)
- * and a name; Tab completes the surface's path (directories and
+ * mould, the mould tolerance and whether mirror images share a mould),
+ * a building's panel module and its surfaces' own grids (a project run:
+ * several files, comma-separated, or one OBJ of many objects, searched
+ * over modules in place of U and V, as facet optimize --module and
+ * --grid), the objectives, and a name; Tab completes the surface's path
+ * (directories and
  * OBJ files, complete.h). F5 (or Enter on the last field) starts the
  * study in a worker thread (job.h) and opens the run's options table,
  * which fills in live while the status line shows a progress gauge.
@@ -30,12 +34,16 @@
 #include "keys.h"
 #include "core/base/numformat.h"
 #include "core/base/numparse.h"
+#include "core/project/module.h"
+#include "core/project/project.h"
+#include "core/project/project_grids.h"
+#include "core/search/metric.h"
 #include "study/study.h"
 
 enum field { F_SURFACE, F_UNITS, F_U, F_V, F_THRESHOLD, F_METHOD, F_SEED,
              F_PRICES, F_SP_AS_FP, F_MAX_AREA, F_PANEL_COST, F_JOINT_COST,
              F_MOULD_COST, F_MOULD_TOL, F_MOULD_MIRROR, F_SP_FIT, F_MAX_GAP,
-             F_MAX_KINK, F_NAME, F_COUNT };
+             F_MAX_KINK, F_MODULE, F_GRIDS, F_OBJECTIVES, F_NAME, F_COUNT };
 
 /* At most LABEL_WIDTH - 1 columns each. */
 static const char *const field_label[F_COUNT] = {
@@ -43,7 +51,8 @@ static const char *const field_label[F_COUNT] = {
     "Method", "Seed", "Prices FP,SP,DP", "SP priced as FP", "Max panel m^2",
     "Panel cost USD/panel", "Joint cost USD/m", "Mould cost SP,DP USD",
     "Mould tolerance (mm)", "Mirrors share moulds", "SP panels fitted",
-    "Max gap (mm)", "Max kink (deg)", "Name"};
+    "Max gap (mm)", "Max kink (deg)", "Module W x H (m)", "Surface grids",
+    "Objectives", "Name"};
 #define LABEL_WIDTH 22
 static const char *const field_hint[F_COUNT] = {
     "path of the OBJ file; Tab completes it (directories, .obj files)",
@@ -62,6 +71,12 @@ static const char *const field_hint[F_COUNT] = {
     "yes: an SP panel no cylinder or cone fits within t is built DP",
     "feasible only when no joint's gap exceeds it; empty: no limit",
     "feasible only when no joint's kink exceeds it; empty: no limit",
+    "a building: panel modules WMIN:WMAX x HMIN:HMAX (m) in place of U and "
+    "V; the surface: files, comma-separated, or one OBJ of many objects",
+    "a building's surfaces with a grid of their own, NAME=NUxNV,... "
+    "(needs the module)",
+    "metrics to minimise, comma-separated, max:NAME to maximise; empty: "
+    "cost,planarity,dp_area",
     "optional"};
 
 struct newrun_screen {
@@ -75,6 +90,11 @@ struct newrun_screen {
     double rate;       /* options a second of earlier runs of the file
                           (of this surface when there are), 0 unknown */
     int rate_runs;     /* the runs it was taken from */
+    /* a building's files, split from the surface field, and its
+     * surfaces' own grids: what build's request points into */
+    char files_text[4096];
+    const char *files[PROJECT_FILES_MAX];
+    struct surface_grid_overrides grids;
 };
 
 static const struct tui_key_help newrun_help[] = {
@@ -288,28 +308,97 @@ static int build_costs(const struct newrun_screen *s,
     return build_as_built(s, &params->classify, err);
 }
 
+/* The surface field into r: one OBJ file, or with a module a building
+ * (a project): the field's files, comma-separated (a field that names a
+ * readable file is that one file, commas and all), with the surface
+ * grids' overrides. */
+static int surfaces(struct newrun_screen *s, struct study_request *r,
+                    struct facet_error *err)
+{
+    const char *path = s->field[F_SURFACE].text;
+    const char *module = s->field[F_MODULE].text;
+    const char *grids = s->field[F_GRIDS].text;
+    if (path[0] == '\0')
+        return facet_error_set(err, FACET_EINPUT, "name the surface's OBJ "
+                               "file");
+    size_t n = 0;
+    if (access(path, R_OK) == 0 || strchr(path, ',') == NULL) {
+        if (access(path, R_OK) != 0)
+            return facet_error_set(err, FACET_EINPUT, "%s: cannot read it",
+                                   path);
+        snprintf(s->files_text, sizeof s->files_text, "%s", path);
+        s->files[n++] = s->files_text;
+    } else {
+        if (strlen(path) >= sizeof s->files_text)
+            return facet_error_set(err, FACET_EINPUT,
+                                   "%s: too long", field_label[F_SURFACE]);
+        snprintf(s->files_text, sizeof s->files_text, "%s", path);
+        for (char *item = s->files_text; item != NULL;) {
+            char *next = strchr(item, ',');
+            if (next != NULL)
+                *next++ = '\0';
+            while (*item == ' ')
+                item++;
+            if (*item == '\0')
+                return facet_error_set(err, FACET_EINPUT,
+                    "%s: an empty file name between commas",
+                    field_label[F_SURFACE]);
+            if (n == PROJECT_FILES_MAX)
+                return facet_error_set(err, FACET_EINPUT,
+                    "%s: more than %d files", field_label[F_SURFACE],
+                    PROJECT_FILES_MAX);
+            if (access(item, R_OK) != 0)
+                return facet_error_set(err, FACET_EINPUT,
+                                       "%s: cannot read it", item);
+            s->files[n++] = item;
+            item = next;
+        }
+    }
+    r->surface_path = s->files[0];
+    if (module[0] == '\0') {
+        if (n > 1)
+            return facet_error_set(err, FACET_EINPUT,
+                "a building of %zu files needs a panel module: give %s", n,
+                field_label[F_MODULE]);
+        if (grids[0] != '\0')
+            return facet_error_set(err, FACET_EINPUT,
+                "%s give a building's surfaces their own grid: they need %s",
+                field_label[F_GRIDS], field_label[F_MODULE]);
+        return FACET_OK;
+    }
+    int rc = module_parse(module, field_label[F_MODULE], &r->module, err);
+    if (rc == FACET_OK)
+        rc = surface_grid_overrides_parse(grids, field_label[F_GRIDS],
+                                          &s->grids, err);
+    if (rc != FACET_OK)
+        return rc;
+    r->files = s->files;
+    r->nfiles = n;
+    r->override_names = (const char *const *)s->grids.name;
+    r->overrides = s->grids.grid;
+    r->noverrides = s->grids.n;
+    return FACET_OK;
+}
+
 /* The request the form describes, over study_request_defaults;
  * FACET_EINPUT names the bad field by its label. */
 static int build(struct newrun_screen *s, struct study_request *r,
                  struct facet_error *err)
 {
     study_request_defaults(r);
-    const char *path = s->field[F_SURFACE].text;
-    if (path[0] == '\0')
-        return facet_error_set(err, FACET_EINPUT, "name the surface's OBJ "
-                               "file");
-    if (access(path, R_OK) != 0)
-        return facet_error_set(err, FACET_EINPUT, "%s: cannot read it",
-                               path);
-    r->surface_path = path;
+    int rc = surfaces(s, r, err);
+    if (rc != FACET_OK)
+        return rc;
     r->name = s->field[F_NAME].text;
-    int rc = mesh_units_parse(s->field[F_UNITS].text, field_label[F_UNITS],
-                              &r->mesh.units, err);
+    rc = mesh_units_parse(s->field[F_UNITS].text, field_label[F_UNITS],
+                          &r->mesh.units, err);
     struct optimize_settings *o = &r->settings;
-    if (rc == FACET_OK)
+    if (rc == FACET_OK && r->nfiles > 0)
+        rc = study_project_space(&r->module, &o->space, err);
+    if (rc == FACET_OK && r->nfiles == 0)
         rc = design_space_parse_sides(s->field[F_U].text, field_label[F_U],
                                       &o->space.u_min, &o->space.u_max, err);
-    if (rc == FACET_OK)
+    if (rc == FACET_OK && r->nfiles == 0)
         rc = design_space_parse_sides(s->field[F_V].text, field_label[F_V],
                                       &o->space.v_min, &o->space.v_max, err);
     if (rc == FACET_OK)
@@ -326,6 +415,11 @@ static int build(struct newrun_screen *s, struct study_request *r,
                                  &o->method, err)))
         return rc;
     if ((rc = optimize_method_check(o->method, &o->space, &form_names, err)))
+        return rc;
+    if (s->field[F_OBJECTIVES].text[0] != '\0' &&
+        (rc = objectives_parse(s->field[F_OBJECTIVES].text,
+                               field_label[F_OBJECTIVES], o->objectives,
+                               &o->nobjectives, err)))
         return rc;
     const char *seed = s->field[F_SEED].text, *stop;
     long long number;

@@ -3,6 +3,11 @@
  */
 #include "core/project/project_grids.h"
 
+#include <stdio.h>
+#include <string.h>
+
+#include "core/base/numrange.h"
+#include "core/panel/panel.h"
 #include "core/project/module.h"
 
 void project_module_grids(const struct project *project, double w, double h,
@@ -50,4 +55,49 @@ size_t surface_grids_cells(const struct surface_grid *grids, size_t n)
     for (size_t i = 0; i < n; i++)
         cells += (size_t)grids[i].nu * (size_t)grids[i].nv;
     return cells;
+}
+
+int surface_grid_overrides_parse(const char *text, const char *what,
+                                 struct surface_grid_overrides *out,
+                                 struct facet_error *err)
+{
+    out->n = 0;
+    if (strlen(text) >= sizeof out->text)
+        return facet_error_set(err, FACET_EINPUT, "%s: too long", what);
+    snprintf(out->text, sizeof out->text, "%s", text);
+    if (out->text[0] == '\0')
+        return FACET_OK;
+    for (char *item = out->text; item != NULL;) {
+        char *next = strchr(item, ',');
+        if (next != NULL)
+            *next++ = '\0';
+        char *equals = strrchr(item, '=');
+        if (equals == NULL || equals == item ||
+            out->n == SURFACE_GRID_OVERRIDES_MAX)
+            return facet_error_set(err, FACET_EINPUT,
+                "%s: '%s' is not NAME=NUxNV (e.g. roof_3=12x40)", what,
+                item);
+        *equals = '\0';
+        char named[200];
+        snprintf(named, sizeof named, "%.40s %.140s", what, item);
+        int nu, nv, rc = numrange_grid(equals + 1, PANEL_MAX_GRID, named,
+                                       &nu, &nv, err);
+        if (rc != FACET_OK)
+            return rc;
+        out->name[out->n] = item;
+        out->grid[out->n++] = (struct surface_grid){nu, nv};
+        item = next;
+    }
+    return FACET_OK;
+}
+
+void surface_grid_overrides_copy(struct surface_grid_overrides *to,
+                                 const struct surface_grid_overrides *from)
+{
+    memcpy(to->text, from->text, sizeof to->text);
+    to->n = from->n;
+    for (size_t k = 0; k < from->n; k++) {
+        to->name[k] = to->text + (from->name[k] - from->text);
+        to->grid[k] = from->grid[k];
+    }
 }

@@ -21,11 +21,36 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "core/base/error.h"
 #include "core/project/project.h"
 
 struct surface_grid {
     int nu, nv;  /* panels along u and along v */
 };
+
+/* Surfaces of a project given a grid of their own whatever the module,
+ * by name, as a user writes them: "roof_3=12x40,canopy=8x8" (a name may
+ * hold '=', the last one parts it from the grid). The names point into
+ * text, the struct's own copy of what was parsed: copy the struct with
+ * surface_grid_overrides_copy, never by assignment. */
+#define SURFACE_GRID_OVERRIDES_MAX 256
+struct surface_grid_overrides {
+    char text[4096];
+    char *name[SURFACE_GRID_OVERRIDES_MAX];
+    struct surface_grid grid[SURFACE_GRID_OVERRIDES_MAX];
+    size_t n;
+};
+
+/* Parses text (above) into *out; "" gives none. Each grid is
+ * numrange_grid's NUxNV, at most PANEL_MAX_GRID a side. FACET_EINPUT
+ * names what (the caller's word for the setting) and the item. */
+int surface_grid_overrides_parse(const char *text, const char *what,
+                                 struct surface_grid_overrides *out,
+                                 struct facet_error *err);
+
+/* *to as a copy of *from, its names pointing into to's text. */
+void surface_grid_overrides_copy(struct surface_grid_overrides *to,
+                                 const struct surface_grid_overrides *from);
 
 /* The grid of every surface of project (prepared: its u and v lengths)
  * for the module w x h (m, positive) into grids[0 .. nsurfaces). */

@@ -132,7 +132,7 @@ set_field "$H_KINK" "$KINK"
 check "  ... and the fields scrolled with the focus, one up" '^\^Units'
 check "  ... the more below marked" '^vMax kink \(deg\) +1\.3'
 
-keys Down
+down 4  # the module, the surface grids and the objectives on the way
 set_field "$H_NAME" 'costs from the form'
 check "the form counts the run (3 x 3 x 3 = 27)" 'F5 starts: 27 options \(exhaustive\)'
 keys F5
@@ -254,15 +254,15 @@ check "(the form, 80x18)" '^ New run into costs\.db'
 check "(its first field)" '^ Surface \(OBJ\)'
 keys Up
 check "(Up from the first field goes to Name)" '^ optional'
-if screen | sed -n 12p | grep -qE '^ Max kink \(deg\)( |$)' &&
+if screen | sed -n 12p | grep -qE '^ Objectives( |$)' &&
     screen | sed -n 13p | grep -qE '^ Name *$' &&
     screen | sed -n 15p | grep -q '^ optional'; then
-    pass "the fields scroll: Name on the last row of them, the as-built fields above, its hint under"
+    pass "the fields scroll: Name on the last row of them, the objectives above, its hint under"
 else
-    echo "not ok - the fields scroll: Name on the last row of them, the as-built fields above, its hint under"
+    echo "not ok - the fields scroll: Name on the last row of them, the objectives above, its hint under"
     screen | sed 's/^/  screen: /'
 fi
 check_not "  ... and the first fields scrolled away" '^ Surface \(OBJ\)'
-check_line "  ... marked as more above" 3 '^\^SP priced as FP'
+check_line "  ... marked as more above" 3 '^\^Joint cost USD/m'
 keys F10
 check_exit "(F10 quits, 80x18)"

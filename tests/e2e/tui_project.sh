@@ -235,3 +235,46 @@ keys ']'
 check "] says a single surface has no other" "a single surface's option has no other surface"
 keys F10
 check_exit "the workbench quits cleanly (single surface)"
+
+# Issue 31 item 4: the New run form starts a building's run: two files,
+# comma-separated, a module range in place of U and V, a surface's own
+# grid and the objectives. The truth is sqlite3's reading of what it
+# stored, against the closed form of the module range (1, 1.5, 2 m each
+# way: 9 options) and against facet optimize given the same settings.
+q2() { sqlite3 -batch "$WORK/$1" "$2"; }
+"$FACET" optimize "$WORK/plane.obj" "$WORK/dome.obj" --db "$WORK/cli.db" \
+    --module 1:2:0.5x1:2:0.5 --grid dome=6x6 --objectives cost,moulds \
+    --table 0 >/dev/null 2>&1 || echo "not ok - the CLI's building run"
+"$FACET" optimize "$WORK/plane.obj" --db "$WORK/form.db" --u 4:5 --v 4:5 \
+    --table 0 >/dev/null 2>&1 || exit 1
+start 100 30 -- form.db
+check "the form's store: its first run" '^ +1 done'
+keys F7
+check "F7 opens the New run form" "^ New run into"
+keys C-u "plane.obj, dome.obj" F5
+check "two files and no module: not started, the module asked for" \
+    "a building of 2 files needs a panel module: give Module W x H \(m\)"
+keys Up Up Up Up C-u "1:2:0.5x1:2:0.5"
+check "a module range: the estimate counts its 3 x 3 options" "F5 starts: 9 options"
+keys Down C-u "dome=6x6" Down C-u "cost,moulds" F5
+check "F5 starts the building's run and opens its table, headed W and H" \
+    "^ Run 2 plane\.obj .*done \| 9 options"
+keys F10
+check_exit "the workbench quits cleanly (a building from the form)"
+expect_same() {
+    if [ "$2" = "$3" ]; then pass "$1 ($2)"; else echo "not ok - $1: '$2' against '$3'"; fi
+}
+expect_same "the form's run records the objectives" \
+    "$(q2 form.db "select objectives from runs where id = 2")" "cost,moulds"
+expect_same "... the module range (1 to 2 m by 0.5, each way)" \
+    "$(q2 form.db "select module_w_min || ':' || module_w_max || ':' || module_w_step || 'x' || module_h_min || ':' || module_h_max || ':' || module_h_step from runs where id = 2")" \
+    "1.0:2.0:0.5x1.0:2.0:0.5"
+expect_same "... its two surfaces, the dome on a grid of its own" \
+    "$(q2 form.db "select group_concat(name || ':' || coalesce(grid_nu || 'x' || grid_nv, '-'), ' ') from (select * from surfaces where run = 2 order by surface)")" \
+    "plane:- dome:6x6"
+expect_same "... one option per module, the closed form's 3 x 3" \
+    "$(q2 form.db "select count(*) || ' ' || count(distinct module_w) || ' ' || count(distinct module_h) from options where run = 2")" \
+    "9 3 3"
+expect_same "... the same options, costs and moulds as facet optimize with the same settings" \
+    "$(q2 form.db "select group_concat(printf('%.1f %.1f %.6f %d', module_w, module_h, cost, moulds), ';') from (select * from options where run = 2 order by module_w, module_h)")" \
+    "$(q2 cli.db "select group_concat(printf('%.1f %.1f %.6f %d', module_w, module_h, cost, moulds), ';') from (select * from options where run = 1 order by module_w, module_h)")"
