@@ -105,6 +105,9 @@
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 #include "core/surface/curvature.h"
 #include "core/base/linalg.h"
@@ -183,6 +186,8 @@ struct workspace {
     double *local;      /* 3 x POINTS_MAX: their frame coordinates */
     double *weighted;   /* TERMS_MAX x POINTS_MAX: their weighted monomials */
     double *fitted;     /* TERMS_MAX x POINTS_MAX: those of a fit's terms */
+    double *height;     /* POINTS_MAX: a pass's heights less the excess */
+    double *slope;      /* 3 x POINTS_MAX: the excess's derivative by c */
 };
 
 /* A local orthonormal frame: tangents t1, t2 and normal n, world coords. */
@@ -446,6 +451,8 @@ struct hood {
                          * (kept for the osculating passes, which would
                          * otherwise take them again, to the same bits) */
     double *fitted;     /* TERMS_MAX x count: those of the fit's terms */
+    double *height;     /* count: the last pass's heights less the excess */
+    double *slope;      /* 3 x count: and the excess's derivative by c */
 };
 
 /* Prepares the count points (centre first) of ws->points into *h, in ws's
@@ -474,6 +481,8 @@ static int hood_prepare(const struct mesh *mesh, size_t count,
     h->local = ws->local;
     h->weighted = ws->weighted;
     h->fitted = ws->fitted;
+    h->height = ws->height;
+    h->slope = ws->slope;
     for (size_t i = 1; i < count; i++) {
         double *d = ws->offset + 3 * i;
         double r2 = vec3_dot(d, d);
@@ -628,6 +637,32 @@ struct model {
     double factor[TERMS_MAX * TERMS_MAX];
 };
 
+/* linalg_cholesky_factor of the n x n normal equations a (row stride
+ * TERMS_MAX), inlined for the quadric's and the cubic's constant sizes so
+ * that its loops unroll: the same operations in the same order, so the
+ * same bits. */
+static int cholesky_factor(int n, const double *a, double tol, double *l)
+{
+    if (n == 5)
+        return linalg_cholesky_factor(5, TERMS_MAX, a, tol, l);
+    if (n == TERMS_MAX)
+        return linalg_cholesky_factor(TERMS_MAX, TERMS_MAX, a, tol, l);
+    return linalg_cholesky_factor(n, TERMS_MAX, a, tol, l);
+}
+
+/* linalg_cholesky_apply, inlined as cholesky_factor is: each pass of the
+ * osculating correction ends in one, a chain of divisions. */
+static void cholesky_apply(int n, const double *l, const double *b,
+                           double *x)
+{
+    if (n == 5)
+        linalg_cholesky_apply(5, l, b, x);
+    else if (n == TERMS_MAX)
+        linalg_cholesky_apply(TERMS_MAX, l, b, x);
+    else
+        linalg_cholesky_apply(n, l, b, x);
+}
+
 /* Whether the model is the quadric with gradient, the first five terms
  * (most vertices' fit, whose passes are written out). */
 static int model_is_quadric(const struct model *model)
@@ -647,8 +682,7 @@ static int model_factor(struct model *model, const double *ata)
             a[r * TERMS_MAX + s] = p >= q ? ata[p * TERMS_MAX + q]
                                           : ata[q * TERMS_MAX + p];
         }
-    return linalg_cholesky_factor(model->n, TERMS_MAX, a, FIT_PIVOT_TOL,
-                                  model->factor);
+    return cholesky_factor(model->n, a, FIT_PIVOT_TOL, model->factor);
 }
 
 /* The monomial coefficients coef (those not in the model 0) for the
@@ -657,7 +691,7 @@ static void model_apply(const struct model *model, const double *rhs,
                         double *coef)
 {
     double x[TERMS_MAX];
-    linalg_cholesky_apply(model->n, model->factor, rhs, x);
+    cholesky_apply(model->n, model->factor, rhs, x);
     memset(coef, 0, TERMS_MAX * sizeof(double));
     for (int r = 0; r < model->n; r++)
         coef[model->term[r]] = x[r];
@@ -673,6 +707,77 @@ static void model_solve(const struct model *model, const double *b,
     model_apply(model, rhs, coef);
 }
 
+/* The heights of h's points less the osculating excess of c, into
+ * h->height, and when slope the excess's derivative by c into h->slope
+ * (3 a point): osculating_excess at every point. Two points at a time
+ * where the machine has SSE2 (every x86-64): its square roots and
+ * divisions, most of a pass's time, are correctly rounded as the scalar
+ * ones are, and every other operation is the same product or sum in the
+ * same order, so each point's numbers are osculating_excess's to the bit
+ * (tests/tools/curvature_bits.sh compares builds). */
+static void excess_heights(const struct hood *h, const double *c, int slope)
+{
+    size_t i = 1;
+#if defined(__SSE2__)
+    const __m128d c0x2 = _mm_set1_pd(2 * c[0]), c1 = _mm_set1_pd(c[1]);
+    const __m128d c2x2 = _mm_set1_pd(2 * c[2]);
+    const __m128d one = _mm_set1_pd(1), half = _mm_set1_pd(0.5);
+    const __m128d two = _mm_set1_pd(2), four = _mm_set1_pd(4);
+    const __m128d pmax = _mm_set1_pd(EXCESS_P_MAX);
+    for (; i + 1 < h->count; i += 2) {
+        const double *l = h->local + 3 * i;
+        __m128d x = _mm_set_pd(l[3], l[0]), y = _mm_set_pd(l[4], l[1]);
+        __m128d z = _mm_set_pd(l[5], l[2]);
+        __m128d sx = _mm_add_pd(_mm_mul_pd(c0x2, x), _mm_mul_pd(c1, y));
+        __m128d sy = _mm_add_pd(_mm_mul_pd(c1, x), _mm_mul_pd(c2x2, y));
+        __m128d q = _mm_add_pd(_mm_mul_pd(x, sx), _mm_mul_pd(y, sy));
+        __m128d p = _mm_add_pd(_mm_mul_pd(sx, sx), _mm_mul_pd(sy, sy));
+        __m128d clamped = _mm_cmpgt_pd(p, pmax);
+        p = _mm_or_pd(_mm_and_pd(clamped, pmax), _mm_andnot_pd(clamped, p));
+        __m128d root = _mm_sqrt_pd(_mm_sub_pd(one, p));
+        __m128d lift = _mm_div_pd(one, _mm_add_pd(one, root));
+        /* q / 2 is q * 0.5 to the bit, and cheaper */
+        __m128d excess = _mm_sub_pd(_mm_mul_pd(q, lift), _mm_mul_pd(q, half));
+        double out[2];
+        _mm_storeu_pd(out, _mm_sub_pd(z, excess));
+        h->height[i] = out[0];
+        h->height[i + 1] = out[1];
+        if (!slope)
+            continue;
+        __m128d by_q = _mm_sub_pd(lift, half);
+        __m128d by_p = _mm_div_pd(_mm_mul_pd(_mm_mul_pd(q, lift), lift),
+                                  _mm_mul_pd(two, root));
+        by_p = _mm_andnot_pd(clamped, by_p);
+        __m128d q2 = _mm_mul_pd(by_q, two);
+        __m128d p4 = _mm_mul_pd(by_p, four), p2 = _mm_mul_pd(by_p, two);
+        __m128d g0 = _mm_add_pd(_mm_mul_pd(_mm_mul_pd(q2, x), x),
+                                _mm_mul_pd(_mm_mul_pd(p4, x), sx));
+        __m128d g1 = _mm_add_pd(
+            _mm_mul_pd(_mm_mul_pd(q2, x), y),
+            _mm_mul_pd(p2, _mm_add_pd(_mm_mul_pd(sx, y), _mm_mul_pd(sy, x))));
+        __m128d g2 = _mm_add_pd(_mm_mul_pd(_mm_mul_pd(q2, y), y),
+                                _mm_mul_pd(_mm_mul_pd(p4, y), sy));
+        double *g = h->slope + 3 * i;
+        double lo[2], mid[2], hi[2];
+        _mm_storeu_pd(lo, g0);
+        _mm_storeu_pd(mid, g1);
+        _mm_storeu_pd(hi, g2);
+        g[0] = lo[0];
+        g[1] = mid[0];
+        g[2] = hi[0];
+        g[3] = lo[1];
+        g[4] = mid[1];
+        g[5] = hi[1];
+    }
+#endif
+    for (; i < h->count; i++) {
+        const double *l = h->local + 3 * i;
+        h->height[i] = l[2] - osculating_excess(c, l[0], l[1],
+                                                slope ? h->slope + 3 * i
+                                                      : NULL);
+    }
+}
+
 /* The sums of one pass of the osculating correction (see excess_pass),
  * for a model of n terms whose weighted monomials are h->fitted: rhs[0]
  * of the heights less the excess of c, rhs[1..3] (when slope) of the
@@ -683,12 +788,11 @@ static inline void excess_sums(const struct hood *h, int n, const double *c,
 {
     double b0[TERMS_MAX] = {0}, b1[TERMS_MAX] = {0};
     double b2[TERMS_MAX] = {0}, b3[TERMS_MAX] = {0};
+    excess_heights(h, c, slope);
     for (size_t i = 1; i < h->count; i++) {
-        const double *l = h->local + 3 * i;
         const double *wm = h->fitted + n * i;
-        double grad[3];
-        double z = l[2] - osculating_excess(c, l[0], l[1],
-                                            slope ? grad : NULL);
+        const double *grad = h->slope + 3 * i;
+        double z = h->height[i];
         for (int r = 0; r < n; r++)
             b0[r] += wm[r] * z;
         if (slope)
@@ -712,12 +816,11 @@ static inline void excess_sums5_of(const struct hood *h, const double *c,
 {
     double b0 = 0, b1 = 0, b2 = 0, b3 = 0, b4 = 0;
     double s[3][5] = {{0}};
+    excess_heights(h, c, slope);
     for (size_t i = 1; i < h->count; i++) {
-        const double *l = h->local + 3 * i;
         const double *wm = h->weighted + TERMS_MAX * i;
-        double grad[3];
-        double z = l[2] - osculating_excess(c, l[0], l[1],
-                                            slope ? grad : NULL);
+        const double *grad = h->slope + 3 * i;
+        double z = h->height[i];
         b0 += wm[0] * z;
         b1 += wm[1] * z;
         b2 += wm[2] * z;
@@ -769,8 +872,15 @@ static void excess_pass(const struct hood *h, const struct model *model,
         return;
     }
     double x[4][TERMS_MAX];
-    linalg_cholesky_apply_many(model->n, model->factor, 4, TERMS_MAX,
-                               rhs[0], x[0]);
+    if (model->n == 5)
+        linalg_cholesky_apply_many(5, model->factor, 4, TERMS_MAX, rhs[0],
+                                   x[0]);
+    else if (model->n == TERMS_MAX)
+        linalg_cholesky_apply_many(TERMS_MAX, model->factor, 4, TERMS_MAX,
+                                   rhs[0], x[0]);
+    else
+        linalg_cholesky_apply_many(model->n, model->factor, 4, TERMS_MAX,
+                                   rhs[0], x[0]);
     memset(next, 0, TERMS_MAX * sizeof(double));
     memset(slope, 0, 3 * TERMS_MAX * sizeof(double));
     for (int r = 0; r < model->n; r++) {
@@ -834,7 +944,7 @@ static int fit(const struct hood *h, const struct frame *f, int nterms_max,
     int thin = 0, probed = 0;
     double probe[5 * 5];
     if (nterms_max >= 5 && count > 5) {
-        thin = !linalg_cholesky_factor(5, TERMS_MAX, ata, FIT_THIN_TOL, probe);
+        thin = !cholesky_factor(5, ata, FIT_THIN_TOL, probe);
         probed = !thin;
     }
     if (thin) {
@@ -1366,11 +1476,14 @@ static int estimate(const struct mesh *mesh, int flip_normals, int jobs,
         job[made].ws.weighted =
             malloc(TERMS_MAX * POINTS_MAX * sizeof(double));
         job[made].ws.fitted = malloc(TERMS_MAX * POINTS_MAX * sizeof(double));
+        job[made].ws.height = malloc(POINTS_MAX * sizeof(double));
+        job[made].ws.slope = malloc(3 * POINTS_MAX * sizeof(double));
         if (!job[made].ws.mark || !job[made].ws.taken ||
             !job[made].ws.points ||
             !job[made].ws.offset || !job[made].ws.weight ||
             !job[made].ws.local || !job[made].ws.weighted ||
-            !job[made].ws.fitted) {
+            !job[made].ws.fitted || !job[made].ws.height ||
+            !job[made].ws.slope) {
             free(job[made].ws.mark);
             free(job[made].ws.taken);
             free(job[made].ws.points);
@@ -1379,6 +1492,8 @@ static int estimate(const struct mesh *mesh, int flip_normals, int jobs,
             free(job[made].ws.local);
             free(job[made].ws.weighted);
             free(job[made].ws.fitted);
+            free(job[made].ws.height);
+            free(job[made].ws.slope);
             rc = facet_error_set(err, FACET_EWORK,
                                  "curvature: out of memory for %zu "
                                  "vertices", nv);
@@ -1402,6 +1517,8 @@ static int estimate(const struct mesh *mesh, int flip_normals, int jobs,
         free(job[k].ws.local);
         free(job[k].ws.weighted);
         free(job[k].ws.fitted);
+        free(job[k].ws.height);
+        free(job[k].ws.slope);
     }
     return rc;
 }
