@@ -504,50 +504,14 @@ static inline void local_coordinates(const double *d, const struct frame *f,
 }
 
 /* The monomials of the fit at the scaled point (x, y), in term order:
- * x^2 xy y^2 | x y | x^3 x^2y xy^2 y^3. */
-static void monomials(double x, double y, double *m)
-{
-    m[0] = x * x;
-    m[1] = x * y;
-    m[2] = y * y;
-    m[3] = x;
-    m[4] = y;
-    m[5] = x * x * x;
-    m[6] = x * x * y;
-    m[7] = x * y * y;
-    m[8] = y * y * y;
-}
+ * x^2 xy y^2 | x y | x^3 x^2y xy^2 y^3, each the product in that order
+ * (x^2 y is (x x) y), as normal_equations5 and normal_equations_cubic
+ * take them. */
 
-/* The weighted normal equations of the first nterms monomials over h's
- * points at their coordinates in h->local: ata's lower triangle (row
- * stride TERMS_MAX) and atb; each point's weighted monomials into
- * h->weighted. Inlined for the cubic's constant nterms, so that its
- * loops unroll. */
-static inline void normal_equations_of(const struct hood *h, int nterms,
-                                       double *ata, double *atb)
-{
-    /* Sums in locals, which no store through h's pointers can alias, so
-     * that they stay in registers. */
-    double a[TERMS_MAX * TERMS_MAX] = {0}, b[TERMS_MAX] = {0};
-    for (size_t i = 1; i < h->count; i++) {
-        const double *l = h->local + 3 * i;
-        double w = h->weight[i], m[TERMS_MAX], wm[TERMS_MAX];
-        monomials(l[0], l[1], m);
-        for (int r = 0; r < nterms; r++) {
-            wm[r] = w * m[r];
-            b[r] += wm[r] * l[2];
-            for (int s = 0; s <= r; s++)
-                a[r * TERMS_MAX + s] += wm[r] * m[s];
-        }
-        memcpy(h->weighted + TERMS_MAX * i, wm, nterms * sizeof(double));
-    }
-    memcpy(ata, a, sizeof a);
-    memcpy(atb, b, sizeof b);
-}
-
-/* normal_equations_of for the quadric with gradient, most vertices' fit,
- * written out so that its 20 sums stay in registers: the same products
- * summed in the same order, so the same to the bit. */
+/* The rows of the quadric with gradient (most vertices' fit) of
+ * normal_equations, in frame f (the points' coordinates into h->local in
+ * the same loop) or, when f is NULL, at those h->local holds; written out
+ * so that its 20 sums stay in registers. */
 static void normal_equations5(const struct hood *h, const struct frame *f,
                               double *ata, double *atb)
 {
@@ -613,20 +577,105 @@ static void normal_equations5(const struct hood *h, const struct frame *f,
     atb[4] = b4;
 }
 
-/* normal_equations_of for nterms 5 or TERMS_MAX, of h's points in frame f
- * (their coordinates into h->local first) or, when f is NULL, at the
- * coordinates h->local holds. */
+/* The rows of the cubic's terms (x^3 x^2y xy^2 y^3) of normal_equations,
+ * of the points at h->local, into ata and atb, whose first five rows
+ * normal_equations5 gave; written out in two loops of fewer sums than
+ * registers (one loop of all 54 kept them in memory). */
+static void normal_equations_cubic(const struct hood *h, double *ata,
+                                   double *atb)
+{
+    double a50 = 0, a51 = 0, a52 = 0, a53 = 0, a54 = 0, a55 = 0;
+    double a60 = 0, a61 = 0, a62 = 0, a63 = 0, a64 = 0, a65 = 0, a66 = 0;
+    double b5 = 0, b6 = 0;
+    for (size_t i = 1; i < h->count; i++) {
+        const double *l = h->local + 3 * i;
+        double x = l[0], y = l[1], z = l[2], w = h->weight[i];
+        double m0 = x * x, m1 = x * y, m2 = y * y, m3 = x, m4 = y;
+        double m5 = x * x * x, m6 = x * x * y;
+        double w5 = w * m5, w6 = w * m6;
+        double *wm = h->weighted + TERMS_MAX * i;
+        wm[5] = w5;
+        wm[6] = w6;
+        b5 += w5 * z;
+        a50 += w5 * m0;
+        a51 += w5 * m1;
+        a52 += w5 * m2;
+        a53 += w5 * m3;
+        a54 += w5 * m4;
+        a55 += w5 * m5;
+        b6 += w6 * z;
+        a60 += w6 * m0;
+        a61 += w6 * m1;
+        a62 += w6 * m2;
+        a63 += w6 * m3;
+        a64 += w6 * m4;
+        a65 += w6 * m5;
+        a66 += w6 * m6;
+    }
+    double a70 = 0, a71 = 0, a72 = 0, a73 = 0, a74 = 0, a75 = 0, a76 = 0;
+    double a77 = 0, a80 = 0, a81 = 0, a82 = 0, a83 = 0, a84 = 0, a85 = 0;
+    double a86 = 0, a87 = 0, a88 = 0, b7 = 0, b8 = 0;
+    for (size_t i = 1; i < h->count; i++) {
+        const double *l = h->local + 3 * i;
+        double x = l[0], y = l[1], z = l[2], w = h->weight[i];
+        double m0 = x * x, m1 = x * y, m2 = y * y, m3 = x, m4 = y;
+        double m5 = x * x * x, m6 = x * x * y, m7 = x * y * y;
+        double m8 = y * y * y;
+        double w7 = w * m7, w8 = w * m8;
+        double *wm = h->weighted + TERMS_MAX * i;
+        wm[7] = w7;
+        wm[8] = w8;
+        b7 += w7 * z;
+        a70 += w7 * m0;
+        a71 += w7 * m1;
+        a72 += w7 * m2;
+        a73 += w7 * m3;
+        a74 += w7 * m4;
+        a75 += w7 * m5;
+        a76 += w7 * m6;
+        a77 += w7 * m7;
+        b8 += w8 * z;
+        a80 += w8 * m0;
+        a81 += w8 * m1;
+        a82 += w8 * m2;
+        a83 += w8 * m3;
+        a84 += w8 * m4;
+        a85 += w8 * m5;
+        a86 += w8 * m6;
+        a87 += w8 * m7;
+        a88 += w8 * m8;
+    }
+    enum { S = TERMS_MAX };
+    const double row5[6] = {a50, a51, a52, a53, a54, a55};
+    const double row6[7] = {a60, a61, a62, a63, a64, a65, a66};
+    const double row7[8] = {a70, a71, a72, a73, a74, a75, a76, a77};
+    const double row8[9] = {a80, a81, a82, a83, a84, a85, a86, a87, a88};
+    memcpy(ata + 5 * S, row5, sizeof row5);
+    memcpy(ata + 6 * S, row6, sizeof row6);
+    memcpy(ata + 7 * S, row7, sizeof row7);
+    memcpy(ata + 8 * S, row8, sizeof row8);
+    atb[5] = b5;
+    atb[6] = b6;
+    atb[7] = b7;
+    atb[8] = b8;
+}
+
+/* The weighted normal equations of the first nterms (5 or TERMS_MAX)
+ * monomials (monomials' order) of h's points, in frame f (their
+ * coordinates into h->local) or, when f is NULL, at the coordinates
+ * h->local holds: ata's lower triangle (row stride TERMS_MAX), each
+ * a[r][s] the sum over the points in order of (w m_r) m_s, and atb, b[r]
+ * that of (w m_r) z; each point's weighted monomials w m_r into
+ * h->weighted. Every sum is taken in that order, one product at a time,
+ * whichever loop takes it, so its bits do not depend on how the loops are
+ * written (the pinned values hold them). */
 static void normal_equations(const struct hood *h, const struct frame *f,
                              int nterms, double *ata, double *atb)
 {
     assert(nterms == 5 || nterms == TERMS_MAX);
-    if (nterms == 5) {  /* in the same loop: the points are read once */
-        normal_equations5(h, f, ata, atb);
-        return;
-    }
-    for (size_t i = 1; f && i < h->count; i++)
-        local_coordinates(h->offset + 3 * i, f, h->local + 3 * i);
-    normal_equations_of(h, TERMS_MAX, ata, atb);
+    normal_equations5(h, f, ata, atb);
+    if (nterms == TERMS_MAX)
+        normal_equations_cubic(h, ata, atb);
 }
 
 /* A fit's terms, which monomials (indices into the term order) and how
