@@ -857,47 +857,90 @@ static inline void excess_sums(const struct hood *h, int n, const double *c,
     memcpy(rhs[3], b3, sizeof b3);
 }
 
-/* excess_sums of the quadric with gradient (its terms the first five, so
- * its weighted monomials those of h->weighted), written out so that its
- * sums stay in registers; the same to the bit. */
-static inline void excess_sums5_of(const struct hood *h, const double *c,
-                                   int slope, double (*rhs)[TERMS_MAX])
+/* The sums over h's points of wm[r] v (subtract: their negation, taken
+ * as 0 - wm[0] v - wm[1] v ..., the order excess_sums takes), r < 5, for
+ * the weighted monomials wm of the quadric with gradient (h->weighted)
+ * and the values v at value + stride * i; into out. One loop a row of
+ * sums, so that they stay in registers. */
+static inline void sums5(const struct hood *h, const double *value,
+                         size_t stride, int subtract, double *out)
 {
-    double b0 = 0, b1 = 0, b2 = 0, b3 = 0, b4 = 0;
-    double s[3][5] = {{0}};
-    excess_heights(h, c, slope);
+    double s0 = 0, s1 = 0, s2 = 0, s3 = 0, s4 = 0;
     for (size_t i = 1; i < h->count; i++) {
         const double *wm = h->weighted + TERMS_MAX * i;
-        const double *grad = h->slope + 3 * i;
-        double z = h->height[i];
-        b0 += wm[0] * z;
-        b1 += wm[1] * z;
-        b2 += wm[2] * z;
-        b3 += wm[3] * z;
-        b4 += wm[4] * z;
-        if (slope)
-            for (int j = 0; j < 3; j++)
-                for (int r = 0; r < 5; r++)
-                    s[j][r] -= wm[r] * grad[j];
+        double v = value[stride * i];
+        if (subtract) {
+            s0 -= wm[0] * v;
+            s1 -= wm[1] * v;
+            s2 -= wm[2] * v;
+            s3 -= wm[3] * v;
+            s4 -= wm[4] * v;
+        } else {
+            s0 += wm[0] * v;
+            s1 += wm[1] * v;
+            s2 += wm[2] * v;
+            s3 += wm[3] * v;
+            s4 += wm[4] * v;
+        }
     }
-    rhs[0][0] = b0;
-    rhs[0][1] = b1;
-    rhs[0][2] = b2;
-    rhs[0][3] = b3;
-    rhs[0][4] = b4;
-    for (int j = 0; slope && j < 3; j++)
-        memcpy(rhs[j + 1], s[j], sizeof s[j]);
+    out[0] = s0;
+    out[1] = s1;
+    out[2] = s2;
+    out[3] = s3;
+    out[4] = s4;
 }
 
-/* excess_sums5_of for each constant slope, so that the excess inlines
- * into a loop that takes its derivative or not. */
-static void excess_sums5(const struct hood *h, const double *c, int slope,
-                         double (*rhs)[TERMS_MAX])
+/* sums5 for the cubic jet, whose weighted monomials are h->fitted (all
+ * TERMS_MAX of them a point). */
+static inline void sums9(const struct hood *h, const double *value,
+                         size_t stride, int subtract, double *out)
 {
-    if (slope)
-        excess_sums5_of(h, c, 1, rhs);
-    else
-        excess_sums5_of(h, c, 0, rhs);
+    double s0 = 0, s1 = 0, s2 = 0, s3 = 0, s4 = 0, s5 = 0, s6 = 0, s7 = 0;
+    double s8 = 0;
+    for (size_t i = 1; i < h->count; i++) {
+        const double *wm = h->fitted + TERMS_MAX * i;
+        double v = value[stride * i];
+        if (subtract) {
+            s0 -= wm[0] * v;
+            s1 -= wm[1] * v;
+            s2 -= wm[2] * v;
+            s3 -= wm[3] * v;
+            s4 -= wm[4] * v;
+            s5 -= wm[5] * v;
+            s6 -= wm[6] * v;
+            s7 -= wm[7] * v;
+            s8 -= wm[8] * v;
+        } else {
+            s0 += wm[0] * v;
+            s1 += wm[1] * v;
+            s2 += wm[2] * v;
+            s3 += wm[3] * v;
+            s4 += wm[4] * v;
+            s5 += wm[5] * v;
+            s6 += wm[6] * v;
+            s7 += wm[7] * v;
+            s8 += wm[8] * v;
+        }
+    }
+    const double sum[TERMS_MAX] = {s0, s1, s2, s3, s4, s5, s6, s7, s8};
+    memcpy(out, sum, sizeof sum);
+}
+
+/* excess_sums of the quadric with gradient (its terms the first five, so
+ * its weighted monomials those of h->weighted) or of the cubic jet (n
+ * TERMS_MAX), by sums5 and sums9: the same to the bit. */
+static void excess_sums_of(const struct hood *h, int n, const double *c,
+                           int slope, double (*rhs)[TERMS_MAX])
+{
+    excess_heights(h, c, slope);
+    for (int j = 0; j < (slope ? 4 : 1); j++) {
+        const double *value = j == 0 ? h->height : h->slope + j - 1;
+        size_t stride = j == 0 ? 1 : 3;
+        if (n == 5)
+            sums5(h, value, stride, j > 0, rhs[j]);
+        else
+            sums9(h, value, stride, j > 0, rhs[j]);
+    }
 }
 
 /* One pass of the osculating correction (see fit): the coefficients
@@ -909,11 +952,9 @@ static void excess_pass(const struct hood *h, const struct model *model,
 {
     double rhs[4][TERMS_MAX];
     if (model_is_quadric(model))
-        excess_sums5(h, c, slope != NULL, rhs);
-    else if (model->n == TERMS_MAX && slope)
-        excess_sums(h, TERMS_MAX, c, 1, rhs);
+        excess_sums_of(h, 5, c, slope != NULL, rhs);
     else if (model->n == TERMS_MAX)
-        excess_sums(h, TERMS_MAX, c, 0, rhs);
+        excess_sums_of(h, TERMS_MAX, c, slope != NULL, rhs);
     else
         excess_sums(h, model->n, c, slope != NULL, rhs);
     if (!slope) {
