@@ -890,15 +890,15 @@ static inline void sums5(const struct hood *h, const double *value,
     out[4] = s4;
 }
 
-/* sums5 for the cubic jet, whose weighted monomials are h->fitted (all
- * TERMS_MAX of them a point). */
+/* sums5 for the cubic jet, all TERMS_MAX terms, whose weighted monomials
+ * are those of h->weighted (so model_keep has nothing to do for it). */
 static inline void sums9(const struct hood *h, const double *value,
                          size_t stride, int subtract, double *out)
 {
     double s0 = 0, s1 = 0, s2 = 0, s3 = 0, s4 = 0, s5 = 0, s6 = 0, s7 = 0;
     double s8 = 0;
     for (size_t i = 1; i < h->count; i++) {
-        const double *wm = h->fitted + TERMS_MAX * i;
+        const double *wm = h->weighted + TERMS_MAX * i;
         double v = value[stride * i];
         if (subtract) {
             s0 -= wm[0] * v;
@@ -1088,7 +1088,7 @@ static int fit(const struct hood *h, const struct frame *f, int nterms_max,
     }
     if (model.n == 0)
         return 0;
-    if (!model_is_quadric(&model))
+    if (!model_is_quadric(&model) && model.n != TERMS_MAX)
         model_keep(h, &model);
     /* The correction starts from the fit itself, or from a fit close by
      * (guess, turned), whose fit then is needed only if no pass of the
