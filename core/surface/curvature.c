@@ -514,17 +514,23 @@ static inline void local_coordinates(const double *d, const struct frame *f,
  * (x^2 y is (x x) y), as normal_equations5 and normal_equations_cubic
  * take them. */
 
+/* Two doubles operated on side by side (GCC's and clang's vector
+ * extension, SSE2 on x86-64): each lane's product or sum is the one a
+ * scalar operation gives, to the bit. */
+typedef double pair __attribute__((vector_size(2 * sizeof(double))));
+
 /* The rows of the quadric with gradient (most vertices' fit) of
  * normal_equations, in frame f (the points' coordinates into h->local in
- * the same loop) or, when f is NULL, at those h->local holds; written out
- * so that its 20 sums stay in registers. */
+ * the same loop) or, when f is NULL, at those h->local holds. Its 20 sums
+ * taken two at a time, ten pairs in registers: a pair holds two sums
+ * whose products share a factor, (a00, a10) += (w0, w1) m0 say; each
+ * lane is its sum's own product added in its own order. */
 static void normal_equations5(const struct hood *h, const struct frame *f,
                               double *ata, double *atb)
 {
-    double a00 = 0, a10 = 0, a11 = 0, a20 = 0, a21 = 0, a22 = 0;
-    double a30 = 0, a31 = 0, a32 = 0, a33 = 0;
-    double a40 = 0, a41 = 0, a42 = 0, a43 = 0, a44 = 0;
-    double b0 = 0, b1 = 0, b2 = 0, b3 = 0, b4 = 0;
+    pair a00_10 = {0, 0}, a20_30 = {0, 0}, a40_42 = {0, 0};
+    pair a11_21 = {0, 0}, a31_41 = {0, 0}, a22_32 = {0, 0};
+    pair a33_43 = {0, 0}, a44_b4 = {0, 0}, b0_1 = {0, 0}, b2_3 = {0, 0};
     for (size_t i = 1; i < h->count; i++) {
         double *l = h->local + 3 * i;
         if (f)
@@ -539,48 +545,40 @@ static void normal_equations5(const struct hood *h, const struct frame *f,
         wm[2] = w2;
         wm[3] = w3;
         wm[4] = w4;
-        b0 += w0 * z;
-        a00 += w0 * m0;
-        b1 += w1 * z;
-        a10 += w1 * m0;
-        a11 += w1 * m1;
-        b2 += w2 * z;
-        a20 += w2 * m0;
-        a21 += w2 * m1;
-        a22 += w2 * m2;
-        b3 += w3 * z;
-        a30 += w3 * m0;
-        a31 += w3 * m1;
-        a32 += w3 * m2;
-        a33 += w3 * m3;
-        b4 += w4 * z;
-        a40 += w4 * m0;
-        a41 += w4 * m1;
-        a42 += w4 * m2;
-        a43 += w4 * m3;
-        a44 += w4 * m4;
+        pair w01 = {w0, w1}, w23 = {w2, w3}, w12 = {w1, w2}, w34 = {w3, w4};
+        pair w44 = {w4, w4}, zz = {z, z};
+        a00_10 += w01 * (pair){m0, m0};
+        a20_30 += w23 * (pair){m0, m0};
+        a40_42 += w44 * (pair){m0, m2};
+        a11_21 += w12 * (pair){m1, m1};
+        a31_41 += w34 * (pair){m1, m1};
+        a22_32 += w23 * (pair){m2, m2};
+        a33_43 += w34 * (pair){m3, m3};
+        a44_b4 += w44 * (pair){m4, z};
+        b0_1 += w01 * zz;
+        b2_3 += w23 * zz;
     }
     enum { S = TERMS_MAX };
-    ata[0] = a00;
-    ata[S] = a10;
-    ata[S + 1] = a11;
-    ata[2 * S] = a20;
-    ata[2 * S + 1] = a21;
-    ata[2 * S + 2] = a22;
-    ata[3 * S] = a30;
-    ata[3 * S + 1] = a31;
-    ata[3 * S + 2] = a32;
-    ata[3 * S + 3] = a33;
-    ata[4 * S] = a40;
-    ata[4 * S + 1] = a41;
-    ata[4 * S + 2] = a42;
-    ata[4 * S + 3] = a43;
-    ata[4 * S + 4] = a44;
-    atb[0] = b0;
-    atb[1] = b1;
-    atb[2] = b2;
-    atb[3] = b3;
-    atb[4] = b4;
+    ata[0] = a00_10[0];
+    ata[S] = a00_10[1];
+    ata[S + 1] = a11_21[0];
+    ata[2 * S] = a20_30[0];
+    ata[2 * S + 1] = a11_21[1];
+    ata[2 * S + 2] = a22_32[0];
+    ata[3 * S] = a20_30[1];
+    ata[3 * S + 1] = a31_41[0];
+    ata[3 * S + 2] = a22_32[1];
+    ata[3 * S + 3] = a33_43[0];
+    ata[4 * S] = a40_42[0];
+    ata[4 * S + 1] = a31_41[1];
+    ata[4 * S + 2] = a40_42[1];
+    ata[4 * S + 3] = a33_43[1];
+    ata[4 * S + 4] = a44_b4[0];
+    atb[0] = b0_1[0];
+    atb[1] = b0_1[1];
+    atb[2] = b2_3[0];
+    atb[3] = b2_3[1];
+    atb[4] = a44_b4[1];
 }
 
 /* The rows of the cubic's terms (x^3 x^2y xy^2 y^3) of normal_equations,
