@@ -178,6 +178,28 @@ enum {
  * symmetric vertices then agree to about 1e-12 of their curvature. */
 #define NORMAL_CONVERGED 1e-10
 
+/* A local orthonormal frame: tangents t1, t2 and normal n, world coords. */
+struct frame {
+    double t1[3], t2[3], n[3];
+};
+
+/* What fit last computed of a neighbourhood in one frame, for a fit of
+ * it in the same frame (the surface normal's cubic in the final frame,
+ * after the quadric's last fit there): the first five rows of the normal
+ * equations, which the points' coordinates in h->local and their
+ * weighted monomials in h->weighted then still give, and the quadric's
+ * thin test. valid is cleared by whatever changes those coordinates
+ * (hood_prepare, a thin fit's axes). */
+struct fit_memo {
+    int valid;
+    struct frame frame;              /* the frame, to the bit */
+    double ata[5 * TERMS_MAX];  /* rows 0..4, row stride TERMS_MAX */
+    double atb[5];
+    int probed;                      /* the thin test was taken: */
+    int thin;                        /* its answer */
+    double probe[5 * 5];             /* and, if not thin, its factor */
+};
+
 /* Work buffers shared by all vertices; allocated once per call. */
 struct workspace {
     size_t nvertices;
@@ -194,11 +216,7 @@ struct workspace {
     double *fitted;     /* TERMS_MAX x POINTS_MAX: those of a fit's terms */
     double *height;     /* POINTS_MAX: a pass's heights less the excess */
     double *slope;      /* 3 x POINTS_MAX: the excess's derivative by c */
-};
-
-/* A local orthonormal frame: tangents t1, t2 and normal n, world coords. */
-struct frame {
-    double t1[3], t2[3], n[3];
+    struct fit_memo memo;  /* of the neighbourhood in these buffers */
 };
 
 /* The result of fitting w = f(x, y) in a frame, in metres: gradient
@@ -459,6 +477,7 @@ struct hood {
     double *fitted;     /* TERMS_MAX x count: those of the fit's terms */
     double *height;     /* count: the last pass's heights less the excess */
     double *slope;      /* 3 x count: and the excess's derivative by c */
+    struct fit_memo *memo;  /* what fit last computed of these points */
 };
 
 /* Prepares the count points (centre first) of ws->points into *h, in ws's
@@ -489,6 +508,8 @@ static int hood_prepare(const struct mesh *mesh, size_t count,
     h->fitted = ws->fitted;
     h->height = ws->height;
     h->slope = ws->slope;
+    h->memo = &ws->memo;
+    ws->memo.valid = 0;  /* new points, or new weights to come */
     for (size_t i = 1; i < count; i++) {
         double *d = ws->offset + 3 * i;
         double r2 = vec3_dot(d, d);
@@ -1026,7 +1047,21 @@ static int fit(const struct hood *h, const struct frame *f, int nterms_max,
     double *local = h->local;
 
     double ata[TERMS_MAX * TERMS_MAX], atb[TERMS_MAX];
-    normal_equations(h, f, nterms_max, ata, atb);
+    struct fit_memo *memo = h->memo;
+    int known = memo->valid && memcmp(&memo->frame, f, sizeof *f) == 0;
+    if (known) {  /* the same points in the same frame: the same rows */
+        memcpy(ata, memo->ata, sizeof memo->ata);
+        memcpy(atb, memo->atb, sizeof memo->atb);
+        if (nterms_max == TERMS_MAX)
+            normal_equations_cubic(h, ata, atb);
+    } else {
+        normal_equations(h, f, nterms_max, ata, atb);
+        memo->valid = 1;
+        memo->frame = *f;
+        memcpy(memo->ata, ata, sizeof memo->ata);
+        memcpy(memo->atb, atb, sizeof memo->atb);
+        memo->probed = 0;
+    }
 
     /* The leading 9, 5 and 3 terms are the fits tried in turn, unless the
      * neighbourhood is thin. */
@@ -1038,10 +1073,16 @@ static int fit(const struct hood *h, const struct frame *f, int nterms_max,
     int thin = 0, probed = 0;
     double probe[5 * 5];
     if (nterms_max >= 5 && count > 5) {
-        thin = !cholesky_factor(5, ata, FIT_THIN_TOL, probe);
+        if (!memo->probed) {
+            memo->thin = !cholesky_factor(5, ata, FIT_THIN_TOL, memo->probe);
+            memo->probed = 1;
+        }
+        thin = memo->thin;
         probed = !thin;
+        memcpy(probe, memo->probe, sizeof probe);
     }
     if (thin) {
+        memo->valid = 0;  /* h->local turns to the thin fit's axes */
         /* Principal axes of the points' spread about their centroid
          * (the centre included, weight 1). */
         double sw = 1, sx = 0, sy = 0, sxx = 0, sxy = 0, syy = 0;
