@@ -88,22 +88,25 @@
  * (vertices are independent, so the threads change nothing in the
  * result). tests/bench/bench_curvature times it against the estimator
  * before the correction (d218719): on the 100k-triangle roof, one thread,
- * about 2.0 times its time; on coarse real meshes, where nearly every fit
+ * about 1.9 times its time; on coarse real meshes, where nearly every fit
  * takes Newton steps and five or six fits per vertex, about 4 times (sum
  * of their medians). The surface normal (curvature.h: one more fit, a
- * cubic, per vertex whose fit was a quadric) is about a third of the
- * roof's time. Issue 27 asks for 1.3 times; what is left is bound by
+ * cubic, per vertex whose fit was a quadric) took the roof from 1.6 to
+ * 2.6 times when it came. Issue 27 asks for 1.3 times; what is left is bound by
  * latency and needed for these results to the bit (test_curvature_pinned,
  * tests/tools/curvature_bits.sh): the chains of divisions of the Cholesky
- * solves that end each osculating pass (about a quarter of the time: a
- * division's result feeds the next row's), and the passes themselves, a
- * square root and a division per point (two with Newton's derivative).
- * What has been taken out, each change keeping every bit: the passes
- * written out for the quadric's terms and a gather taking each face once (2.2 to 1.6 times, before the
- * surface normal took it to 2.6); the Cholesky factor and solves inlined
- * for the constant sizes 5 and 9; the excess taken two points at a time
- * (SSE2, excess_heights); the cubic's normal equations and each pass's
- * sums written as loops of fewer sums than registers (2.6 to 2.0).
+ * solves that end each osculating pass (a quarter of the time: each
+ * row's division waits for the last), and the passes themselves, a square
+ * root and a division per point (two with Newton's derivative). What has
+ * been taken out, each change keeping every bit: the passes written out
+ * for the quadric's terms and a gather taking each face once (2.2 to 1.6
+ * times, before the surface normal took it to 2.6); the Cholesky factor
+ * and solves inlined for the constant sizes 5 and 9; the excess taken two
+ * points at a time (SSE2, excess_heights); the normal equations and each
+ * pass's sums in loops of fewer sums than registers, the quadric's two
+ * at a time; a fit in the frame of the last fit of the same points
+ * taking its normal equations' first rows and thin test from a memo
+ * (2.6 to 1.9 times).
  */
 #include <assert.h>
 #include <math.h>
