@@ -491,6 +491,9 @@ static int hood_prepare(const struct mesh *mesh, size_t count,
     const double *c = mesh->position + 3 * (size_t)ws->points[0];
     double radius2 = 0;
 
+    /* New points, or new weights to come: the buffers change from here on,
+     * also when this fails (and a hood prepared before is fitted again). */
+    ws->memo.valid = 0;
     for (size_t i = 1; i < count; i++) {
         const double *p = mesh->position + 3 * (size_t)ws->points[i];
         double *d = ws->offset + 3 * i;
@@ -512,7 +515,6 @@ static int hood_prepare(const struct mesh *mesh, size_t count,
     h->height = ws->height;
     h->slope = ws->slope;
     h->memo = &ws->memo;
-    ws->memo.valid = 0;  /* new points, or new weights to come */
     for (size_t i = 1; i < count; i++) {
         double *d = ws->offset + 3 * i;
         double r2 = vec3_dot(d, d);
