@@ -5,6 +5,10 @@
  * unknowns: a Cholesky solve for the normal equations of small least-squares
  * fits, and the closed-form eigen-decomposition of a symmetric 2x2 matrix.
  * Larger problems do not belong here. (Symmetric 3x3 eigen is sym3.h.)
+ * The Cholesky factor and solves are static inline, so that a caller
+ * with a constant size gets their loops unrolled (the vertex curvature's
+ * passes, issue 27); their operations and order do not depend on it, so
+ * neither do their bits.
  */
 #ifndef FACET_LINALG_H
 #define FACET_LINALG_H
@@ -29,8 +33,8 @@ int linalg_cholesky_solve(int n, int lda, const double *a, const double *b,
  * sides: _factor writes the factor of a (as _solve tests it; returns 0 when
  * it is not safely positive definite) into l, n x n with row stride n, and
  * _apply solves l l^T x = b with it. Sizes as _solve. */
-static inline int linalg_cholesky_factor(int n, int lda, const double *a, double rel_tol,
-                           double *l)
+static inline int linalg_cholesky_factor(int n, int lda, const double *a,
+                                         double rel_tol, double *l)
 {
     /* The sizes are the caller's code, not its data: a wrong one is a
      * bug, not a matrix that fails to be positive definite. */
@@ -54,7 +58,8 @@ static inline int linalg_cholesky_factor(int n, int lda, const double *a, double
     return 1;
 }
 
-static inline void linalg_cholesky_apply(int n, const double *l, const double *b, double *x)
+static inline void linalg_cholesky_apply(int n, const double *l,
+                                         const double *b, double *x)
 {
     double y[LINALG_MAX];
     assert(n >= 1 && n <= LINALG_MAX);
@@ -78,8 +83,9 @@ static inline void linalg_cholesky_apply(int n, const double *l, const double *b
  * 1..LINALG_MAX), b + k * stride to x + k * stride for k < m: each x the
  * same to the bit as linalg_cholesky_apply's, in about the time of one,
  * as their substitutions, each a chain of divisions, overlap. */
-static inline void linalg_cholesky_apply_many(int n, const double *l, int m, int stride,
-                                const double *b, double *x)
+static inline void linalg_cholesky_apply_many(int n, const double *l, int m,
+                                              int stride, const double *b,
+                                              double *x)
 {
     double y[LINALG_MAX * LINALG_MAX];
     assert(n >= 1 && n <= LINALG_MAX && m >= 1 && m <= LINALG_MAX);

@@ -92,12 +92,13 @@
  * takes Newton steps and five or six fits per vertex, about 4 times (sum
  * of their medians). The surface normal (curvature.h: one more fit, a
  * cubic, per vertex whose fit was a quadric) took the roof from 1.6 to
- * 2.6 times when it came. Issue 27 asks for 1.3 times; what is left is bound by
- * latency and needed for these results to the bit (test_curvature_pinned,
- * tests/tools/curvature_bits.sh): the chains of divisions of the Cholesky
- * solves that end each osculating pass (a quarter of the time: each
- * row's division waits for the last), and the passes themselves, a square
- * root and a division per point (two with Newton's derivative). What has
+ * 2.6 times when it came. Issue 27 asks for 1.3 times; what is left is
+ * bound by latency and needed for these results to the bit
+ * (test_curvature_pinned, tests/tools/curvature_bits.sh): the chains of
+ * divisions of the Cholesky solves that end each osculating pass (a
+ * quarter of the time: each row's division waits for the last), and the
+ * passes themselves, a square root and a division per point (two with
+ * Newton's derivative). What has
  * been taken out, each change keeping every bit: the passes written out
  * for the quadric's terms and a gather taking each face once (2.2 to 1.6
  * times, before the surface normal took it to 2.6); the Cholesky factor
