@@ -88,16 +88,26 @@
  * (vertices are independent, so the threads change nothing in the
  * result). tests/bench/bench_curvature times it against the estimator
  * before the correction (d218719): on the 100k-triangle roof, one thread,
- * about 1.6 times its time (2.2 before the passes were written out for
- * the quadric's terms and a gather took each face once); on coarse real
- * meshes, where nearly every fit takes Newton steps and five or six fits
- * per vertex, 4 to 6 times. Most of what is left is the osculating
- * passes, a square root and a division per point each, and the chains of
- * divisions of their Cholesky solves: both bound by latency, and both
- * needed for these results to the bit (test_curvature_pinned). The
- * surface normal (curvature.h: one more fit, a cubic, per vertex whose fit
- * was a quadric) takes the roof from 1.6 to 2.6 times the baseline, the
- * coarse real meshes from 4.6 to 5.7 times (sum of their medians).
+ * about 1.9 times its time; on coarse real meshes, where nearly every fit
+ * takes Newton steps and five or six fits per vertex, about 4 times (sum
+ * of their medians). The surface normal (curvature.h: one more fit, a
+ * cubic, per vertex whose fit was a quadric) took the roof from 1.6 to
+ * 2.6 times when it came. Issue 27 asks for 1.3 times; what is left is
+ * bound by latency and needed for these results to the bit
+ * (test_curvature_pinned, tests/tools/curvature_bits.sh): the chains of
+ * divisions of the Cholesky solves that end each osculating pass (a
+ * quarter of the time: each row's division waits for the last), and the
+ * passes themselves, a square root and a division per point (two with
+ * Newton's derivative). What has
+ * been taken out, each change keeping every bit: the passes written out
+ * for the quadric's terms and a gather taking each face once (2.2 to 1.6
+ * times, before the surface normal took it to 2.6); the Cholesky factor
+ * and solves inlined for the constant sizes 5 and 9; the excess taken two
+ * points at a time (SSE2, excess_heights); the normal equations and each
+ * pass's sums in loops of fewer sums than registers, the quadric's two
+ * at a time; a fit in the frame of the last fit of the same points
+ * taking its normal equations' first rows and thin test from a memo
+ * (2.6 to 1.9 times).
  */
 #include <assert.h>
 #include <math.h>
@@ -105,6 +115,9 @@
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 #include "core/surface/curvature.h"
 #include "core/base/linalg.h"
@@ -169,6 +182,28 @@ enum {
  * symmetric vertices then agree to about 1e-12 of their curvature. */
 #define NORMAL_CONVERGED 1e-10
 
+/* A local orthonormal frame: tangents t1, t2 and normal n, world coords. */
+struct frame {
+    double t1[3], t2[3], n[3];
+};
+
+/* What fit last computed of a neighbourhood in one frame, for a fit of
+ * it in the same frame (the surface normal's cubic in the final frame,
+ * after the quadric's last fit there): the first five rows of the normal
+ * equations, which the points' coordinates in h->local and their
+ * weighted monomials in h->weighted then still give, and the quadric's
+ * thin test. valid is cleared by whatever changes those coordinates
+ * (hood_prepare, a thin fit's axes). */
+struct fit_memo {
+    int valid;
+    struct frame frame;              /* the frame, to the bit */
+    double ata[5 * TERMS_MAX];  /* rows 0..4, row stride TERMS_MAX */
+    double atb[5];
+    int probed;                      /* the thin test was taken: */
+    int thin;                        /* its answer */
+    double probe[5 * 5];             /* and, if not thin, its factor */
+};
+
 /* Work buffers shared by all vertices; allocated once per call. */
 struct workspace {
     size_t nvertices;
@@ -183,11 +218,9 @@ struct workspace {
     double *local;      /* 3 x POINTS_MAX: their frame coordinates */
     double *weighted;   /* TERMS_MAX x POINTS_MAX: their weighted monomials */
     double *fitted;     /* TERMS_MAX x POINTS_MAX: those of a fit's terms */
-};
-
-/* A local orthonormal frame: tangents t1, t2 and normal n, world coords. */
-struct frame {
-    double t1[3], t2[3], n[3];
+    double *height;     /* POINTS_MAX: a pass's heights less the excess */
+    double *slope;      /* 3 x POINTS_MAX: the excess's derivative by c */
+    struct fit_memo memo;  /* of the neighbourhood in these buffers */
 };
 
 /* The result of fitting w = f(x, y) in a frame, in metres: gradient
@@ -446,6 +479,9 @@ struct hood {
                          * (kept for the osculating passes, which would
                          * otherwise take them again, to the same bits) */
     double *fitted;     /* TERMS_MAX x count: those of the fit's terms */
+    double *height;     /* count: the last pass's heights less the excess */
+    double *slope;      /* 3 x count: and the excess's derivative by c */
+    struct fit_memo *memo;  /* what fit last computed of these points */
 };
 
 /* Prepares the count points (centre first) of ws->points into *h, in ws's
@@ -456,6 +492,9 @@ static int hood_prepare(const struct mesh *mesh, size_t count,
     const double *c = mesh->position + 3 * (size_t)ws->points[0];
     double radius2 = 0;
 
+    /* New points, or new weights to come: the buffers change from here on,
+     * also when this fails (and a hood prepared before is fitted again). */
+    ws->memo.valid = 0;
     for (size_t i = 1; i < count; i++) {
         const double *p = mesh->position + 3 * (size_t)ws->points[i];
         double *d = ws->offset + 3 * i;
@@ -474,6 +513,9 @@ static int hood_prepare(const struct mesh *mesh, size_t count,
     h->local = ws->local;
     h->weighted = ws->weighted;
     h->fitted = ws->fitted;
+    h->height = ws->height;
+    h->slope = ws->slope;
+    h->memo = &ws->memo;
     for (size_t i = 1; i < count; i++) {
         double *d = ws->offset + 3 * i;
         double r2 = vec3_dot(d, d);
@@ -495,57 +537,27 @@ static inline void local_coordinates(const double *d, const struct frame *f,
 }
 
 /* The monomials of the fit at the scaled point (x, y), in term order:
- * x^2 xy y^2 | x y | x^3 x^2y xy^2 y^3. */
-static void monomials(double x, double y, double *m)
-{
-    m[0] = x * x;
-    m[1] = x * y;
-    m[2] = y * y;
-    m[3] = x;
-    m[4] = y;
-    m[5] = x * x * x;
-    m[6] = x * x * y;
-    m[7] = x * y * y;
-    m[8] = y * y * y;
-}
+ * x^2 xy y^2 | x y | x^3 x^2y xy^2 y^3, each the product in that order
+ * (x^2 y is (x x) y), as normal_equations5 and normal_equations_cubic
+ * take them. */
 
-/* The weighted normal equations of the first nterms monomials over h's
- * points at their coordinates in h->local: ata's lower triangle (row
- * stride TERMS_MAX) and atb; each point's weighted monomials into
- * h->weighted. Inlined for the cubic's constant nterms, so that its
- * loops unroll. */
-static inline void normal_equations_of(const struct hood *h, int nterms,
-                                       double *ata, double *atb)
-{
-    /* Sums in locals, which no store through h's pointers can alias, so
-     * that they stay in registers. */
-    double a[TERMS_MAX * TERMS_MAX] = {0}, b[TERMS_MAX] = {0};
-    for (size_t i = 1; i < h->count; i++) {
-        const double *l = h->local + 3 * i;
-        double w = h->weight[i], m[TERMS_MAX], wm[TERMS_MAX];
-        monomials(l[0], l[1], m);
-        for (int r = 0; r < nterms; r++) {
-            wm[r] = w * m[r];
-            b[r] += wm[r] * l[2];
-            for (int s = 0; s <= r; s++)
-                a[r * TERMS_MAX + s] += wm[r] * m[s];
-        }
-        memcpy(h->weighted + TERMS_MAX * i, wm, nterms * sizeof(double));
-    }
-    memcpy(ata, a, sizeof a);
-    memcpy(atb, b, sizeof b);
-}
+/* Two doubles operated on side by side (GCC's and clang's vector
+ * extension, SSE2 on x86-64): each lane's product or sum is the one a
+ * scalar operation gives, to the bit. */
+typedef double pair __attribute__((vector_size(2 * sizeof(double))));
 
-/* normal_equations_of for the quadric with gradient, most vertices' fit,
- * written out so that its 20 sums stay in registers: the same products
- * summed in the same order, so the same to the bit. */
+/* The rows of the quadric with gradient (most vertices' fit) of
+ * normal_equations, in frame f (the points' coordinates into h->local in
+ * the same loop) or, when f is NULL, at those h->local holds. Its 20 sums
+ * taken two at a time, ten pairs in registers: a pair holds two sums
+ * whose products share a factor, (a00, a10) += (w0, w1) m0 say; each
+ * lane is its sum's own product added in its own order. */
 static void normal_equations5(const struct hood *h, const struct frame *f,
                               double *ata, double *atb)
 {
-    double a00 = 0, a10 = 0, a11 = 0, a20 = 0, a21 = 0, a22 = 0;
-    double a30 = 0, a31 = 0, a32 = 0, a33 = 0;
-    double a40 = 0, a41 = 0, a42 = 0, a43 = 0, a44 = 0;
-    double b0 = 0, b1 = 0, b2 = 0, b3 = 0, b4 = 0;
+    pair a00_10 = {0, 0}, a20_30 = {0, 0}, a40_42 = {0, 0};
+    pair a11_21 = {0, 0}, a31_41 = {0, 0}, a22_32 = {0, 0};
+    pair a33_43 = {0, 0}, a44_b4 = {0, 0}, b0_1 = {0, 0}, b2_3 = {0, 0};
     for (size_t i = 1; i < h->count; i++) {
         double *l = h->local + 3 * i;
         if (f)
@@ -560,64 +572,141 @@ static void normal_equations5(const struct hood *h, const struct frame *f,
         wm[2] = w2;
         wm[3] = w3;
         wm[4] = w4;
-        b0 += w0 * z;
-        a00 += w0 * m0;
-        b1 += w1 * z;
-        a10 += w1 * m0;
-        a11 += w1 * m1;
-        b2 += w2 * z;
-        a20 += w2 * m0;
-        a21 += w2 * m1;
-        a22 += w2 * m2;
-        b3 += w3 * z;
-        a30 += w3 * m0;
-        a31 += w3 * m1;
-        a32 += w3 * m2;
-        a33 += w3 * m3;
-        b4 += w4 * z;
-        a40 += w4 * m0;
-        a41 += w4 * m1;
-        a42 += w4 * m2;
-        a43 += w4 * m3;
-        a44 += w4 * m4;
+        pair w01 = {w0, w1}, w23 = {w2, w3}, w12 = {w1, w2}, w34 = {w3, w4};
+        pair w44 = {w4, w4}, zz = {z, z};
+        a00_10 += w01 * (pair){m0, m0};
+        a20_30 += w23 * (pair){m0, m0};
+        a40_42 += w44 * (pair){m0, m2};
+        a11_21 += w12 * (pair){m1, m1};
+        a31_41 += w34 * (pair){m1, m1};
+        a22_32 += w23 * (pair){m2, m2};
+        a33_43 += w34 * (pair){m3, m3};
+        a44_b4 += w44 * (pair){m4, z};
+        b0_1 += w01 * zz;
+        b2_3 += w23 * zz;
     }
     enum { S = TERMS_MAX };
-    ata[0] = a00;
-    ata[S] = a10;
-    ata[S + 1] = a11;
-    ata[2 * S] = a20;
-    ata[2 * S + 1] = a21;
-    ata[2 * S + 2] = a22;
-    ata[3 * S] = a30;
-    ata[3 * S + 1] = a31;
-    ata[3 * S + 2] = a32;
-    ata[3 * S + 3] = a33;
-    ata[4 * S] = a40;
-    ata[4 * S + 1] = a41;
-    ata[4 * S + 2] = a42;
-    ata[4 * S + 3] = a43;
-    ata[4 * S + 4] = a44;
-    atb[0] = b0;
-    atb[1] = b1;
-    atb[2] = b2;
-    atb[3] = b3;
-    atb[4] = b4;
+    ata[0] = a00_10[0];
+    ata[S] = a00_10[1];
+    ata[S + 1] = a11_21[0];
+    ata[2 * S] = a20_30[0];
+    ata[2 * S + 1] = a11_21[1];
+    ata[2 * S + 2] = a22_32[0];
+    ata[3 * S] = a20_30[1];
+    ata[3 * S + 1] = a31_41[0];
+    ata[3 * S + 2] = a22_32[1];
+    ata[3 * S + 3] = a33_43[0];
+    ata[4 * S] = a40_42[0];
+    ata[4 * S + 1] = a31_41[1];
+    ata[4 * S + 2] = a40_42[1];
+    ata[4 * S + 3] = a33_43[1];
+    ata[4 * S + 4] = a44_b4[0];
+    atb[0] = b0_1[0];
+    atb[1] = b0_1[1];
+    atb[2] = b2_3[0];
+    atb[3] = b2_3[1];
+    atb[4] = a44_b4[1];
 }
 
-/* normal_equations_of for nterms 5 or TERMS_MAX, of h's points in frame f
- * (their coordinates into h->local first) or, when f is NULL, at the
- * coordinates h->local holds. */
+/* The rows of the cubic's terms (x^3 x^2y xy^2 y^3) of normal_equations,
+ * of the points at h->local, into ata and atb, whose first five rows
+ * normal_equations5 gave; written out in two loops of fewer sums than
+ * registers (one loop of all 54 kept them in memory). */
+static void normal_equations_cubic(const struct hood *h, double *ata,
+                                   double *atb)
+{
+    double a50 = 0, a51 = 0, a52 = 0, a53 = 0, a54 = 0, a55 = 0;
+    double a60 = 0, a61 = 0, a62 = 0, a63 = 0, a64 = 0, a65 = 0, a66 = 0;
+    double b5 = 0, b6 = 0;
+    for (size_t i = 1; i < h->count; i++) {
+        const double *l = h->local + 3 * i;
+        double x = l[0], y = l[1], z = l[2], w = h->weight[i];
+        double m0 = x * x, m1 = x * y, m2 = y * y, m3 = x, m4 = y;
+        double m5 = x * x * x, m6 = x * x * y;
+        double w5 = w * m5, w6 = w * m6;
+        double *wm = h->weighted + TERMS_MAX * i;
+        wm[5] = w5;
+        wm[6] = w6;
+        b5 += w5 * z;
+        a50 += w5 * m0;
+        a51 += w5 * m1;
+        a52 += w5 * m2;
+        a53 += w5 * m3;
+        a54 += w5 * m4;
+        a55 += w5 * m5;
+        b6 += w6 * z;
+        a60 += w6 * m0;
+        a61 += w6 * m1;
+        a62 += w6 * m2;
+        a63 += w6 * m3;
+        a64 += w6 * m4;
+        a65 += w6 * m5;
+        a66 += w6 * m6;
+    }
+    double a70 = 0, a71 = 0, a72 = 0, a73 = 0, a74 = 0, a75 = 0, a76 = 0;
+    double a77 = 0, a80 = 0, a81 = 0, a82 = 0, a83 = 0, a84 = 0, a85 = 0;
+    double a86 = 0, a87 = 0, a88 = 0, b7 = 0, b8 = 0;
+    for (size_t i = 1; i < h->count; i++) {
+        const double *l = h->local + 3 * i;
+        double x = l[0], y = l[1], z = l[2], w = h->weight[i];
+        double m0 = x * x, m1 = x * y, m2 = y * y, m3 = x, m4 = y;
+        double m5 = x * x * x, m6 = x * x * y, m7 = x * y * y;
+        double m8 = y * y * y;
+        double w7 = w * m7, w8 = w * m8;
+        double *wm = h->weighted + TERMS_MAX * i;
+        wm[7] = w7;
+        wm[8] = w8;
+        b7 += w7 * z;
+        a70 += w7 * m0;
+        a71 += w7 * m1;
+        a72 += w7 * m2;
+        a73 += w7 * m3;
+        a74 += w7 * m4;
+        a75 += w7 * m5;
+        a76 += w7 * m6;
+        a77 += w7 * m7;
+        b8 += w8 * z;
+        a80 += w8 * m0;
+        a81 += w8 * m1;
+        a82 += w8 * m2;
+        a83 += w8 * m3;
+        a84 += w8 * m4;
+        a85 += w8 * m5;
+        a86 += w8 * m6;
+        a87 += w8 * m7;
+        a88 += w8 * m8;
+    }
+    enum { S = TERMS_MAX };
+    const double row5[6] = {a50, a51, a52, a53, a54, a55};
+    const double row6[7] = {a60, a61, a62, a63, a64, a65, a66};
+    const double row7[8] = {a70, a71, a72, a73, a74, a75, a76, a77};
+    const double row8[9] = {a80, a81, a82, a83, a84, a85, a86, a87, a88};
+    memcpy(ata + 5 * S, row5, sizeof row5);
+    memcpy(ata + 6 * S, row6, sizeof row6);
+    memcpy(ata + 7 * S, row7, sizeof row7);
+    memcpy(ata + 8 * S, row8, sizeof row8);
+    atb[5] = b5;
+    atb[6] = b6;
+    atb[7] = b7;
+    atb[8] = b8;
+}
+
+/* The weighted normal equations of the first nterms (5 or TERMS_MAX)
+ * monomials (monomials' order) of h's points, in frame f (their
+ * coordinates into h->local) or, when f is NULL, at the coordinates
+ * h->local holds: ata's lower triangle (row stride TERMS_MAX), each
+ * a[r][s] the sum over the points in order of (w m_r) m_s, and atb, b[r]
+ * that of (w m_r) z; each point's weighted monomials w m_r into
+ * h->weighted. Every sum is taken in that order, one product at a time,
+ * whichever loop takes it, so its bits do not depend on how the loops are
+ * written (the pinned values hold them). */
 static void normal_equations(const struct hood *h, const struct frame *f,
                              int nterms, double *ata, double *atb)
 {
     assert(nterms == 5 || nterms == TERMS_MAX);
-    if (nterms == 5) {  /* in the same loop: the points are read once */
-        normal_equations5(h, f, ata, atb);
-        return;
-    }
-    for (size_t i = 1; f && i < h->count; i++)
-        local_coordinates(h->offset + 3 * i, f, h->local + 3 * i);
-    normal_equations_of(h, TERMS_MAX, ata, atb);
+    normal_equations5(h, f, ata, atb);
+    if (nterms == TERMS_MAX)
+        normal_equations_cubic(h, ata, atb);
 }
 
 /* A fit's terms, which monomials (indices into the term order) and how
@@ -627,6 +716,32 @@ struct model {
     int term[TERMS_MAX];
     double factor[TERMS_MAX * TERMS_MAX];
 };
+
+/* linalg_cholesky_factor of the n x n normal equations a (row stride
+ * TERMS_MAX), inlined for the quadric's and the cubic's constant sizes so
+ * that its loops unroll: the same operations in the same order, so the
+ * same bits. */
+static int cholesky_factor(int n, const double *a, double tol, double *l)
+{
+    if (n == 5)
+        return linalg_cholesky_factor(5, TERMS_MAX, a, tol, l);
+    if (n == TERMS_MAX)
+        return linalg_cholesky_factor(TERMS_MAX, TERMS_MAX, a, tol, l);
+    return linalg_cholesky_factor(n, TERMS_MAX, a, tol, l);
+}
+
+/* linalg_cholesky_apply, inlined as cholesky_factor is: each pass of the
+ * osculating correction ends in one, a chain of divisions. */
+static void cholesky_apply(int n, const double *l, const double *b,
+                           double *x)
+{
+    if (n == 5)
+        linalg_cholesky_apply(5, l, b, x);
+    else if (n == TERMS_MAX)
+        linalg_cholesky_apply(TERMS_MAX, l, b, x);
+    else
+        linalg_cholesky_apply(n, l, b, x);
+}
 
 /* Whether the model is the quadric with gradient, the first five terms
  * (most vertices' fit, whose passes are written out). */
@@ -647,8 +762,7 @@ static int model_factor(struct model *model, const double *ata)
             a[r * TERMS_MAX + s] = p >= q ? ata[p * TERMS_MAX + q]
                                           : ata[q * TERMS_MAX + p];
         }
-    return linalg_cholesky_factor(model->n, TERMS_MAX, a, FIT_PIVOT_TOL,
-                                  model->factor);
+    return cholesky_factor(model->n, a, FIT_PIVOT_TOL, model->factor);
 }
 
 /* The monomial coefficients coef (those not in the model 0) for the
@@ -657,7 +771,7 @@ static void model_apply(const struct model *model, const double *rhs,
                         double *coef)
 {
     double x[TERMS_MAX];
-    linalg_cholesky_apply(model->n, model->factor, rhs, x);
+    cholesky_apply(model->n, model->factor, rhs, x);
     memset(coef, 0, TERMS_MAX * sizeof(double));
     for (int r = 0; r < model->n; r++)
         coef[model->term[r]] = x[r];
@@ -673,6 +787,77 @@ static void model_solve(const struct model *model, const double *b,
     model_apply(model, rhs, coef);
 }
 
+/* The heights of h's points less the osculating excess of c, into
+ * h->height, and when slope the excess's derivative by c into h->slope
+ * (3 a point): osculating_excess at every point. Two points at a time
+ * where the machine has SSE2 (every x86-64): its square roots and
+ * divisions, most of a pass's time, are correctly rounded as the scalar
+ * ones are, and every other operation is the same product or sum in the
+ * same order, so each point's numbers are osculating_excess's to the bit
+ * (tests/tools/curvature_bits.sh compares builds). */
+static void excess_heights(const struct hood *h, const double *c, int slope)
+{
+    size_t i = 1;
+#if defined(__SSE2__)
+    const __m128d c0x2 = _mm_set1_pd(2 * c[0]), c1 = _mm_set1_pd(c[1]);
+    const __m128d c2x2 = _mm_set1_pd(2 * c[2]);
+    const __m128d one = _mm_set1_pd(1), half = _mm_set1_pd(0.5);
+    const __m128d two = _mm_set1_pd(2), four = _mm_set1_pd(4);
+    const __m128d pmax = _mm_set1_pd(EXCESS_P_MAX);
+    for (; i + 1 < h->count; i += 2) {
+        const double *l = h->local + 3 * i;
+        __m128d x = _mm_set_pd(l[3], l[0]), y = _mm_set_pd(l[4], l[1]);
+        __m128d z = _mm_set_pd(l[5], l[2]);
+        __m128d sx = _mm_add_pd(_mm_mul_pd(c0x2, x), _mm_mul_pd(c1, y));
+        __m128d sy = _mm_add_pd(_mm_mul_pd(c1, x), _mm_mul_pd(c2x2, y));
+        __m128d q = _mm_add_pd(_mm_mul_pd(x, sx), _mm_mul_pd(y, sy));
+        __m128d p = _mm_add_pd(_mm_mul_pd(sx, sx), _mm_mul_pd(sy, sy));
+        __m128d clamped = _mm_cmpgt_pd(p, pmax);
+        p = _mm_or_pd(_mm_and_pd(clamped, pmax), _mm_andnot_pd(clamped, p));
+        __m128d root = _mm_sqrt_pd(_mm_sub_pd(one, p));
+        __m128d lift = _mm_div_pd(one, _mm_add_pd(one, root));
+        /* q / 2 is q * 0.5 to the bit, and cheaper */
+        __m128d excess = _mm_sub_pd(_mm_mul_pd(q, lift), _mm_mul_pd(q, half));
+        double out[2];
+        _mm_storeu_pd(out, _mm_sub_pd(z, excess));
+        h->height[i] = out[0];
+        h->height[i + 1] = out[1];
+        if (!slope)
+            continue;
+        __m128d by_q = _mm_sub_pd(lift, half);
+        __m128d by_p = _mm_div_pd(_mm_mul_pd(_mm_mul_pd(q, lift), lift),
+                                  _mm_mul_pd(two, root));
+        by_p = _mm_andnot_pd(clamped, by_p);
+        __m128d q2 = _mm_mul_pd(by_q, two);
+        __m128d p4 = _mm_mul_pd(by_p, four), p2 = _mm_mul_pd(by_p, two);
+        __m128d g0 = _mm_add_pd(_mm_mul_pd(_mm_mul_pd(q2, x), x),
+                                _mm_mul_pd(_mm_mul_pd(p4, x), sx));
+        __m128d g1 = _mm_add_pd(
+            _mm_mul_pd(_mm_mul_pd(q2, x), y),
+            _mm_mul_pd(p2, _mm_add_pd(_mm_mul_pd(sx, y), _mm_mul_pd(sy, x))));
+        __m128d g2 = _mm_add_pd(_mm_mul_pd(_mm_mul_pd(q2, y), y),
+                                _mm_mul_pd(_mm_mul_pd(p4, y), sy));
+        double *g = h->slope + 3 * i;
+        double lo[2], mid[2], hi[2];
+        _mm_storeu_pd(lo, g0);
+        _mm_storeu_pd(mid, g1);
+        _mm_storeu_pd(hi, g2);
+        g[0] = lo[0];
+        g[1] = mid[0];
+        g[2] = hi[0];
+        g[3] = lo[1];
+        g[4] = mid[1];
+        g[5] = hi[1];
+    }
+#endif
+    for (; i < h->count; i++) {
+        const double *l = h->local + 3 * i;
+        h->height[i] = l[2] - osculating_excess(c, l[0], l[1],
+                                                slope ? h->slope + 3 * i
+                                                      : NULL);
+    }
+}
+
 /* The sums of one pass of the osculating correction (see excess_pass),
  * for a model of n terms whose weighted monomials are h->fitted: rhs[0]
  * of the heights less the excess of c, rhs[1..3] (when slope) of the
@@ -683,12 +868,11 @@ static inline void excess_sums(const struct hood *h, int n, const double *c,
 {
     double b0[TERMS_MAX] = {0}, b1[TERMS_MAX] = {0};
     double b2[TERMS_MAX] = {0}, b3[TERMS_MAX] = {0};
+    excess_heights(h, c, slope);
     for (size_t i = 1; i < h->count; i++) {
-        const double *l = h->local + 3 * i;
         const double *wm = h->fitted + n * i;
-        double grad[3];
-        double z = l[2] - osculating_excess(c, l[0], l[1],
-                                            slope ? grad : NULL);
+        const double *grad = h->slope + 3 * i;
+        double z = h->height[i];
         for (int r = 0; r < n; r++)
             b0[r] += wm[r] * z;
         if (slope)
@@ -704,48 +888,90 @@ static inline void excess_sums(const struct hood *h, int n, const double *c,
     memcpy(rhs[3], b3, sizeof b3);
 }
 
-/* excess_sums of the quadric with gradient (its terms the first five, so
- * its weighted monomials those of h->weighted), written out so that its
- * sums stay in registers; the same to the bit. */
-static inline void excess_sums5_of(const struct hood *h, const double *c,
-                                   int slope, double (*rhs)[TERMS_MAX])
+/* The sums over h's points of wm[r] v (subtract: their negation, taken
+ * as 0 - wm[0] v - wm[1] v ..., the order excess_sums takes), r < 5, for
+ * the weighted monomials wm of the quadric with gradient (h->weighted)
+ * and the values v at value + stride * i; into out. One loop a row of
+ * sums, so that they stay in registers. */
+static inline void sums5(const struct hood *h, const double *value,
+                         size_t stride, int subtract, double *out)
 {
-    double b0 = 0, b1 = 0, b2 = 0, b3 = 0, b4 = 0;
-    double s[3][5] = {{0}};
+    double s0 = 0, s1 = 0, s2 = 0, s3 = 0, s4 = 0;
     for (size_t i = 1; i < h->count; i++) {
-        const double *l = h->local + 3 * i;
         const double *wm = h->weighted + TERMS_MAX * i;
-        double grad[3];
-        double z = l[2] - osculating_excess(c, l[0], l[1],
-                                            slope ? grad : NULL);
-        b0 += wm[0] * z;
-        b1 += wm[1] * z;
-        b2 += wm[2] * z;
-        b3 += wm[3] * z;
-        b4 += wm[4] * z;
-        if (slope)
-            for (int j = 0; j < 3; j++)
-                for (int r = 0; r < 5; r++)
-                    s[j][r] -= wm[r] * grad[j];
+        double v = value[stride * i];
+        if (subtract) {
+            s0 -= wm[0] * v;
+            s1 -= wm[1] * v;
+            s2 -= wm[2] * v;
+            s3 -= wm[3] * v;
+            s4 -= wm[4] * v;
+        } else {
+            s0 += wm[0] * v;
+            s1 += wm[1] * v;
+            s2 += wm[2] * v;
+            s3 += wm[3] * v;
+            s4 += wm[4] * v;
+        }
     }
-    rhs[0][0] = b0;
-    rhs[0][1] = b1;
-    rhs[0][2] = b2;
-    rhs[0][3] = b3;
-    rhs[0][4] = b4;
-    for (int j = 0; slope && j < 3; j++)
-        memcpy(rhs[j + 1], s[j], sizeof s[j]);
+    out[0] = s0;
+    out[1] = s1;
+    out[2] = s2;
+    out[3] = s3;
+    out[4] = s4;
 }
 
-/* excess_sums5_of for each constant slope, so that the excess inlines
- * into a loop that takes its derivative or not. */
-static void excess_sums5(const struct hood *h, const double *c, int slope,
-                         double (*rhs)[TERMS_MAX])
+/* sums5 for the cubic jet, all TERMS_MAX terms, whose weighted monomials
+ * are those of h->weighted (so model_keep has nothing to do for it). */
+static inline void sums9(const struct hood *h, const double *value,
+                         size_t stride, int subtract, double *out)
 {
-    if (slope)
-        excess_sums5_of(h, c, 1, rhs);
-    else
-        excess_sums5_of(h, c, 0, rhs);
+    double s0 = 0, s1 = 0, s2 = 0, s3 = 0, s4 = 0, s5 = 0, s6 = 0, s7 = 0;
+    double s8 = 0;
+    for (size_t i = 1; i < h->count; i++) {
+        const double *wm = h->weighted + TERMS_MAX * i;
+        double v = value[stride * i];
+        if (subtract) {
+            s0 -= wm[0] * v;
+            s1 -= wm[1] * v;
+            s2 -= wm[2] * v;
+            s3 -= wm[3] * v;
+            s4 -= wm[4] * v;
+            s5 -= wm[5] * v;
+            s6 -= wm[6] * v;
+            s7 -= wm[7] * v;
+            s8 -= wm[8] * v;
+        } else {
+            s0 += wm[0] * v;
+            s1 += wm[1] * v;
+            s2 += wm[2] * v;
+            s3 += wm[3] * v;
+            s4 += wm[4] * v;
+            s5 += wm[5] * v;
+            s6 += wm[6] * v;
+            s7 += wm[7] * v;
+            s8 += wm[8] * v;
+        }
+    }
+    const double sum[TERMS_MAX] = {s0, s1, s2, s3, s4, s5, s6, s7, s8};
+    memcpy(out, sum, sizeof sum);
+}
+
+/* excess_sums of the quadric with gradient (its terms the first five, so
+ * its weighted monomials those of h->weighted) or of the cubic jet (n
+ * TERMS_MAX), by sums5 and sums9: the same to the bit. */
+static void excess_sums_of(const struct hood *h, int n, const double *c,
+                           int slope, double (*rhs)[TERMS_MAX])
+{
+    excess_heights(h, c, slope);
+    for (int j = 0; j < (slope ? 4 : 1); j++) {
+        const double *value = j == 0 ? h->height : h->slope + j - 1;
+        size_t stride = j == 0 ? 1 : 3;
+        if (n == 5)
+            sums5(h, value, stride, j > 0, rhs[j]);
+        else
+            sums9(h, value, stride, j > 0, rhs[j]);
+    }
 }
 
 /* One pass of the osculating correction (see fit): the coefficients
@@ -757,11 +983,9 @@ static void excess_pass(const struct hood *h, const struct model *model,
 {
     double rhs[4][TERMS_MAX];
     if (model_is_quadric(model))
-        excess_sums5(h, c, slope != NULL, rhs);
-    else if (model->n == TERMS_MAX && slope)
-        excess_sums(h, TERMS_MAX, c, 1, rhs);
+        excess_sums_of(h, 5, c, slope != NULL, rhs);
     else if (model->n == TERMS_MAX)
-        excess_sums(h, TERMS_MAX, c, 0, rhs);
+        excess_sums_of(h, TERMS_MAX, c, slope != NULL, rhs);
     else
         excess_sums(h, model->n, c, slope != NULL, rhs);
     if (!slope) {
@@ -769,8 +993,15 @@ static void excess_pass(const struct hood *h, const struct model *model,
         return;
     }
     double x[4][TERMS_MAX];
-    linalg_cholesky_apply_many(model->n, model->factor, 4, TERMS_MAX,
-                               rhs[0], x[0]);
+    if (model->n == 5)
+        linalg_cholesky_apply_many(5, model->factor, 4, TERMS_MAX, rhs[0],
+                                   x[0]);
+    else if (model->n == TERMS_MAX)
+        linalg_cholesky_apply_many(TERMS_MAX, model->factor, 4, TERMS_MAX,
+                                   rhs[0], x[0]);
+    else
+        linalg_cholesky_apply_many(model->n, model->factor, 4, TERMS_MAX,
+                                   rhs[0], x[0]);
     memset(next, 0, TERMS_MAX * sizeof(double));
     memset(slope, 0, 3 * TERMS_MAX * sizeof(double));
     for (int r = 0; r < model->n; r++) {
@@ -822,7 +1053,21 @@ static int fit(const struct hood *h, const struct frame *f, int nterms_max,
     double *local = h->local;
 
     double ata[TERMS_MAX * TERMS_MAX], atb[TERMS_MAX];
-    normal_equations(h, f, nterms_max, ata, atb);
+    struct fit_memo *memo = h->memo;
+    int known = memo->valid && memcmp(&memo->frame, f, sizeof *f) == 0;
+    if (known) {  /* the same points in the same frame: the same rows */
+        memcpy(ata, memo->ata, sizeof memo->ata);
+        memcpy(atb, memo->atb, sizeof memo->atb);
+        if (nterms_max == TERMS_MAX)
+            normal_equations_cubic(h, ata, atb);
+    } else {
+        normal_equations(h, f, nterms_max, ata, atb);
+        memo->valid = 1;
+        memo->frame = *f;
+        memcpy(memo->ata, ata, sizeof memo->ata);
+        memcpy(memo->atb, atb, sizeof memo->atb);
+        memo->probed = 0;
+    }
 
     /* The leading 9, 5 and 3 terms are the fits tried in turn, unless the
      * neighbourhood is thin. */
@@ -834,10 +1079,16 @@ static int fit(const struct hood *h, const struct frame *f, int nterms_max,
     int thin = 0, probed = 0;
     double probe[5 * 5];
     if (nterms_max >= 5 && count > 5) {
-        thin = !linalg_cholesky_factor(5, TERMS_MAX, ata, FIT_THIN_TOL, probe);
+        if (!memo->probed) {
+            memo->thin = !cholesky_factor(5, ata, FIT_THIN_TOL, memo->probe);
+            memo->probed = 1;
+        }
+        thin = memo->thin;
         probed = !thin;
+        memcpy(probe, memo->probe, sizeof probe);
     }
     if (thin) {
+        memo->valid = 0;  /* h->local turns to the thin fit's axes */
         /* Principal axes of the points' spread about their centroid
          * (the centre included, weight 1). */
         double sw = 1, sx = 0, sy = 0, sxx = 0, sxy = 0, syy = 0;
@@ -888,7 +1139,7 @@ static int fit(const struct hood *h, const struct frame *f, int nterms_max,
     }
     if (model.n == 0)
         return 0;
-    if (!model_is_quadric(&model))
+    if (!model_is_quadric(&model) && model.n != TERMS_MAX)
         model_keep(h, &model);
     /* The correction starts from the fit itself, or from a fit close by
      * (guess, turned), whose fit then is needed only if no pass of the
@@ -1366,11 +1617,14 @@ static int estimate(const struct mesh *mesh, int flip_normals, int jobs,
         job[made].ws.weighted =
             malloc(TERMS_MAX * POINTS_MAX * sizeof(double));
         job[made].ws.fitted = malloc(TERMS_MAX * POINTS_MAX * sizeof(double));
+        job[made].ws.height = malloc(POINTS_MAX * sizeof(double));
+        job[made].ws.slope = malloc(3 * POINTS_MAX * sizeof(double));
         if (!job[made].ws.mark || !job[made].ws.taken ||
             !job[made].ws.points ||
             !job[made].ws.offset || !job[made].ws.weight ||
             !job[made].ws.local || !job[made].ws.weighted ||
-            !job[made].ws.fitted) {
+            !job[made].ws.fitted || !job[made].ws.height ||
+            !job[made].ws.slope) {
             free(job[made].ws.mark);
             free(job[made].ws.taken);
             free(job[made].ws.points);
@@ -1379,6 +1633,8 @@ static int estimate(const struct mesh *mesh, int flip_normals, int jobs,
             free(job[made].ws.local);
             free(job[made].ws.weighted);
             free(job[made].ws.fitted);
+            free(job[made].ws.height);
+            free(job[made].ws.slope);
             rc = facet_error_set(err, FACET_EWORK,
                                  "curvature: out of memory for %zu "
                                  "vertices", nv);
@@ -1402,6 +1658,8 @@ static int estimate(const struct mesh *mesh, int flip_normals, int jobs,
         free(job[k].ws.local);
         free(job[k].ws.weighted);
         free(job[k].ws.fitted);
+        free(job[k].ws.height);
+        free(job[k].ws.slope);
     }
     return rc;
 }
