@@ -117,6 +117,75 @@ const struct quantity *tui_shown_column(const struct quantity *c,
                                    : quantity_of_project(c->name);
 }
 
+/* terms[0 .. n) (USD, >= 0) rounded to whole dollars that add up to
+ * total rounded (largest remainder); a term that is not finite stays as
+ * it is. */
+static void round_terms(const double *terms, int n, double total,
+                        double *rounded)
+{
+    double sum = 0, remainder[8];
+    assert(n <= 8);
+    for (int k = 0; k < n; k++) {
+        rounded[k] = isfinite(terms[k]) ? floor(terms[k]) : terms[k];
+        remainder[k] = isfinite(terms[k]) ? terms[k] - rounded[k] : -1;
+        if (isfinite(terms[k]))
+            sum += rounded[k];
+    }
+    /* the total as tui_fmt_number shows it: printf rounds half to even */
+    double missing = rint(total) - sum;
+    while (missing >= 1) {
+        int most = -1;
+        for (int k = 0; k < n; k++)
+            if (remainder[k] >= 0 &&
+                (most < 0 || remainder[k] > remainder[most]))
+                most = k;
+        if (most < 0)
+            break;
+        rounded[most] += 1;
+        remainder[most] = -1;  /* once each: a dollar at most */
+        missing -= 1;
+    }
+}
+
+void tui_fmt_cost_sum(char *out, size_t size, const struct option_totals *t,
+                      int width)
+{
+    static const char *const name[6] = {"FP", "SP", "DP", "panels",
+                                        "joints", "moulds"};
+    double term[6] = {t->cost_of[TYPE_FP], t->cost_of[TYPE_SP],
+                      t->cost_of[TYPE_DP], t->panel_cost, t->joint_cost,
+                      t->mould_cost};
+    double grouped[4] = {t->area_cost, t->panel_cost, t->joint_cost,
+                         t->mould_cost};
+    double shown[6], shown_grouped[4];
+    round_terms(term, 6, t->cost, shown);
+    round_terms(grouped, 4, t->cost, shown_grouped);
+    char total[32];
+    tui_fmt_number(total, sizeof total, t->cost, 0, 1);
+    for (int form = 0; form < 3; form++) {
+        int n = form == 0 ? 6 : form == 1 ? 4 : 0;
+        const double *v = form == 0 ? shown : shown_grouped;
+        size_t used = (size_t)snprintf(out, size, "cost %s USD", total);
+        int first = 1;
+        for (int k = 0; k < n && used < size; k++) {
+            /* the types of the area always; a term beyond it when priced */
+            int type = form == 0 && k < 3;
+            if (!isfinite(v[k]) || (!type && v[k] == 0))
+                continue;
+            char number[32];
+            tui_fmt_number(number, sizeof number, v[k], 0, 1);
+            used += (size_t)snprintf(out + used, size - used, " %s %s %s",
+                                     first ? "=" : "+",
+                                     form == 1 && k == 0 ? "area"
+                                     : name[form == 0 ? k : k + 2],
+                                     number);
+            first = 0;
+        }
+        if ((int)used <= width || form == 2)
+            return;
+    }
+}
+
 void tui_fmt_grid(char *out, size_t size, const struct option_row *option)
 {
     if (isnan(option->module_w))

@@ -67,6 +67,19 @@ const struct quantity *tui_shown_column(const struct quantity *c,
 void tui_fmt_cell(char *out, size_t size, const struct tui_column *c,
                   const struct option_row *option);
 
+/* The cost of totals as a sum whose shown terms add up to the shown
+ * total, in at most width characters: by panel type and the terms beyond
+ * area ("cost 2,675,520 USD = FP 270,401 + SP 314,018 + DP 616,566 +
+ * panels 28,800 + joints 65,456 + moulds 1,380,000"), or else with the
+ * area's types as one term ("= area 1,200,985 + panels ..."), or else
+ * the cost alone ("cost 2,675,520 USD"). A term that is 0 or not measured
+ * adds nothing and is left out. Each term is rounded to the dollar so
+ * that the terms add up to the rounded total: down, and then up by a
+ * dollar for the terms with the largest remainders (largest remainder
+ * rounding), so that no term shown is a dollar off its value or more. */
+void tui_fmt_cost_sum(char *out, size_t size, const struct option_totals *t,
+                      int width);
+
 /* option's design grid in words: "37 x 49" panels, or a project's module
  * "module 2.40 x 1.80 m" (its nu and nv only index the module range). */
 void tui_fmt_grid(char *out, size_t size, const struct option_row *option);

@@ -204,14 +204,11 @@ static void draw_row(struct options_screen *s, struct tui_app *app, int y,
 }
 
 /* The selected option's metrics as short lines for the bottom pane. */
-static int detail_lines(const struct option_row *o, char lines[][160])
+static int detail_lines(const struct option_row *o, int width,
+                        char lines[][160])
 {
     const struct option_totals *t = &o->totals;
-    char cost[32], fc[32], sc[32], dc[32], area[32];
-    tui_fmt_number(cost, sizeof cost, t->cost, 0, 1);
-    tui_fmt_number(fc, sizeof fc, t->cost_of[TYPE_FP], 0, 1);
-    tui_fmt_number(sc, sizeof sc, t->cost_of[TYPE_SP], 0, 1);
-    tui_fmt_number(dc, sizeof dc, t->cost_of[TYPE_DP], 0, 1);
+    char area[32];
     tui_fmt_number(area, sizeof area, t->area, 1, 1);
     char grid[64];
     tui_fmt_grid(grid, sizeof grid, o);
@@ -226,8 +223,7 @@ static int detail_lines(const struct option_row *o, char lines[][160])
                  "largest panel %.2f m^2", (long long)o->number, grid,
                  o->threshold_mm, o->rank, o->knee ? " (knee)" : "",
                  t->feasible ? "feasible" : "infeasible", t->max_panel_area);
-    snprintf(lines[1], 160, "cost %s USD = FP %s + SP %s + DP %s", cost, fc,
-             sc, dc);
+    tui_fmt_cost_sum(lines[1], 160, t, width);
     snprintf(lines[2], 160, "%zu panels, %s m^2: FP %zu %.1f, SP %zu %.1f, "
              "DP %zu %.1f m^2", t->panels, area, t->count[TYPE_FP],
              t->area_of[TYPE_FP], t->count[TYPE_SP], t->area_of[TYPE_SP],
@@ -404,7 +400,7 @@ static void options_draw(struct tui_screen *base, struct tui_app *app,
                          width - table_width - 1);
     } else if (pane) {
         char lines[4][160];
-        int n = detail_lines(o, lines);
+        int n = detail_lines(o, width - 1, lines);
         int y = height - pane;
         tui_fill(y, 0, width, tui_attr(ROLE_DIM));
         tui_put(y, 0, width, tui_attr(ROLE_HEADER), " Selected option ");

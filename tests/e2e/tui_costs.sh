@@ -169,6 +169,29 @@ same "every option's area cost is its areas times the run's prices" \
 same "the options have panels, joints and DP moulds to price" \
     "$(q 'SELECT min(panels) > 0, min(joint_length) > 0, max(dp_moulds) > 0, max(sp_misfits) > 0 FROM options WHERE run = 1')" \
     "1|1|1|1"
+# Issue 32 item 1: at 80 columns the detail pane's cost is a sum that
+# adds up: its terms, as a reader adds them, are its total, and the total
+# is the option's cost as sqlite3 reads it, rounded to the dollar.
+line=$(screen | grep -E '^ +cost [0-9,]+ USD' | head -n 1)
+selected=$(screen | grep -oE '^ +No\. [0-9]+:' | grep -oE '[0-9]+' | head -n 1)
+if [ -n "$line" ] && [ -n "$selected" ] && python3 - "$line" \
+    "$(q "SELECT cost FROM options WHERE run = 1 AND number = $selected")" <<'PY'
+import re, sys
+line, cost = sys.argv[1], float(sys.argv[2])
+total, _, terms = line.partition(" = ")
+number = lambda s: int(s.replace(",", ""))
+shown = number(re.search(r"cost ([0-9,]+) USD", total).group(1))
+parts = [number(n) for n in re.findall(r"[A-Za-z]+ ([0-9,]+)", terms)]
+ok = shown == round(cost) and (not parts or sum(parts) == shown)
+if not parts:
+    print("no terms:", line, file=sys.stderr)
+sys.exit(0 if ok and parts else 1)
+PY
+then
+    pass "80 columns: the detail pane's cost adds up ($line)"
+else
+    echo "not ok - 80 columns: the detail pane's cost adds up (No. '$selected': '$line')"
+fi
 # The same run from the command line: the same options, to the bit.
 "$FACET" optimize "$WORK/torus.obj" --db "$WORK/cli.db" --u 4:6 --v 4:6 \
     --threshold 3:9:3 --panel-cost "$PANEL" --joint-cost "$JOINT" \

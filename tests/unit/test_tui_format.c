@@ -10,6 +10,8 @@
 #include <cmocka.h>
 
 #include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "tui/format.h"
@@ -20,6 +22,89 @@ static void check_number(double v, int decimals, int thousands,
     char out[64];
     tui_fmt_number(out, sizeof out, v, decimals, thousands);
     assert_string_equal(out, want);
+}
+
+/* The dollars of the numbers in text after "= ", summed, and the total
+ * before it: what a reader adds up. */
+static void sum_of(const char *text, double *total, double *sum)
+{
+    *total = *sum = 0;
+    const char *eq = strstr(text, " = ");
+    char digits[32];
+    size_t n = 0;
+    for (const char *c = text + 5; *c && c != eq; c++)
+        if (*c >= '0' && *c <= '9' && n + 1 < sizeof digits)
+            digits[n++] = *c;
+    digits[n] = '\0';
+    *total = atof(digits);
+    if (eq == NULL)
+        return;
+    for (const char *c = eq; *c;) {
+        while (*c && !(*c >= '0' && *c <= '9'))
+            c++;
+        n = 0;
+        while (*c && ((*c >= '0' && *c <= '9') || *c == ','))
+            if (*c++ != ',' && n + 1 < sizeof digits)
+                digits[n++] = c[-1];
+        digits[n] = '\0';
+        *sum += atof(digits);
+    }
+}
+
+/* Issue 32 item 1: the detail pane's cost at 80 columns left out the
+ * terms beyond area, so its sum did not add up. The truth: the terms as
+ * a reader adds them, against the total, at every width. */
+static void test_cost_sum(void **state)
+{
+    (void)state;
+    struct option_totals t;
+    memset(&t, 0, sizeof t);
+    /* the issue's option: area by type, then panels, joints and moulds;
+     * remainders chosen so that plain rounding of each term is a dollar
+     * short of the rounded total */
+    t.cost_of[TYPE_FP] = 270401.3;
+    t.cost_of[TYPE_SP] = 314018.4;
+    t.cost_of[TYPE_DP] = 616566.45;
+    t.area_cost = t.cost_of[TYPE_FP] + t.cost_of[TYPE_SP] +
+                  t.cost_of[TYPE_DP];
+    t.panel_cost = 28800;
+    t.joint_cost = 65456.2;
+    t.mould_cost = 1380000;
+    t.cost = t.area_cost + t.panel_cost + t.joint_cost + t.mould_cost;
+    char out[200];
+    int forms = 0;
+    char last[200] = "";
+    for (int width = 10; width <= 160; width++) {
+        tui_fmt_cost_sum(out, sizeof out, &t, width);
+        double total, sum;
+        sum_of(out, &total, &sum);
+        assert_true(total == rint(t.cost));  /* printf's rounding */
+        if (strstr(out, " = ") != NULL) {
+            assert_true((int)strlen(out) <= width);
+            assert_true(sum == total);  /* the shown terms add up */
+        }
+        if (strcmp(out, last) != 0) {
+            forms++;
+            snprintf(last, sizeof last, "%s", out);
+        }
+    }
+    assert_int_equal(forms, 3);  /* the cost alone, by area, by type */
+    tui_fmt_cost_sum(out, sizeof out, &t, 160);
+    assert_string_equal(out, "cost 2,675,242 USD = FP 270,401 + SP 314,018 + "
+                        "DP 616,567 + panels 28,800 + joints 65,456 + "
+                        "moulds 1,380,000");
+    tui_fmt_cost_sum(out, sizeof out, &t, 90);
+    assert_string_equal(out, "cost 2,675,242 USD = area 1,200,986 + panels "
+                        "28,800 + joints 65,456 + moulds 1,380,000");
+    /* the paper's model: area alone, the types always shown, no zero
+     * term beyond them */
+    memset(&t, 0, sizeof t);
+    t.cost_of[TYPE_FP] = 1000;
+    t.cost_of[TYPE_DP] = 2000.5;
+    t.area_cost = t.cost = 3000.5;
+    t.joint_cost = NAN;  /* not measured */
+    tui_fmt_cost_sum(out, sizeof out, &t, 80);
+    assert_string_equal(out, "cost 3,000 USD = FP 1,000 + SP 0 + DP 2,000");
 }
 
 static void test_numbers(void **state)
@@ -119,6 +204,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_numbers),
+        cmocka_unit_test(test_cost_sum),
         cmocka_unit_test(test_times),
         cmocka_unit_test(test_cells),
     };
