@@ -68,11 +68,9 @@ int run_table_print(FILE *out, struct store *store, const char *db,
     text_wrap(out, line, text_table_width(out, wide));
 
     /* The Pareto options first, then the next fronts, cheapest first
-     * within each, up to rows. */
-    long limit = rows == 0 ? 0
-                 : (long)info.pareto_options > rows ? (long)info.pareto_options
-                                                    : rows;
-    struct option_query q = {run, 0, NULL, "rank,cost", 0, limit, 0};
+     * within each, up to rows: a front longer than rows is cut too, and
+     * the line under the table says so. */
+    struct option_query q = {run, 0, NULL, "rank,cost", 0, rows, 0};
     struct option_row *listed;
     size_t n;
     rc = store_options_query_rows(store, &q, &listed, &n, err);
@@ -106,7 +104,13 @@ int run_table_print(FILE *out, struct store *store, const char *db,
         cell[ncolumns] = marks;
         text_table_row(out, &t, cell);
     }
-    if ((int64_t)n < info.options) {
+    if ((int64_t)n < info.pareto_options) {
+        snprintf(line, sizeof line, "(%zu of %lld options, the cheapest %zu "
+                 "of %lld Pareto-optimal; 'facet options %s --run %lld "
+                 "--pareto' lists the front)", n, (long long)info.options, n,
+                 (long long)info.pareto_options, db, (long long)run);
+        text_wrap(out, line, text_table_width(out, wide));
+    } else if ((int64_t)n < info.options) {
         snprintf(line, sizeof line, "(%zu of %lld options; 'facet options %s "
                  "--run %lld' lists them all)", n, (long long)info.options,
                  db, (long long)run);

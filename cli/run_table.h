@@ -12,7 +12,8 @@
 #include "store/store.h"
 
 /* Prints the run's summary line and its table: every Pareto option, then
- * the best-ranked others, rows in all (0 = every option), fitted to the
+ * the best-ranked others, rows in all (0 = every option; a front longer
+ * than rows is cut, its cheapest first, and says so), fitted to the
  * terminal unless wide is set (text_table.h); then a note when the front
  * sits on a bound of the design space. */
 int run_table_print(FILE *out, struct store *store, const char *db,

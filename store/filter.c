@@ -494,31 +494,28 @@ static size_t list_name(char *list, size_t size, size_t used,
                             family, suffix);
 }
 
-/* The message for a name that is no column, with the nearest name or, when
- * nothing is near, the list of them. */
-static int fail_unknown_name(struct parser *p, const struct token *t)
+void filter_column_hint(const char *word, size_t n, int in_filter,
+                        char *out, size_t size)
 {
-    char buf[SHOWN_MAX + 4];
-    const char *s = p->text + t->at;
-    if (is_not_finite_word(s, t->length))
-        return fail_at(p, t->at, "NaN and infinity are not allowed; write a "
-                                 "finite number");
     const char *names[COLUMN_COUNT + ALIAS_COUNT + 1];
-    size_t n = 0;
+    size_t count = 0;
     for (int k = 0; k < COLUMN_COUNT; k++)
-        names[n++] = option_quantities[k].name;
-    for (size_t k = 0; k < ALIAS_COUNT; k++)
-        names[n++] = aliases[k].name;
-    names[n++] = "pareto";
-    const char *near = spelling_closest(s, t->length, names, n);
-    if (near != NULL)
-        return fail_at(p, t->at, "unknown column '%s' (did you mean %s?)",
-                       shown(p, t, buf), near);
+        names[count++] = option_quantities[k].name;
+    if (in_filter) {
+        for (size_t k = 0; k < ALIAS_COUNT; k++)
+            names[count++] = aliases[k].name;
+        names[count++] = "pareto";
+    }
+    const char *near = spelling_closest(word, n, names, count);
+    if (near != NULL) {
+        snprintf(out, size, "did you mean %s?", near);
+        return;
+    }
     /* The per-class columns are named by their pattern, so the list fits
      * one line. */
     const char *listed[COLUMN_COUNT + ALIAS_COUNT + 1];
     size_t nlisted = 0;
-    for (size_t k = 0; k < n; k++) {
+    for (size_t k = 0; k < count; k++) {
         size_t len = strlen(names[k]);
         int per_class = 0;
         for (int c = 0; c < CLASS_COUNT && !per_class; c++) {
@@ -533,9 +530,22 @@ static int fail_unknown_name(struct parser *p, const struct token *t)
     size_t used = 0;
     for (size_t k = 0; k < nlisted && used < sizeof list; k++)
         used += list_name(list, sizeof list, used, listed, nlisted, k);
-    return fail_at(p, t->at, "unknown column '%s' (columns: %s, "
-                   "CLASS_{count,area})",
-                   shown(p, t, buf), list);
+    snprintf(out, size, "columns: %s, CLASS_{count,area}", list);
+}
+
+/* The message for a name that is no column, with the nearest name or, when
+ * nothing is near, the list of them. */
+static int fail_unknown_name(struct parser *p, const struct token *t)
+{
+    char buf[SHOWN_MAX + 4];
+    const char *s = p->text + t->at;
+    if (is_not_finite_word(s, t->length))
+        return fail_at(p, t->at, "NaN and infinity are not allowed; write a "
+                                 "finite number");
+    char hint[960];
+    filter_column_hint(s, t->length, 1, hint, sizeof hint);
+    return fail_at(p, t->at, "unknown column '%s' (%s)", shown(p, t, buf),
+                   hint);
 }
 
 /* A complete condition was followed by t, which cannot follow one here. */

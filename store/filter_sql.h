@@ -36,4 +36,12 @@ size_t filter_param_count(const struct filter *filter);
 /* The value to bind to parameter first_param + k, k < filter_param_count. */
 double filter_param(const struct filter *filter, size_t k);
 
+/* What to say of word (n bytes), which names no option column, into out
+ * (size bytes): "did you mean cost?" for a near name (with pareto and
+ * the filter's aliases when in_filter), else the columns, the per-class
+ * ones by their pattern so that the list fits one line ("columns:
+ * number, ..., CLASS_{count,area}"). */
+void filter_column_hint(const char *word, size_t n, int in_filter,
+                        char *out, size_t size);
+
 #endif

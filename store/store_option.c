@@ -410,12 +410,11 @@ static int order_by(const char *sort, int descending, char *sql,
         while (n > 0 && p[n - 1] == ' ')
             n--;
         if (n == 0 || sort_column(p, n) == NULL) {
-            char list[1024] = "";
-            for (int k = 0; k < OPTION_QUANTITIES; k++)
-                snprintf(list + strlen(list), sizeof list - strlen(list),
-                         "%s%s", k ? ", " : "", option_quantities[k].name);
+            char hint[960];
+            filter_column_hint(p, n, 0, hint, sizeof hint);
             return facet_error_about(err, FACET_SETTING_SORT, FACET_EINPUT,
-                "unknown column '%.*s' (choose from %s)", (int)n, p, list);
+                "unknown column '%.*s' (%s)", (int)(n < 40 ? n : 40), p,
+                hint);
         }
         if (n == 8 && strncasecmp(p, "crowding", 8) == 0)
             len += (size_t)snprintf(sql + len, size - len, "%s%s, ",

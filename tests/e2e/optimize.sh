@@ -186,6 +186,26 @@ expect_error "a --where missing a number names the column position" 'facet: --wh
     "$FACET" options "$DB" --where 'cost < < 3'
 expect_error "a bad --sort column" "facet: --sort: unknown column 'nosuch'" \
     "$FACET" options "$DB" --sort cost,nosuch
+# Issue 32 item 12: a misspelt --sort column gets "did you mean", and an
+# unknown one the list of columns on one line, ending whole (every name
+# the options table has, as sqlite3 lists it, is in it or in its
+# per-class pattern).
+expect_error "a misspelt --sort column: did you mean" \
+    "^facet: --sort: unknown column 'costt' \(did you mean cost\?\)\$" \
+    "$FACET" options "$DB" --sort costt
+expect_error "an unknown --sort column: the columns, the list whole" \
+    "^facet: --sort: unknown column 'qqqqqq' \(columns: number, .*, CLASS_\{count,area\}\)\$" \
+    "$FACET" options "$DB" --sort qqqqqq
+missing=""
+for c in $(sqlite3 "$DB" "SELECT name FROM pragma_table_info('options')"); do
+    case $c in *_count|*_area|*_cost|*_moulds|*_gap|*_kink|*_over) continue ;; esac
+    grep -qE "[ (]$c[,)]" "$ERR" || missing="$missing $c"
+done
+if [ -z "$missing" ]; then
+    pass "... every column sqlite3 lists is named in it"
+else
+    fail "... every column sqlite3 lists is named in it (missing:$missing)"
+fi
 
 # ---------------------------------------------------------------------------
 # 2. Pareto ranks against brute force: every option's rank recomputed by
@@ -550,11 +570,29 @@ same "fine mesh: nothing stored" "$(sqlite3 "$WORK/fine.db" "SELECT warnings = '
 # them (moulds whole, max kink in degrees to 2 decimals).
 "$FACET" example roof --res 30 -o "$WORK/objroof.obj" --force >/dev/null || exit 1
 run env COLUMNS=200 "$FACET" optimize "$WORK/objroof.obj" --db "$WORK/obj.db" \
-    --u 4:6 --v 4:6 --objectives cost,moulds,max_kink --max-panel-area 1000 --table 3
+    --u 4:6 --v 4:6 --objectives cost,moulds,max_kink --max-panel-area 1000 --table 0
 stdout_has "the table heads the objectives' columns" 'rank +moulds +max kink'
 got=$(grep -E '^ +[0-9]+ \*' "$OUT" | sed -E 's/ (knee|infeasible|knee infeasible)$//' |
       awk '{print $1, $(NF-1), $NF}' | sort -n)
 want=$(sqlite3 -separator ' ' "$WORK/obj.db" \
     "SELECT number, moulds, printf('%.2f', max_kink) FROM options WHERE rank = 1 ORDER BY number")
 same "its rows hold each Pareto option's moulds and max kink" "$got" "$want"
+
+# Issue 32 item 12: --table N prints N rows, a front longer than N cut
+# (the cheapest of it first), and says so. The truth: sqlite3's front,
+# longer than 2 here, and its two cheapest options.
+front=$(sqlite3 "$WORK/obj.db" "SELECT count(*) FROM options WHERE rank = 1")
+run env COLUMNS=200 "$FACET" optimize "$WORK/objroof.obj" --db "$WORK/obj2.db" \
+    --u 4:6 --v 4:6 --objectives cost,moulds,max_kink --max-panel-area 1000 --table 2
+got=$(grep -cE '^ +[0-9]+ \*' "$OUT")
+if [ "$front" -gt 2 ] && [ "$got" = 2 ]; then
+    pass "--table 2 prints 2 rows of a front of $front"
+else
+    fail "--table 2 prints 2 rows of a front of $front (printed $got)"
+fi
+got=$(grep -E '^ +[0-9]+ \*' "$OUT" | awk '{print $1}' | tr '\n' ' ')
+want=$(sqlite3 "$WORK/obj2.db" "SELECT number FROM options WHERE rank = 1 ORDER BY cost, number LIMIT 2" | tr '\n' ' ')
+same "... the front's two cheapest" "$got" "$want"
+stdout_has "... and says the front is cut, naming the command that lists it" \
+    "\(2 of [0-9]+ options, the cheapest 2 of $front Pareto-optimal; 'facet options .*obj2\.db --run 1 --pareto' lists the front\)"
 exit 0
