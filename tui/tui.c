@@ -26,6 +26,7 @@
 #include "job.h"
 #include "keys.h"
 #include "layout.h"
+#include "terminal_key.h"
 #include "project_load.h"
 #include "store/snapshot.h"
 
@@ -696,10 +697,11 @@ static int may_create(const char *path)
     printf("%s does not exist. Create a new result database there? (y/n) ",
            path);
     fflush(stdout);
-    char line[64];
-    if (fgets(line, sizeof line, stdin) == NULL)
-        return 0;
-    return line[0] == 'y' || line[0] == 'Y';
+    /* one key answers, as (y/n) says */
+    int answer = terminal_read_key(STDIN_FILENO);
+    if (answer != '\n')
+        putchar('\n');
+    return answer == 'y' || answer == 'Y';
 }
 
 int tui_run(const char *db_path, const char *surface,

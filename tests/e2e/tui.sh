@@ -232,7 +232,7 @@ cp "$WORK/roof.obj" "$WORK/surfaces/a.obj"
 cp "$WORK/roof.obj" "$WORK/surfaces/b.obj"
 start 80 24 -- roof.obj
 check "a missing facet.db is asked about first" '^facet\.db does not exist\. Create a new result database there\? \(y/n\)'
-keys y Enter
+keys y
 check "SURFACE.obj opens the New run form" '^ New run into facet\.db'
 check "the form holds the surface" 'Surface \(OBJ\) +roof\.obj'
 check "the form has prices, SP as FP and the largest panel" 'Prices FP,SP,DP +701,766,1518'
@@ -274,7 +274,7 @@ check_exit "quits after a New run"
 cp "$WORK/roof.obj" "$WORK/roof.mesh"
 start 80 24 -- two.db roof.obj
 check "DB SURFACE: a missing DB is asked about" '^two\.db does not exist\. Create'
-keys y Enter
+keys y
 check "DB SURFACE opens the New run form into DB" '^ New run into two\.db'
 check "DB SURFACE: the form holds the surface" 'Surface \(OBJ\) +roof\.obj'
 keys Escape

@@ -68,7 +68,7 @@ H_NAME='optional'
 # --- the form at 80x24: every field, its hint, the paper's zero costs ---
 start 80 24 -- costs.db
 check "(a new database is asked about)" 'costs\.db does not exist'
-keys y Enter
+keys y
 check "(the runs of the new database)" '^ Facet runs +costs\.db +\(0 runs\)'
 keys a
 check "(the New run form)" '^ New run into costs\.db'

@@ -96,13 +96,14 @@ no_labels_run_together() {
 # --- item 4: a database that does not exist is asked about ---
 start 80 24 -- typo.db
 check "a missing database is asked about" '^typo\.db does not exist\. Create a new result database there\? \(y/n\)'
-keys n Enter
-check "no creates nothing" '^nothing created'
+# one key answers, as (y/n) says, with no Enter (issue 32 item 13)
+keys n
+check "n alone (no Enter) answers: it creates nothing" '^nothing created'
 if [ ! -e "$WORK/typo.db" ]; then pass "no file is left behind"; else fail "no file is left behind"; fi
 start 80 24 -- new.db
 check "asked again" 'new\.db does not exist'
-keys y Enter
-check "yes opens the workbench on a new database" '^ Facet runs +new\.db +\(0 runs\)'
+keys y
+check "y alone (no Enter) opens the workbench on a new database" '^ Facet runs +new\.db +\(0 runs\)'
 if [ -s "$WORK/new.db" ]; then pass "the database is made"; else fail "the database is made"; fi
 # --- item 5: q on the first screen asks ---
 keys q
