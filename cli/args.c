@@ -218,9 +218,7 @@ static void append_names(char *left, size_t size, const struct arg_option *o)
                  value ? " " : "", value ? value : "");
 }
 
-/* Prints text word by word from column HELP_COLUMN, the first line's
- * start already written up to column at. */
-static void print_wrapped(FILE *out, const char *text, int at)
+void args_print_wrapped(FILE *out, const char *text, int at, int indent)
 {
     int column = at;
     for (const char *p = text; *p != '\0';) {
@@ -229,14 +227,14 @@ static void print_wrapped(FILE *out, const char *text, int at)
         size_t word = strcspn(p, " ");
         if (word == 0)
             break;
-        if (column > HELP_COLUMN &&
+        if (column > indent &&
             column + 1 + (int)word > HELP_WIDTH) {
             fputc('\n', out);
             column = 0;
         }
-        if (column < HELP_COLUMN) {
-            fprintf(out, "%*s", HELP_COLUMN - column, "");
-            column = HELP_COLUMN;
+        if (column < indent) {
+            fprintf(out, "%*s", indent - column, "");
+            column = indent;
         } else {
             fputc(' ', out);
             column++;
@@ -272,6 +270,6 @@ void args_print_help(FILE *out, const struct arg_option *options)
             fputc('\n', out);
             at = 0;
         }
-        print_wrapped(out, text, at);
+        args_print_wrapped(out, text, at, HELP_COLUMN);
     }
 }

@@ -76,6 +76,11 @@ int args_parse_surfaces(int argc, char **argv, const struct arg_table *own,
                         const struct arg_table *shared, const char **files,
                         int *count, struct facet_error *err);
 
+/* Prints text word by word, wrapped at 78 columns, its first line going
+ * on from column at (already written), every line after it from column
+ * indent; pads the first to indent when at is short of it. */
+void args_print_wrapped(FILE *out, const char *text, int at, int indent);
+
 /* Prints one line (or more, wrapped at 78 columns) per entry of options
  * for --help: "  --name VALUE, -a VALUE" and, from column 23, its help and
  * default; the other spellings of an entry on its line. */

@@ -190,8 +190,9 @@ static int curvature_run(int argc, char **argv, struct facet_error *err)
 
 const struct command cmd_curvature = {
     .name = "curvature",
-    .usage = "SURFACE.obj [--csv FILE | --json] [--units U] [--object NAME]\n"
-             "       [--group NAME] [--flip-normals] [--force]",
+    .usage = "SURFACE.obj [--csv FILE | --json] [--units U]\n"
+             "       [--object NAME] [--group NAME] [--flip-normals] "
+             "[--force]",
     .summary = "Curvature at every vertex: position, k1, k2, K, H, normal.",
     .before = "",
     .options = curvature_options,

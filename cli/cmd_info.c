@@ -463,8 +463,8 @@ static int info_files(const char **paths, int npaths,
 
 const struct command cmd_info = {
     .name = "info",
-    .usage = "SURFACE.obj... [--units U] [--object NAME] [--group NAME] "
-             "[--uv METHOD] [--json]",
+    .usage = "SURFACE.obj... [--units U] [--object NAME] [--group NAME]\n"
+             "       [--uv METHOD] [--json]",
     .summary = "Describe a surface: counts, size, area, UV, topology, "
                "warnings; or list a project's surfaces.",
     .before =

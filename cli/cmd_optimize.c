@@ -463,16 +463,16 @@ static int optimize_main(int argc, char **argv, struct facet_error *err)
 
 const struct command cmd_optimize = {
     .name = "optimize",
-    .usage = "SURFACE.obj --db FILE [--u A:B] [--v A:B] "
-             "[--threshold MM|A:B[:STEP]]\n"
+    .usage = "SURFACE.obj --db FILE [--u A:B] [--v A:B]\n"
+             "       [--threshold MM|A:B[:STEP]]\n"
              "       [--method auto|exhaustive|random|nsga2] [--evals N] "
              "[--pop N] [--gens N]\n"
              "       [--seed S] [--objectives LIST] [--jobs N] [--name TEXT]"
              " [--table N]\n"
              "       [classification options]\n"
-             "   or: facet optimize PROJECT.obj [MORE.obj ...] --db FILE "
-             "--module WMIN:WMAX x HMIN:HMAX\n"
-             "       [--grid NAME=NUxNV,...] [--threshold ...] [...]\n"
+             "   or: facet optimize PROJECT.obj [MORE.obj ...] --db FILE\n"
+             "       --module WMIN:WMAX x HMIN:HMAX [--grid NAME=NUxNV,...]\n"
+             "       [--threshold ...] [...]\n"
              "   or: facet optimize --db FILE --resume RUN [--surface FILE]",
     .summary = "Search grid sizes and thresholds for the Pareto-optimal "
                "options; store them.",
@@ -485,7 +485,7 @@ const struct command cmd_optimize = {
         "--max-panel-area 1.92\n"
         "  facet optimize roof.obj --db runs.db --threshold 1:10 --method "
         "nsga2 --seed 7\n"
-        "  facet optimize skin.obj --db runs.db --module 1.2:2.0x1.0:1.6 "
-        "--threshold 2:6:2\n",
+        "  facet optimize skin.obj --db runs.db --module 1.2:2.0x1.0:1.6 \\\n"
+        "      --threshold 2:6:2\n",
     .run = optimize_main,
 };

@@ -89,9 +89,9 @@ static int plot_main(int argc, char **argv, struct facet_error *err)
 
 const struct command cmd_plot = {
     .name = "plot",
-    .usage = "DB --run N [--runs N,M] [--x METRIC] [--y METRIC] "
-             "[--size METRIC]\n"
-             "       [--no-size] [--title TEXT] -o FILE.svg [--force]",
+    .usage = "DB --run N [--runs N,M] [--x METRIC] [--y METRIC]\n"
+             "       [--size METRIC] [--no-size] [--title TEXT] -o FILE.svg "
+             "[--force]",
     .summary = "Plot a run's options as SVG: Pareto front, knee, bubbles.",
     .before = "",
     .options = plot_options,

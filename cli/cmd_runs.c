@@ -267,7 +267,8 @@ const struct command cmd_runs = {
     .options = runs_options,
     .after = "examples:\n"
                "  facet runs runs.db\n"
-               "  facet runs runs.db --json | python3 -c 'import json,sys; "
+               "  facet runs runs.db --json |\n"
+               "      python3 -c 'import json,sys; "
                "print(json.load(sys.stdin)[-1][\"status\"])'\n",
     .run = runs_main,
 };

@@ -446,10 +446,9 @@ static int slurm_main(int argc, char **argv, struct facet_error *err)
 
 const struct command cmd_slurm = {
     .name = "slurm",
-    .usage = "SURFACE.obj [MORE.obj ...] --shards N --results DIR [--cpus C] "
-             "[--partition P]\n"
-             "       [--time T] [--facet PATH] [--merged NAME] [-o FOLDER]"
-             " [-- OPTIMIZE OPTIONS]",
+    .usage = "SURFACE.obj [MORE.obj ...] --shards N --results DIR\n"
+             "       [--cpus C] [--partition P] [--time T] [--facet PATH]\n"
+             "       [--merged NAME] [-o FOLDER] [-- OPTIMIZE OPTIONS]",
     .summary = "Write Slurm batch scripts that run a search as N shards "
                "and merge them.",
     .before = "",

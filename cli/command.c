@@ -3,6 +3,8 @@
  */
 #include "command.h"
 
+#include "args.h"
+
 #include <string.h>
 
 const struct command *const command_table[] = {
@@ -34,8 +36,8 @@ const struct command *command_find(const char *name)
 
 void command_print_usage(const struct command *cmd, FILE *out)
 {
-    fprintf(out, "usage: facet %s %s\n\n%s\n", cmd->name, cmd->usage,
-            cmd->summary);
+    fprintf(out, "usage: facet %s %s\n\n", cmd->name, cmd->usage);
+    args_print_wrapped(out, cmd->summary, 0, 0);
     if (cmd->before[0] == '\0' && cmd->options == NULL &&
         cmd->shared == NULL && cmd->after[0] == '\0')
         return;
@@ -53,9 +55,10 @@ void command_print_overview(FILE *out)
           "Facet rationalizes free-form surfaces: it divides a surface into "
           "a UV grid of\npanels, classifies them flat, single- or "
           "double-curved, and prices the result.\n\ncommands:\n", out);
-    for (int i = 0; command_table[i] != NULL; i++)
-        fprintf(out, "  %-10s %s\n", command_table[i]->name,
-                command_table[i]->summary);
+    for (int i = 0; command_table[i] != NULL; i++) {
+        int at = fprintf(out, "  %-10s", command_table[i]->name);
+        args_print_wrapped(out, command_table[i]->summary, at, at + 1);
+    }
     fputs("\n'facet help COMMAND' or 'facet COMMAND --help' tells more.\n"
           "Exit status: 0 success, 1 failure while working, "
           "2 bad usage or bad input.\n", out);

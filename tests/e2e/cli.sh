@@ -82,6 +82,21 @@ expect_error "did you mean a swapped flag" "did you mean --grid\\?" "$FACET" cla
 expect_error "nothing near: the help" "unknown command 'zzz' \\(see 'facet --help'\\)" "$FACET" zzz
 expect_error "nothing near a flag: the help" "unknown option '--zzzzzz' \\(see 'facet runs --help'\\)" "$FACET" runs x.db --zzzzzz
 
+# Issue 32 item 16: every help fits 80 columns (facet --help ran to 122),
+# and export's help says where the CSV's totals go, where a run of export
+# puts them.
+for cmd in "" $("$FACET" --help | awk '/^commands:/ { on = 1; next } on && /^  [a-z]/ { print $1 }'); do
+    run "$FACET" $cmd --help
+    widest=$(awk '{ if (length($0) > w) w = length($0) } END { print w + 0 }' "$OUT")
+    if [ "$STATUS" -eq 0 ] && [ "$widest" -le 80 ]; then
+        pass "facet ${cmd:+$cmd }--help fits 80 columns ($widest)"
+    else
+        fail "facet ${cmd:+$cmd }--help fits 80 columns ($widest, status $STATUS)"
+    fi
+done
+run "$FACET" export --help
+stdout_has "export --help: the CSV's totals in FILE-totals.csv" 'FILE-totals\.csv beside it'
+
 # Width: the human tables fit an 80-column terminal (COLUMNS, as a terminal
 # would say), and --wide prints every column.
 "$FACET" example roof --res 30 -o "$WORK/wroof.obj" || exit 1
