@@ -114,7 +114,7 @@ int main(int argc, char **argv)
     printf("evaluation (panels_build_fast + classify): %.3f ms wall, %.3f "
            "ms CPU (medians of %d) = %.1fx the bare pass\n", baseline * 1e3,
            baseline_cpu * 1e3, RUNS, baseline / bare);
-    struct mould_options options = {classify.threshold, 0};
+    struct mould_options options = {classify.threshold, 0, 0};
     struct mould_families f;
     double wall, cpu;
     time_families(&surface, &panels, &options, &f, &wall, &cpu);
@@ -135,7 +135,7 @@ int main(int argc, char **argv)
         bench_die("bench_mould", "as built", &err);
     printf("as built: %zu SP panels fitted, %zu misfits built DP\n",
            totals.sp_fitted, totals.sp_misfits);
-    options.mirror = 0;
+    options = option_mould_options(&params);
     time_families(&surface, &panels, &options, &f, &wall, &cpu);
     report("mould families as built, 3 mm, proper", wall, cpu,
            baseline_cpu, &f);
