@@ -392,7 +392,11 @@ static double quadratic(const double m[36], const double x[6], int np)
 }
 
 /* refine for np parameters, a constant where it is inlined (always: the
- * loops over the parameters, and linearize's, then hold no test of np). */
+ * loops over the parameters, and linearize's, then hold no test of np),
+ * stopping early, when enough > 0 (m), once no point is farther than
+ * enough from d, and converged when a step would move the surface by
+ * under a hundredth of enough; with enough 0, as every fit but
+ * developable_fit_congruent's, by FIT_STEP alone. */
 __attribute__((always_inline))
 static inline int refine_np(struct developable *d, const double *points,
                             size_t n, const double centroid[3],
@@ -414,6 +418,9 @@ static inline int refine_np(struct developable *d, const double *points,
      * short, taking twice the iterations to converge to the same fit. A
      * step that does not pay raises the damping as before. */
     double lambda = np == 6 ? 1e-6 : LAMBDA_FLOOR, grow = 2;
+    /* A placement held to enough is a verdict, not a measure: its fit may
+     * stop once a step would move the surface by a hundredth of that. */
+    double converged = enough > 0 ? fmax(FIT_STEP, enough / 100) : FIT_STEP;
     for (int iteration = 0; iteration < FIT_MAX_ITERATIONS; iteration++) {
         double b[6], step[6] = {0};
         for (int r = 0; r < np; r++)
@@ -422,7 +429,7 @@ static inline int refine_np(struct developable *d, const double *points,
          * surface at the points by less than FIT_STEP: |J step|^2 =
          * step.jtj.step. */
         if (linalg_cholesky_solve(np, 6, jtj, b, 1e-14, step) &&
-            quadratic(jtj, step, np) <= (double)n * FIT_STEP * FIT_STEP)
+            quadratic(jtj, step, np) <= (double)n * converged * converged)
             break;
         double a[36];
         memcpy(a, jtj, sizeof a);
