@@ -47,22 +47,25 @@
  * the difference of their sagittas); a pair with |k - k'| w^2 / 16 above
  * the limit (k each panel's bending curvature 1 / radius at its centroid,
  * cos(a) / rho for a cone, w the wider's extent across its axis) is not
- * tested. The mirror setting does not apply: a cylinder or cone is its
- * own mirror image. A panel typed SP without a fit (a misfit typed by
+ * tested. The samples are the mould samples, on the mesh's facets, where
+ * the fits take theirs on the smooth surface once the facets sag a fair
+ * part of t (sp_fit.h): on such a mesh the sag counts against the jig.
+ * The mirror setting does not apply: a cylinder or cone is its own mirror
+ * image. A panel typed SP without a fit (a misfit typed by
  * class, options->jigs 0 as under --sp-fit no, or fits not measured) and
  * a trimmed one keep the rule by shape above, in a pool of their own; the
  * DP families are those of the shape rule, whatever the jigs.
  *
  * Families. FP panels need no mould (family -1). SP and DP panels are
  * taken in panel order (over several surfaces, mould_families_build_parts:
- * surface order, then panel order), each type on its own (a single-curved mould is not
- * a double-curved one): each panel joins the first family (in the order
- * families were started) whose representative, the family's first panel,
- * it is congruent to (an SP panel on its jig: whose jig it shares, above),
- * or starts a family. So every member lies within the tolerance of its
- * family's representative, and no representative is congruent to an
- * earlier one. A trimmed panel, whose outline the samples do not see,
- * gets a family of its own.
+ * surface order, then panel order), each type on its own (a single-curved
+ * mould is not a double-curved one): each panel joins the first family
+ * (in the order families were started) whose representative, the
+ * family's first panel, it is congruent to (an SP panel on its jig: whose
+ * jig it shares, above), or starts a family. So every member lies within
+ * the tolerance of its family's representative, and no representative is
+ * congruent to an earlier one. A trimmed panel, whose outline the samples
+ * do not see, gets a family of its own.
  *
  * The count is an upper bound. Congruence within a tolerance is not
  * transitive, so finding the fewest families is a covering problem; the
