@@ -337,8 +337,10 @@ static double linearize(const struct developable *d, const double *points,
                         size_t n, int np, const double e1[3],
                         const double e2[3], double jtj[36], double jtr[6])
 {
-    assert(np == 5 || np == 6);
-    if (np == 5)
+    assert(np >= 4 && np <= 6);
+    /* 4 (a cylinder of fixed radius) is 5's leading block: the radius's
+     * row is summed and not read. */
+    if (np <= 5)
         return linearize_np(d, points, n, 5, e1, e2, jtj, jtr);
     return linearize_np(d, points, n, 6, e1, e2, jtj, jtr);
 }
@@ -390,11 +392,15 @@ static double quadratic(const double m[36], const double x[6], int np)
 }
 
 /* refine for np parameters, a constant where it is inlined (always: the
- * loops over the parameters, and linearize's, then hold no test of np). */
+ * loops over the parameters, and linearize's, then hold no test of np),
+ * stopping early, when enough > 0 (m), once no point is farther than
+ * enough from d, and converged when a step would move the surface by
+ * under a hundredth of enough; with enough 0, as every fit but
+ * developable_fit_congruent's, by FIT_STEP alone. */
 __attribute__((always_inline))
 static inline int refine_np(struct developable *d, const double *points,
                             size_t n, const double centroid[3],
-                            const int np)
+                            const int np, double enough)
 {
     double e1[3], e2[3], jtj[36], jtr[6];
     recentre(d, centroid);
@@ -412,6 +418,9 @@ static inline int refine_np(struct developable *d, const double *points,
      * short, taking twice the iterations to converge to the same fit. A
      * step that does not pay raises the damping as before. */
     double lambda = np == 6 ? 1e-6 : LAMBDA_FLOOR, grow = 2;
+    /* A placement held to enough is a verdict, not a measure: its fit may
+     * stop once a step would move the surface by a hundredth of that. */
+    double converged = enough > 0 ? fmax(FIT_STEP, enough / 100) : FIT_STEP;
     for (int iteration = 0; iteration < FIT_MAX_ITERATIONS; iteration++) {
         double b[6], step[6] = {0};
         for (int r = 0; r < np; r++)
@@ -420,7 +429,7 @@ static inline int refine_np(struct developable *d, const double *points,
          * surface at the points by less than FIT_STEP: |J step|^2 =
          * step.jtj.step. */
         if (linalg_cholesky_solve(np, 6, jtj, b, 1e-14, step) &&
-            quadratic(jtj, step, np) <= (double)n * FIT_STEP * FIT_STEP)
+            quadratic(jtj, step, np) <= (double)n * converged * converged)
             break;
         double a[36];
         memcpy(a, jtj, sizeof a);
@@ -458,6 +467,11 @@ static inline int refine_np(struct developable *d, const double *points,
             memcpy(e2, te2, sizeof te2);
             memcpy(jtj, tjtj, sizeof tjtj);
             memcpy(jtr, tjtr, sizeof tjtr);
+            /* Near enough: the largest distance is at least the root
+             * mean square one. */
+            if (enough > 0 && cost <= (double)n * enough * enough &&
+                developable_max_distance(d, points, n) <= enough)
+                break;
         } else {
             lambda *= grow;
             grow *= 2;
@@ -470,18 +484,22 @@ static inline int refine_np(struct developable *d, const double *points,
     return 0;
 }
 
-/* Levenberg-Marquardt on d over np parameters (5: cylinder, 6: cone),
- * centroid the points' (centroid_of, which the callers need too). Each
+/* Levenberg-Marquardt on d over np parameters (5: cylinder, 6: cone; 4:
+ * a cylinder of d's radius, 5 with d a cone: a cone of d's slope, for
+ * developable_fit_congruent), centroid the points' (centroid_of, which
+ * the callers need too). Each
  * trial step is linearised where it lands, so that an accepted step (the
  * usual case) costs one pass over the points. Returns 0, or -1 when the
  * surface leaves the finite. */
 static int refine(struct developable *d, const double *points, size_t n,
-                  const double centroid[3], int np)
+                  const double centroid[3], int np, double enough)
 {
-    assert(np == 5 || np == 6);
+    assert(np >= 4 && np <= 6);
+    if (np == 4)
+        return refine_np(d, points, n, centroid, 4, enough);
     if (np == 5)
-        return refine_np(d, points, n, centroid, 5);
-    return refine_np(d, points, n, centroid, 6);
+        return refine_np(d, points, n, centroid, 5, enough);
+    return refine_np(d, points, n, centroid, 6, enough);
 }
 
 int developable_fit_cylinder(const double *points, size_t n,
@@ -524,7 +542,7 @@ int developable_fit_cylinder(const double *points, size_t n,
         d.base[k] = centroid[k] + cx * e1[k] + cy * e2[k];
     d.radius = sqrt(r2);
     d.slope = 0;
-    if (refine(&d, points, n, centroid, 5) != 0)
+    if (refine(&d, points, n, centroid, 5, 0) != 0)
         return -1;
     *out = d;
     return 0;
@@ -603,7 +621,7 @@ int developable_fit_cone(const double *points, size_t n,
     d.shape = DEVELOPABLE_CONE;
     double centroid[3], apex[3], extent = 0;
     centroid_of(points, n, centroid);
-    if (refine(&d, points, n, centroid, 6) != 0)
+    if (refine(&d, points, n, centroid, 6, 0) != 0)
         return -1;
     /* A cone whose apex lies among the points is no panel one can roll
      * (its curvature grows without bound there), and the fit that finds
@@ -613,6 +631,28 @@ int developable_fit_cone(const double *points, size_t n,
     for (int x = 0; x < 3; x++)
         apex[x] = d.base[x] - d.radius / d.slope * d.axis[x];
     if (!(vec3_distance(apex, centroid) > extent))
+        return -1;
+    *out = d;
+    return 0;
+}
+
+int developable_fit_congruent(const double *points, size_t n,
+                              const struct developable *start,
+                              double enough, struct developable *out)
+{
+    if (n < 5)
+        return -1;
+    struct developable d = *start;
+    int np = 5;
+    if (d.shape == DEVELOPABLE_CYLINDER) {
+        d.slope = 0;
+        np = 4;
+    }
+    if (!vec3_normalize(d.axis))
+        return -1;
+    double centroid[3];
+    centroid_of(points, n, centroid);
+    if (refine(&d, points, n, centroid, np, enough) != 0)
         return -1;
     *out = d;
     return 0;

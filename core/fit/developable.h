@@ -62,6 +62,23 @@ int developable_fit_cone(const double *points, size_t n,
                          const struct developable *start,
                          struct developable *out);
 
+/* Places a surface congruent to start nearest points (n x 3, m) in the
+ * least-squares sense: a cylinder of start's radius, or a cone of start's
+ * slope (its half-angle), moved rigidly (the axis tilted and shifted, a
+ * cone's apex along it too) from where start puts it, which should be
+ * near the points. What a panel laid on another's bending jig is held
+ * to (mould.h). With enough > 0 (m) the fit stops as soon as every point
+ * is within enough of the surface, and once a step would move the
+ * surface by under enough / 100 (root mean square at the points) instead
+ * of 0.1 um: the caller wants a verdict at enough, and measures the
+ * placement returned itself. A least-squares placement, so the largest
+ * distance it leaves may exceed the least any placement could by a
+ * little (a third, for a circle's arc on another's). Returns 0 and fills
+ * *out, or -1 when fewer than 5 points or the fit leaves the finite. */
+int developable_fit_congruent(const double *points, size_t n,
+                              const struct developable *start,
+                              double enough, struct developable *out);
+
 /* A start for a cone fit: the cone whose apex is where the rulings
  * converge, the point nearest (least squares) the lines through at[k]
  * along ruling[k] (nrulings x 3 each, rulings unit), its axis the normal of

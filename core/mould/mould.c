@@ -25,11 +25,24 @@
 #include "core/base/parallel.h"
 #include "core/base/vec3.h"
 #include "core/classify/classify.h"
+#include "core/fit/developable.h"
 #include "core/mould/mould_fit.h"
 #include "core/mould/mould_sample.h"
 
 enum { DESCRIPTOR = 8 };  /* diagonal long, bulge, diagonal short, 4 sides,
                              spread: the first two are the grid's axes */
+
+/* An SP panel on its fitted surface, as mould.h's jigs take it. */
+struct jig {
+    struct developable surface;  /* its cylinder or cone, based at the
+                                    foot of its centroid on the axis */
+    double curvature;            /* across the rulings at the centroid
+                                    (1/m): 1 / radius, a cone's cos(a) /
+                                    rho */
+    double width;                /* its samples' extent across the axis
+                                    and the centroid's normal (m) */
+    double radial[3];            /* unit, from the axis to the centroid */
+};
 
 /* A representative's cell of the hash grid. */
 struct bucket {
@@ -54,6 +67,16 @@ struct family_work {
                                               before it in its cell */
     int *candidate;                        /* npanels */
     double cell;                           /* the grid's cell (m) */
+    struct jig *jig;                       /* npanels */
+    unsigned char *on_jig;                 /* npanels: an SP panel with
+                                              its fit, sampled: matched
+                                              by jig */
+    int *jig_family;                       /* the jig families by their
+                                              representative's curvature */
+    double *jig_key;                       /* that curvature, ascending */
+    size_t njigs;
+    double limit_max;                      /* the largest limit of any
+                                              pair (m) */
 };
 
 double mould_limit(const struct mould_options *options, double da,
@@ -117,6 +140,18 @@ static int descriptors_close(const double a[DESCRIPTOR],
     return 1;
 }
 
+/* Candidate families into the order they were started. Few: an insertion
+ * sort. */
+static void sort_families(int *family, int count)
+{
+    for (int i = 1; i < count; i++)
+        for (int k = i; k > 0 && family[k - 1] > family[k]; k--) {
+            int t = family[k];
+            family[k] = family[k - 1];
+            family[k - 1] = t;
+        }
+}
+
 static size_t bucket_slot(const struct family_work *w, int64_t x, int64_t y)
 {
     uint64_t h = (uint64_t)x * 0x9E3779B97F4A7C15u ^
@@ -136,6 +171,57 @@ static void grid_key(const struct family_work *w, const double d[DESCRIPTOR],
     key[1] = (int64_t)floor(d[1] / w->cell);
 }
 
+/* Sets *jig from panel's fitted surface (panel.h's sp_fit) and its
+ * samples point; returns 0, *jig undefined, when it has none or it is not
+ * finite. */
+static int jig_make(const struct panel *panel,
+                    const double point[MOULD_SAMPLES][3], struct jig *jig)
+{
+    const struct panel_sp_fit *fit = &panel->sp_fit;
+    struct developable *d = &jig->surface;
+    if (fit->shape == PANEL_SP_CYLINDER) {
+        d->shape = DEVELOPABLE_CYLINDER;
+        d->radius = fit->radius;
+        d->slope = 0;
+    } else if (fit->shape == PANEL_SP_CONE) {
+        /* direction points from the apex to the panel: the distance from
+         * the axis grows along it. */
+        d->shape = DEVELOPABLE_CONE;
+        d->slope = tan(fit->half_angle);
+        d->radius = d->slope * vec3_distance(fit->apex, fit->axis_point);
+    } else {
+        return 0;
+    }
+    memcpy(d->axis, fit->direction, sizeof d->axis);
+    memcpy(d->base, fit->axis_point, sizeof d->base);
+    double q[3];
+    vec3_sub(panel->centroid, d->base, q);
+    double h = vec3_dot(q, d->axis);
+    for (int x = 0; x < 3; x++)
+        jig->radial[x] = q[x] - h * d->axis[x];
+    double centroid_rho = vec3_length(jig->radial);
+    if (!(centroid_rho > 0) || !isfinite(centroid_rho) ||
+        !(d->radius > 0) || !isfinite(d->radius) || !isfinite(d->slope))
+        return 0;
+    for (int x = 0; x < 3; x++)
+        jig->radial[x] /= centroid_rho;
+    double across[3];
+    vec3_cross(d->axis, jig->radial, across);
+    double low = INFINITY, high = -INFINITY;
+    for (int k = 0; k < MOULD_SAMPLES; k++) {
+        vec3_sub(point[k], d->base, q);
+        double t = vec3_dot(q, across);
+        low = fmin(low, t);
+        high = fmax(high, t);
+    }
+    jig->width = high - low;
+    /* A cone's normal section across its ruling at distance rho from the
+     * axis bends with radius rho / cos(a), a its half-angle. */
+    double radius = d->radius * sqrt(1 + d->slope * d->slope);
+    jig->curvature = 1 / radius;
+    return isfinite(jig->curvature) && isfinite(jig->width);
+}
+
 /* Samples and describes every SP and DP panel of part, whose first panel
  * is first in w's numbering (w->sampled holds which it could), and raises
  * *diameter and *extent to the largest diameter and grid coordinate of
@@ -147,8 +233,10 @@ static int sample_part(const struct mould_part *part, size_t first,
 {
     const struct panelization *p = part->panels;
     unsigned char *sampled = w->sampled + first;
-    for (size_t n = 0; n < p->npanels; n++)
+    for (size_t n = 0; n < p->npanels; n++) {
         sampled[n] = p->panels[n].type != TYPE_FP;
+        w->on_jig[first + n] = 0;
+    }
     if (mould_sample_grid(part->mesh, part->index, p, sampled,
                           w->point + first, sampled) != FACET_OK)
         return FACET_EWORK;
@@ -165,6 +253,10 @@ static int sample_part(const struct mould_part *part, size_t first,
         if (!finite || !isfinite(p->panels[k].diameter))
             continue;
         w->sampled[n] = 1;
+        w->on_jig[n] = w->options->jigs && p->panels[k].type == TYPE_SP &&
+                       jig_make(&p->panels[k],
+                                (const double (*)[3])w->point[n],
+                                &w->jig[n]);
         *diameter = fmax(*diameter, p->panels[k].diameter);
         *extent = fmax(*extent, fmax(w->descriptor[n][0], w->descriptor[n][1]));
     }
@@ -217,6 +309,7 @@ static int sample_panels(const struct mould_part *parts, size_t nparts,
     /* Wider than any pair's allowance, with a margin for the division's
      * rounding: keys of panels within it differ by at most 1. */
     double limit = mould_limit(w->options, diameter, diameter);
+    w->limit_max = limit;
     w->cell = 1.01 * allowed(limit, extent, extent);
     if (!(w->cell > 0) || !isfinite(w->cell))
         w->cell = 1;
@@ -245,13 +338,89 @@ static int candidates(const struct family_work *w,
                     w->candidate[count++] = f;
             }
         }
-    /* Few: an insertion sort. */
-    for (int i = 1; i < count; i++)
-        for (int k = i; k > 0 && w->candidate[k - 1] > w->candidate[k]; k--) {
-            int t = w->candidate[k];
-            w->candidate[k] = w->candidate[k - 1];
-            w->candidate[k - 1] = t;
-        }
+    sort_families(w->candidate, count);
+    return count;
+}
+
+/* The largest distance panel m's samples leave from the surface of panel
+ * r's jig laid on them (mould.h): a surface congruent to r's placed where
+ * m's own fitted surface is (on m's axis, shifted across it to pass
+ * through m's surface at m's centroid; a cone of r's half-angle on m's
+ * axis, opening the way m's cone does, or either way along m's
+ * cylinder's), when that leaves every sample within limit (m); else by
+ * least squares from there, stopped once within limit.
+ * INFINITY when no placement is found. */
+static double jig_deviation(const struct family_work *w, size_t m,
+                            size_t r, double limit)
+{
+    const struct jig *a = &w->jig[m], *b = &w->jig[r];
+    const double *points = &w->point[m][0][0];
+    struct developable start = a->surface;
+    start.shape = b->surface.shape;
+    start.slope = b->surface.slope;
+    if (start.shape == DEVELOPABLE_CYLINDER) {
+        start.radius = b->surface.radius;
+        for (int x = 0; x < 3; x++)
+            start.base[x] += (a->surface.radius - b->surface.radius) *
+                             a->radial[x];
+    }
+    int turns = start.shape == DEVELOPABLE_CONE &&
+                a->surface.shape == DEVELOPABLE_CYLINDER ? 2 : 1;
+    double best = INFINITY;
+    for (int turn = 0; turn < turns; turn++) {
+        if (turn == 1)
+            for (int x = 0; x < 3; x++)
+                start.axis[x] = -start.axis[x];
+        /* Two panels of one surface: the start is the placement. */
+        double at_start = developable_max_distance(&start, points,
+                                                   MOULD_SAMPLES);
+        if (at_start <= limit)
+            return at_start;
+        struct developable placed;
+        if (developable_fit_congruent(points, MOULD_SAMPLES, &start, limit,
+                                      &placed) == 0)
+            best = fmin(best, developable_max_distance(&placed, points,
+                                                       MOULD_SAMPLES));
+    }
+    return best;
+}
+
+/* Whether two SP panels' curvatures are near enough to test them on each
+ * other's jig (mould.h): |curvature difference| x width^2 / 16 <= limit,
+ * the wider's width. */
+static int jig_near(const struct jig *a, const struct jig *b, double limit)
+{
+    double width = fmax(a->width, b->width);
+    return fabs(a->curvature - b->curvature) * width * width <= 16 * limit;
+}
+
+/* The jig families (mould.h) whose representatives are near panel n's
+ * curvature, in w->candidate in the order they were started; returns how
+ * many. */
+static int jig_candidates(const struct family_work *w,
+                          const struct mould_families *out, size_t n)
+{
+    const struct jig *jig = &w->jig[n];
+    double reach = 16 * w->limit_max / (jig->width * jig->width);
+    double low = jig->curvature - reach, high = jig->curvature + reach;
+    size_t from = 0, to = w->njigs;
+    while (from < to) {
+        size_t mid = from + (to - from) / 2;
+        if (w->jig_key[mid] < low)
+            from = mid + 1;
+        else
+            to = mid;
+    }
+    int count = 0;
+    for (size_t k = from; k < w->njigs && w->jig_key[k] <= high; k++) {
+        int f = w->jig_family[k];
+        size_t r = out->representative[f];
+        double limit = mould_limit(w->options, w->panel[r]->diameter,
+                                   w->panel[n]->diameter);
+        if (jig_near(&w->jig[r], jig, limit))
+            w->candidate[count++] = f;
+    }
+    sort_families(w->candidate, count);
     return count;
 }
 
@@ -270,6 +439,20 @@ static void start_family(struct family_work *w, struct mould_families *out,
         out->trimmed++;
         return;
     }
+    if (w->on_jig[n]) {
+        double key = w->jig[n].curvature;
+        size_t at = w->njigs;
+        while (at > 0 && w->jig_key[at - 1] > key)
+            at--;
+        memmove(w->jig_key + at + 1, w->jig_key + at,
+                (w->njigs - at) * sizeof *w->jig_key);
+        memmove(w->jig_family + at + 1, w->jig_family + at,
+                (w->njigs - at) * sizeof *w->jig_family);
+        w->jig_key[at] = key;
+        w->jig_family[at] = f;
+        w->njigs++;
+        return;
+    }
     int64_t key[2];
     grid_key(w, w->descriptor[n], key);
     size_t slot = bucket_slot(w, key[0], key[1]);
@@ -281,6 +464,33 @@ static void start_family(struct family_work *w, struct mould_families *out,
     w->bucket[slot].head = f;
 }
 
+/* Joins SP panel n, on its jig, to the first jig family whose
+ * representative's jig it lies on within the limit, and that lies on its
+ * own (mould.h); returns whether it found one. */
+static int join_jig(struct family_work *w, struct mould_families *out,
+                    size_t n)
+{
+    int count = jig_candidates(w, out, n);
+    for (int c = 0; c < count; c++) {
+        int f = w->candidate[c];
+        size_t r = out->representative[f];
+        double limit = mould_limit(w->options, w->panel[r]->diameter,
+                                   w->panel[n]->diameter);
+        out->fits++;
+        double on_theirs = jig_deviation(w, n, r, limit);
+        if (!(on_theirs <= limit))
+            continue;
+        double on_ours = jig_deviation(w, r, n, limit);
+        if (!(on_ours <= limit))
+            continue;
+        out->family[n] = f;
+        out->size[f]++;
+        out->worst = fmax(out->worst, fmax(on_theirs, on_ours));
+        return 1;
+    }
+    return 0;
+}
+
 static void group_panels(struct family_work *w, struct mould_families *out)
 {
     for (size_t n = 0; n < w->npanels; n++) {
@@ -288,6 +498,11 @@ static void group_panels(struct family_work *w, struct mould_families *out)
         out->family[n] = -1;
         if (panel->type == TYPE_FP)
             continue;
+        if (w->sampled[n] && w->on_jig[n]) {
+            if (!join_jig(w, out, n))
+                start_family(w, out, n);
+            continue;
+        }
         int count = w->sampled[n] ? candidates(w, out, n) : 0;
         int joined = 0;
         for (int c = 0; c < count && !joined; c++) {
@@ -368,6 +583,10 @@ int mould_families_build_parts(const struct mould_part *parts,
         .mask = slots - 1,
         .next = malloc(one * sizeof *w.next),
         .candidate = malloc(one * sizeof *w.candidate),
+        .jig = malloc(one * sizeof *w.jig),
+        .on_jig = malloc(one),
+        .jig_family = malloc(one * sizeof *w.jig_family),
+        .jig_key = malloc(one * sizeof *w.jig_key),
     };
     size_t *offset = malloc((nparts ? nparts : 1) * sizeof *offset);
     out->npanels = n;
@@ -377,7 +596,9 @@ int mould_families_build_parts(const struct mould_part *parts,
     int rc = FACET_OK;
     if (w.panel == NULL || w.point == NULL || w.shape == NULL ||
         w.descriptor == NULL || w.sampled == NULL || w.bucket == NULL ||
-        w.next == NULL || w.candidate == NULL || offset == NULL ||
+        w.next == NULL || w.candidate == NULL || w.jig == NULL ||
+        w.on_jig == NULL || w.jig_family == NULL || w.jig_key == NULL ||
+        offset == NULL ||
         out->family == NULL || out->representative == NULL ||
         out->size == NULL) {
         rc = facet_error_set(err, FACET_EWORK,
@@ -410,6 +631,10 @@ int mould_families_build_parts(const struct mould_part *parts,
     free(w.bucket);
     free(w.next);
     free(w.candidate);
+    free(w.jig);
+    free(w.on_jig);
+    free(w.jig_family);
+    free(w.jig_key);
     return rc;
 }
 

@@ -19,13 +19,51 @@
  * of one family may differ by a little more, by what a quarter of the cell
  * hides.
  *
+ * Jigs. An SP panel built on its fitted cylinder or cone (panel->sp_fit,
+ * set by the evaluation: sp_fit.h) is bent on a jig of that surface, and a
+ * jig bends any panel that lies on it, whatever its outline (Eigensatz et
+ * al. 2010 assign panels to moulds so). With options->jigs set, two such
+ * panels share a jig when each lies on the other's fitted surface:
+ *
+ *   the 25 samples of one, against the surface of the other's fit laid
+ *   where the jig may lie on them, deviate by at most the limit above,
+ *   and the same the other way round.
+ *
+ * Laid where the jig may lie: a rigid placement of the other's surface (a
+ * cylinder of its radius, a cone of its half-angle; a cylinder's slide
+ * along and turn about its axis, a cone's turn about its axis, change
+ * nothing). The placement tried first is on the panel's own fitted axis,
+ * passing through its own fitted surface at its centroid, which is the
+ * panel's own surface when the two fits are one; when that leaves a
+ * sample beyond the limit, the least-squares placement from there
+ * (developable_fit_congruent), stopped once within the limit. Least
+ * squares is not the least largest distance, and only the placement near
+ * the panel's own axis is sought (a jig laid across the panel's rulings
+ * might fit better and is not looked for), so a pair may share a jig that
+ * is not found: the count stays an upper bound, and every member is
+ * within the limit of its representative's jig, by a placement found.
+ * Before the samples, a closed form: two arcs of curvatures k, k' and
+ * width w, laid on one axis, are at best |k - k'| w^2 / 16 apart (half
+ * the difference of their sagittas); a pair with |k - k'| w^2 / 16 above
+ * the limit (k each panel's bending curvature 1 / radius at its centroid,
+ * cos(a) / rho for a cone, w the wider's extent across its axis) is not
+ * tested. The samples are the mould samples, on the mesh's facets, where
+ * the fits take theirs on the smooth surface once the facets sag a fair
+ * part of t (sp_fit.h): on such a mesh the sag counts against the jig.
+ * The mirror setting does not apply: a cylinder or cone is its own mirror
+ * image. A panel typed SP without a fit (a misfit typed by
+ * class, options->jigs 0 as under --sp-fit no, or fits not measured) and
+ * a trimmed one keep the rule by shape above, in a pool of their own; the
+ * DP families are those of the shape rule, whatever the jigs.
+ *
  * Families. FP panels need no mould (family -1). SP and DP panels are
  * taken in panel order (over several surfaces, mould_families_build_parts:
- * surface order, then panel order), each type on its own (a single-curved mould is not
- * a double-curved one): each panel joins the first family (in the order
- * families were started) whose representative, the family's first panel,
- * it is congruent to, or starts a family. So every member lies within the
- * tolerance of its family's representative, and no representative is
+ * surface order, then panel order), each type on its own (a single-curved
+ * mould is not a double-curved one): each panel joins the first family
+ * (in the order families were started) whose representative, the
+ * family's first panel, it is congruent to (an SP panel on its jig: whose
+ * jig it shares, above), or starts a family. So every member lies within
+ * the tolerance of its family's representative, and no representative is
  * congruent to an earlier one. A trimmed panel, whose outline the samples
  * do not see, gets a family of its own.
  *
@@ -43,6 +81,8 @@
  * skips the fits that lower bounds show cannot be within the tolerance
  * (mould_congruent). None of this changes a family or a deviation:
  * tests/unit/test_cost_fast.c holds them to the plain greedy, to the bit.
+ * The jigs' candidates are the families whose representative's curvature
+ * is within the closed form's reach, from a list kept in curvature order.
  *
  * A building. A mould serves congruent panels of any surface of a
  * project, so one search runs over the panels of every surface (parts):
@@ -64,6 +104,9 @@
 struct mould_options {
     double tolerance;  /* largest deviation within a family (m), >= 0 */
     int mirror;        /* mirror images may share a mould */
+    int jigs;          /* SP panels built on their fitted surface share a
+                          jig by it (above); 0 (a zeroed struct): every
+                          curved panel by its shape */
 };
 
 struct mould_families {

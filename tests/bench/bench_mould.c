@@ -10,7 +10,11 @@
  *   - the evaluation itself, panels_build_fast + classify_panels: the
  *     baseline;
  *   - the mould families at the flatness threshold (3 mm), proper moves
- *     only, and with mirror images allowed.
+ *     only, and with mirror images allowed;
+ *   - the same option as built (option_evaluate, the default: its SP
+ *     panels fitted, each carrying its cylinder or cone), its families at
+ *     3 mm, proper moves: the SP panels matched by their fitted surfaces
+ *     (mould.h's jigs) once that is built, by shape before.
  * Each is the median of several runs, in wall time and in the thread's
  * CPU time: on a machine shared with other work the wall time counts their
  * turns too (the load average is printed), so the verdict on the issue's
@@ -22,6 +26,7 @@
 
 #include "bench_common.h"
 #include "core/classify/classify.h"
+#include "core/evaluate/evaluate.h"
 #include "core/mould/mould.h"
 
 #define RUNS 31
@@ -109,7 +114,7 @@ int main(int argc, char **argv)
     printf("evaluation (panels_build_fast + classify): %.3f ms wall, %.3f "
            "ms CPU (medians of %d) = %.1fx the bare pass\n", baseline * 1e3,
            baseline_cpu * 1e3, RUNS, baseline / bare);
-    struct mould_options options = {classify.threshold, 0};
+    struct mould_options options = {classify.threshold, 0, 0};
     struct mould_families f;
     double wall, cpu;
     time_families(&surface, &panels, &options, &f, &wall, &cpu);
@@ -118,6 +123,21 @@ int main(int argc, char **argv)
     options.mirror = 1;
     time_families(&surface, &panels, &options, &f, &wall, &cpu);
     report("mould families, 3 mm, mirror images too", wall, cpu,
+           baseline_cpu, &f);
+    mould_families_free(&f);
+    panelization_free(&panels);
+
+    struct option_params params, base;
+    option_params_defaults(&base);
+    params = option_params_at(&base, 37, 49, 3);
+    params.unmeasured = OPTION_MEASURE_MOULDS;
+    if (option_evaluate(&surface, &params, NULL, &panels, &totals, &err))
+        bench_die("bench_mould", "as built", &err);
+    printf("as built: %zu SP panels fitted, %zu misfits built DP\n",
+           totals.sp_fitted, totals.sp_misfits);
+    options = option_mould_options(&params);
+    time_families(&surface, &panels, &options, &f, &wall, &cpu);
+    report("mould families as built, 3 mm, proper", wall, cpu,
            baseline_cpu, &f);
     mould_families_free(&f);
     panelization_free(&panels);

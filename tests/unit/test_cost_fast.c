@@ -196,7 +196,7 @@ static size_t check_families(const struct surface *s,
                              const struct panelization *p, double tolerance,
                              int mirror)
 {
-    struct mould_options options = {tolerance, mirror};
+    struct mould_options options = {tolerance, mirror, 0};
     struct mould_families fast;
     struct plain_families plain;
     struct facet_error err;
