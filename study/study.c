@@ -223,6 +223,8 @@ static void costs_from_run(struct option_params *params,
                                   ? 0 : units_m_of_mm(run->max_gap_mm);
     params->classify.max_kink = isnan(run->max_kink_deg)
                                     ? 0 : units_rad_of_deg(run->max_kink_deg);
+    params->classify.min_panel_width = isnan(run->min_panel_width)
+                                           ? 0 : run->min_panel_width;
 }
 
 static void costs_to_run(struct run_info *run,
@@ -240,6 +242,8 @@ static void costs_to_run(struct run_info *run,
                           ? units_mm(params->classify.max_gap) : NAN;
     run->max_kink_deg = params->classify.max_kink > 0
                             ? units_deg(params->classify.max_kink) : NAN;
+    run->min_panel_width = params->classify.min_panel_width > 0
+                               ? params->classify.min_panel_width : NAN;
 }
 
 int study_settings(const struct run_info *run,
