@@ -54,7 +54,11 @@ static void joints_text(FILE *out, const struct option_totals *t,
 static void slivers_text(FILE *out, const struct option_totals *t,
                          const struct classify_options *o)
 {
-    fprintf(out, "%-16s %.3f m^2\n", "min panel area", t->min_panel_area);
+    if (isnan(t->min_panel_area))
+        fprintf(out, "%-16s %s\n", "min panel area", not_stored);
+    else
+        fprintf(out, "%-16s %.3f m^2\n", "min panel area",
+                t->min_panel_area);
     if (t->slivers == TOTALS_UNKNOWN) {
         fprintf(out, "%-16s %s\n", "min panel width", not_stored);
         return;
