@@ -1118,9 +1118,15 @@ int study_start(struct store *store, const struct study_request *request,
     run.shard_count = s->shard.count;
     /* Measured in full: a building, whose per-surface rows hold every
      * quantity; and a shard, since the whole run's front is known only
-     * at the merge, which has no surface to measure it with. */
-    run.measured = request->measure_all || is_project || s->shard.count > 0
+     * at the merge, which has no surface to measure it with. But for the
+     * panels' widths, which cost ten evaluations' work and more
+     * (option.h): measured when the run reads them (a width limit or
+     * objective) or is asked to measure all; NULL otherwise. */
+    run.measured = request->measure_all
                        ? OPTION_MEASURE_ALL
+                   : is_project || s->shard.count > 0
+                       ? (OPTION_MEASURE_ALL & ~OPTION_MEASURE_WIDTHS) |
+                             optimize_measures_needed(s)
                        : optimize_measures_needed(s);
     rc = store_run_create(store, &run, err);
     if (rc == FACET_OK && is_project)
