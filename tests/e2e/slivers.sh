@@ -65,6 +65,9 @@ stdout_has "classify: min panel area" '^min panel area +0\.300 m\^2$'
 stdout_has "classify: the width limit broken" \
     '^min panel width +300\.0 mm \(5 slivers narrower than the 500 mm width limit: NOT within\)$'
 stdout_has "classify: infeasible" '^feasible +NO$'
+run "$FACET" classify l.obj --grid 11x6 --min-panel-width 0.5 --json
+json_check "classify --json: the limit and the three totals" \
+    'j["min_panel_width_limit"]==0.5 and abs(j["totals"]["min_panel_width"]-0.3)<1e-9 and abs(j["totals"]["min_panel_area"]-0.3)<1e-9 and j["totals"]["slivers"]==5 and j["totals"]["feasible"] is False'
 expect_error "--min-panel-width must be a width" "min-panel-width" \
     "$FACET" classify l.obj --grid 11x6 --min-panel-width -1
 
