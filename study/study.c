@@ -1116,18 +1116,21 @@ int study_start(struct store *store, const struct study_request *request,
     run.jobs = s->jobs;
     run.shard_index = s->shard.index;
     run.shard_count = s->shard.count;
-    /* Measured in full: a building, whose per-surface rows hold every
-     * quantity; and a shard, since the whole run's front is known only
-     * at the merge, which has no surface to measure it with. But for the
-     * panels' widths, which cost ten evaluations' work and more
-     * (option.h): measured when the run reads them (a width limit or
-     * objective) or is asked to measure all; NULL otherwise. */
+    /* Measured in full: a shard, since the whole run's front is known
+     * only at the merge, which has no surface to measure it with; and a
+     * building, whose per-surface rows hold every quantity, but for the
+     * panels' widths, which cost ten evaluations' work and more on every
+     * surface (option.h): measured when the run reads them (a width limit
+     * or objective) or is asked to measure all, NULL otherwise. A
+     * building's shards measure as the building does, so that their
+     * merge is its run. */
     run.measured = request->measure_all
                        ? OPTION_MEASURE_ALL
-                   : is_project || s->shard.count > 0
+                   : is_project
                        ? (OPTION_MEASURE_ALL & ~OPTION_MEASURE_WIDTHS) |
                              optimize_measures_needed(s)
-                       : optimize_measures_needed(s);
+                   : s->shard.count > 0 ? OPTION_MEASURE_ALL
+                                        : optimize_measures_needed(s);
     rc = store_run_create(store, &run, err);
     if (rc == FACET_OK && is_project)
         rc = store_surfaces_put(store, run.id, surfaces, project.nsurfaces,
