@@ -94,3 +94,15 @@ same "runs.measured: everything but widths" "$(q many.db 'SELECT measured FROM r
 same "every option's and surface's smallest area stored, no width or sliver count" \
     "$(q many.db 'SELECT count(*), count(min_panel_area), count(min_panel_width), count(slivers) FROM options')|$(q many.db 'SELECT count(*), count(min_panel_area), count(min_panel_width), count(slivers) FROM option_surfaces')" \
     "5|5|0|0|10|10|0|0"
+
+# 5. The workbench's selected-option pane (a wide terminal) shows them:
+# the width in mm, the slivers, and "not measured" where a run did not
+# measure them.
+. "$HERE/tui_lib.sh"
+start 200 60 -- l.db
+check "workbench: the runs list the run" '^ +1 done +exhaustive'
+keys g Enter
+check "workbench: the run opens" '^ Run 1 '
+check "workbench: the smallest panel width, 300 mm" 'smallest panel width +300 mm'
+check "workbench: the slivers, 5" 'slivers \(panels under the width limit\) +5 *$'
+check "workbench: the smallest panel area, 0.300 m^2" 'smallest panel area +0\.300 m\^2'
