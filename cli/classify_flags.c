@@ -139,6 +139,10 @@ const struct arg_option classify_flags_options[] = {
     {"max-kink", 0, ARG_STRING, offsetof(struct classify_flags, max_kink),
      "DEG", "feasible only when no joint's kink exceeds DEG degrees "
      "(default: no limit)", NULL},
+    {"min-panel-width", 0, ARG_STRING,
+     offsetof(struct classify_flags, min_width), "M",
+     "feasible only when no panel is narrower than M metres, its outline's "
+     "least width in its plane (a sliver; default: no limit)", NULL},
     {"object", 0, ARG_STRING, offsetof(struct classify_flags, surface.object),
      "NAME", object_help, NULL},
     {"group", 0, ARG_STRING, offsetof(struct classify_flags, surface.group),
@@ -245,6 +249,13 @@ int classify_flags_apply(const struct classify_flags *f,
                                   &number, err)))
             return rc;
         params->classify.max_kink = number * M_PI / 180;
+    }
+    if (f->min_width) {
+        if ((rc = numparse_number(f->min_width, CLASSIFY_PANEL_WIDTH_MIN,
+                                  CLASSIFY_PANEL_WIDTH_MAX,
+                                  "--min-panel-width", &number, err)))
+            return rc;
+        params->classify.min_panel_width = number;
     }
     return FACET_OK;
 }

@@ -37,7 +37,7 @@ struct classify_flags {
     int flip_normals, sp_as_fp;
     const char *panel_cost, *joint_cost, *mould_cost, *mould_tol;
     int mould_mirror;
-    const char *sp_fit, *max_gap, *max_kink;
+    const char *sp_fit, *max_gap, *max_kink, *min_width;
 };
 
 /* The table that parses them all into a struct classify_flags (args.h),

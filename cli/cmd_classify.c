@@ -210,7 +210,7 @@ const struct command cmd_classify = {
              "       [--prices FP,SP,DP] [--sp-as-fp] [--max-panel-area M2]\n"
              "       [--panel-cost USD] [--joint-cost USD] [--mould-cost SP,DP]\n"
              "       [--mould-tol MM] [--mould-mirror] [--sp-fit yes|no]\n"
-             "       [--max-gap MM] [--max-kink DEG]\n"
+             "       [--max-gap MM] [--max-kink DEG] [--min-panel-width M]\n"
              "       [--json] [--csv FILE] [--object NAME] [--group NAME]\n"
              "       [--uv vt|grid|plane|harmonic]",
     .summary = "Divide a surface into a UV grid of panels; classify, type "

@@ -65,6 +65,7 @@ static void print_json(const struct run_info *runs,
         /* null without a limit (json_number writes NaN as null) */
         json_key(&w, "max_gap_mm"); json_number(&w, r->max_gap_mm);
         json_key(&w, "max_kink_deg"); json_number(&w, r->max_kink_deg);
+        json_key(&w, "min_panel_width"); json_number(&w, r->min_panel_width);
         json_key(&w, "options"); json_integer(&w, r->options);
         json_key(&w, "pareto_options"); json_integer(&w, r->pareto_options);
         json_key(&w, "knee");
@@ -133,14 +134,18 @@ static void run_built_note(const struct run_info *r, char *line,
                            size_t size)
 {
     char gap[48] = "no gap limit", kink[48] = "no kink limit";
+    char width[56] = "no width limit";
+    if (isfinite(r->min_panel_width))
+        snprintf(width, sizeof width, "--min-panel-width %g m",
+                 r->min_panel_width);
     if (isfinite(r->max_gap_mm))
         snprintf(gap, sizeof gap, "--max-gap %g mm", r->max_gap_mm);
     if (isfinite(r->max_kink_deg))
         snprintf(kink, sizeof kink, "--max-kink %g deg", r->max_kink_deg);
-    snprintf(line, size, "run %lld: --sp-fit %s (%s), %s, %s",
+    snprintf(line, size, "run %lld: --sp-fit %s (%s), %s, %s, %s",
              (long long)r->id, r->sp_fit ? "yes" : "no",
              r->sp_fit ? "SP misfits built DP" : "SP by class alone", gap,
-             kink);
+             kink, width);
 }
 
 static void print_human(const struct run_info *runs,

@@ -49,6 +49,30 @@ static void joints_text(FILE *out, const struct option_totals *t,
             t->max_kink_deg, t->mean_kink_deg, limit);
 }
 
+/* The smallest panel of t by area and by width, and its slivers against
+ * o's width limit. */
+static void slivers_text(FILE *out, const struct option_totals *t,
+                         const struct classify_options *o)
+{
+    if (isnan(t->min_panel_area))
+        fprintf(out, "%-16s %s\n", "min panel area", not_stored);
+    else
+        fprintf(out, "%-16s %.3f m^2\n", "min panel area",
+                t->min_panel_area);
+    if (t->slivers == TOTALS_UNKNOWN) {
+        fprintf(out, "%-16s %s\n", "min panel width", not_stored);
+        return;
+    }
+    char limit[96] = "no width limit";
+    if (o->min_panel_width > 0)
+        snprintf(limit, sizeof limit,
+                 "%zu slivers narrower than the %g mm width limit: %s",
+                 t->slivers, o->min_panel_width * 1000,
+                 t->slivers == 0 ? "within" : "NOT within");
+    fprintf(out, "%-16s %.1f mm (%s)\n", "min panel width",
+            t->min_panel_width * 1000, limit);
+}
+
 void option_text_totals(FILE *out, const struct option_totals *t,
                         const struct classify_options *o)
 {
@@ -103,6 +127,8 @@ void option_text_totals(FILE *out, const struct option_totals *t,
     fprintf(out, "%-16s %.3f m^2 (limit %g: %s)\n", "max panel area",
             t->max_panel_area, o->max_panel_area,
             area_ok ? "within" : "NOT within");
+
+    slivers_text(out, t, o);
 
     joints_text(out, t, o);
     fprintf(out, "%-16s %s\n", "feasible", t->feasible ? "yes" : "NO");

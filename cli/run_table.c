@@ -38,6 +38,51 @@ static int order_by_cost(const struct option_row *listed, size_t n,
     return rc;
 }
 
+/* Which limits the infeasible options of listed (n) break, in one line
+ * into line: how many are over the panel area limit, hold slivers under
+ * the width limit, or joints over the gap or kink limit (an option may
+ * break several). "" when every option listed is feasible. */
+static void violations_line(const struct run_info *info,
+                            const struct option_row *listed, size_t n,
+                            char *line, size_t size)
+{
+    size_t infeasible = 0, area = 0, width = 0, gap = 0, kink = 0;
+    for (size_t k = 0; k < n; k++) {
+        const struct option_totals *t = &listed[k].totals;
+        if (t->feasible)
+            continue;
+        infeasible++;
+        area += classify_area_excess(t->max_panel_area,
+                                     info->max_panel_area) > 0;
+        width += t->slivers != TOTALS_UNKNOWN && t->slivers > 0;
+        gap += t->gaps_over != TOTALS_UNKNOWN && t->gaps_over > 0;
+        kink += t->kinks_over != TOTALS_UNKNOWN && t->kinks_over > 0;
+    }
+    line[0] = '\0';
+    if (infeasible == 0)
+        return;
+    size_t used = (size_t)snprintf(line, size, "infeasible: %zu listed",
+                                   infeasible);
+    if (area > 0 && used < size)
+        used += (size_t)snprintf(line + used, size - used,
+                                 "; %zu over the panel area limit "
+                                 "(--max-panel-area %g m^2)", area,
+                                 info->max_panel_area);
+    if (width > 0 && used < size)
+        used += (size_t)snprintf(line + used, size - used,
+                                 "; %zu with slivers under the width limit "
+                                 "(--min-panel-width %g m)", width,
+                                 info->min_panel_width);
+    if (gap > 0 && used < size)
+        used += (size_t)snprintf(line + used, size - used,
+                                 "; %zu with gaps over the limit "
+                                 "(--max-gap %g mm)", gap, info->max_gap_mm);
+    if (kink > 0 && used < size)
+        snprintf(line + used, size - used,
+                 "; %zu with kinks over the limit (--max-kink %g deg)", kink,
+                 info->max_kink_deg);
+}
+
 int run_table_print(FILE *out, struct store *store, const char *db,
                     int64_t run, long rows, int wide, struct facet_error *err)
 {
@@ -117,6 +162,9 @@ int run_table_print(FILE *out, struct store *store, const char *db,
         text_wrap(out, line, text_table_width(out, wide));
     }
     fprintf(out, "* Pareto-optimal\n");
+    violations_line(&info, listed, n, line, sizeof line);
+    if (line[0] != '\0')
+        text_wrap(out, line, text_table_width(out, wide));
     text_table_foot(out, &t);
     free(order);
     free(listed);

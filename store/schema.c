@@ -360,6 +360,22 @@ static const char schema_v11[] =
     "ALTER TABLE panels ADD COLUMN sp_apex_z REAL;"
     "ALTER TABLE panels ADD COLUMN sp_half_angle REAL;";
 
+/* Version 12: slivers (issue 31, item 2). For each option and each
+ * surface of a building's: the smallest panel's area (m^2) and width (m,
+ * the caliper width of its outline in its plane: docs/method.md), and the
+ * panels narrower than the run's width limit, runs.min_panel_width (m;
+ * NULL: none). The width and the count are NULL where not measured (a
+ * run without a width limit measures them for its Pareto options only),
+ * and all three for every option stored before. */
+static const char schema_v12[] =
+    "ALTER TABLE runs ADD COLUMN min_panel_width REAL;"
+    "ALTER TABLE options ADD COLUMN min_panel_area REAL;"
+    "ALTER TABLE options ADD COLUMN min_panel_width REAL;"
+    "ALTER TABLE options ADD COLUMN slivers INTEGER;"
+    "ALTER TABLE option_surfaces ADD COLUMN min_panel_area REAL;"
+    "ALTER TABLE option_surfaces ADD COLUMN min_panel_width REAL;"
+    "ALTER TABLE option_surfaces ADD COLUMN slivers INTEGER;";
+
 static const char *const migrations[STORE_SCHEMA_VERSION] = {
     schema_v1,
     schema_v2,
@@ -372,6 +388,7 @@ static const char *const migrations[STORE_SCHEMA_VERSION] = {
     schema_v9,
     schema_v10,
     schema_v11,
+    schema_v12,
 };
 
 int store_fail(struct store *store, const char *doing,

@@ -136,6 +136,8 @@ struct run_info {
                                   paper's typing, and every run before) */
     double max_gap_mm;         /* gap limit on feasibility (mm); NaN: none */
     double max_kink_deg;       /* kink limit (degrees); NaN: none */
+    double min_panel_width;    /* width limit on every panel (m,
+                                  panel_width.h; schema v12); NaN: none */
     /* What every option of the run was measured for beyond its classed
      * panels (option.h's option_measure bits; schema v9): what its
      * objectives, limits and prices read, or all of them. Its Pareto

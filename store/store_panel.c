@@ -319,6 +319,7 @@ int store_panels_get(struct store *store, int64_t run, int64_t option,
         if (x->worst_gap_side < -1 || x->worst_gap_side > 3)
             x->worst_gap_side = -1;
         x->worst_kink_deg = store_column_or_nan(s, c++);
+        x->width = NAN;  /* not stored per panel: the option's least is */
         x->best_cylinder = store_column_or_nan(s, c++);
         x->best_cone = store_column_or_nan(s, c++);
         x->misfit = sqlite3_column_int(s, c++);

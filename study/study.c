@@ -223,6 +223,8 @@ static void costs_from_run(struct option_params *params,
                                   ? 0 : units_m_of_mm(run->max_gap_mm);
     params->classify.max_kink = isnan(run->max_kink_deg)
                                     ? 0 : units_rad_of_deg(run->max_kink_deg);
+    params->classify.min_panel_width = isnan(run->min_panel_width)
+                                           ? 0 : run->min_panel_width;
 }
 
 static void costs_to_run(struct run_info *run,
@@ -240,6 +242,8 @@ static void costs_to_run(struct run_info *run,
                           ? units_mm(params->classify.max_gap) : NAN;
     run->max_kink_deg = params->classify.max_kink > 0
                             ? units_deg(params->classify.max_kink) : NAN;
+    run->min_panel_width = params->classify.min_panel_width > 0
+                               ? params->classify.min_panel_width : NAN;
 }
 
 int study_settings(const struct run_info *run,
@@ -1112,12 +1116,21 @@ int study_start(struct store *store, const struct study_request *request,
     run.jobs = s->jobs;
     run.shard_index = s->shard.index;
     run.shard_count = s->shard.count;
-    /* Measured in full: a building, whose per-surface rows hold every
-     * quantity; and a shard, since the whole run's front is known only
-     * at the merge, which has no surface to measure it with. */
-    run.measured = request->measure_all || is_project || s->shard.count > 0
+    /* Measured in full: a shard, since the whole run's front is known
+     * only at the merge, which has no surface to measure it with; and a
+     * building, whose per-surface rows hold every quantity, but for the
+     * panels' widths, which cost ten evaluations' work and more on every
+     * surface (option.h): measured when the run reads them (a width limit
+     * or objective) or is asked to measure all, NULL otherwise. A
+     * building's shards measure as the building does, so that their
+     * merge is its run. */
+    run.measured = request->measure_all
                        ? OPTION_MEASURE_ALL
-                       : optimize_measures_needed(s);
+                   : is_project
+                       ? (OPTION_MEASURE_ALL & ~OPTION_MEASURE_WIDTHS) |
+                             optimize_measures_needed(s)
+                   : s->shard.count > 0 ? OPTION_MEASURE_ALL
+                                        : optimize_measures_needed(s);
     rc = store_run_create(store, &run, err);
     if (rc == FACET_OK && is_project)
         rc = store_surfaces_put(store, run.id, surfaces, project.nsurfaces,

@@ -23,6 +23,11 @@ int study_project_view_open(struct store *store, const struct run_info *run,
     struct mesh_options mesh;
     int flip;
     int rc = study_settings(run, &view->settings, &mesh, &flip, err);
+    /* An option opened again is measured as its run measured it, so that
+     * its panels, map and export say what the store holds: no widths
+     * (ten evaluations' work and more on every face) unless the run took
+     * them. */
+    view->settings.base.unmeasured = OPTION_MEASURE_ALL & ~run->measured;
     if (rc == FACET_OK) {
         /* the files found, checked and read: most of the time, with
          * preparing (no stage of its own there to tell) */

@@ -67,6 +67,8 @@ const struct tui_column tui_option_columns[] = {
     {"max_gap", 7, 0},
     {"max_kink", 8, 0},
     {"sp_misfits", 6, 0},
+    {"min_panel_width", 6, 0},
+    {"slivers", 7, 0},
     {"crowding", 6, 0},
     {"generation", 4, 0},
 };
@@ -82,7 +84,8 @@ const char *const tui_metric_columns[] = {
     "dp_moulds", "joint_length", "largest_family", "single_moulds",
     "area_cost", "panel_cost", "joint_cost", "mould_cost", "max_gap",
     "mean_gap", "max_kink", "mean_kink", "gaps_over", "kinks_over",
-    "sp_misfits", "sp_fitted", "sp_min_radius",
+    "sp_misfits", "sp_fitted", "sp_min_radius", "min_panel_area",
+    "min_panel_width", "slivers",
 };
 const int tui_metric_column_count =
     (int)(sizeof tui_metric_columns / sizeof tui_metric_columns[0]);

@@ -191,7 +191,16 @@ void classify_totals(struct panelization *p,
             totals->max_deviation = fmax(totals->max_deviation,
                                          panel->deviation);
         totals->max_panel_area = fmax(totals->max_panel_area, panel->area);
+        totals->min_panel_area = totals->panels == 1
+                                     ? panel->area
+                                     : fmin(totals->min_panel_area,
+                                            panel->area);
     }
+    if (totals->panels == 0)
+        totals->min_panel_area = NAN;
+    /* Widths are option_evaluate's to measure (panel_width.h). */
+    totals->min_panel_width = NAN;
+    totals->slivers = TOTALS_UNKNOWN;
     option_area_sums_value(&sums, totals);
     classify_price_areas(options, totals);
     totals->feasible =
@@ -259,8 +268,10 @@ double classify_violation(const struct option_totals *totals,
                       ? 0 : (double)totals->gaps_over;
     double kinks = totals->kinks_over == TOTALS_UNKNOWN
                        ? 0 : (double)totals->kinks_over;
+    double slivers = totals->slivers == TOTALS_UNKNOWN
+                         ? 0 : (double)totals->slivers;
     return classify_area_excess(totals->max_panel_area, max_panel_area) +
-           gaps + kinks;
+           gaps + kinks + slivers;
 }
 
 void classify_price_terms(const struct classify_options *options,
@@ -304,6 +315,10 @@ int classify_check_options(const struct classify_options *options,
         return facet_error_set(err, FACET_EINPUT,
             "kink limit %g degrees must be 0 (none) or more",
             units_deg(options->max_kink));
+    if (!isfinite(options->min_panel_width) || options->min_panel_width < 0)
+        return facet_error_set(err, FACET_EINPUT,
+            "panel width limit %g m must be 0 (none) or more",
+            options->min_panel_width);
     if (!isfinite(options->max_panel_area) || options->max_panel_area <= 0)
         return facet_error_set(err, FACET_EINPUT,
             "maximum panel area %g m^2 must be more than 0",

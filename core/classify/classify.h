@@ -67,6 +67,9 @@ struct classify_options {
     double max_gap;            /* feasibility limit on the gap at every
                                   joint (m); 0 for none */
     double max_kink;           /* the same for the kink (rad); 0 for none */
+    double min_panel_width;    /* feasibility limit on every panel's width
+                                  (m, panel_width.h): a narrower panel is
+                                  a sliver; 0 for none */
 };
 
 /* The paper's defaults: t = 3 mm, eps = 8 t / d^2, prices 701, 766, 1518,
@@ -89,9 +92,11 @@ struct option_totals {
     double max_panel_area;           /* m^2 */
     double p_dist;                   /* sum of the non-DP panels' P_dist
                                         (m^4) */
-    int feasible;                    /* every panel within max_panel_area,
-                                        and no joint over the gap or kink
-                                        limit (classify_violation is 0) */
+    int feasible;                    /* every panel within max_panel_area
+                                        and no narrower than
+                                        min_panel_width, and no joint over
+                                        the gap or kink limit
+                                        (classify_violation is 0) */
     /* Set by option_evaluate (option.h), 0 from classify_panels alone: */
     double joint_length;             /* m (joint_length.h) */
     size_t moulds;                   /* mould families, SP and DP (mould.h):
@@ -120,6 +125,14 @@ struct option_totals {
                                         bent to (m, sp_fit.h's
                                         bending_radius); NaN when none is
                                         built SP */
+    /* Slivers (docs/method.md): the smallest panel by area, by classify;
+     * by width and the panels narrower than min_panel_width, set by
+     * option_evaluate when it measures widths (NaN and TOTALS_UNKNOWN when
+     * not). */
+    double min_panel_area;           /* m^2 */
+    double min_panel_width;          /* m (panel_width.h) */
+    size_t slivers;                  /* panels narrower than the limit
+                                        (0 without a limit) */
 };
 
 /* A count of struct option_totals that is not known: what the store reads
@@ -218,9 +231,10 @@ void option_area_sums_value(const struct option_area_sums *sums,
 
 /* How far an option is from feasible (0: feasible): its largest panel's
  * excess over the size limit max_panel_area (m^2, classify_area_excess)
- * plus the joints over the gap limit and over the kink limit, each
- * counted as 1 (totals' gaps_over and kinks_over, counted against the
- * limits when it was evaluated; 0 without limits). Feasibility and
+ * plus the joints over the gap limit and over the kink limit and the
+ * slivers, the panels narrower than the width limit, each counted as 1
+ * (totals' gaps_over, kinks_over and slivers, counted against the limits
+ * when it was evaluated; 0 without limits). Feasibility and
  * constraint-domination both read it; without gap or kink limits it is
  * the area excess, to the bit. */
 double classify_violation(const struct option_totals *totals,
@@ -246,6 +260,8 @@ void classify_price_terms(const struct classify_options *options,
                                           least is 0 */
 #define CLASSIFY_PANEL_AREA_MIN 1e-9   /* m^2: the panel size limit */
 #define CLASSIFY_PANEL_AREA_MAX 1e9
+#define CLASSIFY_PANEL_WIDTH_MIN 1e-6  /* m: the limit on a panel's width */
+#define CLASSIFY_PANEL_WIDTH_MAX 1e6
 #define CLASSIFY_MOULD_TOL_MAX_MM 1e6  /* mm: the mould tolerance; the
                                           least is 0 */
 #define CLASSIFY_MAX_GAP_MIN_MM 1e-6   /* mm: the limit on a joint's gap */

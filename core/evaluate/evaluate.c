@@ -14,6 +14,8 @@
 #include "core/joint/joint.h"
 #include "core/joint/joint_length.h"
 #include "core/mould/mould.h"
+#include "core/panel/panel_geometry.h"
+#include "core/panel/panel_width.h"
 #include "core/quantity/quantity.h"
 #include "core/surface/coarse_mesh.h"
 
@@ -201,6 +203,53 @@ static int build_and_measure(const struct surface *surface,
     return rc;
 }
 
+/* Every panel's width (panel_width.h) from its outline, or NaN when
+ * widths are not measured: it depends on the grid alone, so the grid's
+ * first evaluation sets it and its other thresholds keep it. */
+static int measure_widths(const struct surface *surface, unsigned unmeasured,
+                          struct panelization *panels,
+                          struct facet_error *err)
+{
+    if (unmeasured & OPTION_MEASURE_WIDTHS) {
+        for (size_t k = 0; k < panels->npanels; k++)
+            panels->panels[k].width = NAN;
+        return FACET_OK;
+    }
+    struct panel_geometry geometry;
+    int rc = panel_geometry_build(&surface->mesh, &surface->uv, panels,
+                                  &geometry, err);
+    if (rc == FACET_OK)
+        rc = panel_widths_set(&geometry, panels, err);
+    panel_geometry_free(&geometry);
+    return rc;
+}
+
+/* The smallest width of panels and the slivers, the panels narrower than
+ * the limit (rounding allowed, CLASSIFY_ROUNDING: a 0.5 m panel measured
+ * a hair under meets a 0.5 m limit), into totals, and the option's
+ * feasibility again; nothing when widths are not measured. */
+static void count_slivers(const struct classify_options *options,
+                          unsigned unmeasured,
+                          const struct panelization *panels,
+                          struct option_totals *totals)
+{
+    if (unmeasured & OPTION_MEASURE_WIDTHS)
+        return;
+    totals->min_panel_width = NAN;
+    totals->slivers = 0;
+    for (size_t k = 0; k < panels->npanels; k++) {
+        double width = panels->panels[k].width;
+        totals->min_panel_width = k == 0 ? width
+                                         : fmin(totals->min_panel_width,
+                                                width);
+        if (options->min_panel_width > 0 &&
+            width * (1 + CLASSIFY_ROUNDING) < options->min_panel_width)
+            totals->slivers++;
+    }
+    totals->feasible =
+        classify_violation(totals, options->max_panel_area) == 0;
+}
+
 /* The stages after the panels: classifies and types them, builds and
  * measures them (build_and_measure), then finds their mould families
  * unless shared->unmoulded, and prices it all, the joint length given. */
@@ -226,6 +275,7 @@ static int classify_and_build(const struct surface *surface,
         *shared->joints = measured;
     if (rc != FACET_OK)
         return rc;
+    count_slivers(&params->classify, params->unmeasured, panels, totals);
     for (size_t k = 0; k < panels->npanels; k++)
         panels->panels[k].mould = -1;
     totals->joint_length = joint_length;
@@ -268,6 +318,9 @@ int option_evaluate(const struct surface *surface,
         memset(shared->fits, 0, sizeof *shared->fits);
     int rc = build_panels(surface, shared->lattice, params, panels, totals,
                           err);
+    if (rc != FACET_OK)
+        return rc;
+    rc = measure_widths(surface, params->unmeasured, panels, err);
     if (rc != FACET_OK)
         return rc;
     if (shared->fits != NULL && !(params->unmeasured & OPTION_MEASURE_FITS)) {

@@ -31,7 +31,7 @@ struct mould_options option_mould_options(const struct option_params *params)
 }
 
 static const char *const measure_names[] = {"fits", "joints", "moulds",
-                                            "joint_length"};
+                                            "joint_length", "widths"};
 enum { MEASURE_NAMES = sizeof measure_names / sizeof *measure_names };
 
 void option_measures_format(unsigned measures, char *out, size_t size)
@@ -75,6 +75,8 @@ unsigned option_totals_measures(const struct option_totals *totals)
         measures |= OPTION_MEASURE_MOULDS;
     if (!isnan(totals->joint_length))
         measures |= OPTION_MEASURE_JOINT_LENGTH;
+    if (totals->slivers != TOTALS_UNKNOWN)
+        measures |= OPTION_MEASURE_WIDTHS;
     return measures;
 }
 
@@ -93,6 +95,8 @@ unsigned option_measures_needed(const struct classify_options *classify,
         needed |= OPTION_MEASURE_JOINTS;
     if (classify->joint_cost != 0)
         needed |= OPTION_MEASURE_JOINT_LENGTH;
+    if (classify->min_panel_width > 0)
+        needed |= OPTION_MEASURE_WIDTHS;
     for (int t = 0; t < TYPE_COUNT; t++)
         if (classify->mould_cost[t] != 0)
             needed |= OPTION_MEASURE_MOULDS;

@@ -28,11 +28,15 @@ enum option_measure {
     OPTION_MEASURE_MOULDS = 1 << 2,
     /* The length of the grid's joint lines: joint_length. */
     OPTION_MEASURE_JOINT_LENGTH = 1 << 3,
-    OPTION_MEASURE_ALL = (1 << 4) - 1
+    /* Every panel's width (panel_width.h, from its outline:
+     * panel_geometry.h, ten times an evaluation's own work and more):
+     * min_panel_width, slivers. */
+    OPTION_MEASURE_WIDTHS = 1 << 4,
+    OPTION_MEASURE_ALL = (1 << 5) - 1
 };
 
 /* The measures as text, as the store keeps them: "fits,joints,moulds,
- * joint_length" in that order, each present when its bit is, "" for none;
+ * joint_length,widths" in that order, each present when its bit is, "" for none;
  * into out (OPTION_MEASURES_TEXT bytes). */
 #define OPTION_MEASURES_TEXT 64
 void option_measures_format(unsigned measures, char *out, size_t size);
@@ -45,8 +49,8 @@ unsigned option_measures_parse(const char *text);
 /* The measures an option needs under classify's options (its typing, its
  * limits and its prices) when its objectives need objective_measures
  * besides (metric.h's metric_measures, or'ed): FITS when SP is typed by
- * fit or JOINTS are needed, JOINTS for a gap or kink limit, MOULDS and
- * JOINT_LENGTH for a price on them. */
+ * fit or JOINTS are needed, JOINTS for a gap or kink limit, WIDTHS for a
+ * width limit, MOULDS and JOINT_LENGTH for a price on them. */
 unsigned option_measures_needed(const struct classify_options *classify,
                                 unsigned objective_measures);
 

@@ -56,6 +56,9 @@ static void json_totals(struct json_writer *w,
     json_key(w, "kinks_over");     json_integer(w, (long long)t->kinks_over);
     json_key(w, "sp_misfits");     json_integer(w, (long long)t->sp_misfits);
     json_key(w, "sp_fitted");      json_integer(w, (long long)t->sp_fitted);
+    json_key(w, "min_panel_area"); json_number(w, t->min_panel_area);
+    json_key(w, "min_panel_width"); json_number(w, t->min_panel_width);
+    json_key(w, "slivers");        json_count(w, t->slivers);
     json_key(w, "fp_over_threshold");
     json_integer(w, (long long)fp_over_threshold);
     json_key(w, "classes");
@@ -120,6 +123,9 @@ void report_json(FILE *out, const struct report_source *source,
     json_key(&w, "max_kink_deg");
     json_number(&w, options->max_kink > 0 ? units_deg(options->max_kink)
                                           : NAN);
+    json_key(&w, "min_panel_width_limit");
+    json_number(&w, options->min_panel_width > 0 ? options->min_panel_width
+                                                 : NAN);
 
     json_key(&w, "panels");
     json_begin_array(&w);

@@ -123,6 +123,11 @@ struct panel {
                                  (corners 0-1), 1 u = i + 1 (1-2), 2 v =
                                  j + 1 (2-3), 3 u = i (3-0); -1 for none */
     double worst_kink_deg;    /* largest kink at its joints (degrees) */
+    double width;             /* the least width of its outline in its
+                                 plane (m, panel_width.h), set by
+                                 option_evaluate; NaN when not measured
+                                 (option.h's OPTION_MEASURE_WIDTHS) and
+                                 on panels read from the store */
     struct panel_sp_fit sp_fit;  /* the surface it is built on, when SP */
 };
 

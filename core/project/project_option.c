@@ -142,8 +142,14 @@ static void combine_surfaces(const struct quantity *q,
         double value = q->field == FIELD_DOUBLE ? *(const double *)in : 0;
         switch (q->combine) {
         case COMBINE_SUM:
+            /* A count not measured on one surface is not known for the
+             * building (TOTALS_UNKNOWN, never a sum wrapped past it). */
             assert(q->field == FIELD_SIZE);
-            *(size_t *)out += *(const size_t *)in;
+            if (*(const size_t *)in == TOTALS_UNKNOWN ||
+                *(size_t *)out == TOTALS_UNKNOWN)
+                *(size_t *)out = TOTALS_UNKNOWN;
+            else
+                *(size_t *)out += *(const size_t *)in;
             break;
         case COMBINE_EXACT_SUM:
             exact_sum_add(&sum, value);

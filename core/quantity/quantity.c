@@ -245,6 +245,18 @@ const struct quantity option_quantities[] = {
     {"sp_min_radius", "smallest SP bending radius", "min R", "m", "m", 1, 2,
      1, 0, 0, "5", FIELD_DOUBLE, TOTAL(sp_min_radius), WRITTEN_WITH_OPTION,
      COMBINE_MIN, OPTION_MEASURE_FITS, 1, 1},
+    /* Slivers (schema v12): the smallest panel by area (classifying
+     * measures it) and by width (panel_width.h, shown in mm), and the
+     * panels narrower than the run's width limit. */
+    {"min_panel_area", "smallest panel area", "min pan", "m^2", "m^2", 1, 3,
+     2, 0, 0, "0.5", FIELD_DOUBLE, TOTAL(min_panel_area), WRITTEN_WITH_OPTION,
+     COMBINE_MIN, 0, 1, 1},
+    {"min_panel_width", "smallest panel width", "min w", "mm", "m", 1000, 0,
+     0, 0, 0, "0.3", FIELD_DOUBLE, TOTAL(min_panel_width),
+     WRITTEN_WITH_OPTION, COMBINE_MIN, OPTION_MEASURE_WIDTHS, 1, 1},
+    {"slivers", "slivers (panels under the width limit)", "slivers", "", "",
+     1, 0, 0, 0, 0, "0", FIELD_SIZE, TOTAL(slivers), WRITTEN_WITH_OPTION,
+     COMBINE_SUM, OPTION_MEASURE_WIDTHS, 1, 1},
     /* New columns go here, before run. */
     {"run", "run", "run", "", "", 1, 0, 0, 0, 0, "1",
      FIELD_NONE, 0, WRITTEN_AS_KEY,

@@ -188,7 +188,7 @@ check("moulds: their costs add up to the mould cost to the cent",
                          row["mould_cost"]))
 
 totals = table(wb["totals"])
-SCALE = {"max_deviation": 1000}
+SCALE = {"max_deviation": 1000, "min_panel_width": 1000}
 bad = []
 for t in totals:
     name = t["quantity"]

@@ -18,6 +18,7 @@ FITS="sp_misfits, sp_fitted"
 JOINTS="max_gap, mean_gap, max_kink, mean_kink, gaps_over, kinks_over"
 MOULDS="moulds, sp_moulds, dp_moulds, largest_family, single_moulds"
 LENGTH="joint_length"
+WIDTHS="min_panel_width, slivers"
 
 # run_pair NAME ARGS...: the run with ARGS into NAME.db and with
 # --measure all into NAME-all.db.
@@ -45,23 +46,23 @@ nulls() {
     sqlite3 -batch "$1" "SELECT count(*) FROM options WHERE $3 AND $cond"
 }
 
-ALWAYS="nu, nv, threshold_mm, panels, fp_count, sp_count, dp_count, fp_area, sp_area, dp_area, area, fp_cost, sp_cost, dp_cost, cost, planarity, max_deviation, max_panel_area, p_dist, feasible, flat_count, flat_area, saddle_count, saddle_area, rank, crowding, knee, area_cost, panel_cost, joint_cost, mould_cost"
-ALL="$ALWAYS, $FITS, $JOINTS, $MOULDS, $LENGTH"
+ALWAYS="nu, nv, threshold_mm, panels, fp_count, sp_count, dp_count, fp_area, sp_area, dp_area, area, fp_cost, sp_cost, dp_cost, cost, planarity, max_deviation, max_panel_area, min_panel_area, p_dist, feasible, flat_count, flat_area, saddle_count, saddle_area, rank, crowding, knee, area_cost, panel_cost, joint_cost, mould_cost"
+ALL="$ALWAYS, $FITS, $JOINTS, $MOULDS, $LENGTH, $WIDTHS"
 
 # 1. The paper's typing, objectives and prices: nothing beyond the panels.
 run_pair paper --sp-fit no --sp-as-fp
 same "paper: runs.measured is empty, --measure all every measure" \
     "$(sqlite3 paper.db 'SELECT quote(measured) FROM runs')|$(sqlite3 paper-all.db 'SELECT measured FROM runs')" \
-    "''|fits,joints,moulds,joint_length"
+    "''|fits,joints,moulds,joint_length,widths"
 same "paper: every number it measured = --measure all's, to the bit (rank, crowding, knee too)" \
     "$(differ paper.db paper-all.db "$ALWAYS")" 0
 same "paper: its Pareto options in full = --measure all's" \
     "$(differ paper.db paper-all.db "$ALL" "WHERE rank = 1")" 0
 others=$(sqlite3 paper.db 'SELECT count(*) FROM options WHERE rank > 1')
-same "paper: every other option's fits, joints, moulds, joint length NULL" \
-    "$(nulls paper.db "$FITS, $JOINTS, $MOULDS, $LENGTH" 'rank > 1')" "$others"
+same "paper: every other option's fits, joints, moulds, joint length, widths NULL" \
+    "$(nulls paper.db "$FITS, $JOINTS, $MOULDS, $LENGTH, $WIDTHS" 'rank > 1')" "$others"
 same "paper: --measure all leaves nothing NULL" \
-    "$(sqlite3 paper-all.db "SELECT count(*) FROM options WHERE sp_fitted IS NULL OR gaps_over IS NULL OR moulds IS NULL OR joint_length IS NULL")" 0
+    "$(sqlite3 paper-all.db "SELECT count(*) FROM options WHERE sp_fitted IS NULL OR gaps_over IS NULL OR moulds IS NULL OR joint_length IS NULL OR slivers IS NULL")" 0
 if [ "$others" -gt 0 ]; then pass "paper: the space has options off the front ($others)"; else fail "paper: the space has options off the front"; fi
 
 # 2. Typing by fit (the default): the fits, nothing else.
@@ -77,6 +78,10 @@ run_pair gap --max-gap 5
 same "gap limit: runs.measured" "$(sqlite3 gap.db 'SELECT measured FROM runs')" fits,joints
 same "gap limit: = --measure all's over what it measured (feasibility too)" \
     "$(differ gap.db gap-all.db "$ALWAYS, $FITS, $JOINTS")" 0
+run_pair width --min-panel-width 2.2
+same "width limit: runs.measured" "$(sqlite3 width.db 'SELECT measured FROM runs')" fits,widths
+same "width limit: = --measure all's over what it measured (feasibility too)" \
+    "$(differ width.db width-all.db "$ALWAYS, $FITS, $WIDTHS")" 0
 run_pair priced --joint-cost 40 --mould-cost 1000,5000 --sp-fit no
 same "joint and mould prices: runs.measured" "$(sqlite3 priced.db 'SELECT measured FROM runs')" moulds,joint_length
 same "joint and mould prices: = --measure all's over what it measured" \

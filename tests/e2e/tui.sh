@@ -109,10 +109,10 @@ check "p shows Pareto options only here too" '3 of 75 options shown \| Pareto on
 keys p q
 check "back in the table every option shows" '^ row [0-9,]+ of 75  .*filter none *$'
 keys C
-check "C opens the column chooser" 'Columns: 12 of 28 shown, 80 characters'
+check "C opens the column chooser" 'Columns: 12 of 30 shown, 80 characters'
 keys j j Space
 check "Space hides planarity" '\[ \] planarity'
-keys G Space K K K K K K K K K K K K K K K K K K K K K K K K K K Enter
+keys G Space K K K K K K K K K K K K K K K K K K K K K K K K K K K K Enter
 check "hidden planarity, gen shown second" '^ +No\. +gen P +DP area +cost '
 keys q Enter
 check "the chosen columns stay for the session" '^ +No\. +gen P +DP area +cost '

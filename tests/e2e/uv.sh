@@ -127,5 +127,5 @@ sql "$db" "ALTER TABLE runs DROP COLUMN uv; ALTER TABLE runs DROP COLUMN warning
 expect "facet migrate on a v3 file" 0 "$FACET" migrate "$db"
 expect "facet runs on the migrated file" 0 "$FACET" runs "$db"
 same "migrated: version 9, runs.uv back, NULL, runs.warnings empty" \
-    "$(sql "$db" "SELECT (SELECT user_version FROM pragma_user_version), (SELECT count(*) FROM runs WHERE uv IS NULL), (SELECT count(*) FROM runs WHERE warnings = '')")" "11|2|2"
+    "$(sql "$db" "SELECT (SELECT user_version FROM pragma_user_version), (SELECT count(*) FROM runs WHERE uv IS NULL), (SELECT count(*) FROM runs WHERE warnings = '')")" "12|2|2"
 exit 0

@@ -14,10 +14,23 @@
  * cost, a 1 x 1 grid, one job) that store_run_create accepts. */
 void store_fixture_run(struct run_info *run);
 
+/* SQL that takes a current file back to schema version 11: the columns
+ * version 12 added (slivers: the run's width limit, the smallest panel's
+ * area and width and the slivers of each option and surface), dropped
+ * (set user_version after it). */
+#define STORE_FIXTURE_UNDO_V12 \
+    "ALTER TABLE runs DROP COLUMN min_panel_width;" \
+    "ALTER TABLE options DROP COLUMN min_panel_area;" \
+    "ALTER TABLE options DROP COLUMN min_panel_width;" \
+    "ALTER TABLE options DROP COLUMN slivers;" \
+    "ALTER TABLE option_surfaces DROP COLUMN min_panel_area;" \
+    "ALTER TABLE option_surfaces DROP COLUMN min_panel_width;" \
+    "ALTER TABLE option_surfaces DROP COLUMN slivers;"
+
 /* SQL that takes a current file back to schema version 10: the columns
  * version 11 added (each SP panel's fitted surface), dropped (set
  * user_version after it). */
-#define STORE_FIXTURE_UNDO_V11 \
+#define STORE_FIXTURE_UNDO_V11 STORE_FIXTURE_UNDO_V12 \
     "ALTER TABLE panels DROP COLUMN sp_surface;" \
     "ALTER TABLE panels DROP COLUMN sp_axis_x;" \
     "ALTER TABLE panels DROP COLUMN sp_axis_y;" \

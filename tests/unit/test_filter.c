@@ -136,7 +136,7 @@ static void test_columns_table(void **state)
         "panel_cost", "joint_cost", "mould_cost", "max_gap", "mean_gap",
         "max_kink", "mean_kink", "gaps_over", "kinks_over", "sp_misfits",
         "sp_fitted", "module_w", "module_h", "modules", "sp_min_radius",
-        "run",
+        "min_panel_area", "min_panel_width", "slivers", "run",
     };
     for (int k = 0; k < NCOLUMNS; k++)
         assert_string_equal(option_quantities[k].name, expected[k]);
@@ -522,13 +522,14 @@ static void test_error_positions(void **state)
                            "number, generation, nu, nv, threshold_mm, panels, "
                            "{fp,sp,dp}_count, {fp,sp,dp}_area, area, "
                            "{fp,sp,dp,area,panel,joint,mould}_cost, cost, "
-                           "planarity, max_deviation, max_panel_area, p_dist, "
+                           "planarity, max_deviation, {max,min}_panel_area, "
+                           "p_dist, "
                            "feasible, rank, crowding, knee, joint_length, "
                            "moulds, {sp,dp,single}_moulds, largest_family, "
                            "{max,mean}_gap, {max,mean}_kink, "
                            "{gaps,kinks}_over, sp_misfits, sp_fitted, "
                            "module_w, module_h, modules, sp_min_radius, "
-                           "run, u, v, "
+                           "min_panel_width, slivers, run, u, v, "
                            "threshold, pareto, CLASS_{count,area})");
 }
 

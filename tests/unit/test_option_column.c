@@ -93,6 +93,9 @@ static struct option_row option_k(int k)
     t->sp_misfits = (size_t)(19 + k);
     t->sp_fitted = (size_t)(23 + k);
     t->sp_min_radius = 4.375 + k;
+    t->min_panel_area = 0.125 + k;
+    t->min_panel_width = 0.3125 + k;
+    t->slivers = (size_t)(29 + k);
     o.module_w = 1.25 + k;
     o.module_h = 0.75 + k;
     o.modules = (size_t)(2 + k);
@@ -136,6 +139,9 @@ static double by_hand(const struct option_row *o, const char *name)
         {"sp_misfits", (double)t->sp_misfits},
         {"sp_fitted", (double)t->sp_fitted},
         {"sp_min_radius", t->sp_min_radius},
+        {"min_panel_area", t->min_panel_area},
+        {"min_panel_width", t->min_panel_width},
+        {"slivers", (double)t->slivers},
         {"module_w", o->module_w},
         {"module_h", o->module_h},
         {"modules", (double)o->modules},
@@ -238,7 +244,8 @@ static void test_values_read_the_row(void **state)
  * quantities, and an objective's value is its column's: the front a run
  * ranks by is the front the tables show. The names users' scripts give
  * --objectives (the nineteen of every Facet since schema v7) all still
- * parse, and sp_min_radius (schema v10). */
+ * parse, and sp_min_radius (schema v10), min_panel_area, min_panel_width
+ * and slivers (v12). */
 static void test_metrics_are_columns(void **state)
 {
     (void)state;
@@ -248,7 +255,7 @@ static void test_metrics_are_columns(void **state)
         "fp_count", "sp_count", "dp_count", "max_deviation",
         "max_panel_area", "p_dist", "moulds", "sp_moulds", "dp_moulds",
         "joint_length", "max_gap", "max_kink", "sp_misfits",
-        "sp_min_radius"};
+        "sp_min_radius", "min_panel_area", "min_panel_width", "slivers"};
     int objectives = 0;
     for (int k = 0; k < OPTION_QUANTITIES; k++)
         objectives += option_quantities[k].objective;
@@ -486,6 +493,9 @@ static const char *stored_unit_by_name(const char *name)
         return "m";
     /* a radius in m (docs/store.md) */
     if (strcmp(name, "sp_min_radius") == 0)
+        return "m";
+    /* a panel's width in m, shown in mm (docs/method.md: Slivers) */
+    if (strcmp(name, "min_panel_width") == 0)
         return "m";
     /* a joint's gap in mm, its kink in degrees (docs/method.md: Panels as
      * built) */

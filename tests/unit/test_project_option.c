@@ -37,6 +37,7 @@
 #include "core/project/project.h"
 #include "core/project/project_grids.h"
 #include "core/project/project_option.h"
+#include "core/quantity/quantity.h"
 #include "core/surface/example.h"
 #include "core/surface/example_skin.h"
 #include "tests/support/temp_dir.h"
@@ -434,12 +435,15 @@ static void test_skin_brute_force(void **state)
     struct surface_grid *g = open_skin(6, &p);
     project_module_grids(&p, 3.2, 2.9, g);
     struct option_params params = test_params(3);
+    /* A width limit some of the skin's panels are under (slivers). */
+    params.classify.min_panel_width = 2.7;
     struct project_option option;
     evaluate(&p, g, &params, 2, &option);
 
     struct option_totals sum;
     memset(&sum, 0, sizeof sum);
     double mean_gap = 0, mean_kink = 0, min_radius = INFINITY;
+    double min_area = INFINITY, min_width = INFINITY;
     size_t alone_moulds = 0, started = 0, all_joints = 0;
     for (size_t i = 0; i < p.nsurfaces; i++) {
         struct option_params own = params;
@@ -480,6 +484,9 @@ static void test_skin_brute_force(void **state)
         sum.sp_misfits += t.sp_misfits;
         if (!isnan(t.sp_min_radius))
             min_radius = fmin(min_radius, t.sp_min_radius);
+        min_area = fmin(min_area, t.min_panel_area);
+        min_width = fmin(min_width, t.min_panel_width);
+        sum.slivers += t.slivers;
         /* Every cell of a face is a panel: each side between two is a
          * joint. */
         size_t joints = (size_t)(g[i].nu - 1) * (size_t)g[i].nv +
@@ -513,6 +520,12 @@ static void test_skin_brute_force(void **state)
         assert_true(isnan(b->sp_min_radius));
     else
         same_bits(b->sp_min_radius, min_radius, "smallest SP radius");
+    /* Slivers: the least area and width of the surfaces', their slivers
+     * added. */
+    same_bits(b->min_panel_area, min_area, "smallest panel area");
+    same_bits(b->min_panel_width, min_width, "smallest panel width");
+    assert_int_equal(b->slivers, sum.slivers);
+    assert_true(sum.slivers > 0 && sum.slivers < b->panels);
     assert_int_equal(option.joints, all_joints);
     assert_true(relative(b->mean_gap_mm, mean_gap / (double)all_joints) <
                 1e-12);
@@ -520,6 +533,7 @@ static void test_skin_brute_force(void **state)
                 1e-12);
     /* Feasible only if no surface is over a limit. */
     assert_int_equal(b->feasible, sum.gaps_over == 0 && sum.kinks_over == 0 &&
+                                      sum.slivers == 0 &&
                                       sum.max_panel_area <=
                                           params.classify.max_panel_area);
     /* Moulds: counted once, each on the surface that starts it; fewer
@@ -536,6 +550,33 @@ static void test_skin_brute_force(void **state)
                          sum.area_of[TYPE_FP] * 701 +
                              sum.area_of[TYPE_SP] * 766 +
                              sum.area_of[TYPE_DP] * 1518) < 1e-12);
+    project_option_free(&option);
+    free(g);
+    project_close(&p);
+}
+
+/* A count a run does not measure is not known for the building either:
+ * TOTALS_UNKNOWN (stored NULL), never the surfaces' unknowns added (which
+ * wrapped round to a count near 2^64 for two surfaces and more). */
+static void test_unmeasured_counts_unknown(void **state)
+{
+    (void)state;
+    struct project p;
+    struct surface_grid *g = open_skin(4, &p);
+    project_module_grids(&p, 3, 3, g);
+    struct option_params params = test_params(3);
+    params.classify.max_gap = params.classify.max_kink = 0;
+    params.unmeasured = OPTION_MEASURE_JOINTS | OPTION_MEASURE_WIDTHS;
+    struct project_option option;
+    evaluate(&p, g, &params, 2, &option);
+    assert_true(p.nsurfaces > 1);
+    const struct option_totals *b = &option.totals;
+    assert_true(b->gaps_over == TOTALS_UNKNOWN);
+    assert_true(b->kinks_over == TOTALS_UNKNOWN);
+    assert_true(b->slivers == TOTALS_UNKNOWN);
+    assert_true(isnan(b->min_panel_width));
+    assert_true(isnan(quantity_of_totals(quantity_named("gaps_over"), b)));
+    assert_true(b->min_panel_area > 0);
     project_option_free(&option);
     free(g);
     project_close(&p);
@@ -692,6 +733,7 @@ int main(void)
         cmocka_unit_test(test_one_surface),
         cmocka_unit_test(test_copies_share_moulds),
         cmocka_unit_test(test_skin_brute_force),
+        cmocka_unit_test(test_unmeasured_counts_unknown),
         cmocka_unit_test(test_threads),
         cmocka_unit_test(test_module_grids),
         cmocka_unit_test(test_grids_dedupe),

@@ -147,8 +147,8 @@ static void test_row_and_registry(void **state)
         if (null)
             assert_string_equal(text, "-");
     }
-    assert_int_equal(nulls, 22);  /* the columns of versions 5 (10), 7 (8),
-                                     8 (3: no module) and 10 (1) */
+    assert_int_equal(nulls, 25);  /* the columns of versions 5 (10), 7 (8),
+                                     8 (3: no module), 10 (1) and 12 (3) */
     assert_true(isnan(quantity_of_totals(quantity_named("moulds"), t)));
     assert_true(isnan(quantity_of_totals(quantity_named("dp_moulds"), t)));
     free(rows);

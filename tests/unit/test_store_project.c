@@ -102,6 +102,10 @@ static void option_of(int k, struct option_row *row,
         s->totals.feasible = i;
         /* schema v10's, kept per surface; none on the second surface */
         s->totals.sp_min_radius = i ? NAN : 2.5 + k;
+        /* schema v12's: widths not measured on the second surface */
+        s->totals.min_panel_area = 0.25 + i + k;
+        s->totals.min_panel_width = i ? NAN : 0.375 + k;
+        s->totals.slivers = i ? TOTALS_UNKNOWN : (size_t)(2 + k);
         s->moulds_used = 5 + i;
         s->joints = 40 + i;
         row->totals.panels += s->totals.panels;
@@ -169,6 +173,11 @@ static void test_project_rows_round_trip(void **state)
         assert_int_equal(got[i].totals.feasible, i);
         assert_true(i ? isnan(got[i].totals.sp_min_radius)
                       : got[i].totals.sp_min_radius == 4.5);
+        assert_true(got[i].totals.min_panel_area == 2.25 + i);
+        assert_true(i ? isnan(got[i].totals.min_panel_width)
+                      : got[i].totals.min_panel_width == 2.375);
+        assert_true(got[i].totals.slivers ==
+                    (i ? TOTALS_UNKNOWN : (size_t)4));
     }
     free(got);
     struct option_row row;
@@ -194,6 +203,13 @@ static void test_project_rows_round_trip(void **state)
                            " WHERE option = 2 AND surface = 0") == 4.5);
     assert_true(sql_number("SELECT count(*) FROM option_surfaces"
                            " WHERE sp_min_radius IS NULL") == 3);
+    assert_true(sql_number("SELECT min_panel_width FROM option_surfaces"
+                           " WHERE option = 2 AND surface = 0") == 2.375);
+    assert_true(sql_number("SELECT slivers FROM option_surfaces"
+                           " WHERE option = 2 AND surface = 0") == 4);
+    assert_true(sql_number("SELECT count(*) FROM option_surfaces"
+                           " WHERE min_panel_width IS NULL AND slivers IS NULL"
+                           " AND min_panel_area IS NOT NULL") == 3);
     assert_true(sql_number("SELECT sum(panels) FROM option_surfaces"
                            " WHERE option = 2") ==
                 sql_number("SELECT panels FROM options WHERE number = 2"));
