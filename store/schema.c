@@ -376,6 +376,14 @@ static const char schema_v12[] =
     "ALTER TABLE option_surfaces ADD COLUMN min_panel_width REAL;"
     "ALTER TABLE option_surfaces ADD COLUMN slivers INTEGER;";
 
+/* Version 13: the least radius each SP panel is bent to on its fit (m,
+ * sp_fit.h's bending_radius), so that an export develops and schedules
+ * the panel from what was stored instead of fitting it again; NULL for a
+ * panel not built on a fit and for every panel stored before (the export
+ * then fits those again). */
+static const char schema_v13[] =
+    "ALTER TABLE panels ADD COLUMN sp_bending_radius REAL;";
+
 static const char *const migrations[STORE_SCHEMA_VERSION] = {
     schema_v1,
     schema_v2,
@@ -389,6 +397,7 @@ static const char *const migrations[STORE_SCHEMA_VERSION] = {
     schema_v10,
     schema_v11,
     schema_v12,
+    schema_v13,
 };
 
 int store_fail(struct store *store, const char *doing,

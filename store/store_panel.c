@@ -11,12 +11,13 @@
 
 static const char *const sp_surface_name[] = {NULL, "cylinder", "cone"};
 
-/* Binds fit into the 12 columns from c (sp_surface .. sp_half_angle, the
- * half-angle in degrees as worst_kink); returns the next column. */
+/* Binds fit into the 13 columns from c (sp_surface .. sp_half_angle, the
+ * half-angle in degrees as worst_kink, then sp_bending_radius); returns
+ * the next column. */
 static int bind_sp_fit(sqlite3_stmt *s, int c, const struct panel_sp_fit *fit)
 {
     if (fit->shape == PANEL_SP_NONE) {
-        for (int k = 0; k < 12; k++)
+        for (int k = 0; k < 13; k++)
             sqlite3_bind_null(s, c++);
         return c;
     }
@@ -30,11 +31,13 @@ static int bind_sp_fit(sqlite3_stmt *s, int c, const struct panel_sp_fit *fit)
     for (int d = 0; d < 3; d++)
         store_bind_or_null(s, c++, fit->apex[d]);
     store_bind_or_null(s, c++, units_deg(fit->half_angle));
+    store_bind_or_null(s, c++, fit->bending_radius);
     return c;
 }
 
 /* The fit bind_sp_fit stored, from column c; returns the next column. A
- * panel stored before schema v11, or not built on a fit: shape NONE. */
+ * panel stored before schema v11, or not built on a fit: shape NONE;
+ * before v13: no bending radius (NaN). */
 static int read_sp_fit(sqlite3_stmt *s, int c, struct panel_sp_fit *fit)
 {
     const char *name = (const char *)sqlite3_column_text(s, c++);
@@ -50,6 +53,7 @@ static int read_sp_fit(sqlite3_stmt *s, int c, struct panel_sp_fit *fit)
     for (int d = 0; d < 3; d++)
         fit->apex[d] = store_column_or_nan(s, c++);
     fit->half_angle = units_rad_of_deg(store_column_or_nan(s, c++));
+    fit->bending_radius = store_column_or_nan(s, c++);
     return c;
 }
 
@@ -91,13 +95,15 @@ int store_panels_put(struct store *store, int64_t run, int64_t option,
             " worst_gap, worst_gap_side, worst_kink, best_cylinder,"
             " best_cone, misfit_reason, sp_surface, sp_axis_x, sp_axis_y,"
             " sp_axis_z, sp_direction_x, sp_direction_y, sp_direction_z,"
-            " sp_radius, sp_apex_x, sp_apex_y, sp_apex_z, sp_half_angle)"
+            " sp_radius, sp_apex_x, sp_apex_y, sp_apex_z, sp_half_angle,"
+            " sp_bending_radius)"
             " VALUES (?1, ?2, ?3, ?4, ?5,"
             " ?6, ?7, ?8, ?9, ?10, ?11, ?12, ?13, ?14, ?15, ?16, ?17, ?18,"
             " ?19, ?20, ?21, ?22, ?23, ?24, ?25, ?26, ?27, ?28, ?29, ?30,"
             " ?31, ?32, ?33, ?34, ?35, ?36, ?37, ?38, ?39, ?40, ?41, ?42,"
             " ?43, ?44, ?45, ?46, ?47, ?48, ?49, ?50, ?51, ?52, ?53, ?54,"
-            " ?55, ?56, ?57, ?58, ?59)", &panel, "storing panels", err);
+            " ?55, ?56, ?57, ?58, ?59, ?60)", &panel, "storing panels",
+            err);
     for (size_t k = 0; k < p->npanels && rc == FACET_OK; k++) {
         const struct panel *x = &p->panels[k];
         int c = 1;
@@ -259,7 +265,7 @@ int store_panels_get(struct store *store, int64_t run, int64_t option,
         " best_cylinder, best_cone, misfit_reason IS NOT NULL, sp_surface,"
         " sp_axis_x, sp_axis_y, sp_axis_z, sp_direction_x, sp_direction_y,"
         " sp_direction_z, sp_radius, sp_apex_x, sp_apex_y, sp_apex_z,"
-        " sp_half_angle FROM panels"
+        " sp_half_angle, sp_bending_radius FROM panels"
         " WHERE run = ?1 AND option = ?2"
         " ORDER BY j, i", &s, "reading panels", err);
     if (rc != FACET_OK)

@@ -227,11 +227,15 @@ static size_t export_surfaces(const struct study_option *p)
 }
 
 /* Each panel's fitted cylinder or cone, the one exporters share: into
- * fit (npanels), the fits made again over surface as the evaluation made
- * them (cell sides, then built_option_fit at the panels' threshold), kept
- * where the panel is built SP on it; every other panel gets fitted 0 and
- * NaN numbers. A panel the fits build otherwise than the evaluation did
- * gets none: no number that belongs to another build. */
+ * fit (npanels). A panel built SP on a fit the evaluation kept
+ * (panel.h's sp_fit) is built on that one; only when some panel built SP
+ * has none (a run that typed SP panels by class, a store older than
+ * schema v13) are the fits made again over surface as the evaluation
+ * makes them (cell sides, then built_option_fit at the panels'
+ * threshold), kept for those panels where the panel is built SP on it.
+ * Every other panel gets fitted 0 and NaN numbers: no number that
+ * belongs to another build. surface may be NULL when no fit is made
+ * again. */
 static int sp_fits(const struct surface *surface,
                    const struct panelization *panels, double threshold,
                    struct built_panel *fit, struct facet_error *err)
@@ -244,11 +248,19 @@ static int sp_fits(const struct surface *surface,
         .bending_radius = NAN};
     for (size_t k = 0; k < panels->npanels; k++)
         fit[k] = none;
-    size_t sp = 0;
-    for (size_t k = 0; k < panels->npanels; k++)
-        sp += panels->panels[k].type == TYPE_SP;
-    if (sp == 0)
+    size_t unfitted = 0;
+    for (size_t k = 0; k < panels->npanels; k++) {
+        const struct panel *p = &panels->panels[k];
+        if (p->type == TYPE_SP && p->built == TYPE_SP &&
+            built_panel_of_fit(&p->sp_fit, p->sp_deviation, &fit[k]) != 0)
+            unfitted++;
+    }
+    if (unfitted == 0)
         return FACET_OK;
+    if (surface == NULL)
+        return facet_error_set(err, FACET_EINPUT,
+                               "%zu SP panels have no fit stored, and the "
+                               "surface is not open to fit them", unfitted);
     struct cell_sides sides;
     struct built_option built;
     memset(&built, 0, sizeof built);
@@ -263,7 +275,7 @@ static int sp_fits(const struct surface *surface,
     for (size_t k = 0; rc == FACET_OK && k < panels->npanels; k++) {
         const struct built_panel *b = &built.panels[k];
         if (b->fitted && b->type == TYPE_SP &&
-            panels->panels[k].built == TYPE_SP)
+            panels->panels[k].built == TYPE_SP && !fit[k].fitted)
             fit[k] = *b;
     }
     built_option_free(&built);
@@ -292,7 +304,6 @@ static int option_fits(const struct study_option *p,
     for (size_t s = 0; rc == FACET_OK && s < n; s++) {
         char single[256];
         struct export_surface e = export_surface(p, s, single, sizeof single);
-        assert(e.surface != NULL);
         fit[s] = malloc((e.panels->npanels ? e.panels->npanels : 1) *
                         sizeof *fit[s]);
         if (fit[s] == NULL)
@@ -591,7 +602,7 @@ int study_export(struct store *store, int64_t run, int64_t number,
      * asked for between them leaves no file. */
     struct built_panel **fit = NULL;
     if (rc == FACET_OK && (r->xlsx || r->dxf) &&
-        (rc = export_stage(r->hooks, "fitting the SP panels again", err)) ==
+        (rc = export_stage(r->hooks, "taking the SP panels' fits", err)) ==
             FACET_OK)
         rc = option_fits(&p, &fit, err);
     if (rc == FACET_OK && building && (r->dxf || r->ifc) &&

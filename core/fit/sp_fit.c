@@ -556,15 +556,44 @@ void built_panel_reason(const struct built_option *built, size_t panel,
              "best cone %s", units_mm(built->threshold), cylinder, cone);
 }
 
+int built_panel_of_fit(const struct panel_sp_fit *fit, double deviation,
+                       struct built_panel *out)
+{
+    int cone = fit->shape == PANEL_SP_CONE;
+    if (fit->shape == PANEL_SP_NONE || !isfinite(fit->bending_radius))
+        return -1;
+    for (int d = 0; d < 3; d++)
+        if (!isfinite(fit->direction[d]) ||
+            !isfinite(cone ? fit->apex[d] : fit->axis_point[d]))
+            return -1;
+    if (!isfinite(cone ? fit->half_angle : fit->radius))
+        return -1;
+    struct developable d = {cone ? DEVELOPABLE_CONE : DEVELOPABLE_CYLINDER,
+                            {0, 0, 0}, {0, 0, 0}, cone ? 0 : fit->radius,
+                            cone ? tan(fit->half_angle) : 0};
+    /* a cone from its apex along the direction towards the panel: the
+     * radius grows by tan(half-angle) a metre, the surface the fit's */
+    for (int k = 0; k < 3; k++) {
+        d.axis[k] = fit->direction[k];
+        d.base[k] = cone ? fit->apex[k] : fit->axis_point[k];
+    }
+    *out = (struct built_panel){
+        .type = TYPE_SP, .fitted = 1, .misfit = 0, .fit = d,
+        .sp_deviation = deviation, .best_cylinder = NAN, .best_cone = NAN,
+        .bending_radius = fit->bending_radius};
+    return 0;
+}
+
 void built_panel_describe(const struct built_panel *b,
                           const double centroid[3], struct panel_sp_fit *out)
 {
     for (int d = 0; d < 3; d++)
         out->axis_point[d] = out->direction[d] = out->apex[d] = NAN;
-    out->radius = out->half_angle = NAN;
+    out->radius = out->half_angle = out->bending_radius = NAN;
     out->shape = PANEL_SP_NONE;
     if (!b->fitted)
         return;
+    out->bending_radius = b->bending_radius;
     double alpha = developable_describe(&b->fit, centroid, out->axis_point,
                                         out->direction, out->apex);
     if (isfinite(out->apex[0])) {

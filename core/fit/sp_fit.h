@@ -143,6 +143,16 @@ void built_panel_describe(const struct built_panel *b,
                           const double centroid[3],
                           struct panel_sp_fit *out);
 
+/* The panel built on the fit that fit describes (built_panel_describe's
+ * inverse): type SP, fitted, on the same cylinder or cone (up to
+ * rounding: a cone's base is its apex), sp_deviation deviation (m) and
+ * fit's bending radius; best_cylinder and best_cone NaN (not kept). Returns
+ * 0, or -1 and leaves *out alone when fit describes no surface (shape
+ * NONE) or lacks a number a panel is developed and scheduled by (a fit
+ * stored before schema v13 has no bending radius). */
+int built_panel_of_fit(const struct panel_sp_fit *fit, double deviation,
+                       struct built_panel *out);
+
 /* The fits of one panel grid, kept across the thresholds it is evaluated
  * at. A grid's panels (panels_build) are the same at every threshold; only
  * their types change. A panel's samples, its cylinder and its cones do not

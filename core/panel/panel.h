@@ -58,7 +58,10 @@ int panel_mode_parse(const char *text, const char *what,
 /* The cylinder or cone an SP panel is built on (sp_fit.h), as a
  * fabricator reads it: the foot of the panel's centroid on the axis and
  * the axis's direction (developable.h's developable_describe), a
- * cylinder's radius, a cone's apex and half-angle. */
+ * cylinder's radius, a cone's apex and half-angle, and the least radius
+ * the panel is bent to. It is the whole fit: the exports develop and
+ * describe the panel from it (developable_of_sp_fit) without fitting it
+ * again. */
 enum panel_sp_shape { PANEL_SP_NONE, PANEL_SP_CYLINDER, PANEL_SP_CONE };
 
 struct panel_sp_fit {
@@ -71,6 +74,12 @@ struct panel_sp_fit {
     double radius;              /* a cylinder's (m); NaN for a cone */
     double apex[3];             /* a cone's (m); NaN for a cylinder */
     double half_angle;          /* a cone's (rad); NaN for a cylinder */
+    double bending_radius;      /* the least radius of curvature over the
+                                   panel's samples (m): a cylinder's
+                                   radius, a cone's at its narrow end
+                                   (sp_fit.h's built_panel); NaN when not
+                                   known (a panel stored before schema
+                                   v13) */
 };
 
 struct panel {

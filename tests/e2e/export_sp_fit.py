@@ -122,7 +122,8 @@ columns = [("sp_axis_%s" % x, "SP axis point %s (m)" % x) for x in "xyz"] + \
     [("sp_direction_%s" % x, "SP axis direction %s" % x) for x in "xyz"] + \
     [("sp_radius", "SP cylinder radius (m)")] + \
     [("sp_apex_%s" % x, "SP cone apex %s (m)" % x) for x in "xyz"] + \
-    [("sp_half_angle", "SP cone half-angle (deg)")]
+    [("sp_half_angle", "SP cone half-angle (deg)")] + \
+    [("sp_bending_radius", "SP bending radius (m)")]
 mismatch = []
 for r in rows:
     s = stored[(r["column i"], r["row j"])]

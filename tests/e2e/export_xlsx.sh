@@ -56,6 +56,49 @@ for kind in cylinder cone; do
         sp_$kind.truth || echo "not ok - export_sp_fit.py on the $kind (status $?)"
 done
 
+# The export schedules each SP panel from the fit the evaluation stored
+# (schema v13), not a fit of its own (the last stop's review: the fits
+# were made twice). The truth is the store itself, read by sqlite3: a
+# stored radius moved by 1 mm is the workbook's, to the bit, where a fit
+# made again would give the surface's own radius. And a store without
+# the bending radii (as schema 12 left them) is fitted again: every
+# panel's radius and bending radius then the evaluation's to 1e-12.
+cp sp_cylinder.db moved.db
+sqlite3 moved.db "UPDATE panels SET sp_radius = sp_radius + 0.001 WHERE sp_surface = 'cylinder'"
+expect "the moved store exports" 0 "$FACET" export moved.db --run 1 --option 1 --xlsx moved.xlsx
+if out=$(/usr/bin/python3 - moved.db moved.xlsx <<'PY' 2>&1
+import sqlite3, sys, openpyxl
+con = sqlite3.connect(sys.argv[1])
+stored = {(i, j): (r, b) for i, j, r, b in con.execute(
+    "SELECT i, j, sp_radius, sp_bending_radius FROM panels WHERE run=1 AND option=1 AND sp_surface='cylinder'")}
+ws = openpyxl.load_workbook(sys.argv[2])["panels"]
+head = [c.value for c in ws[1]]
+rows = [dict(zip(head, r)) for r in ws.iter_rows(min_row=2, values_only=True)]
+got = {(r["column i"], r["row j"]): r["SP cylinder radius (m)"] for r in rows
+       if r["SP cylinder radius (m)"] is not None}
+assert stored and got.keys() == stored.keys(), (len(stored), len(got))
+# the workbook holds 16 digits (libxlsxwriter's %.16g): the store's to
+# 1e-15, where a fit made again would be the 1 mm move off
+bad = [(k, got[k], stored[k][0]) for k in stored
+       if abs(got[k] - stored[k][0]) > 1e-15 * abs(stored[k][0])]
+assert not bad, bad[:3]
+print(len(stored))
+PY
+); then
+    pass "the workbook's cylinder radii are the store's, as stored (to its 16 digits), for $out panels: no fit made again"
+else
+    echo "not ok - the workbook's cylinder radii are the store's, as stored: $out"
+fi
+for kind in cylinder cone; do
+    cp sp_$kind.db v12_$kind.db
+    sqlite3 v12_$kind.db "UPDATE panels SET sp_bending_radius = NULL"
+    expect "a $kind's store without bending radii exports" 0 "$FACET" export \
+        v12_$kind.db --run 1 --option 1 --xlsx v12_$kind.xlsx
+    /usr/bin/python3 "$HERE/export_sp_fit.py" sp_$kind.db v12_$kind.xlsx $kind \
+        sp_$kind.truth | sed 's/^\(not \)*ok - /&without bending radii, fitted again: /' ||
+        echo "not ok - export_sp_fit.py on the $kind fitted again (status $?)"
+done
+
 # A building of four files: its panels evaluated again, against
 # option_surfaces.
 four_surfaces || exit 1

@@ -23,6 +23,8 @@ fi
 "$FACET" example torus --res 24 -o "$WORK/torus.obj" >/dev/null || exit 1
 "$FACET" optimize "$WORK/torus.obj" --db "$WORK/old.db" --u 4:5 --v 4:5 \
     --threshold 3 >/dev/null 2>&1 || exit 1
+# the schema this Facet writes, from the file it just wrote
+CURRENT=$(sqlite3 "$WORK/old.db" 'PRAGMA user_version')
 "$store_v4" "$WORK/old.db" || exit 1
 q() { sqlite3 "$WORK/old.db" "$1"; }
 same "(the file is at schema 4)" "$(q 'PRAGMA user_version')" 4
@@ -32,11 +34,11 @@ same "(the file is at schema 4)" "$(q 'PRAGMA user_version')" 4
 # migrate, a writer asked for by name, migrates it.
 sum_before=$(sha256sum <"$WORK/old.db")
 expect_error "facet options refuses an older file, saying how to migrate it" \
-    'old.db: written by an older Facet \(schema 4; this one reads 12\).*facet migrate FILE' \
+    "old.db: written by an older Facet \\(schema 4; this one reads $CURRENT\\).*facet migrate FILE" \
     "$FACET" options "$WORK/old.db" --csv
 same "(sha256: the older file is as it was)" "$(sha256sum <"$WORK/old.db")" "$sum_before"
 expect "facet migrate migrates it" 0 "$FACET" migrate "$WORK/old.db"
-stdout_has "  ... and says so" 'old.db: migrated from schema 4 to 12$'
+stdout_has "  ... and says so" "old.db: migrated from schema 4 to $CURRENT\$"
 expect "(facet options lists the run)" 0 "$FACET" options "$WORK/old.db" --csv
 same "(sqlite3: migrated past 4, the old options' mould counts and joints NULL)" \
     "$(q 'SELECT (SELECT user_version >= 5 FROM pragma_user_version), count(*) FROM options
@@ -82,9 +84,9 @@ done
 # NULL, every measure, as every run before took them), no smallest SP
 # bending radius (10: NULL, never measured then), no smallest panel, its
 # width or slivers and no width limit (12: NULL, never measured then).
-same "(sqlite3: v4 migrated to 12, the run's options without a module)" \
+same "(sqlite3: v4 migrated to $CURRENT, the run's options without a module)" \
     "$(q 'SELECT (SELECT user_version FROM pragma_user_version), count(*), count(module_w), count(module_h), count(modules), (SELECT count(*) FROM surfaces), (SELECT count(*) FROM option_surfaces), (SELECT module_w_min IS NULL FROM runs), (SELECT measured IS NULL FROM runs), count(sp_min_radius), count(min_panel_area), count(min_panel_width), count(slivers), (SELECT min_panel_width IS NULL FROM runs) FROM options')" \
-    "12|4|0|0|0|0|0|1|1|0|0|0|0|1"
+    "$CURRENT|4|0|0|0|0|0|1|1|0|0|0|0|1"
 
 # A run of schema 7 (the last before projects) and one of schema 3: both
 # are refused by facet runs, and migrate to 12 with their runs as they were.
@@ -104,8 +106,8 @@ for version in 7 3; do
     expect_error "schema $version: facet runs refuses it, saying how to migrate it" \
         "written by an older Facet \\(schema $version;.*facet migrate FILE" "$FACET" runs "$db"
     expect "schema $version: facet migrate migrates it" 0 "$FACET" migrate "$db"
-    same "schema $version: migrated to 12, with the project tables" \
-        "$(sqlite3 "$db" "SELECT (SELECT user_version FROM pragma_user_version), count(*) FROM sqlite_master WHERE name IN ('surfaces', 'option_surfaces')")" "12|2"
+    same "schema $version: migrated to $CURRENT, with the project tables" \
+        "$(sqlite3 "$db" "SELECT (SELECT user_version FROM pragma_user_version), count(*) FROM sqlite_master WHERE name IN ('surfaces', 'option_surfaces')")" "$CURRENT|2"
     same "schema $version: the run and its options as they were" \
         "$(sqlite3 "$db" 'SELECT id, name, status, surface_sha256, u_min, u_max, v_min, v_max, options, knee, hypervolume FROM runs;
                           SELECT number, nu, nv, cost, rank FROM options ORDER BY number')" "$before"

@@ -122,10 +122,11 @@ fi
 # facet migrate.
 # (tools/store_v4 takes it back to version 4 first, as a Facet before the
 # cost model left it.)
+current=$(sql "$db" 'PRAGMA user_version')  # the schema this Facet writes
 "$(dirname "$FACET")/tools/store_v4" "$db" || fail "store_v4 took the file back to version 4"
 sql "$db" "ALTER TABLE runs DROP COLUMN uv; ALTER TABLE runs DROP COLUMN warnings; ALTER TABLE runs DROP COLUMN store_panels; PRAGMA user_version = 3;"
 expect "facet migrate on a v3 file" 0 "$FACET" migrate "$db"
 expect "facet runs on the migrated file" 0 "$FACET" runs "$db"
-same "migrated: version 9, runs.uv back, NULL, runs.warnings empty" \
-    "$(sql "$db" "SELECT (SELECT user_version FROM pragma_user_version), (SELECT count(*) FROM runs WHERE uv IS NULL), (SELECT count(*) FROM runs WHERE warnings = '')")" "12|2|2"
+same "migrated: version $current, runs.uv back, NULL, runs.warnings empty" \
+    "$(sql "$db" "SELECT (SELECT user_version FROM pragma_user_version), (SELECT count(*) FROM runs WHERE uv IS NULL), (SELECT count(*) FROM runs WHERE warnings = '')")" "$current|2|2"
 exit 0

@@ -14,11 +14,17 @@
  * cost, a 1 x 1 grid, one job) that store_run_create accepts. */
 void store_fixture_run(struct run_info *run);
 
+/* SQL that takes a current file back to schema version 12: the column
+ * version 13 added (each SP panel's bending radius), dropped (set
+ * user_version after it). */
+#define STORE_FIXTURE_UNDO_V13 \
+    "ALTER TABLE panels DROP COLUMN sp_bending_radius;"
+
 /* SQL that takes a current file back to schema version 11: the columns
  * version 12 added (slivers: the run's width limit, the smallest panel's
  * area and width and the slivers of each option and surface), dropped
  * (set user_version after it). */
-#define STORE_FIXTURE_UNDO_V12 \
+#define STORE_FIXTURE_UNDO_V12 STORE_FIXTURE_UNDO_V13 \
     "ALTER TABLE runs DROP COLUMN min_panel_width;" \
     "ALTER TABLE options DROP COLUMN min_panel_area;" \
     "ALTER TABLE options DROP COLUMN min_panel_width;" \

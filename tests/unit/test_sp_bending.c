@@ -18,6 +18,8 @@
 #include <stdlib.h>
 
 #include "core/evaluate/evaluate.h"
+#include "core/fit/developable.h"
+#include "core/fit/sp_fit.h"
 #include "core/panel/panel.h"
 #include "core/quantity/quantity.h"
 #include "tests/support/surface_fixture.h"
@@ -84,10 +86,12 @@ static void plane(double u, double v, double x[3])
 }
 
 /* Evaluates the surface point makes at grid nu x nv, threshold t (mm),
- * the measures left out unmeasured, into *totals. */
-static void evaluate(point_at point, int n, int m, int nu, int nv,
-                     double t, unsigned unmeasured,
-                     struct option_totals *totals)
+ * the measures left out unmeasured, into *totals; its panels into *keep
+ * (the caller frees them) unless keep is NULL. */
+static void evaluate_kept(point_at point, int n, int m, int nu, int nv,
+                          double t, unsigned unmeasured,
+                          struct option_totals *totals,
+                          struct panelization *keep)
 {
     char dir[256], path[300];
     assert_int_equal(temp_dir_make(dir, sizeof dir, "sp_bending"), 0);
@@ -106,9 +110,72 @@ static void evaluate(point_at point, int n, int m, int nu, int nv,
     struct panelization panels;
     if (option_evaluate(&s, &params, NULL, &panels, totals, &err) != FACET_OK)
         fail_msg("%s", err.message);
-    panelization_free(&panels);
+    if (keep != NULL)
+        *keep = panels;
+    else
+        panelization_free(&panels);
     surface_close(&s);
     temp_dir_remove(dir);
+}
+
+static void evaluate(point_at point, int n, int m, int nu, int nv,
+                     double t, unsigned unmeasured,
+                     struct option_totals *totals)
+{
+    evaluate_kept(point, n, m, nu, nv, t, unmeasured, totals, NULL);
+}
+
+/* Each SP panel keeps its whole fit (panel.h's sp_fit, schema v13), so
+ * that an export builds the panel from it without fitting it again: the
+ * bending radius of every panel, their least the option's sp_min_radius
+ * to the bit, and the surface built_panel_of_fit makes of it against the
+ * analytic surface: the design surface's points over the panel's cell
+ * (its UV box, the grid's, at 5 x 5 places) within the panel's own SP
+ * deviation of it, plus the mesh's sag. */
+static void check_kept_fits(point_at point, int nu, int nv, double sag)
+{
+    struct option_totals t;
+    struct panelization panels;
+    evaluate_kept(point, 120, 60, nu, nv, 3, 0, &t, &panels);
+    double least = INFINITY, worst = 0;
+    size_t fitted = 0;
+    for (size_t k = 0; k < panels.npanels; k++) {
+        const struct panel *p = &panels.panels[k];
+        struct built_panel b;
+        if (p->built != TYPE_SP || p->sp_fit.shape == PANEL_SP_NONE)
+            continue;
+        assert_int_equal(built_panel_of_fit(&p->sp_fit, p->sp_deviation, &b),
+                         0);
+        assert_true(b.bending_radius == p->sp_fit.bending_radius);
+        least = fmin(least, b.bending_radius);
+        fitted++;
+        for (int a = 0; a <= 4; a++)
+            for (int c = 0; c <= 4; c++) {
+                double u = (p->i + a / 4.0) / nu, v = (p->j + c / 4.0) / nv;
+                double x[3];
+                point(u, v, x);
+                double off = fabs(developable_distance(&b.fit, x)) -
+                             p->sp_deviation;
+                worst = fmax(worst, off);
+            }
+    }
+    printf("%zu SP panels kept their fits: least bending radius %.6f m "
+           "(sp_min_radius %.6f m); the design surface at most %.2g m "
+           "beyond each panel's SP deviation from its kept fit\n", fitted,
+           least, t.sp_min_radius, worst);
+    assert_true(fitted == t.sp_fitted && fitted > 0);
+    assert_true(least == t.sp_min_radius);
+    assert_true(worst <= sag);
+    panelization_free(&panels);
+}
+
+static void test_panels_keep_their_fits(void **state)
+{
+    (void)state;
+    /* the meshes' chords sag R (1 - cos(step / 2)) off the surface:
+     * under 0.2 mm for both */
+    check_kept_fits(cylinder, 4, 2, 2e-4);
+    check_kept_fits(cone, 4, 3, 2e-4);
 }
 
 static void test_cylinder_gives_its_radius(void **state)
@@ -172,6 +239,7 @@ int main(void)
         cmocka_unit_test(test_cone_gives_its_radius_nearest_the_apex),
         cmocka_unit_test(test_no_sp_panel_has_none),
         cmocka_unit_test(test_not_measured_without_fits),
+        cmocka_unit_test(test_panels_keep_their_fits),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
