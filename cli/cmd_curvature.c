@@ -5,15 +5,20 @@
  * formula.
  *
  * Rows are the welded vertices, in the order of the first OBJ `v` welded
- * into each (`v` gives that OBJ index, 1-based as in the file).
+ * into each (`v` gives that OBJ index, 1-based as in the file), whatever
+ * order the welding numbered them in; numbers are the shortest text that
+ * reads back to the same double (numformat.h's number_exact).
  */
 #include <math.h>
+#include <stdint.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "args.h"
 #include "classify_flags.h"
 #include "command.h"
+#include "core/base/numformat.h"
 #include "core/surface/curvature.h"
 #include "core/out/json.h"
 #include "core/out/outfile.h"
@@ -23,28 +28,67 @@
 static const char csv_header[] =
     "v,x,y,z,k1,k2,K,H,normal_x,normal_y,normal_z,boundary\n";
 
-/* Writes the rows as CSV; every double in %.17g, so it reads back to the
- * bit. */
+/* A welded vertex and the first OBJ v welded into it. */
+struct vertex_source {
+    uint32_t source;
+    size_t vertex;
+};
+
+static int by_source(const void *a, const void *b)
+{
+    uint32_t x = ((const struct vertex_source *)a)->source;
+    uint32_t y = ((const struct vertex_source *)b)->source;
+    return (x > y) - (x < y);
+}
+
+/* The welded vertices of m in the order of their first OBJ v (the file's
+ * order): malloc'ed, nvertices of them, or NULL when out of memory. */
+static size_t *file_order(const struct mesh *m)
+{
+    size_t n = m->nvertices ? m->nvertices : 1;
+    struct vertex_source *pair = malloc(n * sizeof *pair);
+    size_t *order = malloc(n * sizeof *order);
+    if (pair == NULL || order == NULL) {
+        free(pair);
+        free(order);
+        return NULL;
+    }
+    for (size_t v = 0; v < m->nvertices; v++)
+        pair[v] = (struct vertex_source){m->source_vertex[v], v};
+    qsort(pair, m->nvertices, sizeof *pair, by_source);
+    for (size_t v = 0; v < m->nvertices; v++)
+        order[v] = pair[v].vertex;
+    free(pair);
+    return order;
+}
+
+/* Writes the rows as CSV in order, every double the shortest text that
+ * reads back to it. */
 static void write_csv(FILE *out, const struct mesh *m,
-                      const struct curvature *c)
+                      const struct curvature *c, const size_t *order)
 {
     fputs(csv_header, out);
-    for (size_t v = 0; v < m->nvertices; v++) {
+    for (size_t r = 0; r < m->nvertices; r++) {
+        size_t v = order[r];
         const double *p = m->position + 3 * v, *n = c->normal + 3 * v;
         double k1 = c->k1[v], k2 = c->k2[v];
-        fprintf(out,
-                "%lu,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,"
-                "%.17g,%d\n",
-                (unsigned long)m->source_vertex[v] + 1, p[0], p[1], p[2], k1,
-                k2, k1 * k2, (k1 + k2) / 2, n[0], n[1], n[2],
-                m->on_boundary ? m->on_boundary[v] : 0);
+        double value[10] = {p[0], p[1], p[2], k1, k2, k1 * k2, (k1 + k2) / 2,
+                            n[0], n[1], n[2]};
+        fprintf(out, "%lu", (unsigned long)m->source_vertex[v] + 1);
+        for (int k = 0; k < 10; k++) {
+            char text[NUMBER_EXACT_SIZE];
+            number_exact(text, value[k]);
+            fprintf(out, ",%s", text);
+        }
+        fprintf(out, ",%d\n", m->on_boundary ? m->on_boundary[v] : 0);
     }
 }
 
 /* Writes the rows as one JSON object, through the writer every --json of
  * Facet uses. */
 static void write_json(FILE *out, const struct surface *s,
-                       const struct curvature *c, int flip)
+                       const struct curvature *c, int flip,
+                       const size_t *order)
 {
     const struct mesh *m = &s->mesh;
     struct json_writer w;
@@ -58,7 +102,8 @@ static void write_json(FILE *out, const struct surface *s,
     json_bool(&w, flip);
     json_key(&w, "vertices");
     json_begin_array(&w);
-    for (size_t v = 0; v < m->nvertices; v++) {
+    for (size_t row = 0; row < m->nvertices; row++) {
+        size_t v = order[row];
         const double *p = m->position + 3 * v, *n = c->normal + 3 * v;
         double k1 = c->k1[v], k2 = c->k2[v];
         json_begin_object(&w);
@@ -170,18 +215,23 @@ static int curvature_run(int argc, char **argv, struct facet_error *err)
     if (rc == FACET_OK) {
         for (int i = 0; i < surface.nwarnings; i++)
             shown_line(stderr, "facet: warning: %s", surface.warnings[i]);
-        if (csv != NULL) {
+        size_t *order = csv != NULL || json ? file_order(&surface.mesh)
+                                            : NULL;
+        if ((csv != NULL || json) && order == NULL) {
+            rc = facet_error_set(err, FACET_EWORK, "out of memory");
+        } else if (csv != NULL) {
             struct outfile f;
             rc = outfile_open(&f, csv, force, err);
             if (rc == FACET_OK) {
-                write_csv(f.out, &surface.mesh, &curvature);
+                write_csv(f.out, &surface.mesh, &curvature, order);
                 rc = outfile_commit(&f, err);
             }
         } else if (json) {
-            write_json(stdout, &surface, &curvature, flip);
+            write_json(stdout, &surface, &curvature, flip, order);
         } else {
             print_summary(&surface, &curvature);
         }
+        free(order);
     }
     curvature_free(&curvature);
     surface_close(&surface);

@@ -52,3 +52,53 @@ expect_error "existing --csv refused" 'exists' "$FACET" curvature "$WORK/dome.ob
 expect "existing --csv with --force" 0 "$FACET" curvature "$WORK/dome.obj" --csv "$WORK/dome.csv" --force
 expect_error "missing file" 'nosuch.obj' "$FACET" curvature "$WORK/nosuch.obj"
 expect_error "no file named" 'name one OBJ file' "$FACET" curvature
+
+# Issue 32 item 5: the CSV lists the vertices in the file's order, each
+# row's position the file's own v line (the truth: the OBJ, read by
+# Python), whatever order welding numbered them in (here the v lines are
+# shuffled against the faces, and one point is written twice); and every
+# number is the shortest text that reads back to the same double, as
+# Python's repr writes it.
+/usr/bin/python3 - "$WORK/shuffled.obj" <<'PY'
+import math, random, sys
+random.seed(5)
+n = 8
+points = [(5 * math.sin(0.6 * i / n) * math.cos(j), 5 * math.sin(0.6 * i / n) * math.sin(j),
+           5 * math.cos(0.6 * i / n)) for i in range(n + 1) for j in
+          [2 * math.pi * k / n for k in range(n)]]
+slot = list(range(len(points)))
+random.shuffle(slot)
+at = {p: s for p, s in enumerate(slot)}
+lines = [None] * len(points)
+for p, s in at.items():
+    lines[s] = "v %.17g %.17g %.17g" % points[p]
+lines.append("v %.17g %.17g %.17g" % points[12])  # a point twice: welded
+faces = []
+for i in range(n):
+    for k in range(n):
+        a, b = i * n + k, i * n + (k + 1) % n
+        c, d = (i + 1) * n + (k + 1) % n, (i + 1) * n + k
+        faces.append("f %d %d %d %d" % tuple(at[q] + 1 for q in (a, b, c, d)))
+open(sys.argv[1], "w").write("\n".join(lines + faces) + "\n")
+PY
+expect "curvature --csv of a shuffled file" 0 "$FACET" curvature "$WORK/shuffled.obj" --csv "$WORK/shuffled.csv"
+if out=$(/usr/bin/python3 - "$WORK/shuffled.obj" "$WORK/shuffled.csv" <<'PY' 2>&1
+import csv, sys
+v = [tuple(float(x) for x in l.split()[1:4]) for l in open(sys.argv[1]) if l.startswith("v ")]
+rows = list(csv.DictReader(open(sys.argv[2])))
+order = [int(r["v"]) for r in rows]
+assert order == sorted(order) and len(set(order)) == len(order), "rows not in the file's order: %s" % order[:12]
+for r in rows:
+    assert tuple(float(r[k]) for k in "xyz") == v[int(r["v"]) - 1], r
+def digits(text):  # significant digits
+    return len(text.lower().split("e")[0].lstrip("+-").replace(".", "").strip("0"))
+long = [(r["v"], k, r[k]) for r in rows for k in r if k not in ("v", "boundary")
+        and digits(r[k]) > digits(repr(float(r[k])))]
+assert not long, "not the shortest: %s" % long[:3]
+print(len(rows))
+PY
+); then
+    pass "csv: $out vertices in the file's order, their positions the file's, every number the shortest"
+else
+    fail "csv: the vertices in the file's order, every number the shortest ($out)"
+fi
