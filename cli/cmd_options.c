@@ -11,6 +11,7 @@
 #include "args.h"
 #include "command.h"
 #include "core/out/json.h"
+#include "core/out/option_csv.h"
 #include "core/base/numformat.h"
 #include "option_table.h"
 #include "surface_table.h"
@@ -124,20 +125,7 @@ static int list_row(void *context, int64_t run, const struct option_row *o)
         }
         json_end_object(&l->json);
     } else {
-        printf("%lld", (long long)run);
-        for (int k = 0; k < OPTION_QUANTITIES; k++) {
-            const struct quantity *c = &option_quantities[k];
-            if (c->writer == WRITTEN_AS_KEY)
-                continue;
-            double value = quantity_value(c, o);
-            char text[NUMBER_EXACT_SIZE] = "";
-            /* Crowding at a front's end is infinite: an empty field, as
-             * SQL's NULL and JSON's null say it. */
-            if (isfinite(value))
-                number_exact(text, value);
-            printf(",%s", text);
-        }
-        putchar('\n');
+        option_csv_row(stdout, run, o);
     }
     l->rows++;
     return 0;
@@ -239,11 +227,7 @@ static int options_main(int argc, char **argv, struct facet_error *err)
             json_init(&listing.json, stdout);
             json_begin_array(&listing.json);
         } else {
-            printf("run");
-            for (int k = 0; k < OPTION_QUANTITIES; k++)
-                if (option_quantities[k].writer != WRITTEN_AS_KEY)
-                    printf(",%s", option_quantities[k].name);
-            putchar('\n');
+            option_csv_header(stdout);
         }
         struct option_query q = {run_id, pareto, filter, sort, desc, rows, 0};
         rc = store_options_query(store, &q, list_row, &listing, err);

@@ -16,6 +16,7 @@
 #include "core/base/units.h"
 #include "core/out/dxf_patterns.h"
 #include "core/out/export_obj.h"
+#include "core/out/option_csv.h"
 #include "core/out/outfile.h"
 #include "core/panel/panel_geometry.h"
 #include "core/out/report.h"
@@ -784,37 +785,10 @@ int study_export_options_csv(struct store *store, int64_t run,
         free(rows);
         return rc;
     }
-    fprintf(f.out, "run");
-    for (int c = 0; c < OPTION_QUANTITIES; c++)
-        if (strcmp(option_quantities[c].name, "run") != 0)
-            fprintf(f.out, ",%s", option_quantities[c].name);
-    fprintf(f.out, ",fp_cost,sp_cost,dp_cost");
-    for (int c = 0; c < CLASS_COUNT; c++)
-        fprintf(f.out, ",%s_count,%s_area",
-                panel_class_name((enum panel_class)c),
-                panel_class_name((enum panel_class)c));
-    fprintf(f.out, "\n");
-    for (size_t k = 0; k < n; k++) {
-        const struct option_row *o = &rows[k];
-        fprintf(f.out, "%lld", (long long)run);
-        for (int c = 0; c < OPTION_QUANTITIES; c++) {
-            if (strcmp(option_quantities[c].name, "run") == 0)
-                continue;
-            double v = option_quantity_value(o, option_quantities[c].name);
-            if (!isfinite(v))
-                fprintf(f.out, ",");  /* crowding at a front's end */
-            else if (v == floor(v) && fabs(v) < 1e15)
-                fprintf(f.out, ",%.0f", v);
-            else
-                fprintf(f.out, ",%.17g", v);
-        }
-        for (int t = 0; t < TYPE_COUNT; t++)
-            fprintf(f.out, ",%.17g", o->totals.cost_of[t]);
-        for (int c = 0; c < CLASS_COUNT; c++)
-            fprintf(f.out, ",%zu,%.17g", o->totals.class_count[c],
-                    o->totals.class_area[c]);
-        fprintf(f.out, "\n");
-    }
+    /* facet options --csv's layout: every quantity once */
+    option_csv_header(f.out);
+    for (size_t k = 0; k < n; k++)
+        option_csv_row(f.out, run, &rows[k]);
     free(rows);
     return outfile_commit(&f, err);
 }
