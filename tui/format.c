@@ -189,6 +189,39 @@ void tui_fmt_cost_sum(char *out, size_t size, const struct option_totals *t,
     }
 }
 
+/* The characters of UTF-8 text: its bytes less the continuation bytes. */
+static size_t characters(const char *text)
+{
+    size_t n = 0;
+    for (; *text; text++)
+        n += (*text & 0xC0) != 0x80;
+    return n;
+}
+
+void tui_fmt_fields(char *out, size_t size, int width,
+                    const char *const *fields, int n)
+{
+    assert(n >= 1 && size > 0);
+    for (int kept = n; kept >= 1; kept--) {
+        size_t used = 0;
+        out[0] = '\0';
+        for (int k = 0; k < kept && used < size; k++)
+            used += (size_t)snprintf(out + used, size - used, "%s%s",
+                                     k ? " | " : "", fields[k]);
+        if ((int)characters(out) <= width || kept == 1)
+            break;
+    }
+    /* the title alone too wide: cut it, at a character's start */
+    size_t chars = 0, at = 0;
+    while (out[at] != '\0' && (int)chars < width) {
+        at++;
+        while ((out[at] & 0xC0) == 0x80)
+            at++;
+        chars++;
+    }
+    out[at] = '\0';
+}
+
 void tui_fmt_grid(char *out, size_t size, const struct option_row *option)
 {
     if (isnan(option->module_w))

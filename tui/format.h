@@ -80,6 +80,14 @@ void tui_fmt_cell(char *out, size_t size, const struct tui_column *c,
 void tui_fmt_cost_sum(char *out, size_t size, const struct option_totals *t,
                       int width);
 
+/* fields[0 .. n) joined by " | " into out, in at most width display
+ * characters (UTF-8 counted as characters): whole fields dropped from the
+ * end until the rest fits, so that no number loses its unit and no word
+ * is cut; only the first field, a title, is cut when even it alone is too
+ * wide. */
+void tui_fmt_fields(char *out, size_t size, int width,
+                    const char *const *fields, int n);
+
 /* option's design grid in words: "37 x 49" panels, or a project's module
  * "module 2.40 x 1.80 m" (its nu and nv only index the module range). */
 void tui_fmt_grid(char *out, size_t size, const struct option_row *option);

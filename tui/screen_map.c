@@ -297,23 +297,26 @@ static void map_draw(struct tui_screen *base, struct tui_app *app,
     }
     int nu = s->panels->nu, nv = s->panels->nv;
     tui_fill(0, 0, width, tui_attr(ROLE_TITLE));
+    /* whole fields dropped from the end where the line is short: a cut
+     * would take "mm" off the threshold and leave it reading metres */
+    char head[128], title[512], t[64], by[64], line[1024];
+    snprintf(t, sizeof t, "t %.2f mm", s->option.threshold_mm);
+    snprintf(by, sizeof by, "by %s", colour_name(s->colour));
     if (s->project) {
-        char title[512];
         map_surface_title(title, sizeof title, s->surface,
                           (int)s->building.nsurfaces,
                           s->surfaces[s->surface].name, nu, nv);
         /* "Map" alone: at 80 columns the surface's name needs the room */
-        tui_putf(0, 0, width, tui_attr(ROLE_TITLE),
-                 " Map: option %lld of run %lld | %s | t %.2f mm | by %s",
-                 (long long)s->option.number, (long long)s->run.id, title,
-                 s->option.threshold_mm, colour_name(s->colour));
+        snprintf(head, sizeof head, " Map: option %lld of run %lld",
+                 (long long)s->option.number, (long long)s->run.id);
     } else {
-        tui_putf(0, 0, width, tui_attr(ROLE_TITLE),
-                 " Panel map: option %lld of run %lld | grid %d x %d | t "
-                 "%.2f mm | by %s", (long long)s->option.number,
-                 (long long)s->run.id, nu, nv, s->option.threshold_mm,
-                 colour_name(s->colour));
+        snprintf(title, sizeof title, "grid %d x %d", nu, nv);
+        snprintf(head, sizeof head, " Panel map: option %lld of run %lld",
+                 (long long)s->option.number, (long long)s->run.id);
     }
+    const char *fields[4] = {head, title, t, by};
+    tui_fmt_fields(line, sizeof line, width, fields, 4);
+    tui_put(0, 0, width, tui_attr(ROLE_TITLE), line);
     int legend = width >= 70 ? 36 : 0;
     int map_w = width - legend - 2, map_h = height - 5;
     if (map_h < 1)

@@ -82,6 +82,25 @@ map_check() {
 map_check 0
 keys ']'
 map_check 1
+# Issue 32 item 2: at 80 columns the header drops whole fields, never the
+# threshold's "mm" (it read "t 4.00 m"). The truth: the same header at 200
+# columns, whose fields the 80-column one must be a prefix of, whole.
+narrow=$(screen | sed -n 1p | sed 's/ *$//')
+"${TMUX_CMD[@]}" resize-window -x 200 >/dev/null 2>&1
+sleep 0.5
+wide=$(screen | sed -n 1p | sed 's/ *$//')
+"${TMUX_CMD[@]}" resize-window -x 80 >/dev/null 2>&1
+sleep 0.5
+if /usr/bin/python3 -c '
+import sys
+narrow, wide = sys.argv[1], sys.argv[2]
+fields = wide.split(" | ")
+sys.exit(0 if len(narrow) < len(wide) and any(narrow == " | ".join(fields[:k]) for k in range(1, len(fields))) else 1)
+' "$narrow" "$wide"; then
+    pass "map header at 80 columns: whole fields of the 200-column one ('$narrow')"
+else
+    echo "not ok - map header at 80 columns: whole fields of the 200-column one ('$narrow' of '$wide')"
+fi
 keys ']'
 map_check 2
 # By mould family and by gap and kink, on the dome: its own figures.

@@ -107,6 +107,53 @@ static void test_cost_sum(void **state)
     assert_string_equal(out, "cost 3,000 USD = FP 1,000 + SP 0 + DP 2,000");
 }
 
+/* Issue 32 item 2: a header cut at the screen's edge read "t 4.00 m" for
+ * 4.00 mm. Fields are dropped whole instead, at every width, and only a
+ * title alone is ever cut. The truth: at each width, the line is the
+ * longest prefix of whole fields that fits. */
+static void test_fields(void **state)
+{
+    (void)state;
+    const char *fields[4] = {" Map: option 61 of run 1",
+                             "surface 1 of 4: façade (15 x 12)", "t 4.00 mm",
+                             "by type"};
+    char out[256];
+    for (int width = 1; width <= 100; width++) {
+        tui_fmt_fields(out, sizeof out, width, fields, 4);
+        /* the longest prefix of whole fields within width, by hand */
+        char want[256] = "";
+        for (int kept = 4; kept >= 1; kept--) {
+            want[0] = '\0';
+            for (int k = 0; k < kept; k++) {
+                strcat(want, k ? " | " : "");
+                strcat(want, fields[k]);
+            }
+            size_t chars = 0;
+            for (const char *c = want; *c; c++)
+                chars += (*c & 0xC0) != 0x80;
+            if ((int)chars <= width)
+                break;
+            if (kept == 1) {
+                assert_true(width < 24);
+                want[width] = '\0';  /* the title is ASCII */
+            }
+        }
+        assert_string_equal(out, want);
+        /* never a threshold without its millimetres */
+        const char *t = strstr(out, "t 4.00");
+        assert_true(t == NULL || strncmp(t, "t 4.00 mm", 9) == 0);
+    }
+    tui_fmt_fields(out, sizeof out, 81, fields, 4);
+    assert_string_equal(out, " Map: option 61 of run 1 | surface 1 of 4: "
+                        "façade (15 x 12) | t 4.00 mm | by type");
+    tui_fmt_fields(out, sizeof out, 80, fields, 4);
+    assert_string_equal(out, " Map: option 61 of run 1 | surface 1 of 4: "
+                        "façade (15 x 12) | t 4.00 mm");
+    tui_fmt_fields(out, sizeof out, 70, fields, 4);
+    assert_string_equal(out, " Map: option 61 of run 1 | surface 1 of 4: "
+                        "façade (15 x 12)");
+}
+
 static void test_numbers(void **state)
 {
     (void)state;
@@ -205,6 +252,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_numbers),
         cmocka_unit_test(test_cost_sum),
+        cmocka_unit_test(test_fields),
         cmocka_unit_test(test_times),
         cmocka_unit_test(test_cells),
     };
