@@ -57,4 +57,20 @@ static inline int vec3_normalize(double v[3])
     return 1;
 }
 
+/* Two unit vectors e1, e2 that with the unit vector n make a right-handed
+ * orthonormal frame (e1 x e2 = n): e1 across n from the axis n leans on
+ * least, so the same n always gives the same frame. */
+static inline void vec3_frame(const double n[3], double e1[3], double e2[3])
+{
+    double pick[3] = {0, 0, 0};
+    int k = 0;
+    for (int x = 1; x < 3; x++)
+        if (fabs(n[x]) < fabs(n[k]))
+            k = x;
+    pick[k] = 1;
+    vec3_cross(n, pick, e1);
+    vec3_normalize(e1);
+    vec3_cross(n, e1, e2);
+}
+
 #endif

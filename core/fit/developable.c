@@ -34,20 +34,6 @@
  * diagonal of the normal equations. */
 #define LAMBDA_FLOOR 1e-12
 
-/* Two unit vectors completing axis to an orthonormal frame. */
-static void frame(const double axis[3], double e1[3], double e2[3])
-{
-    double pick[3] = {0, 0, 0};
-    int k = 0;
-    for (int x = 1; x < 3; x++)
-        if (fabs(axis[x]) < fabs(axis[k]))
-            k = x;
-    pick[k] = 1;
-    vec3_cross(axis, pick, e1);
-    vec3_normalize(e1);
-    vec3_cross(axis, e1, e2);
-}
-
 /* The point's height along the axis h, its distance from it rho and the
  * unit direction u from the axis to it (any direction across the axis when
  * the point is on it). */
@@ -63,7 +49,7 @@ static void cylindrical(const struct developable *d, const double x[3],
     *rho = vec3_length(u);
     if (!(*rho > 0) || !isfinite(*rho)) {
         double e2[3];
-        frame(d->axis, u, e2);
+        vec3_frame(d->axis, u, e2);
         return;
     }
     for (int k = 0; k < 3; k++)
@@ -406,7 +392,7 @@ static inline int refine_np(struct developable *d, const double *points,
     recentre(d, centroid);
     if (np == 6)
         best_line(d, points, n);
-    frame(d->axis, e1, e2);
+    vec3_frame(d->axis, e1, e2);
     double cost = linearize(d, points, n, np, e1, e2, jtj, jtr);
     /* Damping as Nielsen's: scaled by how well the linearisation
      * predicted the last decrease, doubling its growth on each miss. It
@@ -450,7 +436,7 @@ static inline int refine_np(struct developable *d, const double *points,
         apply_step(d, e1, e2, step, np, centroid, &trial);
         if (np == 6)
             best_line(&trial, points, n);
-        frame(trial.axis, te1, te2);
+        vec3_frame(trial.axis, te1, te2);
         double trial_cost = linearize(&trial, points, n, np, te1, te2, tjtj,
                                       tjtr);
         /* The decrease the linearisation promises: 2 b.step - |J step|^2. */
@@ -513,7 +499,7 @@ int developable_fit_cylinder(const double *points, size_t n,
         return -1;
     double centroid[3], e1[3], e2[3];
     centroid_of(points, n, centroid);
-    frame(axis, e1, e2);
+    vec3_frame(axis, e1, e2);
     /* The algebraic circle X^2 + Y^2 + D X + E Y + F = 0 of the points
      * projected along the axis (Kasa): linear, and exact for points on a
      * cylinder about that axis. */

@@ -76,21 +76,6 @@ double polygon_min_width(double *xy, size_t n, double *scratch)
     return best;
 }
 
-/* Two unit vectors e1, e2 that with normal (unit) make a right-handed
- * frame: coordinates in the panel's plane. */
-static void plane_frame(const double normal[3], double e1[3], double e2[3])
-{
-    double axis[3] = {0, 0, 0};
-    int least = 0;
-    for (int k = 1; k < 3; k++)
-        if (fabs(normal[k]) < fabs(normal[least]))
-            least = k;
-    axis[least] = 1;
-    vec3_cross(normal, axis, e1);
-    vec3_normalize(e1);
-    vec3_cross(normal, e1, e2);
-}
-
 int panel_widths_set(const struct panel_geometry *g,
                      struct panelization *panels, struct facet_error *err)
 {
@@ -112,7 +97,7 @@ int panel_widths_set(const struct panel_geometry *g,
     for (size_t n = 0; n < g->npanels; n++) {
         struct panel *panel = &panels->panels[n];
         double e1[3], e2[3];
-        plane_frame(panel->normal, e1, e2);
+        vec3_frame(panel->normal, e1, e2);
         size_t first = g->loop_start[g->panel_loop[n]];
         size_t end = g->loop_start[g->panel_loop[n + 1]];
         for (size_t k = first; k < end; k++) {
