@@ -106,6 +106,8 @@ static int list_row(void *context, int64_t run, const struct option_row *o)
             json_key(&l->json, c->name);
             if (!isfinite(value))
                 json_null(&l->json);  /* crowding at a front's end */
+            else if (c->yes_no)
+                json_bool(&l->json, value != 0);  /* as classify --json */
             else if (value == floor(value) && fabs(value) < 1e15)
                 json_integer(&l->json, (long long)value);
             else

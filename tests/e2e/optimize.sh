@@ -578,6 +578,28 @@ want=$(sqlite3 -separator ' ' "$WORK/obj.db" \
     "SELECT number, moulds, printf('%.2f', max_kink) FROM options WHERE rank = 1 ORDER BY number")
 same "its rows hold each Pareto option's moulds and max kink" "$got" "$want"
 
+# Issue 32 item 4: a yes/no column is a JSON boolean in options --json,
+# as in classify --json (it was 1/0 in one, true/false in the other).
+run "$FACET" options "$WORK/obj.db" --run 1 --json
+if /usr/bin/python3 -c '
+import json, sys
+rows = json.load(open(sys.argv[1]))
+ok = rows and all(type(r[k]) is bool for r in rows for k in ("feasible", "knee"))
+ok = ok and sum(r["knee"] for r in rows) == 1
+sys.exit(0 if ok else 1)' "$OUT"; then
+    pass "options --json: feasible and knee are true/false, one knee"
+else
+    fail "options --json: feasible and knee are true/false ($(head -c 300 "$OUT"))"
+fi
+run "$FACET" classify "$WORK/objroof.obj" --grid 4x4 --json
+if /usr/bin/python3 -c '
+import json, sys
+sys.exit(0 if type(json.load(open(sys.argv[1]))["totals"]["feasible"]) is bool else 1)' "$OUT"; then
+    pass "classify --json: feasible is true/false too"
+else
+    fail "classify --json: feasible is true/false too"
+fi
+
 # Issue 32 item 12: --table N prints N rows, a front longer than N cut
 # (the cheapest of it first), and says so. The truth: sqlite3's front,
 # longer than 2 here, and its two cheapest options.
