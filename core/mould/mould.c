@@ -140,16 +140,18 @@ static int descriptors_close(const double a[DESCRIPTOR],
     return 1;
 }
 
-/* Candidate families into the order they were started. Few: an insertion
- * sort. */
+static int compare_families(const void *a, const void *b)
+{
+    int x = *(const int *)a, y = *(const int *)b;
+    return (x > y) - (x < y);
+}
+
+/* Candidate families into the order they were started. A jig's
+ * candidates come in curvature order and may be thousands (every family
+ * within the closed form's reach), so not an insertion sort. */
 static void sort_families(int *family, int count)
 {
-    for (int i = 1; i < count; i++)
-        for (int k = i; k > 0 && family[k - 1] > family[k]; k--) {
-            int t = family[k];
-            family[k] = family[k - 1];
-            family[k - 1] = t;
-        }
+    qsort(family, (size_t)count, sizeof *family, compare_families);
 }
 
 static size_t bucket_slot(const struct family_work *w, int64_t x, int64_t y)
