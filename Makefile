@@ -10,6 +10,9 @@
 #   make bench    benchmarks, reported as ratios against a baseline
 #   make deps     install the Debian packages Facet needs (as root) and
 #                 web-ifc (npm ci in tests/ifc), the IFC test's reader
+#   make install  facet, its manual page (man facet) and its bash completion
+#                 into PREFIX (default /usr/local), under DESTDIR if given;
+#                 make uninstall removes them
 #
 # Objects go to build/$(VARIANT)/; VARIANT=release (default) or san.
 
@@ -21,11 +24,17 @@ BUILD   := build/$(VARIANT)
 JOBS    ?= $(shell nproc 2>/dev/null || echo 2)
 VERSION := 0.1.0
 
+# make install: where, as the GNU conventions name them.
+PREFIX  ?= /usr/local
+BINDIR  ?= $(PREFIX)/bin
+MANDIR  ?= $(PREFIX)/share/man
+BASH_COMPLETION_DIR ?= $(PREFIX)/share/bash-completion/completions
+
 DEBIAN_PACKAGES := gcc g++ make pkg-config libncurses-dev libsqlite3-dev librsvg2-bin \
 	libcmocka-dev sqlite3 tmux python3 python3-tinyobjloader \
 	libtinyobjloader-dev libxml2-utils python3-deap clang libclang-rt-14-dev \
 	slurm-wlm munge libxlsxwriter-dev python3-openpyxl python3-ezdxf \
-	python3-matplotlib nodejs npm
+	python3-matplotlib nodejs npm man-db groff-base
 
 WARN    := -Wall -Wextra -Werror -Wshadow -Wstrict-prototypes -Wvla
 DEFS    := -D_POSIX_C_SOURCE=200809L -D_DEFAULT_SOURCE -DFACET_VERSION=\"$(VERSION)\"
@@ -69,7 +78,8 @@ FUZZ_SEED ?= 1
 BENCH_SRC := $(wildcard tests/bench/*.c)
 BENCH_BIN := $(BENCH_SRC:tests/bench/%.c=$(BUILD)/bench/%)
 
-.PHONY: all check check-fast check-mutants test test-build demo bench deps clean fuzz fuzz-run
+.PHONY: all check check-fast check-mutants test test-build demo bench deps clean fuzz fuzz-run \
+	install uninstall
 
 # Objects built on the way (the tests' support) are kept, not removed.
 .SECONDARY:
@@ -85,6 +95,14 @@ endif
 
 $(BUILD)/facet: $(BUILD)/cli/main.o $(BUILD)/libfacet.a
 	$(CC) $(LDFLAGS) -o $@ $^ $(LDLIBS)
+
+# The manual page and the bash completion, written by facet itself from the
+# tables its --help prints (cli/man_page.h, cli/completion.h).
+$(BUILD)/facet.1: $(BUILD)/facet
+	$< help --man >$@.tmp && mv $@.tmp $@
+
+$(BUILD)/facet.bash: $(BUILD)/facet
+	$< help --completion bash >$@.tmp && mv $@.tmp $@
 
 $(BUILD)/libfacet.a: $(LIB_OBJ)
 	rm -f $@
@@ -213,6 +231,17 @@ deps:
 		(cd tests/ifc && npm ci --no-audit --no-fund --loglevel=error >/dev/null) || \
 		echo "make deps: npm ci in tests/ifc failed: export_ifc.sh will say its checks were skipped"; \
 	fi
+
+install: $(BUILD)/facet $(BUILD)/facet.1 $(BUILD)/facet.bash
+	install -d "$(DESTDIR)$(BINDIR)" "$(DESTDIR)$(MANDIR)/man1" \
+		"$(DESTDIR)$(BASH_COMPLETION_DIR)"
+	install -m 755 $(BUILD)/facet "$(DESTDIR)$(BINDIR)/facet"
+	install -m 644 $(BUILD)/facet.1 "$(DESTDIR)$(MANDIR)/man1/facet.1"
+	install -m 644 $(BUILD)/facet.bash "$(DESTDIR)$(BASH_COMPLETION_DIR)/facet"
+
+uninstall:
+	rm -f "$(DESTDIR)$(BINDIR)/facet" "$(DESTDIR)$(MANDIR)/man1/facet.1" \
+		"$(DESTDIR)$(BASH_COMPLETION_DIR)/facet"
 
 clean:
 	rm -rf build facet

@@ -235,7 +235,7 @@ void args_print_wrapped(FILE *out, const char *text, int at, int indent)
         if (column < indent) {
             fprintf(out, "%*s", indent - column, "");
             column = indent;
-        } else {
+        } else if (column > 0) {
             fputc(' ', out);
             column++;
         }

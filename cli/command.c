@@ -49,17 +49,23 @@ void command_print_usage(const struct command *cmd, FILE *out)
     fputs(cmd->after, out);
 }
 
+const char command_program_summary[] =
+    "Facet rationalizes free-form surfaces: it divides a surface into a UV "
+    "grid of panels, classifies them flat, single- or double-curved, and "
+    "prices the result.";
+
+const char command_exit_status[] =
+    "0 success, 1 failure while working, 2 bad usage or bad input.";
+
 void command_print_overview(FILE *out)
 {
-    fputs("usage: facet COMMAND [ARGS]\n\n"
-          "Facet rationalizes free-form surfaces: it divides a surface into "
-          "a UV grid of\npanels, classifies them flat, single- or "
-          "double-curved, and prices the result.\n\ncommands:\n", out);
+    fputs("usage: facet COMMAND [ARGS]\n\n", out);
+    args_print_wrapped(out, command_program_summary, 0, 0);
+    fputs("\ncommands:\n", out);
     for (int i = 0; command_table[i] != NULL; i++) {
         int at = fprintf(out, "  %-10s", command_table[i]->name);
         args_print_wrapped(out, command_table[i]->summary, at, at + 1);
     }
-    fputs("\n'facet help COMMAND' or 'facet COMMAND --help' tells more.\n"
-          "Exit status: 0 success, 1 failure while working, "
-          "2 bad usage or bad input.\n", out);
+    fprintf(out, "\n'facet help COMMAND' or 'facet COMMAND --help' tells "
+            "more.\nExit status: %s\n", command_exit_status);
 }

@@ -54,6 +54,11 @@ void command_print_usage(const struct command *cmd, FILE *out);
 /* Prints the program's usage: every command with its summary. */
 void command_print_overview(FILE *out);
 
+/* What Facet does, one paragraph, and what its exit status means, one
+ * line: the overview prints them, and the manual page (man_page.h). */
+extern const char command_program_summary[];
+extern const char command_exit_status[];
+
 extern const struct command cmd_help;
 extern const struct command cmd_info;
 extern const struct command cmd_example;

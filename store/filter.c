@@ -41,6 +41,11 @@ static const struct {
 };
 
 #define ALIAS_COUNT (sizeof aliases / sizeof *aliases)
+
+/* The words of the language that are not columns: pareto (resolve) and
+ * the joiners lex reads. */
+static const char *const keywords[] = {"pareto", "and", "or", "not"};
+#define KEYWORD_COUNT (sizeof keywords / sizeof *keywords)
 #define COLUMN_PARETO (-2)  /* the name pareto: rank = 1, not a column */
 #define COLUMN_UNKNOWN (-1)
 #define SHOWN_MAX 32        /* bytes of a user's word quoted in a message */
@@ -1131,4 +1136,12 @@ int filter_match(const struct filter *filter,
         return 1;
     struct match m = {filter, value, context};
     return evaluate(&m, filter->root) == TRUTH_YES;
+}
+
+const char *filter_word(size_t k)
+{
+    if (k < ALIAS_COUNT)
+        return aliases[k].name;
+    k -= ALIAS_COUNT;
+    return k < KEYWORD_COUNT ? keywords[k] : NULL;
 }

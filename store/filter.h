@@ -19,6 +19,8 @@
 #ifndef FACET_FILTER_H
 #define FACET_FILTER_H
 
+#include <stddef.h>
+
 #include "core/base/error.h"
 
 struct filter;
@@ -61,5 +63,11 @@ const char *filter_text(const struct filter *filter);
 int filter_match(const struct filter *filter,
                  double (*value)(void *context, const char *column),
                  void *context);
+
+/* The k-th word the language knows besides the columns of
+ * option_quantities (its other names for columns, pareto, and, or, not),
+ * for k from 0; NULL past the last. What a shell's completion offers
+ * (cli/completion.h). */
+const char *filter_word(size_t k);
 
 #endif
