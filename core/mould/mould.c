@@ -177,7 +177,7 @@ static void grid_key(const struct family_work *w, const double d[DESCRIPTOR],
  * samples point; returns 0, *jig undefined, when it has none or it is not
  * finite. */
 static int jig_make(const struct panel *panel,
-                    const double point[MOULD_SAMPLES][3], struct jig *jig)
+                    double point[MOULD_SAMPLES][3], struct jig *jig)
 {
     const struct panel_sp_fit *fit = &panel->sp_fit;
     struct developable *d = &jig->surface;
@@ -207,6 +207,14 @@ static int jig_make(const struct panel *panel,
         return 0;
     for (int x = 0; x < 3; x++)
         jig->radial[x] /= centroid_rho;
+    /* The panel as built: its samples moved onto its own fitted surface,
+     * which is what is bent on a jig. The design's samples would count
+     * again the fit's own deviation, already the panel's sp_deviation,
+     * and on a mesh whose facets sag near the tolerance that sag alone
+     * kept most panels off every jig (7,541 SP jigs where shapes took
+     * 2,697, bench_mould's fine grid). */
+    for (int k = 0; k < MOULD_SAMPLES; k++)
+        developable_nearest(d, point[k], point[k], NULL);
     double across[3];
     vec3_cross(d->axis, jig->radial, across);
     double low = INFINITY, high = -INFINITY;
@@ -256,9 +264,7 @@ static int sample_part(const struct mould_part *part, size_t first,
             continue;
         w->sampled[n] = 1;
         w->on_jig[n] = w->options->jigs && p->panels[k].type == TYPE_SP &&
-                       jig_make(&p->panels[k],
-                                (const double (*)[3])w->point[n],
-                                &w->jig[n]);
+                       jig_make(&p->panels[k], w->point[n], &w->jig[n]);
         *diameter = fmax(*diameter, p->panels[k].diameter);
         *extent = fmax(*extent, fmax(w->descriptor[n][0], w->descriptor[n][1]));
     }

@@ -25,8 +25,9 @@
  * al. 2010 assign panels to moulds so). With options->jigs set, two such
  * panels share a jig when each lies on the other's fitted surface:
  *
- *   the 25 samples of one, against the surface of the other's fit laid
- *   where the jig may lie on them, deviate by at most the limit above,
+ *   the 25 samples of one as built, against the surface of the other's
+ *   fit laid where the jig may lie on them, deviate by at most the limit
+ *   above,
  *   and the same the other way round.
  *
  * Laid where the jig may lie: a rigid placement of the other's surface (a
@@ -47,9 +48,12 @@
  * the difference of their sagittas); a pair with |k - k'| w^2 / 16 above
  * the limit (k each panel's bending curvature 1 / radius at its centroid,
  * cos(a) / rho for a cone, w the wider's extent across its axis) is not
- * tested. The samples are the mould samples, on the mesh's facets, where
- * the fits take theirs on the smooth surface once the facets sag a fair
- * part of t (sp_fit.h): on such a mesh the sag counts against the jig.
+ * tested. The samples are the panel as built: its mould samples moved
+ * each to the nearest point of its own fitted surface. How far the design
+ * lies from that surface is the panel's sp_deviation, held to t by the
+ * fit (sp_fit.h); counting it again here made the facets' sag of a coarse
+ * mesh keep nearly every panel off every jig, and cost a test against
+ * every family in reach for each.
  * The mirror setting does not apply: a cylinder or cone is its own mirror
  * image. A panel typed SP without a fit (a misfit typed by
  * class, options->jigs 0 as under --sp-fit no, or fits not measured) and

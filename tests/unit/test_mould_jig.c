@@ -434,6 +434,38 @@ static void test_cylinder_widths_one_jig(void **state)
     surface_close(&s);
 }
 
+/* The same cylinder on a coarse mesh: 10 x 2 panels of one mesh quad
+ * across each (0.6 to 2.8 m wide), whose facets sag 4.5 to 98 mm, far
+ * over the tolerance. Each panel is built on its cylinder fitted to the
+ * smooth surface (sp_fit.h), radius 10 m, so the built panels are all
+ * pieces of one cylinder: one jig. Held to the facets instead, each
+ * panel's sag counted against every jig and no two shared one. */
+static void test_coarse_mesh_one_jig(void **state)
+{
+    (void)state;
+    struct analytic a = {0, 0, 10, 6, 0, 0, 0, -50 * PI / 180,
+                         50 * PI / 180};
+    struct surface s;
+    write_surface(&a, 4, 2, 2, 1, &s);
+    struct panelization panels;
+    struct mould_families f;
+    evaluate(&s, 4, 2, &panels, &f);
+    for (size_t n = 0; n < panels.npanels; n++) {
+        const struct panel_sp_fit *fit = &panels.panels[n].sp_fit;
+        /* the truth the count rests on: every fit is the cylinder */
+        if (fit->shape != PANEL_SP_CYLINDER || !(fabs(fit->radius - 10) < 1e-3))
+            fail_msg("panel %zu: fitted %s of radius %g m, not the "
+                     "cylinder of 10 m", n,
+                     fit->shape == PANEL_SP_CYLINDER ? "cylinder" : "cone",
+                     fit->radius);
+    }
+    assert_int_equal(f.count[TYPE_SP], 1);
+    assert_int_equal(f.largest, 8);
+    mould_families_free(&f);
+    panelization_free(&panels);
+    surface_close(&s);
+}
+
 /* Cylinders of radii 8 and 12 m, 3 x 2 panels each of widths 2.2 to 6
  * m: two jigs. */
 static void test_cylinder_two_radii(void **state)
@@ -467,6 +499,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_cylinder_widths_one_jig),
+        cmocka_unit_test(test_coarse_mesh_one_jig),
         cmocka_unit_test(test_cylinder_two_radii),
         cmocka_unit_test(test_cones_two_half_angles),
     };
