@@ -541,15 +541,7 @@ struct tui_screen *screen_parallel_new(struct tui_app *app,
     s->base.cls = &parallel_class;
     s->model = model;
     s->axis = 5;  /* cost */
-    struct run_info run;
-    struct facet_error err;
-    if (store_run_get(app->store, model->browse.run, &run, &err) !=
-        FACET_OK) {
-        tui_error(app, "parallel coordinates: %s", err.message);
-        parallel_destroy(&s->base);
-        return NULL;
-    }
-    s->st.project = store_run_is_project(&run);
+    s->st.project = model->project;
     if (load(s, app) != FACET_OK) {
         parallel_destroy(&s->base);
         return NULL;

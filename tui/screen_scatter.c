@@ -627,15 +627,7 @@ struct tui_screen *screen_scatter_new(struct tui_app *app,
     s->axis[2] = 2;  /* DP area */
     s->axis[3] = -1; /* no colour until c */
     s->show_front = 1;
-    struct run_info run;
-    struct facet_error err;
-    if (store_run_get(app->store, model->browse.run, &run, &err) !=
-        FACET_OK) {
-        tui_error(app, "scatter: %s", err.message);
-        scatter_destroy(&s->base);
-        return NULL;
-    }
-    s->project = store_run_is_project(&run);
+    s->project = model->project;
     if (load(s, app) != FACET_OK) {
         scatter_destroy(&s->base);
         return NULL;

@@ -391,7 +391,7 @@ struct tui_screen *screen_stats_new(struct tui_app *app,
         free(s);
         return NULL;
     }
-    s->project = store_run_is_project(&s->run);
+    s->project = model->project;
     for (int k = 0; k < STATS; k++)
         s->column[k] = s->project
                            ? quantity_of_project(stat_columns[k])->name

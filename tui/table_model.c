@@ -24,6 +24,11 @@ int table_model_open(struct table_model *m, struct store *store,
     memset(m, 0, sizeof *m);
     m->store = store;
     m->browse.run = run;
+    struct run_info info;
+    int rc = store_run_get(store, run, &info, err);
+    if (rc != FACET_OK)
+        return rc;
+    m->project = store_run_is_project(&info);
     m->rows = malloc(TABLE_WINDOW * sizeof *m->rows);
     if (m->rows == NULL)
         return facet_error_set(err, FACET_EWORK, "out of memory");

@@ -39,6 +39,10 @@
 struct table_model {
     struct store *store;          /* borrowed */
     struct option_browse browse;  /* run, Pareto-only, filter, keys */
+    int project;                  /* the run is a building's: its options'
+                                     module and grids are the project's
+                                     (store_run_is_project), read once by
+                                     table_model_open */
     struct filter *filter;        /* owned; browse.where points to it */
     char key_names[BROWSE_MAX_KEYS][32];  /* browse.keys[k].column */
     int64_t count;                /* options the browse sees; when
