@@ -322,8 +322,9 @@ static int surfaces(struct newrun_screen *s, struct study_request *r,
         return facet_error_set(err, FACET_EINPUT, "name the surface's OBJ "
                                "file");
     size_t n = 0;
-    if (access(path, R_OK) == 0 || strchr(path, ',') == NULL) {
-        if (access(path, R_OK) != 0)
+    int readable = access(path, R_OK) == 0;
+    if (readable || strchr(path, ',') == NULL) {
+        if (!readable)
             return facet_error_set(err, FACET_EINPUT, "%s: cannot read it",
                                    path);
         snprintf(s->files_text, sizeof s->files_text, "%s", path);
