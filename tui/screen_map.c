@@ -96,12 +96,15 @@ static const struct panel *panel_at(const struct map_screen *s, int i, int j)
     return k >= 0 ? &s->panels->panels[k] : NULL;
 }
 
+/* The letters the mould map draws families with, in turn. */
+static const char family_letters[] = "0123456789abcdefghijklmnopqrstuvwxyz";
+enum { FAMILY_LETTERS = sizeof family_letters - 1 };
+
 /* The letter and colour of mould family k: eight colours and 36 letters
  * in turn, so that neighbours differ though families outnumber them. */
 static void family_look(int k, char *letter, attr_t *attr)
 {
-    static const char digits[] = "0123456789abcdefghijklmnopqrstuvwxyz";
-    *letter = digits[k % 36];
+    *letter = family_letters[k % FAMILY_LETTERS];
     *attr = tui_attr(ROLE_CLASS0 + k % CLASS_COUNT);
 }
 
@@ -221,6 +224,22 @@ static void draw_legend(struct map_screen *s, int y, int x, int width)
                      "   started here; %zu used here",
                      s->building.surfaces[s->surface].moulds_used);
         tui_putf(y++, x, width, A_NORMAL, "   (greedy: at most this many)");
+        /* More families than letters: one letter stands for several, and
+         * only the cursor tells them apart. */
+        size_t families = s->project
+            ? s->building.families.nfamilies
+            : (t->moulds_of[TYPE_SP] == TOTALS_UNKNOWN ? 0
+                                                       : t->moulds_of[TYPE_SP]) +
+              (t->moulds_of[TYPE_DP] == TOTALS_UNKNOWN ? 0
+                                                       : t->moulds_of[TYPE_DP]);
+        if (families > FAMILY_LETTERS) {
+            tui_putf(y++, x, width, A_NORMAL,
+                     "   %d letters for %zu families:", FAMILY_LETTERS,
+                     families);
+            tui_putf(y++, x, width, A_NORMAL,
+                     "   each repeats; the cursor names");
+            tui_putf(y++, x, width, A_NORMAL, "   a panel's family");
+        }
     } else if (s->colour == MAP_BY_CLASS) {
         for (int c = 0; c < CLASS_COUNT; c++) {
             char letter[2] = {class_letter[c], 0};

@@ -3,6 +3,9 @@
  */
 #include "theme.h"
 
+#include <ctype.h>
+#include <string.h>
+
 struct role_style {
     short fg, bg;       /* colours, -1 = terminal default */
     attr_t colour;      /* extra attributes with colours */
@@ -86,6 +89,19 @@ static const struct tui_glyphs ascii_glyphs = {
     "*", "K", "+", "^", "v", {".", "o", "O"}, "-", "-", "|", "+", "#", ".",
     " ", "v", "x",
 };
+
+int tui_terminal_utf8(const char *codeset, const char *term)
+{
+    if (codeset == NULL || strcmp(codeset, "UTF-8") != 0)
+        return 0;
+    if (term == NULL)
+        return 1;
+    if (strcmp(term, "dumb") == 0 || strncmp(term, "ansi", 4) == 0)
+        return 0;
+    /* vt52, vt100, vt102, vt220, vt320, vt420, vt520 and their -am,
+     * -nam variants; not vte or vt-utf8 */
+    return !(term[0] == 'v' && term[1] == 't' && isdigit((unsigned char)term[2]));
+}
 
 const struct tui_glyphs *tui_glyphs_for(int utf8)
 {

@@ -61,4 +61,11 @@ struct tui_glyphs {
 /* The glyphs for a UTF-8 locale (utf8 non-zero) or plain ASCII. */
 const struct tui_glyphs *tui_glyphs_for(int utf8);
 
+/* Whether the terminal draws UTF-8: the locale's codeset (nl_langinfo)
+ * is UTF-8 and term (TERM, NULL when unset) is not a terminal that
+ * predates it (dumb, ansi, the DEC VT family: vt52, vt100, vt220 ...),
+ * which would show each glyph's bytes as two or three wrong characters
+ * whatever the locale says. */
+int tui_terminal_utf8(const char *codeset, const char *term);
+
 #endif

@@ -733,7 +733,7 @@ int tui_run(const char *db_path, const char *surface,
         return rc;
     }
     setlocale(LC_ALL, "");
-    app->utf8 = strcmp(nl_langinfo(CODESET), "UTF-8") == 0;
+    app->utf8 = tui_terminal_utf8(nl_langinfo(CODESET), getenv("TERM"));
     app->glyphs = tui_glyphs_for(app->utf8);
     tui_columns_default(&app->columns);
     stop_signal = 0;

@@ -206,11 +206,22 @@ check "a click on F5Plot on the bar opens the scatter" '^ Scatter:'
 keys F10
 check_exit "mouse: F10 quits"
 
+# --- issue 32 item 6: a UTF-8 locale on a vt100 draws ASCII glyphs ---
+start 80 24 LANG=C.UTF-8 -- demo.db
+keys Enter
+check "UTF-8 locale, xterm: the sort arrow is a UTF-8 triangle" '▲USD'
 # --- item 5: escape sequences under a mismatched TERM ---
-start 80 24 TERM=vt100 -- demo.db
+start 80 24 TERM=vt100 LANG=C.UTF-8 -- demo.db
 check "vt100: runs screen" '^ +1 done +exhaustive'
 keys Enter
 check "vt100: the options table" '^ Run 1 '
+check "vt100 in a UTF-8 locale: the sort arrow is ASCII (issue 32 item 6)" '\^USD'
+if screen | LC_ALL=C grep -q $'[\x80-\xff]'; then
+    echo "not ok - vt100 in a UTF-8 locale: no byte outside ASCII on screen"
+    screen | sed 's/^/  screen: /'
+else
+    pass "vt100 in a UTF-8 locale: no byte outside ASCII on screen"
+fi
 bytes '\033[99~'
 bytes '\033[<0;5;5M'
 bytes '\033[200~'

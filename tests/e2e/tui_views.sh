@@ -65,6 +65,13 @@ keys c c
 check "15: c twice colours the map by mould family" '\| by mould family'
 spm=$(q "select sp_moulds from options where run = 1 and number = $knee")
 check "15: the legend counts the SP families ($spm, sqlite3)" "^.* SP +$spm +[0-9]+ *$"
+# 36 letters for the families: past 36 the legend says a letter repeats
+moulds=$(q "select moulds from options where run = 1 and number = $knee")
+if [ "$moulds" -gt 36 ]; then
+    check "15: $moulds families, 36 letters: the legend says they repeat" "36 letters for $moulds families:"
+else
+    fail "15: the knee has $moulds families, no more than the 36 letters: the repeat note is not tested here"
+fi
 # along the top row, past the flat panels at the roof's edge, to a curved one
 for step in $(seq 1 20); do
     screen | grep -qE 'mould family [0-9]+ \(' && break
