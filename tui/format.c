@@ -201,13 +201,21 @@ static size_t characters(const char *text)
 void tui_fmt_fields(char *out, size_t size, int width,
                     const char *const *fields, int n)
 {
+    tui_fmt_list(out, size, width, fields, n, " | ", " | ");
+}
+
+void tui_fmt_list(char *out, size_t size, int width,
+                  const char *const *fields, int n, const char *lead,
+                  const char *sep)
+{
     assert(n >= 1 && size > 0);
     for (int kept = n; kept >= 1; kept--) {
         size_t used = 0;
         out[0] = '\0';
         for (int k = 0; k < kept && used < size; k++)
             used += (size_t)snprintf(out + used, size - used, "%s%s",
-                                     k ? " | " : "", fields[k]);
+                                     k == 0 ? "" : k == 1 ? lead : sep,
+                                     fields[k]);
         if ((int)characters(out) <= width || kept == 1)
             break;
     }

@@ -88,6 +88,12 @@ void tui_fmt_cost_sum(char *out, size_t size, const struct option_totals *t,
 void tui_fmt_fields(char *out, size_t size, int width,
                     const char *const *fields, int n);
 
+/* tui_fmt_fields with other separators: lead between fields[0] and
+ * fields[1], sep between the rest ("16 panels: FP 4, SP 0, DP 12"). */
+void tui_fmt_list(char *out, size_t size, int width,
+                  const char *const *fields, int n, const char *lead,
+                  const char *sep);
+
 /* option's design grid in words: "37 x 49" panels, or a project's module
  * "module 2.40 x 1.80 m" (its nu and nv only index the module range). */
 void tui_fmt_grid(char *out, size_t size, const struct option_row *option);

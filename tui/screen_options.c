@@ -224,10 +224,28 @@ static int detail_lines(const struct option_row *o, int width,
                  o->threshold_mm, o->rank, o->knee ? " (knee)" : "",
                  t->feasible ? "feasible" : "infeasible", t->max_panel_area);
     tui_fmt_cost_sum(lines[1], 160, t, width);
-    snprintf(lines[2], 160, "%zu panels, %s m^2: FP %zu %.1f, SP %zu %.1f, "
-             "DP %zu %.1f m^2", t->panels, area, t->count[TYPE_FP],
-             t->area_of[TYPE_FP], t->count[TYPE_SP], t->area_of[TYPE_SP],
-             t->count[TYPE_DP], t->area_of[TYPE_DP]);
+    /* Counts and areas both with separators, each area in brackets with
+     * its unit: "FP 702 425.2" read as one number. */
+    char count[TYPE_COUNT + 1][32], type_area[TYPE_COUNT][32];
+    tui_fmt_number(count[TYPE_COUNT], sizeof count[0], (double)t->panels, 0,
+                   1);
+    for (int k = 0; k < TYPE_COUNT; k++) {
+        tui_fmt_number(count[k], sizeof count[k], (double)t->count[k], 0, 1);
+        tui_fmt_number(type_area[k], sizeof type_area[k], t->area_of[k], 1,
+                       1);
+    }
+    /* whole types dropped from the end where the line is short */
+    char field[TYPE_COUNT + 1][80];
+    const char *fields[TYPE_COUNT + 1];
+    snprintf(field[0], sizeof field[0], "%s panels, %s m^2",
+             count[TYPE_COUNT], area);
+    for (int k = 0; k < TYPE_COUNT; k++)
+        snprintf(field[k + 1], sizeof field[k + 1], "%s %s (%s m^2)",
+                 panel_type_name((enum panel_type)k), count[k],
+                 type_area[k]);
+    for (int k = 0; k <= TYPE_COUNT; k++)
+        fields[k] = field[k];
+    tui_fmt_list(lines[2], 160, width, fields, TYPE_COUNT + 1, ": ", ", ");
     snprintf(lines[3], 160, "planarity %.4f m, max deviation %.2f mm, "
              "P_dist %.3g m^4, crowding %.3g", t->planarity,
              t->max_deviation * 1000, t->p_dist, o->crowding);

@@ -154,6 +154,31 @@ static void test_fields(void **state)
                         "façade (15 x 12)");
 }
 
+/* Issue 32 item 4: the detail pane's "FP 702 425.2" read as one number.
+ * Each type's count and area, each area with its unit, and a line too
+ * long for the pane drops whole types, never the end of a number. */
+static void test_list(void **state)
+{
+    (void)state;
+    const char *fields[4] = {"12,345 panels, 14,234.5 m^2",
+                             "FP 1,234 (4,567.8 m^2)",
+                             "SP 2,345 (5,678.9 m^2)",
+                             "DP 8,766 (3,987.8 m^2)"};
+    char out[256];
+    tui_fmt_list(out, sizeof out, 99, fields, 4, ": ", ", ");
+    assert_string_equal(out, "12,345 panels, 14,234.5 m^2: FP 1,234 "
+                        "(4,567.8 m^2), SP 2,345 (5,678.9 m^2), DP 8,766 "
+                        "(3,987.8 m^2)");
+    tui_fmt_list(out, sizeof out, 98, fields, 4, ": ", ", ");
+    assert_string_equal(out, "12,345 panels, 14,234.5 m^2: FP 1,234 "
+                        "(4,567.8 m^2), SP 2,345 (5,678.9 m^2)");
+    tui_fmt_list(out, sizeof out, 51, fields, 4, ": ", ", ");
+    assert_string_equal(out, "12,345 panels, 14,234.5 m^2: FP 1,234 "
+                        "(4,567.8 m^2)");
+    tui_fmt_list(out, sizeof out, 50, fields, 4, ": ", ", ");
+    assert_string_equal(out, "12,345 panels, 14,234.5 m^2");
+}
+
 static void test_numbers(void **state)
 {
     (void)state;
@@ -253,6 +278,7 @@ int main(void)
         cmocka_unit_test(test_numbers),
         cmocka_unit_test(test_cost_sum),
         cmocka_unit_test(test_fields),
+        cmocka_unit_test(test_list),
         cmocka_unit_test(test_times),
         cmocka_unit_test(test_cells),
     };
