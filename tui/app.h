@@ -137,6 +137,12 @@ enum tui_input_result tui_prompt_key(struct tui_app *app,
 /* Text at (y, x) in at most width columns (UTF-8 aware: one column per
  * code point), with attr; returns the columns written. */
 int tui_put(int y, int x, int width, attr_t attr, const char *text);
+/* text from (y, x) over at most rows rows of width columns, broken at
+ * blanks (a word wider than a row is cut there); returns the rows it
+ * took. tui_wrapped_rows: the rows it would take, with no row limit. */
+int tui_put_wrapped(int y, int x, int width, int rows, attr_t attr,
+                    const char *text);
+int tui_wrapped_rows(const char *text, int width);
 /* Same, formatted. */
 int tui_putf(int y, int x, int width, attr_t attr, const char *fmt, ...)
     __attribute__((format(printf, 5, 6)));

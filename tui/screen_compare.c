@@ -63,28 +63,6 @@ static void map_box(const struct compare_screen *s, int cw, int max_rows,
                 cols, rows);
 }
 
-/* text in at most rows lines of width characters from (y, x), broken at
- * spaces (a word longer than a line is cut): a message is read whole or
- * to a word's end, never run into its neighbour's. */
-static void put_wrapped(int y, int x, int width, int rows, attr_t attr,
-                        const char *text)
-{
-    for (int r = 0; r < rows && *text && width > 0; r++) {
-        size_t n = strlen(text);
-        if ((int)n > width) {
-            n = (size_t)width;
-            while (n > 0 && text[n] != ' ')
-                n--;
-            if (n == 0)
-                n = (size_t)width;
-        }
-        tui_putf(y + r, x, width, attr, "%.*s", (int)n, text);
-        text += n;
-        while (*text == ' ')
-            text++;
-    }
-}
-
 static void draw_maps(struct compare_screen *s, struct tui_app *app, int y0,
                       int rows, int x0, int cw)
 {
@@ -104,7 +82,7 @@ static void draw_maps(struct compare_screen *s, struct tui_app *app, int y0,
         if (s->has_map[k] || strcmp(s->map_error[k], s->map_error[0]) != 0)
             same = 0;
     if (same) {
-        put_wrapped(y0 + 1, x0 + 1, s->n * cw - 2, rows - 1,
+        tui_put_wrapped(y0 + 1, x0 + 1, s->n * cw - 2, rows - 1,
                     tui_attr(ROLE_ERROR), s->map_error[0]);
         return;
     }
@@ -113,7 +91,7 @@ static void draw_maps(struct compare_screen *s, struct tui_app *app, int y0,
     for (int k = 0; k < s->n; k++) {
         int x = x0 + k * cw + 1;
         if (!s->has_map[k]) {
-            put_wrapped(y0 + 1, x, cw - 2, rows - 1, tui_attr(ROLE_ERROR),
+            tui_put_wrapped(y0 + 1, x, cw - 2, rows - 1, tui_attr(ROLE_ERROR),
                         s->map_error[k]);
             continue;
         }

@@ -129,6 +129,49 @@ enum tui_input_result tui_prompt_key(struct tui_app *app,
     return r;
 }
 
+/* The bytes of text's next row of at most width: up to its last blank
+ * within width, else width itself (a word longer than the row). */
+static size_t wrap_row(const char *text, int width)
+{
+    size_t n = strlen(text);
+    if ((int)n <= width)
+        return n;
+    n = (size_t)width;
+    while (n > 0 && text[n] != ' ')
+        n--;
+    return n > 0 ? n : (size_t)width;
+}
+
+static const char *next_row(const char *text, size_t n)
+{
+    text += n;
+    while (*text == ' ')
+        text++;
+    return text;
+}
+
+int tui_wrapped_rows(const char *text, int width)
+{
+    int rows = 0;
+    while (*text && width > 0) {
+        text = next_row(text, wrap_row(text, width));
+        rows++;
+    }
+    return rows;
+}
+
+int tui_put_wrapped(int y, int x, int width, int rows, attr_t attr,
+                    const char *text)
+{
+    int r = 0;
+    for (; r < rows && *text && width > 0; r++) {
+        size_t n = wrap_row(text, width);
+        tui_putf(y + r, x, width, attr, "%.*s", (int)n, text);
+        text = next_row(text, n);
+    }
+    return r;
+}
+
 int tui_put(int y, int x, int width, attr_t attr, const char *text)
 {
     if (width <= 0 || y < 0 || y >= LINES || x >= COLS)
@@ -246,9 +289,10 @@ static void draw_job(struct tui_app *app, int y, int width)
     tui_put(y, x, width - x, tui_attr(ROLE_STATUS), text);
 }
 
-static void draw_status(struct tui_app *app, int y, int width)
+static void draw_status(struct tui_app *app, int y, int rows, int width)
 {
-    tui_fill(y, 0, width, A_NORMAL);
+    for (int r = 0; r < rows; r++)
+        tui_fill(y + r, 0, width, A_NORMAL);
     if (app->prompt != NULL) {
         int x = tui_put(y, 0, width, tui_attr(ROLE_HEADER), app->prompt);
         x += tui_put(y, x, 1, A_NORMAL, " ");
@@ -260,9 +304,10 @@ static void draw_status(struct tui_app *app, int y, int width)
     }
     curs_set(0);
     if (app->status[0])
-        tui_put(y, 0, width, tui_attr(app->status_error ? ROLE_ERROR
-                                                          : ROLE_STATUS),
-                app->status);
+        tui_put_wrapped(y, 0, width, rows,
+                        tui_attr(app->status_error ? ROLE_ERROR
+                                                   : ROLE_STATUS),
+                        app->status);
     else if (app->job != NULL)
         draw_job(app, y, width);
 }
@@ -419,11 +464,22 @@ static void draw(struct tui_app *app)
         refresh();
         return;
     }
-    s->cls->draw(s, app, height - 2, width);
+    /* A message wider than the screen takes rows from the screen until
+     * the next key, so that its end is read, not cut: up to a quarter of
+     * them (a front on three bounds of its space takes four at 80
+     * columns). */
+    int status_rows = 1;
+    if (app->prompt == NULL && app->status[0]) {
+        int most = height / 4 > 1 ? height / 4 : 1;
+        status_rows = tui_wrapped_rows(app->status, width);
+        status_rows = status_rows < 1 ? 1
+                      : status_rows > most ? most : status_rows;
+    }
+    s->cls->draw(s, app, height - 1 - status_rows, width);
     if (app->help_open)
-        draw_help(app, height - 2, width);
+        draw_help(app, height - 1 - status_rows, width);
     draw_fkeys(app, s, height - 1, width);
-    draw_status(app, height - 2, width);
+    draw_status(app, height - 1 - status_rows, status_rows, width);
     refresh();
 }
 

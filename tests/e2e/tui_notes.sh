@@ -23,6 +23,21 @@ check "the runs list" 'runs'
 keys Enter
 check "run 2 opens naming a bound its front sits on (of its $pareto Pareto options)" \
     "note: [0-9]+ of $pareto Pareto options sit at [UV] = [0-9]+, the (top|bottom) of its range"
+# issue 32 item 2: the note is read to its end, over more rows, not cut
+joined=$(screen | tr '\n' ' ' | tr -s ' ')
+if grep -qE 'widen the range there before taking the bound for an optimum' <<<"$joined"; then
+    pass "the note is on screen to its end at 80 columns (wrapped, not cut)"
+else
+    echo "not ok - the note is on screen to its end at 80 columns (wrapped, not cut)"
+    screen | sed 's/^/  screen: /'
+fi
+keys j
+check "a key clears the note: the table has its rows back" '^ +[0-9]+ +[0-9.]+ '
+if screen | grep -q 'before taking the bound'; then
+    echo "not ok - the note's rows go back to the table at the next key"
+else
+    pass "the note's rows go back to the table at the next key"
+fi
 keys Escape
 check "back on the runs list" 'runs'
 keys Up Enter
