@@ -710,11 +710,11 @@ static int load_points(struct store *store, int64_t run,
         if (p->rows[k].knee)
             knee = k;
     }
-    /* The legend has room for about 24 characters. */
+    /* The legend has three lines of about 22 characters for it. */
     if (info.name[0])
-        snprintf(p->label, sizeof p->label, "run %lld %.16s%s",
+        snprintf(p->label, sizeof p->label, "run %lld %.48s%s",
                  (long long)run, info.name,
-                 strlen(info.name) > 16 ? "..." : "");
+                 strlen(info.name) > 48 ? "..." : "");
     else
         snprintf(p->label, sizeof p->label, "run %lld (%s)", (long long)run,
                  store_run_setting_text(&info, RUN_SETTING_METHOD));

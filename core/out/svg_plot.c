@@ -60,8 +60,14 @@ void svg_plot_axis(double lo, double hi, double pad, int ticks,
     if (!(span > 0))
         span = lo != 0 ? fabs(lo) : 1;  /* one value: a range around it */
     span = fmax(span, 1e-9 * fmax(fabs(lo), fabs(hi)));
+    /* Every quantity Facet plots is a length, area, price or count: values
+     * that are none of them negative get no negative axis, which would
+     * read as a planarity of -5 m. */
+    int nonnegative = lo >= 0;
     lo -= pad * span;
     hi += pad * span;
+    if (nonnegative && lo < 0)
+        lo = 0;
     if (ticks < 1)
         ticks = 1;
     /* Of 1, 2, 5 and 10 x 10^k around the raw step, the one whose
@@ -87,6 +93,8 @@ void svg_plot_axis(double lo, double hi, double pad, int ticks,
         axis->min -= step;
     for (int k = 0; k < 4 && axis->max < hi; k++)
         axis->max += step;
+    if (nonnegative && axis->min < 0)
+        axis->min = 0;
     axis->decimals = step >= 1 ? 0 : (int)ceil(-log10(step) - 1e-9);
 }
 
@@ -352,6 +360,31 @@ static const char *colour_of(const struct svg_plot_series *se, size_t s)
     return se->colour ? se->colour : series_colour[s % NCOLOURS];
 }
 
+/* The legend's text column: PLOT_RIGHT_GAP less the mark, at 12 px
+ * type of at most 6.7 px a character (DejaVu Sans, the widest of the
+ * fonts a viewer falls back on, averages under it). */
+#define LEGEND_CHARS 22
+#define LEGEND_LINES 3
+
+/* The bytes of text's next legend line: up to its last blank within
+ * LEGEND_CHARS characters, else a cut there. Counts UTF-8 characters. */
+static size_t legend_break(const char *text, int chars)
+{
+    size_t at = 0, blank = 0;
+    int count = 0;
+    while (text[at] != '\0' && count < chars) {
+        if (text[at] == ' ')
+            blank = at;
+        at++;
+        while ((text[at] & 0xC0) == 0x80)
+            at++;
+        count++;
+    }
+    if (text[at] == '\0' || text[at] == ' ' || blank == 0)
+        return at;
+    return blank;
+}
+
 /* Series, marks and bubble sizes, to the right of the plot. Round marks
  * are rects with rounded corners, so that <circle> stays one per
  * option. */
@@ -372,8 +405,20 @@ static void write_legend(struct svg *svg, const struct plot_frame *f,
             pareto += se->rank[k] == 1;
         char name[64];
         snprintf(name, sizeof name, "run %zu", s + 1);
-        svg_text(svg, x + 18, y + 10, NULL, "%s (%zu, %zu Pareto)",
-                 se->label != NULL ? se->label : name, se->n, pareto);
+        /* The label over as many lines as it needs of the column's
+         * width, its counts on a line of their own: one line ran past the
+         * page's edge ("run 1 paper space (336, 1"). */
+        const char *label = se->label != NULL ? se->label : name;
+        for (int line = 0; *label != '\0' && line < LEGEND_LINES; line++) {
+            size_t n = legend_break(label, LEGEND_CHARS);
+            svg_text(svg, x + 18, y + 10, NULL, "%.*s", (int)n, label);
+            label += n;
+            while (*label == ' ')
+                label++;
+            y += 14;
+        }
+        svg_text(svg, x + 18, y + 10, "fill=\"#555555\"",
+                 "%zu options, %zu Pareto", se->n, pareto);
         y += 20;
     }
     y += 6;

@@ -64,8 +64,9 @@ void svg_plot_defaults(struct svg_plot *plot);
 /* The nice axis over values in [lo, hi]: the range is first widened by
  * pad (a fraction of hi - lo, or of |lo|, or 1, when they are equal) on
  * each side, then rounded out to a step of 1, 2 or 5 x 10^k giving about
- * ticks intervals. So min < lo and hi < max whenever pad > 0. lo and hi
- * must be finite. */
+ * ticks intervals. So min < lo and hi < max whenever pad > 0, except that
+ * values none of which is negative get min 0 at the least (no negative
+ * planarity or cost on a page). lo and hi must be finite. */
 void svg_plot_axis(double lo, double hi, double pad, int ticks,
                    struct svg_axis *axis);
 

@@ -129,6 +129,23 @@ expect "plot --x dp_area --y fp_area --size nu" 0 "$FACET" plot "$DB" --run 1 \
 render "plot dp_area/fp_area" "$WORK/p3.svg"
 count_is "plot dp_area/fp_area: one <circle per option" "$N1" "$(grep -c '<circle' "$WORK/p3.svg")"
 check "plots of different metrics differ" $CHECK pngs_differ "$WORK/p1.png" "$WORK/p3.png"
+# issue 32 item 3: a run's name runs past the page's edge no more, and no
+# axis of values that are none of them negative goes below 0
+"$FACET" optimize "$WORK/roof.obj" --db "$WORK/named.db" --u 5:20 --v 5:20 \
+    --max-panel-area 100 --name "paper space, the roof in the paper's grid" >/dev/null 2>&1
+expect "plot of a run with a long name" 0 "$FACET" plot "$WORK/named.db" --run 1 -o "$WORK/p4.svg"
+render "plot of a long name" "$WORK/p4.svg"
+sed 's/width="800" height="560" viewBox="0 0 800 560"/width="1200" height="560" viewBox="0 0 1200 560"/' \
+    "$WORK/p4.svg" >"$WORK/p4wide.svg"
+rsvg-convert -o "$WORK/p4wide.png" "$WORK/p4wide.svg"
+check "plot: the legend stays inside the 800-px page (rendered 1200 px wide, nothing right of 800)" \
+    $CHECK nothing_beyond "$WORK/p4wide.png" 800
+if grep -q 'class="tick"[^>]*>-' "$WORK/p4.svg" "$WORK/p1.svg" "$WORK/p3.svg"; then
+    fail "plot: no negative tick on an axis of values none of which is negative"
+    grep -o 'class="tick"[^>]*>-[^<]*' "$WORK/p4.svg" "$WORK/p1.svg" "$WORK/p3.svg" | head -3 | sed 's/^/  /'
+else
+    pass "plot: no negative tick on an axis of values none of which is negative"
+fi
 
 # --- bad input --------------------------------------------------------------
 B=$WORK/bad

@@ -252,6 +252,59 @@ def check_png(path):
         fail("%s looks blank (%d distinct bytes)" % (path, len(set(raw))))
 
 
+def png_rgba(path):
+    """The rows of an 8-bit RGB or RGBA PNG (rsvg-convert's), unfiltered,
+    and its bytes a pixel."""
+    data = open(path, "rb").read()
+    at, idat = 8, b""
+    while at < len(data):
+        n, kind = struct.unpack(">I4s", data[at:at + 8])
+        body = data[at + 8:at + 8 + n]
+        if kind == b"IHDR":
+            width, height, depth, ctype = struct.unpack(">IIBB", body[:10])
+            if depth != 8 or ctype not in (2, 6):
+                fail("%s: not 8-bit RGB or RGBA (depth %d, colour type %d)" % (path, depth, ctype))
+            bpp = 3 if ctype == 2 else 4
+        elif kind == b"IDAT":
+            idat += body
+        at += 12 + n
+    raw, stride, rows = zlib.decompress(idat), bpp * width, []
+    prev = bytearray(stride)
+    for y in range(height):
+        kind, line = raw[y * (stride + 1)], bytearray(raw[y * (stride + 1) + 1:(y + 1) * (stride + 1)])
+        for i in range(stride):
+            a = line[i - bpp] if i >= bpp else 0
+            b = prev[i]
+            c = prev[i - bpp] if i >= bpp else 0
+            if kind == 1:
+                line[i] = (line[i] + a) & 255
+            elif kind == 2:
+                line[i] = (line[i] + b) & 255
+            elif kind == 3:
+                line[i] = (line[i] + (a + b) // 2) & 255
+            elif kind == 4:
+                p = a + b - c
+                pa, pb, pc = abs(p - a), abs(p - b), abs(p - c)
+                line[i] = (line[i] + (a if pa <= pb and pa <= pc else b if pb <= pc else c)) & 255
+        rows.append(line)
+        prev = line
+    return width, height, bpp, rows
+
+
+def check_nothing_beyond(path, edge):
+    """Nothing drawn right of column edge: the page rendered wider than it
+    is (its viewBox widened, no background there), so that a legend that
+    runs past the page's edge shows as pixels beyond it."""
+    width, height, bpp, rows = png_rgba(path)
+    for y, line in enumerate(rows):
+        for x in range(int(edge), width):
+            r, g, b = line[bpp * x:bpp * x + 3]
+            a = line[bpp * x + 3] if bpp == 4 else 255
+            if a > 0 and (r, g, b) != (255, 255, 255):
+                fail("%s: pixel (%d, %d) right of the page's edge is drawn (%d, %d, %d, %d)"
+                     % (path, x, y, r, g, b, a))
+
+
 def check_pngs_differ(a, b):
     if open(a, "rb").read() == open(b, "rb").read():
         fail("%s and %s are the same image" % (a, b))
@@ -323,7 +376,8 @@ def check_obj_panels(obj, db, run, number):
 def main():
     check, args = sys.argv[1], sys.argv[2:]
     {"obj": check_obj, "obj_panels": check_obj_panels, "csv": check_csv, "json": check_json,
-     "png": check_png, "pngs_differ": check_pngs_differ}[check](*args)
+     "png": check_png, "pngs_differ": check_pngs_differ,
+     "nothing_beyond": check_nothing_beyond}[check](*args)
 
 
 if __name__ == "__main__":
