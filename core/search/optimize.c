@@ -926,8 +926,10 @@ int optimize_total_with(const struct option_evaluator *evaluator,
                                       (uint64_t)settings->evaluations);
         return FACET_OK;
     default:
+        /* The generations count the first one (nsga2.h): population x
+         * generations points met, repeats included. */
         *total = (int64_t)settings->population *
-                 ((int64_t)settings->generations + 1);
+                 (int64_t)settings->generations;
         return FACET_OK;
     }
 }
@@ -1045,7 +1047,7 @@ int optimize_lattice_stoppable(const struct surface *surface,
     double evaluations =
         settings->method == METHOD_RANDOM ? (double)settings->evaluations
         : settings->method == METHOD_NSGA2
-            ? (double)settings->population * (settings->generations + 1)
+            ? (double)settings->population * settings->generations
             : grids;
     if (evaluations < grids)
         grids = evaluations;

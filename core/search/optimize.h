@@ -153,7 +153,8 @@ int optimize_method_check(enum optimize_method method,
 
 /* The options a run of settings evaluates at most (a point met twice is
  * evaluated once): the space for exhaustive, the evaluations for random,
- * population x (generations + 1) for NSGA-II; of a shard, its share of
+ * population x generations for NSGA-II (nsga2.h: the first generation
+ * counts); of a shard, its share of
  * them (an NSGA-II island evaluates as many as a whole run). */
 int64_t optimize_total(const struct optimize_settings *settings);
 

@@ -546,6 +546,16 @@ if tail -n 1 "$ERR" | grep -qE '^progress: 289/289 options \(100%\), [0-9.]+/s, 
 else
     fail "progress: the last line gives the rate and the time taken"
 fi
+# Issue 32 item 8: NSGA-II's progress ends at 100 % with the time taken,
+# as exhaustive's does. Its total is population x generations, the first
+# generation counted (nsga2.h: 8 x 3 = 24 points met, repeats included).
+run "$FACET" optimize "$ROOF" --db "$WORK/nsga2-progress.db" --method nsga2 \
+    --pop 8 --gens 3 --u 4:20 --v 4:20 --threshold 1:5 --seed 3
+if tail -n 1 "$ERR" | grep -qE '^progress: 24/24 options \(100%\), [0-9.]+/s, took [0-9.]+ s$'; then
+    pass "progress: NSGA-II ends at 24/24 (100 %) with the time taken"
+else
+    fail "progress: NSGA-II ends at 24/24 (100 %) with the time taken (last line: $(tail -n 1 "$ERR"))"
+fi
 # A mesh coarser than the space's finest panels: one warning line before
 # the work, stored with the run, and listed by facet runs; a fine mesh has
 # none.
