@@ -29,9 +29,9 @@ struct study_hooks {
     /* Options done (stored or reused) of total. */
     void (*progress)(void *context, int64_t done, int64_t total);
     /* Non-zero when the user asked to stop; checked between batches, and
-     * every few milliseconds while the surface is read and prepared, from
-     * several threads at once (core/base/stop.h): it must be cheap and
-     * thread-safe. */
+     * every few milliseconds while the surface is read and prepared and
+     * while options are evaluated, from several threads at once
+     * (core/base/stop.h): it must be cheap and thread-safe. */
     int (*should_stop)(void *context);
     /* The run's id, once it is recorded (the TUI follows it live). */
     void (*started)(void *context, int64_t run);

@@ -25,6 +25,7 @@
 static int build_panels(const struct surface *surface,
                         const struct panel_lattice *lattice,
                         const struct option_params *params,
+                        const struct facet_stop *stop,
                         struct panelization *panels,
                         struct option_totals *totals,
                         struct facet_error *err)
@@ -39,10 +40,11 @@ static int build_panels(const struct surface *surface,
         return rc;
     if (lattice != NULL && params->mode == PANEL_EXTREMES &&
         panel_lattice_has(lattice, params->nu, params->nv))
-        return panels_build_lattice(lattice, params->nu, params->nv, panels,
-                                    err);
-    return panels_build_fast(&surface->panels, params->mode, params->nu,
-                             params->nv, panels, err);
+        return panels_build_lattice_stoppable(lattice, params->nu,
+                                              params->nv, stop, panels, err);
+    return panels_build_fast_stoppable(&surface->panels, params->mode,
+                                       params->nu, params->nv, stop, panels,
+                                       err);
 }
 
 /* A limit of 0 is none: no joint is over it. */
@@ -207,6 +209,7 @@ static int build_and_measure(const struct surface *surface,
  * widths are not measured: it depends on the grid alone, so the grid's
  * first evaluation sets it and its other thresholds keep it. */
 static int measure_widths(const struct surface *surface, unsigned unmeasured,
+                          const struct facet_stop *stop,
                           struct panelization *panels,
                           struct facet_error *err)
 {
@@ -216,10 +219,12 @@ static int measure_widths(const struct surface *surface, unsigned unmeasured,
         return FACET_OK;
     }
     struct panel_geometry geometry;
-    int rc = panel_geometry_build(&surface->mesh, &surface->uv, panels,
-                                  &geometry, err);
+    int rc = panel_geometry_build_stoppable(&surface->mesh, &surface->uv,
+                                            panels, stop, &geometry, err);
     if (rc == FACET_OK)
-        rc = panel_widths_set(&geometry, panels, err);
+        rc = facet_stop_check(stop, err);
+    if (rc == FACET_OK)
+        rc = panel_widths_set_stoppable(&geometry, panels, stop, err);
     panel_geometry_free(&geometry);
     return rc;
 }
@@ -266,6 +271,8 @@ static int classify_and_build(const struct surface *surface,
     if (shared->joints != NULL)
         *shared->joints = 0;
     int rc = classify_check_options(&params->classify, err);
+    if (rc == FACET_OK)
+        rc = facet_stop_check(shared->stop, err);
     if (rc != FACET_OK)
         return rc;
     classify_types(panels, &params->classify);
@@ -289,6 +296,8 @@ static int classify_and_build(const struct surface *surface,
         classify_price_terms(&params->classify, totals);
         return FACET_OK;
     }
+    if ((rc = facet_stop_check(shared->stop, err)) != FACET_OK)
+        return rc;
     struct mould_options mould = option_mould_options(params);
     struct mould_families families;
     rc = mould_families_build(&surface->mesh, &surface->uv, panels, &mould,
@@ -316,11 +325,17 @@ int option_evaluate(const struct surface *surface,
     }
     if (shared->fits != NULL)
         memset(shared->fits, 0, sizeof *shared->fits);
-    int rc = build_panels(surface, shared->lattice, params, panels, totals,
-                          err);
-    if (rc != FACET_OK)
-        return rc;
-    rc = measure_widths(surface, params->unmeasured, panels, err);
+    int rc = facet_stop_check(shared->stop, err);
+    if (rc == FACET_OK)
+        rc = build_panels(surface, shared->lattice, params, shared->stop,
+                          panels, totals, err);
+    if (rc == FACET_OK)
+        rc = facet_stop_check(shared->stop, err);
+    if (rc == FACET_OK)
+        rc = measure_widths(surface, params->unmeasured, shared->stop,
+                            panels, err);
+    if (rc == FACET_OK)
+        rc = facet_stop_check(shared->stop, err);
     if (rc != FACET_OK)
         return rc;
     if (shared->fits != NULL && !(params->unmeasured & OPTION_MEASURE_FITS)) {

@@ -173,6 +173,8 @@ struct evaluation_plan {
     struct option_totals *totals;
     struct panelization *keep;      /* NULL, or every point's panels (its
                                        own group each) */
+    const struct facet_stop *stop;  /* asked before each point and inside
+                                       its evaluation; NULL: never */
 };
 
 struct evaluation_job {
@@ -206,15 +208,18 @@ static void evaluation_thread(void *argument)
                 plan->points[k].threshold_mm);
             struct evaluation_shared shared = {plan->lattice, plan->lines,
                                                kept ? &fits : NULL, 0, 0, 0,
-                                               NULL};
+                                               NULL, plan->stop};
             if (x > plan->group[g]) {
                 /* Same grid, same joints: measured with its first point. */
                 shared.again = 1;
                 shared.joint_length =
                     plan->totals[plan->order[plan->group[g]]].joint_length;
             }
-            job->rc = option_evaluate(plan->surface, &params, &shared,
-                                      &panels, &plan->totals[k], &job->err);
+            job->rc = facet_stop_check(plan->stop, &job->err);
+            if (job->rc == FACET_OK)
+                job->rc = option_evaluate(plan->surface, &params, &shared,
+                                          &panels, &plan->totals[k],
+                                          &job->err);
             if (job->rc != FACET_OK)
                 break;
         }
@@ -303,6 +308,7 @@ static int evaluate(const struct surface *surface,
                     const struct joint_lines *lines,
                     const struct option_params *base,
                     const struct design_point *points, size_t n, int jobs,
+                    const struct facet_stop *stop,
                     struct option_totals *totals, struct panelization *keep,
                     struct facet_error *err)
 {
@@ -361,7 +367,8 @@ static int evaluate(const struct surface *surface,
     if (keep != NULL && n > 0)
         memset(keep, 0, n * sizeof *keep);
     struct evaluation_plan plan = {surface, lattice, lines, base, points,
-                                   order, group, ngroups, 0, totals, keep};
+                                   order, group, ngroups, 0, totals, keep,
+                                   stop};
     atomic_init(&plan.next, 0);
     struct evaluation_job job[PARALLEL_MAX];
     for (int k = 0; k < jobs; k++)
@@ -370,15 +377,19 @@ static int evaluate(const struct surface *surface,
     joint_lines_free(&batch_lines);
     free(order);
     free(group);
+    /* A job's own failure is the one told, before another's stop. */
+    int failed = -1;
     for (int k = 0; k < jobs; k++)
-        if (job[k].rc != FACET_OK) {
-            if (err != NULL)
-                *err = job[k].err;
-            for (size_t p = 0; keep != NULL && p < n; p++)
-                panelization_free(&keep[p]);
-            return job[k].rc;
-        }
-    return FACET_OK;
+        if (job[k].rc != FACET_OK &&
+            (failed < 0 || job[failed].rc == FACET_ESTOP))
+            failed = k;
+    if (failed < 0)
+        return FACET_OK;
+    if (err != NULL)
+        *err = job[failed].err;
+    for (size_t p = 0; keep != NULL && p < n; p++)
+        panelization_free(&keep[p]);
+    return job[failed].rc;
 }
 
 int optimize_evaluate(const struct surface *surface,
@@ -387,8 +398,8 @@ int optimize_evaluate(const struct surface *surface,
                       const struct design_point *points, size_t n, int jobs,
                       struct option_totals *totals, struct facet_error *err)
 {
-    return evaluate(surface, lattice, NULL, base, points, n, jobs, totals,
-                    NULL, err);
+    return evaluate(surface, lattice, NULL, base, points, n, jobs, NULL,
+                    totals, NULL, err);
 }
 
 int optimize_evaluate_panels(const struct surface *surface,
@@ -399,8 +410,8 @@ int optimize_evaluate_panels(const struct surface *surface,
                              struct option_totals *totals,
                              struct facet_error *err)
 {
-    return evaluate(surface, lattice, NULL, base, points, n, jobs, totals,
-                    panels, err);
+    return evaluate(surface, lattice, NULL, base, points, n, jobs, NULL,
+                    totals, panels, err);
 }
 
 /* --- the point cache and batches --- */
@@ -545,6 +556,86 @@ static int search_grow(struct search *s, size_t more, struct facet_error *err)
     return FACET_OK;
 }
 
+static int same_grid(const struct design_point *a,
+                     const struct design_point *b)
+{
+    return a->nu == b->nu && a->nv == b->nv;
+}
+
+/* Points evaluated and stored together: enough to keep every thread
+ * busy, few enough that an interruption loses little and progress moves. */
+static size_t batch_size(const struct optimize_settings *settings)
+{
+    size_t size = 8 * (size_t)(settings->jobs > 0 ? settings->jobs : 1);
+    return size < 16 ? 16 : size;
+}
+
+static int stop_requested(const struct optimize_hooks *hooks)
+{
+    return hooks->should_stop != NULL && hooks->should_stop(hooks->context);
+}
+
+/* Evaluates the new options known[first .. first + n) and hands them to
+ * the store hook in chunks of batch_size (a grid's thresholds kept in one
+ * chunk, which panelizes it once), the stop asked before each chunk and
+ * inside its evaluation: a generation of NSGA-II of fine grids takes
+ * minutes, and a stop must neither wait for it nor lose the chunks
+ * stored. FACET_ESTOP when the stop fired: the chunk it interrupted is
+ * dropped whole, nothing of it stored. */
+static int search_evaluate(struct search *s, size_t first, size_t n,
+                           struct facet_error *err)
+{
+    if (n == 0)
+        return FACET_OK;
+    size_t size = batch_size(s->settings);
+    struct facet_stop stop = {s->hooks->should_stop, s->hooks->context};
+    struct design_point *points = malloc((n < size ? n : size) *
+                                         sizeof *points);
+    struct option_totals *totals = malloc((n < size ? n : size) *
+                                          sizeof *totals);
+    int rc = FACET_OK;
+    if (points == NULL || totals == NULL)
+        rc = facet_error_set(err, FACET_EWORK, "out of memory");
+    for (size_t at = 0; rc == FACET_OK && at < n;) {
+        struct evaluated_option *chunk = s->known + first + at;
+        size_t count = 0;
+        while (at + count < n && count < size) {
+            points[count] = chunk[count].point;
+            count++;
+        }
+        /* A grid cut by the chunk's end goes whole into the next one,
+         * unless it fills the chunk alone. */
+        if (at + count < n) {
+            size_t cut = count;
+            while (cut > 0 && same_grid(&chunk[cut - 1].point,
+                                        &chunk[count].point))
+                cut--;
+            if (cut > 0)
+                count = cut;
+        }
+        if (stop_requested(s->hooks)) {
+            rc = facet_stop_error(err);
+            break;
+        }
+        rc = s->evaluator->evaluate(s->evaluator->context,
+                                    &s->settings->base, points, count,
+                                    s->settings->jobs, &stop, totals, err);
+        for (size_t k = 0; rc == FACET_OK && k < count; k++)
+            chunk[k].totals = totals[k];
+        if (rc == FACET_OK && s->hooks->store != NULL)
+            rc = s->hooks->store(s->hooks->context, chunk, count, err);
+        at += count;
+        if (rc == FACET_OK && at < n && s->hooks->progress != NULL) {
+            int64_t done = s->done + (int64_t)at;
+            s->hooks->progress(s->hooks->context,
+                               done < s->total ? done : s->total, s->total);
+        }
+    }
+    free(points);
+    free(totals);
+    return rc;
+}
+
 int search_batch(struct search *s, const struct design_point *points,
                  size_t n, int generation, size_t *index,
                  const int64_t *numbers, struct facet_error *err)
@@ -579,29 +670,9 @@ int search_batch(struct search *s, const struct design_point *points,
         index[k] = found;
     }
     size_t fresh = s->nknown - first_new;
-    if (fresh > 0) {
-        struct design_point *points_new = malloc(fresh * sizeof *points_new);
-        struct option_totals *totals = malloc(fresh * sizeof *totals);
-        if (points_new == NULL || totals == NULL) {
-            free(points_new);
-            free(totals);
-            return facet_error_set(err, FACET_EWORK, "out of memory");
-        }
-        for (size_t k = 0; k < fresh; k++)
-            points_new[k] = s->known[first_new + k].point;
-        rc = s->evaluator->evaluate(s->evaluator->context,
-                                    &s->settings->base, points_new, fresh,
-                                    s->settings->jobs, totals, err);
-        for (size_t k = 0; rc == FACET_OK && k < fresh; k++)
-            s->known[first_new + k].totals = totals[k];
-        free(points_new);
-        free(totals);
-        if (rc == FACET_OK && s->hooks->store != NULL)
-            rc = s->hooks->store(s->hooks->context, s->known + first_new,
-                                 fresh, err);
-        if (rc != FACET_OK)
-            return rc;
-    }
+    rc = search_evaluate(s, first_new, fresh, err);
+    if (rc != FACET_OK)
+        return rc;
     s->done += (int64_t)n;
     if (s->hooks->progress != NULL)
         s->hooks->progress(s->hooks->context,
@@ -611,17 +682,11 @@ int search_batch(struct search *s, const struct design_point *points,
 
 /* --- exhaustive and random --- */
 
-/* Points per batch: enough to keep every thread busy, few enough that an
- * interruption loses little and progress moves. */
-static size_t batch_size(const struct optimize_settings *settings)
+int search_stopped(enum optimize_outcome *outcome, struct facet_error *err)
 {
-    size_t size = 8 * (size_t)(settings->jobs > 0 ? settings->jobs : 1);
-    return size < 16 ? 16 : size;
-}
-
-static int stop_requested(const struct optimize_hooks *hooks)
-{
-    return hooks->should_stop != NULL && hooks->should_stop(hooks->context);
+    *outcome = OPTIMIZE_INTERRUPTED;
+    facet_error_clear(err);
+    return FACET_OK;
 }
 
 /* The grids an exhaustive walk evaluates, each distinct option's once:
@@ -747,6 +812,8 @@ static int run_exhaustive(struct search *s,
         if (n > 0)
             rc = search_batch(s, points, n, 0, index, numbers, err);
     }
+    if (rc == FACET_ESTOP)
+        rc = search_stopped(outcome, err);
     free(points);
     free(index);
     free(numbers);
@@ -877,6 +944,8 @@ static int run_random(struct search *s, enum optimize_outcome *outcome,
         if (rc == FACET_OK && n > 0)
             rc = search_batch(s, points, n, 0, index, numbers, err);
     }
+    if (rc == FACET_ESTOP)
+        rc = search_stopped(outcome, err);
     /* A space of fewer distinct options than the draws asked for is
      * spent: the run is done with what it drew, and its progress says so
      * rather than stopping short of a total it could never reach. */
@@ -944,12 +1013,13 @@ struct surface_evaluation {
 
 static int surface_evaluate(void *context, const struct option_params *base,
                             const struct design_point *points, size_t n,
-                            int jobs, struct option_totals *totals,
+                            int jobs, const struct facet_stop *stop,
+                            struct option_totals *totals,
                             struct facet_error *err)
 {
     const struct surface_evaluation *e = context;
     return evaluate(e->surface, e->lattice, e->lines, base, points, n, jobs,
-                    totals, NULL, err);
+                    stop, totals, NULL, err);
 }
 
 int optimize_run_with(const struct option_evaluator *evaluator,

@@ -11,8 +11,11 @@
  * seed fixes, so a run and its resumption number them alike.
  *
  * Evaluation runs on `jobs` threads in batches; after each batch the caller's
- * store hook receives the new options (to commit them) and its stop hook may
- * end the run. A design point met twice is evaluated once. Resuming: pass
+ * store hook receives the new options (to commit them). The stop hook is
+ * asked between batches, between options and between the stages of an
+ * option (evaluate.h), so that a stop is heard within about a second
+ * whatever the grid: the batch it interrupts is dropped whole (no option is
+ * stored half-evaluated), what was stored before it is kept. A design point met twice is evaluated once. Resuming: pass
  * the options already stored; the method runs again from its start with
  * them as a cache (nothing stored is evaluated or stored again), so the
  * finished run has exactly the options of an uninterrupted one.
@@ -23,6 +26,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "core/base/stop.h"
 #include "core/search/metric.h"
 #include "core/search/shard.h"
 #include "core/evaluate/evaluate.h"
@@ -91,7 +95,9 @@ struct optimize_hooks {
                  size_t n, struct facet_error *err);
     /* Reports progress: options done (stored or reused) of total. */
     void (*progress)(void *context, int64_t done, int64_t total);
-    /* Non-zero when the user asked to stop (checked between batches). */
+    /* Non-zero when the user asked to stop: asked between batches and,
+     * from the evaluating threads at once, while a batch is evaluated
+     * (core/base/stop.h): it must be cheap and thread-safe. */
     int (*should_stop)(void *context);
 };
 
@@ -185,9 +191,11 @@ struct option_evaluator {
      * into totals[0..n). The store hook's next call receives exactly
      * these options, in this order, so an evaluator may keep what it
      * computed beside the totals (a project's per-surface rows) for the
-     * store to take. */
+     * store to take. It asks stop (NULL: never) at least between options
+     * and returns FACET_ESTOP when it fires: totals are then not valid. */
     int (*evaluate)(void *context, const struct option_params *base,
                     const struct design_point *points, size_t n, int jobs,
+                    const struct facet_stop *stop,
                     struct option_totals *totals, struct facet_error *err);
 };
 

@@ -165,10 +165,12 @@ struct fake_run {
 
 static int fake_evaluate(void *context, const struct option_params *base,
                          const struct design_point *points, size_t n,
-                         int jobs, struct option_totals *totals,
+                         int jobs, const struct facet_stop *stop,
+                         struct option_totals *totals,
                          struct facet_error *err)
 {
     (void)context;
+    (void)stop;
     (void)base;
     (void)jobs;
     (void)err;
