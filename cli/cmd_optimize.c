@@ -36,17 +36,18 @@ struct optimize_view {
     int64_t first_done;
 };
 
-static void show_progress(void *context, int64_t done, int64_t total)
+static void show_progress(void *context, const struct optimize_progress *p)
 {
     struct optimize_view *view = context;
     if (!view->bar_started) {
-        progress_start(&view->bar, "options", done);
+        progress_start(&view->bar, "options", p->done, p->work_done);
         view->bar_started = 1;
     }
-    if (done >= total)
-        progress_finish(&view->bar, done, total);
+    if (p->done >= p->total)
+        progress_finish(&view->bar, p->done, p->total);
     else
-        progress_update(&view->bar, done, total);
+        progress_update(&view->bar, p->done, p->total, p->work_done,
+                        p->work_total);
 }
 
 static void show_started(void *context, int64_t run)

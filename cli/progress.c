@@ -15,14 +15,24 @@ double progress_now(void)
     return (double)t.tv_sec + (double)t.tv_nsec * 1e-9;
 }
 
+double progress_eta(double elapsed, double work_since, double work_left)
+{
+    if (!(work_since > 0) || !(elapsed > 0))
+        return -1;
+    return elapsed * (work_left > 0 ? work_left : 0) / work_since;
+}
+
 void progress_start(struct progress *p, const char *what,
-                    int64_t done_before)
+                    int64_t done_before, double work_before)
 {
     p->what = what;
     p->terminal = isatty(STDERR_FILENO);
     p->started = progress_now();
     p->last_drawn = 0;
     p->first_done = done_before;
+    p->first_work = work_before;
+    p->work_done = work_before;
+    p->work_total = work_before;
     p->finished = 0;
 }
 
@@ -37,8 +47,11 @@ static void draw(struct progress *p, int64_t done, int64_t total, int last)
     char rate_text[32] = "-/s", left_text[32] = "-";
     if (measured) {
         snprintf(rate_text, sizeof rate_text, "%.1f/s", rate);
-        snprintf(left_text, sizeof left_text, "%.0f s",
-                 (double)(total - done) / rate);
+        /* By the work left, not the options: finer grids take longer. */
+        double left = progress_eta(elapsed, p->work_done - p->first_work,
+                                   p->work_total - p->work_done);
+        if (left >= 0)
+            snprintf(left_text, sizeof left_text, "%.0f s", left);
     }
     double fraction = total > 0 ? (double)done / (double)total : 1;
     if (p->terminal) {
@@ -67,8 +80,11 @@ static void draw(struct progress *p, int64_t done, int64_t total, int last)
     fflush(stderr);
 }
 
-void progress_update(struct progress *p, int64_t done, int64_t total)
+void progress_update(struct progress *p, int64_t done, int64_t total,
+                     double work_done, double work_total)
 {
+    p->work_done = work_done;
+    p->work_total = work_total;
     double now = progress_now();
     double interval = p->terminal ? 0.1 : 5.0;
     if (now - p->last_drawn < interval)

@@ -3,7 +3,9 @@
  *
  * On a terminal, one line redrawn in place: a bar, done/total, rate and
  * time left. Otherwise (a log, CI) a plain line at most every few seconds
- * and at the end, so logs stay readable.
+ * and at the end, so logs stay readable. The time left follows the work
+ * left, which a caller may weigh apart from the count shown (a search's
+ * options by their panels: progress_eta).
  */
 #ifndef FACET_PROGRESS_H
 #define FACET_PROGRESS_H
@@ -16,18 +18,29 @@ struct progress {
     double started;          /* monotonic seconds */
     double last_drawn;
     int64_t first_done;      /* done when started (resume) */
+    double first_work;       /* work done when started */
+    double work_done, work_total;  /* the last update's */
     int finished;
 };
 
-/* Starts reporting; done_before counts work already done (a resume). */
+/* Starts reporting; done_before counts what was done already (a resume),
+ * work_before its work. */
 void progress_start(struct progress *p, const char *what,
-                    int64_t done_before);
-void progress_update(struct progress *p, int64_t done, int64_t total);
+                    int64_t done_before, double work_before);
+/* done of total shown; the time left from work_done of work_total (in
+ * any unit: the counts themselves when every item takes as long). */
+void progress_update(struct progress *p, int64_t done, int64_t total,
+                     double work_done, double work_total);
 /* Ends the line. */
 void progress_finish(struct progress *p, int64_t done, int64_t total);
 
 /* Monotonic seconds. */
 double progress_now(void);
+
+/* Seconds left when work_since of the work was done in elapsed seconds
+ * and work_left is left, at that rate; -1 when nothing is measured yet
+ * (no work or no time). */
+double progress_eta(double elapsed, double work_since, double work_left);
 
 /* The stage and warning hooks of a study (study/study.h) on stderr:
  * "facet: STAGE" on a terminal only (in a log the progress lines say

@@ -166,11 +166,11 @@ static int store_batch(void *context, const struct evaluated_option *options,
                                      n, state->surface_rows, ns, err);
 }
 
-static void report_progress(void *context, int64_t done, int64_t total)
+static void report_progress(void *context, const struct optimize_progress *p)
 {
     struct study_state *state = context;
     if (state->hooks != NULL && state->hooks->progress != NULL)
-        state->hooks->progress(state->hooks->context, done, total);
+        state->hooks->progress(state->hooks->context, p);
 }
 
 static int stop_requested(void *context)

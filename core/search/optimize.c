@@ -556,6 +556,34 @@ static int search_grow(struct search *s, size_t more, struct facet_error *err)
     return FACET_OK;
 }
 
+/* The work of evaluating p, in panels (struct optimize_progress): nu x nv
+ * of a single surface's grid; 1 for a project's option, whose nu and nv
+ * index its module. */
+static double point_work(const struct search *s, const struct design_point *p)
+{
+    if (s->evaluator->canonical != NULL)
+        return 1;
+    return (double)p->nu * (double)p->nv;
+}
+
+/* Tells the progress hook that done options, of work_done panels, are met. */
+static void search_report(const struct search *s, int64_t done,
+                          double work_done)
+{
+    if (s->hooks->progress == NULL)
+        return;
+    struct optimize_progress p;
+    p.done = done < s->total ? done : s->total;
+    p.total = s->total;
+    p.work_done = work_done;
+    p.work_total = s->work_exact > 0
+                       ? s->work_exact
+                       : work_done + (double)(s->total - p.done) * s->work_each;
+    if (p.work_total < work_done)
+        p.work_total = work_done;
+    s->hooks->progress(s->hooks->context, &p);
+}
+
 static int same_grid(const struct design_point *a,
                      const struct design_point *b)
 {
@@ -596,6 +624,7 @@ static int search_evaluate(struct search *s, size_t first, size_t n,
     int rc = FACET_OK;
     if (points == NULL || totals == NULL)
         rc = facet_error_set(err, FACET_EWORK, "out of memory");
+    double work = s->work_done;
     for (size_t at = 0; rc == FACET_OK && at < n;) {
         struct evaluated_option *chunk = s->known + first + at;
         size_t count = 0;
@@ -620,16 +649,15 @@ static int search_evaluate(struct search *s, size_t first, size_t n,
         rc = s->evaluator->evaluate(s->evaluator->context,
                                     &s->settings->base, points, count,
                                     s->settings->jobs, &stop, totals, err);
-        for (size_t k = 0; rc == FACET_OK && k < count; k++)
+        for (size_t k = 0; rc == FACET_OK && k < count; k++) {
             chunk[k].totals = totals[k];
+            work += point_work(s, &chunk[k].point);
+        }
         if (rc == FACET_OK && s->hooks->store != NULL)
             rc = s->hooks->store(s->hooks->context, chunk, count, err);
         at += count;
-        if (rc == FACET_OK && at < n && s->hooks->progress != NULL) {
-            int64_t done = s->done + (int64_t)at;
-            s->hooks->progress(s->hooks->context,
-                               done < s->total ? done : s->total, s->total);
-        }
+        if (rc == FACET_OK && at < n)
+            search_report(s, s->done + (int64_t)at, work);
     }
     free(points);
     free(totals);
@@ -674,9 +702,9 @@ int search_batch(struct search *s, const struct design_point *points,
     if (rc != FACET_OK)
         return rc;
     s->done += (int64_t)n;
-    if (s->hooks->progress != NULL)
-        s->hooks->progress(s->hooks->context,
-                           s->done < s->total ? s->done : s->total, s->total);
+    for (size_t k = 0; k < n; k++)
+        s->work_done += point_work(s, &s->known[index[k]].point);
+    search_report(s, s->done, s->work_done);
     return FACET_OK;
 }
 
@@ -952,8 +980,8 @@ static int run_random(struct search *s, enum optimize_outcome *outcome,
     if (rc == FACET_OK && *outcome == OPTIMIZE_DONE && drawn_points < wanted &&
         s->done < s->total) {
         s->total = s->done;
-        if (s->hooks->progress != NULL)
-            s->hooks->progress(s->hooks->context, s->done, s->total);
+        s->work_exact = s->work_done;
+        search_report(s, s->done, s->work_done);
     }
     drawn_free(&drawn);
     free(points);
@@ -1022,6 +1050,30 @@ static int surface_evaluate(void *context, const struct option_params *base,
                     stop, totals, NULL, err);
 }
 
+/* The work the progress weighs by (struct optimize_progress): of an
+ * exhaustive walk over grids, exactly its panels (of a shard, its share);
+ * of another method, the mean work of a point of the space. */
+static void search_work_init(struct search *s,
+                             const struct exhaustive_grids *grids)
+{
+    const struct design_space *space = &s->settings->space;
+    double us = space->u_max - space->u_min + 1;
+    double vs = space->v_max - space->v_min + 1;
+    int single = s->evaluator->canonical == NULL;
+    s->work_each = single ? (space->u_min + space->u_max) / 2.0 *
+                                ((space->v_min + space->v_max) / 2.0)
+                          : 1;
+    if (s->settings->method != METHOD_EXHAUSTIVE)
+        return;
+    double steps = (double)threshold_steps(space);
+    double points = (double)grids->n * steps;
+    /* The sum of nu x nv over the grids: (sum of u) x (sum of v). */
+    double work = single ? us * (space->u_min + space->u_max) / 2 * vs *
+                               (space->v_min + space->v_max) / 2 * steps
+                         : points;
+    s->work_exact = points > 0 ? work * (double)s->total / points : 0;
+}
+
 int optimize_run_with(const struct option_evaluator *evaluator,
                       const struct optimize_settings *settings,
                       const struct evaluated_option *stored, size_t nstored,
@@ -1048,6 +1100,8 @@ int optimize_run_with(const struct option_evaluator *evaluator,
     if (rc == FACET_OK)
         rc = search_init(&s, evaluator, settings, stored, nstored, hooks,
                          total, err);
+    if (rc == FACET_OK)
+        search_work_init(&s, &grids);
     if (rc == FACET_OK) {
         if (settings->method == METHOD_EXHAUSTIVE)
             rc = run_exhaustive(&s, &grids, outcome, err);

@@ -87,14 +87,27 @@ struct evaluated_option {
     struct option_totals totals;
 };
 
+/* How far a run is: the options met of the most it meets, and the work
+ * they take, in panels (a grid's nu x nv, the same for each of its
+ * thresholds; a project's option counts 1). An option of 2000 x 2000 takes
+ * a thousand times one of 60 x 60, and an exhaustive walk's grids grow
+ * finer as it goes: time left follows the work left, not the options left
+ * (progress_eta). work_total is exact for an exhaustive walk; for random
+ * and NSGA-II, whose points are drawn as they go, it is the work done and
+ * the space's mean work for each option still to come. */
+struct optimize_progress {
+    int64_t done, total;          /* options met (stored or reused) */
+    double work_done, work_total; /* panels */
+};
+
 struct optimize_hooks {
     void *context;
     /* Commits n new options; a non-zero return ends the run with that
      * error. */
     int (*store)(void *context, const struct evaluated_option *options,
                  size_t n, struct facet_error *err);
-    /* Reports progress: options done (stored or reused) of total. */
-    void (*progress)(void *context, int64_t done, int64_t total);
+    /* Reports progress (struct optimize_progress). */
+    void (*progress)(void *context, const struct optimize_progress *p);
     /* Non-zero when the user asked to stop: asked between batches and,
      * from the evaluating threads at once, while a batch is evaluated
      * (core/base/stop.h): it must be cheap and thread-safe. */

@@ -19,6 +19,9 @@ struct search {
     size_t capacity;                 /* slots, a power of two */
     int64_t distinct_met;            /* distinct points met so far */
     int64_t done, total;             /* for progress */
+    double work_done;                /* panels of the points met */
+    double work_exact;               /* > 0: the walk's whole work */
+    double work_each;                /* else: the mean of a point's */
 };
 
 /* Sets up *s with the run's stored options. Release with search_free. */
