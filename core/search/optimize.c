@@ -61,6 +61,11 @@ uint64_t design_space_size(const struct design_space *s)
            (uint64_t)(s->v_max - s->v_min + 1) * threshold_steps(s);
 }
 
+double design_space_mean_panels(const struct design_space *s)
+{
+    return (s->u_min + s->u_max) / 2.0 * ((s->v_min + s->v_max) / 2.0);
+}
+
 /* The ranges of a design space as a designer types them (numrange.h). */
 static const struct numrange_spec sides_spec = {
     .whole = 1, .least = 1, .most = PANEL_MAX_GRID,
@@ -1057,20 +1062,14 @@ static void search_work_init(struct search *s,
                              const struct exhaustive_grids *grids)
 {
     const struct design_space *space = &s->settings->space;
-    double us = space->u_max - space->u_min + 1;
-    double vs = space->v_max - space->v_min + 1;
     int single = s->evaluator->canonical == NULL;
-    s->work_each = single ? (space->u_min + space->u_max) / 2.0 *
-                                ((space->v_min + space->v_max) / 2.0)
-                          : 1;
+    s->work_each = single ? design_space_mean_panels(space) : 1;
     if (s->settings->method != METHOD_EXHAUSTIVE)
         return;
     double steps = (double)threshold_steps(space);
     double points = (double)grids->n * steps;
-    /* The sum of nu x nv over the grids: (sum of u) x (sum of v). */
-    double work = single ? us * (space->u_min + space->u_max) / 2 * vs *
-                               (space->v_min + space->v_max) / 2 * steps
-                         : points;
+    /* Every grid of the space at every step: exactly the mean's worth. */
+    double work = points * s->work_each;
     s->work_exact = points > 0 ? work * (double)s->total / points : 0;
 }
 

@@ -135,6 +135,12 @@ int optimize_method_parse(const char *text, const char *what,
  * t_min to t_max inclusive, to within a thousandth of a step). */
 uint64_t design_space_size(const struct design_space *space);
 
+/* The mean panels of a grid of space, nu x nv over its grids:
+ * (u_min + u_max) / 2 x (v_min + v_max) / 2, what an option of it takes on
+ * average (struct optimize_progress); of the whole cross product exactly,
+ * of points drawn from it in expectation. */
+double design_space_mean_panels(const struct design_space *space);
+
 /* Parses a grid range as a designer writes it, "20:40" or "30" (a
  * numrange.h range of whole numbers, 1 to PANEL_MAX_GRID, no step), into
  * *lo, *hi. FACET_EINPUT with numrange.h's message naming the field what
