@@ -31,6 +31,7 @@ void progress_start(struct progress *p, const char *what,
     p->last_drawn = 0;
     p->first_done = done_before;
     p->first_work = work_before;
+    p->drawn_width = 0;
     p->work_done = work_before;
     p->work_total = work_before;
     p->finished = 0;
@@ -99,6 +100,45 @@ void progress_finish(struct progress *p, int64_t done, int64_t total)
         return;
     p->finished = 1;
     draw(p, done, total, 1);
+}
+
+/* Draws step done of total on a terminal, over the last one: what, then
+ * the seconds so far unless last (what then says the time taken). */
+static void draw_step(struct progress *p, int done, int total,
+                      const char *what, int last)
+{
+    char bar[31];
+    int filled = total > 0 ? (int)(30.0 * done / total + 0.5) : 30;
+    for (int k = 0; k < 30; k++)
+        bar[k] = k < filled ? '#' : '-';
+    bar[30] = '\0';
+    int width = last ? fprintf(stderr, "\r[%s] %d/%d %s", bar, done, total,
+                               what)
+                     : fprintf(stderr, "\r[%s] %d/%d %s, %.0f s", bar, done,
+                               total, what, progress_now() - p->started);
+    /* Blanks over what a longer step left. */
+    for (int k = width; k < p->drawn_width; k++)
+        fputc(' ', stderr);
+    p->drawn_width = width;
+    fflush(stderr);
+}
+
+void progress_step(struct progress *p, int done, int total,
+                   const char *what)
+{
+    if (p->terminal)
+        draw_step(p, done, total, what, 0);
+}
+
+void progress_steps_end(struct progress *p, int total)
+{
+    if (!p->terminal || p->finished)
+        return;
+    p->finished = 1;
+    char took[48];
+    snprintf(took, sizeof took, "took %.1f s", progress_now() - p->started);
+    draw_step(p, total, total, took, 1);
+    fputc('\n', stderr);
 }
 
 void progress_show_stage(void *context, const char *what)

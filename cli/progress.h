@@ -21,6 +21,7 @@ struct progress {
     double first_work;       /* work done when started */
     double work_done, work_total;  /* the last update's */
     int finished;
+    int drawn_width;         /* columns of the last step drawn */
 };
 
 /* Starts reporting; done_before counts what was done already (a resume),
@@ -33,6 +34,15 @@ void progress_update(struct progress *p, int64_t done, int64_t total,
                      double work_done, double work_total);
 /* Ends the line. */
 void progress_finish(struct progress *p, int64_t done, int64_t total);
+
+/* A command of a few long steps of different kinds (facet classify: read,
+ * prepare, then an option's stages), on a terminal only, as its stages
+ * are (progress_show_stage): "[#####-----] 3/7 WHAT, 12 s", redrawn in
+ * place; no rate or time left, which steps unlike each other do not
+ * give. progress_steps_end ends the line with the time taken. */
+void progress_step(struct progress *p, int done, int total,
+                   const char *what);
+void progress_steps_end(struct progress *p, int total);
 
 /* Monotonic seconds. */
 double progress_now(void);

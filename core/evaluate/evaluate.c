@@ -19,6 +19,13 @@
 #include "core/quantity/quantity.h"
 #include "core/surface/coarse_mesh.h"
 
+/* Tells shared's stage hook, if any, that stage what starts. */
+static void stage(const struct evaluation_shared *shared, const char *what)
+{
+    if (shared->stage != NULL)
+        shared->stage(shared->stage_context, what);
+}
+
 /* Builds the panels of params' grid over surface: from lattice when it
  * holds the grid and params ask for PANEL_EXTREMES, else panels_build_fast.
  * The checks every evaluation starts with come first. */
@@ -276,6 +283,7 @@ static int classify_and_build(const struct surface *surface,
     if (rc != FACET_OK)
         return rc;
     classify_types(panels, &params->classify);
+    stage(shared, "fitting panels, measuring joints");
     rc = build_and_measure(surface, &params->classify, params->unmeasured,
                            shared->fits, panels, totals, &measured, err);
     if (shared->joints != NULL)
@@ -298,6 +306,7 @@ static int classify_and_build(const struct surface *surface,
     }
     if ((rc = facet_stop_check(shared->stop, err)) != FACET_OK)
         return rc;
+    stage(shared, "finding the mould families");
     struct mould_options mould = option_mould_options(params);
     struct mould_families families;
     rc = mould_families_build(&surface->mesh, &surface->uv, panels, &mould,
@@ -325,15 +334,18 @@ int option_evaluate(const struct surface *surface,
     }
     if (shared->fits != NULL)
         memset(shared->fits, 0, sizeof *shared->fits);
+    stage(shared, "building the panels");
     int rc = facet_stop_check(shared->stop, err);
     if (rc == FACET_OK)
         rc = build_panels(surface, shared->lattice, params, shared->stop,
                           panels, totals, err);
     if (rc == FACET_OK)
         rc = facet_stop_check(shared->stop, err);
-    if (rc == FACET_OK)
+    if (rc == FACET_OK) {
+        stage(shared, "measuring the panels' widths");
         rc = measure_widths(surface, params->unmeasured, shared->stop,
                             panels, err);
+    }
     if (rc == FACET_OK)
         rc = facet_stop_check(shared->stop, err);
     if (rc != FACET_OK)
@@ -345,6 +357,8 @@ int option_evaluate(const struct surface *surface,
         if (rc != FACET_OK)
             return rc;
     }
+    if (!(params->unmeasured & OPTION_MEASURE_JOINT_LENGTH))
+        stage(shared, "measuring the joint lines");
     double joint_length =
         params->unmeasured & OPTION_MEASURE_JOINT_LENGTH
             ? NAN

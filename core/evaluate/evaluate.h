@@ -75,7 +75,18 @@ struct evaluation_shared {
      * every few thousand cells: a 2000 x 2000 grid takes tens of seconds,
      * and a stop must be heard within a fraction of one. NULL: never. */
     const struct facet_stop *stop;
+    /* Told as each of the EVALUATION_STAGES stages starts, with its name
+     * ("building the panels"), for a caller that shows one option's
+     * progress (facet classify of 2000 x 2000 panels works for most of a
+     * minute); NULL: not told. A stage left out is not told. */
+    void (*stage)(void *context, const char *what);
+    void *stage_context;
 };
+
+/* The stages evaluation_shared's stage hook may be told of: the panels,
+ * their widths, the joint lines, the panels as built and their joints,
+ * the mould families. */
+#define EVALUATION_STAGES 5
 
 /* Evaluates params on the prepared surface, with what shared holds (may
  * be NULL): fills *panels (caller-owned, released with panelization_free,

@@ -211,9 +211,9 @@ static void evaluation_thread(void *argument)
             struct option_params params = option_params_at(
                 plan->base, plan->points[k].nu, plan->points[k].nv,
                 plan->points[k].threshold_mm);
-            struct evaluation_shared shared = {plan->lattice, plan->lines,
-                                               kept ? &fits : NULL, 0, 0, 0,
-                                               NULL, plan->stop};
+            struct evaluation_shared shared = {
+                .lattice = plan->lattice, .lines = plan->lines,
+                .fits = kept ? &fits : NULL, .stop = plan->stop};
             if (x > plan->group[g]) {
                 /* Same grid, same joints: measured with its first point. */
                 shared.again = 1;
