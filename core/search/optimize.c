@@ -411,11 +411,12 @@ int optimize_evaluate_panels(const struct surface *surface,
                              const struct panel_lattice *lattice,
                              const struct option_params *base,
                              const struct design_point *points, size_t n,
-                             int jobs, struct panelization *panels,
+                             int jobs, const struct facet_stop *stop,
+                             struct panelization *panels,
                              struct option_totals *totals,
                              struct facet_error *err)
 {
-    return evaluate(surface, lattice, NULL, base, points, n, jobs, NULL,
+    return evaluate(surface, lattice, NULL, base, points, n, jobs, stop,
                     totals, panels, err);
 }
 
@@ -581,9 +582,8 @@ static void search_report(const struct search *s, int64_t done,
     p.done = done < s->total ? done : s->total;
     p.total = s->total;
     p.work_done = work_done;
-    p.work_total = s->work_exact > 0
-                       ? s->work_exact
-                       : work_done + (double)(s->total - p.done) * s->work_each;
+    double to_come = (double)(s->total - p.done) * s->work_each;
+    p.work_total = s->work_exact > 0 ? s->work_exact : work_done + to_come;
     if (p.work_total < work_done)
         p.work_total = work_done;
     s->hooks->progress(s->hooks->context, &p);

@@ -10,12 +10,13 @@
  * Options are numbered in the order the method first meets them, which the
  * seed fixes, so a run and its resumption number them alike.
  *
- * Evaluation runs on `jobs` threads in batches; after each batch the caller's
- * store hook receives the new options (to commit them). The stop hook is
- * asked between batches, between options and between the stages of an
- * option (evaluate.h), so that a stop is heard within about a second
- * whatever the grid: the batch it interrupts is dropped whole (no option is
- * stored half-evaluated), what was stored before it is kept. A design point met twice is evaluated once. Resuming: pass
+ * Evaluation runs on `jobs` threads in batches, each evaluated and stored
+ * in chunks: after each chunk the caller's store hook receives its options
+ * (to commit them). The stop hook is asked between chunks, between options
+ * and inside an option (evaluate.h), so that a stop is heard within about
+ * a second whatever the grid: the chunk it interrupts is dropped whole (no
+ * option is stored half-evaluated), what was stored before it is kept. A
+ * design point met twice is evaluated once. Resuming: pass
  * the options already stored; the method runs again from its start with
  * them as a cache (nothing stored is evaluated or stored again), so the
  * finished run has exactly the options of an uninterrupted one.
@@ -251,12 +252,14 @@ int optimize_evaluate(const struct surface *surface,
 
 /* Like optimize_evaluate, keeping every point's panels: panels[0..n)
  * (caller-owned, each released with panelization_free; all released
- * already when it fails). */
+ * already when it fails), asking stop (NULL: never) as a search does:
+ * FACET_ESTOP when it fires. */
 int optimize_evaluate_panels(const struct surface *surface,
                              const struct panel_lattice *lattice,
                              const struct option_params *base,
                              const struct design_point *points, size_t n,
-                             int jobs, struct panelization *panels,
+                             int jobs, const struct facet_stop *stop,
+                             struct panelization *panels,
                              struct option_totals *totals,
                              struct facet_error *err);
 
