@@ -48,6 +48,20 @@ static void record(void *context, const struct optimize_progress *p)
     r->at[r->n++] = *p;
 }
 
+/* Runs settings' search to its end with panel_cost, its reports into *r. */
+static void run_recorded(const struct optimize_settings *settings,
+                         struct reports *r)
+{
+    struct option_evaluator evaluator = {NULL, NULL, panel_cost};
+    memset(r, 0, sizeof *r);
+    struct optimize_hooks hooks = {r, NULL, record, NULL};
+    enum optimize_outcome outcome;
+    struct facet_error err;
+    assert_int_equal(optimize_run_with(&evaluator, settings, NULL, 0,
+                                       &hooks, &outcome, &err), FACET_OK);
+    assert_int_equal(outcome, OPTIMIZE_DONE);
+}
+
 /* progress_eta at a rate of work: 6 panels in 10 s, 12 panels left: 20 s;
  * nothing measured yet: -1. */
 static void test_eta(void **state)
@@ -72,15 +86,8 @@ static void test_exhaustive_work(void **state)
     settings.method = METHOD_EXHAUSTIVE;
     settings.space = (struct design_space){1, 4, 1, 8, 3, 3, 0};
     settings.jobs = 1;
-    struct option_evaluator evaluator = {NULL, NULL, panel_cost};
     struct reports r;
-    memset(&r, 0, sizeof r);
-    struct optimize_hooks hooks = {&r, NULL, record, NULL};
-    enum optimize_outcome outcome;
-    struct facet_error err;
-    assert_int_equal(optimize_run_with(&evaluator, &settings, NULL, 0,
-                                       &hooks, &outcome, &err), FACET_OK);
-    assert_int_equal(outcome, OPTIMIZE_DONE);
+    run_recorded(&settings, &r);
     assert_int_equal(r.n, 2);
     assert_int_equal(r.at[0].done, 16);
     assert_int_equal(r.at[0].total, 32);
@@ -111,14 +118,8 @@ static void test_nsga2_work(void **state)
     settings.seed = 5;
     settings.objectives[0] = objective_named("cost");
     settings.nobjectives = 1;
-    struct option_evaluator evaluator = {NULL, NULL, panel_cost};
     struct reports r;
-    memset(&r, 0, sizeof r);
-    struct optimize_hooks hooks = {&r, NULL, record, NULL};
-    enum optimize_outcome outcome;
-    struct facet_error err;
-    assert_int_equal(optimize_run_with(&evaluator, &settings, NULL, 0,
-                                       &hooks, &outcome, &err), FACET_OK);
+    run_recorded(&settings, &r);
     assert_int_equal(r.n, 3);
     assert_int_equal(r.at[0].done, 8);
     assert_int_equal(r.at[0].total, 24);
