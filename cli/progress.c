@@ -4,6 +4,7 @@
 #include "progress.h"
 
 #include <stdio.h>
+#include <string.h>
 #include <time.h>
 #include <unistd.h>
 
@@ -15,11 +16,31 @@ double progress_now(void)
     return (double)t.tv_sec + (double)t.tv_nsec * 1e-9;
 }
 
-double progress_eta(double elapsed, double work_since, double work_left)
+void progress_fit_add(struct progress_fit *fit, double n, double w,
+                      double t)
 {
-    if (!(work_since > 0) || !(elapsed > 0))
+    fit->nn += n * n;
+    fit->nw += n * w;
+    fit->ww += w * w;
+    fit->tn += t * n;
+    fit->tw += t * w;
+}
+
+double progress_fit_left(const struct progress_fit *fit, double items_left,
+                         double work_left)
+{
+    if (!(fit->ww > 0))
         return -1;
-    return elapsed * (work_left > 0 ? work_left : 0) / work_since;
+    double det = fit->nn * fit->ww - fit->nw * fit->nw;
+    /* Told apart only when the work per item varies enough. */
+    if (det > 1e-6 * fit->nn * fit->ww) {
+        double per_item = (fit->tn * fit->ww - fit->tw * fit->nw) / det;
+        double per_work = (fit->nn * fit->tw - fit->nw * fit->tn) / det;
+        if (per_item >= 0 && per_work >= 0)
+            return per_item * (items_left > 0 ? items_left : 0) +
+                   per_work * (work_left > 0 ? work_left : 0);
+    }
+    return fit->tw / fit->ww * (work_left > 0 ? work_left : 0);
 }
 
 void progress_start(struct progress *p, const char *what,
@@ -34,6 +55,7 @@ void progress_start(struct progress *p, const char *what,
     p->drawn_width = 0;
     p->work_done = work_before;
     p->work_total = work_before;
+    memset(&p->fit, 0, sizeof p->fit);
     p->finished = 0;
 }
 
@@ -48,9 +70,10 @@ static void draw(struct progress *p, int64_t done, int64_t total, int last)
     char rate_text[32] = "-/s", left_text[32] = "-";
     if (measured) {
         snprintf(rate_text, sizeof rate_text, "%.1f/s", rate);
-        /* By the work left, not the options: finer grids take longer. */
-        double left = progress_eta(elapsed, p->work_done - p->first_work,
-                                   p->work_total - p->work_done);
+        /* By the options and the work left, at the costs fitted to what
+         * was done: finer grids take longer. */
+        double left = progress_fit_left(&p->fit, (double)(total - done),
+                                        p->work_total - p->work_done);
         if (left >= 0)
             snprintf(left_text, sizeof left_text, "%.0f s", left);
     }
@@ -87,6 +110,9 @@ void progress_update(struct progress *p, int64_t done, int64_t total,
     p->work_done = work_done;
     p->work_total = work_total;
     double now = progress_now();
+    if (done > p->first_done && work_done > p->first_work)
+        progress_fit_add(&p->fit, (double)(done - p->first_done),
+                         work_done - p->first_work, now - p->started);
     double interval = p->terminal ? 0.1 : 5.0;
     if (now - p->last_drawn < interval)
         return;

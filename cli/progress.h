@@ -5,12 +5,32 @@
  * time left. Otherwise (a log, CI) a plain line at most every few seconds
  * and at the end, so logs stay readable. The time left follows the work
  * left, which a caller may weigh apart from the count shown (a search's
- * options by their panels: progress_eta).
+ * options by their panels: progress_fit).
  */
 #ifndef FACET_PROGRESS_H
 #define FACET_PROGRESS_H
 
 #include <stdint.h>
+
+/* The time taken so far as a cost per item plus a cost per unit of work,
+ * fitted in least squares (no constant) to what each update saw since the
+ * start: an option's fixed cost and its cost per panel, which neither the
+ * count nor the panels alone give (a walk of small grids is all fixed
+ * cost, one of fine grids all panels). Sums over the updates. */
+struct progress_fit {
+    double nn, nw, ww, tn, tw;  /* items n, work w, seconds t */
+};
+
+/* Adds an update: n items and w work done in t seconds, since the start. */
+void progress_fit_add(struct progress_fit *fit, double n, double w,
+                      double t);
+
+/* Seconds left for items_left items of work_left work at the fitted
+ * costs; where the two cannot be told apart (each item the same work, or
+ * a cost that comes out negative), at the work's rate alone; -1 with
+ * nothing measured. */
+double progress_fit_left(const struct progress_fit *fit, double items_left,
+                         double work_left);
 
 struct progress {
     const char *what;        /* "options", shown after the counts */
@@ -20,6 +40,7 @@ struct progress {
     int64_t first_done;      /* done when started (resume) */
     double first_work;       /* work done when started */
     double work_done, work_total;  /* the last update's */
+    struct progress_fit fit;       /* of the updates since the start */
     int finished;
     int drawn_width;         /* columns of the last step drawn */
 };
@@ -47,10 +68,6 @@ void progress_steps_end(struct progress *p, int total);
 /* Monotonic seconds. */
 double progress_now(void);
 
-/* Seconds left when work_since of the work was done in elapsed seconds
- * and work_left is left, at that rate; -1 when nothing is measured yet
- * (no work or no time). */
-double progress_eta(double elapsed, double work_since, double work_left);
 
 /* The stage and warning hooks of a study (study/study.h) on stderr:
  * "facet: STAGE" on a terminal only (in a log the progress lines say
