@@ -12,6 +12,7 @@
 #include "classify_flags.h"
 #include "command.h"
 #include "option_text.h"
+#include "progress.h"
 #include "shown.h"
 #include "core/surface/coarse_mesh.h"
 #include "core/base/numparse.h"
@@ -110,6 +111,24 @@ static const struct arg_option classify_command_options[] = {
     {NULL, 0, ARG_FLAG, 0, NULL, NULL, NULL},
 };
 
+/* The steps facet classify shows: reading and preparing the surface, then
+ * the option's stages (evaluate.h). */
+#define CLASSIFY_STEPS (2 + EVALUATION_STAGES)
+
+struct classify_steps {
+    struct progress bar;
+    int done;                /* steps started */
+};
+
+/* A step starts (also an evaluation's stage hook): drawn on a terminal. */
+static void classify_step(void *context, const char *what)
+{
+    struct classify_steps *steps = context;
+    if (steps->done < CLASSIFY_STEPS)
+        steps->done++;
+    progress_step(&steps->bar, steps->done - 1, CLASSIFY_STEPS, what);
+}
+
 static int classify_run(int argc, char **argv, struct facet_error *err)
 {
     struct classify_args a = {NULL, NULL, NULL, 0};
@@ -151,11 +170,27 @@ static int classify_run(int argc, char **argv, struct facet_error *err)
     struct panelization panels;
     struct option_totals totals;
     memset(&panels, 0, sizeof panels);
+    /* A fine grid works for most of a minute: its steps on a terminal. */
+    struct classify_steps steps;
+    steps.done = 0;
+    progress_start(&steps.bar, "steps", 0, 0);
+    classify_step(&steps, "reading the surface");
     rc = surface_open(path, &mesh_options, &surface, err);
-    if (rc == FACET_OK)
+    if (rc == FACET_OK) {
+        classify_step(&steps, "preparing the surface");
         rc = surface_prepare(&surface, flip, uv, err);
+    }
+    struct evaluation_shared watched;
+    memset(&watched, 0, sizeof watched);
+    watched.stage = classify_step;
+    watched.stage_context = &steps;
     if (rc == FACET_OK)
-        rc = option_evaluate(&surface, &params, NULL, &panels, &totals, err);
+        rc = option_evaluate(&surface, &params, &watched, &panels, &totals,
+                             err);
+    if (rc == FACET_OK)
+        progress_steps_end(&steps.bar, CLASSIFY_STEPS);
+    else if (steps.bar.terminal)
+        fputc('\n', stderr);
     if (rc == FACET_OK && csv != NULL)
         rc = write_csv(csv, &panels, &totals, err);
     char coarse[400], sag[400];

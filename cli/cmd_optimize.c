@@ -24,6 +24,7 @@
 #include "core/obj/infile.h"
 #include "core/project/module.h"
 #include "study/study.h"
+#include "study/study_estimate.h"
 
 /* Rows of the table a run ends with, unless --table says. */
 #define TABLE_ROWS 20
@@ -36,17 +37,18 @@ struct optimize_view {
     int64_t first_done;
 };
 
-static void show_progress(void *context, int64_t done, int64_t total)
+static void show_progress(void *context, const struct optimize_progress *p)
 {
     struct optimize_view *view = context;
     if (!view->bar_started) {
-        progress_start(&view->bar, "options", done);
+        progress_start(&view->bar, "options", p->done, p->work_done);
         view->bar_started = 1;
     }
-    if (done >= total)
-        progress_finish(&view->bar, done, total);
+    if (p->done >= p->total)
+        progress_finish(&view->bar, p->done, p->total);
     else
-        progress_update(&view->bar, done, total);
+        progress_update(&view->bar, p->done, p->total, p->work_done,
+                        p->work_total);
 }
 
 static void show_started(void *context, int64_t run)
@@ -54,6 +56,41 @@ static void show_started(void *context, int64_t run)
     (void)context;
     if (isatty(STDERR_FILENO))
         fprintf(stderr, "facet: run %lld\n", (long long)run);
+}
+
+/* A run estimated to take longer than this is announced before it starts,
+ * with how long and how to stop and go on. */
+#define LONG_RUN_SECONDS 3600.0
+
+/* Says on stderr how long request's run will take at the rate of the
+ * earlier runs in store (study_estimate.h), when that is hours; nothing
+ * when it is shorter or there is no earlier run to time it by. */
+static void announce_long_run(struct store *store, const char *db,
+                              const struct study_request *request)
+{
+    struct study_rate rate;
+    struct facet_error err;
+    if (study_rate_measure(store, request->surface_path, &rate, &err) !=
+        FACET_OK)
+        return;
+    int64_t options;
+    double seconds;
+    study_estimate(&rate, &request->settings, request->nfiles > 0, &options,
+                   &seconds);
+    if (seconds < LONG_RUN_SECONDS)
+        return;
+    char count[32], time[32];
+    number_grouped(count, sizeof count, (double)options, 0);
+    if (seconds < 48 * 3600.0)
+        snprintf(time, sizeof time, "%.1f h", seconds / 3600);
+    else
+        snprintf(time, sizeof time, "%.1f days", seconds / 86400);
+    fprintf(stderr, "facet: %s options (%s%s), about %s at the rate of the "
+            "%d earlier run%s in %s; Ctrl-C stops it, every option "
+            "evaluated is kept, and --resume goes on\n", count,
+            optimize_method_name(request->settings.method),
+            request->settings.method == METHOD_NSGA2 ? ", at most" : "",
+            time, rate.runs, rate.runs == 1 ? "" : "s", db);
 }
 
 /* The search flags as given (pointing into argv), NULL when absent. */
@@ -421,10 +458,14 @@ static int optimize_with(struct optimize_command *c, struct facet_error *err)
     int64_t run = c->run_number;
     if (c->resume && c->surface != NULL)
         rc = study_repoint_surface(store, run, c->surface, err);
-    if (c->resume && rc == FACET_OK)
-        rc = study_resume(store, run, &hooks, &outcome, err);
-    else
+    if (c->resume) {
+        /* A run that could not be re-pointed is not started anew. */
+        if (rc == FACET_OK)
+            rc = study_resume(store, run, &hooks, &outcome, err);
+    } else {
+        announce_long_run(store, c->db, &c->request);
         rc = study_start(store, &c->request, &hooks, &run, &outcome, err);
+    }
     if (view.bar_started && !view.bar.finished)
         fputc('\n', stderr);
     if (rc == FACET_ESTOP) {

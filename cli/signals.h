@@ -1,11 +1,12 @@
 /*
  * signals.h: SIGINT, SIGTERM and SIGHUP as a request to stop, not a kill.
  *
- * Long commands (optimize, merge, export) install the handler, check
- * signals_stop_requested between batches and, through their stop hook,
- * every few milliseconds while a surface is read and prepared; they commit
- * what they have and mark the run interrupted (a merge removes its side
- * file). The first signal asks; a second one kills at once, as without the
+ * Long commands (optimize, merge, export) install the handler and, through
+ * their stop hook, hear it between batches, between options and every few
+ * milliseconds while a surface is read and prepared or an option's panels
+ * are built (a 2000 x 2000 grid takes tens of seconds); they commit what
+ * they have and mark the run interrupted (a merge removes its side file).
+ * The first signal asks; a second one kills at once, as without the
  * handler (signals.c says why that loses nothing). The flag is the one
  * piece of global state outside main: a signal handler can reach nothing
  * else.

@@ -166,11 +166,11 @@ static int store_batch(void *context, const struct evaluated_option *options,
                                      n, state->surface_rows, ns, err);
 }
 
-static void report_progress(void *context, int64_t done, int64_t total)
+static void report_progress(void *context, const struct optimize_progress *p)
 {
     struct study_state *state = context;
     if (state->hooks != NULL && state->hooks->progress != NULL)
-        state->hooks->progress(state->hooks->context, done, total);
+        state->hooks->progress(state->hooks->context, p);
 }
 
 static int stop_requested(void *context)
@@ -739,6 +739,9 @@ static int store_front_panels(struct store *store, const struct run_info *run,
         /* In chunks, with a stop heard between them: a front of fine
          * grids takes a while, and Ctrl-C must leave the run resumable. */
         size_t chunk = 4 * (size_t)(settings->jobs > 0 ? settings->jobs : 1);
+        /* And inside a chunk: the panels of one option of a fine grid
+         * take tens of seconds to make. */
+        struct facet_stop stop = study_stop(hooks);
         for (size_t first = 0; rc == FACET_OK && first < nfront;
              first += chunk) {
             if (should_stop(hooks)) {
@@ -748,11 +751,18 @@ static int store_front_panels(struct store *store, const struct run_info *run,
             size_t count = nfront - first < chunk ? nfront - first : chunk;
             rc = optimize_evaluate_panels(surface, lattice, &full,
                                           points + first, count,
-                                          settings->jobs, panels + first,
-                                          totals + first, err);
+                                          settings->jobs, &stop,
+                                          panels + first, totals + first,
+                                          err);
+            if (rc == FACET_ESTOP) {
+                facet_error_clear(err);
+                rc = FACET_OK;
+                *stopped = 1;
+                break;
+            }
             size_t nmeasured = 0;
-            for (size_t f = first; rc == FACET_OK && f < first + count;
-                 f++) {
+            for (size_t f = first;
+                 rc == FACET_OK && !*stopped && f < first + count; f++) {
                 const struct option_row *r = &rows[from[f]];
                 /* What the run measured, measured again: the same. */
                 assert(totals[f].cost == r->totals.cost &&
@@ -765,6 +775,9 @@ static int store_front_panels(struct store *store, const struct run_info *run,
                 if (wants_panels[from[f]])
                     rc = store_panels_put(store, run->id, r->number,
                                           &panels[f], err);
+                /* A fine grid's panels take seconds to write. */
+                if (should_stop(hooks))
+                    *stopped = 1;
             }
             if (rc == FACET_OK && nmeasured > 0)
                 rc = store_options_measured(store, run->id, measured,

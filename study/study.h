@@ -26,12 +26,13 @@ struct study_hooks {
     void *context;
     /* What the study is doing now ("preparing the surface", ...). */
     void (*stage)(void *context, const char *what);
-    /* Options done (stored or reused) of total. */
-    void (*progress)(void *context, int64_t done, int64_t total);
+    /* Options done (stored or reused) of total, and their work
+     * (optimize.h's struct optimize_progress). */
+    void (*progress)(void *context, const struct optimize_progress *p);
     /* Non-zero when the user asked to stop; checked between batches, and
-     * every few milliseconds while the surface is read and prepared, from
-     * several threads at once (core/base/stop.h): it must be cheap and
-     * thread-safe. */
+     * every few milliseconds while the surface is read and prepared and
+     * while options are evaluated, from several threads at once
+     * (core/base/stop.h): it must be cheap and thread-safe. */
     int (*should_stop)(void *context);
     /* The run's id, once it is recorded (the TUI follows it live). */
     void (*started)(void *context, int64_t run);

@@ -39,12 +39,12 @@ static void on_stage(void *context, const char *what)
     pthread_mutex_unlock(&job->lock);
 }
 
-static void on_progress(void *context, int64_t done, int64_t total)
+static void on_progress(void *context, const struct optimize_progress *p)
 {
     struct tui_job *job = context;
     pthread_mutex_lock(&job->lock);
-    job->state.done = done;
-    job->state.total = total;
+    job->state.done = p->done;
+    job->state.total = p->total;
     pthread_mutex_unlock(&job->lock);
 }
 

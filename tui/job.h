@@ -42,7 +42,8 @@ int tui_job_resume(const char *db_path, int64_t run, struct tui_job **out,
 /* A consistent copy of the job's state. */
 void tui_job_state(struct tui_job *job, struct tui_job_state *out);
 
-/* Asks the study to stop between batches. */
+/* Asks the study to stop: heard within a fraction of a second, inside an
+ * option of a fine grid too (optimize.h). */
 void tui_job_stop(struct tui_job *job);
 
 /* Stops the job if it still works, waits for its thread, frees it. */

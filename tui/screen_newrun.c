@@ -39,6 +39,7 @@
 #include "core/project/project_grids.h"
 #include "core/search/metric.h"
 #include "study/study.h"
+#include "study/study_estimate.h"
 
 enum field { F_SURFACE, F_UNITS, F_U, F_V, F_THRESHOLD, F_METHOD, F_SEED,
              F_PRICES, F_SP_AS_FP, F_MAX_AREA, F_PANEL_COST, F_JOINT_COST,
@@ -87,9 +88,8 @@ struct newrun_screen {
     int64_t opened;    /* the run whose table was opened */
     struct tui_completion completion;  /* the last Tab's candidates */
     int listing;       /* they show under the form */
-    double rate;       /* options a second of earlier runs of the file
-                          (of this surface when there are), 0 unknown */
-    int rate_runs;     /* the runs it was taken from */
+    struct study_rate rate;  /* of the earlier runs of the file (of this
+                                surface when there are) */
     /* a building's files, split from the surface field, and its
      * surfaces' own grids: what build's request points into */
     char files_text[4096];
@@ -453,7 +453,9 @@ static void estimate_text(struct newrun_screen *s, char *out, size_t size)
         snprintf(out, size, "Not ready: %.200s", err.message);
         return;
     }
-    uint64_t n = (uint64_t)optimize_total(&r.settings);
+    int64_t n;
+    double seconds;
+    study_estimate(&s->rate, &r.settings, r.nfiles > 0, &n, &seconds);
     char count[32], time[32];
     tui_fmt_number(count, sizeof count, (double)n, 0, 1);
     /* NSGA-II evaluates a point met twice once: at most so many */
@@ -461,11 +463,12 @@ static void estimate_text(struct newrun_screen *s, char *out, size_t size)
     snprintf(method, sizeof method, "%s%s",
              optimize_method_name(r.settings.method),
              r.settings.method == METHOD_NSGA2 ? ", at most" : "");
-    if (s->rate > 0) {
-        tui_fmt_elapsed(time, sizeof time, (double)n / s->rate);
+    if (seconds > 0) {
+        tui_fmt_elapsed(time, sizeof time, seconds);
         snprintf(out, size, "F5 starts: %s options (%s), about %s at %.0f/s "
-                 "(%d earlier run%s)", count, method, time, s->rate,
-                 s->rate_runs, s->rate_runs == 1 ? "" : "s");
+                 "(%d earlier run%s)", count, method, time,
+                 (double)n / seconds, s->rate.runs,
+                 s->rate.runs == 1 ? "" : "s");
     } else {
         snprintf(out, size, "F5 starts: %s options (%s); no earlier run in "
                  "this file to time them by", count, method);
@@ -473,32 +476,13 @@ static void estimate_text(struct newrun_screen *s, char *out, size_t size)
 }
 
 /* The rate of the file's finished runs, of this surface where there are
- * any. */
+ * any (unknown when the file cannot list them). */
 static void measure_rate(struct newrun_screen *s, struct tui_app *app,
                          const char *surface)
 {
-    struct run_info *runs;
-    size_t n;
     struct facet_error err;
-    s->rate = 0;
-    s->rate_runs = 0;
-    if (store_run_list(app->store, &runs, &n, &err) != FACET_OK)
-        return;
-    for (int same = 1; same >= 0 && s->rate_runs == 0; same--) {
-        double options = 0, seconds = 0;
-        for (size_t k = 0; k < n; k++) {
-            if (runs[k].elapsed <= 0 || runs[k].options <= 0 ||
-                (same && (surface == NULL ||
-                          strcmp(runs[k].surface_path, surface) != 0)))
-                continue;
-            options += (double)runs[k].options;
-            seconds += runs[k].elapsed;
-            s->rate_runs++;
-        }
-        if (seconds > 0)
-            s->rate = options / seconds;
-    }
-    free(runs);
+    if (study_rate_measure(app->store, surface, &s->rate, &err) != FACET_OK)
+        memset(&s->rate, 0, sizeof s->rate);
 }
 
 static void start(struct newrun_screen *s, struct tui_app *app)

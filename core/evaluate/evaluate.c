@@ -19,12 +19,20 @@
 #include "core/quantity/quantity.h"
 #include "core/surface/coarse_mesh.h"
 
+/* Tells shared's stage hook, if any, that stage what starts. */
+static void stage(const struct evaluation_shared *shared, const char *what)
+{
+    if (shared->stage != NULL)
+        shared->stage(shared->stage_context, what);
+}
+
 /* Builds the panels of params' grid over surface: from lattice when it
  * holds the grid and params ask for PANEL_EXTREMES, else panels_build_fast.
  * The checks every evaluation starts with come first. */
 static int build_panels(const struct surface *surface,
                         const struct panel_lattice *lattice,
                         const struct option_params *params,
+                        const struct facet_stop *stop,
                         struct panelization *panels,
                         struct option_totals *totals,
                         struct facet_error *err)
@@ -39,10 +47,11 @@ static int build_panels(const struct surface *surface,
         return rc;
     if (lattice != NULL && params->mode == PANEL_EXTREMES &&
         panel_lattice_has(lattice, params->nu, params->nv))
-        return panels_build_lattice(lattice, params->nu, params->nv, panels,
-                                    err);
-    return panels_build_fast(&surface->panels, params->mode, params->nu,
-                             params->nv, panels, err);
+        return panels_build_lattice_stoppable(lattice, params->nu,
+                                              params->nv, stop, panels, err);
+    return panels_build_fast_stoppable(&surface->panels, params->mode,
+                                       params->nu, params->nv, stop, panels,
+                                       err);
 }
 
 /* A limit of 0 is none: no joint is over it. */
@@ -207,6 +216,7 @@ static int build_and_measure(const struct surface *surface,
  * widths are not measured: it depends on the grid alone, so the grid's
  * first evaluation sets it and its other thresholds keep it. */
 static int measure_widths(const struct surface *surface, unsigned unmeasured,
+                          const struct facet_stop *stop,
                           struct panelization *panels,
                           struct facet_error *err)
 {
@@ -216,10 +226,12 @@ static int measure_widths(const struct surface *surface, unsigned unmeasured,
         return FACET_OK;
     }
     struct panel_geometry geometry;
-    int rc = panel_geometry_build(&surface->mesh, &surface->uv, panels,
-                                  &geometry, err);
+    int rc = panel_geometry_build_stoppable(&surface->mesh, &surface->uv,
+                                            panels, stop, &geometry, err);
     if (rc == FACET_OK)
-        rc = panel_widths_set(&geometry, panels, err);
+        rc = facet_stop_check(stop, err);
+    if (rc == FACET_OK)
+        rc = panel_widths_set_stoppable(&geometry, panels, stop, err);
     panel_geometry_free(&geometry);
     return rc;
 }
@@ -266,9 +278,12 @@ static int classify_and_build(const struct surface *surface,
     if (shared->joints != NULL)
         *shared->joints = 0;
     int rc = classify_check_options(&params->classify, err);
+    if (rc == FACET_OK)
+        rc = facet_stop_check(shared->stop, err);
     if (rc != FACET_OK)
         return rc;
     classify_types(panels, &params->classify);
+    stage(shared, "fitting panels, measuring joints");
     rc = build_and_measure(surface, &params->classify, params->unmeasured,
                            shared->fits, panels, totals, &measured, err);
     if (shared->joints != NULL)
@@ -289,6 +304,9 @@ static int classify_and_build(const struct surface *surface,
         classify_price_terms(&params->classify, totals);
         return FACET_OK;
     }
+    if ((rc = facet_stop_check(shared->stop, err)) != FACET_OK)
+        return rc;
+    stage(shared, "finding the mould families");
     struct mould_options mould = option_mould_options(params);
     struct mould_families families;
     rc = mould_families_build(&surface->mesh, &surface->uv, panels, &mould,
@@ -316,11 +334,20 @@ int option_evaluate(const struct surface *surface,
     }
     if (shared->fits != NULL)
         memset(shared->fits, 0, sizeof *shared->fits);
-    int rc = build_panels(surface, shared->lattice, params, panels, totals,
-                          err);
-    if (rc != FACET_OK)
-        return rc;
-    rc = measure_widths(surface, params->unmeasured, panels, err);
+    stage(shared, "building the panels");
+    int rc = facet_stop_check(shared->stop, err);
+    if (rc == FACET_OK)
+        rc = build_panels(surface, shared->lattice, params, shared->stop,
+                          panels, totals, err);
+    if (rc == FACET_OK)
+        rc = facet_stop_check(shared->stop, err);
+    if (rc == FACET_OK) {
+        stage(shared, "measuring the panels' widths");
+        rc = measure_widths(surface, params->unmeasured, shared->stop,
+                            panels, err);
+    }
+    if (rc == FACET_OK)
+        rc = facet_stop_check(shared->stop, err);
     if (rc != FACET_OK)
         return rc;
     if (shared->fits != NULL && !(params->unmeasured & OPTION_MEASURE_FITS)) {
@@ -330,6 +357,8 @@ int option_evaluate(const struct surface *surface,
         if (rc != FACET_OK)
             return rc;
     }
+    if (!(params->unmeasured & OPTION_MEASURE_JOINT_LENGTH))
+        stage(shared, "measuring the joint lines");
     double joint_length =
         params->unmeasured & OPTION_MEASURE_JOINT_LENGTH
             ? NAN

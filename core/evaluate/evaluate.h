@@ -29,6 +29,7 @@
 
 #include <stddef.h>
 
+#include "core/base/stop.h"
 #include "core/evaluate/option.h"
 #include "core/panel/panel_lattice.h"
 #include "core/surface/surface.h"
@@ -69,14 +70,30 @@ struct evaluation_shared {
      * kink are over, so that a building can weigh its surfaces' means (0
      * after a failure); NULL: not wanted. */
     size_t *joints;
+    /* The caller's stop (core/base/stop.h), asked between the stages
+     * above and, while the panels are built and their widths measured,
+     * every few thousand cells: a 2000 x 2000 grid takes tens of seconds,
+     * and a stop must be heard within a fraction of one. NULL: never. */
+    const struct facet_stop *stop;
+    /* Told as each of the EVALUATION_STAGES stages starts, with its name
+     * ("building the panels"), for a caller that shows one option's
+     * progress (facet classify of 2000 x 2000 panels works for most of a
+     * minute); NULL: not told. A stage left out is not told. */
+    void (*stage)(void *context, const char *what);
+    void *stage_context;
 };
+
+/* The stages evaluation_shared's stage hook may be told of: the panels,
+ * their widths, the joint lines, the panels as built and their joints,
+ * the mould families. */
+#define EVALUATION_STAGES 5
 
 /* Evaluates params on the prepared surface, with what shared holds (may
  * be NULL): fills *panels (caller-owned, released with panelization_free,
  * also after a failure; with shared->again it holds the grid's panels
  * already) and *totals. Returns FACET_OK, FACET_EINPUT for a bad grid or
  * option value, FACET_EWORK when out of memory or the surface is not
- * prepared. */
+ * prepared, FACET_ESTOP when shared->stop fired (*totals then not valid). */
 int option_evaluate(const struct surface *surface,
                     const struct option_params *params,
                     const struct evaluation_shared *shared,

@@ -400,9 +400,12 @@ static int normal_side(const double n[3], const double normal_sum[3])
     return 1;
 }
 
+/* Cells fitted between two questions to the stop: milliseconds. */
+#define STOP_EVERY_CELLS 4096
+
 int panels_fit(const struct panel_grid *g, const struct cell_moments *sums,
-               struct grid_node *known, struct panelization *out,
-               struct cell_samples **samples_out,
+               struct grid_node *known, const struct facet_stop *stop,
+               struct panelization *out, struct cell_samples **samples_out,
                struct cell_outline **outlines_out, struct facet_error *err)
 {
     size_t ncells = (size_t)g->nu * (size_t)g->nv;
@@ -432,6 +435,12 @@ int panels_fit(const struct panel_grid *g, const struct cell_moments *sums,
     double cell_uv_area = g->du * g->dv;
     size_t noutlines = 0;
     for (size_t c = 0; c < ncells; c++) {
+        if (c % STOP_EVERY_CELLS == 0 && facet_stop_requested(stop)) {
+            free(samples);
+            if (known == NULL)
+                free(nodes);
+            return facet_stop_error(err);
+        }
         if (out->cell_panel[c] < 0)
             continue;
         const struct cell_moments *s = &sums[c];
@@ -549,7 +558,7 @@ int panels_build(const struct mesh *mesh, const struct uv_index *index,
 
     struct cell_samples *samples;
     struct cell_outline *outlines;
-    rc = panels_fit(&grid, sums, NULL, out, &samples, &outlines, err);
+    rc = panels_fit(&grid, sums, NULL, NULL, out, &samples, &outlines, err);
     free(sums);
     if (rc != FACET_OK)
         return rc;

@@ -21,6 +21,7 @@
 
 #include "core/surface/curvature.h"
 #include "core/base/error.h"
+#include "core/base/stop.h"
 #include "core/surface/mesh.h"
 #include "core/surface/uv_index.h"
 
@@ -212,6 +213,15 @@ void panel_prep_free(struct panel_prep *prep);
 int panels_build_fast(const struct panel_prep *prep,
                       enum panel_curvature_mode mode, int nu, int nv,
                       struct panelization *out, struct facet_error *err);
+
+/* panels_build_fast, asking stop (core/base/stop.h; NULL: never) between
+ * its passes over the cells: FACET_ESTOP when it fires (*out then holds
+ * what was built, released with panelization_free as after any failure). */
+int panels_build_fast_stoppable(const struct panel_prep *prep,
+                                enum panel_curvature_mode mode, int nu,
+                                int nv, const struct facet_stop *stop,
+                                struct panelization *out,
+                                struct facet_error *err);
 
 /* The pieces themselves, for code that needs a panel's exact geometry
  * (panel_geometry.h) rather than its measures: panels_build walks them

@@ -378,6 +378,19 @@ int panels_build_fast(const struct panel_prep *prep,
                       enum panel_curvature_mode mode, int nu, int nv,
                       struct panelization *out, struct facet_error *err)
 {
+    return panels_build_fast_stoppable(prep, mode, nu, nv, NULL, out, err);
+}
+
+/* Triangles divided between two questions to the stop: well under a
+ * millisecond on the finest grids. */
+#define STOP_EVERY_TRIANGLES 256
+
+int panels_build_fast_stoppable(const struct panel_prep *prep,
+                                enum panel_curvature_mode mode, int nu,
+                                int nv, const struct facet_stop *stop,
+                                struct panelization *out,
+                                struct facet_error *err)
+{
     struct panel_grid grid;
     int rc = panel_grid_init(&grid, prep->mesh, prep->index, nu, nv, out,
                              err);
@@ -418,6 +431,14 @@ int panels_build_fast(const struct panel_prep *prep,
                      line + nu};
     size_t nlisted = 0;
     for (size_t t = 0; t < nt; t++) {
+        /* A triangle of a fine grid crosses hundreds of cells. */
+        if (t % STOP_EVERY_TRIANGLES == 0 && facet_stop_requested(stop)) {
+            free(sums);
+            free(cell_of);
+            free(listed);
+            free(line);
+            return facet_stop_error(err);
+        }
         const uint32_t *point = prep->corner + 3 * (size_t)t;
         uint32_t a = cell_of[point[0]], b = cell_of[point[1]],
                  c = cell_of[point[2]];
@@ -441,10 +462,17 @@ int panels_build_fast(const struct panel_prep *prep,
             cross(&f, (uint32_t)t, i0, i1, j0, j1, 1);
     }
 
-    struct cell_samples *samples;
-    struct cell_outline *outlines;
-    rc = panels_fit(&grid, sums, NULL, out, &samples, &outlines, err);
+    struct cell_samples *samples = NULL;
+    struct cell_outline *outlines = NULL;
+    rc = facet_stop_check(stop, err);
+    if (rc == FACET_OK)
+        rc = panels_fit(&grid, sums, NULL, stop, out, &samples, &outlines,
+                        err);
     free(sums);
+    if (rc == FACET_OK && (rc = facet_stop_check(stop, err)) != FACET_OK) {
+        free(samples);
+        free(outlines);
+    }
     if (rc != FACET_OK) {
         free(cell_of);
         free(listed);
@@ -470,7 +498,10 @@ int panels_build_fast(const struct panel_prep *prep,
                     P->position, P->k1, P->k2, 1);
     }
     /* ...then the pieces of the listed triangles. */
-    for (size_t k = 0; k < nlisted; k++) {
+    for (size_t k = 0; k < nlisted && rc == FACET_OK; k++) {
+        if (k % STOP_EVERY_TRIANGLES == 0 &&
+            (rc = facet_stop_check(stop, err)) != FACET_OK)
+            break;
         uint32_t t = listed[k];
         const uint32_t *point = prep->corner + 3 * (size_t)t;
         uint32_t a = cell_of[point[0]], b = cell_of[point[1]],
@@ -493,7 +524,7 @@ int panels_build_fast(const struct panel_prep *prep,
                         P->position, P->k1, P->k2, 1);
         }
     }
-    if (mode == PANEL_MEAN) {
+    if (rc == FACET_OK && mode == PANEL_MEAN) {
         /* The shape operator as panels_build takes it, piece by piece. */
         static const double third[3] = {1.0 / 3, 1.0 / 3, 1.0 / 3};
         struct sample_context sc = {&grid, prep->curvature, out->cell_panel,
@@ -512,11 +543,14 @@ int panels_build_fast(const struct panel_prep *prep,
                                     &sc);
         }
     }
-    panels_finish(mode, samples, outlines, out);
+    if (rc == FACET_OK)
+        rc = facet_stop_check(stop, err);
+    if (rc == FACET_OK)
+        panels_finish(mode, samples, outlines, out);
     free(samples);
     free(outlines);
     free(cell_of);
     free(listed);
     free(line);
-    return FACET_OK;
+    return rc;
 }

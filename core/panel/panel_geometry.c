@@ -326,6 +326,20 @@ int panel_geometry_build(const struct mesh *mesh,
                          struct panel_geometry *out,
                          struct facet_error *err)
 {
+    return panel_geometry_build_stoppable(mesh, index, panels, NULL, out,
+                                          err);
+}
+
+/* Panels merged between two questions to the stop: milliseconds. */
+#define STOP_EVERY_PANELS 4096
+
+int panel_geometry_build_stoppable(const struct mesh *mesh,
+                                   const struct uv_index *index,
+                                   const struct panelization *panels,
+                                   const struct facet_stop *stop,
+                                   struct panel_geometry *out,
+                                   struct facet_error *err)
+{
     memset(out, 0, sizeof *out);
     if (panels->nu < 1 || panels->nv < 1 || panels->umin != index->umin ||
         panels->vmin != index->vmin || panels->umax != index->umax ||
@@ -355,6 +369,10 @@ int panel_geometry_build(const struct mesh *mesh,
                                "out of memory (panel geometry)");
     }
     panels_walk_pieces(mesh, index, panels->nu, panels->nv, count_piece, &r);
+    if (facet_stop_requested(stop)) {
+        raw_free(&r);
+        return facet_stop_error(err);
+    }
 
     size_t raw_pieces = 0, raw_vertices = 0, largest = 0;
     for (size_t n = 0; n < np; n++) {
@@ -414,6 +432,11 @@ int panel_geometry_build(const struct mesh *mesh,
      * piece_vertex_start is a prefix array over all of them. */
     size_t p0 = 0;
     for (size_t n = 0; n < np; n++) {
+        if (n % STOP_EVERY_PANELS == 0 && facet_stop_requested(stop)) {
+            raw_free(&r);
+            scratch_free(&s);
+            return facet_stop_error(err);
+        }
         size_t p1 = p0 + r.piece_count[n];
         size_t v0 = r.piece_vertex_start[p0];
         size_t v1 = r.piece_vertex_start[p1];

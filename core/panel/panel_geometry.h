@@ -38,6 +38,7 @@
 #include <stdint.h>
 
 #include "core/base/error.h"
+#include "core/base/stop.h"
 #include "core/surface/mesh.h"
 #include "core/panel/panel.h"
 #include "core/surface/uv_index.h"
@@ -89,6 +90,16 @@ int panel_geometry_build(const struct mesh *mesh,
                          const struct panelization *panels,
                          struct panel_geometry *out,
                          struct facet_error *err);
+
+/* panel_geometry_build, asking stop (core/base/stop.h; NULL: never)
+ * between its walks over the triangles and every few thousand panels:
+ * FACET_ESTOP when it fires (*out released with panel_geometry_free). */
+int panel_geometry_build_stoppable(const struct mesh *mesh,
+                                   const struct uv_index *index,
+                                   const struct panelization *panels,
+                                   const struct facet_stop *stop,
+                                   struct panel_geometry *out,
+                                   struct facet_error *err);
 
 void panel_geometry_free(struct panel_geometry *geometry);
 

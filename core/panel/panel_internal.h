@@ -435,12 +435,13 @@ struct grid_node {
  * 2 state for each panel: *samples (npanels) and *outlines (one per
  * panel whose outline is needed), both malloc'ed for the caller to free.
  * known (or NULL) holds the grid nodes the caller knows already (state 1),
- * the others zeroed; panels_fit locates those it needs in it. Returns
- * FACET_OK or FACET_EWORK. */
+ * the others zeroed; panels_fit locates those it needs in it. stop (NULL:
+ * never) is asked every few thousand cells. Returns FACET_OK, FACET_EWORK,
+ * or FACET_ESTOP when stop fired (nothing in *samples, *outlines). */
 int panels_fit(const struct panel_grid *g, const struct cell_moments *sums,
-               struct grid_node *known, struct panelization *out,
-               struct cell_samples **samples, struct cell_outline **outlines,
-               struct facet_error *err);
+               struct grid_node *known, const struct facet_stop *stop,
+               struct panelization *out, struct cell_samples **samples,
+               struct cell_outline **outlines, struct facet_error *err);
 
 /* Sets each panel's deviation, k1, k2 and diameter from its samples. */
 void panels_finish(enum panel_curvature_mode mode,

@@ -357,6 +357,14 @@ static int grid_samples(const struct panel_lattice *L,
 int panels_build_lattice(const struct panel_lattice *L, int nu, int nv,
                          struct panelization *out, struct facet_error *err)
 {
+    return panels_build_lattice_stoppable(L, nu, nv, NULL, out, err);
+}
+
+int panels_build_lattice_stoppable(const struct panel_lattice *L, int nu,
+                                   int nv, const struct facet_stop *stop,
+                                   struct panelization *out,
+                                   struct facet_error *err)
+{
     const struct panel_prep *prep = L->prep;
     struct panel_grid grid;
     int rc = panel_grid_init(&grid, prep->mesh, prep->index, nu, nv, out,
@@ -390,7 +398,12 @@ int panels_build_lattice(const struct panel_lattice *L, int nu, int nv,
         facet_error_set(err, FACET_EWORK, "out of memory (panels)");
         goto done;
     }
-    rc = panels_fit(&grid, sums, known, out, &samples, &outlines, err);
+    if ((rc = facet_stop_check(stop, err)) != FACET_OK)
+        goto done;
+    rc = panels_fit(&grid, sums, known, stop, out, &samples, &outlines,
+                    err);
+    if (rc == FACET_OK)
+        rc = facet_stop_check(stop, err);
     if (rc != FACET_OK)
         goto done;
     rc = grid_samples(L, axis, out, samples, outlines);
@@ -398,6 +411,8 @@ int panels_build_lattice(const struct panel_lattice *L, int nu, int nv,
         facet_error_set(err, FACET_EWORK, "out of memory (panels)");
         goto done;
     }
+    if ((rc = facet_stop_check(stop, err)) != FACET_OK)
+        goto done;
     panels_finish(PANEL_EXTREMES, samples, outlines, out);
 done:
     free(sums);

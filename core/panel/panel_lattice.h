@@ -65,6 +65,14 @@ int panels_build_lattice(const struct panel_lattice *lattice, int nu,
                          int nv, struct panelization *out,
                          struct facet_error *err);
 
+/* panels_build_lattice, asking stop (NULL: never) between its passes over
+ * the cells: FACET_ESTOP when it fires. */
+int panels_build_lattice_stoppable(const struct panel_lattice *lattice,
+                                   int nu, int nv,
+                                   const struct facet_stop *stop,
+                                   struct panelization *out,
+                                   struct facet_error *err);
+
 void panel_lattice_free(struct panel_lattice *lattice);
 
 #endif

@@ -79,6 +79,17 @@ double polygon_min_width(double *xy, size_t n, double *scratch)
 int panel_widths_set(const struct panel_geometry *g,
                      struct panelization *panels, struct facet_error *err)
 {
+    return panel_widths_set_stoppable(g, panels, NULL, err);
+}
+
+/* Panels measured between two questions to the stop: milliseconds. */
+#define STOP_EVERY_PANELS 4096
+
+int panel_widths_set_stoppable(const struct panel_geometry *g,
+                               struct panelization *panels,
+                               const struct facet_stop *stop,
+                               struct facet_error *err)
+{
     assert(g->npanels == panels->npanels);
     size_t most = 0;
     for (size_t n = 0; n < g->npanels; n++) {
@@ -95,6 +106,11 @@ int panel_widths_set(const struct panel_geometry *g,
                                "out of memory measuring panel widths");
     }
     for (size_t n = 0; n < g->npanels; n++) {
+        if (n % STOP_EVERY_PANELS == 0 && facet_stop_requested(stop)) {
+            free(xy);
+            free(scratch);
+            return facet_stop_error(err);
+        }
         struct panel *panel = &panels->panels[n];
         double e1[3], e2[3];
         vec3_frame(panel->normal, e1, e2);

@@ -19,6 +19,7 @@
 #include <stddef.h>
 
 #include "core/base/error.h"
+#include "core/base/stop.h"
 #include "core/panel/panel.h"
 #include "core/panel/panel_geometry.h"
 
@@ -34,5 +35,12 @@ double polygon_min_width(double *xy, size_t n, double *scratch);
  * FACET_EWORK when out of memory. */
 int panel_widths_set(const struct panel_geometry *geometry,
                      struct panelization *panels, struct facet_error *err);
+
+/* panel_widths_set, asking stop (core/base/stop.h; NULL: never) every few
+ * thousand panels: FACET_ESTOP when it fires, the widths then partly set. */
+int panel_widths_set_stoppable(const struct panel_geometry *geometry,
+                               struct panelization *panels,
+                               const struct facet_stop *stop,
+                               struct facet_error *err);
 
 #endif

@@ -61,6 +61,7 @@ static void canonical(void *context, struct design_point *point)
 
 static int evaluate(void *context, const struct option_params *base,
                     const struct design_point *points, size_t n, int jobs,
+                    const struct facet_stop *stop,
                     struct option_totals *totals, struct facet_error *err)
 {
     struct project_search *search = context;
@@ -81,6 +82,8 @@ static int evaluate(void *context, const struct option_params *base,
     /* One option at a time, its surfaces on the threads
      * (project_option.h): the numbers do not depend on jobs. */
     for (size_t k = 0; rc == FACET_OK && k < n; k++) {
+        if ((rc = facet_stop_check(stop, err)) != FACET_OK)
+            break;
         project_search_grids(search, &points[k], grids);
         struct option_params params = option_params_at(
             base, grids[0].nu, grids[0].nv, points[k].threshold_mm);

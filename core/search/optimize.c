@@ -61,6 +61,11 @@ uint64_t design_space_size(const struct design_space *s)
            (uint64_t)(s->v_max - s->v_min + 1) * threshold_steps(s);
 }
 
+double design_space_mean_panels(const struct design_space *s)
+{
+    return (s->u_min + s->u_max) / 2.0 * ((s->v_min + s->v_max) / 2.0);
+}
+
 /* The ranges of a design space as a designer types them (numrange.h). */
 static const struct numrange_spec sides_spec = {
     .whole = 1, .least = 1, .most = PANEL_MAX_GRID,
@@ -173,6 +178,8 @@ struct evaluation_plan {
     struct option_totals *totals;
     struct panelization *keep;      /* NULL, or every point's panels (its
                                        own group each) */
+    const struct facet_stop *stop;  /* asked before each point and inside
+                                       its evaluation; NULL: never */
 };
 
 struct evaluation_job {
@@ -204,17 +211,20 @@ static void evaluation_thread(void *argument)
             struct option_params params = option_params_at(
                 plan->base, plan->points[k].nu, plan->points[k].nv,
                 plan->points[k].threshold_mm);
-            struct evaluation_shared shared = {plan->lattice, plan->lines,
-                                               kept ? &fits : NULL, 0, 0, 0,
-                                               NULL};
+            struct evaluation_shared shared = {
+                .lattice = plan->lattice, .lines = plan->lines,
+                .fits = kept ? &fits : NULL, .stop = plan->stop};
             if (x > plan->group[g]) {
                 /* Same grid, same joints: measured with its first point. */
                 shared.again = 1;
                 shared.joint_length =
                     plan->totals[plan->order[plan->group[g]]].joint_length;
             }
-            job->rc = option_evaluate(plan->surface, &params, &shared,
-                                      &panels, &plan->totals[k], &job->err);
+            job->rc = facet_stop_check(plan->stop, &job->err);
+            if (job->rc == FACET_OK)
+                job->rc = option_evaluate(plan->surface, &params, &shared,
+                                          &panels, &plan->totals[k],
+                                          &job->err);
             if (job->rc != FACET_OK)
                 break;
         }
@@ -303,6 +313,7 @@ static int evaluate(const struct surface *surface,
                     const struct joint_lines *lines,
                     const struct option_params *base,
                     const struct design_point *points, size_t n, int jobs,
+                    const struct facet_stop *stop,
                     struct option_totals *totals, struct panelization *keep,
                     struct facet_error *err)
 {
@@ -361,7 +372,8 @@ static int evaluate(const struct surface *surface,
     if (keep != NULL && n > 0)
         memset(keep, 0, n * sizeof *keep);
     struct evaluation_plan plan = {surface, lattice, lines, base, points,
-                                   order, group, ngroups, 0, totals, keep};
+                                   order, group, ngroups, 0, totals, keep,
+                                   stop};
     atomic_init(&plan.next, 0);
     struct evaluation_job job[PARALLEL_MAX];
     for (int k = 0; k < jobs; k++)
@@ -370,15 +382,19 @@ static int evaluate(const struct surface *surface,
     joint_lines_free(&batch_lines);
     free(order);
     free(group);
+    /* A job's own failure is the one told, before another's stop. */
+    int failed = -1;
     for (int k = 0; k < jobs; k++)
-        if (job[k].rc != FACET_OK) {
-            if (err != NULL)
-                *err = job[k].err;
-            for (size_t p = 0; keep != NULL && p < n; p++)
-                panelization_free(&keep[p]);
-            return job[k].rc;
-        }
-    return FACET_OK;
+        if (job[k].rc != FACET_OK &&
+            (failed < 0 || job[failed].rc == FACET_ESTOP))
+            failed = k;
+    if (failed < 0)
+        return FACET_OK;
+    if (err != NULL)
+        *err = job[failed].err;
+    for (size_t p = 0; keep != NULL && p < n; p++)
+        panelization_free(&keep[p]);
+    return job[failed].rc;
 }
 
 int optimize_evaluate(const struct surface *surface,
@@ -387,20 +403,21 @@ int optimize_evaluate(const struct surface *surface,
                       const struct design_point *points, size_t n, int jobs,
                       struct option_totals *totals, struct facet_error *err)
 {
-    return evaluate(surface, lattice, NULL, base, points, n, jobs, totals,
-                    NULL, err);
+    return evaluate(surface, lattice, NULL, base, points, n, jobs, NULL,
+                    totals, NULL, err);
 }
 
 int optimize_evaluate_panels(const struct surface *surface,
                              const struct panel_lattice *lattice,
                              const struct option_params *base,
                              const struct design_point *points, size_t n,
-                             int jobs, struct panelization *panels,
+                             int jobs, const struct facet_stop *stop,
+                             struct panelization *panels,
                              struct option_totals *totals,
                              struct facet_error *err)
 {
-    return evaluate(surface, lattice, NULL, base, points, n, jobs, totals,
-                    panels, err);
+    return evaluate(surface, lattice, NULL, base, points, n, jobs, stop,
+                    totals, panels, err);
 }
 
 /* --- the point cache and batches --- */
@@ -545,6 +562,113 @@ static int search_grow(struct search *s, size_t more, struct facet_error *err)
     return FACET_OK;
 }
 
+/* The work of evaluating p, in panels (struct optimize_progress): nu x nv
+ * of a single surface's grid; 1 for a project's option, whose nu and nv
+ * index its module. */
+static double point_work(const struct search *s, const struct design_point *p)
+{
+    if (s->evaluator->canonical != NULL)
+        return 1;
+    return (double)p->nu * (double)p->nv;
+}
+
+/* Tells the progress hook that done options, of work_done panels, are met. */
+static void search_report(const struct search *s, int64_t done,
+                          double work_done)
+{
+    if (s->hooks->progress == NULL)
+        return;
+    struct optimize_progress p;
+    p.done = done < s->total ? done : s->total;
+    p.total = s->total;
+    p.work_done = work_done;
+    double to_come = (double)(s->total - p.done) * s->work_each;
+    p.work_total = s->work_exact > 0 ? s->work_exact : work_done + to_come;
+    if (p.work_total < work_done)
+        p.work_total = work_done;
+    s->hooks->progress(s->hooks->context, &p);
+}
+
+static int same_grid(const struct design_point *a,
+                     const struct design_point *b)
+{
+    return a->nu == b->nu && a->nv == b->nv;
+}
+
+/* Points evaluated and stored together: enough to keep every thread
+ * busy, few enough that an interruption loses little and progress moves. */
+static size_t batch_size(const struct optimize_settings *settings)
+{
+    size_t size = 8 * (size_t)(settings->jobs > 0 ? settings->jobs : 1);
+    return size < 16 ? 16 : size;
+}
+
+static int stop_requested(const struct optimize_hooks *hooks)
+{
+    return hooks->should_stop != NULL && hooks->should_stop(hooks->context);
+}
+
+/* Evaluates the new options known[first .. first + n) and hands them to
+ * the store hook in chunks of batch_size (a grid's thresholds kept in one
+ * chunk, which panelizes it once), the stop asked before each chunk and
+ * inside its evaluation: a generation of NSGA-II of fine grids takes
+ * minutes, and a stop must neither wait for it nor lose the chunks
+ * stored. FACET_ESTOP when the stop fired: the chunk it interrupted is
+ * dropped whole, nothing of it stored. */
+static int search_evaluate(struct search *s, size_t first, size_t n,
+                           struct facet_error *err)
+{
+    if (n == 0)
+        return FACET_OK;
+    size_t size = batch_size(s->settings);
+    struct facet_stop stop = {s->hooks->should_stop, s->hooks->context};
+    struct design_point *points = malloc((n < size ? n : size) *
+                                         sizeof *points);
+    struct option_totals *totals = malloc((n < size ? n : size) *
+                                          sizeof *totals);
+    int rc = FACET_OK;
+    if (points == NULL || totals == NULL)
+        rc = facet_error_set(err, FACET_EWORK, "out of memory");
+    double work = s->work_done;
+    for (size_t at = 0; rc == FACET_OK && at < n;) {
+        struct evaluated_option *chunk = s->known + first + at;
+        size_t count = 0;
+        while (at + count < n && count < size) {
+            points[count] = chunk[count].point;
+            count++;
+        }
+        /* A grid cut by the chunk's end goes whole into the next one,
+         * unless it fills the chunk alone. */
+        if (at + count < n) {
+            size_t cut = count;
+            while (cut > 0 && same_grid(&chunk[cut - 1].point,
+                                        &chunk[count].point))
+                cut--;
+            if (cut > 0)
+                count = cut;
+        }
+        if (stop_requested(s->hooks)) {
+            rc = facet_stop_error(err);
+            break;
+        }
+        rc = s->evaluator->evaluate(s->evaluator->context,
+                                    &s->settings->base, points, count,
+                                    s->settings->jobs, &stop, totals, err);
+        for (size_t k = 0; rc == FACET_OK && k < count; k++) {
+            chunk[k].totals = totals[k];
+            work += point_work(s, &chunk[k].point);
+        }
+        if (rc == FACET_OK && s->hooks->store != NULL)
+            rc = s->hooks->store(s->hooks->context, chunk, count, err);
+        at += count;
+        if (rc == FACET_OK && at < n)
+            search_report(s, s->done + (int64_t)at, work);
+    }
+    free(points);
+    free(totals);
+    return rc;
+}
+
 int search_batch(struct search *s, const struct design_point *points,
                  size_t n, int generation, size_t *index,
                  const int64_t *numbers, struct facet_error *err)
@@ -579,49 +703,23 @@ int search_batch(struct search *s, const struct design_point *points,
         index[k] = found;
     }
     size_t fresh = s->nknown - first_new;
-    if (fresh > 0) {
-        struct design_point *points_new = malloc(fresh * sizeof *points_new);
-        struct option_totals *totals = malloc(fresh * sizeof *totals);
-        if (points_new == NULL || totals == NULL) {
-            free(points_new);
-            free(totals);
-            return facet_error_set(err, FACET_EWORK, "out of memory");
-        }
-        for (size_t k = 0; k < fresh; k++)
-            points_new[k] = s->known[first_new + k].point;
-        rc = s->evaluator->evaluate(s->evaluator->context,
-                                    &s->settings->base, points_new, fresh,
-                                    s->settings->jobs, totals, err);
-        for (size_t k = 0; rc == FACET_OK && k < fresh; k++)
-            s->known[first_new + k].totals = totals[k];
-        free(points_new);
-        free(totals);
-        if (rc == FACET_OK && s->hooks->store != NULL)
-            rc = s->hooks->store(s->hooks->context, s->known + first_new,
-                                 fresh, err);
-        if (rc != FACET_OK)
-            return rc;
-    }
+    rc = search_evaluate(s, first_new, fresh, err);
+    if (rc != FACET_OK)
+        return rc;
     s->done += (int64_t)n;
-    if (s->hooks->progress != NULL)
-        s->hooks->progress(s->hooks->context,
-                           s->done < s->total ? s->done : s->total, s->total);
+    for (size_t k = 0; k < n; k++)
+        s->work_done += point_work(s, &s->known[index[k]].point);
+    search_report(s, s->done, s->work_done);
     return FACET_OK;
 }
 
 /* --- exhaustive and random --- */
 
-/* Points per batch: enough to keep every thread busy, few enough that an
- * interruption loses little and progress moves. */
-static size_t batch_size(const struct optimize_settings *settings)
+int search_stopped(enum optimize_outcome *outcome, struct facet_error *err)
 {
-    size_t size = 8 * (size_t)(settings->jobs > 0 ? settings->jobs : 1);
-    return size < 16 ? 16 : size;
-}
-
-static int stop_requested(const struct optimize_hooks *hooks)
-{
-    return hooks->should_stop != NULL && hooks->should_stop(hooks->context);
+    *outcome = OPTIMIZE_INTERRUPTED;
+    facet_error_clear(err);
+    return FACET_OK;
 }
 
 /* The grids an exhaustive walk evaluates, each distinct option's once:
@@ -747,6 +845,8 @@ static int run_exhaustive(struct search *s,
         if (n > 0)
             rc = search_batch(s, points, n, 0, index, numbers, err);
     }
+    if (rc == FACET_ESTOP)
+        rc = search_stopped(outcome, err);
     free(points);
     free(index);
     free(numbers);
@@ -877,14 +977,16 @@ static int run_random(struct search *s, enum optimize_outcome *outcome,
         if (rc == FACET_OK && n > 0)
             rc = search_batch(s, points, n, 0, index, numbers, err);
     }
+    if (rc == FACET_ESTOP)
+        rc = search_stopped(outcome, err);
     /* A space of fewer distinct options than the draws asked for is
      * spent: the run is done with what it drew, and its progress says so
      * rather than stopping short of a total it could never reach. */
     if (rc == FACET_OK && *outcome == OPTIMIZE_DONE && drawn_points < wanted &&
         s->done < s->total) {
         s->total = s->done;
-        if (s->hooks->progress != NULL)
-            s->hooks->progress(s->hooks->context, s->done, s->total);
+        s->work_exact = s->work_done;
+        search_report(s, s->done, s->work_done);
     }
     drawn_free(&drawn);
     free(points);
@@ -926,8 +1028,10 @@ int optimize_total_with(const struct option_evaluator *evaluator,
                                       (uint64_t)settings->evaluations);
         return FACET_OK;
     default:
+        /* The generations count the first one (nsga2.h): population x
+         * generations points met, repeats included. */
         *total = (int64_t)settings->population *
-                 ((int64_t)settings->generations + 1);
+                 (int64_t)settings->generations;
         return FACET_OK;
     }
 }
@@ -942,12 +1046,31 @@ struct surface_evaluation {
 
 static int surface_evaluate(void *context, const struct option_params *base,
                             const struct design_point *points, size_t n,
-                            int jobs, struct option_totals *totals,
+                            int jobs, const struct facet_stop *stop,
+                            struct option_totals *totals,
                             struct facet_error *err)
 {
     const struct surface_evaluation *e = context;
     return evaluate(e->surface, e->lattice, e->lines, base, points, n, jobs,
-                    totals, NULL, err);
+                    stop, totals, NULL, err);
+}
+
+/* The work the progress weighs by (struct optimize_progress): of an
+ * exhaustive walk over grids, exactly its panels (of a shard, its share);
+ * of another method, the mean work of a point of the space. */
+static void search_work_init(struct search *s,
+                             const struct exhaustive_grids *grids)
+{
+    const struct design_space *space = &s->settings->space;
+    int single = s->evaluator->canonical == NULL;
+    s->work_each = single ? design_space_mean_panels(space) : 1;
+    if (s->settings->method != METHOD_EXHAUSTIVE)
+        return;
+    double steps = (double)threshold_steps(space);
+    double points = (double)grids->n * steps;
+    /* Every grid of the space at every step: exactly the mean's worth. */
+    double work = points * s->work_each;
+    s->work_exact = points > 0 ? work * (double)s->total / points : 0;
 }
 
 int optimize_run_with(const struct option_evaluator *evaluator,
@@ -976,6 +1099,8 @@ int optimize_run_with(const struct option_evaluator *evaluator,
     if (rc == FACET_OK)
         rc = search_init(&s, evaluator, settings, stored, nstored, hooks,
                          total, err);
+    if (rc == FACET_OK)
+        search_work_init(&s, &grids);
     if (rc == FACET_OK) {
         if (settings->method == METHOD_EXHAUSTIVE)
             rc = run_exhaustive(&s, &grids, outcome, err);
@@ -1045,7 +1170,7 @@ int optimize_lattice_stoppable(const struct surface *surface,
     double evaluations =
         settings->method == METHOD_RANDOM ? (double)settings->evaluations
         : settings->method == METHOD_NSGA2
-            ? (double)settings->population * (settings->generations + 1)
+            ? (double)settings->population * settings->generations
             : grids;
     if (evaluations < grids)
         grids = evaluations;

@@ -10,9 +10,13 @@
  * Options are numbered in the order the method first meets them, which the
  * seed fixes, so a run and its resumption number them alike.
  *
- * Evaluation runs on `jobs` threads in batches; after each batch the caller's
- * store hook receives the new options (to commit them) and its stop hook may
- * end the run. A design point met twice is evaluated once. Resuming: pass
+ * Evaluation runs on `jobs` threads in batches, each evaluated and stored
+ * in chunks: after each chunk the caller's store hook receives its options
+ * (to commit them). The stop hook is asked between chunks, between options
+ * and inside an option (evaluate.h), so that a stop is heard within about
+ * a second whatever the grid: the chunk it interrupts is dropped whole (no
+ * option is stored half-evaluated), what was stored before it is kept. A
+ * design point met twice is evaluated once. Resuming: pass
  * the options already stored; the method runs again from its start with
  * them as a cache (nothing stored is evaluated or stored again), so the
  * finished run has exactly the options of an uninterrupted one.
@@ -23,6 +27,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "core/base/stop.h"
 #include "core/search/metric.h"
 #include "core/search/shard.h"
 #include "core/evaluate/evaluate.h"
@@ -83,15 +88,30 @@ struct evaluated_option {
     struct option_totals totals;
 };
 
+/* How far a run is: the options met of the most it meets, and the work
+ * they take, in panels (a grid's nu x nv, the same for each of its
+ * thresholds; a project's option counts 1). An option of 2000 x 2000 takes
+ * a thousand times one of 60 x 60, and an exhaustive walk's grids grow
+ * finer as it goes: time left follows the work left, not the options left
+ * (progress_eta). work_total is exact for an exhaustive walk; for random
+ * and NSGA-II, whose points are drawn as they go, it is the work done and
+ * the space's mean work for each option still to come. */
+struct optimize_progress {
+    int64_t done, total;          /* options met (stored or reused) */
+    double work_done, work_total; /* panels */
+};
+
 struct optimize_hooks {
     void *context;
     /* Commits n new options; a non-zero return ends the run with that
      * error. */
     int (*store)(void *context, const struct evaluated_option *options,
                  size_t n, struct facet_error *err);
-    /* Reports progress: options done (stored or reused) of total. */
-    void (*progress)(void *context, int64_t done, int64_t total);
-    /* Non-zero when the user asked to stop (checked between batches). */
+    /* Reports progress (struct optimize_progress). */
+    void (*progress)(void *context, const struct optimize_progress *p);
+    /* Non-zero when the user asked to stop: asked between batches and,
+     * from the evaluating threads at once, while a batch is evaluated
+     * (core/base/stop.h): it must be cheap and thread-safe. */
     int (*should_stop)(void *context);
 };
 
@@ -115,6 +135,12 @@ int optimize_method_parse(const char *text, const char *what,
 /* Number of points of the exhaustive cross product (threshold steps from
  * t_min to t_max inclusive, to within a thousandth of a step). */
 uint64_t design_space_size(const struct design_space *space);
+
+/* The mean panels of a grid of space, nu x nv over its grids:
+ * (u_min + u_max) / 2 x (v_min + v_max) / 2, what an option of it takes on
+ * average (struct optimize_progress); of the whole cross product exactly,
+ * of points drawn from it in expectation. */
+double design_space_mean_panels(const struct design_space *space);
 
 /* Parses a grid range as a designer writes it, "20:40" or "30" (a
  * numrange.h range of whole numbers, 1 to PANEL_MAX_GRID, no step), into
@@ -153,7 +179,8 @@ int optimize_method_check(enum optimize_method method,
 
 /* The options a run of settings evaluates at most (a point met twice is
  * evaluated once): the space for exhaustive, the evaluations for random,
- * population x (generations + 1) for NSGA-II; of a shard, its share of
+ * population x generations for NSGA-II (nsga2.h: the first generation
+ * counts); of a shard, its share of
  * them (an NSGA-II island evaluates as many as a whole run). */
 int64_t optimize_total(const struct optimize_settings *settings);
 
@@ -184,9 +211,11 @@ struct option_evaluator {
      * into totals[0..n). The store hook's next call receives exactly
      * these options, in this order, so an evaluator may keep what it
      * computed beside the totals (a project's per-surface rows) for the
-     * store to take. */
+     * store to take. It asks stop (NULL: never) at least between options
+     * and returns FACET_ESTOP when it fires: totals are then not valid. */
     int (*evaluate)(void *context, const struct option_params *base,
                     const struct design_point *points, size_t n, int jobs,
+                    const struct facet_stop *stop,
                     struct option_totals *totals, struct facet_error *err);
 };
 
@@ -223,12 +252,14 @@ int optimize_evaluate(const struct surface *surface,
 
 /* Like optimize_evaluate, keeping every point's panels: panels[0..n)
  * (caller-owned, each released with panelization_free; all released
- * already when it fails). */
+ * already when it fails), asking stop (NULL: never) as a search does:
+ * FACET_ESTOP when it fires. */
 int optimize_evaluate_panels(const struct surface *surface,
                              const struct panel_lattice *lattice,
                              const struct option_params *base,
                              const struct design_point *points, size_t n,
-                             int jobs, struct panelization *panels,
+                             int jobs, const struct facet_stop *stop,
+                             struct panelization *panels,
                              struct option_totals *totals,
                              struct facet_error *err);
 

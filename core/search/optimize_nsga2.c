@@ -116,10 +116,8 @@ int run_nsga2(struct search *s, enum optimize_outcome *outcome,
     ga.seed = shard_island_seed(settings->seed, &settings->shard);
     struct nsga2_population result;
     int rc = nsga2_run(&problem, &ga, NULL, on_generation, &c, &result, err);
-    if (c.stopped) {
-        *outcome = OPTIMIZE_INTERRUPTED;
-        rc = FACET_OK;
-    }
+    if (c.stopped || rc == FACET_ESTOP)
+        rc = search_stopped(outcome, err);
     nsga2_free(&result);
     return rc;
 }

@@ -145,4 +145,38 @@ if have_data acj_suzanne.obj; then
 fi
 expect_error "missing file" 'nothere' "$FACET" classify "$WORK/nothere.obj" --grid 5x5
 expect_error "unwritable csv" 'cannot write' "$FACET" classify "$WORK/plane.obj" --grid 2x2 --csv /nonexistent/x.csv
+# Issue 32 item 8: a fine grid works for most of a minute, so classify
+# shows its steps on a terminal (a pty here): read, prepare, then the
+# option's five stages, each as it starts, and the time taken at the end;
+# in a log (stderr not a terminal) nothing but its warnings.
+got=$(python3 - "$FACET" "$WORK/roof.obj" <<'EOF2'
+import os, pty, select, sys
+pid, fd = pty.fork()
+if pid == 0:
+    os.execv(sys.argv[1], [sys.argv[1], 'classify', sys.argv[2], '--grid', '200x200'])
+seen = b''
+while True:
+    try:
+        if select.select([fd], [], [], 0.1)[0]:
+            chunk = os.read(fd, 65536)
+            if not chunk:
+                break
+            seen += chunk
+    except OSError:
+        break
+os.waitpid(pid, 0)
+for part in seen.replace(b'\n', b'\r').split(b'\r'):
+    if part.startswith(b'[') and b'] ' in part[:40]:
+        print(part.decode().split('] ', 1)[1].split(',')[0].strip())
+EOF2
+)
+same "classify on a terminal: its steps in order, then the time taken" \
+    "$(echo "$got" | sed 's/took [0-9.]* s/took N s/' | tr '\n' '|')" \
+    "0/7 reading the surface|1/7 preparing the surface|2/7 building the panels|3/7 measuring the panels' widths|4/7 measuring the joint lines|5/7 fitting panels|6/7 finding the mould families|7/7 took N s|"
+run "$FACET" classify "$WORK/roof.obj" --grid 200x200
+if grep -q '^\[\|/7 ' "$ERR"; then
+    fail "classify in a log: no steps drawn"
+else
+    pass "classify in a log: no steps drawn"
+fi
 exit 0

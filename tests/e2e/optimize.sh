@@ -546,6 +546,56 @@ if tail -n 1 "$ERR" | grep -qE '^progress: 289/289 options \(100%\), [0-9.]+/s, 
 else
     fail "progress: the last line gives the rate and the time taken"
 fi
+# Issue 32 item 8: NSGA-II's progress ends at 100 % with the time taken,
+# as exhaustive's does. Its total is population x generations, the first
+# generation counted (nsga2.h: 8 x 3 = 24 points met, repeats included).
+run "$FACET" optimize "$ROOF" --db "$WORK/nsga2-progress.db" --method nsga2 \
+    --pop 8 --gens 3 --u 4:20 --v 4:20 --threshold 1:5 --seed 3
+if tail -n 1 "$ERR" | grep -qE '^progress: 24/24 options \(100%\), [0-9.]+/s, took [0-9.]+ s$'; then
+    pass "progress: NSGA-II ends at 24/24 (100 %) with the time taken"
+else
+    fail "progress: NSGA-II ends at 24/24 (100 %) with the time taken (last line: $(tail -n 1 "$ERR"))"
+fi
+# Issue 32 item 7: before a space of hours, optimize says how long, at the
+# rate of the file's earlier runs: their panels (options x the mean grid
+# of their space) over their seconds, as sqlite3 reads them, for the new
+# space's options x its mean grid; a short space says nothing. The run is
+# stopped as soon as it has said so.
+run "$FACET" optimize "$ROOF" --db "$WORK/estimate.db" --u 10:14 --v 10:14 --threshold 3
+if grep -q 'earlier run' "$ERR"; then
+    fail "estimate: a run of seconds is not announced"
+else
+    pass "estimate: a run of seconds is not announced"
+fi
+"$FACET" optimize "$ROOF" --db "$WORK/estimate.db" --u 1:2000 --v 1:2000 \
+    --table 0 >"$OUT" 2>"$ERR" &
+pid=$!
+for _ in $(seq 1 600); do
+    grep -q 'earlier run' "$ERR" 2>/dev/null && break
+    kill -0 "$pid" 2>/dev/null || break
+    sleep 0.05
+done
+kill -INT "$pid" 2>/dev/null
+wait "$pid"
+line=$(grep 'earlier run' "$ERR")
+want=$(sqlite3 "$WORK/estimate.db" "SELECT sum(options * (u_min + u_max) / 2.0 * (v_min + v_max) / 2.0), sum(elapsed) FROM runs WHERE id = 1" |
+    python3 -c '
+import sys
+work, seconds = map(float, sys.stdin.read().split("|"))
+# nsga2 by default for 4 million points: 100 x 50 options, mean grid
+# 1000.5 x 1000.5
+left = 5000 * 1000.5 * 1000.5 / (work / seconds)
+print("%.1f h" % (left / 3600) if left < 48 * 3600 else "%.1f days" % (left / 86400))')
+if echo "$line" | grep -qF "facet: 5,000 options (nsga2, at most), about $want at the rate of the 1 earlier run in"; then
+    pass "estimate: a space of hours is announced: $want, as sqlite3's rate gives"
+else
+    fail "estimate: a space of hours is announced: $want, as sqlite3's rate gives (said: $line)"
+fi
+if echo "$line" | grep -q "Ctrl-C stops it.*--resume goes on"; then
+    pass "estimate: ... and says how to stop and go on"
+else
+    fail "estimate: ... and says how to stop and go on"
+fi
 # A mesh coarser than the space's finest panels: one warning line before
 # the work, stored with the run, and listed by facet runs; a fine mesh has
 # none.

@@ -165,10 +165,12 @@ struct fake_run {
 
 static int fake_evaluate(void *context, const struct option_params *base,
                          const struct design_point *points, size_t n,
-                         int jobs, struct option_totals *totals,
+                         int jobs, const struct facet_stop *stop,
+                         struct option_totals *totals,
                          struct facet_error *err)
 {
     (void)context;
+    (void)stop;
     (void)base;
     (void)jobs;
     (void)err;
@@ -196,11 +198,11 @@ static int fake_store(void *context, const struct evaluated_option *options,
     return FACET_OK;
 }
 
-static void fake_progress(void *context, int64_t done, int64_t total)
+static void fake_progress(void *context, const struct optimize_progress *p)
 {
     struct fake_run *r = context;
-    r->last_done = done;
-    r->last_total = total;
+    r->last_done = p->done;
+    r->last_total = p->total;
 }
 
 static int by_option_number(const void *a, const void *b)
