@@ -99,10 +99,9 @@ struct stopper {
     int reports, stop_after;
 };
 
-static void count_report(void *context, int64_t done, int64_t total)
+static void count_report(void *context, const struct optimize_progress *p)
 {
-    (void)done;
-    (void)total;
+    (void)p;
     ((struct stopper *)context)->reports++;
 }
 
