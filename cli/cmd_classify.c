@@ -152,6 +152,8 @@ static int classify_run(int argc, char **argv, struct facet_error *err)
     struct option_totals totals;
     memset(&panels, 0, sizeof panels);
     rc = surface_open(path, &mesh_options, &surface, err);
+    if (rc == FACET_OK && flags.surface.units == NULL)
+        rc = surface_units_check(&surface, err);
     if (rc == FACET_OK)
         rc = surface_prepare(&surface, flip, uv, err);
     if (rc == FACET_OK)

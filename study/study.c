@@ -1013,6 +1013,8 @@ static int surface_read(const struct study_request *request,
         return facet_error_about(err, FACET_SETTING_MODULE, FACET_EINPUT,
             "%s: a project of %zu surfaces (its objects or groups) needs a "
             "panel module", request->surface_path, named);
+    if (rc == FACET_OK && !request->units_named)
+        rc = surface_units_check(surface, err);
     if (rc == FACET_OK) {
         study_stage(hooks, "preparing the surface (UV, curvature)");
         rc = surface_prepare_stoppable(surface, request->flip_normals,
