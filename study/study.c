@@ -653,7 +653,7 @@ static int store_front_panels(struct store *store, const struct run_info *run,
 {
     *stopped = 0;
     /* Only the front is read (by the rank index), not the whole run. */
-    struct option_query q = {run->id, 1, NULL, NULL, 0, 0, 0};
+    struct option_query q = {run->id, 1, NULL, NULL, 0, 0, 0, 0};
     struct option_row *rows = NULL;
     size_t n = 0, nfront = 0;
     int rc = store_run_setting_check(run, RUN_SETTING_STORE_PANELS, err);
