@@ -661,10 +661,13 @@ static enum tui_result export_marks_key(struct options_screen *s,
 static enum tui_result filter_key(struct options_screen *s,
                                   struct tui_app *app, int key)
 {
+    if (tui_filter_history_key(app, &s->filter, key))
+        return RESULT_HANDLED;
     if (tui_prompt_key(app, &s->filter, &s->editing, key) != INPUT_DONE)
         return RESULT_HANDLED;
     struct facet_error err;
     int rc = table_model_set_filter(&s->model, s->filter.text, &err);
+    tui_history_add(&app->filters, s->filter.text, rc != FACET_OK);
     report(app, rc, &err);
     if (rc == FACET_OK) {
         char shown[32];
@@ -891,10 +894,7 @@ static enum tui_result options_key(struct tui_screen *base,
         break;
     case ACTION_SEARCH:
         s->editing = 1;
-        tui_input_set(&s->filter, m->filter ? filter_text(m->filter) : "");
-        if (s->filter.text[0] == '\0' && s->filter.length == 0)
-            tui_input_set(&s->filter, "");
-        tui_prompt(app, "Filter:", &s->filter);
+        tui_filter_open(app, &s->filter, m);
         break;
     case ACTION_NEXT: next_pareto(s, app, 1); break;
     case ACTION_PREVIOUS: next_pareto(s, app, -1); break;

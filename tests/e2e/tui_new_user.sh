@@ -193,7 +193,7 @@ click 15 3
 check "a click on a header sorts by its column" '^ row [0-9]+ of [0-9]+  sort feasible first, planarity asc'
 check_line "and shows the top" 5 "^ +$LEAST_PLANARITY "
 click 15 3
-check "a second click reverses it" 'sort feasible first, planarity desc'
+check "a second click reverses it" 'sort (feasible first, )?planarity desc'
 bytes '\033[<65;20;10M'
 check "the wheel scrolls down three rows" "^ row 4 of $N "
 bytes '\033[<64;20;10M'
