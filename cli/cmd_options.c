@@ -261,10 +261,10 @@ static int options_main(int argc, char **argv, struct facet_error *err)
 
 const struct command cmd_options = {
     .name = "options",
-    .usage = "DB [--run N] [--pareto] [--sort KEY[,KEY]] [--desc] "
-             "[--infeasible-mixed]\n"
-             "       [--where EXPR] [--limit N] [--wide] [--surfaces] "
-             "[--json|--csv]",
+    .usage = "DB [--run N] [--pareto] [--sort KEY[,KEY]] [--desc]\n"
+             "       [--infeasible-mixed] [--where EXPR] [--limit N] "
+             "[--wide]\n"
+             "       [--surfaces] [--json|--csv]",
     .summary = "List, filter and sort the design options of a result "
                "store.",
     .before = "",

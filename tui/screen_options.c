@@ -59,6 +59,7 @@ static const struct tui_key_help options_help[] = {
     {"F", "sorted, the feasible options first (the default) or mixed in "
           "by the keys alone (toggle); an infeasible row is dim, x in P"},
     {"/, F3", "filter, e.g. cost < 1.6M and dp_area <= 900 or pareto"},
+    {"  Up/Down", "  (filter line) the filters entered before"},
     {"p, F4", "Pareto-optimal options only (toggle)"},
     {"K", "jump to the knee option"},
     {"n / N", "next / previous Pareto-optimal option"},

@@ -78,7 +78,8 @@ static const struct tui_key_help scatter_help[] = {
     {"Space", "mark / unmark the option (the table's marks, for Compare)"},
     {"f", "show / hide the two-metric Pareto front line"},
     {"p, F4", "Pareto-optimal options only (shared with the table)"},
-    {"/, F3", "filter (shared with the table)"},
+    {"/, F3", "filter (shared with the table; Up/Down: the filters "
+              "entered before)"},
     {"K", "the knee option"},
     {"e, F9", "write the scatter as SVG: these axes, the options shown "
               "(filter, Pareto only); end the name with ! to overwrite"},
