@@ -176,6 +176,8 @@ static int classify_run(int argc, char **argv, struct facet_error *err)
     progress_start(&steps.bar, "steps", 0, 0);
     classify_step(&steps, "reading the surface");
     rc = surface_open(path, &mesh_options, &surface, err);
+    if (rc == FACET_OK && flags.surface.units == NULL)
+        rc = surface_units_check(&surface, err);
     if (rc == FACET_OK) {
         classify_step(&steps, "preparing the surface");
         rc = surface_prepare(&surface, flip, uv, err);

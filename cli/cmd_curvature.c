@@ -210,6 +210,8 @@ static int curvature_run(int argc, char **argv, struct facet_error *err)
     struct curvature curvature;
     memset(&curvature, 0, sizeof curvature);
     rc = surface_open(path, &mesh_options, &surface, err);
+    if (rc == FACET_OK && which.units == NULL)
+        rc = surface_units_check(&surface, err);
     if (rc == FACET_OK)
         rc = curvature_at_vertices(&surface.mesh, flip, &curvature, err);
     if (rc == FACET_OK) {

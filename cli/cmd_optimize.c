@@ -412,6 +412,7 @@ static int optimize_parse(int argc, char **argv, struct optimize_command *c,
                 "--measure: '%s' is neither all nor needed", c->measure);
         request->measure_all = c->measure && strcmp(c->measure, "all") == 0;
         request->surface_path = c->path[0];
+        request->units_named = c->flags.surface.units != NULL;
         request->flip_normals = c->flags.flip_normals;
         request->name = c->name ? c->name : "";
         if ((rc = study_request_check(request, err)))

@@ -136,7 +136,7 @@ static int list_row(void *context, int64_t run, const struct option_row *o)
 /* The options as given (pointing into argv), NULL or 0 when absent. */
 struct options_args {
     const char *run, *sort, *where, *limit;
-    int pareto, desc, json, csv, wide, surfaces;
+    int pareto, desc, json, csv, wide, surfaces, mixed;
 };
 
 static const struct arg_option options_options[] = {
@@ -145,9 +145,14 @@ static const struct arg_option options_options[] = {
     {"pareto", 0, ARG_FLAG, offsetof(struct options_args, pareto), NULL,
      "only Pareto-optimal options (rank 1)", NULL},
     {"sort", 0, ARG_STRING, offsetof(struct options_args, sort), "KEYS",
-     "columns to sort by, e.g. cost,dp_area (default run, number)", NULL},
+     "columns to sort by, e.g. cost,dp_area (default run, number); every "
+     "feasible option comes first, each part sorted", NULL},
     {"desc", 0, ARG_FLAG, offsetof(struct options_args, desc), NULL,
-     "sort descending", NULL},
+     "sort descending (the feasible options still first)", NULL},
+    {"infeasible-mixed", 0, ARG_FLAG,
+     offsetof(struct options_args, mixed), NULL,
+     "sort the infeasible options among the feasible ones, by the columns "
+     "alone", NULL},
     {"where", 0, ARG_STRING, offsetof(struct options_args, where), "EXPR",
      "e.g. 'cost < 1.5e6 and dp_area <= 900 or pareto' (columns: see "
      "docs/store.md)", NULL},
@@ -231,7 +236,8 @@ static int options_main(int argc, char **argv, struct facet_error *err)
         } else {
             option_csv_header(stdout);
         }
-        struct option_query q = {run_id, pareto, filter, sort, desc, rows, 0};
+        struct option_query q = {run_id, pareto, filter, sort, desc, rows,
+                                 0, !a.mixed};
         rc = store_options_query(store, &q, list_row, &listing, err);
         if (rc == FACET_OK && listing.err.code != FACET_OK) {
             *err = listing.err;
@@ -256,8 +262,9 @@ static int options_main(int argc, char **argv, struct facet_error *err)
 const struct command cmd_options = {
     .name = "options",
     .usage = "DB [--run N] [--pareto] [--sort KEY[,KEY]] [--desc]\n"
-             "       [--where EXPR] [--limit N] [--wide] [--surfaces] "
-             "[--json|--csv]",
+             "       [--infeasible-mixed] [--where EXPR] [--limit N] "
+             "[--wide]\n"
+             "       [--surfaces] [--json|--csv]",
     .summary = "List, filter and sort the design options of a result "
                "store.",
     .before = "",

@@ -7,6 +7,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "classify_flags.h"
 #include "command.h"
 #include "core/base/spelling.h"
 #include "shown.h"
@@ -42,8 +43,20 @@ static void print_error(const struct facet_error *err)
     enum facet_setting s = err->setting;
     if ((unsigned)s >= FACET_SETTING_COUNT || setting_words[s].before == NULL)
         s = FACET_SETTING_NONE;
-    shown_line(stderr, "facet: %s%s%s", setting_words[s].before,
-               err->message[0] ? err->message : "failed",
+    const char *message = err->message[0] ? err->message : "failed";
+    /* Units Facet can name (surface_units_check): the flag to give, and
+     * the one that reads the file as it was read. */
+    if (s == FACET_SETTING_UNITS && err->value[0] != '\0') {
+        struct surface_flags none = {NULL, NULL, NULL};
+        struct mesh_options as_read;
+        struct facet_error ignored;
+        surface_flags_apply(&none, &as_read, &ignored);
+        shown_line(stderr, "facet: %s: give --units %s (or --units %s to "
+                   "go on as read)", message, err->value,
+                   mesh_units_name(as_read.units));
+        return;
+    }
+    shown_line(stderr, "facet: %s%s%s", setting_words[s].before, message,
                setting_words[s].after);
 }
 

@@ -115,7 +115,7 @@ int run_table_print(FILE *out, struct store *store, const char *db,
     /* The Pareto options first, then the next fronts, cheapest first
      * within each, up to rows: a front longer than rows is cut too, and
      * the line under the table says so. */
-    struct option_query q = {run, 0, NULL, "rank,cost", 0, rows, 0};
+    struct option_query q = {run, 0, NULL, "rank,cost", 0, rows, 0, 1};
     struct option_row *listed;
     size_t n;
     rc = store_options_query_rows(store, &q, &listed, &n, err);

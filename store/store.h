@@ -488,10 +488,16 @@ struct option_query {
     int descending;
     int64_t limit;             /* 0 = no limit */
     int64_t offset;
+    int feasible_first;        /* sorted (sort given): every feasible
+                                  option before every other one (infeasible,
+                                  or not measured yet), each part in the
+                                  order of the columns, whatever their
+                                  direction; 0: feasibility is no key */
 };
 
 /* Calls row(context, run, option) for each option that matches q, in
- * order; stops early when row returns non-zero. Sorted by columns, values
+ * order; stops early when row returns non-zero. Sorted by columns (after
+ * feasibility, with feasible_first), values
  * of a column equal but for rounding tie (core/search/ties.h, the column's
  * tolerance over q's run, or over every run) and fall to the next column,
  * then to run and number; limit and offset count in that order. (SQL
@@ -534,7 +540,8 @@ struct browse_key {
 #define BROWSE_MAX_KEYS 3
 
 /* What a browse sees: one run's options, filtered, in the order of keys
- * then number ascending (so every option has one place). */
+ * (after feasibility, with feasible_first) then number ascending (so
+ * every option has one place). */
 struct option_browse {
     int64_t run;               /* > 0 */
     int pareto_only;           /* rank 1 only */
@@ -548,6 +555,15 @@ struct option_browse {
                                   BROWSE_SCAN: read every row of the run
                                   by number, filter and sort them (what a
                                   page falls back to, store_browse_page) */
+    int feasible_first;        /* with keys: every feasible option before
+                                  every other one (infeasible, or not
+                                  measured yet), each part in the order of
+                                  keys; a page is read part by part, each
+                                  by the index of its first key */
+    int feasible_part;         /* 0: every option; 1: the feasible ones
+                                  only; -1: the others. How the store
+                                  reads one part of a feasible_first
+                                  browse; a caller may ask for one too */
 };
 
 #define BROWSE_SCAN 2

@@ -13,6 +13,7 @@
  */
 #include "store_internal.h"
 
+#include <assert.h>
 #include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
@@ -136,6 +137,9 @@ static void add_from(struct sql_text *s, const struct option_browse *b,
 {
     int filter_first = b->filter_first && !scan;
     sql_add(s, " FROM options WHERE run = ?1");
+    if (b->feasible_part != 0)
+        sql_add(s, " AND %s%s", b->feasible_part > 0 ? "" : "NOT ",
+                store_feasible_sql);
     if (filter_first)
         sql_add(s, " AND number IN (SELECT number FROM options"
                    " WHERE run = ?1");
@@ -155,6 +159,31 @@ static void add_from(struct sql_text *s, const struct option_browse *b,
         sql_add(s, ")");
 }
 
+/* Whether b's order leads with feasibility (the feasible first): a
+ * feasible_first browse with keys, not one of its parts. */
+static int feasible_leads(const struct option_browse *b)
+{
+    return b->feasible_first && b->nkeys > 0 && b->feasible_part == 0;
+}
+
+/* The part of b's options that are feasible (part 1) or not (-1), each
+ * in the order of b's keys: a feasible_first browse is its part 1, then
+ * its part -1. */
+static struct option_browse browse_part(const struct option_browse *b,
+                                        int part)
+{
+    struct option_browse p = *b;
+    p.feasible_first = 0;
+    p.feasible_part = part;
+    return p;
+}
+
+/* The part an option belongs to. */
+static int part_of(const struct option_row *option)
+{
+    return option->totals.feasible == 1 ? 1 : -1;
+}
+
 /* Appends " AND <row comes after the keyset row>" (before, when
  * backward): a lexicographic comparison over the keys and number, with a
  * leading range term on the first key that an index can seek by. A key
@@ -167,6 +196,9 @@ static void add_keyset(struct sql_text *s, const struct option_browse *b,
                        const struct option_row *keyset, int backward)
 {
     char expr[160];
+    /* A feasible-first order is walked part by part (store_browse_page),
+     * each part by its keys alone. */
+    assert(!feasible_leads(b));
     sql_add(s, " AND ");
     if (b->nkeys > 0 && !isnan(key_value(keyset, b->keys[0].column))) {
         int greater = !b->keys[0].descending != !!backward;
@@ -200,12 +232,15 @@ static void add_keyset(struct sql_text *s, const struct option_browse *b,
 }
 
 /* Appends " ORDER BY keys, number" (every direction reversed when
- * backward). */
+ * backward), after feasibility when it leads (a tail's sort of the rows
+ * it read; a page reads part by part). */
 static void add_order(struct sql_text *s, const struct option_browse *b,
                       int backward)
 {
     char expr[160];
     sql_add(s, " ORDER BY ");
+    if (feasible_leads(b))
+        sql_add(s, "%s %s, ", store_feasible_sql, backward ? "ASC" : "DESC");
     for (int k = 0; k < b->nkeys; k++) {
         key_sql(b, b->keys[k].column, expr, sizeof expr);
         sql_add(s, "%s %s, ", expr,
@@ -378,7 +413,9 @@ static int walk_spent(void *context)
     return monotonic_seconds() > *(const double *)context;
 }
 
-int store_browse_page(struct store *store, const struct option_browse *b,
+/* store_browse_page of a browse whose order does not lead with
+ * feasibility (one part of one that does). */
+static int page_plain(struct store *store, const struct option_browse *b,
                       const struct option_row *after, int backward,
                       int64_t limit,
                       int (*row)(void *context,
@@ -397,7 +434,8 @@ int store_browse_page(struct store *store, const struct option_browse *b,
      * rows looked up for 200, 3 s). The walk gets WALK_BUDGET; past it the
      * page is taken from one read of the run's rows and sorted (0.3 s a
      * million options). Both give the same rows in the same order. */
-    int filtered = (b->where != NULL || b->pareto_only) && !b->filter_first;
+    int filtered = (b->where != NULL || b->pareto_only ||
+                    b->feasible_part != 0) && !b->filter_first;
     if (!filtered)
         return deliver(store, b, stmt, limit, row, context,
                        "browsing options", err);
@@ -424,7 +462,69 @@ int store_browse_page(struct store *store, const struct option_browse *b,
     return rc;
 }
 
-int store_browse_offset(struct store *store, const struct option_browse *b,
+/* The rows a feasible_first browse's parts hand on, counted, so that the
+ * next part gives what the first did not. */
+struct part_rows {
+    int (*row)(void *context, const struct option_row *option);
+    void *context;
+    int64_t n;
+    int stopped;
+};
+
+static int part_row(void *context, const struct option_row *option)
+{
+    struct part_rows *p = context;
+    p->n++;
+    p->stopped = p->row(p->context, option) != 0;
+    return p->stopped;
+}
+
+/* Whether a part's rows leave room for more under limit (<= 0: none). */
+static int part_room(const struct part_rows *p, int64_t limit)
+{
+    return !p->stopped && (limit <= 0 || p->n < limit);
+}
+
+/* The parts of a feasible_first browse in the order a walk meets them
+ * (forward: the feasible first; backward: the others first), and the
+ * first of them that holds the rows after `after` (NULL: the first). */
+static int parts_from(const struct option_row *after, int backward,
+                      int part[2])
+{
+    part[0] = backward ? -1 : 1;
+    part[1] = -part[0];
+    return after != NULL && part_of(after) != part[0];
+}
+
+/* Feasibility leads the order, and no index has it: a page is read part
+ * by part, each the order of the keys over one part, seeking by its
+ * first key's index as a browse without feasibility does. */
+int store_browse_page(struct store *store, const struct option_browse *b,
+                      const struct option_row *after, int backward,
+                      int64_t limit,
+                      int (*row)(void *context,
+                                 const struct option_row *option),
+                      void *context, struct facet_error *err)
+{
+    if (!feasible_leads(b))
+        return page_plain(store, b, after, backward, limit, row, context,
+                          err);
+    int rc = check_keys(b, err);
+    int part[2];
+    int from = parts_from(after, backward, part);
+    struct part_rows p = {row, context, 0, 0};
+    for (int k = from; rc == FACET_OK && k < 2 && part_room(&p, limit);
+         k++) {
+        struct option_browse one = browse_part(b, part[k]);
+        rc = page_plain(store, &one, k == from ? after : NULL, backward,
+                        limit > 0 ? limit - p.n : limit, part_row, &p, err);
+    }
+    return rc;
+}
+
+/* store_browse_offset of a browse whose order does not lead with
+ * feasibility. */
+static int offset_plain(struct store *store, const struct option_browse *b,
                         int64_t offset, int64_t limit,
                         int (*row)(void *context,
                                    const struct option_row *option),
@@ -439,6 +539,31 @@ int store_browse_offset(struct store *store, const struct option_browse *b,
     sqlite3_bind_int64(stmt, 3, offset > 0 ? offset : 0);
     return deliver(store, b, stmt, limit, row, context, "browsing options",
                    err);
+}
+
+int store_browse_offset(struct store *store, const struct option_browse *b,
+                        int64_t offset, int64_t limit,
+                        int (*row)(void *context,
+                                   const struct option_row *option),
+                        void *context, struct facet_error *err)
+{
+    if (!feasible_leads(b))
+        return offset_plain(store, b, offset, limit, row, context, err);
+    struct option_browse feasible = browse_part(b, 1);
+    struct option_browse others = browse_part(b, -1);
+    int64_t n = 0;
+    int rc = check_keys(b, err);
+    if (rc == FACET_OK)
+        rc = store_browse_count(store, &feasible, &n, err);
+    struct part_rows p = {row, context, 0, 0};
+    if (rc == FACET_OK && offset < n)
+        rc = offset_plain(store, &feasible, offset, limit, part_row, &p,
+                          err);
+    if (rc == FACET_OK && part_room(&p, limit))
+        rc = offset_plain(store, &others, offset < n ? 0 : offset - n,
+                          limit > 0 ? limit - p.n : limit, part_row, &p,
+                          err);
+    return rc;
 }
 
 /* Runs a query of one integer or two reals into the outputs given. */
@@ -479,11 +604,11 @@ int store_browse_count(struct store *store, const struct option_browse *b,
                       err);
 }
 
-int store_browse_count_capped(struct store *store,
-                              const struct option_browse *b,
-                              const struct option_row *after, int backward,
-                              int64_t cap, int64_t *count,
-                              struct facet_error *err)
+/* store_browse_count_capped of a browse whose order does not lead with
+ * feasibility. */
+static int capped_plain(struct store *store, const struct option_browse *b,
+                        const struct option_row *after, int backward,
+                        int64_t cap, int64_t *count, struct facet_error *err)
 {
     *count = 0;
     sqlite3_stmt *stmt;
@@ -494,6 +619,29 @@ int store_browse_count_capped(struct store *store,
         return rc;
     return single_row(store, stmt, count, NULL, NULL, "counting options",
                       err);
+}
+
+int store_browse_count_capped(struct store *store,
+                              const struct option_browse *b,
+                              const struct option_row *after, int backward,
+                              int64_t cap, int64_t *count,
+                              struct facet_error *err)
+{
+    if (!feasible_leads(b))
+        return capped_plain(store, b, after, backward, cap, count, err);
+    *count = 0;
+    int rc = check_keys(b, err);
+    int part[2];
+    int from = parts_from(after, backward, part);
+    for (int k = from; rc == FACET_OK && k < 2 && (cap <= 0 || *count < cap);
+         k++) {
+        struct option_browse one = browse_part(b, part[k]);
+        int64_t n = 0;
+        rc = capped_plain(store, &one, k == from ? after : NULL, backward,
+                          cap > 0 ? cap - *count : cap, &n, err);
+        *count += n;
+    }
+    return rc;
 }
 
 /* Merges into tail the last options of b's order among the slice of
@@ -630,6 +778,17 @@ int store_browse_position(struct store *store,
     int rc = check_keys(b, err);
     if (rc != FACET_OK)
         return rc;
+    if (feasible_leads(b)) {
+        /* its place in its part, after every feasible one if it is not */
+        struct option_browse own = browse_part(b, part_of(option));
+        rc = store_browse_position(store, &own, option, position, err);
+        int64_t before = 0;
+        struct option_browse feasible = browse_part(b, 1);
+        if (rc == FACET_OK && part_of(option) < 0)
+            rc = store_browse_count(store, &feasible, &before, err);
+        *position += before;
+        return rc;
+    }
     struct sql_text s = {0};
     sql_add(&s, "SELECT count(*)");
     add_from(&s, b, 0);

@@ -37,6 +37,12 @@ extern const char store_crowding_sql[];
  * until the run is ranked, read as 0. */
 extern const char store_rank_sql[];
 
+/* The SQL that is 1 for a feasible option and 0 for any other (an
+ * infeasible one, or one not measured yet: NULL), as an option_row's
+ * totals.feasible reads: the leading key of a feasible-first order,
+ * descending. */
+extern const char store_feasible_sql[];
+
 /* Fills err from the connection's last error: "FILE: what (while DOING)".
  * A corrupt or non-database file is FACET_EINPUT (the user can act on it),
  * anything else FACET_EWORK. Returns the code. */

@@ -265,7 +265,7 @@ int store_options_get(struct store *store, int64_t run,
                       struct facet_error *err)
 {
     /* Run 0 would mean every run to a query; here it is no run. */
-    struct option_query q = {run > 0 ? run : -1, 0, NULL, NULL, 0, 0, 0};
+    struct option_query q = {run > 0 ? run : -1, 0, NULL, NULL, 0, 0, 0, 0};
     return store_options_query_rows(store, &q, rows, n, err);
 }
 
@@ -378,6 +378,8 @@ int store_options_set_pareto(struct store *store, int64_t run,
 
 const char store_rank_sql[] = "ifnull(\"rank\", 0)";
 
+const char store_feasible_sql[] = "(\"feasible\" IS 1)";
+
 const char store_crowding_sql[] =
     "ifnull(\"crowding\", CASE WHEN ifnull(\"rank\", 0) > 0 THEN 1e999"
     " ELSE 0 END)";
@@ -394,13 +396,17 @@ static const struct quantity *sort_column(const char *name,
     return NULL;
 }
 
-/* Appends the ORDER BY list for sort ("cost,dp_area") to sql. */
-static int order_by(const char *sort, int descending, char *sql,
-                    size_t size, struct facet_error *err)
+/* Appends the ORDER BY list for sort ("cost,dp_area") to sql, after
+ * feasibility (the feasible first) with feasible_first and a sort. */
+static int order_by(const char *sort, int descending, int feasible_first,
+                    char *sql, size_t size, struct facet_error *err)
 {
     const char *direction = descending ? " DESC" : "";
     size_t len = strlen(sql);
     const char *p = sort ? sort : "";
+    if (feasible_first && *p != '\0')
+        len += (size_t)snprintf(sql + len, size - len, "%s DESC, ",
+                                store_feasible_sql);
     while (*p != '\0') {
         size_t n = strcspn(p, ",");
         while (n > 0 && p[0] == ' ') {
@@ -436,7 +442,7 @@ static int order_by(const char *sort, int descending, char *sql,
 int store_options_sort_check(const char *sort, struct facet_error *err)
 {
     char sql[2048] = "";
-    return order_by(sort, 0, sql, sizeof sql, err);
+    return order_by(sort, 0, 0, sql, sizeof sql, err);
 }
 
 /* The sort keys of a query, as option_quantities names, with each
@@ -569,7 +575,12 @@ static int group_row(struct tie_group *g, int64_t run,
     double first = key_value(o, run, g->keys->column[0]);
     if (g->n > 0) {
         double last = g->values[(g->n - 1) * m];
-        if (!(first == last || (isfinite(first) && isfinite(last) &&
+        /* feasible first: the infeasible ones start a class of their own */
+        int parted = g->q->feasible_first &&
+                     (g->rows[g->n - 1].totals.feasible == 1) !=
+                         (o->totals.feasible == 1);
+        if (parted ||
+            !(first == last || (isfinite(first) && isfinite(last) &&
                                 fabs(first - last) <= g->keys->tolerance[0])))
             if (flush_group(g) != 0)
                 return -1;
@@ -625,7 +636,8 @@ int store_options_query(struct store *store, const struct option_query *q,
              columns, q->pareto_only ? " AND rank = 1" : "",
              where ? where : "1");
     free(where);
-    int rc = order_by(q->sort, q->descending, sql, size, err);
+    int rc = order_by(q->sort, q->descending, q->feasible_first, sql, size,
+                      err);
     if (rc == FACET_OK)
         snprintf(sql + strlen(sql), size - strlen(sql),
                  " LIMIT ?2 OFFSET ?3");

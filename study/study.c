@@ -653,7 +653,7 @@ static int store_front_panels(struct store *store, const struct run_info *run,
 {
     *stopped = 0;
     /* Only the front is read (by the rank index), not the whole run. */
-    struct option_query q = {run->id, 1, NULL, NULL, 0, 0, 0};
+    struct option_query q = {run->id, 1, NULL, NULL, 0, 0, 0, 0};
     struct option_row *rows = NULL;
     size_t n = 0, nfront = 0;
     int rc = store_run_setting_check(run, RUN_SETTING_STORE_PANELS, err);
@@ -1026,6 +1026,8 @@ static int surface_read(const struct study_request *request,
         return facet_error_about(err, FACET_SETTING_MODULE, FACET_EINPUT,
             "%s: a project of %zu surfaces (its objects or groups) needs a "
             "panel module", request->surface_path, named);
+    if (rc == FACET_OK && !request->units_named)
+        rc = surface_units_check(surface, err);
     if (rc == FACET_OK) {
         study_stage(hooks, "preparing the surface (UV, curvature)");
         rc = surface_prepare_stoppable(surface, request->flip_normals,

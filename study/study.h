@@ -61,6 +61,11 @@ struct study_request {
     const struct surface_grid *overrides;
     size_t noverrides;
     struct mesh_options mesh;        /* units, object, group */
+    int units_named;                 /* the user named mesh.units: a single
+                                        surface of no building's size is
+                                        then read as asked (with its
+                                        warning), not refused
+                                        (surface_units_check) */
     int flip_normals;
     enum param_method uv;            /* asked for; PARAM_AUTO: the first
                                         that applies */

@@ -682,7 +682,7 @@ static int load_points(struct store *store, int64_t run,
 {
     struct run_info info;
     int rc = store_run_get(store, run, &info, err);
-    struct option_query q = {run, r->pareto_only, r->where, NULL, 0, 0, 0};
+    struct option_query q = {run, r->pareto_only, r->where, NULL, 0, 0, 0, 0};
     if (rc == FACET_OK)
         rc = r->where || r->pareto_only
                  ? store_options_query_rows(store, &q, &p->rows, &p->n, err)

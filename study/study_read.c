@@ -43,9 +43,9 @@ int study_read_hashed(const char *const *paths, size_t npaths,
 {
     struct read_job job[2] = {
         {paths, npaths, digest, NULL, NULL, stop, FACET_OK,
-         {0, FACET_SETTING_NONE, ""}},
+         {0, FACET_SETTING_NONE, "", ""}},
         {paths, npaths, NULL, parse, context, stop, FACET_OK,
-         {0, FACET_SETTING_NONE, ""}},
+         {0, FACET_SETTING_NONE, "", ""}},
     };
     parallel_run(job, sizeof *job, 2, read_run);
     /* A stop heard by either job is the answer: the other's error, if

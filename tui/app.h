@@ -16,6 +16,7 @@
 #include <time.h>
 
 #include "columns.h"
+#include "history.h"
 #include "input.h"
 #include "store/store.h"
 #include "table_model.h"
@@ -88,6 +89,8 @@ struct tui_app {
     int help_open, help_top;
     struct tui_job *job;          /* NULL when no run works */
     struct tui_column_set columns;/* the options table's, for the session */
+    struct tui_history filters;   /* the filter line's texts (the table's
+                                     and the scatter's), for the session */
     int confirm_quit;             /* "Quit? (y/n)" is asked */
     struct tui_mouse mouse;       /* the event of the last KEY_MOUSE */
     int fkey_x[10], fkey_width[10];  /* the bar as drawn (clicks on it) */
@@ -125,6 +128,19 @@ void tui_error(struct tui_app *app, const char *fmt, ...)
 /* Shows label and input in the status row (input NULL: no prompt). */
 void tui_prompt(struct tui_app *app, const char *label,
                 const struct tui_input *input);
+
+/* Opens the filter prompt on input for model: on the text last entered
+ * when it was refused (a mistyped filter, to be mended), else on model's
+ * filter; Up and Down then browse app->filters (tui_filter_history_key).
+ * The options table's and the scatter's '/'. */
+void tui_filter_open(struct tui_app *app, struct tui_input *input,
+                     const struct table_model *model);
+
+/* Up or Down while a filter prompt is open: input takes the older or the
+ * newer text of app->filters. Returns 1 when key was one of them (handled
+ * here), 0 otherwise. */
+int tui_filter_history_key(struct tui_app *app, struct tui_input *input,
+                           int key);
 
 /* Feeds key to input, the open prompt's text: on Enter or Esc the prompt
  * closes (tui_prompt(app, NULL, NULL)) and *open becomes 0. Returns

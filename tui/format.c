@@ -110,7 +110,48 @@ const char *tui_column_unit(const struct tui_column *c)
 void tui_fmt_value(char *out, size_t size, const struct quantity *c,
                    double value)
 {
-    quantity_text(out, size, c, value, c->decimals);
+    const char *words = strcmp(c->name, "crowding") == 0
+                            ? tui_crowding_words(value) : NULL;
+    if (words != NULL)
+        snprintf(out, size, "%s", words);
+    else
+        quantity_text(out, size, c, value, c->decimals);
+}
+
+const char *tui_crowding_words(double crowding)
+{
+    return isinf(crowding) && crowding > 0 ? "boundary" : NULL;
+}
+
+void tui_fmt_violation(char *out, size_t size, const struct option_totals *t,
+                       const struct run_info *run)
+{
+    size_t used = 0;
+    out[0] = '\0';
+    if (classify_area_excess(t->max_panel_area, run->max_panel_area) > 0)
+        used += (size_t)snprintf(out + used, size - used,
+                                 "panel %.2f m^2 > %.2f m^2 limit",
+                                 t->max_panel_area, run->max_panel_area);
+    if (t->slivers != TOTALS_UNKNOWN && t->slivers > 0 && used < size)
+        used += (size_t)snprintf(out + used, size - used,
+                                 "%s%zu sliver%s < %.2f m limit",
+                                 used ? ", " : "", t->slivers,
+                                 t->slivers == 1 ? "" : "s",
+                                 run->min_panel_width);
+    if (t->gaps_over != TOTALS_UNKNOWN && t->gaps_over > 0 && used < size)
+        used += (size_t)snprintf(out + used, size - used,
+                                 "%s%zu gap%s > %g mm limit",
+                                 used ? ", " : "", t->gaps_over,
+                                 t->gaps_over == 1 ? "" : "s",
+                                 run->max_gap_mm);
+    if (t->kinks_over != TOTALS_UNKNOWN && t->kinks_over > 0 && used < size)
+        used += (size_t)snprintf(out + used, size - used,
+                                 "%s%zu kink%s > %g deg limit",
+                                 used ? ", " : "", t->kinks_over,
+                                 t->kinks_over == 1 ? "" : "s",
+                                 run->max_kink_deg);
+    if (used == 0)
+        snprintf(out, size, "over a limit");
 }
 
 const struct quantity *tui_shown_column(const struct quantity *c,

@@ -80,6 +80,16 @@ void tui_fmt_cell(char *out, size_t size, const struct tui_column *c,
 void tui_fmt_cost_sum(char *out, size_t size, const struct option_totals *t,
                       int width);
 
+/* Which limits of run an infeasible option's totals t break, in short
+ * words into out: "panel 2.05 m^2 > 1.92 m^2 limit, 3 gaps > 2 mm
+ * limit"; "over a limit" when the totals do not say which. */
+void tui_fmt_violation(char *out, size_t size, const struct option_totals *t,
+                       const struct run_info *run);
+
+/* A crowding distance in words where it has no number: "boundary" for
+ * an end of a front (infinite); NULL when the number says it. */
+const char *tui_crowding_words(double crowding);
+
 /* fields[0 .. n) joined by " | " into out, in at most width display
  * characters (UTF-8 counted as characters): whole fields dropped from the
  * end until the rest fits, so that no number loses its unit and no word

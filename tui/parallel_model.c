@@ -81,13 +81,18 @@ static double round_edge(const struct pc_state *st, int axis, double value,
 static void settle(struct pc_state *st, int axis)
 {
     struct pc_brush *b = &st->brush[axis];
-    if (b->lo < st->min[axis])
+    if (b->lo < st->min[axis]) {
         b->lo = st->min[axis];
-    if (b->hi > st->max[axis])
+        b->lo_open = 0;
+    }
+    if (b->hi > st->max[axis]) {
         b->hi = st->max[axis];
+        b->hi_open = 0;
+    }
     if (b->lo > b->hi)
         b->lo = b->hi;
-    if (b->lo <= st->min[axis] && b->hi >= st->max[axis])
+    if (b->lo <= st->min[axis] && !b->lo_open && b->hi >= st->max[axis] &&
+        !b->hi_open)
         b->active = 0;
 }
 
@@ -102,6 +107,10 @@ void pc_brush_move(struct pc_state *st, int axis, int edge, int steps)
         b->hi = st->max[axis];
     }
     double step = pc_step(st, axis) * steps;
+    if (edge == 0)
+        b->lo_open = 0;
+    else
+        b->hi_open = 0;
     if (edge == 0) {
         b->lo = round_edge(st, axis, b->lo + step, 0);
         if (b->lo > b->hi)
@@ -122,6 +131,7 @@ void pc_brush_set(struct pc_state *st, int axis, double lo, double hi)
     b->active = 1;
     b->lo = lo < hi ? lo : hi;
     b->hi = lo < hi ? hi : lo;
+    b->lo_open = b->hi_open = 0;
     settle(st, axis);
 }
 
@@ -244,15 +254,15 @@ int pc_filter_text(const struct pc_state *st, char *out, size_t size,
         const struct pc_brush *b = &st->brush[a];
         if (!b->active)
             continue;
-        if (b->lo > st->min[a]) {
-            snprintf(term, sizeof term, "%s >= %.15g", pc_axis_column(st, a),
-                     b->lo);
+        if (b->lo > st->min[a] || b->lo_open) {
+            snprintf(term, sizeof term, "%s %s %.15g", pc_axis_column(st, a),
+                     b->lo_open ? ">" : ">=", b->lo);
             if (append(out, size, &used, term))
                 return too_long(err);
         }
-        if (b->hi < st->max[a]) {
-            snprintf(term, sizeof term, "%s <= %.15g", pc_axis_column(st, a),
-                     b->hi);
+        if (b->hi < st->max[a] || b->hi_open) {
+            snprintf(term, sizeof term, "%s %s %.15g", pc_axis_column(st, a),
+                     b->hi_open ? "<" : "<=", b->hi);
             if (append(out, size, &used, term))
                 return too_long(err);
         }
@@ -288,7 +298,11 @@ static int read_edge(struct pc_state *st, const char *text, size_t n)
     if (a < 0 || !has_range(st, a) ||
         parse_number(number, number + strlen(number), &v) != 0)
         return -1;
-    int lower = strcmp(op, ">=") == 0, upper = strcmp(op, "<=") == 0;
+    /* an edge each: "<" and ">" exclude it, "=" is both, closed */
+    int equal = strcmp(op, "=") == 0;
+    int lower = equal || strcmp(op, ">=") == 0 || strcmp(op, ">") == 0;
+    int upper = equal || strcmp(op, "<=") == 0 || strcmp(op, "<") == 0;
+    int open = strcmp(op, "<") == 0 || strcmp(op, ">") == 0;
     if (!lower && !upper)
         return -1;
     struct pc_brush *b = &st->brush[a];
@@ -296,11 +310,16 @@ static int read_edge(struct pc_state *st, const char *text, size_t n)
         b->active = 1;
         b->lo = st->min[a];
         b->hi = st->max[a];
+        b->lo_open = b->hi_open = 0;
     }
-    if (lower && v > b->lo)
+    if (lower && (v > b->lo || (v == b->lo && open))) {
         b->lo = v;
-    if (upper && v < b->hi)
+        b->lo_open = open;
+    }
+    if (upper && (v < b->hi || (v == b->hi && open))) {
         b->hi = v;
+        b->hi_open = open;
+    }
     return 0;
 }
 

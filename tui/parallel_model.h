@@ -29,7 +29,10 @@ extern const struct pc_axis pc_axes[PC_AXES];
 
 struct pc_brush {
     int active;          /* the axis filters */
-    double lo, hi;       /* inclusive; lo <= hi */
+    double lo, hi;       /* lo <= hi */
+    int lo_open, hi_open;  /* the edge itself excluded: a filter's strict
+                              "cost < 2M" read back; an edge moved or
+                              typed includes itself */
 };
 
 /* The axes' ranges, their brushes and what else the filter says. */

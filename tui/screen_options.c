@@ -56,7 +56,10 @@ static const struct tui_key_help options_help[] = {
     {"S", "secondary key: the cursor's column (asc, desc, off)"},
     {"< / >", "sort by the previous / next column"},
     {"I", "invert the primary sort direction"},
+    {"F", "sorted, the feasible options first (the default) or mixed in "
+          "by the keys alone (toggle); an infeasible row is dim, x in P"},
     {"/, F3", "filter, e.g. cost < 1.6M and dp_area <= 900 or pareto"},
+    {"  Up/Down", "  (filter line) the filters entered before"},
     {"p, F4", "Pareto-optimal options only (toggle)"},
     {"K", "jump to the knee option"},
     {"n / N", "next / previous Pareto-optimal option"},
@@ -110,14 +113,18 @@ static int is_marked(const struct options_screen *s, int64_t number)
 
 /* --- drawing --- */
 
-/* "cost asc, then planarity desc" */
-static void sort_text(const struct options_screen *s, char *out, size_t size)
+/* "feasible first, cost asc, then planarity desc" (feasible_first: the
+ * model's, when it is to be said) */
+static void sort_text(const struct options_screen *s, int feasible_first,
+                      char *out, size_t size)
 {
     if (s->nkeys == 0) {
         snprintf(out, size, "number asc");
         return;
     }
     size_t n = 0;
+    if (feasible_first)
+        n += (size_t)snprintf(out, size, "feasible first, ");
     for (int k = 0; k < s->nkeys && n < size; k++)
         n += (size_t)snprintf(out + n, size - n, "%s%s %s",
                               k ? ", then " : "", s->keys[k].column,
@@ -143,9 +150,13 @@ static void draw_header(struct options_screen *s, struct tui_app *app,
         int c = s->vis[v];
         const struct tui_column *col = &tui_option_columns[c];
         int key = key_of(s, c);
+        /* feasibility leads a sort: the ok column is its key, down */
+        int leads = key < 0 && s->nkeys > 0 &&
+                    s->model.browse.feasible_first &&
+                    strcmp(col->column, "feasible") == 0;
         attr_t attr = c == s->column ? tui_attr(ROLE_COLUMN)
-                      : key >= 0 ? tui_attr(ROLE_SORTED)
-                                 : tui_attr(ROLE_HEADER);
+                      : key >= 0 || leads ? tui_attr(ROLE_SORTED)
+                                          : tui_attr(ROLE_HEADER);
         tui_fill(y, x, col->width, attr);
         tui_fill(y + 1, x, col->width, attr);
         const char *unit = tui_column_unit(col);
@@ -170,6 +181,8 @@ static void draw_header(struct options_screen *s, struct tui_app *app,
                                             : app->glyphs->up);
             if (key == 1)
                 tui_put(y + 1, at + 1, 1, attr, "2");
+        } else if (leads) {
+            tui_put(y + 1, x + col->width - 1, 1, attr, app->glyphs->down);
         }
         x += col->width + 1;
     }
@@ -178,7 +191,12 @@ static void draw_header(struct options_screen *s, struct tui_app *app,
 static void draw_row(struct options_screen *s, struct tui_app *app, int y,
                      int width, const struct option_row *o, int selected)
 {
-    attr_t base = selected ? tui_attr(ROLE_SELECTION) : A_NORMAL;
+    /* an infeasible option's row is dim, and its P column says it where
+     * the terminal shows no dim (vt100) */
+    int infeasible = !o->totals.feasible;
+    attr_t base = selected     ? tui_attr(ROLE_SELECTION)
+                  : infeasible ? tui_attr(ROLE_INFEASIBLE)
+                               : A_NORMAL;
     if (selected)
         tui_fill(y, 0, width, base);
     int x = 0;
@@ -187,15 +205,13 @@ static void draw_row(struct options_screen *s, struct tui_app *app, int y,
         int c = s->vis[v];
         const struct tui_column *col = &tui_option_columns[c];
         tui_fmt_cell(cell, sizeof cell, col, o);
-        attr_t attr = base;
-        if (!selected && !col->pareto_mark && tui_column_of(col)->yes_no &&
-            !o->totals.feasible)
-            attr = tui_attr(ROLE_DIM);
-        tui_put(y, x, width - x, attr, cell);
+        tui_put(y, x, width - x, base, cell);
         if (col->pareto_mark && o->rank == 1)
             tui_put(y, x, 1, selected ? base : tui_attr(o->knee ? ROLE_KNEE
                                                                 : ROLE_PARETO),
                     o->knee ? app->glyphs->knee : app->glyphs->pareto);
+        else if (col->pareto_mark && infeasible)
+            tui_put(y, x, 1, base, app->glyphs->infeasible);
         if (v == 0 && is_marked(s, o->number))
             tui_put(y, x, 1, selected ? base : tui_attr(ROLE_MARKED),
                     app->glyphs->mark);
@@ -203,8 +219,11 @@ static void draw_row(struct options_screen *s, struct tui_app *app, int y,
     }
 }
 
-/* The selected option's metrics as short lines for the bottom pane. */
-static int detail_lines(const struct option_row *o, int width,
+/* The selected option's metrics as short lines for the bottom pane: an
+ * infeasible one names the limits it breaks (run's), the fields before
+ * them dropped (the threshold, then the rank) where the line is short. */
+static int detail_lines(const struct option_row *o,
+                        const struct run_info *run, int width,
                         char lines[][160])
 {
     const struct option_totals *t = &o->totals;
@@ -218,11 +237,29 @@ static int detail_lines(const struct option_row *o, int width,
                  "its surfaces", (long long)o->number, grid, o->threshold_mm,
                  o->rank, o->knee ? " (knee)" : "",
                  t->feasible ? "feasible" : "infeasible");
-    else
-        snprintf(lines[0], 160, "No. %lld: %s, t %.2f mm, rank %d%s, %s, "
-                 "largest panel %.2f m^2", (long long)o->number, grid,
-                 o->threshold_mm, o->rank, o->knee ? " (knee)" : "",
-                 t->feasible ? "feasible" : "infeasible", t->max_panel_area);
+    else if (t->feasible)
+        snprintf(lines[0], 160, "No. %lld: %s, t %.2f mm, rank %d%s, "
+                 "feasible, largest panel %.2f m^2", (long long)o->number,
+                 grid, o->threshold_mm, o->rank, o->knee ? " (knee)" : "",
+                 t->max_panel_area);
+    if (isnan(o->module_w) && !t->feasible) {
+        char broken[120], threshold[32], rank[32];
+        tui_fmt_violation(broken, sizeof broken, t, run);
+        snprintf(threshold, sizeof threshold, ", t %.2f mm",
+                 o->threshold_mm);
+        snprintf(rank, sizeof rank, ", rank %d%s", o->rank,
+                 o->knee ? " (knee)" : "");
+        for (int drop = 0; drop < 3; drop++) {
+            char line[320];
+            int n = snprintf(line, sizeof line, "No. %lld: %s%s%s, "
+                             "infeasible: %s", (long long)o->number, grid,
+                             drop < 1 ? threshold : "", drop < 2 ? rank : "",
+                             broken);
+            snprintf(lines[0], 160, "%.159s", line);
+            if (n < width)
+                break;
+        }
+    }
     tui_fmt_cost_sum(lines[1], 160, t, width);
     /* Counts and areas both with separators, each area in brackets with
      * its unit: "FP 702 425.2" read as one number. */
@@ -246,17 +283,37 @@ static int detail_lines(const struct option_row *o, int width,
     for (int k = 0; k <= TYPE_COUNT; k++)
         fields[k] = field[k];
     tui_fmt_list(lines[2], 160, width, fields, TYPE_COUNT + 1, ": ", ", ");
-    snprintf(lines[3], 160, "planarity %.4f m, max deviation %.2f mm, "
-             "P_dist %.3g m^4, crowding %.3g", t->planarity,
-             t->max_deviation * 1000, t->p_dist, o->crowding);
+    char crowding[32];
+    const char *words = tui_crowding_words(o->crowding);
+    if (words != NULL)
+        snprintf(crowding, sizeof crowding, "%s", words);
+    else
+        snprintf(crowding, sizeof crowding, "%.3g", o->crowding);
+    /* P_dist goes where the line is short, never a cut word */
+    int n = snprintf(lines[3], 160, "planarity %.4f m, max deviation %.2f "
+                     "mm, P_dist %.3g m^4, crowding %s", t->planarity,
+                     t->max_deviation * 1000, t->p_dist, crowding);
+    if (n >= width)
+        snprintf(lines[3], 160, "planarity %.4f m, max deviation %.2f mm, "
+                 "crowding %s", t->planarity, t->max_deviation * 1000,
+                 crowding);
     return 4;
 }
 
-static void draw_detail_side(const struct option_row *o, int y, int x,
+static void draw_detail_side(const struct option_row *o,
+                             const struct run_info *run, int y, int x,
                              int height, int width)
 {
     tui_put(y, x, width, tui_attr(ROLE_HEADER), " Selected option");
     tui_fill(y, x + 16, width - 16, tui_attr(ROLE_HEADER));
+    if (!o->totals.feasible && height > 1) {
+        /* the limits it breaks, before its metrics */
+        char broken[120];
+        tui_fmt_violation(broken, sizeof broken, &o->totals, run);
+        tui_putf(y + 1, x, width, A_NORMAL, " infeasible: %s", broken);
+        y++;
+        height--;
+    }
     for (int k = 0; k < tui_metric_column_count && k + 1 < height; k++) {
         const struct quantity *c = tui_shown_column(
             quantity_named(tui_metric_columns[k]), o);
@@ -361,7 +418,7 @@ static void options_draw(struct tui_screen *base, struct tui_app *app,
     columns_update(s, app);
     draw_title(s, width);
     char sort[160];
-    sort_text(s, sort, sizeof sort);
+    sort_text(s, s->model.browse.feasible_first, sort, sizeof sort);
     char shown[32];
     table_model_count_text(m, shown, sizeof shown);
     /* the scroll position first: "row 12 of 336" (the count, "2,000+"
@@ -372,8 +429,13 @@ static void options_draw(struct tui_screen *base, struct tui_app *app,
     else
         snprintf(position, sizeof position, "%s shown", shown);
     int room = width;
-    int x = tui_putf(1, 0, room, A_NORMAL, " %s  sort %s", position, sort);
     const char *where = m->filter ? filter_text(m->filter) : "";
+    /* "feasible first" goes where it would push the filter off the line
+     * (the ok column's header still shows it as the leading key) */
+    if ((int)(strlen(position) + strlen(sort) + strlen(where) + 24 +
+              (m->browse.pareto_only ? 13 : 0)) > width)
+        sort_text(s, 0, sort, sizeof sort);
+    int x = tui_putf(1, 0, room, A_NORMAL, " %s  sort %s", position, sort);
     x += tui_putf(1, x, room - x, where[0] ? tui_attr(ROLE_PARETO)
                                            : A_NORMAL,
                   "  filter %s", where[0] ? where : "none");
@@ -414,11 +476,11 @@ static void options_draw(struct tui_screen *base, struct tui_app *app,
     if (o == NULL)
         return;
     if (side) {
-        draw_detail_side(o, 2, table_width + 1, height - 2,
+        draw_detail_side(o, &s->run, 2, table_width + 1, height - 2,
                          width - table_width - 1);
     } else if (pane) {
         char lines[4][160];
-        int n = detail_lines(o, width - 1, lines);
+        int n = detail_lines(o, &s->run, width - 1, lines);
         int y = height - pane;
         tui_fill(y, 0, width, tui_attr(ROLE_DIM));
         tui_put(y, 0, width, tui_attr(ROLE_HEADER), " Selected option ");
@@ -618,10 +680,13 @@ static enum tui_result export_marks_key(struct options_screen *s,
 static enum tui_result filter_key(struct options_screen *s,
                                   struct tui_app *app, int key)
 {
+    if (tui_filter_history_key(app, &s->filter, key))
+        return RESULT_HANDLED;
     if (tui_prompt_key(app, &s->filter, &s->editing, key) != INPUT_DONE)
         return RESULT_HANDLED;
     struct facet_error err;
     int rc = table_model_set_filter(&s->model, s->filter.text, &err);
+    tui_history_add(&app->filters, s->filter.text, rc != FACET_OK);
     report(app, rc, &err);
     if (rc == FACET_OK) {
         char shown[32];
@@ -743,6 +808,16 @@ static enum tui_result options_key(struct tui_screen *base,
         report(app, table_model_set_pareto(m, !m->browse.pareto_only, &err),
                &err);
         return RESULT_HANDLED;
+    case 'F': {
+        int on = !m->browse.feasible_first;
+        int rc = table_model_set_feasible_first(m, on, &err);
+        report(app, rc, &err);
+        if (rc == FACET_OK)
+            tui_status(app, on ? "sorted, the feasible options come first"
+                               : "sorted by the keys alone, the infeasible "
+                                 "options mixed in (F: feasible first)");
+        return RESULT_HANDLED;
+    }
     case 'K':
         jump_knee(s, app);
         return RESULT_HANDLED;
@@ -838,10 +913,7 @@ static enum tui_result options_key(struct tui_screen *base,
         break;
     case ACTION_SEARCH:
         s->editing = 1;
-        tui_input_set(&s->filter, m->filter ? filter_text(m->filter) : "");
-        if (s->filter.text[0] == '\0' && s->filter.length == 0)
-            tui_input_set(&s->filter, "");
-        tui_prompt(app, "Filter:", &s->filter);
+        tui_filter_open(app, &s->filter, m);
         break;
     case ACTION_NEXT: next_pareto(s, app, 1); break;
     case ACTION_PREVIOUS: next_pareto(s, app, -1); break;

@@ -58,7 +58,8 @@ static const struct tui_key_help parallel_help[] = {
     {"j/k, Up/Down", "select the next / previous option (table order)"},
     {"g/G", "select the first / last option"},
     {"p, F4", "Pareto-optimal options only (toggle)"},
-    {"c, F2", "show / hide the options the filter hides (dimmed)"},
+    {"c, F2", "show / hide the options the filter hides (dimmed; "
+              "dotted without colours)"},
     {"Enter, m, F8", "panel map of the selected option"},
     {"r", "reload from the database"},
     {"(brushes)", "are the table's filter: q shows the filtered table"},
@@ -294,7 +295,13 @@ static void parallel_draw(struct tui_screen *base, struct tui_app *app,
                 if (c.level[k] == 0)
                     continue;
                 char glyph[4];
-                if (app->utf8)
+                if (c.level[k] == LEVEL_CONTEXT && !app->colour)
+                    /* without colours dim may not show (vt100): the
+                     * options the filter hides are dotted, so that a
+                     * filter always changes the picture */
+                    snprintf(glyph, sizeof glyph, "%s",
+                             app->glyphs->point[0]);
+                else if (app->utf8)
                     pc_braille(c.dots[k], glyph);
                 else
                     snprintf(glyph, sizeof glyph, "%c", c.slope[k]);
@@ -357,8 +364,10 @@ static void parallel_draw(struct tui_screen *base, struct tui_app *app,
         axis_label(lo, sizeof lo, &s->st, s->axis, b->lo, 20);
         axis_label(hi, sizeof hi, &s->st, s->axis, b->hi, 20);
         tui_putf(y, 0, width, tui_attr(ROLE_MARKED),
-                 " %s %s: brush %s .. %s %s  ([ ] { } move, e types, x "
-                 "clears)", cur->heading, cur->unit, lo, hi, cur->unit);
+                 " %s %s: brush %s%s .. %s%s %s  ([ ] { } move, e types, x "
+                 "clears)", cur->heading, cur->unit,
+                 b->lo_open ? "over " : "", lo, b->hi_open ? "under " : "",
+                 hi, cur->unit);
     } else {
         tui_putf(y, 0, width, A_NORMAL,
                  " %s %s: no brush  ([ raises the low edge, ] lowers the "

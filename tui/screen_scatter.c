@@ -78,7 +78,8 @@ static const struct tui_key_help scatter_help[] = {
     {"Space", "mark / unmark the option (the table's marks, for Compare)"},
     {"f", "show / hide the two-metric Pareto front line"},
     {"p, F4", "Pareto-optimal options only (shared with the table)"},
-    {"/, F3", "filter (shared with the table)"},
+    {"/, F3", "filter (shared with the table; Up/Down: the filters "
+              "entered before)"},
     {"K", "the knee option"},
     {"e, F9", "write the scatter as SVG: these axes, the options shown "
               "(filter, Pareto only); end the name with ! to overwrite"},
@@ -484,13 +485,18 @@ static enum tui_result scatter_key(struct tui_screen *base,
         return RESULT_HANDLED;
     }
     if (s->editing) {
+        if (tui_filter_history_key(app, &s->filter, key))
+            return RESULT_HANDLED;
         enum tui_input_result r = tui_input_key(&s->filter, key);
         if (r == INPUT_DONE || r == INPUT_CANCEL) {
             s->editing = 0;
             tui_prompt(app, NULL, NULL);
             if (r == INPUT_DONE) {
-                if (table_model_set_filter(s->model, s->filter.text, &err) !=
-                    FACET_OK)
+                int rc = table_model_set_filter(s->model, s->filter.text,
+                                                &err);
+                tui_history_add(&app->filters, s->filter.text,
+                                rc != FACET_OK);
+                if (rc != FACET_OK)
                     tui_error(app, "filter: %s", err.message);
                 else
                     load(s, app);
@@ -584,9 +590,7 @@ static enum tui_result scatter_key(struct tui_screen *base,
     case ACTION_DOWN: dy = -1; break;
     case ACTION_SEARCH:
         s->editing = 1;
-        tui_input_set(&s->filter, s->model->filter
-                                      ? filter_text(s->model->filter) : "");
-        tui_prompt(app, "Filter:", &s->filter);
+        tui_filter_open(app, &s->filter, s->model);
         return RESULT_HANDLED;
     default:
         return RESULT_UNHANDLED;

@@ -29,6 +29,7 @@ int table_model_open(struct table_model *m, struct store *store,
     if (rc != FACET_OK)
         return rc;
     m->project = store_run_is_project(&info);
+    m->browse.feasible_first = 1;
     m->rows = malloc(TABLE_WINDOW * sizeof *m->rows);
     if (m->rows == NULL)
         return facet_error_set(err, FACET_EWORK, "out of memory");
@@ -664,6 +665,17 @@ int table_model_set_pareto(struct table_model *m, int on,
         keep = *selection;
     m->browse.pareto_only = on;
     return reload(m, selection ? &keep : NULL, 0, 1, err);
+}
+
+int table_model_set_feasible_first(struct table_model *m, int on,
+                                   struct facet_error *err)
+{
+    const struct option_row *selection = table_model_selection(m);
+    struct option_row keep;
+    if (selection)
+        keep = *selection;
+    m->browse.feasible_first = on;
+    return reload(m, selection ? &keep : NULL, 0, 0, err);
 }
 
 int table_model_set_sort(struct table_model *m, const struct browse_key *keys,

@@ -125,6 +125,12 @@ int table_model_set_filter(struct table_model *m, const char *text,
 int table_model_set_pareto(struct table_model *m, int on,
                            struct facet_error *err);
 
+/* Sorted (keys given), puts every feasible option before every other
+ * one (on, as the model opens: the ranks do so too) or sorts by the keys
+ * alone (off); keeps the selection as set_filter does. */
+int table_model_set_feasible_first(struct table_model *m, int on,
+                                   struct facet_error *err);
+
 /* Sorts by keys[0..n) (then number); keeps the selected option selected.
  * Unknown columns are FACET_EINPUT and leave the model as it was. */
 int table_model_set_sort(struct table_model *m, const struct browse_key *keys,

@@ -48,6 +48,7 @@ static const struct role_style styles[ROLE_COUNT] = {
     [ROLE_SCALE0 + 1] = {COLOR_CYAN, -1, 0, A_NORMAL},
     [ROLE_SCALE0 + 2] = {COLOR_GREEN, -1, A_BOLD, A_NORMAL},
     [ROLE_SCALE0 + 3] = {COLOR_YELLOW, -1, A_BOLD, A_BOLD},
+    [ROLE_INFEASIBLE] = {-1, -1, A_DIM, A_DIM},
 };
 
 static attr_t attrs[ROLE_COUNT];
@@ -82,12 +83,12 @@ enum tui_role tui_type_role(int type)
 static const struct tui_glyphs utf8_glyphs = {
     "\u25c6", "\u2605", "\u2713", "\u25b2", "\u25bc",
     {"\u00b7", "\u2022", "\u25cf"}, "\u2500", "\u2500", "\u2502", "\u2514",
-    "\u2588", "\u2591", "\u00b7", "\u2713", "\u2717",
+    "\u2588", "\u2591", "\u00b7", "\u2713", "\u2717", "\u2717",
 };
 
 static const struct tui_glyphs ascii_glyphs = {
     "*", "K", "+", "^", "v", {".", "o", "O"}, "-", "-", "|", "+", "#", ".",
-    " ", "v", "x",
+    " ", "v", "x", "x",
 };
 
 int tui_terminal_utf8(const char *codeset, const char *term)

@@ -30,7 +30,9 @@ enum tui_role {
     ROLE_BETTER,       /* a difference for the better (Compare) */
     ROLE_WORSE,        /* ... for the worse */
     ROLE_SCALE0,       /* 4 levels of a colour scale, low to high */
-    ROLE_COUNT = ROLE_SCALE0 + 4
+    ROLE_INFEASIBLE = ROLE_SCALE0 + 4,  /* an infeasible option's row:
+                                           dim, with or without colours */
+    ROLE_COUNT
 };
 
 /* Sets the roles up for this terminal: colours when colour is non-zero
@@ -56,6 +58,8 @@ struct tui_glyphs {
     const char *gauge_full, *gauge_empty;
     const char *empty;      /* a grid cell with no panel */
     const char *better, *worse;  /* a difference's direction (Compare) */
+    const char *infeasible; /* an infeasible option (its row is dim too,
+                               which some terminals do not show) */
 };
 
 /* The glyphs for a UTF-8 locale (utf8 non-zero) or plain ASCII. */

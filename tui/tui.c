@@ -117,6 +117,28 @@ void tui_prompt(struct tui_app *app, const char *label,
     app->input = input;
 }
 
+void tui_filter_open(struct tui_app *app, struct tui_input *input,
+                     const struct table_model *model)
+{
+    const char *refused = tui_history_refused(&app->filters);
+    tui_input_set(input, refused ? refused
+                         : model->filter ? filter_text(model->filter) : "");
+    tui_history_open(&app->filters);
+    tui_prompt(app, "Filter:", input);
+}
+
+int tui_filter_history_key(struct tui_app *app, struct tui_input *input,
+                           int key)
+{
+    if (key != KEY_UP && key != KEY_DOWN)
+        return 0;
+    const char *text = tui_history_step(&app->filters,
+                                        key == KEY_UP ? -1 : 1, input->text);
+    if (text != NULL)
+        tui_input_set(input, text);
+    return 1;
+}
+
 enum tui_input_result tui_prompt_key(struct tui_app *app,
                                      struct tui_input *input, int *open,
                                      int key)

@@ -20,6 +20,7 @@ void facet_error_clear(struct facet_error *err)
     err->code = FACET_OK;
     err->setting = FACET_SETTING_NONE;
     err->message[0] = '\0';
+    err->value[0] = '\0';
 }
 
 static void set(struct facet_error *err, enum facet_setting setting,
@@ -28,6 +29,7 @@ static void set(struct facet_error *err, enum facet_setting setting,
     vsnprintf(err->message, sizeof err->message, fmt, ap);
     err->code = code;
     err->setting = setting;
+    err->value[0] = '\0';
 }
 
 int facet_error_set(struct facet_error *err, int code, const char *fmt, ...)
@@ -49,6 +51,20 @@ int facet_error_about(struct facet_error *err, enum facet_setting setting,
         va_start(ap, fmt);
         set(err, setting, code, fmt, ap);
         va_end(ap);
+    }
+    return code;
+}
+
+int facet_error_about_value(struct facet_error *err,
+                            enum facet_setting setting, const char *value,
+                            int code, const char *fmt, ...)
+{
+    if (err != NULL) {
+        va_list ap;
+        va_start(ap, fmt);
+        set(err, setting, code, fmt, ap);
+        va_end(ap);
+        snprintf(err->value, sizeof err->value, "%s", value);
     }
     return code;
 }

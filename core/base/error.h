@@ -67,6 +67,8 @@ struct facet_error {
     enum facet_setting setting; /* FACET_SETTING_NONE unless the message
                                    is about a setting (see above) */
     char message[1024];         /* one line, no trailing newline */
+    char value[16];             /* the value the setting should take, when
+                                   the message knows it ("mm"), else "" */
 };
 
 /* Clears err to FACET_OK with an empty message. err may be NULL. */
@@ -82,5 +84,12 @@ int facet_error_set(struct facet_error *err, int code, const char *fmt, ...)
 int facet_error_about(struct facet_error *err, enum facet_setting setting,
                       int code, const char *fmt, ...)
     __attribute__((format(printf, 4, 5)));
+
+/* facet_error_about, with the value the setting should take (at most 15
+ * bytes), for the front-end to name with its flag. */
+int facet_error_about_value(struct facet_error *err,
+                            enum facet_setting setting, const char *value,
+                            int code, const char *fmt, ...)
+    __attribute__((format(printf, 5, 6)));
 
 #endif

@@ -27,6 +27,12 @@ static inline double units_mm(double metres)
     return metres * 1000;
 }
 
+/* metres as kilometres: how a surface read in the wrong units is said. */
+static inline double units_km(double metres)
+{
+    return metres / 1000;
+}
+
 /* millimetres as metres. */
 static inline double units_m_of_mm(double millimetres)
 {

@@ -377,7 +377,7 @@ static int evaluate(const struct surface *surface,
     atomic_init(&plan.next, 0);
     struct evaluation_job job[PARALLEL_MAX];
     for (int k = 0; k < jobs; k++)
-        job[k] = (struct evaluation_job){&plan, FACET_OK, {0, FACET_SETTING_NONE, ""}};
+        job[k] = (struct evaluation_job){&plan, FACET_OK, {0, FACET_SETTING_NONE, "", ""}};
     parallel_run(job, sizeof job[0], jobs, evaluation_thread);
     joint_lines_free(&batch_lines);
     free(order);

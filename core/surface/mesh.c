@@ -542,23 +542,59 @@ int mesh_build_triangles(const struct obj_file *obj, enum mesh_units units,
     return FACET_OK;
 }
 
+double mesh_diagonal(const struct mesh *mesh)
+{
+    double sum = 0;
+    for (int k = 0; k < 3; k++) {
+        double d = mesh->bbox_max[k] - mesh->bbox_min[k];
+        sum += d * d;
+    }
+    return sqrt(sum);
+}
+
+static int building_sized(double diagonal)
+{
+    return diagonal >= MESH_BUILDING_MIN && diagonal <= MESH_BUILDING_MAX;
+}
+
+int mesh_units_mistaken(const struct mesh *mesh, enum mesh_units given,
+                        enum mesh_units *better)
+{
+    static const enum mesh_units all[] = {UNITS_M, UNITS_CM, UNITS_MM,
+                                          UNITS_IN, UNITS_FT};
+    double diagonal = mesh_diagonal(mesh);
+    if (!(diagonal > 0) || !isfinite(diagonal) || building_sized(diagonal))
+        return 0;
+    /* The typical building: the geometric middle of the sizes a building
+     * has, so that no unit is preferred for its name. */
+    const double typical = sqrt(MESH_BUILDING_MIN * MESH_BUILDING_MAX);
+    double best = INFINITY;
+    for (size_t k = 0; k < sizeof all / sizeof all[0]; k++) {
+        if (all[k] == given)
+            continue;
+        double d = diagonal / mesh_units_scale(given) *
+                   mesh_units_scale(all[k]);
+        double off = fabs(log(d / typical));
+        if (building_sized(d) && off < best) {
+            best = off;
+            *better = all[k];
+        }
+    }
+    return best < INFINITY;
+}
+
 int mesh_units_warning(const struct mesh *mesh, enum mesh_units units,
                        char *warning, size_t size)
 {
-    double d[3], diagonal = 0;
-    for (int k = 0; k < 3; k++) {
-        d[k] = mesh->bbox_max[k] - mesh->bbox_min[k];
-        diagonal += d[k] * d[k];
-    }
-    diagonal = sqrt(diagonal);
-    if (diagonal > 2000) {
+    double diagonal = mesh_diagonal(mesh);
+    if (diagonal > MESH_BUILDING_MAX) {
         snprintf(warning, size,
                  "the surface is %.1f km across in %s; if the file is in "
-                 "millimetres, set its units to mm", units_m_of_mm(diagonal),
+                 "millimetres, set its units to mm", units_km(diagonal),
                  mesh_units_name(units));
         return 1;
     }
-    if (diagonal > 0 && diagonal < 0.05) {
+    if (diagonal > 0 && diagonal < MESH_BUILDING_MIN) {
         snprintf(warning, size,
                  "the surface is %.1f mm across in %s; if the file is in "
                  "metres, set its units to m", units_mm(diagonal),

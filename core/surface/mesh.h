@@ -113,6 +113,27 @@ int mesh_build_triangles(const struct obj_file *obj, enum mesh_units units,
                          const struct facet_stop *stop, struct mesh *out,
                          struct facet_error *err);
 
+/* The sizes a building has, by the diagonal of its bounding box (m): a
+ * surface outside them was most likely read in the wrong units (a 50 km
+ * roof is a 50 m one in millimetres, a 4 mm facade a 4 m one in
+ * metres). The tallest towers and the longest airport roofs stay
+ * within the upper bound, a model of a small pavilion at 1:100 within
+ * the lower one. */
+#define MESH_BUILDING_MIN 0.05
+#define MESH_BUILDING_MAX 2000.0
+
+/* The diagonal of mesh's bounding box (m). */
+double mesh_diagonal(const struct mesh *mesh);
+
+/* Whether mesh, read in units given, has no building's size while another
+ * unit gives it one: returns 1 and sets *better to that unit (of several,
+ * the one that puts the diagonal nearest the geometric middle of a
+ * building's sizes), else 0: the size is a building's, or no unit mends
+ * it (a real 10 km site model), and mesh_units_warning says what it can.
+ * The caller refuses the file unless its user named the units. */
+int mesh_units_mistaken(const struct mesh *mesh, enum mesh_units given,
+                        enum mesh_units *better);
+
 /* Writes into warning (size bytes) a one-line warning when the bounding box
  * suggests the units are wrong (a 40 km facade is probably millimetres, a
  * 4 mm one probably metres), and returns 1; otherwise returns 0. */

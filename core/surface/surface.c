@@ -10,6 +10,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "core/base/units.h"
 #include "core/surface/coarse_mesh.h"
 
 static void warn(struct surface *surface, const char *fmt, ...)
@@ -71,6 +72,35 @@ static int check_mesh(struct surface *out, struct facet_error *err)
         warn(out, "%zu triangles dropped: their corners weld into fewer "
              "than three vertices", out->mesh.ndegenerate);
     return FACET_OK;
+}
+
+/* A length (m) as a designer reads it at its size: km, m or mm. */
+static void length_text(double metres, char *out, size_t size)
+{
+    if (metres >= 1000)
+        snprintf(out, size, "%.1f km", units_km(metres));
+    else if (metres >= 1)
+        snprintf(out, size, "%.1f m", metres);
+    else
+        snprintf(out, size, "%.1f mm", units_mm(metres));
+}
+
+int surface_units_check(const struct surface *s, struct facet_error *err)
+{
+    enum mesh_units better;
+    if (!mesh_units_mistaken(&s->mesh, s->units, &better))
+        return FACET_OK;
+    double diagonal = mesh_diagonal(&s->mesh);
+    char as_read[32], as_better[32];
+    length_text(diagonal, as_read, sizeof as_read);
+    length_text(diagonal / mesh_units_scale(s->units) *
+                    mesh_units_scale(better),
+                as_better, sizeof as_better);
+    return facet_error_about_value(err, FACET_SETTING_UNITS,
+        mesh_units_name(better), FACET_EINPUT,
+        "%s is %s across in %s, no building's size; in %s it is %s",
+        s->path, as_read, mesh_units_name(s->units), mesh_units_name(better),
+        as_better);
 }
 
 int surface_from_mesh(const char *path, enum mesh_units units,

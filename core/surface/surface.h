@@ -47,6 +47,13 @@ struct surface {
                                        mesh_facet_sag) */
 };
 
+/* Refuses s when its size, in the units it was read in, is no building's
+ * while another unit gives it one (mesh_units_mistaken): FACET_EINPUT
+ * about FACET_SETTING_UNITS, with that unit as the value to give, the
+ * message saying both sizes. A front-end asks it when its user did not
+ * name the units: units named are read as asked, with the warning. */
+int surface_units_check(const struct surface *s, struct facet_error *err);
+
 /* Loads path with options into *out. Returns FACET_OK, or the loader's or
  * mesh builder's error. The caller releases *out with surface_close, also
  * after a failure. */

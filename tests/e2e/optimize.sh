@@ -128,12 +128,14 @@ json_check "runs --json: the run and its settings" \
 json_check "runs --json: its results as stored" \
     "j[0][\"pareto_options\"]==$PARETO and j[0][\"knee\"]==$KNEE and j[0][\"best_cost\"] > 0 and j[0][\"finished\"] is not None"
 
+# Sorted, every feasible option comes first, each part in the order asked
+# for, --desc too (issue 32 item 19).
 listing "options --json: every option, every column, as stored" json \
     'SELECT * FROM options ORDER BY run, number'
 listing "options --pareto: the rank 1 options" json \
     'SELECT * FROM options WHERE rank = 1 ORDER BY run, number' --pareto
 listing "options --sort cost --limit 10" json \
-    'SELECT * FROM options ORDER BY cost, run, number LIMIT 10' --sort cost --limit 10
+    'SELECT * FROM options ORDER BY feasible DESC, cost, run, number LIMIT 10' --sort cost --limit 10
 # Sorted on two keys the second of which ties to rounding (planarity 0
 # against 9e-16): the order of the tie rule (docs/decisions.md: Ties), by a
 # brute force over the stored values, not SQL's exact ORDER BY.
@@ -146,7 +148,7 @@ WHERE_SQL='(cost < 1.65e6 AND dp_area <= 950) OR rank = 1'
 same "the --where below selects some but not all options, not only Pareto ones" \
     "$(sql "$DB" "SELECT count(*) > $PARETO AND count(*) < 144 FROM options WHERE $WHERE_SQL")" 1
 listing "options --where 'and/or/pareto' --sort cost: the SQL query's rows and order" json \
-    "SELECT * FROM options WHERE $WHERE_SQL ORDER BY cost, run, number" --where "$WHERE" --sort cost
+    "SELECT * FROM options WHERE $WHERE_SQL ORDER BY feasible DESC, cost, run, number" --where "$WHERE" --sort cost
 listing "options --where with the aliases u and threshold, --run 1" json \
     'SELECT * FROM options WHERE run = 1 AND nu >= 14 AND threshold_mm = 2 ORDER BY run, number' \
     --run 1 --where 'u >= 14 and threshold = 2'
@@ -154,7 +156,7 @@ listing "options --where 'not feasible' --sort rank,cost" json \
     'SELECT * FROM options WHERE NOT feasible ORDER BY rank, cost, run, number' \
     --where 'not feasible' --sort rank,cost
 listing "options --csv --sort threshold_mm,nu --desc" csv \
-    'SELECT * FROM options ORDER BY threshold_mm DESC, nu DESC, run DESC, number DESC' \
+    'SELECT * FROM options ORDER BY feasible DESC, threshold_mm DESC, nu DESC, run DESC, number DESC' \
     --sort threshold_mm,nu --desc
 # Crowding is stored NULL at a front's end (infinite): --json writes null
 # there, --csv inf, and a finite number everywhere else.

@@ -84,6 +84,9 @@ def keyed_order(rows, keys, descending):
     classes = [tie_classes([r[k] for r in rows]) for k in keys]
     key = lambda i: tuple(c[i] for c in classes) + (rows[i]["number"],)
     order = sorted(range(len(rows)), key=key, reverse=descending)
+    # every feasible option first, whatever the direction (issue 32 item
+    # 19): a stable sort keeps each part's order
+    order = sorted(order, key=lambda i: 0 if rows[i]["feasible"] == 1 else 1)
     return [rows[i]["number"] for i in order]
 
 

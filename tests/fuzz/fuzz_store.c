@@ -173,7 +173,7 @@ static void one_run(struct store *store, const struct run_info *run,
             &err);
     free(surfaces);
 
-    struct option_query q = {run->id, 0, where, "cost,dp_area", 1, SHOWN, 0};
+    struct option_query q = {run->id, 0, where, "cost,dp_area", 1, SHOWN, 0, 1};
     struct option_row *listed = NULL;
     size_t n = 0;
     if (!checked(store_options_query_rows(store, &q, &listed, &n, &err),
@@ -192,11 +192,15 @@ static void one_run(struct store *store, const struct run_info *run,
             &err);
     checked(store_run_column_range(store, run->id, "module_w", &min, &max,
                                    &err), &err);
-    struct option_browse b = {run->id, 0, NULL, {{NULL, 0}}, 0, 0};
+    struct option_browse b = {run->id, 0, NULL, {{NULL, 0}}, 0, 0, 0, 0};
     browse(store, &b);
     b = (struct option_browse){run->id, 1, where,
-                               {{"cost", 1}, {"nv", 0}}, 2, BROWSE_SCAN};
+                               {{"cost", 1}, {"nv", 0}}, 2, BROWSE_SCAN, 0,
+                               0};
     browse(store, &b);
+    b.feasible_first = 1;  /* the table's default: feasible options first */
+    browse(store, &b);
+    b.feasible_first = 0;
     b.filter_first = 1;
     b.pareto_only = 0;
     browse(store, &b);
@@ -239,7 +243,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         }
         free(runs);
         /* facet options without --run: every run's, sorted, limited. */
-        struct option_query q = {0, 1, NULL, "planarity", 0, PAGE, 1};
+        struct option_query q = {0, 1, NULL, "planarity", 0, PAGE, 1, 1};
         struct rows rows = {0, PAGE, {0}};
         checked(store_options_query(store, &q, take_option, &rows, &err),
                 &err);

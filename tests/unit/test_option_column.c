@@ -426,7 +426,7 @@ static void test_every_column_filters_and_sorts(void **state)
         assert_true(c->writer == WRITTEN_AS_KEY ||
                     (want > 0 && want < ROWS));
 
-        struct option_query q = {run, 0, f, c->name, 0, 0, 0};
+        struct option_query q = {run, 0, f, c->name, 0, 0, 0, 0};
         struct gathered g = {{0}, 0};
         if (store_options_query(store, &q, gather, &g, &err) != FACET_OK)
             fail_msg("--where '%s' --sort %s: %s", where, c->name,

@@ -306,7 +306,7 @@ static void check_query(struct store *store, sqlite3 *db, int64_t run,
     struct filter *filter = NULL;
     if (where != NULL)
         assert_int_equal(filter_compile(where, &filter, &err), FACET_OK);
-    struct option_query q = {run, pareto, filter, sort, desc, limit, offset};
+    struct option_query q = {run, pareto, filter, sort, desc, limit, offset, 0};
     struct collected got = {{0}, 0};
     assert_int_equal(store_options_query(store, &q, collect, &got, &err),
                      FACET_OK);
@@ -367,7 +367,7 @@ static void test_queries(void **state)
     check_query(store, db, 0, "not feasible", NULL, 0, 0, 0, 0,
                 "SELECT number, run FROM options WHERE NOT feasible");
 
-    struct option_query bad = {run, 0, NULL, "cost,nosuch", 0, 0, 0};
+    struct option_query bad = {run, 0, NULL, "cost,nosuch", 0, 0, 0, 0};
     struct collected got = {{0}, 0};
     assert_int_equal(store_options_query(store, &bad, collect, &got, &err),
                      FACET_EINPUT);

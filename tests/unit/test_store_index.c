@@ -184,7 +184,7 @@ static void test_dropped_then_built(void **state)
     struct filter *where;
     assert_int_equal(filter_compile("cost < 1.5e5 and nu > 3", &where, &err),
                      FACET_OK);
-    struct option_query q = {run, 0, where, "cost", 0, 0, 0};
+    struct option_query q = {run, 0, where, "cost", 0, 0, 0, 0};
     struct option_row *before, *after;
     size_t nbefore, nafter;
     assert_int_equal(store_options_query_rows(store, &q, &before, &nbefore,
@@ -366,7 +366,7 @@ static void test_plans_use_indexes(void **state)
     struct filter *where;
     assert_int_equal(filter_compile("nu = 7 and nv = 13", &where, &err),
                      FACET_OK);
-    struct option_query q = {run, 0, where, NULL, 0, 0, 0};
+    struct option_query q = {run, 0, where, NULL, 0, 0, 0, 0};
     struct option_row *rows;
     size_t n;
     assert_int_equal(store_options_query_rows(store, &q, &rows, &n, &err),

@@ -251,7 +251,7 @@ static void test_sort_by_unknown(void **state)
     for (int d = 0; d < 2; d++)
         for (size_t k = 0; k < 3; k++) {
             int64_t numbers[8] = {0};
-            struct option_query q = {1, 0, NULL, sorts[k], d, 0, 0};
+            struct option_query q = {1, 0, NULL, sorts[k], d, 0, 0, 0};
             assert_int_equal(store_options_query(store, &q, count_row,
                                                  numbers, &err), FACET_OK);
             assert_int_equal(numbers[0], 5);

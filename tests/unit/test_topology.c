@@ -178,6 +178,52 @@ static void test_welding(void **state)
     mesh_free(&m);
 }
 
+/* Issue 32 item 18: a file in millimetres read as metres is no
+ * building's size, and millimetres give it one. The sizes are the
+ * triangle's own: legs a and b, diagonal hypot(a, b). */
+static void test_units_mistaken(void **state)
+{
+    (void)state;
+    struct mesh m;
+    enum mesh_units better = UNITS_FT;
+    /* 40 x 30 m as millimetres read in metres: a 50 km diagonal. */
+    build("v 0 0 0\nv 40000 0 0\nv 0 30000 0\nf 1 2 3\n", UNITS_M, NULL,
+          NULL, &m);
+    assert_true(fabs(mesh_diagonal(&m) - 50000) < 1e-9);
+    assert_int_equal(mesh_units_mistaken(&m, UNITS_M, &better), 1);
+    assert_int_equal(better, UNITS_MM);
+    mesh_free(&m);
+    /* The same file read in millimetres: a building, nothing to say. */
+    build("v 0 0 0\nv 40000 0 0\nv 0 30000 0\nf 1 2 3\n", UNITS_MM, NULL,
+          NULL, &m);
+    assert_int_equal(mesh_units_mistaken(&m, UNITS_MM, &better), 0);
+    mesh_free(&m);
+    /* 1,500 m across in metres (a long airport roof) is a building. */
+    build("v 0 0 0\nv 1200 0 0\nv 0 900 0\nf 1 2 3\n", UNITS_M, NULL,
+          NULL, &m);
+    assert_int_equal(mesh_units_mistaken(&m, UNITS_M, &better), 0);
+    mesh_free(&m);
+    /* 5,000 km in metres: 5 km even in millimetres, the smallest unit;
+     * no unit mends it, the warning alone says it. */
+    build("v 0 0 0\nv 4e6 0 0\nv 0 3e6 0\nf 1 2 3\n", UNITS_M, NULL, NULL,
+          &m);
+    assert_int_equal(mesh_units_mistaken(&m, UNITS_M, &better), 0);
+    mesh_free(&m);
+    /* 5 mm across in metres: no unit is larger than the metre. */
+    build("v 0 0 0\nv 0.004 0 0\nv 0 0.003 0\nf 1 2 3\n", UNITS_M, NULL,
+          NULL, &m);
+    assert_int_equal(mesh_units_mistaken(&m, UNITS_M, &better), 0);
+    mesh_free(&m);
+    /* 30 m in metres read as millimetres (30 mm): metres (30 m) and feet
+     * (9.1 m) both give a building; feet land nearer the middle of a
+     * building's sizes, sqrt(0.05 * 2000) = 10 m. */
+    build("v 0 0 0\nv 24 0 0\nv 0 18 0\nf 1 2 3\n", UNITS_MM, NULL, NULL,
+          &m);
+    assert_int_equal(mesh_units_mistaken(&m, UNITS_MM, &better), 1);
+    assert_int_equal(better, UNITS_FT);
+    mesh_free(&m);
+}
+
 static void test_units_and_warning(void **state)
 {
     (void)state;
@@ -268,6 +314,7 @@ int main(void)
         cmocka_unit_test(test_uv_seam),
         cmocka_unit_test(test_welding),
         cmocka_unit_test(test_units_and_warning),
+        cmocka_unit_test(test_units_mistaken),
         cmocka_unit_test(test_selection),
         cmocka_unit_test(test_bowtie_and_nonmanifold),
     };

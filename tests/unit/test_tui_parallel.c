@@ -182,8 +182,32 @@ static void test_filter_round_trip(void **state)
     filter_free(f);
     assert_true(back.brush[COST].active && back.brush[COST].lo == 1.6e6 &&
                 back.brush[COST].hi == 1.65e6);
-    assert_string_equal(back.base, "(dp_area < 900)");  /* < is not an edge */
-    assert_false(back.brush[DP].active);
+    /* a strict comparison is an edge that excludes itself (issue 32 item
+     * 11: the help's own example, "cost < 1.6M", drew no brush), and its
+     * text says it again as it was */
+    assert_string_equal(back.base, "");
+    assert_true(back.brush[DP].active && back.brush[DP].hi == 900 &&
+                back.brush[DP].hi_open && !back.brush[DP].lo_open);
+    assert_false(back.brush[COST].lo_open || back.brush[COST].hi_open);
+    assert_int_equal(pc_filter_text(&back, text, sizeof text, &err),
+                     FACET_OK);
+    assert_string_equal(text, "dp_area < 900 and cost >= 1600000 and "
+                              "cost <= 1650000");
+    /* ">" at the axis's own minimum still excludes it; "=" is both
+     * edges, closed; an edge moved includes itself again */
+    assert_int_equal(filter_compile("cost > 1551317.2 and nu = 6", &f, &err),
+                     FACET_OK);
+    ranges(&back);
+    pc_from_filter(&back, filter_text(f));
+    filter_free(f);
+    assert_true(back.brush[U].active && back.brush[U].lo == 6 &&
+                back.brush[U].hi == 6 && !back.brush[U].lo_open &&
+                !back.brush[U].hi_open);
+    assert_true(back.brush[COST].active && back.brush[COST].lo_open);
+    pc_filter_text(&back, text, sizeof text, &err);
+    assert_non_null(strstr(text, "cost > 1551317.2"));
+    pc_brush_move(&back, COST, 0, 1);
+    assert_false(back.brush[COST].lo_open);
     /* an "or" at the top is all base, and is parenthesised when more is
      * added to it */
     assert_int_equal(filter_compile("cost <= 1.6M or pareto", &f, &err),
