@@ -328,11 +328,13 @@ static void scatter_draw(struct tui_screen *base, struct tui_app *app,
     char text[64];
     int nt = scatter_ticks(ymin, ymax, ph / 3 + 1 < 16 ? ph / 3 + 1 : 16,
                            ticks, &step);
+    int tick_row[16], ntick_rows = nt;
     for (int t = 0; t < nt; t++) {
         int r = scatter_cell(ticks[t], ymin, ymax, ph);
         tick_label(text, sizeof text, axis_name(s, 1), ticks[t], step);
-        tui_putf(2 + ph - 1 - r, 0, lw, A_NORMAL, "%*s", lw - 1, text);
-        tui_put(2 + ph - 1 - r, lw, 1, dim, "+");
+        tick_row[t] = 2 + ph - 1 - r;
+        tui_putf(tick_row[t], 0, lw, A_NORMAL, "%*s", lw - 1, text);
+        tui_put(tick_row[t], lw, 1, dim, "+");
     }
     tick_label(text, sizeof text, axis_name(s, 0), xmax, 0);
     int max_x = pw / ((int)strlen(text) + 4);
@@ -348,7 +350,20 @@ static void scatter_draw(struct tui_screen *base, struct tui_app *app,
         tui_put(3 + ph, at < lw ? lw : at, pw, A_NORMAL, text);
     }
     tui_putf(3 + ph, 0, lw, A_NORMAL, "%s", unit_of(axis_name(s, 0)));
-    tui_putf(1 + ph / 2 + 2, 0, lw, A_NORMAL, "%*s", lw - 1,
+    /* The y unit at the middle row that holds no tick's label: written
+     * over one it hid a number ("USD" over 1,200,000). */
+    int unit_row = 2 + ph / 2;
+    for (int d = 0; d < ph; d++) {
+        int row = unit_row + (d % 2 ? -(d + 1) / 2 : d / 2);
+        int taken = row < 2 || row >= 2 + ph;
+        for (int t = 0; t < ntick_rows && !taken; t++)
+            taken = tick_row[t] == row;
+        if (!taken) {
+            unit_row = row;
+            break;
+        }
+    }
+    tui_putf(unit_row, 0, lw, A_NORMAL, "%*s", lw - 1,
              unit_of(axis_name(s, 1)));
     if (s->n == 0) {
         tui_put(2 + ph / 2, lw + 4, pw - 4, tui_attr(ROLE_DIM),

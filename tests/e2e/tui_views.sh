@@ -138,6 +138,26 @@ else
 fi
 check "9: the cost axis has round ticks" '^ 1,[0-9]{2}0,000 \+'
 check "9: the planarity axis has round ticks" '^m +8 +10 +12 +14 +16 +18'
+# issue 32 item 3: the y unit never sits on a tick's label (it hid
+# 1,200,000 at 120x40), at every height from 24 to 45 rows
+hidden=""
+for h in $(seq 24 45); do
+    "${TMUX_CMD[@]}" resize-window -x 120 -y "$h"
+    i=0
+    while [ "$(screen | wc -l)" -ne "$h" ] && [ $i -lt 40 ]; do sleep 0.05; i=$((i + 1)); done
+    sleep 0.3
+    if screen | grep -qE '^ +USD \+'; then
+        hidden="$hidden $h"
+    elif ! screen | grep -qE '^ +USD [│|]'; then
+        hidden="$hidden $h(no unit)"
+    fi
+done
+if [ -z "$hidden" ]; then
+    pass "9: the scatter's USD is on a row of its own at heights 24 to 45"
+else
+    echo "not ok - 9: the scatter's USD is on a row of its own at heights 24 to 45 (not at:$hidden)"
+fi
+"${TMUX_CMD[@]}" resize-window -x 80 -y 24
 keys M j j j j j y
 check "9: the metric picker puts max deviation on the y axis" '^ Scatter: max_deviation vs planarity'
 keys k k k x
