@@ -231,24 +231,29 @@ static int detail_lines(const struct option_row *o,
     tui_fmt_number(area, sizeof area, t->area, 1, 1);
     char grid[64];
     tui_fmt_grid(grid, sizeof grid, o);
+    /* A run ranks its options when it ends: until then rank and crowding
+     * are NULL, never "rank 0 ... crowding 0". */
+    char ranked[24];
+    if (o->rank > 0)
+        snprintf(ranked, sizeof ranked, "rank %d%s", o->rank,
+                 o->knee ? " (knee)" : "");
+    else
+        snprintf(ranked, sizeof ranked, "not ranked yet");
     if (!isnan(o->module_w))
         /* o lists a project's surfaces' own grids */
-        snprintf(lines[0], 160, "No. %lld: %s, t %.2f mm, rank %d%s, %s; o: "
+        snprintf(lines[0], 160, "No. %lld: %s, t %.2f mm, %s, %s; o: "
                  "its surfaces", (long long)o->number, grid, o->threshold_mm,
-                 o->rank, o->knee ? " (knee)" : "",
-                 t->feasible ? "feasible" : "infeasible");
+                 ranked, t->feasible ? "feasible" : "infeasible");
     else if (t->feasible)
-        snprintf(lines[0], 160, "No. %lld: %s, t %.2f mm, rank %d%s, "
+        snprintf(lines[0], 160, "No. %lld: %s, t %.2f mm, %s, "
                  "feasible, largest panel %.2f m^2", (long long)o->number,
-                 grid, o->threshold_mm, o->rank, o->knee ? " (knee)" : "",
-                 t->max_panel_area);
+                 grid, o->threshold_mm, ranked, t->max_panel_area);
     if (isnan(o->module_w) && !t->feasible) {
-        char broken[120], threshold[32], rank[32];
+        char broken[120], threshold[32], rank[64];
         tui_fmt_violation(broken, sizeof broken, t, run);
         snprintf(threshold, sizeof threshold, ", t %.2f mm",
                  o->threshold_mm);
-        snprintf(rank, sizeof rank, ", rank %d%s", o->rank,
-                 o->knee ? " (knee)" : "");
+        snprintf(rank, sizeof rank, ", %s", ranked);
         for (int drop = 0; drop < 3; drop++) {
             char line[320];
             int n = snprintf(line, sizeof line, "No. %lld: %s%s%s, "
@@ -285,7 +290,9 @@ static int detail_lines(const struct option_row *o,
     tui_fmt_list(lines[2], 160, width, fields, TYPE_COUNT + 1, ": ", ", ");
     char crowding[32];
     const char *words = tui_crowding_words(o->crowding);
-    if (words != NULL)
+    if (o->rank <= 0)
+        snprintf(crowding, sizeof crowding, "not ranked yet");
+    else if (words != NULL)
         snprintf(crowding, sizeof crowding, "%s", words);
     else
         snprintf(crowding, sizeof crowding, "%.3g", o->crowding);
@@ -318,6 +325,12 @@ static void draw_detail_side(const struct option_row *o,
         const struct quantity *c = tui_shown_column(
             quantity_named(tui_metric_columns[k]), o);
         double number = quantity_value(c, o);
+        if (c->writer == WRITTEN_BY_RANKING && o->rank <= 0) {
+            /* rank, crowding and knee come when the run ranks it */
+            tui_putf(y + 1 + k, x, width, tui_attr(ROLE_DIM),
+                     " %-15s %14s", c->label, "not ranked yet");
+            continue;
+        }
         if (isnan(number)) {
             /* NULL in the store: never a number, and never 0; "none"
              * where the stage ran and found nothing to measure */

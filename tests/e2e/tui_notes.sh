@@ -46,4 +46,25 @@ keys Escape
 check "back on the runs list again" 'runs'
 keys F10
 check_exit "quit"
+
+# issue 32 item 13: options a working run has not ranked yet (rank and
+# crowding NULL in the store, as sqlite3 sets them here) read "not ranked
+# yet", never "rank 0" or "crowding 0"
+cp "$WORK/n.db" "$WORK/u.db"
+sqlite3 "$WORK/u.db" "UPDATE options SET rank = NULL, crowding = NULL, knee = 0 WHERE run = 2"
+start 80 24 -- u.db
+check "the runs list (unranked)" 'runs'
+keys Enter
+check "an unranked option's pane says it is not ranked yet" 'not ranked yet'
+if screen | grep -qE 'rank 0|crowding 0([^.]|$)'; then
+    echo "not ok - no 'rank 0' or 'crowding 0' for an option not ranked yet"
+    screen | sed 's/^/  screen: /'
+else
+    pass "no 'rank 0' or 'crowding 0' for an option not ranked yet"
+fi
+"${TMUX_CMD[@]}" resize-window -x 160 -y 40
+check "the side pane's rank row says not ranked yet" '^.* rank +not ranked yet'
+check "the side pane's crowding row says not ranked yet" '^.* crowding +not ranked yet'
+keys F10
+check_exit "quit (unranked)"
 exit 0
