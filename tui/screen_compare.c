@@ -177,9 +177,21 @@ static void compare_draw(struct tui_screen *base, struct tui_app *app,
         rows = tui_metric_column_count;
     if (map_rows > 0)
         draw_maps(s, app, 2 + rows, map_rows, lw + 6, cw);
+    /* Fewer rows than metrics: the last row says how many more there are
+     * and how to reach them (8 of 29 showed at 80x24, with no sign). */
+    int hint = rows < tui_metric_column_count && rows >= 2;
+    if (hint)
+        rows--;
     if (s->top > tui_metric_column_count - rows)
         s->top = tui_metric_column_count - rows > 0
                      ? tui_metric_column_count - rows : 0;
+    if (hint) {
+        int below = tui_metric_column_count - s->top - rows;
+        tui_putf(2 + rows, 0, width, tui_attr(ROLE_DIM),
+                 " metrics %d-%d of %d: %d more below, %d above (j/k "
+                 "scroll)", s->top + 1, s->top + rows,
+                 tui_metric_column_count, below, s->top);
+    }
     for (int r = 0; r < rows && s->top + r < tui_metric_column_count; r++) {
         /* a project's module in metres where U and V stand */
         const struct quantity *c = tui_shown_column(

@@ -140,7 +140,7 @@ else
     screen | sed 's/^/  screen: /'
 fi
 keys m
-check "m hides the maps: the metrics take the room" '^ crowding '
+check "m hides the maps: the metrics take the room (down to rank, the hint below)" '^ rank '
 check_not "m hides the maps" '^ panel maps'
 keys m
 keys q

@@ -121,6 +121,12 @@ check_not "7: a metric that is not an objective gets no verdict" '^ FP area .*[â
 maps=$(screen | grep -E '^ F FP +[FSD]+ +[FSD]+ +[FSD]+ *$' | awk '{print length($3), length($4), length($5)}')
 check_file "7: the three maps are drawn at one scale ($maps)" \
     test -n "$maps" -a "$(echo "$maps" | tr ' ' '\n' | sort -u | wc -l)" = 1
+# issue 32 item 13: at 80x24 Compare shows a part of the metrics, and says
+# how many more there are
+check "7: Compare says how many metrics are below (80x24)" '^ metrics 1-[0-9]+ of [0-9]+: [0-9]+ more below, 0 above \(j/k scroll\)'
+keys j
+check "7: j scrolls the metrics, one above now" '^ metrics 2-[0-9]+ of [0-9]+: [0-9]+ more below, 1 above'
+keys k
 keys d
 check "7: d shows the differences alone" '^ cost +USD +min +[0-9,]+ +\+[0-9,]+ âœ—'
 keys q u
