@@ -131,7 +131,16 @@ check "resume: the options and surface rows equal the uninterrupted run's" \
 cp "$WORK/four.obj" "$WORK/four.keep"
 "$FACET" optimize "$WORK/four.obj" --db "$WORK/int2.db" "${BIG[@]}" >/dev/null 2>&1 &
 pid=$!
-sleep 0.3
+# SIGINT once the run is recorded: a background job of a script starts
+# with SIGINT ignored until facet sets its handler, so a signal sent at a
+# fixed 0.3 s could land before it (a sanitizer build starts slower) and
+# be lost, the run then going on to the end
+tries=0
+while [ "$(sqlite3 -batch "$WORK/int2.db" 'SELECT count(*) FROM runs' 2>/dev/null)" != 1 ] &&
+    kill -0 "$pid" 2>/dev/null && [ $tries -lt 1500 ]; do
+    sleep 0.02
+    tries=$((tries + 1))
+done
 kill -INT "$pid"
 wait "$pid"
 echo "# a changed file" >>"$WORK/four.obj"
