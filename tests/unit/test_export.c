@@ -641,8 +641,14 @@ static void test_plot_axis(void **state)
     /* One value: a range around it. */
     svg_plot_axis(3, 3, 0.05, 6, &a);
     assert_true(a.min < 3 && a.max > 3);
+    /* Values none of which is negative: no negative axis (issue 32 item
+     * 3: planarity drawn from -0.5 m). */
     svg_plot_axis(0, 0, 0.05, 6, &a);
-    assert_true(a.min < 0 && a.max > 0);
+    assert_true(a.min == 0 && a.max > 0);
+    svg_plot_axis(0.02, 7.3, 0.05, 6, &a);
+    assert_true(a.min == 0 && a.max > 7.3);
+    svg_plot_axis(-0.02, 7.3, 0.05, 6, &a);
+    assert_true(a.min < -0.02 && a.max > 7.3);
     /* Many ranges, from tiny to huge, near and far from zero. */
     unsigned long long seed = 12345;
     for (int k = 0; k < 20000; k++) {
@@ -653,7 +659,10 @@ static void test_plot_axis(void **state)
         double scale = pow(10, (int)(r1 * 24) - 12);
         double lo = (r2 - 0.5) * scale * 100, hi = lo + r1 * scale;
         svg_plot_axis(lo, hi, 0.05, 6, &a);
-        if (!(a.min < lo && a.max > hi && nice_step(a.step)))
+        /* below lo, but never below 0 for values none of which is
+         * negative */
+        int low_ok = lo >= 0 ? a.min >= 0 && a.min <= lo : a.min < lo;
+        if (!(low_ok && a.max > hi && nice_step(a.step)))
             fail_msg("[%.17g, %.17g] -> [%.17g, %.17g] step %.17g", lo, hi,
                      a.min, a.max, a.step);
         double ticks = (a.max - a.min) / a.step;
