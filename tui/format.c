@@ -126,30 +126,42 @@ const char *tui_crowding_words(double crowding)
 void tui_fmt_violation(char *out, size_t size, const struct option_totals *t,
                        const struct run_info *run)
 {
+    double term[LIMIT_COUNT];
+    unsigned broken = classify_broken_limits(t, run->max_panel_area, term);
     size_t used = 0;
     out[0] = '\0';
-    if (classify_area_excess(t->max_panel_area, run->max_panel_area) > 0)
-        used += (size_t)snprintf(out + used, size - used,
-                                 "panel %.2f m^2 > %.2f m^2 limit",
-                                 t->max_panel_area, run->max_panel_area);
-    if (t->slivers != TOTALS_UNKNOWN && t->slivers > 0 && used < size)
-        used += (size_t)snprintf(out + used, size - used,
-                                 "%s%zu sliver%s < %.2f m limit",
-                                 used ? ", " : "", t->slivers,
-                                 t->slivers == 1 ? "" : "s",
-                                 run->min_panel_width);
-    if (t->gaps_over != TOTALS_UNKNOWN && t->gaps_over > 0 && used < size)
-        used += (size_t)snprintf(out + used, size - used,
-                                 "%s%zu gap%s > %g mm limit",
-                                 used ? ", " : "", t->gaps_over,
-                                 t->gaps_over == 1 ? "" : "s",
-                                 run->max_gap_mm);
-    if (t->kinks_over != TOTALS_UNKNOWN && t->kinks_over > 0 && used < size)
-        used += (size_t)snprintf(out + used, size - used,
-                                 "%s%zu kink%s > %g deg limit",
-                                 used ? ", " : "", t->kinks_over,
-                                 t->kinks_over == 1 ? "" : "s",
-                                 run->max_kink_deg);
+    for (int k = 0; k < LIMIT_COUNT && used < size; k++) {
+        if (!(broken & 1u << k))
+            continue;
+        const char *sep = used ? ", " : "";
+        size_t n = (size_t)term[k];  /* a count but for the area */
+        const char *s = n == 1 ? "" : "s";
+        switch ((enum classify_limit)k) {
+        case LIMIT_PANEL_AREA:
+            used += (size_t)snprintf(out + used, size - used,
+                                     "%spanel %.2f m^2 > %.2f m^2 limit",
+                                     sep, t->max_panel_area,
+                                     run->max_panel_area);
+            break;
+        case LIMIT_PANEL_WIDTH:
+            used += (size_t)snprintf(out + used, size - used,
+                                     "%s%zu sliver%s < %.2f m limit", sep,
+                                     n, s, run->min_panel_width);
+            break;
+        case LIMIT_GAP:
+            used += (size_t)snprintf(out + used, size - used,
+                                     "%s%zu gap%s > %g mm limit", sep, n, s,
+                                     run->max_gap_mm);
+            break;
+        case LIMIT_KINK:
+            used += (size_t)snprintf(out + used, size - used,
+                                     "%s%zu kink%s > %g deg limit", sep, n,
+                                     s, run->max_kink_deg);
+            break;
+        case LIMIT_COUNT:
+            break;
+        }
+    }
     if (used == 0)
         snprintf(out, size, "over a limit");
 }
