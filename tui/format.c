@@ -69,7 +69,7 @@ const struct tui_column tui_option_columns[] = {
     {"sp_misfits", 6, 0},
     {"min_panel_width", 6, 0},
     {"slivers", 7, 0},
-    {"crowding", 6, 0},
+    {"crowding", 8, 0},  /* "boundary" at a front's end */
     {"generation", 4, 0},
 };
 const int tui_option_column_default_count = 12;
@@ -308,8 +308,12 @@ void tui_fmt_cell(char *out, size_t size, const struct tui_column *c,
             quantity_text(text, sizeof text, column, value, 0);
     } else if (c->pareto_mark)
         text[0] = '\0';  /* the caller draws the glyph */
-    else if (strcmp(column->name, "rank") == 0 && value == 0)
+    else if (column->writer == WRITTEN_BY_RANKING && option->rank <= 0)
         snprintf(text, sizeof text, "-");  /* not ranked yet */
+    else if (strcmp(column->name, "crowding") == 0 &&
+             tui_crowding_words(value) != NULL)
+        /* a front's end, as the detail pane says it, never "inf" */
+        snprintf(text, sizeof text, "%s", tui_crowding_words(value));
     else
         quantity_text(text, sizeof text, column, value,
                           column->list_decimals);
