@@ -8,6 +8,8 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "core/base/text.h"
+
 void tui_fmt_number(char *out, size_t size, double value, int decimals,
                     int thousands)
 {
@@ -242,15 +244,6 @@ void tui_fmt_cost_sum(char *out, size_t size, const struct option_totals *t,
     }
 }
 
-/* The characters of UTF-8 text: its bytes less the continuation bytes. */
-static size_t characters(const char *text)
-{
-    size_t n = 0;
-    for (; *text; text++)
-        n += (*text & 0xC0) != 0x80;
-    return n;
-}
-
 void tui_fmt_fields(char *out, size_t size, int width,
                     const char *const *fields, int n)
 {
@@ -269,18 +262,11 @@ void tui_fmt_list(char *out, size_t size, int width,
             used += (size_t)snprintf(out + used, size - used, "%s%s",
                                      k == 0 ? "" : k == 1 ? lead : sep,
                                      fields[k]);
-        if ((int)characters(out) <= width || kept == 1)
+        if ((int)text_columns(out) <= width || kept == 1)
             break;
     }
     /* the title alone too wide: cut it, at a character's start */
-    size_t chars = 0, at = 0;
-    while (out[at] != '\0' && (int)chars < width) {
-        at++;
-        while ((out[at] & 0xC0) == 0x80)
-            at++;
-        chars++;
-    }
-    out[at] = '\0';
+    out[text_cut(out, width)] = '\0';
 }
 
 void tui_fmt_grid(char *out, size_t size, const struct option_row *option)

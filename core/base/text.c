@@ -110,13 +110,36 @@ static int joins_unit(const char *text, size_t at)
     return 0;
 }
 
+/* The bytes of the column at s (not at its end): a character, or a byte
+ * that is not one. */
+static size_t column_bytes(const char *s)
+{
+    size_t n = utf8_length((const unsigned char *)s);
+    return n > 0 ? n : 1;
+}
+
+size_t text_columns(const char *text)
+{
+    size_t columns = 0;
+    for (size_t at = 0; text[at] != '\0'; at += column_bytes(text + at))
+        columns++;
+    return columns;
+}
+
+size_t text_cut(const char *text, int width)
+{
+    size_t at = 0;
+    for (int columns = 0; text[at] != '\0' && columns < width; columns++)
+        at += column_bytes(text + at);
+    return at;
+}
+
 size_t text_break(const char *text, int width)
 {
     assert(width >= 1);
     size_t at = 0, blank = 0, glued = 0;
     for (int columns = 0; text[at] != '\0' && columns < width; columns++) {
-        size_t n = utf8_length((const unsigned char *)text + at);
-        at += n > 0 ? n : 1;
+        at += column_bytes(text + at);
         if (text[at] == ' ') {
             if (joins_unit(text, at))
                 glued = at;

@@ -30,6 +30,16 @@ size_t text_char_length(const char *text);
  * character: C0, DEL or C1. */
 int text_char_is_control(const char *text, size_t n);
 
+/* The display columns of text: a character is one column whatever its
+ * bytes, and a byte that is not UTF-8 one too, as a terminal shows it
+ * ('?'). */
+size_t text_columns(const char *text);
+
+/* The bytes of text's first width display columns (text_columns' count;
+ * all of text when it is narrower, 0 when width is 0 or less): a cut on a
+ * character's boundary. */
+size_t text_cut(const char *text, int width);
+
 /* The bytes of text's next row of at most width display columns (width at
  * least 1), for a wrapper that prints them, skips the blanks after them and
  * asks again. A character is one column whatever its bytes, and a byte

@@ -119,6 +119,25 @@ static void test_units(void **state)
     check("run 1 paper space", 6, "run 1|paper|space");
 }
 
+/* Columns and cuts by hand: a glyph of two or three bytes is one
+ * column, a byte that is not UTF-8 one column, a cut never inside a
+ * character. */
+static void test_columns(void **state)
+{
+    (void)state;
+    assert_int_equal(text_columns(""), 0);
+    assert_int_equal(text_columns("façade"), 6);
+    assert_int_equal(text_columns("1,240 m² → 2 m²"), 15);
+    assert_int_equal(text_columns("\xff\xff" "ab"), 4);
+    assert_int_equal(text_columns("\x80" "a"), 2);  /* a lone continuation */
+    assert_int_equal(text_cut("ééé", 2), 4);
+    assert_int_equal(text_cut("ééé", 3), 6);
+    assert_int_equal(text_cut("ééé", 9), 6);
+    assert_int_equal(text_cut("abc", 0), 0);
+    assert_int_equal(text_cut("abc", -1), 0);
+    assert_int_equal(text_cut("fa\xc3\xa7" "ade", 3), 4);  /* "faç" */
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -126,6 +145,7 @@ int main(void)
         cmocka_unit_test(test_utf8),
         cmocka_unit_test(test_bad_bytes),
         cmocka_unit_test(test_units),
+        cmocka_unit_test(test_columns),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
