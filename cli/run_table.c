@@ -46,18 +46,21 @@ static void violations_line(const struct run_info *info,
                             const struct option_row *listed, size_t n,
                             char *line, size_t size)
 {
-    size_t infeasible = 0, area = 0, width = 0, gap = 0, kink = 0;
+    size_t infeasible = 0, breaking[LIMIT_COUNT] = {0};
     for (size_t k = 0; k < n; k++) {
         const struct option_totals *t = &listed[k].totals;
         if (t->feasible)
             continue;
         infeasible++;
-        area += classify_area_excess(t->max_panel_area,
-                                     info->max_panel_area) > 0;
-        width += t->slivers != TOTALS_UNKNOWN && t->slivers > 0;
-        gap += t->gaps_over != TOTALS_UNKNOWN && t->gaps_over > 0;
-        kink += t->kinks_over != TOTALS_UNKNOWN && t->kinks_over > 0;
+        double term[LIMIT_COUNT];
+        unsigned broken = classify_broken_limits(t, info->max_panel_area,
+                                                 term);
+        for (int l = 0; l < LIMIT_COUNT; l++)
+            breaking[l] += (broken & 1u << l) != 0;
     }
+    size_t area = breaking[LIMIT_PANEL_AREA];
+    size_t width = breaking[LIMIT_PANEL_WIDTH];
+    size_t gap = breaking[LIMIT_GAP], kink = breaking[LIMIT_KINK];
     line[0] = '\0';
     if (infeasible == 0)
         return;

@@ -8,6 +8,8 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "core/base/text.h"
+
 void tui_fmt_number(char *out, size_t size, double value, int decimals,
                     int thousands)
 {
@@ -69,7 +71,7 @@ const struct tui_column tui_option_columns[] = {
     {"sp_misfits", 6, 0},
     {"min_panel_width", 6, 0},
     {"slivers", 7, 0},
-    {"crowding", 6, 0},
+    {"crowding", 8, 0},  /* "boundary" at a front's end */
     {"generation", 4, 0},
 };
 const int tui_option_column_default_count = 12;
@@ -126,30 +128,42 @@ const char *tui_crowding_words(double crowding)
 void tui_fmt_violation(char *out, size_t size, const struct option_totals *t,
                        const struct run_info *run)
 {
+    double term[LIMIT_COUNT];
+    unsigned broken = classify_broken_limits(t, run->max_panel_area, term);
     size_t used = 0;
     out[0] = '\0';
-    if (classify_area_excess(t->max_panel_area, run->max_panel_area) > 0)
-        used += (size_t)snprintf(out + used, size - used,
-                                 "panel %.2f m^2 > %.2f m^2 limit",
-                                 t->max_panel_area, run->max_panel_area);
-    if (t->slivers != TOTALS_UNKNOWN && t->slivers > 0 && used < size)
-        used += (size_t)snprintf(out + used, size - used,
-                                 "%s%zu sliver%s < %.2f m limit",
-                                 used ? ", " : "", t->slivers,
-                                 t->slivers == 1 ? "" : "s",
-                                 run->min_panel_width);
-    if (t->gaps_over != TOTALS_UNKNOWN && t->gaps_over > 0 && used < size)
-        used += (size_t)snprintf(out + used, size - used,
-                                 "%s%zu gap%s > %g mm limit",
-                                 used ? ", " : "", t->gaps_over,
-                                 t->gaps_over == 1 ? "" : "s",
-                                 run->max_gap_mm);
-    if (t->kinks_over != TOTALS_UNKNOWN && t->kinks_over > 0 && used < size)
-        used += (size_t)snprintf(out + used, size - used,
-                                 "%s%zu kink%s > %g deg limit",
-                                 used ? ", " : "", t->kinks_over,
-                                 t->kinks_over == 1 ? "" : "s",
-                                 run->max_kink_deg);
+    for (int k = 0; k < LIMIT_COUNT && used < size; k++) {
+        if (!(broken & 1u << k))
+            continue;
+        const char *sep = used ? ", " : "";
+        size_t n = (size_t)term[k];  /* a count but for the area */
+        const char *s = n == 1 ? "" : "s";
+        switch ((enum classify_limit)k) {
+        case LIMIT_PANEL_AREA:
+            used += (size_t)snprintf(out + used, size - used,
+                                     "%spanel %.2f m^2 > %.2f m^2 limit",
+                                     sep, t->max_panel_area,
+                                     run->max_panel_area);
+            break;
+        case LIMIT_PANEL_WIDTH:
+            used += (size_t)snprintf(out + used, size - used,
+                                     "%s%zu sliver%s < %.2f m limit", sep,
+                                     n, s, run->min_panel_width);
+            break;
+        case LIMIT_GAP:
+            used += (size_t)snprintf(out + used, size - used,
+                                     "%s%zu gap%s > %g mm limit", sep, n, s,
+                                     run->max_gap_mm);
+            break;
+        case LIMIT_KINK:
+            used += (size_t)snprintf(out + used, size - used,
+                                     "%s%zu kink%s > %g deg limit", sep, n,
+                                     s, run->max_kink_deg);
+            break;
+        case LIMIT_COUNT:
+            break;
+        }
+    }
     if (used == 0)
         snprintf(out, size, "over a limit");
 }
@@ -230,15 +244,6 @@ void tui_fmt_cost_sum(char *out, size_t size, const struct option_totals *t,
     }
 }
 
-/* The characters of UTF-8 text: its bytes less the continuation bytes. */
-static size_t characters(const char *text)
-{
-    size_t n = 0;
-    for (; *text; text++)
-        n += (*text & 0xC0) != 0x80;
-    return n;
-}
-
 void tui_fmt_fields(char *out, size_t size, int width,
                     const char *const *fields, int n)
 {
@@ -257,18 +262,11 @@ void tui_fmt_list(char *out, size_t size, int width,
             used += (size_t)snprintf(out + used, size - used, "%s%s",
                                      k == 0 ? "" : k == 1 ? lead : sep,
                                      fields[k]);
-        if ((int)characters(out) <= width || kept == 1)
+        if ((int)text_columns(out) <= width || kept == 1)
             break;
     }
     /* the title alone too wide: cut it, at a character's start */
-    size_t chars = 0, at = 0;
-    while (out[at] != '\0' && (int)chars < width) {
-        at++;
-        while ((out[at] & 0xC0) == 0x80)
-            at++;
-        chars++;
-    }
-    out[at] = '\0';
+    out[text_cut(out, width)] = '\0';
 }
 
 void tui_fmt_grid(char *out, size_t size, const struct option_row *option)
@@ -296,8 +294,12 @@ void tui_fmt_cell(char *out, size_t size, const struct tui_column *c,
             quantity_text(text, sizeof text, column, value, 0);
     } else if (c->pareto_mark)
         text[0] = '\0';  /* the caller draws the glyph */
-    else if (strcmp(column->name, "rank") == 0 && value == 0)
+    else if (column->writer == WRITTEN_BY_RANKING && option->rank <= 0)
         snprintf(text, sizeof text, "-");  /* not ranked yet */
+    else if (strcmp(column->name, "crowding") == 0 &&
+             tui_crowding_words(value) != NULL)
+        /* a front's end, as the detail pane says it, never "inf" */
+        snprintf(text, sizeof text, "%s", tui_crowding_words(value));
     else
         quantity_text(text, sizeof text, column, value,
                           column->list_decimals);

@@ -24,8 +24,7 @@
 
 struct options_screen {
     struct tui_screen base;
-    struct run_info run;
-    struct table_model model;
+    struct table_model model;    /* model.run: the run shown */
     int64_t top;                 /* first row shown */
     int rows;                    /* rows shown at the last draw */
     int column;                  /* column cursor (tui_option_columns) */
@@ -162,7 +161,7 @@ static void draw_header(struct options_screen *s, struct tui_app *app,
         const char *unit = tui_column_unit(col);
         const char *title = tui_column_title(col);
         /* a project run's U and V are its module (tui_fmt_cell) */
-        if (store_run_is_project(&s->run) &&
+        if (store_run_is_project(&s->model.run) &&
             (strcmp(col->column, "nu") == 0 ||
              strcmp(col->column, "nv") == 0)) {
             title = col->column[1] == 'u' ? "W" : "H";
@@ -391,27 +390,27 @@ static void draw_chooser(struct options_screen *s, struct tui_app *app,
 static void draw_title(struct options_screen *s, int width)
 {
     const struct table_model *m = &s->model;
-    const char *surface = strrchr(s->run.surface_path, '/');
-    surface = surface ? surface + 1 : s->run.surface_path;
-    int64_t options = s->run.options;
+    const char *surface = strrchr(s->model.run.surface_path, '/');
+    surface = surface ? surface + 1 : s->model.run.surface_path;
+    int64_t options = s->model.run.options;
     if (m->count_exact && m->filter == NULL && !m->browse.pareto_only)
         options = m->count;
     char run[32], count[48], pareto[48], knee[48], number[32];
-    snprintf(run, sizeof run, " Run %lld", (long long)s->run.id);
+    snprintf(run, sizeof run, " Run %lld", (long long)s->model.run.id);
     tui_fmt_number(number, sizeof number, (double)options, 0, 1);
     snprintf(count, sizeof count, "%s options", number);
     snprintf(pareto, sizeof pareto, "%lld Pareto",
-             (long long)s->run.pareto_options);
-    if (s->run.knee > 0)
-        snprintf(knee, sizeof knee, "knee %lld", (long long)s->run.knee);
+             (long long)s->model.run.pareto_options);
+    if (s->model.run.knee > 0)
+        snprintf(knee, sizeof knee, "knee %lld", (long long)s->model.run.knee);
     else
         knee[0] = '\0';
     const struct tui_field fields[] = {
         {"", run, 0},
-        {" ", s->run.name, 4},
+        {" ", s->model.run.name, 4},
         {" ", surface, 3},
-        {" | ", store_run_setting_text(&s->run, RUN_SETTING_METHOD), 2},
-        {" | ", run_status_name(s->run.status), 0},
+        {" | ", store_run_setting_text(&s->model.run, RUN_SETTING_METHOD), 2},
+        {" | ", run_status_name(s->model.run.status), 0},
         {" | ", count, 0},
         {", ", pareto, 1},
         {", ", knee, 0},
@@ -489,11 +488,11 @@ static void options_draw(struct tui_screen *base, struct tui_app *app,
     if (o == NULL)
         return;
     if (side) {
-        draw_detail_side(o, &s->run, 2, table_width + 1, height - 2,
+        draw_detail_side(o, &s->model.run, 2, table_width + 1, height - 2,
                          width - table_width - 1);
     } else if (pane) {
         char lines[4][160];
-        int n = detail_lines(o, &s->run, width - 1, lines);
+        int n = detail_lines(o, &s->model.run, width - 1, lines);
         int y = height - pane;
         tui_fill(y, 0, width, tui_attr(ROLE_DIM));
         tui_put(y, 0, width, tui_attr(ROLE_HEADER), " Selected option ");
@@ -580,24 +579,24 @@ static void sort_secondary(struct options_screen *s, struct tui_app *app)
 static void jump_knee(struct options_screen *s, struct tui_app *app)
 {
     struct facet_error err;
-    if (store_run_get(app->store, s->run.id, &s->run, &err) != FACET_OK) {
+    if (table_model_read_run(&s->model, &err) != FACET_OK) {
         tui_error(app, "%s", err.message);
         return;
     }
-    if (s->run.knee <= 0) {
+    if (s->model.run.knee <= 0) {
         tui_error(app, "run %lld has no knee option (not ranked yet)",
-                  (long long)s->run.id);
+                  (long long)s->model.run.id);
         return;
     }
     int found;
-    int rc = table_model_select_number(&s->model, s->run.knee, &found, &err);
+    int rc = table_model_select_number(&s->model, s->model.run.knee, &found, &err);
     if (rc != FACET_OK)
         report(app, rc, &err);
     else if (!found)
         tui_error(app, "the knee option %lld is hidden by the filter",
-                  (long long)s->run.knee);
+                  (long long)s->model.run.knee);
     else
-        tui_status(app, "knee option %lld", (long long)s->run.knee);
+        tui_status(app, "knee option %lld", (long long)s->model.run.knee);
 }
 
 /* n / N: the next Pareto-optimal row in the table's order. */
@@ -659,7 +658,7 @@ static void export_marks_open(struct options_screen *s, struct tui_app *app)
     }
     char name[128];
     snprintf(name, sizeof name, "facet-run%lld-marked.csv",
-             (long long)s->run.id);
+             (long long)s->model.run.id);
     tui_input_set(&s->export_to, name);
     s->exporting = 1;
     tui_prompt(app, "Export marked to (CSV):", &s->export_to);
@@ -680,7 +679,7 @@ static enum tui_result export_marks_key(struct options_screen *s,
     struct facet_error err;
     if (n == 0)
         tui_error(app, "export: give a file name");
-    else if (study_export_options_csv(app->store, s->run.id, s->model.marks,
+    else if (study_export_options_csv(app->store, s->model.run.id, s->model.marks,
                                       (size_t)s->model.nmarks, path, force,
                                       &err) != FACET_OK)
         tui_error(app, "export: %s", err.message);
@@ -773,7 +772,7 @@ static enum tui_result options_mouse(struct options_screen *s,
     report(app, table_model_select(&s->model, position, &err), &err);
     const struct option_row *o = table_model_selection(&s->model);
     if (ev->clicks == 2 && o != NULL)
-        tui_push(app, screen_map_new(app, s->run.id, o->number));
+        tui_push(app, screen_map_new(app, s->model.run.id, o->number));
     return RESULT_HANDLED;
 }
 
@@ -854,12 +853,12 @@ static enum tui_result options_key(struct tui_screen *base,
             tui_error(app, "mark 2 to 4 options with Space first");
             return RESULT_HANDLED;
         }
-        tui_push(app, screen_compare_new(app, s->run.id, m->marks,
+        tui_push(app, screen_compare_new(app, s->model.run.id, m->marks,
                                          m->nmarks > 4 ? 4 : m->nmarks));
         return RESULT_HANDLED;
     case 'm': case KEY_F(8): case '\r': case '\n': case KEY_ENTER:
         if (o != NULL)
-            tui_push(app, screen_map_new(app, s->run.id, o->number));
+            tui_push(app, screen_map_new(app, s->model.run.id, o->number));
         return RESULT_HANDLED;
     case 'x': case KEY_F(5):
         tui_push(app, screen_scatter_new(app, m));
@@ -868,19 +867,19 @@ static enum tui_result options_key(struct tui_screen *base,
         tui_push(app, screen_stats_new(app, m, key == 'T' ? 5 : 0));
         return RESULT_HANDLED;
     case 'o':
-        if (o != NULL && store_run_is_project(&s->run))
-            tui_push(app, screen_surfaces_new(app, s->run.id, o->number));
+        if (o != NULL && store_run_is_project(&s->model.run))
+            tui_push(app, screen_surfaces_new(app, s->model.run.id, o->number));
         else if (o != NULL)
             tui_status(app, "o: run %lld is of a single surface: its "
                        "options have no surfaces to list (Enter: the map)",
-                       (long long)s->run.id);
+                       (long long)s->model.run.id);
         return RESULT_HANDLED;
     case 'L':
-        if (o != NULL && store_run_is_project(&s->run))
+        if (o != NULL && store_run_is_project(&s->model.run))
             tui_status(app, "like this: the New run form takes a single "
                        "surface, not a project's modules yet");
         else if (o != NULL)
-            tui_push(app, screen_newrun_like(app, &s->run, o));
+            tui_push(app, screen_newrun_like(app, &s->model.run, o));
         return RESULT_HANDLED;
     case 'E':
         export_marks_open(s, app);
@@ -889,7 +888,7 @@ static enum tui_result options_key(struct tui_screen *base,
         s->detail = !s->detail;
         return RESULT_HANDLED;
     case 'r':
-        store_run_get(app->store, s->run.id, &s->run, &err);
+        table_model_read_run(&s->model, &err);
         report(app, table_model_refresh(m, &err), &err);
         return RESULT_HANDLED;
     case KEY_F(3):
@@ -946,11 +945,11 @@ static int options_tick(struct tui_screen *base, struct tui_app *app)
 {
     struct options_screen *s = (struct options_screen *)base;
     struct facet_error err;
-    int live = s->run.status == RUN_RUNNING;
+    int live = s->model.run.status == RUN_RUNNING;
     int finished = s->runs_finished != app->runs_finished;
     /* this workbench's own run: at the gauge's sample; another
      * process's: every second */
-    int own = app->job != NULL && app->job_run == s->run.id;
+    int own = app->job != NULL && app->job_run == s->model.run.id;
     /* A refresh that reads much (a run of many options stores them
      * without the indexes by metric: a sorted page reads the whole run,
      * 0.4 s a refresh at a million) comes no oftener than four times its
@@ -964,7 +963,7 @@ static int options_tick(struct tui_screen *base, struct tui_app *app)
         s->job_samples = app->job_samples;
         clock_gettime(CLOCK_MONOTONIC, &s->last_refresh);
         struct table_model *m = &s->model;
-        if (store_run_get(app->store, s->run.id, &s->run, &err) != FACET_OK ||
+        if (table_model_read_run(&s->model, &err) != FACET_OK ||
             table_model_refresh(m, &err) != FACET_OK) {
             tui_error(app, "%s", err.message);
             return 1;
@@ -1037,16 +1036,13 @@ struct tui_screen *screen_options_new(struct tui_app *app, int64_t run)
     s->keys[0].column = "cost";  /* the paper's Table 2: cheapest first */
     s->nkeys = 1;
     clock_gettime(CLOCK_MONOTONIC, &s->last_refresh);
-    if (store_run_get(app->store, run, &s->run, &err) != FACET_OK ||
-        table_model_open(&s->model, app->store, run, &err) != FACET_OK ||
-        table_model_set_sort(&s->model, s->keys, s->nkeys, &err) !=
-            FACET_OK ||
-        table_model_select(&s->model, 0, &err) != FACET_OK) {
+    if (table_model_open_sorted(&s->model, app->store, run, s->keys,
+                                s->nkeys, &err) != FACET_OK) {
         tui_error(app, "%s", err.message);
         table_model_close(&s->model);
         free(s);
         return NULL;
     }
-    say_run_notes(app, &s->run);
+    say_run_notes(app, &s->model.run);
     return &s->base;
 }

@@ -34,8 +34,8 @@ struct row_list {
 
 struct parallel_screen {
     struct tui_screen base;
-    struct table_model *model;    /* borrowed: the options table's */
-    struct run_info run;
+    struct table_model *model;    /* borrowed: the options table's, and
+                                     model->run the run shown */
     struct pc_state st;
     int axis;                     /* the current axis */
     struct row_list context;      /* a sample of every option */
@@ -137,7 +137,10 @@ static int load(struct parallel_screen *s, struct tui_app *app)
     clock_gettime(CLOCK_MONOTONIC, &s->last_load);
     s->sampled = 0;
     struct option_browse b = every_option(s);
-    int rc = store_run_get(app->store, b.run, &s->run, &err);
+    /* the model read the run when the table opened: read again only
+     * while it runs, when its count and status move */
+    int rc = s->model->run.status == RUN_RUNNING
+                 ? table_model_read_run(s->model, &err) : FACET_OK;
     if (rc == FACET_OK)
         rc = load_ranges(s, app, &err);
     if (rc == FACET_OK)
@@ -248,8 +251,8 @@ static void parallel_draw(struct tui_screen *base, struct tui_app *app,
     table_model_count_text(m, shown, sizeof shown);
     tui_putf(0, 0, width, tui_attr(ROLE_TITLE),
              " Parallel coordinates: run %lld | %s of %lld options shown%s%s",
-             (long long)s->run.id, shown,
-             (long long)s->run.options, m->browse.pareto_only
+             (long long)s->model->run.id, shown,
+             (long long)s->model->run.options, m->browse.pareto_only
                                             ? " | Pareto only" : "",
              s->sampled ? " | sampled" : "");
     const char *where = m->filter ? filter_text(m->filter) : "";
@@ -515,7 +518,7 @@ static int parallel_tick(struct tui_screen *base, struct tui_app *app)
             tui_error(app, "%s", err.message);
         return 1;
     }
-    if (s->run.status != RUN_RUNNING ||
+    if (s->model->run.status != RUN_RUNNING ||
         tui_seconds_since(&s->last_load) < 2.0)
         return 0;
     if (table_model_refresh(s->model, &err) != FACET_OK)

@@ -58,7 +58,6 @@ struct stats_screen {
     const char *column[STATS];
     const char *group[SEC_COUNT];
     int project;
-    struct run_info run;
     int64_t options;               /* the options summed */
 };
 
@@ -109,11 +108,11 @@ static int load_section(struct stats_screen *s, struct tui_app *app,
                 : section == SEC_V ? 7 : 15;
         double min = s->stats[c].min, max = s->stats[c].max, step = 1;
         if (section == SEC_T)
-            step = s->run.threshold_step_mm;
+            step = s->model->run.threshold_step_mm;
         else if (s->project && section == SEC_U)
-            step = s->run.module_w_step;
+            step = s->model->run.module_w_step;
         else if (s->project && section == SEC_V)
-            step = s->run.module_h_step;
+            step = s->model->run.module_h_step;
         if (!(step >= 0))
             step = 0;
         int many = max > min && (step > 0 ? (max - min) / step + 1 > 60 : 1);
@@ -397,13 +396,6 @@ struct tui_screen *screen_stats_new(struct tui_app *app,
     }
     s->base.cls = &stats_class;
     s->model = model;
-    struct facet_error err;
-    if (store_run_get(app->store, model->browse.run, &s->run, &err) !=
-        FACET_OK) {
-        tui_error(app, "statistics: %s", err.message);
-        free(s);
-        return NULL;
-    }
     s->project = model->project;
     for (int k = 0; k < STATS; k++)
         s->column[k] = s->project

@@ -21,15 +21,48 @@
 int table_model_open(struct table_model *m, struct store *store,
                      int64_t run, struct facet_error *err)
 {
+    return table_model_open_sorted(m, store, run, NULL, 0, err);
+}
+
+/* Checks keys and makes them m's order; m is unchanged on an error. */
+static int set_keys(struct table_model *m, const struct browse_key *keys,
+                    int n, struct facet_error *err)
+{
+    if (n < 0 || n > BROWSE_MAX_KEYS)
+        return facet_error_set(err, FACET_EINPUT, "sort: at most %d keys",
+                               BROWSE_MAX_KEYS);
+    for (int k = 0; k < n; k++)
+        if (keys[k].column == NULL ||
+            isnan(option_quantity_value(&(struct option_row){0},
+                                     keys[k].column)))
+            return facet_error_set(err, FACET_EINPUT,
+                "sort: unknown column '%s'",
+                keys[k].column ? keys[k].column : "(none)");
+    for (int k = 0; k < n; k++) {
+        snprintf(m->key_names[k], sizeof m->key_names[k], "%s",
+                 keys[k].column);
+        m->browse.keys[k].column = m->key_names[k];
+        m->browse.keys[k].descending = keys[k].descending;
+    }
+    m->browse.nkeys = n;
+    return FACET_OK;
+}
+
+int table_model_open_sorted(struct table_model *m, struct store *store,
+                            int64_t run, const struct browse_key *keys,
+                            int n, struct facet_error *err)
+{
     memset(m, 0, sizeof *m);
     m->store = store;
     m->browse.run = run;
-    struct run_info info;
-    int rc = store_run_get(store, run, &info, err);
+    int rc = store_run_get(store, run, &m->run, err);
     if (rc != FACET_OK)
         return rc;
-    m->project = store_run_is_project(&info);
+    m->project = store_run_is_project(&m->run);
     m->browse.feasible_first = 1;
+    rc = set_keys(m, keys, n, err);
+    if (rc != FACET_OK)
+        return rc;
     m->rows = malloc(TABLE_WINDOW * sizeof *m->rows);
     if (m->rows == NULL)
         return facet_error_set(err, FACET_EWORK, "out of memory");
@@ -629,6 +662,15 @@ int table_model_refresh(struct table_model *m, struct facet_error *err)
     return reload(m, selection ? &keep : NULL, m->selected, 1, err);
 }
 
+int table_model_read_run(struct table_model *m, struct facet_error *err)
+{
+    struct run_info run;
+    int rc = store_run_get(m->store, m->browse.run, &run, err);
+    if (rc == FACET_OK)
+        m->run = run;
+    return rc;
+}
+
 int table_model_set_filter(struct table_model *m, const char *text,
                            struct facet_error *err)
 {
@@ -681,27 +723,13 @@ int table_model_set_feasible_first(struct table_model *m, int on,
 int table_model_set_sort(struct table_model *m, const struct browse_key *keys,
                          int n, struct facet_error *err)
 {
-    if (n < 0 || n > BROWSE_MAX_KEYS)
-        return facet_error_set(err, FACET_EINPUT, "sort: at most %d keys",
-                               BROWSE_MAX_KEYS);
-    for (int k = 0; k < n; k++)
-        if (keys[k].column == NULL ||
-            isnan(option_quantity_value(&(struct option_row){0},
-                                     keys[k].column)))
-            return facet_error_set(err, FACET_EINPUT,
-                "sort: unknown column '%s'",
-                keys[k].column ? keys[k].column : "(none)");
     const struct option_row *selection = table_model_selection(m);
     struct option_row keep;
     if (selection)
         keep = *selection;
-    for (int k = 0; k < n; k++) {
-        snprintf(m->key_names[k], sizeof m->key_names[k], "%s",
-                 keys[k].column);
-        m->browse.keys[k].column = m->key_names[k];
-        m->browse.keys[k].descending = keys[k].descending;
-    }
-    m->browse.nkeys = n;
+    int rc = set_keys(m, keys, n, err);
+    if (rc != FACET_OK)
+        return rc;
     return reload(m, selection ? &keep : NULL, 0, 0, err);
 }
 

@@ -39,10 +39,13 @@
 struct table_model {
     struct store *store;          /* borrowed */
     struct option_browse browse;  /* run, Pareto-only, filter, keys */
+    struct run_info run;          /* the run, read by table_model_open and
+                                     again only by table_model_read_run:
+                                     the screens on this model take it
+                                     from here, never from the store */
     int project;                  /* the run is a building's: its options'
                                      module and grids are the project's
-                                     (store_run_is_project), read once by
-                                     table_model_open */
+                                     (store_run_is_project) */
     struct filter *filter;        /* owned; browse.where points to it */
     char key_names[BROWSE_MAX_KEYS][32];  /* browse.keys[k].column */
     int64_t count;                /* options the browse sees; when
@@ -73,6 +76,14 @@ struct table_model {
  * selection on the first row. Release with table_model_close. */
 int table_model_open(struct table_model *m, struct store *store,
                      int64_t run, struct facet_error *err);
+/* The same, sorted by keys (n of them, as table_model_set_sort takes
+ * them; 0: by number) from the start: the first row of that order is
+ * selected, and no option is looked for in it, where opening by number
+ * and then sorting keeps option 1 selected and counts the options before
+ * it in the new order (300 ms on 300,000 options). */
+int table_model_open_sorted(struct table_model *m, struct store *store,
+                            int64_t run, const struct browse_key *keys,
+                            int n, struct facet_error *err);
 void table_model_close(struct table_model *m);
 
 /* The row at position, when the window holds it; NULL otherwise (call
@@ -139,6 +150,10 @@ int table_model_set_sort(struct table_model *m, const struct browse_key *keys,
 /* Counts again and refetches (options were added by a live run, or
  * ranks written), keeping the selected option selected. */
 int table_model_refresh(struct table_model *m, struct facet_error *err);
+
+/* Reads m->run again from the store (a live run's status, counts, knee);
+ * on an error m->run is as it was. */
+int table_model_read_run(struct table_model *m, struct facet_error *err);
 
 /* The count as a table shows it: "1,234" or, while it is a lower bound,
  * "2,000+". */

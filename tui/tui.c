@@ -151,19 +151,6 @@ enum tui_input_result tui_prompt_key(struct tui_app *app,
     return r;
 }
 
-/* The bytes of text's next row of at most width: up to its last blank
- * within width, else width itself (a word longer than the row). */
-static size_t wrap_row(const char *text, int width)
-{
-    size_t n = strlen(text);
-    if ((int)n <= width)
-        return n;
-    n = (size_t)width;
-    while (n > 0 && text[n] != ' ')
-        n--;
-    return n > 0 ? n : (size_t)width;
-}
-
 static const char *next_row(const char *text, size_t n)
 {
     text += n;
@@ -176,7 +163,7 @@ int tui_wrapped_rows(const char *text, int width)
 {
     int rows = 0;
     while (*text && width > 0) {
-        text = next_row(text, wrap_row(text, width));
+        text = next_row(text, text_break(text, width));
         rows++;
     }
     return rows;
@@ -187,7 +174,7 @@ int tui_put_wrapped(int y, int x, int width, int rows, attr_t attr,
 {
     int r = 0;
     for (; r < rows && *text && width > 0; r++) {
-        size_t n = wrap_row(text, width);
+        size_t n = text_break(text, width);
         tui_putf(y + r, x, width, attr, "%.*s", (int)n, text);
         text = next_row(text, n);
     }

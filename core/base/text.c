@@ -86,3 +86,70 @@ void text_for_terminal(const char *text, char *out, size_t size)
     }
     out[used] = '\0';
 }
+
+/* The units a figure is shown with, so that a row never ends between a
+ * figure and its unit. */
+static const char *const unit_words[] = {
+    "mm", "m", "m^2", "m\xc2\xb2", "km", "%", "\xc2\xb0", "deg", "rad",
+    "s", "ms", "kg", "USD", "EUR", "1/m",
+};
+
+/* 1 when the blank at text + at (at > 0) follows a digit and comes before
+ * a unit word, which may end in punctuation ("mm," "mm)"). */
+static int joins_unit(const char *text, size_t at)
+{
+    if (text[at - 1] < '0' || text[at - 1] > '9')
+        return 0;
+    const char *word = text + at + 1;
+    size_t n = strcspn(word, " ");
+    while (n > 0 && strchr(",;:.)]", word[n - 1]) != NULL)
+        n--;
+    for (size_t k = 0; k < sizeof unit_words / sizeof unit_words[0]; k++)
+        if (strlen(unit_words[k]) == n && memcmp(word, unit_words[k], n) == 0)
+            return 1;
+    return 0;
+}
+
+/* The bytes of the column at s (not at its end): a character, or a byte
+ * that is not one. */
+static size_t column_bytes(const char *s)
+{
+    size_t n = utf8_length((const unsigned char *)s);
+    return n > 0 ? n : 1;
+}
+
+size_t text_columns(const char *text)
+{
+    size_t columns = 0;
+    for (size_t at = 0; text[at] != '\0'; at += column_bytes(text + at))
+        columns++;
+    return columns;
+}
+
+size_t text_cut(const char *text, int width)
+{
+    size_t at = 0;
+    for (int columns = 0; text[at] != '\0' && columns < width; columns++)
+        at += column_bytes(text + at);
+    return at;
+}
+
+size_t text_break(const char *text, int width)
+{
+    assert(width >= 1);
+    size_t at = 0, blank = 0, glued = 0;
+    for (int columns = 0; text[at] != '\0' && columns < width; columns++) {
+        at += column_bytes(text + at);
+        if (text[at] == ' ') {
+            if (joins_unit(text, at))
+                glued = at;
+            else
+                blank = at;
+        }
+    }
+    if (text[at] == '\0')
+        return at;
+    if (blank > 0)
+        return blank;
+    return glued > 0 ? glued : at;
+}

@@ -30,4 +30,26 @@ size_t text_char_length(const char *text);
  * character: C0, DEL or C1. */
 int text_char_is_control(const char *text, size_t n);
 
+/* The display columns of text: a character is one column whatever its
+ * bytes, and a byte that is not UTF-8 one too, as a terminal shows it
+ * ('?'). */
+size_t text_columns(const char *text);
+
+/* The bytes of text's first width display columns (text_columns' count;
+ * all of text when it is narrower, 0 when width is 0 or less): a cut on a
+ * character's boundary. */
+size_t text_cut(const char *text, int width);
+
+/* The bytes of text's next row of at most width display columns (width at
+ * least 1), for a wrapper that prints them, skips the blanks after them and
+ * asks again. A character is one column whatever its bytes, and a byte
+ * that is not UTF-8 one column too, as a terminal shows it ('?'). The row
+ * is all of text when it fits; else it ends at the last blank within
+ * width + 1 columns, but not at the blank between a number and its unit
+ * ("4.00 mm", "1,240 m^2") while another blank will do, so that a unit
+ * stays with its figure; else (one word wider than the row) the word is
+ * cut after width columns, on a character's boundary. Never 0 for a text
+ * that is not empty. */
+size_t text_break(const char *text, int width);
+
 #endif

@@ -259,19 +259,36 @@ void classify_price_areas(const struct classify_options *options,
     totals->cost = totals->area_cost;
 }
 
-double classify_violation(const struct option_totals *totals,
-                          double max_panel_area)
+unsigned classify_broken_limits(const struct option_totals *totals,
+                                double max_panel_area,
+                                double term[LIMIT_COUNT])
 {
     /* Joints not measured are none over a limit: a run measures them
      * whenever it has a gap or kink limit (option_measures_needed). */
-    double gaps = totals->gaps_over == TOTALS_UNKNOWN
-                      ? 0 : (double)totals->gaps_over;
-    double kinks = totals->kinks_over == TOTALS_UNKNOWN
-                       ? 0 : (double)totals->kinks_over;
-    double slivers = totals->slivers == TOTALS_UNKNOWN
-                         ? 0 : (double)totals->slivers;
-    return classify_area_excess(totals->max_panel_area, max_panel_area) +
-           gaps + kinks + slivers;
+    term[LIMIT_PANEL_AREA] =
+        classify_area_excess(totals->max_panel_area, max_panel_area);
+    term[LIMIT_PANEL_WIDTH] = totals->slivers == TOTALS_UNKNOWN
+                                  ? 0 : (double)totals->slivers;
+    term[LIMIT_GAP] = totals->gaps_over == TOTALS_UNKNOWN
+                          ? 0 : (double)totals->gaps_over;
+    term[LIMIT_KINK] = totals->kinks_over == TOTALS_UNKNOWN
+                           ? 0 : (double)totals->kinks_over;
+    unsigned broken = 0;
+    for (int k = 0; k < LIMIT_COUNT; k++)
+        if (term[k] > 0)
+            broken |= 1u << k;
+    return broken;
+}
+
+double classify_violation(const struct option_totals *totals,
+                          double max_panel_area)
+{
+    double term[LIMIT_COUNT];
+    classify_broken_limits(totals, max_panel_area, term);
+    /* summed in the order it always was, so a stored ranking's
+     * constraint-domination reads the same bits */
+    return term[LIMIT_PANEL_AREA] + term[LIMIT_GAP] + term[LIMIT_KINK] +
+           term[LIMIT_PANEL_WIDTH];
 }
 
 void classify_price_terms(const struct classify_options *options,

@@ -240,6 +240,25 @@ void option_area_sums_value(const struct option_area_sums *sums,
 double classify_violation(const struct option_totals *totals,
                           double max_panel_area);
 
+/* The limits an option can break, each a term of classify_violation, in
+ * the order they are shown. */
+enum classify_limit {
+    LIMIT_PANEL_AREA,   /* largest panel over max_panel_area (m^2) */
+    LIMIT_PANEL_WIDTH,  /* slivers: panels under min_panel_width (m) */
+    LIMIT_GAP,          /* joints over max_gap */
+    LIMIT_KINK,         /* joints over max_kink */
+    LIMIT_COUNT
+};
+
+/* Each limit's term of classify_violation into term[LIMIT_COUNT] (the
+ * area excess in m^2; the slivers, gaps and kinks over, counted; 0 when
+ * not measured), and the limits broken as a mask of 1u << limit: the one
+ * place that names them, for whatever says why an option is infeasible
+ * (the workbench, facet runs). 0 for a feasible option. */
+unsigned classify_broken_limits(const struct option_totals *totals,
+                                double max_panel_area,
+                                double term[LIMIT_COUNT]);
+
 /* Why panel of p (built by option_evaluate, or read back from the store)
  * is a misfit, in one line into text (size bytes): the flatness threshold
  * and its best cylinder's and cone's deviations (sp_fit.h's wording); ""

@@ -11,6 +11,7 @@
 
 #include "core/out/outfile.h"
 #include "core/base/numformat.h"
+#include "core/base/text.h"
 #include "core/out/svg.h"
 
 /* Plot area inside the page (px). */
@@ -366,25 +367,6 @@ static const char *colour_of(const struct svg_plot_series *se, size_t s)
 #define LEGEND_CHARS 22
 #define LEGEND_LINES 3
 
-/* The bytes of text's next legend line: up to its last blank within
- * LEGEND_CHARS characters, else a cut there. Counts UTF-8 characters. */
-static size_t legend_break(const char *text, int chars)
-{
-    size_t at = 0, blank = 0;
-    int count = 0;
-    while (text[at] != '\0' && count < chars) {
-        if (text[at] == ' ')
-            blank = at;
-        at++;
-        while ((text[at] & 0xC0) == 0x80)
-            at++;
-        count++;
-    }
-    if (text[at] == '\0' || text[at] == ' ' || blank == 0)
-        return at;
-    return blank;
-}
-
 /* Series, marks and bubble sizes, to the right of the plot. Round marks
  * are rects with rounded corners, so that <circle> stays one per
  * option. */
@@ -410,7 +392,7 @@ static void write_legend(struct svg *svg, const struct plot_frame *f,
          * page's edge ("run 1 paper space (336, 1"). */
         const char *label = se->label != NULL ? se->label : name;
         for (int line = 0; *label != '\0' && line < LEGEND_LINES; line++) {
-            size_t n = legend_break(label, LEGEND_CHARS);
+            size_t n = text_break(label, LEGEND_CHARS);
             svg_text(svg, x + 18, y + 10, NULL, "%.*s", (int)n, label);
             label += n;
             while (*label == ' ')

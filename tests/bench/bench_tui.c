@@ -306,15 +306,14 @@ static const struct browse_key by_cost_key[] = {{"cost", 0}};
 static const struct browse_key by_planarity_key[] = {{"planarity", 0}};
 static const struct browse_key by_nu_key[] = {{"nu", 0}};
 
-/* Opens m as the Options screen does: sorted by cost, first row
- * selected. */
+/* Opens m as the Options screen does: sorted by cost from the start,
+ * first row selected. */
 static void open_table(struct table_model *m, struct store *store,
                        int64_t run)
 {
     struct facet_error err;
-    if (table_model_open(m, store, run, &err) != FACET_OK ||
-        table_model_set_sort(m, by_cost_key, 1, &err) != FACET_OK ||
-        table_model_select(m, 0, &err) != FACET_OK)
+    if (table_model_open_sorted(m, store, run, by_cost_key, 1, &err) !=
+        FACET_OK)
         bench_die("bench_tui", "opening the table", &err);
 }
 

@@ -3,7 +3,8 @@
 # first, each part by the keys, unless F asks otherwise; an infeasible row
 # is dim and marked x in the P column (seen under TERM=vt100 and NO_COLOR,
 # where dim is not shown), and the detail pane names the limit it breaks;
-# a front's end reads "crowding boundary", not "inf" (issue 32 item 19).
+# a front's end reads "crowding boundary", not "inf" (issue 32 item 19), and
+# "boundary" in the crowding column (issue 32).
 # Figures come from sqlite3, the orders from its rows sorted in Python.
 # layers: store tui
 . "$(dirname "$0")/lib.sh"
@@ -70,3 +71,35 @@ dim=$("${TMUX_CMD[@]}" capture-pane -p -e | grep -c $'\e\\[2m *'"${mixed[0]}"$'\
 same "an infeasible row is drawn dim (SGR 2)" "$dim" 1
 dim=$("${TMUX_CMD[@]}" capture-pane -p -e | grep -c $'\e\\[2m *'"${first[1]}"$'\e')
 same "a feasible row is not" "$dim" 0
+
+# Issue 32: the table's crowding cell of a front's end read "inf"; it reads
+# "boundary", as the detail pane does, and an inner option of the front its
+# crowding distance. A front of many options (cost and planarity); the
+# truth: sqlite3, where a front's end is a ranked option whose crowding is
+# NULL.
+"$FACET" optimize "$WORK/roof.obj" --db "$WORK/c.db" --u 36:40 --v 16:20 \
+    --threshold 1:6:1 >/dev/null 2>&1 || exit 1
+qc() { sqlite3 "$WORK/c.db" "$1"; }
+ends=$(qc "SELECT number FROM options WHERE run = 1 AND rank = 1 AND crowding IS NULL ORDER BY number")
+inner=$(qc "SELECT number || ' ' || printf('%.3f', crowding) FROM options WHERE run = 1 AND rank = 1 AND crowding IS NOT NULL ORDER BY number")
+same "the front has two ends and inner options" "$(echo "$ends" | wc -l) $([ "$(echo "$inner" | wc -l)" -gt 2 ] && echo many)" "2 many"
+start 120 40 LANG=C.UTF-8 -- c.db
+keys Enter
+check "the table opens" "sort feasible first, cost asc"
+# the column chooser: crowding is the 29th column (tui_option_columns)
+keys F2
+check "the column chooser opens" "Columns: 12 of"
+for _ in $(seq 28); do keys Down; done
+keys Space Enter
+check "the crowding column is shown" "^ +No\. .* crowd *$"
+keys F4
+front=$(qc "SELECT count(*) FROM options WHERE run = 1 AND rank = 1")
+check "F4: the front alone, $front options (sqlite3)" "^ row 1 of $front "
+for e in $ends; do
+    check "front's end No. $e: its crowding cell reads boundary" "^ +$e .* boundary *$"
+done
+while read -r number crowding; do
+    check "inner No. $number: its crowding $crowding" "^ +$number .* $crowding *$"
+done <<<"$inner"
+check_not "no crowding cell reads inf" " inf *$"
+keys q q y

@@ -350,6 +350,44 @@ static void test_paper_hypar(void **state)
     free(path);
 }
 
+/* classify_broken_limits names the limits an option breaks, and its
+ * terms are classify_violation's: hand-worked totals, each limit alone,
+ * several at once, one not measured (none over), and a feasible one. */
+static void test_broken_limits(void **state)
+{
+    (void)state;
+    struct option_totals t;
+    memset(&t, 0, sizeof t);
+    double term[LIMIT_COUNT];
+    t.max_panel_area = 3.0;
+    assert_int_equal(classify_broken_limits(&t, 4, term), 0);
+    assert_true(classify_violation(&t, 4) == 0);
+
+    t.max_panel_area = 5.5;  /* 1.5 m^2 over a 4 m^2 limit */
+    assert_int_equal(classify_broken_limits(&t, 4, term),
+                     1u << LIMIT_PANEL_AREA);
+    assert_true(fabs(term[LIMIT_PANEL_AREA] - 1.5) < 1e-12);
+    assert_true(classify_violation(&t, 4) == term[LIMIT_PANEL_AREA]);
+
+    t.max_panel_area = 3.0;
+    t.gaps_over = 3;
+    t.kinks_over = 1;
+    t.slivers = TOTALS_UNKNOWN;  /* not measured: none over */
+    assert_int_equal(classify_broken_limits(&t, 4, term),
+                     1u << LIMIT_GAP | 1u << LIMIT_KINK);
+    assert_true(term[LIMIT_GAP] == 3 && term[LIMIT_KINK] == 1 &&
+                term[LIMIT_PANEL_WIDTH] == 0);
+    assert_true(classify_violation(&t, 4) == 4);
+
+    t.max_panel_area = 6.0;
+    t.slivers = 2;
+    t.gaps_over = TOTALS_UNKNOWN;
+    assert_int_equal(classify_broken_limits(&t, 4, term),
+                     1u << LIMIT_PANEL_AREA | 1u << LIMIT_PANEL_WIDTH |
+                         1u << LIMIT_KINK);
+    assert_true(classify_violation(&t, 4) == 2.0 + 0 + 1 + 2);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -358,6 +396,7 @@ int main(void)
         cmocka_unit_test(test_limits_to_rounding),
         cmocka_unit_test(test_threshold_zero),
         cmocka_unit_test(test_paper_hypar),
+        cmocka_unit_test(test_broken_limits),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -272,12 +272,46 @@ static void test_cells(void **state)
     assert_string_equal(out, "yes");
 }
 
+/* Why an infeasible option is: each limit classify_broken_limits names,
+ * with the option's figure and the run's limit, in its order; a limit
+ * not measured is not named. Worked by hand. */
+static void test_violation(void **state)
+{
+    (void)state;
+    struct run_info run;
+    memset(&run, 0, sizeof run);
+    run.max_panel_area = 1.92;
+    run.min_panel_width = 0.3;
+    run.max_gap_mm = 2;
+    run.max_kink_deg = 5;
+    struct option_totals t;
+    memset(&t, 0, sizeof t);
+    t.max_panel_area = 2.05;
+    t.gaps_over = 3;
+    t.kinks_over = TOTALS_UNKNOWN;
+    char out[200];
+    tui_fmt_violation(out, sizeof out, &t, &run);
+    assert_string_equal(out, "panel 2.05 m^2 > 1.92 m^2 limit, "
+                             "3 gaps > 2 mm limit");
+    t.max_panel_area = 1.5;
+    t.slivers = 1;
+    t.gaps_over = 0;
+    t.kinks_over = 2;
+    tui_fmt_violation(out, sizeof out, &t, &run);
+    assert_string_equal(out, "1 sliver < 0.30 m limit, 2 kinks > 5 deg limit");
+    t.slivers = 0;
+    t.kinks_over = 0;
+    tui_fmt_violation(out, sizeof out, &t, &run);
+    assert_string_equal(out, "over a limit");
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_numbers),
         cmocka_unit_test(test_cost_sum),
         cmocka_unit_test(test_fields),
+        cmocka_unit_test(test_violation),
         cmocka_unit_test(test_list),
         cmocka_unit_test(test_times),
         cmocka_unit_test(test_cells),

@@ -231,6 +231,41 @@ static void test_sorts(void **state)
     drop_store(store);
 }
 
+/* Opened sorted, as the Options screen opens: the same rows as the
+ * oracle's order from the first, the first row selected, and the run read
+ * once into the model for the screens on it. */
+static void test_open_sorted(void **state)
+{
+    (void)state;
+    int64_t run;
+    struct store *store = make_store(&run);
+    struct table_model m;
+    struct facet_error err;
+    static struct option_row want[N];
+    const struct browse_key sorts[][2] = {
+        {{"cost", 0}, {"planarity", 1}},
+        {{"planarity", 1}, {"number", 0}},
+    };
+    for (size_t k = 0; k < sizeof sorts / sizeof sorts[0]; k++) {
+        assert_int_equal(table_model_open_sorted(&m, store, run, sorts[k], 2,
+                                                 &err), FACET_OK);
+        assert_int_equal(m.run.id, run);
+        assert_int_equal(m.run.options, N);
+        assert_int_equal(m.selected, 0);
+        size_t n = oracle(NULL, 0, sorts[k], 2, want);
+        assert_int_equal(table_model_selection(&m)->number, want[0].number);
+        check_walk(&m, want, n);
+        table_model_close(&m);
+    }
+    /* an unknown key is refused with its name */
+    const struct browse_key bad = {"colour", 0};
+    assert_int_equal(table_model_open_sorted(&m, store, run, &bad, 1, &err),
+                     FACET_EINPUT);
+    assert_non_null(strstr(err.message, "colour"));
+    table_model_close(&m);
+    drop_store(store);
+}
+
 static void test_filters(void **state)
 {
     (void)state;
@@ -615,6 +650,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_sorts),
+        cmocka_unit_test(test_open_sorted),
         cmocka_unit_test(test_filters),
         cmocka_unit_test(test_selection),
         cmocka_unit_test(test_store_browse),
