@@ -374,6 +374,24 @@ double option_quantity_value(const struct option_row *option,
     return c ? quantity_value(c, option) : NAN;
 }
 
+void quantity_csv_name(const struct quantity *q, char *out, size_t size)
+{
+    /* the unit as a word of a name: "m^2" is "m2", "USD" "usd" */
+    char unit[16];
+    size_t n = 0;
+    for (const char *c = q->stored_unit; *c != '\0' && n + 1 < sizeof unit;
+         c++)
+        if (*c != '^')
+            unit[n++] = (char)(*c >= 'A' && *c <= 'Z' ? *c - 'A' + 'a' : *c);
+    unit[n] = '\0';
+    size_t name = strlen(q->name);
+    if (n == 0 || (name > n + 1 && q->name[name - n - 1] == '_' &&
+                   strcmp(q->name + name - n, unit) == 0))
+        snprintf(out, size, "%s", q->name);
+    else
+        snprintf(out, size, "%s_%s", q->name, unit);
+}
+
 void quantity_number_text(char *out, size_t size, double value, int decimals,
                        int thousands)
 {
