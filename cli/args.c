@@ -77,17 +77,28 @@ static int unknown_long(const char *command,
         (int)length, name, command);
 }
 
-/* Writes value (ARG_STRING) or 1 (ARG_FLAG) into option's field of
- * values, where its table's offset says. */
-static void store_value(const struct arg_option *option, void *values,
-                        const char *value)
+/* Writes value (ARG_STRING), appends it (ARG_LIST) or 1 (ARG_FLAG) into
+ * option's field of values, where its table's offset says. FACET_EINPUT
+ * when an ARG_LIST is full. */
+static int store_value(const char *command, const struct arg_option *option,
+                       void *values, const char *value,
+                       struct facet_error *err)
 {
     assert(values != NULL);
     char *field = (char *)values + option->offset;
-    if (option->kind == ARG_FLAG)
+    if (option->kind == ARG_FLAG) {
         *(int *)(void *)field = 1;
-    else
+    } else if (option->kind == ARG_LIST) {
+        struct arg_list *list = (struct arg_list *)(void *)field;
+        if (list->count >= ARG_LIST_MAX)
+            return facet_error_set(err, FACET_EINPUT,
+                "%s: option '--%s' is given more than %d times", command,
+                option->name, ARG_LIST_MAX);
+        list->item[list->count++] = value;
+    } else {
         *(const char **)(void *)field = value;
+    }
+    return FACET_OK;
 }
 
 int args_parse(int argc, char **argv, const struct arg_table *own,
@@ -140,13 +151,15 @@ int args_parse(int argc, char **argv, const struct arg_table *own,
             positional[(*count)++] = word;
             continue;
         }
-        if (option->kind == ARG_STRING && value == NULL) {
+        if (option->kind != ARG_FLAG && value == NULL) {
             if (i + 1 >= argc)
                 return facet_error_set(err, FACET_EINPUT,
                     "%s: option '--%s' needs a value", argv[0], option->name);
             value = argv[++i];
         }
-        store_value(option, values, value);
+        int rc = store_value(argv[0], option, values, value, err);
+        if (rc != FACET_OK)
+            return rc;
     }
     return FACET_OK;
 }
@@ -209,7 +222,7 @@ int args_int(const char *text, long min, long max, const char *what,
 static void append_names(char *left, size_t size, const struct arg_option *o)
 {
     size_t n = strlen(left);
-    const char *value = o->kind == ARG_STRING ? o->value : NULL;
+    const char *value = o->kind != ARG_FLAG ? o->value : NULL;
     snprintf(left + n, size - n, "%s--%s%s%s", n > 2 ? ", " : "", o->name,
              value ? " " : "", value ? value : "");
     n = strlen(left);
@@ -251,7 +264,7 @@ void args_print_help(FILE *out, const struct arg_option *options)
     for (const struct arg_option *o = options; o->name != NULL; o++) {
         /* an entry without help is a spelling of the one before it */
         assert(o->help != NULL || o != options);
-        assert(o->kind != ARG_STRING || o->value != NULL);
+        assert(o->kind == ARG_FLAG || o->value != NULL);
         if (o->help == NULL)
             continue;
         char left[256] = "  ";

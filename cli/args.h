@@ -21,7 +21,16 @@
 
 enum arg_kind {
     ARG_FLAG,    /* no value: sets its int field to 1 */
-    ARG_STRING   /* one value: sets its const char * field (into argv) */
+    ARG_STRING,  /* one value: sets its const char * field (into argv) */
+    ARG_LIST     /* a value each time it is given: appends it to its
+                    struct arg_list field (--sbatch LINE --sbatch LINE) */
+};
+
+/* The values of an ARG_LIST option, in the order given (into argv). */
+#define ARG_LIST_MAX 32
+struct arg_list {
+    const char *item[ARG_LIST_MAX];
+    int count;
 };
 
 struct arg_option {
@@ -30,8 +39,11 @@ struct arg_option {
     enum arg_kind kind;
     size_t offset;       /* offsetof its field in the values struct: an
                             int for ARG_FLAG, a const char * for
-                            ARG_STRING */
-    const char *value;   /* ARG_STRING: its value in the help ("FILE") */
+                            ARG_STRING, a struct arg_list for ARG_LIST */
+    /* ARG_STRING, ARG_LIST: its value in the help ("FILE"); a fixed set
+     * of words is written as them, '|' between ("yes|no"), which the
+     * bash completion offers (completion.h). */
+    const char *value;
     const char *help;    /* what it does, one paragraph (args_print_help
                             wraps it); NULL: another spelling of the entry
                             before it, named on that entry's line */
@@ -53,8 +65,9 @@ struct arg_table {
  * classify_flags.h's), writing each option's value into its table's
  * values. Positional arguments are stored in positional[0..max) and
  * counted in *count. Returns FACET_OK or FACET_EINPUT with err naming the
- * unknown option (and the nearest known one), the missing value or the
- * surplus argument. */
+ * unknown option (and the nearest known one), the missing value, an
+ * ARG_LIST option given more than ARG_LIST_MAX times or the surplus
+ * argument. */
 int args_parse(int argc, char **argv, const struct arg_table *own,
                const struct arg_table *shared, const char **positional,
                int max, int *count, struct facet_error *err);

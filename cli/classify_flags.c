@@ -87,7 +87,8 @@ static const char object_help[] =
 static const char group_help[] = "only the faces of group NAME (g statement)";
 
 const struct arg_option surface_flags_options[] = {
-    {"units", 0, ARG_STRING, offsetof(struct surface_flags, units), "U",
+    {"units", 0, ARG_STRING, offsetof(struct surface_flags, units),
+     "m|cm|mm|in|ft",
      units_help, default_units},
     {"object", 0, ARG_STRING, offsetof(struct surface_flags, object), "NAME",
      object_help, NULL},
@@ -98,12 +99,12 @@ const struct arg_option surface_flags_options[] = {
 
 const struct arg_option classify_flags_options[] = {
     {"units", 0, ARG_STRING, offsetof(struct classify_flags, surface.units),
-     "U", units_help, default_units},
+     "m|cm|mm|in|ft", units_help, default_units},
     {"curvature-tol", 0, ARG_STRING,
      offsetof(struct classify_flags, curvature_tol), "K",
      "|k| < K (1/m) counts as zero", default_curvature_tol},
     {"per-panel", 0, ARG_STRING, offsetof(struct classify_flags, per_panel),
-     "MODE", "extremes: k1 = max, k2 = min over the panel's samples (the "
+     "extremes|mean", "extremes: k1 = max, k2 = min over the panel's samples (the "
      "paper's); mean: the area-weighted mean shape operator",
      default_per_panel},
     {"flip-normals", 0, ARG_FLAG,
@@ -147,7 +148,8 @@ const struct arg_option classify_flags_options[] = {
      "NAME", object_help, NULL},
     {"group", 0, ARG_STRING, offsetof(struct classify_flags, surface.group),
      "NAME", group_help, NULL},
-    {"uv", 0, ARG_STRING, offsetof(struct classify_flags, uv), "METHOD",
+    {"uv", 0, ARG_STRING, offsetof(struct classify_flags, uv),
+     "vt|grid|plane|harmonic|auto",
      "the UV panels follow: vt, grid (a structured quad grid's own i, j), "
      "plane, harmonic; default the first of these that applies", NULL},
     {NULL, 0, ARG_FLAG, 0, NULL, NULL, NULL},

@@ -11,6 +11,7 @@
 #include "args.h"
 #include "classify_flags.h"
 #include "command.h"
+#include "core/base/numformat.h"
 #include "option_text.h"
 #include "progress.h"
 #include "shown.h"
@@ -30,7 +31,9 @@ static void print_human(const struct surface *s,
     shown_line(stdout, "%-16s %s (%s, %.3f m^2, %zu triangles, UV from %s)",
                "surface", s->path, mesh_units_name(s->units), s->mesh.area,
                s->mesh.ntriangles, param_method_name(s->param.method));
-    printf("%-16s %d x %d (%zu panels)\n", "grid", p->nu, p->nv, t->panels);
+    char panels[40];
+    number_grouped(panels, sizeof panels, (double)t->panels, 0);
+    printf("%-16s %d x %d (%s panels)\n", "grid", p->nu, p->nv, panels);
     printf("%-16s %g mm\n", "threshold", o->threshold * 1000);
     if (o->curvature_tol > 0)
         printf("%-16s %g 1/m\n", "curvature tol", o->curvature_tol);

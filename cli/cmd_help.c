@@ -20,7 +20,7 @@ static const struct arg_option help_options[] = {
      "print this help, of every command, as a manual page (roff): what "
      "make install installs as facet.1", NULL},
     {"completion", 0, ARG_STRING, offsetof(struct help_args, completion),
-     "SHELL", "print the completion script of SHELL (bash) for the "
+     "bash", "print the completion script of that shell for the "
      "commands, their flags and the columns of --sort and --where",
      NULL},
     {NULL, 0, ARG_FLAG, 0, NULL, NULL, NULL},

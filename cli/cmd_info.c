@@ -374,7 +374,8 @@ struct info_args {
 };
 
 static const struct arg_option info_options[] = {
-    {"uv", 0, ARG_STRING, offsetof(struct info_args, uv), "METHOD",
+    {"uv", 0, ARG_STRING, offsetof(struct info_args, uv),
+     "vt|grid|plane|harmonic",
      "whether that UV (vt, grid, plane, harmonic) applies; default: say "
      "which is taken and why", NULL},
     {"json", 0, ARG_FLAG, offsetof(struct info_args, json), NULL,

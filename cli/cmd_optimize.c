@@ -275,7 +275,8 @@ static const struct arg_option optimize_options[] = {
      "flatness threshold in mm: one value, a range A:B, or A:B:STEP for "
      "exhaustive", default_threshold},
     {"method", 0, ARG_STRING,
-     offsetof(struct optimize_command, search.method), "M",
+     offsetof(struct optimize_command, search.method),
+     "auto|exhaustive|random|nsga2",
      "auto, exhaustive, random or nsga2", default_method},
     {"evals", 0, ARG_STRING, offsetof(struct optimize_command, search.evals),
      "N", "random: points to draw", default_evals},
@@ -310,14 +311,14 @@ static const struct arg_option optimize_options[] = {
     {"name", 0, ARG_STRING, offsetof(struct optimize_command, name), "TEXT",
      "a name for the run", NULL},
     {"store-panels", 0, ARG_STRING,
-     offsetof(struct optimize_command, store_panels), "W",
+     offsetof(struct optimize_command, store_panels), "front|knee|none",
      "whose panels to store at the end: front (the Pareto options', up to "
      "16 or 1 in 40 of the run's: the knee, then the most spread), knee or "
      "none; fewer when the disk cannot hold them (said); any other "
      "option's when first looked at: show, export, tui",
      default_store_panels},
     {"measure", 0, ARG_STRING, offsetof(struct optimize_command, measure),
-     "M",
+     "needed|all",
      "needed: each option is measured for what the objectives, limits and "
      "prices read, the Pareto options in full (the rest read 'not "
      "measured', NULL in SQL); all: every option in full (a shard always "

@@ -10,6 +10,7 @@
 
 #include "args.h"
 #include "command.h"
+#include "core/base/numformat.h"
 #include "option_text.h"
 #include "surface_table.h"
 #include "core/out/report.h"
@@ -92,8 +93,11 @@ static int show_main(int argc, char **argv, struct facet_error *err)
                        o.row.modules, o.row.modules == 1 ? "" : "s",
                        o.row.modules == 1 ? "s" : "");
             } else {
-                printf("%-16s %d x %d (%zu panels)\n", "grid", o.row.nu,
-                       o.row.nv, o.totals.panels);
+                char panels[40];
+                number_grouped(panels, sizeof panels, (double)o.totals.panels,
+                               0);
+                printf("%-16s %d x %d (%s panels)\n", "grid", o.row.nu,
+                       o.row.nv, panels);
             }
             printf("%-16s %g mm\n", "threshold", o.row.threshold_mm);
             printf("%-16s %d%s\n", "Pareto rank", o.row.rank,

@@ -27,6 +27,10 @@ struct command {
     const struct arg_option *options;
     const struct arg_option *shared;
     const char *after;    /* lines after them (examples, notes), or "" */
+    /* The command whose options the words after "--" are (facet slurm:
+     * optimize's, for every shard), or NULL: after "--" only files. The
+     * bash completion offers that command's flags there. */
+    const struct command *passes_on;
     /* Runs the command on argv[0..argc) (argv[0] is the command's name).
      * Returns the exit code: 0 success, 1 failure while working, 2 bad
      * usage or bad input, with err filled for 1 and 2. */

@@ -12,7 +12,8 @@
 
 /* What a flag's value is, by the word its help names it with (the value
  * of its arg_option): a list of columns, one column, a --where
- * expression, a folder; any other value ("value") is offered file names,
+ * expression, a folder, one of a fixed set of words ("yes|no": "choice",
+ * the words offered); any other value ("value") is offered file names,
  * as a word that is no flag's value is. */
 static const struct {
     const char *value;
@@ -28,8 +29,10 @@ static const struct {
 
 static const char *value_kind(const struct arg_option *o)
 {
-    if (o->kind != ARG_STRING)
+    if (o->kind == ARG_FLAG)
         return NULL;
+    if (strchr(o->value, '|') != NULL)
+        return "choice";
     for (size_t k = 0; k < sizeof value_kinds / sizeof *value_kinds; k++)
         if (strcmp(o->value, value_kinds[k].value) == 0)
             return value_kinds[k].kind;
@@ -57,7 +60,15 @@ static void write_values(FILE *out, const char *command,
         fprintf(out, "    '%s --%s'", command, o->name);
         if (o->alias != 0)
             fprintf(out, " | '%s -%c'", command, o->alias);
-        fprintf(out, ") echo %s ;;\n", kind);
+        if (strcmp(kind, "choice") == 0) {
+            /* "choice WORD WORD...": the words of "yes|no" */
+            fputs(") echo 'choice ", out);
+            for (const char *c = o->value; *c != '\0'; c++)
+                fputc(*c == '|' ? ' ' : *c, out);
+            fputs("' ;;\n", out);
+        } else {
+            fprintf(out, ") echo %s ;;\n", kind);
+        }
     }
 }
 
@@ -67,6 +78,7 @@ static const char completion_function[] =
     "_facet() {\n"
     "    local cur=${COMP_WORDS[COMP_CWORD]} cmd=${COMP_WORDS[1]}\n"
     "    local at=$((COMP_CWORD - 1)) kind=none word head\n"
+    "    local i\n"
     "    COMPREPLY=()\n"
     "    if [ \"$COMP_CWORD\" -le 1 ]; then\n"
     "        COMPREPLY=($(compgen -W \"$_facet_commands --help --version\""
@@ -79,9 +91,18 @@ static const char completion_function[] =
     "    elif [ \"${COMP_WORDS[at]}\" = \"=\" ]; then\n"
     "        at=$((at - 1))\n"
     "    fi\n"
+    "    # after \"--\": the options of the command they are passed on to\n"
+    "    for ((i = 2; i < COMP_CWORD; i++)); do\n"
+    "        if [ \"${COMP_WORDS[i]}\" = -- ]; then\n"
+    "            cmd=$(_facet_passes_on \"$cmd\")\n"
+    "            break\n"
+    "        fi\n"
+    "    done\n"
     "    [ \"$at\" -ge 2 ] && kind=$(_facet_value \"$cmd\""
     " \"${COMP_WORDS[at]}\")\n"
-    "    case $kind in\n"
+    "    case ${kind%% *} in\n"
+    "    choice)\n"
+    "        COMPREPLY=($(compgen -W \"${kind#choice }\" -- \"$cur\")) ;;\n"
     "    columns)\n"
     "        word=${cur##*,}\n"
     "        head=${cur%\"$word\"}\n"
@@ -142,7 +163,15 @@ static void write_bash(FILE *out)
         write_values(out, command_table[i]->name, command_table[i]->options);
         write_values(out, command_table[i]->name, command_table[i]->shared);
     }
-    fputs("    *) echo none ;;\n    esac\n}\n\n", out);
+    fputs("    *) echo none ;;\n    esac\n}\n\n"
+          "# _facet_passes_on COMMAND: the command whose options follow "
+          "\"--\" in it\n"
+          "_facet_passes_on() {\n    case $1 in\n", out);
+    for (int i = 0; command_table[i] != NULL; i++)
+        if (command_table[i]->passes_on != NULL)
+            fprintf(out, "    %s) echo %s ;;\n", command_table[i]->name,
+                    command_table[i]->passes_on->name);
+    fputs("    esac\n}\n\n", out);
     fputs(completion_function, out);
 }
 

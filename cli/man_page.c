@@ -52,7 +52,7 @@ static void roff_lines(FILE *out, const char *lines)
 static void roff_option_names(FILE *out, const struct arg_option *o,
                               int first)
 {
-    const char *value = o->kind == ARG_STRING ? o->value : NULL;
+    const char *value = o->kind != ARG_FLAG ? o->value : NULL;
     fputs(first ? "\\fB" : ", \\fB", out);
     roff_text(out, "--");
     roff_text(out, o->name);

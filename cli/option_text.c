@@ -10,12 +10,22 @@
 #include <sys/ioctl.h>
 #include <unistd.h>
 
+#include "core/base/numformat.h"
+
 /* What a value of an option not known shows (NULL in the store): its
  * run did not need it (a run measures what its objectives, limits and
  * prices read; facet show measures the rest), or an older Facet stored
  * the option before it measured joints and moulds. */
 static const char not_stored[] =
     "- (not measured in this run, or stored by an older Facet)";
+
+/* value grouped by thousands with decimals places, in text (a buffer of
+ * its caller's): panels, areas and money read alike everywhere. */
+static const char *grouped(char text[40], double value, int decimals)
+{
+    number_grouped(text, 40, value, decimals);
+    return text;
+}
 
 /* The SP misfits, gaps and kinks of t, against o's limits. */
 static void joints_text(FILE *out, const struct option_totals *t,
@@ -76,37 +86,40 @@ static void slivers_text(FILE *out, const struct option_totals *t,
 void option_text_totals(FILE *out, const struct option_totals *t,
                         const struct classify_options *o)
 {
+    char a[40], b[40], c[40];
     fprintf(out, "\n%-6s %8s %14s %8s %16s\n", "type", "panels", "area m^2",
             "share", "cost USD");
     for (int k = 0; k < TYPE_COUNT; k++)
-        fprintf(out, "%-6s %8zu %14.3f %7.1f%% %16.2f\n",
-                panel_type_name((enum panel_type)k), t->count[k],
-                t->area_of[k],
+        fprintf(out, "%-6s %8s %14s %7.1f%% %16s\n",
+                panel_type_name((enum panel_type)k),
+                grouped(a, (double)t->count[k], 0),
+                grouped(b, t->area_of[k], 3),
                 t->area > 0 ? 100 * t->area_of[k] / t->area : 0,
-                t->cost_of[k]);
-    char area_cost[32] = "-";
-    if (!isnan(t->area_cost))
-        snprintf(area_cost, sizeof area_cost, "%.2f", t->area_cost);
-    fprintf(out, "%-6s %8zu %14.3f %7.1f%% %16s\n", "total", t->panels,
-            t->area, 100.0, area_cost);
+                grouped(c, t->cost_of[k], 2));
+    fprintf(out, "%-6s %8s %14s %7.1f%% %16s\n", "total",
+            grouped(a, (double)t->panels, 0), grouped(b, t->area, 3), 100.0,
+            grouped(c, t->area_cost, 2));
     if (isnan(t->area_cost)) {
         fprintf(out, "%-16s %s\n", "cost terms", not_stored);
     } else if (t->cost != t->area_cost) {
-        fprintf(out, "%-16s %zu panels x %g USD = %.2f USD\n", "panel cost",
-                t->panels, o->panel_cost, t->panel_cost);
-        fprintf(out, "%-16s %.3f m x %g USD/m = %.2f USD\n", "joint cost",
-                t->joint_length, o->joint_cost, t->joint_cost);
-        fprintf(out, "%-16s SP %zu x %g + DP %zu x %g USD = %.2f USD\n",
+        fprintf(out, "%-16s %s panels x %g USD = %s USD\n", "panel cost",
+                grouped(a, (double)t->panels, 0), o->panel_cost,
+                grouped(b, t->panel_cost, 2));
+        fprintf(out, "%-16s %s m x %g USD/m = %s USD\n", "joint cost",
+                grouped(a, t->joint_length, 3), o->joint_cost,
+                grouped(b, t->joint_cost, 2));
+        fprintf(out, "%-16s SP %zu x %g + DP %zu x %g USD = %s USD\n",
                 "mould cost", t->moulds_of[TYPE_SP], o->mould_cost[TYPE_SP],
-                t->moulds_of[TYPE_DP], o->mould_cost[TYPE_DP], t->mould_cost);
-        fprintf(out, "%-16s %.2f USD (area, panels, joints and moulds)\n",
-                "total cost", t->cost);
+                t->moulds_of[TYPE_DP], o->mould_cost[TYPE_DP],
+                grouped(a, t->mould_cost, 2));
+        fprintf(out, "%-16s %s USD (area, panels, joints and moulds)\n",
+                "total cost", grouped(a, t->cost, 2));
     }
     if (isnan(t->joint_length))
         fprintf(out, "\n%-16s %s\n", "joint length", not_stored);
     else
-        fprintf(out, "\n%-16s %.3f m (panel edges once each, and the "
-                "outline)\n", "joint length", t->joint_length);
+        fprintf(out, "\n%-16s %s m (panel edges once each, and the "
+                "outline)\n", "joint length", grouped(a, t->joint_length, 3));
     if (t->moulds == TOTALS_UNKNOWN ||
         t->moulds_of[TYPE_SP] == TOTALS_UNKNOWN ||
         t->moulds_of[TYPE_DP] == TOTALS_UNKNOWN ||
@@ -134,10 +147,11 @@ void option_text_totals(FILE *out, const struct option_totals *t,
     fprintf(out, "%-16s %s\n", "feasible", t->feasible ? "yes" : "NO");
 
     fprintf(out, "\n%-22s %8s %14s\n", "class", "panels", "area m^2");
-    for (int c = 0; c < CLASS_COUNT; c++)
-        fprintf(out, "%-22s %8zu %14.3f\n",
-                panel_class_name((enum panel_class)c), t->class_count[c],
-                t->class_area[c]);
+    for (int k = 0; k < CLASS_COUNT; k++)
+        fprintf(out, "%-22s %8s %14s\n",
+                panel_class_name((enum panel_class)k),
+                grouped(a, (double)t->class_count[k], 0),
+                grouped(b, t->class_area[k], 3));
 }
 
 static int terminal_width(FILE *out)

@@ -12,8 +12,11 @@ void option_csv_header(FILE *out)
 {
     fputs("run", out);
     for (int k = 0; k < OPTION_QUANTITIES; k++)
-        if (option_quantities[k].writer != WRITTEN_AS_KEY)
-            fprintf(out, ",%s", option_quantities[k].name);
+        if (option_quantities[k].writer != WRITTEN_AS_KEY) {
+            char name[64];
+            quantity_csv_name(&option_quantities[k], name, sizeof name);
+            fprintf(out, ",%s", name);
+        }
     fputc('\n', out);
 }
 

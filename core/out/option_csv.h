@@ -3,7 +3,8 @@
  * quantity table (quantity.h) in its order after the run: what `facet
  * options --csv` prints and the workbench's E (export marked) writes, so
  * that the two are one layout. Every column name once (sqlite3's .import
- * takes them as they are); numbers as the shortest text that reads back
+ * takes them as they are), with its unit as the panel schedule names
+ * it (quantity_csv_name: cost_usd, max_deviation_m); numbers as the shortest text that reads back
  * to the same double (numformat.h), whole numbers without a point; a
  * value not measured (NULL in the store) and crowding at a front's end
  * (infinite) an empty field.

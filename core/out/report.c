@@ -3,12 +3,14 @@
  */
 #include "core/out/report.h"
 
+#include <assert.h>
 #include <math.h>
 #include <string.h>
 
 #include "core/out/json.h"
 #include "core/base/numformat.h"
 #include "core/base/units.h"
+#include "core/quantity/quantity.h"
 
 /* A count, null when it is not known (TOTALS_UNKNOWN). */
 static void json_count(struct json_writer *w, size_t count)
@@ -268,43 +270,43 @@ void report_csv(FILE *out, const struct panelization *panels)
     report_csv_rows(out, panels, NULL, 1);
 }
 
+/* The totals CSV's columns, in its order: quantities of the table
+ * (quantity.h), named as option_csv names them. */
+static const char *const totals_columns[] = {
+    "panels", "fp_count", "sp_count", "dp_count", "area", "fp_area",
+    "sp_area", "dp_area", "fp_cost", "sp_cost", "dp_cost", "cost",
+    "planarity", "max_deviation", "max_panel_area", "p_dist", "feasible",
+    "joint_length", "moulds", "sp_moulds", "dp_moulds", "largest_family",
+    "single_moulds", "area_cost", "panel_cost", "joint_cost", "mould_cost",
+    "max_gap", "mean_gap", "max_kink", "mean_kink", "gaps_over",
+    "kinks_over", "sp_misfits", "sp_fitted",
+};
+
 void report_totals_csv(FILE *out, const struct option_totals *t)
 {
-    fputs("panels,fp_count,sp_count,dp_count,area_m2,fp_area_m2,sp_area_m2,"
-          "dp_area_m2,fp_cost_usd,sp_cost_usd,dp_cost_usd,cost_usd,"
-          "planarity_m,max_deviation_m,max_panel_area_m2,p_dist_m4,"
-          "feasible,joint_length_m,moulds,sp_moulds,dp_moulds,"
-          "largest_family,single_moulds,area_cost_usd,panel_cost_usd,"
-          "joint_cost_usd,mould_cost_usd,max_gap_mm,mean_gap_mm,"
-          "max_kink_deg,mean_kink_deg,gaps_over,kinks_over,sp_misfits,"
-          "sp_fitted\n", out);
-    fprintf(out, "%zu,%zu,%zu,%zu", t->panels, t->count[TYPE_FP],
-            t->count[TYPE_SP], t->count[TYPE_DP]);
-    csv_number(out, t->area);
-    for (int k = 0; k < TYPE_COUNT; k++)
-        csv_number(out, t->area_of[k]);
-    for (int k = 0; k < TYPE_COUNT; k++)
-        csv_number(out, t->cost_of[k]);
-    csv_number(out, t->cost);
-    csv_number(out, t->planarity);
-    csv_number(out, t->max_deviation);
-    csv_number(out, t->max_panel_area);
-    csv_number(out, t->p_dist);
-    fprintf(out, ",%d", t->feasible != 0);
-    csv_number(out, t->joint_length);
-    csv_number(out, totals_count(t->moulds));
-    csv_number(out, totals_count(t->moulds_of[TYPE_SP]));
-    csv_number(out, totals_count(t->moulds_of[TYPE_DP]));
-    csv_number(out, totals_count(t->largest_family));
-    csv_number(out, totals_count(t->singleton_families));
-    csv_number(out, t->area_cost);
-    csv_number(out, t->panel_cost);
-    csv_number(out, t->joint_cost);
-    csv_number(out, t->mould_cost);
-    csv_number(out, t->max_gap_mm);
-    csv_number(out, t->mean_gap_mm);
-    csv_number(out, t->max_kink_deg);
-    csv_number(out, t->mean_kink_deg);
-    fprintf(out, ",%zu,%zu,%zu,%zu\n", t->gaps_over, t->kinks_over,
-            t->sp_misfits, t->sp_fitted);
+    size_t n = sizeof totals_columns / sizeof *totals_columns;
+    for (size_t k = 0; k < n; k++) {
+        const struct quantity *q = quantity_named(totals_columns[k]);
+        assert(q != NULL && quantity_in_totals(q));
+        char name[64];
+        quantity_csv_name(q, name, sizeof name);
+        fprintf(out, "%s%s", k ? "," : "", name);
+    }
+    fputc('\n', out);
+    for (size_t k = 0; k < n; k++) {
+        const struct quantity *q = quantity_named(totals_columns[k]);
+        double value = quantity_of_totals(q, t);
+        if (q->yes_no && !isnan(value))
+            value = value != 0;
+        /* csv_number writes its comma first */
+        if (k == 0) {
+            char text[NUMBER_EXACT_SIZE] = "";
+            if (isfinite(value))
+                number_exact(text, value);
+            fputs(text, out);
+        } else {
+            csv_number(out, value);
+        }
+    }
+    fputc('\n', out);
 }

@@ -178,6 +178,15 @@ void quantity_totals_copy(struct option_totals *to,
 double option_quantity_value(const struct option_row *option,
                           const char *column);
 
+/* q's name in a CSV header: its name and the unit it is written in (as
+ * stored), the panel schedule's convention: "cost_usd", "fp_area_m2",
+ * "max_deviation_m", "p_dist_m4", "max_gap_mm", "max_kink_deg"; a name
+ * that already ends with its unit ("threshold_mm") and a quantity of no
+ * unit ("panels", "crowding") as it is. What `facet options --csv`, the
+ * workbench's marked CSV and an export's totals CSV name their columns;
+ * --where, --sort and --json take the name alone (docs/manual.md). */
+void quantity_csv_name(const struct quantity *q, char *out, size_t size);
+
 /* value with decimals places and, when thousands, 1,000 separators
  * ("1,551,317.25"); "-" for NaN, "inf"/"-inf" for infinities. */
 void quantity_number_text(char *out, size_t size, double value, int decimals,

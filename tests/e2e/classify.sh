@@ -9,7 +9,7 @@ fixture roof.obj || exit 1
 "$FACET" example plane --res 8 -o "$WORK/plane.obj" || exit 1
 
 expect "classify roof at the paper's grid" 0 "$FACET" classify "$WORK/roof.obj" --grid 37x49
-stdout_has "totals table" '^total +1813 '
+stdout_has "totals table" '^total +1,813 '
 stdout_has "classes table" '^convex_round '
 stdout_has "panel map (plain letters, not a terminal)" '^  [FSD.]{37}$'
 run "$FACET" classify "$WORK/roof.obj" --grid 37x49

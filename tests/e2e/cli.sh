@@ -11,7 +11,7 @@ stdout_has "--help lists example" '^  example '
 expect "facet help info exits 0" 0 "$FACET" help info
 stdout_has "help info shows usage" '^usage: facet info SURFACE.obj'
 expect "facet info --help exits 0" 0 "$FACET" info --help
-stdout_has "info --help shows options" '--units U'
+stdout_has "info --help shows options" '--units m[|]cm[|]mm[|]in[|]ft'
 expect_error "no command is bad usage" 'usage: facet COMMAND|unknown' "$FACET" frobnicate
 expect_error "unknown option" "unknown option '--frob'" "$FACET" info --frob x.obj
 expect_error "help for unknown command" "unknown command 'nope'" "$FACET" help nope
@@ -161,14 +161,14 @@ def said(pattern):
 u = said(r"--u A:B panels along u \(default (\d+):(\d+)")
 v = said(r"--v A:B panels along v \(default (\d+):(\d+)")
 t, = said(r"--threshold T flatness threshold in mm: one value, a range A:B, or A:B:STEP for exhaustive \(default ([\d.]+)\)")
-limit, = said(r"--method M auto, exhaustive, random or nsga2 \(default auto: exhaustive up to ([\d,]+) points")
+limit, = said(r"--method auto\|exhaustive\|random\|nsga2 auto, exhaustive, random or nsga2 \(default auto: exhaustive up to ([\d,]+) points")
 evals, = said(r"--evals N random: points to draw \(default (\d+)\)")
 pop, = said(r"--pop N nsga2: population \(default (\d+)\)")
 gens, = said(r"--gens N nsga2: generations \(default (\d+)\)")
 seed, = said(r"the same seed gives the same options \(default (\d+)\)")
 objectives, = said(r"max:NAME to maximise \(default ([a-z_:,]+)\)")
-keep, = said(r"--store-panels W .*?\(default (\w+)\)")
-units, = said(r"--units U what one OBJ unit is: m, cm, mm, in, ft \(default (\w+)\)")
+keep, = said(r"--store-panels front\|knee\|none .*?\(default (\w+)\)")
+units, = said(r"--units m\|cm\|mm\|in\|ft what one OBJ unit is: m, cm, mm, in, ft \(default (\w+)\)")
 tol = said(r"counts as zero \(default (8 t / d\^2)")
 mode, = said(r"shape operator \(default (\w+)\)")
 prices = said(r"USD/m\^2 \(default ([\d.]+),([\d.]+),([\d.]+)\)")

@@ -110,9 +110,9 @@ same "--where moulds" "$(($(wc -l <"$OUT") - 1))" "$(sql "$DB" "SELECT count(*) 
 knee=$(sql "$DB" "SELECT knee FROM runs")
 run "$FACET" show "$DB" --run 1 --option "$knee"
 stdout_has "show: the mould cost" '^mould cost +SP [0-9]+ x 3000 \+ DP [0-9]+ x 20000 USD'
-stdout_has "show: the joint cost" '^joint cost +[0-9.]+ m x 40 USD/m'
+stdout_has "show: the joint cost" '^joint cost +[0-9.,]+ m x 40 USD/m'
 same "show: the total is the option's cost" \
-    "$(grep '^total cost' "$OUT" | awk '{print $3}')" \
+    "$(grep '^total cost' "$OUT" | awk '{gsub(",", "", $3); print $3}')" \
     "$(sql "$DB" "SELECT printf('%.2f', cost) FROM options WHERE number = $knee")"
 
 # --- export: OBJ groups mould_K, CSV column --------------------------------

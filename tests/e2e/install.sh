@@ -147,6 +147,48 @@ done
 same "completion: facet classify --sp-<TAB>" \
     "$(complete_words facet classify --sp- | paste -sd' ')" "--sp-as-fp --sp-fit"
 
+# A flag of a fixed set of values offers them (issue 32 item 15), and
+# facet takes each: the truth is facet's own refusal of any other value.
+same "completion: --sp-fit <TAB>" \
+    "$(complete_words facet classify x.obj --sp-fit "" | paste -sd' ')" "no yes"
+same "completion: --units <TAB>" \
+    "$(complete_words facet info x.obj --units "" | paste -sd' ')" "cm ft in m mm"
+same "completion: --units=c<TAB>" \
+    "$(complete_words facet optimize x.obj --units = c | paste -sd' ')" "cm"
+same "completion: --method n<TAB>" \
+    "$(complete_words facet optimize x.obj --method n | paste -sd' ')" "nsga2"
+same "completion: export --colour <TAB>" \
+    "$(complete_words facet export r.db --colour "" | paste -sd' ')" "class type"
+"$FACET" example plane --res 6 -o choice.obj >/dev/null 2>&1
+# accepted: each value offered, given to the command, is not refused as
+# a value of that flag
+bad=""
+for pair in "classify|--sp-fit" "classify|--units" "classify|--per-panel" \
+    "classify|--uv" "info|--uv" "info|--units" "optimize|--method" \
+    "optimize|--measure" "optimize|--store-panels"; do
+    cmd=${pair%%|*} flag=${pair#*|}
+    values=$(complete_words facet "$cmd" choice.obj "$flag" "")
+    [ -n "$values" ] || bad="$bad $cmd $flag: nothing offered;"
+    for value in $values; do
+        case $cmd in
+        classify) set -- --grid 2x2 ;;
+        optimize) set -- --db "opt-$flag-$value.db" --u 2:2 --v 2:2 --table 1 ;;
+        *) set -- ;;
+        esac
+        "$FACET" "$cmd" choice.obj "$@" "$flag" "$value" >/dev/null 2>"$ERR" ||
+            bad="$bad $cmd $flag $value: $(head -c 160 "$ERR");"
+    done
+done
+same "every value completion offers for a fixed-choice flag is taken" "${bad# }" ""
+# facet slurm passes the words after -- to optimize: they complete as
+# optimize's flags and values.
+offers "completion: facet slurm x.obj -- --<TAB> offers optimize's flags" \
+    "$(printf -- '--module\n--threshold\n--objectives\n--method\n')" facet slurm x.obj --shards 2 -- --
+same "completion: facet slurm x.obj -- --method <TAB> offers optimize's methods" \
+    "$(complete_words facet slurm x.obj -- --method "" | paste -sd' ')" "auto exhaustive nsga2 random"
+same "completion: before --, facet slurm's own flags" \
+    "$(complete_words facet slurm x.obj --se | paste -sd' ')" "--setup"
+
 # The columns: every column of a store's options table, as sqlite3 reads it.
 "$FACET" example plane --res 6 -o p.obj >/dev/null 2>&1
 "$FACET" optimize p.obj --db p.db --u 2:3 --v 2:3 >/dev/null 2>&1

@@ -27,6 +27,8 @@ import math
 import sqlite3
 import sys
 
+from csv_names import column_of, csv_name
+
 # Every column of the options table but run (which comes first), in the
 # table's order: what --json and --csv must carry (docs/store.md).
 COLUMNS = ["number", "generation", "nu", "nv", "threshold_mm", "panels",
@@ -310,9 +312,10 @@ def check_listing(path, form, listing, sql):
         with open(listing, newline="") as f:
             reader = csv.reader(f)
             header = next(reader)
-            if header != ["run"] + COLUMNS:
+            # the columns with their units (csv_names.py)
+            if header != ["run"] + [csv_name(c) for c in COLUMNS]:
                 problem("csv header %s" % header)
-            got = [{k: (None if v == "" else float(v))
+            got = [{column_of(k): (None if v == "" else float(v))
                     for k, v in zip(header, row)} for row in reader]
     if len(got) != len(want):
         problem("facet options gave %d rows, SQL %d" % (len(got), len(want)))

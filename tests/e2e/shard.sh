@@ -207,7 +207,7 @@ expect "facet slurm writes its scripts" 0 "$FACET" slurm "$ROOF" --shards 3 \
 same "three scripts, each valid bash" \
     "$(for f in facet-shards.sbatch facet-merge.sbatch submit.sh; do bash -n "$WORK/cluster/$f" && echo ok; done | tr '\n' ' ')" "ok ok ok "
 same "the array has a task per shard, the merge waits for all (afterok)" \
-    "$(grep -c '^#SBATCH --array=1-3$' "$WORK/cluster/facet-shards.sbatch") $(grep -c 'dependency=afterok:' "$WORK/cluster/submit.sh")" "1 1"
+    "$(grep -c '^#SBATCH --array=1-3$' "$WORK/cluster/facet-shards.sbatch") $(grep -c '^merge=$(sbatch --parsable --dependency=afterok:' "$WORK/cluster/submit.sh")" "1 1"
 same "each task works on node-local scratch" \
     "$(grep -c 'TMPDIR:-/tmp' "$WORK/cluster/facet-shards.sbatch")" "1"
 for i in 1 2 3; do

@@ -45,7 +45,7 @@ stdout_has "show: the width and the slivers against the limit" \
 stdout_has "show: infeasible" '^feasible +NO$'
 run "$FACET" options l.db --csv
 same "options --csv: the three columns, width in m" \
-    "$(/usr/bin/python3 -c "import csv,sys; r=list(csv.DictReader(open(sys.argv[1])))[0]; print(round(float(r['min_panel_area']),9), round(float(r['min_panel_width']),9), r['slivers'])" "$OUT")" \
+    "$(/usr/bin/python3 -c "import csv,sys; r=list(csv.DictReader(open(sys.argv[1])))[0]; print(round(float(r['min_panel_area_m2']),9), round(float(r['min_panel_width_m']),9), r['slivers'])" "$OUT")" \
     "0.3 0.3 5"
 run "$FACET" options l.db --json
 json_check "options --json: the three columns" \

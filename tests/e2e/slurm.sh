@@ -4,7 +4,13 @@
 # own), the scripts of `facet slurm` submitted with sbatch (a job array of
 # 4 shards, then the merge after them), and the merged run compared by
 # SQLite with the unsharded one; then the same for a project of two files
-# searched over panel modules (3 shards), its surface rows compared too. The daemons are stopped and everything
+# searched over panel modules (3 shards), its surface rows compared too.
+# The roof's jobs ask what a site asks (issue 32 item 15): --mem, --qos,
+# --account, an extra #SBATCH line and a setup line, and Slurm's own
+# record of the jobs (scontrol show job) must hold them, the setup line's
+# words in every log; then a shard that fails leaves the merge pending,
+# its log says so, and the scancel it gives takes the merge out of the
+# queue. The daemons are stopped and everything
 # removed whatever happens. Where the daemons cannot run (not root, Slurm
 # or munge not installed: `make deps` installs them), every check is
 # reported as skipped with the reason, never as passed.
@@ -100,7 +106,7 @@ SelectType=select/cons_tres
 SelectTypeParameters=CR_CPU
 ReturnToService=2
 SlurmdTimeout=30
-NodeName=$HOST NodeAddr=127.0.0.1 CPUs=2 State=UNKNOWN
+NodeName=$HOST NodeAddr=127.0.0.1 CPUs=2 RealMemory=256 State=UNKNOWN
 PartitionName=facet Nodes=$HOST Default=YES MaxTime=INFINITE State=UP
 EOF
 export SLURM_CONF=$CONF
@@ -132,7 +138,6 @@ submit_and_compare() {
     while [ "$1" != "--" ]; do facet_args+=("$1"); shift; done
     shift
     optimize_args=("$@")
-    mkdir -p "$results"
     expect "$name: facet slurm writes the scripts" 0 "$FACET" slurm "${facet_args[@]}" \
         --shards "$shards" --results "$results" --cpus 1 -- "${optimize_args[@]}"
     sed 's/^/# /' "$OUT"
@@ -185,7 +190,63 @@ submit_and_compare() {
 
 fixture roof40.obj "$WORK/roof.obj" || exit 1
 expect "unsharded run" 0 "$FACET" optimize "$WORK/roof.obj" --db "$WORK/whole.db" "${SPACE[@]}" --measure all --table 1
-submit_and_compare "roof" "$SHARDS" "$D/results" "$WORK/whole.db" "$WORK/roof.obj" -- "${SPACE[@]}"
+# The results folder is made by facet slurm, two levels down.
+SITE=(--mem 100M --qos normal --account facetlab --sbatch '--comment=facet-e2e'
+      --setup 'echo "setup ran: $SLURM_JOB_NAME"')
+submit_and_compare "roof" "$SHARDS" "$D/results/roof" "$WORK/whole.db" "$WORK/roof.obj" "${SITE[@]}" -- "${SPACE[@]}"
+for f in facet-shards.sbatch facet-merge.sbatch; do
+    same "roof: $f asks --mem, --account, --qos and the extra line" \
+        "$(grep -E '^#SBATCH --(mem|account|qos|comment)=' "$D/results/roof/$f" | paste -sd' ')" \
+        "#SBATCH --mem=100M #SBATCH --account=facetlab #SBATCH --qos=normal #SBATCH --comment=facet-e2e"
+done
+# Slurm's own record: every job of the two (4 tasks and the merge).
+same "roof: Slurm gave every job the memory asked (MinMemoryNode=100M)" \
+    "$(grep -o 'MinMemoryNode=[^ ]*' "$WORK/jobs" | sort | uniq -c | sed 's/^ *//')" "$((SHARDS + 1)) MinMemoryNode=100M"
+# (A cluster without accounting, as this one, keeps no QOS: scontrol
+# shows QOS=(null); that the jobs ran with --qos in their scripts is
+# what is checked of it.)
+echo "# roof: $(grep -o 'QOS=[^ ]*' "$WORK/jobs" | sort | uniq -c | sed 's/^ *//') (no accounting here)"
+same "roof: Slurm charged every job to the account asked" \
+    "$(grep -o 'Account=[^ ]*' "$WORK/jobs" | sort | uniq -c | sed 's/^ *//')" "$((SHARDS + 1)) Account=facetlab"
+same "roof: Slurm took the extra #SBATCH line (Comment=facet-e2e)" \
+    "$(grep -o 'Comment=[^ ]*' "$WORK/jobs" | sort | uniq -c | sed 's/^ *//')" "$((SHARDS + 1)) Comment=facet-e2e"
+same "roof: every job ran the setup line first (its log's first line)" \
+    "$(for log in "$D/results/roof"/*.log; do head -n 1 "$log"; done | sort | uniq -c | sed 's/^ *//' | paste -sd' ')" \
+    "1 setup ran: facet-merge $SHARDS setup ran: facet-shard"
+
+# A shard that fails (its surface gone from the node): the merge stays
+# pending, never to start; the shard's log says so and gives the
+# scancel, which takes the merge out of the queue.
+cp "$WORK/roof.obj" "$WORK/gone.obj"
+F=$D/failing
+run "$FACET" slurm "$WORK/gone.obj" --shards 2 --results "$F" -- "${SPACE[@]}"
+rm "$WORK/gone.obj"
+run bash "$F/submit.sh"
+sed 's/^/# /' "$OUT"
+array_job=$(sed -n 's/.*shards: job \([0-9]*\).*/\1/p' "$OUT")
+merge_job=$(sed -n 's/.*merge: job \([0-9]*\).*/\1/p' "$OUT")
+same "failing: submit.sh's text gives the scancel of the merge" \
+    "$(grep -c "^  scancel $merge_job\$" "$OUT")" "1"
+waited=0
+while [ "$waited" -lt $((WAIT_SECONDS * 5)) ]; do
+    [ -z "$(squeue -h -j "$array_job" 2>/dev/null)" ] && break
+    sleep 0.2
+    waited=$((waited + 1))
+done
+sed 's/^/#   /' "$F/shard-1.log" | tail -n 5
+echo "# failing: the merge: $(squeue -h -j "$merge_job" -o '%T %r' 2>/dev/null)"
+same "failing: with every shard failed, Slurm keeps the merge pending" \
+    "$(squeue -h -j "$merge_job" -o '%T' 2>/dev/null)" "PENDING"
+same "failing: each shard's log says the merge will never start and names it" \
+    "$(cat "$F"/shard-*.log | grep -c "^facet: shard [12] of 2 failed .*will never start\.$") $(cat "$F"/shard-*.log | grep -c "^facet: cancel the merge: scancel $merge_job\$")" "2 2"
+cancel=$(sed -n 's/^facet: cancel the merge: \(scancel [0-9]*\)$/\1/p' "$F/shard-1.log")
+$cancel
+for _ in $(seq 1 50); do
+    [ -z "$(squeue -h -j "$merge_job" 2>/dev/null)" ] && break
+    sleep 0.2
+done
+same "failing: the log's scancel takes the merge out of the queue" \
+    "$(squeue -h -j "$merge_job" 2>/dev/null | wc -l)" "0"
 
 # A project of two files (one of four objects, one of a fifth), searched
 # over panel modules: its shards, their merge, and each option's surface

@@ -30,6 +30,8 @@ import re
 import sqlite3
 import sys
 
+from csv_names import column_of
+
 TIE = 1e-9
 
 
@@ -102,7 +104,8 @@ def check_order(path, run, sort, descending, listing, form):
             header = next(reader)
             # An empty field is NULL: crowding's infinity, or a column the
             # option has no value in (a single surface's module).
-            got = [{k: (None if v == "" else float(v))
+            # a header names its column with its unit (csv_names.py)
+            got = [{column_of(k): (None if v == "" else float(v))
                     for k, v in zip(header, row)} for row in reader]
     numbers = [int(g["number"]) for g in got]
     if numbers != want[:len(numbers)] or not numbers:

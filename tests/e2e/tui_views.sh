@@ -254,10 +254,13 @@ check_file "11: the CSV holds the two marked options ($m1 $m2: got $got)" \
 # Issue 32 item 5: its header names every column of sqlite3's options
 # table once, no name twice (sqlite3's .import renamed 19 of 82), and each
 # number is the store's, the shortest text that reads back to it.
-if out=$(/usr/bin/python3 - "$WORK/marked.csv" "$WORK/v.db" <<'PY' 2>&1
+if out=$(PYTHONPATH=$(dirname "$0") /usr/bin/python3 - "$WORK/marked.csv" "$WORK/v.db" <<'PY' 2>&1
 import csv, sqlite3, sys
+from csv_names import column_of
 rows = list(csv.reader(open(sys.argv[1])))
-head = rows[0]
+# headers with their units (cost_usd), as facet options --csv's
+head = [column_of(h) for h in rows[0]]
+assert "cost_usd" in rows[0] and "max_deviation_m" in rows[0], rows[0][:20]
 twice = sorted({h for h in head if head.count(h) > 1})
 assert not twice, "named twice: %s" % twice
 con = sqlite3.connect(sys.argv[2])

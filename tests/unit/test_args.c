@@ -75,6 +75,58 @@ static void test_errors(void **state)
                                 &count, &err), FACET_EINPUT);
 }
 
+/* An ARG_LIST option given again and again: every value, in order, and
+ * a clear error past ARG_LIST_MAX. */
+struct list_values {
+    struct arg_list lines;
+};
+
+static const struct arg_option list_options[] = {
+    {"sbatch", 0, ARG_LIST, offsetof(struct list_values, lines), "LINE",
+     "one more line", NULL},
+    {NULL, 0, ARG_FLAG, 0, NULL, NULL, NULL},
+};
+
+static void test_list(void **state)
+{
+    (void)state;
+    struct list_values v;
+    memset(&v, 0, sizeof v);
+    const struct arg_table own = {list_options, &v};
+    char *argv[] = {"slurm", "--sbatch", "--gres=gpu:1", "x.obj",
+                    "--sbatch=--mail-type=END", "--sbatch", "-N 2"};
+    const char *positional[2];
+    int count;
+    struct facet_error err;
+    assert_int_equal(args_parse(7, argv, &own, NULL, positional, 2, &count,
+                                &err), FACET_OK);
+    assert_int_equal(count, 1);
+    assert_int_equal(v.lines.count, 3);
+    assert_string_equal(v.lines.item[0], "--gres=gpu:1");
+    assert_string_equal(v.lines.item[1], "--mail-type=END");
+    assert_string_equal(v.lines.item[2], "-N 2");
+
+    char *many[1 + 2 * (ARG_LIST_MAX + 1)];
+    many[0] = "slurm";
+    for (int k = 0; k < ARG_LIST_MAX + 1; k++) {
+        many[1 + 2 * k] = "--sbatch";
+        many[2 + 2 * k] = "-N 1";
+    }
+    memset(&v, 0, sizeof v);
+    assert_int_equal(args_parse(1 + 2 * ARG_LIST_MAX, many, &own, NULL,
+                                positional, 2, &count, &err), FACET_OK);
+    assert_int_equal(v.lines.count, ARG_LIST_MAX);
+    memset(&v, 0, sizeof v);
+    assert_int_equal(args_parse(1 + 2 * (ARG_LIST_MAX + 1), many, &own,
+                                NULL, positional, 2, &count, &err),
+                     FACET_EINPUT);
+    assert_non_null(strstr(err.message, "'--sbatch' is given more than"));
+    char *missing[] = {"slurm", "--sbatch"};
+    assert_int_equal(args_parse(2, missing, &own, NULL, positional, 2,
+                                &count, &err), FACET_EINPUT);
+    assert_non_null(strstr(err.message, "needs a value"));
+}
+
 static void test_numbers(void **state)
 {
     (void)state;
@@ -217,7 +269,7 @@ static void test_command_tables(void **state)
         for (int t = 0; t < 2; t++)
             for (const struct arg_option *o = tables[t];
                  o != NULL && o->name != NULL; o++) {
-                if (o->kind == ARG_STRING && o->value == NULL)
+                if (o->kind != ARG_FLAG && o->value == NULL)
                     fail_msg("%s --%s: no value name", cmd->name, o->name);
                 if (o->help == NULL && o == tables[t])
                     fail_msg("%s --%s: no help", cmd->name, o->name);
@@ -238,6 +290,7 @@ int main(void)
         cmocka_unit_test(test_forms),
         cmocka_unit_test(test_errors),
         cmocka_unit_test(test_shared_table),
+        cmocka_unit_test(test_list),
         cmocka_unit_test(test_numbers),
         cmocka_unit_test(test_grid_override),
         cmocka_unit_test(test_help_lines),
