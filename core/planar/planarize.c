@@ -15,11 +15,16 @@
 #include "core/base/quad.h"
 #include "core/base/vec3.h"
 
-/* The weights of planarize.h's sum; closeness has weight 1. */
+/* The weights of planarize.h's sum; closeness has weight 1. Planarity's
+ * grows from the first to the last a hundredfold at a time (see solve). */
+#define WEIGHT_PLANARITY_FIRST 1.0
 #define WEIGHT_PLANARITY 1e6
 #define WEIGHT_FAIRNESS 0.1
-/* Of the squared distance to the foot point, beside the tangent plane's. */
-#define WEIGHT_FOOT 0.01
+/* Of the squared distance each corner moved from its start: the grid
+ * stays the designer's, its joints where they were drawn. */
+#define WEIGHT_ANCHOR 0.01
+/* The least Levenberg-Marquardt damping, beside a diagonal of about 1. */
+#define MU_LEAST 1e-4
 
 static const int corner_offset[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
 
@@ -289,16 +294,31 @@ static double feet_find(const struct nearest_index *index, int nvars,
     return sum;
 }
 
+/* The closeness energy at x alone. */
+static double closeness_of(const struct nearest_index *index, int nvars,
+                           const double *x)
+{
+    double sum = 0;
+    for (int v = 0; v < nvars; v++) {
+        struct nearest_hit hit;
+        nearest_point(index, &x[3 * v], &hit);
+        sum += hit.distance * hit.distance;
+    }
+    return sum;
+}
+
 /* The whole energy at x whose feet are known (closeness given). */
 static double energy(const struct problem *p, const double *x,
-                     const double *x0, double closeness)
+                     const double *x0, double closeness, double w_p)
 {
     double sum = closeness;
     for (size_t q = 0; q < p->nquads; q++) {
         double g[4][3];
         double r = quad_residual(x, p->quad[q], g);
-        sum += WEIGHT_PLANARITY * r * r;
+        sum += w_p * r * r;
     }
+    for (size_t k = 0; k < 3 * (size_t)p->nvars; k++)
+        sum += WEIGHT_ANCHOR * (x[k] - x0[k]) * (x[k] - x0[k]);
     for (size_t t = 0; t < p->ntriples; t++) {
         const int *v = p->triple[t];
         for (int k = 0; k < 3; k++) {
@@ -315,7 +335,8 @@ static double energy(const struct problem *p, const double *x,
  * gradient), damped by mu on the diagonal. */
 static void system_fill(const struct problem *p, cholmod_sparse *A,
                         double *rhs, const double *x, const double *x0,
-                        const double *foot, const double *normal, double mu)
+                        const double *foot, const double *normal, double w_p,
+                        double mu)
 {
     const int *Ap = A->p;
     memset(A->x, 0, (size_t)Ap[A->ncol] * sizeof(double));
@@ -326,25 +347,26 @@ static void system_fill(const struct problem *p, cholmod_sparse *A,
         double r = quad_residual(x, v, g);
         for (int a = 0; a < 4; a++)
             for (int xa = 0; xa < 3; xa++) {
-                rhs[3 * v[a] + xa] -= WEIGHT_PLANARITY * g[a][xa] * r;
+                rhs[3 * v[a] + xa] -= w_p * g[a][xa] * r;
                 for (int b = 0; b < 4; b++)
                     for (int xb = 0; xb < 3; xb++) {
                         /* Each pair once: the upper triangle. */
                         if (v[a] > v[b] || (v[a] == v[b] && xa > xb))
                             continue;
                         matrix_add(p, A, v[a], xa, v[b], xb,
-                                   WEIGHT_PLANARITY * g[a][xa] * g[b][xb]);
+                                   w_p * g[a][xa] * g[b][xb]);
                     }
             }
     }
     for (int v = 0; v < p->nvars; v++) {
         const double *n = &normal[3 * v];
         for (int xa = 0; xa < 3; xa++) {
-            rhs[3 * v + xa] -= x[3 * v + xa] - foot[3 * v + xa];
+            rhs[3 * v + xa] -= x[3 * v + xa] - foot[3 * v + xa] +
+                               WEIGHT_ANCHOR * (x[3 * v + xa] - x0[3 * v + xa]);
             for (int xb = xa; xb < 3; xb++)
                 matrix_add(p, A, v, xa, v, xb,
                            n[xa] * n[xb] +
-                           (xa == xb ? WEIGHT_FOOT + mu : 0));
+                           (xa == xb ? WEIGHT_ANCHOR + mu : 0));
         }
     }
     static const double D[3] = {1, -2, 1};
@@ -474,17 +496,22 @@ static int solve(const struct nearest_index *index, const struct problem *p,
                              c->status);
         goto done;
     }
-    /* Converged: no corner moves by more than this in a step. */
+    /* A step is done when no corner moves by more than still, or the sum
+     * falls by less than a thousandth; a weight is done after a done
+     * step, or after steps_per_weight steps. */
     double still = fmax(1e-3 * o->closeness, 1e-6);
-    double mu = 1e-8;
+    const int steps_per_weight = 8;
+    double w_p = WEIGHT_PLANARITY_FIRST;
+    int at_weight = 0;
+    double mu = MU_LEAST;
     double closeness = feet_find(index, p->nvars, x, foot, normal);
-    double e = energy(p, x, x0, closeness);
+    double e = energy(p, x, x0, closeness, w_p);
     *iterations = 0;
     *converged = 0;
-    while (*iterations < o->max_iterations && !*converged) {
+    while (*iterations < o->max_iterations) {
         if ((rc = facet_stop_check(o->stop, err)))
             goto done;
-        system_fill(p, A, B->x, x, x0, foot, normal, mu);
+        system_fill(p, A, B->x, x, x0, foot, normal, w_p, mu);
         c->status = CHOLMOD_OK;
         if (!cholmod_factorize(A, L, c) || c->status != CHOLMOD_OK) {
             /* Not positive definite to rounding: more damping. */
@@ -515,19 +542,33 @@ static int solve(const struct nearest_index *index, const struct problem *p,
         cholmod_free_dense(&step, c);
         double trial_closeness = feet_find(index, p->nvars, trial, trial_foot,
                                            trial_normal);
-        double trial_e = energy(p, trial, x0, trial_closeness);
+        double trial_e = energy(p, trial, x0, trial_closeness, w_p);
         (*iterations)++;
-        if (trial_e <= e || largest < still) {
+        at_weight++;
+        int done_step = largest < still;
+        if (trial_e <= e || done_step) {
+            done_step = done_step || e - trial_e <= 1e-3 * e;
             memcpy(x, trial, n * sizeof *x);
             memcpy(foot, trial_foot, n * sizeof *foot);
             memcpy(normal, trial_normal, n * sizeof *normal);
             e = trial_e;
-            mu = fmax(mu / 10, 1e-8);
-            *converged = largest < still;
+            mu = fmax(mu / 3, MU_LEAST);
         } else {
             mu *= 10;
-            if (mu > 1e8)
-                break;  /* no step lowers the energy: as far as it goes */
+            /* No step lowers the sum: as far as this weight goes. */
+            done_step = mu > 1e4;
+        }
+        if (done_step || at_weight >= steps_per_weight) {
+            if (w_p >= WEIGHT_PLANARITY) {
+                *converged = done_step;
+                if (done_step)
+                    break;
+            } else {
+                w_p *= 100;
+                at_weight = 0;
+                mu = MU_LEAST;
+                e = energy(p, x, x0, closeness_of(index, p->nvars, x), w_p);
+            }
         }
         if (o->progress != NULL)
             o->progress(o->progress_context, *iterations, o->max_iterations);
