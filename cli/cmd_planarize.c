@@ -265,9 +265,9 @@ static int planarize_run(int argc, char **argv, struct facet_error *err)
 
 const struct command cmd_planarize = {
     .name = "planarize",
-    .usage = "SURFACE.obj --grid NUxNV [--closeness MM] [--planarity TOL]\n"
-             "       [--obj FILE] [--force] [--json] [--units U] "
-             "[--object NAME] [--group NAME]",
+    .usage = "SURFACE.obj --grid NUxNV [--closeness MM]\n"
+             "       [--planarity TOL] [--obj FILE] [--force] [--json]\n"
+             "       [--units U] [--object NAME] [--group NAME]",
     .summary = "Move a UV grid's panel corners off the surface, within a "
                "closeness budget, until every quad is planar; say when it "
                "cannot.",
@@ -275,7 +275,7 @@ const struct command cmd_planarize = {
     .options = planarize_command_options,
     .shared = surface_flags_options,
     .after = "\nThe exit status is 0 whether or not the grid is feasible: "
-             "the output says which\n(\"result\", and \"feasible\" in "
+             "the output says\nwhich (\"result\", and \"feasible\" in "
              "JSON). A grid along a hypar's rulings, or\nany grid that does "
              "not follow a conjugate net of the surface, is infeasible\n"
              "unless the budget is large.\n",
