@@ -393,19 +393,26 @@ static void test_nearest_is_brute_force(void **state)
     (void)state;
     struct surface s;
     struct facet_error err;
-    if (surface_fixture_example("roof", 30, &s, &err) != FACET_OK)
+    if (surface_fixture_example("roof", 80, &s, &err) != FACET_OK)
         fail_msg("%s", err.message);
     struct nearest_index index;
     assert_int_equal(nearest_index_build(&s.mesh, &index, &err), FACET_OK);
     unsigned state_rng = 99;
-    for (int k = 0; k < 300; k++) {
+    for (int k = 0; k < 2000; k++) {
         double p[3];
+        /* Half anywhere in and around the box, half within a few cells
+         * of a vertex, where the nearest triangle is often in the next
+         * cell but one. */
+        const double *near = &s.mesh.position[3 * (size_t)(k * 7919 %
+                                                   s.mesh.nvertices)];
         for (int x = 0; x < 3; x++) {
             state_rng = state_rng * 1103515245u + 12345u;
             double r = ((state_rng >> 8) & 0xffff) / 65535.0;
             double lo = s.mesh.bbox_min[x], hi = s.mesh.bbox_max[x];
-            /* Some inside the box, some well outside it. */
-            p[x] = lo - 0.3 * (hi - lo + 1) + r * 1.6 * (hi - lo + 1);
+            if (k % 2)
+                p[x] = lo - 0.3 * (hi - lo + 1) + r * 1.6 * (hi - lo + 1);
+            else
+                p[x] = near[x] + (r * 2 - 1) * 3 * index.cell[x];
         }
         struct nearest_hit hit;
         nearest_point(&index, p, &hit);
