@@ -34,7 +34,7 @@ DEBIAN_PACKAGES := gcc g++ make pkg-config libncurses-dev libsqlite3-dev librsvg
 	libcmocka-dev sqlite3 tmux python3 python3-tinyobjloader \
 	libtinyobjloader-dev libxml2-utils python3-deap clang libclang-rt-14-dev \
 	slurm-wlm munge libxlsxwriter-dev python3-openpyxl python3-ezdxf \
-	python3-matplotlib nodejs npm man-db groff-base
+	python3-matplotlib nodejs npm man-db groff-base libsuitesparse-dev python3-numpy
 
 WARN    := -Wall -Wextra -Werror -Wshadow -Wstrict-prototypes -Wvla
 DEFS    := -D_POSIX_C_SOURCE=200809L -D_DEFAULT_SOURCE -DFACET_VERSION=\"$(VERSION)\"
@@ -52,7 +52,7 @@ endif
 # No -DNDEBUG in any variant: assert() states Facet's invariants and stays
 # live in the release build (core/base/error.c refuses to build without).
 CFLAGS  := -std=c11 $(WARN) $(DEFS) $(OPT) -MMD -MP -I.
-LDLIBS  := -lsqlite3 $(shell pkg-config --libs xlsxwriter 2>/dev/null || echo -lxlsxwriter) $(shell pkg-config --libs ncursesw 2>/dev/null || echo -lncursesw) -lpthread -lm
+LDLIBS  := -lsqlite3 $(shell pkg-config --libs cholmod 2>/dev/null || echo -lcholmod) $(shell pkg-config --libs xlsxwriter 2>/dev/null || echo -lxlsxwriter) $(shell pkg-config --libs ncursesw 2>/dev/null || echo -lncursesw) -lpthread -lm
 LDFLAGS := $(filter -fsanitize=%,$(OPT))
 
 CORE_SRC  := $(wildcard core/*/*.c)

@@ -10,6 +10,7 @@
 const struct command *const command_table[] = {
     &cmd_info,
     &cmd_classify,
+    &cmd_planarize,
     &cmd_curvature,
     &cmd_optimize,
     &cmd_merge,

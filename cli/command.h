@@ -67,6 +67,7 @@ extern const struct command cmd_help;
 extern const struct command cmd_info;
 extern const struct command cmd_example;
 extern const struct command cmd_classify;
+extern const struct command cmd_planarize;
 extern const struct command cmd_curvature;
 extern const struct command cmd_optimize;
 extern const struct command cmd_merge;

@@ -20,6 +20,7 @@
 
 #include "core/panel/panel_internal.h"
 #include "core/base/sym3.h"
+#include "core/base/quad.h"
 #include "core/base/vec3.h"
 
 const char *panel_mode_name(enum panel_curvature_mode mode)
@@ -371,17 +372,8 @@ static void measure_corners(const struct panel_grid *g,
         panel->ncorners++;
     }
     panel->corner_planarity = NAN;
-    if (panel->ncorners == 4) {
-        double d1[3], d2[3], w[3], n[3];
-        for (int x = 0; x < 3; x++) {
-            d1[x] = panel->corner[2][x] - panel->corner[0][x];
-            d2[x] = panel->corner[3][x] - panel->corner[1][x];
-            w[x] = panel->corner[1][x] - panel->corner[0][x];
-        }
-        vec3_cross(d1, d2, n);
-        double length = sqrt(vec3_dot(n, n));
-        panel->corner_planarity = length > 0 ? fabs(vec3_dot(w, n)) / length : 0;
-    }
+    if (panel->ncorners == 4)
+        panel->corner_planarity = quad_planarity(panel->corner);
 }
 
 /* Which way the plane's normal n should point: the side of the surface

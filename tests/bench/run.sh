@@ -47,6 +47,8 @@ section "An NSGA-II run's end: storing its Pareto options' panels, against the r
     "$build/bench/bench_front"
 section "Mould families of one design option: the 37x49 roof option at the 3 mm flatness threshold" \
     "$build/bench/bench_mould"
+section "Planar panels (issue 33): the roof's 100 x 100 grid (10,000 quads) planarized within 5 mm, against libigl's figure" \
+    "$build/bench/bench_planarize"
 section "NSGA-II: Facet against DEAP on ZDT1 (population 100 x 250 generations)" \
     tests/bench/bench_nsga2.sh "$build"
 section "A whole building: load and prepare the example skin (180 faces, 2,025,000 triangles) against a bare read of its file; one option of about 50,000 panels over it" \
