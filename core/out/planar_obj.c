@@ -6,6 +6,8 @@
 #include <math.h>
 #include <stdlib.h>
 
+#include "core/base/units.h"
+
 int planar_obj_write(FILE *out, const char *source,
                      const struct planarize_options *o,
                      const struct planarize_result *r,
@@ -21,8 +23,8 @@ int planar_obj_write(FILE *out, const char *source,
             r->feasible ? "planar" : "INFEASIBLE, not planar within the "
             "budget:", source, g->nu, g->nv);
     fprintf(out, "# closeness budget %.6g mm, reached %.6g mm (mean %.6g mm)\n",
-            o->closeness * 1000, r->max_distance * 1000,
-            r->mean_distance * 1000);
+            units_mm(o->closeness), units_mm(r->max_distance),
+            units_mm(r->mean_distance));
     fprintf(out, "# planarity tolerance %.6g of the diagonal, reached %.6g; "
             "%zu of %zu quads over it\n", o->planarity, r->max_relative,
             r->over, r->nquads);
