@@ -157,7 +157,9 @@ $(BUILD)/bench/bench_curvature: tests/bench/bench_curvature.c $(BUILD)/bench/cur
 	$(CC) $(CFLAGS) $(LDFLAGS) -o $@ $< $(BUILD)/bench/curvature_base.o $(SUPPORT_OBJ) $(BUILD)/libfacet.a $(LDLIBS)
 
 # Everything one variant's tests run.
-test-build: $(BUILD)/facet $(UNIT_BIN) $(TOOL_BIN) $(REPLAY_BIN)
+# The benchmarks are built with the tests, so that an API change that
+# breaks one fails make check, not only the next make bench.
+test-build: $(BUILD)/facet $(UNIT_BIN) $(TOOL_BIN) $(REPLAY_BIN) $(BENCH_BIN)
 
 # Build and run every test of one variant.
 test: test-build

@@ -46,10 +46,9 @@ static void on_stage(void *context, const char *what)
         clock->pareto = bench_now();
 }
 
-static void on_progress(void *context, int64_t done, int64_t total)
+static void on_progress(void *context, const struct optimize_progress *p)
 {
-    (void)done;
-    ((struct stage_clock *)context)->total = total;
+    ((struct stage_clock *)context)->total = p->total;
 }
 
 int main(int argc, char **argv)
