@@ -170,6 +170,8 @@ int study_project_read(const struct study_request *request,
     struct project_read read = {request, project};
     int rc = study_read_hashed(request->files, request->nfiles, digest,
                                project_parse, &read, &stop, err);
+    if (rc == FACET_OK && !request->units_named)
+        rc = project_units_check(project, err);
     if (rc == FACET_OK) {
         study_stage(hooks, "preparing the project's surfaces (UV, curvature)");
         rc = project_prepare_stoppable(project, request->flip_normals,

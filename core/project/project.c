@@ -9,6 +9,7 @@
 #include "core/project/project.h"
 
 #include <assert.h>
+#include <math.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -415,6 +416,38 @@ int project_prepare_stoppable(struct project *project, int flip_normals,
         if (jobs[k].failure.rc == FACET_ESTOP)
             return facet_stop_error(err);
     return parallel_first_failure(&jobs[0].failure, sizeof jobs[0], n, err);
+}
+
+int project_units_check(const struct project *project,
+                        struct facet_error *err)
+{
+    if (project->nsurfaces == 0)
+        return FACET_OK;
+    double low[3], high[3];
+    for (int k = 0; k < 3; k++) {
+        low[k] = INFINITY;
+        high[k] = -INFINITY;
+    }
+    for (size_t i = 0; i < project->nsurfaces; i++) {
+        const struct mesh *m = &project->surfaces[i].surface.mesh;
+        for (int k = 0; k < 3; k++) {
+            low[k] = fmin(low[k], m->bbox_min[k]);
+            high[k] = fmax(high[k], m->bbox_max[k]);
+        }
+    }
+    double sum = 0;
+    for (int k = 0; k < 3; k++)
+        sum += (high[k] - low[k]) * (high[k] - low[k]);
+    /* Every surface was read in the one unit the project was opened in. */
+    enum mesh_units units = project->surfaces[0].surface.units;
+    char what[512];
+    if (project->nfiles == 1)
+        snprintf(what, sizeof what, "%.400s (the building of its %zu "
+                 "surfaces)", project->files[0], project->nsurfaces);
+    else
+        snprintf(what, sizeof what, "the building of %.400s and %zu more "
+                 "files", project->files[0], project->nfiles - 1);
+    return surface_units_check_size(what, sqrt(sum), units, err);
 }
 
 const struct project_surface *project_find(const struct project *project,

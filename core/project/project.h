@@ -121,6 +121,14 @@ int project_prepare_stoppable(struct project *project, int flip_normals,
                               const struct facet_stop *stop,
                               struct facet_error *err);
 
+/* surface_units_check of the building as a whole: the box around every
+ * surface, in the units the project was read in, so that a building in
+ * millimetres read as metres is refused as one file is (a face of it may
+ * alone be of a plausible size). A front-end asks it when its user did not
+ * name the units. */
+int project_units_check(const struct project *project,
+                        struct facet_error *err);
+
 /* The surface named name, or NULL. */
 const struct project_surface *project_find(const struct project *project,
                                            const char *name);

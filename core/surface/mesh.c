@@ -560,9 +560,14 @@ static int building_sized(double diagonal)
 int mesh_units_mistaken(const struct mesh *mesh, enum mesh_units given,
                         enum mesh_units *better)
 {
+    return mesh_units_mistaken_at(mesh_diagonal(mesh), given, better);
+}
+
+int mesh_units_mistaken_at(double diagonal, enum mesh_units given,
+                           enum mesh_units *better)
+{
     static const enum mesh_units all[] = {UNITS_M, UNITS_CM, UNITS_MM,
                                           UNITS_IN, UNITS_FT};
-    double diagonal = mesh_diagonal(mesh);
     if (!(diagonal > 0) || !isfinite(diagonal) || building_sized(diagonal))
         return 0;
     /* The typical building: the geometric middle of the sizes a building

@@ -134,6 +134,11 @@ double mesh_diagonal(const struct mesh *mesh);
 int mesh_units_mistaken(const struct mesh *mesh, enum mesh_units given,
                         enum mesh_units *better);
 
+/* mesh_units_mistaken of a bounding box's diagonal (m, as read in given):
+ * a building of several surfaces is judged by the box around them all. */
+int mesh_units_mistaken_at(double diagonal, enum mesh_units given,
+                           enum mesh_units *better);
+
 /* Writes into warning (size bytes) a one-line warning when the bounding box
  * suggests the units are wrong (a 40 km facade is probably millimetres, a
  * 4 mm one probably metres), and returns 1; otherwise returns 0. */

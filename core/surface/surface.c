@@ -87,19 +87,24 @@ static void length_text(double metres, char *out, size_t size)
 
 int surface_units_check(const struct surface *s, struct facet_error *err)
 {
+    return surface_units_check_size(s->path, mesh_diagonal(&s->mesh),
+                                    s->units, err);
+}
+
+int surface_units_check_size(const char *what, double diagonal,
+                             enum mesh_units units, struct facet_error *err)
+{
     enum mesh_units better;
-    if (!mesh_units_mistaken(&s->mesh, s->units, &better))
+    if (!mesh_units_mistaken_at(diagonal, units, &better))
         return FACET_OK;
-    double diagonal = mesh_diagonal(&s->mesh);
     char as_read[32], as_better[32];
     length_text(diagonal, as_read, sizeof as_read);
-    length_text(diagonal / mesh_units_scale(s->units) *
-                    mesh_units_scale(better),
+    length_text(diagonal / mesh_units_scale(units) * mesh_units_scale(better),
                 as_better, sizeof as_better);
     return facet_error_about_value(err, FACET_SETTING_UNITS,
         mesh_units_name(better), FACET_EINPUT,
         "%s is %s across in %s, no building's size; in %s it is %s",
-        s->path, as_read, mesh_units_name(s->units), mesh_units_name(better),
+        what, as_read, mesh_units_name(units), mesh_units_name(better),
         as_better);
 }
 

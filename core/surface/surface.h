@@ -54,6 +54,12 @@ struct surface {
  * name the units: units named are read as asked, with the warning. */
 int surface_units_check(const struct surface *s, struct facet_error *err);
 
+/* surface_units_check of what (a file, or a building of several: named in
+ * the message) whose bounding box's diagonal is diagonal (m, as read in
+ * units). */
+int surface_units_check_size(const char *what, double diagonal,
+                             enum mesh_units units, struct facet_error *err);
+
 /* Loads path with options into *out. Returns FACET_OK, or the loader's or
  * mesh builder's error. The caller releases *out with surface_close, also
  * after a failure. */

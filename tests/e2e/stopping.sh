@@ -157,20 +157,25 @@ same "project: no run recorded" "$(sql "$WORK/project.db" 'SELECT count(*) FROM 
 expect "export: a project of two files runs" 0 "$FACET" optimize \
     "$WORK/east.obj" "$WORK/west.obj" --module 2x2 --db "$WORK/export.db" \
     --table 0
+# The signal goes once the export says it is preparing (on its terminal),
+# not after a fixed 0.4 s: a job a script starts in the background ignores
+# SIGINT until facet sets its handler, and under the sanitizers on a loaded
+# machine the signal came before it, was lost, and the export went on to
+# write every file.
 mkdir -p "$WORK/out"
-"$FACET" export "$WORK/export.db" --run 1 --option 1 --csv "$WORK/out/p.csv" \
+sigint_when_shown "reading, checking and preparing the project" 0.2 "$WORK/export.err" \
+    "$FACET" export "$WORK/export.db" --run 1 --option 1 --csv "$WORK/out/p.csv" \
     --xlsx "$WORK/out/p.xlsx" --dxf "$WORK/out/p.dxf" --sheet 5000x5000 \
-    --ifc "$WORK/out/p.ifc" \
-    >"$OUT" 2>"$ERR" &
-pid=$!
-stop_after "$pid" INT 0.4
+    --ifc "$WORK/out/p.ifc"
 same "export: SIGINT while preparing: exit status 130" "$STATUS" 130
 within "export: SIGINT while preparing: exits within 1 s" 1
 same "export: no file written, none half-written" "$(ls -A "$WORK/out")" ""
-if [ "$(wc -l <"$ERR")" -eq 1 ] && grep -q "export interrupted; no file written" "$ERR"; then
+# the terminal shows the stage, then one line that ends it
+if [ "$(grep -c "export interrupted; no file written" "$WORK/export.err")" -eq 1 ] &&
+    grep . "$WORK/export.err" | tail -n 1 | grep -q "export interrupted; no file written"; then
     pass "export: one line says no file was written"
 else
-    fail "export: one line says no file was written"
+    fail "export: one line says no file was written ($(cat "$WORK/export.err"))"
 fi
 
 # --- a second signal kills at once: SIGINT and SIGTERM arrive together
