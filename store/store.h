@@ -464,6 +464,15 @@ int store_option_surfaces_get(struct store *store, int64_t run,
 int store_panels_put(struct store *store, int64_t run, int64_t option,
                      const struct panelization *panels,
                      struct facet_error *err);
+/* store_panels_put, asking stop (core/base/stop.h) every few thousand
+ * panels: when it asks, nothing of the option's panels is stored (the
+ * transaction is rolled back; any set stored before stays) and it
+ * returns FACET_ESTOP. */
+int store_panels_put_stoppable(struct store *store, int64_t run,
+                               int64_t option,
+                               const struct panelization *panels,
+                               const struct facet_stop *stop,
+                               struct facet_error *err);
 /* Sets *stored to 1 when panels of that option are stored, 0 when not.
  * Returns FACET_OK, or FACET_EINPUT (a damaged or busy file) or FACET_EWORK
  * with err naming the file and what SQLite refused (*stored is then 0). */

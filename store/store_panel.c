@@ -60,6 +60,18 @@ static int read_sp_fit(sqlite3_stmt *s, int c, struct panel_sp_fit *fit)
 int store_panels_put(struct store *store, int64_t run, int64_t option,
                      const struct panelization *p, struct facet_error *err)
 {
+    return store_panels_put_stoppable(store, run, option, p, NULL, err);
+}
+
+/* Panels written between two questions to the stop: a million panels
+ * take seconds to write. */
+#define PANELS_BETWEEN_STOPS 4096
+
+int store_panels_put_stoppable(struct store *store, int64_t run,
+                               int64_t option, const struct panelization *p,
+                               const struct facet_stop *stop,
+                               struct facet_error *err)
+{
     sqlite3_stmt *set = NULL, *panel = NULL;
     int rc = store_exec(store, "BEGIN IMMEDIATE", "storing panels", err);
     if (rc != FACET_OK)
@@ -105,6 +117,9 @@ int store_panels_put(struct store *store, int64_t run, int64_t option,
             " ?55, ?56, ?57, ?58, ?59, ?60)", &panel, "storing panels",
             err);
     for (size_t k = 0; k < p->npanels && rc == FACET_OK; k++) {
+        if (k % PANELS_BETWEEN_STOPS == 0 &&
+            (rc = facet_stop_check(stop, err)) != FACET_OK)
+            break;
         const struct panel *x = &p->panels[k];
         int c = 1;
         sqlite3_bind_int64(panel, c++, run);

@@ -772,10 +772,17 @@ static int store_front_panels(struct store *store, const struct run_info *run,
                     measured[nmeasured] = *r;
                     measured[nmeasured++].totals = totals[f];
                 }
+                /* A fine grid's panels take seconds to write: a stop
+                 * inside leaves the option's panels unstored (show and
+                 * export make them when asked), its measures kept. */
                 if (wants_panels[from[f]])
-                    rc = store_panels_put(store, run->id, r->number,
-                                          &panels[f], err);
-                /* A fine grid's panels take seconds to write. */
+                    rc = store_panels_put_stoppable(store, run->id,
+                                                    r->number, &panels[f],
+                                                    &stop, err);
+                if (rc == FACET_ESTOP) {
+                    facet_error_clear(err);
+                    rc = FACET_OK;
+                }
                 if (should_stop(hooks))
                     *stopped = 1;
             }

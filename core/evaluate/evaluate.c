@@ -120,6 +120,7 @@ static void leave_unbuilt(const struct classify_options *options,
 static int build_and_measure(const struct surface *surface,
                              const struct classify_options *options,
                              unsigned unmeasured, struct grid_fits *fits,
+                             const struct facet_stop *stop,
                              struct panelization *panels,
                              struct option_totals *totals,
                              size_t *measured, struct facet_error *err)
@@ -145,21 +146,24 @@ static int build_and_measure(const struct surface *surface,
     int smooth = facet_sag_matters(surface->facet_sag, options->threshold);
     if (fits != NULL) {
         /* The sides are the grid's, borrowed: not freed here. */
-        rc = grid_fits_option(fits, panels, options->threshold, smooth,
-                              &built, &sides, err);
+        rc = grid_fits_option_stoppable(fits, panels, options->threshold,
+                                        smooth, stop, &built, &sides, err);
     } else {
-        rc = cell_sides_sample(&surface->mesh, &surface->uv,
-                               &surface->curvature, panels, &sides, err);
+        rc = cell_sides_sample_stoppable(&surface->mesh, &surface->uv,
+                                         &surface->curvature, panels, stop,
+                                         &sides, err);
         if (rc == FACET_OK)
-            rc = built_option_fit(&surface->mesh, &surface->fit, panels,
-                                  &sides, options->threshold, smooth,
-                                  &built, err);
+            rc = built_option_fit_stoppable(&surface->mesh, &surface->fit,
+                                            panels, &sides,
+                                            options->threshold, smooth, stop,
+                                            &built, err);
     }
     int measure_joints = !(unmeasured & OPTION_MEASURE_JOINTS);
     if (rc == FACET_OK && measure_joints)
-        rc = joints_measure(panels, &built, &sides,
-                            limit_or_none(options->max_gap),
-                            limit_or_none(options->max_kink), &joints, err);
+        rc = joints_measure_stoppable(panels, &built, &sides,
+                                      limit_or_none(options->max_gap),
+                                      limit_or_none(options->max_kink), stop,
+                                      &joints, err);
     if (rc == FACET_OK) {
         for (size_t k = 0; k < panels->npanels; k++) {
             struct panel *panel = &panels->panels[k];
@@ -285,7 +289,8 @@ static int classify_and_build(const struct surface *surface,
     classify_types(panels, &params->classify);
     stage(shared, "fitting panels, measuring joints");
     rc = build_and_measure(surface, &params->classify, params->unmeasured,
-                           shared->fits, panels, totals, &measured, err);
+                           shared->fits, shared->stop, panels, totals,
+                           &measured, err);
     if (shared->joints != NULL)
         *shared->joints = measured;
     if (rc != FACET_OK)
@@ -308,6 +313,7 @@ static int classify_and_build(const struct surface *surface,
         return rc;
     stage(shared, "finding the mould families");
     struct mould_options mould = option_mould_options(params);
+    mould.stop = shared->stop;
     struct mould_families families;
     rc = mould_families_build(&surface->mesh, &surface->uv, panels, &mould,
                               &families, err);
@@ -351,19 +357,23 @@ int option_evaluate(const struct surface *surface,
     if (rc != FACET_OK)
         return rc;
     if (shared->fits != NULL && !(params->unmeasured & OPTION_MEASURE_FITS)) {
-        rc = grid_fits_init(&surface->mesh, &surface->uv,
-                            &surface->curvature, &surface->fit, panels,
-                            shared->fits, err);
+        rc = grid_fits_init_stoppable(&surface->mesh, &surface->uv,
+                                      &surface->curvature, &surface->fit,
+                                      panels, shared->stop, shared->fits,
+                                      err);
         if (rc != FACET_OK)
             return rc;
     }
-    if (!(params->unmeasured & OPTION_MEASURE_JOINT_LENGTH))
+    double joint_length = NAN;
+    if (!(params->unmeasured & OPTION_MEASURE_JOINT_LENGTH)) {
         stage(shared, "measuring the joint lines");
-    double joint_length =
-        params->unmeasured & OPTION_MEASURE_JOINT_LENGTH
-            ? NAN
-            : joint_length_lines(shared->lines, &surface->joints,
-                                 &surface->mesh, &surface->uv, panels);
+        rc = joint_length_lines_stoppable(shared->lines, &surface->joints,
+                                          &surface->mesh, &surface->uv,
+                                          panels, shared->stop,
+                                          &joint_length, err);
+        if (rc != FACET_OK)
+            return rc;
+    }
     return classify_and_build(surface, params, shared, joint_length, panels,
                               totals, err);
 }

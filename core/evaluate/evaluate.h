@@ -71,9 +71,12 @@ struct evaluation_shared {
      * after a failure); NULL: not wanted. */
     size_t *joints;
     /* The caller's stop (core/base/stop.h), asked between the stages
-     * above and, while the panels are built and their widths measured,
-     * every few thousand cells: a 2000 x 2000 grid takes tens of seconds,
-     * and a stop must be heard within a fraction of one. NULL: never. */
+     * and within each of them: every few thousand cells while the panels
+     * are built and their widths measured, at every grid line measured
+     * and every grid line of cell sides sampled, every row of joints,
+     * every few hundred SP fits and mould panels. A 2000 x 2000 grid
+     * takes tens of seconds, and a stop must be heard within a fraction
+     * of one. NULL: never. */
     const struct facet_stop *stop;
     /* Told as each of the EVALUATION_STAGES stages starts, with its name
      * ("building the panels"), for a caller that shows one option's

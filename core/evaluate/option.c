@@ -21,12 +21,12 @@
 struct mould_options option_mould_options(const struct option_params *params)
 {
     struct mould_options mould = {
-        params->mould_tol_given ? params->mould_tol
-                                : params->classify.threshold,
-        params->mould_mirror,
+        .tolerance = params->mould_tol_given ? params->mould_tol
+                                             : params->classify.threshold,
+        .mirror = params->mould_mirror,
         /* Typed by class, as the paper does, an SP panel need not fit its
          * surface: the moulds are the paper's too. */
-        !params->classify.sp_by_class};
+        .jigs = !params->classify.sp_by_class};
     return mould;
 }
 

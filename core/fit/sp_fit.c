@@ -371,18 +371,26 @@ static void samples_free(struct samples *s)
     memset(s, 0, sizeof *s);
 }
 
+/* SP panels fitted between two questions to the stop: a cone search
+ * takes up to about a millisecond. */
+#define FITS_BETWEEN_STOPS 256
+
 /* Builds every panel of panels into out (allocated, zeroed but for the
  * threshold and counts), fitting each SP panel k from the fits cache[k]
- * (done there as needed) or, without a cache, anew. */
-static void build_panels(const struct mesh *mesh,
-                         const struct fit_points *points,
-                         const struct panelization *panels,
-                         const struct cell_sides *sides,
-                         const struct buckets *buckets,
-                         struct panel_fits *cache, double threshold,
-                         int smooth, struct samples *s,
-                         struct built_option *out)
+ * (done there as needed) or, without a cache, anew. FACET_OK, or
+ * FACET_ESTOP when stop asks (out then partly built; the fits cached so
+ * far are whole). */
+static int build_panels(const struct mesh *mesh,
+                        const struct fit_points *points,
+                        const struct panelization *panels,
+                        const struct cell_sides *sides,
+                        const struct buckets *buckets,
+                        struct panel_fits *cache, double threshold,
+                        int smooth, const struct facet_stop *stop,
+                        struct samples *s, struct built_option *out,
+                        struct facet_error *err)
 {
+    size_t fitted = 0;
     for (size_t k = 0; k < panels->npanels; k++) {
         const struct panel *panel = &panels->panels[k];
         struct built_panel *b = &out->panels[k];
@@ -391,6 +399,11 @@ static void build_panels(const struct mesh *mesh,
         b->bending_radius = NAN;
         if (panel->type != TYPE_SP)
             continue;
+        if (fitted++ % FITS_BETWEEN_STOPS == 0) {
+            int rc = facet_stop_check(stop, err);
+            if (rc != FACET_OK)
+                return rc;
+        }
         struct panel_fits alone, *f = cache != NULL ? &cache[k] : &alone;
         if (cache == NULL)
             memset(&alone, 0, sizeof alone);
@@ -411,6 +424,7 @@ static void build_panels(const struct mesh *mesh,
         else
             out->sp_misfits++;
     }
+    return FACET_OK;
 }
 
 int built_option_fit(const struct mesh *mesh, const struct fit_points *points,
@@ -418,6 +432,19 @@ int built_option_fit(const struct mesh *mesh, const struct fit_points *points,
                      const struct cell_sides *sides, double threshold,
                      int smooth, struct built_option *out,
                      struct facet_error *err)
+{
+    return built_option_fit_stoppable(mesh, points, panels, sides, threshold,
+                                      smooth, NULL, out, err);
+}
+
+int built_option_fit_stoppable(const struct mesh *mesh,
+                               const struct fit_points *points,
+                               const struct panelization *panels,
+                               const struct cell_sides *sides,
+                               double threshold, int smooth,
+                               const struct facet_stop *stop,
+                               struct built_option *out,
+                               struct facet_error *err)
 {
     memset(out, 0, sizeof *out);
     out->npanels = panels->npanels;
@@ -436,11 +463,13 @@ int built_option_fit(const struct mesh *mesh, const struct fit_points *points,
         return facet_error_set(err, FACET_EWORK,
                                "out of memory fitting %zu panels", np);
     }
-    build_panels(mesh, points, panels, sides, &buckets, NULL, threshold,
-                 smooth, &s, out);
+    int rc = build_panels(mesh, points, panels, sides, &buckets, NULL,
+                          threshold, smooth, stop, &s, out, err);
     buckets_free(&buckets);
     samples_free(&s);
-    return FACET_OK;
+    if (rc != FACET_OK)
+        built_option_free(out);
+    return rc;
 }
 
 int grid_fits_init(const struct mesh *mesh, const struct uv_index *index,
@@ -449,14 +478,27 @@ int grid_fits_init(const struct mesh *mesh, const struct uv_index *index,
                    const struct panelization *panels, struct grid_fits *out,
                    struct facet_error *err)
 {
+    return grid_fits_init_stoppable(mesh, index, curvature, points, panels,
+                                    NULL, out, err);
+}
+
+int grid_fits_init_stoppable(const struct mesh *mesh,
+                             const struct uv_index *index,
+                             const struct curvature *curvature,
+                             const struct fit_points *points,
+                             const struct panelization *panels,
+                             const struct facet_stop *stop,
+                             struct grid_fits *out, struct facet_error *err)
+{
     memset(out, 0, sizeof *out);
     out->mesh = mesh;
     out->points = points;
     out->nu = panels->nu;
     out->nv = panels->nv;
     out->npanels = panels->npanels;
-    int rc = cell_sides_sample_every(mesh, index, curvature, panels,
-                                     &out->sides, err);
+    int rc = cell_sides_sample_every_stoppable(mesh, index, curvature,
+                                               panels, stop, &out->sides,
+                                               err);
     if (rc != FACET_OK) {
         grid_fits_free(out);
         return rc;
@@ -481,6 +523,18 @@ int grid_fits_option(struct grid_fits *grid,
                      int smooth, struct built_option *out,
                      struct cell_sides *sides, struct facet_error *err)
 {
+    return grid_fits_option_stoppable(grid, panels, threshold, smooth, NULL,
+                                      out, sides, err);
+}
+
+int grid_fits_option_stoppable(struct grid_fits *grid,
+                               const struct panelization *panels,
+                               double threshold, int smooth,
+                               const struct facet_stop *stop,
+                               struct built_option *out,
+                               struct cell_sides *sides,
+                               struct facet_error *err)
+{
     assert(panels->nu == grid->nu && panels->nv == grid->nv &&
            panels->npanels == grid->npanels);
     memset(out, 0, sizeof *out);
@@ -502,9 +556,14 @@ int grid_fits_option(struct grid_fits *grid,
                                "out of memory fitting %zu panels",
                                panels->npanels);
     }
-    build_panels(grid->mesh, grid->points, panels, &grid->sides,
-                 grid->buckets, grid->fits, threshold, smooth, &s, out);
+    int rc = build_panels(grid->mesh, grid->points, panels, &grid->sides,
+                          grid->buckets, grid->fits, threshold, smooth, stop,
+                          &s, out, err);
     samples_free(&s);
+    if (rc != FACET_OK) {
+        built_option_free(out);
+        return rc;
+    }
     /* The sides as cell_sides_sample would have sampled them for this
      * option's types: the samples of all, the marks of these. */
     cell_sides_mark(panels, grid->sampled);

@@ -64,6 +64,7 @@
 #include <stdint.h>
 
 #include "core/base/error.h"
+#include "core/base/stop.h"
 #include "core/fit/developable.h"
 #include "core/joint/cell_sides.h"
 #include "core/panel/panel.h"
@@ -134,6 +135,17 @@ int built_option_fit(const struct mesh *mesh, const struct fit_points *points,
                      int smooth, struct built_option *out,
                      struct facet_error *err);
 
+/* built_option_fit, asking stop every few hundred SP panels fitted: also
+ * FACET_ESTOP (stop.h), with *out released. */
+int built_option_fit_stoppable(const struct mesh *mesh,
+                               const struct fit_points *points,
+                               const struct panelization *panels,
+                               const struct cell_sides *sides,
+                               double threshold, int smooth,
+                               const struct facet_stop *stop,
+                               struct built_option *out,
+                               struct facet_error *err);
+
 void built_option_free(struct built_option *built);
 
 /* What a fabricator reads of b's fit (panel.h's panel_sp_fit), seen from
@@ -195,6 +207,16 @@ int grid_fits_init(const struct mesh *mesh, const struct uv_index *index,
                    const struct panelization *panels, struct grid_fits *out,
                    struct facet_error *err);
 
+/* grid_fits_init asking stop as it samples the sides
+ * (cell_sides_sample_every_stoppable): also FACET_ESTOP. */
+int grid_fits_init_stoppable(const struct mesh *mesh,
+                             const struct uv_index *index,
+                             const struct curvature *curvature,
+                             const struct fit_points *points,
+                             const struct panelization *panels,
+                             const struct facet_stop *stop,
+                             struct grid_fits *out, struct facet_error *err);
+
 /* built_option_fit for panels (the grid's, classified at threshold, m,
  * samples smooth or not) from grid's fits, fitting those not yet done
  * (all of them again when smooth differs from the last call's); fills
@@ -208,6 +230,16 @@ int grid_fits_option(struct grid_fits *grid,
                      const struct panelization *panels, double threshold,
                      int smooth, struct built_option *out,
                      struct cell_sides *sides, struct facet_error *err);
+
+/* grid_fits_option asking stop every few hundred SP panels fitted: also
+ * FACET_ESTOP, with *out released; the fits kept so far stay whole. */
+int grid_fits_option_stoppable(struct grid_fits *grid,
+                               const struct panelization *panels,
+                               double threshold, int smooth,
+                               const struct facet_stop *stop,
+                               struct built_option *out,
+                               struct cell_sides *sides,
+                               struct facet_error *err);
 
 void grid_fits_free(struct grid_fits *grid);
 

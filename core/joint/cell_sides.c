@@ -174,7 +174,8 @@ void cell_sides_mark(const struct panelization *panels,
 static int sample(const struct mesh *mesh, const struct uv_index *index,
                   const struct curvature *curvature,
                   const struct panelization *panels, int every,
-                  struct cell_sides *out, struct facet_error *err)
+                  const struct facet_stop *stop, struct cell_sides *out,
+                  struct facet_error *err)
 {
     memset(out, 0, sizeof *out);
     int nu = panels->nu, nv = panels->nv;
@@ -207,6 +208,11 @@ static int sample(const struct mesh *mesh, const struct uv_index *index,
      * of a side is the last of the one before it on the line. */
     uint32_t hint = UINT32_MAX;
     for (int line = 0; line < (nu + 1) + (nv + 1); line++) {
+        int rc = facet_stop_check(stop, err);
+        if (rc != FACET_OK) {
+            cell_sides_free(out);
+            return rc;
+        }
         int along_v = line <= nu;
         int count = along_v ? nv : nu;
         for (int step = 0; step < count; step++) {
@@ -281,7 +287,18 @@ int cell_sides_sample(const struct mesh *mesh, const struct uv_index *index,
                       const struct panelization *panels,
                       struct cell_sides *out, struct facet_error *err)
 {
-    return sample(mesh, index, curvature, panels, 0, out, err);
+    return sample(mesh, index, curvature, panels, 0, NULL, out, err);
+}
+
+int cell_sides_sample_stoppable(const struct mesh *mesh,
+                                const struct uv_index *index,
+                                const struct curvature *curvature,
+                                const struct panelization *panels,
+                                const struct facet_stop *stop,
+                                struct cell_sides *out,
+                                struct facet_error *err)
+{
+    return sample(mesh, index, curvature, panels, 0, stop, out, err);
 }
 
 int cell_sides_sample_every(const struct mesh *mesh,
@@ -290,7 +307,18 @@ int cell_sides_sample_every(const struct mesh *mesh,
                             const struct panelization *panels,
                             struct cell_sides *out, struct facet_error *err)
 {
-    return sample(mesh, index, curvature, panels, 1, out, err);
+    return sample(mesh, index, curvature, panels, 1, NULL, out, err);
+}
+
+int cell_sides_sample_every_stoppable(const struct mesh *mesh,
+                                      const struct uv_index *index,
+                                      const struct curvature *curvature,
+                                      const struct panelization *panels,
+                                      const struct facet_stop *stop,
+                                      struct cell_sides *out,
+                                      struct facet_error *err)
+{
+    return sample(mesh, index, curvature, panels, 1, stop, out, err);
 }
 
 int cell_sides_flat_quad(const struct panel *panel)

@@ -122,6 +122,23 @@ int cell_sides_sample_every(const struct mesh *mesh,
                             const struct panelization *panels,
                             struct cell_sides *out, struct facet_error *err);
 
+/* The two above, asking stop at every grid line they walk (a fine grid's
+ * sides take seconds): also FACET_ESTOP (stop.h), with *out released. */
+int cell_sides_sample_stoppable(const struct mesh *mesh,
+                                const struct uv_index *index,
+                                const struct curvature *curvature,
+                                const struct panelization *panels,
+                                const struct facet_stop *stop,
+                                struct cell_sides *out,
+                                struct facet_error *err);
+int cell_sides_sample_every_stoppable(const struct mesh *mesh,
+                                      const struct uv_index *index,
+                                      const struct curvature *curvature,
+                                      const struct panelization *panels,
+                                      const struct facet_stop *stop,
+                                      struct cell_sides *out,
+                                      struct facet_error *err);
+
 /* The sides cell_sides_sample samples for panels (classified), into
  * sampled (nsides, as cell_sides numbers them): 1 for a side to sample. */
 void cell_sides_mark(const struct panelization *panels,

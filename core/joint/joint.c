@@ -156,6 +156,16 @@ int joints_measure(const struct panelization *panels,
                    double max_kink, struct joints *out,
                    struct facet_error *err)
 {
+    return joints_measure_stoppable(panels, built, sides, max_gap, max_kink,
+                                    NULL, out, err);
+}
+
+int joints_measure_stoppable(const struct panelization *panels,
+                             const struct built_option *built,
+                             const struct cell_sides *sides, double max_gap,
+                             double max_kink, const struct facet_stop *stop,
+                             struct joints *out, struct facet_error *err)
+{
     memset(out, 0, sizeof *out);
     int nu = panels->nu, nv = panels->nv;
     size_t most = (size_t)(nu - 1) * (size_t)nv +
@@ -171,7 +181,12 @@ int joints_measure(const struct panelization *panels,
                                "out of memory for %zu joints", most);
     }
     /* Corners 0..3 of a panel are (i,j), (i+1,j), (i+1,j+1), (i,j+1). */
-    for (int j = 0; j < nv; j++)
+    for (int j = 0; j < nv; j++) {
+        int rc = facet_stop_check(stop, err);
+        if (rc != FACET_OK) {
+            joints_free(out);
+            return rc;
+        }
         for (int i = 0; i < nu; i++) {
             int32_t here = panels->cell_panel[j * nu + i];
             if (here < 0)
@@ -201,6 +216,7 @@ int joints_measure(const struct panelization *panels,
                     ++out->nedges;
             }
         }
+    }
     for (size_t e = 0; e < out->nedges; e++) {
         const struct joint_edge *edge = &out->edges[e];
         out->max_gap = fmax(out->max_gap, edge->gap);

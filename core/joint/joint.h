@@ -43,6 +43,7 @@
 #include <stdint.h>
 
 #include "core/base/error.h"
+#include "core/base/stop.h"
 #include "core/fit/sp_fit.h"
 #include "core/joint/cell_sides.h"
 #include "core/panel/panel.h"
@@ -78,6 +79,14 @@ int joints_measure(const struct panelization *panels,
                    const struct cell_sides *sides, double max_gap,
                    double max_kink, struct joints *out,
                    struct facet_error *err);
+
+/* joints_measure, asking stop at every row of cells: also FACET_ESTOP
+ * (stop.h), with *out released. */
+int joints_measure_stoppable(const struct panelization *panels,
+                             const struct built_option *built,
+                             const struct cell_sides *sides, double max_gap,
+                             double max_kink, const struct facet_stop *stop,
+                             struct joints *out, struct facet_error *err);
 
 void joints_free(struct joints *joints);
 

@@ -4,6 +4,7 @@
  */
 #include "core/joint/joint_length.h"
 
+#include <assert.h>
 #include <math.h>
 #include <stdint.h>
 #include <stdlib.h>
@@ -282,18 +283,20 @@ static size_t find_line(const struct joint_lines *lines, int axis,
                                                                  : SIZE_MAX;
 }
 
-double joint_length_lines(const struct joint_lines *lines,
-                          const struct joint_prep *prep,
-                          const struct mesh *mesh,
-                          const struct uv_index *index,
-                          const struct panelization *panels)
+int joint_length_lines_stoppable(const struct joint_lines *lines,
+                                 const struct joint_prep *prep,
+                                 const struct mesh *mesh,
+                                 const struct uv_index *index,
+                                 const struct panelization *panels,
+                                 const struct facet_stop *stop,
+                                 double *length, struct facet_error *err)
 {
     (void)index;
     if (lines != NULL &&
         (lines->box[0] != panels->umin || lines->box[1] != panels->vmin ||
          lines->box[2] != panels->umax || lines->box[3] != panels->vmax))
         lines = NULL;
-    double length = prep->outline;
+    double sum = prep->outline;
     for (int axis = 0; axis < 2; axis++) {
         double lo, d;
         int n = grid_lines(panels, axis, &lo, &d);
@@ -305,15 +308,33 @@ double joint_length_lines(const struct joint_lines *lines,
                 const double *kept = lines->length[axis] +
                                      lines->start[axis][k];
                 for (size_t c = 0; c < lines->count[axis][k]; c++)
-                    length += kept[c];
+                    sum += kept[c];
                 continue;
             }
+            int rc = facet_stop_check(stop, err);
+            if (rc != FACET_OK)
+                return rc;
             size_t from, to;
             line_window(prep, axis, line, &from, &to);
             for (size_t x = from; x < to; x++)
-                length += crossing_at(prep, mesh, axis, x, line);
+                sum += crossing_at(prep, mesh, axis, x, line);
         }
     }
+    *length = sum;
+    return FACET_OK;
+}
+
+double joint_length_lines(const struct joint_lines *lines,
+                          const struct joint_prep *prep,
+                          const struct mesh *mesh,
+                          const struct uv_index *index,
+                          const struct panelization *panels)
+{
+    double length = NAN;
+    int rc = joint_length_lines_stoppable(lines, prep, mesh, index, panels,
+                                          NULL, &length, NULL);
+    assert(rc == FACET_OK);
+    (void)rc;
     return length;
 }
 

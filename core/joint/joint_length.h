@@ -32,6 +32,7 @@
 #include <stdint.h>
 
 #include "core/base/error.h"
+#include "core/base/stop.h"
 #include "core/panel/panel.h"
 #include "core/surface/mesh.h"
 #include "core/surface/uv_index.h"
@@ -113,6 +114,17 @@ double joint_length_lines(const struct joint_lines *lines,
                           const struct mesh *mesh,
                           const struct uv_index *index,
                           const struct panelization *panels);
+
+/* joint_length_lines, asking stop at every grid line it measures (a fine
+ * grid's lines take seconds): FACET_OK with the length in *length, or
+ * FACET_ESTOP (stop.h) with *length untouched. */
+int joint_length_lines_stoppable(const struct joint_lines *lines,
+                                 const struct joint_prep *prep,
+                                 const struct mesh *mesh,
+                                 const struct uv_index *index,
+                                 const struct panelization *panels,
+                                 const struct facet_stop *stop,
+                                 double *length, struct facet_error *err);
 
 /* joint_length the plain way, for tests: every grid line against every
  * triangle, in prep's order (the order the sum is taken in), from the mesh

@@ -236,7 +236,7 @@ static int jig_make(const struct panel *panel,
  * is first in w's numbering (w->sampled holds which it could), and raises
  * *diameter and *extent to the largest diameter and grid coordinate of
  * those it could. Each part writes only its own panels' entries, so parts
- * may be sampled at once. Returns FACET_OK or FACET_EWORK. */
+ * may be sampled at once. Returns FACET_OK, FACET_EWORK or FACET_ESTOP. */
 static int sample_part(const struct mould_part *part, size_t first,
                        struct family_work *w, double *diameter,
                        double *extent)
@@ -247,9 +247,10 @@ static int sample_part(const struct mould_part *part, size_t first,
         sampled[n] = p->panels[n].type != TYPE_FP;
         w->on_jig[first + n] = 0;
     }
-    if (mould_sample_grid(part->mesh, part->index, p, sampled,
-                          w->point + first, sampled) != FACET_OK)
-        return FACET_EWORK;
+    int rc = mould_sample_grid(part->mesh, part->index, p, sampled,
+                               w->point + first, sampled, w->options->stop);
+    if (rc != FACET_OK)
+        return rc;
     for (size_t k = 0; k < p->npanels; k++) {
         size_t n = first + k;
         if (!w->sampled[n])
@@ -296,7 +297,7 @@ static void sample_run(void *argument)
 /* Samples and describes every part's SP and DP panels on up to jobs
  * threads, and sets w->cell from the largest diameter and grid
  * coordinate over all of them (a maximum: the same whatever the threads).
- * Returns FACET_OK or FACET_EWORK. */
+ * Returns FACET_OK, FACET_EWORK or FACET_ESTOP. */
 static int sample_panels(const struct mould_part *parts, size_t nparts,
                          const size_t *offset, int jobs,
                          struct family_work *w)
@@ -499,9 +500,15 @@ static int join_jig(struct family_work *w, struct mould_families *out,
     return 0;
 }
 
-static void group_panels(struct family_work *w, struct mould_families *out)
+/* Panels grouped between two questions to the stop. */
+#define PANELS_BETWEEN_STOPS 256
+
+static int group_panels(struct family_work *w, struct mould_families *out)
 {
     for (size_t n = 0; n < w->npanels; n++) {
+        if (n % PANELS_BETWEEN_STOPS == 0 &&
+            facet_stop_requested(w->options->stop))
+            return FACET_ESTOP;
         const struct panel *panel = w->panel[n];
         out->family[n] = -1;
         if (panel->type == TYPE_FP)
@@ -537,6 +544,7 @@ static void group_panels(struct family_work *w, struct mould_families *out)
                                                    : out->largest;
         out->singletons += out->size[f] == 1;
     }
+    return FACET_OK;
 }
 
 int mould_families_build(const struct mesh *mesh,
@@ -624,9 +632,12 @@ int mould_families_build_parts(const struct mould_part *parts,
         for (size_t s = 0; s < slots; s++)
             w.bucket[s].head = -1;
         mould_labels_make(&w.labels);
-        if (sample_panels(parts, nparts, offset, jobs, &w) == FACET_OK)
-            group_panels(&w, out);
-        else
+        rc = sample_panels(parts, nparts, offset, jobs, &w);
+        if (rc == FACET_OK)
+            rc = group_panels(&w, out);
+        if (rc == FACET_ESTOP)
+            facet_stop_error(err);
+        else if (rc != FACET_OK)
             rc = facet_error_set(err, FACET_EWORK,
                                  "out of memory for the mould samples");
     }

@@ -101,6 +101,7 @@
 #include <stddef.h>
 
 #include "core/base/error.h"
+#include "core/base/stop.h"
 #include "core/panel/panel.h"
 #include "core/surface/mesh.h"
 #include "core/surface/uv_index.h"
@@ -111,6 +112,9 @@ struct mould_options {
     int jigs;          /* SP panels built on their fitted surface share a
                           jig by it (above); 0 (a zeroed struct): every
                           curved panel by its shape */
+    const struct facet_stop *stop;  /* asked every few hundred panels
+                                       (stop.h): the build then returns
+                                       FACET_ESTOP; NULL never fires */
 };
 
 struct mould_families {
@@ -139,7 +143,7 @@ struct mould_families {
  * Fills *out (caller-owned, released with mould_families_free, also after
  * a failure). Returns FACET_OK, FACET_EINPUT for a tolerance that is
  * negative or not finite or panels not built over index's UV box,
- * FACET_EWORK when out of memory. */
+ * FACET_EWORK when out of memory, FACET_ESTOP when options->stop asked. */
 int mould_families_build(const struct mesh *mesh,
                          const struct uv_index *index,
                          const struct panelization *panels,

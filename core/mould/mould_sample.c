@@ -84,7 +84,8 @@ int mould_sample_grid(const struct mesh *mesh, const struct uv_index *index,
                       const struct panelization *panels,
                       const unsigned char *want,
                       double (*out)[MOULD_SAMPLES][3],
-                      unsigned char *sampled)
+                      unsigned char *sampled,
+                      const struct facet_stop *stop)
 {
     const int last = MOULD_SIDE - 1;
     const int nu = panels->nu, nv = panels->nv;
@@ -102,6 +103,10 @@ int mould_sample_grid(const struct mesh *mesh, const struct uv_index *index,
     double du = (panels->umax - panels->umin) / nu;
     double dv = (panels->vmax - panels->vmin) / nv;
     for (int j = 0; j < nv && rc == FACET_OK; j++) {
+        if (facet_stop_requested(stop)) {
+            rc = FACET_ESTOP;
+            break;
+        }
         if (j > 0) {
             /* The row of points between this band and the last is the
              * last's top row: keep it, and start the others afresh. */

@@ -24,6 +24,7 @@
 
 #include <stddef.h>
 
+#include "core/base/stop.h"
 #include "core/panel/panel.h"
 #include "core/surface/mesh.h"
 #include "core/surface/uv_index.h"
@@ -53,12 +54,14 @@ int mould_sample_panel(const struct mesh *mesh, const struct uv_index *index,
  * sets sampled[n] to what it returns (0 where want[n] is not set). The
  * samples on a side two cells share are at the same UV, so they are
  * located once, a band of cells at a time along v: a grid takes about 15
- * lookups a panel instead of 21. Returns FACET_OK, or FACET_EWORK when
- * out of memory. */
+ * lookups a panel instead of 21. Asks stop (NULL: never) at every band.
+ * Returns FACET_OK, FACET_EWORK when out of memory, or FACET_ESTOP when
+ * stop asked (the caller says so: no message is set here). */
 int mould_sample_grid(const struct mesh *mesh, const struct uv_index *index,
                       const struct panelization *panels,
                       const unsigned char *want,
                       double (*out)[MOULD_SAMPLES][3],
-                      unsigned char *sampled);
+                      unsigned char *sampled,
+                      const struct facet_stop *stop);
 
 #endif

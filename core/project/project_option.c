@@ -23,6 +23,7 @@ struct surface_work {
     const struct project *project;
     const struct surface_grid *grids;
     const struct option_params *params;
+    const struct facet_stop *stop;
     struct project_option *out;
     atomic_size_t *next;                /* the next surface not taken */
     struct parallel_failure failure;    /* this thread's first failed
@@ -45,7 +46,8 @@ static void surface_run(void *argument)
         slot->grid = job->grids[i];
         struct facet_error err;
         const struct evaluation_shared shared = {.unmoulded = 1,
-                                                 .joints = &slot->joints};
+                                                 .joints = &slot->joints,
+                                                 .stop = job->stop};
         int rc = option_evaluate(&s->surface, &params, &shared,
                                  &slot->panels, &slot->totals, &err);
         /* Threads take surfaces in rising order, so its first failure is
@@ -53,8 +55,11 @@ static void surface_run(void *argument)
         if (rc != FACET_OK && job->failure.piece == SIZE_MAX) {
             job->failure.piece = i;
             job->failure.rc = rc;
-            facet_error_set(&job->failure.err, rc, "surface %s: %s", s->name,
-                            err.message);
+            if (rc == FACET_ESTOP)
+                facet_stop_error(&job->failure.err);
+            else
+                facet_error_set(&job->failure.err, rc, "surface %s: %s",
+                                s->name, err.message);
         }
     }
 }
@@ -64,6 +69,7 @@ static void surface_run(void *argument)
 static int evaluate_surfaces(const struct project *project,
                              const struct surface_grid *grids,
                              const struct option_params *params, int jobs,
+                             const struct facet_stop *stop,
                              struct project_option *out,
                              struct facet_error *err)
 {
@@ -71,8 +77,8 @@ static int evaluate_surfaces(const struct project *project,
     atomic_size_t next;
     atomic_init(&next, 0);
     for (int k = 0; k < jobs; k++)
-        work[k] = (struct surface_work){project, grids, params, out, &next,
-                                        {0}};
+        work[k] = (struct surface_work){project, grids, params, stop, out,
+                                        &next, {0}};
     parallel_run(work, sizeof work[0], jobs, surface_run);
     return parallel_first_failure(&work[0].failure, sizeof work[0], jobs,
                                   err);
@@ -82,6 +88,7 @@ static int evaluate_surfaces(const struct project *project,
  * each surface its own (option_moulds_set) and the families it uses. */
 static int find_moulds(const struct project *project,
                        const struct option_params *params, int jobs,
+                       const struct facet_stop *stop,
                        struct project_option *out, struct facet_error *err)
 {
     size_t n = project->nsurfaces;
@@ -96,6 +103,7 @@ static int find_moulds(const struct project *project,
                                        &out->surfaces[i].panels};
     }
     struct mould_options mould = option_mould_options(params);
+    mould.stop = stop;
     int rc = mould_families_build_parts(parts, n, &mould, jobs,
                                         &out->families, err);
     free(parts);
@@ -209,6 +217,18 @@ int project_option_evaluate(const struct project *project,
                             struct project_option *out,
                             struct facet_error *err)
 {
+    return project_option_evaluate_stoppable(project, grids, params, jobs,
+                                             NULL, out, err);
+}
+
+int project_option_evaluate_stoppable(const struct project *project,
+                                      const struct surface_grid *grids,
+                                      const struct option_params *params,
+                                      int jobs,
+                                      const struct facet_stop *stop,
+                                      struct project_option *out,
+                                      struct facet_error *err)
+{
     memset(out, 0, sizeof *out);
     size_t n = project->nsurfaces;
     out->surfaces = calloc(n ? n : 1, sizeof *out->surfaces);
@@ -218,9 +238,9 @@ int project_option_evaluate(const struct project *project,
                                "surfaces", n);
     out->nsurfaces = n;
     jobs = parallel_jobs(jobs, n);
-    int rc = evaluate_surfaces(project, grids, params, jobs, out, err);
+    int rc = evaluate_surfaces(project, grids, params, jobs, stop, out, err);
     if (rc == FACET_OK)
-        rc = find_moulds(project, params, jobs, out, err);
+        rc = find_moulds(project, params, jobs, stop, out, err);
     if (rc == FACET_OK)
         building_totals(out, params);
     return rc;

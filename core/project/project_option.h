@@ -110,6 +110,17 @@ int project_option_evaluate(const struct project *project,
                             struct project_option *out,
                             struct facet_error *err);
 
+/* project_option_evaluate, asking stop inside every surface's stages and
+ * the building's mould families (evaluate.h, mould.h): also FACET_ESTOP
+ * (stop.h) when it asks. */
+int project_option_evaluate_stoppable(const struct project *project,
+                                      const struct surface_grid *grids,
+                                      const struct option_params *params,
+                                      int jobs,
+                                      const struct facet_stop *stop,
+                                      struct project_option *out,
+                                      struct facet_error *err);
+
 void project_option_free(struct project_option *option);
 
 #endif

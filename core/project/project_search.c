@@ -88,8 +88,9 @@ static int evaluate(void *context, const struct option_params *base,
         struct option_params params = option_params_at(
             base, grids[0].nu, grids[0].nv, points[k].threshold_mm);
         struct project_option option;
-        rc = project_option_evaluate(search->project, grids, &params, jobs,
-                                     &option, err);
+        rc = project_option_evaluate_stoppable(search->project, grids,
+                                               &params, jobs, stop, &option,
+                                               err);
         if (rc == FACET_OK) {
             totals[k] = option.totals;
             for (size_t i = 0; i < ns; i++) {

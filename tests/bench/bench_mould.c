@@ -154,7 +154,7 @@ int main(int argc, char **argv)
     printf("evaluation (panels_build_fast + classify): %.3f ms wall, %.3f "
            "ms CPU (medians of %d) = %.1fx the bare pass\n", baseline * 1e3,
            baseline_cpu * 1e3, RUNS, baseline / bare);
-    struct mould_options options = {classify.threshold, 0, 0};
+    struct mould_options options = {classify.threshold, 0, 0, NULL};
     struct mould_families f;
     double wall, cpu;
     time_families(&surface, &panels, &options, RUNS, &f, &wall, &cpu);

@@ -176,7 +176,7 @@ static void check_samples(const struct surface *s,
     assert_non_null(grid);
     for (size_t k = 0; k < p->npanels; k++)
         want[k] = k % 3 != 1;  /* some cells left out: their neighbours */
-    assert_int_equal(mould_sample_grid(&s->mesh, &s->uv, p, want, grid, got),
+    assert_int_equal(mould_sample_grid(&s->mesh, &s->uv, p, want, grid, got, NULL),
                      FACET_OK);
     for (size_t k = 0; k < p->npanels; k++) {
         double one[MOULD_SAMPLES][3];
@@ -196,7 +196,7 @@ static size_t check_families(const struct surface *s,
                              const struct panelization *p, double tolerance,
                              int mirror)
 {
-    struct mould_options options = {tolerance, mirror, 0};
+    struct mould_options options = {tolerance, mirror, 0, NULL};
     struct mould_families fast;
     struct plain_families plain;
     struct facet_error err;

@@ -230,7 +230,7 @@ static void built_free(struct built *b)
 static void families(const struct built *b, double tolerance, int mirror,
                      struct mould_families *f)
 {
-    struct mould_options options = {tolerance, mirror, 0};
+    struct mould_options options = {tolerance, mirror, 0, NULL};
     struct facet_error err;
     if (mould_families_build(&b->mesh, &b->index, &b->panels, &options, f,
                              &err) != FACET_OK)
@@ -348,7 +348,7 @@ static void test_example_cylinder(void **state)
     struct option_totals totals;
     classify_panels(&p, &classify, &totals);
     assert_int_equal(totals.count[TYPE_SP], 30);
-    struct mould_options mo = {0.003, 0, 0};
+    struct mould_options mo = {0.003, 0, 0, NULL};
     struct mould_families f;
     assert_int_equal(mould_families_build(&s.mesh, &s.uv, &p, &mo, &f, &err),
                      FACET_OK);
@@ -558,7 +558,7 @@ static void test_bad_tolerance(void **state)
     build_typed(plane, 2, 2, TYPE_FP, &b);
     const double bad[] = {-1e-3, NAN, INFINITY};
     for (int k = 0; k < 3; k++) {
-        struct mould_options options = {bad[k], 0, 0};
+        struct mould_options options = {bad[k], 0, 0, NULL};
         struct mould_families f;
         struct facet_error err;
         assert_int_equal(mould_families_build(&b.mesh, &b.index, &b.panels,
@@ -827,7 +827,7 @@ static void test_greedy_brute_force(void **state)
         for (size_t p = 0; p < n; p++)
             assert_true(mould_sample_panel(&b.mesh, &b.index, &b.panels, p,
                                            sample[p]));
-        struct mould_options options = {tolerance, mirror, 0};
+        struct mould_options options = {tolerance, mirror, 0, NULL};
         size_t shared = 0;
         for (size_t p = 0; p < n; p++) {
             const struct panel *panel = &b.panels.panels[p];

@@ -422,7 +422,7 @@ static void test_cylinder_widths_one_jig(void **state)
     assert_int_equal(f.largest, 10);
     assert_members_on_surface(&s, &panels, &a);
     /* The panels' widths differ: no two columns are congruent. */
-    struct mould_options shape = {TOLERANCE, 1, 0};
+    struct mould_options shape = {TOLERANCE, 1, 0, NULL};
     struct mould_families by_shape;
     struct facet_error err;
     assert_int_equal(mould_families_build(&s.mesh, &s.uv, &panels, &shape,

@@ -569,6 +569,73 @@ static void test_panels_exist_error(void **state)
     store_close(store);
 }
 
+/* SQLite's own count of the rows a query returns (a second connection). */
+static int64_t sql_count(const char *path, const char *query)
+{
+    sqlite3 *db;
+    sqlite3_stmt *s;
+    assert_int_equal(sqlite3_open(path, &db), SQLITE_OK);
+    assert_int_equal(sqlite3_prepare_v2(db, query, -1, &s, NULL), SQLITE_OK);
+    assert_int_equal(sqlite3_step(s), SQLITE_ROW);
+    int64_t n = sqlite3_column_int64(s, 0);
+    sqlite3_finalize(s);
+    sqlite3_close(db);
+    return n;
+}
+
+static int stop_at_second_question(void *context)
+{
+    return ++*(int *)context >= 2;
+}
+
+/* A stop while a fine grid's panels are written (issue 32 item 7: it
+ * waited for the whole write) is heard inside the write; nothing of the
+ * new set is stored, and the set stored before stays whole (SQLite's own
+ * count, over a second connection). */
+static void test_panels_write_stops(void **state)
+{
+    (void)state;
+    struct store *store;
+    struct facet_error err;
+    assert_int_equal(store_open(fresh_db("panels_stop"), &store, &err),
+                     FACET_OK);
+    struct study_request request;
+    int64_t run = finished_run(store, &request);
+    struct run_info info;
+    assert_int_equal(store_run_get(store, run, &info, &err), FACET_OK);
+    char query[200];
+    snprintf(query, sizeof query,
+             "SELECT count(*) FROM panels WHERE run = %lld AND option = %lld",
+             (long long)run, (long long)info.knee);
+    int64_t before = sql_count(db_path, query);
+    assert_true(before > 0);
+
+    struct surface surface;
+    assert_int_equal(study_open_surface(store, &info, &surface, &err),
+                     FACET_OK);
+    struct option_params params = request.settings.base;
+    params.nu = params.nv = 90;  /* 8,100 panels: two questions apart */
+    struct panelization panels;
+    struct option_totals totals;
+    assert_int_equal(option_evaluate(&surface, &params, NULL, &panels,
+                                     &totals, &err), FACET_OK);
+    int asked = 0;
+    struct facet_stop stop = {stop_at_second_question, &asked};
+    assert_int_equal(store_panels_put_stoppable(store, run, info.knee,
+                                                &panels, &stop, &err),
+                     FACET_ESTOP);
+    assert_int_equal(asked, 2);
+    assert_int_equal(sql_count(db_path, query), before);
+    /* Not stopped, the same write replaces the set whole. */
+    assert_int_equal(store_panels_put_stoppable(store, run, info.knee,
+                                                &panels, NULL, &err),
+                     FACET_OK);
+    assert_int_equal(sql_count(db_path, query), 8100);
+    panelization_free(&panels);
+    surface_close(&surface);
+    store_close(store);
+}
+
 static void test_refuses_other_files(void **state)
 {
     (void)state;
@@ -1139,6 +1206,7 @@ int main(void)
         cmocka_unit_test(test_orphan_is_interrupted),
         cmocka_unit_test(test_refuses_other_files),
         cmocka_unit_test(test_panels_exist_error),
+        cmocka_unit_test(test_panels_write_stops),
         cmocka_unit_test(test_migrates_older_schema),
         cmocka_unit_test(test_migrates_v3),
         cmocka_unit_test(test_migrates_v4),
