@@ -57,7 +57,7 @@ static const char *const field_label[F_COUNT] = {
 #define LABEL_WIDTH 22
 static const char *const field_hint[F_COUNT] = {
     "path of the OBJ file; Tab completes it (directories, .obj files)",
-    "m, cm, mm, in or ft",
+    "m, cm, mm, in or ft; empty: m, refused if the size says otherwise",
     "A:B, panels along u", "A:B, panels along v",
     "MM, A:B or A:B:STEP", "auto, exhaustive, random or nsga2",
     "a whole number; the same seed gives the same options",
@@ -391,8 +391,14 @@ static int build(struct newrun_screen *s, struct study_request *r,
     if (rc != FACET_OK)
         return rc;
     r->name = s->field[F_NAME].text;
-    rc = mesh_units_parse(s->field[F_UNITS].text, field_label[F_UNITS],
-                          &r->mesh.units, err);
+    /* Empty is the CLI without --units: metres, checked against the
+     * mesh's size (a building drawn in mm is refused, not run 1000 times
+     * too large). Units typed, m too, are the user's word, as --units. */
+    const char *units = s->field[F_UNITS].text;
+    r->units_named = units[0] != '\0';
+    rc = r->units_named ? mesh_units_parse(units, field_label[F_UNITS],
+                                           &r->mesh.units, err)
+                        : FACET_OK;
     struct optimize_settings *o = &r->settings;
     if (rc == FACET_OK && r->nfiles > 0)
         rc = study_project_space(&r->module, &o->space, err);
@@ -645,7 +651,7 @@ struct tui_screen *screen_newrun_new(struct tui_app *app,
     snprintf(t, sizeof t, "%g", d->t_min_mm);
     snprintf(seed, sizeof seed, "%llu", (unsigned long long)r.settings.seed);
     const char *const defaults[F_COUNT] = {
-        [F_SURFACE] = "", [F_UNITS] = mesh_units_name(r.mesh.units),
+        [F_SURFACE] = "", [F_UNITS] = "",
         [F_U] = u, [F_V] = v, [F_THRESHOLD] = t, [F_METHOD] = "auto",
         [F_SEED] = seed, [F_NAME] = r.name};
     for (int f = 0; f < F_COUNT; f++)

@@ -543,6 +543,15 @@ static int poll_job(struct tui_app *app)
     if (st.rc == FACET_ESTOP)
         tui_status(app, "stopped while reading the surface: no run was "
                    "recorded");
+    else if (st.rc != FACET_OK && st.err.setting == FACET_SETTING_UNITS &&
+             st.err.value[0] != '\0')
+        /* Units Facet can name (surface_units_check): the form's field to
+         * type them in, and how to insist on metres. */
+        tui_error(app, "new run refused: %s: type %s in New run's Units "
+                  "(or m to go on in metres)", st.err.message,
+                  st.err.value);
+    else if (st.rc != FACET_OK && st.run <= 0)
+        tui_error(app, "new run refused: %s", st.err.message);
     else if (st.rc != FACET_OK)
         tui_error(app, "run %lld failed: %s", (long long)st.run,
                   st.err.message);
