@@ -1,0 +1,264 @@
+/*
+ * test_seam: where two surfaces meet (core/project/seam.h), against
+ * closed forms (issue 31 item 1): two planes hinged at a known angle,
+ * with and without aligned grid lines and either winding; a box corner;
+ * a cylinder cut into two faces along its rulings (no crease); faces
+ * apart by less and by more than the welding tolerance. Every mesh is
+ * written from its formula (surface_fixture_formula).
+ */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+
+#include <cmocka.h>
+
+#include <math.h>
+#include <string.h>
+
+#include "core/project/seam.h"
+#include "core/surface/surface.h"
+#include "tests/support/surface_fixture.h"
+
+#define PI 3.14159265358979323846
+
+/* A plane strip 2 m x 1 m in z = 0, x from 0 to 2; or its continuation
+ * past the hinge x = 2, bent up by angle, `width` m wide, moved `apart`
+ * along x; `reversed` winds it the other way (t runs backwards). */
+struct hinge {
+    double angle, width, apart;
+    int reversed;
+};
+
+static void plane_a(const void *shape, double s, double t, double p[3])
+{
+    (void)shape;
+    p[0] = 2 * s;
+    p[1] = t;
+    p[2] = 0;
+}
+
+static void plane_b(const void *shape, double s, double t, double p[3])
+{
+    const struct hinge *h = shape;
+    if (h->reversed)
+        t = 1 - t;
+    p[0] = 2 + h->apart + h->width * s * cos(h->angle);
+    p[1] = t;
+    p[2] = h->width * s * sin(h->angle);
+}
+
+static void open_formula(surface_formula f, const void *shape, int ns,
+                         int nt, struct surface *s)
+{
+    struct facet_error err;
+    if (surface_fixture_formula(f, shape, ns, nt, FORMULA_TRIANGLES, s,
+                                &err) != FACET_OK)
+        fail_msg("formula mesh: %s", err.message);
+}
+
+static void find(const struct surface *a, const struct surface *b,
+                 double weld, struct seam *seam)
+{
+    struct facet_error err;
+    assert_int_equal(seam_find(&a->mesh, &a->curvature, &b->mesh,
+                               &b->curvature, weld, 0.05, seam, &err),
+                     FACET_OK);
+}
+
+/* Two planes at angle: the seam is the hinge, 1 m, and every point's
+ * crease is the angle, whatever the grids and windings. */
+static void hinged(double angle, int nt_b, int reversed)
+{
+    struct hinge h = {angle, 1.5, 0, reversed};
+    struct surface a, b;
+    open_formula(plane_a, NULL, 8, 4, &a);
+    open_formula(plane_b, &h, 5, nt_b, &b);
+    struct seam seam;
+    find(&a, &b, SEAM_WELD_DEFAULT, &seam);
+    assert_int_equal(seam.nedges, 4);  /* a's 4 edges along the hinge */
+    assert_true(fabs(seam.length - 1) < 1e-12);
+    assert_true(seam.npoints >= 4 * 6);
+    for (size_t k = 0; k < seam.npoints; k++) {
+        assert_true(fabs(seam.points[k].at[0] - 2) < 1e-12);
+        for (int d = 0; d < 3; d++)
+            assert_true(fabs(seam.points[k].at[d] -
+                             seam.points[k].across[d]) < 1e-12);
+        assert_true(fabs(seam.points[k].crease - angle) < 1e-9);
+    }
+    assert_true(fabs(seam.max_crease - angle) < 1e-9);
+    assert_true(seam.max_apart < 1e-12);
+    seam_free(&seam);
+    surface_close(&a);
+    surface_close(&b);
+}
+
+static void test_hinge_aligned(void **state)
+{
+    (void)state;
+    hinged(PI / 6, 4, 0);    /* grid lines meet */
+}
+
+static void test_hinge_not_aligned(void **state)
+{
+    (void)state;
+    hinged(PI / 6, 7, 0);    /* b's lines fall between a's */
+}
+
+static void test_hinge_wound_the_other_way(void **state)
+{
+    (void)state;
+    hinged(PI / 6, 7, 1);    /* b's normals point the other way */
+}
+
+static void test_right_angle(void **state)
+{
+    (void)state;
+    hinged(PI / 2, 3, 0);
+}
+
+static void test_flat_continuation(void **state)
+{
+    (void)state;
+    hinged(0, 6, 0);         /* one plane cut in two: no crease */
+}
+
+/* Apart by 0.5 mm: a seam at a 1 mm weld, with the distance; by 5 mm:
+ * none at 1 mm, one at 10 mm. */
+static void test_weld_tolerance(void **state)
+{
+    (void)state;
+    struct surface a, b, c;
+    struct hinge near = {PI / 4, 1, 0.0005, 0}, far = {PI / 4, 1, 0.005, 0};
+    open_formula(plane_a, NULL, 8, 4, &a);
+    open_formula(plane_b, &near, 5, 7, &b);
+    open_formula(plane_b, &far, 5, 7, &c);
+    struct seam seam;
+    find(&a, &b, 0.001, &seam);
+    assert_true(fabs(seam.length - 1) < 1e-12);
+    assert_true(fabs(seam.max_apart - 0.0005) < 1e-12);
+    seam_free(&seam);
+    find(&a, &c, 0.001, &seam);
+    assert_int_equal(seam.npoints, 0);
+    assert_int_equal(seam.nedges, 0);
+    assert_true(seam.length == 0);
+    seam_free(&seam);
+    find(&a, &c, 0.01, &seam);
+    assert_true(fabs(seam.length - 1) < 1e-12);
+    assert_true(fabs(seam.max_apart - 0.005) < 1e-12);
+    seam_free(&seam);
+    surface_close(&a);
+    surface_close(&b);
+    surface_close(&c);
+}
+
+/* A box corner: floor and two walls of a unit cube, each pair at 90
+ * degrees along a 1 m edge; the floor and a wall share no more. */
+static void floor_z0(const void *shape, double s, double t, double p[3])
+{
+    (void)shape;
+    p[0] = s, p[1] = t, p[2] = 0;
+}
+
+static void wall_x0(const void *shape, double s, double t, double p[3])
+{
+    (void)shape;
+    p[0] = 0, p[1] = s, p[2] = t;
+}
+
+static void wall_y0(const void *shape, double s, double t, double p[3])
+{
+    (void)shape;
+    p[0] = t, p[1] = 0, p[2] = s;
+}
+
+static void test_box_corner(void **state)
+{
+    (void)state;
+    struct surface face[3];
+    open_formula(floor_z0, NULL, 4, 5, &face[0]);
+    open_formula(wall_x0, NULL, 6, 3, &face[1]);
+    open_formula(wall_y0, NULL, 3, 4, &face[2]);
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++) {
+            if (i == j)
+                continue;
+            struct seam seam;
+            find(&face[i], &face[j], SEAM_WELD_DEFAULT, &seam);
+            assert_true(fabs(seam.length - 1) < 1e-12);
+            for (size_t k = 0; k < seam.npoints; k++)
+                assert_true(fabs(seam.points[k].crease - PI / 2) < 1e-9);
+            seam_free(&seam);
+        }
+    for (int i = 0; i < 3; i++)
+        surface_close(&face[i]);
+}
+
+/* A cylinder, radius 3 m, 4 m tall, cut into two half-cylinders along two
+ * rulings: the seams are the two rulings, 8 m, and the design has no
+ * crease there (the facets' own angle, 180 / 12 degrees, is not one). */
+struct half {
+    double from;
+};
+
+static void half_cylinder(const void *shape, double s, double t,
+                          double p[3])
+{
+    const struct half *h = shape;
+    double a = h->from + PI * s;
+    p[0] = 3 * cos(a), p[1] = 3 * sin(a), p[2] = 4 * t;
+}
+
+static void test_cylinder_cut_along_rulings(void **state)
+{
+    (void)state;
+    struct half first = {0}, second = {PI};
+    struct surface a, b;
+    open_formula(half_cylinder, &first, 12, 6, &a);
+    open_formula(half_cylinder, &second, 12, 5, &b);
+    struct seam seam;
+    find(&a, &b, SEAM_WELD_DEFAULT, &seam);
+    assert_true(fabs(seam.length - 8) < 1e-9);
+    print_message("cylinder: largest crease %.3g deg (truth 0; a facet "
+                  "angle is 15)\n", seam.max_crease * 180 / PI);
+    assert_true(seam.max_crease < 1e-6);
+    seam_free(&seam);
+    surface_close(&a);
+    surface_close(&b);
+}
+
+static void test_bad_settings(void **state)
+{
+    (void)state;
+    struct surface a;
+    open_formula(plane_a, NULL, 2, 2, &a);
+    struct seam seam;
+    struct facet_error err;
+    const double bad[] = {-1, NAN, INFINITY};
+    for (size_t k = 0; k < sizeof bad / sizeof bad[0]; k++) {
+        assert_int_equal(seam_find(&a.mesh, &a.curvature, &a.mesh,
+                                   &a.curvature, bad[k], 0.05, &seam, &err),
+                         FACET_EINPUT);
+        assert_int_equal(seam_find(&a.mesh, &a.curvature, &a.mesh,
+                                   &a.curvature, 0.001, bad[k], &seam, &err),
+                         FACET_EINPUT);
+        assert_int_equal(seam.npoints, 0);
+    }
+    surface_close(&a);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_hinge_aligned),
+        cmocka_unit_test(test_hinge_not_aligned),
+        cmocka_unit_test(test_hinge_wound_the_other_way),
+        cmocka_unit_test(test_right_angle),
+        cmocka_unit_test(test_flat_continuation),
+        cmocka_unit_test(test_weld_tolerance),
+        cmocka_unit_test(test_box_corner),
+        cmocka_unit_test(test_cylinder_cut_along_rulings),
+        cmocka_unit_test(test_bad_settings),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
