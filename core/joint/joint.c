@@ -44,13 +44,38 @@ static double angle_between(const double a[3], const double b[3])
     return atan2(vec3_length(cross), vec3_dot(a, b));
 }
 
+void joint_place(const struct panel *panel, const struct built_panel *built,
+                 const double x[3], double out[3])
+{
+    if (built->fitted)
+        developable_nearest(&built->fit, x, out, NULL);
+    else if (built->type == TYPE_FP)
+        panel_geometry_project(panel, x, out);
+    else
+        memcpy(out, x, 3 * sizeof *out);
+}
+
+void joint_normal(const struct panel *panel, const struct built_panel *built,
+                  const double x[3], const double surface_normal[3],
+                  double out[3])
+{
+    if (built->fitted) {
+        developable_nearest(&built->fit, x, NULL, out);
+        if (vec3_dot(out, surface_normal) < 0)
+            for (int k = 0; k < 3; k++)
+                out[k] = -out[k];
+    } else if (built->type == TYPE_FP) {
+        memcpy(out, panel->normal, 3 * sizeof *out);
+    } else {
+        memcpy(out, surface_normal, 3 * sizeof *out);
+    }
+}
+
 /* The place of surface point x on the side's panel as built. */
 static void place_of(const struct joint_side *s, const double x[3],
                      double out[3])
 {
-    if (s->built->fitted) {
-        developable_nearest(&s->built->fit, x, out, NULL);
-    } else if (s->quad) {
+    if (s->quad && !s->built->fitted) {
         double d[3], q[3];
         vec3_sub(s->end[1], s->end[0], d);
         vec3_sub(x, s->end[0], q);
@@ -59,10 +84,8 @@ static void place_of(const struct joint_side *s, const double x[3],
         f = f < 0 ? 0 : f > 1 ? 1 : f;
         for (int k = 0; k < 3; k++)
             out[k] = s->end[0][k] + f * d[k];
-    } else if (s->built->type == TYPE_FP) {
-        panel_geometry_project(s->panel, x, out);
     } else {
-        memcpy(out, x, 3 * sizeof *out);
+        joint_place(s->panel, s->built, x, out);
     }
 }
 
@@ -71,16 +94,7 @@ static void place_of(const struct joint_side *s, const double x[3],
 static void normal_of(const struct joint_side *s, const double x[3],
                       const double surface_normal[3], double out[3])
 {
-    if (s->built->fitted) {
-        developable_nearest(&s->built->fit, x, NULL, out);
-        if (vec3_dot(out, surface_normal) < 0)
-            for (int k = 0; k < 3; k++)
-                out[k] = -out[k];
-    } else if (s->built->type == TYPE_FP) {
-        memcpy(out, s->panel->normal, 3 * sizeof *out);
-    } else {
-        memcpy(out, surface_normal, 3 * sizeof *out);
-    }
+    joint_normal(s->panel, s->built, x, surface_normal, out);
 }
 
 /* Raises *gap to distance when that is larger: fmax(*gap, distance)

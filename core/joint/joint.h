@@ -69,6 +69,21 @@ struct joints {
     size_t kinks_over;   /* joints whose kink exceeds the kink limit */
 };
 
+/* The place of surface point x (m) on panel as built (built, its
+ * built_panel): the nearest point of its fitted cylinder or cone; x
+ * projected onto its plane for FP; x itself for DP. What a joint measures
+ * a gap between, but for a full FP quad's side, which joints_measure
+ * takes as the straight edge between its corners. */
+void joint_place(const struct panel *panel, const struct built_panel *built,
+                 const double x[3], double out[3]);
+
+/* Panel's unit normal as built at surface point x, whose surface normal
+ * is surface_normal (on its side): the fitted surface's, the plane's (FP)
+ * or surface_normal itself (DP). */
+void joint_normal(const struct panel *panel, const struct built_panel *built,
+                  const double x[3], const double surface_normal[3],
+                  double out[3]);
+
 /* Measures the joints of panels (classified), built as built says (from
  * built_option_fit on the same sides), with the surface sampled along
  * the cell sides in sides; counts the gaps above max_gap (m) and the kinks

@@ -253,7 +253,7 @@ int seam_find(const struct mesh *a, const struct curvature *curvature_a,
             }
             x->triangle_a = ea[e].triangle;
             x->triangle_b = eb[across].triangle;
-            double na_[3], nb_[3], da[3], db[3];
+            double *na_ = x->normal_a, *nb_ = x->normal_b, da[3], db[3];
             normal_along(curvature_a, &ea[e], f, na_);
             normal_along(curvature_b, &eb[across], g, nb_);
             vec3_sub(q, p, da);

@@ -51,6 +51,9 @@ struct seam_point {
     double across[3];       /* the nearest point of b's boundary (m) */
     uint32_t triangle_a;    /* the boundary triangles they lie on */
     uint32_t triangle_b;
+    double normal_a[3];     /* a's unit surface normal at `at` */
+    double normal_b[3];     /* b's at `across`, turned over when b is wound
+                               the other way: on the side of normal_a */
     double crease;          /* the design's angle between a and b (rad) */
 };
 

@@ -16,7 +16,10 @@
 #include <math.h>
 #include <string.h>
 
+#include "core/evaluate/evaluate.h"
+#include "core/evaluate/option.h"
 #include "core/project/seam.h"
+#include "core/project/seam_joints.h"
 #include "core/surface/surface.h"
 #include "tests/support/surface_fixture.h"
 
@@ -247,6 +250,137 @@ static void test_bad_settings(void **state)
     surface_close(&a);
 }
 
+/* The panels of s at nu x nv and t (mm), evaluated in full. */
+static void panels_of(const struct surface *s, int nu, int nv,
+                      double threshold_mm, struct panelization *panels)
+{
+    struct option_params base;
+    option_params_defaults(&base);
+    struct option_params params = option_params_at(&base, nu, nv,
+                                                   threshold_mm);
+    params.unmeasured = 0;
+    struct option_totals totals;
+    struct facet_error err;
+    if (option_evaluate(s, &params, NULL, panels, &totals, &err) != FACET_OK)
+        fail_msg("evaluate: %s", err.message);
+}
+
+static void measure_seam(const struct surface *a,
+                         const struct panelization *pa,
+                         const struct surface *b,
+                         const struct panelization *pb,
+                         struct seam_joints *joints)
+{
+    struct seam seam;
+    find(a, b, SEAM_WELD_DEFAULT, &seam);
+    struct seam_side side_a = {&a->mesh, &a->uv, pa};
+    struct seam_side side_b = {&b->mesh, &b->uv, pb};
+    struct facet_error err;
+    assert_int_equal(seam_joints_measure(&seam, &side_a, &side_b, 0.001,
+                                         PI / 180, joints, &err),
+                     FACET_OK);
+    seam_free(&seam);
+}
+
+/* Flat panels on two planes hinged at 30 degrees: each panel is its
+ * plane, so the seam has no gap, its kink is the design's 30 degrees and
+ * the panels add nothing; 2 panels of a meet 3 of b in 4 joints. */
+static void test_hinge_joints(void **state)
+{
+    (void)state;
+    struct hinge h = {PI / 6, 1.5, 0, 1};
+    struct surface a, b;
+    open_formula(plane_a, NULL, 8, 4, &a);
+    open_formula(plane_b, &h, 5, 7, &b);
+    struct panelization pa, pb;
+    panels_of(&a, 2, 2, 3, &pa);
+    panels_of(&b, 3, 3, 3, &pb);
+    struct seam_joints j;
+    measure_seam(&a, &pa, &b, &pb, &j);
+    assert_int_equal(j.njoints, 4);
+    assert_true(j.max_gap < 1e-12);
+    assert_true(fabs(j.max_kink - PI / 6) < 1e-9);
+    assert_true(j.max_added < 1e-9);
+    assert_true(fabs(j.max_crease - PI / 6) < 1e-9);
+    assert_int_equal(j.gaps_over, 0);
+    assert_int_equal(j.kinks_over, 0);
+    panelization_free(&pa);
+    panelization_free(&pb);
+    surface_close(&a);
+    surface_close(&b);
+}
+
+/* Flat panels 60 degrees wide on a cylinder (R 3 m, facets of 15
+ * degrees) cut into two halves along two rulings: at each ruling one
+ * joint, whose panels' planes stand at their arcs' middles, so they add
+ * a kink of 60 degrees to a crease of 0; the ruling's point x (on the
+ * cylinder) lands on each plane at x.n - d from it, d the plane's distance
+ * from the axis (the panel's area centroid: four facets at R cos 7.5 deg
+ * from the axis, turned 7.5 and 22.5 deg from the middle), so the gap is
+ * |R cos 30 - d| x |n_a - n_b|, |n_a - n_b| = 2 sin 30. */
+static void test_cylinder_joints(void **state)
+{
+    (void)state;
+    struct half first = {0}, second = {PI};
+    struct surface a, b;
+    open_formula(half_cylinder, &first, 12, 2, &a);
+    open_formula(half_cylinder, &second, 12, 2, &b);
+    struct panelization pa, pb;
+    panels_of(&a, 3, 1, 1000, &pa);
+    panels_of(&b, 3, 1, 1000, &pb);
+    for (size_t k = 0; k < pa.npanels; k++)
+        assert_int_equal(pa.panels[k].built, TYPE_FP);
+    struct seam_joints j;
+    measure_seam(&a, &pa, &b, &pb, &j);
+    double beta = PI / 12, alpha = PI / 3, r = 3;
+    double d = r * cos(beta / 2) * (cos(beta / 2) + cos(1.5 * beta)) / 2;
+    double gap = fabs(r * cos(alpha / 2) - d) * 2 * sin(alpha / 2);
+    print_message("cylinder, flat panels: gap %.9f m (truth %.9f), added "
+                  "kink %.9f deg (truth 60)\n", j.max_gap, gap,
+                  j.max_added * 180 / PI);
+    assert_int_equal(j.njoints, 2);
+    assert_true(fabs(j.max_gap - gap) < 1e-9);
+    assert_true(fabs(j.mean_gap - gap) < 1e-9);
+    assert_true(fabs(j.max_added - alpha) < 1e-6);
+    assert_int_equal(j.gaps_over, 2);
+    assert_int_equal(j.kinks_over, 2);
+    panelization_free(&pa);
+    panelization_free(&pb);
+    surface_close(&a);
+    surface_close(&b);
+}
+
+/* The same halves as single-curved panels at t = 3 mm: each is built on
+ * its fitted cylinder, the design's own, so the halves meet as the
+ * design does, with no gap and nothing added to its crease (to the fits'
+ * precision: 3e-11 mm and 4e-12 degrees were measured). */
+static void test_cylinder_joints_single_curved(void **state)
+{
+    (void)state;
+    struct half first = {0}, second = {PI};
+    struct surface a, b;
+    open_formula(half_cylinder, &first, 48, 4, &a);
+    open_formula(half_cylinder, &second, 48, 4, &b);
+    struct panelization pa, pb;
+    panels_of(&a, 3, 2, 3, &pa);
+    panels_of(&b, 4, 2, 3, &pb);
+    for (size_t k = 0; k < pa.npanels; k++)
+        assert_int_equal(pa.panels[k].built, TYPE_SP);
+    struct seam_joints j;
+    measure_seam(&a, &pa, &b, &pb, &j);
+    print_message("cylinder, single-curved panels: gap %.3g mm, added "
+                  "kink %.3g deg\n", j.max_gap * 1000,
+                  j.max_added * 180 / PI);
+    assert_int_equal(j.njoints, 4);
+    assert_true(j.max_gap < 1e-9);
+    assert_true(j.max_added < 1e-9);
+    assert_int_equal(j.gaps_over + j.kinks_over, 0);
+    panelization_free(&pa);
+    panelization_free(&pb);
+    surface_close(&a);
+    surface_close(&b);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -259,6 +393,9 @@ int main(void)
         cmocka_unit_test(test_box_corner),
         cmocka_unit_test(test_cylinder_cut_along_rulings),
         cmocka_unit_test(test_bad_settings),
+        cmocka_unit_test(test_hinge_joints),
+        cmocka_unit_test(test_cylinder_joints),
+        cmocka_unit_test(test_cylinder_joints_single_curved),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -1,0 +1,171 @@
+/*
+ * seam_joints.c: gaps and kinks where two surfaces meet. See
+ * seam_joints.h.
+ */
+#include "core/project/seam_joints.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "core/base/vec3.h"
+#include "core/fit/sp_fit.h"
+#include "core/joint/joint.h"
+
+/* One seam sample between two panels. */
+struct seam_sample {
+    int32_t panel_a, panel_b;
+    double gap, kink, added;
+};
+
+/* The cell index along one UV axis of value x in a grid of count cells
+ * over [lo, hi], the last cell keeping its far side. */
+static int cell_along(double x, double lo, double hi, int count)
+{
+    double f = (x - lo) / (hi - lo) * count;
+    int i = (int)floor(f);
+    return i < 0 ? 0 : i >= count ? count - 1 : i;
+}
+
+/* The panel of side s whose cell holds point x of triangle t (x on the
+ * triangle: its UV by the triangle's affine map), or -1. A point on a
+ * cell side whose cell has no panel takes the neighbour's that has. */
+static int32_t panel_at(const struct seam_side *s, uint32_t t,
+                        const double x[3])
+{
+    const uint32_t *tri = s->mesh->triangle + 3 * (size_t)t;
+    const double *p0 = s->mesh->position + 3 * (size_t)tri[0];
+    const double *p1 = s->mesh->position + 3 * (size_t)tri[1];
+    const double *p2 = s->mesh->position + 3 * (size_t)tri[2];
+    double e1[3], e2[3], r[3];
+    vec3_sub(p1, p0, e1);
+    vec3_sub(p2, p0, e2);
+    vec3_sub(x, p0, r);
+    double d11 = vec3_dot(e1, e1), d12 = vec3_dot(e1, e2);
+    double d22 = vec3_dot(e2, e2), r1 = vec3_dot(r, e1), r2 = vec3_dot(r, e2);
+    double det = d11 * d22 - d12 * d12;
+    if (!(det > 0))
+        return -1;
+    double b1 = (d22 * r1 - d12 * r2) / det;
+    double b2 = (d11 * r2 - d12 * r1) / det;
+    double b0 = 1 - b1 - b2;
+    const double *uv = s->uv->uv + 6 * (size_t)t;
+    double u = b0 * uv[0] + b1 * uv[2] + b2 * uv[4];
+    double v = b0 * uv[1] + b1 * uv[3] + b2 * uv[5];
+    const struct panelization *p = s->panels;
+    int i = cell_along(u, p->umin, p->umax, p->nu);
+    int j = cell_along(v, p->vmin, p->vmax, p->nv);
+    for (int dj = 0; dj >= -1; dj--)
+        for (int di = 0; di >= -1; di--) {
+            int ci = i + di, cj = j + dj;
+            if (ci < 0 || cj < 0)
+                continue;
+            int32_t k = p->cell_panel[(size_t)cj * (size_t)p->nu +
+                                      (size_t)ci];
+            if (k >= 0)
+                return k;
+        }
+    return -1;
+}
+
+/* The panel as built, from what the panel holds (its fit when built SP). */
+static void built_of(const struct panel *panel, struct built_panel *out)
+{
+    memset(out, 0, sizeof *out);
+    if (panel->built == TYPE_SP &&
+        built_panel_of_fit(&panel->sp_fit, panel->sp_deviation, out) == 0)
+        return;
+    out->type = panel->built;
+    out->fitted = 0;
+}
+
+static double angle_between(const double a[3], const double b[3])
+{
+    double cross[3];
+    vec3_cross(a, b, cross);
+    return atan2(vec3_length(cross), vec3_dot(a, b));
+}
+
+/* Panel's normal as built at x, on the side of surface normal n. */
+static void built_normal(const struct panel *panel,
+                         const struct built_panel *built, const double x[3],
+                         const double n[3], double out[3])
+{
+    joint_normal(panel, built, x, n, out);
+    if (vec3_dot(out, n) < 0)
+        for (int k = 0; k < 3; k++)
+            out[k] = -out[k];
+}
+
+static int by_panels(const void *x, const void *y)
+{
+    const struct seam_sample *a = x, *b = y;
+    if (a->panel_a != b->panel_a)
+        return a->panel_a < b->panel_a ? -1 : 1;
+    return a->panel_b < b->panel_b ? -1 : a->panel_b > b->panel_b;
+}
+
+int seam_joints_measure(const struct seam *seam, const struct seam_side *a,
+                        const struct seam_side *b, double max_gap,
+                        double max_kink, struct seam_joints *out,
+                        struct facet_error *err)
+{
+    memset(out, 0, sizeof *out);
+    struct seam_sample *sample =
+        malloc((seam->npoints ? seam->npoints : 1) * sizeof *sample);
+    if (sample == NULL)
+        return facet_error_set(err, FACET_EWORK,
+                               "out of memory measuring a seam");
+    size_t n = 0;
+    for (size_t k = 0; k < seam->npoints; k++) {
+        const struct seam_point *x = &seam->points[k];
+        out->max_crease = fmax(out->max_crease, x->crease);
+        int32_t pa = panel_at(a, x->triangle_a, x->at);
+        int32_t pb = panel_at(b, x->triangle_b, x->across);
+        if (pa < 0 || pb < 0)
+            continue;
+        const struct panel *panel_a = &a->panels->panels[pa];
+        const struct panel *panel_b = &b->panels->panels[pb];
+        struct built_panel built_a, built_b;
+        built_of(panel_a, &built_a);
+        built_of(panel_b, &built_b);
+        double place_a[3], place_b[3], normal_a[3], normal_b[3];
+        joint_place(panel_a, &built_a, x->at, place_a);
+        joint_place(panel_b, &built_b, x->across, place_b);
+        built_normal(panel_a, &built_a, x->at, x->normal_a, normal_a);
+        built_normal(panel_b, &built_b, x->across, x->normal_b, normal_b);
+        struct seam_sample *s = &sample[n++];
+        s->panel_a = pa;
+        s->panel_b = pb;
+        s->gap = vec3_distance(place_a, place_b);
+        s->kink = angle_between(normal_a, normal_b);
+        s->added = fabs(s->kink - x->crease);
+    }
+    qsort(sample, n, sizeof *sample, by_panels);
+    double gaps = 0, added = 0;
+    for (size_t k = 0; k < n;) {
+        double gap = 0, kink = 0, add = 0;
+        size_t end = k;
+        while (end < n && by_panels(&sample[end], &sample[k]) == 0) {
+            gap = fmax(gap, sample[end].gap);
+            kink = fmax(kink, sample[end].kink);
+            add = fmax(add, sample[end].added);
+            end++;
+        }
+        out->njoints++;
+        out->max_gap = fmax(out->max_gap, gap);
+        out->max_kink = fmax(out->max_kink, kink);
+        out->max_added = fmax(out->max_added, add);
+        out->gaps_over += gap > max_gap;
+        out->kinks_over += add > max_kink;
+        gaps += gap;
+        added += add;
+        k = end;
+    }
+    if (out->njoints > 0) {
+        out->mean_gap = gaps / (double)out->njoints;
+        out->mean_added = added / (double)out->njoints;
+    }
+    free(sample);
+    return FACET_OK;
+}
