@@ -687,6 +687,21 @@ int store_browse_median(struct store *store, const struct option_browse *b,
                         const char *column, int64_t count, double *median,
                         struct facet_error *err);
 
+/* The runs a browse reads whole for their medians at once
+ * (store_browse_medians): up to this many options, 8 bytes a value. */
+#define STORE_MEDIANS_AT_ONCE 200000
+
+/* The medians of columns[0..n) over the options b sees into out[k].median
+ * (out from store_browse_stats: its counts say how many values each has),
+ * as store_browse_median gives each, to the bit: b's rows are read once,
+ * every column's values kept and sorted in memory (a run of 10,000
+ * options: one read instead of a sort by SQLite per column). For runs of
+ * at most STORE_MEDIANS_AT_ONCE options; FACET_EINPUT for an unknown
+ * column, FACET_EWORK when out of memory. */
+int store_browse_medians(struct store *store, const struct option_browse *b,
+                         const char *const *columns, int n,
+                         struct column_stats *out, struct facet_error *err);
+
 /* The options of b that share one value of a column (a frequency table's
  * row). */
 struct option_group {

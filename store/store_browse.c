@@ -893,6 +893,84 @@ int store_browse_stats(struct store *store, const struct option_browse *b,
     return rc;
 }
 
+static int ascending(const void *x, const void *y)
+{
+    double a = *(const double *)x, b = *(const double *)y;
+    return a < b ? -1 : a > b;
+}
+
+int store_browse_medians(struct store *store, const struct option_browse *b,
+                         const char *const *columns, int n,
+                         struct column_stats *out, struct facet_error *err)
+{
+    struct option_browse plain = *b;
+    plain.filter_first = 0;
+    char expr[160];
+    struct sql_text s = {0};
+    sql_add(&s, "SELECT 0");
+    double **value = calloc((size_t)(n > 0 ? n : 1), sizeof *value);
+    int64_t *got = calloc((size_t)(n > 0 ? n : 1), sizeof *got);
+    int rc = value == NULL || got == NULL
+                 ? facet_error_set(err, FACET_EWORK, "out of memory")
+                 : FACET_OK;
+    for (int k = 0; rc == FACET_OK && k < n; k++) {
+        out[k].median = NAN;
+        if (columns[k] == NULL || key_expr(columns[k]) == NULL)
+            rc = facet_error_set(err, FACET_EINPUT, "unknown column '%s'",
+                                 columns[k] ? columns[k] : "(none)");
+        else if (out[k].count > STORE_MEDIANS_AT_ONCE)
+            rc = facet_error_set(err, FACET_EINPUT,
+                                 "%lld values of '%s': more than %d to "
+                                 "hold at once", (long long)out[k].count,
+                                 columns[k], STORE_MEDIANS_AT_ONCE);
+        else if (out[k].count > 0 &&
+                 (value[k] = malloc((size_t)out[k].count *
+                                    sizeof *value[k])) == NULL)
+            rc = facet_error_set(err, FACET_EWORK, "out of memory");
+        if (rc == FACET_OK) {
+            key_sql(&plain, columns[k], expr, sizeof expr);
+            sql_add(&s, ", %s", expr);
+        }
+    }
+    sqlite3_stmt *stmt = NULL;
+    if (rc == FACET_OK) {
+        add_from(&s, &plain, 1);
+        rc = prepare(store, &s, &plain, NULL, &stmt, "measuring options",
+                     err);
+    } else {
+        free(s.text);
+    }
+    int step = SQLITE_DONE;
+    while (rc == FACET_OK && (step = sqlite3_step(stmt)) == SQLITE_ROW)
+        for (int k = 0; k < n; k++) {
+            if (sqlite3_column_type(stmt, 1 + k) == SQLITE_NULL)
+                continue;
+            /* The counts come from one read and this is another: a
+             * writer between them (a working run) adds rows. */
+            if (got[k] < out[k].count)
+                value[k][got[k]] = sqlite3_column_double(stmt, 1 + k);
+            got[k]++;
+        }
+    if (rc == FACET_OK && step != SQLITE_DONE)
+        rc = store_fail(store, "measuring options", err);
+    sqlite3_finalize(stmt);
+    for (int k = 0; rc == FACET_OK && k < n; k++) {
+        int64_t count = got[k] < out[k].count ? got[k] : out[k].count;
+        if (count <= 0)
+            continue;
+        qsort(value[k], (size_t)count, sizeof *value[k], ascending);
+        /* As store_browse_median sums its one or two middle values. */
+        out[k].median = count % 2 ? 0 + value[k][count / 2]
+                                  : (0 + value[k][count / 2 - 1] +
+                                     value[k][count / 2]) / 2;
+    }
+    for (int k = 0; value != NULL && k < n; k++)
+        free(value[k]);
+    free(value);
+    free(got);
+    return rc;
+}
+
 int store_browse_median(struct store *store, const struct option_browse *b,
                         const char *column, int64_t count, double *median,
                         struct facet_error *err)

@@ -48,8 +48,9 @@ struct tui_screen_class {
                  int width);
     enum tui_result (*key)(struct tui_screen *s, struct tui_app *app,
                            int key);
-    /* About four times a second while no key comes; returns non-zero to
-     * be redrawn (live runs). May be NULL. */
+    /* About four times a second while no key comes, or at once when the
+     * last tick set app->tick_soon; returns non-zero to be redrawn (live
+     * runs). May be NULL. */
     int (*tick)(struct tui_screen *s, struct tui_app *app);
     void (*destroy)(struct tui_screen *s);
 };
@@ -87,6 +88,10 @@ struct tui_app {
     int utf8, colour;
     const struct tui_glyphs *glyphs;
     int help_open, help_top;
+    int tick_soon;                /* a tick left work for the next (each
+                                     does a share small enough for keys to
+                                     be answered between them): the next
+                                     comes as soon as no key waits */
     struct tui_job *job;          /* NULL when no run works */
     struct tui_column_set columns;/* the options table's, for the session */
     struct tui_history filters;   /* the filter line's texts (the table's

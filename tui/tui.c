@@ -652,6 +652,10 @@ static void loop(struct tui_app *app)
         if (dirty)
             draw(app);
         dirty = 0;
+        /* Work left by a tick goes on at once; otherwise a quarter of a
+         * second between ticks (live runs refresh once a second). */
+        timeout(app->tick_soon ? 0 : 250);
+        app->tick_soon = 0;
         int key = read_key();
         if (stop_signal)
             break;
