@@ -57,6 +57,8 @@ section "A building's fabrication package: one option of the example skin (about
     tests/bench/bench_package.sh "$build"
 section "The TUI's options table on 1,000,000 options: open, sort, filter, page, end" \
     "$build/bench/bench_tui"
+section "The TUI's Statistics of a run of 10,000 options: every count, extreme, mean and median" \
+    "$build/bench/bench_tui" --options 10000 --statistics
 
 whole=$(awk -v a="$start_all" -v b="$EPOCHREALTIME" 'BEGIN { print b - a }')
 echo "== Goals, one line each (from the sections above)"
