@@ -57,6 +57,15 @@ static inline int vec3_normalize(double v[3])
     return 1;
 }
 
+/* The angle between a and b (rad, 0..pi): atan2 of the sine and cosine
+ * keeps small angles exact, where acos of a cosine near 1 does not. */
+static inline double vec3_angle(const double a[3], const double b[3])
+{
+    double cross[3];
+    vec3_cross(a, b, cross);
+    return atan2(vec3_length(cross), vec3_dot(a, b));
+}
+
 /* Two unit vectors e1, e2 that with the unit vector n make a right-handed
  * orthonormal frame (e1 x e2 = n): e1 across n from the axis n leans on
  * least, so the same n always gives the same frame. */

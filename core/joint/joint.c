@@ -35,15 +35,6 @@ static void side_init(struct joint_side *s, const struct panel *panel,
     }
 }
 
-/* The angle between unit vectors a and b (rad): atan2 keeps small angles
- * exact, where acos of a cosine near 1 does not. */
-static double angle_between(const double a[3], const double b[3])
-{
-    double cross[3];
-    vec3_cross(a, b, cross);
-    return atan2(vec3_length(cross), vec3_dot(a, b));
-}
-
 void joint_place(const struct panel *panel, const struct built_panel *built,
                  const double x[3], double out[3])
 {
@@ -138,7 +129,7 @@ static int measure(const struct cell_sides *sides, size_t side,
             place_of(b, end[e], pb);
             widen(&edge->gap, vec3_distance(pa, pb));
         }
-        edge->kink = angle_between(a->panel->normal, b->panel->normal);
+        edge->kink = vec3_angle(a->panel->normal, b->panel->normal);
         return 1;
     }
     int any = 0;
@@ -160,7 +151,7 @@ static int measure(const struct cell_sides *sides, size_t side,
     double na[3], nb[3];
     normal_of(a, x, sides->normal + 3 * side, na);
     normal_of(b, x, sides->normal + 3 * side, nb);
-    edge->kink = angle_between(na, nb);
+    edge->kink = vec3_angle(na, nb);
     return 1;
 }
 

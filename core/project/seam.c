@@ -175,13 +175,6 @@ static void normal_along(const struct curvature *curvature,
     vec3_normalize(out);
 }
 
-static double angle_between(const double a[3], const double b[3])
-{
-    double cross[3];
-    vec3_cross(a, b, cross);
-    return atan2(vec3_length(cross), vec3_dot(a, b));
-}
-
 static int boxes_apart(const struct mesh *a, const struct mesh *b,
                        double weld)
 {
@@ -263,7 +256,7 @@ int seam_find(const struct mesh *a, const struct curvature *curvature_a,
             if (vec3_dot(da, db) > 0)
                 for (int k = 0; k < 3; k++)
                     nb_[k] = -nb_[k];
-            x->crease = angle_between(na_, nb_);
+            x->crease = vec3_angle(na_, nb_);
         }
         if (!whole)
             continue;

@@ -79,13 +79,6 @@ static void built_of(const struct panel *panel, struct built_panel *out)
     out->fitted = 0;
 }
 
-static double angle_between(const double a[3], const double b[3])
-{
-    double cross[3];
-    vec3_cross(a, b, cross);
-    return atan2(vec3_length(cross), vec3_dot(a, b));
-}
-
 /* Panel's normal as built at x, on the side of surface normal n. */
 static void built_normal(const struct panel *panel,
                          const struct built_panel *built, const double x[3],
@@ -138,7 +131,7 @@ int seam_joints_measure(const struct seam *seam, const struct seam_side *a,
         s->panel_a = pa;
         s->panel_b = pb;
         s->gap = vec3_distance(place_a, place_b);
-        s->kink = angle_between(normal_a, normal_b);
+        s->kink = vec3_angle(normal_a, normal_b);
         s->added = fabs(s->kink - x->crease);
     }
     qsort(sample, n, sizeof *sample, by_panels);

@@ -13,20 +13,8 @@
 . "$(dirname "$0")/tui_lib.sh"
 
 "$FACET" example roof --res 8 -o "$WORK/roof.obj" >/dev/null 2>&1 || exit 1
-read -r km < <(python3 - "$WORK/roof.obj" "$WORK/roof-mm.obj" <<'PY'
-import math, sys
-lo, hi = [math.inf] * 3, [-math.inf] * 3
-with open(sys.argv[1]) as src, open(sys.argv[2], "w") as dst:
-    for line in src:
-        if line.startswith("v "):
-            p = [float(x) for x in line.split()[1:4]]
-            for k in range(3):
-                lo[k], hi[k] = min(lo[k], p[k]), max(hi[k], p[k])
-            line = "v %r %r %r\n" % tuple(x * 1000 for x in p)
-        dst.write(line)
-print("%.1f" % math.dist(lo, hi))  # km, read as metres
-PY
-)
+# km, read as metres (the file's diagonal, from its coordinates)
+km=$(/usr/bin/python3 "$(dirname "$0")/obj_scaled.py" 1000 "$WORK/roof.obj" "$WORK/roof-mm.obj")
 
 start 120 30 -- u.db
 check "a new store is offered" 'Create a new result database there'

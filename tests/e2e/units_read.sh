@@ -9,21 +9,8 @@
 
 expect "example roof writes" 0 "$FACET" example roof -o "$WORK/roof.obj"
 # The roof in millimetres: every v scaled by 1000, the rest as written.
-read -r km metres < <(python3 - "$WORK/roof.obj" "$WORK/roof-mm.obj" <<'PY'
-import math, sys
-lo, hi = [math.inf] * 3, [-math.inf] * 3
-with open(sys.argv[1]) as src, open(sys.argv[2], "w") as dst:
-    for line in src:
-        if line.startswith("v "):
-            p = [float(x) for x in line.split()[1:4]]
-            for k in range(3):
-                lo[k], hi[k] = min(lo[k], p[k]), max(hi[k], p[k])
-            line = "v %r %r %r\n" % tuple(x * 1000 for x in p)
-        dst.write(line)
-d = math.dist(lo, hi)
-print("%.1f %.1f" % (d, d))  # the file's diagonal: km read as metres, m in mm
-PY
-)
+km=$(/usr/bin/python3 "$(dirname "$0")/obj_scaled.py" 1000 "$WORK/roof.obj" "$WORK/roof-mm.obj")
+metres=$km  # the file's diagonal: km read as metres, m in mm
 
 expect_error "optimize refuses a millimetre file read as metres" \
     "roof-mm\.obj is $km km across in m.*in mm it is $metres m: give --units mm" \
