@@ -18,6 +18,7 @@
 
 #include "core/evaluate/evaluate.h"
 #include "core/evaluate/option.h"
+#include "core/project/project_seams.h"
 #include "core/project/seam.h"
 #include "core/project/seam_joints.h"
 #include "core/surface/surface.h"
@@ -381,6 +382,93 @@ static void test_cylinder_joints_single_curved(void **state)
     surface_close(&b);
 }
 
+/* A building of the box corner's three faces: three seams of 1 m at 90
+ * degrees; flat panels on them add nothing, and leave no gap. */
+static void test_building_box_corner(void **state)
+{
+    (void)state;
+    struct project_surface face[3];
+    memset(face, 0, sizeof face);
+    open_formula(floor_z0, NULL, 4, 5, &face[0].surface);
+    open_formula(wall_x0, NULL, 6, 3, &face[1].surface);
+    open_formula(wall_y0, NULL, 3, 4, &face[2].surface);
+    struct project project;
+    memset(&project, 0, sizeof project);
+    project.nsurfaces = 3;
+    project.surfaces = face;
+    struct project_seams seams;
+    struct facet_error err;
+    assert_int_equal(project_seams_find(&project, SEAM_WELD_DEFAULT, NULL,
+                                        &seams, &err), FACET_OK);
+    assert_int_equal(seams.nseams, 3);
+    struct panelization panels[3];
+    const struct panelization *of[3];
+    for (int k = 0; k < 3; k++) {
+        panels_of(&face[k].surface, 2, 3, 3, &panels[k]);
+        of[k] = &panels[k];
+    }
+    struct seam_totals t;
+    assert_int_equal(project_seams_measure(&project, &seams, of, 0.001,
+                                           PI / 180, &t, &err), FACET_OK);
+    assert_int_equal(t.nseams, 3);
+    assert_true(fabs(t.length - 3) < 1e-12);
+    assert_true(t.njoints >= 6);
+    assert_true(t.max_gap < 1e-12);
+    assert_true(t.max_added < 1e-9);
+    assert_true(fabs(t.max_crease - PI / 2) < 1e-9);
+    assert_int_equal(t.gaps_over + t.kinks_over, 0);
+    for (int k = 0; k < 3; k++) {
+        panelization_free(&panels[k]);
+        surface_close(&face[k].surface);
+    }
+    project_seams_free(&seams);
+}
+
+/* The cylinder's halves as a building, flat 60-degree panels: one seam of
+ * two rulings (8 m), two joints, each with the closed form's gap and 60
+ * degrees added; both over limits of 1 mm and 1 degree. */
+static void test_building_cylinder(void **state)
+{
+    (void)state;
+    struct half first = {0}, second = {PI};
+    struct project_surface half[2];
+    memset(half, 0, sizeof half);
+    open_formula(half_cylinder, &first, 12, 2, &half[0].surface);
+    open_formula(half_cylinder, &second, 12, 2, &half[1].surface);
+    struct project project;
+    memset(&project, 0, sizeof project);
+    project.nsurfaces = 2;
+    project.surfaces = half;
+    struct project_seams seams;
+    struct facet_error err;
+    assert_int_equal(project_seams_find(&project, SEAM_WELD_DEFAULT, NULL,
+                                        &seams, &err), FACET_OK);
+    assert_int_equal(seams.nseams, 1);
+    struct panelization panels[2];
+    const struct panelization *of[2] = {&panels[0], &panels[1]};
+    panels_of(&half[0].surface, 3, 1, 1000, &panels[0]);
+    panels_of(&half[1].surface, 3, 1, 1000, &panels[1]);
+    struct seam_totals t;
+    assert_int_equal(project_seams_measure(&project, &seams, of, 0.001,
+                                           PI / 180, &t, &err), FACET_OK);
+    double beta = PI / 12, alpha = PI / 3, r = 3;
+    double d = r * cos(beta / 2) * (cos(beta / 2) + cos(1.5 * beta)) / 2;
+    double gap = fabs(r * cos(alpha / 2) - d) * 2 * sin(alpha / 2);
+    assert_true(fabs(t.length - 8) < 1e-9);
+    assert_int_equal(t.njoints, 2);
+    assert_true(fabs(t.max_gap - gap) < 1e-9);
+    assert_true(fabs(t.mean_gap - gap) < 1e-9);
+    assert_true(fabs(t.max_added - alpha) < 1e-6);
+    assert_true(fabs(t.mean_added - alpha) < 1e-6);
+    assert_int_equal(t.gaps_over, 2);
+    assert_int_equal(t.kinks_over, 2);
+    for (int k = 0; k < 2; k++) {
+        panelization_free(&panels[k]);
+        surface_close(&half[k].surface);
+    }
+    project_seams_free(&seams);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -396,6 +484,8 @@ int main(void)
         cmocka_unit_test(test_hinge_joints),
         cmocka_unit_test(test_cylinder_joints),
         cmocka_unit_test(test_cylinder_joints_single_curved),
+        cmocka_unit_test(test_building_box_corner),
+        cmocka_unit_test(test_building_cylinder),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
