@@ -497,6 +497,10 @@ static const char *stored_unit_by_name(const char *name)
     /* a panel's width in m, shown in mm (docs/method.md: Slivers) */
     if (strcmp(name, "min_panel_width") == 0)
         return "m";
+    /* how far a planarized option's corners ended from the surface, in m
+     * (docs/store.md); its planarity a ratio, no unit */
+    if (strncmp(name, "closeness_", 10) == 0)
+        return "m";
     /* a joint's gap in mm, its kink in degrees (docs/method.md: Panels as
      * built) */
     if (n >= 4 && strcmp(name + n - 4, "_gap") == 0)
