@@ -222,7 +222,9 @@ static int run_costs_write(struct store *store, const struct run_info *r,
     option_measures_format(r->measured, measured, sizeof measured);
     sqlite3_bind_text(s, 11, measured, -1, SQLITE_TRANSIENT);
     store_bind_or_null(s, 12, r->min_panel_width);
-    store_bind_or_null(s, 13, r->planarize_closeness_mm);
+    /* A run made with no budget (a zeroed run_info) made none: NULL. */
+    store_bind_or_null(s, 13, r->planarize_closeness_mm > 0
+                                  ? r->planarize_closeness_mm : NAN);
     if (sqlite3_step(s) != SQLITE_DONE)
         rc = store_fail(store, "creating a run", err);
     sqlite3_finalize(s);

@@ -511,6 +511,13 @@ static int evaluate_option(const struct run_info *run,
         return rc;
     struct option_params params = option_params_at(
         &settings.base, option->nu, option->nv, option->threshold_mm);
+    if (option->totals.planarized) {
+        /* Its panels were stored when it was made; made again, they are
+         * planarized again, never classified in its place. */
+        params.unmeasured = 0;
+        return study_planar_evaluate(run, surface, &params, NULL, panels,
+                                     totals, err);
+    }
     return option_evaluate(surface, &params, NULL, panels, totals, err);
 }
 
@@ -819,6 +826,13 @@ int study_finish(struct store *store, const struct run_info *run,
         if (stopped)
             *outcome = OPTIMIZE_INTERRUPTED;
     }
+    if (rc == FACET_OK && *outcome == OPTIMIZE_DONE && surface != NULL) {
+        int stopped;
+        rc = study_planarize_front(store, run, surface, settings, hooks,
+                                   &stopped, err);
+        if (stopped)
+            *outcome = OPTIMIZE_INTERRUPTED;
+    }
     return rc;
 }
 
@@ -1004,6 +1018,14 @@ int study_request_check(const struct study_request *request,
         return facet_error_set(err, FACET_EINPUT,
             "the run's name is not clean UTF-8 text (control characters or "
             "invalid bytes)");
+    if (request->planarize_closeness > 0 && request->nfiles > 0)
+        return facet_error_set(err, FACET_EINPUT,
+            "planarized options are made for a single surface, not yet "
+            "for a building's surfaces");
+    if (request->planarize_closeness > 0 && request->settings.shard.count > 0)
+        return facet_error_set(err, FACET_EINPUT,
+            "planarized options are made from a run's front, which a "
+            "shard does not know: not for a shard");
     return design_space_check(&request->settings.space, NULL, err);
 }
 
@@ -1117,6 +1139,9 @@ int study_start(struct store *store, const struct study_request *request,
     costs_to_run(&run, &s->base);
     run.max_panel_area = s->base.classify.max_panel_area;
     run.curvature_tol = s->base.classify.curvature_tol;
+    run.planarize_closeness_mm = request->planarize_closeness > 0
+                                     ? units_mm(request->planarize_closeness)
+                                     : NAN;
     run.per_panel = s->base.mode;
     run.flip_normals = request->flip_normals;
     snprintf(run.object, sizeof run.object, "%s",
