@@ -863,8 +863,14 @@ static int study_go(struct store *store, struct run_info *run,
         stored = malloc(nstored * sizeof *stored);
         if (stored == NULL)
             rc = facet_error_set(err, FACET_EWORK, "out of memory");
+        /* The search's own options only: a planarized option shares its
+         * design point with the classified one it was made beside
+         * (study_planar.c), and is no evaluation of that point. */
+        size_t kept = 0;
         for (size_t k = 0; rc == FACET_OK && k < nstored; k++)
-            evaluated_of(&rows[k], &stored[k]);
+            if (!rows[k].totals.planarized)
+                evaluated_of(&rows[k], &stored[kept++]);
+        nstored = kept;
     }
     free(rows);
     /* The panels of the run and of its front from one lattice, so that
