@@ -14,13 +14,6 @@
 #include "core/evaluate/evaluate.h"
 #include "core/planar/quad_grid.h"
 
-/* The moved corners of panel (i, j) into c, panel.h's order. */
-static void moved_corners(const struct planarize_result *r, int i, int j,
-                          double c[4][3])
-{
-    quad_grid_corners(&r->grid, i, j, c);
-}
-
 /* The point at (s, t) in [0, 1]^2 of quad c, bilinear: on a planar quad
  * it lies in its plane. */
 static void quad_point(const double c[4][3], double s, double t,
@@ -130,7 +123,7 @@ static int move_panels(const struct planarize_result *r,
         if (panel->trimmed || panel->ncorners != 4 || !r->grid.quad[q])
             continue;
         double c[4][3], distance = 0, moved = 0;
-        moved_corners(r, panel->i, panel->j, c);
+        quad_grid_corners(&r->grid, panel->i, panel->j, c);
         for (int corner = 0; corner < 4; corner++) {
             size_t node = (size_t)(panel->j + offset[corner][1]) *
                               (size_t)(r->grid.nu + 1) +
@@ -161,7 +154,7 @@ int planar_option_evaluate(const struct surface *surface,
     memset(&shared, 0, sizeof shared);
     shared.stop = o->stop;
     int rc = option_evaluate(surface, params, &shared, panels, totals, err);
-    double joint_length = totals->joint_length;
+    double joint_length = rc == FACET_OK ? totals->joint_length : NAN;
     if (rc == FACET_OK)
         rc = quad_grid_from_panels(panels, &grid, err);
     if (rc == FACET_OK)
