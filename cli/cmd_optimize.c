@@ -20,11 +20,16 @@
 #include "run_table.h"
 #include "signals.h"
 #include "core/base/numformat.h"
+#include "core/base/numparse.h"
 #include "core/base/numrange.h"
 #include "core/obj/infile.h"
 #include "core/project/module.h"
 #include "study/study.h"
 #include "study/study_estimate.h"
+
+/* The largest --planarize budget (mm), as facet planarize's --closeness:
+ * 10 m off a facade is no budget. */
+#define PLANARIZE_MAX_MM 10000.0
 
 /* Rows of the table a run ends with, unless --table says. */
 #define TABLE_ROWS 20
@@ -175,7 +180,7 @@ struct optimize_command {
     struct search_flags search;
     struct classify_flags flags;
     const char *db, *resume, *name, *table, *surface, *store_panels;
-    const char *measure;
+    const char *measure, *planarize;
     int wide;
     const char *path[PROJECT_FILES_MAX];
     int count;
@@ -317,6 +322,12 @@ static const struct arg_option optimize_options[] = {
      "none; fewer when the disk cannot hold them (said); any other "
      "option's when first looked at: show, export, tui",
      default_store_panels},
+    {"planarize", 0, ARG_STRING,
+     offsetof(struct optimize_command, planarize), "MM",
+     "also planarize the Pareto front's grids (at most 8, the knee's "
+     "first): each grid's corners moved off the surface, within MM, until "
+     "its quads are planar (facet planarize), stored as a planarized "
+     "option beside the classified ones and ranked with them", NULL},
     {"measure", 0, ARG_STRING, offsetof(struct optimize_command, measure),
      "needed|all",
      "needed: each option is measured for what the objectives, limits and "
@@ -374,6 +385,10 @@ static int optimize_parse(int argc, char **argv, struct optimize_command *c,
         return facet_error_set(err, FACET_EINPUT,
             "optimize --resume: the run knows its module range; give no "
             "--module or --grid");
+    if (c->resume && c->planarize)
+        return facet_error_set(err, FACET_EINPUT,
+            "optimize --resume: the run knows its closeness budget; give no "
+            "--planarize");
     if (search->grid && !search->module)
         return facet_error_set(err, FACET_EINPUT,
             "optimize: --grid gives a project's surface its own grid; "
@@ -412,6 +427,17 @@ static int optimize_parse(int argc, char **argv, struct optimize_command *c,
             return facet_error_set(err, FACET_EINPUT,
                 "--measure: '%s' is neither all nor needed", c->measure);
         request->measure_all = c->measure && strcmp(c->measure, "all") == 0;
+        if (c->planarize) {
+            double mm;
+            if ((rc = numparse_number(c->planarize, 0, PLANARIZE_MAX_MM,
+                                      "--planarize", &mm, err)))
+                return rc;
+            if (mm == 0)
+                return facet_error_set(err, FACET_EINPUT,
+                    "--planarize: a budget of 0 mm moves no corner; give "
+                    "the closeness budget in mm, e.g. --planarize 5");
+            request->planarize_closeness = mm / 1000;
+        }
         request->surface_path = c->path[0];
         request->units_named = c->flags.surface.units != NULL;
         request->flip_normals = c->flags.flip_normals;
@@ -512,6 +538,7 @@ const struct command cmd_optimize = {
              "[--pop N] [--gens N]\n"
              "       [--seed S] [--objectives LIST] [--jobs N] [--name TEXT]"
              " [--table N]\n"
+             "       [--planarize MM]\n"
              "       [classification options]\n"
              "   or: facet optimize PROJECT.obj [MORE.obj ...] --db FILE\n"
              "       --module WMIN:WMAX x HMIN:HMAX [--grid NAME=NUxNV,...]\n"

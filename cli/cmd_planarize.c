@@ -20,9 +20,11 @@
 #include "shown.h"
 #include "core/base/numparse.h"
 #include "core/base/numrange.h"
+#include "core/base/units.h"
 #include "core/out/json.h"
 #include "core/out/outfile.h"
 #include "core/out/planar_obj.h"
+#include "core/planar/planar_option.h"
 #include "core/planar/planarize.h"
 #include "core/surface/surface.h"
 
@@ -70,7 +72,8 @@ static void show_iteration(void *context, int iteration, int most)
 
 static void print_human(const struct surface *s,
                         const struct planarize_options *o,
-                        const struct planarize_result *r)
+                        const struct planarize_result *r,
+                        const struct option_totals *t)
 {
     shown_line(stdout, "%-16s %s (%s, %.3f m^2, %zu triangles, UV from %s)",
                "surface", s->path, mesh_units_name(s->units), s->mesh.area,
@@ -89,6 +92,10 @@ static void print_human(const struct surface *s,
     printf("%-16s %.3f mm at most\n", "corners moved", r->max_moved * 1000);
     printf("%-16s %d (%s)\n", "iterations", r->iterations,
            r->converged ? "converged" : "stopped at the limit");
+    printf("%-16s %.0f USD at the paper's prices: %zu FP, %zu DP panels; "
+           "gaps up to %.3f mm, kinks up to %.3f deg\n", "as an option",
+           t->cost, t->count[TYPE_FP], t->count[TYPE_DP], t->max_gap_mm,
+           t->max_kink_deg);
     if (r->feasible)
         printf("%-16s feasible: every quad planar within %g of its diagonal, "
                "every corner within %g mm of the surface\n", "result",
@@ -106,7 +113,8 @@ static void print_human(const struct surface *s,
 
 static void print_json(const struct surface *s,
                        const struct planarize_options *o,
-                       const struct planarize_result *r)
+                       const struct planarize_result *r,
+                       const struct option_totals *t)
 {
     struct json_writer w;
     json_init(&w, stdout);
@@ -148,6 +156,20 @@ static void print_json(const struct surface *s,
     json_bool(&w, r->converged);
     json_key(&w, "feasible");
     json_bool(&w, r->feasible);
+    /* The option it makes, priced and joined as any option (at the
+     * paper's prices and classification: planar_option.h). */
+    json_key(&w, "quads_missed");
+    json_integer(&w, (long long)t->planar_over);
+    json_key(&w, "cost_usd");
+    json_number(&w, t->cost);
+    json_key(&w, "fp_count");
+    json_integer(&w, (long long)t->count[TYPE_FP]);
+    json_key(&w, "dp_count");
+    json_integer(&w, (long long)t->count[TYPE_DP]);
+    json_key(&w, "max_gap_mm");
+    json_number(&w, t->max_gap_mm);
+    json_key(&w, "max_kink_deg");
+    json_number(&w, t->max_kink_deg);
     json_end_object(&w);
     json_finish(&w);
 }
@@ -215,11 +237,10 @@ static int planarize_run(int argc, char **argv, struct facet_error *err)
 
     struct surface surface;
     struct panelization panels;
-    struct quad_grid grid;
+    struct option_totals totals;
     struct nearest_index index;
     struct planarize_result result;
     memset(&panels, 0, sizeof panels);
-    memset(&grid, 0, sizeof grid);
     memset(&index, 0, sizeof index);
     memset(&result, 0, sizeof result);
     rc = surface_open(path, &mesh_options, &surface, err);
@@ -228,18 +249,18 @@ static int planarize_run(int argc, char **argv, struct facet_error *err)
     if (rc == FACET_OK)
         rc = surface_prepare(&surface, 0, PARAM_AUTO, err);
     if (rc == FACET_OK)
-        rc = panels_build_fast(&surface.panels, PANEL_EXTREMES, nu, nv,
-                               &panels, err);
-    if (rc == FACET_OK)
-        rc = quad_grid_from_panels(&panels, &grid, err);
-    if (rc == FACET_OK)
         rc = nearest_index_build(&surface.mesh, &index, err);
     if (rc == FACET_OK) {
         struct progress bar;
         progress_start(&bar, "iterations", 0, 0);
         o.progress = show_iteration;
         o.progress_context = &bar;
-        rc = planarize(&surface.mesh, &index, &grid, &o, &result, err);
+        struct option_params base, params;
+        option_params_defaults(&base);
+        params = option_params_at(&base, nu, nv,
+                                  units_mm(base.classify.threshold));
+        rc = planar_option_evaluate(&surface, &index, &params, &o, &panels,
+                                    &totals, &result, err);
         if (rc == FACET_OK)
             progress_finish(&bar, result.iterations, result.iterations);
         else if (bar.terminal)
@@ -251,14 +272,13 @@ static int planarize_run(int argc, char **argv, struct facet_error *err)
         for (int i = 0; i < surface.nwarnings; i++)
             shown_line(stderr, "facet: warning: %s", surface.warnings[i]);
         if (a.json)
-            print_json(&surface, &o, &result);
+            print_json(&surface, &o, &result, &totals);
         else
-            print_human(&surface, &o, &result);
+            print_human(&surface, &o, &result, &totals);
     }
     planarize_result_free(&result);
-    nearest_index_free(&index);
-    quad_grid_free(&grid);
     panelization_free(&panels);
+    nearest_index_free(&index);
     surface_close(&surface);
     return rc;
 }

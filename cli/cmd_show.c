@@ -102,6 +102,8 @@ static int show_main(int argc, char **argv, struct facet_error *err)
             printf("%-16s %g mm\n", "threshold", o.row.threshold_mm);
             printf("%-16s %d%s\n", "Pareto rank", o.row.rank,
                    o.row.rank == 0 ? " (not ranked yet)" : "");
+            option_text_kind(stdout, &o.totals, &o.panels,
+                             o.run.planarize_closeness_mm);
             option_text_totals(stdout, &o.totals, &o.classify);
             if (o.nsurfaces > 0) {
                 printf("\n");

@@ -83,6 +83,38 @@ static void slivers_text(FILE *out, const struct option_totals *t,
             t->min_panel_width * 1000, limit);
 }
 
+void option_text_kind(FILE *out, const struct option_totals *t,
+                      const struct panelization *p, double budget_mm)
+{
+    if (!t->planarized) {
+        fprintf(out, "%-16s classified: the surface cut along the grid, "
+                "never moved\n", "kind");
+        return;
+    }
+    double moved = NAN;
+    for (size_t k = 0; p->corner_moved != NULL && k < p->npanels; k++)
+        if (!isnan(p->corner_moved[k]))
+            moved = isnan(moved) ? p->corner_moved[k]
+                                 : fmax(moved, p->corner_moved[k]);
+    fprintf(out, "%-16s planarized: its corners moved off the surface until "
+            "its quads are planar\n", "kind");
+    fprintf(out, "%-16s reached %.3f mm at most, %.3f mm on average "
+            "(budget %g mm)\n", "closeness", t->closeness_reached * 1000,
+            t->closeness_mean * 1000, budget_mm);
+    fprintf(out, "%-16s reached %.3g of the longer diagonal at most\n",
+            "quad planarity", t->planarity_reached);
+    if (!isnan(moved))
+        fprintf(out, "%-16s %.3f mm at most\n", "corners moved",
+                moved * 1000);
+    if (t->planar_over == 0)
+        fprintf(out, "%-16s every quad planar, every corner within the "
+                "budget\n", "planarized");
+    else
+        fprintf(out, "%-16s INFEASIBLE: %zu quads not planar or beyond the "
+                "budget; not a planar option\n", "planarized",
+                t->planar_over);
+}
+
 void option_text_totals(FILE *out, const struct option_totals *t,
                         const struct classify_options *o)
 {

@@ -20,4 +20,11 @@ void option_text_totals(FILE *out, const struct option_totals *totals,
  * note instead when the grid is wider than the terminal. */
 void option_text_map(FILE *out, const struct panelization *panels);
 
+/* The option's kind (classified or planarized) and, for a planarized
+ * one (core/planar/planar_option.h), what its planarization reached
+ * against budget_mm, the run's, and how far its corners moved (its
+ * panels p), plainly "INFEASIBLE" when it missed. */
+void option_text_kind(FILE *out, const struct option_totals *t,
+                      const struct panelization *p, double budget_mm);
+
 #endif

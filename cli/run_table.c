@@ -61,6 +61,7 @@ static void violations_line(const struct run_info *info,
     size_t area = breaking[LIMIT_PANEL_AREA];
     size_t width = breaking[LIMIT_PANEL_WIDTH];
     size_t gap = breaking[LIMIT_GAP], kink = breaking[LIMIT_KINK];
+    size_t planar = breaking[LIMIT_PLANARIZE];
     line[0] = '\0';
     if (infeasible == 0)
         return;
@@ -81,9 +82,14 @@ static void violations_line(const struct run_info *info,
                                  "; %zu with gaps over the limit "
                                  "(--max-gap %g mm)", gap, info->max_gap_mm);
     if (kink > 0 && used < size)
+        used += (size_t)snprintf(line + used, size - used,
+                                 "; %zu with kinks over the limit "
+                                 "(--max-kink %g deg)", kink,
+                                 info->max_kink_deg);
+    if (planar > 0 && used < size)
         snprintf(line + used, size - used,
-                 "; %zu with kinks over the limit (--max-kink %g deg)", kink,
-                 info->max_kink_deg);
+                 "; %zu planarized, not planar within %g mm of the surface "
+                 "(--planarize)", planar, info->planarize_closeness_mm);
 }
 
 int run_table_print(FILE *out, struct store *store, const char *db,

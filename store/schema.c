@@ -384,6 +384,28 @@ static const char schema_v12[] =
 static const char schema_v13[] =
     "ALTER TABLE panels ADD COLUMN sp_bending_radius REAL;";
 
+/* Version 14: planarized options (issue 33, core/planar/planar_option.h).
+ * An option's kind (planarized 0: classified, the surface cut and never
+ * moved; 1: its corners moved off the surface until its quads are planar)
+ * and what its planarization reached: the largest and mean distance of
+ * its corners from the design surface (m) and the largest planarity of
+ * its quads over their longer diagonals, and the quads that missed (over
+ * the planarity tolerance or with a corner beyond the budget: a limit, as
+ * gaps_over), NULL for a classified option.
+ * Per panel of a planarized option, the largest distance of its corners
+ * from the design surface and how far they moved (m), NULL for a
+ * classified option's panels. Per run, the closeness budget its
+ * planarized options were held to (mm), NULL when it made none. */
+static const char schema_v14[] =
+    "ALTER TABLE runs ADD COLUMN planarize_closeness_mm REAL;"
+    "ALTER TABLE options ADD COLUMN planarized INTEGER NOT NULL DEFAULT 0;"
+    "ALTER TABLE options ADD COLUMN closeness_reached REAL;"
+    "ALTER TABLE options ADD COLUMN closeness_mean REAL;"
+    "ALTER TABLE options ADD COLUMN planarity_reached REAL;"
+    "ALTER TABLE options ADD COLUMN planar_over INTEGER;"
+    "ALTER TABLE panels ADD COLUMN corner_distance REAL;"
+    "ALTER TABLE panels ADD COLUMN corner_moved REAL;";
+
 static const char *const migrations[STORE_SCHEMA_VERSION] = {
     schema_v1,
     schema_v2,
@@ -398,6 +420,7 @@ static const char *const migrations[STORE_SCHEMA_VERSION] = {
     schema_v11,
     schema_v12,
     schema_v13,
+    schema_v14,
 };
 
 int store_fail(struct store *store, const char *doing,

@@ -138,6 +138,10 @@ struct run_info {
     double max_kink_deg;       /* kink limit (degrees); NaN: none */
     double min_panel_width;    /* width limit on every panel (m,
                                   panel_width.h; schema v12); NaN: none */
+    double planarize_closeness_mm;  /* the closeness budget its planarized
+                                  options were held to (mm, schema v14,
+                                  core/planar/planar_option.h); NaN: the
+                                  run made none */
     /* What every option of the run was measured for beyond its classed
      * panels (option.h's option_measure bits; schema v9): what its
      * objectives, limits and prices read, or all of them. Its Pareto

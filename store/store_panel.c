@@ -108,13 +108,14 @@ int store_panels_put_stoppable(struct store *store, int64_t run,
             " best_cone, misfit_reason, sp_surface, sp_axis_x, sp_axis_y,"
             " sp_axis_z, sp_direction_x, sp_direction_y, sp_direction_z,"
             " sp_radius, sp_apex_x, sp_apex_y, sp_apex_z, sp_half_angle,"
-            " sp_bending_radius)"
+            " sp_bending_radius, corner_distance, corner_moved)"
             " VALUES (?1, ?2, ?3, ?4, ?5,"
             " ?6, ?7, ?8, ?9, ?10, ?11, ?12, ?13, ?14, ?15, ?16, ?17, ?18,"
             " ?19, ?20, ?21, ?22, ?23, ?24, ?25, ?26, ?27, ?28, ?29, ?30,"
             " ?31, ?32, ?33, ?34, ?35, ?36, ?37, ?38, ?39, ?40, ?41, ?42,"
             " ?43, ?44, ?45, ?46, ?47, ?48, ?49, ?50, ?51, ?52, ?53, ?54,"
-            " ?55, ?56, ?57, ?58, ?59, ?60)", &panel, "storing panels",
+            " ?55, ?56, ?57, ?58, ?59, ?60, ?61, ?62)", &panel,
+            "storing panels",
             err);
     for (size_t k = 0; k < p->npanels && rc == FACET_OK; k++) {
         if (k % PANELS_BETWEEN_STOPS == 0 &&
@@ -173,6 +174,12 @@ int store_panels_put_stoppable(struct store *store, int64_t run,
         else
             sqlite3_bind_null(panel, c++);
         c = bind_sp_fit(panel, c, &x->sp_fit);
+        /* NULL for a classified option's panels (never 0: not moved is
+         * not measured as a move of 0). */
+        store_bind_or_null(panel, c++, p->corner_distance != NULL
+                                           ? p->corner_distance[k] : NAN);
+        store_bind_or_null(panel, c++, p->corner_moved != NULL
+                                           ? p->corner_moved[k] : NAN);
         if (sqlite3_step(panel) != SQLITE_DONE)
             rc = store_fail(store, "storing panels", err);
         sqlite3_reset(panel);
@@ -221,6 +228,31 @@ static int type_of(const char *text)
         if (strcmp(panel_type_name((enum panel_type)t), text) == 0)
             return t;
     return -1;
+}
+
+/* A planarized option's corner distance and move of panel n, from column
+ * c: the arrays made at its first panel that has them (a classified
+ * option's panels have none: the arrays stay NULL). */
+static int read_corner_moves(sqlite3_stmt *s, int c, struct panelization *p,
+                             size_t n, struct facet_error *err)
+{
+    double distance = store_column_or_nan(s, c);
+    double moved = store_column_or_nan(s, c + 1);
+    if (p->corner_moved == NULL && (isnan(distance) && isnan(moved)))
+        return FACET_OK;
+    if (p->corner_moved == NULL) {
+        size_t m = p->npanels ? p->npanels : 1;
+        p->corner_distance = malloc(m * sizeof *p->corner_distance);
+        p->corner_moved = malloc(m * sizeof *p->corner_moved);
+        if (p->corner_distance == NULL || p->corner_moved == NULL)
+            return facet_error_set(err, FACET_EWORK,
+                                   "out of memory (panels)");
+        for (size_t k = 0; k < m; k++)
+            p->corner_distance[k] = p->corner_moved[k] = NAN;
+    }
+    p->corner_distance[n] = distance;
+    p->corner_moved[n] = moved;
+    return FACET_OK;
 }
 
 int store_panels_get(struct store *store, int64_t run, int64_t option,
@@ -280,7 +312,8 @@ int store_panels_get(struct store *store, int64_t run, int64_t option,
         " best_cylinder, best_cone, misfit_reason IS NOT NULL, sp_surface,"
         " sp_axis_x, sp_axis_y, sp_axis_z, sp_direction_x, sp_direction_y,"
         " sp_direction_z, sp_radius, sp_apex_x, sp_apex_y, sp_apex_z,"
-        " sp_half_angle, sp_bending_radius FROM panels"
+        " sp_half_angle, sp_bending_radius, corner_distance, corner_moved"
+        " FROM panels"
         " WHERE run = ?1 AND option = ?2"
         " ORDER BY j, i", &s, "reading panels", err);
     if (rc != FACET_OK)
@@ -345,6 +378,7 @@ int store_panels_get(struct store *store, int64_t run, int64_t option,
         x->best_cone = store_column_or_nan(s, c++);
         x->misfit = sqlite3_column_int(s, c++);
         c = read_sp_fit(s, c, &x->sp_fit);
+        rc = read_corner_moves(s, c, p, n, err);
         p->cell_panel[(size_t)x->j * (size_t)p->nu + (size_t)x->i] = (int)n;
         n++;
     }

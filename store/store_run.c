@@ -33,7 +33,7 @@
 #define RUN_COST_COLUMNS \
     "price_panel, price_joint, price_sp_mould, price_dp_mould," \
     " mould_tol_mm, mould_mirror, sp_fit, max_gap_mm, max_kink_deg," \
-    " measured, min_panel_width, " \
+    " measured, min_panel_width, planarize_closeness_mm, " \
     STORE_SHARD_COLUMNS ", " STORE_MODULE_COLUMNS
 
 static void copy_text(char *to, size_t size, sqlite3_stmt *stmt, int col)
@@ -189,6 +189,7 @@ static void run_costs_from_row(sqlite3_stmt *s, int c, struct run_info *r)
                       ? OPTION_MEASURE_ALL
                       : option_measures_parse((const char *)measured);
     r->min_panel_width = store_column_or_nan(s, c++);
+    r->planarize_closeness_mm = store_column_or_nan(s, c++);
     store_shard_from_row(s, c, r);
     store_module_from_row(s, c + 3, r);
 }
@@ -202,8 +203,8 @@ static int run_costs_write(struct store *store, const struct run_info *r,
         "UPDATE runs SET price_panel = ?2, price_joint = ?3,"
         " price_sp_mould = ?4, price_dp_mould = ?5, mould_tol_mm = ?6,"
         " mould_mirror = ?7, sp_fit = ?8, max_gap_mm = ?9,"
-        " max_kink_deg = ?10, measured = ?11, min_panel_width = ?12"
-        " WHERE id = ?1", &s,
+        " max_kink_deg = ?10, measured = ?11, min_panel_width = ?12,"
+        " planarize_closeness_mm = ?13 WHERE id = ?1", &s,
         "creating a run", err);
     if (rc != FACET_OK)
         return rc;
@@ -221,6 +222,9 @@ static int run_costs_write(struct store *store, const struct run_info *r,
     option_measures_format(r->measured, measured, sizeof measured);
     sqlite3_bind_text(s, 11, measured, -1, SQLITE_TRANSIENT);
     store_bind_or_null(s, 12, r->min_panel_width);
+    /* A run made with no budget (a zeroed run_info) made none: NULL. */
+    store_bind_or_null(s, 13, r->planarize_closeness_mm > 0
+                                  ? r->planarize_closeness_mm : NAN);
     if (sqlite3_step(s) != SQLITE_DONE)
         rc = store_fail(store, "creating a run", err);
     sqlite3_finalize(s);

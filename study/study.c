@@ -511,6 +511,13 @@ static int evaluate_option(const struct run_info *run,
         return rc;
     struct option_params params = option_params_at(
         &settings.base, option->nu, option->nv, option->threshold_mm);
+    if (option->totals.planarized) {
+        /* Its panels were stored when it was made; made again, they are
+         * planarized again, never classified in its place. */
+        params.unmeasured = 0;
+        return study_planar_evaluate(run, surface, &params, NULL, panels,
+                                     totals, err);
+    }
     return option_evaluate(surface, &params, NULL, panels, totals, err);
 }
 
@@ -826,6 +833,13 @@ int study_finish(struct store *store, const struct run_info *run,
         if (stopped)
             *outcome = OPTIMIZE_INTERRUPTED;
     }
+    if (rc == FACET_OK && *outcome == OPTIMIZE_DONE && surface != NULL) {
+        int stopped;
+        rc = study_planarize_front(store, run, surface, settings, hooks,
+                                   &stopped, err);
+        if (stopped)
+            *outcome = OPTIMIZE_INTERRUPTED;
+    }
     return rc;
 }
 
@@ -856,8 +870,14 @@ static int study_go(struct store *store, struct run_info *run,
         stored = malloc(nstored * sizeof *stored);
         if (stored == NULL)
             rc = facet_error_set(err, FACET_EWORK, "out of memory");
+        /* The search's own options only: a planarized option shares its
+         * design point with the classified one it was made beside
+         * (study_planar.c), and is no evaluation of that point. */
+        size_t kept = 0;
         for (size_t k = 0; rc == FACET_OK && k < nstored; k++)
-            evaluated_of(&rows[k], &stored[k]);
+            if (!rows[k].totals.planarized)
+                evaluated_of(&rows[k], &stored[kept++]);
+        nstored = kept;
     }
     free(rows);
     /* The panels of the run and of its front from one lattice, so that
@@ -1011,6 +1031,14 @@ int study_request_check(const struct study_request *request,
         return facet_error_set(err, FACET_EINPUT,
             "the run's name is not clean UTF-8 text (control characters or "
             "invalid bytes)");
+    if (request->planarize_closeness > 0 && request->nfiles > 0)
+        return facet_error_set(err, FACET_EINPUT,
+            "planarized options are made for a single surface, not yet "
+            "for a building's surfaces");
+    if (request->planarize_closeness > 0 && request->settings.shard.count > 0)
+        return facet_error_set(err, FACET_EINPUT,
+            "planarized options are made from a run's front, which a "
+            "shard does not know: not for a shard");
     return design_space_check(&request->settings.space, NULL, err);
 }
 
@@ -1124,6 +1152,9 @@ int study_start(struct store *store, const struct study_request *request,
     costs_to_run(&run, &s->base);
     run.max_panel_area = s->base.classify.max_panel_area;
     run.curvature_tol = s->base.classify.curvature_tol;
+    run.planarize_closeness_mm = request->planarize_closeness > 0
+                                     ? units_mm(request->planarize_closeness)
+                                     : NAN;
     run.per_panel = s->base.mode;
     run.flip_normals = request->flip_normals;
     snprintf(run.object, sizeof run.object, "%s",

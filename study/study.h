@@ -75,6 +75,11 @@ struct study_request {
     int measure_all;                 /* every option measured in full, not
                                         only for what the run reads
                                         (optimize_measures_needed) */
+    double planarize_closeness;      /* > 0: the front's grids planarized
+                                        within this budget (m), their
+                                        planarized options stored beside
+                                        the classified ones (issue 33,
+                                        study_planar.c); 0: none */
 };
 
 /* What a new run takes when its user does not say, the one policy of

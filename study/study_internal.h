@@ -91,4 +91,37 @@ int study_open_surface_stoppable(const struct store *store,
                                  struct surface *surface,
                                  struct facet_error *err);
 
+/* A run's planarized options (study_planar.c, issue 33). At most this
+ * many of its front's grids are planarized: each takes seconds. */
+#define STUDY_PLANARIZE_MAX 8
+
+struct planarize_options;
+
+/* The planarization settings of run: the defaults (planarize.h) with its
+ * closeness budget. */
+void study_planarize_options(const struct run_info *run,
+                             struct planarize_options *o);
+
+/* The planarized option of params' grid on the prepared surface, held to
+ * run's budget, into *panels (released with panelization_free, also
+ * after a failure) and *totals (planar_option.h). */
+int study_planar_evaluate(const struct run_info *run,
+                          const struct surface *surface,
+                          const struct option_params *params,
+                          const struct facet_stop *stop,
+                          struct panelization *panels,
+                          struct option_totals *totals,
+                          struct facet_error *err);
+
+/* When run has a closeness budget: the planarized option of each grid of
+ * its Pareto front (at most STUDY_PLANARIZE_MAX, the knee's first), each
+ * grid once, stored with its panels beside the classified options, then
+ * the run ranked again. *stopped 1 when the hooks' stop fired (the rest
+ * are made when the run is resumed). */
+int study_planarize_front(struct store *store, const struct run_info *run,
+                          const struct surface *surface,
+                          const struct optimize_settings *settings,
+                          const struct study_hooks *hooks, int *stopped,
+                          struct facet_error *err);
+
 #endif

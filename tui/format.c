@@ -160,6 +160,12 @@ void tui_fmt_violation(char *out, size_t size, const struct option_totals *t,
                                      "%s%zu kink%s > %g deg limit", sep, n,
                                      s, run->max_kink_deg);
             break;
+        case LIMIT_PLANARIZE:
+            used += (size_t)snprintf(out + used, size - used,
+                                     "%s%zu quad%s not planar or > %g mm "
+                                     "off the surface", sep, n, s,
+                                     run->planarize_closeness_mm);
+            break;
         case LIMIT_COUNT:
             break;
         }

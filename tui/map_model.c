@@ -103,8 +103,18 @@ static int slot_of(int *values, int *n, int value)
     return (*n)++;
 }
 
-double map_panel_measure(const struct panel *q, enum map_colour colour)
+int map_by_level(enum map_colour colour)
 {
+    return colour == MAP_BY_GAP || colour == MAP_BY_KINK ||
+           colour == MAP_BY_MOVE;
+}
+
+double map_panel_measure(const struct panelization *p, const struct panel *q,
+                         enum map_colour colour)
+{
+    if (colour == MAP_BY_MOVE)
+        return p->corner_moved != NULL
+                   ? 1000 * p->corner_moved[q - p->panels] : NAN;
     return colour == MAP_BY_KINK ? q->worst_kink_deg : q->worst_gap_mm;
 }
 
@@ -150,7 +160,7 @@ static int cell_level(const struct panelization *p, int cols, int rows,
             const struct panel *q = panel_at(p, i, j);
             if (q == NULL || fmin(u1, i + 1) - fmax(u0, i) <= 0)
                 continue;
-            int k = map_level(map_panel_measure(q, colour), bound);
+            int k = map_level(map_panel_measure(p, q, colour), bound);
             if (k > level)
                 level = k;
         }
@@ -161,7 +171,7 @@ static int cell_level(const struct panelization *p, int cols, int rows,
 int map_cell_value(const struct panelization *p, int cols, int rows, int c,
                    int r, enum map_colour colour, const double *bound)
 {
-    if (colour == MAP_BY_GAP || colour == MAP_BY_KINK)
+    if (map_by_level(colour))
         return cell_level(p, cols, rows, c, r, colour, bound);
     double weight[MAP_MOULDS_PER_CHAR] = {0};
     int value_of[MAP_MOULDS_PER_CHAR];

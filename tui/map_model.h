@@ -37,16 +37,25 @@ enum map_colour {
     MAP_BY_MOULD,   /* the mould family (panel->mould) */
     MAP_BY_GAP,     /* the worst gap at its joints, in MAP_LEVELS levels */
     MAP_BY_KINK,    /* the worst kink, likewise */
+    MAP_BY_MOVE,    /* how far a planarized option's corners moved
+                       (panelization's corner_moved), likewise; a
+                       classified option has no such colouring */
     MAP_COLOURS
 };
 
 /* The levels a map by gap or kink colours by, low to high. */
 #define MAP_LEVELS 4
 
-/* The worst gap (mm) or kink (degrees) of q, by colour (MAP_BY_GAP or
- * MAP_BY_KINK); NaN for a panel never measured (stored before schema
- * v7). */
-double map_panel_measure(const struct panel *q, enum map_colour colour);
+/* 1 when colour maps a measure in MAP_LEVELS levels (gap, kink, move). */
+int map_by_level(enum map_colour colour);
+
+/* The worst gap (mm) or kink (degrees) of q, a panel of p, by colour
+ * (MAP_BY_GAP or MAP_BY_KINK), or the farthest its corners moved (mm,
+ * MAP_BY_MOVE); NaN for a panel never measured (stored before schema v7)
+ * and, by move, for a panel not moved (a classified option's, a trimmed
+ * one). */
+double map_panel_measure(const struct panelization *p, const struct panel *q,
+                         enum map_colour colour);
 
 /* The upper bounds of the levels: with a limit (> 0, the run's gap or
  * kink limit), half of it, three quarters, the limit itself, and beyond
@@ -73,7 +82,7 @@ int map_level(double value, const double bound[MAP_LEVELS]);
  * share; ties go to the later type (the dearer) or class, or the later
  * family met. By mould, FP panels count as one value, MAP_NO_MOULD. -1
  * when cells without a panel cover more of it than any value does. By
- * gap or kink, the highest level (under bound, map_level_bounds) of any
+ * gap, kink or move, the highest level (under bound, map_level_bounds) of any
  * panel in the share, so that no bad joint hides in a fitted view; -1
  * when none was measured. bound is read only by gap or kink (else NULL). */
 int map_cell_value(const struct panelization *p, int cols, int rows, int c,

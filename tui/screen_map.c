@@ -117,18 +117,33 @@ static size_t family_size(const struct map_screen *s, int k)
     return map_family_size(s->panels, k);
 }
 
-/* 1 when the map colours by gap or kink. */
+/* 1 when the map colours by gap, kink or corner move, in levels. */
 static int by_joint(const struct map_screen *s)
 {
-    return s->colour == MAP_BY_GAP || s->colour == MAP_BY_KINK;
+    return map_by_level(s->colour);
 }
 
 /* The run's limit on what the map colours by (mm or degrees), NaN for
  * none. */
 static double joint_limit(const struct map_screen *s)
 {
-    return s->colour == MAP_BY_KINK ? s->run.max_kink_deg
-                                    : s->run.max_gap_mm;
+    /* A corner's move has no limit: its distance to the surface has
+     * (the budget), which the legend states. */
+    return s->colour == MAP_BY_MOVE ? NAN
+           : s->colour == MAP_BY_KINK ? s->run.max_kink_deg
+                                      : s->run.max_gap_mm;
+}
+
+/* The farthest a corner of the option moved (mm), NaN when none did. */
+static double largest_move(const struct map_screen *s)
+{
+    double most = NAN;
+    for (size_t k = 0; s->panels->corner_moved != NULL &&
+                       k < s->panels->npanels; k++)
+        if (!isnan(s->panels->corner_moved[k]))
+            most = isnan(most) ? s->panels->corner_moved[k]
+                               : fmax(most, s->panels->corner_moved[k]);
+    return 1000 * most;
 }
 
 /* Sets the levels' bounds for the colouring (map_level_bounds). */
@@ -138,8 +153,9 @@ static void set_bounds(struct map_screen *s)
         return;
     double limit = joint_limit(s);
     map_level_bounds(isnan(limit) ? 0 : limit,
-                     s->colour == MAP_BY_KINK ? s->totals->max_kink_deg
-                                              : s->totals->max_gap_mm,
+                     s->colour == MAP_BY_MOVE ? largest_move(s)
+                     : s->colour == MAP_BY_KINK ? s->totals->max_kink_deg
+                                                : s->totals->max_gap_mm,
                      s->bound);
 }
 
@@ -151,7 +167,8 @@ static void draw_joint_legend(struct map_screen *s, int y, int x, int width)
     const char *unit = kink ? "deg" : "mm";
     size_t count[MAP_LEVELS] = {0}, unknown = 0;
     for (size_t k = 0; k < s->panels->npanels; k++) {
-        int level = map_level(map_panel_measure(&s->panels->panels[k],
+        int level = map_level(map_panel_measure(s->panels,
+                                                &s->panels->panels[k],
                                                 s->colour), s->bound);
         if (level < 0)
             unknown++;
@@ -169,8 +186,21 @@ static void draw_joint_legend(struct map_screen *s, int y, int x, int width)
                  count[k]);
     }
     if (unknown > 0)
-        tui_putf(y++, x, width, A_NORMAL, "   not measured     %6zu",
+        tui_putf(y++, x, width, A_NORMAL, "   %-16s %6zu",
+                 s->colour == MAP_BY_MOVE ? "not moved" : "not measured",
                  unknown);
+    if (s->colour == MAP_BY_MOVE) {
+        tui_putf(y++, x, width, A_NORMAL, "   (quarters of the farthest)");
+        tui_putf(y++, x, width, A_NORMAL, " moved at most %.2f mm",
+                 largest_move(s));
+        tui_putf(y++, x, width, A_NORMAL, " off the surface %.2f mm",
+                 t->closeness_reached * 1000);
+        tui_putf(y++, x, width, A_NORMAL, " budget %g mm: %s",
+                 s->run.planarize_closeness_mm,
+                 t->planar_over == 0 ? "planar within it"
+                                     : "INFEASIBLE, not planar");
+        return;
+    }
     double limit = joint_limit(s);
     if (isnan(limit))
         tui_putf(y++, x, width, A_NORMAL, "   (quarters of the worst; no "
@@ -193,6 +223,7 @@ static void draw_legend(struct map_screen *s, int y, int x, int width)
             : s->colour == MAP_BY_MOULD ? " moulds           families  panels"
             : s->colour == MAP_BY_GAP ? " worst gap              panels"
             : s->colour == MAP_BY_KINK ? " worst kink             panels"
+            : s->colour == MAP_BY_MOVE ? " corner move            panels"
                                         : " type               count       m^2");
     if (by_joint(s)) {
         draw_joint_legend(s, y, x, width);
@@ -275,7 +306,8 @@ static const char *colour_name(enum map_colour colour)
     return colour == MAP_BY_CLASS ? "class"
            : colour == MAP_BY_MOULD ? "mould family"
            : colour == MAP_BY_GAP ? "worst gap"
-           : colour == MAP_BY_KINK ? "worst kink" : "type";
+           : colour == MAP_BY_KINK ? "worst kink"
+           : colour == MAP_BY_MOVE ? "corner move" : "type";
 }
 
 /* A project option's map before its building shows: the stage of the
@@ -374,7 +406,8 @@ static void map_draw(struct tui_screen *base, struct tui_app *app,
                 const struct panel *p = panel_at(s, i, j);
                 value = p == NULL ? -1
                         : by_joint(s)
-                            ? map_level(map_panel_measure(p, s->colour),
+                            ? map_level(map_panel_measure(s->panels, p,
+                                                          s->colour),
                                         s->bound)
                         : s->colour == MAP_BY_CLASS ? (int)p->class
                         : s->colour == MAP_BY_TYPE ? (int)p->type
@@ -616,6 +649,11 @@ static enum tui_result map_key(struct tui_screen *base, struct tui_app *app,
     }
     case 'c': case KEY_F(2):
         s->colour = (enum map_colour)((s->colour + 1) % MAP_COLOURS);
+        /* Only a planarized option's corners moved. */
+        if (s->colour == MAP_BY_MOVE && s->panels->corner_moved == NULL) {
+            tui_status(app, "corner move: not a planarized option");
+            s->colour = (enum map_colour)((s->colour + 1) % MAP_COLOURS);
+        }
         set_bounds(s);
         return RESULT_HANDLED;
     case 'z':

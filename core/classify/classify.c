@@ -167,11 +167,21 @@ void classify_panels(struct panelization *p,
     classify_totals(p, options, totals);
 }
 
+void option_totals_classified(struct option_totals *totals)
+{
+    totals->planarized = 0;
+    totals->closeness_reached = NAN;
+    totals->closeness_mean = NAN;
+    totals->planarity_reached = NAN;
+    totals->planar_over = TOTALS_UNKNOWN;
+}
+
 void classify_totals(struct panelization *p,
                      const struct classify_options *options,
                      struct option_totals *totals)
 {
     memset(totals, 0, sizeof *totals);
+    option_totals_classified(totals);
     totals->feasible = 1;
     struct option_area_sums sums;
     option_area_sums_init(&sums);
@@ -273,6 +283,8 @@ unsigned classify_broken_limits(const struct option_totals *totals,
                           ? 0 : (double)totals->gaps_over;
     term[LIMIT_KINK] = totals->kinks_over == TOTALS_UNKNOWN
                            ? 0 : (double)totals->kinks_over;
+    term[LIMIT_PLANARIZE] = totals->planar_over == TOTALS_UNKNOWN
+                                ? 0 : (double)totals->planar_over;
     unsigned broken = 0;
     for (int k = 0; k < LIMIT_COUNT; k++)
         if (term[k] > 0)
@@ -288,7 +300,7 @@ double classify_violation(const struct option_totals *totals,
     /* summed in the order it always was, so a stored ranking's
      * constraint-domination reads the same bits */
     return term[LIMIT_PANEL_AREA] + term[LIMIT_GAP] + term[LIMIT_KINK] +
-           term[LIMIT_PANEL_WIDTH];
+           term[LIMIT_PANEL_WIDTH] + term[LIMIT_PLANARIZE];
 }
 
 void classify_price_terms(const struct classify_options *options,

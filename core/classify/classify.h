@@ -133,7 +133,29 @@ struct option_totals {
     double min_panel_width;          /* m (panel_width.h) */
     size_t slivers;                  /* panels narrower than the limit
                                         (0 without a limit) */
+    /* The kind of option: 0 classified (the surface cut, never moved),
+     * 1 planarized (its corners moved off the surface until its quads are
+     * planar, core/planar/planar_option.h). What a planarization reached,
+     * a planarized option's only; NaN for a classified one (stored NULL,
+     * never 0): option_totals_classified. */
+    int planarized;
+    double closeness_reached;        /* largest distance of a corner from
+                                        the design surface (m) */
+    double closeness_mean;           /* mean over the corners (m) */
+    double planarity_reached;        /* largest distance between a quad's
+                                        diagonals over its longer diagonal */
+    size_t planar_over;              /* quads over the planarity tolerance
+                                        or with a corner beyond the
+                                        closeness budget: a planarized
+                                        option's limit, as gaps_over is a
+                                        gap limit's (TOTALS_UNKNOWN for a
+                                        classified option) */
 };
+
+/* Marks totals as a classified option's: planarized 0, what a
+ * planarization reaches NaN. classify_totals and a building's totals
+ * start with it. */
+void option_totals_classified(struct option_totals *totals);
 
 /* A count of struct option_totals that is not known: what the store reads
  * where its file holds NULL, for an option stored before Facet counted it
@@ -247,6 +269,8 @@ enum classify_limit {
     LIMIT_PANEL_WIDTH,  /* slivers: panels under min_panel_width (m) */
     LIMIT_GAP,          /* joints over max_gap */
     LIMIT_KINK,         /* joints over max_kink */
+    LIMIT_PLANARIZE,    /* a planarized option's quads not planar, or off
+                           the surface beyond its closeness budget */
     LIMIT_COUNT
 };
 

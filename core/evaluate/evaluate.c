@@ -272,7 +272,7 @@ static void count_slivers(const struct classify_options *options,
 static int classify_and_build(const struct surface *surface,
                               const struct option_params *params,
                               const struct evaluation_shared *shared,
-                              double joint_length,
+                              double joint_length, int typed,
                               struct panelization *panels,
                               struct option_totals *totals,
                               struct facet_error *err)
@@ -286,7 +286,10 @@ static int classify_and_build(const struct surface *surface,
         rc = facet_stop_check(shared->stop, err);
     if (rc != FACET_OK)
         return rc;
-    classify_types(panels, &params->classify);
+    if (typed)
+        panels->threshold = params->classify.threshold;
+    else
+        classify_types(panels, &params->classify);
     stage(shared, "fitting panels, measuring joints");
     rc = build_and_measure(surface, &params->classify, params->unmeasured,
                            shared->fits, shared->stop, panels, totals,
@@ -336,7 +339,8 @@ int option_evaluate(const struct surface *surface,
         /* The grid's panels and fits, kept from its first threshold. */
         assert(shared->fits != NULL);
         return classify_and_build(surface, params, shared,
-                                  shared->joint_length, panels, totals, err);
+                                  shared->joint_length, 0, panels, totals,
+                                  err);
     }
     if (shared->fits != NULL)
         memset(shared->fits, 0, sizeof *shared->fits);
@@ -374,6 +378,17 @@ int option_evaluate(const struct surface *surface,
         if (rc != FACET_OK)
             return rc;
     }
-    return classify_and_build(surface, params, shared, joint_length, panels,
-                              totals, err);
+    return classify_and_build(surface, params, shared, joint_length, 0,
+                              panels, totals, err);
+}
+
+int option_evaluate_typed(const struct surface *surface,
+                          const struct option_params *params,
+                          double joint_length, struct panelization *panels,
+                          struct option_totals *totals,
+                          struct facet_error *err)
+{
+    static const struct evaluation_shared nothing_shared;
+    return classify_and_build(surface, params, &nothing_shared,
+                              joint_length, 1, panels, totals, err);
 }

@@ -103,4 +103,18 @@ int option_evaluate(const struct surface *surface,
                     struct panelization *panels,
                     struct option_totals *totals, struct facet_error *err);
 
+/* The stages after classifying, for panels built and typed by their
+ * caller (option_evaluate's, then changed: a planarized option's moved
+ * quads, core/planar/planar_option.h): builds them as built (an SP
+ * panel's fit), measures the joints, counts the slivers from the widths
+ * they hold, finds the mould families and prices it all, the joint
+ * length given: the very code every option's cost, gaps, kinks and
+ * moulds come from. params->unmeasured is honoured as by
+ * option_evaluate. Fills *totals; same returns. */
+int option_evaluate_typed(const struct surface *surface,
+                          const struct option_params *params,
+                          double joint_length, struct panelization *panels,
+                          struct option_totals *totals,
+                          struct facet_error *err);
+
 #endif

@@ -61,6 +61,13 @@ static void json_totals(struct json_writer *w,
     json_key(w, "min_panel_area"); json_number(w, t->min_panel_area);
     json_key(w, "min_panel_width"); json_number(w, t->min_panel_width);
     json_key(w, "slivers");        json_count(w, t->slivers);
+    /* The option's kind, and what a planarized one reached (null for a
+     * classified one: planar_option.h). */
+    json_key(w, "planarized");     json_bool(w, t->planarized);
+    json_key(w, "closeness_reached"); json_number(w, t->closeness_reached);
+    json_key(w, "closeness_mean"); json_number(w, t->closeness_mean);
+    json_key(w, "planarity_reached"); json_number(w, t->planarity_reached);
+    json_key(w, "planar_over");    json_count(w, t->planar_over);
     json_key(w, "fp_over_threshold");
     json_integer(w, (long long)fp_over_threshold);
     json_key(w, "classes");

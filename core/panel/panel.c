@@ -568,5 +568,7 @@ void panelization_free(struct panelization *panelization)
 {
     free(panelization->panels);
     free(panelization->cell_panel);
+    free(panelization->corner_distance);
+    free(panelization->corner_moved);
     memset(panelization, 0, sizeof *panelization);
 }

@@ -153,6 +153,13 @@ struct panelization {
     double threshold;         /* the flatness threshold t its panels were
                                  typed and built at (m), set by
                                  classify_types: what a misfit missed */
+    /* A planarized option's panels (core/planar/planar_option.h), per
+     * panel: the largest distance of its corners from the design surface
+     * and the largest distance they moved (m), NaN for a panel whose
+     * corners were not moved (not a full quad). NULL, both, for a
+     * classified option's panels, whose corners lie on the surface. */
+    double *corner_distance;
+    double *corner_moved;
 };
 
 /* The largest grid side panels_build accepts. */

@@ -193,6 +193,7 @@ static void building_totals(struct project_option *option,
 {
     struct option_totals *t = &option->totals;
     memset(t, 0, sizeof *t);
+    option_totals_classified(t);
     option->joints = 0;
     for (size_t i = 0; i < option->nsurfaces; i++)
         option->joints += option->surfaces[i].joints;

@@ -257,6 +257,25 @@ const struct quantity option_quantities[] = {
     {"slivers", "slivers (panels under the width limit)", "slivers", "", "",
      1, 0, 0, 0, 0, "0", FIELD_SIZE, TOTAL(slivers), WRITTEN_WITH_OPTION,
      COMBINE_SUM, OPTION_MEASURE_WIDTHS, 1, 1},
+    /* The kind of option and what a planarization reached (schema v14,
+     * core/planar/planar_option.h): NULL for a classified option. */
+    {"planarized", "planarized (corners moved)", "plnz", "", "", 1, 0, 0, 0,
+     1, NULL, FIELD_INT, TOTAL(planarized), WRITTEN_WITH_OPTION,
+     COMBINE_RECOMPUTED, 0, 0, 0},
+    {"closeness_reached", "closeness reached (largest corner move off the "
+     "surface)", "close", "mm", "m", 1000, 2, 1, 0, 0, "5",
+     FIELD_DOUBLE, TOTAL(closeness_reached), WRITTEN_WITH_OPTION,
+     COMBINE_RECOMPUTED, 0, 0, 0},
+    {"closeness_mean", "mean corner distance off the surface", "close avg",
+     "mm", "m", 1000, 3, 1, 0, 0, "1", FIELD_DOUBLE, TOTAL(closeness_mean),
+     WRITTEN_WITH_OPTION, COMBINE_RECOMPUTED, 0, 0, 0},
+    {"planarity_reached", "planarity reached (diagonals' distance over the "
+     "longer diagonal)", "planar", "%", "", 100, 4, 3, 0, 0, "0.001",
+     FIELD_DOUBLE, TOTAL(planarity_reached), WRITTEN_WITH_OPTION,
+     COMBINE_RECOMPUTED, 0, 0, 0},
+    {"planar_over", "quads not planar or beyond the closeness budget",
+     "plan>", "", "", 1, 0, 0, 0, 0, "0", FIELD_SIZE, TOTAL(planar_over),
+     WRITTEN_WITH_OPTION, COMBINE_RECOMPUTED, 0, 0, 0},
     /* New columns go here, before run. */
     {"run", "run", "run", "", "", 1, 0, 0, 0, 0, "1",
      FIELD_NONE, 0, WRITTEN_AS_KEY,

@@ -16,6 +16,7 @@ UNITS = {
     "max_gap": "mm", "mean_gap": "mm", "max_kink": "deg", "mean_kink": "deg",
     "module_w": "m", "module_h": "m", "sp_min_radius": "m",
     "min_panel_area": "m2", "min_panel_width": "m",
+    "closeness_reached": "m", "closeness_mean": "m",
 }
 for _class in ("convex_feature_curve", "saddle", "concave_feature_curve",
                "ruled_convex", "flat", "ruled_concave", "convex_round",

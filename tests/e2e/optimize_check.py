@@ -44,7 +44,9 @@ COLUMNS = ["number", "generation", "nu", "nv", "threshold_mm", "panels",
            "panel_cost", "joint_cost", "mould_cost", "max_gap", "mean_gap",
            "max_kink", "mean_kink", "gaps_over", "kinks_over", "sp_misfits",
            "sp_fitted", "module_w", "module_h", "modules",
-           "sp_min_radius", "min_panel_area", "min_panel_width", "slivers"]
+           "sp_min_radius", "min_panel_area", "min_panel_width", "slivers",
+           "planarized", "closeness_reached", "closeness_mean",
+           "planarity_reached", "planar_over"]
 
 
 def connect(path):

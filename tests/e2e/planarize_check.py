@@ -148,4 +148,5 @@ def main():
         run_check(sys.argv[2], sys.argv[3], sys.argv[4])
 
 
-main()
+if __name__ == "__main__":
+    main()

@@ -14,10 +14,23 @@
  * cost, a 1 x 1 grid, one job) that store_run_create accepts. */
 void store_fixture_run(struct run_info *run);
 
-/* SQL that takes a current file back to schema version 12: the column
- * version 13 added (each SP panel's bending radius), dropped (set
+/* SQL that takes a current file back to schema version 13: the columns
+ * version 14 added (planarized options, issue 33), dropped (set
  * user_version after it). */
-#define STORE_FIXTURE_UNDO_V13 \
+#define STORE_FIXTURE_UNDO_V14 \
+    "ALTER TABLE runs DROP COLUMN planarize_closeness_mm;" \
+    "ALTER TABLE options DROP COLUMN planarized;" \
+    "ALTER TABLE options DROP COLUMN closeness_reached;" \
+    "ALTER TABLE options DROP COLUMN closeness_mean;" \
+    "ALTER TABLE options DROP COLUMN planarity_reached;" \
+    "ALTER TABLE options DROP COLUMN planar_over;" \
+    "ALTER TABLE panels DROP COLUMN corner_distance;" \
+    "ALTER TABLE panels DROP COLUMN corner_moved;"
+
+/* SQL that takes a current file back to schema version 12: the column
+ * version 13 added (an SP panel's bending radius), dropped (set
+ * user_version after it). */
+#define STORE_FIXTURE_UNDO_V13 STORE_FIXTURE_UNDO_V14 \
     "ALTER TABLE panels DROP COLUMN sp_bending_radius;"
 
 /* SQL that takes a current file back to schema version 11: the columns

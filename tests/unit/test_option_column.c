@@ -96,6 +96,11 @@ static struct option_row option_k(int k)
     t->min_panel_area = 0.125 + k;
     t->min_panel_width = 0.3125 + k;
     t->slivers = (size_t)(29 + k);
+    t->planarized = (k + 1) % 2;
+    t->closeness_reached = 0.0046875 + k;
+    t->closeness_mean = 0.001953125 + k;
+    t->planarity_reached = 0.00048828125 + k;
+    t->planar_over = (size_t)(31 + k);
     o.module_w = 1.25 + k;
     o.module_h = 0.75 + k;
     o.modules = (size_t)(2 + k);
@@ -145,6 +150,11 @@ static double by_hand(const struct option_row *o, const char *name)
         {"module_w", o->module_w},
         {"module_h", o->module_h},
         {"modules", (double)o->modules},
+        {"planarized", t->planarized},
+        {"closeness_reached", t->closeness_reached},
+        {"closeness_mean", t->closeness_mean},
+        {"planarity_reached", t->planarity_reached},
+        {"planar_over", (double)t->planar_over},
     };
     for (size_t k = 0; k < sizeof fields / sizeof fields[0]; k++)
         if (strcmp(fields[k].name, name) == 0)
@@ -496,6 +506,10 @@ static const char *stored_unit_by_name(const char *name)
         return "m";
     /* a panel's width in m, shown in mm (docs/method.md: Slivers) */
     if (strcmp(name, "min_panel_width") == 0)
+        return "m";
+    /* how far a planarized option's corners ended from the surface, in m
+     * (docs/store.md); its planarity a ratio, no unit */
+    if (strncmp(name, "closeness_", 10) == 0)
         return "m";
     /* a joint's gap in mm, its kink in degrees (docs/method.md: Panels as
      * built) */

@@ -147,8 +147,17 @@ static void test_row_and_registry(void **state)
         if (null)
             assert_string_equal(text, "-");
     }
-    assert_int_equal(nulls, 25);  /* the columns of versions 5 (10), 7 (8),
-                                     8 (3: no module), 10 (1) and 12 (3) */
+    assert_int_equal(nulls, 29);  /* the columns of versions 5 (10), 7 (8),
+                                     8 (3: no module), 10 (1), 12 (3) and
+                                     14 (4: what a planarization reached) */
+    /* An option stored before planarized options is a classified one
+     * (v14's planarized defaults to 0), and reached nothing (NULL). */
+    assert_int_equal(sql_int("SELECT count(*) FROM options WHERE"
+                             " planarized = 0 AND closeness_reached IS NULL"
+                             " AND planarity_reached IS NULL"
+                             " AND planar_over IS NULL"), 5);
+    assert_int_equal(t->planarized, 0);
+    assert_true(t->planar_over == TOTALS_UNKNOWN);
     assert_true(isnan(quantity_of_totals(quantity_named("moulds"), t)));
     assert_true(isnan(quantity_of_totals(quantity_named("dp_moulds"), t)));
     free(rows);

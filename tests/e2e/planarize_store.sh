@@ -1,0 +1,87 @@
+#!/usr/bin/env bash
+# End-to-end: planarized options stored like any option (issue 33, items
+# 1 to 3). facet optimize --planarize adds the planarized option of each
+# Pareto grid beside the classified ones: read back with sqlite3, a
+# classified option's closeness and planarity are NULL (never 0) and its
+# kind 0; a planarized option's row and panels are checked by
+# planarize_store_check.py against numpy's own measure of the stored
+# corners (brute-force distance to the surface's triangles, each quad's
+# diagonals) and against facet planarize --json for the same grid. A
+# surface of revolution (a conjugate net) planarizes feasibly and beats
+# its classified options on cost; the hypar's rulings are stored
+# infeasible, never called planar. Bad input: one line, status 2.
+# layers: cli study store core
+. "$(dirname "$0")/lib.sh"
+HERE=$(cd "$(dirname "$0")" && pwd)
+cd "$WORK" || exit 1
+/usr/bin/python3 "$HERE/planarize_check.py" vase vase.obj || exit 1
+
+run "$FACET" optimize vase.obj --db v.db --u 10:11 --v 8:8 --threshold 3 \
+    --planarize 0.1
+[ "$STATUS" -eq 0 ] && pass "optimize --planarize 0.1 on a surface of revolution" ||
+    fail "optimize --planarize 0.1 on a surface of revolution"
+q() { sqlite3 v.db "$1"; }
+same "the run stores its budget (mm)" "$(q 'SELECT planarize_closeness_mm FROM runs')" "0.1"
+same "one planarized option per Pareto grid" \
+    "$(q 'SELECT count(*) FROM options WHERE planarized = 1')" \
+    "$(q 'SELECT count(DISTINCT nu || "x" || nv) FROM options WHERE planarized = 0 AND rank = 1')"
+same "classified options reached nothing: NULL, never 0" \
+    "$(q 'SELECT count(*) FROM options WHERE planarized = 0 AND (closeness_reached IS NOT NULL OR closeness_mean IS NOT NULL OR planarity_reached IS NOT NULL OR planar_over IS NOT NULL)')" "0"
+same "planarized options reached something" \
+    "$(q 'SELECT count(*) FROM options WHERE planarized = 1 AND (closeness_reached IS NULL OR planarity_reached IS NULL OR planar_over IS NULL)')" "0"
+same "a classified option's panels moved no corner: NULL" \
+    "$(q 'SELECT count(*) FROM panels p JOIN options o ON o.run = p.run AND o.number = p.option WHERE o.planarized = 0 AND (p.corner_moved IS NOT NULL OR p.corner_distance IS NOT NULL)')" "0"
+OPT=$(q 'SELECT number FROM options WHERE planarized = 1 AND nu = 10')
+same "the 10 x 8 planarized option is feasible, all FP" \
+    "$(q "SELECT feasible, fp_count, planar_over FROM options WHERE number = $OPT")" "1|80|0"
+same "planarizing beats classifying on this surface: it is the cheapest" \
+    "$(q 'SELECT planarized FROM options ORDER BY cost LIMIT 1')" "1"
+same "and it is on the front" "$(q "SELECT rank FROM options WHERE number = $OPT")" "1"
+run "$FACET" planarize vase.obj --grid 10x8 --closeness 0.1 --json
+cp "$OUT" vase10.json
+/usr/bin/python3 "$HERE/planarize_store_check.py" vase.obj v.db 1 "$OPT" vase10.json
+
+run "$FACET" show v.db --run 1 --option "$OPT"
+stdout_has "show says the option is planarized" "^kind +planarized"
+stdout_has "show says what it reached" "^closeness +reached [0-9.]+ mm at most.*budget 0.1 mm"
+run "$FACET" show v.db --run 1 --option 1
+stdout_has "show says a classified option is classified" "^kind +classified"
+run "$FACET" options v.db --run 1 --csv
+if /usr/bin/python3 - "$OUT" <<'PY'
+import csv, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+p = [r for r in rows if r["planarized"] == "1"]
+c = [r for r in rows if r["planarized"] == "0"]
+ok = p and c and all(r["closeness_reached_m"] != "" for r in p) and \
+    all(r["closeness_reached_m"] == "" and r["planarity_reached"] == ""
+        for r in c)
+sys.exit(0 if ok else 1)
+PY
+then pass "options --csv: closeness_reached_m and planarity_reached, empty when classified"
+else fail "options --csv: closeness_reached_m and planarity_reached, empty when classified"
+fi
+
+"$FACET" example hypar -o hypar.obj 2>/dev/null
+run "$FACET" optimize hypar.obj --db h.db --u 6:6 --v 6:6 --threshold 3 \
+    --planarize 5
+[ "$STATUS" -eq 0 ] && pass "optimize --planarize 5 on the hypar" ||
+    fail "optimize --planarize 5 on the hypar"
+HOPT=$(sqlite3 h.db 'SELECT number FROM options WHERE planarized = 1')
+same "the hypar's planarized option is stored infeasible, far off the surface" \
+    "$(sqlite3 h.db "SELECT feasible, planar_over > 0, closeness_reached > 0.005 FROM options WHERE number = $HOPT")" "0|1|1"
+run "$FACET" planarize hypar.obj --grid 6x6 --closeness 5 --json
+cp "$OUT" hypar6.json
+/usr/bin/python3 "$HERE/planarize_store_check.py" hypar.obj h.db 1 "$HOPT" hypar6.json
+run "$FACET" show h.db --run 1 --option "$HOPT"
+stdout_has "show says the hypar's option is INFEASIBLE, not planar" \
+    "^planarized +INFEASIBLE: [0-9]+ quads not planar or beyond the budget"
+
+expect_error "--planarize 0" "^facet: --planarize" "$FACET" optimize \
+    hypar.obj --db x.db --planarize 0
+expect_error "--planarize negative" "^facet: --planarize" "$FACET" optimize \
+    hypar.obj --db x.db --planarize -1
+expect_error "--planarize NaN" "^facet: --planarize" "$FACET" optimize \
+    hypar.obj --db x.db --planarize nan
+expect_error "--planarize on --resume" "give no --planarize" "$FACET" \
+    optimize --db h.db --resume 1 --planarize 5
+exit 0
