@@ -30,4 +30,28 @@ int surface_fixture_open(const char *path, struct surface *s,
 int surface_fixture_example(const char *name, int res, struct surface *s,
                             struct facet_error *err);
 
+/* A surface given by its formula: the point p (m) at parameters s, t in
+ * [0, 1], for the shape's own dimensions (caller's data, passed through). */
+typedef void (*surface_formula)(const void *shape, double s, double t,
+                                double p[3]);
+
+/* How surface_fixture_formula_write meshes the ns x nt parameter grid. */
+enum formula_faces {
+    FORMULA_QUADS,      /* one OBJ quad a cell */
+    FORMULA_TRIANGLES   /* each cell split in two along (i,j)-(i+1,j+1) */
+};
+
+/* Writes formula f of shape on an ns x nt grid, vertices at (i / ns,
+ * j / nt) with vt = those parameters, faces winding s then t (the normal
+ * along ds x dt), to a new temporary file. Returns its path (malloc'ed:
+ * the caller unlinks and frees it), or NULL when the file cannot be
+ * made. The one writer of analytic meshes for the unit tests. */
+char *surface_fixture_formula_write(surface_formula f, const void *shape,
+                                    int ns, int nt, enum formula_faces faces);
+
+/* surface_fixture_open of that file, removed after. */
+int surface_fixture_formula(surface_formula f, const void *shape, int ns,
+                            int nt, enum formula_faces faces,
+                            struct surface *s, struct facet_error *err);
+
 #endif

@@ -26,6 +26,7 @@
 #include "core/surface/example.h"
 #include "core/evaluate/evaluate.h"
 #include "core/surface/surface.h"
+#include "tests/support/surface_fixture.h"
 
 /* ---- Analytic surfaces, written as OBJ with vt = their parameters ---- */
 
@@ -39,9 +40,9 @@ enum { SHAPE_CYLINDER, SHAPE_PLANE };
 
 /* Cylinder: radius a, arc b (radians) about the y axis, length c along y,
  * normal outwards (k = -1/R across, 0 along). Plane: a x b in z = 0. */
-static void shape_point(const struct shape *shape, double s, double t,
-                        double p[3])
+static void shape_point(const void *of, double s, double t, double p[3])
 {
+    const struct shape *shape = of;
     if (shape->kind == SHAPE_CYLINDER) {
         double angle = (s - 0.5) * shape->b;
         p[0] = shape->a * sin(angle);
@@ -54,34 +55,15 @@ static void shape_point(const struct shape *shape, double s, double t,
     }
 }
 
-/* Writes shape on ns x nt quads to a new temporary file; returns its path
- * (caller frees and unlinks). Faces wind so the normal points up/out. */
+/* Writes shape on ns x nt quads to a new temporary file (the shared
+ * writer of tests/support); returns its path (caller frees and unlinks).
+ * The cylinder's s runs along +x and t along +y, so the faces' winding
+ * points its normal along +z, outwards. */
 static char *shape_write(const struct shape *shape, int ns, int nt)
 {
-    char *path = strdup("/tmp/facet_test_rules_XXXXXX");
-    int fd = mkstemp(path);
-    assert_true(fd >= 0);
-    FILE *out = fdopen(fd, "w");
-    assert_non_null(out);
-    for (int j = 0; j <= nt; j++)
-        for (int i = 0; i <= ns; i++) {
-            double p[3];
-            shape_point(shape, (double)i / ns, (double)j / nt, p);
-            fprintf(out, "v %.17g %.17g %.17g\n", p[0], p[1], p[2]);
-        }
-    for (int j = 0; j <= nt; j++)
-        for (int i = 0; i <= ns; i++)
-            fprintf(out, "vt %.17g %.17g\n", (double)i / ns, (double)j / nt);
-    for (int j = 0; j < nt; j++)
-        for (int i = 0; i < ns; i++) {
-            int a = j * (ns + 1) + i + 1, b = a + 1;
-            int c = b + ns + 1, d = a + ns + 1;
-            /* The cylinder's s runs along +x and t along +y, so the
-             * winding a, b, c, d points its normal along +z, outwards. */
-            fprintf(out, "f %d/%d %d/%d %d/%d %d/%d\n", a, a, b, b, c, c,
-                    d, d);
-        }
-    assert_int_equal(fclose(out), 0);
+    char *path = surface_fixture_formula_write(shape_point, shape, ns, nt,
+                                               FORMULA_QUADS);
+    assert_non_null(path);
     return path;
 }
 

@@ -32,8 +32,6 @@
 #include "core/surface/surface.h"
 #include "tests/support/surface_fixture.h"
 
-typedef void (*surface_formula)(double s, double t, double p[3]);
-
 /* A surface of revolution about z: radius 6 + 1.5 sin(z / 2), z from 0
  * to 10, half way round (s: angle 0..pi, t: z). */
 static double vase_radius(double z)
@@ -41,8 +39,9 @@ static double vase_radius(double z)
     return 6 + 1.5 * sin(z / 2);
 }
 
-static void vase(double s, double t, double p[3])
+static void vase(const void *shape, double s, double t, double p[3])
 {
+    (void)shape;
     double a = M_PI * s, z = 10 * t, r = vase_radius(z);
     p[0] = r * cos(a);
     p[1] = r * sin(a);
@@ -51,8 +50,9 @@ static void vase(double s, double t, double p[3])
 
 /* A sphere of radius 15, longitude 0..pi, latitude -60..60 degrees. */
 #define SPHERE_R 15.0
-static void sphere(double s, double t, double p[3])
+static void sphere(const void *shape, double s, double t, double p[3])
 {
+    (void)shape;
     double lon = M_PI * s, lat = (-60 + 120 * t) * M_PI / 180;
     p[0] = SPHERE_R * cos(lat) * cos(lon);
     p[1] = SPHERE_R * cos(lat) * sin(lon);
@@ -60,33 +60,12 @@ static void sphere(double s, double t, double p[3])
 }
 
 /* f sampled on ns x nt quads, each split in two, with vt (s, t), opened
- * and prepared. */
+ * and prepared (the shared writer of tests/support). */
 static void open_formula(surface_formula f, int ns, int nt, struct surface *s)
 {
-    char path[] = "/tmp/facet_test_planarize_XXXXXX";
-    int fd = mkstemp(path);
-    assert_true(fd >= 0);
-    FILE *out = fdopen(fd, "w");
-    assert_non_null(out);
-    for (int j = 0; j <= nt; j++)
-        for (int i = 0; i <= ns; i++) {
-            double p[3];
-            f((double)i / ns, (double)j / nt, p);
-            fprintf(out, "v %.17g %.17g %.17g\nvt %.17g %.17g\n", p[0], p[1],
-                    p[2], (double)i / ns, (double)j / nt);
-        }
-    for (int j = 0; j < nt; j++)
-        for (int i = 0; i < ns; i++) {
-            int a = j * (ns + 1) + i + 1, b = a + 1, c = b + ns + 1,
-                d = a + ns + 1;
-            fprintf(out, "f %d/%d %d/%d %d/%d\nf %d/%d %d/%d %d/%d\n", a, a, b,
-                    b, c, c, a, a, c, c, d, d);
-        }
-    assert_int_equal(fclose(out), 0);
     struct facet_error err;
-    int rc = surface_fixture_open(path, s, &err);
-    unlink(path);
-    if (rc != FACET_OK)
+    if (surface_fixture_formula(f, NULL, ns, nt, FORMULA_TRIANGLES, s, &err) !=
+        FACET_OK)
         fail_msg("%s", err.message);
 }
 
