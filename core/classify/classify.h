@@ -9,8 +9,8 @@
  *     rounding size, so that t = 0 leaves a plane flat);
  *   - with that default eps, a curvature also counts as zero when the
  *     range the estimate knows it to (panel.h's k1_error, k2_error, from
- *     the curvature estimate's errors, curvature.h) reaches into [-eps,
- *     eps]: what the estimate cannot tell from zero is no curvature (issue
+ *     the curvature estimate's errors, curvature.h) holds 0: a curvature
+ *     whose sign the estimate does not know is no curvature (issue
  *     29: the rims of a coarse cone read 1 % of its other curvature, and
  *     whole rows of developable surfaces were typed DP; at t = 0 all of
  *     them). A sphere or cylinder, which the fit follows exactly, is known
@@ -156,13 +156,13 @@ double totals_count(size_t count);
 /* The class of curvatures k1 >= k2 (1/m) with zero tolerance eps (1/m). */
 enum panel_class classify_curvature(double k1, double k2, double eps);
 
-/* The same for curvatures known to lie in the ranges k1[0..1] and
- * k2[0..1] (1/m, low then high; from panel.h's k1_error, k2_error): each
- * counts as zero unless its whole range lies beyond eps, and H's range is
- * their mean's. Table 1's one rule: classify_curvature is it for ranges
- * of one value. */
-enum panel_class classify_curvature_within(const double k1[2],
-                                           const double k2[2], double eps);
+/* The same for curvatures k1[1] known to lie in [k1[0], k1[2]] and
+ * k2[1] in [k2[0], k2[2]] (1/m; from panel.h's k1_error, k2_error): each
+ * counts as zero within eps, and also where its range holds 0, as the
+ * estimate does not know its sign; H's range is their mean's. Table 1's
+ * one rule: classify_curvature is it for curvatures known exactly. */
+enum panel_class classify_curvature_within(const double k1[3],
+                                           const double k2[3], double eps);
 
 /* FP for flat, SP for ruled, DP for every other class. */
 enum panel_type panel_type_of_class(enum panel_class class);

@@ -53,11 +53,13 @@ struct curvature {
     double *k1_error;  /* #V how well k1 is known (1/m): the standard
                           error of the fit's curvature along dir1, by its
                           own residual and normal equations (curvature.c's
-                          fit_error). 0 on spheres, cylinders and planes,
-                          which the fit follows exactly; largest where the
-                          neighbourhood is one-sided or coarse and the
-                          curvature changes across it. classify.h's zero
-                          test reads it */
+                          fit_error), on points all round the vertex with
+                          the scatter a cubic leaves and no less than how
+                          far the cubic reads it. 0 on spheres, cylinders
+                          and planes, which the fit follows exactly;
+                          largest where the neighbourhood is one-sided or
+                          coarse and the curvature changes across it.
+                          classify.h's zero test reads it */
     double *k2_error;  /* #V the same for k2, along dir2 */
 };
 
