@@ -32,19 +32,29 @@ void classify_defaults(struct classify_options *options)
     options->max_kink = 0;
 }
 
-/* The sign of a curvature, 0 within the zero tolerance eps widened by
- * rounding: a value computed as eps (1 + 1e-15) is eps. An exact 0 is
- * always 0, whatever eps. */
-static int sign_of(double x, double eps)
+/* The sign of a curvature k[1] known to lie in [k[0], k[2]] (1/m): 0
+ * within the zero tolerance eps widened by rounding (a value computed as
+ * eps (1 + 1e-15) is eps), and 0 where the range holds 0, the estimate
+ * not knowing the sign; else the sign of k[1]. An exact 0 is always 0,
+ * whatever eps. */
+static int sign_within(const double k[3], double eps)
 {
-    if (fabs(x) <= eps * (1 + CLASSIFY_ROUNDING))
+    if (fabs(k[1]) <= eps * (1 + CLASSIFY_ROUNDING) ||
+        (k[0] <= 0 && k[2] >= 0))
         return 0;
-    return x > 0 ? 1 : -1;
+    return k[1] > 0 ? 1 : -1;
 }
 
 enum panel_class classify_curvature(double k1, double k2, double eps)
 {
-    int s1 = sign_of(k1, eps), s2 = sign_of(k2, eps);
+    const double r1[3] = {k1, k1, k1}, r2[3] = {k2, k2, k2};
+    return classify_curvature_within(r1, r2, eps);
+}
+
+enum panel_class classify_curvature_within(const double k1[3],
+                                           const double k2[3], double eps)
+{
+    int s1 = sign_within(k1, eps), s2 = sign_within(k2, eps);
 
     /* K = 0: one curvature at most is non-zero, and H takes its sign, as
      * k1 + k2 does after zeroing. No test of |H| here: a ruled panel with
@@ -60,7 +70,9 @@ enum panel_class classify_curvature(double k1, double k2, double eps)
     /* K < 0, the saddle rule: a saddle when the two curvatures cancel to
      * within the zero tolerance (|k1 + k2| / 2 <= eps), else a feature
      * curve on the side of the larger curvature. */
-    int sign_h = sign_of((k1 + k2) / 2, eps);
+    const double h[3] = {(k1[0] + k2[0]) / 2, (k1[1] + k2[1]) / 2,
+                         (k1[2] + k2[2]) / 2};
+    int sign_h = sign_within(h, eps);
     return sign_h < 0 ? CLASS_CONVEX_FEATURE_CURVE
          : sign_h > 0 ? CLASS_CONCAVE_FEATURE_CURVE : CLASS_SADDLE;
 }
@@ -151,8 +163,18 @@ void classify_types(struct panelization *p,
         panel->K = panel->k1 * panel->k2;
         panel->H = (panel->k1 + panel->k2) / 2;
         panel->curvature_tol = classify_tolerance(options, panel);
-        panel->class = classify_curvature(panel->k1, panel->k2,
-                                          panel->curvature_tol);
+        /* the range each curvature is known to (panel.h), unless the user
+         * fixed eps: then it is taken as the whole of the allowance */
+        double k1[3] = {panel->k1, panel->k1, panel->k1};
+        double k2[3] = {panel->k2, panel->k2, panel->k2};
+        if (!(options->curvature_tol > 0)) {
+            k1[0] -= panel->k1_error[0];
+            k1[2] += panel->k1_error[1];
+            k2[0] -= panel->k2_error[0];
+            k2[2] += panel->k2_error[1];
+        }
+        panel->class = classify_curvature_within(k1, k2,
+                                                 panel->curvature_tol);
         panel->type = panel_type_of_class(panel->class);
         if (classify_within_threshold(options, panel))
             panel->type = TYPE_FP;

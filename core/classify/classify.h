@@ -7,6 +7,14 @@
  *     curvature at which a panel of diameter d sags by the flatness
  *     threshold t: eps = 8 t / d^2 (never below 8 * 1e-9 / d, a sag of
  *     rounding size, so that t = 0 leaves a plane flat);
+ *   - with that default eps, a curvature also counts as zero when the
+ *     range the estimate knows it to (panel.h's k1_error, k2_error, from
+ *     the curvature estimate's errors, curvature.h) holds 0: a curvature
+ *     whose sign the estimate does not know is no curvature (issue
+ *     29: the rims of a coarse cone read 1 % of its other curvature, and
+ *     whole rows of developable surfaces were typed DP; at t = 0 all of
+ *     them). A sphere or cylinder, which the fit follows exactly, is known
+ *     exactly, and eps alone decides;
  *   - the signs of K and H come from k1 and k2 after that zeroing: K = 0
  *     when either is zero, H then has the sign of the other (so a ruled
  *     panel never turns flat), and K > 0 gives H the common sign (so the
@@ -169,6 +177,14 @@ double totals_count(size_t count);
 
 /* The class of curvatures k1 >= k2 (1/m) with zero tolerance eps (1/m). */
 enum panel_class classify_curvature(double k1, double k2, double eps);
+
+/* The same for curvatures k1[1] known to lie in [k1[0], k1[2]] and
+ * k2[1] in [k2[0], k2[2]] (1/m; from panel.h's k1_error, k2_error): each
+ * counts as zero within eps, and also where its range holds 0, as the
+ * estimate does not know its sign; H's range is their mean's. Table 1's
+ * one rule: classify_curvature is it for curvatures known exactly. */
+enum panel_class classify_curvature_within(const double k1[3],
+                                           const double k2[3], double eps);
 
 /* FP for flat, SP for ruled, DP for every other class. */
 enum panel_type panel_type_of_class(enum panel_class class);

@@ -561,6 +561,82 @@ int panels_build(const struct mesh *mesh, const struct uv_index *index,
     panels_finish(mode, samples, outlines, out);
     free(samples);
     free(outlines);
+    if (panels_curvature_range(&grid, curvature, mode, out) != FACET_OK)
+        return facet_error_set(err, FACET_EWORK, "out of memory (panels)");
+    return FACET_OK;
+}
+
+int panels_curvature_range(const struct panel_grid *g,
+                           const struct curvature *curvature,
+                           enum panel_curvature_mode mode,
+                           struct panelization *out)
+{
+    const double c = CURVATURE_ERROR_SIGMAS;
+    /* per panel: the extremes of k1 -+ c e1 and k2 -+ c e2 over the
+     * vertices, and the largest c e1, c e2 (for the mean mode) */
+    double *over = malloc(6 * (out->npanels ? out->npanels : 1) *
+                          sizeof *over);
+    if (over == NULL)
+        return FACET_EWORK;
+    for (size_t n = 0; n < out->npanels; n++) {
+        double *o = over + 6 * n;
+        o[0] = o[1] = -INFINITY;  /* max of k1 - c e1, of k1 + c e1 */
+        o[2] = o[3] = INFINITY;   /* min of k2 - c e2, of k2 + c e2 */
+        o[4] = o[5] = 0;          /* max of c e1, of c e2 */
+    }
+    const struct mesh *mesh = g->mesh;
+    for (size_t t = 0; curvature->k1_error && curvature->k2_error &&
+                       t < mesh->ntriangles; t++) {
+        const double *uv = g->index->uv + 6 * t;
+        double u0 = fmin(uv[0], fmin(uv[2], uv[4]));
+        double u1 = fmax(uv[0], fmax(uv[2], uv[4]));
+        double v0 = fmin(uv[1], fmin(uv[3], uv[5]));
+        double v1 = fmax(uv[1], fmax(uv[3], uv[5]));
+        if (!isfinite(u0 + u1 + v0 + v1))
+            continue;
+        const uint32_t *tri = mesh->triangle + 3 * t;
+        int i0 = panel_cell_coordinate(u0, g->umin, g->du, g->nu);
+        int i1 = panel_cell_coordinate(u1, g->umin, g->du, g->nu);
+        int j0 = panel_cell_coordinate(v0, g->vmin, g->dv, g->nv);
+        int j1 = panel_cell_coordinate(v1, g->vmin, g->dv, g->nv);
+        for (int j = j0; j <= j1; j++)
+            for (int i = i0; i <= i1; i++) {
+                int n = out->cell_panel[(size_t)j * g->nu + i];
+                if (n < 0)
+                    continue;
+                double *o = over + 6 * (size_t)n;
+                for (int k = 0; k < 3; k++) {
+                    uint32_t v = tri[k];
+                    double k1 = curvature->k1[v], k2 = curvature->k2[v];
+                    double e1 = c * curvature->k1_error[v];
+                    double e2 = c * curvature->k2_error[v];
+                    o[0] = fmax(o[0], k1 - e1);
+                    o[1] = fmax(o[1], k1 + e1);
+                    o[2] = fmin(o[2], k2 - e2);
+                    o[3] = fmin(o[3], k2 + e2);
+                    o[4] = fmax(o[4], e1);
+                    o[5] = fmax(o[5], e2);
+                }
+            }
+    }
+    for (size_t n = 0; n < out->npanels; n++) {
+        struct panel *panel = &out->panels[n];
+        const double *o = over + 6 * n;
+        if (mode == PANEL_MEAN || !(o[0] <= o[1])) {
+            /* the mean of the shape operator, or no vertex: its k give
+             * or take the largest error */
+            panel->k1_error[0] = panel->k1_error[1] = o[4];
+            panel->k2_error[0] = panel->k2_error[1] = o[5];
+            continue;
+        }
+        /* the range of the extremes, never narrower than the samples'
+         * own k1, k2 */
+        panel->k1_error[0] = fmax(panel->k1 - o[0], 0);
+        panel->k1_error[1] = fmax(o[1] - panel->k1, 0);
+        panel->k2_error[0] = fmax(panel->k2 - o[2], 0);
+        panel->k2_error[1] = fmax(o[3] - panel->k2, 0);
+    }
+    free(over);
     return FACET_OK;
 }
 

@@ -107,6 +107,16 @@ struct panel {
                                  four corners lie on the surface */
     /* Curvature, set by panels_build from the vertex curvature: */
     double k1, k2;            /* 1/m, k1 >= k2 */
+    double k1_error[2];       /* how far below and above k1 it may lie
+                                 (1/m, >= 0): k1 is known to within
+                                 [k1 - k1_error[0], k1 + k1_error[1]]
+                                 (panel_internal.h's
+                                 panels_curvature_range: the curvature
+                                 estimate's errors, curvature.h, of the
+                                 vertices it is sampled from); the zero
+                                 test (classify.h) reads it. 0 (exact)
+                                 where not measured */
+    double k2_error[2];       /* the same for k2 */
     /* Set by classify_panels: */
     double K, H;              /* Gaussian (1/m^2) and mean (1/m) curvature */
     double curvature_tol;     /* the zero tolerance eps used (1/m) */

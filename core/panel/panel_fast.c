@@ -545,8 +545,12 @@ int panels_build_fast_stoppable(const struct panel_prep *prep,
     }
     if (rc == FACET_OK)
         rc = facet_stop_check(stop, err);
-    if (rc == FACET_OK)
+    if (rc == FACET_OK) {
         panels_finish(mode, samples, outlines, out);
+        if (panels_curvature_range(&grid, prep->curvature, mode, out) !=
+            FACET_OK)
+            rc = facet_error_set(err, FACET_EWORK, "out of memory (panels)");
+    }
     free(samples);
     free(outlines);
     free(cell_of);

@@ -449,6 +449,27 @@ void panels_finish(enum panel_curvature_mode mode,
                    const struct cell_outline *outlines,
                    struct panelization *out);
 
+/* Sets each panel's k1_error and k2_error (panel.h) to the range each is
+ * known to: by the paper's
+ * extremes, k1's range is from the largest k1 - c e1 to the largest k1 +
+ * c e1 over the vertices of the mesh triangles whose UV box meets its
+ * cell, e1 their k1_error (curvature.h) and c CURVATURE_ERROR_SIGMAS, and
+ * k2's from the least k2 - c e2 to the least k2 + c e2; each widened to
+ * hold the panel's own k1, k2 (so that the errors are >= 0). So a panel's curvature counts as known
+ * where some vertex knows it, whatever a worse-known vertex beside it
+ * reads (a coarse cone's corner vertex, fitted one-sided on few points,
+ * is known to 0.15 1/m, which alone would have turned its panel's 0.2
+ * 1/m flat). The samples of a panel are interpolated between those
+ * vertices, so that is the range of their extremes, on the safe side
+ * where a triangle only touches the cell. By the mean (mode), and for a
+ * panel with no such vertex, each is its k give or take the largest c e.
+ * The same for every way of building panels, as it reads the mesh and
+ * grid alone. Returns FACET_OK, or FACET_EWORK when out of memory. */
+int panels_curvature_range(const struct panel_grid *g,
+                           const struct curvature *curvature,
+                           enum panel_curvature_mode mode,
+                           struct panelization *out);
+
 /* Calls visit for every non-empty piece of triangle t: panels_walk_pieces
  * for one triangle. */
 void panel_walk_triangle(const struct panel_grid *g, uint32_t t,

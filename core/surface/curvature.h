@@ -25,6 +25,14 @@
 #include "core/base/stop.h"
 #include "core/surface/mesh.h"
 
+/* How many of its errors (k1_error, k2_error) a curvature's estimate is
+ * taken to be known to, either way: the range a panel's curvature is
+ * known to (panel.h) and so whether it counts as zero (classify.h). The
+ * errors are the fits' standard errors, which on coarse analytic meshes
+ * (tests/unit/test_classify_developable) came within a factor 3.5 of
+ * the true error at every vertex of a cone and a parabolic cylinder. */
+#define CURVATURE_ERROR_SIGMAS 4.0
+
 struct curvature {
     size_t nvertices;
     double *k1;        /* #V maximum principal curvature (1/m) */
@@ -42,6 +50,17 @@ struct curvature {
                                 cubic's 0.0005); else normal. On normal's
                                 side; for joints and the smooth surface
                                 through the vertices (cell_sides.h) */
+    double *k1_error;  /* #V how well k1 is known (1/m): the standard
+                          error of the fit's curvature along dir1, by its
+                          own residual and normal equations (curvature.c's
+                          fit_error), on points all round the vertex with
+                          the scatter a cubic leaves and no less than how
+                          far the cubic reads it. 0 on spheres, cylinders
+                          and planes, which the fit follows exactly;
+                          largest where the neighbourhood is one-sided or
+                          coarse and the curvature changes across it.
+                          classify.h's zero test reads it */
+    double *k2_error;  /* #V the same for k2, along dir2 */
 };
 
 /* Estimates curvature at every vertex of mesh into *out (caller-owned,

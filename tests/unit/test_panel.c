@@ -626,7 +626,7 @@ static void test_batch_shares_grids(void **state)
     struct surface s;
     open_example("roof", 24, &s);
     static const struct design_point points[] = {
-        {8, 6, 0}, {9, 6, 3}, {8, 6, 5}, {8, 7, 5}, {9, 6, 0}, {8, 6, 40},
+        {8, 6, 0}, {9, 6, 3}, {8, 6, 5}, {8, 7, 5}, {9, 6, 0}, {8, 6, 100},
         {8, 7, 0}, {9, 6, 3.5}, {8, 6, 1},
     };
     size_t n = sizeof points / sizeof points[0];
@@ -641,7 +641,11 @@ static void test_batch_shares_grids(void **state)
                  points[k].threshold_mm / 1000, &p, &alone[k]);
         panelization_free(&p);
     }
-    /* The thresholds do change the totals: the sharing is not vacuous. */
+    /* The thresholds do change the totals: the sharing is not vacuous.
+     * (100 mm, which makes 10 more of this coarse roof's 8 x 6 panels FP
+     * by the threshold rule; 40 mm changed them only through eps, until
+     * curvature the estimate cannot tell from zero counted as zero
+     * whatever t, issue 29.) */
     assert_true(alone[0].count[TYPE_FP] != alone[5].count[TYPE_FP] ||
                 alone[0].count[TYPE_SP] != alone[5].count[TYPE_SP] ||
                 alone[0].sp_misfits != alone[5].sp_misfits ||

@@ -8,7 +8,8 @@
  * bytes) for grids of the paper's roof and space, fitted the three ways a
  * run fits them (built_option_fit on the option's sides, grid_fits_option
  * at one threshold, and at several on one grid), and compares the hash
- * with the one the code gave before it was made faster (c377b7e).
+ * with the one the code gave before it was made faster (c377b7e; the
+ * panels it fits changed with the zero test of issue 29, see below).
  */
 #include <setjmp.h>
 #include <stdarg.h>
@@ -28,8 +29,14 @@
 #include "tests/support/as_built_reference.h"
 #include "tests/support/surface_fixture.h"
 
-/* The hash of c377b7e's fits. */
-#define PINNED_ROOF 0x3914799430743e65u
+/* The hash of c377b7e's fits, with the classes of issue 29's zero test
+ * (a curvature whose sign the estimate does not know is zero): more
+ * panels classed SP, 14,848 fitted and 2,414 misfits before it, 14,962 and
+ * 2,595 since. Checked against Table 1 on example.c's formula at these
+ * 24 grids: of the 397 panel classes that changed, 335 are now the
+ * formula's and 14 were it before (6 of them near the smoothstep, now SP
+ * where the formula's k2 is within 15 % of eps). */
+#define PINNED_ROOF 0xf43984ba3f227d11u
 
 static void hash_bytes(uint64_t *h, const void *data, size_t size)
 {
