@@ -6,7 +6,7 @@
 # ones work under a mismatched TERM, q/Esc on the first screen ask, F10
 # asks only while a run works (5); a run watched from its table ends with
 # the count, the header and the ranks of the finished run, and the count
-# stops (3); the title keeps "knee 324" whole, the function-key labels
+# stops (3); the title keeps "knee 327" whole, the function-key labels
 # never run together and the help fits the screen (10); mouse clicks and
 # the wheel (12); a database that does not exist is asked about (4).
 # Every truth comes from sqlite3 on the database, not from Facet.

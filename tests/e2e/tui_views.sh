@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # End-to-end: the workbench's views of issue 12 (items 7, 8, 9, 11), driven
 # in tmux at 80x24 over the paper's space on the example roof (336
-# options, knee 324 at 40 x 38) and a small NSGA-II run: the panel map
+# options, knee 327 at 40 x 41) and a small NSGA-II run: the panel map
 # fitted to the screen and its zoom levels, deviations in mm; Compare's
 # one-scale maps, verdicts and flags; the scatter's glyphs, ticks, metric
 # picker, colour, marks and filtered export; the Statistics screen against
