@@ -107,7 +107,7 @@ static void test_unknowns(void **state)
     /* More than one line holds: the first ones, and the rest counted. */
     enum { MANY = 200 };
     char *many[1 + MANY];
-    char names[MANY][16];
+    char names[MANY][24];
     many[0] = "info";
     for (int k = 0; k < MANY; k++) {
         snprintf(names[k], sizeof names[k], "--no-such-%d", k);
