@@ -56,7 +56,9 @@ endif
 # No -DNDEBUG in any variant: assert() states Facet's invariants and stays
 # live in the release build (core/base/error.c refuses to build without).
 CFLAGS  := -std=c11 $(WARN) $(DEFS) $(OPT) -MMD -MP -I.
-LDLIBS  := -lsqlite3 $(shell pkg-config --libs cholmod 2>/dev/null || echo -lcholmod) $(shell pkg-config --libs xlsxwriter 2>/dev/null || echo -lxlsxwriter) $(shell pkg-config --libs ncursesw 2>/dev/null || echo -lncursesw) -lpthread -lm
+# CHOLMOD is not linked: core/planar/sparse_solver.c loads it with dlopen in
+# the one process that planarizes (the others skip OpenBLAS's start-up).
+LDLIBS  := -lsqlite3 $(shell pkg-config --libs xlsxwriter 2>/dev/null || echo -lxlsxwriter) $(shell pkg-config --libs ncursesw 2>/dev/null || echo -lncursesw) -lpthread -lm
 LDFLAGS := $(filter -fsanitize=%,$(OPT))
 
 CORE_SRC  := $(wildcard core/*/*.c)

@@ -77,6 +77,69 @@ static int unknown_long(const char *command,
         (int)length, name, command);
 }
 
+/* The unknown options of one command line, each once, in the order
+ * given: all of them are named in one error, so that a user (and
+ * tests/e2e/help.sh, which asks the binary about many flags in one call)
+ * learns every one at once. */
+#define UNKNOWN_MAX 64
+struct unknowns {
+    const char *word[UNKNOWN_MAX];   /* into argv */
+    size_t length[UNKNOWN_MAX];      /* of word's name, before any '=' */
+    int count;
+    int more;                        /* past UNKNOWN_MAX */
+};
+
+static void unknown_add(struct unknowns *u, const char *word, size_t length)
+{
+    for (int k = 0; k < u->count; k++)
+        if (u->length[k] == length && memcmp(u->word[k], word, length) == 0)
+            return;
+    if (u->count == UNKNOWN_MAX) {
+        u->more++;
+        return;
+    }
+    u->word[u->count] = word;
+    u->length[u->count++] = length;
+}
+
+/* The one error for the unknown options u, of command: one as
+ * unknown_long says it; several named in a list that fits one message,
+ * the rest counted ("and 3 more"). */
+static int unknowns_error(const char *command, const struct arg_tables *tables,
+                          const struct unknowns *u, struct facet_error *err)
+{
+    assert(u->count > 0);
+    if (u->count == 1 && u->more == 0) {
+        if (u->word[0][1] == '-')
+            return unknown_long(command, tables, u->word[0] + 2,
+                                u->length[0] - 2, err);
+        return facet_error_set(err, FACET_EINPUT,
+            "%s: unknown option '%.*s' (see 'facet %s --help')", command,
+            (int)u->length[0], u->word[0], command);
+    }
+    char list[sizeof err->message];
+    size_t used = 0;
+    int named = 0;
+    /* Room for the command, the words around the list and "and N more". */
+    size_t room = sizeof list - 2 * strlen(command) - 64;
+    for (; named < u->count; named++) {
+        size_t need = u->length[named] + 4;   /* '', and ", " */
+        if (used + need >= room)
+            break;
+        used += (size_t)snprintf(list + used, sizeof list - used, "%s'%.*s'",
+                                 named ? ", " : "", (int)u->length[named],
+                                 u->word[named]);
+    }
+    int rest = u->count - named + u->more;
+    if (rest > 0)
+        return facet_error_set(err, FACET_EINPUT,
+            "%s: unknown options %s and %d more (see 'facet %s --help')",
+            command, list, rest, command);
+    return facet_error_set(err, FACET_EINPUT,
+        "%s: unknown options %s (see 'facet %s --help')", command, list,
+        command);
+}
+
 /* Writes value (ARG_STRING), appends it (ARG_LIST) or 1 (ARG_FLAG) into
  * option's field of values, where its table's offset says. FACET_EINPUT
  * when an ARG_LIST is full. */
@@ -106,6 +169,13 @@ int args_parse(int argc, char **argv, const struct arg_table *own,
                int max, int *count, struct facet_error *err)
 {
     const struct arg_tables tables = {{own, shared}};
+    struct unknowns unknown;
+    unknown.count = unknown.more = 0;
+    /* The first error that is not an unknown option: said only when no
+     * option is unknown, for an unknown option can explain it (a value
+     * taken as an argument). The line is read to its end either way. */
+    struct facet_error first;
+    facet_error_clear(&first);
     int only_positional = 0;
     *count = 0;
     for (int i = 1; i < argc; i++) {
@@ -123,13 +193,18 @@ int args_parse(int argc, char **argv, const struct arg_table *own,
             const char *equals = strchr(name, '=');
             size_t length = equals ? (size_t)(equals - name) : strlen(name);
             option = find_long(&tables, name, length, &values);
-            if (option == NULL)
-                return unknown_long(argv[0], &tables, name, length, err);
+            if (option == NULL) {
+                unknown_add(&unknown, word, length + 2);
+                continue;
+            }
             if (equals != NULL) {
-                if (option->kind == ARG_FLAG)
-                    return facet_error_set(err, FACET_EINPUT,
-                        "%s: option '--%s' takes no value", argv[0],
-                        option->name);
+                if (option->kind == ARG_FLAG) {
+                    if (first.code == FACET_OK)
+                        facet_error_set(&first, FACET_EINPUT,
+                            "%s: option '--%s' takes no value", argv[0],
+                            option->name);
+                    continue;
+                }
                 value = equals + 1;
             }
         } else if (!only_positional && word[0] == '-' && word[1] != '\0' &&
@@ -138,29 +213,36 @@ int args_parse(int argc, char **argv, const struct arg_table *own,
             option = find_alias(&tables, word[1], &values);
         } else if (!only_positional && word[0] == '-' && word[1] != '\0' &&
                    !(word[1] >= '0' && word[1] <= '9') && word[1] != '.') {
-            return facet_error_set(err, FACET_EINPUT,
-                "%s: unknown option '%s' (see 'facet %s --help')", argv[0],
-                word, argv[0]);
+            unknown_add(&unknown, word, strlen(word));
+            continue;
         }
 
         if (option == NULL) {
-            if (*count >= max)
-                return facet_error_set(err, FACET_EINPUT,
+            if (*count < max)
+                positional[(*count)++] = word;
+            else if (first.code == FACET_OK)
+                facet_error_set(&first, FACET_EINPUT,
                     "%s: unexpected argument '%s' (see 'facet %s --help')",
                     argv[0], word, argv[0]);
-            positional[(*count)++] = word;
             continue;
         }
         if (option->kind != ARG_FLAG && value == NULL) {
-            if (i + 1 >= argc)
-                return facet_error_set(err, FACET_EINPUT,
-                    "%s: option '--%s' needs a value", argv[0], option->name);
+            if (i + 1 >= argc) {
+                if (first.code == FACET_OK)
+                    facet_error_set(&first, FACET_EINPUT,
+                        "%s: option '--%s' needs a value", argv[0],
+                        option->name);
+                continue;
+            }
             value = argv[++i];
         }
-        int rc = store_value(argv[0], option, values, value, err);
-        if (rc != FACET_OK)
-            return rc;
+        if (first.code == FACET_OK)
+            store_value(argv[0], option, values, value, &first);
     }
+    if (unknown.count > 0)
+        return unknowns_error(argv[0], &tables, &unknown, err);
+    if (first.code != FACET_OK)
+        return facet_error_set(err, first.code, "%s", first.message);
     return FACET_OK;
 }
 

@@ -64,10 +64,12 @@ struct arg_table {
  * shared (NULL: none), a table of flags several commands take (such as
  * classify_flags.h's), writing each option's value into its table's
  * values. Positional arguments are stored in positional[0..max) and
- * counted in *count. Returns FACET_OK or FACET_EINPUT with err naming the
- * unknown option (and the nearest known one), the missing value, an
- * ARG_LIST option given more than ARG_LIST_MAX times or the surplus
- * argument. */
+ * counted in *count. Returns FACET_OK or FACET_EINPUT with err naming
+ * every unknown option of the line, each once (one: with the nearest
+ * known one; so many that one line cannot hold them: the first ones and
+ * "and N more"), else the first of: a missing value, an ARG_LIST option
+ * given more than ARG_LIST_MAX times, the surplus argument. An unknown
+ * option takes no value: the word after it is read as usual. */
 int args_parse(int argc, char **argv, const struct arg_table *own,
                const struct arg_table *shared, const char **positional,
                int max, int *count, struct facet_error *err);

@@ -10,10 +10,9 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include <suitesparse/cholmod.h>
-
 #include "core/base/quad.h"
 #include "core/base/vec3.h"
+#include "core/planar/sparse_solver.h"
 
 /* The weights of planarize.h's sum; closeness has weight 1. Planarity's
  * grows from the first to the last a hundredfold at a time (see solve). */
@@ -198,6 +197,7 @@ static int block_rank(const struct problem *p, int a, int b)
  * column 3 b + y holds rows 3 a + x of each neighbour a < b, then rows
  * 3 b .. 3 b + y. */
 static cholmod_sparse *pattern_make(const struct problem *p,
+                                    const struct sparse_solver *cm,
                                     cholmod_common *c)
 {
     size_t n = 3 * (size_t)p->nvars;
@@ -206,8 +206,8 @@ static cholmod_sparse *pattern_make(const struct problem *p,
         size_t below = (size_t)(p->nbr_start[b + 1] - p->nbr_start[b] - 1);
         nnz += 3 * (3 * below) + 6;
     }
-    cholmod_sparse *A = cholmod_allocate_sparse(n, n, nnz, 1, 1, 1,
-                                                CHOLMOD_REAL, c);
+    cholmod_sparse *A = cm->allocate_sparse(n, n, nnz, 1, 1, 1, CHOLMOD_REAL,
+                                           c);
     if (A == NULL)
         return NULL;
     int *Ap = A->p, *Ai = A->i;
@@ -465,10 +465,11 @@ static int result_start(const struct quad_grid *start, const int *var_of,
 }
 
 /* The iterations themselves, over the problem's unknowns x (3 N, from
- * the start), with the CHOLMOD state c. */
+ * the start), with CHOLMOD's functions cm and its state c. */
 static int solve(const struct nearest_index *index, const struct problem *p,
                  const struct planarize_options *o, double *x,
-                 cholmod_common *c, int *iterations, int *converged,
+                 const struct sparse_solver *cm, cholmod_common *c,
+                 int *iterations, int *converged,
                  struct facet_error *err)
 {
     size_t n = 3 * (size_t)p->nvars;
@@ -478,8 +479,8 @@ static int solve(const struct nearest_index *index, const struct problem *p,
     double *normal = malloc(n * sizeof *normal);
     double *trial_foot = malloc(n * sizeof *trial_foot);
     double *trial_normal = malloc(n * sizeof *trial_normal);
-    cholmod_sparse *A = pattern_make(p, c);
-    cholmod_dense *B = cholmod_zeros(n, 1, CHOLMOD_REAL, c);
+    cholmod_sparse *A = pattern_make(p, cm, c);
+    cholmod_dense *B = cm->zeros(n, 1, CHOLMOD_REAL, c);
     cholmod_factor *L = NULL;
     int rc = FACET_OK;
     if (x0 == NULL || trial == NULL || foot == NULL || normal == NULL ||
@@ -489,7 +490,7 @@ static int solve(const struct nearest_index *index, const struct problem *p,
         goto done;
     }
     memcpy(x0, x, n * sizeof *x);
-    L = cholmod_analyze(A, c);
+    L = cm->analyze(A, c);
     if (L == NULL) {
         rc = facet_error_set(err, FACET_EWORK,
                              "the sparse solver (CHOLMOD) failed: status %d",
@@ -513,7 +514,7 @@ static int solve(const struct nearest_index *index, const struct problem *p,
             goto done;
         system_fill(p, A, B->x, x, x0, foot, normal, w_p, mu);
         c->status = CHOLMOD_OK;
-        if (!cholmod_factorize(A, L, c) || c->status != CHOLMOD_OK) {
+        if (!cm->factorize(A, L, c) || c->status != CHOLMOD_OK) {
             /* Not positive definite to rounding: more damping. */
             if (c->status == CHOLMOD_NOT_POSDEF && mu < 1e6) {
                 mu *= 100;
@@ -523,7 +524,7 @@ static int solve(const struct nearest_index *index, const struct problem *p,
                 "the sparse solver (CHOLMOD) failed: status %d", c->status);
             goto done;
         }
-        cholmod_dense *step = cholmod_solve(CHOLMOD_A, L, B, c);
+        cholmod_dense *step = cm->solve(CHOLMOD_A, L, B, c);
         if (step == NULL) {
             rc = facet_error_set(err, FACET_EWORK,
                 "the sparse solver (CHOLMOD) failed: status %d", c->status);
@@ -539,7 +540,7 @@ static int solve(const struct nearest_index *index, const struct problem *p,
             largest = fmax(largest, d2);
         }
         largest = sqrt(largest);
-        cholmod_free_dense(&step, c);
+        cm->free_dense(&step, c);
         double trial_closeness = feet_find(index, p->nvars, trial, trial_foot,
                                            trial_normal);
         double trial_e = energy(p, trial, x0, trial_closeness, w_p);
@@ -574,9 +575,9 @@ static int solve(const struct nearest_index *index, const struct problem *p,
             o->progress(o->progress_context, *iterations, o->max_iterations);
     }
 done:
-    cholmod_free_factor(&L, c);
-    cholmod_free_dense(&B, c);
-    cholmod_free_sparse(&A, c);
+    cm->free_factor(&L, c);
+    cm->free_dense(&B, c);
+    cm->free_sparse(&A, c);
     free(x0);
     free(trial);
     free(foot);
@@ -622,13 +623,18 @@ int planarize(const struct mesh *mesh, const struct nearest_index *index,
         /* The start grid's planarity, to report beside the result's. */
         measure(index, o, start, out);
         out->start_max_relative = out->max_relative;
-        cholmod_common c;
-        cholmod_start(&c);
-        c.print = 0;          /* core prints nothing: errors come back */
-        c.error_handler = NULL;
-        rc = solve(index, &p, o, x, &c, &out->iterations, &out->converged,
-                   err);
-        cholmod_finish(&c);
+        struct sparse_solver cm;
+        rc = sparse_solver_open(&cm, err);
+        if (rc == FACET_OK) {
+            cholmod_common c;
+            cm.start(&c);
+            c.print = 0;      /* core prints nothing: errors come back */
+            c.error_handler = NULL;
+            rc = solve(index, &p, o, x, &cm, &c, &out->iterations,
+                       &out->converged, err);
+            cm.finish(&c);
+        }
+        sparse_solver_close(&cm);
     }
     if (rc == FACET_OK) {
         for (int v = 0; v < p.nvars; v++)

@@ -44,7 +44,8 @@
  * closeness budget. Infeasible is a result, never called planar.
  *
  * Units: metres; planarity tolerance relative to a quad's diagonal.
- * Pure computation, no I/O.
+ * Pure computation, no I/O, but for loading CHOLMOD at the first solve
+ * (sparse_solver.h: only the process that planarizes pays for it).
  */
 #ifndef FACET_PLANARIZE_H
 #define FACET_PLANARIZE_H
@@ -102,7 +103,8 @@ struct planarize_result {
  * (caller-owned, released with planarize_result_free, also after a
  * failure). Returns FACET_OK (feasible or not: see out->feasible),
  * FACET_EINPUT for options out of range or a grid without quads,
- * FACET_EWORK when out of memory or when CHOLMOD fails, FACET_ESTOP when
+ * FACET_EWORK when out of memory or when CHOLMOD cannot be loaded or
+ * fails, FACET_ESTOP when
  * o->stop fired. */
 int planarize(const struct mesh *mesh, const struct nearest_index *index,
               const struct quad_grid *start,

@@ -45,6 +45,24 @@ else
     fail "the hypar's OBJ says INFEASIBLE in its first line"
 fi
 
+# CHOLMOD (and OpenBLAS, LAPACK, gfortran under it) is loaded by the
+# process that solves, never by facet's start (core/planar/sparse_solver.h):
+# every other facet call is spared its loading and its threads.
+if ldd "$FACET" >"$OUT" 2>"$ERR" && ! grep -qE 'libcholmod|blas|lapack' "$OUT"; then
+    pass "facet starts without CHOLMOD or a BLAS"
+else
+    STATUS=1
+    fail "facet starts without CHOLMOD or a BLAS (ldd names them)"
+fi
+LD_DEBUG=files "$FACET" planarize hypar.obj --grid 4x4 --closeness 5 \
+    >"$OUT" 2>"$ERR"
+STATUS=$?
+if [ "$STATUS" -eq 0 ] && grep -q 'file=libcholmod' "$ERR"; then
+    pass "planarize loads CHOLMOD when it solves"
+else
+    fail "planarize loads CHOLMOD when it solves"
+fi
+
 expect_error "no grid" "give the grid" "$FACET" planarize hypar.obj
 expect_error "an absurd grid" "^facet: --grid" "$FACET" planarize hypar.obj --grid 0x5
 expect_error "a grid too fine" "^facet: --grid" "$FACET" planarize hypar.obj \

@@ -75,6 +75,58 @@ static void test_errors(void **state)
                                 &count, &err), FACET_EINPUT);
 }
 
+/* Every unknown option of a line in its one error, each once, in the
+ * order given, whatever else is wrong with the line; an unknown option
+ * takes no value, so the word after it is read as usual; one unknown
+ * option keeps its nearest known one. */
+static void test_unknowns(void **state)
+{
+    (void)state;
+    struct values v = {NULL, NULL, 0};
+    const struct arg_table own = {forms_options, &v};
+    const char *positional[1];
+    int count;
+    struct facet_error err;
+    char *several[] = {"info", "--frob", "a.obj", "--json=1", "-q",
+                       "--units", "--zap", "--frob=2", "b.obj", "--output"};
+    assert_int_equal(args_parse(10, several, &own, NULL, positional, 1,
+                                &count, &err), FACET_EINPUT);
+    assert_string_equal(err.message, "info: unknown options '--frob', "
+                        "'-q' (see 'facet info --help')");
+    /* --units took --zap as its value: not an option there */
+    char *after_value[] = {"info", "--unit", "--units", "--zap", "--zip"};
+    assert_int_equal(args_parse(5, after_value, &own, NULL, positional, 1,
+                                &count, &err), FACET_EINPUT);
+    assert_string_equal(err.message, "info: unknown options '--unit', "
+                        "'--zip' (see 'facet info --help')");
+    char *one[] = {"info", "a.obj", "--jsn"};
+    assert_int_equal(args_parse(3, one, &own, NULL, positional, 1, &count,
+                                &err), FACET_EINPUT);
+    assert_string_equal(err.message,
+                        "info: unknown option '--jsn' (did you mean --json?)");
+    /* More than one line holds: the first ones, and the rest counted. */
+    enum { MANY = 200 };
+    char *many[1 + MANY];
+    char names[MANY][24];
+    many[0] = "info";
+    for (int k = 0; k < MANY; k++) {
+        snprintf(names[k], sizeof names[k], "--no-such-%d", k);
+        many[1 + k] = names[k];
+    }
+    assert_int_equal(args_parse(1 + MANY, many, &own, NULL, positional, 1,
+                                &count, &err), FACET_EINPUT);
+    assert_non_null(strstr(err.message, "info: unknown options '--no-such-0', "
+                                        "'--no-such-1', "));
+    assert_non_null(strstr(err.message, " more (see 'facet info --help')"));
+    assert_null(strchr(err.message, '\n'));
+    /* every option named or counted, none twice */
+    int named = 0;
+    for (const char *at = err.message; (at = strstr(at, "'--no-such-")); at++)
+        named++;
+    int more = atoi(strstr(err.message, " and ") + 5);
+    assert_int_equal(named + more, MANY);
+}
+
 /* An ARG_LIST option given again and again: every value, in order, and
  * a clear error past ARG_LIST_MAX. */
 struct list_values {
@@ -290,6 +342,7 @@ int main(void)
         cmocka_unit_test(test_forms),
         cmocka_unit_test(test_errors),
         cmocka_unit_test(test_shared_table),
+        cmocka_unit_test(test_unknowns),
         cmocka_unit_test(test_list),
         cmocka_unit_test(test_numbers),
         cmocka_unit_test(test_grid_override),
