@@ -175,6 +175,17 @@ void classify_types(struct panelization *p,
         }
         panel->class = classify_curvature_within(k1, k2,
                                                  panel->curvature_tol);
+        /* Flat because neither curvature's sign is known is no evidence
+         * of flatness: a panel that leaves its plane by more than t is
+         * classed by its estimates themselves, never typed FP for the
+         * noise (an FP panel is within t, or flat by its curvatures). */
+        if (panel->class == CLASS_FLAT && !(options->curvature_tol > 0) &&
+            !classify_within_threshold(options, panel)) {
+            double a[3] = {panel->k1, panel->k1, panel->k1};
+            double b[3] = {panel->k2, panel->k2, panel->k2};
+            panel->class = classify_curvature_within(a, b,
+                                                     panel->curvature_tol);
+        }
         panel->type = panel_type_of_class(panel->class);
         if (classify_within_threshold(options, panel))
             panel->type = TYPE_FP;
