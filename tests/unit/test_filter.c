@@ -136,12 +136,15 @@ static void test_columns_table(void **state)
         "panel_cost", "joint_cost", "mould_cost", "max_gap", "mean_gap",
         "max_kink", "mean_kink", "gaps_over", "kinks_over", "sp_misfits",
         "sp_fitted", "module_w", "module_h", "modules", "sp_min_radius",
-        "min_panel_area", "min_panel_width", "slivers", "run",
+        "min_panel_area", "min_panel_width", "slivers", "planarized",
+        "closeness_reached", "closeness_mean", "planarity_reached",
+        "planar_over", "run",
     };
     for (int k = 0; k < NCOLUMNS; k++)
         assert_string_equal(option_quantities[k].name, expected[k]);
 
-    /* Every column can be compared; only feasible and knee stand alone. */
+    /* Every column can be compared; only feasible, knee and planarized
+     * (yes or no) stand alone. */
     char text[64];
     struct facet_error err;
     for (int k = 0; k < NCOLUMNS; k++) {
@@ -159,7 +162,8 @@ static void test_columns_table(void **state)
         assert_string_equal(sql, expected_sql);
         free(sql);
         filter_free(f);
-        bool yes_no = strcmp(c, "feasible") == 0 || strcmp(c, "knee") == 0;
+        bool yes_no = strcmp(c, "feasible") == 0 || strcmp(c, "knee") == 0 ||
+                      strcmp(c, "planarized") == 0;
         struct filter *g = NULL;
         int rc = filter_compile(c, &g, &err);
         assert_int_equal(rc, yes_no ? FACET_OK : FACET_EINPUT);
@@ -527,9 +531,11 @@ static void test_error_positions(void **state)
                            "feasible, rank, crowding, knee, joint_length, "
                            "moulds, {sp,dp,single}_moulds, largest_family, "
                            "{max,mean}_gap, {max,mean}_kink, "
-                           "{gaps,kinks}_over, sp_misfits, sp_fitted, "
+                           "{gaps,kinks,planar}_over, sp_misfits, sp_fitted, "
                            "module_w, module_h, modules, sp_min_radius, "
-                           "min_panel_width, slivers, run, u, v, "
+                           "min_panel_width, slivers, planarized, "
+                           "{closeness,planarity}_reached, closeness_mean, "
+                           "run, u, v, "
                            "threshold, pareto, CLASS_{count,area})");
 }
 
