@@ -633,10 +633,7 @@ size_t study_front_budget(int64_t options)
     return budget < STUDY_FRONT_MIN ? STUDY_FRONT_MIN : (size_t)budget;
 }
 
-/* The order a front larger than its budget is stored in: the knee, then
- * the largest crowding distance (the ends of the front, at infinity,
- * first), then the option's number. */
-static int knee_then_spread(const void *a, const void *b)
+int study_knee_then_spread(const void *a, const void *b)
 {
     const struct option_row *x = a, *y = b;
     if (x->knee != y->knee)
@@ -682,7 +679,7 @@ static int store_front_panels(struct store *store, const struct run_info *run,
         rc = store_run_get(store, run->id, &ranked, err);
     size_t budget = rc == FACET_OK ? study_front_budget(ranked.options) : 0;
     if (rc == FACET_OK && keep && !knee_only && n > budget)
-        qsort(rows, n, sizeof *rows, knee_then_spread);
+        qsort(rows, n, sizeof *rows, study_knee_then_spread);
     else
         budget = n;
     for (size_t k = 0; rc == FACET_OK && k < n; k++) {

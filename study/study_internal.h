@@ -124,4 +124,10 @@ int study_planarize_front(struct store *store, const struct run_info *run,
                           const struct study_hooks *hooks, int *stopped,
                           struct facet_error *err);
 
+/* qsort's order of option rows for a front larger than its budget, and
+ * for the grids --planarize takes: the knee, then the largest crowding
+ * distance (the ends of the front, at infinity, first), then the
+ * option's number. */
+int study_knee_then_spread(const void *a, const void *b);
+
 #endif

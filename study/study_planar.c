@@ -22,18 +22,6 @@
 #include "core/base/units.h"
 #include "core/planar/planar_option.h"
 
-/* The knee first, then the largest crowding distance, then the number
- * (study.c's order for a front's panels). */
-static int knee_then_spread(const void *a, const void *b)
-{
-    const struct option_row *x = a, *y = b;
-    if (x->knee != y->knee)
-        return x->knee ? -1 : 1;
-    if (x->crowding != y->crowding)
-        return x->crowding > y->crowding ? -1 : 1;
-    return (x->number > y->number) - (x->number < y->number);
-}
-
 void study_planarize_options(const struct run_info *run,
                              struct planarize_options *o)
 {
@@ -106,7 +94,7 @@ int study_planarize_front(struct store *store, const struct run_info *run,
     for (size_t k = 0; k < n; k++)
         if (rows[k].rank == 1 && !rows[k].totals.planarized)
             front[nfront++] = rows[k];
-    qsort(front, nfront, sizeof *front, knee_then_spread);
+    qsort(front, nfront, sizeof *front, study_knee_then_spread);
     struct facet_stop stop = study_stop(hooks);
     struct option_params full = settings->base;
     full.unmeasured = 0;
