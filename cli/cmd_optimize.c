@@ -472,10 +472,13 @@ static int optimize_with(struct optimize_command *c, struct facet_error *err)
             close(fd);
         }
     }
+    /* Caught before the database is opened: creating it takes a while on
+     * a busy disk, and a stop sent then (to a job a script started in the
+     * background, which inherits SIGINT ignored) must still be heard. */
+    signals_catch_stop();
     struct store *store;
     if ((rc = store_open(c->db, &store, err)) != FACET_OK)
         return rc;
-    signals_catch_stop();
     struct optimize_view view;
     memset(&view, 0, sizeof view);
     /* Warnings come before the progress bar starts. */
