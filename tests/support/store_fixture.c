@@ -3,6 +3,7 @@
  */
 #include "store_fixture.h"
 
+#include <sqlite3.h>
 #include <stdio.h>
 #include <string.h>
 #include <unistd.h>
@@ -27,4 +28,19 @@ void store_fixture_remove(const char *path)
     unlink(side);
     snprintf(side, sizeof side, "%s-shm", path);
     unlink(side);
+}
+
+int store_fixture_sql_int(const char *path, const char *query,
+                          int64_t *value)
+{
+    sqlite3 *db;
+    sqlite3_stmt *s = NULL;
+    int ok = sqlite3_open(path, &db) == SQLITE_OK &&
+             sqlite3_prepare_v2(db, query, -1, &s, NULL) == SQLITE_OK &&
+             sqlite3_step(s) == SQLITE_ROW;
+    if (ok)
+        *value = sqlite3_column_int64(s, 0);
+    sqlite3_finalize(s);
+    sqlite3_close(db);
+    return ok ? 0 : -1;
 }

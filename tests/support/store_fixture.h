@@ -152,4 +152,10 @@ void store_fixture_run(struct run_info *run);
  * there are any. */
 void store_fixture_remove(const char *path);
 
+/* The first column of the first row query gives on the database at path,
+ * read by SQLite itself over a connection of its own, into *value.
+ * Returns 0, or -1 when SQLite cannot open, prepare or step it. */
+int store_fixture_sql_int(const char *path, const char *query,
+                          int64_t *value);
+
 #endif

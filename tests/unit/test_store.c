@@ -572,14 +572,8 @@ static void test_panels_exist_error(void **state)
 /* SQLite's own count of the rows a query returns (a second connection). */
 static int64_t sql_count(const char *path, const char *query)
 {
-    sqlite3 *db;
-    sqlite3_stmt *s;
-    assert_int_equal(sqlite3_open(path, &db), SQLITE_OK);
-    assert_int_equal(sqlite3_prepare_v2(db, query, -1, &s, NULL), SQLITE_OK);
-    assert_int_equal(sqlite3_step(s), SQLITE_ROW);
-    int64_t n = sqlite3_column_int64(s, 0);
-    sqlite3_finalize(s);
-    sqlite3_close(db);
+    int64_t n = 0;
+    assert_int_equal(store_fixture_sql_int(path, query, &n), 0);
     return n;
 }
 
