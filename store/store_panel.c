@@ -176,10 +176,8 @@ int store_panels_put_stoppable(struct store *store, int64_t run,
         c = bind_sp_fit(panel, c, &x->sp_fit);
         /* NULL for a classified option's panels (never 0: not moved is
          * not measured as a move of 0). */
-        store_bind_or_null(panel, c++, p->corner_distance != NULL
-                                           ? p->corner_distance[k] : NAN);
-        store_bind_or_null(panel, c++, p->corner_moved != NULL
-                                           ? p->corner_moved[k] : NAN);
+        store_bind_or_null(panel, c++, panel_corner_distance(p, k));
+        store_bind_or_null(panel, c++, panel_corner_moved(p, k));
         if (sqlite3_step(panel) != SQLITE_DONE)
             rc = store_fail(store, "storing panels", err);
         sqlite3_reset(panel);

@@ -70,6 +70,8 @@ class Suite:
         self.estimate = 0.0
         self.passed = self.failed = self.skipped = 0
         self.seconds = 0.0
+        self.cpu = None           # user + system seconds, itself and all
+                                  # it waited for; None when it was killed
         self.log = None
         self.skips = []
         self.stopped = False      # stopped by --first-failure
@@ -278,10 +280,15 @@ def watch(proc, suite, log, start, stop, first_failure):
     """Waits for a suite's process; the exit status, or 124 for a suite
     that ran past SUITE_TIMEOUT (a hang), both failures."""
     while True:
-        try:
-            return proc.wait(timeout=0.2)
-        except subprocess.TimeoutExpired:
-            pass
+        # wait4, not Popen.wait: its rusage holds the CPU of the suite and
+        # of every process it waited for (facet, python, tmux clients), so
+        # that a suite's wall time can be told from the work it does.
+        pid, status, usage = os.wait4(proc.pid, os.WNOHANG)
+        if pid:
+            proc.returncode = os.waitstatus_to_exitcode(status)
+            suite.cpu = usage.ru_utime + usage.ru_stime
+            return proc.returncode
+        time.sleep(0.05)
         if first_failure:
             log.flush()
             with open(suite.log, "rb") as f:
@@ -428,9 +435,10 @@ def run_queue(queue, env, logs, args, builds):
                     print("%-36s stopped (another suite failed) %7.1f s" %
                           (label(s, builds), s.seconds), flush=True)
                 elif not (args.quiet and s.failed == 0):
-                    print("%-36s %4d passed %3d failed %3d skipped %7.1f s" %
-                          (label(s, builds), s.passed, s.failed, s.skipped,
-                           s.seconds), flush=True)
+                    print("%-36s %4d passed %3d failed %3d skipped %7.1f s"
+                          "%s" % (label(s, builds), s.passed, s.failed,
+                                  s.skipped, s.seconds, cpu_text(s)),
+                          flush=True)
                 if s.failed:
                     print_log(s, builds)
                 lock.notify_all()
@@ -441,6 +449,14 @@ def run_queue(queue, env, logs, args, builds):
     for t in threads:
         t.join()
     return done
+
+
+def cpu_text(suite):
+    """The suite's CPU time, said beside its wall time: a suite whose CPU is
+    far below its wall time waits (sleeps, timeouts), one near it works."""
+    if suite.cpu is None:
+        return "  cpu     -  "
+    return "  cpu %7.1f s" % suite.cpu
 
 
 def print_log(s, builds):
@@ -454,9 +470,10 @@ def report(done, left, builds, started, args):
     wall = time.monotonic() - started
     if done:
         write_times(done)
-    print("\nslowest suites (wall time):")
+    print("\nslowest suites (wall time, CPU):")
     for s in sorted(done, key=lambda s: -s.seconds)[:20]:
-        print("  %7.1f s  %s" % (s.seconds, label(s, builds)))
+        print("  %7.1f s %s  %s" % (s.seconds, cpu_text(s),
+                                    label(s, builds)))
     for s in done:
         for line in s.skips:
             print("SKIPPED %s: %s" % (label(s, builds), line))
@@ -474,7 +491,9 @@ def report(done, left, builds, started, args):
         total_p, total_f, total_s = total_p + p, total_f + f, total_s + k
         print("%s: %d passed, %d failed, %d skipped "
               "(not run here, not counted as passed)" % (b, p, f, k))
-    print("%d suites in %.0f s wall on %d jobs" % (len(done), wall, args.jobs))
+    cpu = sum(s.cpu for s in done if s.cpu is not None)
+    print("%d suites in %.0f s wall on %d jobs, %.0f s CPU" %
+          (len(done), wall, args.jobs, cpu))
     return 0 if total_f == 0 and total_p > 0 and not left else 1
 
 

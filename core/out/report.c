@@ -175,6 +175,10 @@ void report_json(FILE *out, const struct report_source *source,
             json_string(&w, reason);
         else
             json_null(&w);
+        json_key(&w, "corner_distance");
+        json_number(&w, panel_corner_distance(panels, n));
+        json_key(&w, "corner_moved");
+        json_number(&w, panel_corner_moved(panels, n));
         json_end_object(&w);
     }
     json_end_array(&w);
@@ -222,7 +226,8 @@ void report_csv_header(FILE *out, int with_surface)
     for (int c = 0; c < 4; c++)
         fprintf(out, ",c%d_x_m,c%d_y_m,c%d_z_m", c, c, c);
     fputs(",mould_family,built_type,sp_deviation_m,worst_gap_mm,"
-          "worst_kink_deg,misfit_reason\n", out);
+          "worst_kink_deg,misfit_reason,corner_distance_m,corner_moved_m\n",
+          out);
 }
 
 void report_csv_rows(FILE *out, const struct panelization *panels,
@@ -265,9 +270,12 @@ void report_csv_rows(FILE *out, const struct panelization *panels,
         char reason[200];
         classify_misfit_reason(panels, n, reason, sizeof reason);
         if (reason[0] != '\0')
-            fprintf(out, ",\"%s\"\n", reason);
+            fprintf(out, ",\"%s\"", reason);
         else
-            fputs(",\n", out);
+            fputc(',', out);
+        csv_number(out, panel_corner_distance(panels, n));
+        csv_number(out, panel_corner_moved(panels, n));
+        fputc('\n', out);
     }
 }
 

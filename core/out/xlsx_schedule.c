@@ -206,6 +206,8 @@ static const struct column panel_columns[] = {
     {"corner 3 y (m)", 11, K_METRE},
     {"corner 3 z (m)", 11, K_METRE},
     {"deviation (mm)", 10, K_MM},
+    {"corner distance (mm)", 10, K_MM},
+    {"corner moved (mm)", 10, K_MM},
     {"SP bending radius (m)", 11, K_METRE},
     {"SP fitted surface", 10, K_TEXT},
     {"SP axis point x (m)", 11, K_METRE},
@@ -258,6 +260,11 @@ static void write_panels(struct sheet *s, const struct formats *f,
                 for (int d = 0; d < 3; d++)
                     number(s, c++, p->corner[q][d], f->metre);
             number(s, c++, units_mm(p->deviation), f->mm);
+            number(s, c++,
+                   units_mm(panel_corner_distance(surface->panels, n)),
+                   f->mm);
+            number(s, c++, units_mm(panel_corner_moved(surface->panels, n)),
+                   f->mm);
             c = write_fit(s, f, c, p,
                           surface->sp_fit && surface->sp_fit[n].fitted
                               ? &surface->sp_fit[n] : NULL);

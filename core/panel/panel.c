@@ -14,6 +14,7 @@
  */
 #include "core/panel/panel.h"
 
+#include <assert.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -638,6 +639,18 @@ int panels_curvature_range(const struct panel_grid *g,
     }
     free(over);
     return FACET_OK;
+}
+
+double panel_corner_distance(const struct panelization *panels, size_t n)
+{
+    assert(n < panels->npanels);
+    return panels->corner_distance != NULL ? panels->corner_distance[n] : NAN;
+}
+
+double panel_corner_moved(const struct panelization *panels, size_t n)
+{
+    assert(n < panels->npanels);
+    return panels->corner_moved != NULL ? panels->corner_moved[n] : NAN;
 }
 
 void panelization_free(struct panelization *panelization)

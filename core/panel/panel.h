@@ -192,6 +192,12 @@ int panels_build(const struct mesh *mesh, const struct uv_index *index,
                  enum panel_curvature_mode mode, int nu, int nv,
                  struct panelization *out, struct facet_error *err);
 
+/* Panel n's corner distance and corner move (m; panelization's arrays),
+ * NaN when its option was not planarized or its corners were not moved:
+ * not measured, never 0. */
+double panel_corner_distance(const struct panelization *panels, size_t n);
+double panel_corner_moved(const struct panelization *panels, size_t n);
+
 void panelization_free(struct panelization *panelization);
 
 /* What does not depend on the grid, computed once per surface by

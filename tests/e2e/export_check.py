@@ -128,7 +128,8 @@ def check_csv(path, db, run, number):
             "corner_planarity_m", "price_usd_m2", "cost_usd"] + [
             "c%d_%s_m" % (c, x) for c in range(4) for x in "xyz"] + [
             "mould_family", "built_type", "sp_deviation_m", "worst_gap_mm",
-            "worst_kink_deg", "misfit_reason"]
+            "worst_kink_deg", "misfit_reason", "corner_distance_m",
+            "corner_moved_m"]
     header = list(rows[0].keys()) if rows else []
     if header != want:
         fail("csv header %s, want %s" % (header, want))

@@ -39,7 +39,21 @@ same "planarizing beats classifying on this surface: it is the cheapest" \
 same "and it is on the front" "$(q "SELECT rank FROM options WHERE number = $OPT")" "1"
 run "$FACET" planarize vase.obj --grid 10x8 --closeness 0.1 --json
 cp "$OUT" vase10.json
-/usr/bin/python3 "$HERE/planarize_store_check.py" vase.obj v.db 1 "$OPT" vase10.json
+/usr/bin/python3 "$HERE/planarize_store_check.py" vase.obj v.db 1 "$OPT" vase10.json ||
+    fail "planarize_store_check.py did not finish on the vase"
+
+# What a fabricator gets: the schedule's corner columns and the OBJ's quads,
+# checked against the panels table and numpy by planarize_export_check.py.
+COPT=$(q 'SELECT number FROM options WHERE planarized = 0 ORDER BY number LIMIT 1')
+for kind in p c; do
+    o=$OPT; [ "$kind" = c ] && o=$COPT
+    run "$FACET" export v.db --run 1 --option "$o" --csv "x-$kind.csv" \
+        --json "x-$kind.json" --xlsx "x-$kind.xlsx" --obj "x-$kind.obj"
+    [ "$STATUS" -eq 0 ] && pass "export of option $o ($kind)" ||
+        fail "export of option $o ($kind): $(cat "$ERR")"
+done
+/usr/bin/python3 "$HERE/planarize_export_check.py" vase.obj v.db 1 "$OPT" "$COPT" x ||
+    fail "planarize_export_check.py did not finish"
 
 run "$FACET" show v.db --run 1 --option "$OPT"
 stdout_has "show says the option is planarized" "^kind +planarized"
@@ -71,7 +85,8 @@ same "the hypar's planarized option is stored infeasible, far off the surface" \
     "$(sqlite3 h.db "SELECT feasible, planar_over > 0, closeness_reached > 0.005 FROM options WHERE number = $HOPT")" "0|1|1"
 run "$FACET" planarize hypar.obj --grid 6x6 --closeness 5 --json
 cp "$OUT" hypar6.json
-/usr/bin/python3 "$HERE/planarize_store_check.py" hypar.obj h.db 1 "$HOPT" hypar6.json
+/usr/bin/python3 "$HERE/planarize_store_check.py" hypar.obj h.db 1 "$HOPT" hypar6.json ||
+    fail "planarize_store_check.py did not finish on the hypar"
 run "$FACET" show h.db --run 1 --option "$HOPT"
 stdout_has "show says the hypar's option is INFEASIBLE, not planar" \
     "^planarized +INFEASIBLE: [0-9]+ quads not planar or beyond the budget"
