@@ -159,12 +159,12 @@ int store_panels_put_stoppable(struct store *store, int64_t run,
         sqlite3_bind_text(panel, c++, panel_type_name(x->built), -1,
                           SQLITE_STATIC);
         store_bind_or_null(panel, c++, x->sp_deviation);
-        store_bind_or_null(panel, c++, x->worst_gap_mm);
+        store_bind_or_null(panel, c++, units_mm(x->worst_gap));
         if (x->worst_gap_side >= 0)
             sqlite3_bind_int(panel, c++, x->worst_gap_side);
         else
             sqlite3_bind_null(panel, c++);
-        store_bind_or_null(panel, c++, x->worst_kink_deg);
+        store_bind_or_null(panel, c++, units_deg(x->worst_kink));
         store_bind_or_null(panel, c++, x->best_cylinder);
         store_bind_or_null(panel, c++, x->best_cone);
         char reason[200];
@@ -366,11 +366,11 @@ int store_panels_get(struct store *store, int64_t run, int64_t option,
         int built = type_of((const char *)sqlite3_column_text(s, c++));
         x->built = built < 0 ? x->type : (enum panel_type)built;
         x->sp_deviation = store_column_or_nan(s, c++);
-        x->worst_gap_mm = store_column_or_nan(s, c++);
+        x->worst_gap = units_m_of_mm(store_column_or_nan(s, c++));
         x->worst_gap_side = sqlite3_column_int(s, c++);
         if (x->worst_gap_side < -1 || x->worst_gap_side > 3)
             x->worst_gap_side = -1;
-        x->worst_kink_deg = store_column_or_nan(s, c++);
+        x->worst_kink = units_rad_of_deg(store_column_or_nan(s, c++));
         x->width = NAN;  /* not stored per panel: the option's least is */
         x->best_cylinder = store_column_or_nan(s, c++);
         x->best_cone = store_column_or_nan(s, c++);

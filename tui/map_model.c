@@ -6,6 +6,7 @@
 #include <math.h>
 #include <stdio.h>
 
+#include "core/base/units.h"
 #include "core/classify/classify.h"
 
 static const struct panel *panel_at(const struct panelization *p, int i,
@@ -113,9 +114,9 @@ double map_panel_measure(const struct panelization *p, const struct panel *q,
                          enum map_colour colour)
 {
     if (colour == MAP_BY_MOVE)
-        return p->corner_moved != NULL
-                   ? 1000 * p->corner_moved[q - p->panels] : NAN;
-    return colour == MAP_BY_KINK ? q->worst_kink_deg : q->worst_gap_mm;
+        return units_mm(panel_corner_moved(p, (size_t)(q - p->panels)));
+    return colour == MAP_BY_KINK ? units_deg(q->worst_kink)
+                                 : units_mm(q->worst_gap);
 }
 
 void map_level_bounds(double limit, double largest,

@@ -22,6 +22,7 @@
 #include <string.h>
 
 #include "app.h"
+#include "core/base/units.h"
 #include "format.h"
 #include "keys.h"
 #include "input.h"
@@ -484,7 +485,7 @@ static void map_draw(struct tui_screen *base, struct tui_app *app,
                      p->sp_deviation * 1000);
         tui_putf(y + 2, 0, width, A_NORMAL,
                  " worst gap %.2f mm  worst kink %.2f deg | deviation "
-                 "%.2f mm%s", p->worst_gap_mm, p->worst_kink_deg,
+                 "%.2f mm%s", units_mm(p->worst_gap), units_deg(p->worst_kink),
                  p->deviation * 1000, fit);
     } else if (s->colour == MAP_BY_MOULD && p->mould >= 0)
         tui_putf(y + 2, 0, width, A_NORMAL,

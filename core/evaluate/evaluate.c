@@ -98,9 +98,9 @@ static void leave_unbuilt(const struct classify_options *options,
         panel->sp_deviation = NAN;
         panel->best_cylinder = NAN;
         panel->best_cone = NAN;
-        panel->worst_gap_mm = NAN;
+        panel->worst_gap = NAN;
         panel->worst_gap_side = -1;
-        panel->worst_kink_deg = NAN;
+        panel->worst_kink = NAN;
         built_panel_describe(&unbuilt, panel->centroid, &panel->sp_fit);
     }
     classify_totals(panels, options, totals);
@@ -174,10 +174,8 @@ static int build_and_measure(const struct surface *surface,
             panel->best_cylinder = b->best_cylinder;
             panel->best_cone = b->best_cone;
             built_panel_describe(b, panel->centroid, &panel->sp_fit);
-            panel->worst_gap_mm = measure_joints ? units_mm(joints.worst_gap[k])
-                                                 : NAN;
-            panel->worst_kink_deg =
-                measure_joints ? units_deg(joints.worst_kink[k]) : NAN;
+            panel->worst_gap = measure_joints ? joints.worst_gap[k] : NAN;
+            panel->worst_kink = measure_joints ? joints.worst_kink[k] : NAN;
             if (b->misfit && !options->sp_by_class)
                 panel->type = TYPE_DP;
         }

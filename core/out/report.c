@@ -166,8 +166,8 @@ void report_json(FILE *out, const struct report_source *source,
         json_key(&w, "built_type");
         json_string(&w, panel_type_name(p->built));
         json_key(&w, "sp_deviation");   json_number(&w, p->sp_deviation);
-        json_key(&w, "worst_gap");      json_number(&w, p->worst_gap_mm);
-        json_key(&w, "worst_kink");     json_number(&w, p->worst_kink_deg);
+        json_key(&w, "worst_gap");      json_number(&w, units_mm(p->worst_gap));
+        json_key(&w, "worst_kink");     json_number(&w, units_deg(p->worst_kink));
         json_key(&w, "misfit_reason");
         char reason[200];
         classify_misfit_reason(panels, n, reason, sizeof reason);
@@ -263,8 +263,8 @@ void report_csv_rows(FILE *out, const struct panelization *panels,
             fprintf(out, "%d", p->mould);
         fprintf(out, ",%s", panel_type_name(p->built));
         csv_number(out, p->sp_deviation);
-        csv_number(out, p->worst_gap_mm);
-        csv_number(out, p->worst_kink_deg);
+        csv_number(out, units_mm(p->worst_gap));
+        csv_number(out, units_deg(p->worst_kink));
         /* The reason holds commas: quoted (RFC 4180), never a quote in
          * it (sp_fit.h's wording). */
         char reason[200];

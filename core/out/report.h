@@ -41,7 +41,9 @@ void report_json(FILE *out, const struct report_source *source,
  * built_type (FP, SP or DP as built: DP for an SP misfit), sp_deviation_m
  * (from its fitted cylinder or cone; empty unless classed SP),
  * worst_gap_mm and worst_kink_deg (the largest at its joints, joint.h),
- * misfit_reason (quoted; empty unless a misfit). One unit per column,
+ * misfit_reason (quoted; empty unless a misfit), corner_distance_m and
+ * corner_moved_m (a planarized option's, panel.h; empty for a classified
+ * option's). One unit per column,
  * named in its header; every number reads back exactly. */
 void report_csv(FILE *out, const struct panelization *panels);
 

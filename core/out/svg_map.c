@@ -235,10 +235,10 @@ static size_t worst_joints(const struct panelization *p,
     size_t n = 0;
     for (size_t k = 0; k < p->npanels; k++) {
         const struct panel *x = &p->panels[k];
-        if (x->worst_gap_side < 0 || !(x->worst_gap_mm > 0))
+        if (x->worst_gap_side < 0 || !(x->worst_gap > 0))
             continue;
         joints[n++] = (struct worst_joint){
-            k, x->worst_gap_mm, joint_key(x->i, x->j, x->worst_gap_side)};
+            k, units_mm(x->worst_gap), joint_key(x->i, x->j, x->worst_gap_side)};
     }
     qsort(joints, n, sizeof *joints, compare_worst);
     size_t kept = 0;

@@ -268,8 +268,8 @@ static void write_panels(struct sheet *s, const struct formats *f,
             c = write_fit(s, f, c, p,
                           surface->sp_fit && surface->sp_fit[n].fitted
                               ? &surface->sp_fit[n] : NULL);
-            number(s, c++, p->worst_gap_mm, f->mm);
-            number(s, c++, p->worst_kink_deg, f->degree);
+            number(s, c++, units_mm(p->worst_gap), f->mm);
+            number(s, c++, units_deg(p->worst_kink), f->degree);
             number(s, c++, p->mould >= 0 ? p->mould : NAN, f->count);
             number(s, c++, p->price, f->usd);
             number(s, c++, p->cost, f->usd);

@@ -138,11 +138,11 @@ struct panel {
                                  SP */
     double best_cylinder;     /* a misfit's best cylinder and cone (m, */
     double best_cone;         /* NaN when none fits): why it is a misfit */
-    double worst_gap_mm;      /* largest gap at its joints (mm) */
+    double worst_gap;         /* largest gap at its joints (m) */
     int worst_gap_side;       /* the cell side that joint is on: 0 v = j
                                  (corners 0-1), 1 u = i + 1 (1-2), 2 v =
                                  j + 1 (2-3), 3 u = i (3-0); -1 for none */
-    double worst_kink_deg;    /* largest kink at its joints (degrees) */
+    double worst_kink;        /* largest kink at its joints (rad) */
     double width;             /* the least width of its outline in its
                                  plane (m, panel_width.h), set by
                                  option_evaluate; NaN when not measured

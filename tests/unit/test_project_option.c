@@ -151,8 +151,8 @@ static void same_panels(const struct panelization *a,
         same_bits(p->deviation, q->deviation, name);
         same_bits(p->cost, q->cost, name);
         same_bits(p->sp_deviation, q->sp_deviation, name);
-        same_bits(p->worst_gap_mm, q->worst_gap_mm, name);
-        same_bits(p->worst_kink_deg, q->worst_kink_deg, name);
+        same_bits(p->worst_gap, q->worst_gap, name);
+        same_bits(p->worst_kink, q->worst_kink, name);
         if (moulds && p->mould != q->mould)
             fail_msg("%s: mould %d and %d differ", name, p->mould, q->mould);
     }

@@ -15,6 +15,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "core/base/units.h"
 #include "core/classify/classify.h"
 #include "tui/map_model.h"
 
@@ -266,8 +267,9 @@ static void test_cell_level_by_gap(void **state)
         int nu = 17 + (int)seed * 4, nv = 11 + (int)seed * 3;
         grid(&p, nu, nv, 30, 20, seed, seed % 2);
         for (size_t k = 0; k < p.npanels; k++) {
-            p.panels[k].worst_gap_mm = (rand() % 100) / 10.0;
-            p.panels[k].worst_kink_deg = (rand() % 7 == 0) ? NAN : 1;
+            p.panels[k].worst_gap = units_m_of_mm((rand() % 100) / 10.0);
+            p.panels[k].worst_kink =
+                (rand() % 7 == 0) ? NAN : units_rad_of_deg(1);
         }
         map_level_bounds(6, 0, bound);
         int sizes[][2] = {{nu, nv}, {nu / 2, nv / 3}, {7, 5}};
@@ -282,7 +284,7 @@ static void test_cell_level_by_gap(void **state)
                                                   b, S);
                             if (k < 0)
                                 continue;
-                            double g = p.panels[k].worst_gap_mm;
+                            double g = units_mm(p.panels[k].worst_gap);
                             int level = g <= 3 ? 0 : g <= 4.5 ? 1
                                         : g <= 6 ? 2 : 3;
                             if (level > want)
