@@ -75,6 +75,30 @@ void project_seams_free(struct project_seams *seams)
     memset(seams, 0, sizeof *seams);
 }
 
+int project_seams_keep(struct project *project, double weld,
+                       const struct facet_stop *stop,
+                       struct facet_error *err)
+{
+    if (project->seams != NULL) {
+        project_seams_free(project->seams);
+        free(project->seams);
+        project->seams = NULL;
+    }
+    if (project->nsurfaces < 2)
+        return FACET_OK;
+    struct project_seams *seams = malloc(sizeof *seams);
+    if (seams == NULL)
+        return facet_error_set(err, FACET_EWORK,
+                               "out of memory for the seams");
+    int rc = project_seams_find(project, weld, stop, seams, err);
+    if (rc != FACET_OK) {
+        free(seams);
+        return rc;
+    }
+    project->seams = seams;
+    return FACET_OK;
+}
+
 int project_seams_measure(const struct project *project,
                           const struct project_seams *seams,
                           const struct panelization *const *panels,

@@ -49,6 +49,17 @@ int project_seams_find(const struct project *project, double weld,
 
 void project_seams_free(struct project_seams *seams);
 
+/* Finds the seams of project (prepared) at weld (m, >= 0), as
+ * project_seams_find, and keeps them in project->seams (replacing any),
+ * so that every option evaluated over it measures them with its joints
+ * (project_option.h): what a building's run does once, after preparing
+ * it. A project of one surface has no seam: it keeps none (its options'
+ * seam numbers stay not measured, as a single surface's). Same returns as
+ * project_seams_find; project->seams is NULL after a failure. */
+int project_seams_keep(struct project *project, double weld,
+                       const struct facet_stop *stop,
+                       struct facet_error *err);
+
 /* A building option's joints at its seams, over all of them. */
 struct seam_totals {
     size_t nseams;        /* seams between surfaces */
