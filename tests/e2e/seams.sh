@@ -163,3 +163,13 @@ expect_error "--weld 1e9 refused" '^facet: --weld: 1e9 is out of range' \
 expect_error "--weld without --module refused" 'needs --module' \
     "$FACET" optimize hinge.obj --db bad.db --weld 1
 if [ ! -e bad.db ]; then pass "no database made by a bad --weld"; else echo "not ok - no database made by a bad --weld"; fi
+
+# 8. What facet shows, from the same stored numbers: the seams line of
+#    show, and the columns of --csv (SI, named with their units).
+expect "facet show the thirds' option" 0 "$FACET" show thirds.db --run 1 --option 1
+stdout_has "show: three seams of 12 m, the gap in mm, 120 deg added over no crease, 3 kinks over" \
+    '^seams +3, 12\.0 m long: max gap [0-9.]+ mm, max kink added 120\.00 deg to a crease of up to 0\.0 deg \(0 gaps, 3 kinks over the limits\)$'
+run "$FACET" options thirds.db --csv
+same "options --csv: seams, seam_length_m, seam_max_kink_rad, seam_kinks_over" \
+    "$(/usr/bin/python3 -c "import csv,sys; r=list(csv.DictReader(open(sys.argv[1])))[0]; print(r['seams'], round(float(r['seam_length_m']), 9), round(float(r['seam_max_kink_rad']), 6), r['seam_kinks_over'])" "$OUT")" \
+    "3 12.0 $(/usr/bin/python3 -c 'import math; print(round(2 * math.pi / 3, 6))') 3"

@@ -138,7 +138,9 @@ static void test_columns_table(void **state)
         "sp_fitted", "module_w", "module_h", "modules", "sp_min_radius",
         "min_panel_area", "min_panel_width", "slivers", "planarized",
         "closeness_reached", "closeness_mean", "planarity_reached",
-        "planar_over", "run",
+        "planar_over", "seams", "seam_length", "seam_max_gap",
+        "seam_max_kink", "seam_max_crease", "seam_gaps_over",
+        "seam_kinks_over", "run",
     };
     for (int k = 0; k < NCOLUMNS; k++)
         assert_string_equal(option_quantities[k].name, expected[k]);
