@@ -143,6 +143,8 @@ same "no seam within 1 mm: none, of no length, no gap (NULL, not 0)" \
 expect "the same at --weld 3" 0 \
     "$FACET" optimize hinge_apart.obj --db apart3.db --module 1:1x1:1 --weld 3 --threshold 3 --table 0
 same "the run keeps --weld 3 (mm)" "$(q apart3.db 'SELECT weld_mm FROM runs')" "3.0"
+run "$FACET" runs apart3.db --json
+json_check "facet runs --json: weld_mm 3" "[r['weld_mm'] for r in j] == [3]"
 same "one seam within 3 mm" "$(q apart3.db 'SELECT seams FROM options')" "1"
 near "its gap is the design's own 2 mm" apart3.db "SELECT seam_max_gap FROM options" 0.002 1e-9
 
@@ -152,6 +154,8 @@ expect "optimize the floor alone" 0 \
 same "its joints measured, every seam column NULL" \
     "$(q floor.db 'SELECT max_gap IS NOT NULL, seams IS NULL AND seam_length IS NULL AND seam_max_gap IS NULL AND seam_max_kink IS NULL AND seam_max_crease IS NULL AND seam_gaps_over IS NULL AND seam_kinks_over IS NULL FROM options')" "1|1"
 same "its run has no welding tolerance" "$(q floor.db 'SELECT quote(weld_mm) FROM runs')" "NULL"
+run "$FACET" runs floor.db --json
+json_check "facet runs --json: weld_mm null" "[r['weld_mm'] for r in j] == [None]"
 
 # 7. Bad tolerances: one line, status 2, nothing created.
 expect_error "--weld -1 refused" '^facet: --weld: -1 is out of range' \
