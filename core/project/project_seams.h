@@ -24,6 +24,7 @@
 #include "core/panel/panel.h"
 #include "core/project/project.h"
 #include "core/project/seam.h"
+#include "core/project/seam_joints.h"
 
 /* Seam samples at most this far apart along a boundary: several to a
  * panel side of any facade module (0.3 m and up). */
@@ -83,5 +84,23 @@ int project_seams_measure(const struct project *project,
                           const struct panelization *const *panels,
                           double max_gap, double max_kink,
                           struct seam_totals *out, struct facet_error *err);
+
+/* One seam joint of a building: the seam (its index in seams), its two
+ * surfaces and the joint between their panels (seam_joints.h). */
+struct building_seam_joint {
+    size_t seam;
+    size_t a, b;
+    struct seam_joint joint;
+};
+
+/* Every seam joint of seams between project's surfaces with their panels
+ * panels[i], seam by seam, into *out (malloc'ed, free(); NULL when none)
+ * and *n: the joints project_seams_measure sums, one by one (the seams
+ * schedule of an export). Returns FACET_OK or FACET_EWORK. */
+int project_seams_joints(const struct project *project,
+                         const struct project_seams *seams,
+                         const struct panelization *const *panels,
+                         struct building_seam_joint **out, size_t *n,
+                         struct facet_error *err);
 
 #endif

@@ -45,7 +45,9 @@ PI=3.141592653589793
 # The closed form of the cylinder's seams: the gap and the kink added at
 # the three rulings when faces 0, 1, 2 have COLS0 COLS1 COLS2 columns of
 # flat panels; prints "GAP KINK OVER" (m, rad), the largest of the three,
-# and how many of the three gaps exceed 0.5 m.
+# and how many of the three gaps exceed 0.5 m; with a fourth argument, a
+# CSV file, checks its rows (facet export's seams schedule) against each
+# ruling's closed form instead and prints "same" or what differs.
 thirds() {
     /usr/bin/python3 - "$@" <<'PY'
 import math, sys
@@ -75,6 +77,30 @@ for k in range(3):
     over += g > 0.5
     kink = max(kink, math.acos(max(-1, min(1, a[0][0] * b[0][0] +
                                             a[0][1] * b[0][1]))))
+if len(sys.argv) > 4:
+    import csv
+    rows = list(csv.DictReader(open(sys.argv[4])))
+    # each ruling between faces k and k + 1: (surface_a, surface_b) as the
+    # seam is seen from the first in project order, with its truth
+    want = {}
+    for k in range(3):
+        ruling = 120 * (k + 1)
+        a, b = edge(k, False), edge((k + 1) % 3, True)
+        pair = tuple(sorted(("third%d" % k, "third%d" % ((k + 1) % 3))))
+        kink_deg = math.degrees(math.acos(max(-1, min(1, a[0][0] * b[0][0] +
+                                                      a[0][1] * b[0][1]))))
+        want[pair] = (1000 * math.dist(place(ruling, *a), place(ruling, *b)),
+                      kink_deg)
+    bad = []
+    for r in rows:
+        g, k = want[(r["surface_a"], r["surface_b"])]
+        if not (abs(float(r["gap_mm"]) - g) < 1e-6 and
+                abs(float(r["added_kink_deg"]) - k) < 1e-5 and
+                abs(float(r["crease_deg"])) < 1e-5):
+            bad.append(r)
+    print("same" if len(rows) == 3 and not bad else "rows %d, wrong %s" %
+          (len(rows), bad))
+    sys.exit(0)
 print("%.17g %.17g %d" % (gap, kink, over))
 PY
 }
@@ -134,6 +160,14 @@ expect "the thirds with 1, 2 and 4 columns: grids not aligned at the seams" 0 \
 near "the largest seam gap is the closed form's ($gap m)" uneven.db "SELECT seam_max_gap FROM options" "$gap" 1e-9
 near "the largest kink added is the closed form's ($kink rad)" uneven.db "SELECT seam_max_kink FROM options" "$kink" 1e-6
 same "seam gaps over --max-gap 500: the closed form's $over" "$(q uneven.db 'SELECT seam_gaps_over FROM options')" "$over"
+expect "facet export --csv of it writes the seams schedule beside" 0 \
+    "$FACET" export uneven.db --run 1 --option 1 --csv uneven.csv
+stdout_has "... and says so" '^wrote uneven-seams\.csv$'
+same "the seams schedule: one row a ruling, its gap (mm) and added kink (deg) the closed form's, no crease" \
+    "$(thirds 1 2 4 uneven-seams.csv)" same
+same "its panels are the panel schedule's ids: third0's 1 meets third1's 2, third2's 7 and third1's 3 its 4" \
+    "$(/usr/bin/python3 -c "import csv,sys; print(' '.join(r['panel_a'] + '-' + r['panel_b'] for r in csv.DictReader(open(sys.argv[1]))))" uneven-seams.csv)" \
+    "1-2 1-7 3-4"
 
 # 5. The welding tolerance: the hinge's faces 2 mm apart.
 expect "optimize the faces 2 mm apart at the default 1 mm" 0 \
