@@ -592,8 +592,9 @@ static void export_option(struct map_screen *s, struct tui_app *app)
         return;
     }
     if (s->project)
-        tui_status(app, "wrote %s.csv (+ -totals.csv), .xlsx, .dxf, .ifc: "
-                   "the building's %zu panels", prefix,
+        tui_status(app, "wrote %s.csv (+ -totals.csv%s), .xlsx, .dxf, "
+                   ".ifc: the building's %zu panels", prefix,
+                   request.written[EXPORT_SEAMS][0] ? ", -seams.csv" : "",
                    s->building.totals.panels);
     else
         tui_status(app, "wrote %s.obj (+ .mtl), .csv, .svg, .xlsx, .dxf, "
