@@ -22,7 +22,11 @@
 #   - the hinge with its faces 2 mm apart: no seam within 1 mm, one within
 #     3 mm whose gap is the design's 2 mm; the run keeps its tolerance;
 #   - a single surface: every seam column NULL, the run's weld NULL;
-#   - a bad --weld: one line, status 2, no database.
+#   - a bad --weld: one line, status 2, no database;
+#   - show's seams line and options --csv's columns; export --csv's seams
+#     schedule, each ruling's row against its closed form;
+#   - shards at one tolerance merged into a run that keeps it, shards of
+#     two refused.
 # layers: cli core store study
 . "$(dirname "$0")/lib.sh"
 HERE=$(cd "$(dirname "$0")" && pwd)
@@ -211,3 +215,20 @@ run "$FACET" options thirds.db --csv
 same "options --csv: seams, seam_length_m, seam_max_kink_rad, seam_kinks_over" \
     "$(/usr/bin/python3 -c "import csv,sys; r=list(csv.DictReader(open(sys.argv[1])))[0]; print(r['seams'], round(float(r['seam_length_m']), 9), round(float(r['seam_max_kink_rad']), 6), r['seam_kinks_over'])" "$OUT")" \
     "3 12.0 $(/usr/bin/python3 -c 'import math; print(round(2 * math.pi / 3, 6))') 3"
+
+# 9. Shards and their merge: each shard finds the seams at the run's
+#    tolerance, the merge keeps it, and shards of two tolerances are not
+#    one run.
+for i in 1 2; do
+    expect "shard $i/2 of the hinge over two module widths, --weld 2" 0 \
+        "$FACET" optimize hinge.obj --db shard$i.db --module 0.5:1:0.5x1:1 --weld 2 --shard $i/2 --threshold 3 --table 0
+done
+expect "facet merge joins them" 0 "$FACET" merge merged.db shard1.db shard2.db
+same "the merged run keeps --weld 2; each of its 2 options has the hinge's seam" \
+    "$(q merged.db 'SELECT (SELECT weld_mm FROM runs), count(*), sum(seams) FROM options')" "2.0|2|2"
+near "... at the crease pi/6 in both" merged.db "SELECT max(abs(seam_max_crease - $PI / 6)) FROM options" 0 1e-9
+expect "a shard 2/2 at --weld 3" 0 \
+    "$FACET" optimize hinge.obj --db shard3.db --module 0.5:1:0.5x1:1 --weld 3 --shard 2/2 --threshold 3 --table 0
+expect_error "shards of two welding tolerances are refused in one line" \
+    'differs from .*shard1\.db in its welding tolerance of the seams \(mm\): 3, not 2' \
+    "$FACET" merge merged2.db shard1.db shard3.db
