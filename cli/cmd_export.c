@@ -62,7 +62,7 @@ static const struct arg_option export_options[] = {
      "polygons on their best-fit plane, SP and DP as the surface patch; "
      "FILE.mtl beside", NULL},
     {"csv", 0, ARG_STRING, offsetof(struct export_args, request.csv),
-     "FILE.csv", "the panel schedule, a row per panel; its totals in FILE-totals.csv beside it", NULL},
+     "FILE.csv", "the panel schedule, a row per panel; its totals in FILE-totals.csv beside it (and a building's seam joints, a row each, in FILE-seams.csv)", NULL},
     {"xlsx", 0, ARG_STRING, offsetof(struct export_args, request.xlsx),
      "FILE.xlsx", "the panel schedule as a workbook: sheets of panels, "
      "moulds, surfaces (a building) and totals", NULL},

@@ -22,8 +22,10 @@
 #include "core/base/numformat.h"
 #include "core/base/numparse.h"
 #include "core/base/numrange.h"
+#include "core/base/units.h"
 #include "core/obj/infile.h"
 #include "core/project/module.h"
+#include "core/project/seam.h"
 #include "study/study.h"
 #include "study/study_estimate.h"
 
@@ -180,7 +182,7 @@ struct optimize_command {
     struct search_flags search;
     struct classify_flags flags;
     const char *db, *resume, *name, *table, *surface, *store_panels;
-    const char *measure, *planarize;
+    const char *measure, *planarize, *weld;
     int wide;
     const char *path[PROJECT_FILES_MAX];
     int count;
@@ -256,6 +258,13 @@ static void default_store_panels(char *out, size_t size)
     snprintf(out, size, "%s", study_keep_panels_name(r.store_panels));
 }
 
+static void default_weld(char *out, size_t size)
+{
+    struct study_request r;
+    study_request_defaults(&r);
+    snprintf(out, size, "%g", units_mm(r.weld));
+}
+
 static void default_measure(char *out, size_t size)
 {
     struct study_request r;
@@ -308,6 +317,10 @@ static const struct arg_option optimize_options[] = {
     {"grid", 0, ARG_STRING, offsetof(struct optimize_command, search.grid),
      "NAME=NUxNV", "with --module: that surface's own grid whatever the "
      "module (comma-separated list)", NULL},
+    {"weld", 0, ARG_STRING, offsetof(struct optimize_command, weld), "MM",
+     "with --module: two surfaces meet along a seam where their boundaries "
+     "are within MM (its joints measured with the faces': gap, and kink "
+     "beyond the design's own crease)", default_weld},
     {"resume", 0, ARG_STRING, offsetof(struct optimize_command, resume),
      "RUN", "go on with an interrupted run", NULL},
     {"surface", 0, ARG_STRING, offsetof(struct optimize_command, surface),
@@ -389,6 +402,14 @@ static int optimize_parse(int argc, char **argv, struct optimize_command *c,
         return facet_error_set(err, FACET_EINPUT,
             "optimize --resume: the run knows its closeness budget; give no "
             "--planarize");
+    if (c->resume && c->weld)
+        return facet_error_set(err, FACET_EINPUT,
+            "optimize --resume: the run knows its welding tolerance; give "
+            "no --weld");
+    if (c->weld && !search->module)
+        return facet_error_set(err, FACET_EINPUT,
+            "optimize: --weld is where a project's surfaces meet; it needs "
+            "--module");
     if (search->grid && !search->module)
         return facet_error_set(err, FACET_EINPUT,
             "optimize: --grid gives a project's surface its own grid; "
@@ -411,6 +432,13 @@ static int optimize_parse(int argc, char **argv, struct optimize_command *c,
         request->override_names = (const char *const *)c->grids.name;
         request->overrides = c->grids.grid;
         request->noverrides = c->grids.n;
+        double mm;
+        if (c->weld &&
+            (rc = numparse_number(c->weld, units_mm(SEAM_WELD_MIN),
+                                  units_mm(SEAM_WELD_MAX), "--weld", &mm, err)))
+            return rc;
+        if (c->weld)
+            request->weld = units_m_of_mm(mm);
     }
     if (!c->resume) {
         if ((rc = classify_flags_apply(&c->flags, &request->settings.base,
@@ -545,6 +573,7 @@ const struct command cmd_optimize = {
              "       [classification options]\n"
              "   or: facet optimize PROJECT.obj [MORE.obj ...] --db FILE\n"
              "       --module WMIN:WMAX x HMIN:HMAX [--grid NAME=NUxNV,...]\n"
+             "       [--weld MM]\n"
              "       [--threshold ...] [...]\n"
              "   or: facet optimize --db FILE --resume RUN [--surface FILE]",
     .summary = "Search grid sizes and thresholds for the Pareto-optimal "

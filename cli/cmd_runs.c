@@ -66,6 +66,8 @@ static void print_json(const struct run_info *runs,
         json_key(&w, "max_gap_mm"); json_number(&w, r->max_gap_mm);
         json_key(&w, "max_kink_deg"); json_number(&w, r->max_kink_deg);
         json_key(&w, "min_panel_width"); json_number(&w, r->min_panel_width);
+        /* a building's welding tolerance; null for a single surface */
+        json_key(&w, "weld_mm"); json_number(&w, r->weld_mm);
         json_key(&w, "options"); json_integer(&w, r->options);
         json_key(&w, "pareto_options"); json_integer(&w, r->pareto_options);
         json_key(&w, "knee");

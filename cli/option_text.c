@@ -11,6 +11,7 @@
 #include <unistd.h>
 
 #include "core/base/numformat.h"
+#include "core/quantity/quantity.h"
 
 /* What a value of an option not known shows (NULL in the store): its
  * run did not need it (a run measures what its objectives, limits and
@@ -25,6 +26,39 @@ static const char *grouped(char text[40], double value, int decimals)
 {
     number_grouped(text, 40, value, decimals);
     return text;
+}
+
+/* The quantity named name of t as its row shows it, with its unit
+ * ("1674.54 mm"). */
+static const char *shown(char text[64], const struct option_totals *t,
+                         const char *name)
+{
+    const struct quantity *q = quantity_named(name);
+    char number[48];
+    quantity_text(number, sizeof number, q, quantity_of_totals(q, t),
+                  q->decimals);
+    snprintf(text, 64, "%s %s", number, q->unit);
+    return text;
+}
+
+/* A building's seams (part of the gaps and kinks above), when measured:
+ * a single surface has none to show. */
+static void seams_text(FILE *out, const struct option_totals *t)
+{
+    if (t->seams == TOTALS_UNKNOWN)
+        return;
+    char length[64], gap[64], kink[64], crease[64];
+    fprintf(out, "%-16s %zu, %s long", "seams", t->seams,
+            shown(length, t, "seam_length"));
+    if (isnan(t->seam_max_gap)) {
+        fprintf(out, " (no seam joint)\n");
+        return;
+    }
+    fprintf(out, ": max gap %s, max kink added %s to a crease of up to %s "
+            "(%zu gaps, %zu kinks over the limits)\n",
+            shown(gap, t, "seam_max_gap"), shown(kink, t, "seam_max_kink"),
+            shown(crease, t, "seam_max_crease"), t->seam_gaps_over,
+            t->seam_kinks_over);
 }
 
 /* The SP misfits, gaps and kinks of t, against o's limits. */
@@ -57,6 +91,7 @@ static void joints_text(FILE *out, const struct option_totals *t,
                  t->kinks_over, o->max_kink * 180 / M_PI);
     fprintf(out, "%-16s max %.3f deg, mean %.3f deg (%s)\n", "kink",
             t->max_kink_deg, t->mean_kink_deg, limit);
+    seams_text(out, t);
 }
 
 /* The smallest panel of t by area and by width, and its slivers against

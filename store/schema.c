@@ -406,6 +406,24 @@ static const char schema_v14[] =
     "ALTER TABLE panels ADD COLUMN corner_distance REAL;"
     "ALTER TABLE panels ADD COLUMN corner_moved REAL;";
 
+/* Version 15: a building's seams (issue 31 item 1,
+ * core/project/project_seams.h). Per run, the welding tolerance its
+ * seams were found at (mm), NULL for a single surface and every run
+ * before. Per option, its seams measured with its joints: how many and
+ * their length (m), the largest gap (m), kink added to the design's
+ * crease (rad) and crease (rad) at them, and the seam joints over the
+ * gap and kink limits; NULL for a single surface, where joints were not
+ * measured, and for every option stored before. */
+static const char schema_v15[] =
+    "ALTER TABLE runs ADD COLUMN weld_mm REAL;"
+    "ALTER TABLE options ADD COLUMN seams INTEGER;"
+    "ALTER TABLE options ADD COLUMN seam_length REAL;"
+    "ALTER TABLE options ADD COLUMN seam_max_gap REAL;"
+    "ALTER TABLE options ADD COLUMN seam_max_kink REAL;"
+    "ALTER TABLE options ADD COLUMN seam_max_crease REAL;"
+    "ALTER TABLE options ADD COLUMN seam_gaps_over INTEGER;"
+    "ALTER TABLE options ADD COLUMN seam_kinks_over INTEGER;";
+
 static const char *const migrations[STORE_SCHEMA_VERSION] = {
     schema_v1,
     schema_v2,
@@ -421,6 +439,7 @@ static const char *const migrations[STORE_SCHEMA_VERSION] = {
     schema_v12,
     schema_v13,
     schema_v14,
+    schema_v15,
 };
 
 int store_fail(struct store *store, const char *doing,

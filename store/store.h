@@ -142,6 +142,10 @@ struct run_info {
                                   options were held to (mm, schema v14,
                                   core/planar/planar_option.h); NaN: the
                                   run made none */
+    double weld_mm;            /* the welding tolerance a building's seams
+                                  were found at (mm, schema v15,
+                                  core/project/seam.h); NaN: a single
+                                  surface, or a run before seams */
     /* What every option of the run was measured for beyond its classed
      * panels (option.h's option_measure bits; schema v9): what its
      * objectives, limits and prices read, or all of them. Its Pareto

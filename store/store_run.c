@@ -33,7 +33,7 @@
 #define RUN_COST_COLUMNS \
     "price_panel, price_joint, price_sp_mould, price_dp_mould," \
     " mould_tol_mm, mould_mirror, sp_fit, max_gap_mm, max_kink_deg," \
-    " measured, min_panel_width, planarize_closeness_mm, " \
+    " measured, min_panel_width, planarize_closeness_mm, weld_mm, " \
     STORE_SHARD_COLUMNS ", " STORE_MODULE_COLUMNS
 
 static void copy_text(char *to, size_t size, sqlite3_stmt *stmt, int col)
@@ -190,6 +190,7 @@ static void run_costs_from_row(sqlite3_stmt *s, int c, struct run_info *r)
                       : option_measures_parse((const char *)measured);
     r->min_panel_width = store_column_or_nan(s, c++);
     r->planarize_closeness_mm = store_column_or_nan(s, c++);
+    r->weld_mm = store_column_or_nan(s, c++);
     store_shard_from_row(s, c, r);
     store_module_from_row(s, c + 3, r);
 }
@@ -204,7 +205,7 @@ static int run_costs_write(struct store *store, const struct run_info *r,
         " price_sp_mould = ?4, price_dp_mould = ?5, mould_tol_mm = ?6,"
         " mould_mirror = ?7, sp_fit = ?8, max_gap_mm = ?9,"
         " max_kink_deg = ?10, measured = ?11, min_panel_width = ?12,"
-        " planarize_closeness_mm = ?13 WHERE id = ?1", &s,
+        " planarize_closeness_mm = ?13, weld_mm = ?14 WHERE id = ?1", &s,
         "creating a run", err);
     if (rc != FACET_OK)
         return rc;
@@ -225,6 +226,8 @@ static int run_costs_write(struct store *store, const struct run_info *r,
     /* A run made with no budget (a zeroed run_info) made none: NULL. */
     store_bind_or_null(s, 13, r->planarize_closeness_mm > 0
                                   ? r->planarize_closeness_mm : NAN);
+    /* A single surface's run (a zeroed run_info) found no seams: NULL. */
+    store_bind_or_null(s, 14, r->weld_mm > 0 ? r->weld_mm : NAN);
     if (sqlite3_step(s) != SQLITE_DONE)
         rc = store_fail(store, "creating a run", err);
     sqlite3_finalize(s);

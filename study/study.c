@@ -16,6 +16,7 @@
 #include <unistd.h>
 
 #include "core/project/project_search.h"
+#include "core/project/seam.h"
 #include "core/surface/coarse_mesh.h"
 #include "core/search/front.h"
 #include "core/base/parallel.h"
@@ -187,6 +188,7 @@ void study_request_defaults(struct study_request *r)
     r->mesh = (struct mesh_options){UNITS_M, NULL, NULL};
     r->uv = PARAM_AUTO;
     r->store_panels = KEEP_FRONT;
+    r->weld = SEAM_WELD_DEFAULT;
     struct optimize_settings *s = &r->settings;
     s->space = (struct design_space){20, 40, 35, 50, 3, 3, 0};
     s->method = study_auto_method(&s->space);
@@ -1036,6 +1038,12 @@ int study_request_check(const struct study_request *request,
         return facet_error_set(err, FACET_EINPUT,
             "planarized options are made from a run's front, which a "
             "shard does not know: not for a shard");
+    if (request->nfiles > 0 && !(request->weld >= SEAM_WELD_MIN &&
+                                 request->weld <= SEAM_WELD_MAX))
+        return facet_error_set(err, FACET_EINPUT,
+            "the welding tolerance is %g mm: from %g to %g mm",
+            units_mm(request->weld), units_mm(SEAM_WELD_MIN),
+            units_mm(SEAM_WELD_MAX));
     return design_space_check(&request->settings.space, NULL, err);
 }
 

@@ -55,6 +55,10 @@ struct study_request {
     const char *const *files;
     size_t nfiles;
     struct module_range module;
+    double weld;                     /* a project's welding tolerance (m,
+                                        SEAM_WELD_MIN .. SEAM_WELD_MAX):
+                                        its seams are found at it once
+                                        prepared (project_seams.h) */
     /* Per surface of the project, by name: a grid of its own whatever
      * the module (nu 0: none); noverrides of them. */
     const char *const *override_names;

@@ -19,6 +19,7 @@
 #include "core/out/option_csv.h"
 #include "core/out/outfile.h"
 #include "core/panel/panel_geometry.h"
+#include "core/project/project_seams.h"
 #include "core/out/report.h"
 #include "core/out/svg_plot.h"
 #include "core/out/ifc_model.h"
@@ -478,6 +479,42 @@ static void write_building_csv(const struct study_option *p, FILE *csv,
         report_totals_csv(totals, &b->totals);
 }
 
+/* A building's seams schedule (report_seams_csv): every seam joint of
+ * its option, the panels numbered as in its panel schedule. */
+static int write_seams_csv(const struct study_option *p, FILE *out,
+                           struct facet_error *err)
+{
+    const struct project_option *b = p->building;
+    const struct project *project = &p->view->project;
+    size_t n = b->nsurfaces;
+    const struct panelization **panels = malloc((n ? n : 1) *
+                                                sizeof *panels);
+    const char **names = malloc((n ? n : 1) * sizeof *names);
+    size_t *first = malloc((n ? n : 1) * sizeof *first);
+    int rc = FACET_OK;
+    if (panels == NULL || names == NULL || first == NULL)
+        rc = facet_error_set(err, FACET_EWORK, "out of memory");
+    size_t id = 1;
+    for (size_t s = 0; rc == FACET_OK && s < n; s++) {
+        panels[s] = &b->surfaces[s].panels;
+        names[s] = p->surfaces[s].name;
+        first[s] = id;
+        id += b->surfaces[s].panels.npanels;
+    }
+    struct building_seam_joint *joints = NULL;
+    size_t njoints = 0;
+    if (rc == FACET_OK && project->seams != NULL)
+        rc = project_seams_joints(project, project->seams, panels, &joints,
+                                  &njoints, err);
+    if (rc == FACET_OK)
+        report_seams_csv(out, joints, njoints, names, first);
+    free(joints);
+    free(first);
+    free(names);
+    free(panels);
+    return rc;
+}
+
 /* Tells hooks the export's next stage; FACET_ESTOP when a stop is asked
  * for. */
 static int export_stage(const struct study_hooks *hooks, const char *what,
@@ -509,7 +546,7 @@ int study_export(struct store *store, int64_t run, int64_t number,
             "export: a sheet of %g x %g mm: each side must be %g to %g mm",
             units_mm(sheet_width), units_mm(sheet_height),
             units_mm(DXF_SHEET_MIN), units_mm(DXF_SHEET_MAX));
-    char mtl[4096] = "", totals[4096] = "";
+    char mtl[4096] = "", totals[4096] = "", seams[4096] = "";
     int rc;
     if (r->obj && outfile_is_stream(r->obj))
         return facet_error_set(err, FACET_EINPUT,
@@ -532,16 +569,22 @@ int study_export(struct store *store, int64_t run, int64_t number,
     if (to_stdout > 1)
         return facet_error_set(err, FACET_EINPUT,
             "export: one file at most to standard output (-)");
-    const char *target[EXPORT_FILES] = {r->obj, r->obj ? mtl : NULL, r->csv,
-                                        totals_file ? totals : NULL, r->json,
-                                        r->svg, r->xlsx, r->dxf, r->ifc};
     /* A building's option: its schedule, every surface's panels in one,
-     * and its totals; the other formats are refused before any file is
-     * made rather than written empty. */
+     * its totals and, when its run found its seams, the seams schedule;
+     * the other formats are refused before any file is made rather than
+     * written empty. */
     struct run_info info;
     if ((rc = store_run_get(store, run, &info, err)))
         return rc;
     int building = store_run_is_project(&info);
+    int seams_file = building && totals_file && info.weld_mm > 0;
+    if (seams_file && (rc = outfile_sibling(r->csv, ".csv", "-seams.csv",
+                                            seams, sizeof seams, err)))
+        return rc;
+    const char *target[EXPORT_FILES] = {r->obj, r->obj ? mtl : NULL, r->csv,
+                                        totals_file ? totals : NULL, r->json,
+                                        r->svg, r->xlsx, r->dxf, r->ifc,
+                                        seams_file ? seams : NULL};
     if (building && (r->obj || r->json || r->svg)) {
         r->refused_building = 1;
         return facet_error_set(err, FACET_EINPUT,
@@ -567,6 +610,8 @@ int study_export(struct store *store, int64_t run, int64_t number,
     if (rc == FACET_OK && building && r->csv)
         write_building_csv(&p, file[EXPORT_CSV].out,
                            totals_file ? file[EXPORT_TOTALS].out : NULL);
+    if (rc == FACET_OK && seams_file)
+        rc = write_seams_csv(&p, file[EXPORT_SEAMS].out, err);
     if (rc == FACET_OK && r->obj) {
         /* mtllib is relative to the OBJ: the MTL's own name. */
         const char *slash = strrchr(mtl, '/');
@@ -630,7 +675,7 @@ int study_export(struct store *store, int64_t run, int64_t number,
                                             EXPORT_CSV, EXPORT_TOTALS,
                                             EXPORT_JSON, EXPORT_SVG,
                                             EXPORT_XLSX, EXPORT_DXF,
-                                            EXPORT_IFC};
+                                            EXPORT_IFC, EXPORT_SEAMS};
     int n = 0;
     for (int k = 0; k < EXPORT_FILES; k++) {
         int f = order[k];

@@ -94,7 +94,7 @@ void study_option_source(const struct study_option *option,
 
 enum export_file { EXPORT_OBJ, EXPORT_MTL, EXPORT_CSV, EXPORT_TOTALS,
                    EXPORT_JSON, EXPORT_SVG, EXPORT_XLSX, EXPORT_DXF,
-                   EXPORT_IFC,
+                   EXPORT_IFC, EXPORT_SEAMS,
                    EXPORT_FILES };
 
 struct export_request {
@@ -126,7 +126,8 @@ struct export_request {
     int refused_building;
     /* Set by study_export: the paths written, in the order written (the
      * MTL is obj's name with .mtl, the CSV's totals csv's name less .csv
-     * with -totals.csv), "" for those not wanted. */
+     * with -totals.csv, a building's seams schedule with -seams.csv: a
+     * run that found its seams, schema v15), "" for those not wanted. */
     char written[EXPORT_FILES][4096];
 };
 

@@ -33,7 +33,7 @@ struct shard_file {
 
 /* The settings that make two runs shards of one run, as text (doubles to
  * the bit), in a fixed order with their names: what a merge compares. */
-enum { RUN_KEYS = 27, KEY_TEXT = 200 };
+enum { RUN_KEYS = 28, KEY_TEXT = 200 };
 static const char *const key_name[RUN_KEYS] = {
     "surface (SHA-256)", "units", "object", "group", "method", "seed",
     "module range (m)", "u", "v", "threshold", "prices (FP, SP, DP)",
@@ -43,7 +43,8 @@ static const char *const key_name[RUN_KEYS] = {
     "cost model (panel, joint, SP and DP moulds)",
     "mould tolerance and mirror",
     "panels as built (SP fit, gap limit mm, kink limit deg)",
-    "panel width limit (m)", "store_panels",
+    "panel width limit (m)", "welding tolerance of the seams (mm)",
+    "store_panels",
     "number of shards"};
 
 static void run_keys(const struct run_info *r, char text[RUN_KEYS][KEY_TEXT])
@@ -95,6 +96,7 @@ static void run_keys(const struct run_info *r, char text[RUN_KEYS][KEY_TEXT])
     snprintf(text[k++], KEY_TEXT, "%d, %.17g, %.17g", r->sp_fit, r->max_gap_mm,
              r->max_kink_deg);
     snprintf(text[k++], KEY_TEXT, "%.17g", r->min_panel_width);
+    snprintf(text[k++], KEY_TEXT, "%.17g", r->weld_mm);
     snprintf(text[k++], KEY_TEXT, "%s",
              store_run_setting_text(r, RUN_SETTING_STORE_PANELS));
     snprintf(text[k++], KEY_TEXT, "%d", r->shard_count);

@@ -14,6 +14,7 @@
 #include <unistd.h>
 
 #include "core/base/sha256.h"
+#include "core/project/project_seams.h"
 #include "core/panel/panel.h"
 #include "core/surface/coarse_mesh.h"
 #include "core/base/units.h"
@@ -177,10 +178,15 @@ int study_project_read(const struct study_request *request,
         rc = project_prepare_stoppable(project, request->flip_normals,
                                        request->uv, &stop, err);
     }
+    if (rc == FACET_OK) {
+        study_stage(hooks, "finding the seams between the surfaces");
+        rc = project_seams_keep(project, request->weld, &stop, err);
+    }
     if (rc == FACET_OK)
         rc = project_rows(project, digest, rows, err);
     if (rc == FACET_OK) {
         memcpy(run->surface_sha256, digest[0], 65);
+        run->weld_mm = units_mm(request->weld);
         run->surface_area = project->area;
         run->triangles = (int64_t)project->ntriangles;
         run->uv_method = project->surfaces[0].surface.param.method;
@@ -310,6 +316,11 @@ int study_project_reopen(struct store *store, const struct run_info *run,
     if (rc == FACET_OK)
         rc = project_prepare_stoppable(project, run->flip_normals, run->uv,
                                        &stop, err);
+    /* Its seams at its welding tolerance; a run made before seams were
+     * measured (NULL) finds none, so its options stay alike. */
+    if (rc == FACET_OK && run->weld_mm > 0)
+        rc = project_seams_keep(project, units_m_of_mm(run->weld_mm), &stop,
+                                err);
     if (rc == FACET_OK && project->nsurfaces != n)
         rc = facet_error_set(err, FACET_EINPUT,
             "run %lld: its files hold %zu surfaces, the run %zu",

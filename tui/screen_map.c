@@ -161,6 +161,30 @@ static void set_bounds(struct map_screen *s)
 }
 
 /* The levels of the gap or kink colouring, their bounds and panels. */
+/* A project option's seams, the building's (the legend's other lines are
+ * the surface's): how many, and the largest gap, or kink added to the
+ * crease, at them, in the quantity's own unit. Nothing for a single
+ * surface, or a run that found none (an older Facet's). */
+static void draw_seams_line(const struct map_screen *s, int y, int x,
+                            int width, int kink)
+{
+    const struct option_totals *b = &s->building.totals;
+    if (!s->project || b->seams == TOTALS_UNKNOWN)
+        return;
+    const struct quantity *q =
+        quantity_named(kink ? "seam_max_kink" : "seam_max_gap");
+    double value = quantity_of_totals(q, b);
+    if (isnan(value)) {
+        tui_putf(y, x, width, A_NORMAL, " building: %zu seams, no joint",
+                 b->seams);
+        return;
+    }
+    char text[48];
+    tui_fmt_value(text, sizeof text, q, value);
+    tui_putf(y, x, width, A_NORMAL, " building: %zu seams, %s%s %s",
+             b->seams, kink ? "+" : "", text, q->unit);
+}
+
 static void draw_joint_legend(struct map_screen *s, int y, int x, int width)
 {
     const struct option_totals *t = s->totals;
@@ -214,6 +238,7 @@ static void draw_joint_legend(struct map_screen *s, int y, int x, int width)
              kink ? t->mean_kink_deg : t->mean_gap_mm, unit);
     tui_putf(y++, x, width, A_NORMAL, " SP misfits %zu (%s)", t->sp_misfits,
              s->run.sp_fit ? "built DP" : "kept SP: by class");
+    draw_seams_line(s, y, x, width, kink);
 }
 
 static void draw_legend(struct map_screen *s, int y, int x, int width)
@@ -593,8 +618,9 @@ static void export_option(struct map_screen *s, struct tui_app *app)
         return;
     }
     if (s->project)
-        tui_status(app, "wrote %s.csv (+ -totals.csv), .xlsx, .dxf, .ifc: "
-                   "the building's %zu panels", prefix,
+        tui_status(app, "wrote %s.csv (+ -totals.csv%s), .xlsx, .dxf, "
+                   ".ifc: the building's %zu panels", prefix,
+                   request.written[EXPORT_SEAMS][0] ? ", -seams.csv" : "",
                    s->building.totals.panels);
     else
         tui_status(app, "wrote %s.obj (+ .mtl), .csv, .svg, .xlsx, .dxf, "

@@ -21,6 +21,11 @@
  * is scaled by it as it is read. */
 #define UNITS_METRES_PER_MM 0.001
 
+/* A degree per radian: the scale a quantity held in radians is shown in
+ * degrees by (core/quantity/quantity.h), where an initializer needs a
+ * constant. units_deg is the same product. */
+#define UNITS_DEG_PER_RAD (180 / M_PI)
+
 /* metres as millimetres. */
 static inline double units_mm(double metres)
 {

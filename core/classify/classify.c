@@ -207,6 +207,13 @@ void option_totals_classified(struct option_totals *totals)
     totals->closeness_mean = NAN;
     totals->planarity_reached = NAN;
     totals->planar_over = TOTALS_UNKNOWN;
+    totals->seams = TOTALS_UNKNOWN;
+    totals->seam_length = NAN;
+    totals->seam_max_gap = NAN;
+    totals->seam_max_kink = NAN;
+    totals->seam_max_crease = NAN;
+    totals->seam_gaps_over = TOTALS_UNKNOWN;
+    totals->seam_kinks_over = TOTALS_UNKNOWN;
 }
 
 void classify_totals(struct panelization *p,

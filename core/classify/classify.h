@@ -158,10 +158,24 @@ struct option_totals {
                                         option's limit, as gaps_over is a
                                         gap limit's (TOTALS_UNKNOWN for a
                                         classified option) */
+    /* A building's seams (core/project/project_seams.h), measured with
+     * its joints: NaN and TOTALS_UNKNOWN for a single surface, for a
+     * building of one surface and where joints are not measured (stored
+     * NULL, never 0). The gap and kink at a seam also count in max_gap_mm
+     * .. kinks_over above, the kink as what the panels add to the
+     * design's crease. */
+    size_t seams;                    /* pairs of surfaces that meet */
+    double seam_length;              /* m */
+    double seam_max_gap;             /* m; NaN without a seam joint */
+    double seam_max_kink;            /* rad: added to the crease */
+    double seam_max_crease;          /* rad: the design's own */
+    size_t seam_gaps_over;           /* seam joints over max_gap */
+    size_t seam_kinks_over;          /* whose added kink is over max_kink */
 };
 
 /* Marks totals as a classified option's: planarized 0, what a
- * planarization reaches NaN. classify_totals and a building's totals
+ * planarization reaches NaN, and the seams not measured (a building's
+ * totals measure them after). classify_totals and a building's totals
  * start with it. */
 void option_totals_classified(struct option_totals *totals);
 

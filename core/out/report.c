@@ -10,6 +10,7 @@
 #include "core/out/json.h"
 #include "core/base/numformat.h"
 #include "core/base/units.h"
+#include "core/project/project_seams.h"
 #include "core/quantity/quantity.h"
 
 /* A count, null when it is not known (TOTALS_UNKNOWN). */
@@ -216,6 +217,27 @@ static void csv_text(FILE *out, const char *text)
         fputc(*c, out);
     }
     fputc('"', out);
+}
+
+void report_seams_csv(FILE *out, const struct building_seam_joint *joints,
+                      size_t n, const char *const *names,
+                      const size_t *first_id)
+{
+    fputs("seam,surface_a,panel_a,surface_b,panel_b,gap_mm,kink_deg,"
+          "crease_deg,added_kink_deg\n", out);
+    for (size_t k = 0; k < n; k++) {
+        const struct building_seam_joint *s = &joints[k];
+        fprintf(out, "%zu,", s->seam + 1);
+        csv_text(out, names[s->a]);
+        fprintf(out, ",%zu,", first_id[s->a] + (size_t)s->joint.panel_a);
+        csv_text(out, names[s->b]);
+        fprintf(out, ",%zu", first_id[s->b] + (size_t)s->joint.panel_b);
+        csv_number(out, units_mm(s->joint.gap));
+        csv_number(out, units_deg(s->joint.kink));
+        csv_number(out, units_deg(s->joint.crease));
+        csv_number(out, units_deg(s->joint.added));
+        fputc('\n', out);
+    }
 }
 
 void report_csv_header(FILE *out, int with_surface)

@@ -57,6 +57,21 @@ void report_csv_header(FILE *out, int with_surface);
 void report_csv_rows(FILE *out, const struct panelization *panels,
                      const char *surface, size_t first_id);
 
+/* The seams schedule of a building's option, `facet export --csv`'s
+ * NAME-seams.csv: a header row, then one row per seam joint (a pair of
+ * panels of two surfaces meeting along a seam, project_seams.h's
+ * project_seams_joints, seam by seam): seam (its number from 1),
+ * surface_a, panel_a, surface_b, panel_b (the panels' ids in the
+ * building's schedule: first_id[i] is surface i's first, names[i] its
+ * name), gap_mm, kink_deg (the panels' own angle), crease_deg (the
+ * design's own angle between the surfaces there) and added_kink_deg (what
+ * the panels add to it: what --max-kink holds at a seam), each the
+ * largest over the joint's samples. */
+struct building_seam_joint;
+void report_seams_csv(FILE *out, const struct building_seam_joint *joints,
+                      size_t n, const char *const *names,
+                      const size_t *first_id);
+
 /* Writes the option's totals as a CSV of its own (a header row and one
  * row: panels, counts, areas and costs per type, cost, planarity, largest
  * deviation, largest panel, P_dist, feasible, then the joint length, the

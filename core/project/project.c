@@ -18,6 +18,7 @@
 #include "core/base/parallel.h"
 #include "core/obj/obj.h"
 #include "core/project/project_lengths.h"
+#include "core/project/project_seams.h"
 #include "core/project/project_locate.h"
 
 #define PROJECT_THREADS_MAX 8  /* surfaces prepared at once */
@@ -469,5 +470,9 @@ void project_close(struct project *project)
     for (size_t i = 0; i < project->nfiles; i++)
         free(project->files[i]);
     free(project->files);
+    if (project->seams != NULL) {
+        project_seams_free(project->seams);
+        free(project->seams);
+    }
     memset(project, 0, sizeof *project);
 }

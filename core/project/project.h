@@ -71,6 +71,8 @@ struct project_surface {
  * commands ask it before they read any file. */
 int project_files_check(size_t npaths, struct facet_error *err);
 
+struct project_seams;
+
 struct project {
     size_t nfiles;
     char **files;            /* owned copies of the paths */
@@ -78,6 +80,10 @@ struct project {
     struct project_surface *surfaces;  /* owned, nsurfaces */
     size_t ntriangles;       /* sum over the surfaces' meshes */
     double area;             /* m^2, sum over the surfaces */
+    struct project_seams *seams;  /* owned: where its surfaces meet, once
+                                     project_seams_keep found them
+                                     (project_seams.h); NULL before, and
+                                     then no option measures seams */
 };
 
 /* Reads the files paths[0 .. npaths) (npaths >= 1), whose coordinates are

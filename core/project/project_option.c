@@ -14,6 +14,8 @@
 
 #include "core/base/exact_sum.h"
 #include "core/base/parallel.h"
+#include "core/base/units.h"
+#include "core/project/project_seams.h"
 #include "core/quantity/quantity.h"
 
 /* The surfaces, taken one at a time by whichever thread is free: each
@@ -212,6 +214,70 @@ static void building_totals(struct project_option *option,
         classify_violation(t, params->classify.max_panel_area) == 0;
 }
 
+/* A limit of classify's as seam_joints.h takes it: 0 is none. */
+static double limit_or_none(double limit)
+{
+    return limit > 0 ? limit : INFINITY;
+}
+
+/* The building's seams (project->seams) measured on its panels, when its
+ * joints are: their own totals, and their joints taken into the
+ * building's gaps and kinks (project_option.h), then its feasibility
+ * judged again. */
+static int measure_seams(const struct project *project,
+                         const struct option_params *params,
+                         struct project_option *option,
+                         struct facet_error *err)
+{
+    if (project->seams == NULL ||
+        (params->unmeasured & OPTION_MEASURE_JOINTS))
+        return FACET_OK;
+    size_t n = option->nsurfaces;
+    const struct panelization **panels = malloc((n ? n : 1) *
+                                                sizeof *panels);
+    if (panels == NULL)
+        return facet_error_set(err, FACET_EWORK,
+                               "out of memory for the seams of %zu "
+                               "surfaces", n);
+    for (size_t i = 0; i < n; i++)
+        panels[i] = &option->surfaces[i].panels;
+    const struct classify_options *c = &params->classify;
+    struct seam_totals s;
+    int rc = project_seams_measure(project, project->seams, panels,
+                                   limit_or_none(c->max_gap),
+                                   limit_or_none(c->max_kink), &s, err);
+    free(panels);
+    if (rc != FACET_OK)
+        return rc;
+    struct option_totals *t = &option->totals;
+    t->seams = s.nseams;
+    t->seam_length = s.length;
+    t->seam_max_gap = s.njoints > 0 ? s.max_gap : NAN;
+    t->seam_max_kink = s.njoints > 0 ? s.max_added : NAN;
+    t->seam_max_crease = s.nseams > 0 ? s.max_crease : NAN;
+    t->seam_gaps_over = s.gaps_over;
+    t->seam_kinks_over = s.kinks_over;
+    option->seam_joints = s.njoints;
+    if (s.njoints > 0) {
+        /* The means over every joint, the surfaces' and the seams'. */
+        double inside = (double)option->joints;
+        double at_seams = (double)s.njoints;
+        double all = inside + at_seams;
+        t->mean_gap_mm = (t->mean_gap_mm * inside +
+                          units_mm(s.mean_gap) * at_seams) / all;
+        t->mean_kink_deg = (t->mean_kink_deg * inside +
+                            units_deg(s.mean_added) * at_seams) / all;
+        t->max_gap_mm = fmax(t->max_gap_mm, units_mm(s.max_gap));
+        t->max_kink_deg = fmax(t->max_kink_deg, units_deg(s.max_added));
+        assert(t->gaps_over != TOTALS_UNKNOWN &&
+               t->kinks_over != TOTALS_UNKNOWN);
+        t->gaps_over += s.gaps_over;
+        t->kinks_over += s.kinks_over;
+    }
+    t->feasible = classify_violation(t, c->max_panel_area) == 0;
+    return FACET_OK;
+}
+
 int project_option_evaluate(const struct project *project,
                             const struct surface_grid *grids,
                             const struct option_params *params, int jobs,
@@ -242,8 +308,10 @@ int project_option_evaluate_stoppable(const struct project *project,
     int rc = evaluate_surfaces(project, grids, params, jobs, stop, out, err);
     if (rc == FACET_OK)
         rc = find_moulds(project, params, jobs, stop, out, err);
-    if (rc == FACET_OK)
+    if (rc == FACET_OK) {
         building_totals(out, params);
+        rc = measure_seams(project, params, out, err);
+    }
     return rc;
 }
 

@@ -52,8 +52,14 @@
  *     moulds), so equal areas cost the same to the bit;
  *   - feasible when the whole building is: its largest panel within the
  *     size limit and no joint of any surface over the gap or kink limit.
- * The joints measured are those inside each surface; where two surfaces
- * meet (a seam of the skin) no gap or kink is measured.
+ * The joints measured are those inside each surface and, once the
+ * project keeps its seams (project_seams_keep) and the option measures
+ * joints, those at the seams where two surfaces meet (project_seams.h):
+ * the building's seam totals (seams .. seam_kinks_over: NaN and
+ * TOTALS_UNKNOWN otherwise), and each seam joint taken into the
+ * building's max and mean gap and kink and its gaps and kinks over the
+ * limits, its kink as what the panels add to the design's crease (a
+ * 90 degree corner is not a defect), so into its feasibility too.
  *
  * Memory: the panels of every surface are kept, with the building's
  * families (about 370 bytes a panel), and the mould search holds about
@@ -91,6 +97,7 @@ struct project_option {
                                                  project's order */
     struct option_totals totals;  /* the building's (above) */
     size_t joints;                /* joints measured, over every surface */
+    size_t seam_joints;           /* joints measured at its seams */
     struct mould_families families;  /* the building's families, over the
         panels of every surface in order (surface i's panel k is number
         first_panel(i) + k, first_panel the panels of the surfaces before

@@ -75,6 +75,30 @@ void project_seams_free(struct project_seams *seams)
     memset(seams, 0, sizeof *seams);
 }
 
+int project_seams_keep(struct project *project, double weld,
+                       const struct facet_stop *stop,
+                       struct facet_error *err)
+{
+    if (project->seams != NULL) {
+        project_seams_free(project->seams);
+        free(project->seams);
+        project->seams = NULL;
+    }
+    if (project->nsurfaces < 2)
+        return FACET_OK;
+    struct project_seams *seams = malloc(sizeof *seams);
+    if (seams == NULL)
+        return facet_error_set(err, FACET_EWORK,
+                               "out of memory for the seams");
+    int rc = project_seams_find(project, weld, stop, seams, err);
+    if (rc != FACET_OK) {
+        free(seams);
+        return rc;
+    }
+    project->seams = seams;
+    return FACET_OK;
+}
+
 int project_seams_measure(const struct project *project,
                           const struct project_seams *seams,
                           const struct panelization *const *panels,
@@ -108,6 +132,52 @@ int project_seams_measure(const struct project *project,
     if (out->njoints > 0) {
         out->mean_gap = gaps / (double)out->njoints;
         out->mean_added = added / (double)out->njoints;
+    }
+    return FACET_OK;
+}
+
+int project_seams_joints(const struct project *project,
+                         const struct project_seams *seams,
+                         const struct panelization *const *panels,
+                         struct building_seam_joint **out, size_t *n,
+                         struct facet_error *err)
+{
+    *out = NULL;
+    *n = 0;
+    size_t capacity = 0;
+    for (size_t k = 0; k < seams->nseams; k++) {
+        const struct project_seam *s = &seams->seams[k];
+        const struct surface *sa = &project->surfaces[s->a].surface;
+        const struct surface *sb = &project->surfaces[s->b].surface;
+        struct seam_side a = {&sa->mesh, &sa->uv, panels[s->a]};
+        struct seam_side b = {&sb->mesh, &sb->uv, panels[s->b]};
+        struct seam_joint *joint;
+        size_t count;
+        int rc = seam_joints_list(&s->seam, &a, &b, &joint, &count, err);
+        if (rc == FACET_OK && *n + count > capacity) {
+            size_t want = 2 * (*n + count);
+            struct building_seam_joint *grown =
+                realloc(*out, want * sizeof *grown);
+            if (grown == NULL)
+                rc = facet_error_set(err, FACET_EWORK,
+                                     "out of memory for %zu seam joints",
+                                     *n + count);
+            else {
+                *out = grown;
+                capacity = want;
+            }
+        }
+        if (rc != FACET_OK) {
+            free(joint);
+            free(*out);
+            *out = NULL;
+            *n = 0;
+            return rc;
+        }
+        for (size_t j = 0; j < count; j++)
+            (*out)[(*n)++] = (struct building_seam_joint){k, s->a, s->b,
+                                                          joint[j]};
+        free(joint);
     }
     return FACET_OK;
 }

@@ -24,6 +24,7 @@
 #include "core/panel/panel.h"
 #include "core/project/project.h"
 #include "core/project/seam.h"
+#include "core/project/seam_joints.h"
 
 /* Seam samples at most this far apart along a boundary: several to a
  * panel side of any facade module (0.3 m and up). */
@@ -49,6 +50,17 @@ int project_seams_find(const struct project *project, double weld,
 
 void project_seams_free(struct project_seams *seams);
 
+/* Finds the seams of project (prepared) at weld (m, >= 0), as
+ * project_seams_find, and keeps them in project->seams (replacing any),
+ * so that every option evaluated over it measures them with its joints
+ * (project_option.h): what a building's run does once, after preparing
+ * it. A project of one surface has no seam: it keeps none (its options'
+ * seam numbers stay not measured, as a single surface's). Same returns as
+ * project_seams_find; project->seams is NULL after a failure. */
+int project_seams_keep(struct project *project, double weld,
+                       const struct facet_stop *stop,
+                       struct facet_error *err);
+
 /* A building option's joints at its seams, over all of them. */
 struct seam_totals {
     size_t nseams;        /* seams between surfaces */
@@ -72,5 +84,23 @@ int project_seams_measure(const struct project *project,
                           const struct panelization *const *panels,
                           double max_gap, double max_kink,
                           struct seam_totals *out, struct facet_error *err);
+
+/* One seam joint of a building: the seam (its index in seams), its two
+ * surfaces and the joint between their panels (seam_joints.h). */
+struct building_seam_joint {
+    size_t seam;
+    size_t a, b;
+    struct seam_joint joint;
+};
+
+/* Every seam joint of seams between project's surfaces with their panels
+ * panels[i], seam by seam, into *out (malloc'ed, free(); NULL when none)
+ * and *n: the joints project_seams_measure sums, one by one (the seams
+ * schedule of an export). Returns FACET_OK or FACET_EWORK. */
+int project_seams_joints(const struct project *project,
+                         const struct project_seams *seams,
+                         const struct panelization *const *panels,
+                         struct building_seam_joint **out, size_t *n,
+                         struct facet_error *err);
 
 #endif

@@ -46,6 +46,12 @@
  * joint a facade is built with (10 mm and more). */
 #define SEAM_WELD_DEFAULT 0.001
 
+/* The range a user's welding tolerance is taken in (m): above 0, as
+ * coordinates computed apart never meet exactly, and up to 100 mm, beyond
+ * which boundaries a joint apart would count as one seam. */
+#define SEAM_WELD_MIN 1e-9
+#define SEAM_WELD_MAX 0.1
+
 struct seam_point {
     double at[3];           /* on a's boundary (m) */
     double across[3];       /* the nearest point of b's boundary (m) */

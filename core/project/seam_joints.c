@@ -12,11 +12,6 @@
 #include "core/fit/sp_fit.h"
 #include "core/joint/joint.h"
 
-/* One seam sample between two panels. */
-struct seam_sample {
-    int32_t panel_a, panel_b;
-    double gap, kink, added;
-};
 
 /* The cell index along one UV axis of value x in a grid of count cells
  * over [lo, hi], the last cell keeping its far side. */
@@ -92,19 +87,20 @@ static void built_normal(const struct panel *panel,
 
 static int by_panels(const void *x, const void *y)
 {
-    const struct seam_sample *a = x, *b = y;
+    const struct seam_joint *a = x, *b = y;
     if (a->panel_a != b->panel_a)
         return a->panel_a < b->panel_a ? -1 : 1;
     return a->panel_b < b->panel_b ? -1 : a->panel_b > b->panel_b;
 }
 
-int seam_joints_measure(const struct seam *seam, const struct seam_side *a,
-                        const struct seam_side *b, double max_gap,
-                        double max_kink, struct seam_joints *out,
-                        struct facet_error *err)
+int seam_joints_list(const struct seam *seam, const struct seam_side *a,
+                     const struct seam_side *b, struct seam_joint **out,
+                     size_t *njoints, struct facet_error *err)
 {
-    memset(out, 0, sizeof *out);
-    struct seam_sample *sample =
+    *out = NULL;
+    *njoints = 0;
+    /* Each sample first a joint of its own, then merged by pair. */
+    struct seam_joint *sample =
         malloc((seam->npoints ? seam->npoints : 1) * sizeof *sample);
     if (sample == NULL)
         return facet_error_set(err, FACET_EWORK,
@@ -112,7 +108,6 @@ int seam_joints_measure(const struct seam *seam, const struct seam_side *a,
     size_t n = 0;
     for (size_t k = 0; k < seam->npoints; k++) {
         const struct seam_point *x = &seam->points[k];
-        out->max_crease = fmax(out->max_crease, x->crease);
         int32_t pa = panel_at(a, x->triangle_a, x->at);
         int32_t pb = panel_at(b, x->triangle_b, x->across);
         if (pa < 0 || pb < 0)
@@ -127,38 +122,68 @@ int seam_joints_measure(const struct seam *seam, const struct seam_side *a,
         joint_place(panel_b, &built_b, x->across, place_b);
         built_normal(panel_a, &built_a, x->at, x->normal_a, normal_a);
         built_normal(panel_b, &built_b, x->across, x->normal_b, normal_b);
-        struct seam_sample *s = &sample[n++];
+        struct seam_joint *s = &sample[n++];
         s->panel_a = pa;
         s->panel_b = pb;
         s->gap = vec3_distance(place_a, place_b);
         s->kink = vec3_angle(normal_a, normal_b);
         s->added = fabs(s->kink - x->crease);
+        s->crease = x->crease;
     }
     qsort(sample, n, sizeof *sample, by_panels);
-    double gaps = 0, added = 0;
+    /* Each run of one pair of panels becomes its joint, in place. */
+    size_t joints = 0;
     for (size_t k = 0; k < n;) {
-        double gap = 0, kink = 0, add = 0;
-        size_t end = k;
+        struct seam_joint j = sample[k];
+        size_t end = k + 1;
         while (end < n && by_panels(&sample[end], &sample[k]) == 0) {
-            gap = fmax(gap, sample[end].gap);
-            kink = fmax(kink, sample[end].kink);
-            add = fmax(add, sample[end].added);
+            j.gap = fmax(j.gap, sample[end].gap);
+            j.kink = fmax(j.kink, sample[end].kink);
+            j.added = fmax(j.added, sample[end].added);
+            j.crease = fmax(j.crease, sample[end].crease);
             end++;
         }
-        out->njoints++;
-        out->max_gap = fmax(out->max_gap, gap);
-        out->max_kink = fmax(out->max_kink, kink);
-        out->max_added = fmax(out->max_added, add);
-        out->gaps_over += gap > max_gap;
-        out->kinks_over += add > max_kink;
-        gaps += gap;
-        added += add;
+        sample[joints++] = j;
         k = end;
+    }
+    if (joints == 0) {
+        free(sample);
+        return FACET_OK;
+    }
+    *out = sample;
+    *njoints = joints;
+    return FACET_OK;
+}
+
+int seam_joints_measure(const struct seam *seam, const struct seam_side *a,
+                        const struct seam_side *b, double max_gap,
+                        double max_kink, struct seam_joints *out,
+                        struct facet_error *err)
+{
+    memset(out, 0, sizeof *out);
+    for (size_t k = 0; k < seam->npoints; k++)
+        out->max_crease = fmax(out->max_crease, seam->points[k].crease);
+    struct seam_joint *joint;
+    size_t n;
+    int rc = seam_joints_list(seam, a, b, &joint, &n, err);
+    if (rc != FACET_OK)
+        return rc;
+    double gaps = 0, added = 0;
+    for (size_t k = 0; k < n; k++) {
+        const struct seam_joint *j = &joint[k];
+        out->njoints++;
+        out->max_gap = fmax(out->max_gap, j->gap);
+        out->max_kink = fmax(out->max_kink, j->kink);
+        out->max_added = fmax(out->max_added, j->added);
+        out->gaps_over += j->gap > max_gap;
+        out->kinks_over += j->added > max_kink;
+        gaps += j->gap;
+        added += j->added;
     }
     if (out->njoints > 0) {
         out->mean_gap = gaps / (double)out->njoints;
         out->mean_added = added / (double)out->njoints;
     }
-    free(sample);
+    free(joint);
     return FACET_OK;
 }

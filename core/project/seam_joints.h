@@ -31,6 +31,7 @@
 #define FACET_SEAM_JOINTS_H
 
 #include <stddef.h>
+#include <stdint.h>
 
 #include "core/base/error.h"
 #include "core/panel/panel.h"
@@ -57,6 +58,24 @@ struct seam_joints {
     size_t gaps_over;        /* joints whose gap exceeds max_gap */
     size_t kinks_over;       /* joints whose added kink exceeds max_kink */
 };
+
+/* One seam joint: a panel of a and one of b meeting along the seam, its
+ * numbers the largest over its samples (m, rad). */
+struct seam_joint {
+    int32_t panel_a, panel_b;  /* in a's and b's panelizations */
+    double gap;
+    double kink;               /* the panels' own angle */
+    double added;              /* what they add to the crease */
+    double crease;             /* the design's */
+};
+
+/* The joints along seam (found from a to b), in the order of a's panel,
+ * then b's, into *out (malloc'ed, free(); NULL when none) and *n: the
+ * joints seam_joints_measure sums. Returns FACET_OK, or FACET_EWORK when
+ * out of memory. */
+int seam_joints_list(const struct seam *seam, const struct seam_side *a,
+                     const struct seam_side *b, struct seam_joint **out,
+                     size_t *n, struct facet_error *err);
 
 /* Measures the joints along seam (found from a to b) between a's panels
  * and b's into *out. Returns FACET_OK, or FACET_EWORK when out of memory. */

@@ -11,6 +11,7 @@
 #include <string.h>
 
 #include "core/base/numformat.h"
+#include "core/base/units.h"
 #include "core/evaluate/option.h"
 
 /* Where a field of struct option_row is. */
@@ -276,6 +277,33 @@ const struct quantity option_quantities[] = {
     {"planar_over", "quads not planar or beyond the closeness budget",
      "plan>", "", "", 1, 0, 0, 0, 0, "0", FIELD_SIZE, TOTAL(planar_over),
      WRITTEN_WITH_OPTION, COMBINE_RECOMPUTED, 0, 0, 0},
+    /* A building's seams (schema v15, core/project/project_seams.h),
+     * measured with the joints; NULL for a single surface. Its kink is
+     * what the panels add to the design's crease, the crease the
+     * design's own angle between the surfaces. */
+    {"seams", "seams between surfaces", "seams", "", "", 1, 0, 0, 0, 0, "4",
+     FIELD_SIZE, TOTAL(seams), WRITTEN_WITH_OPTION,
+     COMBINE_RECOMPUTED, OPTION_MEASURE_JOINTS, 0, 0},
+    {"seam_length", "seam length", "seam len", "m", "m", 1, 1, 0, 1, 0, "100",
+     FIELD_DOUBLE, TOTAL(seam_length), WRITTEN_WITH_OPTION,
+     COMBINE_RECOMPUTED, OPTION_MEASURE_JOINTS, 0, 0},
+    {"seam_max_gap", "max gap at a seam", "seam gap", "mm", "m", 1000, 2, 2,
+     0, 0, "0.006", FIELD_DOUBLE, TOTAL(seam_max_gap), WRITTEN_WITH_OPTION,
+     COMBINE_RECOMPUTED, OPTION_MEASURE_JOINTS, 0, 0},
+    {"seam_max_kink", "max kink added at a seam", "seam kink", "deg", "rad",
+     UNITS_DEG_PER_RAD, 2, 2, 0, 0, "0.02", FIELD_DOUBLE,
+     TOTAL(seam_max_kink), WRITTEN_WITH_OPTION,
+     COMBINE_RECOMPUTED, OPTION_MEASURE_JOINTS, 0, 0},
+    {"seam_max_crease", "max crease (the design's angle at a seam)",
+     "crease", "deg", "rad", UNITS_DEG_PER_RAD, 1, 1, 0, 0, "1.57",
+     FIELD_DOUBLE, TOTAL(seam_max_crease), WRITTEN_WITH_OPTION,
+     COMBINE_RECOMPUTED, OPTION_MEASURE_JOINTS, 0, 0},
+    {"seam_gaps_over", "seam gaps over limit", "seam gaps>", "", "", 1, 0, 0,
+     0, 0, "0", FIELD_SIZE, TOTAL(seam_gaps_over), WRITTEN_WITH_OPTION,
+     COMBINE_RECOMPUTED, OPTION_MEASURE_JOINTS, 0, 0},
+    {"seam_kinks_over", "seam kinks over limit", "seam kinks>", "", "", 1, 0,
+     0, 0, 0, "0", FIELD_SIZE, TOTAL(seam_kinks_over), WRITTEN_WITH_OPTION,
+     COMBINE_RECOMPUTED, OPTION_MEASURE_JOINTS, 0, 0},
     /* New columns go here, before run. */
     {"run", "run", "run", "", "", 1, 0, 0, 0, 0, "1",
      FIELD_NONE, 0, WRITTEN_AS_KEY,

@@ -115,7 +115,7 @@ struct quantity {
 
 /* Every column of the options table, in its order (pragma_table_info) but
  * run last. */
-#define OPTION_QUANTITIES 72
+#define OPTION_QUANTITIES 79
 extern const struct quantity option_quantities[OPTION_QUANTITIES];
 
 /* The column named name (exactly, lowercase), or NULL. */

@@ -17,6 +17,8 @@ UNITS = {
     "module_w": "m", "module_h": "m", "sp_min_radius": "m",
     "min_panel_area": "m2", "min_panel_width": "m",
     "closeness_reached": "m", "closeness_mean": "m",
+    "seam_length": "m", "seam_max_gap": "m", "seam_max_kink": "rad",
+    "seam_max_crease": "rad",
 }
 for _class in ("convex_feature_curve", "saddle", "concave_feature_curve",
                "ruled_convex", "flat", "ruled_concave", "convex_round",

@@ -89,6 +89,11 @@ done
 same "(sqlite3: v4 migrated to $CURRENT, the run's options without a module)" \
     "$(q 'SELECT (SELECT user_version FROM pragma_user_version), count(*), count(module_w), count(module_h), count(modules), (SELECT count(*) FROM surfaces), (SELECT count(*) FROM option_surfaces), (SELECT module_w_min IS NULL FROM runs), (SELECT measured IS NULL FROM runs), count(sp_min_radius), count(min_panel_area), count(min_panel_width), count(slivers), (SELECT min_panel_width IS NULL FROM runs) FROM options')" \
     "$CURRENT|4|0|0|0|0|0|1|1|0|0|0|0|1"
+# ... and no seams (15: NULL, a single surface's and never measured then),
+# no welding tolerance.
+same "(sqlite3: v4 migrated to $CURRENT, no seams, no welding tolerance)" \
+    "$(q 'SELECT count(*), count(seams), count(seam_length), count(seam_max_gap), count(seam_max_kink), count(seam_max_crease), count(seam_gaps_over), count(seam_kinks_over), (SELECT weld_mm IS NULL FROM runs) FROM options')" \
+    "4|0|0|0|0|0|0|0|1"
 
 # A run of schema 7 (the last before projects) and one of schema 3: both
 # are refused by facet runs, and migrate to 12 with their runs as they were.

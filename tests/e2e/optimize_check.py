@@ -46,7 +46,9 @@ COLUMNS = ["number", "generation", "nu", "nv", "threshold_mm", "panels",
            "sp_fitted", "module_w", "module_h", "modules",
            "sp_min_radius", "min_panel_area", "min_panel_width", "slivers",
            "planarized", "closeness_reached", "closeness_mean",
-           "planarity_reached", "planar_over"]
+           "planarity_reached", "planar_over", "seams", "seam_length",
+           "seam_max_gap", "seam_max_kink", "seam_max_crease",
+           "seam_gaps_over", "seam_kinks_over"]
 
 
 def connect(path):

@@ -20,8 +20,12 @@ from the PATH, and prints one "ok - " or "not ok - " line per check.
    store, and the product of the ranges), the rows of optimize's table
    (its own closing line); and docs/manual.md's count and list of the
    workbench's extra columns (the column chooser, on the screen).
+4. The building of step 8: its seams in the store are the tower's own
+   (rows x columns of faces read off the OBJ's object names), and show
+   and the seams schedule give them.
 """
 
+import csv
 import os
 import re
 import shlex
@@ -224,7 +228,8 @@ def check_numbers(walk, outputs, commands):
               "option %s, %s x %s, %s USD)" % (said[1], said[2], said[3],
                                                said[0], *truth),
               said == truth)
-        named = sorted({int(x) for c in commands
+        # the demo's store's; the building of step 8 has its own
+        named = sorted({int(x) for c in commands if "demo.db" in c
                         for x in re.findall(r"--option (\d+)", c)})
         check("every --option of the README's commands is the knee (%s)" %
               named, named == [number])
@@ -243,7 +248,8 @@ def check_numbers(walk, outputs, commands):
                   r"(\d+) options\)", text)
     stored = db.execute("SELECT count(*) FROM options WHERE run = 1"
                         ).fetchone()[0]
-    optimize = [c for c in commands if re.match(r"facet optimize ", c)]
+    optimize = [c for c in commands if re.match(r"facet optimize ", c) and
+                "demo.db" in c]
     if not m or len(optimize) != 1:
         not_ok("README's paper space and its one optimize command",
                m and m.group(0), optimize)
@@ -263,6 +269,49 @@ def check_numbers(walk, outputs, commands):
               (m and m.group(1), shown and shown.group(0)),
               m and shown and int(m.group(1)) == int(shown.group(1)) and
               int(shown.group(2)) == stored)
+
+
+def check_seams(walk, outputs, commands):
+    """The building of step 8: its seams, counted in the store, are the
+    tower's own (its faces, named skin_rRR_cCC in the OBJ, a ring of
+    columns in rows: each meets its neighbour in its row, the ring closed,
+    and the face above it), and show and the seams schedule say so."""
+    obj = os.path.join(walk, "skin.obj")
+    db_path = os.path.join(walk, "skin.db")
+    if not (os.path.exists(obj) and os.path.exists(db_path)):
+        not_ok("the walk-through made skin.obj and skin.db")
+        return
+    faces = set()
+    for line in open(obj, encoding="utf-8"):
+        m = re.match(r"o skin_r(\d+)_c(\d+)\s*$", line)
+        if m:
+            faces.add((int(m.group(1)), int(m.group(2))))
+    rows = len({r for r, _ in faces})
+    cols = len({c for _, c in faces})
+    truth = rows * cols + (rows - 1) * cols
+    db = sqlite3.connect(db_path)
+    stored = db.execute("SELECT seams FROM options WHERE run = 1 "
+                        "AND number = 1").fetchone()
+    check("README's building: %d rows of %d faces (the OBJ), %d seams "
+          "(sqlite3: %s)" % (rows, cols, truth, stored),
+          len(faces) == rows * cols == 180 and stored == (truth,))
+    check("README quotes the building's %d seams, 180 in rows, 160 between"
+          % truth, truth == 340 and "along 340 seams: 180 between "
+          "neighbours in a row, 160 between rows" in flat(README))
+    show = [c for c in commands if c.startswith("facet show skin.db")]
+    check("README's show of the building prints its seams line",
+          show and re.search(r"^seams +%d, " % truth,
+                             outputs.get(show[0], ""), re.M),
+          show and outputs.get(show[0], "")[:800])
+    seams_csv = os.path.join(walk, "skin-seams.csv")
+    if not os.path.exists(seams_csv):
+        not_ok("export --csv of the building wrote skin-seams.csv")
+        return
+    with open(seams_csv, encoding="utf-8") as f:
+        seam_rows = list(csv.DictReader(f))
+    check("skin-seams.csv: one row per seam joint, of the %d seams" % truth,
+          len({r["seam"] for r in seam_rows}) == truth,
+          "%d seams in the file" % len({r["seam"] for r in seam_rows}))
 
 
 def check_columns(two):
@@ -316,6 +365,7 @@ def main():
         not_ok("the walk-through made demo.db")
         return
     check_numbers(walk, outputs, commands)
+    check_seams(walk, outputs, commands)
 
     two = os.path.join(WORK, "two")
     os.makedirs(two)

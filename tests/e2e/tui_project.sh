@@ -110,10 +110,25 @@ IFS='|' read -r dp_moulds dp used gap mean_gap kink mean_kink <<<"$(q "select dp
 keys c c
 check "map by mould: the dome's DP families it starts and its DP panels ($dp_moulds, $dp)" " DP +$dp_moulds +$dp\$"
 check "map by mould: the families its panels use ($used)" "started here; $used used here"
+# ... and the building's seams below them (issue 31), from the store.
+IFS='|' read -r nseams seam_gap seam_kink <<<"$(q "select seams,
+    CASE WHEN seam_max_gap IS NULL THEN '' ELSE printf('%.2f', seam_max_gap * 1000) END,
+    CASE WHEN seam_max_kink IS NULL THEN '' ELSE printf('%.2f', seam_max_kink * 57.29577951308232) END
+    from options where run = 1 and number = $knee")"
 keys c
 check "map by worst gap: the dome's largest and mean gap ($gap, $mean_gap mm)" " max $gap mm, mean $mean_gap mm"
+if [ -n "$seam_gap" ]; then
+    check "map by worst gap: the building's $nseams seams, gap $seam_gap mm at most" " building: $nseams seams, $seam_gap mm"
+else
+    check "map by worst gap: the building's $nseams seams, no joint" " building: $nseams seams, no joint"
+fi
 keys c
 check "map by worst kink: the dome's largest and mean kink ($kink, $mean_kink deg)" " max $kink deg, mean $mean_kink deg"
+if [ -n "$seam_kink" ]; then
+    check "map by worst kink: the building's seams, $seam_kink deg added at most" " building: $nseams seams, \+$seam_kink deg"
+else
+    check "map by worst kink: the building's seams, no joint" " building: $nseams seams, no joint"
+fi
 keys c
 keys '['
 map_check 1

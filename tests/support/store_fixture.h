@@ -14,10 +14,23 @@
  * cost, a 1 x 1 grid, one job) that store_run_create accepts. */
 void store_fixture_run(struct run_info *run);
 
+/* SQL that takes a current file back to schema version 14: the columns
+ * version 15 added (a building's seams, issue 31), dropped (set
+ * user_version after it). */
+#define STORE_FIXTURE_UNDO_V15 \
+    "ALTER TABLE runs DROP COLUMN weld_mm;" \
+    "ALTER TABLE options DROP COLUMN seams;" \
+    "ALTER TABLE options DROP COLUMN seam_length;" \
+    "ALTER TABLE options DROP COLUMN seam_max_gap;" \
+    "ALTER TABLE options DROP COLUMN seam_max_kink;" \
+    "ALTER TABLE options DROP COLUMN seam_max_crease;" \
+    "ALTER TABLE options DROP COLUMN seam_gaps_over;" \
+    "ALTER TABLE options DROP COLUMN seam_kinks_over;"
+
 /* SQL that takes a current file back to schema version 13: the columns
  * version 14 added (planarized options, issue 33), dropped (set
  * user_version after it). */
-#define STORE_FIXTURE_UNDO_V14 \
+#define STORE_FIXTURE_UNDO_V14 STORE_FIXTURE_UNDO_V15 \
     "ALTER TABLE runs DROP COLUMN planarize_closeness_mm;" \
     "ALTER TABLE options DROP COLUMN planarized;" \
     "ALTER TABLE options DROP COLUMN closeness_reached;" \

@@ -138,7 +138,9 @@ static void test_columns_table(void **state)
         "sp_fitted", "module_w", "module_h", "modules", "sp_min_radius",
         "min_panel_area", "min_panel_width", "slivers", "planarized",
         "closeness_reached", "closeness_mean", "planarity_reached",
-        "planar_over", "run",
+        "planar_over", "seams", "seam_length", "seam_max_gap",
+        "seam_max_kink", "seam_max_crease", "seam_gaps_over",
+        "seam_kinks_over", "run",
     };
     for (int k = 0; k < NCOLUMNS; k++)
         assert_string_equal(option_quantities[k].name, expected[k]);
@@ -528,13 +530,17 @@ static void test_error_positions(void **state)
                            "{fp,sp,dp,area,panel,joint,mould}_cost, cost, "
                            "planarity, max_deviation, {max,min}_panel_area, "
                            "p_dist, "
-                           "feasible, rank, crowding, knee, joint_length, "
+                           "feasible, rank, crowding, knee, "
+                           "{joint,seam}_length, "
                            "moulds, {sp,dp,single}_moulds, largest_family, "
                            "{max,mean}_gap, {max,mean}_kink, "
                            "{gaps,kinks,planar}_over, sp_misfits, sp_fitted, "
                            "module_w, module_h, modules, sp_min_radius, "
                            "min_panel_width, slivers, planarized, "
                            "{closeness,planarity}_reached, closeness_mean, "
+                           "seams, seam_max_gap, seam_max_kink, "
+                           "seam_max_crease, seam_gaps_over, "
+                           "seam_kinks_over, "
                            "run, u, v, "
                            "threshold, pareto, CLASS_{count,area})");
 }

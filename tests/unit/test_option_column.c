@@ -101,6 +101,13 @@ static struct option_row option_k(int k)
     t->closeness_mean = 0.001953125 + k;
     t->planarity_reached = 0.00048828125 + k;
     t->planar_over = (size_t)(31 + k);
+    t->seams = (size_t)(37 + k);
+    t->seam_length = 12.5 + k;
+    t->seam_max_gap = 0.0015625 + k;
+    t->seam_max_kink = 0.015625 + k;
+    t->seam_max_crease = 0.78125 + k;
+    t->seam_gaps_over = (size_t)(41 + k);
+    t->seam_kinks_over = (size_t)(43 + k);
     o.module_w = 1.25 + k;
     o.module_h = 0.75 + k;
     o.modules = (size_t)(2 + k);
@@ -155,6 +162,13 @@ static double by_hand(const struct option_row *o, const char *name)
         {"closeness_mean", t->closeness_mean},
         {"planarity_reached", t->planarity_reached},
         {"planar_over", (double)t->planar_over},
+        {"seams", (double)t->seams},
+        {"seam_length", t->seam_length},
+        {"seam_max_gap", t->seam_max_gap},
+        {"seam_max_kink", t->seam_max_kink},
+        {"seam_max_crease", t->seam_max_crease},
+        {"seam_gaps_over", (double)t->seam_gaps_over},
+        {"seam_kinks_over", (double)t->seam_kinks_over},
     };
     for (size_t k = 0; k < sizeof fields / sizeof fields[0]; k++)
         if (strcmp(fields[k].name, name) == 0)
@@ -511,6 +525,13 @@ static const char *stored_unit_by_name(const char *name)
      * (docs/store.md); its planarity a ratio, no unit */
     if (strncmp(name, "closeness_", 10) == 0)
         return "m";
+    /* a building's seams (docs/store.md, schema v15): the gap in m, the
+     * kink added and the crease in rad, SI as the core holds them */
+    if (strcmp(name, "seam_max_gap") == 0)
+        return "m";
+    if (strcmp(name, "seam_max_kink") == 0 ||
+        strcmp(name, "seam_max_crease") == 0)
+        return "rad";
     /* a joint's gap in mm, its kink in degrees (docs/method.md: Panels as
      * built) */
     if (n >= 4 && strcmp(name + n - 4, "_gap") == 0)

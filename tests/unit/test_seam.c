@@ -14,10 +14,12 @@
 #include <cmocka.h>
 
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "core/evaluate/evaluate.h"
 #include "core/evaluate/option.h"
+#include "core/project/project_option.h"
 #include "core/project/project_seams.h"
 #include "core/project/seam.h"
 #include "core/project/seam_joints.h"
@@ -469,6 +471,105 @@ static void test_building_cylinder(void **state)
     project_seams_free(&seams);
 }
 
+/* A building's option measures its seams with its joints
+ * (project_option.h): the cylinder's halves with flat 60-degree panels,
+ * 3 x 1 a face. Before the project keeps its seams, and with joints not
+ * measured, no seam number is known (NaN, TOTALS_UNKNOWN: never 0); once
+ * kept, the seam totals are the closed form's (one seam of 8 m, two
+ * joints, the gap of test_building_cylinder, 60 degrees added to no
+ * crease), and the two seam joints join the building's gaps and kinks:
+ * its max and mean over every joint (the faces' own, from their totals,
+ * and the seams'), its joints over the limits, and a kink limit of 61
+ * degrees holding the added 60, one of 59 not. */
+static void test_building_option_seams(void **state)
+{
+    (void)state;
+    struct half first = {0}, second = {PI};
+    struct project_surface half[2];
+    memset(half, 0, sizeof half);
+    open_formula(half_cylinder, &first, 12, 2, &half[0].surface);
+    open_formula(half_cylinder, &second, 12, 2, &half[1].surface);
+    struct project project;
+    memset(&project, 0, sizeof project);
+    project.nsurfaces = 2;
+    project.surfaces = half;
+    const struct surface_grid grids[2] = {{3, 1}, {3, 1}};
+    struct option_params base;
+    option_params_defaults(&base);
+    struct option_params params = option_params_at(&base, 3, 1, 1000);
+    params.classify.max_gap = 0.001;
+    params.classify.max_kink = 61 * PI / 180;
+    struct facet_error err;
+    struct project_option option;
+
+    assert_int_equal(project_option_evaluate(&project, grids, &params, 1,
+                                             &option, &err), FACET_OK);
+    assert_true(option.totals.seams == TOTALS_UNKNOWN);
+    assert_true(isnan(option.totals.seam_max_gap));
+    assert_true(option.totals.seam_kinks_over == TOTALS_UNKNOWN);
+    project_option_free(&option);
+
+    assert_int_equal(project_seams_keep(&project, SEAM_WELD_DEFAULT, NULL,
+                                        &err), FACET_OK);
+    assert_int_equal(project.seams->nseams, 1);
+    assert_int_equal(project_option_evaluate(&project, grids, &params, 1,
+                                             &option, &err), FACET_OK);
+    double beta = PI / 12, alpha = PI / 3, r = 3;
+    double d = r * cos(beta / 2) * (cos(beta / 2) + cos(1.5 * beta)) / 2;
+    double gap = fabs(r * cos(alpha / 2) - d) * 2 * sin(alpha / 2);
+    const struct option_totals *t = &option.totals;
+    assert_int_equal(t->seams, 1);
+    assert_true(fabs(t->seam_length - 8) < 1e-9);
+    assert_int_equal(option.seam_joints, 2);
+    assert_true(fabs(t->seam_max_gap - gap) < 1e-9);
+    assert_true(fabs(t->seam_max_kink - alpha) < 1e-6);
+    assert_true(t->seam_max_crease < 1e-6);
+    assert_int_equal(t->seam_gaps_over, 2);
+    assert_int_equal(t->seam_kinks_over, 0);
+    /* The faces' own joints, from their totals. */
+    double inside = 0, max_gap = 0;
+    size_t gaps_over = 0, kinks_over = 0;
+    for (int k = 0; k < 2; k++) {
+        const struct project_surface_option *s = &option.surfaces[k];
+        inside += (double)s->joints * s->totals.mean_gap_mm;
+        max_gap = fmax(max_gap, s->totals.max_gap_mm);
+        gaps_over += s->totals.gaps_over;
+        kinks_over += s->totals.kinks_over;
+    }
+    assert_int_equal(option.joints, 4);  /* 2 inside each face */
+    double want_mean = (inside + 2 * gap * 1000) / 6;
+    assert_true(fabs(t->mean_gap_mm - want_mean) < 1e-9 * want_mean);
+    assert_true(fabs(t->max_gap_mm - fmax(max_gap, gap * 1000)) < 1e-9);
+    assert_true(fabs(t->max_kink_deg - 60) < 1e-5);
+    assert_int_equal(t->gaps_over, gaps_over + 2);
+    assert_int_equal(t->kinks_over, kinks_over);
+    assert_int_equal(t->feasible, 0);  /* gaps over 1 mm */
+    project_option_free(&option);
+
+    params.classify.max_kink = 59 * PI / 180;
+    assert_int_equal(project_option_evaluate(&project, grids, &params, 1,
+                                             &option, &err), FACET_OK);
+    assert_int_equal(option.totals.seam_kinks_over, 2);
+    kinks_over = 0;
+    for (int k = 0; k < 2; k++)
+        kinks_over += option.surfaces[k].totals.kinks_over;
+    assert_int_equal(option.totals.kinks_over, kinks_over + 2);
+    project_option_free(&option);
+
+    params.unmeasured = OPTION_MEASURE_JOINTS;
+    params.classify.max_gap = params.classify.max_kink = 0;
+    assert_int_equal(project_option_evaluate(&project, grids, &params, 1,
+                                             &option, &err), FACET_OK);
+    assert_true(option.totals.seams == TOTALS_UNKNOWN);
+    assert_true(isnan(option.totals.seam_max_crease));
+    project_option_free(&option);
+
+    project_seams_free(project.seams);
+    free(project.seams);
+    for (int k = 0; k < 2; k++)
+        surface_close(&half[k].surface);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -486,6 +587,7 @@ int main(void)
         cmocka_unit_test(test_cylinder_joints_single_curved),
         cmocka_unit_test(test_building_box_corner),
         cmocka_unit_test(test_building_cylinder),
+        cmocka_unit_test(test_building_option_seams),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

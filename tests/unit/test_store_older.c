@@ -141,9 +141,10 @@ static void test_row_and_registry(void **state)
         if (null)
             assert_string_equal(text, "-");
     }
-    assert_int_equal(nulls, 29);  /* the columns of versions 5 (10), 7 (8),
-                                     8 (3: no module), 10 (1), 12 (3) and
-                                     14 (4: what a planarization reached) */
+    assert_int_equal(nulls, 36);  /* the columns of versions 5 (10), 7 (8),
+                                     8 (3: no module), 10 (1), 12 (3),
+                                     14 (4: what a planarization reached)
+                                     and 15 (7: a building's seams) */
     /* An option stored before planarized options is a classified one
      * (v14's planarized defaults to 0), and reached nothing (NULL). */
     assert_int_equal(sql_int("SELECT count(*) FROM options WHERE"
@@ -152,6 +153,12 @@ static void test_row_and_registry(void **state)
                              " AND planar_over IS NULL"), 5);
     assert_int_equal(t->planarized, 0);
     assert_true(t->planar_over == TOTALS_UNKNOWN);
+    /* Nor were its seams measured (v15: NULL, never 0). */
+    assert_int_equal(sql_int("SELECT count(*) FROM options WHERE"
+                             " seams IS NULL AND seam_max_gap IS NULL"
+                             " AND seam_max_kink IS NULL"
+                             " AND seam_max_crease IS NULL"), 5);
+    assert_true(t->seams == TOTALS_UNKNOWN && isnan(t->seam_max_gap));
     assert_true(isnan(quantity_of_totals(quantity_named("moulds"), t)));
     assert_true(isnan(quantity_of_totals(quantity_named("dp_moulds"), t)));
     free(rows);
