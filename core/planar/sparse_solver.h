@@ -23,8 +23,9 @@
  * (its CHOLMOD_OMP_NUM_THREADS, whatever OMP_NUM_THREADS says) around
  * loops of a few hundred entries, and OpenBLAS starts one thread per
  * core; on 2 shared cores those threads spin and yield more than they
- * compute: the roof's 100 x 100 grid took 23 s of kernel time for 11 s
- * of user time. sparse_solver_open turns both off, through the libraries'
+ * compute: one planarization of the roof's 100 x 100 grid took 15 to 19
+ * s of user and 11 to 24 s of system time, against 7 and 1 s on the
+ * calling thread alone (bench_planarize). sparse_solver_open turns both off, through the libraries'
  * own calls (omp_set_max_active_levels(0): every OpenMP region runs on
  * the thread that opens it; openblas_set_num_threads(1)). Both settings
  * are the process's; Facet uses neither library elsewhere. A BLAS or
