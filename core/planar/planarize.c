@@ -53,7 +53,7 @@ struct problem {
     int *nbr;
     /* Where each term's blocks are in that pattern, found once so that
      * each step fills the matrix without a search: the rank (block_rank)
-     * of block (min, max) of the quad's corners k, l, and of the
+     * of block (min, max) of the quad's corners a, b, and of the
      * triple's. */
     int (*quad_rank)[4][4];
     int (*triple_rank)[3][3];
@@ -666,8 +666,8 @@ int planarize(const struct mesh *mesh, const struct nearest_index *index,
             c.error_handler = NULL;
             /* CHOLMOD's own nested dissection: 1.94 GFlop a factorization
              * of the roof's 100 x 100 grid against AMD's 2.28 (METIS's
-             * 2.07). CHOLMOD's default tries nested dissection only
-             * where AMD's flops per entry of L pass 500; here 389. */
+             * 2.07). CHOLMOD's default tries METIS only where AMD's
+             * flops per entry of L pass 500, here 389, and keeps AMD. */
             c.nmethods = 1;
             c.method[0].ordering = CHOLMOD_NESDIS;
             rc = solve(index, &p, o, x, &cm, &c, &out->iterations,

@@ -25,11 +25,12 @@
  * core; on 2 shared cores those threads spin and yield more than they
  * compute: one planarization of the roof's 100 x 100 grid took 15 to 19
  * s of user and 11 to 24 s of system time, against 7 and 1 s on the
- * calling thread alone (bench_planarize). sparse_solver_open turns both off, through the libraries'
- * own calls (omp_set_max_active_levels(0): every OpenMP region runs on
- * the thread that opens it; openblas_set_num_threads(1)). Both settings
- * are the process's; Facet uses neither library elsewhere. A BLAS or
- * OpenMP without those calls is left as it is.
+ * calling thread alone (bench_planarize). sparse_solver_open turns both
+ * off through the libraries' own calls: omp_set_max_active_levels(0),
+ * every OpenMP region on the thread that opens it, and
+ * openblas_set_num_threads(1). Both settings are the process's; Facet
+ * uses neither library elsewhere. A BLAS or an OpenMP without those
+ * calls is left as it is.
  */
 #ifndef FACET_SPARSE_SOLVER_H
 #define FACET_SPARSE_SOLVER_H
