@@ -51,6 +51,12 @@ struct problem {
      * ascending, b itself last. */
     int *nbr_start;
     int *nbr;
+    /* Where each term's blocks are in that pattern, found once so that
+     * each step fills the matrix without a search: the rank (block_rank)
+     * of block (min, max) of the quad's corners a, b, and of the
+     * triple's. */
+    int (*quad_rank)[4][4];
+    int (*triple_rank)[3][3];
 };
 
 static void problem_free(struct problem *p)
@@ -61,6 +67,8 @@ static void problem_free(struct problem *p)
     free(p->triple);
     free(p->nbr_start);
     free(p->nbr);
+    free(p->quad_rank);
+    free(p->triple_rank);
 }
 
 static int compare_int(const void *a, const void *b)
@@ -88,6 +96,8 @@ static void add_pair(struct pair *pairs, size_t *n, int a, int b)
     pairs[*n].b = a < b ? b : a;
     (*n)++;
 }
+
+static int block_rank(const struct problem *p, int a, int b);
 
 static int problem_build(const struct quad_grid *g, struct problem *p,
                          struct facet_error *err)
@@ -180,6 +190,24 @@ static int problem_build(const struct quad_grid *g, struct problem *p,
     for (int v = 0; v < p->nvars; v++)
         p->nbr_start[v + 1] += p->nbr_start[v];
     free(pairs);
+    p->quad_rank = malloc(p->nquads * sizeof *p->quad_rank);
+    p->triple_rank = malloc(p->ntriples * sizeof *p->triple_rank);
+    if (p->quad_rank == NULL || p->triple_rank == NULL)
+        return facet_error_set(err, FACET_EWORK, "out of memory");
+    for (size_t q = 0; q < p->nquads; q++)
+        for (int a = 0; a < 4; a++)
+            for (int b = 0; b < 4; b++) {
+                int lo = p->quad[q][a], hi = p->quad[q][b];
+                p->quad_rank[q][a][b] = lo < hi ? block_rank(p, lo, hi)
+                                                : block_rank(p, hi, lo);
+            }
+    for (size_t t = 0; t < p->ntriples; t++)
+        for (int a = 0; a < 3; a++)
+            for (int b = 0; b < 3; b++) {
+                int lo = p->triple[t][a], hi = p->triple[t][b];
+                p->triple_rank[t][a][b] = lo < hi ? block_rank(p, lo, hi)
+                                                  : block_rank(p, hi, lo);
+            }
     return FACET_OK;
 }
 
@@ -226,17 +254,23 @@ static cholmod_sparse *pattern_make(const struct problem *p,
     return A;
 }
 
-/* Adds w to entry (3 a + x, 3 b + y) of A, taking the upper triangle. */
-static void matrix_add(const struct problem *p, cholmod_sparse *A, int a,
-                       int x, int b, int y, double w)
+/* Adds w to entry (3 a + x, 3 b + y) of A, taking the upper triangle;
+ * rank is block (min(a, b), max(a, b))'s (block_rank). */
+static void matrix_add(cholmod_sparse *A, int rank, int a, int x, int b,
+                       int y, double w)
 {
     if (a > b || (a == b && x > y)) {
         int t = a; a = b; b = t;
         t = x; x = y; y = t;
     }
-    int rank = block_rank(p, a, b);
     const int *Ap = A->p;
     ((double *)A->x)[Ap[3 * b + y] + 3 * rank + x] += w;
+}
+
+/* The rank of unknown v's own block: last among its neighbours. */
+static int diagonal_rank(const struct problem *p, int v)
+{
+    return p->nbr_start[v + 1] - p->nbr_start[v] - 1;
 }
 
 /* Quad q's signed planarity (m) at x, and its derivative by each corner
@@ -353,8 +387,8 @@ static void system_fill(const struct problem *p, cholmod_sparse *A,
                         /* Each pair once: the upper triangle. */
                         if (v[a] > v[b] || (v[a] == v[b] && xa > xb))
                             continue;
-                        matrix_add(p, A, v[a], xa, v[b], xb,
-                                   w_p * g[a][xa] * g[b][xb]);
+                        matrix_add(A, p->quad_rank[q][a][b], v[a], xa, v[b],
+                                   xb, w_p * g[a][xa] * g[b][xb]);
                     }
             }
     }
@@ -364,7 +398,7 @@ static void system_fill(const struct problem *p, cholmod_sparse *A,
             rhs[3 * v + xa] -= x[3 * v + xa] - foot[3 * v + xa] +
                                WEIGHT_ANCHOR * (x[3 * v + xa] - x0[3 * v + xa]);
             for (int xb = xa; xb < 3; xb++)
-                matrix_add(p, A, v, xa, v, xb,
+                matrix_add(A, diagonal_rank(p, v), v, xa, v, xb,
                            n[xa] * n[xb] +
                            (xa == xb ? WEIGHT_ANCHOR + mu : 0));
         }
@@ -380,8 +414,8 @@ static void system_fill(const struct problem *p, cholmod_sparse *A,
                 rhs[3 * v[a] + k] -= WEIGHT_FAIRNESS * D[a] * d;
                 for (int b = 0; b < 3; b++)
                     if (v[a] <= v[b])
-                        matrix_add(p, A, v[a], k, v[b], k,
-                                   WEIGHT_FAIRNESS * D[a] * D[b]);
+                        matrix_add(A, p->triple_rank[t][a][b], v[a], k,
+                                   v[b], k, WEIGHT_FAIRNESS * D[a] * D[b]);
             }
         }
     }
@@ -630,6 +664,12 @@ int planarize(const struct mesh *mesh, const struct nearest_index *index,
             cm.start(&c);
             c.print = 0;      /* core prints nothing: errors come back */
             c.error_handler = NULL;
+            /* CHOLMOD's own nested dissection: 1.94 GFlop a factorization
+             * of the roof's 100 x 100 grid against AMD's 2.28 (METIS's
+             * 2.07). CHOLMOD's default tries METIS only where AMD's
+             * flops per entry of L pass 500, here 389, and keeps AMD. */
+            c.nmethods = 1;
+            c.method[0].ordering = CHOLMOD_NESDIS;
             rc = solve(index, &p, o, x, &cm, &c, &out->iterations,
                        &out->converged, err);
             cm.finish(&c);

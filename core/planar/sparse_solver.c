@@ -19,6 +19,22 @@ static void *function_find(const struct sparse_solver *s, const char *library,
     return f;
 }
 
+/* OpenMP's regions and OpenBLAS's calls on the calling thread alone
+ * (sparse_solver.h: spinning threads on shared cores). Each library is
+ * found among CHOLMOD's own dependencies, where it is loaded; one that is
+ * not there (another BLAS) has no threads of this kind to stop. */
+static void threads_keep_to_one(void *library)
+{
+    void (*openmp_levels)(int);
+    void (*blas_threads)(int);
+    *(void **)&openmp_levels = dlsym(library, "omp_set_max_active_levels");
+    *(void **)&blas_threads = dlsym(library, "openblas_set_num_threads");
+    if (openmp_levels != NULL)
+        openmp_levels(0);
+    if (blas_threads != NULL)
+        blas_threads(1);
+}
+
 int sparse_solver_open(struct sparse_solver *s, struct facet_error *err)
 {
     memset(s, 0, sizeof *s);
@@ -47,6 +63,7 @@ int sparse_solver_open(struct sparse_solver *s, struct facet_error *err)
         !(*(void **)&s->free_sparse =
               function_find(s, library, "cholmod_free_sparse", err)))
         return FACET_EWORK;
+    threads_keep_to_one(s->library);
     return FACET_OK;
 }
 

@@ -17,6 +17,20 @@
  *
  * Loading it twice in a process is cheap (dlopen counts); it is never
  * unloaded (RTLD_NODELETE), for OpenBLAS's threads outlive a dlclose.
+ *
+ * Threads: the solve runs on the calling thread alone. CHOLMOD 3's
+ * supernodal factorization opens OpenMP regions of a fixed 4 threads
+ * (its CHOLMOD_OMP_NUM_THREADS, whatever OMP_NUM_THREADS says) around
+ * loops of a few hundred entries, and OpenBLAS starts one thread per
+ * core; on 2 shared cores those threads spin and yield more than they
+ * compute: one planarization of the roof's 100 x 100 grid took 15 to 19
+ * s of user and 11 to 24 s of system time, against 7 and 1 s on the
+ * calling thread alone (bench_planarize). sparse_solver_open turns both
+ * off through the libraries' own calls: omp_set_max_active_levels(0),
+ * every OpenMP region on the thread that opens it, and
+ * openblas_set_num_threads(1). Both settings are the process's; Facet
+ * uses neither library elsewhere. A BLAS or an OpenMP without those
+ * calls is left as it is.
  */
 #ifndef FACET_SPARSE_SOLVER_H
 #define FACET_SPARSE_SOLVER_H
@@ -42,7 +56,8 @@ struct sparse_solver {
 };
 
 /* Loads CHOLMOD into *s (caller-owned; sparse_solver_close releases it,
- * also after a failure). FACET_EWORK, naming the library and why, when it
+ * also after a failure) and keeps its BLAS and OpenMP on the calling
+ * thread (above). FACET_EWORK, naming the library and why, when it
  * cannot be loaded or lacks a function. */
 int sparse_solver_open(struct sparse_solver *s, struct facet_error *err);
 

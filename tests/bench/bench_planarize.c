@@ -7,8 +7,10 @@
  *
  * Times planarize() alone (the grid's corners and the nearest-point index
  * are made before the clock starts: facet classify makes the corners
- * anyway), the median of 5 runs, wall and CPU; then the same grid's
- * corners and index, timed apart.
+ * anyway), the median of 5 runs, wall and CPU, the calling thread's and
+ * the whole process's (CHOLMOD's OpenMP and OpenBLAS threads spinning on
+ * shared cores showed only in the latter: sparse_solver.h); then the
+ * same grid's corners and index, timed apart.
  */
 #include <stdio.h>
 #include <string.h>
@@ -39,25 +41,29 @@ int main(int argc, char **argv)
     double setup = bench_now() - start;
     struct planarize_options o;
     planarize_options_defaults(&o);
-    double wall[RUNS], cpu[RUNS];
+    double wall[RUNS], cpu[RUNS], process[RUNS];
     struct planarize_result r;
     memset(&r, 0, sizeof r);
     for (int run = 0; run < RUNS; run++) {
         planarize_result_free(&r);
         double w0 = bench_now(), c0 = bench_cpu_now();
+        double p0 = bench_process_cpu_now();
         if (planarize(&surface.mesh, &index, &grid, &o, &r, &err) != FACET_OK)
             bench_die("bench_planarize", "planarize", &err);
         wall[run] = bench_now() - w0;
         cpu[run] = bench_cpu_now() - c0;
+        process[run] = bench_process_cpu_now() - p0;
     }
     double w = bench_median(wall, RUNS), c = bench_median(cpu, RUNS);
+    double all = bench_median(process, RUNS);
     double load[1] = {0};
     getloadavg(load, 1);
     printf("surface: roof, %zu triangles; grid %d x %d: %zu quads, %zu "
            "corners (panels, corners and index: %.3f s)\n",
            surface.mesh.ntriangles, side, side, r.nquads, r.ncorners, setup);
     printf("load average %.2f; planarize, median of %d: %.3f s wall, %.3f s "
-           "CPU of the calling thread\n", load[0], RUNS, w, c);
+           "CPU of the calling thread, %.3f s of the process (every thread, "
+           "user and system)\n", load[0], RUNS, w, c, all);
     printf("reached: planarity %.3g of the diagonal (start %.3g), %zu quads "
            "over 0.1 %%; closeness %.3f mm at most, %.3f mm mean; %d "
            "iterations, %s; %s under %g mm\n", r.max_relative,

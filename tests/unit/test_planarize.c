@@ -11,6 +11,9 @@
  *     (z = x y / 20, sides a, b): it cannot be planarized within 5 mm,
  *     and is reported infeasible with the closeness it reached.
  *
+ * And the solver keeps to the calling thread (core/planar/sparse_solver.h):
+ * asked of OpenMP and OpenBLAS themselves, where CHOLMOD loaded them.
+ *
  * Every truth is measured here, apart from Facet's code: planarity as the
  * height of the fourth corner over the plane of the other three, the
  * distance to the mesh over every triangle by brute force, the distance
@@ -28,7 +31,10 @@
 #include <string.h>
 #include <unistd.h>
 
+#include <dlfcn.h>
+
 #include "core/planar/planarize.h"
+#include "core/planar/sparse_solver.h"
 #include "core/surface/surface.h"
 #include "tests/support/surface_fixture.h"
 
@@ -404,10 +410,34 @@ static void test_nearest_is_brute_force(void **state)
     surface_close(&s);
 }
 
+/* CHOLMOD 3 opens OpenMP regions of 4 threads and OpenBLAS starts one
+ * per core; on 2 shared cores they spun more than they computed. Once
+ * the solver is open, OpenMP runs every region on the thread that opens
+ * it (no active level) and OpenBLAS uses one thread. */
+static void test_solver_keeps_to_the_calling_thread(void **state)
+{
+    (void)state;
+    struct sparse_solver s;
+    struct facet_error err;
+    assert_int_equal(sparse_solver_open(&s, &err), FACET_OK);
+    int (*levels)(void);
+    *(void **)&levels = dlsym(s.library, "omp_get_max_active_levels");
+    assert_non_null(levels);   /* Debian's CHOLMOD is built with OpenMP */
+    assert_int_equal(levels(), 0);
+    int (*blas_threads)(void);
+    *(void **)&blas_threads = dlsym(s.library, "openblas_get_num_threads");
+    if (blas_threads != NULL)
+        assert_int_equal(blas_threads(), 1);
+    else
+        printf("the system BLAS is not OpenBLAS: its threads not asked\n");
+    sparse_solver_close(&s);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_nearest_is_brute_force),
+        cmocka_unit_test(test_solver_keeps_to_the_calling_thread),
         cmocka_unit_test(test_cylinder_needs_no_move),
         cmocka_unit_test(test_revolution_planarizes),
         cmocka_unit_test(test_revolution_from_pushed_corners),
