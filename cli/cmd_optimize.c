@@ -484,7 +484,7 @@ static int optimize_with(struct optimize_command *c, struct facet_error *err)
     /* Warnings come before the progress bar starts. */
     struct study_hooks hooks = {&view, progress_show_stage, show_progress,
                                 signals_stop_hook, show_started,
-                                progress_show_warning};
+                                progress_show_warning, progress_show_note};
     enum optimize_outcome outcome;
     int64_t run = c->run_number;
     if (c->resume && c->surface != NULL)
