@@ -47,6 +47,35 @@ static int parse(void *context, const struct facet_stop *stop,
                                   p->want->units, stop, p->project, err);
 }
 
+/* What reading the cache parses, beside the files' hashes: the building,
+ * the key it was made for, and why it is not used (rc not FACET_OK). */
+struct cache_read {
+    const struct study_prepare *want;
+    const char *path;
+    struct project *project;
+    char found[65];
+    struct facet_error why;
+    int rc;
+};
+
+/* A cache refused is no error of the run: its reason is kept apart, and
+ * the parse succeeds so that the files' hashes still decide the run's. */
+static int cache_parse(void *context, const struct facet_stop *stop,
+                       struct facet_error *err)
+{
+    (void)stop;
+    (void)err;
+    struct cache_read *c = context;
+    c->rc = project_cache_read_unkeyed(c->path, c->found, c->want->files,
+                                       c->want->nfiles, c->want->units,
+                                       c->project, &c->why);
+    if (c->rc == FACET_EWORK) {
+        *err = c->why;
+        return FACET_EWORK;
+    }
+    return FACET_OK;
+}
+
 static int hash_files(const struct study_prepare *want,
                       const struct facet_stop *stop, char (*digest)[65],
                       struct facet_error *err)
@@ -101,16 +130,27 @@ int study_project_prepared(const struct study_prepare *want,
     int hashed = 0, rc = FACET_OK;
     char key[65];
     if (cached && access(path, F_OK) == 0) {
+        /* The files are hashed while the cache is read (study_read_hashed,
+         * as when the files themselves are read): the key is compared
+         * once both are done, and a cache of another is closed unused. */
         study_stage(hooks, "reading the prepared building");
-        rc = hash_files(want, &stop, digest, err);
+        struct cache_read context = {want, path, project, "", {0}, FACET_OK};
+        if (want->known != NULL) {
+            rc = hash_files(want, &stop, digest, err);
+            if (rc == FACET_OK)
+                cache_parse(&context, &stop, err);
+        } else {
+            rc = study_read_hashed(want->files, want->nfiles, digest,
+                                   cache_parse, &context, &stop, err);
+        }
         if (rc != FACET_OK)
-            return rc;
+            return rc;  /* a file that cannot be read, a stop, no memory */
         hashed = 1;
         project_cache_key((const char (*)[65])digest, want->nfiles,
                           &settings, key);
-        struct facet_error why;
-        if (project_cache_read(path, key, want->files, want->nfiles,
-                               want->units, project, &why) == FACET_OK) {
+        if (context.rc == FACET_OK && strcmp(context.found, key) != 0)
+            context.rc = project_cache_stale(path, &context.why);
+        if (context.rc == FACET_OK) {
             if (!want->units_named)
                 rc = project_units_check(project, err);
             if (rc == FACET_OK)
@@ -124,8 +164,10 @@ int study_project_prepared(const struct study_prepare *want,
             return rc;
         }
         project_close(project);
-        char line[sizeof why.message + 64];
-        snprintf(line, sizeof line, "%s; preparing it again", why.message);
+        rc = FACET_OK;
+        char line[sizeof context.why.message + 64];
+        snprintf(line, sizeof line, "%s; preparing it again",
+                 context.why.message);
         note(hooks, line);
     }
     study_stage(hooks, "reading the project");

@@ -21,7 +21,9 @@
 
 #define MAGIC "FACETPRE"
 #define BYTE_ORDER_MARK 0x01020304u
-#define NAME_MAX_BYTES 4096  /* a surface's name, as the store keeps it */
+#define NAME_MAX_BYTES 4096
+#define PROJECT_CACHE_STALE \
+    "stale (made from other files, settings or another build of Facet)"  /* a surface's name, as the store keeps it */
 
 /* ---- the key and the name ---- */
 
@@ -629,11 +631,13 @@ static int refuse(const char *name, const char *why,
                            why);
 }
 
-int project_cache_read_file(FILE *file, unsigned long long size,
-                            const char *name, const char key[65],
-                            const char *const *paths, size_t npaths,
-                            enum mesh_units units, struct project *out,
-                            struct facet_error *err)
+/* Reads file (size bytes) named name: with want_key, refused unless its
+ * key is that; without, its key is copied into found_key. */
+static int read_stream(FILE *file, unsigned long long size, const char *name,
+                       const char *want_key, char found_key[65],
+                       const char *const *paths, size_t npaths,
+                       enum mesh_units units, struct project *out,
+                       struct facet_error *err)
 {
     memset(out, 0, sizeof *out);
     unsigned char header[PROJECT_CACHE_HEADER];
@@ -656,9 +660,12 @@ int project_cache_read_file(FILE *file, unsigned long long size,
                  (unsigned)version, PROJECT_CACHE_VERSION);
         return refuse(name, why, err);
     }
-    if (memcmp(header + 24, key, 64) != 0)
-        return refuse(name, "stale (made from other files, settings or "
-                      "another build of Facet)", err);
+    if (want_key != NULL && memcmp(header + 24, want_key, 64) != 0)
+        return refuse(name, PROJECT_CACHE_STALE, err);
+    if (want_key == NULL) {
+        memcpy(found_key, header + 24, 64);
+        found_key[64] = '\0';
+    }
     if (payload != size - sizeof header)
         return refuse(name, payload > size - sizeof header
                       ? "truncated (shorter than its header says)"
@@ -701,10 +708,20 @@ int project_cache_read_file(FILE *file, unsigned long long size,
     return rc;
 }
 
-int project_cache_read(const char *path, const char key[65],
-                       const char *const *paths, size_t npaths,
-                       enum mesh_units units, struct project *out,
-                       struct facet_error *err)
+int project_cache_read_file(FILE *file, unsigned long long size,
+                            const char *name, const char key[65],
+                            const char *const *paths, size_t npaths,
+                            enum mesh_units units, struct project *out,
+                            struct facet_error *err)
+{
+    return read_stream(file, size, name, key, NULL, paths, npaths, units,
+                       out, err);
+}
+
+static int read_path(const char *path, const char *want_key,
+                     char found_key[65], const char *const *paths,
+                     size_t npaths, enum mesh_units units,
+                     struct project *out, struct facet_error *err)
 {
     memset(out, 0, sizeof *out);
     FILE *file = fopen(path, "rb");
@@ -716,9 +733,30 @@ int project_cache_read(const char *path, const char key[65],
     if (fstat(fileno(file), &st) != 0 || !S_ISREG(st.st_mode))
         rc = refuse(path, "not a regular file", err);
     else
-        rc = project_cache_read_file(file, (unsigned long long)st.st_size,
-                                     path, key, paths, npaths, units, out,
-                                     err);
+        rc = read_stream(file, (unsigned long long)st.st_size, path,
+                         want_key, found_key, paths, npaths, units, out,
+                         err);
     fclose(file);
     return rc;
+}
+
+int project_cache_read(const char *path, const char key[65],
+                       const char *const *paths, size_t npaths,
+                       enum mesh_units units, struct project *out,
+                       struct facet_error *err)
+{
+    return read_path(path, key, NULL, paths, npaths, units, out, err);
+}
+
+int project_cache_read_unkeyed(const char *path, char key[65],
+                               const char *const *paths, size_t npaths,
+                               enum mesh_units units, struct project *out,
+                               struct facet_error *err)
+{
+    return read_path(path, NULL, key, paths, npaths, units, out, err);
+}
+
+int project_cache_stale(const char *path, struct facet_error *err)
+{
+    return refuse(path, PROJECT_CACHE_STALE, err);
 }

@@ -108,6 +108,18 @@ int project_cache_read(const char *path, const char key[65],
                        enum mesh_units units, struct project *out,
                        struct facet_error *err);
 
+/* project_cache_read without the key: every other check made, the key
+ * the file holds copied into key, for a caller that hashes the files
+ * while the cache is read and compares the keys after (a file of another
+ * key must then be closed unused: project_cache_stale says so). */
+int project_cache_read_unkeyed(const char *path, char key[65],
+                               const char *const *paths, size_t npaths,
+                               enum mesh_units units, struct project *out,
+                               struct facet_error *err);
+
+/* The FACET_EINPUT project_cache_read gives a cache of another key. */
+int project_cache_stale(const char *path, struct facet_error *err);
+
 /* project_cache_read of file, size bytes from its current position,
  * named name in messages (the fuzz target reads from memory). */
 int project_cache_read_file(FILE *file, unsigned long long size,
