@@ -3,8 +3,9 @@
  * read its cache (core/project/project_cache.h) or to read and prepare
  * its files and keep the result beside the database.
  *
- * The cache is a file beside the database, named from the files' paths
- * and the settings (project_cache_path), keyed by the files' SHA-256s,
+ * The cache is a file in the database's folder, named from the files'
+ * paths and the settings (project_cache_path), shared by every database
+ * there, keyed by the files' SHA-256s,
  * the settings and the running program's own SHA-256 (a rebuilt Facet
  * may prepare otherwise). A cache that is missing, damaged, truncated,
  * stale or foreign is never used: the building is prepared from its

@@ -67,7 +67,12 @@ int project_cache_path(const char *db_path, const char *const *paths,
         sha256_update(&h, paths[i], strlen(paths[i]) + 1);
     char name[65];
     sha256_hex(&h, name);
-    int n = snprintf(out, size, "%s.prepared-%.16s", db_path, name);
+    /* Beside the database, in its folder: every database there (a
+     * node's shards, a copy) shares it. */
+    const char *slash = strrchr(db_path, '/');
+    int folder = slash != NULL ? (int)(slash - db_path) + 1 : 0;
+    int n = snprintf(out, size, "%.*sfacet-prepared-%.16s", folder,
+                     db_path, name);
     if (n < 0 || (size_t)n >= size)
         return facet_error_set(err, FACET_EINPUT,
             "%.200s: path too long for its prepared building's cache",

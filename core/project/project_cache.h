@@ -78,12 +78,13 @@ void project_cache_key(const char (*digest)[65], size_t nfiles,
                        const struct project_cache_settings *settings,
                        char key[65]);
 
-/* The cache's path beside the database db_path: db_path, then
- * ".prepared-" and 16 hex digits of the SHA-256 of the files' paths (as
- * given: make them absolute first) and the settings, into out (size
+/* The cache's path beside the database db_path: in its folder,
+ * "facet-prepared-" and 16 hex digits of the SHA-256 of the files' paths
+ * (as given: make them absolute first) and the settings, into out (size
  * bytes). One name per building and settings, so that a building whose
- * files change replaces its cache instead of adding one. FACET_EINPUT
- * when it does not fit. */
+ * files change replaces its cache instead of adding one, and every
+ * database of the folder (a node's shards) shares it. FACET_EINPUT when
+ * it does not fit. */
 int project_cache_path(const char *db_path, const char *const *paths,
                        size_t npaths,
                        const struct project_cache_settings *settings,

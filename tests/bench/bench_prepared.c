@@ -113,8 +113,8 @@ static long long caches(const char *folder, int remove)
 {
     char command[512];
     snprintf(command, sizeof command,
-             remove ? "rm -f %s/runs.db.prepared-*"
-                    : "cat %s/runs.db.prepared-* 2>/dev/null | wc -c",
+             remove ? "rm -f %s/facet-prepared-*"
+                    : "cat %s/facet-prepared-* 2>/dev/null | wc -c",
              folder);
     FILE *p = popen(command, "r");
     if (p == NULL)

@@ -10,11 +10,12 @@
 sql() { sqlite3 -batch "$1" "$2"; }
 
 four_surfaces || exit 1
+mkdir -p "$WORK/fresh" "$WORK/cached"
 ARGS=(--module 1.5:3:0.5x1.5:3:0.5 --threshold 2:6:2 --method exhaustive)
 
 # The columns of table but run: every number an option has.
 columns() {
-    sql "$WORK/fresh.db" "SELECT group_concat(name, ', ') FROM pragma_table_info('$1') WHERE name <> 'run'"
+    sql "$WORK/fresh/runs.db" "SELECT group_concat(name, ', ') FROM pragma_table_info('$1') WHERE name <> 'run'"
 }
 
 # identical NAME RUN: run RUN of cached.db has the options and surface
@@ -23,7 +24,7 @@ identical() {
     local name=$1 r=$2 t cols diff
     for t in options option_surfaces; do
         cols=$(columns "$t")
-        diff=$(sqlite3 -batch "$WORK/cached.db" "ATTACH '$WORK/fresh.db' AS f;
+        diff=$(sqlite3 -batch "$WORK/cached/runs.db" "ATTACH '$WORK/fresh/runs.db' AS f;
             SELECT count(*) FROM (SELECT $cols FROM $t WHERE run = $r
                                   EXCEPT SELECT $cols FROM f.$t WHERE run = 1);
             SELECT count(*) FROM (SELECT $cols FROM f.$t WHERE run = 1
@@ -38,27 +39,27 @@ identical() {
     done
 }
 
-# 1. A run without a cache, the reference; it leaves one beside its
-# database.
-expect "a first run" 0 "$FACET" optimize "$WORK/four.obj" --db "$WORK/fresh.db" "${ARGS[@]}"
+# 1. A run without a cache, the reference (a folder of its own: a cache
+# is shared by the databases of its folder); it leaves one there.
+expect "a first run" 0 "$FACET" optimize "$WORK/four.obj" --db "$WORK/fresh/runs.db" "${ARGS[@]}"
 if grep -q "reused the prepared building" "$ERR"; then
     fail "a first run reuses nothing"
 else
     pass "a first run reuses nothing"
 fi
-same "a first run keeps its prepared building beside the database" \
-    "$(ls "$WORK"/fresh.db.prepared-* 2>/dev/null | wc -l)" 1
+same "a first run keeps its prepared building in its database's folder" \
+    "$(ls "$WORK"/fresh/facet-prepared-* 2>/dev/null | wc -l)" 1
 
 # 2. Twice into cached.db: the second reuses the first's preparation.
-expect "a run into cached.db" 0 "$FACET" optimize "$WORK/four.obj" --db "$WORK/cached.db" "${ARGS[@]}"
-expect "a second run into cached.db" 0 "$FACET" optimize "$WORK/four.obj" --db "$WORK/cached.db" "${ARGS[@]}"
-if grep -qE "^facet: note: reused the prepared building .*cached\.db\.prepared-[0-9a-f]{16}$" "$ERR"; then
+expect "a run into cached.db" 0 "$FACET" optimize "$WORK/four.obj" --db "$WORK/cached/runs.db" "${ARGS[@]}"
+expect "a second run into cached.db" 0 "$FACET" optimize "$WORK/four.obj" --db "$WORK/cached/runs.db" "${ARGS[@]}"
+if grep -qE "^facet: note: reused the prepared building .*cached/facet-prepared-[0-9a-f]{16}$" "$ERR"; then
     pass "the second run says it reused the prepared building"
 else
     fail "the second run says it reused the prepared building"
 fi
 identical "the run that reused it" 2
-CACHE=$(ls "$WORK"/cached.db.prepared-*)
+CACHE=$(ls "$WORK"/cached/facet-prepared-*)
 
 # 3. A byte flipped in the middle of the cache: refused, rebuilt, the
 # same options; the cache made whole again.
@@ -69,7 +70,7 @@ b = bytearray(open(p, "rb").read())
 b[len(b) // 2] ^= 0x10
 open(p, "wb").write(b)
 PY
-expect "a run over a damaged cache" 0 "$FACET" optimize "$WORK/four.obj" --db "$WORK/cached.db" "${ARGS[@]}"
+expect "a run over a damaged cache" 0 "$FACET" optimize "$WORK/four.obj" --db "$WORK/cached/runs.db" "${ARGS[@]}"
 if [ "$(grep -c "note: .*prepared building not used: damaged.*; preparing it again" "$ERR")" -eq 1 ]; then
     pass "a damaged cache: one note saying so"
 else
@@ -79,14 +80,14 @@ identical "the run over a damaged cache" 3
 
 # 4. Cut short: the same.
 truncate -s -100 "$CACHE"
-expect "a run over a truncated cache" 0 "$FACET" optimize "$WORK/four.obj" --db "$WORK/cached.db" "${ARGS[@]}"
+expect "a run over a truncated cache" 0 "$FACET" optimize "$WORK/four.obj" --db "$WORK/cached/runs.db" "${ARGS[@]}"
 if grep -q "note: .*prepared building not used: truncated" "$ERR"; then
     pass "a truncated cache: a note saying so"
 else
     fail "a truncated cache: a note saying so"
 fi
 identical "the run over a truncated cache" 4
-expect "a run after the rebuild" 0 "$FACET" optimize "$WORK/four.obj" --db "$WORK/cached.db" "${ARGS[@]}"
+expect "a run after the rebuild" 0 "$FACET" optimize "$WORK/four.obj" --db "$WORK/cached/runs.db" "${ARGS[@]}"
 if grep -q "reused the prepared building" "$ERR"; then
     pass "the rebuilt cache is reused"
 else

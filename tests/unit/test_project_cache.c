@@ -469,11 +469,13 @@ static struct notes prepared(const char *db, const char *obj, int flip,
     return n;
 }
 
-/* The cache files beside db (at most 2) into path[]; returns how many. */
+/* The cache files in db's folder (at most 2) into path[]; returns how
+ * many. */
 static int caches(const char *db, char path[2][256])
 {
     char command[256];
-    snprintf(command, sizeof command, "ls %s.prepared-* 2>/dev/null", db);
+    snprintf(command, sizeof command, "ls %.*s/facet-prepared-* 2>/dev/null",
+             (int)(strrchr(db, '/') - db), db);
     FILE *ls = popen(command, "r");
     assert_non_null(ls);
     int n = 0;
