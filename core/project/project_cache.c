@@ -707,6 +707,8 @@ static int read_stream(FILE *file, unsigned long long size, const char *name,
     }
     int rc = r.why != NULL ? refuse(name, r.why, err)
                            : build(read, got, paths, npaths, units, out, err);
+    if (rc == FACET_EINPUT && r.why == NULL)  /* no mesh its files give */
+        rc = refuse(name, "damaged (a surface refused as a mesh)", err);
     for (size_t i = 0; read != NULL && i < got; i++)
         read_surface_free(&read[i]);
     free(read);
