@@ -444,15 +444,17 @@ static void on_note(void *context, const char *text)
         fail_msg("an unexpected note: %s", text);
 }
 
-/* study_project_prepared of obj with db beside; compares with a fresh
- * preparation and returns what the notes said. */
-static struct notes prepared(const char *db, const char *obj, int flip,
-                             enum param_method uv)
+/* study_project_prepared of obj with db beside, its SHA-256 known as
+ * known (a resume's) or NULL (hashed); compares with a fresh preparation
+ * and returns what the notes said. */
+static struct notes prepared_known(const char *db, const char *obj,
+                                   int flip, enum param_method uv,
+                                   const char (*known)[65])
 {
     struct notes n;
     memset(&n, 0, sizeof n);
     struct study_hooks hooks = {&n, NULL, NULL, NULL, NULL, NULL, on_note};
-    struct study_prepare want = {db, &obj, 1, NULL, UNITS_M, 1, flip, uv};
+    struct study_prepare want = {db, &obj, 1, known, UNITS_M, 1, flip, uv};
     struct project p, q;
     char digest[1][65];
     struct facet_error err;
@@ -461,12 +463,18 @@ static struct notes prepared(const char *db, const char *obj, int flip,
         fail_msg("%s", err.message);
     char truth[65];
     assert_int_equal(sha256_file(obj, truth, &err), FACET_OK);
-    assert_string_equal(digest[0], truth);
+    assert_string_equal(digest[0], known != NULL ? known[0] : truth);
     fresh(obj, UNITS_M, flip, uv, &q);
     same_project(&q, &p);
     project_close(&p);
     project_close(&q);
     return n;
+}
+
+static struct notes prepared(const char *db, const char *obj, int flip,
+                             enum param_method uv)
+{
+    return prepared_known(db, obj, flip, uv, NULL);
 }
 
 /* The cache files in db's folder (at most 2) into path[]; returns how
@@ -541,6 +549,36 @@ static void test_study_reuses_and_rebuilds(void **state)
     assert_int_equal(prepared(db, obj, 0, PARAM_AUTO).reused, 1);
 }
 
+/* A resume knows its files' SHA-256s (it found them by them): the cache
+ * is keyed by those, and one made from other bytes is stale. */
+static void test_resume_uses_known_digests(void **state)
+{
+    (void)state;
+    char obj[128], db[160], truth[1][65];
+    snprintf(obj, sizeof obj, "%s/sheets_resume.obj", dir);
+    snprintf(db, sizeof db, "%s/resume/runs.db", dir);
+    char folder[160];
+    snprintf(folder, sizeof folder, "%s/resume", dir);
+    assert_int_equal(mkdir(folder, 0700), 0);
+    write_sheets(obj, 4, -1);
+    struct facet_error err;
+    assert_int_equal(sha256_file(obj, truth[0], &err), FACET_OK);
+    struct notes n = prepared_known(db, obj, 0, PARAM_AUTO,
+                                    (const char (*)[65])truth);
+    assert_int_equal(n.reused + n.again + n.not_kept, 0);
+    n = prepared_known(db, obj, 0, PARAM_AUTO, (const char (*)[65])truth);
+    assert_int_equal(n.reused, 1);
+    n = prepared(db, obj, 0, PARAM_AUTO);  /* a new run hashes: the same */
+    assert_int_equal(n.reused, 1);
+    /* The bytes changed under the cache: a resume's SHA-256 is the new
+     * one (it checks them), and the cache is stale. */
+    write_sheets(obj, 4, 5);
+    assert_int_equal(sha256_file(obj, truth[0], &err), FACET_OK);
+    n = prepared_known(db, obj, 0, PARAM_AUTO, (const char (*)[65])truth);
+    assert_int_equal(n.again, 1);
+    assert_non_null(strstr(n.last, "stale"));
+}
+
 /* A cache that cannot be written is a note; the building is prepared. */
 static void test_unwritable_cache_is_a_note(void **state)
 {
@@ -563,6 +601,7 @@ int main(void)
         cmocka_unit_test(test_damage_and_truncation_are_refused),
         cmocka_unit_test(test_another_key_is_stale),
         cmocka_unit_test(test_study_reuses_and_rebuilds),
+        cmocka_unit_test(test_resume_uses_known_digests),
         cmocka_unit_test(test_unwritable_cache_is_a_note),
     };
     return cmocka_run_group_tests(tests, make_dir, remove_dir);
