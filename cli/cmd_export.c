@@ -151,7 +151,7 @@ static int export_main(int argc, char **argv, struct facet_error *err)
      * written. */
     struct study_hooks hooks = {NULL, progress_show_stage, NULL,
                                 signals_stop_hook, NULL,
-                                progress_show_warning};
+                                progress_show_warning, NULL};
     request.hooks = &hooks;
     signals_catch_stop();
     if (rc == FACET_OK)

@@ -40,7 +40,8 @@ static int merge_main(int argc, char **argv, struct facet_error *err)
             "SHARD.db...)");
     struct merge_report report;
     struct study_hooks hooks = {NULL, progress_show_stage, NULL,
-                                signals_stop_hook, NULL, progress_show_warning};
+                                signals_stop_hook, NULL, progress_show_warning,
+                                NULL};
     if (rc == FACET_OK) {
         /* Ctrl-C or SIGTERM stops the merge between its steps: its side
          * file removed, OUT.db as it was. */

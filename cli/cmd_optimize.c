@@ -38,11 +38,25 @@
 
 /* --- what the user sees while it runs --- */
 
+#define OPTIMIZE_NOTES 4
+
 struct optimize_view {
     struct progress bar;
     int bar_started;
     int64_t first_done;
+    /* The study's notes (a prepared building reused or rebuilt), told
+     * once the run is done: a run that fails says its one error line. */
+    int nnotes;
+    char notes[OPTIMIZE_NOTES][1024];
 };
+
+static void keep_note(void *context, const char *text)
+{
+    struct optimize_view *view = context;
+    if (view->nnotes < OPTIMIZE_NOTES)
+        snprintf(view->notes[view->nnotes++], sizeof view->notes[0], "%s",
+                 text);
+}
 
 static void show_progress(void *context, const struct optimize_progress *p)
 {
@@ -512,7 +526,7 @@ static int optimize_with(struct optimize_command *c, struct facet_error *err)
     /* Warnings come before the progress bar starts. */
     struct study_hooks hooks = {&view, progress_show_stage, show_progress,
                                 signals_stop_hook, show_started,
-                                progress_show_warning};
+                                progress_show_warning, keep_note};
     enum optimize_outcome outcome;
     int64_t run = c->run_number;
     if (c->resume && c->surface != NULL)
@@ -534,6 +548,8 @@ static int optimize_with(struct optimize_command *c, struct facet_error *err)
                 "surface; no run was recorded\n");
         return signals_stop_status();
     }
+    for (int k = 0; rc == FACET_OK && k < view.nnotes; k++)
+        progress_show_note(NULL, view.notes[k]);
     if (rc == FACET_OK) {
         if (outcome == OPTIMIZE_INTERRUPTED)
             fprintf(stderr, "facet: run %lld interrupted; every evaluated "

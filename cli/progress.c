@@ -174,6 +174,12 @@ void progress_show_stage(void *context, const char *what)
         shown_line(stderr, "facet: %s", what);
 }
 
+void progress_show_note(void *context, const char *text)
+{
+    (void)context;
+    shown_line(stderr, "facet: note: %s", text);
+}
+
 void progress_show_warning(void *context, const char *text)
 {
     (void)context;

@@ -72,8 +72,10 @@ double progress_now(void);
 /* The stage and warning hooks of a study (study/study.h) on stderr:
  * "facet: STAGE" on a terminal only (in a log the progress lines say
  * enough, and an error stays the one line on stderr), "facet: warning:
- * TEXT" always. context is not used. */
+ * TEXT" always, "facet: note: TEXT" (study_hooks' note) always too.
+ * context is not used. */
 void progress_show_stage(void *context, const char *what);
 void progress_show_warning(void *context, const char *text);
+void progress_show_note(void *context, const char *text);
 
 #endif

@@ -1122,7 +1122,8 @@ int study_start(struct store *store, const struct study_request *request,
     struct surface_row *surfaces = NULL;
     int is_project = request->nfiles > 0;
     if (is_project) {
-        rc = study_project_read(request, hooks, &project, &surfaces, &run, err);
+        rc = study_project_read(request, store_path(store), hooks, &project,
+                                &surfaces, &run, err);
         if (rc == FACET_OK)
             rc = study_project_search(request, &project, &search, err);
         for (size_t i = 0; rc == FACET_OK && i < project.nsurfaces; i++) {

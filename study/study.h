@@ -41,6 +41,10 @@ struct study_hooks {
      * is found; the same lines are stored with the run (runs.warnings).
      * NULL: not told. */
     void (*warning)(void *context, const char *text);
+    /* Something the user may like to know that does not bear on the
+     * numbers (a prepared building reused from its cache, or why it was
+     * prepared again), told once, not stored. NULL: not told. */
+    void (*note)(void *context, const char *text);
 };
 
 /* What a new run is made of. */

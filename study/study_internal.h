@@ -45,6 +45,7 @@ int study_surface_candidates(const char *db_path, const char *stored,
  * building's area and triangles, the first surface's UV, the module
  * range. Release project with project_close, also after a failure. */
 int study_project_read(const struct study_request *request,
+                       const char *db_path,
                        const struct study_hooks *hooks,
                        struct project *project, struct surface_row **rows,
                        struct run_info *run, struct facet_error *err);

@@ -6,6 +6,7 @@
  * surface's does (study.c). See study.h.
  */
 #include "study_internal.h"
+#include "study/study_prepared.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -18,21 +19,6 @@
 #include "core/panel/panel.h"
 #include "core/surface/coarse_mesh.h"
 #include "core/base/units.h"
-
-/* What reading a project parses: its files into the project. */
-struct project_read {
-    const struct study_request *request;
-    struct project *project;
-};
-
-static int project_parse(void *context, const struct facet_stop *stop,
-                         struct facet_error *err)
-{
-    const struct project_read *r = context;
-    return project_open_stoppable(r->request->files, r->request->nfiles,
-                                  r->request->mesh.units, stop, r->project,
-                                  err);
-}
 
 /* The surface rows of a prepared project whose files' digests are
  * digest[] into *rows (malloc'ed). */
@@ -154,6 +140,7 @@ void study_project_warnings(const struct study_request *request,
  * the first file's SHA-256 (its path is there already), the building's
  * area and triangles, the first surface's UV, the module range. */
 int study_project_read(const struct study_request *request,
+                        const char *db_path,
                         const struct study_hooks *hooks,
                         struct project *project, struct surface_row **rows,
                         struct run_info *run, struct facet_error *err)
@@ -166,19 +153,13 @@ int study_project_read(const struct study_request *request,
     char (*digest)[65] = calloc(request->nfiles, sizeof *digest);
     if (digest == NULL)
         return facet_error_set(err, FACET_EWORK, "out of memory");
-    study_stage(hooks, "reading the project");
-    struct facet_stop stop = study_stop(hooks);
-    struct project_read read = {request, project};
-    int rc = study_read_hashed(request->files, request->nfiles, digest,
-                               project_parse, &read, &stop, err);
-    if (rc == FACET_OK && !request->units_named)
-        rc = project_units_check(project, err);
+    struct study_prepare want = {db_path, request->files, request->nfiles,
+                                 NULL, request->mesh.units,
+                                 request->units_named, request->flip_normals,
+                                 request->uv};
+    int rc = study_project_prepared(&want, hooks, project, digest, err);
     if (rc == FACET_OK) {
-        study_stage(hooks, "preparing the project's surfaces (UV, curvature)");
-        rc = project_prepare_stoppable(project, request->flip_normals,
-                                       request->uv, &stop, err);
-    }
-    if (rc == FACET_OK) {
+        struct facet_stop stop = study_stop(hooks);
         study_stage(hooks, "finding the seams between the surfaces");
         rc = project_seams_keep(project, request->weld, &stop, err);
     }
@@ -275,9 +256,10 @@ int study_project_reopen(struct store *store, const struct run_info *run,
     }
     /* The files in order, each once, and where each is now. */
     char (*place)[4096] = calloc(n, sizeof *place);
+    char (*known)[65] = calloc(n, sizeof *known);
     const char **files = calloc(n, sizeof *files);
     size_t nfiles = 0;
-    if (place == NULL || files == NULL)
+    if (place == NULL || known == NULL || files == NULL)
         rc = facet_error_set(err, FACET_EWORK, "out of memory");
     for (size_t i = 0; rc == FACET_OK && i < n; i++) {
         if (i > 0 && strcmp(rows[i].file, rows[i - 1].file) == 0)
@@ -293,6 +275,7 @@ int study_project_reopen(struct store *store, const struct run_info *run,
             rc = sha256_file_stoppable(candidate[k], &stop, digest, err);
             if (rc == FACET_OK && strcmp(digest, rows[i].file_sha256) == 0) {
                 memcpy(place[nfiles], candidate[k], sizeof candidate[k]);
+                memcpy(known[nfiles], digest, sizeof digest);
                 files[nfiles] = place[nfiles];
                 nfiles++;
                 found = 1;
@@ -309,13 +292,20 @@ int study_project_reopen(struct store *store, const struct run_info *run,
                 rows[i].file, (long long)run->id, rows[i].file_sha256);
     }
     if (rc == FACET_OK)
-        rc = project_open_stoppable(files, nfiles, run->units, &stop,
-                                    project, err);
-    if (rc == FACET_OK)
         rc = store_run_setting_check(run, RUN_SETTING_UV, err);
-    if (rc == FACET_OK)
-        rc = project_prepare_stoppable(project, run->flip_normals, run->uv,
-                                       &stop, err);
+    if (rc == FACET_OK) {
+        /* The files were found by their SHA-256s: known, not hashed
+         * again. The units were the run's own, checked when it began. */
+        struct study_prepare want = {store_path(store), files, nfiles,
+                                     (const char (*)[65])known,
+                                     run->units, 1, run->flip_normals,
+                                     run->uv};
+        char (*digest)[65] = calloc(nfiles ? nfiles : 1, sizeof *digest);
+        rc = digest == NULL
+            ? facet_error_set(err, FACET_EWORK, "out of memory")
+            : study_project_prepared(&want, hooks, project, digest, err);
+        free(digest);
+    }
     /* Its seams at its welding tolerance; a run made before seams were
      * measured (NULL) finds none, so its options stay alike. */
     if (rc == FACET_OK && run->weld_mm > 0)
@@ -344,6 +334,7 @@ int study_project_reopen(struct store *store, const struct run_info *run,
                                                     rows[i].grid_nv};
     }
     free(place);
+    free(known);
     free(files);
     free(rows);
     return rc;

@@ -85,7 +85,8 @@ static void *work(void *context)
     int rc = store_open(job->db_path, &store, &err);
     if (rc == FACET_OK) {
         struct study_hooks hooks = {job, on_stage, on_progress,
-                                    on_should_stop, on_started, on_warning};
+                                    on_should_stop, on_started, on_warning,
+                                    on_stage};
         if (job->resume > 0) {
             run = job->resume;
             rc = study_resume(store, run, &hooks, &outcome, &err);

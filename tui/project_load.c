@@ -38,7 +38,8 @@ static void *work(void *context)
     if (rc == FACET_OK)
         rc = store_run_get(store, load->state.run, &run, &err);
     if (rc == FACET_OK) {
-        struct study_hooks hooks = {load, on_stage, NULL, NULL, NULL, NULL};
+        struct study_hooks hooks = {load, on_stage, NULL, NULL, NULL, NULL,
+                                    on_stage};
         rc = study_project_view_open(store, &run, &hooks, &load->view,
                                      &err);
     }

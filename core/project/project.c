@@ -366,6 +366,7 @@ struct prepare_job {
     size_t first, step;
     int flip_normals;
     enum param_method method;
+    int rest_only;                    /* UV and curvature already set */
     const struct facet_stop *stop;
     struct parallel_failure failure;  /* the surface that failed */
 };
@@ -376,9 +377,11 @@ static void prepare_run(void *argument)
     parallel_failure_clear(&job->failure);
     for (size_t i = job->first; i < job->project->nsurfaces; i += job->step) {
         struct project_surface *s = &job->project->surfaces[i];
-        int rc = surface_prepare_stoppable(&s->surface, job->flip_normals,
-                                           job->method, job->stop,
-                                           &job->failure.err);
+        int rc = job->rest_only
+            ? surface_prepare_rest(&s->surface, job->stop, &job->failure.err)
+            : surface_prepare_stoppable(&s->surface, job->flip_normals,
+                                        job->method, job->stop,
+                                        &job->failure.err);
         if (rc != FACET_OK) {
             job->failure.piece = i;
             job->failure.rc = rc;
@@ -396,10 +399,11 @@ int project_prepare(struct project *project, int flip_normals,
                                      err);
 }
 
-int project_prepare_stoppable(struct project *project, int flip_normals,
-                              enum param_method method,
-                              const struct facet_stop *stop,
-                              struct facet_error *err)
+/* Deals the surfaces round the threads: the whole preparation, or (rest_only)
+ * what follows the UV and curvature. */
+static int prepare_all(struct project *project, int flip_normals,
+                       enum param_method method, int rest_only,
+                       const struct facet_stop *stop, struct facet_error *err)
 {
     /* Surfaces are independent: dealt round the threads, so that large
      * and small ones mix. The error reported is the first surface's in
@@ -409,7 +413,8 @@ int project_prepare_stoppable(struct project *project, int flip_normals,
                           project->nsurfaces);
     for (int k = 0; k < n; k++)
         jobs[k] = (struct prepare_job){project, (size_t)k, (size_t)n,
-                                       flip_normals, method, stop, {0}};
+                                       flip_normals, method, rest_only,
+                                       stop, {0}};
     parallel_run(jobs, sizeof jobs[0], n, prepare_run);
     /* A stop heard by any thread is the answer: the surface that failed
      * first in project order may only have been cut short by it. */
@@ -417,6 +422,21 @@ int project_prepare_stoppable(struct project *project, int flip_normals,
         if (jobs[k].failure.rc == FACET_ESTOP)
             return facet_stop_error(err);
     return parallel_first_failure(&jobs[0].failure, sizeof jobs[0], n, err);
+}
+
+int project_prepare_stoppable(struct project *project, int flip_normals,
+                              enum param_method method,
+                              const struct facet_stop *stop,
+                              struct facet_error *err)
+{
+    return prepare_all(project, flip_normals, method, 0, stop, err);
+}
+
+int project_prepare_rest_stoppable(struct project *project,
+                                   const struct facet_stop *stop,
+                                   struct facet_error *err)
+{
+    return prepare_all(project, 0, PARAM_AUTO, 1, stop, err);
 }
 
 int project_units_check(const struct project *project,

@@ -127,6 +127,14 @@ int project_prepare_stoppable(struct project *project, int flip_normals,
                               const struct facet_stop *stop,
                               struct facet_error *err);
 
+/* project_prepare for a project whose surfaces' UV and curvature are
+ * already set (read back from its cache, project_cache.h): the rest of
+ * surface_prepare on each (surface_prepare_rest) and the u and v lengths,
+ * the same to the bit as project_prepare makes them. */
+int project_prepare_rest_stoppable(struct project *project,
+                                   const struct facet_stop *stop,
+                                   struct facet_error *err);
+
 /* surface_units_check of the building as a whole: the box around every
  * surface, in the units the project was read in, so that a building in
  * millimetres read as metres is refused as one file is (a face of it may

@@ -3,6 +3,7 @@
  */
 #include "core/surface/surface.h"
 
+#include <assert.h>
 #include <math.h>
 
 #include <stdarg.h>
@@ -247,18 +248,30 @@ int surface_prepare_stoppable(struct surface *surface, int flip_normals,
                                 &surface->param, err);
     if (rc != FACET_OK)
         return rc;
+    /* Each step takes up to a second or two on ten million triangles;
+     * the stop is asked between them (and within the curvature, the
+     * longest). The curvature reads the mesh alone, so it may come
+     * before the UV's lookup: the same numbers either way. */
+    if ((rc = facet_stop_check(stop, err)) == FACET_OK)
+        rc = curvature_at_vertices_stoppable(&surface->mesh, flip_normals,
+                                             stop, &surface->curvature, err);
+    if (rc != FACET_OK)
+        return rc;
+    return surface_prepare_rest(surface, stop, err);
+}
+
+int surface_prepare_rest(struct surface *surface,
+                         const struct facet_stop *stop,
+                         struct facet_error *err)
+{
+    assert(surface->param.uv != NULL && surface->curvature.k1 != NULL);
     if (surface->param.report.degenerate > 0)
         warn(surface, "%zu triangles have no extent in UV and add no area "
              "to any panel", surface->param.report.degenerate);
-    /* Each step below takes up to a second or two on ten million
-     * triangles; the stop is asked between them (and within the
-     * curvature, the longest). */
-    if ((rc = facet_stop_check(stop, err)) == FACET_OK)
+    int rc = facet_stop_check(stop, err);
+    if (rc == FACET_OK)
         rc = uv_index_build(surface->param.uv, surface->mesh.ntriangles,
                             &surface->uv, err);
-    if (rc == FACET_OK)
-        rc = curvature_at_vertices_stoppable(&surface->mesh, flip_normals,
-                                             stop, &surface->curvature, err);
     if (rc == FACET_OK)
         rc = mesh_facet_sag(&surface->mesh, &surface->curvature,
                             &surface->facet_sag, err);

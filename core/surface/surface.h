@@ -115,6 +115,17 @@ int surface_prepare_stoppable(struct surface *surface, int flip_normals,
                               const struct facet_stop *stop,
                               struct facet_error *err);
 
+/* What surface_prepare does after the UV and the curvature, for a
+ * surface whose param and curvature are already set (by surface_prepare,
+ * or read back from a prepared building's cache, project_cache.h, made by
+ * surface_prepare with the same settings): the UV warning, the UV's
+ * lookup, the facets' sag, the panel sums, the joints' prep and the fit
+ * points, all functions of the mesh, UV and curvature alone, so the same
+ * to the bit as surface_prepare makes them. FACET_ESTOP when stop fires. */
+int surface_prepare_rest(struct surface *surface,
+                         const struct facet_stop *stop,
+                         struct facet_error *err);
+
 void surface_close(struct surface *surface);
 
 #endif

@@ -94,7 +94,7 @@ int main(int argc, char **argv)
     }
     struct stage_clock clock = {bench_now(), 0, 0, 0};
     struct study_hooks hooks = {&clock, on_stage, on_progress, NULL, NULL,
-                                NULL};
+                                NULL, NULL};
     int64_t run;
     enum optimize_outcome outcome;
     int rc = study_start(store, &request, &hooks, &run, &outcome, &err);

@@ -42,6 +42,36 @@ static void test_known_digests(void **state)
                              "f1809a48a497200e046d39ccc7112cd0");
 }
 
+/* Long runs of blocks take the CPU's SHA extensions where it has them,
+ * single blocks the plain code: the same digest however the bytes are
+ * split (one update, then pieces of every size from 1 to 97 bytes). */
+static void test_any_split_gives_one_digest(void **state)
+{
+    (void)state;
+    size_t n = 200003;
+    unsigned char *bytes = malloc(n);
+    assert_non_null(bytes);
+    uint32_t x = 12345;
+    for (size_t i = 0; i < n; i++) {
+        x = x * 1103515245u + 12345u;
+        bytes[i] = (unsigned char)(x >> 16);
+    }
+    char whole[65], pieces[65];
+    struct sha256 h;
+    sha256_init(&h);
+    sha256_update(&h, bytes, n);
+    sha256_hex(&h, whole);
+    sha256_init(&h);
+    for (size_t at = 0, size = 1; at < n; size = size % 97 + 1) {
+        size_t take = size < n - at ? size : n - at;
+        sha256_update(&h, bytes + at, take);
+        at += take;
+    }
+    sha256_hex(&h, pieces);
+    assert_string_equal(whole, pieces);
+    free(bytes);
+}
+
 static void test_file_matches_sha256sum(void **state)
 {
     (void)state;
@@ -70,6 +100,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_known_digests),
+        cmocka_unit_test(test_any_split_gives_one_digest),
         cmocka_unit_test(test_file_matches_sha256sum),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

@@ -392,7 +392,7 @@ static void check_resume(enum optimize_method method, enum param_method uv)
                                  &err), FACET_OK);
     struct stopper stopper = {0, 2};
     struct study_hooks hooks = {&stopper, NULL, count_report,
-                                stop_when_told, NULL, NULL};
+                                stop_when_told, NULL, NULL, NULL};
     assert_int_equal(study_start(store, &request, &hooks, &cut, &outcome,
                                  &err), FACET_OK);
     assert_int_equal(outcome, OPTIMIZE_INTERRUPTED);

@@ -1,0 +1,769 @@
+/*
+ * project_cache.c: writing and reading a prepared building. See
+ * project_cache.h for the format and the checks.
+ *
+ * Arrays are streamed straight into the buffers the project keeps, each
+ * length checked against the bytes left before it is allocated, and the
+ * payload hashed as it passes; nothing read is handed out before the
+ * checksum and the indices have been checked.
+ */
+#include "core/project/project_cache.h"
+
+#include <errno.h>
+#include <math.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include "core/base/sha256.h"
+
+#define MAGIC "FACETPRE"
+#define BYTE_ORDER_MARK 0x01020304u
+#define NAME_MAX_BYTES 4096
+#define PROJECT_CACHE_STALE \
+    "stale (made from other files, settings or another build of Facet)"  /* a surface's name, as the store keeps it */
+
+/* ---- the key and the name ---- */
+
+static void hash_settings(struct sha256 *h,
+                          const struct project_cache_settings *s)
+{
+    char text[512];
+    int n = snprintf(text, sizeof text,
+                     "facet prepared building %d\nunits %s\nflip %d\nuv %d\n"
+                     "code %.300s\n", PROJECT_CACHE_VERSION,
+                     mesh_units_name(s->units), s->flip_normals != 0,
+                     (int)s->uv, s->code != NULL ? s->code : "");
+    sha256_update(h, text, (size_t)n < sizeof text ? (size_t)n
+                                                    : sizeof text - 1);
+}
+
+void project_cache_key(const char (*digest)[65], size_t nfiles,
+                       const struct project_cache_settings *settings,
+                       char key[65])
+{
+    struct sha256 h;
+    sha256_init(&h);
+    hash_settings(&h, settings);
+    for (size_t i = 0; i < nfiles; i++) {
+        sha256_update(&h, "file ", 5);
+        sha256_update(&h, digest[i], 64);
+        sha256_update(&h, "\n", 1);
+    }
+    sha256_hex(&h, key);
+}
+
+int project_cache_path(const char *db_path, const char *const *paths,
+                       size_t npaths,
+                       const struct project_cache_settings *settings,
+                       char *out, size_t size, struct facet_error *err)
+{
+    struct sha256 h;
+    sha256_init(&h);
+    hash_settings(&h, settings);
+    for (size_t i = 0; i < npaths; i++)
+        sha256_update(&h, paths[i], strlen(paths[i]) + 1);
+    char name[65];
+    sha256_hex(&h, name);
+    /* Beside the database, in its folder: every database there (a
+     * node's shards, a copy) shares it. */
+    const char *slash = strrchr(db_path, '/');
+    int folder = slash != NULL ? (int)(slash - db_path) + 1 : 0;
+    int n = snprintf(out, size, "%.*sfacet-prepared-%.16s", folder,
+                     db_path, name);
+    if (n < 0 || (size_t)n >= size)
+        return facet_error_set(err, FACET_EINPUT,
+            "%.200s: path too long for its prepared building's cache",
+            db_path);
+    return FACET_OK;
+}
+
+/* ---- writing ---- */
+
+struct writer {
+    FILE *file;
+    struct sha256 hash;
+    uint64_t bytes;
+    int failed;
+};
+
+static void put(struct writer *w, const void *data, size_t n)
+{
+    if (w->failed || n == 0)
+        return;
+    if (fwrite(data, 1, n, w->file) != n) {
+        w->failed = 1;
+        return;
+    }
+    sha256_update(&w->hash, data, n);
+    w->bytes += n;
+}
+
+static void put_u8(struct writer *w, unsigned v)
+{
+    unsigned char b = (unsigned char)v;
+    put(w, &b, 1);
+}
+
+static void put_u32(struct writer *w, uint32_t v) { put(w, &v, sizeof v); }
+static void put_u64(struct writer *w, uint64_t v) { put(w, &v, sizeof v); }
+static void put_f64(struct writer *w, double v) { put(w, &v, sizeof v); }
+
+/* An array of count elements of size bytes: a presence byte, then the
+ * elements when data is not NULL. */
+static void put_array(struct writer *w, const void *data, size_t count,
+                      size_t size)
+{
+    put_u8(w, data != NULL);
+    if (data != NULL)
+        put(w, data, count * size);
+}
+
+static void put_mesh(struct writer *w, const struct mesh *m)
+{
+    size_t V = m->nvertices, T = m->ntriangles;
+    put_u64(w, V);
+    put_u64(w, T);
+    put_array(w, m->position, 3 * V, sizeof *m->position);
+    put_array(w, m->source_vertex, V, sizeof *m->source_vertex);
+    put_array(w, m->triangle, 3 * T, sizeof *m->triangle);
+    put_array(w, m->source_face, T, sizeof *m->source_face);
+    put_array(w, m->face_normal, 3 * T, sizeof *m->face_normal);
+    put_array(w, m->face_area, T, sizeof *m->face_area);
+    put_u8(w, m->has_uv != 0);
+    put_array(w, m->uv, 6 * T, sizeof *m->uv);
+    put_u8(w, m->has_normals != 0);
+    put_array(w, m->corner_normal, 9 * T, sizeof *m->corner_normal);
+    put_array(w, m->neighbour, 3 * T, sizeof *m->neighbour);
+    put_u64(w, m->nonmanifold_edges);
+    put_u64(w, m->ndegenerate);
+    put_array(w, m->vertex_start, V + 1, sizeof *m->vertex_start);
+    put_u64(w, m->vertex_start != NULL ? m->vertex_start[V] : 0);
+    put_array(w, m->vertex_triangles,
+              m->vertex_start != NULL ? m->vertex_start[V] : 0,
+              sizeof *m->vertex_triangles);
+    put_array(w, m->on_boundary, V, sizeof *m->on_boundary);
+    put_u64(w, m->nloops);
+    put_array(w, m->loop_start, m->nloops + 1, sizeof *m->loop_start);
+    put_u64(w, m->loop_start != NULL ? m->loop_start[m->nloops] : 0);
+    put_array(w, m->loop_vertices,
+              m->loop_start != NULL ? m->loop_start[m->nloops] : 0,
+              sizeof *m->loop_vertices);
+    put_u64(w, m->ncomponents);
+    put_array(w, m->component, T, sizeof *m->component);
+    put_f64(w, m->area);
+    for (int k = 0; k < 3; k++)
+        put_f64(w, m->bbox_min[k]);
+    for (int k = 0; k < 3; k++)
+        put_f64(w, m->bbox_max[k]);
+}
+
+static void put_param(struct writer *w, const struct parameterization *p,
+                      const struct mesh *m)
+{
+    size_t T = m->ntriangles;
+    put_u32(w, (uint32_t)p->method);
+    /* The file's vt taken as they are is the mesh's UV again: said, not
+     * written twice (on the skin, 100 MB less to write, read and hash). */
+    int same = p->uv != NULL && m->uv != NULL &&
+               memcmp(p->uv, m->uv, 6 * T * sizeof *p->uv) == 0;
+    put_u8(w, same);
+    if (!same)
+        put_array(w, p->uv, 6 * T, sizeof *p->uv);
+    put_u64(w, p->report.triangles);
+    put_u64(w, p->report.degenerate);
+    put_u64(w, p->report.flipped);
+    put_u64(w, p->report.overlapping);
+    put_f64(w, p->report.uv_area);
+    put_f64(w, p->report.umin);
+    put_f64(w, p->report.vmin);
+    put_f64(w, p->report.umax);
+    put_f64(w, p->report.vmax);
+    put(w, p->reason, sizeof p->reason);
+    put_u32(w, (uint32_t)p->grid_nu);
+    put_u32(w, (uint32_t)p->grid_nv);
+    put_u64(w, p->holes);
+}
+
+static void put_curvature(struct writer *w, const struct curvature *c)
+{
+    size_t V = c->nvertices;
+    put_u64(w, V);
+    put_array(w, c->k1, V, sizeof *c->k1);
+    put_array(w, c->k2, V, sizeof *c->k2);
+    put_array(w, c->dir1, 3 * V, sizeof *c->dir1);
+    put_array(w, c->dir2, 3 * V, sizeof *c->dir2);
+    put_array(w, c->normal, 3 * V, sizeof *c->normal);
+    put_array(w, c->surface_normal, 3 * V, sizeof *c->surface_normal);
+    put_array(w, c->k1_error, V, sizeof *c->k1_error);
+    put_array(w, c->k2_error, V, sizeof *c->k2_error);
+}
+
+static void put_payload(struct writer *w, const struct project *p)
+{
+    put_u64(w, p->nsurfaces);
+    for (size_t i = 0; i < p->nsurfaces; i++) {
+        const struct project_surface *ps = &p->surfaces[i];
+        size_t file = 0;
+        while (file + 1 < p->nfiles && p->files[file] != ps->file)
+            file++;
+        size_t n = strlen(ps->name);
+        put_u64(w, n);
+        put(w, ps->name, n);
+        put_u32(w, (uint32_t)ps->key);
+        put_u32(w, (uint32_t)file);
+        put_u64(w, ps->face);
+        put_mesh(w, &ps->surface.mesh);
+        put_param(w, &ps->surface.param, &ps->surface.mesh);
+        put_curvature(w, &ps->surface.curvature);
+    }
+}
+
+static void header_bytes(unsigned char out[PROJECT_CACHE_HEADER],
+                         uint32_t version, uint64_t payload,
+                         const char key[65], const char checksum[65])
+{
+    uint32_t order = BYTE_ORDER_MARK;
+    memcpy(out, MAGIC, 8);
+    memcpy(out + 8, &version, 4);
+    memcpy(out + 12, &order, 4);
+    memcpy(out + 16, &payload, 8);
+    memcpy(out + 24, key, 64);
+    memcpy(out + 88, checksum, 64);
+}
+
+int project_cache_write(const struct project *project, const char key[65],
+                        const char *path, struct facet_error *err)
+{
+    for (size_t i = 0; i < project->nsurfaces; i++)
+        if (!project->surfaces[i].surface.prepared)
+            return facet_error_set(err, FACET_EWORK,
+                "%.300s: the building is not prepared", path);
+    char temporary[4200];
+    int n = snprintf(temporary, sizeof temporary, "%s.tmp.%ld", path,
+                     (long)getpid());
+    if (n < 0 || (size_t)n >= sizeof temporary)
+        return facet_error_set(err, FACET_EWORK, "%.300s: path too long",
+                               path);
+    FILE *file = fopen(temporary, "wb");
+    if (file == NULL)
+        return facet_error_set(err, FACET_EWORK, "%.300s: %s", temporary,
+                               strerror(errno));
+    static const char zeros[65] = "0000000000000000000000000000000000000000"
+                                  "000000000000000000000000";
+    unsigned char header[PROJECT_CACHE_HEADER];
+    header_bytes(header, PROJECT_CACHE_VERSION, 0, key, zeros);
+    struct writer w = {file, {{0}, 0, {0}, 0}, 0, 0};
+    int failed = fwrite(header, 1, sizeof header, file) != sizeof header;
+    sha256_init(&w.hash);
+    if (!failed) {
+        put_payload(&w, project);
+        failed = w.failed;
+    }
+    if (!failed) {
+        char checksum[65];
+        sha256_hex(&w.hash, checksum);
+        header_bytes(header, PROJECT_CACHE_VERSION, w.bytes, key, checksum);
+        failed = fseek(file, 0, SEEK_SET) != 0 ||
+                 fwrite(header, 1, sizeof header, file) != sizeof header;
+    }
+    int saved = errno;
+    failed |= fflush(file) != 0;
+    if (failed)
+        saved = errno;
+    if (fclose(file) != 0 && !failed) {
+        failed = 1;
+        saved = errno;
+    }
+    if (!failed && rename(temporary, path) != 0) {
+        failed = 1;
+        saved = errno;
+    }
+    if (failed) {
+        unlink(temporary);
+        return facet_error_set(err, FACET_EWORK, "%.300s: %s", path,
+                               saved != 0 ? strerror(saved) : "write failed");
+    }
+    return FACET_OK;
+}
+
+/* ---- reading ---- */
+
+struct reader {
+    FILE *file;
+    uint64_t left;         /* payload bytes not yet read */
+    struct sha256 hash;
+    const char *why;       /* the first thing found wrong, or NULL */
+};
+
+static int get(struct reader *r, void *data, size_t n)
+{
+    if (r->why != NULL)
+        return 0;
+    if (n > r->left) {
+        r->why = "truncated or damaged (a length runs past its end)";
+        return 0;
+    }
+    if (n > 0 && fread(data, 1, n, r->file) != n) {
+        r->why = "truncated (shorter than its header says)";
+        return 0;
+    }
+    sha256_update(&r->hash, data, n);
+    r->left -= n;
+    return 1;
+}
+
+static unsigned get_u8(struct reader *r)
+{
+    unsigned char b = 0;
+    get(r, &b, 1);
+    return b;
+}
+
+static uint32_t get_u32(struct reader *r)
+{
+    uint32_t v = 0;
+    get(r, &v, sizeof v);
+    return v;
+}
+
+static uint64_t get_u64(struct reader *r)
+{
+    uint64_t v = 0;
+    get(r, &v, sizeof v);
+    return v;
+}
+
+static double get_f64(struct reader *r)
+{
+    double v = 0;
+    get(r, &v, sizeof v);
+    return v;
+}
+
+/* Reads an array written by put_array into *out (malloc'ed, or NULL when
+ * it was absent). An oversized count is refused before any allocation. */
+static void get_array(struct reader *r, void *out, uint64_t count,
+                      size_t size)
+{
+    void **array = out;
+    *array = NULL;
+    if (get_u8(r) == 0 || r->why != NULL)
+        return;
+    if (count > r->left / size) {
+        r->why = "truncated or damaged (a length runs past its end)";
+        return;
+    }
+    size_t bytes = (size_t)count * size;
+    *array = malloc(bytes ? bytes : 1);
+    if (*array == NULL) {
+        r->why = "too large to read (out of memory)";
+        return;
+    }
+    get(r, *array, bytes);
+}
+
+/* A count read from the file that must itself be plausible: at most the
+ * bytes left (every element takes at least one) and below 2^32. */
+static uint64_t get_count(struct reader *r)
+{
+    uint64_t n = get_u64(r);
+    if (r->why == NULL && (n > r->left || n >= UINT32_MAX)) {
+        r->why = "damaged (a count past its end)";
+        return 0;
+    }
+    return n;
+}
+
+static void get_mesh(struct reader *r, struct mesh *m)
+{
+    memset(m, 0, sizeof *m);
+    uint64_t V = get_count(r), T = get_count(r);
+    m->nvertices = (size_t)V;
+    m->ntriangles = (size_t)T;
+    get_array(r, &m->position, 3 * V, sizeof *m->position);
+    get_array(r, &m->source_vertex, V, sizeof *m->source_vertex);
+    get_array(r, &m->triangle, 3 * T, sizeof *m->triangle);
+    get_array(r, &m->source_face, T, sizeof *m->source_face);
+    get_array(r, &m->face_normal, 3 * T, sizeof *m->face_normal);
+    get_array(r, &m->face_area, T, sizeof *m->face_area);
+    m->has_uv = (int)get_u8(r);
+    get_array(r, &m->uv, 6 * T, sizeof *m->uv);
+    m->has_normals = (int)get_u8(r);
+    get_array(r, &m->corner_normal, 9 * T, sizeof *m->corner_normal);
+    get_array(r, &m->neighbour, 3 * T, sizeof *m->neighbour);
+    m->nonmanifold_edges = (size_t)get_u64(r);
+    m->ndegenerate = (size_t)get_u64(r);
+    get_array(r, &m->vertex_start, V + 1, sizeof *m->vertex_start);
+    uint64_t incident = get_count(r);
+    get_array(r, &m->vertex_triangles, incident,
+              sizeof *m->vertex_triangles);
+    get_array(r, &m->on_boundary, V, sizeof *m->on_boundary);
+    m->nloops = (size_t)get_count(r);
+    get_array(r, &m->loop_start, (uint64_t)m->nloops + 1,
+              sizeof *m->loop_start);
+    uint64_t looped = get_count(r);
+    get_array(r, &m->loop_vertices, looped, sizeof *m->loop_vertices);
+    m->ncomponents = (size_t)get_count(r);
+    get_array(r, &m->component, T, sizeof *m->component);
+    m->area = get_f64(r);
+    for (int k = 0; k < 3; k++)
+        m->bbox_min[k] = get_f64(r);
+    for (int k = 0; k < 3; k++)
+        m->bbox_max[k] = get_f64(r);
+    if (r->why != NULL)
+        return;
+    /* What every later stage indexes by must be there and agree. */
+    if (m->position == NULL || m->triangle == NULL ||
+        m->face_normal == NULL || m->face_area == NULL ||
+        m->neighbour == NULL || m->vertex_start == NULL ||
+        m->vertex_triangles == NULL || m->on_boundary == NULL ||
+        m->loop_start == NULL || m->component == NULL ||
+        (m->has_uv && m->uv == NULL) ||
+        (m->has_normals && m->corner_normal == NULL) ||
+        m->vertex_start[0] != 0 || m->vertex_start[V] != incident ||
+        m->loop_start[0] != 0 || m->loop_start[m->nloops] != looped ||
+        (looped > 0 && m->loop_vertices == NULL))
+        r->why = "damaged (its mesh is incomplete)";
+}
+
+static void get_param(struct reader *r, struct parameterization *p,
+                      const struct mesh *m)
+{
+    memset(p, 0, sizeof *p);
+    size_t T = m->ntriangles;
+    p->method = (enum param_method)get_u32(r);
+    int same = (int)get_u8(r);
+    if (same && m->uv != NULL && r->why == NULL) {
+        p->uv = malloc(6 * T * sizeof *p->uv + 1);
+        if (p->uv == NULL)
+            r->why = "too large to read (out of memory)";
+        else
+            memcpy(p->uv, m->uv, 6 * T * sizeof *p->uv);
+    } else if (!same) {
+        get_array(r, &p->uv, 6 * (uint64_t)T, sizeof *p->uv);
+    }
+    p->report.triangles = (size_t)get_u64(r);
+    p->report.degenerate = (size_t)get_u64(r);
+    p->report.flipped = (size_t)get_u64(r);
+    p->report.overlapping = (size_t)get_u64(r);
+    p->report.uv_area = get_f64(r);
+    p->report.umin = get_f64(r);
+    p->report.vmin = get_f64(r);
+    p->report.umax = get_f64(r);
+    p->report.vmax = get_f64(r);
+    get(r, p->reason, sizeof p->reason);
+    p->reason[sizeof p->reason - 1] = '\0';
+    p->grid_nu = (int)get_u32(r);
+    p->grid_nv = (int)get_u32(r);
+    p->holes = (size_t)get_u64(r);
+    if (r->why == NULL && (p->uv == NULL || p->method < PARAM_VT ||
+                           p->method > PARAM_HARMONIC))
+        r->why = "damaged (its UV is incomplete)";
+}
+
+static void get_curvature(struct reader *r, struct curvature *c,
+                          const struct mesh *m)
+{
+    memset(c, 0, sizeof *c);
+    uint64_t V = get_count(r);
+    c->nvertices = (size_t)V;
+    get_array(r, &c->k1, V, sizeof *c->k1);
+    get_array(r, &c->k2, V, sizeof *c->k2);
+    get_array(r, &c->dir1, 3 * V, sizeof *c->dir1);
+    get_array(r, &c->dir2, 3 * V, sizeof *c->dir2);
+    get_array(r, &c->normal, 3 * V, sizeof *c->normal);
+    get_array(r, &c->surface_normal, 3 * V, sizeof *c->surface_normal);
+    get_array(r, &c->k1_error, V, sizeof *c->k1_error);
+    get_array(r, &c->k2_error, V, sizeof *c->k2_error);
+    if (r->why == NULL &&
+        (V != m->nvertices || c->k1 == NULL || c->k2 == NULL ||
+         c->dir1 == NULL || c->dir2 == NULL || c->normal == NULL ||
+         c->surface_normal == NULL || c->k1_error == NULL ||
+         c->k2_error == NULL))
+        r->why = "damaged (its curvature is incomplete)";
+}
+
+static int all_below(const uint32_t *a, size_t n, uint64_t limit,
+                     int none_allowed)
+{
+    for (size_t i = 0; i < n; i++)
+        if (a[i] >= limit && !(none_allowed && a[i] == MESH_NONE))
+            return 0;
+    return 1;
+}
+
+static int all_finite(const double *a, size_t n)
+{
+    for (size_t i = 0; i < n; i++)
+        if (!isfinite(a[i]))
+            return 0;
+    return 1;
+}
+
+static int non_decreasing(const uint32_t *a, size_t n)
+{
+    for (size_t i = 1; i < n; i++)
+        if (a[i] < a[i - 1])
+            return 0;
+    return 1;
+}
+
+/* The indices and numbers later stages trust, once the checksum held:
+ * a file made by hand with a right checksum is still refused, not read
+ * out of bounds. */
+static const char *check_surface(const struct surface *s)
+{
+    const struct mesh *m = &s->mesh;
+    size_t V = m->nvertices, T = m->ntriangles;
+    if (T == 0 || V == 0)
+        return "damaged (a surface without triangles)";
+    if (!all_below(m->triangle, 3 * T, V, 0) ||
+        !all_below(m->neighbour, 3 * T, T, 1) ||
+        !non_decreasing(m->vertex_start, V + 1) ||
+        !all_below(m->vertex_triangles, m->vertex_start[V], T, 0) ||
+        !non_decreasing(m->loop_start, m->nloops + 1) ||
+        !all_below(m->loop_vertices, m->loop_start[m->nloops], V, 0) ||
+        !all_below(m->component, T, m->ncomponents, 0))
+        return "damaged (an index out of range)";
+    if (!all_finite(m->position, 3 * V) ||
+        !all_finite(s->param.uv, 6 * T) ||
+        (m->uv != NULL && !all_finite(m->uv, 6 * T)))
+        return "damaged (a coordinate is not a number)";
+    return NULL;
+}
+
+/* One surface's fields as read, before they become the project's. */
+struct read_surface {
+    char *name;
+    uint32_t key, file;
+    uint64_t face;
+    struct mesh mesh;
+    struct parameterization param;
+    struct curvature curvature;
+};
+
+static void read_surface_free(struct read_surface *s)
+{
+    free(s->name);
+    mesh_free(&s->mesh);
+    param_free(&s->param);
+    curvature_free(&s->curvature);
+}
+
+static void get_surface(struct reader *r, struct read_surface *s,
+                        size_t npaths)
+{
+    memset(s, 0, sizeof *s);
+    uint64_t n = get_u64(r);
+    if (r->why == NULL && (n == 0 || n > NAME_MAX_BYTES)) {
+        r->why = "damaged (a surface's name)";
+        return;
+    }
+    if (r->why != NULL)
+        return;
+    s->name = malloc((size_t)n + 1);
+    if (s->name == NULL) {
+        r->why = "too large to read (out of memory)";
+        return;
+    }
+    get(r, s->name, (size_t)n);
+    s->name[n] = '\0';
+    if (r->why == NULL && strlen(s->name) != n)
+        r->why = "damaged (a surface's name)";
+    s->key = get_u32(r);
+    s->file = get_u32(r);
+    s->face = get_u64(r);
+    if (r->why == NULL && (s->key > PROJECT_GROUP || s->file >= npaths))
+        r->why = "damaged (a surface's file)";
+    if (r->why != NULL)
+        return;
+    get_mesh(r, &s->mesh);
+    get_param(r, &s->param, &s->mesh);
+    get_curvature(r, &s->curvature, &s->mesh);
+}
+
+/* Makes out the project of the surfaces read, as project_open makes it:
+ * the same paths, names, labels, checks and warnings, the same sums in
+ * the same order. Takes the surfaces' arrays over. */
+static int build(struct read_surface *read, size_t n,
+                 const char *const *paths, size_t npaths,
+                 enum mesh_units units, struct project *out,
+                 struct facet_error *err)
+{
+    out->files = calloc(npaths, sizeof *out->files);
+    out->surfaces = calloc(n ? n : 1, sizeof *out->surfaces);
+    if (out->files == NULL || out->surfaces == NULL)
+        return facet_error_set(err, FACET_EWORK, "out of memory");
+    for (size_t i = 0; i < npaths; i++) {
+        if ((out->files[i] = strdup(paths[i])) == NULL)
+            return facet_error_set(err, FACET_EWORK, "out of memory");
+        out->nfiles++;
+    }
+    for (size_t i = 0; i < n; i++) {
+        struct project_surface *ps = &out->surfaces[i];
+        struct read_surface *rs = &read[i];
+        out->nsurfaces++;
+        ps->name = rs->name;
+        rs->name = NULL;
+        ps->file = out->files[rs->file];
+        ps->key = (enum project_key)rs->key;
+        ps->face = (size_t)rs->face;
+        char label[1024];
+        snprintf(label, sizeof label, "%s: %s '%s'", ps->file,
+                 project_key_name(ps->key), ps->name);
+        int rc = surface_from_mesh(label, units, &rs->mesh, &ps->surface,
+                                   err);
+        ps->surface.param = rs->param;
+        memset(&rs->param, 0, sizeof rs->param);
+        ps->surface.curvature = rs->curvature;
+        memset(&rs->curvature, 0, sizeof rs->curvature);
+        if (rc != FACET_OK)
+            return rc;
+        out->ntriangles += ps->surface.mesh.ntriangles;
+        out->area += ps->surface.mesh.area;
+    }
+    return FACET_OK;
+}
+
+static int refuse(const char *name, const char *why,
+                  struct facet_error *err)
+{
+    return facet_error_set(err, FACET_EINPUT,
+                           "%.300s: prepared building not used: %s", name,
+                           why);
+}
+
+/* Reads file (size bytes) named name: with want_key, refused unless its
+ * key is that; without, its key is copied into found_key. */
+static int read_stream(FILE *file, unsigned long long size, const char *name,
+                       const char *want_key, char found_key[65],
+                       const char *const *paths, size_t npaths,
+                       enum mesh_units units, struct project *out,
+                       struct facet_error *err)
+{
+    memset(out, 0, sizeof *out);
+    unsigned char header[PROJECT_CACHE_HEADER];
+    if (size < sizeof header ||
+        fread(header, 1, sizeof header, file) != sizeof header)
+        return refuse(name, "truncated (shorter than its header)", err);
+    if (memcmp(header, MAGIC, 8) != 0)
+        return refuse(name, "not a prepared building's cache", err);
+    uint32_t version, order;
+    uint64_t payload;
+    memcpy(&version, header + 8, 4);
+    memcpy(&order, header + 12, 4);
+    memcpy(&payload, header + 16, 8);
+    if (order != BYTE_ORDER_MARK)
+        return refuse(name, "written on a machine of another byte order",
+                      err);
+    if (version != PROJECT_CACHE_VERSION) {
+        char why[128];
+        snprintf(why, sizeof why, "format version %u, this Facet reads %d",
+                 (unsigned)version, PROJECT_CACHE_VERSION);
+        return refuse(name, why, err);
+    }
+    if (want_key != NULL && memcmp(header + 24, want_key, 64) != 0)
+        return refuse(name, PROJECT_CACHE_STALE, err);
+    if (want_key == NULL) {
+        memcpy(found_key, header + 24, 64);
+        found_key[64] = '\0';
+    }
+    if (payload != size - sizeof header)
+        return refuse(name, payload > size - sizeof header
+                      ? "truncated (shorter than its header says)"
+                      : "damaged (longer than its header says)", err);
+
+    struct reader r = {file, payload, {{0}, 0, {0}, 0}, NULL};
+    sha256_init(&r.hash);
+    uint64_t n = get_count(&r);
+    /* A surface takes far more than 64 bytes: a count beyond that is not
+     * allocated for. */
+    if (r.why == NULL && (n == 0 || n > r.left / 64))
+        r.why = "damaged (its count of surfaces)";
+    struct read_surface *read =
+        r.why == NULL ? calloc((size_t)n, sizeof *read) : NULL;
+    if (r.why == NULL && read == NULL)
+        r.why = "too large to read (out of memory)";
+    size_t got = 0;
+    for (; r.why == NULL && got < n; got++)
+        get_surface(&r, &read[got], npaths);
+    if (r.why == NULL && r.left != 0)
+        r.why = "damaged (bytes past its end)";
+    if (r.why == NULL) {
+        char checksum[65];
+        sha256_hex(&r.hash, checksum);
+        if (memcmp(checksum, header + 88, 64) != 0)
+            r.why = "damaged (its checksum does not match)";
+    }
+    for (size_t i = 0; r.why == NULL && i < got; i++) {
+        struct surface probe;
+        memset(&probe, 0, sizeof probe);
+        probe.mesh = read[i].mesh;
+        probe.param = read[i].param;
+        r.why = check_surface(&probe);
+    }
+    int rc = r.why != NULL ? refuse(name, r.why, err)
+                           : build(read, got, paths, npaths, units, out, err);
+    if (rc == FACET_EINPUT && r.why == NULL)  /* no mesh its files give */
+        rc = refuse(name, "damaged (a surface refused as a mesh)", err);
+    for (size_t i = 0; read != NULL && i < got; i++)
+        read_surface_free(&read[i]);
+    free(read);
+    return rc;
+}
+
+int project_cache_read_file(FILE *file, unsigned long long size,
+                            const char *name, const char key[65],
+                            const char *const *paths, size_t npaths,
+                            enum mesh_units units, struct project *out,
+                            struct facet_error *err)
+{
+    return read_stream(file, size, name, key, NULL, paths, npaths, units,
+                       out, err);
+}
+
+static int read_path(const char *path, const char *want_key,
+                     char found_key[65], const char *const *paths,
+                     size_t npaths, enum mesh_units units,
+                     struct project *out, struct facet_error *err)
+{
+    memset(out, 0, sizeof *out);
+    FILE *file = fopen(path, "rb");
+    if (file == NULL)
+        return refuse(path, errno == ENOENT ? "none yet" : strerror(errno),
+                      err);
+    struct stat st;
+    int rc;
+    if (fstat(fileno(file), &st) != 0 || !S_ISREG(st.st_mode))
+        rc = refuse(path, "not a regular file", err);
+    else
+        rc = read_stream(file, (unsigned long long)st.st_size, path,
+                         want_key, found_key, paths, npaths, units, out,
+                         err);
+    fclose(file);
+    return rc;
+}
+
+int project_cache_read(const char *path, const char key[65],
+                       const char *const *paths, size_t npaths,
+                       enum mesh_units units, struct project *out,
+                       struct facet_error *err)
+{
+    return read_path(path, key, NULL, paths, npaths, units, out, err);
+}
+
+int project_cache_read_unkeyed(const char *path, char key[65],
+                               const char *const *paths, size_t npaths,
+                               enum mesh_units units, struct project *out,
+                               struct facet_error *err)
+{
+    return read_path(path, NULL, key, paths, npaths, units, out, err);
+}
+
+int project_cache_stale(const char *path, struct facet_error *err)
+{
+    return refuse(path, PROJECT_CACHE_STALE, err);
+}

@@ -1,0 +1,132 @@
+/*
+ * project_cache.h: a prepared building kept in a file, checked before it
+ * is used, never trusted.
+ *
+ * Preparing a building (project_prepare: each surface's UV and vertex
+ * curvature, then the sums every grid starts from) takes most of a short
+ * run on a large skin, and every run, resume and map of the same files
+ * did it again. The cache keeps what is expensive to remake: per surface
+ * its mesh in metres (every array of struct mesh), its parameterization
+ * and its vertex curvature. What follows from those alone (the UV's
+ * lookup, the facets' sag, the panel sums, the joints' prep, the fit
+ * points, the u and v lengths) is remade by project_prepare_rest_stoppable,
+ * the code a fresh preparation runs, so that a building read back is the
+ * same to the bit as one prepared anew.
+ *
+ * The file (native byte order and doubles, which the header checks):
+ *
+ *   header, 152 bytes:
+ *     "FACETPRE"           8 bytes, the magic
+ *     version              uint32, PROJECT_CACHE_VERSION
+ *     byte order           uint32, 0x01020304 as written
+ *     payload bytes        uint64, what follows the header
+ *     key                  64 hex digits: project_cache_key
+ *     checksum             64 hex digits: SHA-256 of the payload
+ *   payload:
+ *     nsurfaces            uint64
+ *     per surface          its name, key, file, first face, mesh,
+ *                          parameterization and curvature, every array
+ *                          preceded by a presence byte (project_cache.c)
+ *
+ * Reading checks, in order, before anything read is used: the file's size
+ * against the header's, the magic, the version and byte order, the key
+ * (the files' SHA-256s, the settings that shape a preparation and the code
+ * that made it: anything else is stale or foreign), every length against
+ * the bytes left in the file before it is allocated, the checksum over the
+ * whole payload, then every index (triangle corners, neighbours, the
+ * triangles round a vertex, the loops, the components, the surface's
+ * file) against what it indexes and every coordinate and UV for being
+ * finite. A damaged, truncated, stale or foreign file is refused with one
+ * line saying which; never a crash, never a wrong building.
+ *
+ * Writing goes to a temporary file beside the cache, renamed over it when
+ * whole: a reader sees the old cache or the new one, never half of one.
+ * No fsync: a file cut short by a crash fails its checksum and is rebuilt.
+ *
+ * Ownership: project_cache_read fills a caller-owned struct project
+ * (release with project_close, also after a failure); the writer only
+ * reads the project.
+ */
+#ifndef FACET_PROJECT_CACHE_H
+#define FACET_PROJECT_CACHE_H
+
+#include <stddef.h>
+#include <stdio.h>
+
+#include "core/base/error.h"
+#include "core/project/project.h"
+
+#define PROJECT_CACHE_VERSION 1
+#define PROJECT_CACHE_HEADER 152  /* bytes */
+
+/* What shapes a preparation besides the files' bytes. */
+struct project_cache_settings {
+    enum mesh_units units;    /* what one OBJ unit is */
+    int flip_normals;         /* curvature's sign */
+    enum param_method uv;     /* the UV asked for (PARAM_AUTO: the first
+                                 that applies) */
+    const char *code;         /* what prepared it: a Facet built otherwise
+                                 may prepare otherwise, so its identity is
+                                 part of the key (study: the SHA-256 of
+                                 the running program) */
+};
+
+/* The key of a building read from nfiles files whose SHA-256s (hex) are
+ * digest[0 .. nfiles), in order, prepared with settings: the SHA-256 (hex)
+ * of the format version, the settings, the code and the digests. */
+void project_cache_key(const char (*digest)[65], size_t nfiles,
+                       const struct project_cache_settings *settings,
+                       char key[65]);
+
+/* The cache's path beside the database db_path: in its folder,
+ * "facet-prepared-" and 16 hex digits of the SHA-256 of the files' paths
+ * (as given: make them absolute first) and the settings, into out (size
+ * bytes). One name per building and settings, so that a building whose
+ * files change replaces its cache instead of adding one, and every
+ * database of the folder (a node's shards) shares it. FACET_EINPUT when
+ * it does not fit. */
+int project_cache_path(const char *db_path, const char *const *paths,
+                       size_t npaths,
+                       const struct project_cache_settings *settings,
+                       char *out, size_t size, struct facet_error *err);
+
+/* Writes project (prepared, read from files whose key is key) to path,
+ * through a temporary file renamed over it. FACET_EWORK naming the file
+ * and the reason when it cannot (a read-only folder, a full disk): the
+ * caller goes on without a cache. */
+int project_cache_write(const struct project *project, const char key[65],
+                        const char *path, struct facet_error *err);
+
+/* Reads the cache at path into *out as project_open would have read the
+ * files paths[0 .. npaths) in units, with each surface's parameterization
+ * and curvature set as project_prepare sets them; the caller then runs
+ * project_prepare_rest_stoppable. key is the key the files and settings
+ * give now (project_cache_key). FACET_OK; FACET_EINPUT with one line
+ * naming path and saying why it is not used (missing, truncated, damaged,
+ * stale, foreign, another version); FACET_EWORK when out of memory. */
+int project_cache_read(const char *path, const char key[65],
+                       const char *const *paths, size_t npaths,
+                       enum mesh_units units, struct project *out,
+                       struct facet_error *err);
+
+/* project_cache_read without the key: every other check made, the key
+ * the file holds copied into key, for a caller that hashes the files
+ * while the cache is read and compares the keys after (a file of another
+ * key must then be closed unused: project_cache_stale says so). */
+int project_cache_read_unkeyed(const char *path, char key[65],
+                               const char *const *paths, size_t npaths,
+                               enum mesh_units units, struct project *out,
+                               struct facet_error *err);
+
+/* The FACET_EINPUT project_cache_read gives a cache of another key. */
+int project_cache_stale(const char *path, struct facet_error *err);
+
+/* project_cache_read of file, size bytes from its current position,
+ * named name in messages (the fuzz target reads from memory). */
+int project_cache_read_file(FILE *file, unsigned long long size,
+                            const char *name, const char key[65],
+                            const char *const *paths, size_t npaths,
+                            enum mesh_units units, struct project *out,
+                            struct facet_error *err);
+
+#endif
