@@ -232,6 +232,23 @@ int seam_find(const struct mesh *a, const struct curvature *curvature_a,
         }
         size_t first = out->npoints;
         int whole = 1;
+        /* Which way b runs along this edge, decided once, at its middle:
+         * an end of the edge may meet b where b's outline turns a corner,
+         * and the nearest edge of b there may run across, not along, so
+         * that its direction says nothing about b's winding. */
+        double middle[3], near_middle[3], g_middle;
+        for (int k = 0; k < 3; k++)
+            middle[k] = 0.5 * (p[k] + q[k]);
+        size_t along = nearest_edge(b, eb, &grid, middle, weld, near_middle,
+                                    &g_middle);
+        if (along == SIZE_MAX)
+            continue;
+        double da[3], db[3];
+        vec3_sub(q, p, da);
+        vec3_sub(position(b, eb[along].vertex[1]),
+                 position(b, eb[along].vertex[0]), db);
+        /* Consistently wound faces run a shared edge opposite ways. */
+        int turned = vec3_dot(da, db) > 0;
         for (size_t s = 0; s <= pieces && whole; s++) {
             double f = (double)s / (double)pieces;
             struct seam_point *x = &out->points[first + s];
@@ -246,14 +263,10 @@ int seam_find(const struct mesh *a, const struct curvature *curvature_a,
             }
             x->triangle_a = ea[e].triangle;
             x->triangle_b = eb[across].triangle;
-            double *na_ = x->normal_a, *nb_ = x->normal_b, da[3], db[3];
+            double *na_ = x->normal_a, *nb_ = x->normal_b;
             normal_along(curvature_a, &ea[e], f, na_);
             normal_along(curvature_b, &eb[across], g, nb_);
-            vec3_sub(q, p, da);
-            vec3_sub(position(b, eb[across].vertex[1]),
-                     position(b, eb[across].vertex[0]), db);
-            /* Consistently wound faces run a shared edge opposite ways. */
-            if (vec3_dot(da, db) > 0)
+            if (turned)
                 for (int k = 0; k < 3; k++)
                     nb_[k] = -nb_[k];
             x->crease = vec3_angle(na_, nb_);

@@ -23,6 +23,7 @@
 #include "core/project/project_seams.h"
 #include "core/project/seam.h"
 #include "core/project/seam_joints.h"
+#include "core/surface/example_skin.h"
 #include "core/surface/surface.h"
 #include "tests/support/surface_fixture.h"
 
@@ -570,6 +571,55 @@ static void test_building_option_seams(void **state)
         surface_close(&half[k].surface);
 }
 
+/* Face *shape of the example skin, from its formula (example_skin.h). */
+static void skin_face(const void *shape, double s, double t, double p[3])
+{
+    skin_point(*(const int *)shape, s, t, p);
+}
+
+/* The skin is one smooth tower cut into faces (its plan a rounded
+ * rectangle, bulged and twisted smoothly): no seam has a crease. Six faces
+ * around two four-way corners (rows 3-4, columns 3-5), 8 x 8 quads each:
+ * the ends of an edge meet the other face where its outline turns, where
+ * the nearest edge of the other face may run across the seam. Before the
+ * winding was read at each edge's middle, some seams here read a crease
+ * of 180 degrees (the other face's normal taken backwards). */
+static void test_skin_has_no_crease(void **state)
+{
+    (void)state;
+    enum { ROWS = 2, COLUMNS = 3 };
+    int index[ROWS * COLUMNS];
+    struct project_surface face[ROWS * COLUMNS];
+    memset(face, 0, sizeof face);
+    for (int r = 0; r < ROWS; r++)
+        for (int c = 0; c < COLUMNS; c++) {
+            int k = r * COLUMNS + c;
+            index[k] = (3 + r) * SKIN_COLUMNS + 3 + c;
+            open_formula(skin_face, &index[k], 8, 8, &face[k].surface);
+        }
+    struct project project;
+    memset(&project, 0, sizeof project);
+    project.nsurfaces = ROWS * COLUMNS;
+    project.surfaces = face;
+    struct project_seams seams;
+    struct facet_error err;
+    assert_int_equal(project_seams_find(&project, SEAM_WELD_DEFAULT, NULL,
+                                        &seams, &err), FACET_OK);
+    /* Neighbours in a row, neighbours across rows, and the diagonals
+     * that touch at a corner only (a point: no seam). */
+    assert_int_equal(seams.nseams, ROWS * (COLUMNS - 1) + (ROWS - 1) * COLUMNS);
+    for (size_t k = 0; k < seams.nseams; k++) {
+        const struct seam *x = &seams.seams[k].seam;
+        if (!(x->max_crease < PI / 180))
+            fail_msg("seam of faces %zu and %zu: crease %.3f deg, want 0 "
+                     "(under 1 deg)", seams.seams[k].a, seams.seams[k].b,
+                     x->max_crease * 180 / PI);
+    }
+    for (int k = 0; k < ROWS * COLUMNS; k++)
+        surface_close(&face[k].surface);
+    project_seams_free(&seams);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -588,6 +638,7 @@ int main(void)
         cmocka_unit_test(test_building_box_corner),
         cmocka_unit_test(test_building_cylinder),
         cmocka_unit_test(test_building_option_seams),
+        cmocka_unit_test(test_skin_has_no_crease),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
