@@ -99,6 +99,18 @@ int project_seams_keep(struct project *project, double weld,
     return FACET_OK;
 }
 
+/* The two sides of seam s: each surface's mesh, UV lookup and panels. */
+static void seam_sides(const struct project *project,
+                       const struct project_seam *s,
+                       const struct panelization *const *panels,
+                       struct seam_side *a, struct seam_side *b)
+{
+    const struct surface *sa = &project->surfaces[s->a].surface;
+    const struct surface *sb = &project->surfaces[s->b].surface;
+    *a = (struct seam_side){&sa->mesh, &sa->uv, panels[s->a]};
+    *b = (struct seam_side){&sb->mesh, &sb->uv, panels[s->b]};
+}
+
 int project_seams_measure(const struct project *project,
                           const struct project_seams *seams,
                           const struct panelization *const *panels,
@@ -109,10 +121,8 @@ int project_seams_measure(const struct project *project,
     double gaps = 0, added = 0;
     for (size_t k = 0; k < seams->nseams; k++) {
         const struct project_seam *s = &seams->seams[k];
-        const struct surface *sa = &project->surfaces[s->a].surface;
-        const struct surface *sb = &project->surfaces[s->b].surface;
-        struct seam_side a = {&sa->mesh, &sa->uv, panels[s->a]};
-        struct seam_side b = {&sb->mesh, &sb->uv, panels[s->b]};
+        struct seam_side a, b;
+        seam_sides(project, s, panels, &a, &b);
         struct seam_joints j;
         int rc = seam_joints_measure(&s->seam, &a, &b, max_gap, max_kink, &j,
                                      err);
@@ -147,10 +157,8 @@ int project_seams_joints(const struct project *project,
     size_t capacity = 0;
     for (size_t k = 0; k < seams->nseams; k++) {
         const struct project_seam *s = &seams->seams[k];
-        const struct surface *sa = &project->surfaces[s->a].surface;
-        const struct surface *sb = &project->surfaces[s->b].surface;
-        struct seam_side a = {&sa->mesh, &sa->uv, panels[s->a]};
-        struct seam_side b = {&sb->mesh, &sb->uv, panels[s->b]};
+        struct seam_side a, b;
+        seam_sides(project, s, panels, &a, &b);
         struct seam_joint *joint;
         size_t count;
         int rc = seam_joints_list(&s->seam, &a, &b, &joint, &count, err);

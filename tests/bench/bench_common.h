@@ -11,6 +11,9 @@
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <sys/resource.h>
+#include <sys/types.h>
+#include <sys/wait.h>
 #include <time.h>
 #include <unistd.h>
 
@@ -62,6 +65,45 @@ static inline double bench_median(double *t, int n)
 {
     qsort(t, (size_t)n, sizeof *t, bench_compare_doubles);
     return t[n / 2];
+}
+
+/* Runs work(context, figures) in a forked child, so that each
+ * measurement starts from a fresh process (its own peak memory, no cache
+ * warmed by the last): the child fills size bytes of figures and sends
+ * them back through a pipe into the parent's figures, with the child's
+ * resource use into *usage (may be NULL). Returns 0 when work returned 0
+ * and the figures came whole, else -1. */
+static inline int bench_in_child(int (*work)(void *context, void *figures),
+                                 void *context, void *figures, size_t size,
+                                 struct rusage *usage)
+{
+    int pipe_fd[2];
+    if (pipe(pipe_fd) != 0)
+        return -1;
+    pid_t child = fork();
+    if (child < 0)
+        return -1;
+    if (child == 0) {
+        close(pipe_fd[0]);
+        int rc = work(context, figures);
+        ssize_t wrote = write(pipe_fd[1], figures, size);
+        _exit(rc == 0 && wrote == (ssize_t)size ? 0 : 1);
+    }
+    close(pipe_fd[1]);
+    size_t got = 0;
+    while (got < size) {
+        ssize_t n = read(pipe_fd[0], (char *)figures + got, size - got);
+        if (n <= 0)
+            break;
+        got += (size_t)n;
+    }
+    close(pipe_fd[0]);
+    int status;
+    struct rusage own;
+    if (wait4(child, &status, 0, usage != NULL ? usage : &own) != child ||
+        !WIFEXITED(status) || WEXITSTATUS(status) != 0 || got != size)
+        return -1;
+    return 0;
 }
 
 /* Sums the triangle areas from the positions: the least any evaluation

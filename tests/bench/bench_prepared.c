@@ -57,9 +57,16 @@ static double cpu_now(void)
            (double)u.ru_stime.tv_sec + (double)u.ru_stime.tv_usec * 1e-6;
 }
 
-/* One run's start in a child: its figures through fd. */
-static int start_run(const char *obj, const char *db, int fd)
+/* A run's start: the building's files and its database. */
+struct start {
+    const char *obj, *db;
+};
+
+/* One run's start (in a child, bench_in_child) into *figures. */
+static int start_run(void *context, void *figures)
 {
+    const char *obj = ((struct start *)context)->obj;
+    const char *db = ((struct start *)context)->db;
     struct figures f = {0, 0, 0, 0};
     struct study_hooks hooks = {NULL, NULL, NULL, NULL, NULL, NULL, on_note};
     struct study_prepare want = {db, &obj, 1, NULL, UNITS_M, 0, 0,
@@ -76,36 +83,14 @@ static int start_run(const char *obj, const char *db, int fd)
     f.ok = rc == FACET_OK;
     f.reused = reused_note;
     project_close(&p);
-    ssize_t wrote = write(fd, &f, sizeof f);
-    return wrote == (ssize_t)sizeof f && f.ok ? 0 : 1;
+    *(struct figures *)figures = f;
+    return f.ok ? 0 : 1;
 }
 
 static int measure(const char *obj, const char *db, struct figures *f)
 {
-    int pipe_fd[2];
-    if (pipe(pipe_fd) != 0)
-        return -1;
-    pid_t child = fork();
-    if (child < 0)
-        return -1;
-    if (child == 0) {
-        close(pipe_fd[0]);
-        _exit(start_run(obj, db, pipe_fd[1]));
-    }
-    close(pipe_fd[1]);
-    size_t got = 0;
-    while (got < sizeof *f) {
-        ssize_t n = read(pipe_fd[0], (char *)f + got, sizeof *f - got);
-        if (n <= 0)
-            break;
-        got += (size_t)n;
-    }
-    close(pipe_fd[0]);
-    int status;
-    if (waitpid(child, &status, 0) != child || !WIFEXITED(status) ||
-        WEXITSTATUS(status) != 0 || got != sizeof *f || !f->ok)
-        return -1;
-    return 0;
+    struct start start = {obj, db};
+    return bench_in_child(start_run, &start, f, sizeof *f, NULL);
 }
 
 /* The cache files beside db: removed (remove 1) or their total size. */

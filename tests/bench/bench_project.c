@@ -63,10 +63,18 @@ static double process_cpu_now(void)
     return (double)t.tv_sec + (double)t.tv_nsec * 1e-9;
 }
 
+/* The option's run: the skin's file and how many times. */
+struct option_run {
+    const char *path;
+    int runs;
+};
+
 /* Loads and prepares the skin, evaluates the option runs times on 1 and
- * on 2 threads, and writes the figures to fd. */
-static int run_option(const char *path, int runs, int fd)
+ * on 2 threads (in a child, bench_in_child), into *figures. */
+static int run_option(void *context, void *figures)
 {
+    const char *path = ((struct option_run *)context)->path;
+    int runs = ((struct option_run *)context)->runs;
     struct option_figures f;
     memset(&f, 0, sizeof f);
     struct project p;
@@ -109,39 +117,19 @@ static int run_option(const char *path, int runs, int fd)
     f.ok = rc == FACET_OK;
     free(grids);
     project_close(&p);
-    ssize_t wrote = write(fd, &f, sizeof f);
-    return wrote == (ssize_t)sizeof f && f.ok ? 0 : 1;
+    *(struct option_figures *)figures = f;
+    return f.ok ? 0 : 1;
 }
 
 /* Runs run_option in a child into *f, with its peak RSS (MB). */
 static int measure_option(const char *path, int runs,
                           struct option_figures *f, double *megabytes)
 {
-    int pipe_fd[2];
-    if (pipe(pipe_fd) != 0)
-        return -1;
-    pid_t child = fork();
-    if (child < 0)
-        return -1;
-    if (child == 0) {
-        close(pipe_fd[0]);
-        _exit(run_option(path, runs, pipe_fd[1]));
-    }
-    close(pipe_fd[1]);
-    size_t got = 0;
-    while (got < sizeof *f) {
-        ssize_t n = read(pipe_fd[0], (char *)f + got, sizeof *f - got);
-        if (n <= 0)
-            break;
-        got += (size_t)n;
-    }
-    close(pipe_fd[0]);
-    int status;
+    struct option_run run = {path, runs};
     struct rusage usage;
-    if (wait4(child, &status, 0, &usage) != child || !WIFEXITED(status) ||
-        WEXITSTATUS(status) != 0 || got != sizeof *f || !f->ok)
+    if (bench_in_child(run_option, &run, f, sizeof *f, &usage) != 0)
         return -1;
-    *megabytes = (double)usage.ru_maxrss / 1024;
+    *megabytes = (double)usage.ru_maxrss / 1024;  /* KB on Linux */
     return 0;
 }
 
