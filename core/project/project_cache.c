@@ -23,7 +23,7 @@
 #define BYTE_ORDER_MARK 0x01020304u
 #define NAME_MAX_BYTES 4096
 #define PROJECT_CACHE_STALE \
-    "stale (made from other files, settings or another build of Facet)"  /* a surface's name, as the store keeps it */
+    "stale (made from other files, settings or another build of Facet)"
 
 /* ---- the key and the name ---- */
 
@@ -62,7 +62,12 @@ int project_cache_path(const char *db_path, const char *const *paths,
 {
     struct sha256 h;
     sha256_init(&h);
-    hash_settings(&h, settings);
+    /* Named without the program's identity (the key holds it): a rebuilt
+     * Facet finds the cache of the same files and settings stale and
+     * writes over it, rather than leaving one more beside it per build. */
+    struct project_cache_settings named = *settings;
+    named.code = NULL;
+    hash_settings(&h, &named);
     for (size_t i = 0; i < npaths; i++)
         sha256_update(&h, paths[i], strlen(paths[i]) + 1);
     char name[65];

@@ -80,9 +80,10 @@ void project_cache_key(const char (*digest)[65], size_t nfiles,
 
 /* The cache's path beside the database db_path: in its folder,
  * "facet-prepared-" and 16 hex digits of the SHA-256 of the files' paths
- * (as given: make them absolute first) and the settings, into out (size
- * bytes). One name per building and settings, so that a building whose
- * files change replaces its cache instead of adding one, and every
+ * (as given: make them absolute first) and the settings but the code,
+ * into out (size bytes). One name per building and settings, so that a
+ * building whose files change, or a Facet rebuilt, replaces its cache
+ * instead of adding one, and every
  * database of the folder (a node's shards) shares it. FACET_EINPUT when
  * it does not fit. */
 int project_cache_path(const char *db_path, const char *const *paths,

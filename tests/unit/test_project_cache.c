@@ -594,6 +594,41 @@ static void test_unwritable_cache_is_a_note(void **state)
     assert_int_equal(n.reused, 0);
 }
 
+/* One cache per building and settings, whatever build of Facet made it:
+ * a rebuilt Facet writes over its cache (stale by the key) rather than
+ * leaving another file of hundreds of MB beside it per build. Another
+ * unit, flip or UV names another cache. */
+static void test_one_name_across_builds(void **state)
+{
+    (void)state;
+    const char *paths[2] = {"/data/a.obj", "/data/b.obj"};
+    struct project_cache_settings one = {UNITS_M, 0, PARAM_AUTO, "build 1"};
+    struct project_cache_settings two = one, cm = one, flip = one;
+    two.code = "build 2";
+    cm.units = UNITS_CM;
+    flip.flip_normals = 1;
+    char a[512], b[512], c[512], d[512];
+    struct facet_error err;
+    assert_int_equal(project_cache_path("/w/x.db", paths, 2, &one, a,
+                                        sizeof a, &err), FACET_OK);
+    assert_int_equal(project_cache_path("/w/y.db", paths, 2, &two, b,
+                                        sizeof b, &err), FACET_OK);
+    assert_int_equal(project_cache_path("/w/x.db", paths, 2, &cm, c,
+                                        sizeof c, &err), FACET_OK);
+    assert_int_equal(project_cache_path("/w/x.db", paths, 2, &flip, d,
+                                        sizeof d, &err), FACET_OK);
+    assert_string_equal(a, b);
+    assert_true(strncmp(a, "/w/facet-prepared-", 18) == 0);
+    assert_string_not_equal(a, c);
+    assert_string_not_equal(a, d);
+    char ka[65], kb[65];
+    const char digest[1][65] = {"0123456789abcdef0123456789abcdef"
+                                "0123456789abcdef0123456789abcdef"};
+    project_cache_key(digest, 1, &one, ka);
+    project_cache_key(digest, 1, &two, kb);
+    assert_string_not_equal(ka, kb);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -603,6 +638,7 @@ int main(void)
         cmocka_unit_test(test_study_reuses_and_rebuilds),
         cmocka_unit_test(test_resume_uses_known_digests),
         cmocka_unit_test(test_unwritable_cache_is_a_note),
+        cmocka_unit_test(test_one_name_across_builds),
     };
     return cmocka_run_group_tests(tests, make_dir, remove_dir);
 }
