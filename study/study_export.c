@@ -336,6 +336,31 @@ static time_t run_started(const struct run_info *run)
     return timegm(&t);
 }
 
+/* The seam joints of building option p (project_seams_joints), its
+ * surfaces' panels in order, into *joints (malloc'ed, free(); NULL when
+ * none) and *n. */
+static int option_seam_joints(const struct study_option *p,
+                              struct building_seam_joint **joints, size_t *n,
+                              struct facet_error *err)
+{
+    const struct project_option *b = p->building;
+    const struct project *project = &p->view->project;
+    *joints = NULL;
+    *n = 0;
+    if (project->seams == NULL)
+        return FACET_OK;
+    const struct panelization **panels =
+        malloc((b->nsurfaces ? b->nsurfaces : 1) * sizeof *panels);
+    if (panels == NULL)
+        return facet_error_set(err, FACET_EWORK, "out of memory");
+    for (size_t s = 0; s < b->nsurfaces; s++)
+        panels[s] = &b->surfaces[s].panels;
+    int rc = project_seams_joints(project, project->seams, panels, joints, n,
+                                  err);
+    free(panels);
+    return rc;
+}
+
 /* The option p as a workbook (xlsx_schedule.h) into out, its SP
  * panels' fits fit (option_fits). */
 static int write_xlsx(FILE *out, const struct study_option *p,
@@ -358,8 +383,19 @@ static int write_xlsx(FILE *out, const struct study_option *p,
              "option %lld", (long long)p->run.id, (long long)p->row.number);
     struct xlsx_schedule x = {
         title, run_started(&p->run), building, n, surfaces,
-        building ? &p->building->totals : &p->totals, &p->classify};
-    int rc = xlsx_schedule_write(out, &x, err);
+        building ? &p->building->totals : &p->totals, &p->classify, NULL, 0};
+    /* A building whose run found its seams gets its seams sheet, empty
+     * when no panels meet along them. */
+    static const struct building_seam_joint no_joints[1];
+    struct building_seam_joint *joints = NULL;
+    int rc = FACET_OK;
+    if (building && p->view->project.seams != NULL) {
+        rc = option_seam_joints(p, &joints, &x.nseam_joints, err);
+        x.seam_joints = joints != NULL ? joints : no_joints;
+    }
+    if (rc == FACET_OK)
+        rc = xlsx_schedule_write(out, &x, err);
+    free(joints);
     free(surfaces);
     return rc;
 }
@@ -484,34 +520,27 @@ static void write_building_csv(const struct study_option *p, FILE *csv,
 static int write_seams_csv(const struct study_option *p, FILE *out,
                            struct facet_error *err)
 {
-    const struct project_option *b = p->building;
-    const struct project *project = &p->view->project;
-    size_t n = b->nsurfaces;
-    const struct panelization **panels = malloc((n ? n : 1) *
-                                                sizeof *panels);
+    size_t n = p->building->nsurfaces;
     const char **names = malloc((n ? n : 1) * sizeof *names);
     size_t *first = malloc((n ? n : 1) * sizeof *first);
     int rc = FACET_OK;
-    if (panels == NULL || names == NULL || first == NULL)
+    if (names == NULL || first == NULL)
         rc = facet_error_set(err, FACET_EWORK, "out of memory");
     size_t id = 1;
     for (size_t s = 0; rc == FACET_OK && s < n; s++) {
-        panels[s] = &b->surfaces[s].panels;
         names[s] = p->surfaces[s].name;
         first[s] = id;
-        id += b->surfaces[s].panels.npanels;
+        id += p->building->surfaces[s].panels.npanels;
     }
     struct building_seam_joint *joints = NULL;
     size_t njoints = 0;
-    if (rc == FACET_OK && project->seams != NULL)
-        rc = project_seams_joints(project, project->seams, panels, &joints,
-                                  &njoints, err);
+    if (rc == FACET_OK)
+        rc = option_seam_joints(p, &joints, &njoints, err);
     if (rc == FACET_OK)
         report_seams_csv(out, joints, njoints, names, first);
     free(joints);
     free(first);
     free(names);
-    free(panels);
     return rc;
 }
 

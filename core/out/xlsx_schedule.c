@@ -436,6 +436,46 @@ static void write_totals(lxw_workbook *wb, struct sheet *s,
     }
 }
 
+static const struct column seam_columns[] = {
+    {"seam", 7, K_COUNT},
+    {"surface a", 16, K_TEXT},
+    {"panel a", 8, K_COUNT},
+    {"surface b", 16, K_TEXT},
+    {"panel b", 8, K_COUNT},
+    {"gap (mm)", 10, K_MM},
+    {"kink (deg)", 10, K_DEGREE},
+    {"crease (deg)", 10, K_DEGREE},
+    {"added kink (deg)", 10, K_DEGREE},
+};
+#define SEAM_COLUMNS (int)(sizeof seam_columns / sizeof seam_columns[0])
+
+/* Every seam joint, its panels by the panels sheet's ids (numbered over
+ * the surfaces in order, as write_panels numbers them: first[k] is
+ * surface k's first id). */
+static void write_seams(struct sheet *s, const struct formats *f,
+                        const struct xlsx_schedule *x, const size_t *first)
+{
+    write_header(s, f, seam_columns, SEAM_COLUMNS);
+    for (size_t k = 0; k < x->nseam_joints; k++) {
+        const struct building_seam_joint *j = &x->seam_joints[k];
+        assert(j->a < x->nsurfaces && j->b < x->nsurfaces);
+        lxw_col_t c = 0;
+        number(s, c++, (double)(j->seam + 1), f->count);
+        text(s, c++, x->surfaces[j->a].name);
+        number(s, c++, (double)(first[j->a] + (size_t)j->joint.panel_a),
+               f->count);
+        text(s, c++, x->surfaces[j->b].name);
+        number(s, c++, (double)(first[j->b] + (size_t)j->joint.panel_b),
+               f->count);
+        number(s, c++, units_mm(j->joint.gap), f->mm);
+        number(s, c++, units_deg(j->joint.kink), f->degree);
+        number(s, c++, units_deg(j->joint.crease), f->degree);
+        number(s, c++, units_deg(j->joint.added), f->degree);
+        assert(c == SEAM_COLUMNS);
+        s->row++;
+    }
+}
+
 /* Copies the file at path into out. */
 static int copy_into(const char *path, FILE *out, struct facet_error *err)
 {
@@ -472,6 +512,11 @@ int xlsx_schedule_write(FILE *out, const struct xlsx_schedule *x,
                                "an XLSX sheet holds (%lu rows); the CSV "
                                "schedule holds them all", npanels,
                                (unsigned long)LXW_ROW_MAX - 1);
+    if (x->nseam_joints > (size_t)LXW_ROW_MAX - 1)
+        return facet_error_set(err, FACET_EINPUT, "%zu seam joints: more "
+                               "than an XLSX sheet holds (%lu rows); the "
+                               "seams CSV holds them all", x->nseam_joints,
+                               (unsigned long)LXW_ROW_MAX - 1);
     const char *folder = getenv("TMPDIR");
     if (folder == NULL || folder[0] == '\0')
         folder = "/tmp";
@@ -504,22 +549,34 @@ int xlsx_schedule_write(FILE *out, const struct xlsx_schedule *x,
     struct sheet moulds = {workbook_add_worksheet(wb, "moulds"), 0, 0};
     struct sheet surfaces = {x->building ? workbook_add_worksheet(
                                                wb, "surfaces") : NULL, 0, 0};
+    struct sheet seams = {x->seam_joints != NULL ? workbook_add_worksheet(
+                                                       wb, "seams") : NULL,
+                          0, 0};
     struct sheet totals = {workbook_add_worksheet(wb, "totals"), 0, 0};
+    size_t *first = malloc((x->nsurfaces ? x->nsurfaces : 1) * sizeof *first);
     int rc = FACET_OK;
-    if (!panels.ws || !moulds.ws || !totals.ws ||
-        (x->building && !surfaces.ws))
+    if (!panels.ws || !moulds.ws || !totals.ws || first == NULL ||
+        (x->building && !surfaces.ws) || (x->seam_joints && !seams.ws))
         rc = facet_error_set(err, FACET_EWORK, "out of memory (workbook)");
+    for (size_t k = 0, id = 1; rc == FACET_OK && k < x->nsurfaces; k++) {
+        first[k] = id;
+        id += x->surfaces[k].panels->npanels;
+    }
     if (rc == FACET_OK) {
         write_panels(&panels, &f, x);
         rc = write_moulds(&moulds, &f, x, err);
     }
     if (rc == FACET_OK && x->building)
         write_surfaces(wb, &surfaces, &f, x);
+    if (rc == FACET_OK && x->seam_joints != NULL)
+        write_seams(&seams, &f, x, first);
     if (rc == FACET_OK)
         write_totals(wb, &totals, &f, x);
+    free(first);
     /* A cell refused is a schedule with a hole in it: not written. */
-    const struct sheet *sheets[4] = {&panels, &moulds, &surfaces, &totals};
-    for (int k = 0; rc == FACET_OK && k < 4; k++)
+    const struct sheet *sheets[5] = {&panels, &moulds, &surfaces, &seams,
+                                     &totals};
+    for (int k = 0; rc == FACET_OK && k < 5; k++)
         if (sheets[k]->error != LXW_NO_ERROR)
             rc = facet_error_set(err, FACET_EWORK, "writing the workbook "
                                  "failed: %s",

@@ -11,7 +11,8 @@
  *     column i, row j, type as classed, type as built, class, area (m^2),
  *     in-plane bounding size of its corners (m; empty for a trimmed
  *     panel, whose outline is not its corners), centroid (m), unit normal,
- *     the four cell corners (m), deviation (mm), SP bending radius (m,
+ *     the four cell corners (m), deviation (mm), a planarized option's
+ *     corner distance and move (mm, panel.h), SP bending radius (m,
  *     where fitted), the fitted surface of a panel built SP (cylinder or
  *     cone; its axis point, the foot of the panel's centroid on the axis,
  *     m; its axis direction, unit, from the apex towards the panel for a
@@ -27,6 +28,11 @@
  *     the type);
  *   - surfaces (a building's option only): one row per surface, its grid
  *     and its totals;
+ *   - seams (a building's option whose run found its seams): one row per
+ *     panel joint along a seam between two surfaces, as the seams CSV's
+ *     (report.h): seam (1..), each side's surface and panel id, gap (mm),
+ *     kink, the design's crease there and the kink the panels add to it
+ *     (deg);
  *   - totals: one row per quantity of the option's totals
  *     (core/quantity/quantity.h: name, label, value as shown, unit), the
  *     numbers facet show prints.
@@ -49,6 +55,7 @@
 #include "core/classify/classify.h"
 #include "core/fit/sp_fit.h"
 #include "core/panel/panel.h"
+#include "core/project/project_seams.h"
 
 /* One surface of the option: a single surface's option has one. */
 struct xlsx_surface {
@@ -73,6 +80,11 @@ struct xlsx_schedule {
     const struct xlsx_surface *surfaces; /* nsurfaces */
     const struct option_totals *totals;  /* the option's */
     const struct classify_options *classify;  /* its prices */
+    /* A building's seam joints (project_seams_joints), whose a and b index
+     * surfaces; NULL: no seams sheet (a single surface, a run that found
+     * no seams). */
+    const struct building_seam_joint *seam_joints;
+    size_t nseam_joints;
 };
 
 /* Writes s as a workbook to out. Returns FACET_OK, FACET_EINPUT for more

@@ -172,6 +172,41 @@ same "the seams schedule: one row a ruling, its gap (mm) and added kink (deg) th
 same "its panels are the panel schedule's ids: third0's 1 meets third1's 2, third2's 7 and third1's 3 its 4" \
     "$(/usr/bin/python3 -c "import csv,sys; print(' '.join(r['panel_a'] + '-' + r['panel_b'] for r in csv.DictReader(open(sys.argv[1]))))" uneven-seams.csv)" \
     "1-2 1-7 3-4"
+# The workbook's seams sheet, read with openpyxl into the CSV's columns,
+# against the same closed forms and panel ids.
+expect "facet export --xlsx of it" 0 \
+    "$FACET" export uneven.db --run 1 --option 1 --xlsx uneven.xlsx
+/usr/bin/python3 - uneven.xlsx uneven-xlsx-seams.csv <<'PY'
+import csv, sys
+import openpyxl
+names = {"seam": "seam", "surface a": "surface_a", "panel a": "panel_a",
+         "surface b": "surface_b", "panel b": "panel_b", "gap (mm)": "gap_mm",
+         "kink (deg)": "kink_deg", "crease (deg)": "crease_deg",
+         "added kink (deg)": "added_kink_deg"}
+rows = list(openpyxl.load_workbook(sys.argv[1], read_only=True)["seams"]
+            .iter_rows(values_only=True))
+with open(sys.argv[2], "w", newline="") as f:
+    w = csv.writer(f)
+    w.writerow([names[h] for h in rows[0]])
+    w.writerows(rows[1:])
+PY
+same "the workbook's seams sheet: one row a ruling, the closed form's gap and added kink" \
+    "$(thirds 1 2 4 uneven-xlsx-seams.csv)" same
+same "... its panels the panels sheet's ids" \
+    "$(/usr/bin/python3 -c "import csv,sys; print(' '.join(r['panel_a'] + '-' + r['panel_b'] for r in csv.DictReader(open(sys.argv[1]))))" uneven-xlsx-seams.csv)" \
+    "1-2 1-7 3-4"
+same "... and the same rows as the seams CSV" \
+    "$(/usr/bin/python3 -c "
+import csv, sys
+a = list(csv.DictReader(open(sys.argv[1])))
+b = list(csv.DictReader(open(sys.argv[2])))
+same = len(a) == len(b) and all(
+    x['surface_a'] == y['surface_a'] and x['surface_b'] == y['surface_b'] and
+    all(abs(float(x[k]) - float(y[k])) <= 1e-9 * max(1, abs(float(x[k])))
+        for k in ('seam', 'panel_a', 'panel_b', 'gap_mm', 'kink_deg',
+                  'crease_deg', 'added_kink_deg'))
+    for x, y in zip(a, b))
+print('same' if same else 'differ')" uneven-seams.csv uneven-xlsx-seams.csv)" same
 
 # 5. The welding tolerance: the hinge's faces 2 mm apart.
 expect "optimize the faces 2 mm apart at the default 1 mm" 0 \
