@@ -39,13 +39,16 @@ building = con.execute("SELECT count(*) FROM surfaces WHERE run=?",
                        (run,)).fetchone()[0] > 0
 row = con.execute("SELECT * FROM options WHERE run=? AND number=?",
                   (run, option)).fetchone()
-want = ["panels", "moulds", "surfaces", "totals"] if building else \
-    ["panels", "moulds", "totals"]
+# A building's run that found its seams (a welding tolerance) has them.
+welded = con.execute("SELECT weld_mm IS NOT NULL FROM runs WHERE id=?",
+                     (run,)).fetchone()[0]
+want = (["panels", "moulds", "surfaces"] + (["seams"] if welded else []) +
+        ["totals"]) if building else ["panels", "moulds", "totals"]
 check("sheets %s" % want, wb.sheetnames == want, wb.sheetnames)
 
 # Every sheet: its header frozen, its numbers numbers.
 TEXT = {"surface", "type as classed", "type as built", "class", "type",
-        "SP fitted surface",
+        "SP fitted surface", "surface a", "surface b",
         "quantity", "label", "unit"}
 for ws in wb:
     check("%s: the header row is frozen" % ws.title, ws.freeze_panes == "A2",
@@ -188,7 +191,11 @@ check("moulds: their costs add up to the mould cost to the cent",
                          row["mould_cost"]))
 
 totals = table(wb["totals"])
-SCALE = {"max_deviation": 1000, "min_panel_width": 1000}
+# Stored in m or rad, shown in mm or degrees (docs/store.md); the rest are
+# stored as shown.
+SCALE = {"max_deviation": 1000, "min_panel_width": 1000,
+         "seam_max_gap": 1000, "seam_max_kink": 180 / math.pi,
+         "seam_max_crease": 180 / math.pi}
 bad = []
 for t in totals:
     name = t["quantity"]
