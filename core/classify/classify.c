@@ -20,6 +20,10 @@ double totals_count(size_t count)
 
 void classify_defaults(struct classify_options *options)
 {
+    /* Every field a default, the ones below and those that are 0 (no
+     * price per panel, joint or mould; no width limit), whatever the
+     * caller's memory held. */
+    memset(options, 0, sizeof *options);
     options->threshold = 0.003;
     options->curvature_tol = 0;
     options->price[TYPE_FP] = 701;

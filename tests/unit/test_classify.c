@@ -260,6 +260,24 @@ static void test_totals_independent_of_order(void **state)
     free(panels);
 }
 
+/* classify_defaults sets every field, whatever the memory held: before,
+ * the panel, joint and mould prices and the width limit were left as
+ * they were (stack garbage refused as a width limit, or priced). */
+static void test_defaults_set_every_field(void **state)
+{
+    (void)state;
+    struct classify_options options;
+    memset(&options, 0xff, sizeof options);  /* NaN in every double */
+    classify_defaults(&options);
+    assert_true(options.panel_cost == 0 && options.joint_cost == 0);
+    for (int t = 0; t < TYPE_COUNT; t++)
+        assert_true(options.mould_cost[t] == 0);
+    assert_true(options.min_panel_width == 0);
+    assert_true(options.max_gap == 0 && options.max_kink == 0);
+    struct facet_error err;
+    assert_int_equal(classify_check_options(&options, &err), FACET_OK);
+}
+
 static void test_bad_options(void **state)
 {
     (void)state;
@@ -331,6 +349,7 @@ int main(void)
         cmocka_unit_test(test_threshold_cost_and_totals),
         cmocka_unit_test(test_totals_independent_of_order),
         cmocka_unit_test(test_flat_by_noise_is_not_fp),
+        cmocka_unit_test(test_defaults_set_every_field),
         cmocka_unit_test(test_bad_options),
         cmocka_unit_test(test_sym3),
     };
