@@ -64,7 +64,6 @@ static int cache_parse(void *context, const struct facet_stop *stop,
                        struct facet_error *err)
 {
     (void)stop;
-    (void)err;
     struct cache_read *c = context;
     c->rc = project_cache_read_unkeyed(c->path, c->found, c->want->files,
                                        c->want->nfiles, c->want->units,
@@ -121,8 +120,11 @@ int study_project_prepared(const struct study_prepare *want,
 {
     memset(project, 0, sizeof *project);
     struct facet_stop stop = study_stop(hooks);
-    char code[128];
-    code_identity(code, sizeof code);
+    /* The program is hashed only for a cache's key: a building read
+     * without a database has no cache. */
+    char code[128] = "";
+    if (want->db_path != NULL)
+        code_identity(code, sizeof code);
     struct project_cache_settings settings = {want->units, want->flip_normals,
                                               want->uv, code};
     char path[4200];
@@ -173,7 +175,10 @@ int study_project_prepared(const struct study_prepare *want,
     study_stage(hooks, "reading the project");
     struct project_parse context = {want, project};
     if (hashed || want->known != NULL) {
-        rc = hash_files(want, &stop, digest, err);
+        /* digest holds the files' hashes already when a refused cache was
+         * read beside them: not hashed twice. */
+        if (!hashed)
+            rc = hash_files(want, &stop, digest, err);
         if (rc == FACET_OK)
             rc = parse(&context, &stop, err);
     } else {

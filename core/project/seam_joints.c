@@ -12,7 +12,6 @@
 #include "core/fit/sp_fit.h"
 #include "core/joint/joint.h"
 
-
 /* The cell index along one UV axis of value x in a grid of count cells
  * over [lo, hi], the last cell keeping its far side. */
 static int cell_along(double x, double lo, double hi, int count)
