@@ -231,16 +231,16 @@ static const struct column panel_columns[] = {
 #define PANEL_COLUMNS (int)(sizeof panel_columns / sizeof panel_columns[0])
 
 static void write_panels(struct sheet *s, const struct formats *f,
-                         const struct xlsx_schedule *x)
+                         const struct xlsx_schedule *x,
+                         const size_t *first_id)
 {
     write_header(s, f, panel_columns, PANEL_COLUMNS);
-    size_t id = 1;
     for (size_t k = 0; k < x->nsurfaces; k++) {
         const struct xlsx_surface *surface = &x->surfaces[k];
-        for (size_t n = 0; n < surface->panels->npanels; n++, id++) {
+        for (size_t n = 0; n < surface->panels->npanels; n++) {
             const struct panel *p = &surface->panels->panels[n];
             lxw_col_t c = 0;
-            number(s, c++, (double)id, f->count);
+            number(s, c++, (double)(first_id[k] + n), f->count);
             text(s, c++, surface->name);
             number(s, c++, p->i, f->count);
             number(s, c++, p->j, f->count);
@@ -291,7 +291,7 @@ static const struct column mould_columns[] = {
  * that name it, its representative the first of them in the building's
  * order (mould.h), its type theirs as built. */
 static int write_moulds(struct sheet *s, const struct formats *f,
-                        const struct xlsx_schedule *x,
+                        const struct xlsx_schedule *x, const size_t *first_id,
                         struct facet_error *err)
 {
     write_header(s, f, mould_columns, 5);
@@ -311,14 +311,13 @@ static int write_moulds(struct sheet *s, const struct formats *f,
         free(type);
         return facet_error_set(err, FACET_EWORK, "out of memory");
     }
-    size_t id = 1;
     for (size_t k = 0; k < x->nsurfaces; k++)
-        for (size_t n = 0; n < x->surfaces[k].panels->npanels; n++, id++) {
+        for (size_t n = 0; n < x->surfaces[k].panels->npanels; n++) {
             const struct panel *p = &x->surfaces[k].panels->panels[n];
             if (p->mould < 0)
                 continue;
             if (members[p->mould]++ == 0) {
-                first[p->mould] = id;
+                first[p->mould] = first_id[k] + n;
                 type[p->mould] = (int)p->built;
             }
         }
@@ -449,11 +448,9 @@ static const struct column seam_columns[] = {
 };
 #define SEAM_COLUMNS (int)(sizeof seam_columns / sizeof seam_columns[0])
 
-/* Every seam joint, its panels by the panels sheet's ids (numbered over
- * the surfaces in order, as write_panels numbers them: first[k] is
- * surface k's first id). */
+/* Every seam joint, its panels by the panels sheet's ids. */
 static void write_seams(struct sheet *s, const struct formats *f,
-                        const struct xlsx_schedule *x, const size_t *first)
+                        const struct xlsx_schedule *x, const size_t *first_id)
 {
     write_header(s, f, seam_columns, SEAM_COLUMNS);
     for (size_t k = 0; k < x->nseam_joints; k++) {
@@ -462,10 +459,10 @@ static void write_seams(struct sheet *s, const struct formats *f,
         lxw_col_t c = 0;
         number(s, c++, (double)(j->seam + 1), f->count);
         text(s, c++, x->surfaces[j->a].name);
-        number(s, c++, (double)(first[j->a] + (size_t)j->joint.panel_a),
+        number(s, c++, (double)(first_id[j->a] + (size_t)j->joint.panel_a),
                f->count);
         text(s, c++, x->surfaces[j->b].name);
-        number(s, c++, (double)(first[j->b] + (size_t)j->joint.panel_b),
+        number(s, c++, (double)(first_id[j->b] + (size_t)j->joint.panel_b),
                f->count);
         number(s, c++, units_mm(j->joint.gap), f->mm);
         number(s, c++, units_deg(j->joint.kink), f->degree);
@@ -553,26 +550,29 @@ int xlsx_schedule_write(FILE *out, const struct xlsx_schedule *x,
                                                        wb, "seams") : NULL,
                           0, 0};
     struct sheet totals = {workbook_add_worksheet(wb, "totals"), 0, 0};
-    size_t *first = malloc((x->nsurfaces ? x->nsurfaces : 1) * sizeof *first);
+    /* The panels' ids, 1.. over the surfaces in order (the CSV's):
+     * first_id[k] is surface k's first, for every sheet that names one. */
+    size_t *first_id = malloc((x->nsurfaces ? x->nsurfaces : 1) *
+                              sizeof *first_id);
     int rc = FACET_OK;
-    if (!panels.ws || !moulds.ws || !totals.ws || first == NULL ||
+    if (!panels.ws || !moulds.ws || !totals.ws || first_id == NULL ||
         (x->building && !surfaces.ws) || (x->seam_joints && !seams.ws))
         rc = facet_error_set(err, FACET_EWORK, "out of memory (workbook)");
     for (size_t k = 0, id = 1; rc == FACET_OK && k < x->nsurfaces; k++) {
-        first[k] = id;
+        first_id[k] = id;
         id += x->surfaces[k].panels->npanels;
     }
     if (rc == FACET_OK) {
-        write_panels(&panels, &f, x);
-        rc = write_moulds(&moulds, &f, x, err);
+        write_panels(&panels, &f, x, first_id);
+        rc = write_moulds(&moulds, &f, x, first_id, err);
     }
     if (rc == FACET_OK && x->building)
         write_surfaces(wb, &surfaces, &f, x);
     if (rc == FACET_OK && x->seam_joints != NULL)
-        write_seams(&seams, &f, x, first);
+        write_seams(&seams, &f, x, first_id);
     if (rc == FACET_OK)
         write_totals(wb, &totals, &f, x);
-    free(first);
+    free(first_id);
     /* A cell refused is a schedule with a hole in it: not written. */
     const struct sheet *sheets[5] = {&panels, &moulds, &surfaces, &seams,
                                      &totals};
