@@ -16,7 +16,6 @@
  * with its panels; facet show, export and tui then see it. What it says
  * is read back from the store.
  */
-#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -32,9 +31,9 @@
 #include "core/base/numparse.h"
 #include "core/base/numrange.h"
 #include "core/base/units.h"
+#include "core/obj/infile.h"
 #include "core/out/json.h"
 #include "core/out/outfile.h"
-#include "core/obj/infile.h"
 #include "core/out/planar_obj.h"
 #include "core/planar/planar_option.h"
 #include "core/planar/planarize.h"
