@@ -448,7 +448,7 @@ int panel_geometry_build_stoppable(const struct mesh *mesh,
         return facet_stop_error(err);
     }
 
-    /* A moved quad takes 4 vertices, a piece and a loop of its own,
+    /* A moved quad takes 4 vertices, 2 pieces and a loop of its own,
      * whatever its patch had. */
     size_t moved = 0;
     for (size_t n = 0; n < np; n++)
