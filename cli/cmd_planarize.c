@@ -8,31 +8,44 @@
  * panels_build_fast, quad_grid.h). Exit status: 0 whether the grid is
  * feasible or not (the output says which, "feasible": false in JSON);
  * 2 for bad input, 1 for a failure while working.
+ *
+ * With --db FILE the option is stored like any option: a new run in FILE
+ * (made when missing) of the one grid, its classified option and its
+ * planarized one beside it (study_start with the run's planarize budget,
+ * study_planar.c: the very code of facet optimize --planarize), ranked,
+ * with its panels; facet show, export and tui then see it. What it says
+ * is read back from the store.
  */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include "args.h"
 #include "classify_flags.h"
 #include "command.h"
 #include "progress.h"
 #include "shown.h"
+#include "signals.h"
 #include "core/base/numparse.h"
 #include "core/base/numrange.h"
 #include "core/base/units.h"
+#include "core/obj/infile.h"
 #include "core/out/json.h"
 #include "core/out/outfile.h"
 #include "core/out/planar_obj.h"
 #include "core/planar/planar_option.h"
 #include "core/planar/planarize.h"
 #include "core/surface/surface.h"
+#include "store/store.h"
+#include "study/study.h"
 
 /* The largest budget taken (mm): 10 m off a facade is no budget. */
 #define CLOSENESS_MAX_MM 10000.0
 
 struct planarize_args {
-    const char *grid, *closeness, *planarity, *obj;
+    const char *grid, *closeness, *planarity, *obj, *db;
     int json, force;
 };
 
@@ -57,6 +70,9 @@ static const struct arg_option planarize_command_options[] = {
      "its longer diagonal (0.001 is 0.1 %)", default_planarity},
     {"obj", 0, ARG_STRING, offsetof(struct planarize_args, obj), "FILE",
      "write the planarized quads as OBJ", NULL},
+    {"db", 0, ARG_STRING, offsetof(struct planarize_args, db), "FILE",
+     "store the option as a new run in FILE (made when missing), beside "
+     "the grid's classified option, for facet show, export and tui", NULL},
     {"force", 0, ARG_FLAG, offsetof(struct planarize_args, force), NULL,
      "replace the OBJ file when it exists", NULL},
     {"json", 0, ARG_FLAG, offsetof(struct planarize_args, json), NULL,
@@ -191,6 +207,171 @@ static int write_obj(const char *path, int force, const struct surface *s,
     return outfile_commit(&f, err);
 }
 
+/* The run's planarized and classified options, as stored. */
+static void print_stored_human(const char *db, int64_t run,
+                               const struct planarize_options *o,
+                               const struct option_row *p,
+                               const struct option_row *c)
+{
+    const struct option_totals *t = &p->totals;
+    shown_line(stdout, "%-16s run %lld of %s: option %lld planarized, "
+               "option %lld the grid classified", "stored", (long long)run,
+               db, (long long)p->number, (long long)c->number);
+    printf("%-16s %d x %d: %zu panels\n", "grid", p->nu, p->nv, t->panels);
+    printf("%-16s budget %g mm; reached %.3f mm at most, %.3f mm on "
+           "average%s\n", "closeness", o->closeness * 1000,
+           t->closeness_reached * 1000, t->closeness_mean * 1000,
+           t->closeness_reached <= o->closeness ? "" : ": OVER the budget");
+    printf("%-16s tolerance %g of the diagonal; reached %.3g\n",
+           "planarity", o->planarity, t->planarity_reached);
+    printf("%-16s %lld of %zu over the tolerance or beyond the budget\n",
+           "quads missed", (long long)t->planar_over, t->panels);
+    printf("%-16s %.0f USD: %zu FP, %zu DP panels (classified: %.0f USD, "
+           "%zu FP, %zu SP, %zu DP)\n", "as an option", t->cost,
+           t->count[TYPE_FP], t->count[TYPE_DP], c->totals.cost,
+           c->totals.count[TYPE_FP], c->totals.count[TYPE_SP],
+           c->totals.count[TYPE_DP]);
+    if (t->planar_over == 0)
+        printf("%-16s feasible: every quad planar within %g of its diagonal, "
+               "every corner within %g mm of the surface\n", "result",
+               o->planarity, o->closeness * 1000);
+    else
+        printf("%-16s INFEASIBLE under the %g mm budget: %lld quads not "
+               "planar or beyond it, corners up to %.3f mm off the "
+               "surface\n", "result", o->closeness * 1000,
+               (long long)t->planar_over, t->closeness_reached * 1000);
+}
+
+static void print_stored_json(const char *db, int64_t run,
+                              const struct planarize_options *o,
+                              const struct option_row *p,
+                              const struct option_row *c)
+{
+    const struct option_totals *t = &p->totals;
+    struct json_writer w;
+    json_init(&w, stdout);
+    json_begin_object(&w);
+    json_key(&w, "db");
+    json_string(&w, db);
+    json_key(&w, "run");
+    json_integer(&w, run);
+    json_key(&w, "option");
+    json_integer(&w, p->number);
+    json_key(&w, "classified_option");
+    json_integer(&w, c->number);
+    json_key(&w, "nu");
+    json_integer(&w, p->nu);
+    json_key(&w, "nv");
+    json_integer(&w, p->nv);
+    json_key(&w, "closeness_budget_mm");
+    json_number(&w, o->closeness * 1000);
+    json_key(&w, "closeness_max_mm");
+    json_number(&w, t->closeness_reached * 1000);
+    json_key(&w, "closeness_mean_mm");
+    json_number(&w, t->closeness_mean * 1000);
+    json_key(&w, "planarity_tolerance");
+    json_number(&w, o->planarity);
+    json_key(&w, "planarity_max");
+    json_number(&w, t->planarity_reached);
+    json_key(&w, "quads_missed");
+    json_integer(&w, t->planar_over);
+    json_key(&w, "feasible");
+    json_bool(&w, t->planar_over == 0);
+    json_key(&w, "cost_usd");
+    json_number(&w, t->cost);
+    json_key(&w, "classified_cost_usd");
+    json_number(&w, c->totals.cost);
+    json_end_object(&w);
+    json_finish(&w);
+}
+
+/* --db: the grid's run recorded in a->db by study_start, its planarized
+ * option beside its classified one, then said from the store. */
+static int planarize_store(const struct planarize_args *a, const char *path,
+                           const struct mesh_options *mesh, int units_named,
+                           int nu, int nv, const struct planarize_options *o,
+                           struct facet_error *err)
+{
+    if (a->obj != NULL)
+        return facet_error_set(err, FACET_EINPUT,
+            "planarize: --obj and --db: write the stored option's quads "
+            "with facet export %s --run RUN --option N --obj FILE", a->db);
+    if (o->planarity != PLANARIZE_PLANARITY_DEFAULT)
+        return facet_error_set(err, FACET_EINPUT,
+            "planarize: --planarity and --db: a stored run planarizes to "
+            "the default tolerance (%g); give no --planarity",
+            PLANARIZE_PLANARITY_DEFAULT);
+    if (!(o->closeness > 0))
+        return facet_error_set(err, FACET_EINPUT,
+            "planarize: --closeness 0 and --db: a stored run planarizes "
+            "within a budget above 0 mm, e.g. --closeness 5");
+    struct study_request request;
+    study_request_defaults(&request);
+    request.surface_path = path;
+    request.mesh = *mesh;
+    request.units_named = units_named;
+    struct design_space *space = &request.settings.space;
+    space->u_min = space->u_max = nu;
+    space->v_min = space->v_max = nv;
+    request.settings.method = study_auto_method(space);
+    request.planarize_closeness = o->closeness;
+    int rc = study_request_check(&request, err);
+    /* A surface that cannot be read is refused before the database is
+     * created or touched. */
+    int fd;
+    struct stat st;
+    if (rc == FACET_OK && (rc = infile_open(path, &fd, &st, err)) == FACET_OK)
+        close(fd);
+    if (rc != FACET_OK)
+        return rc;
+    signals_catch_stop();
+    struct store *store;
+    if ((rc = store_open(a->db, &store, err)) != FACET_OK)
+        return rc;
+    struct study_hooks hooks = {NULL, progress_show_stage, NULL,
+                                signals_stop_hook, NULL,
+                                progress_show_warning, progress_show_note};
+    enum optimize_outcome outcome;
+    int64_t run = 0;
+    rc = study_start(store, &request, &hooks, &run, &outcome, err);
+    if (rc == FACET_ESTOP) {
+        store_close(store);
+        fprintf(stderr, "facet: interrupted while reading and preparing the "
+                "surface; no run was recorded\n");
+        return signals_stop_status();
+    }
+    if (rc == FACET_OK && outcome == OPTIMIZE_INTERRUPTED) {
+        store_close(store);
+        fprintf(stderr, "facet: run %lld interrupted before its planarized "
+                "option was stored\n", (long long)run);
+        return signals_stop_status();
+    }
+    struct option_row *rows = NULL;
+    size_t n = 0;
+    if (rc == FACET_OK)
+        rc = store_options_get(store, run, &rows, &n, err);
+    const struct option_row *planar = NULL, *classified = NULL;
+    for (size_t k = 0; rc == FACET_OK && k < n; k++) {
+        if (rows[k].totals.planarized && planar == NULL)
+            planar = &rows[k];
+        else if (!rows[k].totals.planarized && classified == NULL)
+            classified = &rows[k];
+    }
+    if (rc == FACET_OK && (planar == NULL || classified == NULL))
+        rc = facet_error_set(err, FACET_EWORK,
+            "run %lld of %s holds no planarized option beside its "
+            "classified one", (long long)run, a->db);
+    if (rc == FACET_OK) {
+        if (a->json)
+            print_stored_json(a->db, run, o, planar, classified);
+        else
+            print_stored_human(a->db, run, o, planar, classified);
+    }
+    free(rows);
+    store_close(store);
+    return rc;
+}
+
 static int planarize_run(int argc, char **argv, struct facet_error *err)
 {
     struct planarize_args a;
@@ -232,6 +413,9 @@ static int planarize_run(int argc, char **argv, struct facet_error *err)
                 "--planarity: 0 cannot be reached; give a tolerance above "
                 "0, e.g. 0.001 (0.1 %% of the diagonal)");
     }
+    if (a.db != NULL)
+        return planarize_store(&a, path, &mesh_options, flags.units != NULL,
+                               nu, nv, &o, err);
     if (a.obj != NULL && (rc = outfile_check(a.obj, a.force, err)))
         return rc;
 
@@ -287,6 +471,7 @@ const struct command cmd_planarize = {
     .name = "planarize",
     .usage = "SURFACE.obj --grid NUxNV [--closeness MM]\n"
              "       [--planarity TOL] [--obj FILE] [--force] [--json]\n"
+             "       [--db FILE]\n"
              "       [--units U] [--object NAME] [--group NAME]",
     .summary = "Move a UV grid's panel corners off the surface, within a "
                "closeness budget, until every quad is planar; say when it "
@@ -298,6 +483,10 @@ const struct command cmd_planarize = {
              "the output says\nwhich (\"result\", and \"feasible\" in "
              "JSON). A grid along a hypar's rulings, or\nany grid that does "
              "not follow a conjugate net of the surface, is infeasible\n"
-             "unless the budget is large.\n",
+             "unless the budget is large.\n"
+             "\nWith --db FILE the option is stored as a new run in FILE, "
+             "the grid's\nclassified option beside it, so that facet show, "
+             "export and tui see it as\nany option (facet optimize "
+             "--planarize does the same for a front's grids).\n",
     .run = planarize_run,
 };

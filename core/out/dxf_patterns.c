@@ -8,6 +8,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "core/base/numformat.h"
 #include "core/base/numparse.h"
 #include "core/base/units.h"
 
@@ -254,19 +255,72 @@ static void header(FILE *out, const double lo[3], const double hi[3])
     group(out, 3, "txt");
     group(out, 4, "");
     group(out, 0, "ENDTAB");
+    /* Every application whose XDATA the file holds is registered. */
+    static const char *const applications[] = {"ACAD", DXF_APPLICATION};
+    group(out, 0, "TABLE");
+    group(out, 2, "APPID");
+    integer(out, 70, 2);
+    for (int k = 0; k < 2; k++) {
+        group(out, 0, "APPID");
+        group(out, 2, applications[k]);
+        integer(out, 70, 0);
+    }
+    group(out, 0, "ENDTAB");
     group(out, 0, "ENDSEC");
 }
 
+
+/* What a panel's polylines carry as extended data (dxf_patterns.h). */
+struct panel_data {
+    size_t id;
+    double corner_distance, corner_moved;  /* m; NaN: not measured */
+};
+
+/* Panel k of surface s's extended data, numbered id. */
+static struct panel_data data_of(const struct dxf_surface *s, size_t k,
+                                 size_t id)
+{
+    return (struct panel_data){id, panel_corner_distance(s->panels, k),
+                               panel_corner_moved(s->panels, k)};
+}
+
+/* A number of XDATA (1040, a real), in mm, as the shortest text that
+ * reads back as the same double. */
+static void xdata_mm(FILE *out, const char *name, double metres)
+{
+    char text[NUMBER_EXACT_SIZE];
+    number_exact(text, units_mm(metres));
+    group(out, 1000, name);
+    group(out, 1040, text);
+}
+
+/* The panel's XDATA of the application FACET. */
+static void xdata(FILE *out, const struct panel_data *d)
+{
+    char id[32];
+    snprintf(id, sizeof id, "%zu", d->id);
+    group(out, 1001, DXF_APPLICATION);
+    group(out, 1000, "PanelId");
+    group(out, 1000, id);
+    if (isfinite(d->corner_distance))
+        xdata_mm(out, "CornerDistance_mm", d->corner_distance);
+    if (isfinite(d->corner_moved))
+        xdata_mm(out, "CornerMoved_mm", d->corner_moved);
+}
+
 /* A closed polyline through n points: (x, y) pairs in the plane when xyz
- * is NULL, else 3D points. */
+ * is NULL, else 3D points; a panel's (data not NULL) carries its XDATA. */
 static void polyline(FILE *out, const char *layer, size_t n,
-                     const double *xy, const double *xyz)
+                     const double *xy, const double *xyz,
+                     const struct panel_data *data)
 {
     group(out, 0, "POLYLINE");
     group(out, 8, layer);
     integer(out, 66, 1);
     point(out, 10, 0, 0, 0);
     integer(out, 70, xyz ? 1 | 8 : 1);  /* closed; 8: a 3D polyline */
+    if (data != NULL)
+        xdata(out, data);
     for (size_t k = 0; k < n; k++) {
         group(out, 0, "VERTEX");
         group(out, 8, layer);
@@ -336,13 +390,14 @@ static void write_part(FILE *out, const struct part *p,
 {
     const struct panel_geometry *g = s->geometry;
     enum panel_type type = s->patterns->developed[p->panel];
+    struct panel_data data = data_of(s, p->panel, p->id);
     for (size_t l = g->panel_loop[p->panel]; l < g->panel_loop[p->panel + 1];
          l++) {
         size_t first = g->loop_start[l], n = g->loop_start[l + 1] - first;
         for (size_t k = 0; k < n; k++)
             placed(p, step, s->patterns->flat + 2 * (first + k),
                    buffer + 2 * k);
-        polyline(out, layer_of[type], n, buffer, NULL);
+        polyline(out, layer_of[type], n, buffer, NULL, &data);
     }
     double c[2];
     pattern_centre(p, s, step, c);
@@ -460,7 +515,7 @@ int dxf_patterns_write(FILE *out, const struct dxf_patterns *x,
             double frame[8] = {x0, 0, x0 + sheet[0], 0,
                                x0 + sheet[0], sheet[1], x0,
                                sheet[1]};
-            polyline(out, "SHEETS", 4, frame, NULL);
+            polyline(out, "SHEETS", 4, frame, NULL, NULL);
             char name[40];
             snprintf(name, sizeof name, "sheet %zu", k + 1);
             text(out, "SHEETS", x0 + sheet[0] / 2, -0.060, 0.040,
@@ -476,6 +531,8 @@ int dxf_patterns_write(FILE *out, const struct dxf_patterns *x,
             const struct panel_geometry *g = surface->geometry;
             for (size_t k = 0; k < g->npanels; k++) {
                 enum panel_type type = surface->patterns->developed[k];
+                struct panel_data data =
+                    data_of(surface, k, surface->first_id + k);
                 for (size_t l = g->panel_loop[k]; l < g->panel_loop[k + 1];
                      l++) {
                     size_t first = g->loop_start[l];
@@ -485,7 +542,7 @@ int dxf_patterns_write(FILE *out, const struct dxf_patterns *x,
                                g->position + 3 * g->outline[first + q],
                                3 * sizeof *buffer);
                     polyline(out, outline_layer_of[type], count, NULL,
-                             buffer);
+                             buffer, &data);
                 }
             }
         }

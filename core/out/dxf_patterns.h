@@ -16,6 +16,17 @@
  *     a TEXT "sheet K" under it;
  *   - OUTLINE_3D_FP, OUTLINE_3D_SP, OUTLINE_3D_DP: each panel's outline
  *     in space (a closed 3D POLYLINE per loop), where the panel is.
+ * Every polyline of a panel (its pattern's loops and its 3D outline's)
+ * carries the panel as XDATA of the application FACET (registered in the
+ * APPID table), name and value pairs: 1000 "PanelId", 1000 its id; then,
+ * for a planarized option's moved panel (planar_option.h), 1000
+ * "CornerDistance_mm", 1040 the largest distance of its corners from the
+ * design surface, and 1000 "CornerMoved_mm", 1040 how far they moved
+ * (panel_corner_distance, panel_corner_moved, in mm, the shortest text
+ * that reads back as the stored double). A panel whose corners were not
+ * moved (every classified option's) has neither pair: not measured,
+ * never 0. A moved panel's 3D outline is its moved quad
+ * (panel_geometry.h), its pattern that quad on its plane.
  * Nesting: each pattern's bounding box (turned a quarter when only so it
  * fits a sheet) is placed by a shelf packer, tallest first (ties by id),
  * 10 mm from the frame and 10 mm from each other, so no two patterns
@@ -32,6 +43,9 @@
 #include "core/fit/unroll.h"
 #include "core/panel/panel.h"
 #include "core/panel/panel_geometry.h"
+
+/* The application name of the panels' XDATA. */
+#define DXF_APPLICATION "FACET"
 
 /* The gap between a sheet's frame and its patterns, and between two
  * patterns (m). */

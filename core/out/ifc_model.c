@@ -275,7 +275,7 @@ static size_t property_measure(struct step *s, const char *name,
     return n;
 }
 
-#define PANEL_PROPERTIES 11
+#define PANEL_PROPERTIES 13
 
 /* Panel n of surface, numbered id: its body, plate and property set.
  * Returns the plate's entity number, or 0 with err set. */
@@ -371,6 +371,10 @@ static size_t write_panel(struct step *s, const struct frame *f,
                                      0);
     property[k++] = property_measure(s, "Cost", "IFCMONETARYMEASURE",
                                      p->cost, f->usd);
+    property[k++] = property_measure(s, "CornerDistance", "IFCLENGTHMEASURE",
+        units_mm(panel_corner_distance(surface->panels, n)), f->millimetre);
+    property[k++] = property_measure(s, "CornerMoved", "IFCLENGTHMEASURE",
+        units_mm(panel_corner_moved(surface->panels, n)), f->millimetre);
     assert(k == PANEL_PROPERTIES);
     size_t set = begin(s);
     fputs("IFCPROPERTYSET(", o);

@@ -23,9 +23,15 @@
  *     (IfcLabel: FP, SP, DP and the class names of the schedules),
  *     MouldFamily (IfcInteger, 0-based, as the schedules'; no value for a
  *     panel without one), Deviation (IfcLengthMeasure in mm), Area
- *     (IfcAreaMeasure, m^2), Cost (IfcMonetaryMeasure, USD): the values
- *     the schedules write, from the same fields. A value not known (NaN)
- *     is written as no value.
+ *     (IfcAreaMeasure, m^2), Cost (IfcMonetaryMeasure, USD),
+ *     CornerDistance and CornerMoved (IfcLengthMeasure in mm: a planarized
+ *     option's largest distance of the panel's corners from the design
+ *     surface and how far they moved, panel_corner_distance and
+ *     panel_corner_moved; no value for a panel whose corners were not
+ *     moved, every classified option's): the values the schedules write,
+ *     from the same fields. A value not known (NaN) is written as no
+ *     value, never 0. A planarized option's moved panel's body is its
+ *     moved quad (panel_geometry.h).
  *
  * Every GlobalId is the first 128 bits of the SHA-256 of the model's key
  * and the object's place in it ("panel 12"), in IFC's 22-character base

@@ -333,6 +333,80 @@ int panel_geometry_build(const struct mesh *mesh,
 /* Panels merged between two questions to the stop: milliseconds. */
 #define STOP_EVERY_PANELS 4096
 
+int panel_geometry_is_moved(const struct panelization *panels, size_t n)
+{
+    const struct panel *p = &panels->panels[n];
+    return isfinite(panel_corner_moved(panels, n)) && !p->trimmed &&
+           p->ncorners == 4;
+}
+
+/* The normal of triangle (a, b, c), not unit, into n. */
+static void triangle_normal(const double *a, const double *b,
+                            const double *c, double n[3])
+{
+    double ab[3], ac[3];
+    vec3_sub(b, a, ab);
+    vec3_sub(c, a, ac);
+    vec3_cross(ab, ac, n);
+}
+
+/* Appends panel n, moved (panel_geometry_is_moved), as its quad: four
+ * vertices at its corners with its cell's corners' UV, two triangles and
+ * one loop through them, wound as the surface faces (the side of the
+ * panel's normal, which planar_option.h keeps on the patch's side). The
+ * quad is cut along the diagonal whose triangles face the same way: a
+ * quad the planarization left with a reflex corner (a hypar's, far off
+ * its surface) is cut through that corner, so the triangles' areas add up
+ * to its own, never overlap. */
+static void moved_quad(struct panel_geometry *out,
+                       const struct panelization *panels, size_t n)
+{
+    const struct panel *p = &panels->panels[n];
+    static const int step[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+    double du = (panels->umax - panels->umin) / panels->nu;
+    double dv = (panels->vmax - panels->vmin) / panels->nv;
+    double normal[3] = {0, 0, 0};
+    for (int c = 0; c < 4; c++) {
+        const double *a = p->corner[c], *b = p->corner[(c + 1) % 4];
+        normal[0] += (a[1] - b[1]) * (a[2] + b[2]);
+        normal[1] += (a[2] - b[2]) * (a[0] + b[0]);
+        normal[2] += (a[0] - b[0]) * (a[1] + b[1]);
+    }
+    int reverse = vec3_dot(normal, p->normal) < 0;
+    size_t base = out->nvertices;
+    size_t start = out->piece_start[out->npieces];
+    size_t point = out->loop_start[out->nloops];
+    for (int c = 0; c < 4; c++) {
+        int k = reverse ? 3 - c : c;
+        memcpy(&out->position[3 * (base + c)], p->corner[k],
+               3 * sizeof(double));
+        out->uv[2 * (base + c)] = panels->umin + (p->i + step[k][0]) * du;
+        out->uv[2 * (base + c) + 1] = panels->vmin + (p->j + step[k][1]) * dv;
+        out->outline[point + c] = base + c;
+    }
+    const double *x = &out->position[3 * base];
+    double n0[3], n1[3];
+    triangle_normal(x, x + 3, x + 6, n0);
+    triangle_normal(x, x + 6, x + 9, n1);
+    /* Cut along 0-2, or along 1-3 when 0-2 folds the quad. */
+    static const size_t cut[2][6] = {{0, 1, 2, 0, 2, 3}, {1, 2, 3, 1, 3, 0}};
+    int other = vec3_dot(n0, n1) < 0;
+    for (int t = 0; t < 2; t++) {
+        for (int c = 0; c < 3; c++)
+            out->corner[start + 3 * t + (size_t)c] =
+                base + cut[other][3 * t + c];
+        out->piece_triangle[out->npieces] = PANEL_GEOMETRY_NO_TRIANGLE;
+        out->npieces++;
+        out->piece_start[out->npieces] = start + 3 * (size_t)t + 3;
+    }
+    out->nvertices += 4;
+    out->panel_vertex[n + 1] = out->nvertices;
+    out->panel_piece[n + 1] = out->npieces;
+    out->nloops++;
+    out->loop_start[out->nloops] = point + 4;
+    out->panel_loop[n + 1] = out->nloops;
+}
+
 int panel_geometry_build_stoppable(const struct mesh *mesh,
                                    const struct uv_index *index,
                                    const struct panelization *panels,
@@ -374,6 +448,11 @@ int panel_geometry_build_stoppable(const struct mesh *mesh,
         return facet_stop_error(err);
     }
 
+    /* A moved quad takes 4 vertices, 2 pieces and a loop of its own,
+     * whatever its patch had. */
+    size_t moved = 0;
+    for (size_t n = 0; n < np; n++)
+        moved += panel_geometry_is_moved(panels, n);
     size_t raw_pieces = 0, raw_vertices = 0, largest = 0;
     for (size_t n = 0; n < np; n++) {
         r.piece_cursor[n] = raw_pieces;
@@ -388,15 +467,19 @@ int panel_geometry_build_stoppable(const struct mesh *mesh,
     r.piece_triangle = malloc((raw_pieces + 1) * sizeof *r.piece_triangle);
     r.uv = malloc((raw_vertices + 1) * 2 * sizeof *r.uv);
     r.position = malloc((raw_vertices + 1) * 3 * sizeof *r.position);
-    /* Every output array is at most its raw size: merging only shrinks. */
-    out->position = malloc((raw_vertices + 1) * 3 * sizeof *out->position);
-    out->uv = malloc((raw_vertices + 1) * 2 * sizeof *out->uv);
-    out->piece_start = calloc(raw_pieces + 1, sizeof *out->piece_start);
-    out->corner = malloc((raw_vertices + 1) * sizeof *out->corner);
-    out->piece_triangle = malloc((raw_pieces + 1) *
+    /* Every output array is at most its raw size (merging only shrinks)
+     * and a moved quad's. */
+    size_t most_vertices = raw_vertices + 4 * moved;
+    size_t most_pieces = raw_pieces + 2 * moved;
+    out->position = malloc((most_vertices + 1) * 3 * sizeof *out->position);
+    out->uv = malloc((most_vertices + 1) * 2 * sizeof *out->uv);
+    out->piece_start = calloc(most_pieces + 1, sizeof *out->piece_start);
+    out->corner = malloc((raw_vertices + 6 * moved + 1) *
+                         sizeof *out->corner);
+    out->piece_triangle = malloc((most_pieces + 1) *
                                  sizeof *out->piece_triangle);
-    out->loop_start = calloc(raw_vertices + 1, sizeof *out->loop_start);
-    out->outline = malloc((raw_vertices + 1) * sizeof *out->outline);
+    out->loop_start = calloc(most_vertices + 1, sizeof *out->loop_start);
+    out->outline = malloc((most_vertices + 1) * sizeof *out->outline);
     struct scratch s = {
         malloc((largest + 1) * sizeof *s.keys),
         malloc((largest + 1) * sizeof *s.root),
@@ -438,6 +521,11 @@ int panel_geometry_build_stoppable(const struct mesh *mesh,
             return facet_stop_error(err);
         }
         size_t p1 = p0 + r.piece_count[n];
+        if (panel_geometry_is_moved(panels, n)) {
+            moved_quad(out, panels, n);
+            p0 = p1;
+            continue;
+        }
         size_t v0 = r.piece_vertex_start[p0];
         size_t v1 = r.piece_vertex_start[p1];
         size_t base = out->nvertices;

@@ -17,6 +17,16 @@
  *   - the outline projected onto the panel's best-fit plane (panel->centroid,
  *     panel->normal), the shape a flat (FP) panel is cut to.
  *
+ * A panel of a planarized option whose corners were moved (planar_option.h:
+ * corner_moved known, untrimmed, four corners; panel_geometry_is_moved) is
+ * its moved quad, not the design surface's patch: four vertices at its
+ * corners (panel->corner) with its cell's corners' UV, two triangle
+ * pieces (cut along the diagonal whose triangles face the same way, so
+ * that a quad with a reflex corner is cut through it and their areas add
+ * up to the quad's) and one loop through the four, wound as the surface
+ * faces; so every file drawn from the geometry (OBJ, DXF, IFC) draws what
+ * is built, where it is.
+ *
  * Vertices are shared within a panel (pieces of neighbouring triangles meet
  * at the same vertex, merged when their UV agree to within rounding,
  * 1e-9 of a cell, and so do their positions, to 1e-9 of the panel's
@@ -62,7 +72,8 @@ struct panel_geometry {
                                    corner[piece_start[p] .. [p+1]) */
     size_t *corner;             /* vertex indices (into position, uv) */
     uint32_t *piece_triangle;   /* npieces: the mesh triangle it was cut
-                                   from */
+                                   from; PANEL_GEOMETRY_NO_TRIANGLE for a
+                                   moved quad, cut from none */
 
     /* Outline: closed loops of vertex indices (the last joins the first). */
     size_t nloops;
@@ -102,6 +113,13 @@ int panel_geometry_build_stoppable(const struct mesh *mesh,
                                    struct facet_error *err);
 
 void panel_geometry_free(struct panel_geometry *geometry);
+
+/* A moved quad's piece_triangle. */
+#define PANEL_GEOMETRY_NO_TRIANGLE UINT32_MAX
+
+/* Whether panel n of panels is drawn as its moved quad (above): a
+ * planarized option's full panel, its corner move known. */
+int panel_geometry_is_moved(const struct panelization *panels, size_t n);
 
 /* x (m) projected onto panel's best-fit plane (through panel->centroid,
  * normal panel->normal) into out (m); out may not alias x. */

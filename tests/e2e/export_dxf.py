@@ -145,17 +145,33 @@ check("its units are millimetres ($INSUNITS 4)",
 msp = doc.modelspace()
 TYPES = ("FP", "SP", "DP")
 patterns, labels, notes, frames, outlines = [], [], [], [], []
+pattern_data, outline_data = [], []
+
+
+def facet_xdata(e):
+    """The entity's XDATA of the application FACET as {name: value}
+    (name and value pairs), or None when it has none."""
+    try:
+        tags = list(e.get_xdata("FACET"))
+    except Exception:
+        return None
+    return {tags[k].value: tags[k + 1].value
+            for k in range(0, len(tags) - 1, 2)}
+
+
 for e in msp:
     layer = e.dxf.layer
     if e.dxftype() == "POLYLINE":
         pts = list(e.points())
         if layer in TYPES:
             patterns.append((layer, [(p.x, p.y) for p in pts], e.is_closed))
+            pattern_data.append(facet_xdata(e))
         elif layer == "SHEETS":
             frames.append([(p.x, p.y) for p in pts])
         elif layer.startswith("OUTLINE_3D_"):
             outlines.append((layer[len("OUTLINE_3D_"):],
                              [(p.x, p.y, p.z) for p in pts], e.is_closed))
+            outline_data.append(facet_xdata(e))
     elif e.dxftype() == "TEXT" and layer in TYPES:
         where = e.dxf.align_point if e.dxf.hasattr("align_point") \
             else e.dxf.insert
@@ -314,6 +330,11 @@ for i in range(1, n + 1):
         continue
     area = area2(poly) / 1e6  # mm^2 -> m^2
     A = s["area"]
+    # The DXF's coordinates are rounded to 1e-6 mm: each edge moves by
+    # under 1e-9 m, the area by under the perimeter times that (a moved
+    # quad's pattern has exactly its panel's area, so only this is left).
+    rounding = 1e-9 * sum(math.dist(poly[k], poly[(k + 1) % len(poly)])
+                          for k in range(len(poly))) / 1000
     slack = 0.0
     if layer in ("FP", "DP") and s["normal"] is not None:
         # Newell's area vector of the 3D outline, along the normal: its
@@ -330,7 +351,8 @@ for i in range(1, n + 1):
     if layer == "FP":
         t, D = s["deviation"], s["diameter"]
         slack = A * 32 * (t / D) ** 2
-        if not (area <= A * (1 + 1e-9) and A - area <= slack + 1e-9 * A):
+        if not (area <= A * (1 + 1e-9) + rounding and
+                A - area <= slack + 1e-9 * A + rounding):
             bad_fp.append((i, area, A, slack))
         worst["FP"] = max(worst.get("FP", 0), (A - area) / A)
     elif layer == "SP":
@@ -365,6 +387,78 @@ if building:
     check("each surface's FP and SP pattern areas add up to "
           "option_surfaces' within their panels' tolerances summed", not bad,
           bad[:3])
+# Each panel's XDATA (issue 33): its id on every polyline of it; a
+# planarized option's moved panels also their corner distance and move.
+pattern_id = {id(pattern_of[i]): i for i in pattern_of}
+bad = [(k, d) for k, d in enumerate(pattern_data)
+       if d is None or d.get("PanelId") !=
+       str(pattern_id.get(id(patterns[k]), "unlabelled"))]
+bad += [(k, d) for k, d in enumerate(outline_data)
+        if d is None or d.get("PanelId") != str(k + 1)]
+check("every pattern and 3D outline carries its panel's id as XDATA "
+      "(FACET PanelId)", not bad, bad[:3])
+MEASURES = ("CornerDistance_mm", "CornerMoved_mm")
+planarized = opt["planarized"] == 1
+if not planarized:
+    bad = [d for d in pattern_data + outline_data
+           if d is not None and any(m in d for m in MEASURES)]
+    check("a classified option moved no corner: no corner distance or move "
+          "in any panel's XDATA (not measured, never 0)", not bad, bad[:3])
+else:
+    import numpy as np
+    from planarize_check import diagonal_distance, mesh_distance, read_obj
+    sv, sf = read_obj(sys.argv[7])
+    tri = np.array([f for f in sf if len(f) == 3])
+    A, B, C = sv[tri[:, 0]], sv[tri[:, 1]], sv[tri[:, 2]]
+    moved, bad_quad, bad_flat, bad_store, bad_far, bad_none = 0, [], [], \
+        [], [], []
+    for i in range(1, n + 1):
+        s = built[key[i]]
+        d = outline_data[i - 1] or {}
+        if s["corner_distance"] is None:
+            if any(m in d for m in MEASURES):
+                bad_none.append(i)
+            continue
+        moved += 1
+        q = np.array(outlines[i - 1][1]) / 1000  # mm -> m
+        corners = np.array([[s["c%d_%s" % (c, x)] for x in "xyz"]
+                            for c in range(4)])
+        # The moved quad itself: its four corners, each a stored corner.
+        if len(q) != 4 or max(min(np.linalg.norm(corners - p, axis=1))
+                              for p in q) > 1e-9:
+            bad_quad.append((i, len(q)))
+            continue
+        diagonal = max(np.linalg.norm(q[2] - q[0]), np.linalg.norm(q[3] - q[1]))
+        relative = diagonal_distance(q) / diagonal
+        # Planar to the option's reported planarity, less the DXF's
+        # rounding of its coordinates to a nanometre.
+        if relative > opt["planarity_reached"] + 1e-8 or \
+                (s["built_type"] == "FP" and relative > 1e-3 + 1e-8):
+            bad_flat.append((i, relative, opt["planarity_reached"]))
+        got = (float(d.get("CornerDistance_mm", "nan")),
+               float(d.get("CornerMoved_mm", "nan")))
+        want = (s["corner_distance"] * 1000, s["corner_moved"] * 1000)
+        if not all(abs(a - b) <= 1e-12 * max(1, abs(b))
+                   for a, b in zip(got, want)) or \
+                pattern_data[[k for k, v in enumerate(patterns)
+                              if v is pattern_of[i]][0]] != d:
+            bad_store.append((i, got, want))
+        brute = 1000 * max(mesh_distance(p, A, B, C) for p in q)
+        if not abs(got[0] - brute) <= 1e-5:
+            bad_far.append((i, got[0], brute))
+    check("a planarized option: each moved panel's 3D outline is its moved "
+          "quad, its four stored corners (%d panels)" % moved,
+          moved > 0 and not bad_quad, bad_quad[:3])
+    check("each moved quad planar within the option's reported planarity "
+          "%.3g (and 1e-3 when FP)" % opt["planarity_reached"],
+          not bad_flat, bad_flat[:3])
+    check("XDATA CornerDistance_mm and CornerMoved_mm as the panels table, "
+          "the same on its pattern", not bad_store, bad_store[:3])
+    check("XDATA CornerDistance_mm the brute-force distance of the quad's "
+          "corners to the surface's triangles (1e-5 mm, numpy)",
+          not bad_far, bad_far[:3])
+    check("a panel not moved (trimmed) has no corner distance or move",
+          not bad_none, bad_none[:3])
 if exact:
     bad = [(i, area2(pattern_of[i][1]) / 1e6, panel_of(i)["area"])
            for i in pattern_of if not abs(

@@ -5,7 +5,9 @@
 # schedule's id, layers as built, areas with derived tolerances, sheets
 # without overlaps); a plane's patterns are its panels exactly; a
 # cylinder's and a cone's written from their formulas; a building's
-# option; the same option twice is the same file; a bad sheet size or a
+# option; every panel's polylines carry its id as XDATA, and a planarized
+# option's moved panels are their moved quads with their corner distance
+# and move (issue 33); the same option twice is the same file; a bad sheet size or a
 # panel no sheet holds is refused in one line and leaves nothing.
 # layers: cli study core
 . "$(dirname "$0")/lib.sh"
@@ -75,6 +77,29 @@ export_dxf b.db "$OPTION" building 6000x4500 \
 exported_again "a building's option" building.dxf building2.dxf \
     "$FACET" export b.db --run 1 --option "$OPTION" --dxf building2.dxf \
     --sheet 6000x4500
+
+# Planarized options (issue 33): each moved panel's 3D outline is its
+# moved quad at the stored corners, planar to the option's reported
+# planarity, and its XDATA's corner distance is numpy's brute-force
+# distance of those corners to the surface's triangles. A surface of
+# revolution's meridians and parallels (a conjugate net: feasible within
+# 0.2 mm) and a hypar's rulings (planar only some 350 mm off it).
+/usr/bin/python3 "$HERE/planarize_check.py" vase vase.obj || exit 1
+expect "a surface of revolution planarizes" 0 "$FACET" optimize vase.obj \
+    --db vase.db --u 11 --v 8 --threshold 3 --planarize 0.2
+VOPT=$(sqlite3 vase.db 'SELECT number FROM options WHERE planarized = 1')
+same "its planarized option moved its corners, within the budget" \
+    "$(sqlite3 vase.db "SELECT feasible, closeness_reached > 1e-6 FROM options WHERE number = $VOPT")" "1|1"
+export_dxf vase.db "$VOPT" vase 20000x20000 vase.obj
+"$FACET" example hypar -o hypar.obj 2>/dev/null || exit 1
+expect "a hypar planarizes" 0 "$FACET" optimize hypar.obj --db hypar.db \
+    --u 6 --v 6 --threshold 3 --planarize 5
+HOPT=$(sqlite3 hypar.db 'SELECT number FROM options WHERE planarized = 1')
+same "its planarized option is infeasible, far off the surface" \
+    "$(sqlite3 hypar.db "SELECT feasible, closeness_reached > 0.1 FROM options WHERE number = $HOPT")" "0|1"
+export_dxf hypar.db "$HOPT" hypar 20000x20000 hypar.obj
+# And its classified option: no corner numbers at all.
+export_dxf hypar.db 1 hypar_classified 20000x20000 hypar.obj
 
 # Real surfaces (../shared/data): a barrel vault (SP), an igloo (FP, SP
 # and DP, trimmed panels at its door).

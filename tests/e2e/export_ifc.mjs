@@ -165,7 +165,8 @@ const props = p => (setOf.get(p) ?? [{}])[0];
 
 // The units the values are in: Deviation in mm, Cost in USD, Area in the
 // project's (m^2).
-const unitOf = { Deviation: new Set(), Cost: new Set(), Area: new Set() };
+const unitOf = { Deviation: new Set(), Cost: new Set(), Area: new Set(),
+                 CornerDistance: new Set(), CornerMoved: new Set() };
 for (const n of ids(W.IFCPROPERTYSINGLEVALUE)) {
     const p = line(n), name = text(p.Name);
     if (!(name in unitOf))
@@ -175,8 +176,11 @@ for (const n of ids(W.IFCPROPERTYSINGLEVALUE)) {
         : u.Currency ? 'currency ' + text(u.Currency)
         : (u.Prefix?.value ?? '') + ' ' + u.Name?.value);
 }
-check('Deviation in mm, Cost in USD, Area in the project\'s unit',
+check('Deviation, CornerDistance and CornerMoved in mm, Cost in USD, ' +
+      'Area in the project\'s unit',
       [...unitOf.Deviation].join() === 'MILLI METRE' &&
+      [...unitOf.CornerDistance].join() === 'MILLI METRE' &&
+      [...unitOf.CornerMoved].join() === 'MILLI METRE' &&
       [...unitOf.Cost].join() === 'currency USD' &&
       [...unitOf.Area].join() === 'project' &&
       units.some(u => u.UnitType?.value === 'AREAUNIT' &&
@@ -278,6 +282,133 @@ check('each plate\'s face set has the area its Area property says (1e-6)',
 bad = plates.filter(p => !close(meshArea(p), area.get(p), 1e-4));
 check('web-ifc\'s mesh of each plate has its face set\'s area (1e-4, float)',
       bad.length === 0, bad.slice(0, 3));
+
+// The corner move (issue 33). A classified option's plates (and a
+// building's) have CornerDistance and CornerMoved without a value: not
+// measured, never 0. A planarized option's moved panel is its moved quad:
+// its face set's four points are the stored corners, planar to the
+// option's reported planarity, and its CornerDistance is the distance of
+// those points to the surface's triangles, measured here by brute force
+// (Ericson's closest point on a triangle, over every triangle of the OBJ
+// named by PLANAR_MESH).
+const vsub = (u, v) => [u[0] - v[0], u[1] - v[1], u[2] - v[2]];
+const vdot = (u, v) => u[0] * v[0] + u[1] * v[1] + u[2] * v[2];
+const vcross = (u, v) => [u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2],
+                          u[0] * v[1] - u[1] * v[0]];
+const vlen = u => Math.sqrt(vdot(u, u));
+const along = (a, d, t) => [a[0] + t * d[0], a[1] + t * d[1], a[2] + t * d[2]];
+function closestOnTriangle(p, a, b, c) {
+    const ab = vsub(b, a), ac = vsub(c, a), ap = vsub(p, a);
+    const d1 = vdot(ab, ap), d2 = vdot(ac, ap);
+    if (d1 <= 0 && d2 <= 0)
+        return a;
+    const bp = vsub(p, b), d3 = vdot(ab, bp), d4 = vdot(ac, bp);
+    if (d3 >= 0 && d4 <= d3)
+        return b;
+    const vc = d1 * d4 - d3 * d2;
+    if (vc <= 0 && d1 >= 0 && d3 <= 0)
+        return along(a, ab, d1 / (d1 - d3));
+    const cp = vsub(p, c), d5 = vdot(ab, cp), d6 = vdot(ac, cp);
+    if (d6 >= 0 && d5 <= d6)
+        return c;
+    const vb = d5 * d2 - d1 * d6;
+    if (vb <= 0 && d2 >= 0 && d6 <= 0)
+        return along(a, ac, d2 / (d2 - d6));
+    const va = d3 * d6 - d5 * d4;
+    if (va <= 0 && d4 - d3 >= 0 && d5 - d6 >= 0)
+        return along(b, vsub(c, b), (d4 - d3) / ((d4 - d3) + (d5 - d6)));
+    const v = vb / (va + vb + vc), w = vc / (va + vb + vc);
+    return along(along(a, ab, v), ac, w);
+}
+function readTriangles(path) {
+    const v = [], t = [];
+    for (const l of readFileSync(path, 'utf8').split('\n')) {
+        const w = l.trim().split(/\s+/);
+        if (w[0] === 'v')
+            v.push(w.slice(1, 4).map(Number));
+        else if (w[0] === 'f') {
+            const k = w.slice(1).map(x => v[Number(x.split('/')[0]) - 1]);
+            for (let m = 1; m + 1 < k.length; m++)
+                t.push([k[0], k[m], k[m + 1]]);
+        }
+    }
+    return t;
+}
+const meshDistance = (p, triangles) => Math.min(...triangles.map(
+    ([a, b, c]) => vlen(vsub(p, closestOnTriangle(p, a, b, c)))));
+function facePoints(plate) {
+    const shape = ref(plate.Representation);
+    if (shape === null)
+        return [];
+    return line(shape).Representations.map(x => line(ref(x)))
+        .flatMap(r => r.Items.map(x => line(ref(x))))
+        .flatMap(item => line(ref(item.Coordinates)).CoordList
+                         .map(p => p.map(num)));
+}
+const cornerNumbers = p => [props(p).CornerDistance, props(p).CornerMoved];
+check('every plate has CornerDistance and CornerMoved in its property set',
+      plates.every(p => 'CornerDistance' in props(p) &&
+                   'CornerMoved' in props(p)));
+if (building || !row.planarized) {
+    bad = plates.filter(p => cornerNumbers(p).some(v => v !== null &&
+                                                   v !== undefined));
+    check('a classified option moved no corner: CornerDistance and ' +
+          'CornerMoved without a value on every plate (never 0)',
+          bad.length === 0, bad.slice(0, 3).map(p => cornerNumbers(p)));
+} else {
+    const stored = new Map(sql(`SELECT * FROM panels WHERE run=${run} AND
+        option=${option}`).map(r => [`${r.i},${r.j}`, r]));
+    const triangles = process.env.PLANAR_MESH
+        ? readTriangles(process.env.PLANAR_MESH) : null;
+    let moved = 0;
+    const wrongQuad = [], wrongFlat = [], wrongValue = [], wrongFar = [];
+    for (const p of plates) {
+        const v = props(p), s = stored.get(`${num(v.ColumnI)},${num(v.RowJ)}`);
+        const [distance, move] = cornerNumbers(p).map(num);
+        if (!s || s.corner_distance === null) {
+            if (distance !== null || move !== null)
+                wrongValue.push([text(v.PanelId), distance, move]);
+            continue;
+        }
+        moved++;
+        if (!close(distance, s.corner_distance * 1000, 1e-12) ||
+            !close(move, s.corner_moved * 1000, 1e-12))
+            wrongValue.push([text(v.PanelId), distance, move,
+                             s.corner_distance, s.corner_moved]);
+        const q = facePoints(plateOf.get(p));
+        const corners = [0, 1, 2, 3].map(c => ['x', 'y', 'z'].map(
+            x => s[`c${c}_${x}`]));
+        if (q.length !== 4 || !q.every(x => corners.some(
+                c => vlen(vsub(x, c)) <= 1e-12 * Math.max(1, vlen(c))))) {
+            wrongQuad.push([text(v.PanelId), q.length]);
+            continue;
+        }
+        const d1 = vsub(q[2], q[0]), d2 = vsub(q[3], q[1]), n = vcross(d1, d2);
+        const relative = Math.abs(vdot(vsub(q[1], q[0]), n)) / vlen(n) /
+                         Math.max(vlen(d1), vlen(d2));
+        if (!(relative <= row.planarity_reached * (1 + 1e-9) + 1e-12) ||
+            (s.built_type === 'FP' && !(relative <= 1e-3)))
+            wrongFlat.push([text(v.PanelId), relative, row.planarity_reached]);
+        if (triangles) {
+            const brute = Math.max(...q.map(x => meshDistance(x, triangles)));
+            if (!(Math.abs(brute * 1000 - distance) <= 1e-6))
+                wrongFar.push([text(v.PanelId), distance, brute * 1000]);
+        }
+    }
+    check(`a planarized option: each moved plate's body is its moved quad, ` +
+          `the four stored corners (${moved} plates)`, moved > 0 &&
+          wrongQuad.length === 0, wrongQuad.slice(0, 3));
+    check('each moved quad planar within the option\'s reported planarity ' +
+          `${row.planarity_reached} (and 1e-3 when FP)`,
+          wrongFlat.length === 0, wrongFlat.slice(0, 3));
+    check('CornerDistance and CornerMoved (mm) as the panels table; none ' +
+          'on a plate not moved', wrongValue.length === 0,
+          wrongValue.slice(0, 3));
+    if (triangles)
+        check('CornerDistance the brute-force distance of the quad\'s ' +
+              'corners to the surface\'s triangles (1e-6 mm)',
+              wrongFar.length === 0, wrongFar.slice(0, 3));
+}
 
 const USD = 0.005;
 if (!building) {

@@ -2,7 +2,9 @@
 # End-to-end: the IFC4 model (issue 30) of a single surface's option and of
 # a building's, read back by web-ifc (npm, pinned in tests/ifc, installed
 # by make deps) against the store read by the sqlite3 program
-# (export_ifc.mjs); the same option exported twice is the same file, byte
+# (export_ifc.mjs); a planarized option's plates are their moved quads
+# with their corner distance and move (issue 33); the same option exported
+# twice is the same file, byte
 # for byte; a path that cannot be written is refused in one line and
 # leaves nothing.
 # layers: cli study store core
@@ -69,6 +71,32 @@ expect "its model is written" 0 "$FACET" export cyl.db --run 1 \
     --option 1 --ifc cyl.ifc
 $CHECK cyl.db 1 1 cyl.ifc cyl ||
     echo "not ok - export_ifc.mjs on a cylinder (status $?)"
+
+# Planarized options (issue 33): each moved plate's body is its moved
+# quad at the stored corners, planar to the option's reported planarity,
+# with CornerDistance (the brute-force distance of its corners to the
+# surface's triangles, measured by export_ifc.mjs) and CornerMoved; a
+# classified option's plates have neither value. A surface of revolution's
+# conjugate net (within 0.2 mm) and a hypar's rulings (some 350 mm off).
+/usr/bin/python3 "$HERE/planarize_check.py" vase vase.obj || exit 1
+expect "a surface of revolution planarizes" 0 "$FACET" optimize vase.obj \
+    --db vase.db --u 11 --v 8 --threshold 3 --planarize 0.2
+"$FACET" example hypar -o hypar.obj 2>/dev/null || exit 1
+expect "a hypar planarizes" 0 "$FACET" optimize hypar.obj --db hypar.db \
+    --u 6 --v 6 --threshold 3 --planarize 5
+for s in vase hypar; do
+    OPT=$(sqlite3 $s.db 'SELECT number FROM options WHERE planarized = 1')
+    same "$s: its planarized option moved its corners" \
+        "$(sqlite3 $s.db "SELECT closeness_reached > 1e-6 FROM options WHERE number = $OPT")" 1
+    expect "$s: its planarized option as IFC" 0 "$FACET" export $s.db \
+        --run 1 --option "$OPT" --ifc $s.ifc
+    PLANAR_MESH=$s.obj $CHECK $s.db 1 "$OPT" $s.ifc $s ||
+        echo "not ok - export_ifc.mjs on the $s's planarized option (status $?)"
+done
+expect "the hypar's classified option as IFC" 0 "$FACET" export hypar.db \
+    --run 1 --option 1 --ifc hypar-c.ifc
+PLANAR_MESH=hypar.obj $CHECK hypar.db 1 1 hypar-c.ifc hypar ||
+    echo "not ok - export_ifc.mjs on the hypar's classified option (status $?)"
 
 # A building of four files: its panels evaluated again, against
 # option_surfaces; ids unique across it.

@@ -9,7 +9,8 @@
 # diagonals) and against facet planarize --json for the same grid. A
 # surface of revolution (a conjugate net) planarizes feasibly and beats
 # its classified options on cost; the hypar's rulings are stored
-# infeasible, never called planar. Bad input: one line, status 2.
+# infeasible, never called planar. facet planarize --db stores the same
+# as a run of its own. Bad input: one line, status 2.
 # layers: cli study store core
 . "$(dirname "$0")/lib.sh"
 HERE=$(cd "$(dirname "$0")" && pwd)
@@ -90,6 +91,86 @@ cp "$OUT" hypar6.json
 run "$FACET" show h.db --run 1 --option "$HOPT"
 stdout_has "show says the hypar's option is INFEASIBLE, not planar" \
     "^planarized +INFEASIBLE: [0-9]+ quads not planar or beyond the budget"
+
+# facet planarize --db: the option stored like any option, a new run of
+# the one grid, its classified option beside it; checked as optimize
+# --planarize's (sqlite3, and numpy by planarize_store_check.py against
+# the stored corners and facet planarize --json's own run).
+run "$FACET" planarize vase.obj --grid 11x8 --closeness 0.2 --db pv.db --json
+[ "$STATUS" -eq 0 ] && pass "planarize --db stores the vase's 11 x 8 grid" ||
+    fail "planarize --db stores the vase's 11 x 8 grid: $(cat "$ERR")"
+cp "$OUT" stored.json
+p() { sqlite3 pv.db "$1"; }
+same "one run, of the vase, its budget 0.2 mm" \
+    "$(p 'SELECT count(*), max(planarize_closeness_mm), max(surface_path LIKE "%vase.obj") FROM runs')" "1|0.2|1"
+same "the grid classified and planarized: two options, one planarized" \
+    "$(p 'SELECT count(*), sum(planarized), min(nu), max(nu), min(nv), max(nv) FROM options')" "2|1|11|11|8|8"
+POPT=$(p 'SELECT number FROM options WHERE planarized = 1')
+COPT2=$(p 'SELECT number FROM options WHERE planarized = 0')
+same "its panels are stored, every one with its corner distance" \
+    "$(p "SELECT count(*), count(corner_distance) FROM panels WHERE option = $POPT")" "88|88"
+same "it says the run and options it stored" \
+    "$(/usr/bin/python3 -c 'import json,sys; j=json.load(open(sys.argv[1])); print(j["run"], j["option"], j["classified_option"])' stored.json)" \
+    "1 $POPT $COPT2"
+if /usr/bin/python3 - stored.json pv.db "$POPT" <<'PY'
+import json, sqlite3, sys
+j = json.load(open(sys.argv[1]))
+r = sqlite3.connect(sys.argv[2]).execute(
+    "SELECT closeness_reached, closeness_mean, planarity_reached, planar_over,"
+    " cost FROM options WHERE number = ?", (int(sys.argv[3]),)).fetchone()
+ok = (j["closeness_max_mm"] == r[0] * 1000 and
+      j["closeness_mean_mm"] == r[1] * 1000 and
+      j["planarity_max"] == r[2] and j["quads_missed"] == r[3] and
+      j["feasible"] == (r[3] == 0) and j["cost_usd"] == r[4])
+sys.exit(0 if ok else 1)
+PY
+then pass "what it says was reached is what the store holds, exactly"
+else fail "what it says was reached is what the store holds, exactly"
+fi
+run "$FACET" planarize vase.obj --grid 11x8 --closeness 0.2 --json
+cp "$OUT" vase11.json
+/usr/bin/python3 "$HERE/planarize_store_check.py" vase.obj pv.db 1 "$POPT" vase11.json ||
+    fail "planarize_store_check.py did not finish on planarize --db"
+run "$FACET" show pv.db --run 1 --option "$POPT"
+stdout_has "show sees the stored option as planarized" "^kind +planarized"
+run "$FACET" planarize hypar.obj --grid 6x6 --closeness 5 --db pv.db
+[ "$STATUS" -eq 0 ] && pass "planarize --db adds the hypar's run to the same file" ||
+    fail "planarize --db adds the hypar's run: $(cat "$ERR")"
+stdout_has "it says the hypar is INFEASIBLE" "^result +INFEASIBLE under the 5 mm budget"
+same "the hypar's run is stored infeasible, far off the surface" \
+    "$(p 'SELECT feasible, planar_over > 0, closeness_reached > 0.005 FROM options WHERE run = 2 AND planarized = 1')" "0|1|1"
+# Bad input: one line, status 2, no database made.
+expect_error "planarize --db in a folder that does not exist" \
+    "no/such/x\.db" "$FACET" planarize vase.obj --grid 4x4 --db no/such/x.db
+echo "not a database" >text.db
+expect_error "planarize --db of a file that is not a database" \
+    "text\.db: not an SQLite database" "$FACET" planarize vase.obj \
+    --grid 4x4 --db text.db
+sqlite3 alien.db 'CREATE TABLE t(x); INSERT INTO t VALUES (1);'
+expect_error "planarize --db of another application's database" \
+    "alien\.db: an SQLite database of another application" "$FACET" \
+    planarize vase.obj --grid 4x4 --db alien.db
+expect_error "planarize --db of a surface that does not exist" \
+    "missing\.obj: cannot open" "$FACET" planarize missing.obj --grid 4x4 \
+    --db new.db
+expect_error "planarize --db --closeness 0" "planarize: --closeness 0 and --db" \
+    "$FACET" planarize vase.obj --grid 4x4 --closeness 0 --db new.db
+expect_error "planarize --db --planarity" "planarize: --planarity and --db" \
+    "$FACET" planarize vase.obj --grid 4x4 --planarity 0.01 --db new.db
+expect_error "planarize --db --obj" "planarize: --obj and --db" \
+    "$FACET" planarize vase.obj --grid 4x4 --obj x.obj --db new.db
+same "none of them made a database" "$(ls new.db* x.obj 2>/dev/null)" ""
+if [ "$(id -u)" -eq 0 ] && command -v setpriv >/dev/null; then
+    # root writes anywhere: the read-only folder is tried as nobody.
+    mkdir -p ro && chmod 555 ro && chmod 755 "$WORK" && chmod 644 vase.obj
+    expect_error "planarize --db in a read-only folder" "ro/x\.db" \
+        setpriv --reuid=nobody --regid=nogroup --clear-groups \
+        "$FACET" planarize vase.obj --grid 4x4 --db ro/x.db
+    same "nothing made in it" "$(ls -A ro)" ""
+    chmod 755 ro; chmod 700 "$WORK"
+else
+    skip "planarize --db in a read-only folder" "it needs root and setpriv to act as another user"
+fi
 
 expect_error "--planarize 0" "^facet: --planarize" "$FACET" optimize \
     hypar.obj --db x.db --planarize 0
