@@ -424,6 +424,54 @@ static const char schema_v15[] =
     "ALTER TABLE options ADD COLUMN seam_gaps_over INTEGER;"
     "ALTER TABLE options ADD COLUMN seam_kinks_over INTEGER;";
 
+/* Version 16: one unit per family of columns, and Facet's own values kept
+ * to the bit (issue 27). Core holds gaps in m and kinks in rad; users
+ * query an option's max_gap, mean_gap in mm and max_kink, mean_kink in
+ * degrees (schema v7), and v15 stored a building's seam_max_gap in m and
+ * seam_max_kink, seam_max_crease in rad beside them. Each of those
+ * columns is now held as core holds it, in a column named with its unit
+ * (max_gap_m, max_kink_rad, seam_max_gap_m, ...: what Facet writes and
+ * reads), and its own name is a column SQLite generates from it in mm or
+ * degrees, by the expression core/base/units.h's functions are: every
+ * gap of an option in mm, every kink and crease in degrees. Rows stored
+ * before are rescaled in place (this migration's one transaction): a v15
+ * gap's mm over 1000, a kink's degrees times pi over 180, and a seam's
+ * values kept (they were m and rad). The indexes by max_gap and max_kink
+ * are on the columns users sort by. A building's surfaces
+ * (option_surfaces) likewise. docs/decisions.md says why. */
+#define V16_GAP(table, name) \
+    "ALTER TABLE " table " RENAME COLUMN " name " TO " name "_m;" \
+    "ALTER TABLE " table " ADD COLUMN " name " REAL GENERATED ALWAYS AS" \
+    " (" name "_m * 1000) VIRTUAL;"
+#define V16_ANGLE(table, name) \
+    "ALTER TABLE " table " RENAME COLUMN " name " TO " name "_rad;" \
+    "ALTER TABLE " table " ADD COLUMN " name " REAL GENERATED ALWAYS AS" \
+    " (" name "_rad * 180 / 3.141592653589793) VIRTUAL;"
+static const char schema_v16[] =
+    "DROP INDEX options_by_max_gap;"
+    "DROP INDEX options_by_max_kink;"
+    V16_GAP("options", "max_gap")
+    V16_GAP("options", "mean_gap")
+    V16_ANGLE("options", "max_kink")
+    V16_ANGLE("options", "mean_kink")
+    V16_GAP("options", "seam_max_gap")
+    V16_ANGLE("options", "seam_max_kink")
+    V16_ANGLE("options", "seam_max_crease")
+    "UPDATE options SET max_gap_m = max_gap_m / 1000,"
+    " mean_gap_m = mean_gap_m / 1000,"
+    " max_kink_rad = max_kink_rad * 3.141592653589793 / 180,"
+    " mean_kink_rad = mean_kink_rad * 3.141592653589793 / 180;"
+    "CREATE INDEX options_by_max_gap ON options(run, max_gap);"
+    "CREATE INDEX options_by_max_kink ON options(run, max_kink);"
+    V16_GAP("option_surfaces", "max_gap")
+    V16_GAP("option_surfaces", "mean_gap")
+    V16_ANGLE("option_surfaces", "max_kink")
+    V16_ANGLE("option_surfaces", "mean_kink")
+    "UPDATE option_surfaces SET max_gap_m = max_gap_m / 1000,"
+    " mean_gap_m = mean_gap_m / 1000,"
+    " max_kink_rad = max_kink_rad * 3.141592653589793 / 180,"
+    " mean_kink_rad = mean_kink_rad * 3.141592653589793 / 180;";
+
 static const char *const migrations[STORE_SCHEMA_VERSION] = {
     schema_v1,
     schema_v2,
@@ -440,6 +488,7 @@ static const char *const migrations[STORE_SCHEMA_VERSION] = {
     schema_v13,
     schema_v14,
     schema_v15,
+    schema_v16,
 };
 
 int store_fail(struct store *store, const char *doing,

@@ -12,7 +12,7 @@
 
 /* The schema this Facet writes (PRAGMA user_version) and the
  * application_id that marks a file as Facet's: "FCET". */
-#define STORE_SCHEMA_VERSION 15
+#define STORE_SCHEMA_VERSION 16
 #define STORE_APPLICATION_ID 0x46434554
 
 struct store {

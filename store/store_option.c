@@ -34,8 +34,12 @@ static int option_columns_sql(char *sql, size_t size, int insert)
         if (c->writer == WRITTEN_AS_KEY ||
             (insert && c->writer != WRITTEN_WITH_OPTION))
             continue;
+        /* A gap or kink by the column that holds it as core does, not
+         * the one SQLite makes in mm or degrees (quantity_stored). */
+        char column[64];
+        quantity_column(c, column, sizeof column);
         const char *sql_of = !insert && strcmp(c->name, "rank") == 0
-                                 ? store_rank_sql : c->name;
+                                 ? store_rank_sql : column;
         len += (size_t)snprintf(sql + len, size - len, "%s%s",
                                 n ? ", " : "", sql_of);
         assert(len < size);

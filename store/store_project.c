@@ -182,7 +182,9 @@ static int surface_columns_sql(char *sql, size_t size)
         if (!q->per_surface)
             continue;
         assert(quantity_in_totals(q));
-        len += (size_t)snprintf(sql + len, size - len, ", %s", q->name);
+        char column[64];  /* as core holds it (quantity_stored) */
+        quantity_column(q, column, sizeof column);
+        len += (size_t)snprintf(sql + len, size - len, ", %s", column);
         assert(len < size);
         n++;
     }
