@@ -342,6 +342,141 @@ static void test_browse_by_unknown(void **state)
             }
 }
 
+/* SQLite's one number of query over the file at path (attached as old, the
+ * file before the migration), NaN for NULL. */
+static double sql_number(const char *query)
+{
+    sqlite3 *db;
+    assert_int_equal(sqlite3_open(path, &db), SQLITE_OK);
+    char attach[160];
+    snprintf(attach, sizeof attach, "ATTACH '%s.v15' AS old", path);
+    assert_int_equal(sqlite3_exec(db, attach, NULL, NULL, NULL), SQLITE_OK);
+    sqlite3_stmt *s;
+    if (sqlite3_prepare_v2(db, query, -1, &s, NULL) != SQLITE_OK)
+        fail_msg("%s: %s", query, sqlite3_errmsg(db));
+    assert_int_equal(sqlite3_step(s), SQLITE_ROW);
+    double value = sqlite3_column_type(s, 0) == SQLITE_NULL
+                       ? NAN : sqlite3_column_double(s, 0);
+    sqlite3_finalize(s);
+    sqlite3_close(db);
+    return value;
+}
+
+/* A v15 file (issue 27, schema v16): its options' gaps in mm and kinks
+ * in degrees, its seams' gap in m and angles in rad. Migrated, every
+ * gap column users query is in mm and every kink and crease in degrees,
+ * SQLite's own arithmetic on the old file's values (its seams' m times
+ * 1000, rad times 180 over pi; an option's own gaps the v15 mm to within
+ * the rounding of mm / 1000 * 1000), the columns Facet reads hold m and
+ * rad, and Facet reads the seams' values to the bit it stored. */
+static void test_v15_gaps_in_one_unit(void **state)
+{
+    (void)state;
+    snprintf(path, sizeof path, "/tmp/facet_test_v15_%d.db", (int)getpid());
+    char old[80];
+    snprintf(old, sizeof old, "%s.v15", path);
+    store_fixture_remove(path);
+    store_fixture_remove(old);
+    struct facet_error err;
+    struct store *store;
+    assert_int_equal(store_open(path, &store, &err), FACET_OK);
+    struct run_info run;
+    store_fixture_run(&run);
+    assert_int_equal(store_run_create(store, &run, &err), FACET_OK);
+    enum { N = 40 };
+    struct option_row rows[N];
+    memset(rows, 0, sizeof rows);
+    for (int k = 0; k < N; k++) {
+        struct option_totals *t = &rows[k].totals;
+        option_totals_classified(t);
+        rows[k].number = k + 1;
+        rows[k].nu = rows[k].nv = 4;
+        rows[k].threshold_mm = 3;
+        t->panels = t->count[TYPE_DP] = 16;
+        t->area = t->area_of[TYPE_DP] = 100;
+        /* m and rad of no round number, so that a rounding shows */
+        t->max_gap = 0.0123456789 * (k + 1) / 7;
+        t->mean_gap = t->max_gap / 3;
+        t->max_kink = 0.0345678912 * (k + 1) / 11;
+        t->mean_kink = t->max_kink / 3;
+        t->seams = 2;
+        t->seam_length = 4;
+        t->seam_max_gap = 0.0098765432 * (k + 1) / 13;
+        t->seam_max_kink = 0.0234567891 * (k + 1) / 17;
+        t->seam_max_crease = 0.523598775598 + k / 19.0;
+    }
+    assert_int_equal(store_options_put(store, run.id, rows, N, &err),
+                     FACET_OK);
+    store_close(store);
+    sql(STORE_FIXTURE_UNDO_V16 "PRAGMA user_version = 15;");
+    /* the file as v15 wrote it, kept to compare with */
+    char copy[200];
+    snprintf(copy, sizeof copy, "cp '%s' '%s'", path, old);
+    assert_int_equal(system(copy), 0);
+    assert_int_equal(sql_int("SELECT count(*) FROM pragma_table_xinfo("
+                             "'options') WHERE name = 'seam_max_gap_m'"), 0);
+    assert_int_equal(store_open(path, &store, &err), FACET_OK);
+    store_close(store);
+    assert_int_equal(sql_int("PRAGMA user_version"), 16);
+    /* pi as core/base/units.h has it, as SQLite reads the migration's */
+    assert_true(sql_number("SELECT 3.141592653589793") == M_PI);
+    static const char *const same[] = {
+        /* the seams: the old m and rad, scaled by SQLite */
+        "SELECT count(*) FROM options o JOIN old.options p USING (run, number)"
+        " WHERE o.seam_max_gap = p.seam_max_gap * 1000"
+        " AND o.seam_max_gap_m = p.seam_max_gap"
+        " AND o.seam_max_kink = p.seam_max_kink * 180 / 3.141592653589793"
+        " AND o.seam_max_kink_rad = p.seam_max_kink"
+        " AND o.seam_max_crease = p.seam_max_crease * 180 / 3.141592653589793"
+        " AND o.seam_max_crease_rad = p.seam_max_crease",
+        /* an option's own: m and rad from the old mm and degrees */
+        "SELECT count(*) FROM options o JOIN old.options p USING (run, number)"
+        " WHERE o.max_gap_m = p.max_gap / 1000"
+        " AND o.mean_gap_m = p.mean_gap / 1000"
+        " AND o.max_kink_rad = p.max_kink * 3.141592653589793 / 180"
+        " AND o.mean_kink_rad = p.mean_kink * 3.141592653589793 / 180",
+        /* ... and the mm and degrees users query, the old ones to within
+         * an ulp or two of the way back */
+        "SELECT count(*) FROM options o JOIN old.options p USING (run, number)"
+        " WHERE abs(o.max_gap - p.max_gap) <= 5e-16 * p.max_gap"
+        " AND abs(o.mean_gap - p.mean_gap) <= 5e-16 * p.mean_gap"
+        " AND abs(o.max_kink - p.max_kink) <= 5e-16 * p.max_kink"
+        " AND abs(o.mean_kink - p.mean_kink) <= 5e-16 * p.mean_kink"
+        " AND o.max_gap = o.max_gap_m * 1000"
+        " AND o.max_kink = o.max_kink_rad * 180 / 3.141592653589793",
+    };
+    for (size_t q = 0; q < sizeof same / sizeof same[0]; q++)
+        if (sql_number(same[q]) != N)
+            fail_msg("%g of %d options: %s", sql_number(same[q]), N,
+                     same[q]);
+    /* One unit per family: a seam's gap and an option's are comparable
+     * in SQL (the seam gaps here are about the options' gaps' size). */
+    assert_true(sql_number("SELECT max(seam_max_gap) / max(max_gap)"
+                           " FROM options") > 0.1);
+    assert_true(sql_number("SELECT max(seam_max_gap) / max(max_gap)"
+                           " FROM options") < 10);
+    /* Facet reads the seams it stored to the bit, and an option's own
+     * as SQLite's m. */
+    assert_int_equal(store_open(path, &store, &err), FACET_OK);
+    for (int k = 0; k < N; k++) {
+        struct option_row back;
+        assert_int_equal(store_option_get(store, run.id, k + 1, &back, &err),
+                         FACET_OK);
+        assert_true(back.totals.seam_max_gap == rows[k].totals.seam_max_gap);
+        assert_true(back.totals.seam_max_kink ==
+                    rows[k].totals.seam_max_kink);
+        assert_true(back.totals.seam_max_crease ==
+                    rows[k].totals.seam_max_crease);
+        char query[200];
+        snprintf(query, sizeof query, "SELECT max_gap_m FROM options"
+                 " WHERE number = %d", k + 1);
+        assert_true(back.totals.max_gap == sql_number(query));
+    }
+    store_close(store);
+    store_fixture_remove(path);
+    store_fixture_remove(old);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -355,6 +490,7 @@ int main(void)
                                         teardown),
         cmocka_unit_test_setup_teardown(test_browse_by_unknown, setup,
                                         teardown),
+        cmocka_unit_test(test_v15_gaps_in_one_unit),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
