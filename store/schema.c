@@ -428,49 +428,44 @@ static const char schema_v15[] =
  * to the bit (issue 27). Core holds gaps in m and kinks in rad; users
  * query an option's max_gap, mean_gap in mm and max_kink, mean_kink in
  * degrees (schema v7), and v15 stored a building's seam_max_gap in m and
- * seam_max_kink, seam_max_crease in rad beside them. Each of those
- * columns is now held as core holds it, in a column named with its unit
- * (max_gap_m, max_kink_rad, seam_max_gap_m, ...: what Facet writes and
- * reads), and its own name is a column SQLite generates from it in mm or
- * degrees, by the expression core/base/units.h's functions are: every
- * gap of an option in mm, every kink and crease in degrees. Rows stored
- * before are rescaled in place (this migration's one transaction): a v15
- * gap's mm over 1000, a kink's degrees times pi over 180, and a seam's
- * values kept (they were m and rad). The indexes by max_gap and max_kink
- * are on the columns users sort by. A building's surfaces
- * (option_surfaces) likewise. docs/decisions.md says why. */
-#define V16_GAP(table, name) \
-    "ALTER TABLE " table " RENAME COLUMN " name " TO " name "_m;" \
-    "ALTER TABLE " table " ADD COLUMN " name " REAL GENERATED ALWAYS AS" \
-    " (" name "_m * 1000) VIRTUAL;"
-#define V16_ANGLE(table, name) \
-    "ALTER TABLE " table " RENAME COLUMN " name " TO " name "_rad;" \
-    "ALTER TABLE " table " ADD COLUMN " name " REAL GENERATED ALWAYS AS" \
-    " (" name "_rad * 180 / 3.141592653589793) VIRTUAL;"
+ * seam_max_kink, seam_max_crease in rad beside them. The options' and
+ * option_surfaces' columns are now all in mm and degrees, the seams'
+ * rescaled in place (m x 1000, rad x 180 / pi), and the same values as
+ * core holds them, in m and rad, are kept beside in option_held and
+ * option_surface_held (a row per option, per option's surface), which
+ * Facet writes with the option and reads back: a double cannot go to mm
+ * or degrees and back to the bit. An option's v15 mm and degrees give
+ * its held m and rad (mm / 1000, degrees x pi / 180); a seam's its v15
+ * m and rad as they were. In this migration's one transaction.
+ * docs/decisions.md says why. */
 static const char schema_v16[] =
-    "DROP INDEX options_by_max_gap;"
-    "DROP INDEX options_by_max_kink;"
-    V16_GAP("options", "max_gap")
-    V16_GAP("options", "mean_gap")
-    V16_ANGLE("options", "max_kink")
-    V16_ANGLE("options", "mean_kink")
-    V16_GAP("options", "seam_max_gap")
-    V16_ANGLE("options", "seam_max_kink")
-    V16_ANGLE("options", "seam_max_crease")
-    "UPDATE options SET max_gap_m = max_gap_m / 1000,"
-    " mean_gap_m = mean_gap_m / 1000,"
-    " max_kink_rad = max_kink_rad * 3.141592653589793 / 180,"
-    " mean_kink_rad = mean_kink_rad * 3.141592653589793 / 180;"
-    "CREATE INDEX options_by_max_gap ON options(run, max_gap);"
-    "CREATE INDEX options_by_max_kink ON options(run, max_kink);"
-    V16_GAP("option_surfaces", "max_gap")
-    V16_GAP("option_surfaces", "mean_gap")
-    V16_ANGLE("option_surfaces", "max_kink")
-    V16_ANGLE("option_surfaces", "mean_kink")
-    "UPDATE option_surfaces SET max_gap_m = max_gap_m / 1000,"
-    " mean_gap_m = mean_gap_m / 1000,"
-    " max_kink_rad = max_kink_rad * 3.141592653589793 / 180,"
-    " mean_kink_rad = mean_kink_rad * 3.141592653589793 / 180;";
+    "CREATE TABLE option_held ("
+    " run INTEGER NOT NULL, option INTEGER NOT NULL,"
+    " max_gap REAL, mean_gap REAL, max_kink REAL, mean_kink REAL,"
+    " seam_max_gap REAL, seam_max_kink REAL, seam_max_crease REAL,"
+    " PRIMARY KEY (run, option),"
+    " FOREIGN KEY (run, option) REFERENCES options(run, number)"
+    "  ON DELETE CASCADE"
+    ") WITHOUT ROWID;"
+    "INSERT INTO option_held SELECT run, number, max_gap / 1000,"
+    " mean_gap / 1000, max_kink * 3.141592653589793 / 180,"
+    " mean_kink * 3.141592653589793 / 180,"
+    " seam_max_gap, seam_max_kink, seam_max_crease FROM options;"
+    "UPDATE options SET seam_max_gap = seam_max_gap * 1000,"
+    " seam_max_kink = seam_max_kink * 180 / 3.141592653589793,"
+    " seam_max_crease = seam_max_crease * 180 / 3.141592653589793;"
+    "CREATE TABLE option_surface_held ("
+    " run INTEGER NOT NULL, option INTEGER NOT NULL,"
+    " surface INTEGER NOT NULL,"
+    " max_gap REAL, mean_gap REAL, max_kink REAL, mean_kink REAL,"
+    " PRIMARY KEY (run, option, surface),"
+    " FOREIGN KEY (run, option, surface)"
+    "  REFERENCES option_surfaces(run, option, surface) ON DELETE CASCADE"
+    ") WITHOUT ROWID;"
+    "INSERT INTO option_surface_held SELECT run, option, surface,"
+    " max_gap / 1000, mean_gap / 1000,"
+    " max_kink * 3.141592653589793 / 180,"
+    " mean_kink * 3.141592653589793 / 180 FROM option_surfaces;";
 
 static const char *const migrations[STORE_SCHEMA_VERSION] = {
     schema_v1,
@@ -1119,6 +1114,7 @@ void store_close(struct store *store)
     if (store == NULL)
         return;
     sqlite3_finalize(store->option_insert);
+    sqlite3_finalize(store->held_insert);
     sqlite3_finalize(store->option_get);
     /* Closing the last connection would checkpoint and delete the WAL
      * under an exclusive lock, failing a reader without a busy timeout

@@ -352,12 +352,6 @@ double quantity_stored_of_held(const struct quantity *q, double held)
     }
 }
 
-void quantity_column(const struct quantity *q, char *out, size_t size)
-{
-    snprintf(out, size, "%s%s", q->name,
-             q->stored == STORED_MM ? "_m"
-             : q->stored == STORED_DEG ? "_rad" : "");
-}
 
 double quantity_value(const struct quantity *c,
                                  const struct option_row *option)

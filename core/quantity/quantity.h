@@ -75,18 +75,16 @@ enum quantity_combine {
 
 /* How the store keeps a quantity that core holds in SI (metres,
  * radians) but users query in mm or degrees (docs/store.md, schema v16).
- * The table holds the value as core holds it, bit for bit, in a column
- * named with its unit (max_gap_m, max_kink_rad), which Facet writes and
- * reads; the quantity's own name is a column SQLite generates from it in
- * mm or degrees (max_gap, max_kink), by the expression units.h's
- * functions are, so that it has the bits it had when core held the value
- * in mm or degrees. A length or angle cannot go through mm or degrees
- * and back to the bit (x * 1000 / 1000 is not always x), so Facet never
- * reads the generated column back. */
+ * Its column of the options table (and of option_surfaces) holds it in
+ * mm or degrees, by units.h's functions, so that it has the bits it had
+ * when core held the value so; the value as core holds it is kept beside,
+ * in option_held (option_surface_held), which Facet reads back: a length
+ * or angle cannot go through mm or degrees and back to the bit (x * 1000
+ * / 1000 is not always x). */
 enum quantity_stored {
-    STORED_AS_HELD = 0,   /* the column named name holds the value */
-    STORED_MM,            /* held in m (name_m), name in mm */
-    STORED_DEG            /* held in rad (name_rad), name in degrees */
+    STORED_AS_HELD = 0,   /* the column holds the value as core does */
+    STORED_MM,            /* held in m, the column in mm */
+    STORED_DEG            /* held in rad, the column in degrees */
 };
 
 /* Who writes a column to the table. */
@@ -127,9 +125,8 @@ struct quantity {
     int objective;         /* can be minimised or maximised (metric.h) */
     int per_surface;       /* a building's option keeps it for each
                               surface too (the store's option_surfaces) */
-    enum quantity_stored stored; /* a gap or angle held in SI whose
-                              column (name, in stored_unit) SQLite makes
-                              from name_m or name_rad (quantity_stored) */
+    enum quantity_stored stored; /* a gap or angle held in SI, its
+                              column in stored_unit (quantity_stored) */
 };
 
 /* Every column of the options table, in its order (pragma_table_info) but
@@ -149,13 +146,8 @@ const struct quantity *quantity_of_project(
     const char *name);
 
 /* held (a double of q's field, in SI) in q's stored unit: what its
- * generated column reads (quantity_stored). NaN stays NaN. */
+ * column holds (quantity_stored). NaN stays NaN. */
 double quantity_stored_of_held(const struct quantity *q, double held);
-
-/* The column of the store's tables that holds q's value as core holds
- * it, the one Facet writes and reads: q->name, or name_m / name_rad for
- * a quantity whose name is generated from it (quantity_stored). */
-void quantity_column(const struct quantity *q, char *out, size_t size);
 
 /* c's value in option, as stored (a deviation in m, a gap in mm: held in
  * SI and turned into the column's unit, quantity_stored), yes/no as 0 or 1;

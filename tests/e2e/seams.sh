@@ -157,8 +157,8 @@ near "the building's max kink is the added 120 degrees" thirds.db "SELECT max_ki
 # right. Every joint here is at a seam: the same numbers, to the bit.
 same "max_gap and seam_max_gap, max_kink and seam_max_kink are one number in one unit" \
     "$(q thirds.db 'SELECT max_gap = seam_max_gap, max_kink = seam_max_kink, max_gap > 100 FROM options')" "1|1|1"
-same "the columns users query are SQLite's own mm and degrees of the m and rad Facet keeps" \
-    "$(q thirds.db 'SELECT seam_max_gap = seam_max_gap_m * 1000, seam_max_kink = seam_max_kink_rad * 180 / pi(), seam_max_crease IS seam_max_crease_rad * 180 / pi(), max_gap = max_gap_m * 1000, max_kink = max_kink_rad * 180 / pi() FROM options')" "1|1|1|1|1"
+same "the columns users query are SQLite's own mm and degrees of the m and rad Facet keeps (option_held)" \
+    "$(q thirds.db 'SELECT o.seam_max_gap = h.seam_max_gap * 1000, o.seam_max_kink = h.seam_max_kink * 180 / pi(), o.seam_max_crease IS h.seam_max_crease * 180 / pi(), o.max_gap = h.max_gap * 1000, o.max_kink = h.max_kink * 180 / pi() FROM options o JOIN option_held h ON h.run = o.run AND h.option = o.number')" "1|1|1|1|1"
 same "a --max-kink below the added kink: three seam kinks over, infeasible" \
     "$(q thirds.db 'SELECT seam_kinks_over, kinks_over, feasible FROM options')" "3|3|0"
 expect "the same with --max-kink 130, above it" 0 \

@@ -14,39 +14,16 @@
  * cost, a 1 x 1 grid, one job) that store_run_create accepts. */
 void store_fixture_run(struct run_info *run);
 
-/* SQL that takes a current file back to schema version 15: the gap and
- * kink columns SQLite made in mm and degrees (schema v16, issue 27)
- * dropped, the columns Facet keeps in m and rad named as they were, an
- * option's own gaps and kinks rescaled to mm and degrees as v15 held
- * them, the seams' left in m and rad, and the two indexes by max_gap and
- * max_kink on them again (set user_version after it). */
-#define STORE_FIXTURE_UNDO_V16_TABLE(table) \
-    "ALTER TABLE " table " DROP COLUMN max_gap;" \
-    "ALTER TABLE " table " DROP COLUMN mean_gap;" \
-    "ALTER TABLE " table " DROP COLUMN max_kink;" \
-    "ALTER TABLE " table " DROP COLUMN mean_kink;" \
-    "ALTER TABLE " table " RENAME COLUMN max_gap_m TO max_gap;" \
-    "ALTER TABLE " table " RENAME COLUMN mean_gap_m TO mean_gap;" \
-    "ALTER TABLE " table " RENAME COLUMN max_kink_rad TO max_kink;" \
-    "ALTER TABLE " table " RENAME COLUMN mean_kink_rad TO mean_kink;" \
-    "UPDATE " table " SET max_gap = max_gap * 1000," \
-    " mean_gap = mean_gap * 1000," \
-    " max_kink = max_kink * 180 / 3.141592653589793," \
-    " mean_kink = mean_kink * 180 / 3.141592653589793;"
+/* SQL that takes a current file back to schema version 15: the tables
+ * of gaps and kinks as core holds them (schema v16, issue 27) dropped,
+ * and the seams' columns in m and rad again, as v15 held them (set
+ * user_version after it). */
 #define STORE_FIXTURE_UNDO_V16 \
-    "DROP INDEX options_by_max_gap;" \
-    "DROP INDEX options_by_max_kink;" \
-    STORE_FIXTURE_UNDO_V16_TABLE("options") \
-    STORE_FIXTURE_UNDO_V16_TABLE("option_surfaces") \
-    "ALTER TABLE options DROP COLUMN seam_max_gap;" \
-    "ALTER TABLE options DROP COLUMN seam_max_kink;" \
-    "ALTER TABLE options DROP COLUMN seam_max_crease;" \
-    "ALTER TABLE options RENAME COLUMN seam_max_gap_m TO seam_max_gap;" \
-    "ALTER TABLE options RENAME COLUMN seam_max_kink_rad TO seam_max_kink;" \
-    "ALTER TABLE options RENAME COLUMN seam_max_crease_rad" \
-    " TO seam_max_crease;" \
-    "CREATE INDEX options_by_max_gap ON options(run, max_gap);" \
-    "CREATE INDEX options_by_max_kink ON options(run, max_kink);"
+    "DROP TABLE option_surface_held;" \
+    "DROP TABLE option_held;" \
+    "UPDATE options SET seam_max_gap = seam_max_gap / 1000," \
+    " seam_max_kink = seam_max_kink * 3.141592653589793 / 180," \
+    " seam_max_crease = seam_max_crease * 3.141592653589793 / 180;"
 
 /* SQL that takes a current file back to schema version 14: the columns
  * version 15 added (a building's seams, issue 31), dropped (set

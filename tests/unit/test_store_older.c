@@ -366,9 +366,10 @@ static double sql_number(const char *query)
  * in degrees, its seams' gap in m and angles in rad. Migrated, every
  * gap column users query is in mm and every kink and crease in degrees,
  * SQLite's own arithmetic on the old file's values (its seams' m times
- * 1000, rad times 180 over pi; an option's own gaps the v15 mm to within
- * the rounding of mm / 1000 * 1000), the columns Facet reads hold m and
- * rad, and Facet reads the seams' values to the bit it stored. */
+ * 1000, rad times 180 over pi; an option's own as they were), option_held
+ * keeps them in m and rad (the seams' as they were, an option's own
+ * SQLite's mm / 1000 and degrees x pi / 180), and Facet reads the seams'
+ * values to the bit the v15 file held them. */
 static void test_v15_gaps_in_one_unit(void **state)
 {
     (void)state;
@@ -413,37 +414,34 @@ static void test_v15_gaps_in_one_unit(void **state)
     char copy[200];
     snprintf(copy, sizeof copy, "cp '%s' '%s'", path, old);
     assert_int_equal(system(copy), 0);
-    assert_int_equal(sql_int("SELECT count(*) FROM pragma_table_xinfo("
-                             "'options') WHERE name = 'seam_max_gap_m'"), 0);
+    assert_int_equal(sql_int("SELECT count(*) FROM sqlite_schema"
+                             " WHERE name = 'option_held'"), 0);
     assert_int_equal(store_open(path, &store, &err), FACET_OK);
     store_close(store);
     assert_int_equal(sql_int("PRAGMA user_version"), 16);
     /* pi as core/base/units.h has it, as SQLite reads the migration's */
     assert_true(sql_number("SELECT 3.141592653589793") == M_PI);
     static const char *const same[] = {
-        /* the seams: the old m and rad, scaled by SQLite */
+        /* the seams: the old m and rad, in mm and degrees by SQLite */
         "SELECT count(*) FROM options o JOIN old.options p USING (run, number)"
         " WHERE o.seam_max_gap = p.seam_max_gap * 1000"
-        " AND o.seam_max_gap_m = p.seam_max_gap"
         " AND o.seam_max_kink = p.seam_max_kink * 180 / 3.141592653589793"
-        " AND o.seam_max_kink_rad = p.seam_max_kink"
-        " AND o.seam_max_crease = p.seam_max_crease * 180 / 3.141592653589793"
-        " AND o.seam_max_crease_rad = p.seam_max_crease",
-        /* an option's own: m and rad from the old mm and degrees */
+        " AND o.seam_max_crease = p.seam_max_crease * 180 / 3.141592653589793",
+        /* an option's own mm and degrees, as they were */
         "SELECT count(*) FROM options o JOIN old.options p USING (run, number)"
-        " WHERE o.max_gap_m = p.max_gap / 1000"
-        " AND o.mean_gap_m = p.mean_gap / 1000"
-        " AND o.max_kink_rad = p.max_kink * 3.141592653589793 / 180"
-        " AND o.mean_kink_rad = p.mean_kink * 3.141592653589793 / 180",
-        /* ... and the mm and degrees users query, the old ones to within
-         * an ulp or two of the way back */
-        "SELECT count(*) FROM options o JOIN old.options p USING (run, number)"
-        " WHERE abs(o.max_gap - p.max_gap) <= 5e-16 * p.max_gap"
-        " AND abs(o.mean_gap - p.mean_gap) <= 5e-16 * p.mean_gap"
-        " AND abs(o.max_kink - p.max_kink) <= 5e-16 * p.max_kink"
-        " AND abs(o.mean_kink - p.mean_kink) <= 5e-16 * p.mean_kink"
-        " AND o.max_gap = o.max_gap_m * 1000"
-        " AND o.max_kink = o.max_kink_rad * 180 / 3.141592653589793",
+        " WHERE o.max_gap = p.max_gap AND o.mean_gap = p.mean_gap"
+        " AND o.max_kink = p.max_kink AND o.mean_kink = p.mean_kink",
+        /* held as core holds them: the seams' old m and rad as they were,
+         * an option's own from the old mm and degrees */
+        "SELECT count(*) FROM option_held h"
+        " JOIN old.options p ON p.run = h.run AND p.number = h.option"
+        " WHERE h.seam_max_gap = p.seam_max_gap"
+        " AND h.seam_max_kink = p.seam_max_kink"
+        " AND h.seam_max_crease = p.seam_max_crease"
+        " AND h.max_gap = p.max_gap / 1000"
+        " AND h.mean_gap = p.mean_gap / 1000"
+        " AND h.max_kink = p.max_kink * 3.141592653589793 / 180"
+        " AND h.mean_kink = p.mean_kink * 3.141592653589793 / 180",
     };
     for (size_t q = 0; q < sizeof same / sizeof same[0]; q++)
         if (sql_number(same[q]) != N)
@@ -462,14 +460,22 @@ static void test_v15_gaps_in_one_unit(void **state)
         struct option_row back;
         assert_int_equal(store_option_get(store, run.id, k + 1, &back, &err),
                          FACET_OK);
-        assert_true(back.totals.seam_max_gap == rows[k].totals.seam_max_gap);
-        assert_true(back.totals.seam_max_kink ==
-                    rows[k].totals.seam_max_kink);
-        assert_true(back.totals.seam_max_crease ==
-                    rows[k].totals.seam_max_crease);
+        /* the v15 file's m and rad, to the bit */
         char query[200];
-        snprintf(query, sizeof query, "SELECT max_gap_m FROM options"
-                 " WHERE number = %d", k + 1);
+        static const char *const seam[] = {"seam_max_gap", "seam_max_kink",
+                                           "seam_max_crease"};
+        const double got[] = {back.totals.seam_max_gap,
+                              back.totals.seam_max_kink,
+                              back.totals.seam_max_crease};
+        for (int c = 0; c < 3; c++) {
+            snprintf(query, sizeof query, "SELECT %s FROM old.options"
+                     " WHERE number = %d", seam[c], k + 1);
+            if (!(got[c] == sql_number(query)))
+                fail_msg("option %d: %s reads %.17g, v15 held %.17g", k + 1,
+                         seam[c], got[c], sql_number(query));
+        }
+        snprintf(query, sizeof query, "SELECT max_gap FROM option_held"
+                 " WHERE option = %d", k + 1);
         assert_true(back.totals.max_gap == sql_number(query));
     }
     store_close(store);
