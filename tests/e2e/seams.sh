@@ -159,6 +159,23 @@ same "max_gap and seam_max_gap, max_kink and seam_max_kink are one number in one
     "$(q thirds.db 'SELECT max_gap = seam_max_gap, max_kink = seam_max_kink, max_gap > 100 FROM options')" "1|1|1"
 same "the columns users query are SQLite's own mm and degrees of the m and rad Facet keeps (option_held)" \
     "$(q thirds.db 'SELECT o.seam_max_gap = h.seam_max_gap * 1000, o.seam_max_kink = h.seam_max_kink * 180 / pi(), o.seam_max_crease IS h.seam_max_crease * 180 / pi(), o.max_gap = h.max_gap * 1000, o.max_kink = h.max_kink * 180 / pi() FROM options o JOIN option_held h ON h.run = o.run AND h.option = o.number')" "1|1|1|1|1"
+# A v15 file (the seams in m and rad) migrated by facet migrate: the seams'
+# columns are sqlite3's own mm and degrees of the old file's, the options'
+# own mm and degrees as they were, and Facet shows the same seams as the
+# file it made at v16.
+cp thirds.db v15.db
+sqlite3 v15.db "DROP TABLE option_surface_held; DROP TABLE option_held;
+    UPDATE options SET seam_max_gap = seam_max_gap / 1000,
+    seam_max_kink = seam_max_kink * pi() / 180,
+    seam_max_crease = seam_max_crease * pi() / 180; PRAGMA user_version = 15;"
+cp v15.db v15.old
+expect "facet migrate migrates a v15 building" 0 "$FACET" migrate v15.db
+same "sqlite3: the seams in mm and degrees from the v15 m and rad, an option's own as it was, the held m and rad" \
+    "$(q v15.db "ATTACH 'v15.old' AS old; SELECT (SELECT user_version FROM pragma_user_version), o.seam_max_gap = p.seam_max_gap * 1000, o.seam_max_kink = p.seam_max_kink * 180 / pi(), o.seam_max_crease IS p.seam_max_crease * 180 / pi(), o.max_gap = p.max_gap AND o.max_kink = p.max_kink, h.seam_max_gap = p.seam_max_gap AND h.seam_max_kink = p.seam_max_kink, h.max_gap = p.max_gap / 1000 AND h.max_kink = p.max_kink * pi() / 180 FROM options o JOIN old.options p USING (run, number) JOIN option_held h ON h.run = o.run AND h.option = o.number")" \
+    "16|1|1|1|1|1|1"
+run "$FACET" show v15.db --run 1 --option 1
+stdout_has "... and facet show says its seams as before: 120 deg added" \
+    '^seams +3, 12\.0 m long: max gap [0-9.]+ mm, max kink added 120\.00 deg'
 same "a --max-kink below the added kink: three seam kinks over, infeasible" \
     "$(q thirds.db 'SELECT seam_kinks_over, kinks_over, feasible FROM options')" "3|3|0"
 expect "the same with --max-kink 130, above it" 0 \
