@@ -4,13 +4,13 @@
  * Facet computes in SI: lengths in metres, angles in radians. A designer
  * writes and reads a threshold, a gap and a tolerance in millimetres and a
  * kink in degrees, and the store shows those columns in the units users
- * already query (docs/store.md; an option's gaps and kinks are kept in m
- * and rad, and SQLite makes their mm and degrees by these expressions,
- * store/schema.c v16). Every crossing between the two goes through these
- * functions, so that no number is converted by hand in two places, and a
- * check (tests/e2e/units.sh) fails on a conversion written out anywhere
- * else below the display layer (tui/, cli/), and on one in core/ outside
- * a message and core/out/.
+ * already query (docs/store.md; the store writes an option's gaps and
+ * kinks in mm and degrees with these functions, keeping the m and rad
+ * beside, store/schema.c v16). Every crossing between the two goes
+ * through these functions, so that no number is converted by hand in two
+ * places, and a check (tests/e2e/units.sh) fails on a conversion written
+ * out anywhere else below the display layer (tui/, cli/), and on one in
+ * core/ outside a message and core/out/.
  *
  * Each is the plain expression it names, so a value converted here has
  * the bits it had when the expression was written at its call site.

@@ -48,11 +48,11 @@ for floor in ('core', 'store', 'study'):
                           lambda m: '\n' * m.group(0).count('\n'), text,
                           flags=re.S)
             text = re.sub(r'//[^\n]*', '', text)
-            # The migrations' SQL: SQLite rescales a stored column, and
-            # makes the mm and degrees users query from the m and rad
-            # Facet keeps, by units.h's expressions (schema v16;
-            # test_store_older and test_option_column hold the two to the
-            # bit). Their strings only: C there is checked as anywhere.
+            # The migrations' SQL: SQLite rescales a stored column to the
+            # unit of its family, and fills the m and rad Facet keeps
+            # (schema v16; test_store_older and seams.sh hold it to
+            # sqlite3's own arithmetic on the old file). Their strings
+            # only: C there is checked as anywhere.
             if rel == 'store/schema.c':
                 text = re.sub(r'"(\\.|[^"\\\n])*"', '""', text)
             for number, line in enumerate(text.split('\n'), 1):
