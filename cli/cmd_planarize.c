@@ -110,8 +110,8 @@ static void print_human(const struct surface *s,
            r->converged ? "converged" : "stopped at the limit");
     printf("%-16s %.0f USD at the paper's prices: %zu FP, %zu DP panels; "
            "gaps up to %.3f mm, kinks up to %.3f deg\n", "as an option",
-           t->cost, t->count[TYPE_FP], t->count[TYPE_DP], t->max_gap_mm,
-           t->max_kink_deg);
+           t->cost, t->count[TYPE_FP], t->count[TYPE_DP], units_mm(t->max_gap),
+           units_deg(t->max_kink));
     if (r->feasible)
         printf("%-16s feasible: every quad planar within %g of its diagonal, "
                "every corner within %g mm of the surface\n", "result",
@@ -183,9 +183,9 @@ static void print_json(const struct surface *s,
     json_key(&w, "dp_count");
     json_integer(&w, (long long)t->count[TYPE_DP]);
     json_key(&w, "max_gap_mm");
-    json_number(&w, t->max_gap_mm);
+    json_number(&w, units_mm(t->max_gap));
     json_key(&w, "max_kink_deg");
-    json_number(&w, t->max_kink_deg);
+    json_number(&w, units_deg(t->max_kink));
     json_end_object(&w);
     json_finish(&w);
 }

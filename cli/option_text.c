@@ -10,6 +10,7 @@
 #include <sys/ioctl.h>
 #include <unistd.h>
 
+#include "core/base/units.h"
 #include "core/base/numformat.h"
 #include "core/quantity/quantity.h"
 
@@ -75,7 +76,7 @@ static void joints_text(FILE *out, const struct option_totals *t,
                 o->sp_by_class ? "kept SP (SP by class alone)"
                                : "built and priced DP");
     }
-    if (isnan(t->max_gap_mm)) {
+    if (isnan(t->max_gap)) {
         fprintf(out, "%-16s %s\n", "gaps, kinks", not_stored);
         return;
     }
@@ -84,13 +85,13 @@ static void joints_text(FILE *out, const struct option_totals *t,
         snprintf(limit, sizeof limit, "%zu over the %g mm limit",
                  t->gaps_over, o->max_gap * 1000);
     fprintf(out, "%-16s max %.3f mm, mean %.3f mm (%s)\n", "gap",
-            t->max_gap_mm, t->mean_gap_mm, limit);
+            units_mm(t->max_gap), units_mm(t->mean_gap), limit);
     snprintf(limit, sizeof limit, "no limit");
     if (o->max_kink > 0)
         snprintf(limit, sizeof limit, "%zu over the %g degree limit",
                  t->kinks_over, o->max_kink * 180 / M_PI);
     fprintf(out, "%-16s max %.3f deg, mean %.3f deg (%s)\n", "kink",
-            t->max_kink_deg, t->mean_kink_deg, limit);
+            units_deg(t->max_kink), units_deg(t->mean_kink), limit);
     seams_text(out, t);
 }
 

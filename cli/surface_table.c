@@ -7,6 +7,7 @@
 #include <math.h>
 #include <string.h>
 
+#include "core/base/units.h"
 #include "core/base/text.h"
 #include "text_table.h"
 
@@ -55,8 +56,10 @@ void surface_table_print(FILE *out, const struct surface_row *surfaces,
         snprintf(text[8], sizeof text[8], "%lld", (long long)r->moulds_used);
         quantity_number_text(text[9], sizeof text[9], s->max_deviation * 1000,
                           2, 0);
-        quantity_number_text(text[10], sizeof text[10], s->max_gap_mm, 2, 0);
-        quantity_number_text(text[11], sizeof text[11], s->max_kink_deg, 2, 0);
+        quantity_number_text(text[10], sizeof text[10], units_mm(s->max_gap),
+                             2, 0);
+        quantity_number_text(text[11], sizeof text[11],
+                             units_deg(s->max_kink), 2, 0);
         for (int k = 0; k < COLUMNS; k++)
             cell[k] = text[k];
         text_table_row(out, &t, cell);
@@ -102,8 +105,8 @@ void surface_table_json(struct json_writer *w,
         count(w, "moulds", (long long)s->moulds);
         count(w, "moulds_used", (long long)r->moulds_used);
         number_or_null(w, "max_deviation", s->max_deviation);
-        number_or_null(w, "max_gap", s->max_gap_mm);
-        number_or_null(w, "max_kink", s->max_kink_deg);
+        number_or_null(w, "max_gap", units_mm(s->max_gap));
+        number_or_null(w, "max_kink", units_deg(s->max_kink));
         json_key(w, "feasible");
         json_bool(w, s->feasible);
         json_end_object(w);

@@ -424,6 +424,49 @@ static const char schema_v15[] =
     "ALTER TABLE options ADD COLUMN seam_gaps_over INTEGER;"
     "ALTER TABLE options ADD COLUMN seam_kinks_over INTEGER;";
 
+/* Version 16: one unit per family of columns, and Facet's own values kept
+ * to the bit (issue 27). Core holds gaps in m and kinks in rad; users
+ * query an option's max_gap, mean_gap in mm and max_kink, mean_kink in
+ * degrees (schema v7), and v15 stored a building's seam_max_gap in m and
+ * seam_max_kink, seam_max_crease in rad beside them. The options' and
+ * option_surfaces' columns are now all in mm and degrees, the seams'
+ * rescaled in place (m x 1000, rad x 180 / pi), and the same values as
+ * core holds them, in m and rad, are kept beside in option_held and
+ * option_surface_held (a row per option, per option's surface), which
+ * Facet writes with the option and reads back: a double cannot go to mm
+ * or degrees and back to the bit. An option's v15 mm and degrees give
+ * its held m and rad (mm / 1000, degrees x pi / 180); a seam's its v15
+ * m and rad as they were. In this migration's one transaction.
+ * docs/decisions.md says why. */
+static const char schema_v16[] =
+    "CREATE TABLE option_held ("
+    " run INTEGER NOT NULL, option INTEGER NOT NULL,"
+    " max_gap REAL, mean_gap REAL, max_kink REAL, mean_kink REAL,"
+    " seam_max_gap REAL, seam_max_kink REAL, seam_max_crease REAL,"
+    " PRIMARY KEY (run, option),"
+    " FOREIGN KEY (run, option) REFERENCES options(run, number)"
+    "  ON DELETE CASCADE"
+    ") WITHOUT ROWID;"
+    "INSERT INTO option_held SELECT run, number, max_gap / 1000,"
+    " mean_gap / 1000, max_kink * 3.141592653589793 / 180,"
+    " mean_kink * 3.141592653589793 / 180,"
+    " seam_max_gap, seam_max_kink, seam_max_crease FROM options;"
+    "UPDATE options SET seam_max_gap = seam_max_gap * 1000,"
+    " seam_max_kink = seam_max_kink * 180 / 3.141592653589793,"
+    " seam_max_crease = seam_max_crease * 180 / 3.141592653589793;"
+    "CREATE TABLE option_surface_held ("
+    " run INTEGER NOT NULL, option INTEGER NOT NULL,"
+    " surface INTEGER NOT NULL,"
+    " max_gap REAL, mean_gap REAL, max_kink REAL, mean_kink REAL,"
+    " PRIMARY KEY (run, option, surface),"
+    " FOREIGN KEY (run, option, surface)"
+    "  REFERENCES option_surfaces(run, option, surface) ON DELETE CASCADE"
+    ") WITHOUT ROWID;"
+    "INSERT INTO option_surface_held SELECT run, option, surface,"
+    " max_gap / 1000, mean_gap / 1000,"
+    " max_kink * 3.141592653589793 / 180,"
+    " mean_kink * 3.141592653589793 / 180 FROM option_surfaces;";
+
 static const char *const migrations[STORE_SCHEMA_VERSION] = {
     schema_v1,
     schema_v2,
@@ -440,6 +483,7 @@ static const char *const migrations[STORE_SCHEMA_VERSION] = {
     schema_v13,
     schema_v14,
     schema_v15,
+    schema_v16,
 };
 
 int store_fail(struct store *store, const char *doing,
@@ -1070,6 +1114,7 @@ void store_close(struct store *store)
     if (store == NULL)
         return;
     sqlite3_finalize(store->option_insert);
+    sqlite3_finalize(store->held_insert);
     sqlite3_finalize(store->option_get);
     /* Closing the last connection would checkpoint and delete the WAL
      * under an exclusive lock, failing a reader without a busy timeout

@@ -12,13 +12,14 @@
 
 /* The schema this Facet writes (PRAGMA user_version) and the
  * application_id that marks a file as Facet's: "FCET". */
-#define STORE_SCHEMA_VERSION 15
+#define STORE_SCHEMA_VERSION 16
 #define STORE_APPLICATION_ID 0x46434554
 
 struct store {
     sqlite3 *db;
     char *path;                 /* owned copy, for messages */
     sqlite3_stmt *option_insert;/* prepared once, reused by every batch */
+    sqlite3_stmt *held_insert;  /* its option_held row, likewise */
     sqlite3_stmt *option_get;   /* store_option_get's, prepared once */
     int read_only;              /* opened by store_open_read */
 };
@@ -67,10 +68,19 @@ double store_column_or_nan(sqlite3_stmt *stmt, int col);
 struct quantity;
 
 /* Binds the value of quantity q held at field (its type q->field) to
- * parameter col: a double as is (NaN, not measured, is NULL), a count of
+ * parameter col: a double as is (NaN, not measured, is NULL), or in mm
+ * or degrees for a gap or kink (quantity_stored), a count of
  * TOTALS_UNKNOWN as NULL. */
 void store_bind_quantity(sqlite3_stmt *stmt, int col, const struct quantity *q,
                          const void *field);
+
+/* The names of the quantities option_held keeps as core holds them (m,
+ * rad: quantity.h's quantity_stored), each after ", ", into sql (size
+ * bytes); per_surface: only those option_surface_held keeps. Returns how
+ * many. store_bind_held binds t's values of them to parameters p... */
+int store_held_columns(char *sql, size_t size, int per_surface);
+void store_bind_held(sqlite3_stmt *stmt, int p,
+                     const struct option_totals *t, int per_surface);
 
 /* Reads result column col into field as q holds it: NULL is NaN for a
  * double and TOTALS_UNKNOWN for a count (not measured, or a column added

@@ -34,8 +34,16 @@ static int option_columns_sql(char *sql, size_t size, int insert)
         if (c->writer == WRITTEN_AS_KEY ||
             (insert && c->writer != WRITTEN_WITH_OPTION))
             continue;
+        /* A gap or kink is read as core holds it, from option_held
+         * (quantity_stored); the table's column has it in mm or degrees. */
+        char held[160];
+        snprintf(held, sizeof held, "(SELECT h.%s FROM option_held h"
+                 " WHERE h.run = options.run AND h.option = options.number)",
+                 c->name);
         const char *sql_of = !insert && strcmp(c->name, "rank") == 0
-                                 ? store_rank_sql : c->name;
+                                 ? store_rank_sql
+                             : !insert && c->stored != STORED_AS_HELD
+                                 ? held : c->name;
         len += (size_t)snprintf(sql + len, size - len, "%s%s",
                                 n ? ", " : "", sql_of);
         assert(len < size);
@@ -74,11 +82,72 @@ static void option_bind(sqlite3_stmt *s, int64_t run,
     }
 }
 
+int store_held_columns(char *sql, size_t size, int per_surface)
+{
+    size_t len = 0;
+    int n = 0;
+    sql[0] = '\0';
+    for (int k = 0; k < OPTION_QUANTITIES; k++) {
+        const struct quantity *q = &option_quantities[k];
+        if (q->stored == STORED_AS_HELD || (per_surface && !q->per_surface))
+            continue;
+        len += (size_t)snprintf(sql + len, size - len, ", %s", q->name);
+        assert(len < size);
+        n++;
+    }
+    return n;
+}
+
+void store_bind_held(sqlite3_stmt *s, int p, const struct option_totals *t,
+                     int per_surface)
+{
+    for (int k = 0; k < OPTION_QUANTITIES; k++) {
+        const struct quantity *q = &option_quantities[k];
+        if (q->stored == STORED_AS_HELD || (per_surface && !q->per_surface))
+            continue;
+        assert(q->field == FIELD_DOUBLE);
+        sqlite3_bind_double(s, p++, *(const double *)quantity_field(q, t));
+    }
+}
+
+static int step_done(struct store *store, sqlite3_stmt *s, const char *doing,
+                     struct facet_error *err);
+
+/* Writes row's held values (option_held) beside the row just written,
+ * or again over them (an option measured after it was stored). */
+static int held_put(struct store *store, int64_t run,
+                    const struct option_row *row, struct facet_error *err)
+{
+    if (store->held_insert == NULL) {
+        char columns[512], sql[1024];
+        int values = store_held_columns(columns, sizeof columns, 0);
+        int len = snprintf(sql, sizeof sql, "INSERT OR REPLACE INTO"
+                           " option_held (run, option%s) VALUES (?1, ?2",
+                           columns);
+        for (int k = 0; k < values; k++)
+            len += snprintf(sql + len, sizeof sql - (size_t)len, ", ?%d",
+                            3 + k);
+        snprintf(sql + len, sizeof sql - (size_t)len, ")");
+        int rc = store_prepare(store, sql, &store->held_insert,
+                               "storing options", err);
+        if (rc != FACET_OK)
+            return rc;
+    }
+    sqlite3_stmt *s = store->held_insert;
+    sqlite3_clear_bindings(s);
+    sqlite3_bind_int64(s, 1, run);
+    sqlite3_bind_int64(s, 2, row->number);
+    store_bind_held(s, 3, &row->totals, 0);
+    return step_done(store, s, "storing options", err);
+}
+
 void store_bind_quantity(sqlite3_stmt *s, int p, const struct quantity *c,
                          const void *field)
 {
     if (c->field == FIELD_DOUBLE)
-        sqlite3_bind_double(s, p, *(const double *)field);
+        /* a gap or kink in the column's mm or degrees (quantity_stored) */
+        sqlite3_bind_double(s, p,
+                            quantity_stored_of_held(c, *(const double *)field));
     else if (c->field == FIELD_INT)
         sqlite3_bind_int(s, p, *(const int *)field);
     else if (c->field == FIELD_INT64)
@@ -193,6 +262,8 @@ int store_options_put_with(struct store *store, int64_t run,
         rc = step_done(store, store->option_insert, "storing options", err);
         int fresh = sqlite3_changes(store->db) > 0;
         added += fresh;
+        if (rc == FACET_OK && fresh)
+            rc = held_put(store, run, &rows[k], err);
         /* An option already stored keeps the rows it has. */
         if (rc == FACET_OK && fresh && surfaces != NULL && nsurfaces > 0)
             rc = store_option_surfaces_insert(store, run, rows[k].number,
@@ -251,6 +322,8 @@ int store_options_measured(struct store *store, int64_t run,
         sqlite3_clear_bindings(s);
         option_bind(s, run, &rows[k], 0);
         rc = step_done(store, s, "storing measured options", err);
+        if (rc == FACET_OK && sqlite3_changes(store->db) > 0)
+            rc = held_put(store, run, &rows[k], err);
     }
     sqlite3_finalize(s);
     if (rc == FACET_OK)

@@ -171,9 +171,10 @@ int store_surfaces_get(struct store *store, int64_t run,
 /* The columns of option_surfaces after (run, option, surface) into sql
  * (size bytes): the row's own (nu, nv, moulds_used, joints), then every
  * quantity kept per surface (quantity.h's per_surface), in the registry's
- * order, as surface_bind writes and surface_from_row reads them. Returns
- * how many. */
-static int surface_columns_sql(char *sql, size_t size)
+ * order, as surface_bind writes and surface_from_row reads them; to
+ * select, a gap or kink as core holds it, from option_surface_held
+ * (quantity.h's quantity_stored). Returns how many. */
+static int surface_columns_sql(char *sql, size_t size, int select)
 {
     size_t len = (size_t)snprintf(sql, size, "nu, nv, moulds_used, joints");
     int n = 4;
@@ -182,7 +183,14 @@ static int surface_columns_sql(char *sql, size_t size)
         if (!q->per_surface)
             continue;
         assert(quantity_in_totals(q));
-        len += (size_t)snprintf(sql + len, size - len, ", %s", q->name);
+        if (select && q->stored != STORED_AS_HELD)
+            len += (size_t)snprintf(sql + len, size - len,
+                ", (SELECT h.%s FROM option_surface_held h"
+                " WHERE h.run = option_surfaces.run"
+                " AND h.option = option_surfaces.option"
+                " AND h.surface = option_surfaces.surface)", q->name);
+        else
+            len += (size_t)snprintf(sql + len, size - len, ", %s", q->name);
         assert(len < size);
         n++;
     }
@@ -198,15 +206,24 @@ int store_option_surfaces_insert(struct store *store, int64_t run,
 {
     const char *doing = "storing an option's surfaces";
     char columns[SURFACE_COLUMNS_SQL], sql[SURFACE_COLUMNS_SQL + 1024];
-    int values = surface_columns_sql(columns, sizeof columns);
+    int values = surface_columns_sql(columns, sizeof columns, 0);
     int len = snprintf(sql, sizeof sql,
                        "INSERT INTO option_surfaces (run, option, surface, "
                        "%s) VALUES (?1, ?2, ?3", columns);
     for (int k = 0; k < values; k++)
         len += snprintf(sql + len, sizeof sql - (size_t)len, ", ?%d", 4 + k);
     snprintf(sql + len, sizeof sql - (size_t)len, ")");
-    sqlite3_stmt *s;
+    sqlite3_stmt *s, *held = NULL;
     int rc = store_prepare(store, sql, &s, doing, err);
+    /* ... and its gaps and kinks as core holds them (quantity_stored) */
+    values = store_held_columns(columns, sizeof columns, 1);
+    len = snprintf(sql, sizeof sql, "INSERT INTO option_surface_held"
+                   " (run, option, surface%s) VALUES (?1, ?2, ?3", columns);
+    for (int k = 0; k < values; k++)
+        len += snprintf(sql + len, sizeof sql - (size_t)len, ", ?%d", 4 + k);
+    snprintf(sql + len, sizeof sql - (size_t)len, ")");
+    if (rc == FACET_OK)
+        rc = store_prepare(store, sql, &held, doing, err);
     for (size_t i = 0; rc == FACET_OK && i < n; i++) {
         const struct option_surface_row *r = &rows[i];
         sqlite3_reset(s);
@@ -223,10 +240,20 @@ int store_option_surfaces_insert(struct store *store, int64_t run,
                 store_bind_quantity(s, p++, &option_quantities[k],
                                     quantity_field(&option_quantities[k],
                                                    &r->totals));
-        if (sqlite3_step(s) != SQLITE_DONE)
+        if (sqlite3_step(s) != SQLITE_DONE) {
+            rc = store_fail(store, doing, err);
+            break;
+        }
+        sqlite3_reset(held);
+        sqlite3_bind_int64(held, 1, run);
+        sqlite3_bind_int64(held, 2, number);
+        sqlite3_bind_int64(held, 3, (int64_t)i);
+        store_bind_held(held, 4, &r->totals, 1);
+        if (sqlite3_step(held) != SQLITE_DONE)
             rc = store_fail(store, doing, err);
     }
     sqlite3_finalize(s);
+    sqlite3_finalize(held);
     return rc;
 }
 
@@ -240,7 +267,7 @@ int store_option_surfaces_get(struct store *store, int64_t run,
     *n = 0;
     sqlite3_stmt *s;
     char columns[SURFACE_COLUMNS_SQL], sql[SURFACE_COLUMNS_SQL + 256];
-    surface_columns_sql(columns, sizeof columns);
+    surface_columns_sql(columns, sizeof columns, 1);
     snprintf(sql, sizeof sql, "SELECT %s FROM option_surfaces"
              " WHERE run = ?1 AND option = ?2 ORDER BY surface", columns);
     int rc = store_prepare(store, sql, &s, doing, err);

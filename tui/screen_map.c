@@ -155,8 +155,9 @@ static void set_bounds(struct map_screen *s)
     double limit = joint_limit(s);
     map_level_bounds(isnan(limit) ? 0 : limit,
                      s->colour == MAP_BY_MOVE ? largest_move(s)
-                     : s->colour == MAP_BY_KINK ? s->totals->max_kink_deg
-                                                : s->totals->max_gap_mm,
+                     : s->colour == MAP_BY_KINK
+                         ? units_deg(s->totals->max_kink)
+                         : units_mm(s->totals->max_gap),
                      s->bound);
 }
 
@@ -234,8 +235,8 @@ static void draw_joint_legend(struct map_screen *s, int y, int x, int width)
         tui_putf(y++, x, width, A_NORMAL, "   limit %g %s: %zu joints over",
                  limit, unit, kink ? t->kinks_over : t->gaps_over);
     tui_putf(y++, x, width, A_NORMAL, " max %.2f %s, mean %.2f %s",
-             kink ? t->max_kink_deg : t->max_gap_mm, unit,
-             kink ? t->mean_kink_deg : t->mean_gap_mm, unit);
+             kink ? units_deg(t->max_kink) : units_mm(t->max_gap), unit,
+             kink ? units_deg(t->mean_kink) : units_mm(t->mean_gap), unit);
     tui_putf(y++, x, width, A_NORMAL, " SP misfits %zu (%s)", t->sp_misfits,
              s->run.sp_fit ? "built DP" : "kept SP: by class");
     draw_seams_line(s, y, x, width, kink);

@@ -12,6 +12,7 @@
 #include <string.h>
 
 #include "app.h"
+#include "core/base/units.h"
 #include "format.h"
 #include "keys.h"
 #include "surface_rows.h"
@@ -83,7 +84,8 @@ static void surfaces_draw(struct tui_screen *base, struct tui_app *app,
              t->count[TYPE_DP], cost, t->moulds);
     tui_putf(height - 1, 0, width, A_NORMAL,
              " max deviation %.2f mm, gap %.2f mm, kink %.2f deg; %s",
-             t->max_deviation * 1000, t->max_gap_mm, t->max_kink_deg,
+             t->max_deviation * 1000, units_mm(t->max_gap),
+             units_deg(t->max_kink),
              t->feasible ? "feasible" : "infeasible");
 }
 

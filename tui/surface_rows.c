@@ -7,6 +7,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "core/base/units.h"
 #include "format.h"
 
 /* The name column's width: what is left of SURFACE_ROW_WIDTH. */
@@ -37,8 +38,8 @@ void surface_rows_line(char *out, size_t size, const char *name,
     snprintf(moulds, sizeof moulds, "%zu/%lld", t->moulds,
              (long long)r->moulds_used);
     tui_fmt_number(dev, sizeof dev, t->max_deviation * 1000, 2, 0);
-    tui_fmt_number(gap, sizeof gap, t->max_gap_mm, 2, 0);
-    tui_fmt_number(kink, sizeof kink, t->max_kink_deg, 2, 0);
+    tui_fmt_number(gap, sizeof gap, units_mm(t->max_gap), 2, 0);
+    tui_fmt_number(kink, sizeof kink, units_deg(t->max_kink), 2, 0);
     char panels[24], fp[24], sp[24], dp[24];
     snprintf(panels, sizeof panels, "%zu", t->panels);
     snprintf(fp, sizeof fp, "%zu", t->count[TYPE_FP]);

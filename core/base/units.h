@@ -3,11 +3,14 @@
  *
  * Facet computes in SI: lengths in metres, angles in radians. A designer
  * writes and reads a threshold, a gap and a tolerance in millimetres and a
- * kink in degrees, and the store keeps those columns in the units users
- * already query (docs/store.md). Every crossing between the two goes
+ * kink in degrees, and the store shows those columns in the units users
+ * already query (docs/store.md; the store writes an option's gaps and
+ * kinks in mm and degrees with these functions, keeping the m and rad
+ * beside, store/schema.c v16). Every crossing between the two goes
  * through these functions, so that no number is converted by hand in two
  * places, and a check (tests/e2e/units.sh) fails on a conversion written
- * out anywhere else below the display layer (tui/, cli/).
+ * out anywhere else below the display layer (tui/, cli/), and on one in
+ * core/ outside a message and core/out/.
  *
  * Each is the plain expression it names, so a value converted here has
  * the bits it had when the expression was written at its call site.
@@ -20,11 +23,6 @@
 /* The length of a millimetre, in metres: an OBJ written in millimetres
  * is scaled by it as it is read. */
 #define UNITS_METRES_PER_MM 0.001
-
-/* A degree per radian: the scale a quantity held in radians is shown in
- * degrees by (core/quantity/quantity.h), where an initializer needs a
- * constant. units_deg is the same product. */
-#define UNITS_DEG_PER_RAD (180 / M_PI)
 
 /* metres as millimetres. */
 static inline double units_mm(double metres)

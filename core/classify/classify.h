@@ -118,11 +118,12 @@ struct option_totals {
     double joint_cost;               /* joint_length x joint cost */
     double mould_cost;               /* moulds per type x mould cost */
     /* Panels as built and their joints, set by option_evaluate (option.h),
-     * 0 from classify_panels alone. In the store's units: */
-    double max_gap_mm;               /* largest gap at a joint (mm) */
-    double mean_gap_mm;              /* mean over the joints (mm) */
-    double max_kink_deg;             /* largest kink (degrees) */
-    double mean_kink_deg;            /* mean over the joints (degrees) */
+     * 0 from classify_panels alone. In SI: the store keeps them in mm and
+     * degrees (quantity.h's quantity_stored), the views show them so. */
+    double max_gap;                  /* largest gap at a joint (m) */
+    double mean_gap;                 /* mean over the joints (m) */
+    double max_kink;                 /* largest kink (rad) */
+    double mean_kink;                /* mean over the joints (rad) */
     size_t gaps_over;                /* joints whose gap exceeds max_gap
                                         (0 without a limit) */
     size_t kinks_over;               /* likewise for max_kink */
@@ -161,7 +162,7 @@ struct option_totals {
     /* A building's seams (core/project/project_seams.h), measured with
      * its joints: NaN and TOTALS_UNKNOWN for a single surface, for a
      * building of one surface and where joints are not measured (stored
-     * NULL, never 0). The gap and kink at a seam also count in max_gap_mm
+     * NULL, never 0). The gap and kink at a seam also count in max_gap
      * .. kinks_over above, the kink as what the panels add to the
      * design's crease. */
     size_t seams;                    /* pairs of surfaces that meet */

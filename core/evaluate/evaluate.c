@@ -8,7 +8,6 @@
 #include <math.h>
 #include <string.h>
 
-#include "core/base/units.h"
 #include "core/fit/sp_fit.h"
 #include "core/joint/cell_sides.h"
 #include "core/joint/joint.h"
@@ -193,12 +192,10 @@ static int build_and_measure(const struct surface *surface,
             if (built.panels[k].fitted)
                 totals->sp_min_radius = fmin(totals->sp_min_radius,
                                              built.panels[k].bending_radius);
-        totals->max_gap_mm = measure_joints ? units_mm(joints.max_gap) : NAN;
-        totals->mean_gap_mm = measure_joints ? units_mm(joints.mean_gap) : NAN;
-        totals->max_kink_deg =
-            measure_joints ? units_deg(joints.max_kink) : NAN;
-        totals->mean_kink_deg =
-            measure_joints ? units_deg(joints.mean_kink) : NAN;
+        totals->max_gap = measure_joints ? joints.max_gap : NAN;
+        totals->mean_gap = measure_joints ? joints.mean_gap : NAN;
+        totals->max_kink = measure_joints ? joints.max_kink : NAN;
+        totals->mean_kink = measure_joints ? joints.mean_kink : NAN;
         totals->gaps_over = measure_joints ? joints.gaps_over
                                            : TOTALS_UNKNOWN;
         totals->kinks_over = measure_joints ? joints.kinks_over

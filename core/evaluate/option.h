@@ -22,7 +22,7 @@ enum option_measure {
      * (not sp_by_class) cannot do without it. */
     OPTION_MEASURE_FITS = 1 << 0,
     /* Gap and kink at every joint of the panels as built: the panels'
-     * worst, max_gap_mm .. kinks_over. Needs FITS. */
+     * worst, max_gap .. kinks_over. Needs FITS. */
     OPTION_MEASURE_JOINTS = 1 << 1,
     /* Mould families: each panel's mould, moulds .. singleton_families. */
     OPTION_MEASURE_MOULDS = 1 << 2,

@@ -51,10 +51,10 @@ static void json_totals(struct json_writer *w,
     json_key(w, "panel_cost");     json_number(w, t->panel_cost);
     json_key(w, "joint_cost");     json_number(w, t->joint_cost);
     json_key(w, "mould_cost");     json_number(w, t->mould_cost);
-    json_key(w, "max_gap");        json_number(w, t->max_gap_mm);
-    json_key(w, "mean_gap");       json_number(w, t->mean_gap_mm);
-    json_key(w, "max_kink");       json_number(w, t->max_kink_deg);
-    json_key(w, "mean_kink");      json_number(w, t->mean_kink_deg);
+    json_key(w, "max_gap");        json_number(w, units_mm(t->max_gap));
+    json_key(w, "mean_gap");       json_number(w, units_mm(t->mean_gap));
+    json_key(w, "max_kink");       json_number(w, units_deg(t->max_kink));
+    json_key(w, "mean_kink");      json_number(w, units_deg(t->mean_kink));
     json_key(w, "gaps_over");      json_integer(w, (long long)t->gaps_over);
     json_key(w, "kinks_over");     json_integer(w, (long long)t->kinks_over);
     json_key(w, "sp_misfits");     json_integer(w, (long long)t->sp_misfits);

@@ -14,7 +14,6 @@
 
 #include "core/base/exact_sum.h"
 #include "core/base/parallel.h"
-#include "core/base/units.h"
 #include "core/project/project_seams.h"
 #include "core/quantity/quantity.h"
 
@@ -263,12 +262,11 @@ static int measure_seams(const struct project *project,
         double inside = (double)option->joints;
         double at_seams = (double)s.njoints;
         double all = inside + at_seams;
-        t->mean_gap_mm = (t->mean_gap_mm * inside +
-                          units_mm(s.mean_gap) * at_seams) / all;
-        t->mean_kink_deg = (t->mean_kink_deg * inside +
-                            units_deg(s.mean_added) * at_seams) / all;
-        t->max_gap_mm = fmax(t->max_gap_mm, units_mm(s.max_gap));
-        t->max_kink_deg = fmax(t->max_kink_deg, units_deg(s.max_added));
+        t->mean_gap = (t->mean_gap * inside + s.mean_gap * at_seams) / all;
+        t->mean_kink = (t->mean_kink * inside + s.mean_added * at_seams) /
+                       all;
+        t->max_gap = fmax(t->max_gap, s.max_gap);
+        t->max_kink = fmax(t->max_kink, s.max_added);
         assert(t->gaps_over != TOTALS_UNKNOWN &&
                t->kinks_over != TOTALS_UNKNOWN);
         t->gaps_over += s.gaps_over;

@@ -73,6 +73,20 @@ enum quantity_combine {
                              ranking, module */
 };
 
+/* How the store keeps a quantity that core holds in SI (metres,
+ * radians) but users query in mm or degrees (docs/store.md, schema v16).
+ * Its column of the options table (and of option_surfaces) holds it in
+ * mm or degrees, by units.h's functions, so that it has the bits it had
+ * when core held the value so; the value as core holds it is kept beside,
+ * in option_held (option_surface_held), which Facet reads back: a length
+ * or angle cannot go through mm or degrees and back to the bit (x * 1000
+ * / 1000 is not always x). */
+enum quantity_stored {
+    STORED_AS_HELD = 0,   /* the column holds the value as core does */
+    STORED_MM,            /* held in m, the column in mm */
+    STORED_DEG            /* held in rad, the column in degrees */
+};
+
 /* Who writes a column to the table. */
 enum option_writer {
     WRITTEN_WITH_OPTION,  /* store_options_put, from the row */
@@ -111,6 +125,8 @@ struct quantity {
     int objective;         /* can be minimised or maximised (metric.h) */
     int per_surface;       /* a building's option keeps it for each
                               surface too (the store's option_surfaces) */
+    enum quantity_stored stored; /* a gap or angle held in SI, its
+                              column in stored_unit (quantity_stored) */
 };
 
 /* Every column of the options table, in its order (pragma_table_info) but
@@ -129,7 +145,12 @@ const struct quantity *quantity_named(const char *name);
 const struct quantity *quantity_of_project(
     const char *name);
 
-/* c's value in option, as stored (a deviation in m), yes/no as 0 or 1;
+/* held (a double of q's field, in SI) in q's stored unit: what its
+ * column holds (quantity_stored). NaN stays NaN. */
+double quantity_stored_of_held(const struct quantity *q, double held);
+
+/* c's value in option, as stored (a deviation in m, a gap in mm: held in
+ * SI and turned into the column's unit, quantity_stored), yes/no as 0 or 1;
  * NaN for a value not known (NULL in the file: a column added after the
  * option was stored; a count then reads as TOTALS_UNKNOWN, classify.h),
  * and for run, which the row does not hold. */
@@ -150,7 +171,7 @@ void *quantity_field_to_set(const struct quantity *q,
                             struct option_totals *totals);
 
 /* q's value in totals (q must be in them: quantity_in_totals), as
- * quantity_value reads it from a row. */
+ * quantity_value reads it from a row: in the stored unit. */
 double quantity_of_totals(const struct quantity *q,
                           const struct option_totals *totals);
 

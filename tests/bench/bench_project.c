@@ -106,8 +106,8 @@ static int run_option(void *context, void *figures)
                 for (size_t i = 0; i < option.nsurfaces; i++)
                     f.moulds_by_face += option.surfaces[i].moulds_used;
                 f.joints = option.joints;
-                f.max_gap_mm = t->max_gap_mm;
-                f.max_kink_deg = t->max_kink_deg;
+                f.max_gap_mm = t->max_gap * 1000;
+                f.max_kink_deg = t->max_kink * 180 / M_PI;
                 f.cost = t->cost;
             }
             project_option_free(&option);

@@ -17,8 +17,8 @@ UNITS = {
     "module_w": "m", "module_h": "m", "sp_min_radius": "m",
     "min_panel_area": "m2", "min_panel_width": "m",
     "closeness_reached": "m", "closeness_mean": "m",
-    "seam_length": "m", "seam_max_gap": "m", "seam_max_kink": "rad",
-    "seam_max_crease": "rad",
+    "seam_length": "m", "seam_max_gap": "mm", "seam_max_kink": "deg",
+    "seam_max_crease": "deg",  # schema v16: as max_gap and max_kink
 }
 for _class in ("convex_feature_curve", "saddle", "concave_feature_curve",
                "ruled_convex", "flat", "ruled_concave", "convex_round",

@@ -45,7 +45,6 @@ near() {
         echo "  want: $4 (within $5)"
     fi
 }
-PI=3.141592653589793
 # The closed form of the cylinder's seams: the gap and the kink added at
 # the three rulings when faces 0, 1, 2 have COLS0 COLS1 COLS2 columns of
 # flat panels; prints "GAP KINK OVER" (m, rad), the largest of the three,
@@ -115,9 +114,9 @@ expect "optimize the hinge (1 m modules) with --max-kink 10, below its crease" 0
 same "the run keeps the default welding tolerance, 1 mm" "$(q hinge.db 'SELECT weld_mm FROM runs')" "1.0"
 same "one seam between the two faces" "$(q hinge.db 'SELECT seams FROM options')" "1"
 near "the seam is the hinge line, 3 m" hinge.db "SELECT seam_length FROM options" 3 1e-9
-near "the crease is the design's 30 degrees (pi/6 rad)" hinge.db "SELECT seam_max_crease FROM options" "$(/usr/bin/python3 -c 'import math; print(math.pi / 6)')" 1e-9
-near "no gap at the seam with aligned grid lines (flat panels are their planes)" hinge.db "SELECT seam_max_gap FROM options" 0 1e-9
-near "no kink added to the crease" hinge.db "SELECT seam_max_kink FROM options" 0 1e-9
+near "the crease is the design's 30 degrees (pi/6 rad)" hinge.db "SELECT seam_max_crease FROM options" 30 1e-7
+near "no gap at the seam with aligned grid lines (flat panels are their planes)" hinge.db "SELECT seam_max_gap FROM options" 0 1e-6
+near "no kink added to the crease" hinge.db "SELECT seam_max_kink FROM options" 0 1e-7
 near "the building's max kink is not the crease: ~0 deg" hinge.db "SELECT max_kink FROM options" 0 1e-6
 same "a --max-kink below the crease: no kink over, feasible" \
     "$(q hinge.db 'SELECT seam_kinks_over, kinks_over, feasible FROM options')" "0|0|1"
@@ -126,8 +125,8 @@ same "a --max-kink below the crease: no kink over, feasible" \
 expect "optimize the hinge with the bent face's own 4 x 5 grid" 0 \
     "$FACET" optimize hinge.obj --db skew.db --module 1:1x1:1 --grid B=4x5 --threshold 3 --max-kink 10 --table 0
 same "4 x 3 + 4 x 5 panels, one seam, feasible" "$(q skew.db 'SELECT panels, seams, feasible FROM options')" "32|1|1"
-near "grid lines not aligned: still no gap (closed form 0 for planes)" skew.db "SELECT seam_max_gap FROM options" 0 1e-9
-near "the crease is still pi/6" skew.db "SELECT seam_max_crease FROM options" "$(/usr/bin/python3 -c 'import math; print(math.pi / 6)')" 1e-9
+near "grid lines not aligned: still no gap (closed form 0 for planes)" skew.db "SELECT seam_max_gap FROM options" 0 1e-6
+near "the crease is still pi/6 (30 degrees)" skew.db "SELECT seam_max_crease FROM options" 30 1e-7
 
 # 3. A box corner: three planes at 90 degrees.
 expect "optimize the box corner with --max-kink 10" 0 \
@@ -135,9 +134,9 @@ expect "optimize the box corner with --max-kink 10" 0 \
 same "three seams, 12 panels, feasible (a 90 degree corner is not a defect)" \
     "$(q box.db 'SELECT seams, panels, seam_kinks_over, feasible FROM options')" "3|12|0|1"
 near "three seams of 2 m" box.db "SELECT seam_length FROM options" 6 1e-9
-near "the crease is 90 degrees (pi/2 rad)" box.db "SELECT seam_max_crease FROM options" "$(/usr/bin/python3 -c 'import math; print(math.pi / 2)')" 1e-9
-near "no gap at the corner's seams" box.db "SELECT seam_max_gap FROM options" 0 1e-9
-near "no kink added" box.db "SELECT seam_max_kink FROM options" 0 1e-9
+near "the crease is 90 degrees (pi/2 rad)" box.db "SELECT seam_max_crease FROM options" 90 1e-7
+near "no gap at the corner's seams" box.db "SELECT seam_max_gap FROM options" 0 1e-6
+near "no kink added" box.db "SELECT seam_max_kink FROM options" 0 1e-7
 
 # 4. The cylinder in three faces, one flat panel each (t = 5 m keeps a
 #    120 degree panel flat, a panel limit of 100 m^2 lets its 25 m^2
@@ -147,12 +146,36 @@ expect "optimize the cylinder's thirds, one flat panel a face, --max-kink 100" 0
     "$FACET" optimize thirds.obj --db thirds.db --module 7:7x4:4 --max-panel-area 100 --threshold 5000 --max-kink 100 --table 0
 same "three panels, all FP, three seams" "$(q thirds.db 'SELECT panels, fp_count, seams FROM options')" "3|3|3"
 near "three rulings of 4 m" thirds.db "SELECT seam_length FROM options" 12 1e-9
-near "no crease where a cylinder is cut along a ruling" thirds.db "SELECT seam_max_crease FROM options" 0 1e-6
-near "the seam gap is the closed form's ($gap m)" thirds.db "SELECT seam_max_gap FROM options" "$gap" 1e-9
-near "the kink added is the panels' 120 degrees ($kink rad)" thirds.db "SELECT seam_max_kink FROM options" "$kink" 1e-6
+near "no crease where a cylinder is cut along a ruling" thirds.db "SELECT seam_max_crease FROM options" 0 1e-4
+near "the seam gap is the closed form's ($gap m, in mm as max_gap)" thirds.db "SELECT seam_max_gap FROM options" "$(/usr/bin/python3 -c "print($gap * 1000)")" 1e-6
+near "the kink added is the panels' 120 degrees ($kink rad, in degrees as max_kink)" thirds.db "SELECT seam_max_kink FROM options" 120 1e-4
 near "the building's max gap is the seams' (mm: no joint inside a face)" thirds.db "SELECT max_gap FROM options" "$(/usr/bin/python3 -c "print($gap * 1000)")" 1e-6
 near "its mean gap too: every joint is at a seam, each the same" thirds.db "SELECT mean_gap FROM options" "$(/usr/bin/python3 -c "print($gap * 1000)")" 1e-6
 near "the building's max kink is the added 120 degrees" thirds.db "SELECT max_kink FROM options" 120 1e-5
+# One unit per family of columns (schema v16): the option's gap and kink
+# and its seams' in the same units, so that comparing them in SQL is
+# right. Every joint here is at a seam: the same numbers, to the bit.
+same "max_gap and seam_max_gap, max_kink and seam_max_kink are one number in one unit" \
+    "$(q thirds.db 'SELECT max_gap = seam_max_gap, max_kink = seam_max_kink, max_gap > 100 FROM options')" "1|1|1"
+same "the columns users query are SQLite's own mm and degrees of the m and rad Facet keeps (option_held)" \
+    "$(q thirds.db 'SELECT o.seam_max_gap = h.seam_max_gap * 1000, o.seam_max_kink = h.seam_max_kink * 180 / pi(), o.seam_max_crease IS h.seam_max_crease * 180 / pi(), o.max_gap = h.max_gap * 1000, o.max_kink = h.max_kink * 180 / pi() FROM options o JOIN option_held h ON h.run = o.run AND h.option = o.number')" "1|1|1|1|1"
+# A v15 file (the seams in m and rad) migrated by facet migrate: the seams'
+# columns are sqlite3's own mm and degrees of the old file's, the options'
+# own mm and degrees as they were, and Facet shows the same seams as the
+# file it made at v16.
+cp thirds.db v15.db
+sqlite3 v15.db "DROP TABLE option_surface_held; DROP TABLE option_held;
+    UPDATE options SET seam_max_gap = seam_max_gap / 1000,
+    seam_max_kink = seam_max_kink * pi() / 180,
+    seam_max_crease = seam_max_crease * pi() / 180; PRAGMA user_version = 15;"
+cp v15.db v15.old
+expect "facet migrate migrates a v15 building" 0 "$FACET" migrate v15.db
+same "sqlite3: the seams in mm and degrees from the v15 m and rad, an option's own as it was, the held m and rad" \
+    "$(q v15.db "ATTACH 'v15.old' AS old; SELECT (SELECT user_version FROM pragma_user_version), o.seam_max_gap = p.seam_max_gap * 1000, o.seam_max_kink = p.seam_max_kink * 180 / pi(), o.seam_max_crease IS p.seam_max_crease * 180 / pi(), o.max_gap = p.max_gap AND o.max_kink = p.max_kink, h.seam_max_gap = p.seam_max_gap AND h.seam_max_kink = p.seam_max_kink, h.max_gap = p.max_gap / 1000 AND h.max_kink = p.max_kink * pi() / 180 FROM options o JOIN old.options p USING (run, number) JOIN option_held h ON h.run = o.run AND h.option = o.number")" \
+    "16|1|1|1|1|1|1"
+run "$FACET" show v15.db --run 1 --option 1
+stdout_has "... and facet show says its seams as before: 120 deg added" \
+    '^seams +3, 12\.0 m long: max gap [0-9.]+ mm, max kink added 120\.00 deg'
 same "a --max-kink below the added kink: three seam kinks over, infeasible" \
     "$(q thirds.db 'SELECT seam_kinks_over, kinks_over, feasible FROM options')" "3|3|0"
 expect "the same with --max-kink 130, above it" 0 \
@@ -161,8 +184,8 @@ same "no kink over, feasible" "$(q thirds130.db 'SELECT seam_kinks_over, kinks_o
 read -r gap kink over <<<"$(thirds 1 2 4)"
 expect "the thirds with 1, 2 and 4 columns: grids not aligned at the seams" 0 \
     "$FACET" optimize thirds.obj --db uneven.db --module 7:7x4:4 --grid third1=2x1,third2=4x1 --threshold 5000 --max-gap 500 --table 0
-near "the largest seam gap is the closed form's ($gap m)" uneven.db "SELECT seam_max_gap FROM options" "$gap" 1e-9
-near "the largest kink added is the closed form's ($kink rad)" uneven.db "SELECT seam_max_kink FROM options" "$kink" 1e-6
+near "the largest seam gap is the closed form's ($gap m, in mm)" uneven.db "SELECT seam_max_gap FROM options" "$(/usr/bin/python3 -c "print($gap * 1000)")" 1e-6
+near "the largest kink added is the closed form's ($kink rad, in degrees)" uneven.db "SELECT seam_max_kink FROM options" "$(/usr/bin/python3 -c "import math; print(math.degrees($kink))")" 1e-4
 same "seam gaps over --max-gap 500: the closed form's $over" "$(q uneven.db 'SELECT seam_gaps_over FROM options')" "$over"
 expect "facet export --csv of it writes the seams schedule beside" 0 \
     "$FACET" export uneven.db --run 1 --option 1 --csv uneven.csv
@@ -219,7 +242,7 @@ same "the run keeps --weld 3 (mm)" "$(q apart3.db 'SELECT weld_mm FROM runs')" "
 run "$FACET" runs apart3.db --json
 json_check "facet runs --json: weld_mm 3" "[r['weld_mm'] for r in j] == [3]"
 same "one seam within 3 mm" "$(q apart3.db 'SELECT seams FROM options')" "1"
-near "its gap is the design's own 2 mm" apart3.db "SELECT seam_max_gap FROM options" 0.002 1e-9
+near "its gap is the design's own 2 mm" apart3.db "SELECT seam_max_gap FROM options" 2 1e-6
 
 # 6. A single surface has no seams: NULL, never 0.
 expect "optimize the floor alone" 0 \
@@ -247,9 +270,9 @@ expect "facet show the thirds' option" 0 "$FACET" show thirds.db --run 1 --optio
 stdout_has "show: three seams of 12 m, the gap in mm, 120 deg added over no crease, 3 kinks over" \
     '^seams +3, 12\.0 m long: max gap [0-9.]+ mm, max kink added 120\.00 deg to a crease of up to 0\.0 deg \(0 gaps, 3 kinks over the limits\)$'
 run "$FACET" options thirds.db --csv
-same "options --csv: seams, seam_length_m, seam_max_kink_rad, seam_kinks_over" \
-    "$(/usr/bin/python3 -c "import csv,sys; r=list(csv.DictReader(open(sys.argv[1])))[0]; print(r['seams'], round(float(r['seam_length_m']), 9), round(float(r['seam_max_kink_rad']), 6), r['seam_kinks_over'])" "$OUT")" \
-    "3 12.0 $(/usr/bin/python3 -c 'import math; print(round(2 * math.pi / 3, 6))') 3"
+same "options --csv: seams, seam_length_m, seam_max_kink_deg, seam_kinks_over" \
+    "$(/usr/bin/python3 -c "import csv,sys; r=list(csv.DictReader(open(sys.argv[1])))[0]; print(r['seams'], round(float(r['seam_length_m']), 9), round(float(r['seam_max_kink_deg']), 4), r['seam_kinks_over'])" "$OUT")" \
+    "3 12.0 120.0 3"
 
 # 9. Shards and their merge: each shard finds the seams at the run's
 #    tolerance, the merge keeps it, and shards of two tolerances are not
@@ -261,7 +284,7 @@ done
 expect "facet merge joins them" 0 "$FACET" merge merged.db shard1.db shard2.db
 same "the merged run keeps --weld 2; each of its 2 options has the hinge's seam" \
     "$(q merged.db 'SELECT (SELECT weld_mm FROM runs), count(*), sum(seams) FROM options')" "2.0|2|2"
-near "... at the crease pi/6 in both" merged.db "SELECT max(abs(seam_max_crease - $PI / 6)) FROM options" 0 1e-9
+near "... at the crease pi/6 (30 degrees) in both" merged.db "SELECT max(abs(seam_max_crease - 30)) FROM options" 0 1e-7
 expect "a shard 2/2 at --weld 3" 0 \
     "$FACET" optimize hinge.obj --db shard3.db --module 0.5:1:0.5x1:1 --weld 3 --shard 2/2 --threshold 3 --table 0
 expect_error "shards of two welding tolerances are refused in one line" \

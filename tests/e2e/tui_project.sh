@@ -112,8 +112,8 @@ check "map by mould: the dome's DP families it starts and its DP panels ($dp_mou
 check "map by mould: the families its panels use ($used)" "started here; $used used here"
 # ... and the building's seams below them (issue 31), from the store.
 IFS='|' read -r nseams seam_gap seam_kink <<<"$(q "select seams,
-    CASE WHEN seam_max_gap IS NULL THEN '' ELSE printf('%.2f', seam_max_gap * 1000) END,
-    CASE WHEN seam_max_kink IS NULL THEN '' ELSE printf('%.2f', seam_max_kink * 57.29577951308232) END
+    CASE WHEN seam_max_gap IS NULL THEN '' ELSE printf('%.2f', seam_max_gap) END,
+    CASE WHEN seam_max_kink IS NULL THEN '' ELSE printf('%.2f', seam_max_kink) END
     from options where run = 1 and number = $knee")"
 keys c
 check "map by worst gap: the dome's largest and mean gap ($gap, $mean_gap mm)" " max $gap mm, mean $mean_gap mm"

@@ -159,7 +159,7 @@ static void evaluate(const struct project *project,
             !same_bits(alone.area, t->area) ||
             !same_bits(alone.planarity, t->planarity) ||
             !same_bits(alone.joint_length, t->joint_length) ||
-            !same_bits(alone.max_gap_mm, t->max_gap_mm)) {
+            !same_bits(alone.max_gap, t->max_gap)) {
             fprintf(stderr, "fuzz_project: one surface: cost %.17g alone, "
                     "%.17g as a project\n", alone.cost, t->cost);
             abort();

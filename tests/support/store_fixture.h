@@ -14,10 +14,21 @@
  * cost, a 1 x 1 grid, one job) that store_run_create accepts. */
 void store_fixture_run(struct run_info *run);
 
+/* SQL that takes a current file back to schema version 15: the tables
+ * of gaps and kinks as core holds them (schema v16, issue 27) dropped,
+ * and the seams' columns in m and rad again, as v15 held them (set
+ * user_version after it). */
+#define STORE_FIXTURE_UNDO_V16 \
+    "DROP TABLE option_surface_held;" \
+    "DROP TABLE option_held;" \
+    "UPDATE options SET seam_max_gap = seam_max_gap / 1000," \
+    " seam_max_kink = seam_max_kink * 3.141592653589793 / 180," \
+    " seam_max_crease = seam_max_crease * 3.141592653589793 / 180;"
+
 /* SQL that takes a current file back to schema version 14: the columns
  * version 15 added (a building's seams, issue 31), dropped (set
  * user_version after it). */
-#define STORE_FIXTURE_UNDO_V15 \
+#define STORE_FIXTURE_UNDO_V15 STORE_FIXTURE_UNDO_V16 \
     "ALTER TABLE runs DROP COLUMN weld_mm;" \
     "ALTER TABLE options DROP COLUMN seams;" \
     "ALTER TABLE options DROP COLUMN seam_length;" \

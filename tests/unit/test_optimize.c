@@ -450,7 +450,7 @@ static void test_grid_thresholds_equal_alone(void **state)
                      "alone (cost %.17g against %.17g, max gap %.17g "
                      "against %.17g)", points[k].nu, points[k].nv,
                      points[k].threshold_mm, together[k].cost, alone.cost,
-                     together[k].max_gap_mm, alone.max_gap_mm);
+                     together[k].max_gap, alone.max_gap);
         sp += alone.sp_fitted + alone.sp_misfits;
         fitted += alone.sp_fitted;
     }

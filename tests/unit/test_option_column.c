@@ -84,10 +84,10 @@ static struct option_row option_k(int k)
     t->panel_cost = 4000.5 + k;
     t->joint_cost = 9001.25 + k;
     t->mould_cost = 60000.75 + k;
-    t->max_gap_mm = 4.5 + k;
-    t->mean_gap_mm = 1.125 + k;
-    t->max_kink_deg = 2.75 + k;
-    t->mean_kink_deg = 0.625 + k;
+    t->max_gap = 0.0045 + 0.001 * k;   /* m, stored in mm */
+    t->mean_gap = 0.001125 + 0.001 * k;
+    t->max_kink = 0.05 + 0.01 * k;     /* rad, stored in degrees */
+    t->mean_kink = 0.0125 + 0.01 * k;
     t->gaps_over = (size_t)(13 + k);
     t->kinks_over = (size_t)(17 + k);
     t->sp_misfits = (size_t)(19 + k);
@@ -144,8 +144,11 @@ static double by_hand(const struct option_row *o, const char *name)
         {"single_moulds", (double)t->singleton_families},
         {"area_cost", t->area_cost}, {"panel_cost", t->panel_cost}, {"joint_cost", t->joint_cost},
         {"mould_cost", t->mould_cost},
-        {"max_gap", t->max_gap_mm}, {"mean_gap", t->mean_gap_mm},
-        {"max_kink", t->max_kink_deg}, {"mean_kink", t->mean_kink_deg},
+        /* held in m and rad, the columns in mm and degrees: the
+         * plain expressions, written out here as the truth */
+        {"max_gap", t->max_gap * 1000}, {"mean_gap", t->mean_gap * 1000},
+        {"max_kink", t->max_kink * 180 / M_PI},
+        {"mean_kink", t->mean_kink * 180 / M_PI},
         {"gaps_over", (double)t->gaps_over},
         {"kinks_over", (double)t->kinks_over},
         {"sp_misfits", (double)t->sp_misfits},
@@ -164,9 +167,9 @@ static double by_hand(const struct option_row *o, const char *name)
         {"planar_over", (double)t->planar_over},
         {"seams", (double)t->seams},
         {"seam_length", t->seam_length},
-        {"seam_max_gap", t->seam_max_gap},
-        {"seam_max_kink", t->seam_max_kink},
-        {"seam_max_crease", t->seam_max_crease},
+        {"seam_max_gap", t->seam_max_gap * 1000},
+        {"seam_max_kink", t->seam_max_kink * 180 / M_PI},
+        {"seam_max_crease", t->seam_max_crease * 180 / M_PI},
         {"seam_gaps_over", (double)t->seam_gaps_over},
         {"seam_kinks_over", (double)t->seam_kinks_over},
     };
@@ -218,6 +221,26 @@ static void test_registry_is_the_table(void **state)
         n++;
     }
     sqlite3_finalize(s);
+    /* option_held (schema v16): run, option, then a column for each row
+     * core holds in m or rad and the table in mm or degrees, and no
+     * other. */
+    assert_int_equal(sqlite3_prepare_v2(db,
+        "SELECT name FROM pragma_table_info('option_held') WHERE cid > 1"
+        " ORDER BY cid", -1, &s, NULL), SQLITE_OK);
+    int held = 0;
+    while (sqlite3_step(s) == SQLITE_ROW) {
+        const char *name = (const char *)sqlite3_column_text(s, 0);
+        const struct quantity *c = quantity_named(name);
+        if (c == NULL || c->stored == STORED_AS_HELD)
+            fail_msg("option_held holds %s, the registry does not", name);
+        held++;
+    }
+    sqlite3_finalize(s);
+    int held_in_si = 0;
+    for (int k = 0; k < OPTION_QUANTITIES; k++)
+        held_in_si += option_quantities[k].stored != STORED_AS_HELD;
+    assert_int_equal(held, held_in_si);
+    assert_int_equal(held_in_si, 7);
     sqlite3_close(db);
     if (n != OPTION_QUANTITIES)
         fail_msg("the options table has %d columns, the registry %d: a row"
@@ -525,13 +548,10 @@ static const char *stored_unit_by_name(const char *name)
      * (docs/store.md); its planarity a ratio, no unit */
     if (strncmp(name, "closeness_", 10) == 0)
         return "m";
-    /* a building's seams (docs/store.md, schema v15): the gap in m, the
-     * kink added and the crease in rad, SI as the core holds them */
-    if (strcmp(name, "seam_max_gap") == 0)
-        return "m";
-    if (strcmp(name, "seam_max_kink") == 0 ||
-        strcmp(name, "seam_max_crease") == 0)
-        return "rad";
+    /* a building's seams (docs/store.md, schema v16): the gap in mm, the
+     * kink added and the crease in degrees, as the option's own */
+    if (n >= 7 && strcmp(name + n - 7, "_crease") == 0)
+        return "deg";
     /* a joint's gap in mm, its kink in degrees (docs/method.md: Panels as
      * built) */
     if (n >= 4 && strcmp(name + n - 4, "_gap") == 0)

@@ -101,10 +101,10 @@ static void same_totals_but_moulds(const struct option_totals *a,
     SAME_DOUBLE(area_cost);
     SAME_DOUBLE(panel_cost);
     SAME_DOUBLE(joint_cost);
-    SAME_DOUBLE(max_gap_mm);
-    SAME_DOUBLE(mean_gap_mm);
-    SAME_DOUBLE(max_kink_deg);
-    SAME_DOUBLE(mean_kink_deg);
+    SAME_DOUBLE(max_gap);
+    SAME_DOUBLE(mean_gap);
+    SAME_DOUBLE(max_kink);
+    SAME_DOUBLE(mean_kink);
     SAME_COUNT(gaps_over);
     SAME_COUNT(kinks_over);
     SAME_COUNT(sp_misfits);
@@ -477,8 +477,8 @@ static void test_skin_brute_force(void **state)
         sum.joint_length += t.joint_length;
         sum.max_deviation = fmax(sum.max_deviation, t.max_deviation);
         sum.max_panel_area = fmax(sum.max_panel_area, t.max_panel_area);
-        sum.max_gap_mm = fmax(sum.max_gap_mm, t.max_gap_mm);
-        sum.max_kink_deg = fmax(sum.max_kink_deg, t.max_kink_deg);
+        sum.max_gap = fmax(sum.max_gap, t.max_gap);
+        sum.max_kink = fmax(sum.max_kink, t.max_kink);
         sum.gaps_over += t.gaps_over;
         sum.kinks_over += t.kinks_over;
         sum.sp_misfits += t.sp_misfits;
@@ -493,8 +493,8 @@ static void test_skin_brute_force(void **state)
                         (size_t)g[i].nu * (size_t)(g[i].nv - 1);
         assert_int_equal(s->joints, joints);
         all_joints += joints;
-        mean_gap += t.mean_gap_mm * (double)joints;
-        mean_kink += t.mean_kink_deg * (double)joints;
+        mean_gap += t.mean_gap * (double)joints;
+        mean_kink += t.mean_kink * (double)joints;
     }
     const struct option_totals *b = &option.totals;
     assert_int_equal(b->panels, sum.panels);
@@ -510,8 +510,8 @@ static void test_skin_brute_force(void **state)
     assert_true(relative(b->joint_length, sum.joint_length) < 1e-13);
     same_bits(b->max_deviation, sum.max_deviation, "max deviation");
     same_bits(b->max_panel_area, sum.max_panel_area, "max panel area");
-    same_bits(b->max_gap_mm, sum.max_gap_mm, "max gap");
-    same_bits(b->max_kink_deg, sum.max_kink_deg, "max kink");
+    same_bits(b->max_gap, sum.max_gap, "max gap");
+    same_bits(b->max_kink, sum.max_kink, "max kink");
     assert_int_equal(b->gaps_over, sum.gaps_over);
     assert_int_equal(b->kinks_over, sum.kinks_over);
     assert_int_equal(b->sp_misfits, sum.sp_misfits);
@@ -527,9 +527,9 @@ static void test_skin_brute_force(void **state)
     assert_int_equal(b->slivers, sum.slivers);
     assert_true(sum.slivers > 0 && sum.slivers < b->panels);
     assert_int_equal(option.joints, all_joints);
-    assert_true(relative(b->mean_gap_mm, mean_gap / (double)all_joints) <
+    assert_true(relative(b->mean_gap, mean_gap / (double)all_joints) <
                 1e-12);
-    assert_true(relative(b->mean_kink_deg, mean_kink / (double)all_joints) <
+    assert_true(relative(b->mean_kink, mean_kink / (double)all_joints) <
                 1e-12);
     /* Feasible only if no surface is over a limit. */
     assert_int_equal(b->feasible, sum.gaps_over == 0 && sum.kinks_over == 0 &&

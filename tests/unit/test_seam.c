@@ -532,16 +532,16 @@ static void test_building_option_seams(void **state)
     size_t gaps_over = 0, kinks_over = 0;
     for (int k = 0; k < 2; k++) {
         const struct project_surface_option *s = &option.surfaces[k];
-        inside += (double)s->joints * s->totals.mean_gap_mm;
-        max_gap = fmax(max_gap, s->totals.max_gap_mm);
+        inside += (double)s->joints * s->totals.mean_gap;
+        max_gap = fmax(max_gap, s->totals.max_gap);
         gaps_over += s->totals.gaps_over;
         kinks_over += s->totals.kinks_over;
     }
     assert_int_equal(option.joints, 4);  /* 2 inside each face */
-    double want_mean = (inside + 2 * gap * 1000) / 6;
-    assert_true(fabs(t->mean_gap_mm - want_mean) < 1e-9 * want_mean);
-    assert_true(fabs(t->max_gap_mm - fmax(max_gap, gap * 1000)) < 1e-9);
-    assert_true(fabs(t->max_kink_deg - 60) < 1e-5);
+    double want_mean = (inside + 2 * gap) / 6;
+    assert_true(fabs(t->mean_gap - want_mean) < 1e-9 * want_mean);
+    assert_true(fabs(t->max_gap - fmax(max_gap, gap)) < 1e-12);
+    assert_true(fabs(t->max_kink - M_PI / 3) < 1e-5 * M_PI / 180);
     assert_int_equal(t->gaps_over, gaps_over + 2);
     assert_int_equal(t->kinks_over, kinks_over);
     assert_int_equal(t->feasible, 0);  /* gaps over 1 mm */

@@ -342,6 +342,147 @@ static void test_browse_by_unknown(void **state)
             }
 }
 
+/* SQLite's one number of query over the file at path (attached as old, the
+ * file before the migration), NaN for NULL. */
+static double sql_number(const char *query)
+{
+    sqlite3 *db;
+    assert_int_equal(sqlite3_open(path, &db), SQLITE_OK);
+    char attach[160];
+    snprintf(attach, sizeof attach, "ATTACH '%s.v15' AS old", path);
+    assert_int_equal(sqlite3_exec(db, attach, NULL, NULL, NULL), SQLITE_OK);
+    sqlite3_stmt *s;
+    if (sqlite3_prepare_v2(db, query, -1, &s, NULL) != SQLITE_OK)
+        fail_msg("%s: %s", query, sqlite3_errmsg(db));
+    assert_int_equal(sqlite3_step(s), SQLITE_ROW);
+    double value = sqlite3_column_type(s, 0) == SQLITE_NULL
+                       ? NAN : sqlite3_column_double(s, 0);
+    sqlite3_finalize(s);
+    sqlite3_close(db);
+    return value;
+}
+
+/* A v15 file (issue 27, schema v16): its options' gaps in mm and kinks
+ * in degrees, its seams' gap in m and angles in rad. Migrated, every
+ * gap column users query is in mm and every kink and crease in degrees,
+ * SQLite's own arithmetic on the old file's values (its seams' m times
+ * 1000, rad times 180 over pi; an option's own as they were), option_held
+ * keeps them in m and rad (the seams' as they were, an option's own
+ * SQLite's mm / 1000 and degrees x pi / 180), and Facet reads the seams'
+ * values to the bit the v15 file held them. */
+static void test_v15_gaps_in_one_unit(void **state)
+{
+    (void)state;
+    snprintf(path, sizeof path, "/tmp/facet_test_v15_%d.db", (int)getpid());
+    char old[80];
+    snprintf(old, sizeof old, "%s.v15", path);
+    store_fixture_remove(path);
+    store_fixture_remove(old);
+    struct facet_error err;
+    struct store *store;
+    assert_int_equal(store_open(path, &store, &err), FACET_OK);
+    struct run_info run;
+    store_fixture_run(&run);
+    assert_int_equal(store_run_create(store, &run, &err), FACET_OK);
+    enum { N = 40 };
+    struct option_row rows[N];
+    memset(rows, 0, sizeof rows);
+    for (int k = 0; k < N; k++) {
+        struct option_totals *t = &rows[k].totals;
+        option_totals_classified(t);
+        rows[k].number = k + 1;
+        rows[k].nu = rows[k].nv = 4;
+        rows[k].threshold_mm = 3;
+        t->panels = t->count[TYPE_DP] = 16;
+        t->area = t->area_of[TYPE_DP] = 100;
+        /* m and rad of no round number, so that a rounding shows */
+        t->max_gap = 0.0123456789 * (k + 1) / 7;
+        t->mean_gap = t->max_gap / 3;
+        t->max_kink = 0.0345678912 * (k + 1) / 11;
+        t->mean_kink = t->max_kink / 3;
+        t->seams = 2;
+        t->seam_length = 4;
+        t->seam_max_gap = 0.0098765432 * (k + 1) / 13;
+        t->seam_max_kink = 0.0234567891 * (k + 1) / 17;
+        t->seam_max_crease = 0.523598775598 + k / 19.0;
+    }
+    assert_int_equal(store_options_put(store, run.id, rows, N, &err),
+                     FACET_OK);
+    store_close(store);
+    sql(STORE_FIXTURE_UNDO_V16 "PRAGMA user_version = 15;");
+    /* the file as v15 wrote it, kept to compare with */
+    char copy[200];
+    snprintf(copy, sizeof copy, "cp '%s' '%s'", path, old);
+    assert_int_equal(system(copy), 0);
+    assert_int_equal(sql_int("SELECT count(*) FROM sqlite_schema"
+                             " WHERE name = 'option_held'"), 0);
+    assert_int_equal(store_open(path, &store, &err), FACET_OK);
+    store_close(store);
+    assert_int_equal(sql_int("PRAGMA user_version"), 16);
+    /* pi as core/base/units.h has it, as SQLite reads the migration's */
+    assert_true(sql_number("SELECT 3.141592653589793") == M_PI);
+    static const char *const same[] = {
+        /* the seams: the old m and rad, in mm and degrees by SQLite */
+        "SELECT count(*) FROM options o JOIN old.options p USING (run, number)"
+        " WHERE o.seam_max_gap = p.seam_max_gap * 1000"
+        " AND o.seam_max_kink = p.seam_max_kink * 180 / 3.141592653589793"
+        " AND o.seam_max_crease = p.seam_max_crease * 180 / 3.141592653589793",
+        /* an option's own mm and degrees, as they were */
+        "SELECT count(*) FROM options o JOIN old.options p USING (run, number)"
+        " WHERE o.max_gap = p.max_gap AND o.mean_gap = p.mean_gap"
+        " AND o.max_kink = p.max_kink AND o.mean_kink = p.mean_kink",
+        /* held as core holds them: the seams' old m and rad as they were,
+         * an option's own from the old mm and degrees */
+        "SELECT count(*) FROM option_held h"
+        " JOIN old.options p ON p.run = h.run AND p.number = h.option"
+        " WHERE h.seam_max_gap = p.seam_max_gap"
+        " AND h.seam_max_kink = p.seam_max_kink"
+        " AND h.seam_max_crease = p.seam_max_crease"
+        " AND h.max_gap = p.max_gap / 1000"
+        " AND h.mean_gap = p.mean_gap / 1000"
+        " AND h.max_kink = p.max_kink * 3.141592653589793 / 180"
+        " AND h.mean_kink = p.mean_kink * 3.141592653589793 / 180",
+    };
+    for (size_t q = 0; q < sizeof same / sizeof same[0]; q++)
+        if (sql_number(same[q]) != N)
+            fail_msg("%g of %d options: %s", sql_number(same[q]), N,
+                     same[q]);
+    /* One unit per family: a seam's gap and an option's are comparable
+     * in SQL (the seam gaps here are about the options' gaps' size). */
+    assert_true(sql_number("SELECT max(seam_max_gap) / max(max_gap)"
+                           " FROM options") > 0.1);
+    assert_true(sql_number("SELECT max(seam_max_gap) / max(max_gap)"
+                           " FROM options") < 10);
+    /* Facet reads the seams it stored to the bit, and an option's own
+     * as SQLite's m. */
+    assert_int_equal(store_open(path, &store, &err), FACET_OK);
+    for (int k = 0; k < N; k++) {
+        struct option_row back;
+        assert_int_equal(store_option_get(store, run.id, k + 1, &back, &err),
+                         FACET_OK);
+        /* the v15 file's m and rad, to the bit */
+        char query[200];
+        static const char *const seam[] = {"seam_max_gap", "seam_max_kink",
+                                           "seam_max_crease"};
+        const double got[] = {back.totals.seam_max_gap,
+                              back.totals.seam_max_kink,
+                              back.totals.seam_max_crease};
+        for (int c = 0; c < 3; c++) {
+            snprintf(query, sizeof query, "SELECT %s FROM old.options"
+                     " WHERE number = %d", seam[c], k + 1);
+            if (!(got[c] == sql_number(query)))
+                fail_msg("option %d: %s reads %.17g, v15 held %.17g", k + 1,
+                         seam[c], got[c], sql_number(query));
+        }
+        snprintf(query, sizeof query, "SELECT max_gap FROM option_held"
+                 " WHERE option = %d", k + 1);
+        assert_true(back.totals.max_gap == sql_number(query));
+    }
+    store_close(store);
+    store_fixture_remove(path);
+    store_fixture_remove(old);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -355,6 +496,7 @@ int main(void)
                                         teardown),
         cmocka_unit_test_setup_teardown(test_browse_by_unknown, setup,
                                         teardown),
+        cmocka_unit_test(test_v15_gaps_in_one_unit),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -97,8 +97,8 @@ static void option_of(int k, struct option_row *row,
         s->totals.cost = 1000.5 * (i + 1) + k;
         s->totals.max_deviation = 0.002 * (i + 1);
         s->totals.moulds = (size_t)(3 + i);
-        s->totals.max_gap_mm = NAN;  /* not measured: NULL */
-        s->totals.max_kink_deg = 0.5 * i;
+        s->totals.max_gap = NAN;  /* not measured: NULL */
+        s->totals.max_kink = 0.5 * i;  /* rad, stored in degrees */
         s->totals.feasible = i;
         /* schema v10's, kept per surface; none on the second surface */
         s->totals.sp_min_radius = i ? NAN : 2.5 + k;
@@ -169,7 +169,7 @@ static void test_project_rows_round_trip(void **state)
                     per[1][i].totals.max_deviation);
         assert_int_equal(got[i].moulds_used, per[1][i].moulds_used);
         assert_int_equal(got[i].joints, per[1][i].joints);
-        assert_true(isnan(got[i].totals.max_gap_mm));
+        assert_true(isnan(got[i].totals.max_gap));
         assert_int_equal(got[i].totals.feasible, i);
         assert_true(i ? isnan(got[i].totals.sp_min_radius)
                       : got[i].totals.sp_min_radius == 4.5);

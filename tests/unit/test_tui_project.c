@@ -62,8 +62,8 @@ static struct option_surface_row sample_row(void)
     r.totals.moulds = 8;
     r.moulds_used = 11;
     r.totals.max_deviation = 0.0018716;  /* m: 1.87 mm */
-    r.totals.max_gap_mm = 1.8716;
-    r.totals.max_kink_deg = 3.3937;
+    r.totals.max_gap = 0.0018716;         /* m: 1.87 mm */
+    r.totals.max_kink = 3.3937 * M_PI / 180;  /* rad: 3.39 deg */
     return r;
 }
 
@@ -132,8 +132,8 @@ static void test_row_cut_and_unknown(void **state)
 {
     (void)state;
     struct option_surface_row r = sample_row();
-    r.totals.max_gap_mm = NAN;  /* no joint measured */
-    r.totals.max_kink_deg = NAN;
+    r.totals.max_gap = NAN;  /* no joint measured */
+    r.totals.max_kink = NAN;
     char line[160], name[32];
     surface_rows_line(line, sizeof line, "a_very_long_surface_name", &r);
     assert_int_equal(strlen(line), SURFACE_ROW_WIDTH);
