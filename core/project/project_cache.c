@@ -537,6 +537,15 @@ static const char *check_surface(const struct surface *s)
         !all_finite(s->param.uv, 6 * T) ||
         (m->uv != NULL && !all_finite(m->uv, 6 * T)))
         return "damaged (a coordinate is not a number)";
+    /* A NaN or infinite curvature would classify a panel as no surface
+     * bends: refused as a coordinate is. */
+    const struct curvature *c = &s->curvature;
+    if (!all_finite(c->k1, V) || !all_finite(c->k2, V) ||
+        !all_finite(c->dir1, 3 * V) || !all_finite(c->dir2, 3 * V) ||
+        !all_finite(c->normal, 3 * V) ||
+        !all_finite(c->surface_normal, 3 * V) ||
+        !all_finite(c->k1_error, V) || !all_finite(c->k2_error, V))
+        return "damaged (a curvature is not a number)";
     return NULL;
 }
 
@@ -708,6 +717,7 @@ static int read_stream(FILE *file, unsigned long long size, const char *name,
         memset(&probe, 0, sizeof probe);
         probe.mesh = read[i].mesh;
         probe.param = read[i].param;
+        probe.curvature = read[i].curvature;
         r.why = check_surface(&probe);
     }
     int rc = r.why != NULL ? refuse(name, r.why, err)

@@ -35,8 +35,8 @@
  * the bytes left in the file before it is allocated, the checksum over the
  * whole payload, then every index (triangle corners, neighbours, the
  * triangles round a vertex, the loops, the components, the surface's
- * file) against what it indexes and every coordinate and UV for being
- * finite. A damaged, truncated, stale or foreign file is refused with one
+ * file) against what it indexes and every coordinate, UV and curvature
+ * (curvature.h promises every value finite) for being finite. A damaged, truncated, stale or foreign file is refused with one
  * line saying which; never a crash, never a wrong building.
  *
  * Writing goes to a temporary file beside the cache, renamed over it when

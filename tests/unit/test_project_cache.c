@@ -16,6 +16,7 @@
 #include <stdint.h>
 #include <cmocka.h>
 
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -422,6 +423,38 @@ static void test_another_key_is_stale(void **state)
     refused(cache, stale, obj, "stale");
 }
 
+/* A cache whose checksum holds but whose curvature is not a number (a
+ * file made by hand, or by a Facet that computed one): refused, for every
+ * curvature array, since a NaN curvature classifies a panel as no truth
+ * would. The project is prepared, one number spoiled, then written: the
+ * writer writes what it is given, with a right checksum. */
+static void test_curvature_not_a_number_is_refused(void **state)
+{
+    (void)state;
+    char obj[128], cache[128];
+    snprintf(obj, sizeof obj, "%s/sheets_nan.obj", dir);
+    snprintf(cache, sizeof cache, "%s/nan.cache", dir);
+    write_sheets(obj, 4, -1);
+    struct project_cache_settings s = {UNITS_M, 0, PARAM_AUTO, "test"};
+    char key[65];
+    key_of(obj, &s, key);
+    for (int which = 0; which < 8; which++)
+        for (int inf = 0; inf < 2; inf++) {
+            struct project a;
+            fresh(obj, UNITS_M, 0, PARAM_AUTO, &a);
+            struct curvature *c = &a.surfaces[1].surface.curvature;
+            double *arrays[8] = {c->k1, c->k2, c->dir1, c->dir2, c->normal,
+                                 c->surface_normal, c->k1_error,
+                                 c->k2_error};
+            arrays[which][c->nvertices / 2] = inf ? -INFINITY : NAN;
+            struct facet_error err;
+            assert_int_equal(project_cache_write(&a, key, cache, &err),
+                             FACET_OK);
+            project_close(&a);
+            refused(cache, key, obj, "not a number");
+        }
+}
+
 /* ---- the study's decision ---- */
 
 struct notes {
@@ -635,6 +668,7 @@ int main(void)
         cmocka_unit_test(test_round_trip_is_the_same_to_the_bit),
         cmocka_unit_test(test_damage_and_truncation_are_refused),
         cmocka_unit_test(test_another_key_is_stale),
+        cmocka_unit_test(test_curvature_not_a_number_is_refused),
         cmocka_unit_test(test_study_reuses_and_rebuilds),
         cmocka_unit_test(test_resume_uses_known_digests),
         cmocka_unit_test(test_unwritable_cache_is_a_note),
