@@ -455,6 +455,45 @@ static void test_curvature_not_a_number_is_refused(void **state)
         }
 }
 
+/* The reader asks its stop: one that fires gives FACET_ESTOP and
+ * nothing read, one that does not the building. */
+static int always(void *context)
+{
+    (void)context;
+    return 1;
+}
+
+static void test_reader_asks_its_stop(void **state)
+{
+    (void)state;
+    char obj[128], cache[128];
+    snprintf(obj, sizeof obj, "%s/sheets_stop.obj", dir);
+    snprintf(cache, sizeof cache, "%s/stop.cache", dir);
+    write_sheets(obj, 4, -1);
+    struct project a;
+    fresh(obj, UNITS_M, 0, PARAM_AUTO, &a);
+    struct facet_error err;
+    const char key[65] = "0123456789abcdef0123456789abcdef"
+                         "0123456789abcdef0123456789abcdef";
+    assert_int_equal(project_cache_write(&a, key, cache, &err), FACET_OK);
+    project_close(&a);
+    struct facet_stop stop = {always, NULL};
+    char found[65];
+    const char *paths[1] = {obj};
+    assert_int_equal(project_cache_read_unkeyed(cache, found, paths, 1,
+                                                UNITS_M, &stop, &a, &err),
+                     FACET_ESTOP);
+    assert_int_equal(a.nsurfaces, 0);
+    assert_null(a.cache_bytes);
+    project_close(&a);
+    assert_int_equal(project_cache_read_unkeyed(cache, found, paths, 1,
+                                                UNITS_M, NULL, &a, &err),
+                     FACET_OK);
+    assert_string_equal(found, key);
+    assert_int_equal(a.nsurfaces, 2);
+    project_close(&a);
+}
+
 /* ---- the study's decision ---- */
 
 struct notes {
@@ -475,6 +514,79 @@ static void on_note(void *context, const char *text)
         n->not_kept++;
     else
         fail_msg("an unexpected note: %s", text);
+}
+
+/* A stop asked once the study says it reads the prepared building: the
+ * read hears it (FACET_ESTOP), for a resume, whose files' hashes are
+ * known and so not read beside the cache (where their reading would hear
+ * the stop and hide that the cache's did not), and for a first read. */
+struct stop_when_reading {
+    int reading, asked;
+};
+
+static void on_stage(void *context, const char *what)
+{
+    struct stop_when_reading *s = context;
+    if (strstr(what, "reading the prepared building") != NULL)
+        s->reading = 1;
+}
+
+static int stop_if_reading(void *context)
+{
+    struct stop_when_reading *s = context;
+    if (s->reading)
+        s->asked++;
+    return s->reading;
+}
+
+static void test_stop_while_reading_the_cache(void **state)
+{
+    (void)state;
+    char sub[128], obj[160], db[160];
+    snprintf(sub, sizeof sub, "%s/stop", dir);
+    assert_int_equal(mkdir(sub, 0700), 0);
+    snprintf(obj, sizeof obj, "%s/sheets.obj", sub);
+    snprintf(db, sizeof db, "%s/runs.db", sub);
+    write_sheets(obj, 6, -1);
+    struct study_prepare want = {db, (const char *[]){obj}, 1, NULL,
+                                 UNITS_M, 1, 0, PARAM_AUTO};
+    struct project p;
+    char digest[1][65];
+    struct facet_error err;
+    /* The cache written by a first, unstopped, run. */
+    assert_int_equal(study_project_prepared(&want, NULL, &p, digest, &err),
+                     FACET_OK);
+    project_close(&p);
+    for (int known = 1; known >= 0; known--) {
+        struct stop_when_reading s = {0, 0};
+        struct study_hooks hooks = {&s, on_stage, NULL, stop_if_reading,
+                                    NULL, NULL, NULL};
+        want.known = known ? (const char (*)[65])digest : NULL;
+        int rc = study_project_prepared(&want, &hooks, &p, digest, &err);
+        size_t surfaces = p.nsurfaces;
+        project_close(&p);
+        assert_true(s.reading);
+        if (rc != FACET_ESTOP)
+            fail_msg("%s: a stop while the prepared building is read is "
+                     "not heard (rc %d)", known ? "a resume" : "a run", rc);
+        assert_non_null(strstr(err.message, "stop"));
+        /* Heard by the read itself, which then hands out nothing: not
+         * only by the preparation after it, once the whole cache had been
+         * read and checked (the skin's 400 MB: seconds). */
+        if (surfaces != 0)
+            fail_msg("%s: the stop was heard only after the whole cache "
+                     "was read (%zu surfaces)", known ? "a resume" : "a run",
+                     surfaces);
+    }
+    /* Unstopped, the cache is whole and reused. */
+    struct notes n;
+    memset(&n, 0, sizeof n);
+    struct study_hooks told = {&n, NULL, NULL, NULL, NULL, NULL, on_note};
+    want.known = NULL;
+    assert_int_equal(study_project_prepared(&want, &told, &p, digest, &err),
+                     FACET_OK);
+    project_close(&p);
+    assert_int_equal(n.reused, 1);
 }
 
 /* study_project_prepared of obj with db beside, its SHA-256 known as
@@ -669,6 +781,8 @@ int main(void)
         cmocka_unit_test(test_damage_and_truncation_are_refused),
         cmocka_unit_test(test_another_key_is_stale),
         cmocka_unit_test(test_curvature_not_a_number_is_refused),
+        cmocka_unit_test(test_reader_asks_its_stop),
+        cmocka_unit_test(test_stop_while_reading_the_cache),
         cmocka_unit_test(test_study_reuses_and_rebuilds),
         cmocka_unit_test(test_resume_uses_known_digests),
         cmocka_unit_test(test_unwritable_cache_is_a_note),
