@@ -202,6 +202,11 @@ int study_project_prepared(const struct study_prepare *want,
         snprintf(line, sizeof line, "%s; the prepared building is not kept",
                  why.message);
         note(hooks, line);
+    } else {
+        /* The same files' caches of other settings or builds: bounded. A
+         * folder that cannot be listed leaves them, which costs only
+         * disk. */
+        project_cache_prune(path, PROJECT_CACHE_KEEP, &why);
     }
     return FACET_OK;
 }

@@ -10,6 +10,8 @@
  */
 #include "core/project/project_cache.h"
 
+#include <assert.h>
+#include <dirent.h>
 #include <errno.h>
 #include <math.h>
 #include <stdint.h>
@@ -23,6 +25,7 @@
 #include "core/base/sha256.h"
 
 #define MAGIC "FACETPRE"
+#define PROJECT_CACHE_PREFIX "facet-prepared-"
 #define BYTE_ORDER_MARK 0x01020304u
 #define NAME_MAX_BYTES 4096
 /* Every array starts at a multiple of this from the file's start (the
@@ -76,21 +79,135 @@ int project_cache_path(const char *db_path, const char *const *paths,
     struct project_cache_settings named = *settings;
     named.code = NULL;
     hash_settings(&h, &named);
-    for (size_t i = 0; i < npaths; i++)
+    /* The building's files alone name the first half: its caches of
+     * other settings share it, so that project_cache_prune finds them. */
+    struct sha256 b;
+    sha256_init(&b);
+    for (size_t i = 0; i < npaths; i++) {
         sha256_update(&h, paths[i], strlen(paths[i]) + 1);
-    char name[65];
+        sha256_update(&b, paths[i], strlen(paths[i]) + 1);
+    }
+    char name[65], building[65];
     sha256_hex(&h, name);
+    sha256_hex(&b, building);
     /* Beside the database, in its folder: every database there (a
      * node's shards, a copy) shares it. */
     const char *slash = strrchr(db_path, '/');
     int folder = slash != NULL ? (int)(slash - db_path) + 1 : 0;
-    int n = snprintf(out, size, "%.*sfacet-prepared-%.16s", folder,
-                     db_path, name);
+    int n = snprintf(out, size, "%.*s" PROJECT_CACHE_PREFIX "%.8s%.8s",
+                     folder, db_path, building, name);
     if (n < 0 || (size_t)n >= size)
         return facet_error_set(err, FACET_EINPUT,
             "%.200s: path too long for its prepared building's cache",
             db_path);
     return FACET_OK;
+}
+
+/* ---- old caches ---- */
+
+/* One cache of the same building found beside the one kept. */
+struct older {
+    char name[256];
+    struct timespec modified;
+};
+
+/* Newest first; ties by name, so that which is kept does not depend on
+ * the order the folder lists them in. */
+static int newer_first(const void *a, const void *b)
+{
+    const struct older *x = a, *y = b;
+    if (x->modified.tv_sec != y->modified.tv_sec)
+        return x->modified.tv_sec > y->modified.tv_sec ? -1 : 1;
+    if (x->modified.tv_nsec != y->modified.tv_nsec)
+        return x->modified.tv_nsec > y->modified.tv_nsec ? -1 : 1;
+    return strcmp(x->name, y->name);
+}
+
+static int is_hex(const char *s, size_t n)
+{
+    for (size_t i = 0; i < n; i++)
+        if (!((s[i] >= '0' && s[i] <= '9') || (s[i] >= 'a' && s[i] <= 'f')))
+            return 0;
+    return s[n] == '\0';
+}
+
+/* Whether name, in the folder open as dirfd, is a regular file (not a
+ * link to one) that begins with a cache's magic: what Facet wrote. */
+static int facet_wrote(int dirfd, const char *name, struct timespec *when)
+{
+    struct stat st;
+    if (fstatat(dirfd, name, &st, AT_SYMLINK_NOFOLLOW) != 0 ||
+        !S_ISREG(st.st_mode))
+        return 0;
+    int fd = openat(dirfd, name, O_RDONLY | O_NOFOLLOW | O_CLOEXEC);
+    if (fd < 0)
+        return 0;
+    char magic[8];
+    int ours = read(fd, magic, sizeof magic) == (ssize_t)sizeof magic &&
+               memcmp(magic, MAGIC, sizeof magic) == 0;
+    close(fd);
+    *when = st.st_mtim;
+    return ours;
+}
+
+int project_cache_prune(const char *path, int keep, struct facet_error *err)
+{
+    assert(keep >= 1);
+    const char *slash = strrchr(path, '/');
+    const char *base = slash != NULL ? slash + 1 : path;
+    size_t prefix = strlen(PROJECT_CACHE_PREFIX);
+    if (strncmp(base, PROJECT_CACHE_PREFIX, prefix) != 0 ||
+        !is_hex(base + prefix, 16))
+        return facet_error_set(err, FACET_EINPUT,
+            "%.300s: not a prepared building's cache name", path);
+    char folder[4096];
+    int n = snprintf(folder, sizeof folder, "%.*s",
+                     slash != NULL ? (int)(slash - path) + 1 : 2,
+                     slash != NULL ? path : "./");
+    if (n < 0 || (size_t)n >= sizeof folder)
+        return facet_error_set(err, FACET_EINPUT, "%.300s: path too long",
+                               path);
+    DIR *dir = opendir(folder);
+    if (dir == NULL)
+        return facet_error_set(err, FACET_EWORK, "%.300s: %s", folder,
+                               strerror(errno));
+    struct older *found = NULL;
+    size_t count = 0, capacity = 0;
+    int rc = FACET_OK;
+    struct dirent *entry;
+    while ((entry = readdir(dir)) != NULL) {
+        const char *name = entry->d_name;
+        /* The same building: the same first 8 hex digits, another
+         * settings' last 8. */
+        if (strncmp(name, base, prefix + 8) != 0 ||
+            !is_hex(name + prefix, 16) || strcmp(name, base) == 0 ||
+            strlen(name) >= sizeof found->name)
+            continue;
+        struct timespec when;
+        if (!facet_wrote(dirfd(dir), name, &when))
+            continue;
+        if (count == capacity) {
+            size_t grown = capacity ? 2 * capacity : 8;
+            struct older *more = realloc(found, grown * sizeof *found);
+            if (more == NULL) {
+                rc = facet_error_set(err, FACET_EWORK, "out of memory");
+                break;
+            }
+            found = more;
+            capacity = grown;
+        }
+        snprintf(found[count].name, sizeof found[count].name, "%s", name);
+        found[count].modified = when;
+        count++;
+    }
+    if (rc == FACET_OK && count > (size_t)keep - 1) {
+        qsort(found, count, sizeof *found, newer_first);
+        for (size_t i = (size_t)keep - 1; i < count; i++)
+            unlinkat(dirfd(dir), found[i].name, 0);
+    }
+    closedir(dir);
+    free(found);
+    return rc;
 }
 
 /* ---- writing ---- */

@@ -91,17 +91,34 @@ void project_cache_key(const char (*digest)[65], size_t nfiles,
                        char key[65]);
 
 /* The cache's path beside the database db_path: in its folder,
- * "facet-prepared-" and 16 hex digits of the SHA-256 of the files' paths
- * (as given: make them absolute first) and the settings but the code,
- * into out (size bytes). One name per building and settings, so that a
- * building whose files change, or a Facet rebuilt, replaces its cache
- * instead of adding one, and every
- * database of the folder (a node's shards) shares it. FACET_EINPUT when
- * it does not fit. */
+ * "facet-prepared-" and 16 hex digits, the first 8 of the SHA-256 of the
+ * files' paths (as given: make them absolute first), the last 8 of the
+ * SHA-256 of the paths and the settings but the code, into out (size
+ * bytes). One name per building and settings, so that a building whose
+ * files change, or a Facet rebuilt, replaces its cache instead of adding
+ * one, and every database of the folder (a node's shards) shares it; the
+ * caches of one building's other settings share its first half
+ * (project_cache_prune). FACET_EINPUT when it does not fit. */
 int project_cache_path(const char *db_path, const char *const *paths,
                        size_t npaths,
                        const struct project_cache_settings *settings,
                        char *out, size_t size, struct facet_error *err);
+
+/* How many caches of one building's files (of different settings, or
+ * of another format version) project_cache_prune keeps beside each other,
+ * the one just written among them: a building studied in metres and
+ * millimetres, or with its normals both ways, keeps both without
+ * preparing either again, and no more pile up. */
+#define PROJECT_CACHE_KEEP 3
+
+/* Removes, beside the cache at path (just written), the caches of the
+ * same building's files (the same first half of the name) but the keep
+ * - 1 most recently written, keep >= 1. Only what Facet wrote: a regular
+ * file named as a cache is (not a symbolic link, never followed) that
+ * begins with a cache's magic; anything else is left alone. FACET_OK;
+ * FACET_EWORK when the folder cannot be listed (the caller goes on: a
+ * cache left is only disk). */
+int project_cache_prune(const char *path, int keep, struct facet_error *err);
 
 /* Writes project (prepared, read from files whose key is key) to path,
  * through a temporary file renamed over it. FACET_EWORK naming the file

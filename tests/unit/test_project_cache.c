@@ -642,6 +642,119 @@ static int caches(const char *db, char path[2][256])
     return n;
 }
 
+/* How many regular files in folder are named prefix and 8 more hex
+ * digits, or exist at all (links too) under that pattern: ls. */
+static int count_named(const char *folder, const char *pattern)
+{
+    char command[512];
+    snprintf(command, sizeof command, "ls -A %s | grep -cE '^%s$'", folder,
+             pattern);
+    FILE *ls = popen(command, "r");
+    assert_non_null(ls);
+    int n = -1;
+    assert_int_equal(fscanf(ls, "%d", &n), 1);
+    pclose(ls);
+    return n;
+}
+
+/* A building studied under five settings in turn: its caches beside the
+ * database are at most PROJECT_CACHE_KEEP, the newest kept (each run's
+ * own reused by the next run of its settings); another building's cache,
+ * a file named as a cache without the magic and a symbolic link named as
+ * one (to a real cache elsewhere) are left alone. Truth: the folder as ls
+ * lists it. */
+static void test_old_caches_do_not_pile_up(void **state)
+{
+    (void)state;
+    char sub[128], other[128], obj[192], two[192], db[192];
+    snprintf(sub, sizeof sub, "%s/prune", dir);
+    snprintf(other, sizeof other, "%s/prune_elsewhere", dir);
+    assert_int_equal(mkdir(sub, 0700), 0);
+    assert_int_equal(mkdir(other, 0700), 0);
+    snprintf(obj, sizeof obj, "%s/sheets.obj", sub);
+    snprintf(two, sizeof two, "%s/other.obj", sub);
+    snprintf(db, sizeof db, "%s/runs.db", sub);
+    write_sheets(obj, 3, -1);
+    write_sheets(two, 3, 5);
+    struct project p;
+    char digest[1][65];
+    struct facet_error err;
+    /* Another building's cache, beside. */
+    struct study_prepare another = {db, (const char *[]){two}, 1, NULL,
+                                    UNITS_M, 1, 0, PARAM_AUTO};
+    assert_int_equal(study_project_prepared(&another, NULL, &p, digest,
+                                            &err), FACET_OK);
+    project_close(&p);
+    char path[2][256];
+    assert_int_equal(caches(db, path), 1);
+    char another_cache[256];
+    snprintf(another_cache, sizeof another_cache, "%s", path[0]);
+
+    struct { enum mesh_units units; int flip; enum param_method uv; }
+        settings[] = {{UNITS_M, 0, PARAM_AUTO}, {UNITS_MM, 0, PARAM_AUTO},
+                      {UNITS_M, 1, PARAM_AUTO}, {UNITS_CM, 0, PARAM_AUTO},
+                      {UNITS_M, 1, PARAM_PLANE}};
+    char first[256] = "", prefix[64] = "";
+    for (size_t k = 0; k < sizeof settings / sizeof settings[0]; k++) {
+        struct study_prepare want = {db, (const char *[]){obj}, 1, NULL,
+                                     settings[k].units, 1, settings[k].flip,
+                                     settings[k].uv};
+        assert_int_equal(study_project_prepared(&want, NULL, &p, digest,
+                                                &err), FACET_OK);
+        project_close(&p);
+        char here[256];
+        const char *names[1] = {obj};
+        char absolute[4096];
+        assert_non_null(realpath(obj, absolute));
+        names[0] = absolute;
+        struct project_cache_settings s = {settings[k].units,
+                                           settings[k].flip,
+                                           settings[k].uv, NULL};
+        assert_int_equal(project_cache_path(db, names, 1, &s, here,
+                                            sizeof here, &err), FACET_OK);
+        struct stat st;
+        assert_int_equal(lstat(here, &st), 0);
+        if (k == 0) {
+            snprintf(first, sizeof first, "%s", here);
+            const char *base = strrchr(here, '/') + 1;
+            snprintf(prefix, sizeof prefix, "%.23s", base);
+            /* A file named as a cache of this building, not one; and a
+             * link named as one, to a real cache elsewhere. */
+            char fake[300], link[300], target[300];
+            snprintf(fake, sizeof fake, "%s/%sffffffff", sub, prefix);
+            FILE *out = fopen(fake, "w");
+            assert_non_null(out);
+            fputs("not a cache, but named as one\n", out);
+            fclose(out);
+            snprintf(target, sizeof target, "%s/%seeeeeeee", other, prefix);
+            damaged_copy(here, target, -1, -1);
+            snprintf(link, sizeof link, "%s/%seeeeeeee", sub, prefix);
+            assert_int_equal(symlink(target, link), 0);
+        }
+        char pattern[128];
+        snprintf(pattern, sizeof pattern, "%s[0-9a-f]{8}", prefix);
+        int n = count_named(sub, pattern);
+        /* Its own caches at most KEEP, and the fake and the link. */
+        int expect = (int)k + 1 < PROJECT_CACHE_KEEP ? (int)k + 1
+                                                     : PROJECT_CACHE_KEEP;
+        if (n != expect + 2)
+            fail_msg("after %zu settings: %d files named as this "
+                     "building's caches, not %d (%d caches, the fake and "
+                     "the link)", k + 1, n, expect + 2, expect);
+    }
+    /* The first settings' cache was the oldest: gone. The others stay. */
+    struct stat st;
+    assert_int_not_equal(lstat(first, &st), 0);
+    assert_int_equal(lstat(another_cache, &st), 0);
+    char kept[300];
+    snprintf(kept, sizeof kept, "%s/%sffffffff", sub, prefix);
+    assert_int_equal(lstat(kept, &st), 0);
+    snprintf(kept, sizeof kept, "%s/%seeeeeeee", sub, prefix);
+    assert_int_equal(lstat(kept, &st), 0);
+    assert_true(S_ISLNK(st.st_mode));
+    assert_int_equal(stat(kept, &st), 0);  /* its target too */
+}
+
 static void test_study_reuses_and_rebuilds(void **state)
 {
     (void)state;
@@ -787,6 +900,7 @@ int main(void)
         cmocka_unit_test(test_resume_uses_known_digests),
         cmocka_unit_test(test_unwritable_cache_is_a_note),
         cmocka_unit_test(test_one_name_across_builds),
+        cmocka_unit_test(test_old_caches_do_not_pile_up),
     };
     return cmocka_run_group_tests(tests, make_dir, remove_dir);
 }
