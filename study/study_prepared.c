@@ -63,14 +63,13 @@ struct cache_read {
 static int cache_parse(void *context, const struct facet_stop *stop,
                        struct facet_error *err)
 {
-    (void)stop;
     struct cache_read *c = context;
     c->rc = project_cache_read_unkeyed(c->path, c->found, c->want->files,
-                                       c->want->nfiles, c->want->units,
+                                       c->want->nfiles, c->want->units, stop,
                                        c->project, &c->why);
-    if (c->rc == FACET_EWORK) {
+    if (c->rc == FACET_EWORK || c->rc == FACET_ESTOP) {
         *err = c->why;
-        return FACET_EWORK;
+        return c->rc;
     }
     return FACET_OK;
 }
@@ -140,7 +139,7 @@ int study_project_prepared(const struct study_prepare *want,
         if (want->known != NULL) {
             rc = hash_files(want, &stop, digest, err);
             if (rc == FACET_OK)
-                cache_parse(&context, &stop, err);
+                rc = cache_parse(&context, &stop, err);
         } else {
             rc = study_read_hashed(want->files, want->nfiles, digest,
                                    cache_parse, &context, &stop, err);
@@ -203,6 +202,11 @@ int study_project_prepared(const struct study_prepare *want,
         snprintf(line, sizeof line, "%s; the prepared building is not kept",
                  why.message);
         note(hooks, line);
+    } else {
+        /* The same files' caches of other settings or builds: bounded. A
+         * folder that cannot be listed leaves them, which costs only
+         * disk. */
+        project_cache_prune(path, PROJECT_CACHE_KEEP, &why);
     }
     return FACET_OK;
 }

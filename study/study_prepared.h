@@ -11,7 +11,9 @@
  * stale or foreign is never used: the building is prepared from its
  * files, with a note saying why (hooks' note), and the cache written
  * again; a cache that cannot be written (a read-only folder, a full
- * disk) is a note too, never an error.
+ * disk) is a note too, never an error. A cache written removes the same
+ * files' older caches of other settings beyond PROJECT_CACHE_KEEP
+ * (project_cache_prune).
  */
 #ifndef FACET_STUDY_PREPARED_H
 #define FACET_STUDY_PREPARED_H

@@ -17,6 +17,7 @@
 
 #include "core/base/parallel.h"
 #include "core/obj/obj.h"
+#include "core/project/project_cache.h"
 #include "core/project/project_lengths.h"
 #include "core/project/project_seams.h"
 #include "core/project/project_locate.h"
@@ -482,6 +483,7 @@ const struct project_surface *project_find(const struct project *project,
 
 void project_close(struct project *project)
 {
+    project_cache_release(project);
     for (size_t i = 0; i < project->nsurfaces; i++) {
         free(project->surfaces[i].name);
         surface_close(&project->surfaces[i].surface);

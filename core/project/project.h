@@ -84,6 +84,12 @@ struct project {
                                      project_seams_keep found them
                                      (project_seams.h); NULL before, and
                                      then no option measures seams */
+    /* The prepared building's cache it was read from (project_cache.h),
+     * mapped: its surfaces' mesh, UV and curvature arrays lie in these
+     * bytes, which project_close unmaps (project_cache_release) rather
+     * than free the arrays one by one. NULL when read from its files. */
+    unsigned char *cache_bytes;
+    size_t cache_size;
 };
 
 /* Reads the files paths[0 .. npaths) (npaths >= 1), whose coordinates are

@@ -2,26 +2,37 @@
  * project_cache.c: writing and reading a prepared building. See
  * project_cache.h for the format and the checks.
  *
- * Arrays are streamed straight into the buffers the project keeps, each
- * length checked against the bytes left before it is allocated, and the
- * payload hashed as it passes; nothing read is handed out before the
- * checksum and the indices have been checked.
+ * The file is mapped and its arrays used where they lie (aligned by the
+ * writer's padding), each length checked against the bytes left; the
+ * payload is hashed first, in chunks between which the stop is asked;
+ * nothing read is handed out before the checksum and the indices have
+ * been checked.
  */
 #include "core/project/project_cache.h"
 
+#include <assert.h>
+#include <dirent.h>
 #include <errno.h>
 #include <math.h>
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
+#include <fcntl.h>
+#include <sys/mman.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
 #include "core/base/sha256.h"
 
 #define MAGIC "FACETPRE"
+#define PROJECT_CACHE_PREFIX "facet-prepared-"
 #define BYTE_ORDER_MARK 0x01020304u
 #define NAME_MAX_BYTES 4096
+/* Every array starts at a multiple of this from the file's start (the
+ * header's size is one): read in place, its doubles are aligned. */
+#define ARRAY_ALIGN 8
+/* Bytes hashed between two looks at the stop: a few milliseconds. */
+#define CHECK_CHUNK ((size_t)4 << 20)
 #define PROJECT_CACHE_STALE \
     "stale (made from other files, settings or another build of Facet)"
 
@@ -68,21 +79,135 @@ int project_cache_path(const char *db_path, const char *const *paths,
     struct project_cache_settings named = *settings;
     named.code = NULL;
     hash_settings(&h, &named);
-    for (size_t i = 0; i < npaths; i++)
+    /* The building's files alone name the first half: its caches of
+     * other settings share it, so that project_cache_prune finds them. */
+    struct sha256 b;
+    sha256_init(&b);
+    for (size_t i = 0; i < npaths; i++) {
         sha256_update(&h, paths[i], strlen(paths[i]) + 1);
-    char name[65];
+        sha256_update(&b, paths[i], strlen(paths[i]) + 1);
+    }
+    char name[65], building[65];
     sha256_hex(&h, name);
+    sha256_hex(&b, building);
     /* Beside the database, in its folder: every database there (a
      * node's shards, a copy) shares it. */
     const char *slash = strrchr(db_path, '/');
     int folder = slash != NULL ? (int)(slash - db_path) + 1 : 0;
-    int n = snprintf(out, size, "%.*sfacet-prepared-%.16s", folder,
-                     db_path, name);
+    int n = snprintf(out, size, "%.*s" PROJECT_CACHE_PREFIX "%.8s%.8s",
+                     folder, db_path, building, name);
     if (n < 0 || (size_t)n >= size)
         return facet_error_set(err, FACET_EINPUT,
             "%.200s: path too long for its prepared building's cache",
             db_path);
     return FACET_OK;
+}
+
+/* ---- old caches ---- */
+
+/* One cache of the same building found beside the one kept. */
+struct older {
+    char name[256];
+    struct timespec modified;
+};
+
+/* Newest first; ties by name, so that which is kept does not depend on
+ * the order the folder lists them in. */
+static int newer_first(const void *a, const void *b)
+{
+    const struct older *x = a, *y = b;
+    if (x->modified.tv_sec != y->modified.tv_sec)
+        return x->modified.tv_sec > y->modified.tv_sec ? -1 : 1;
+    if (x->modified.tv_nsec != y->modified.tv_nsec)
+        return x->modified.tv_nsec > y->modified.tv_nsec ? -1 : 1;
+    return strcmp(x->name, y->name);
+}
+
+static int is_hex(const char *s, size_t n)
+{
+    for (size_t i = 0; i < n; i++)
+        if (!((s[i] >= '0' && s[i] <= '9') || (s[i] >= 'a' && s[i] <= 'f')))
+            return 0;
+    return s[n] == '\0';
+}
+
+/* Whether name, in the folder open as dirfd, is a regular file (not a
+ * link to one) that begins with a cache's magic: what Facet wrote. */
+static int facet_wrote(int dirfd, const char *name, struct timespec *when)
+{
+    struct stat st;
+    if (fstatat(dirfd, name, &st, AT_SYMLINK_NOFOLLOW) != 0 ||
+        !S_ISREG(st.st_mode))
+        return 0;
+    int fd = openat(dirfd, name, O_RDONLY | O_NOFOLLOW | O_CLOEXEC);
+    if (fd < 0)
+        return 0;
+    char magic[8];
+    int ours = read(fd, magic, sizeof magic) == (ssize_t)sizeof magic &&
+               memcmp(magic, MAGIC, sizeof magic) == 0;
+    close(fd);
+    *when = st.st_mtim;
+    return ours;
+}
+
+int project_cache_prune(const char *path, int keep, struct facet_error *err)
+{
+    assert(keep >= 1);
+    const char *slash = strrchr(path, '/');
+    const char *base = slash != NULL ? slash + 1 : path;
+    size_t prefix = strlen(PROJECT_CACHE_PREFIX);
+    if (strncmp(base, PROJECT_CACHE_PREFIX, prefix) != 0 ||
+        !is_hex(base + prefix, 16))
+        return facet_error_set(err, FACET_EINPUT,
+            "%.300s: not a prepared building's cache name", path);
+    char folder[4096];
+    int n = snprintf(folder, sizeof folder, "%.*s",
+                     slash != NULL ? (int)(slash - path) + 1 : 2,
+                     slash != NULL ? path : "./");
+    if (n < 0 || (size_t)n >= sizeof folder)
+        return facet_error_set(err, FACET_EINPUT, "%.300s: path too long",
+                               path);
+    DIR *dir = opendir(folder);
+    if (dir == NULL)
+        return facet_error_set(err, FACET_EWORK, "%.300s: %s", folder,
+                               strerror(errno));
+    struct older *found = NULL;
+    size_t count = 0, capacity = 0;
+    int rc = FACET_OK;
+    struct dirent *entry;
+    while ((entry = readdir(dir)) != NULL) {
+        const char *name = entry->d_name;
+        /* The same building: the same first 8 hex digits, another
+         * settings' last 8. */
+        if (strncmp(name, base, prefix + 8) != 0 ||
+            !is_hex(name + prefix, 16) || strcmp(name, base) == 0 ||
+            strlen(name) >= sizeof found->name)
+            continue;
+        struct timespec when;
+        if (!facet_wrote(dirfd(dir), name, &when))
+            continue;
+        if (count == capacity) {
+            size_t grown = capacity ? 2 * capacity : 8;
+            struct older *more = realloc(found, grown * sizeof *found);
+            if (more == NULL) {
+                rc = facet_error_set(err, FACET_EWORK, "out of memory");
+                break;
+            }
+            found = more;
+            capacity = grown;
+        }
+        snprintf(found[count].name, sizeof found[count].name, "%s", name);
+        found[count].modified = when;
+        count++;
+    }
+    if (rc == FACET_OK && count > (size_t)keep - 1) {
+        qsort(found, count, sizeof *found, newer_first);
+        for (size_t i = (size_t)keep - 1; i < count; i++)
+            unlinkat(dirfd(dir), found[i].name, 0);
+    }
+    closedir(dir);
+    free(found);
+    return rc;
 }
 
 /* ---- writing ---- */
@@ -122,8 +247,11 @@ static void put_array(struct writer *w, const void *data, size_t count,
                       size_t size)
 {
     put_u8(w, data != NULL);
-    if (data != NULL)
-        put(w, data, count * size);
+    if (data == NULL)
+        return;
+    static const unsigned char zeros[ARRAY_ALIGN] = {0};
+    put(w, zeros, (ARRAY_ALIGN - w->bytes % ARRAY_ALIGN) % ARRAY_ALIGN);
+    put(w, data, count * size);
 }
 
 static void put_mesh(struct writer *w, const struct mesh *m)
@@ -296,27 +424,27 @@ int project_cache_write(const struct project *project, const char key[65],
 
 /* ---- reading ---- */
 
+/* The payload, read in place: every array the project gets points into
+ * the file's bytes (mapped, or a copy for read_file), which the project
+ * then owns (project_cache_release). */
 struct reader {
-    FILE *file;
-    uint64_t left;         /* payload bytes not yet read */
-    struct sha256 hash;
-    const char *why;       /* the first thing found wrong, or NULL */
+    const unsigned char *base;  /* the file's first byte */
+    uint64_t at;                /* the next byte's offset from base */
+    uint64_t end;               /* the payload's end's */
+    const char *why;            /* the first thing found wrong, or NULL */
 };
 
 static int get(struct reader *r, void *data, size_t n)
 {
     if (r->why != NULL)
         return 0;
-    if (n > r->left) {
+    if (n > r->end - r->at) {
         r->why = "truncated or damaged (a length runs past its end)";
         return 0;
     }
-    if (n > 0 && fread(data, 1, n, r->file) != n) {
-        r->why = "truncated (shorter than its header says)";
-        return 0;
-    }
-    sha256_update(&r->hash, data, n);
-    r->left -= n;
+    if (n > 0)
+        memcpy(data, r->base + r->at, n);
+    r->at += n;
     return 1;
 }
 
@@ -348,8 +476,9 @@ static double get_f64(struct reader *r)
     return v;
 }
 
-/* Reads an array written by put_array into *out (malloc'ed, or NULL when
- * it was absent). An oversized count is refused before any allocation. */
+/* Points *out at an array written by put_array, where it lies in the
+ * file (NULL when it was absent). Its padding must be zeros and its
+ * count must fit in the bytes left: nothing is allocated. */
 static void get_array(struct reader *r, void *out, uint64_t count,
                       size_t size)
 {
@@ -357,17 +486,19 @@ static void get_array(struct reader *r, void *out, uint64_t count,
     *array = NULL;
     if (get_u8(r) == 0 || r->why != NULL)
         return;
-    if (count > r->left / size) {
+    unsigned char pad[ARRAY_ALIGN];
+    size_t n = (size_t)((ARRAY_ALIGN - r->at % ARRAY_ALIGN) % ARRAY_ALIGN);
+    static const unsigned char zeros[ARRAY_ALIGN] = {0};
+    if (get(r, pad, n) && memcmp(pad, zeros, n) != 0)
+        r->why = "damaged (an array's padding)";
+    if (r->why != NULL)
+        return;
+    if (count > (r->end - r->at) / size) {
         r->why = "truncated or damaged (a length runs past its end)";
         return;
     }
-    size_t bytes = (size_t)count * size;
-    *array = malloc(bytes ? bytes : 1);
-    if (*array == NULL) {
-        r->why = "too large to read (out of memory)";
-        return;
-    }
-    get(r, *array, bytes);
+    *array = (void *)(r->base + r->at);
+    r->at += count * size;
 }
 
 /* A count read from the file that must itself be plausible: at most the
@@ -375,7 +506,7 @@ static void get_array(struct reader *r, void *out, uint64_t count,
 static uint64_t get_count(struct reader *r)
 {
     uint64_t n = get_u64(r);
-    if (r->why == NULL && (n > r->left || n >= UINT32_MAX)) {
+    if (r->why == NULL && (n > r->end - r->at || n >= UINT32_MAX)) {
         r->why = "damaged (a count past its end)";
         return 0;
     }
@@ -441,15 +572,11 @@ static void get_param(struct reader *r, struct parameterization *p,
     size_t T = m->ntriangles;
     p->method = (enum param_method)get_u32(r);
     int same = (int)get_u8(r);
-    if (same && m->uv != NULL && r->why == NULL) {
-        p->uv = malloc(6 * T * sizeof *p->uv + 1);
-        if (p->uv == NULL)
-            r->why = "too large to read (out of memory)";
-        else
-            memcpy(p->uv, m->uv, 6 * T * sizeof *p->uv);
-    } else if (!same) {
+    /* The mesh's UV taken as it is: the same bytes, shared in place. */
+    if (same)
+        p->uv = m->uv;
+    else
         get_array(r, &p->uv, 6 * (uint64_t)T, sizeof *p->uv);
-    }
     p->report.triangles = (size_t)get_u64(r);
     p->report.degenerate = (size_t)get_u64(r);
     p->report.flipped = (size_t)get_u64(r);
@@ -537,10 +664,20 @@ static const char *check_surface(const struct surface *s)
         !all_finite(s->param.uv, 6 * T) ||
         (m->uv != NULL && !all_finite(m->uv, 6 * T)))
         return "damaged (a coordinate is not a number)";
+    /* A NaN or infinite curvature would classify a panel as no surface
+     * bends: refused as a coordinate is. */
+    const struct curvature *c = &s->curvature;
+    if (!all_finite(c->k1, V) || !all_finite(c->k2, V) ||
+        !all_finite(c->dir1, 3 * V) || !all_finite(c->dir2, 3 * V) ||
+        !all_finite(c->normal, 3 * V) ||
+        !all_finite(c->surface_normal, 3 * V) ||
+        !all_finite(c->k1_error, V) || !all_finite(c->k2_error, V))
+        return "damaged (a curvature is not a number)";
     return NULL;
 }
 
-/* One surface's fields as read, before they become the project's. */
+/* One surface's fields as read, before they become the project's; only
+ * the name is allocated, the arrays lie in the file's bytes. */
 struct read_surface {
     char *name;
     uint32_t key, file;
@@ -549,14 +686,6 @@ struct read_surface {
     struct parameterization param;
     struct curvature curvature;
 };
-
-static void read_surface_free(struct read_surface *s)
-{
-    free(s->name);
-    mesh_free(&s->mesh);
-    param_free(&s->param);
-    curvature_free(&s->curvature);
-}
 
 static void get_surface(struct reader *r, struct read_surface *s,
                         size_t npaths)
@@ -592,7 +721,7 @@ static void get_surface(struct reader *r, struct read_surface *s,
 
 /* Makes out the project of the surfaces read, as project_open makes it:
  * the same paths, names, labels, checks and warnings, the same sums in
- * the same order. Takes the surfaces' arrays over. */
+ * the same order. Takes the surfaces' names and structs over. */
 static int build(struct read_surface *read, size_t n,
                  const char *const *paths, size_t npaths,
                  enum mesh_units units, struct project *out,
@@ -641,83 +770,183 @@ static int refuse(const char *name, const char *why,
                            why);
 }
 
-/* Reads file (size bytes) named name: with want_key, refused unless its
+/* Whether p lies in the bytes [base, base + size). */
+static int inside(const void *p, const unsigned char *base, size_t size)
+{
+    const unsigned char *c = p;
+    return c != NULL && c >= base && c < base + size;
+}
+
+/* Forgets, in surface s, every array that lies in the bytes [base, base +
+ * size): they are the file's, not the surface's to free. */
+static void detach(struct surface *s, const unsigned char *base,
+                   size_t size)
+{
+    struct mesh *m = &s->mesh;
+    if (inside(m->position, base, size)) m->position = NULL;
+    if (inside(m->source_vertex, base, size)) m->source_vertex = NULL;
+    if (inside(m->triangle, base, size)) m->triangle = NULL;
+    if (inside(m->source_face, base, size)) m->source_face = NULL;
+    if (inside(m->face_normal, base, size)) m->face_normal = NULL;
+    if (inside(m->face_area, base, size)) m->face_area = NULL;
+    if (inside(m->uv, base, size)) m->uv = NULL;
+    if (inside(m->corner_normal, base, size)) m->corner_normal = NULL;
+    if (inside(m->neighbour, base, size)) m->neighbour = NULL;
+    if (inside(m->vertex_start, base, size)) m->vertex_start = NULL;
+    if (inside(m->vertex_triangles, base, size)) m->vertex_triangles = NULL;
+    if (inside(m->on_boundary, base, size)) m->on_boundary = NULL;
+    if (inside(m->loop_start, base, size)) m->loop_start = NULL;
+    if (inside(m->loop_vertices, base, size)) m->loop_vertices = NULL;
+    if (inside(m->component, base, size)) m->component = NULL;
+    if (inside(s->param.uv, base, size)) s->param.uv = NULL;
+    struct curvature *c = &s->curvature;
+    if (inside(c->k1, base, size)) c->k1 = NULL;
+    if (inside(c->k2, base, size)) c->k2 = NULL;
+    if (inside(c->dir1, base, size)) c->dir1 = NULL;
+    if (inside(c->dir2, base, size)) c->dir2 = NULL;
+    if (inside(c->normal, base, size)) c->normal = NULL;
+    if (inside(c->surface_normal, base, size)) c->surface_normal = NULL;
+    if (inside(c->k1_error, base, size)) c->k1_error = NULL;
+    if (inside(c->k2_error, base, size)) c->k2_error = NULL;
+}
+
+void project_cache_release(struct project *project)
+{
+    if (project->cache_bytes == NULL)
+        return;
+    for (size_t i = 0; i < project->nsurfaces; i++)
+        detach(&project->surfaces[i].surface, project->cache_bytes,
+               project->cache_size);
+    munmap(project->cache_bytes, project->cache_size);
+    project->cache_bytes = NULL;
+    project->cache_size = 0;
+}
+
+/* The payload's SHA-256 against the header's, asking stop between
+ * chunks of a few milliseconds: FACET_OK (*why set when it does not
+ * match) or FACET_ESTOP. */
+static int check_sum(const unsigned char *payload, uint64_t size,
+                     const unsigned char expected[64],
+                     const struct facet_stop *stop, const char **why,
+                     struct facet_error *err)
+{
+    struct sha256 h;
+    sha256_init(&h);
+    for (uint64_t at = 0; at < size; at += CHECK_CHUNK) {
+        int rc = facet_stop_check(stop, err);
+        if (rc != FACET_OK)
+            return rc;
+        uint64_t n = size - at < CHECK_CHUNK ? size - at : CHECK_CHUNK;
+        sha256_update(&h, payload + at, (size_t)n);
+    }
+    char checksum[65];
+    sha256_hex(&h, checksum);
+    if (memcmp(checksum, expected, 64) != 0)
+        *why = "damaged (its checksum does not match)";
+    return FACET_OK;
+}
+
+/* Reads the file's bytes (size of them, mapped; out takes them over, or
+ * they are unmapped here) named name: with want_key, refused unless its
  * key is that; without, its key is copied into found_key. */
-static int read_stream(FILE *file, unsigned long long size, const char *name,
-                       const char *want_key, char found_key[65],
-                       const char *const *paths, size_t npaths,
-                       enum mesh_units units, struct project *out,
-                       struct facet_error *err)
+static int read_bytes(unsigned char *bytes, size_t size, const char *name,
+                      const char *want_key, char found_key[65],
+                      const char *const *paths, size_t npaths,
+                      enum mesh_units units, const struct facet_stop *stop,
+                      struct project *out, struct facet_error *err)
 {
     memset(out, 0, sizeof *out);
-    unsigned char header[PROJECT_CACHE_HEADER];
-    if (size < sizeof header ||
-        fread(header, 1, sizeof header, file) != sizeof header)
-        return refuse(name, "truncated (shorter than its header)", err);
-    if (memcmp(header, MAGIC, 8) != 0)
-        return refuse(name, "not a prepared building's cache", err);
-    uint32_t version, order;
-    uint64_t payload;
-    memcpy(&version, header + 8, 4);
-    memcpy(&order, header + 12, 4);
-    memcpy(&payload, header + 16, 8);
-    if (order != BYTE_ORDER_MARK)
-        return refuse(name, "written on a machine of another byte order",
-                      err);
-    if (version != PROJECT_CACHE_VERSION) {
-        char why[128];
-        snprintf(why, sizeof why, "format version %u, this Facet reads %d",
-                 (unsigned)version, PROJECT_CACHE_VERSION);
-        return refuse(name, why, err);
+    /* Owned by out from here: project_close releases them, whatever
+     * follows. */
+    out->cache_bytes = bytes;
+    out->cache_size = size;
+    const unsigned char *header = bytes;
+    int rc = FACET_OK;
+    const char *why = NULL;
+    char version_why[128];
+    uint32_t version = 0, order = 0;
+    uint64_t payload = 0;
+    if (size < PROJECT_CACHE_HEADER) {
+        why = "truncated (shorter than its header)";
+    } else {
+        memcpy(&version, header + 8, 4);
+        memcpy(&order, header + 12, 4);
+        memcpy(&payload, header + 16, 8);
     }
-    if (want_key != NULL && memcmp(header + 24, want_key, 64) != 0)
-        return refuse(name, PROJECT_CACHE_STALE, err);
-    if (want_key == NULL) {
+    if (why == NULL && memcmp(header, MAGIC, 8) != 0)
+        why = "not a prepared building's cache";
+    else if (why == NULL && order != BYTE_ORDER_MARK)
+        why = "written on a machine of another byte order";
+    else if (why == NULL && version != PROJECT_CACHE_VERSION) {
+        snprintf(version_why, sizeof version_why,
+                 "format version %u, this Facet reads %d", (unsigned)version,
+                 PROJECT_CACHE_VERSION);
+        why = version_why;
+    } else if (why == NULL && want_key != NULL &&
+               memcmp(header + 24, want_key, 64) != 0)
+        why = PROJECT_CACHE_STALE;
+    if (why == NULL && want_key == NULL) {
         memcpy(found_key, header + 24, 64);
         found_key[64] = '\0';
     }
-    if (payload != size - sizeof header)
-        return refuse(name, payload > size - sizeof header
-                      ? "truncated (shorter than its header says)"
-                      : "damaged (longer than its header says)", err);
+    if (why == NULL && payload != size - PROJECT_CACHE_HEADER)
+        why = payload > size - PROJECT_CACHE_HEADER
+            ? "truncated (shorter than its header says)"
+            : "damaged (longer than its header says)";
+    /* The checksum before anything is parsed: a damaged file is told as
+     * damaged, and what is parsed is what was written (or forged). */
+    if (why == NULL)
+        rc = check_sum(bytes + PROJECT_CACHE_HEADER, payload, header + 88,
+                       stop, &why, err);
 
-    struct reader r = {file, payload, {{0}, 0, {0}, 0}, NULL};
-    sha256_init(&r.hash);
-    uint64_t n = get_count(&r);
-    /* A surface takes far more than 64 bytes: a count beyond that is not
-     * allocated for. */
-    if (r.why == NULL && (n == 0 || n > r.left / 64))
-        r.why = "damaged (its count of surfaces)";
-    struct read_surface *read =
-        r.why == NULL ? calloc((size_t)n, sizeof *read) : NULL;
-    if (r.why == NULL && read == NULL)
-        r.why = "too large to read (out of memory)";
+    struct reader r = {bytes, PROJECT_CACHE_HEADER,
+                       PROJECT_CACHE_HEADER + payload, why};
+    struct read_surface *read = NULL;
     size_t got = 0;
-    for (; r.why == NULL && got < n; got++)
-        get_surface(&r, &read[got], npaths);
-    if (r.why == NULL && r.left != 0)
-        r.why = "damaged (bytes past its end)";
-    if (r.why == NULL) {
-        char checksum[65];
-        sha256_hex(&r.hash, checksum);
-        if (memcmp(checksum, header + 88, 64) != 0)
-            r.why = "damaged (its checksum does not match)";
+    if (rc == FACET_OK && r.why == NULL) {
+        uint64_t n = get_count(&r);
+        /* A surface takes far more than 64 bytes: a count beyond that is
+         * not allocated for. */
+        if (r.why == NULL && (n == 0 || n > (r.end - r.at) / 64))
+            r.why = "damaged (its count of surfaces)";
+        read = r.why == NULL ? calloc((size_t)n, sizeof *read) : NULL;
+        if (r.why == NULL && read == NULL)
+            r.why = "too large to read (out of memory)";
+        for (; r.why == NULL && got < n; got++)
+            get_surface(&r, &read[got], npaths);
+        if (r.why == NULL && r.at != r.end)
+            r.why = "damaged (bytes past its end)";
+        for (size_t i = 0; r.why == NULL && i < got; i++) {
+            if ((rc = facet_stop_check(stop, err)) != FACET_OK)
+                break;
+            struct surface probe;
+            memset(&probe, 0, sizeof probe);
+            probe.mesh = read[i].mesh;
+            probe.param = read[i].param;
+            probe.curvature = read[i].curvature;
+            r.why = check_surface(&probe);
+        }
     }
-    for (size_t i = 0; r.why == NULL && i < got; i++) {
-        struct surface probe;
-        memset(&probe, 0, sizeof probe);
-        probe.mesh = read[i].mesh;
-        probe.param = read[i].param;
-        r.why = check_surface(&probe);
-    }
-    int rc = r.why != NULL ? refuse(name, r.why, err)
+    if (rc == FACET_OK) {
+        rc = r.why != NULL ? refuse(name, r.why, err)
                            : build(read, got, paths, npaths, units, out, err);
-    if (rc == FACET_EINPUT && r.why == NULL)  /* no mesh its files give */
-        rc = refuse(name, "damaged (a surface refused as a mesh)", err);
+        if (rc == FACET_EINPUT && r.why == NULL)  /* no mesh its files give */
+            rc = refuse(name, "damaged (a surface refused as a mesh)", err);
+    }
     for (size_t i = 0; read != NULL && i < got; i++)
-        read_surface_free(&read[i]);
+        free(read[i].name);  /* the arrays are the file's */
     free(read);
+    if (rc != FACET_OK)
+        project_close(out);
     return rc;
+}
+
+/* size bytes of memory for a cache, which project_cache_release unmaps. */
+static unsigned char *map_anonymous(size_t size)
+{
+    void *p = mmap(NULL, size ? size : 1, PROT_READ | PROT_WRITE,
+                   MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+    return p == MAP_FAILED ? NULL : p;
 }
 
 int project_cache_read_file(FILE *file, unsigned long long size,
@@ -726,30 +955,54 @@ int project_cache_read_file(FILE *file, unsigned long long size,
                             enum mesh_units units, struct project *out,
                             struct facet_error *err)
 {
-    return read_stream(file, size, name, key, NULL, paths, npaths, units,
-                       out, err);
+    memset(out, 0, sizeof *out);
+    if (size > SIZE_MAX / 2)
+        return refuse(name, "too large to read (out of memory)", err);
+    unsigned char *bytes = map_anonymous((size_t)size);
+    if (bytes == NULL)
+        return refuse(name, "too large to read (out of memory)", err);
+    if (fread(bytes, 1, (size_t)size, file) != (size_t)size) {
+        munmap(bytes, size ? (size_t)size : 1);
+        return refuse(name, "truncated (shorter than its header says)", err);
+    }
+    return read_bytes(bytes, size ? (size_t)size : 1, name, key, NULL, paths,
+                      npaths, units, NULL, out, err);
 }
 
 static int read_path(const char *path, const char *want_key,
                      char found_key[65], const char *const *paths,
                      size_t npaths, enum mesh_units units,
-                     struct project *out, struct facet_error *err)
+                     const struct facet_stop *stop, struct project *out,
+                     struct facet_error *err)
 {
     memset(out, 0, sizeof *out);
-    FILE *file = fopen(path, "rb");
-    if (file == NULL)
+    int fd = open(path, O_RDONLY | O_CLOEXEC);
+    if (fd < 0)
         return refuse(path, errno == ENOENT ? "none yet" : strerror(errno),
                       err);
     struct stat st;
-    int rc;
-    if (fstat(fileno(file), &st) != 0 || !S_ISREG(st.st_mode))
-        rc = refuse(path, "not a regular file", err);
-    else
-        rc = read_stream(file, (unsigned long long)st.st_size, path,
-                         want_key, found_key, paths, npaths, units, out,
-                         err);
-    fclose(file);
-    return rc;
+    if (fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
+        close(fd);
+        return refuse(path, "not a regular file", err);
+    }
+    if ((unsigned long long)st.st_size < PROJECT_CACHE_HEADER) {
+        close(fd);
+        return refuse(path, "truncated (shorter than its header)", err);
+    }
+    /* Mapped, not read: the arrays are used where they lie, so that the
+     * skin's 400 MB are neither copied nor faulted into fresh memory a
+     * page at a time. Private and writable: a stage that wrote into an
+     * array would write into its own copy of the page, never the file. */
+    size_t size = (size_t)st.st_size;
+    void *bytes = mmap(NULL, size, PROT_READ | PROT_WRITE, MAP_PRIVATE, fd,
+                       0);
+    int saved = errno;
+    close(fd);
+    if (bytes == MAP_FAILED)
+        return refuse(path, strerror(saved), err);
+    madvise(bytes, size, MADV_WILLNEED);
+    return read_bytes(bytes, size, path, want_key, found_key, paths, npaths,
+                      units, stop, out, err);
 }
 
 int project_cache_read(const char *path, const char key[65],
@@ -757,15 +1010,16 @@ int project_cache_read(const char *path, const char key[65],
                        enum mesh_units units, struct project *out,
                        struct facet_error *err)
 {
-    return read_path(path, key, NULL, paths, npaths, units, out, err);
+    return read_path(path, key, NULL, paths, npaths, units, NULL, out, err);
 }
 
 int project_cache_read_unkeyed(const char *path, char key[65],
                                const char *const *paths, size_t npaths,
-                               enum mesh_units units, struct project *out,
-                               struct facet_error *err)
+                               enum mesh_units units,
+                               const struct facet_stop *stop,
+                               struct project *out, struct facet_error *err)
 {
-    return read_path(path, NULL, key, paths, npaths, units, out, err);
+    return read_path(path, NULL, key, paths, npaths, units, stop, out, err);
 }
 
 int project_cache_stale(const char *path, struct facet_error *err)

@@ -26,26 +26,38 @@
  *     nsurfaces            uint64
  *     per surface          its name, key, file, first face, mesh,
  *                          parameterization and curvature, every array
- *                          preceded by a presence byte (project_cache.c)
+ *                          preceded by a presence byte, then zeros to
+ *                          the next multiple of 8 bytes from the file's
+ *                          start (project_cache.c)
  *
- * Reading checks, in order, before anything read is used: the file's size
- * against the header's, the magic, the version and byte order, the key
- * (the files' SHA-256s, the settings that shape a preparation and the code
- * that made it: anything else is stale or foreign), every length against
- * the bytes left in the file before it is allocated, the checksum over the
- * whole payload, then every index (triangle corners, neighbours, the
- * triangles round a vertex, the loops, the components, the surface's
- * file) against what it indexes and every coordinate and UV for being
- * finite. A damaged, truncated, stale or foreign file is refused with one
- * line saying which; never a crash, never a wrong building.
+ * Reading maps the file and uses its arrays where they lie (aligned by
+ * that padding): the skin's 400 MB are neither copied nor faulted into
+ * fresh memory, which took most of a second run's start (version 1 read
+ * them into buffers). It checks, in order, before anything read is used:
+ * the file's size against the header's, the magic, the version and byte
+ * order, the key (the files' SHA-256s, the settings that shape a
+ * preparation and the code that made it: anything else is stale or
+ * foreign), the checksum over the whole payload (the stop asked every
+ * few milliseconds of it), every length against the bytes left in the
+ * file, then every index (triangle corners, neighbours, the triangles
+ * round a vertex, the loops, the components, the surface's file) against
+ * what it indexes and every coordinate, UV and curvature (curvature.h
+ * promises every value finite) for being finite. A damaged, truncated,
+ * stale or foreign file is refused with one line saying which; never a
+ * wrong building. The mapping is private: a stage that wrote into an
+ * array would change its own copy, never the file. Facet never changes
+ * a cache in place (it renames a new one over it, and the mapped one
+ * lives on until unmapped); a cache cut short by another program while a
+ * run has it mapped would end that run with SIGBUS.
  *
  * Writing goes to a temporary file beside the cache, renamed over it when
  * whole: a reader sees the old cache or the new one, never half of one.
  * No fsync: a file cut short by a crash fails its checksum and is rebuilt.
  *
  * Ownership: project_cache_read fills a caller-owned struct project
- * (release with project_close, also after a failure); the writer only
- * reads the project.
+ * (release with project_close, also after a failure), which owns the
+ * mapping (struct project's cache_bytes); the writer only reads the
+ * project.
  */
 #ifndef FACET_PROJECT_CACHE_H
 #define FACET_PROJECT_CACHE_H
@@ -56,7 +68,7 @@
 #include "core/base/error.h"
 #include "core/project/project.h"
 
-#define PROJECT_CACHE_VERSION 1
+#define PROJECT_CACHE_VERSION 2
 #define PROJECT_CACHE_HEADER 152  /* bytes */
 
 /* What shapes a preparation besides the files' bytes. */
@@ -79,17 +91,34 @@ void project_cache_key(const char (*digest)[65], size_t nfiles,
                        char key[65]);
 
 /* The cache's path beside the database db_path: in its folder,
- * "facet-prepared-" and 16 hex digits of the SHA-256 of the files' paths
- * (as given: make them absolute first) and the settings but the code,
- * into out (size bytes). One name per building and settings, so that a
- * building whose files change, or a Facet rebuilt, replaces its cache
- * instead of adding one, and every
- * database of the folder (a node's shards) shares it. FACET_EINPUT when
- * it does not fit. */
+ * "facet-prepared-" and 16 hex digits, the first 8 of the SHA-256 of the
+ * files' paths (as given: make them absolute first), the last 8 of the
+ * SHA-256 of the paths and the settings but the code, into out (size
+ * bytes). One name per building and settings, so that a building whose
+ * files change, or a Facet rebuilt, replaces its cache instead of adding
+ * one, and every database of the folder (a node's shards) shares it; the
+ * caches of one building's other settings share its first half
+ * (project_cache_prune). FACET_EINPUT when it does not fit. */
 int project_cache_path(const char *db_path, const char *const *paths,
                        size_t npaths,
                        const struct project_cache_settings *settings,
                        char *out, size_t size, struct facet_error *err);
+
+/* How many caches of one building's files (of different settings, or
+ * of another format version) project_cache_prune keeps beside each other,
+ * the one just written among them: a building studied in metres and
+ * millimetres, or with its normals both ways, keeps both without
+ * preparing either again, and no more pile up. */
+#define PROJECT_CACHE_KEEP 3
+
+/* Removes, beside the cache at path (just written), the caches of the
+ * same building's files (the same first half of the name) but the keep
+ * - 1 most recently written, keep >= 1. Only what Facet wrote: a regular
+ * file named as a cache is (not a symbolic link, never followed) that
+ * begins with a cache's magic; anything else is left alone. FACET_OK;
+ * FACET_EWORK when the folder cannot be listed (the caller goes on: a
+ * cache left is only disk). */
+int project_cache_prune(const char *path, int keep, struct facet_error *err);
 
 /* Writes project (prepared, read from files whose key is key) to path,
  * through a temporary file renamed over it. FACET_EWORK naming the file
@@ -113,11 +142,19 @@ int project_cache_read(const char *path, const char key[65],
 /* project_cache_read without the key: every other check made, the key
  * the file holds copied into key, for a caller that hashes the files
  * while the cache is read and compares the keys after (a file of another
- * key must then be closed unused: project_cache_stale says so). */
+ * key must then be closed unused: project_cache_stale says so). stop
+ * (stop.h) is asked every few milliseconds of checking: FACET_ESTOP when
+ * it fires, *out released. */
 int project_cache_read_unkeyed(const char *path, char key[65],
                                const char *const *paths, size_t npaths,
-                               enum mesh_units units, struct project *out,
-                               struct facet_error *err);
+                               enum mesh_units units,
+                               const struct facet_stop *stop,
+                               struct project *out, struct facet_error *err);
+
+/* Forgets the arrays of project's surfaces that lie in the cache it was
+ * read from and unmaps it; nothing when it was not read from one.
+ * project_close calls it first. */
+void project_cache_release(struct project *project);
 
 /* The FACET_EINPUT project_cache_read gives a cache of another key. */
 int project_cache_stale(const char *path, struct facet_error *err);

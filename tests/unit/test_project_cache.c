@@ -16,6 +16,7 @@
 #include <stdint.h>
 #include <cmocka.h>
 
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -422,6 +423,77 @@ static void test_another_key_is_stale(void **state)
     refused(cache, stale, obj, "stale");
 }
 
+/* A cache whose checksum holds but whose curvature is not a number (a
+ * file made by hand, or by a Facet that computed one): refused, for every
+ * curvature array, since a NaN curvature classifies a panel as no truth
+ * would. The project is prepared, one number spoiled, then written: the
+ * writer writes what it is given, with a right checksum. */
+static void test_curvature_not_a_number_is_refused(void **state)
+{
+    (void)state;
+    char obj[128], cache[128];
+    snprintf(obj, sizeof obj, "%s/sheets_nan.obj", dir);
+    snprintf(cache, sizeof cache, "%s/nan.cache", dir);
+    write_sheets(obj, 4, -1);
+    struct project_cache_settings s = {UNITS_M, 0, PARAM_AUTO, "test"};
+    char key[65];
+    key_of(obj, &s, key);
+    for (int which = 0; which < 8; which++)
+        for (int inf = 0; inf < 2; inf++) {
+            struct project a;
+            fresh(obj, UNITS_M, 0, PARAM_AUTO, &a);
+            struct curvature *c = &a.surfaces[1].surface.curvature;
+            double *arrays[8] = {c->k1, c->k2, c->dir1, c->dir2, c->normal,
+                                 c->surface_normal, c->k1_error,
+                                 c->k2_error};
+            arrays[which][c->nvertices / 2] = inf ? -INFINITY : NAN;
+            struct facet_error err;
+            assert_int_equal(project_cache_write(&a, key, cache, &err),
+                             FACET_OK);
+            project_close(&a);
+            refused(cache, key, obj, "not a number");
+        }
+}
+
+/* The reader asks its stop: one that fires gives FACET_ESTOP and
+ * nothing read, one that does not the building. */
+static int always(void *context)
+{
+    (void)context;
+    return 1;
+}
+
+static void test_reader_asks_its_stop(void **state)
+{
+    (void)state;
+    char obj[128], cache[128];
+    snprintf(obj, sizeof obj, "%s/sheets_stop.obj", dir);
+    snprintf(cache, sizeof cache, "%s/stop.cache", dir);
+    write_sheets(obj, 4, -1);
+    struct project a;
+    fresh(obj, UNITS_M, 0, PARAM_AUTO, &a);
+    struct facet_error err;
+    const char key[65] = "0123456789abcdef0123456789abcdef"
+                         "0123456789abcdef0123456789abcdef";
+    assert_int_equal(project_cache_write(&a, key, cache, &err), FACET_OK);
+    project_close(&a);
+    struct facet_stop stop = {always, NULL};
+    char found[65];
+    const char *paths[1] = {obj};
+    assert_int_equal(project_cache_read_unkeyed(cache, found, paths, 1,
+                                                UNITS_M, &stop, &a, &err),
+                     FACET_ESTOP);
+    assert_int_equal(a.nsurfaces, 0);
+    assert_null(a.cache_bytes);
+    project_close(&a);
+    assert_int_equal(project_cache_read_unkeyed(cache, found, paths, 1,
+                                                UNITS_M, NULL, &a, &err),
+                     FACET_OK);
+    assert_string_equal(found, key);
+    assert_int_equal(a.nsurfaces, 2);
+    project_close(&a);
+}
+
 /* ---- the study's decision ---- */
 
 struct notes {
@@ -442,6 +514,79 @@ static void on_note(void *context, const char *text)
         n->not_kept++;
     else
         fail_msg("an unexpected note: %s", text);
+}
+
+/* A stop asked once the study says it reads the prepared building: the
+ * read hears it (FACET_ESTOP), for a resume, whose files' hashes are
+ * known and so not read beside the cache (where their reading would hear
+ * the stop and hide that the cache's did not), and for a first read. */
+struct stop_when_reading {
+    int reading, asked;
+};
+
+static void on_stage(void *context, const char *what)
+{
+    struct stop_when_reading *s = context;
+    if (strstr(what, "reading the prepared building") != NULL)
+        s->reading = 1;
+}
+
+static int stop_if_reading(void *context)
+{
+    struct stop_when_reading *s = context;
+    if (s->reading)
+        s->asked++;
+    return s->reading;
+}
+
+static void test_stop_while_reading_the_cache(void **state)
+{
+    (void)state;
+    char sub[128], obj[160], db[160];
+    snprintf(sub, sizeof sub, "%s/stop", dir);
+    assert_int_equal(mkdir(sub, 0700), 0);
+    snprintf(obj, sizeof obj, "%s/sheets.obj", sub);
+    snprintf(db, sizeof db, "%s/runs.db", sub);
+    write_sheets(obj, 6, -1);
+    struct study_prepare want = {db, (const char *[]){obj}, 1, NULL,
+                                 UNITS_M, 1, 0, PARAM_AUTO};
+    struct project p;
+    char digest[1][65];
+    struct facet_error err;
+    /* The cache written by a first, unstopped, run. */
+    assert_int_equal(study_project_prepared(&want, NULL, &p, digest, &err),
+                     FACET_OK);
+    project_close(&p);
+    for (int known = 1; known >= 0; known--) {
+        struct stop_when_reading s = {0, 0};
+        struct study_hooks hooks = {&s, on_stage, NULL, stop_if_reading,
+                                    NULL, NULL, NULL};
+        want.known = known ? (const char (*)[65])digest : NULL;
+        int rc = study_project_prepared(&want, &hooks, &p, digest, &err);
+        size_t surfaces = p.nsurfaces;
+        project_close(&p);
+        assert_true(s.reading);
+        if (rc != FACET_ESTOP)
+            fail_msg("%s: a stop while the prepared building is read is "
+                     "not heard (rc %d)", known ? "a resume" : "a run", rc);
+        assert_non_null(strstr(err.message, "stop"));
+        /* Heard by the read itself, which then hands out nothing: not
+         * only by the preparation after it, once the whole cache had been
+         * read and checked (the skin's 400 MB: seconds). */
+        if (surfaces != 0)
+            fail_msg("%s: the stop was heard only after the whole cache "
+                     "was read (%zu surfaces)", known ? "a resume" : "a run",
+                     surfaces);
+    }
+    /* Unstopped, the cache is whole and reused. */
+    struct notes n;
+    memset(&n, 0, sizeof n);
+    struct study_hooks told = {&n, NULL, NULL, NULL, NULL, NULL, on_note};
+    want.known = NULL;
+    assert_int_equal(study_project_prepared(&want, &told, &p, digest, &err),
+                     FACET_OK);
+    project_close(&p);
+    assert_int_equal(n.reused, 1);
 }
 
 /* study_project_prepared of obj with db beside, its SHA-256 known as
@@ -495,6 +640,119 @@ static int caches(const char *db, char path[2][256])
     }
     pclose(ls);
     return n;
+}
+
+/* How many regular files in folder are named prefix and 8 more hex
+ * digits, or exist at all (links too) under that pattern: ls. */
+static int count_named(const char *folder, const char *pattern)
+{
+    char command[512];
+    snprintf(command, sizeof command, "ls -A %s | grep -cE '^%s$'", folder,
+             pattern);
+    FILE *ls = popen(command, "r");
+    assert_non_null(ls);
+    int n = -1;
+    assert_int_equal(fscanf(ls, "%d", &n), 1);
+    pclose(ls);
+    return n;
+}
+
+/* A building studied under five settings in turn: its caches beside the
+ * database are at most PROJECT_CACHE_KEEP, the newest kept (each run's
+ * own reused by the next run of its settings); another building's cache,
+ * a file named as a cache without the magic and a symbolic link named as
+ * one (to a real cache elsewhere) are left alone. Truth: the folder as ls
+ * lists it. */
+static void test_old_caches_do_not_pile_up(void **state)
+{
+    (void)state;
+    char sub[128], other[128], obj[192], two[192], db[192];
+    snprintf(sub, sizeof sub, "%s/prune", dir);
+    snprintf(other, sizeof other, "%s/prune_elsewhere", dir);
+    assert_int_equal(mkdir(sub, 0700), 0);
+    assert_int_equal(mkdir(other, 0700), 0);
+    snprintf(obj, sizeof obj, "%s/sheets.obj", sub);
+    snprintf(two, sizeof two, "%s/other.obj", sub);
+    snprintf(db, sizeof db, "%s/runs.db", sub);
+    write_sheets(obj, 3, -1);
+    write_sheets(two, 3, 5);
+    struct project p;
+    char digest[1][65];
+    struct facet_error err;
+    /* Another building's cache, beside. */
+    struct study_prepare another = {db, (const char *[]){two}, 1, NULL,
+                                    UNITS_M, 1, 0, PARAM_AUTO};
+    assert_int_equal(study_project_prepared(&another, NULL, &p, digest,
+                                            &err), FACET_OK);
+    project_close(&p);
+    char path[2][256];
+    assert_int_equal(caches(db, path), 1);
+    char another_cache[256];
+    snprintf(another_cache, sizeof another_cache, "%s", path[0]);
+
+    struct { enum mesh_units units; int flip; enum param_method uv; }
+        settings[] = {{UNITS_M, 0, PARAM_AUTO}, {UNITS_MM, 0, PARAM_AUTO},
+                      {UNITS_M, 1, PARAM_AUTO}, {UNITS_CM, 0, PARAM_AUTO},
+                      {UNITS_M, 1, PARAM_PLANE}};
+    char first[256] = "", prefix[64] = "";
+    for (size_t k = 0; k < sizeof settings / sizeof settings[0]; k++) {
+        struct study_prepare want = {db, (const char *[]){obj}, 1, NULL,
+                                     settings[k].units, 1, settings[k].flip,
+                                     settings[k].uv};
+        assert_int_equal(study_project_prepared(&want, NULL, &p, digest,
+                                                &err), FACET_OK);
+        project_close(&p);
+        char here[256];
+        const char *names[1] = {obj};
+        char absolute[4096];
+        assert_non_null(realpath(obj, absolute));
+        names[0] = absolute;
+        struct project_cache_settings s = {settings[k].units,
+                                           settings[k].flip,
+                                           settings[k].uv, NULL};
+        assert_int_equal(project_cache_path(db, names, 1, &s, here,
+                                            sizeof here, &err), FACET_OK);
+        struct stat st;
+        assert_int_equal(lstat(here, &st), 0);
+        if (k == 0) {
+            snprintf(first, sizeof first, "%s", here);
+            const char *base = strrchr(here, '/') + 1;
+            snprintf(prefix, sizeof prefix, "%.23s", base);
+            /* A file named as a cache of this building, not one; and a
+             * link named as one, to a real cache elsewhere. */
+            char fake[300], link[300], target[300];
+            snprintf(fake, sizeof fake, "%s/%sffffffff", sub, prefix);
+            FILE *out = fopen(fake, "w");
+            assert_non_null(out);
+            fputs("not a cache, but named as one\n", out);
+            fclose(out);
+            snprintf(target, sizeof target, "%s/%seeeeeeee", other, prefix);
+            damaged_copy(here, target, -1, -1);
+            snprintf(link, sizeof link, "%s/%seeeeeeee", sub, prefix);
+            assert_int_equal(symlink(target, link), 0);
+        }
+        char pattern[128];
+        snprintf(pattern, sizeof pattern, "%s[0-9a-f]{8}", prefix);
+        int n = count_named(sub, pattern);
+        /* Its own caches at most KEEP, and the fake and the link. */
+        int expect = (int)k + 1 < PROJECT_CACHE_KEEP ? (int)k + 1
+                                                     : PROJECT_CACHE_KEEP;
+        if (n != expect + 2)
+            fail_msg("after %zu settings: %d files named as this "
+                     "building's caches, not %d (%d caches, the fake and "
+                     "the link)", k + 1, n, expect + 2, expect);
+    }
+    /* The first settings' cache was the oldest: gone. The others stay. */
+    struct stat st;
+    assert_int_not_equal(lstat(first, &st), 0);
+    assert_int_equal(lstat(another_cache, &st), 0);
+    char kept[300];
+    snprintf(kept, sizeof kept, "%s/%sffffffff", sub, prefix);
+    assert_int_equal(lstat(kept, &st), 0);
+    snprintf(kept, sizeof kept, "%s/%seeeeeeee", sub, prefix);
+    assert_int_equal(lstat(kept, &st), 0);
+    assert_true(S_ISLNK(st.st_mode));
+    assert_int_equal(stat(kept, &st), 0);  /* its target too */
 }
 
 static void test_study_reuses_and_rebuilds(void **state)
@@ -635,10 +893,14 @@ int main(void)
         cmocka_unit_test(test_round_trip_is_the_same_to_the_bit),
         cmocka_unit_test(test_damage_and_truncation_are_refused),
         cmocka_unit_test(test_another_key_is_stale),
+        cmocka_unit_test(test_curvature_not_a_number_is_refused),
+        cmocka_unit_test(test_reader_asks_its_stop),
+        cmocka_unit_test(test_stop_while_reading_the_cache),
         cmocka_unit_test(test_study_reuses_and_rebuilds),
         cmocka_unit_test(test_resume_uses_known_digests),
         cmocka_unit_test(test_unwritable_cache_is_a_note),
         cmocka_unit_test(test_one_name_across_builds),
+        cmocka_unit_test(test_old_caches_do_not_pile_up),
     };
     return cmocka_run_group_tests(tests, make_dir, remove_dir);
 }
