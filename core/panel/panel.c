@@ -20,6 +20,7 @@
 #include <string.h>
 
 #include "core/panel/panel_internal.h"
+#include "core/base/extremes.h"
 #include "core/base/sym3.h"
 #include "core/base/quad.h"
 #include "core/base/vec3.h"
@@ -125,10 +126,10 @@ void panel_walk_triangle(const struct panel_grid *g, uint32_t t,
                          panel_piece_visitor visit, void *context)
 {
     const double *c = g->index->uv + 6 * (size_t)t;
-    double u0 = fmin(c[0], fmin(c[2], c[4]));
-    double u1 = fmax(c[0], fmax(c[2], c[4]));
-    double v0 = fmin(c[1], fmin(c[3], c[5]));
-    double v1 = fmax(c[1], fmax(c[3], c[5]));
+    double u0 = smaller(c[0], smaller(c[2], c[4]));
+    double u1 = larger(c[0], larger(c[2], c[4]));
+    double v0 = smaller(c[1], smaller(c[3], c[5]));
+    double v1 = larger(c[1], larger(c[3], c[5]));
     int i0 = panel_cell_coordinate(u0, g->umin, g->du, g->nu);
     int i1 = panel_cell_coordinate(u1, g->umin, g->du, g->nu);
     int j0 = panel_cell_coordinate(v0, g->vmin, g->dv, g->nv);
@@ -522,9 +523,9 @@ void panels_finish(enum panel_curvature_mode mode,
             double diameter = 0;
             for (int a = 0; a < 13; a++)
                 for (int b = 0; b < 13; b++) {
-                    diameter = fmax(diameter,
+                    diameter = larger(diameter,
                         vec3_distance(o->low_point[a], o->high_point[b]));
-                    diameter = fmax(diameter,
+                    diameter = larger(diameter,
                         vec3_distance(o->low_point[a], o->low_point[b]));
                 }
             panel->diameter = diameter;
@@ -589,10 +590,10 @@ int panels_curvature_range(const struct panel_grid *g,
     for (size_t t = 0; curvature->k1_error && curvature->k2_error &&
                        t < mesh->ntriangles; t++) {
         const double *uv = g->index->uv + 6 * t;
-        double u0 = fmin(uv[0], fmin(uv[2], uv[4]));
-        double u1 = fmax(uv[0], fmax(uv[2], uv[4]));
-        double v0 = fmin(uv[1], fmin(uv[3], uv[5]));
-        double v1 = fmax(uv[1], fmax(uv[3], uv[5]));
+        double u0 = smaller(uv[0], smaller(uv[2], uv[4]));
+        double u1 = larger(uv[0], larger(uv[2], uv[4]));
+        double v0 = smaller(uv[1], smaller(uv[3], uv[5]));
+        double v1 = larger(uv[1], larger(uv[3], uv[5]));
         if (!isfinite(u0 + u1 + v0 + v1))
             continue;
         const uint32_t *tri = mesh->triangle + 3 * t;
@@ -611,12 +612,12 @@ int panels_curvature_range(const struct panel_grid *g,
                     double k1 = curvature->k1[v], k2 = curvature->k2[v];
                     double e1 = c * curvature->k1_error[v];
                     double e2 = c * curvature->k2_error[v];
-                    o[0] = fmax(o[0], k1 - e1);
-                    o[1] = fmax(o[1], k1 + e1);
-                    o[2] = fmin(o[2], k2 - e2);
-                    o[3] = fmin(o[3], k2 + e2);
-                    o[4] = fmax(o[4], e1);
-                    o[5] = fmax(o[5], e2);
+                    o[0] = larger(o[0], k1 - e1);
+                    o[1] = larger(o[1], k1 + e1);
+                    o[2] = smaller(o[2], k2 - e2);
+                    o[3] = smaller(o[3], k2 + e2);
+                    o[4] = larger(o[4], e1);
+                    o[5] = larger(o[5], e2);
                 }
             }
     }

@@ -14,6 +14,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "core/base/extremes.h"
 #include "core/base/parallel.h"
 
 /* The number of lines at or below x. */
@@ -199,8 +200,8 @@ static int divide_triangle(struct divide_job *job, uint32_t t)
     for (int k = 0; k < 3; k++)
         for (int a = 0; a < 2; a++) {
             double x = prep->point_uv[2 * point[k] + a];
-            lo[a] = fmin(lo[a], x);
-            hi[a] = fmax(hi[a], x);
+            lo[a] = smaller(lo[a], x);
+            hi[a] = larger(hi[a], x);
         }
     int on;
     size_t c0 = line_rank(L->line[0], L->nline[0], lo[0], &on);
@@ -592,8 +593,8 @@ int panel_lattice_build_stoppable(const struct panel_prep *prep, int u_lo,
     double high[3] = {-INFINITY, -INFINITY, -INFINITY};
     for (size_t p = 0; p < prep->npoints; p++)
         for (int x = 0; x < 3; x++) {
-            low[x] = fmin(low[x], prep->point[p].position[x]);
-            high[x] = fmax(high[x], prep->point[p].position[x]);
+            low[x] = smaller(low[x], prep->point[p].position[x]);
+            high[x] = larger(high[x], prep->point[p].position[x]);
         }
     for (int x = 0; x < 3; x++)
         L->origin[x] = prep->npoints ? 0.5 * (low[x] + high[x]) : 0;
