@@ -22,6 +22,8 @@
 #   - the hinge with its faces 2 mm apart: no seam within 1 mm, one within
 #     3 mm whose gap is the design's 2 mm; the run keeps its tolerance;
 #   - a single surface: every seam column NULL, the run's weld NULL;
+#   - facet runs: the weld column and note, sqlite3's weld_mm, or "-" and
+#     "not a building" for a single surface;
 #   - a bad --weld: one line, status 2, no database;
 #   - show's seams line and options --csv's columns; export --csv's seams
 #     schedule, each ruling's row against its closed form;
@@ -218,6 +220,11 @@ expect "the same at --weld 3" 0 \
 same "the run keeps --weld 3 (mm)" "$(q apart3.db 'SELECT weld_mm FROM runs')" "3.0"
 run "$FACET" runs apart3.db --json
 json_check "facet runs --json: weld_mm 3" "[r['weld_mm'] for r in j] == [3]"
+weld=$(/usr/bin/python3 -c "import sys; print('%g' % float(sys.argv[1]))" "$(q apart3.db 'SELECT weld_mm FROM runs')")
+run "$FACET" runs apart3.db --wide
+stdout_has "facet runs: the weld column, sqlite3's weld_mm ($weld mm), before the start" \
+    "^ +1 done .* $weld 20[0-9-]+T"
+stdout_has "facet runs: the run's note says --weld $weld mm" "^run 1: .*, --weld $weld mm\$"
 same "one seam within 3 mm" "$(q apart3.db 'SELECT seams FROM options')" "1"
 near "its gap is the design's own 2 mm" apart3.db "SELECT seam_max_gap FROM options" 0.002 1e-9
 
@@ -229,6 +236,9 @@ same "its joints measured, every seam column NULL" \
 same "its run has no welding tolerance" "$(q floor.db 'SELECT quote(weld_mm) FROM runs')" "NULL"
 run "$FACET" runs floor.db --json
 json_check "facet runs --json: weld_mm null" "[r['weld_mm'] for r in j] == [None]"
+run "$FACET" runs floor.db --wide
+stdout_has "facet runs: a single surface's weld is -, never 0" "^ +1 done .* - 20[0-9-]+T"
+stdout_has "facet runs: ... its note says it is not a building" "^run 1: .*, no weld: not a building\$"
 
 # 7. Bad tolerances: one line, status 2, nothing created.
 expect_error "--weld -1 refused" '^facet: --weld: -1 is out of range' \
