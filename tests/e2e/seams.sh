@@ -26,7 +26,8 @@
 #     "not a building" for a single surface;
 #   - a bad --weld: one line, status 2, no database;
 #   - show's seams line and options --csv's columns; export --csv's seams
-#     schedule, each ruling's row against its closed form;
+#     schedule, each ruling's row against its closed form, and its totals
+#     CSV's seam columns against sqlite3's (empty for a single surface);
 #   - shards at one tolerance merged into a run that keeps it, shards of
 #     two refused.
 # layers: cli core store study
@@ -174,6 +175,29 @@ same "the seams schedule: one row a ruling, its gap (mm) and added kink (deg) th
 same "its panels are the panel schedule's ids: third0's 1 meets third1's 2, third2's 7 and third1's 3 its 4" \
     "$(/usr/bin/python3 -c "import csv,sys; print(' '.join(r['panel_a'] + '-' + r['panel_b'] for r in csv.DictReader(open(sys.argv[1]))))" uneven-seams.csv)" \
     "1-2 1-7 3-4"
+# The totals beside the schedule carry the seam quantities (issue 31),
+# named with the units they are stored in (m, rad), each the value
+# sqlite3 reads from the options row, to the bit.
+seam_totals() {
+    /usr/bin/python3 - "$1" "$2" <<'PY'
+import csv, sqlite3, sys
+t = list(csv.DictReader(open(sys.argv[1], newline="")))
+row = sqlite3.connect(sys.argv[2]).execute(
+    "SELECT seams, seam_length, seam_max_gap, seam_max_kink, seam_max_crease,"
+    " seam_gaps_over, seam_kinks_over FROM options WHERE run = 1 AND number = 1"
+).fetchone()
+names = ["seams", "seam_length_m", "seam_max_gap_m", "seam_max_kink_rad",
+         "seam_max_crease_rad", "seam_gaps_over", "seam_kinks_over"]
+if len(t) != 1 or any(n not in t[0] for n in names):
+    print("columns %s" % (list(t[0].keys()) if t else "none"))
+    sys.exit()
+got = [None if t[0][n] == "" else float(t[0][n]) for n in names]
+want = [None if v is None else float(v) for v in row]
+print("same" if got == want else "%s against %s" % (got, want))
+PY
+}
+same "the totals CSV's seam columns (seams .. seam_kinks_over, m and rad) are sqlite3's" \
+    "$(seam_totals uneven-totals.csv uneven.db)" same
 # The workbook's seams sheet, read with openpyxl into the CSV's columns,
 # against the same closed forms and panel ids.
 expect "facet export --xlsx of it" 0 \
@@ -236,6 +260,10 @@ same "its joints measured, every seam column NULL" \
 same "its run has no welding tolerance" "$(q floor.db 'SELECT quote(weld_mm) FROM runs')" "NULL"
 run "$FACET" runs floor.db --json
 json_check "facet runs --json: weld_mm null" "[r['weld_mm'] for r in j] == [None]"
+expect "export --csv of the floor alone" 0 \
+    "$FACET" export floor.db --run 1 --option 1 --csv floor.csv
+same "its totals CSV has the seam columns, empty (NULL), as sqlite3's" \
+    "$(seam_totals floor-totals.csv floor.db)" same
 run "$FACET" runs floor.db --wide
 stdout_has "facet runs: a single surface's weld is -, never 0" "^ +1 done .* - 20[0-9-]+T"
 stdout_has "facet runs: ... its note says it is not a building" "^run 1: .*, no weld: not a building\$"
