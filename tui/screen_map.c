@@ -184,13 +184,13 @@ static void set_bounds(struct map_screen *s)
  * the surface's): how many, and the largest gap, or kink added to the
  * crease, at them, in the quantity's own unit. Nothing for a single
  * surface, or a run that found none (an older Facet's). Then what the
- * seam marks on the map mean. Returns the next line. */
-static int draw_seams_line(const struct map_screen *s, int y, int x,
-                           int width, int kink)
+ * seam marks on the map mean. */
+static void draw_seams_line(const struct map_screen *s, int y, int x,
+                            int width, int kink)
 {
     const struct option_totals *b = &s->building.totals;
     if (!s->project || b->seams == TOTALS_UNKNOWN)
-        return y;
+        return;
     if (seam_map(s) != NULL) {
         double limit = joint_limit(s);
         char mark[2] = {map_seam_glyph(0), 0};
@@ -211,13 +211,12 @@ static int draw_seams_line(const struct map_screen *s, int y, int x,
     if (isnan(value)) {
         tui_putf(y, x, width, A_NORMAL, " building: %zu seams, no joint",
                  b->seams);
-        return y + 3;
+        return;
     }
     char text[48];
     tui_fmt_value(text, sizeof text, q, value);
     tui_putf(y, x, width, A_NORMAL, " building: %zu seams, %s%s %s",
              b->seams, kink ? "+" : "", text, q->unit);
-    return seam_map(s) != NULL ? y + 3 : y + 1;
 }
 
 static void draw_joint_legend(struct map_screen *s, int y, int x, int width)
@@ -273,7 +272,7 @@ static void draw_joint_legend(struct map_screen *s, int y, int x, int width)
              kink ? t->mean_kink_deg : t->mean_gap_mm, unit);
     tui_putf(y++, x, width, A_NORMAL, " SP misfits %zu (%s)", t->sp_misfits,
              s->run.sp_fit ? "built DP" : "kept SP: by class");
-    (void)draw_seams_line(s, y, x, width, kink);
+    draw_seams_line(s, y, x, width, kink);
 }
 
 static void draw_legend(struct map_screen *s, int y, int x, int width)
@@ -843,10 +842,15 @@ static int project_poll(struct map_screen *s, struct tui_app *app)
     if (rc == FACET_OK) {
         free(s->seam_joints);
         s->seam_joints = NULL;
-        s->seams_found = view->project.seams != NULL;
+        s->nseam_joints = 0;
+        /* none to draw where the option's joints were not measured: its
+         * panels were not built to place them on */
+        s->seams_found = view->project.seams != NULL &&
+                         s->building.totals.seams != TOTALS_UNKNOWN;
         struct facet_error seam_err;
         /* out of memory: the map without its seam joints, said */
-        if (project_option_seam_joints(&view->project, &s->building,
+        if (s->seams_found &&
+            project_option_seam_joints(&view->project, &s->building,
                                        &s->seam_joints, &s->nseam_joints,
                                        &seam_err) != FACET_OK) {
             s->seams_found = 0;
