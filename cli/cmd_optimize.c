@@ -446,13 +446,9 @@ static int optimize_parse(int argc, char **argv, struct optimize_command *c,
         request->override_names = (const char *const *)c->grids.name;
         request->overrides = c->grids.grid;
         request->noverrides = c->grids.n;
-        double mm;
         if (c->weld &&
-            (rc = numparse_number(c->weld, units_mm(SEAM_WELD_MIN),
-                                  units_mm(SEAM_WELD_MAX), "--weld", &mm, err)))
+            (rc = seam_weld_parse(c->weld, "--weld", &request->weld, err)))
             return rc;
-        if (c->weld)
-            request->weld = units_m_of_mm(mm);
     }
     if (!c->resume) {
         if ((rc = classify_flags_apply(&c->flags, &request->settings.base,

@@ -130,13 +130,30 @@ static void print_json(const struct run_info *runs,
     json_finish(&w);
 }
 
-/* How run types SP panels and the joint limits its options are held to,
- * in one line. */
+/* The welding tolerance a building's run found its seams at (mm), "-"
+ * where it has none: a single surface, or a building an older Facet ran
+ * (before schema v15), never 0. */
+static void weld_text(const struct run_info *r, char *out, size_t size)
+{
+    if (isfinite(r->weld_mm))
+        snprintf(out, size, "%g", r->weld_mm);
+    else
+        snprintf(out, size, "-");
+}
+
+/* How run types SP panels, the joint limits its options are held to and
+ * a building's welding tolerance, in one line. */
 static void run_built_note(const struct run_info *r, char *line,
                            size_t size)
 {
     char gap[48] = "no gap limit", kink[48] = "no kink limit";
-    char width[56] = "no width limit";
+    char width[56] = "no width limit", weld[64];
+    if (isfinite(r->weld_mm))
+        snprintf(weld, sizeof weld, "--weld %g mm", r->weld_mm);
+    else
+        snprintf(weld, sizeof weld, "%s",
+                 store_run_is_project(r) ? "no seams (an older Facet's run)"
+                                         : "no weld: not a building");
     if (isfinite(r->min_panel_width))
         snprintf(width, sizeof width, "--min-panel-width %g m",
                  r->min_panel_width);
@@ -144,10 +161,10 @@ static void run_built_note(const struct run_info *r, char *line,
         snprintf(gap, sizeof gap, "--max-gap %g mm", r->max_gap_mm);
     if (isfinite(r->max_kink_deg))
         snprintf(kink, sizeof kink, "--max-kink %g deg", r->max_kink_deg);
-    snprintf(line, size, "run %lld: --sp-fit %s (%s), %s, %s, %s",
+    snprintf(line, size, "run %lld: --sp-fit %s (%s), %s, %s, %s, %s",
              (long long)r->id, r->sp_fit ? "yes" : "no",
              r->sp_fit ? "SP misfits built DP" : "SP by class alone", gap,
-             kink, width);
+             kink, width, weld);
 }
 
 static void print_human(const struct run_info *runs,
@@ -163,16 +180,18 @@ static void print_human(const struct run_info *runs,
         {"best cost", "USD", 14, 0, 6, 0},
         {"HV", "", 8, 0, 2, 0},
         {"elapsed", "s", 9, 0, 2, 0},
+        {"weld", "mm", 6, 0, 2, 0},
         {"started", "UTC", 20, 1, 1, 0},
         {"name / surface", "", 14, 1, 0, 1},
     };
-    struct text_table t = {columns, 10, {0}, 0, 0};
+    struct text_table t = {columns, 11, {0}, 0, 0};
     text_table_fit(&t, text_table_width(stdout, wide));
     text_table_head(stdout, &t);
     for (size_t k = 0; k < n; k++) {
         const struct run_info *r = &runs[k];
         char id[24], options[24], pareto[24], elapsed[32];
-        char cost[64] = "-", hv[32] = "-", label[1200];
+        char cost[64] = "-", hv[32] = "-", label[1200], weld[32];
+        weld_text(r, weld, sizeof weld);
         snprintf(id, sizeof id, "%lld", (long long)r->id);
         snprintf(options, sizeof options, "%lld", (long long)r->options);
         snprintf(pareto, sizeof pareto, "%lld", (long long)r->pareto_options);
@@ -193,7 +212,7 @@ static void print_human(const struct run_info *runs,
         const char *cell[] = {id, status,
                               store_run_setting_text(r, RUN_SETTING_METHOD),
                               options, pareto,
-                              cost, hv, elapsed, r->started, label};
+                              cost, hv, elapsed, weld, r->started, label};
         text_table_row(stdout, &t, cell);
     }
     if (n == 0)

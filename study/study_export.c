@@ -336,29 +336,13 @@ static time_t run_started(const struct run_info *run)
     return timegm(&t);
 }
 
-/* The seam joints of building option p (project_seams_joints), its
- * surfaces' panels in order, into *joints (malloc'ed, free(); NULL when
- * none) and *n. */
+/* The seam joints of building option p (project_option_seam_joints). */
 static int option_seam_joints(const struct study_option *p,
                               struct building_seam_joint **joints, size_t *n,
                               struct facet_error *err)
 {
-    const struct project_option *b = p->building;
-    const struct project *project = &p->view->project;
-    *joints = NULL;
-    *n = 0;
-    if (project->seams == NULL)
-        return FACET_OK;
-    const struct panelization **panels =
-        malloc((b->nsurfaces ? b->nsurfaces : 1) * sizeof *panels);
-    if (panels == NULL)
-        return facet_error_set(err, FACET_EWORK, "out of memory");
-    for (size_t s = 0; s < b->nsurfaces; s++)
-        panels[s] = &b->surfaces[s].panels;
-    int rc = project_seams_joints(project, project->seams, panels, joints, n,
-                                  err);
-    free(panels);
-    return rc;
+    return project_option_seam_joints(&p->view->project, p->building,
+                                      joints, n, err);
 }
 
 /* The option p as a workbook (xlsx_schedule.h) into out, its SP

@@ -5,6 +5,7 @@
 
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 
 #include "core/base/units.h"
 #include "core/classify/classify.h"
@@ -144,8 +145,10 @@ int map_level(double value, const double bound[MAP_LEVELS])
 }
 
 /* The highest level of a panel in character (c, r)'s share (as
- * map_cell_value). */
-static int cell_level(const struct panelization *p, int cols, int rows,
+ * map_cell_value): of its own worst joints, or with seams of its seam
+ * joints (map_seam_measure). */
+static int cell_level(const struct panelization *p,
+                      const struct map_seams *seams, int cols, int rows,
                       int c, int r, enum map_colour colour,
                       const double *bound)
 {
@@ -161,7 +164,10 @@ static int cell_level(const struct panelization *p, int cols, int rows,
             const struct panel *q = panel_at(p, i, j);
             if (q == NULL || fmin(u1, i + 1) - fmax(u0, i) <= 0)
                 continue;
-            int k = map_level(map_panel_measure(p, q, colour), bound);
+            double x = seams != NULL
+                ? map_seam_measure(seams, (size_t)(q - p->panels), colour)
+                : map_panel_measure(p, q, colour);
+            int k = map_level(x, bound);
             if (k > level)
                 level = k;
         }
@@ -173,7 +179,7 @@ int map_cell_value(const struct panelization *p, int cols, int rows, int c,
                    int r, enum map_colour colour, const double *bound)
 {
     if (map_by_level(colour))
-        return cell_level(p, cols, rows, c, r, colour, bound);
+        return cell_level(p, NULL, cols, rows, c, r, colour, bound);
     double weight[MAP_MOULDS_PER_CHAR] = {0};
     int value_of[MAP_MOULDS_PER_CHAR];
     int values = colour == MAP_BY_CLASS ? CLASS_COUNT : TYPE_COUNT;
@@ -247,4 +253,83 @@ void map_surface_title(char *out, size_t size, int k, int n,
 {
     snprintf(out, size, "surface %d of %d: %s (%d x %d)", k + 1, n, name,
              nu, nv);
+}
+
+int map_seams_of_surface(const struct building_seam_joint *joints, size_t n,
+                         size_t surface, size_t npanels,
+                         struct map_seams *out)
+{
+    out->npanels = npanels;
+    out->joints = 0;
+    out->gap = malloc((npanels ? npanels : 1) * sizeof *out->gap);
+    out->added = malloc((npanels ? npanels : 1) * sizeof *out->added);
+    if (out->gap == NULL || out->added == NULL) {
+        map_seams_free(out);
+        return -1;
+    }
+    for (size_t k = 0; k < npanels; k++)
+        out->gap[k] = out->added[k] = NAN;
+    for (size_t k = 0; k < n; k++) {
+        const struct building_seam_joint *b = &joints[k];
+        /* a surface may meet itself along a seam only from two sides */
+        for (int side = 0; side < 2; side++) {
+            size_t of = side ? b->b : b->a;
+            int32_t panel = side ? b->joint.panel_b : b->joint.panel_a;
+            if (of != surface || panel < 0 || (size_t)panel >= npanels)
+                continue;
+            double *gap = &out->gap[panel], *added = &out->added[panel];
+            *gap = isnan(*gap) ? b->joint.gap : fmax(*gap, b->joint.gap);
+            *added = isnan(*added) ? b->joint.added
+                                   : fmax(*added, b->joint.added);
+            out->joints++;
+        }
+    }
+    return 0;
+}
+
+void map_seams_free(struct map_seams *seams)
+{
+    free(seams->gap);
+    free(seams->added);
+    seams->gap = seams->added = NULL;
+    seams->npanels = seams->joints = 0;
+}
+
+double map_seam_measure(const struct map_seams *seams, size_t k,
+                        enum map_colour colour)
+{
+    if (seams == NULL || k >= seams->npanels)
+        return NAN;
+    if (colour == MAP_BY_GAP)
+        return units_mm(seams->gap[k]);
+    if (colour == MAP_BY_KINK)
+        return units_deg(seams->added[k]);
+    return NAN;
+}
+
+double map_seams_largest(const struct map_seams *seams,
+                         enum map_colour colour)
+{
+    double most = NAN;
+    for (size_t k = 0; seams != NULL && k < seams->npanels; k++) {
+        double x = map_seam_measure(seams, k, colour);
+        if (!isnan(x))
+            most = isnan(most) ? x : fmax(most, x);
+    }
+    return most;
+}
+
+int map_seam_cell_level(const struct panelization *p,
+                        const struct map_seams *seams, int cols, int rows,
+                        int c, int r, enum map_colour colour,
+                        const double *bound)
+{
+    if (seams == NULL || (colour != MAP_BY_GAP && colour != MAP_BY_KINK))
+        return -1;
+    return cell_level(p, seams, cols, rows, c, r, colour, bound);
+}
+
+char map_seam_glyph(int level)
+{
+    return level >= MAP_LEVELS - 1 ? '!' : '=';
 }

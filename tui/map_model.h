@@ -12,6 +12,7 @@
 #include <stddef.h>
 
 #include "core/panel/panel.h"
+#include "core/project/project_seams.h"
 
 /* A terminal character is about twice as tall as it is wide. */
 #define MAP_CELL_ASPECT 2.0
@@ -95,6 +96,57 @@ size_t map_family_size(const struct panelization *p, int family);
  * cell (i, j) falls in (r from v's top). */
 void map_cell_of(const struct panelization *p, int cols, int rows, int i,
                  int j, int *c, int *r);
+
+/* The seam joints of one surface of a building (project_seams.h), as its
+ * map draws them: a seam joint lies on the surface's boundary, in the
+ * panel of the surface it joins to a panel of another surface, so the map
+ * marks that panel's cell. Per panel of the surface, the largest gap (m)
+ * and kink added to the design's crease (rad: what the kink limit holds
+ * at a seam) over the seam joints it is part of; NaN for a panel at no
+ * seam. Owned; map_seams_free. */
+struct map_seams {
+    size_t npanels;
+    double *gap;
+    double *added;
+    size_t joints;     /* seam joints with a panel of this surface */
+};
+
+/* The seams of surface (project order) from the building's seam joints
+ * joints[0..n) (project_option_seam_joints), into *out for a surface of
+ * npanels panels. Returns 0, or -1 when out of memory (*out then
+ * empty). */
+int map_seams_of_surface(const struct building_seam_joint *joints, size_t n,
+                         size_t surface, size_t npanels,
+                         struct map_seams *out);
+
+void map_seams_free(struct map_seams *seams);
+
+/* Panel k's seam measure by colour: its largest seam gap (mm) by gap,
+ * its largest kink added at a seam (degrees) by kink; NaN for a panel at
+ * no seam, a seams of NULL, and any other colouring (a seam joint has no
+ * type, class, family or corner move of its own). */
+double map_seam_measure(const struct map_seams *seams, size_t k,
+                        enum map_colour colour);
+
+/* The largest map_seam_measure over the surface's panels, NaN when none
+ * is at a seam: what the levels without a limit are quarters of, with the
+ * surface's own worst. */
+double map_seams_largest(const struct map_seams *seams,
+                         enum map_colour colour);
+
+/* The highest level (under bound) of a seam joint in character (c, r)'s
+ * share of the grid of p (as map_cell_value), -1 when no panel of the
+ * share is at a seam or the colouring is not by gap or kink: a seam joint
+ * over the limit shows in a fitted view as an inside joint's does. */
+int map_seam_cell_level(const struct panelization *p,
+                        const struct map_seams *seams, int cols, int rows,
+                        int c, int r, enum map_colour colour,
+                        const double *bound);
+
+/* The mark of a seam joint at level (0 .. MAP_LEVELS-1): '=' along a
+ * seam, '!' at the highest level (over the limit, or without one the top
+ * quarter), so that the worst seam joints read without colour too. */
+char map_seam_glyph(int level);
 
 /* The surface a project option's map shows after step (+1 the next, -1
  * the previous) from current, of n (n >= 1): clamped to 0 .. n-1, never

@@ -13,7 +13,12 @@
  * one surface at a time, ] and [ paging through them: its panels are not
  * stored, so the option is evaluated again over the run's project
  * (study_project_view.h), which app->project prepares in a thread once
- * for every map of the run while the map shows the stage.
+ * for every map of the run while the map shows the stage. By gap or kink
+ * a building's map marks its seam joints too (issue 31): the panels of
+ * the surface at a seam with another, '=' coloured by the level of the
+ * seam joint's gap or kink added to the crease, '!' at the highest
+ * (over the limit), from the option's seam joints (project_option_seam_
+ * joints, as the export's seams schedule).
  */
 #include <assert.h>
 #include <math.h>
@@ -50,6 +55,10 @@ struct map_screen {
     struct surface_row *surfaces;  /* the run's, as stored (names) */
     size_t nsurfaces;
     int surface;                   /* shown, 0-based */
+    int seams_found;               /* the run found its seams (a weld) */
+    struct building_seam_joint *seam_joints;  /* the option's, owned */
+    size_t nseam_joints;
+    struct map_seams seams;        /* the shown surface's (map_model.h) */
     enum map_colour colour;  /* c cycles type, class, mould family, gap,
                                 kink */
     double bound[MAP_LEVELS];  /* by gap or kink: the levels' bounds */
@@ -68,7 +77,8 @@ static const struct tui_key_help map_help[] = {
     {"g / G", "first / last panel"},
     {"0 / $", "start / end of the row"},
     {"c, F2", "colour by type (FP/SP/DP), by class, by mould family, by "
-              "worst gap or by worst kink"},
+              "worst gap or by worst kink; by gap or kink a building's "
+              "seam joints show as = (! over the limit)"},
     {"z", "zoom in: fit the screen, 1, then 2 columns per panel"},
     {"Z", "zoom out, back to the whole grid fitted to the screen"},
     {"e, F9", "export: PREFIX.csv, .xlsx, .dxf, .ifc, and of a single "
@@ -147,31 +157,55 @@ static double largest_move(const struct map_screen *s)
     return 1000 * most;
 }
 
+/* The shown surface's seam joints, NULL when the run found no seams. */
+static const struct map_seams *seam_map(const struct map_screen *s)
+{
+    return s->project && s->seams_found ? &s->seams : NULL;
+}
+
 /* Sets the levels' bounds for the colouring (map_level_bounds). */
 static void set_bounds(struct map_screen *s)
 {
     if (!by_joint(s))
         return;
     double limit = joint_limit(s);
-    map_level_bounds(isnan(limit) ? 0 : limit,
-                     s->colour == MAP_BY_MOVE ? largest_move(s)
+    double largest = s->colour == MAP_BY_MOVE ? largest_move(s)
                      : s->colour == MAP_BY_KINK
                          ? units_deg(s->totals->max_kink)
-                         : units_mm(s->totals->max_gap),
-                     s->bound);
+                         : units_mm(s->totals->max_gap);
+    /* without a limit the quarters are of the worst joint shown, a seam
+     * joint's too */
+    double seam = map_seams_largest(seam_map(s), s->colour);
+    if (!isnan(seam) && !(seam <= largest))
+        largest = seam;
+    map_level_bounds(isnan(limit) ? 0 : limit, largest, s->bound);
 }
 
-/* The levels of the gap or kink colouring, their bounds and panels. */
 /* A project option's seams, the building's (the legend's other lines are
  * the surface's): how many, and the largest gap, or kink added to the
  * crease, at them, in the quantity's own unit. Nothing for a single
- * surface, or a run that found none (an older Facet's). */
+ * surface, or a run that found none (an older Facet's). Then what the
+ * seam marks on the map mean. */
 static void draw_seams_line(const struct map_screen *s, int y, int x,
                             int width, int kink)
 {
     const struct option_totals *b = &s->building.totals;
     if (!s->project || b->seams == TOTALS_UNKNOWN)
         return;
+    if (seam_map(s) != NULL) {
+        double limit = joint_limit(s);
+        char mark[2] = {map_seam_glyph(0), 0};
+        tui_put(y + 1, x + 1, 1, tui_attr(ROLE_SCALE0) | A_BOLD, mark);
+        tui_putf(y + 1, x + 2, width - 2, A_NORMAL,
+                 " seam joint: %s, %zu here",
+                 kink ? "kink added" : "its gap", s->seams.joints);
+        mark[0] = map_seam_glyph(MAP_LEVELS - 1);
+        tui_put(y + 2, x + 1, 1, tui_attr(ROLE_SCALE0 + MAP_LEVELS - 1) |
+                A_BOLD, mark);
+        tui_putf(y + 2, x + 2, width - 2, A_NORMAL, " %s",
+                 isnan(limit) ? "one in the top quarter"
+                              : "a seam joint over the limit");
+    }
     const struct quantity *q =
         quantity_named(kink ? "seam_max_kink" : "seam_max_gap");
     double value = quantity_of_totals(q, b);
@@ -423,10 +457,13 @@ static void map_draw(struct tui_screen *base, struct tui_app *app,
                     &cursor_r);
     for (int r = 0; r < lines; r++) {
         for (int c = 0; c < cols; c++) {
-            int value, here;
+            int value, here, seam;
             if (zoom == 0) {
                 value = map_cell_value(s->panels, cols, lines, c, r,
                                        s->colour, s->bound);
+                seam = map_seam_cell_level(s->panels, seam_map(s), cols,
+                                           lines, c, r, s->colour,
+                                           s->bound);
                 here = c == cursor_c && r == cursor_r;
             } else {
                 int i = s->left + c, j = nv - 1 - (s->top + r);
@@ -439,11 +476,21 @@ static void map_draw(struct tui_screen *base, struct tui_app *app,
                         : s->colour == MAP_BY_CLASS ? (int)p->class
                         : s->colour == MAP_BY_TYPE ? (int)p->type
                         : p->mould >= 0 ? p->mould : MAP_NO_MOULD;
+                seam = p == NULL ? -1
+                       : map_level(map_seam_measure(
+                                       seam_map(s),
+                                       (size_t)(p - s->panels->panels),
+                                       s->colour),
+                                   s->bound);
                 here = i == s->ci && j == s->cj;
             }
             char text[8];
             attr_t attr;
-            if (value == MAP_NO_MOULD) {
+            if (seam >= 0) {
+                /* a seam joint: its own level, over the panel's */
+                snprintf(text, sizeof text, "%c", map_seam_glyph(seam));
+                attr = tui_attr(ROLE_SCALE0 + seam) | A_BOLD;
+            } else if (value == MAP_NO_MOULD) {
                 snprintf(text, sizeof text, "-");
                 attr = tui_attr(tui_type_role(TYPE_FP));
             } else if (value < 0) {
@@ -468,7 +515,8 @@ static void map_draw(struct tui_screen *base, struct tui_app *app,
             int x = 1 + c * (zoom ? zoom : 1);
             tui_put(1 + r, x, 1, attr, text);
             if (zoom == 2)
-                tui_put(1 + r, x + 1, 1, attr, value < 0 ? " " : text);
+                tui_put(1 + r, x + 1, 1, attr,
+                        value < 0 && seam < 0 ? " " : text);
         }
     }
     /* what the view shows of the grid */
@@ -509,10 +557,21 @@ static void map_draw(struct tui_screen *base, struct tui_app *app,
         else if (p->built == TYPE_SP)
             snprintf(fit, sizeof fit, " | SP fit %.2f mm",
                      p->sp_deviation * 1000);
-        tui_putf(y + 2, 0, width, A_NORMAL,
-                 " worst gap %.2f mm  worst kink %.2f deg | deviation "
-                 "%.2f mm%s", units_mm(p->worst_gap), units_deg(p->worst_kink),
-                 p->deviation * 1000, fit);
+        size_t k = (size_t)(p - s->panels->panels);
+        double seam_gap = map_seam_measure(seam_map(s), k, MAP_BY_GAP);
+        if (!isnan(seam_gap))
+            /* a seam panel: its seam joints' worst in the deviation's
+             * place, which the classes' line keeps */
+            tui_putf(y + 2, 0, width, A_NORMAL,
+                     " worst gap %.2f mm  worst kink %.2f deg | seam gap "
+                     "%.2f mm, kink +%.2f deg", units_mm(p->worst_gap),
+                     units_deg(p->worst_kink), seam_gap,
+                     map_seam_measure(seam_map(s), k, MAP_BY_KINK));
+        else
+            tui_putf(y + 2, 0, width, A_NORMAL,
+                     " worst gap %.2f mm  worst kink %.2f deg | deviation "
+                     "%.2f mm%s", units_mm(p->worst_gap),
+                     units_deg(p->worst_kink), p->deviation * 1000, fit);
     } else if (s->colour == MAP_BY_MOULD && p->mould >= 0)
         tui_putf(y + 2, 0, width, A_NORMAL,
                  " mould family %d (%zu panels%s) | deviation %.2f mm",
@@ -545,6 +604,11 @@ static void show_surface(struct map_screen *s, int k)
     s->cj = s->panels->nv > 0 ? s->panels->nv - 1 : 0;
     s->left = s->top = 0;
     map_surface_size(s->panels, &s->width_m, &s->height_m);
+    map_seams_free(&s->seams);
+    if (s->seams_found &&
+        map_seams_of_surface(s->seam_joints, s->nseam_joints, (size_t)k,
+                             s->panels->npanels, &s->seams) != 0)
+        s->seams_found = 0;  /* out of memory: the map without them */
     set_bounds(s);
 }
 
@@ -734,6 +798,8 @@ static void map_destroy(struct tui_screen *base)
     struct map_screen *s = (struct map_screen *)base;
     panelization_free(&s->own);
     project_option_free(&s->building);
+    map_seams_free(&s->seams);
+    free(s->seam_joints);
     free(s->surfaces);
     free(s);
 }
@@ -774,6 +840,24 @@ static int project_poll(struct map_screen *s, struct tui_app *app)
         rc = facet_error_set(&err, FACET_EWORK, "the project has %zu "
                              "surfaces, the run %zu",
                              s->building.nsurfaces, s->nsurfaces);
+    if (rc == FACET_OK) {
+        free(s->seam_joints);
+        s->seam_joints = NULL;
+        s->nseam_joints = 0;
+        /* none to draw where the option's joints were not measured: its
+         * panels were not built to place them on */
+        s->seams_found = view->project.seams != NULL &&
+                         s->building.totals.seams != TOTALS_UNKNOWN;
+        struct facet_error seam_err;
+        /* out of memory: the map without its seam joints, said */
+        if (s->seams_found &&
+            project_option_seam_joints(&view->project, &s->building,
+                                       &s->seam_joints, &s->nseam_joints,
+                                       &seam_err) != FACET_OK) {
+            s->seams_found = 0;
+            tui_error(app, "panel map: seam joints: %s", seam_err.message);
+        }
+    }
     if (rc != FACET_OK) {
         snprintf(s->failed, sizeof s->failed, "%s", err.message);
         tui_error(app, "panel map: %s", err.message);

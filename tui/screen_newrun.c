@@ -7,7 +7,8 @@
  * a building's panel module and its surfaces' own grids (a project run:
  * several files, comma-separated, or one OBJ of many objects, searched
  * over modules in place of U and V, as facet optimize --module and
- * --grid), the objectives, and a name; Tab completes the surface's path
+ * --grid) and the welding tolerance its seams are found at (--weld),
+ * the objectives, and a name; Tab completes the surface's path
  * (directories and
  * OBJ files, complete.h). F5 (or Enter on the last field) starts the
  * study in a worker thread (job.h) and opens the run's options table,
@@ -37,6 +38,7 @@
 #include "core/project/module.h"
 #include "core/project/project.h"
 #include "core/project/project_grids.h"
+#include "core/project/seam.h"
 #include "core/search/metric.h"
 #include "study/study.h"
 #include "study/study_estimate.h"
@@ -44,7 +46,8 @@
 enum field { F_SURFACE, F_UNITS, F_U, F_V, F_THRESHOLD, F_METHOD, F_SEED,
              F_PRICES, F_SP_AS_FP, F_MAX_AREA, F_PANEL_COST, F_JOINT_COST,
              F_MOULD_COST, F_MOULD_TOL, F_MOULD_MIRROR, F_SP_FIT, F_MAX_GAP,
-             F_MAX_KINK, F_MODULE, F_GRIDS, F_OBJECTIVES, F_NAME, F_COUNT };
+             F_MAX_KINK, F_WELD, F_MODULE, F_GRIDS, F_OBJECTIVES, F_NAME,
+             F_COUNT };
 
 /* At most LABEL_WIDTH - 1 columns each. */
 static const char *const field_label[F_COUNT] = {
@@ -52,7 +55,8 @@ static const char *const field_label[F_COUNT] = {
     "Method", "Seed", "Prices FP,SP,DP", "SP priced as FP", "Max panel m^2",
     "Panel cost USD/panel", "Joint cost USD/m", "Mould cost SP,DP USD",
     "Mould tolerance (mm)", "Mirrors share moulds", "SP panels fitted",
-    "Max gap (mm)", "Max kink (deg)", "Module W x H (m)", "Surface grids",
+    "Max gap (mm)", "Max kink (deg)", "Seam weld (mm)", "Module W x H (m)",
+    "Surface grids",
     "Objectives", "Name"};
 #define LABEL_WIDTH 22
 static const char *const field_hint[F_COUNT] = {
@@ -72,6 +76,8 @@ static const char *const field_hint[F_COUNT] = {
     "yes: an SP panel no cylinder or cone fits within t is built DP",
     "feasible only when no joint's gap exceeds it; empty: no limit",
     "feasible only when no joint's kink exceeds it; empty: no limit",
+    "a building: surfaces whose edges come this close meet at a seam, "
+    "measured with the joints (needs the module); empty: 1 mm",
     "a building: panel modules WMIN:WMAX x HMIN:HMAX (m) in place of U and "
     "V; the surface: files, comma-separated, or one OBJ of many objects",
     "a building's surfaces with a grid of their own, NAME=NUxNV,... "
@@ -318,6 +324,7 @@ static int surfaces(struct newrun_screen *s, struct study_request *r,
     const char *path = s->field[F_SURFACE].text;
     const char *module = s->field[F_MODULE].text;
     const char *grids = s->field[F_GRIDS].text;
+    const char *weld = s->field[F_WELD].text;
     if (path[0] == '\0')
         return facet_error_set(err, FACET_EINPUT, "name the surface's OBJ "
                                "file");
@@ -365,12 +372,19 @@ static int surfaces(struct newrun_screen *s, struct study_request *r,
             return facet_error_set(err, FACET_EINPUT,
                 "%s give a building's surfaces their own grid: they need %s",
                 field_label[F_GRIDS], field_label[F_MODULE]);
+        if (weld[0] != '\0')
+            return facet_error_set(err, FACET_EINPUT,
+                "%s is where a building's surfaces meet: it needs %s",
+                field_label[F_WELD], field_label[F_MODULE]);
         return FACET_OK;
     }
     int rc = module_parse(module, field_label[F_MODULE], &r->module, err);
     if (rc == FACET_OK)
         rc = surface_grid_overrides_parse(grids, field_label[F_GRIDS],
                                           &s->grids, err);
+    /* empty: the default tolerance, as facet optimize without --weld */
+    if (rc == FACET_OK && weld[0] != '\0')
+        rc = seam_weld_parse(weld, field_label[F_WELD], &r->weld, err);
     if (rc != FACET_OK)
         return rc;
     r->files = s->files;

@@ -307,9 +307,13 @@ void report_csv(FILE *out, const struct panelization *panels)
     report_csv_rows(out, panels, NULL, 1);
 }
 
-/* The totals CSV's columns, in its order: quantities of the table
- * (quantity.h), named as option_csv names them. */
-static const char *const totals_columns[] = {
+/* The totals CSV's first columns, in the order they had before the
+ * quantity table held every quantity: kept first, so that a spreadsheet
+ * that reads them by position still finds them. Every other quantity of
+ * the totals follows in the table's order (totals_column), so that one
+ * added to the table (a building's seams, issue 31) is a column here
+ * without a line of its own. */
+static const char *const first_columns[] = {
     "panels", "fp_count", "sp_count", "dp_count", "area", "fp_area",
     "sp_area", "dp_area", "fp_cost", "sp_cost", "dp_cost", "cost",
     "planarity", "max_deviation", "max_panel_area", "p_dist", "feasible",
@@ -318,20 +322,47 @@ static const char *const totals_columns[] = {
     "max_gap", "mean_gap", "max_kink", "mean_kink", "gaps_over",
     "kinks_over", "sp_misfits", "sp_fitted",
 };
+enum { FIRST_COLUMNS = sizeof first_columns / sizeof *first_columns };
+
+static int is_first_column(const struct quantity *q)
+{
+    for (size_t k = 0; k < FIRST_COLUMNS; k++)
+        if (strcmp(first_columns[k], q->name) == 0)
+            return 1;
+    return 0;
+}
+
+/* The quantity of the totals CSV's column k (from 0), NULL past the
+ * last: first_columns, then every other quantity of the totals
+ * (quantity_in_totals) in option_quantities' order. */
+static const struct quantity *totals_column(size_t k)
+{
+    if (k < FIRST_COLUMNS) {
+        const struct quantity *q = quantity_named(first_columns[k]);
+        assert(q != NULL && quantity_in_totals(q));
+        return q;
+    }
+    k -= FIRST_COLUMNS;
+    for (size_t c = 0; c < OPTION_QUANTITIES; c++) {
+        const struct quantity *q = &option_quantities[c];
+        if (!quantity_in_totals(q) || is_first_column(q))
+            continue;
+        if (k-- == 0)
+            return q;
+    }
+    return NULL;
+}
 
 void report_totals_csv(FILE *out, const struct option_totals *t)
 {
-    size_t n = sizeof totals_columns / sizeof *totals_columns;
-    for (size_t k = 0; k < n; k++) {
-        const struct quantity *q = quantity_named(totals_columns[k]);
-        assert(q != NULL && quantity_in_totals(q));
+    const struct quantity *q;
+    for (size_t k = 0; (q = totals_column(k)) != NULL; k++) {
         char name[64];
         quantity_csv_name(q, name, sizeof name);
         fprintf(out, "%s%s", k ? "," : "", name);
     }
     fputc('\n', out);
-    for (size_t k = 0; k < n; k++) {
-        const struct quantity *q = quantity_named(totals_columns[k]);
+    for (size_t k = 0; (q = totals_column(k)) != NULL; k++) {
         double value = quantity_of_totals(q, t);
         if (q->yes_no && !isnan(value))
             value = value != 0;

@@ -76,8 +76,14 @@ void report_seams_csv(FILE *out, const struct building_seam_joint *joints,
  * row: panels, counts, areas and costs per type, cost, planarity, largest
  * deviation, largest panel, P_dist, feasible, then the joint length, the
  * mould families, the cost term by term, the gaps (mm) and kinks
- * (degrees) and the SP misfits and fitted panels), the numbers `facet show`
- * prints, so that a schedule holds panels only. */
+ * (degrees) and the SP misfits and fitted panels, the columns in that
+ * order first; then every other quantity of the totals in the quantity
+ * table's order: per-class counts and areas, the smallest panel and
+ * slivers, a planarized option's closeness, a building's seams (seams ..
+ * seam_kinks_over, m and rad)), each column named as quantity_csv_name
+ * names it, in the unit it is stored in, empty where not known (NULL: a
+ * single surface's seams), the numbers `facet show` prints, so that a
+ * schedule holds panels only. */
 void report_totals_csv(FILE *out, const struct option_totals *totals);
 
 #endif

@@ -4,6 +4,7 @@
  */
 #include "core/project/project_seams.h"
 
+#include <assert.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -188,4 +189,26 @@ int project_seams_joints(const struct project *project,
         free(joint);
     }
     return FACET_OK;
+}
+
+int project_option_seam_joints(const struct project *project,
+                               const struct project_option *option,
+                               struct building_seam_joint **out, size_t *n,
+                               struct facet_error *err)
+{
+    *out = NULL;
+    *n = 0;
+    if (project->seams == NULL)
+        return FACET_OK;
+    assert(option->nsurfaces == project->nsurfaces);
+    const struct panelization **panels =
+        malloc((option->nsurfaces ? option->nsurfaces : 1) * sizeof *panels);
+    if (panels == NULL)
+        return facet_error_set(err, FACET_EWORK, "out of memory");
+    for (size_t s = 0; s < option->nsurfaces; s++)
+        panels[s] = &option->surfaces[s].panels;
+    int rc = project_seams_joints(project, project->seams, panels, out, n,
+                                  err);
+    free(panels);
+    return rc;
 }

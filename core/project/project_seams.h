@@ -23,6 +23,7 @@
 #include "core/base/stop.h"
 #include "core/panel/panel.h"
 #include "core/project/project.h"
+#include "core/project/project_option.h"
 #include "core/project/seam.h"
 #include "core/project/seam_joints.h"
 
@@ -102,5 +103,16 @@ int project_seams_joints(const struct project *project,
                          const struct panelization *const *panels,
                          struct building_seam_joint **out, size_t *n,
                          struct facet_error *err);
+
+/* Every seam joint of option, evaluated over project: project_seams_joints
+ * over the seams project keeps (project->seams) with the option's
+ * surfaces' panels in order, into *out (malloc'ed, free(); NULL when
+ * none, as for a project that keeps no seams) and *n. What an export's
+ * seams schedule and the workbench's map of a building both read.
+ * Returns FACET_OK or FACET_EWORK. */
+int project_option_seam_joints(const struct project *project,
+                               const struct project_option *option,
+                               struct building_seam_joint **out, size_t *n,
+                               struct facet_error *err);
 
 #endif

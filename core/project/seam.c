@@ -7,6 +7,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "core/base/numparse.h"
+#include "core/base/units.h"
 #include "core/base/vec3.h"
 
 /* A boundary edge, from its triangle's corner k to corner k + 1 (the
@@ -298,4 +300,15 @@ void seam_free(struct seam *seam)
 {
     free(seam->points);
     memset(seam, 0, sizeof *seam);
+}
+
+int seam_weld_parse(const char *text, const char *what, double *weld,
+                    struct facet_error *err)
+{
+    double mm;
+    int rc = numparse_number(text, units_mm(SEAM_WELD_MIN),
+                             units_mm(SEAM_WELD_MAX), what, &mm, err);
+    if (rc == FACET_OK)
+        *weld = units_m_of_mm(mm);
+    return rc;
 }

@@ -52,6 +52,15 @@
 #define SEAM_WELD_MIN 1e-9
 #define SEAM_WELD_MAX 0.1
 
+/* Parses all of text, a welding tolerance in mm the user gave for the
+ * setting what (a flag, a form's label), into *weld in m: a number from
+ * SEAM_WELD_MIN to SEAM_WELD_MAX, as numparse_number reads it. The one
+ * reading of a welding tolerance: `facet optimize --weld` and the
+ * workbench's New run form. Returns FACET_OK, or FACET_EINPUT with a
+ * message that starts with what; *weld is untouched on an error. */
+int seam_weld_parse(const char *text, const char *what, double *weld,
+                    struct facet_error *err);
+
 struct seam_point {
     double at[3];           /* on a's boundary (m) */
     double across[3];       /* the nearest point of b's boundary (m) */

@@ -22,9 +22,12 @@
 #   - the hinge with its faces 2 mm apart: no seam within 1 mm, one within
 #     3 mm whose gap is the design's 2 mm; the run keeps its tolerance;
 #   - a single surface: every seam column NULL, the run's weld NULL;
+#   - facet runs: the weld column and note, sqlite3's weld_mm, or "-" and
+#     "not a building" for a single surface;
 #   - a bad --weld: one line, status 2, no database;
 #   - show's seams line and options --csv's columns; export --csv's seams
-#     schedule, each ruling's row against its closed form;
+#     schedule, each ruling's row against its closed form, and its totals
+#     CSV's seam columns against sqlite3's (empty for a single surface);
 #   - shards at one tolerance merged into a run that keeps it, shards of
 #     two refused.
 # layers: cli core store study
@@ -195,6 +198,29 @@ same "the seams schedule: one row a ruling, its gap (mm) and added kink (deg) th
 same "its panels are the panel schedule's ids: third0's 1 meets third1's 2, third2's 7 and third1's 3 its 4" \
     "$(/usr/bin/python3 -c "import csv,sys; print(' '.join(r['panel_a'] + '-' + r['panel_b'] for r in csv.DictReader(open(sys.argv[1]))))" uneven-seams.csv)" \
     "1-2 1-7 3-4"
+# The totals beside the schedule carry the seam quantities (issue 31),
+# named with the units they are stored in (m, rad), each the value
+# sqlite3 reads from the options row, to the bit.
+seam_totals() {
+    /usr/bin/python3 - "$1" "$2" <<'PY'
+import csv, sqlite3, sys
+t = list(csv.DictReader(open(sys.argv[1], newline="")))
+row = sqlite3.connect(sys.argv[2]).execute(
+    "SELECT seams, seam_length, seam_max_gap, seam_max_kink, seam_max_crease,"
+    " seam_gaps_over, seam_kinks_over FROM options WHERE run = 1 AND number = 1"
+).fetchone()
+names = ["seams", "seam_length_m", "seam_max_gap_mm", "seam_max_kink_deg",
+         "seam_max_crease_deg", "seam_gaps_over", "seam_kinks_over"]
+if len(t) != 1 or any(n not in t[0] for n in names):
+    print("columns %s" % (list(t[0].keys()) if t else "none"))
+    sys.exit()
+got = [None if t[0][n] == "" else float(t[0][n]) for n in names]
+want = [None if v is None else float(v) for v in row]
+print("same" if got == want else "%s against %s" % (got, want))
+PY
+}
+same "the totals CSV's seam columns (seams .. seam_kinks_over; gaps in mm, angles in degrees, as stored) are sqlite3's" \
+    "$(seam_totals uneven-totals.csv uneven.db)" same
 # The workbook's seams sheet, read with openpyxl into the CSV's columns,
 # against the same closed forms and panel ids.
 expect "facet export --xlsx of it" 0 \
@@ -241,6 +267,11 @@ expect "the same at --weld 3" 0 \
 same "the run keeps --weld 3 (mm)" "$(q apart3.db 'SELECT weld_mm FROM runs')" "3.0"
 run "$FACET" runs apart3.db --json
 json_check "facet runs --json: weld_mm 3" "[r['weld_mm'] for r in j] == [3]"
+weld=$(/usr/bin/python3 -c "import sys; print('%g' % float(sys.argv[1]))" "$(q apart3.db 'SELECT weld_mm FROM runs')")
+run "$FACET" runs apart3.db --wide
+stdout_has "facet runs: the weld column, sqlite3's weld_mm ($weld mm), before the start" \
+    "^ +1 done .* $weld 20[0-9-]+T"
+stdout_has "facet runs: the run's note says --weld $weld mm" "^run 1: .*, --weld $weld mm\$"
 same "one seam within 3 mm" "$(q apart3.db 'SELECT seams FROM options')" "1"
 near "its gap is the design's own 2 mm" apart3.db "SELECT seam_max_gap FROM options" 2 1e-6
 
@@ -252,6 +283,13 @@ same "its joints measured, every seam column NULL" \
 same "its run has no welding tolerance" "$(q floor.db 'SELECT quote(weld_mm) FROM runs')" "NULL"
 run "$FACET" runs floor.db --json
 json_check "facet runs --json: weld_mm null" "[r['weld_mm'] for r in j] == [None]"
+expect "export --csv of the floor alone" 0 \
+    "$FACET" export floor.db --run 1 --option 1 --csv floor.csv
+same "its totals CSV has the seam columns, empty (NULL), as sqlite3's" \
+    "$(seam_totals floor-totals.csv floor.db)" same
+run "$FACET" runs floor.db --wide
+stdout_has "facet runs: a single surface's weld is -, never 0" "^ +1 done .* - 20[0-9-]+T"
+stdout_has "facet runs: ... its note says it is not a building" "^run 1: .*, no weld: not a building\$"
 
 # 7. Bad tolerances: one line, status 2, nothing created.
 expect_error "--weld -1 refused" '^facet: --weld: -1 is out of range' \

@@ -132,7 +132,7 @@ set_field "$H_KINK" "$KINK"
 check "  ... and the fields scrolled with the focus, one up" '^\^Units'
 check "  ... the more below marked" '^vMax kink \(deg\) +1\.3'
 
-down 4  # the module, the surface grids and the objectives on the way
+down 5  # the weld, the module, the surface grids and the objectives on the way
 set_field "$H_NAME" 'costs from the form'
 check "the form counts the run (3 x 3 x 3 = 27)" 'F5 starts: 27 options \(exhaustive\)'
 keys F5
@@ -286,6 +286,6 @@ else
     screen | sed 's/^/  screen: /'
 fi
 check_not "  ... and the first fields scrolled away" '^ Surface \(OBJ\)'
-check_line "  ... marked as more above" 3 '^\^Joint cost USD/m'
+check_line "  ... marked as more above" 3 '^\^Mould cost SP,DP USD'
 keys F10
 check_exit "(F10 quits, 80x18)"
