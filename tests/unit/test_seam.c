@@ -25,35 +25,10 @@
 #include "core/project/seam_joints.h"
 #include "core/surface/example_skin.h"
 #include "core/surface/surface.h"
+#include "tests/support/seam_shapes.h"
 #include "tests/support/surface_fixture.h"
 
 #define PI 3.14159265358979323846
-
-/* A plane strip 2 m x 1 m in z = 0, x from 0 to 2; or its continuation
- * past the hinge x = 2, bent up by angle, `width` m wide, moved `apart`
- * along x; `reversed` winds it the other way (t runs backwards). */
-struct hinge {
-    double angle, width, apart;
-    int reversed;
-};
-
-static void plane_a(const void *shape, double s, double t, double p[3])
-{
-    (void)shape;
-    p[0] = 2 * s;
-    p[1] = t;
-    p[2] = 0;
-}
-
-static void plane_b(const void *shape, double s, double t, double p[3])
-{
-    const struct hinge *h = shape;
-    if (h->reversed)
-        t = 1 - t;
-    p[0] = 2 + h->apart + h->width * s * cos(h->angle);
-    p[1] = t;
-    p[2] = h->width * s * sin(h->angle);
-}
 
 static void open_formula(surface_formula f, const void *shape, int ns,
                          int nt, struct surface *s)
@@ -79,8 +54,8 @@ static void hinged(double angle, int nt_b, int reversed)
 {
     struct hinge h = {angle, 1.5, 0, reversed};
     struct surface a, b;
-    open_formula(plane_a, NULL, 8, 4, &a);
-    open_formula(plane_b, &h, 5, nt_b, &b);
+    open_formula(seam_plane_a, NULL, 8, 4, &a);
+    open_formula(seam_plane_b, &h, 5, nt_b, &b);
     struct seam seam;
     find(&a, &b, SEAM_WELD_DEFAULT, &seam);
     assert_int_equal(seam.nedges, 4);  /* a's 4 edges along the hinge */
@@ -137,9 +112,9 @@ static void test_weld_tolerance(void **state)
     (void)state;
     struct surface a, b, c;
     struct hinge near = {PI / 4, 1, 0.0005, 0}, far = {PI / 4, 1, 0.005, 0};
-    open_formula(plane_a, NULL, 8, 4, &a);
-    open_formula(plane_b, &near, 5, 7, &b);
-    open_formula(plane_b, &far, 5, 7, &c);
+    open_formula(seam_plane_a, NULL, 8, 4, &a);
+    open_formula(seam_plane_b, &near, 5, 7, &b);
+    open_formula(seam_plane_b, &far, 5, 7, &c);
     struct seam seam;
     find(&a, &b, 0.001, &seam);
     assert_true(fabs(seam.length - 1) < 1e-12);
@@ -204,25 +179,13 @@ static void test_box_corner(void **state)
 /* A cylinder, radius 3 m, 4 m tall, cut into two half-cylinders along two
  * rulings: the seams are the two rulings, 8 m, and the design has no
  * crease there (the facets' own angle, 180 / 12 degrees, is not one). */
-struct half {
-    double from;
-};
-
-static void half_cylinder(const void *shape, double s, double t,
-                          double p[3])
-{
-    const struct half *h = shape;
-    double a = h->from + PI * s;
-    p[0] = 3 * cos(a), p[1] = 3 * sin(a), p[2] = 4 * t;
-}
-
 static void test_cylinder_cut_along_rulings(void **state)
 {
     (void)state;
     struct half first = {0}, second = {PI};
     struct surface a, b;
-    open_formula(half_cylinder, &first, 12, 6, &a);
-    open_formula(half_cylinder, &second, 12, 5, &b);
+    open_formula(seam_half_cylinder, &first, 12, 6, &a);
+    open_formula(seam_half_cylinder, &second, 12, 5, &b);
     struct seam seam;
     find(&a, &b, SEAM_WELD_DEFAULT, &seam);
     assert_true(fabs(seam.length - 8) < 1e-9);
@@ -238,7 +201,7 @@ static void test_bad_settings(void **state)
 {
     (void)state;
     struct surface a;
-    open_formula(plane_a, NULL, 2, 2, &a);
+    open_formula(seam_plane_a, NULL, 2, 2, &a);
     struct seam seam;
     struct facet_error err;
     const double bad[] = {-1, NAN, INFINITY};
@@ -294,8 +257,8 @@ static void test_hinge_joints(void **state)
     (void)state;
     struct hinge h = {PI / 6, 1.5, 0, 1};
     struct surface a, b;
-    open_formula(plane_a, NULL, 8, 4, &a);
-    open_formula(plane_b, &h, 5, 7, &b);
+    open_formula(seam_plane_a, NULL, 8, 4, &a);
+    open_formula(seam_plane_b, &h, 5, 7, &b);
     struct panelization pa, pb;
     panels_of(&a, 2, 2, 3, &pa);
     panels_of(&b, 3, 3, 3, &pb);
@@ -327,8 +290,8 @@ static void test_cylinder_joints(void **state)
     (void)state;
     struct half first = {0}, second = {PI};
     struct surface a, b;
-    open_formula(half_cylinder, &first, 12, 2, &a);
-    open_formula(half_cylinder, &second, 12, 2, &b);
+    open_formula(seam_half_cylinder, &first, 12, 2, &a);
+    open_formula(seam_half_cylinder, &second, 12, 2, &b);
     struct panelization pa, pb;
     panels_of(&a, 3, 1, 1000, &pa);
     panels_of(&b, 3, 1, 1000, &pb);
@@ -363,8 +326,8 @@ static void test_cylinder_joints_single_curved(void **state)
     (void)state;
     struct half first = {0}, second = {PI};
     struct surface a, b;
-    open_formula(half_cylinder, &first, 48, 4, &a);
-    open_formula(half_cylinder, &second, 48, 4, &b);
+    open_formula(seam_half_cylinder, &first, 48, 4, &a);
+    open_formula(seam_half_cylinder, &second, 48, 4, &b);
     struct panelization pa, pb;
     panels_of(&a, 3, 2, 3, &pa);
     panels_of(&b, 4, 2, 3, &pb);
@@ -436,8 +399,8 @@ static void test_building_cylinder(void **state)
     struct half first = {0}, second = {PI};
     struct project_surface half[2];
     memset(half, 0, sizeof half);
-    open_formula(half_cylinder, &first, 12, 2, &half[0].surface);
-    open_formula(half_cylinder, &second, 12, 2, &half[1].surface);
+    open_formula(seam_half_cylinder, &first, 12, 2, &half[0].surface);
+    open_formula(seam_half_cylinder, &second, 12, 2, &half[1].surface);
     struct project project;
     memset(&project, 0, sizeof project);
     project.nsurfaces = 2;
@@ -488,8 +451,8 @@ static void test_building_option_seams(void **state)
     struct half first = {0}, second = {PI};
     struct project_surface half[2];
     memset(half, 0, sizeof half);
-    open_formula(half_cylinder, &first, 12, 2, &half[0].surface);
-    open_formula(half_cylinder, &second, 12, 2, &half[1].surface);
+    open_formula(seam_half_cylinder, &first, 12, 2, &half[0].surface);
+    open_formula(seam_half_cylinder, &second, 12, 2, &half[1].surface);
     struct project project;
     memset(&project, 0, sizeof project);
     project.nsurfaces = 2;

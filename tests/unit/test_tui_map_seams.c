@@ -30,38 +30,14 @@
 #include "core/evaluate/option.h"
 #include "core/project/project_option.h"
 #include "core/project/project_seams.h"
+#include "tests/support/seam_shapes.h"
 #include "tests/support/surface_fixture.h"
 #include "tui/map_model.h"
 
 #define PI 3.14159265358979323846
 
-static void plane_a(const void *shape, double s, double t, double p[3])
-{
-    (void)shape;
-    p[0] = 2 * s;
-    p[1] = t;
-    p[2] = 0;
-}
-
-static void plane_b(const void *shape, double s, double t, double p[3])
-{
-    (void)shape;
-    p[0] = 2 + 1.5 * s * cos(PI / 6);
-    p[1] = t;
-    p[2] = 1.5 * s * sin(PI / 6);
-}
-
-struct half {
-    double from;
-};
-
-static void half_cylinder(const void *shape, double s, double t,
-                          double p[3])
-{
-    const struct half *h = shape;
-    double a = h->from + PI * s;
-    p[0] = 3 * cos(a), p[1] = 3 * sin(a), p[2] = 4 * t;
-}
+/* The hinge of the header: b bent up 30 degrees, 1.5 m wide. */
+static const struct hinge hinge_30 = {PI / 6, 1.5, 0, 0};
 
 static void open_formula(surface_formula f, const void *shape, int ns,
                          int nt, struct surface *s)
@@ -176,8 +152,8 @@ static void test_hinge(void **state)
     (void)state;
     struct project_surface face[2];
     memset(face, 0, sizeof face);
-    open_formula(plane_a, NULL, 8, 6, &face[0].surface);
-    open_formula(plane_b, NULL, 6, 10, &face[1].surface);
+    open_formula(seam_plane_a, NULL, 8, 6, &face[0].surface);
+    open_formula(seam_plane_b, &hinge_30, 6, 10, &face[1].surface);
     const struct surface_grid grids[2] = {{4, 3}, {3, 5}};
     struct project project;
     struct project_option option;
@@ -203,7 +179,7 @@ static void test_cylinder(void **state)
     struct project_surface face[2];
     memset(face, 0, sizeof face);
     for (int k = 0; k < 2; k++)
-        open_formula(half_cylinder, &from[k], 12, 2, &face[k].surface);
+        open_formula(seam_half_cylinder, &from[k], 12, 2, &face[k].surface);
     const struct surface_grid grids[2] = {{3, 1}, {3, 1}};
     double beta = PI / 12, alpha = PI / 3, r = 3;
     double d = r * cos(beta / 2) * (cos(beta / 2) + cos(1.5 * beta)) / 2;
