@@ -29,9 +29,6 @@ This is make check-fast, the edit-test loop; make check runs everything.
 
 Suites that share a machine-wide resource say so with a "# lock: NAME" line
 (the single-node Slurm cluster); two suites of one lock never run at once.
-Suites that mostly wait (on tmux, on Slurm's queue) say so with a "# waits:"
-line; one lane beyond the N runs only those, so a core is not left idle
-while one waits.
 
 "Longest first" uses the wall time each suite took in this build's last
 run (BUILD/suite-times.tsv, written at the end of every run), else the
@@ -70,7 +67,6 @@ class Suite:
         self.path = path
         self.layers = set()
         self.lock = None
-        self.waits = False        # mostly waits on a terminal or a queue
         self.estimate = 0.0
         self.passed = self.failed = self.skipped = 0
         self.seconds = 0.0
@@ -98,8 +94,6 @@ class Suite:
                 m = re.match(r"#\s*lock:\s*(\S+)", line)
                 if m:
                     self.lock = m.group(1)
-                if re.match(r"#\s*waits:", line):
-                    self.waits = True
 
 
 def find_suites(builds, only):
@@ -411,27 +405,23 @@ def run_queue(queue, env, logs, args, builds):
     failed = [False]
     stop = threading.Event()
 
-    # With a lane for the suites that wait, the other lanes leave them to it.
-    lane = args.jobs >= 1 and any(s.waits for s in queue)
-
-    def take(waiting):
+    def take():
         with lock:
             while True:
-                mine = [s for s in queue if s.waits == waiting or not lane]
-                if not mine or stop.is_set() or \
+                if not queue or stop.is_set() or \
                         (args.fail_fast and failed[0]):
                     return None
-                for s in mine:
+                for i, s in enumerate(queue):
                     if s.lock is None or s.lock not in held:
-                        queue.remove(s)
+                        queue.pop(i)
                         if s.lock:
                             held.add(s.lock)
                         return s
                 lock.wait()
 
-    def worker(waiting=False):
+    def worker():
         while True:
-            s = take(waiting)
+            s = take()
             if s is None:
                 return
             run_suite(s, env, logs, stop, args.first_failure)
@@ -454,12 +444,6 @@ def run_queue(queue, env, logs, args, builds):
                 lock.notify_all()
 
     threads = [threading.Thread(target=worker) for _ in range(max(1, args.jobs))]
-    # A suite marked "# waits:" spends most of its wall time waiting on a
-    # terminal (tmux) or a queue (Slurm), its CPU under half its wall time:
-    # one more lane runs only such suites, so that a core is not left idle
-    # while one waits. It changes when a suite runs, never what it checks.
-    if lane:
-        threads.append(threading.Thread(target=worker, args=(True,)))
     for t in threads:
         t.start()
     for t in threads:
@@ -508,10 +492,8 @@ def report(done, left, builds, started, args):
         print("%s: %d passed, %d failed, %d skipped "
               "(not run here, not counted as passed)" % (b, p, f, k))
     cpu = sum(s.cpu for s in done if s.cpu is not None)
-    print("%d suites in %.0f s wall on %d jobs%s, %.0f s CPU" %
-          (len(done), wall, args.jobs,
-           " and a lane for the suites that wait"
-           if any(s.waits for s in done) else "", cpu))
+    print("%d suites in %.0f s wall on %d jobs, %.0f s CPU" %
+          (len(done), wall, args.jobs, cpu))
     return 0 if total_f == 0 and total_p > 0 and not left else 1
 
 

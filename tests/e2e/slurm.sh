@@ -16,7 +16,6 @@
 # reported as skipped with the reason, never as passed.
 # layers: study cli
 # lock: slurm
-# waits: on the Slurm queue, its CPU under half its wall time
 . "$(dirname "$0")/lib.sh"
 . "$(dirname "$0")/shard_lib.sh"
 

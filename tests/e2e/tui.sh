@@ -10,7 +10,6 @@
 # Every step polls the captured screen (no fixed sleeps); every tmux
 # server this script starts is killed on exit.
 # layers: tui
-# waits: on the terminal (tmux polls), its CPU under half its wall time
 . "$(dirname "$0")/lib.sh"
 
 . "$(dirname "$0")/tui_lib.sh"

@@ -12,7 +12,6 @@
 # Every truth comes from sqlite3 on the database, not from Facet.
 # Every step polls the captured screen (no fixed sleeps).
 # layers: tui
-# waits: on the terminal (tmux polls), its CPU under half its wall time
 . "$(dirname "$0")/lib.sh"
 
 . "$(dirname "$0")/tui_lib.sh"

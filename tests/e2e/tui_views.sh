@@ -10,7 +10,6 @@
 # arithmetic, never against Facet's own earlier output. Every step polls
 # the captured screen (no fixed sleeps).
 # layers: tui
-# waits: on the terminal (tmux polls), its CPU under half its wall time
 . "$(dirname "$0")/lib.sh"
 
 . "$(dirname "$0")/tui_lib.sh"
