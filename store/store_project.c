@@ -217,8 +217,11 @@ int store_option_surfaces_insert(struct store *store, int64_t run,
     int rc = store_prepare(store, sql, &s, doing, err);
     /* ... and its gaps and kinks as core holds them (quantity_stored) */
     values = store_held_columns(columns, sizeof columns, 1);
-    len = snprintf(sql, sizeof sql, "INSERT INTO option_surface_held"
-                   " (run, option, surface%s) VALUES (?1, ?2, ?3", columns);
+    /* Over any left by rows deleted without their foreign keys (sqlite3's
+     * shell has them off): a resume writes the option's surfaces again. */
+    len = snprintf(sql, sizeof sql, "INSERT OR REPLACE INTO"
+                   " option_surface_held (run, option, surface%s)"
+                   " VALUES (?1, ?2, ?3", columns);
     for (int k = 0; k < values; k++)
         len += snprintf(sql + len, sizeof sql - (size_t)len, ", ?%d", 4 + k);
     snprintf(sql + len, sizeof sql - (size_t)len, ")");
