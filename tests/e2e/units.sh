@@ -86,6 +86,12 @@ allowed = {
     ('core/search/optimize.h', 't_min_mm, t_max_mm;'),
     ('core/search/optimize.h', 't_step_mm;'),
     ('core/search/optimize.h', 'threshold_mm;'),
+    # A welding tolerance as the designer types it, in mm: --weld and the
+    # New run form's field share this one reading (seam_weld_parse), the
+    # one place it becomes the seams' metres.
+    ('core/project/seam.c', 'units_mm(SEAM_WELD_MIN)'),
+    ('core/project/seam.c', 'units_mm(SEAM_WELD_MAX)'),
+    ('core/project/seam.c', 'units_m_of_mm(mm)'),
 }
 for folder, _, files in sorted(os.walk(os.path.join(root, 'core'))):
     for name in sorted(files):
