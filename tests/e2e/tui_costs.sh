@@ -172,6 +172,9 @@ same "the options have panels, joints and DP moulds to price" \
 # Issue 32 item 1: at 80 columns the detail pane's cost is a sum that
 # adds up: its terms, as a reader adds them, are its total, and the total
 # is the option's cost as sqlite3 reads it, rounded to the dollar.
+# The run is done in the database before the table repaints: wait for the
+# pane (a sanitizer build paints late; CI read it blank once).
+wait_for '^ +No\. [0-9]+:' && wait_for '^ +cost [0-9,]+ USD'
 line=$(screen | grep -E '^ +cost [0-9,]+ USD' | head -n 1)
 selected=$(screen | grep -oE '^ +No\. [0-9]+:' | grep -oE '[0-9]+' | head -n 1)
 if [ -n "$line" ] && [ -n "$selected" ] && python3 - "$line" \
