@@ -97,7 +97,8 @@ check_rows "A by gap: 0s, its last column the seam's =s (no gap: level 0)" "0="
 check "the legend says what = means, and A's 3 seam joints (3 rows meet 3)" \
     ' = seam joint: its gap, 3 here'
 check "... and what ! means (a limit is set)" ' ! a seam joint over the limit'
-gap=$(q "select printf('%.2f', seam_max_gap * 1000) from options where run = 1")
+# seam_max_gap is in mm (schema v16)
+gap=$(q "select printf('%.2f', seam_max_gap) from options where run = 1")
 check "the building's seams line, sqlite3's seam gap ($gap mm)" " building: 1 seams, $gap mm"
 keys c
 check "c: by worst kink" 'by worst kink'
@@ -116,7 +117,7 @@ keys Enter
 check "its map shows third0" 'surface 1 of 3: third0'
 keys c c c ']' ']'
 check "third2, by gap" 'surface 3 of 3: third2 \(4 x 1\) .*by worst gap'
-over=$(q "select seam_gaps_over || ' ' || (seam_max_gap > 0.001) from options where run = 2")
+over=$(q "select seam_gaps_over || ' ' || (seam_max_gap > 1) from options where run = 2")
 if [ "$over" = "3 1" ]; then
     pass "sqlite3: the thirds' 3 seam joints are over the 1 mm gap limit"
 else
@@ -124,6 +125,10 @@ else
 fi
 check_rows "third2 by gap: ! over both rulings (its first and last columns), its panels between" "!d!"
 check "the legend: its 2 seam joints (one row at each ruling)" ' = seam joint: its gap, 2 here'
+# a seam gap that is not 0, so that a unit slip shows: mm, as sqlite3 has it
+gap=$(q "select printf('%.2f', seam_max_gap) from options where run = 2")
+check "the thirds' seams line, sqlite3's seam gap ($gap mm, over the 1 mm limit)" \
+    " building: [0-9]+ seams, ${gap//./\\.} mm"
 keys q q
 
 # The New run form's weld field (item 2).
