@@ -199,8 +199,10 @@ struct tui_screen *screen_compare_new(struct tui_app *app, int64_t run,
 struct tui_screen *screen_newrun_new(struct tui_app *app,
                                      const char *surface_path);
 /* New run "like this": the form filled in from run's settings with a
- * design space narrowed around option (U and V +-2, the threshold +-
- * one step, or +-0.5 mm, in quarter steps). */
+ * design space narrowed around option (U and V +-2, or a building's
+ * module +- one step of the run's; the threshold +- one step, or +-0.5
+ * mm, in quarter steps), with the run's objectives and, for a building,
+ * its files, surfaces' own grids and welding tolerance. */
 struct tui_screen *screen_newrun_like(struct tui_app *app,
                                       const struct run_info *run,
                                       const struct option_row *option);

@@ -17,7 +17,9 @@
  * evaluate and about how long that takes at the rate of the earlier runs
  * in the file. Ctrl-X stops the run (it stays resumable). "Like this"
  * (screen_newrun_like) fills the form from a run and one of its options,
- * with the space narrowed around the option. The other classification
+ * with the space narrowed around the option (a building's: its files,
+ * the module one step either way, its surfaces' own grids and its weld),
+ * and the run's objectives. The other classification
  * settings are the paper's defaults; facet optimize takes them all.
  */
 #include <limits.h>
@@ -688,6 +690,95 @@ struct tui_screen *screen_newrun_new(struct tui_app *app,
     return &s->base;
 }
 
+/* A module value as the form shows it: to the nanometre, as module_parse
+ * rounds it, so that 1.5 - 0.1 reads 1.4. */
+static void module_text(char *out, size_t size, double m)
+{
+    snprintf(out, size, "%.12g", round(m * 1e9) / 1e9);
+}
+
+/* One module side narrowed around value: one step of the run either way
+ * (the run's own step; the least module below), as "LO:HI:STEP". */
+static void module_side(char *out, size_t size, double value, double step)
+{
+    char lo[40], hi[40], by[40];
+    if (!(step >= MODULE_MIN))
+        step = MODULE_DEFAULT_STEP;
+    module_text(lo, sizeof lo, value - step >= MODULE_MIN ? value - step
+                                                          : value);
+    module_text(hi, sizeof hi, value + step);
+    module_text(by, sizeof by, step);
+    snprintf(out, size, "%s:%s:%s", lo, hi, by);
+}
+
+/* The building fields of the form from a project run and one of its
+ * options: its files in surface order (each once, comma-separated), the
+ * module one step either way, the surfaces' own grids and the welding
+ * tolerance the run had. FACET_EINPUT when the form cannot hold them (a
+ * file name with a comma among several, or too long a list). */
+static int like_building(struct newrun_screen *s, struct tui_app *app,
+                         const struct run_info *run,
+                         const struct option_row *option,
+                         struct facet_error *err)
+{
+    struct surface_row *rows = NULL;
+    size_t n = 0;
+    int rc = store_surfaces_get(app->store, run->id, &rows, &n, err);
+    if (rc != FACET_OK)
+        return rc;
+    char files[TUI_INPUT_MAX] = "", grids[TUI_INPUT_MAX] = "";
+    size_t nfiles = 0, used = 0, gused = 0;
+    for (size_t k = 0; k < n && rc == FACET_OK; k++) {
+        int seen = 0;
+        for (size_t j = 0; j < k && !seen; j++)
+            seen = strcmp(rows[j].file, rows[k].file) == 0;
+        if (!seen) {
+            if (strchr(rows[k].file, ',') != NULL && n > 1)
+                rc = facet_error_set(err, FACET_EINPUT,
+                    "%s: a comma in a file name of several", rows[k].file);
+            int w = snprintf(files + used, sizeof files - used, "%s%s",
+                             nfiles ? "," : "", rows[k].file);
+            if (rc == FACET_OK && (w < 0 || (size_t)w >= sizeof files - used))
+                rc = facet_error_set(err, FACET_EINPUT,
+                    "its %zu files do not fit the %s field", n,
+                    field_label[F_SURFACE]);
+            else if (rc == FACET_OK)
+                used += (size_t)w;
+            nfiles++;
+        }
+        if (rc == FACET_OK && rows[k].grid_nu > 0) {
+            if (strchr(rows[k].name, ',') != NULL)
+                rc = facet_error_set(err, FACET_EINPUT,
+                    "surface '%s' has its own grid and a comma in its name",
+                    rows[k].name);
+            int w = snprintf(grids + gused, sizeof grids - gused,
+                             "%s%s=%dx%d", gused ? "," : "", rows[k].name,
+                             rows[k].grid_nu, rows[k].grid_nv);
+            if (rc == FACET_OK && (w < 0 || (size_t)w >= sizeof grids - gused))
+                rc = facet_error_set(err, FACET_EINPUT,
+                    "the surfaces' own grids do not fit the %s field",
+                    field_label[F_GRIDS]);
+            else if (rc == FACET_OK)
+                gused += (size_t)w;
+        }
+    }
+    free(rows);
+    if (rc == FACET_OK && nfiles == 0)
+        rc = facet_error_set(err, FACET_EINPUT, "run %lld has no surfaces",
+                             (long long)run->id);
+    if (rc != FACET_OK)
+        return rc;
+    char width[128], height[128], module[260];
+    module_side(width, sizeof width, option->module_w, run->module_w_step);
+    module_side(height, sizeof height, option->module_h, run->module_h_step);
+    snprintf(module, sizeof module, "%sx%s", width, height);
+    tui_input_set(&s->field[F_SURFACE], files);
+    tui_input_set(&s->field[F_MODULE], module);
+    tui_input_set(&s->field[F_GRIDS], grids);
+    set_limit(s, F_WELD, run->weld_mm);
+    return FACET_OK;
+}
+
 struct tui_screen *screen_newrun_like(struct tui_app *app,
                                       const struct run_info *run,
                                       const struct option_row *option)
@@ -699,13 +790,17 @@ struct tui_screen *screen_newrun_like(struct tui_app *app,
     char text[128];
     tui_input_set(&s->field[F_UNITS],
                   store_run_setting_text(run, RUN_SETTING_UNITS));
-    /* the grid two panels either way, never below one panel */
-    int u0 = option->nu - 2 > 1 ? option->nu - 2 : 1;
-    int v0 = option->nv - 2 > 1 ? option->nv - 2 : 1;
-    snprintf(text, sizeof text, "%d:%d", u0, option->nu + 2);
-    tui_input_set(&s->field[F_U], text);
-    snprintf(text, sizeof text, "%d:%d", v0, option->nv + 2);
-    tui_input_set(&s->field[F_V], text);
+    /* the grid two panels either way, never below one panel (a
+     * building's option is a module, its nu and nv the module's indices:
+     * like_building below) */
+    if (!store_run_is_project(run)) {
+        int u0 = option->nu - 2 > 1 ? option->nu - 2 : 1;
+        int v0 = option->nv - 2 > 1 ? option->nv - 2 : 1;
+        snprintf(text, sizeof text, "%d:%d", u0, option->nu + 2);
+        tui_input_set(&s->field[F_U], text);
+        snprintf(text, sizeof text, "%d:%d", v0, option->nv + 2);
+        tui_input_set(&s->field[F_V], text);
+    }
     /* the threshold one step of the run either way (0.5 mm when it had
      * none), in quarter steps */
     double t = option->threshold_mm;
@@ -725,15 +820,28 @@ struct tui_screen *screen_newrun_like(struct tui_app *app,
     int rc = study_settings(run, &settings, &mesh, &flip, &err);
     if (rc == FACET_OK)
         set_classification(s, &settings.base, run);
+    /* the objectives the run ranked its options by */
+    tui_input_set(&s->field[F_OBJECTIVES], run->objectives);
+    if (store_run_is_project(run)) {
+        struct facet_error building;
+        if (like_building(s, app, run, option, &building) != FACET_OK) {
+            tui_error(app, "like No. %lld: %s", (long long)option->number,
+                      building.message);
+            return base;
+        }
+        s->focus = F_MODULE;
+    }
     snprintf(text, sizeof text, "like No. %lld of run %lld",
              (long long)option->number, (long long)run->id);
     tui_input_set(&s->field[F_NAME], text);
-    s->focus = F_U;
+    if (!store_run_is_project(run))
+        s->focus = F_U;
     if (rc != FACET_OK)
         tui_error(app, "like No. %lld: %s; prices and costs are the "
                   "defaults'", (long long)option->number, err.message);
     else
-        tui_status(app, "like No. %lld: U, V and t narrowed around it; F5 "
-                   "starts", (long long)option->number);
+        tui_status(app, "like No. %lld: %s and t narrowed around it; F5 "
+                   "starts", (long long)option->number,
+                   store_run_is_project(run) ? "the module" : "U, V");
     return base;
 }

@@ -875,10 +875,7 @@ static enum tui_result options_key(struct tui_screen *base,
                        (long long)s->model.run.id);
         return RESULT_HANDLED;
     case 'L':
-        if (o != NULL && store_run_is_project(&s->model.run))
-            tui_status(app, "like this: the New run form takes a single "
-                       "surface, not a project's modules yet");
-        else if (o != NULL)
+        if (o != NULL)
             tui_push(app, screen_newrun_like(app, &s->model.run, o));
         return RESULT_HANDLED;
     case 'E':

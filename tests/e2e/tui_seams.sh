@@ -19,7 +19,12 @@
 #     number, without a module) refused with a one-line message and no
 #     run made; the hinge 2 mm apart run from the form at weld 3 stores
 #     runs.weld_mm 3 and finds the seam (1 seam, gap the design's 2 mm),
-#     read with sqlite3.
+#     read with sqlite3;
+#   - "like this" (L) on a building's option fills the form with the
+#     run's files, the module one step either way, the surfaces' own
+#     grids, the weld and the objectives; the run it starts stores them
+#     (sqlite3), and its option of the same grids costs what the first
+#     run's did.
 # layers: tui
 . "$(dirname "$0")/lib.sh"
 
@@ -167,3 +172,48 @@ if [ "$seam" = "1 2.000000" ]; then
 else
     echo "not ok - ... and finds the faces 2 mm apart within it: 1 seam, gap 2 mm (got '$seam')"
 fi
+
+
+# "Like this" on a building's option (issue 31 item 4): a run with a weld,
+# its own grids and objectives that are not the defaults, from the CLI.
+"$FACET" optimize "$WORK/thirds.obj" --db "$WORK/s.db" --module 6.5:7.5:0.5x4:4 \
+    --grid third1=2x1,third2=4x1 --max-panel-area 100 --threshold 5000 \
+    --max-gap 1 --weld 2.5 --objectives cost,moulds --name liked \
+    --table 0 >/dev/null 2>&1 || exit 1
+liked=$(q "select id from runs where name = 'liked'")
+start 110 40 -- s.db
+check "the runs list the liked run" "^ +$liked done .*liked"
+keys End Enter
+check "the liked run opens" "^ Run $liked liked"
+keys L
+check "L opens the New run form like the option" '^ New run into'
+check "like this: the run's file" "^ Surface \(OBJ\) +$WORK/thirds\.obj\$"
+check "like this: the module one step of the run either way (0.5 m; 0.1 m, its default)" \
+    '^ Module W x H \(m\) +6:7:0\.5x3\.9:4\.1:0\.1$'
+check "like this: the surfaces' own grids" '^ Surface grids +third1=2x1,third2=4x1$'
+check "like this: the weld" '^ Seam weld \(mm\) +2\.5$'
+check "like this: the objectives" '^ Objectives +cost,moulds$'
+check "... and the form counts its modules (3 x 3) at 9 thresholds, not U x V" 'F5 starts: 81 options'
+keys F5
+check "the liked form's run starts" "^ Run $((liked + 1)) "
+i=0
+while [ $i -lt $((POLLS * 4)) ] &&
+    [ "$(q "select status from runs where id = $((liked + 1))")" != done ]; do
+    sleep 0.05; i=$((i + 1))
+done
+keys F10
+check_exit "the workbench quits cleanly after the liked run"
+same() {
+    if [ "$2" = "$3" ]; then pass "$1"; else echo "not ok - $1 (want '$3', got '$2')"; fi
+}
+same "sqlite3: the liked run's weld, objectives and module range" \
+    "$(q "select weld_mm, objectives, module_w_min, module_w_max, module_w_step, module_h_min, module_h_max, module_h_step from runs where id = $((liked + 1))")" \
+    "2.5|cost,moulds|6.0|7.0|0.5|3.9|4.1|0.1"
+same "sqlite3: the liked run's surfaces keep their own grids" \
+    "$(q "select group_concat(name || '=' || coalesce(grid_nu || 'x' || grid_nv, '-'), ',') from surfaces where run = $((liked + 1))")" \
+    "third0=-,third1=2x1,third2=4x1"
+# Modules that give every surface the same grids are one option (the
+# first of them stored): the liked option is the one of the same grids.
+same "sqlite3: its option of the liked grids and threshold costs what the liked one did" \
+    "$(q "select count(*) from options a join options b on b.run = $((liked + 1)) and b.threshold_mm = a.threshold_mm and b.cost = a.cost where a.run = $liked and a.number = 1 and (select group_concat(nu || 'x' || nv) from option_surfaces where run = a.run and option = a.number) = (select group_concat(nu || 'x' || nv) from option_surfaces where run = b.run and option = b.number)")" \
+    1
