@@ -91,7 +91,8 @@ static void runs_draw(struct tui_screen *base, struct tui_app *app,
     char header[256];
     snprintf(header, sizeof header, "%4s %-11s %-10s %8s %6s %11s %9s %s%s",
              "id", "status", "method", "options", "pareto", "best cost",
-             "elapsed", wide ? "started           " : "", "name / surface");
+             "elapsed", wide ? "weld mm started           " : "",
+             "name / surface");
     tui_fill(1, 0, width, tui_attr(ROLE_HEADER));
     tui_put(1, 0, width, tui_attr(ROLE_HEADER), header);
     int rows = height - 2;
@@ -109,19 +110,25 @@ static void runs_draw(struct tui_screen *base, struct tui_app *app,
         size_t k = s->top + (size_t)r;
         const struct run_info *run = &s->runs[k];
         char cost[32] = "-", elapsed[32], started[32], line[1400];
-        char status[32];
+        char status[32], weld[48] = "";
+        /* a building's welding tolerance, as facet runs shows it: "-"
+         * for none (a single surface, or a building before seams) */
+        if (wide && isfinite(run->weld_mm))
+            snprintf(weld, sizeof weld, "%7g %s", run->weld_mm, "");
+        else if (wide)
+            snprintf(weld, sizeof weld, "%7s ", "-");
         if (isfinite(run->best_cost))
             tui_fmt_number(cost, sizeof cost, run->best_cost, 0, 1);
         tui_fmt_elapsed(elapsed, sizeof elapsed, run->elapsed);
         tui_fmt_started(started, sizeof started, run->started);
         int n = snprintf(line, sizeof line,
-                         "%4lld %-11s %-10s %8lld %6lld %11s %9s %s%s",
+                         "%4lld %-11s %-10s %8lld %6lld %11s %9s %s%s%s",
                          (long long)run->id,
                          store_run_status_text(run, status, sizeof status),
                          store_run_setting_text(run, RUN_SETTING_METHOD),
                          (long long)run->options,
                          (long long)run->pareto_options, cost, elapsed,
-                         wide ? started : "", wide ? "  " : "");
+                         weld, wide ? started : "", wide ? "  " : "");
         /* the name, and the surface when it fits too (the name is the
          * one the user gave) */
         const struct tui_field names[] = {
