@@ -467,6 +467,12 @@ static const char schema_v16[] =
     " max_kink * 3.141592653589793 / 180,"
     " mean_kink * 3.141592653589793 / 180 FROM option_surfaces;";
 
+/* A held value from its column where its held row is missing
+ * (store_held_sql), by the arithmetic v16's migration filled option_held
+ * with. */
+const char store_held_from_mm_sql[] = "/ 1000";
+const char store_held_from_deg_sql[] = "* 3.141592653589793 / 180";
+
 static const char *const migrations[STORE_SCHEMA_VERSION] = {
     schema_v1,
     schema_v2,

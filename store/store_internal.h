@@ -82,6 +82,19 @@ int store_held_columns(char *sql, size_t size, int per_surface);
 void store_bind_held(sqlite3_stmt *stmt, int p,
                      const struct option_totals *t, int per_surface);
 
+/* The SELECT expression of quantity q (kept in mm or degrees, with its
+ * value as core holds it in held: option_held or option_surface_held,
+ * whose row is the one where match holds, e.g. "h.run = options.run AND
+ * h.option = options.number") into sql (size bytes): the held value, or
+ * where that row is missing (deleted in sqlite3's shell, whose foreign
+ * keys are off) the column of table converted back, the nearest double
+ * to it rather than a 'not measured' beside a number the column has. */
+void store_held_sql(char *sql, size_t size, const struct quantity *q,
+                    const char *held, const char *match, const char *table);
+/* Its SQL from mm and from degrees (schema.c, beside v16's migration). */
+extern const char store_held_from_mm_sql[];
+extern const char store_held_from_deg_sql[];
+
 /* Reads result column col into field as q holds it: NULL is NaN for a
  * double and TOTALS_UNKNOWN for a count (not measured, or a column added
  * after the row was stored; never 0). */

@@ -36,10 +36,11 @@ static int option_columns_sql(char *sql, size_t size, int insert)
             continue;
         /* A gap or kink is read as core holds it, from option_held
          * (quantity_stored); the table's column has it in mm or degrees. */
-        char held[160];
-        snprintf(held, sizeof held, "(SELECT h.%s FROM option_held h"
-                 " WHERE h.run = options.run AND h.option = options.number)",
-                 c->name);
+        char held[320];
+        if (!insert && c->stored != STORED_AS_HELD)
+            store_held_sql(held, sizeof held, c, "option_held",
+                           "h.run = options.run AND h.option = options.number",
+                           "options");
         const char *sql_of = !insert && strcmp(c->name, "rank") == 0
                                  ? store_rank_sql
                              : !insert && c->stored != STORED_AS_HELD
@@ -53,7 +54,7 @@ static int option_columns_sql(char *sql, size_t size, int insert)
 }
 
 /* Room for the SQL of every column, with room to grow. */
-#define OPTION_COLUMNS_SQL 4096
+#define OPTION_COLUMNS_SQL 8192
 
 static int is_module_column(const struct quantity *c)
 {
@@ -80,6 +81,19 @@ static void option_bind(sqlite3_stmt *s, int64_t run,
         else
             store_bind_quantity(s, p++, c, field);
     }
+}
+
+void store_held_sql(char *sql, size_t size, const struct quantity *q,
+                    const char *held, const char *match, const char *table)
+{
+    assert(q->stored != STORED_AS_HELD);
+    const char *back = q->stored == STORED_MM ? store_held_from_mm_sql
+                                              : store_held_from_deg_sql;
+    int n = snprintf(sql, size, "coalesce((SELECT h.%s FROM %s h WHERE %s),"
+                     " %s.%s %s)", q->name, held, match, table, q->name,
+                     back);
+    assert(n > 0 && (size_t)n < size);
+    (void)n;
 }
 
 int store_held_columns(char *sql, size_t size, int per_surface)

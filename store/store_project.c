@@ -183,13 +183,15 @@ static int surface_columns_sql(char *sql, size_t size, int select)
         if (!q->per_surface)
             continue;
         assert(quantity_in_totals(q));
-        if (select && q->stored != STORED_AS_HELD)
-            len += (size_t)snprintf(sql + len, size - len,
-                ", (SELECT h.%s FROM option_surface_held h"
-                " WHERE h.run = option_surfaces.run"
-                " AND h.option = option_surfaces.option"
-                " AND h.surface = option_surfaces.surface)", q->name);
-        else
+        if (select && q->stored != STORED_AS_HELD) {
+            char held[400];
+            store_held_sql(held, sizeof held, q, "option_surface_held",
+                           "h.run = option_surfaces.run"
+                           " AND h.option = option_surfaces.option"
+                           " AND h.surface = option_surfaces.surface",
+                           "option_surfaces");
+            len += (size_t)snprintf(sql + len, size - len, ", %s", held);
+        } else
             len += (size_t)snprintf(sql + len, size - len, ", %s", q->name);
         assert(len < size);
         n++;
@@ -197,7 +199,7 @@ static int surface_columns_sql(char *sql, size_t size, int select)
     return n;
 }
 
-#define SURFACE_COLUMNS_SQL 2048
+#define SURFACE_COLUMNS_SQL 4096
 
 int store_option_surfaces_insert(struct store *store, int64_t run,
                                  int64_t number,

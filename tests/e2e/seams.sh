@@ -162,6 +162,35 @@ same "max_gap and seam_max_gap, max_kink and seam_max_kink are one number in one
     "$(q thirds.db 'SELECT max_gap = seam_max_gap, max_kink = seam_max_kink, max_gap > 100 FROM options')" "1|1|1"
 same "the columns users query are SQLite's own mm and degrees of the m and rad Facet keeps (option_held)" \
     "$(q thirds.db 'SELECT o.seam_max_gap = h.seam_max_gap * 1000, o.seam_max_kink = h.seam_max_kink * 180 / pi(), o.seam_max_crease IS h.seam_max_crease * 180 / pi(), o.max_gap = h.max_gap * 1000, o.max_kink = h.max_kink * 180 / pi() FROM options o JOIN option_held h ON h.run = o.run AND h.option = o.number')" "1|1|1|1|1"
+# Held rows deleted in sqlite3's shell (its foreign keys are off): Facet
+# reads each gap and kink back from the column, sqlite3's own mm and
+# degrees of it (within 1e-12), never a 'not measured' beside a number
+# the column has; per surface too, as show's table prints them.
+# (two of the thirds cut further, so that their own joints have gaps)
+expect "optimize the thirds, two of them cut in 2 and 4" 0 \
+    "$FACET" optimize thirds.obj --db noheld.db --module 7:7x4:4 --grid third1=2x1,third2=4x1 --max-panel-area 100 --threshold 5000 --table 0
+sqlite3 noheld.db "DELETE FROM option_held; DELETE FROM option_surface_held"
+json=$("$FACET" options noheld.db --json 2>&1)
+cols=$(q noheld.db "SELECT max_gap, mean_gap, max_kink, mean_kink, seam_max_gap, seam_max_kink FROM options")
+if /usr/bin/python3 - "$json" "$cols" <<'PY'
+import json, sys
+o = json.loads(sys.argv[1])[0]
+want = [float(x) for x in sys.argv[2].split("|")]
+names = ["max_gap", "mean_gap", "max_kink", "mean_kink", "seam_max_gap", "seam_max_kink"]
+bad = [(n, o[n], w) for n, w in zip(names, want)
+       if o[n] is None or abs(o[n] - w) > 1e-12 * max(1, abs(w))]
+if bad:
+    sys.exit("off: %r" % bad)
+PY
+then
+    pass "without held rows, options --json has each gap and kink the column has"
+else
+    echo "not ok - without held rows, options --json has each gap and kink the column has"
+fi
+surface_gaps=$(q noheld.db "SELECT group_concat(printf('%.2f', max_gap), ' ') FROM option_surfaces WHERE max_gap > 0")
+shown=$("$FACET" show noheld.db --run 1 --option 1 2>&1 | awk '$1 ~ /^third[12]$/ { printf "%s%s", sep, $(NF-1); sep = " " }')
+same "... and show's surfaces their max gap as the column has it ($surface_gaps mm)" "$shown" "$surface_gaps"
+
 # A v15 file (the seams in m and rad) migrated by facet migrate: the seams'
 # columns are sqlite3's own mm and degrees of the old file's, the options'
 # own mm and degrees as they were, and Facet shows the same seams as the
