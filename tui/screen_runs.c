@@ -88,10 +88,13 @@ static void runs_draw(struct tui_screen *base, struct tui_app *app,
              " Facet runs  %s  (%zu run%s)", app->db_path, s->n,
              s->n == 1 ? "" : "s");
     int wide = width >= 100;
+    /* the weld only where the names keep the room they have at 100 */
+    int wider = width >= 120;
     char header[256];
     snprintf(header, sizeof header, "%4s %-11s %-10s %8s %6s %11s %9s %s%s",
              "id", "status", "method", "options", "pareto", "best cost",
-             "elapsed", wide ? "weld mm started           " : "",
+             "elapsed", wider ? "weld mm started           "
+                        : wide ? "started           " : "",
              "name / surface");
     tui_fill(1, 0, width, tui_attr(ROLE_HEADER));
     tui_put(1, 0, width, tui_attr(ROLE_HEADER), header);
@@ -113,9 +116,9 @@ static void runs_draw(struct tui_screen *base, struct tui_app *app,
         char status[32], weld[48] = "";
         /* a building's welding tolerance, as facet runs shows it: "-"
          * for none (a single surface, or a building before seams) */
-        if (wide && isfinite(run->weld_mm))
+        if (wider && isfinite(run->weld_mm))
             snprintf(weld, sizeof weld, "%7g %s", run->weld_mm, "");
-        else if (wide)
+        else if (wider)
             snprintf(weld, sizeof weld, "%7s ", "-");
         if (isfinite(run->best_cost))
             tui_fmt_number(cost, sizeof cost, run->best_cost, 0, 1);

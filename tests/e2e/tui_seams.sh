@@ -181,9 +181,9 @@ fi
     --max-gap 1 --weld 2.5 --objectives cost,moulds --name liked \
     --table 0 >/dev/null 2>&1 || exit 1
 liked=$(q "select id from runs where name = 'liked'")
-start 110 40 -- s.db
+start 120 40 -- s.db
 check "the runs list the liked run" "^ +$liked done .*liked"
-check "the runs list has a weld column at 110 columns" '^ +id status .* elapsed weld mm started'
+check "the runs list has a weld column at 120 columns" '^ +id status .* elapsed weld mm started'
 w=$(q "select printf('%g', weld_mm) from runs where id = $liked")
 check "... and the liked run's weld in it, as sqlite3 has it ($w mm)" \
     "^ +$liked done .* s +${w//./\\.} 20[0-9][0-9]-"
