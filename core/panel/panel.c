@@ -644,13 +644,16 @@ int panels_curvature_range(const struct panel_grid *g,
                 int n = out->cell_panel[(size_t)j * g->nu + i];
                 if (n < 0)
                     continue;
+                /* Neither o nor r is ever NaN (r's NaNs were left out),
+                 * so larger(o, x) is x > o ? x : o, ties kept as o: one
+                 * maxsd or minsd, without larger's NaN branch. */
                 double *o = over + 6 * (size_t)n;
-                o[0] = larger(o[0], r->k1_low);
-                o[1] = larger(o[1], r->k1_high);
-                o[2] = smaller(o[2], r->k2_low);
-                o[3] = smaller(o[3], r->k2_high);
-                o[4] = larger(o[4], r->e1);
-                o[5] = larger(o[5], r->e2);
+                o[0] = r->k1_low > o[0] ? r->k1_low : o[0];
+                o[1] = r->k1_high > o[1] ? r->k1_high : o[1];
+                o[2] = r->k2_low < o[2] ? r->k2_low : o[2];
+                o[3] = r->k2_high < o[3] ? r->k2_high : o[3];
+                o[4] = r->e1 > o[4] ? r->e1 : o[4];
+                o[5] = r->e2 > o[5] ? r->e2 : o[5];
             }
     }
     for (size_t n = 0; n < out->npanels; n++) {
