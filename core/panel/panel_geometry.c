@@ -160,12 +160,59 @@ struct edge {
     size_t a, b;
 };
 
-static int compare_edge(const void *x, const void *y)
+/* Whether edge e sorts before f: by start, then end. */
+static inline int edge_before(const struct edge *e, const struct edge *f)
 {
-    const struct edge *e = x, *f = y;
-    if (e->a != f->a)
-        return e->a < f->a ? -1 : 1;
-    return e->b < f->b ? -1 : e->b > f->b;
+    return e->a != f->a ? e->a < f->a : e->b < f->b;
+}
+
+/* Sorts edges[0..n) by edge_before, as sort_buckets sorts its keys (and
+ * for the same reason: qsort's call a comparison). Equal edges are equal
+ * structs, so their order is no matter. */
+static void sort_edges(struct edge *edges, size_t n)
+{
+    while (n > 16) {
+        size_t mid = n / 2;
+        struct edge t;
+        if (edge_before(&edges[mid], &edges[0])) {
+            t = edges[mid]; edges[mid] = edges[0]; edges[0] = t;
+        }
+        if (edge_before(&edges[n - 1], &edges[mid])) {
+            t = edges[mid]; edges[mid] = edges[n - 1]; edges[n - 1] = t;
+            if (edge_before(&edges[mid], &edges[0])) {
+                t = edges[mid]; edges[mid] = edges[0]; edges[0] = t;
+            }
+        }
+        struct edge pivot = edges[mid];
+        size_t i = 0, j = n - 1;
+        for (;;) {
+            while (edge_before(&edges[i], &pivot))
+                i++;
+            while (edge_before(&pivot, &edges[j]))
+                j--;
+            if (i >= j)
+                break;
+            t = edges[i]; edges[i] = edges[j]; edges[j] = t;
+            i++;
+            j--;
+        }
+        size_t left = j + 1;
+        if (left < n - left) {
+            sort_edges(edges, left);
+            edges += left;
+            n -= left;
+        } else {
+            sort_edges(edges + left, n - left);
+            n = left;
+        }
+    }
+    for (size_t i = 1; i < n; i++) {
+        struct edge x = edges[i];
+        size_t j = i;
+        for (; j > 0 && edge_before(&x, &edges[j - 1]); j--)
+            edges[j] = edges[j - 1];
+        edges[j] = x;
+    }
 }
 
 /* How many of edges[0..n) (sorted) are (a, b). */
@@ -324,7 +371,7 @@ static void trace_outline(struct panel_geometry *g, size_t n,
             nedges++;
         }
     }
-    qsort(s->edges, nedges, sizeof *s->edges, compare_edge);
+    sort_edges(s->edges, nedges);
     /* An edge is on the outline as often as it is not matched the other
      * way round by a neighbouring piece. */
     size_t nboundary = 0;
