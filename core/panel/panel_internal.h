@@ -46,8 +46,12 @@ static inline int panel_cell_coordinate(double x, double origin, double step,
                                         int count)
 {
     assert(count >= 1 && step > 0);
-    double f = floor((x - origin) / step);
-    if (!(f > 0))
+    /* floor without its call or its rounding sequence (a tenth of the
+     * paper study's instructions, issue 27): below 1 (and NaN) the cell
+     * is 0, at count or above it is count - 1 (count is whole), and in
+     * between the conversion's truncation is floor. */
+    double f = (x - origin) / step;
+    if (!(f >= 1))
         return 0;
     if (f >= count)
         return count - 1;
