@@ -563,17 +563,56 @@ int panels_build(const struct mesh *mesh, const struct uv_index *index,
     panels_finish(mode, samples, outlines, out);
     free(samples);
     free(outlines);
-    if (panels_curvature_range(&grid, curvature, mode, out) != FACET_OK)
+    struct triangle_curvature_range *ranges;
+    rc = triangle_curvature_ranges(mesh, curvature, &ranges);
+    if (rc == FACET_OK)
+        rc = panels_curvature_range(&grid, ranges, mode, out);
+    free(ranges);
+    if (rc != FACET_OK)
         return facet_error_set(err, FACET_EWORK, "out of memory (panels)");
     return FACET_OK;
 }
 
+int triangle_curvature_ranges(const struct mesh *mesh,
+                              const struct curvature *curvature,
+                              struct triangle_curvature_range **out)
+{
+    *out = NULL;
+    if (curvature->k1_error == NULL || curvature->k2_error == NULL)
+        return FACET_OK;
+    const double c = CURVATURE_ERROR_SIGMAS;
+    size_t nt = mesh->ntriangles;
+    struct triangle_curvature_range *range =
+        malloc((nt ? nt : 1) * sizeof *range);
+    if (range == NULL)
+        return FACET_EWORK;
+    for (size_t t = 0; t < nt; t++) {
+        struct triangle_curvature_range r = {-INFINITY, -INFINITY, INFINITY,
+                                             INFINITY, -INFINITY, -INFINITY};
+        const uint32_t *tri = mesh->triangle + 3 * t;
+        for (int k = 0; k < 3; k++) {
+            uint32_t v = tri[k];
+            double k1 = curvature->k1[v], k2 = curvature->k2[v];
+            double e1 = c * curvature->k1_error[v];
+            double e2 = c * curvature->k2_error[v];
+            r.k1_low = larger(r.k1_low, k1 - e1);
+            r.k1_high = larger(r.k1_high, k1 + e1);
+            r.k2_low = smaller(r.k2_low, k2 - e2);
+            r.k2_high = smaller(r.k2_high, k2 + e2);
+            r.e1 = larger(r.e1, e1);
+            r.e2 = larger(r.e2, e2);
+        }
+        range[t] = r;
+    }
+    *out = range;
+    return FACET_OK;
+}
+
 int panels_curvature_range(const struct panel_grid *g,
-                           const struct curvature *curvature,
+                           const struct triangle_curvature_range *ranges,
                            enum panel_curvature_mode mode,
                            struct panelization *out)
 {
-    const double c = CURVATURE_ERROR_SIGMAS;
     /* per panel: the extremes of k1 -+ c e1 and k2 -+ c e2 over the
      * vertices, and the largest c e1, c e2 (for the mean mode) */
     double *over = malloc(6 * (out->npanels ? out->npanels : 1) *
@@ -587,8 +626,7 @@ int panels_curvature_range(const struct panel_grid *g,
         o[4] = o[5] = 0;          /* max of c e1, of c e2 */
     }
     const struct mesh *mesh = g->mesh;
-    for (size_t t = 0; curvature->k1_error && curvature->k2_error &&
-                       t < mesh->ntriangles; t++) {
+    for (size_t t = 0; ranges != NULL && t < mesh->ntriangles; t++) {
         const double *uv = g->index->uv + 6 * t;
         double u0 = smaller(uv[0], smaller(uv[2], uv[4]));
         double u1 = larger(uv[0], larger(uv[2], uv[4]));
@@ -596,7 +634,7 @@ int panels_curvature_range(const struct panel_grid *g,
         double v1 = larger(uv[1], larger(uv[3], uv[5]));
         if (!isfinite(u0 + u1 + v0 + v1))
             continue;
-        const uint32_t *tri = mesh->triangle + 3 * t;
+        const struct triangle_curvature_range *r = &ranges[t];
         int i0 = panel_cell_coordinate(u0, g->umin, g->du, g->nu);
         int i1 = panel_cell_coordinate(u1, g->umin, g->du, g->nu);
         int j0 = panel_cell_coordinate(v0, g->vmin, g->dv, g->nv);
@@ -606,19 +644,16 @@ int panels_curvature_range(const struct panel_grid *g,
                 int n = out->cell_panel[(size_t)j * g->nu + i];
                 if (n < 0)
                     continue;
+                /* Neither o nor r is ever NaN (r's NaNs were left out),
+                 * so larger(o, x) is x > o ? x : o, ties kept as o: one
+                 * maxsd or minsd, without larger's NaN branch. */
                 double *o = over + 6 * (size_t)n;
-                for (int k = 0; k < 3; k++) {
-                    uint32_t v = tri[k];
-                    double k1 = curvature->k1[v], k2 = curvature->k2[v];
-                    double e1 = c * curvature->k1_error[v];
-                    double e2 = c * curvature->k2_error[v];
-                    o[0] = larger(o[0], k1 - e1);
-                    o[1] = larger(o[1], k1 + e1);
-                    o[2] = smaller(o[2], k2 - e2);
-                    o[3] = smaller(o[3], k2 + e2);
-                    o[4] = larger(o[4], e1);
-                    o[5] = larger(o[5], e2);
-                }
+                o[0] = r->k1_low > o[0] ? r->k1_low : o[0];
+                o[1] = r->k1_high > o[1] ? r->k1_high : o[1];
+                o[2] = r->k2_low < o[2] ? r->k2_low : o[2];
+                o[3] = r->k2_high < o[3] ? r->k2_high : o[3];
+                o[4] = r->e1 > o[4] ? r->e1 : o[4];
+                o[5] = r->e2 > o[5] ? r->e2 : o[5];
             }
     }
     for (size_t n = 0; n < out->npanels; n++) {

@@ -208,6 +208,8 @@ struct panel_prep_point;     /* a point's position and curvature */
 struct panel_prep_triangle;  /* a triangle's area, UV area, centroid,
                                 central second moment and area-weighted
                                 normal */
+struct triangle_curvature_range;  /* a triangle's vertices' curvature
+                                     extremes (panel_internal.h) */
 struct panel_prep {
     const struct mesh *mesh;            /* borrowed, as are index and */
     const struct uv_index *index;       /* curvature: they must outlive */
@@ -218,6 +220,9 @@ struct panel_prep {
     uint32_t *corner;                   /* #T x 3: the points of each
                                            triangle's corners */
     struct panel_prep_triangle *triangle;  /* #T */
+    struct triangle_curvature_range *curvature_range;  /* #T, NULL when
+                                                          curvature holds
+                                                          no errors */
 };
 
 /* Computes the per-surface sums of mesh, whose UV lookup is index and

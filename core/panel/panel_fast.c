@@ -5,7 +5,8 @@
  *
  * Once per surface: the distinct (vertex, UV) corners ("points") with their
  * position and curvature, and per triangle its area, UV area, centroid,
- * second moment about the centroid and area-weighted normal.
+ * second moment about the centroid, area-weighted normal and its
+ * vertices' curvature extremes (panels_curvature_range's).
  *
  * Per grid, pass 1: each point's cell, once; a triangle whose corners share
  * a cell adds its sums to the cell's in O(1); one that crosses a line is
@@ -108,6 +109,9 @@ int panel_prep_build(const struct mesh *mesh, const struct uv_index *index,
     }
     free(head);
     free(next);
+    if (triangle_curvature_ranges(mesh, curvature, &out->curvature_range) !=
+        FACET_OK)
+        return facet_error_set(err, FACET_EWORK, "out of memory (panels)");
     size_t kept = out->npoints ? out->npoints : 1;
     struct panel_prep_point *shrunk =
         realloc(out->point, kept * sizeof *out->point);
@@ -126,6 +130,7 @@ void panel_prep_free(struct panel_prep *prep)
     free(prep->point);
     free(prep->corner);
     free(prep->triangle);
+    free(prep->curvature_range);
     memset(prep, 0, sizeof *prep);
 }
 
@@ -547,8 +552,8 @@ int panels_build_fast_stoppable(const struct panel_prep *prep,
         rc = facet_stop_check(stop, err);
     if (rc == FACET_OK) {
         panels_finish(mode, samples, outlines, out);
-        if (panels_curvature_range(&grid, prep->curvature, mode, out) !=
-            FACET_OK)
+        if (panels_curvature_range(&grid, prep->curvature_range, mode,
+                                   out) != FACET_OK)
             rc = facet_error_set(err, FACET_EWORK, "out of memory (panels)");
     }
     free(samples);

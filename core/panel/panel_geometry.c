@@ -77,28 +77,81 @@ struct bucket_key {
     size_t k;          /* raw vertex */
 };
 
-static int compare_bucket(const void *a, const void *b)
+/* Whether x sorts before y: by bucket, then raw vertex (a total order,
+ * so every sort gives the same order). */
+static inline int bucket_before(const struct bucket_key *x,
+                                const struct bucket_key *y)
 {
-    const struct bucket_key *x = a, *y = b;
     if (x->qu != y->qu)
-        return x->qu < y->qu ? -1 : 1;
+        return x->qu < y->qu;
     if (x->qv != y->qv)
-        return x->qv < y->qv ? -1 : 1;
-    return x->k < y->k ? -1 : x->k > y->k;
+        return x->qv < y->qv;
+    return x->k < y->k;
 }
 
-/* The first key at or after (qu, qv) in keys[0..n). */
-static size_t lower_bound(const struct bucket_key *keys, size_t n,
-                          int64_t qu, int64_t qv)
+/* Sorts keys[0..n) by bucket_before. qsort's call through a pointer per
+ * comparison was a fifth of the panels' widths in the paper study (issue
+ * 27): a quicksort of its own, median of three, insertion below 16. */
+static void sort_buckets(struct bucket_key *keys, size_t n)
 {
-    size_t lo = 0, hi = n;
-    while (lo < hi) {
-        size_t mid = lo + (hi - lo) / 2;
-        if (keys[mid].qu < qu || (keys[mid].qu == qu && keys[mid].qv < qv))
-            lo = mid + 1;
-        else
-            hi = mid;
+    while (n > 16) {
+        size_t mid = n / 2;
+        struct bucket_key t;
+        if (bucket_before(&keys[mid], &keys[0])) {
+            t = keys[mid]; keys[mid] = keys[0]; keys[0] = t;
+        }
+        if (bucket_before(&keys[n - 1], &keys[mid])) {
+            t = keys[mid]; keys[mid] = keys[n - 1]; keys[n - 1] = t;
+            if (bucket_before(&keys[mid], &keys[0])) {
+                t = keys[mid]; keys[mid] = keys[0]; keys[0] = t;
+            }
+        }
+        struct bucket_key pivot = keys[mid];
+        size_t i = 0, j = n - 1;
+        for (;;) {
+            while (bucket_before(&keys[i], &pivot))
+                i++;
+            while (bucket_before(&pivot, &keys[j]))
+                j--;
+            if (i >= j)
+                break;
+            t = keys[i]; keys[i] = keys[j]; keys[j] = t;
+            i++;
+            j--;
+        }
+        /* [0, j] <= pivot <= [j + 1, n): the smaller side first, the
+         * larger by the loop, so the stack stays O(log n). */
+        size_t left = j + 1;
+        if (left < n - left) {
+            sort_buckets(keys, left);
+            keys += left;
+            n -= left;
+        } else {
+            sort_buckets(keys + left, n - left);
+            n = left;
+        }
     }
+    for (size_t i = 1; i < n; i++) {
+        struct bucket_key x = keys[i];
+        size_t j = i;
+        for (; j > 0 && bucket_before(&x, &keys[j - 1]); j--)
+            keys[j] = keys[j - 1];
+        keys[j] = x;
+    }
+}
+
+/* The first key at or after (qu, qv) in keys[0..n), searched forward from
+ * *from, which it leaves there: the keys are sorted, so a caller whose
+ * (qu, qv) never decreases walks each key once in all, where a binary
+ * search a vertex was a third of the merge (issue 27). */
+static size_t lower_bound_from(const struct bucket_key *keys, size_t n,
+                               int64_t qu, int64_t qv, size_t *from)
+{
+    size_t lo = *from;
+    while (lo < n &&
+           (keys[lo].qu < qu || (keys[lo].qu == qu && keys[lo].qv < qv)))
+        lo++;
+    *from = lo;
     return lo;
 }
 
@@ -107,12 +160,59 @@ struct edge {
     size_t a, b;
 };
 
-static int compare_edge(const void *x, const void *y)
+/* Whether edge e sorts before f: by start, then end. */
+static inline int edge_before(const struct edge *e, const struct edge *f)
 {
-    const struct edge *e = x, *f = y;
-    if (e->a != f->a)
-        return e->a < f->a ? -1 : 1;
-    return e->b < f->b ? -1 : e->b > f->b;
+    return e->a != f->a ? e->a < f->a : e->b < f->b;
+}
+
+/* Sorts edges[0..n) by edge_before, as sort_buckets sorts its keys (and
+ * for the same reason: qsort's call a comparison). Equal edges are equal
+ * structs, so their order is no matter. */
+static void sort_edges(struct edge *edges, size_t n)
+{
+    while (n > 16) {
+        size_t mid = n / 2;
+        struct edge t;
+        if (edge_before(&edges[mid], &edges[0])) {
+            t = edges[mid]; edges[mid] = edges[0]; edges[0] = t;
+        }
+        if (edge_before(&edges[n - 1], &edges[mid])) {
+            t = edges[mid]; edges[mid] = edges[n - 1]; edges[n - 1] = t;
+            if (edge_before(&edges[mid], &edges[0])) {
+                t = edges[mid]; edges[mid] = edges[0]; edges[0] = t;
+            }
+        }
+        struct edge pivot = edges[mid];
+        size_t i = 0, j = n - 1;
+        for (;;) {
+            while (edge_before(&edges[i], &pivot))
+                i++;
+            while (edge_before(&pivot, &edges[j]))
+                j--;
+            if (i >= j)
+                break;
+            t = edges[i]; edges[i] = edges[j]; edges[j] = t;
+            i++;
+            j--;
+        }
+        size_t left = j + 1;
+        if (left < n - left) {
+            sort_edges(edges, left);
+            edges += left;
+            n -= left;
+        } else {
+            sort_edges(edges + left, n - left);
+            n = left;
+        }
+    }
+    for (size_t i = 1; i < n; i++) {
+        struct edge x = edges[i];
+        size_t j = i;
+        for (; j > 0 && edge_before(&x, &edges[j - 1]); j--)
+            edges[j] = edges[j - 1];
+        edges[j] = x;
+    }
 }
 
 /* How many of edges[0..n) (sorted) are (a, b). */
@@ -169,17 +269,20 @@ static size_t merge_vertices(const struct raw *r, size_t v0, size_t v1,
         s->root[k] = SIZE_MAX;
         s->number[k] = SIZE_MAX;
     }
-    qsort(s->keys, m, sizeof *s->keys, compare_bucket);
+    sort_buckets(s->keys, m);
     /* Each vertex joins the cluster of a vertex already seen within
      * tolerance in its own or a neighbouring bucket, or starts one. A
      * root's label is itself, so labels never chain. */
+    /* Where the bucket rows qu - 1, qu and qu + 1 start from qv - 1:
+     * (qu + d, qv - 1) grows with x. */
+    size_t from[3] = {0, 0, 0};
     for (size_t x = 0; x < m; x++) {
         size_t k = s->keys[x].k;
         const double *uv = &r->uv[2 * (v0 + k)];
         size_t root = k;
         for (int64_t d = -1; d <= 1 && root == k; d++) {
-            size_t y = lower_bound(s->keys, m, s->keys[x].qu + d,
-                                   s->keys[x].qv - 1);
+            size_t y = lower_bound_from(s->keys, m, s->keys[x].qu + d,
+                                        s->keys[x].qv - 1, &from[d + 1]);
             for (; y < m && s->keys[y].qu == s->keys[x].qu + d &&
                    s->keys[y].qv <= s->keys[x].qv + 1; y++) {
                 size_t other = s->keys[y].k;
@@ -268,7 +371,7 @@ static void trace_outline(struct panel_geometry *g, size_t n,
             nedges++;
         }
     }
-    qsort(s->edges, nedges, sizeof *s->edges, compare_edge);
+    sort_edges(s->edges, nedges);
     /* An edge is on the outline as often as it is not matched the other
      * way round by a neighbouring piece. */
     size_t nboundary = 0;

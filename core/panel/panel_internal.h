@@ -46,8 +46,12 @@ static inline int panel_cell_coordinate(double x, double origin, double step,
                                         int count)
 {
     assert(count >= 1 && step > 0);
-    double f = floor((x - origin) / step);
-    if (!(f > 0))
+    /* floor without its call or its rounding sequence (a tenth of the
+     * paper study's instructions, issue 27): below 1 (and NaN) the cell
+     * is 0, at count or above it is count - 1 (count is whole), and in
+     * between the conversion's truncation is floor. */
+    double f = (x - origin) / step;
+    if (!(f >= 1))
         return 0;
     if (f >= count)
         return count - 1;
@@ -449,6 +453,27 @@ void panels_finish(enum panel_curvature_mode mode,
                    const struct cell_outline *outlines,
                    struct panelization *out);
 
+/* What panels_curvature_range takes of one mesh triangle: over its three
+ * vertices, with e1 = c k1_error and e2 = c k2_error (c
+ * CURVATURE_ERROR_SIGMAS), the largest k1 - e1 and k1 + e1, the least
+ * k2 - e2 and k2 + e2, and the largest e1 and e2 (-INFINITY, INFINITY
+ * and -INFINITY where every vertex's is NaN). They depend on the mesh
+ * alone, so a prepared surface keeps them (panel_prep_build) and every
+ * grid reads six numbers a triangle in order rather than twelve from its
+ * vertices: that scan was 18 % of the paper's study (issue 27). */
+struct triangle_curvature_range {
+    double k1_low, k1_high;  /* 1/m */
+    double k2_low, k2_high;  /* 1/m */
+    double e1, e2;           /* 1/m */
+};
+
+/* The ranges of every triangle of mesh (#T, malloc'd, the caller's to
+ * free) into *out, or NULL when curvature holds no errors (nothing to
+ * range). Returns FACET_OK, or FACET_EWORK when out of memory. */
+int triangle_curvature_ranges(const struct mesh *mesh,
+                              const struct curvature *curvature,
+                              struct triangle_curvature_range **out);
+
 /* Sets each panel's k1_error and k2_error (panel.h) to the range each is
  * known to: by the paper's
  * extremes, k1's range is from the largest k1 - c e1 to the largest k1 +
@@ -464,9 +489,14 @@ void panels_finish(enum panel_curvature_mode mode,
  * where a triangle only touches the cell. By the mean (mode), and for a
  * panel with no such vertex, each is its k give or take the largest c e.
  * The same for every way of building panels, as it reads the mesh and
- * grid alone. Returns FACET_OK, or FACET_EWORK when out of memory. */
+ * grid alone: ranges are the triangles' (triangle_curvature_ranges; NULL:
+ * no errors known, each panel's range 0). The extremes of the triangles'
+ * extremes are the vertices' to the bit: fmax and fmin keep the first of
+ * equal values (+0, -0), so a running extreme ends at the first value no
+ * other exceeds, however the values are grouped. Returns FACET_OK, or
+ * FACET_EWORK when out of memory. */
 int panels_curvature_range(const struct panel_grid *g,
-                           const struct curvature *curvature,
+                           const struct triangle_curvature_range *ranges,
                            enum panel_curvature_mode mode,
                            struct panelization *out);
 

@@ -414,7 +414,7 @@ int panels_build_lattice_stoppable(const struct panel_lattice *L, int nu,
     if ((rc = facet_stop_check(stop, err)) != FACET_OK)
         goto done;
     panels_finish(PANEL_EXTREMES, samples, outlines, out);
-    if (panels_curvature_range(&grid, prep->curvature,
+    if (panels_curvature_range(&grid, prep->curvature_range,
                                PANEL_EXTREMES, out) != FACET_OK)
         rc = facet_error_set(err, FACET_EWORK, "out of memory (panels)");
 done:

@@ -529,6 +529,128 @@ static void test_lattice_matches_reference(void **state)
     }
 }
 
+/* A UV coordinate's cell as panel_internal.h's panel_cell_coordinate
+ * documents it: floor((x - origin) / step), 0 below, count - 1 above. */
+static int cell_of(double x, double origin, double step, int count)
+{
+    double f = floor((x - origin) / step);
+    return !(f > 0) ? 0 : f >= count ? count - 1 : (int)f;
+}
+
+/* Every panel's k1_error and k2_error against a scan of the vertices
+ * themselves, as panel_internal.h's panels_curvature_range states them:
+ * triangle by triangle, vertex by vertex, C's fmax and fmin over k -+ c e
+ * for every triangle whose UV box meets the panel's cell. To the bit: the
+ * panels keep each triangle's extremes (panel_prep_build) and take the
+ * extremes of those, which must not change one (issue 27). */
+static void assert_curvature_ranges(const struct surface *s,
+                                    const struct panelization *p, int mode)
+{
+    const struct curvature *c = &s->curvature;
+    assert_non_null(c->k1_error);
+    size_t np = p->npanels;
+    double *o = malloc(6 * (np ? np : 1) * sizeof *o);
+    assert_non_null(o);
+    for (size_t n = 0; n < np; n++) {
+        o[6 * n] = o[6 * n + 1] = -INFINITY;
+        o[6 * n + 2] = o[6 * n + 3] = INFINITY;
+        o[6 * n + 4] = o[6 * n + 5] = 0;
+    }
+    double du = (p->umax - p->umin) / p->nu, dv = (p->vmax - p->vmin) / p->nv;
+    for (size_t t = 0; t < s->mesh.ntriangles; t++) {
+        const double *uv = s->uv.uv + 6 * t;
+        double u0 = fmin(uv[0], fmin(uv[2], uv[4]));
+        double u1 = fmax(uv[0], fmax(uv[2], uv[4]));
+        double v0 = fmin(uv[1], fmin(uv[3], uv[5]));
+        double v1 = fmax(uv[1], fmax(uv[3], uv[5]));
+        if (!isfinite(u0 + u1 + v0 + v1))
+            continue;
+        for (int j = cell_of(v0, p->vmin, dv, p->nv);
+             j <= cell_of(v1, p->vmin, dv, p->nv); j++)
+            for (int i = cell_of(u0, p->umin, du, p->nu);
+                 i <= cell_of(u1, p->umin, du, p->nu); i++) {
+                int n = p->cell_panel[(size_t)j * p->nu + i];
+                if (n < 0)
+                    continue;
+                double *x = o + 6 * (size_t)n;
+                for (int k = 0; k < 3; k++) {
+                    uint32_t v = s->mesh.triangle[3 * t + k];
+                    double e1 = CURVATURE_ERROR_SIGMAS * c->k1_error[v];
+                    double e2 = CURVATURE_ERROR_SIGMAS * c->k2_error[v];
+                    x[0] = fmax(x[0], c->k1[v] - e1);
+                    x[1] = fmax(x[1], c->k1[v] + e1);
+                    x[2] = fmin(x[2], c->k2[v] - e2);
+                    x[3] = fmin(x[3], c->k2[v] + e2);
+                    x[4] = fmax(x[4], e1);
+                    x[5] = fmax(x[5], e2);
+                }
+            }
+    }
+    for (size_t n = 0; n < np; n++) {
+        const struct panel *panel = &p->panels[n];
+        const double *x = o + 6 * n;
+        double want[4];
+        if (mode == PANEL_MEAN || !(x[0] <= x[1])) {
+            want[0] = want[1] = x[4];
+            want[2] = want[3] = x[5];
+        } else {
+            want[0] = fmax(panel->k1 - x[0], 0);
+            want[1] = fmax(x[1] - panel->k1, 0);
+            want[2] = fmax(panel->k2 - x[2], 0);
+            want[3] = fmax(x[3] - panel->k2, 0);
+        }
+        double got[4] = {panel->k1_error[0], panel->k1_error[1],
+                         panel->k2_error[0], panel->k2_error[1]};
+        if (memcmp(got, want, sizeof got) != 0)
+            fail_msg("panel %zu of %dx%d (mode %d): k errors %.17g %.17g "
+                     "%.17g %.17g, the vertices give %.17g %.17g %.17g %.17g",
+                     n, p->nu, p->nv, mode, got[0], got[1], got[2], got[3],
+                     want[0], want[1], want[2], want[3]);
+    }
+    free(o);
+}
+
+/* Each way of building panels (panels_build, panels_build_fast in both
+ * modes, a lattice's grids) against the vertices' own curvature ranges. */
+static void test_curvature_range_from_vertices(void **state)
+{
+    (void)state;
+    const char *names[] = {"roof", "torus", "hypar", "disc"};
+    int grids[][2] = {{37, 49}, {20, 35}, {7, 3}, {1, 1}};
+    for (int e = 0; e < 4; e++) {
+        struct surface s;
+        open_test_surface(names[e], &s);
+        struct facet_error err;
+        for (int g = 0; g < 4; g++)
+            for (int mode = 0; mode < 2; mode++) {
+                struct panelization fast, reference;
+                int nu = grids[g][0], nv = grids[g][1];
+                assert_int_equal(panels_build_fast(&s.panels, mode, nu, nv,
+                                                   &fast, &err), FACET_OK);
+                assert_curvature_ranges(&s, &fast, mode);
+                assert_int_equal(panels_build(&s.mesh, &s.uv, &s.curvature,
+                                              mode, nu, nv, &reference,
+                                              &err), FACET_OK);
+                assert_curvature_ranges(&s, &reference, mode);
+                panelization_free(&fast);
+                panelization_free(&reference);
+            }
+        struct panel_lattice *lattice;
+        assert_int_equal(panel_lattice_build(&s.panels, 20, 22, 35, 37, 2,
+                                             &lattice, &err), FACET_OK);
+        for (int nu = 20; nu <= 22; nu++)
+            for (int nv = 35; nv <= 37; nv++) {
+                struct panelization got;
+                assert_int_equal(panels_build_lattice(lattice, nu, nv, &got,
+                                                      &err), FACET_OK);
+                assert_curvature_ranges(&s, &got, PANEL_EXTREMES);
+                panelization_free(&got);
+            }
+        panel_lattice_free(lattice);
+        surface_close(&s);
+    }
+}
+
 /* The lattice and panels_build_fast against panels_build on real
  * surfaces from ../shared/data (FACET_DATA): a UV map from libigl
  * (igloo), harmonic parameterizations of a disk (hemisphere) and of a
@@ -677,6 +799,7 @@ int main(void)
         cmocka_unit_test(test_bad_grid),
         cmocka_unit_test(test_fast_matches_reference),
         cmocka_unit_test(test_lattice_matches_reference),
+        cmocka_unit_test(test_curvature_range_from_vertices),
         cmocka_unit_test(test_lattice_real_surfaces),
         cmocka_unit_test(test_lattice_limits),
         cmocka_unit_test(test_batch_shares_grids),
