@@ -23,6 +23,19 @@
 #include <unistd.h>
 
 #include "core/base/sha256.h"
+#include "core/panel/panel_internal.h"
+
+/* The prepared sums are written as they lie in memory and checked as
+ * arrays of doubles (and of numbers, for the joints' triangles): a
+ * layout with padding or other fields must change the format, not be
+ * written as it comes. */
+_Static_assert(sizeof(struct panel_prep_point) == 5 * sizeof(double),
+               "panel_prep_point: the cache's layout");
+_Static_assert(sizeof(struct panel_prep_triangle) == 14 * sizeof(double),
+               "panel_prep_triangle: the cache's layout");
+_Static_assert(sizeof(struct joint_triangle) ==
+               3 * sizeof(double) + 4 * sizeof(uint32_t),
+               "joint_triangle: the cache's layout");
 
 #define MAGIC "FACETPRE"
 #define PROJECT_CACHE_PREFIX "facet-prepared-"
@@ -334,6 +347,42 @@ static void put_curvature(struct writer *w, const struct curvature *c)
     put_array(w, c->k2_error, V, sizeof *c->k2_error);
 }
 
+/* Format 3: what surface_prepare_rest made from the mesh, UV and
+ * curvature (its lookup's buckets, the facets' sag, the panel sums, the
+ * joints' prep) and the u and v lengths, so that a second start does not
+ * make them again (on the skin, about 3 s of CPU). The lookup's box and
+ * grid are not written: the reader remakes them from the UV
+ * (uv_index_frame). */
+static void put_prepared(struct writer *w, const struct project_surface *ps)
+{
+    const struct surface *s = &ps->surface;
+    size_t T = s->mesh.ntriangles;
+    put_f64(w, s->facet_sag);
+    put_f64(w, ps->u_length);
+    put_f64(w, ps->v_length);
+    const struct uv_index *x = &s->uv;
+    size_t cells = (size_t)x->ncells_u * (size_t)x->ncells_v;
+    put_u64(w, cells);
+    put_u64(w, x->cell_start[cells]);
+    put_array(w, x->cell_start, cells + 1, sizeof *x->cell_start);
+    put_array(w, x->cell_triangles, x->cell_start[cells],
+              sizeof *x->cell_triangles);
+    const struct panel_prep *p = &s->panels;
+    put_u64(w, p->npoints);
+    put_array(w, p->point_uv, 2 * p->npoints, sizeof *p->point_uv);
+    put_array(w, p->point, p->npoints, sizeof *p->point);
+    put_array(w, p->corner, 3 * T, sizeof *p->corner);
+    put_array(w, p->triangle, T, sizeof *p->triangle);
+    const struct joint_prep *j = &s->joints;
+    put_f64(w, j->outline);
+    for (int axis = 0; axis < 2; axis++) {
+        put_f64(w, j->reach[axis]);
+        put_array(w, j->order[axis], T, sizeof *j->order[axis]);
+        put_array(w, j->least[axis], T, sizeof *j->least[axis]);
+        put_array(w, j->triangle[axis], T, sizeof *j->triangle[axis]);
+    }
+}
+
 static void put_payload(struct writer *w, const struct project *p)
 {
     put_u64(w, p->nsurfaces);
@@ -351,6 +400,7 @@ static void put_payload(struct writer *w, const struct project *p)
         put_mesh(w, &ps->surface.mesh);
         put_param(w, &ps->surface.param, &ps->surface.mesh);
         put_curvature(w, &ps->surface.curvature);
+        put_prepared(w, ps);
     }
 }
 
@@ -685,7 +735,141 @@ struct read_surface {
     struct mesh mesh;
     struct parameterization param;
     struct curvature curvature;
+    /* Format 3's prepared sections (put_prepared), their arrays in the
+     * file's bytes; uv's box and grid are remade (check_prepared). */
+    double facet_sag, u_length, v_length;
+    uint64_t cells, entries;
+    struct uv_index uv;
+    struct panel_prep panels;
+    struct joint_prep joints;
 };
+
+static void get_prepared(struct reader *r, struct read_surface *s)
+{
+    uint64_t T = s->mesh.ntriangles;
+    s->facet_sag = get_f64(r);
+    s->u_length = get_f64(r);
+    s->v_length = get_f64(r);
+    s->cells = get_count(r);
+    s->entries = get_count(r);
+    get_array(r, &s->uv.cell_start, s->cells + 1, sizeof *s->uv.cell_start);
+    get_array(r, &s->uv.cell_triangles, s->entries,
+              sizeof *s->uv.cell_triangles);
+    struct panel_prep *p = &s->panels;
+    p->npoints = (size_t)get_count(r);
+    get_array(r, &p->point_uv, 2 * (uint64_t)p->npoints, sizeof *p->point_uv);
+    get_array(r, &p->point, p->npoints, sizeof *p->point);
+    get_array(r, &p->corner, 3 * T, sizeof *p->corner);
+    get_array(r, &p->triangle, T, sizeof *p->triangle);
+    struct joint_prep *j = &s->joints;
+    j->ntriangles = (size_t)T;
+    j->outline = get_f64(r);
+    for (int axis = 0; axis < 2; axis++) {
+        j->reach[axis] = get_f64(r);
+        get_array(r, &j->order[axis], T, sizeof *j->order[axis]);
+        get_array(r, &j->least[axis], T, sizeof *j->least[axis]);
+        get_array(r, &j->triangle[axis], T, sizeof *j->triangle[axis]);
+    }
+    if (r->why == NULL &&
+        (s->uv.cell_start == NULL || s->uv.cell_triangles == NULL ||
+         p->point_uv == NULL || p->point == NULL || p->corner == NULL ||
+         p->triangle == NULL || j->order[0] == NULL || j->order[1] == NULL ||
+         j->least[0] == NULL || j->least[1] == NULL ||
+         j->triangle[0] == NULL || j->triangle[1] == NULL))
+        r->why = "damaged (its prepared sums are incomplete)";
+}
+
+static int finite_length(double x)
+{
+    return isfinite(x) && x >= 0;
+}
+
+/* The prepared sections against the mesh, UV and curvature they were
+ * made from (checked already, check_surface): every count, index and
+ * number, so that a file made by hand with a right checksum is refused
+ * rather than read out of bounds or into a wrong lookup. The lookup's box
+ * and grid are remade from the UV here (s->uv gets them). */
+static const char *check_prepared(struct read_surface *s)
+{
+    const struct mesh *m = &s->mesh;
+    size_t V = m->nvertices, T = m->ntriangles;
+    if (!finite_length(s->facet_sag) || !finite_length(s->u_length) ||
+        !finite_length(s->v_length))
+        return "damaged (a length is not a number)";
+
+    /* The lookup: the cells the UV gives, each listing triangles. */
+    struct facet_error ignored;
+    uint32_t *cell_start = s->uv.cell_start,
+             *cell_triangles = s->uv.cell_triangles;
+    if (uv_index_frame(s->param.uv, T, &s->uv, &ignored) != FACET_OK)
+        return "damaged (a coordinate is not a number)";
+    s->uv.cell_start = cell_start;
+    s->uv.cell_triangles = cell_triangles;
+    if (s->cells != (uint64_t)s->uv.ncells_u * (uint64_t)s->uv.ncells_v ||
+        cell_start[0] != 0 || cell_start[s->cells] != s->entries ||
+        !non_decreasing(cell_start, (size_t)s->cells + 1))
+        return "damaged (its UV lookup's cells)";
+    if (!all_below(cell_triangles, (size_t)s->entries, T, 0))
+        return "damaged (an index out of range)";
+
+    /* The panel sums: each corner's point, numbered as first met (as
+     * panel_prep_build numbers them: every point is some corner's), at
+     * that corner's UV, position and curvature. */
+    const struct panel_prep *p = &s->panels;
+    size_t n = p->npoints, met = 0;
+    if (n == 0 || n > 3 * T)
+        return "damaged (its count of panel points)";
+    const double *uv = s->param.uv;
+    for (size_t c = 0; c < 3 * T; c++) {
+        uint32_t q = p->corner[c];
+        if (q > met || q >= n)
+            return "damaged (an index out of range)";
+        met += q == met;
+        const struct panel_prep_point *P = &p->point[q];
+        size_t v = m->triangle[c];
+        const double *x = m->position + 3 * v;
+        if (p->point_uv[2 * (size_t)q] != uv[2 * c] ||
+            p->point_uv[2 * (size_t)q + 1] != uv[2 * c + 1] ||
+            P->position[0] != x[0] || P->position[1] != x[1] ||
+            P->position[2] != x[2] || P->k1 != s->curvature.k1[v] ||
+            P->k2 != s->curvature.k2[v])
+            return "damaged (a panel point is not its corner's)";
+    }
+    if (met != n)
+        return "damaged (its count of panel points)";
+    if (!all_finite((const double *)p->triangle,
+                    T * (sizeof *p->triangle / sizeof(double))))
+        return "damaged (a panel sum is not a number)";
+
+    /* The joints' prep: along each axis every triangle's corners as the
+     * UV and the mesh give them, in order of their least coordinate. */
+    const struct joint_prep *j = &s->joints;
+    if (!finite_length(j->outline))
+        return "damaged (a length is not a number)";
+    for (int axis = 0; axis < 2; axis++) {
+        if (!finite_length(j->reach[axis]))
+            return "damaged (a length is not a number)";
+        for (size_t i = 0; i < T; i++) {
+            uint32_t t = j->order[axis][i];
+            if (t >= T)
+                return "damaged (an index out of range)";
+            const struct joint_triangle *J = &j->triangle[axis][i];
+            double least = J->x[0];
+            for (int k = 0; k < 3; k++) {
+                size_t c = 3 * (size_t)t + (size_t)k;
+                if (J->x[k] != uv[2 * c + (size_t)axis] ||
+                    J->vertex[k] != m->triangle[c])
+                    return "damaged (a joint triangle is not its mesh's)";
+                least = fmin(least, J->x[k]);
+            }
+            if (J->outline > 7 || j->least[axis][i] != least ||
+                (i > 0 && !(j->least[axis][i - 1] <= least)))
+                return "damaged (its joints' order)";
+        }
+    }
+    (void)V;
+    return NULL;
+}
 
 static void get_surface(struct reader *r, struct read_surface *s,
                         size_t npaths)
@@ -717,6 +901,7 @@ static void get_surface(struct reader *r, struct read_surface *s,
     get_mesh(r, &s->mesh);
     get_param(r, &s->param, &s->mesh);
     get_curvature(r, &s->curvature, &s->mesh);
+    get_prepared(r, s);
 }
 
 /* Makes out the project of the surfaces read, as project_open makes it:
@@ -754,6 +939,17 @@ static int build(struct read_surface *read, size_t n,
         memset(&rs->param, 0, sizeof rs->param);
         ps->surface.curvature = rs->curvature;
         memset(&rs->curvature, 0, sizeof rs->curvature);
+        /* The prepared sums, pointed at the surface where it now lies. */
+        struct surface *s = &ps->surface;
+        s->uv = rs->uv;
+        s->panels = rs->panels;
+        s->panels.mesh = &s->mesh;
+        s->panels.index = &s->uv;
+        s->panels.curvature = &s->curvature;
+        s->joints = rs->joints;
+        s->facet_sag = rs->facet_sag;
+        ps->u_length = rs->u_length;
+        ps->v_length = rs->v_length;
         if (rc != FACET_OK)
             return rc;
         out->ntriangles += ps->surface.mesh.ntriangles;
@@ -808,6 +1004,20 @@ static void detach(struct surface *s, const unsigned char *base,
     if (inside(c->surface_normal, base, size)) c->surface_normal = NULL;
     if (inside(c->k1_error, base, size)) c->k1_error = NULL;
     if (inside(c->k2_error, base, size)) c->k2_error = NULL;
+    struct uv_index *x = &s->uv;
+    if (inside(x->cell_start, base, size)) x->cell_start = NULL;
+    if (inside(x->cell_triangles, base, size)) x->cell_triangles = NULL;
+    struct panel_prep *p = &s->panels;
+    if (inside(p->point_uv, base, size)) p->point_uv = NULL;
+    if (inside(p->point, base, size)) p->point = NULL;
+    if (inside(p->corner, base, size)) p->corner = NULL;
+    if (inside(p->triangle, base, size)) p->triangle = NULL;
+    struct joint_prep *j = &s->joints;
+    for (int axis = 0; axis < 2; axis++) {
+        if (inside(j->order[axis], base, size)) j->order[axis] = NULL;
+        if (inside(j->least[axis], base, size)) j->least[axis] = NULL;
+        if (inside(j->triangle[axis], base, size)) j->triangle[axis] = NULL;
+    }
 }
 
 void project_cache_release(struct project *project)
@@ -925,6 +1135,8 @@ static int read_bytes(unsigned char *bytes, size_t size, const char *name,
             probe.param = read[i].param;
             probe.curvature = read[i].curvature;
             r.why = check_surface(&probe);
+            if (r.why == NULL)
+                r.why = check_prepared(&read[i]);
         }
     }
     if (rc == FACET_OK) {

@@ -68,7 +68,7 @@
 #include "core/base/error.h"
 #include "core/project/project.h"
 
-#define PROJECT_CACHE_VERSION 2
+#define PROJECT_CACHE_VERSION 3
 #define PROJECT_CACHE_HEADER 152  /* bytes */
 
 /* What shapes a preparation besides the files' bytes. */

@@ -269,16 +269,22 @@ int surface_prepare_rest(struct surface *surface,
         warn(surface, "%zu triangles have no extent in UV and add no area "
              "to any panel", surface->param.report.degenerate);
     int rc = facet_stop_check(stop, err);
-    if (rc == FACET_OK)
+    /* A surface read back from its cache comes with its lookup, sag,
+     * panel sums and joints' prep (checked there): only the fit points,
+     * cheap, are made. */
+    int cached = surface_prepared_in_cache(surface);
+    if (rc == FACET_OK && !cached)
         rc = uv_index_build(surface->param.uv, surface->mesh.ntriangles,
                             &surface->uv, err);
-    if (rc == FACET_OK)
+    if (rc == FACET_OK && !cached)
         rc = mesh_facet_sag(&surface->mesh, &surface->curvature,
                             &surface->facet_sag, err);
-    if (rc == FACET_OK && (rc = facet_stop_check(stop, err)) == FACET_OK)
+    if (rc == FACET_OK && !cached &&
+        (rc = facet_stop_check(stop, err)) == FACET_OK)
         rc = panel_prep_build(&surface->mesh, &surface->uv,
                               &surface->curvature, &surface->panels, err);
-    if (rc == FACET_OK && (rc = facet_stop_check(stop, err)) == FACET_OK)
+    if (rc == FACET_OK && !cached &&
+        (rc = facet_stop_check(stop, err)) == FACET_OK)
         rc = joint_prep_build(&surface->mesh, &surface->uv, &surface->joints,
                               err);
     if (rc == FACET_OK && (rc = facet_stop_check(stop, err)) == FACET_OK)
@@ -287,6 +293,12 @@ int surface_prepare_rest(struct surface *surface,
         return rc;
     surface->prepared = 1;
     return FACET_OK;
+}
+
+int surface_prepared_in_cache(const struct surface *surface)
+{
+    return surface->uv.cell_start != NULL && surface->panels.triangle != NULL &&
+           surface->joints.order[0] != NULL;
 }
 
 void surface_close(struct surface *surface)
