@@ -22,7 +22,9 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "core/base/parallel.h"
 #include "core/base/sha256.h"
+#include "core/project/cache_checksum.h"
 #include "core/panel/panel_internal.h"
 
 /* The prepared sums are written as they lie in memory and checked as
@@ -44,8 +46,8 @@ _Static_assert(sizeof(struct joint_triangle) ==
 /* Every array starts at a multiple of this from the file's start (the
  * header's size is one): read in place, its doubles are aligned. */
 #define ARRAY_ALIGN 8
-/* Bytes hashed between two looks at the stop: a few milliseconds. */
-#define CHECK_CHUNK ((size_t)4 << 20)
+/* Threads the checksum is checked on, at most. */
+#define CHECK_THREADS 8
 #define PROJECT_CACHE_STALE \
     "stale (made from other files, settings or another build of Facet)"
 
@@ -227,7 +229,7 @@ int project_cache_prune(const char *path, int keep, struct facet_error *err)
 
 struct writer {
     FILE *file;
-    struct sha256 hash;
+    struct cache_checksum hash;
     uint64_t bytes;
     int failed;
 };
@@ -240,7 +242,7 @@ static void put(struct writer *w, const void *data, size_t n)
         w->failed = 1;
         return;
     }
-    sha256_update(&w->hash, data, n);
+    cache_checksum_update(&w->hash, data, n);
     w->bytes += n;
 }
 
@@ -438,16 +440,18 @@ int project_cache_write(const struct project *project, const char key[65],
                                   "000000000000000000000000";
     unsigned char header[PROJECT_CACHE_HEADER];
     header_bytes(header, PROJECT_CACHE_VERSION, 0, key, zeros);
-    struct writer w = {file, {{0}, 0, {0}, 0}, 0, 0};
+    struct writer w;
+    memset(&w, 0, sizeof w);
+    w.file = file;
     int failed = fwrite(header, 1, sizeof header, file) != sizeof header;
-    sha256_init(&w.hash);
+    cache_checksum_init(&w.hash);
     if (!failed) {
         put_payload(&w, project);
         failed = w.failed;
     }
     if (!failed) {
         char checksum[65];
-        sha256_hex(&w.hash, checksum);
+        cache_checksum_hex(&w.hash, checksum);
         header_bytes(header, PROJECT_CACHE_VERSION, w.bytes, key, checksum);
         failed = fseek(file, 0, SEEK_SET) != 0 ||
                  fwrite(header, 1, sizeof header, file) != sizeof header;
@@ -1032,28 +1036,20 @@ void project_cache_release(struct project *project)
     project->cache_size = 0;
 }
 
-/* The payload's SHA-256 against the header's, asking stop between
- * chunks of a few milliseconds: FACET_OK (*why set when it does not
- * match) or FACET_ESTOP. */
+/* The payload's checksum (cache_checksum.h) against the header's, its
+ * pieces hashed on the threads, each asking stop every few milliseconds:
+ * FACET_OK (*why set when it does not match), FACET_ESTOP or FACET_EWORK. */
 static int check_sum(const unsigned char *payload, uint64_t size,
                      const unsigned char expected[64],
                      const struct facet_stop *stop, const char **why,
                      struct facet_error *err)
 {
-    struct sha256 h;
-    sha256_init(&h);
-    for (uint64_t at = 0; at < size; at += CHECK_CHUNK) {
-        int rc = facet_stop_check(stop, err);
-        if (rc != FACET_OK)
-            return rc;
-        uint64_t n = size - at < CHECK_CHUNK ? size - at : CHECK_CHUNK;
-        sha256_update(&h, payload + at, (size_t)n);
-    }
     char checksum[65];
-    sha256_hex(&h, checksum);
-    if (memcmp(checksum, expected, 64) != 0)
+    int rc = cache_checksum_of(payload, size, parallel_cpus(CHECK_THREADS),
+                               stop, checksum, err);
+    if (rc == FACET_OK && memcmp(checksum, expected, 64) != 0)
         *why = "damaged (its checksum does not match)";
-    return FACET_OK;
+    return rc;
 }
 
 /* Reads the file's bytes (size of them, mapped; out takes them over, or
