@@ -1052,6 +1052,74 @@ static int check_sum(const unsigned char *payload, uint64_t size,
     return rc;
 }
 
+/* One thread's share of the surfaces' checks: first, first + step, ...,
+ * stopping at the first found wrong. */
+struct check_job {
+    struct read_surface *read;
+    size_t n, first, step;
+    const struct facet_stop *stop;
+    size_t failed;             /* the surface found wrong, or n */
+    const char *why;           /* what was */
+    int rc;                    /* FACET_ESTOP when the stop fired */
+    struct facet_error err;
+};
+
+static void check_run(void *argument)
+{
+    struct check_job *job = argument;
+    job->failed = job->n;
+    job->why = NULL;
+    job->rc = FACET_OK;
+    for (size_t i = job->first; i < job->n; i += job->step) {
+        if ((job->rc = facet_stop_check(job->stop, &job->err)) != FACET_OK)
+            return;
+        struct surface probe;
+        memset(&probe, 0, sizeof probe);
+        probe.mesh = job->read[i].mesh;
+        probe.param = job->read[i].param;
+        probe.curvature = job->read[i].curvature;
+        job->why = check_surface(&probe);
+        if (job->why == NULL)
+            job->why = check_prepared(&job->read[i]);
+        if (job->why != NULL) {
+            job->failed = i;
+            return;
+        }
+    }
+}
+
+/* Checks the n surfaces read, dealt round the threads (they are
+ * independent): FACET_OK, *why set to what the first surface found wrong
+ * says (the same whatever the threads' timing), or FACET_ESTOP. */
+static int check_all(struct read_surface *read, size_t n,
+                     const struct facet_stop *stop, const char **why,
+                     struct facet_error *err)
+{
+    struct check_job jobs[CHECK_THREADS];
+    int count = parallel_jobs(parallel_cpus(CHECK_THREADS), n);
+    for (int k = 0; k < count; k++) {
+        memset(&jobs[k], 0, sizeof jobs[k]);
+        jobs[k].read = read;
+        jobs[k].n = n;
+        jobs[k].first = (size_t)k;
+        jobs[k].step = (size_t)count;
+        jobs[k].stop = stop;
+    }
+    parallel_run(jobs, sizeof jobs[0], count, check_run);
+    size_t first = n;
+    for (int k = 0; k < count; k++) {
+        if (jobs[k].rc != FACET_OK) {
+            *err = jobs[k].err;
+            return jobs[k].rc;
+        }
+        if (jobs[k].failed < first) {
+            first = jobs[k].failed;
+            *why = jobs[k].why;
+        }
+    }
+    return FACET_OK;
+}
+
 /* Reads the file's bytes (size of them, mapped; out takes them over, or
  * they are unmapped here) named name: with want_key, refused unless its
  * key is that; without, its key is copied into found_key. */
@@ -1122,18 +1190,8 @@ static int read_bytes(unsigned char *bytes, size_t size, const char *name,
             get_surface(&r, &read[got], npaths);
         if (r.why == NULL && r.at != r.end)
             r.why = "damaged (bytes past its end)";
-        for (size_t i = 0; r.why == NULL && i < got; i++) {
-            if ((rc = facet_stop_check(stop, err)) != FACET_OK)
-                break;
-            struct surface probe;
-            memset(&probe, 0, sizeof probe);
-            probe.mesh = read[i].mesh;
-            probe.param = read[i].param;
-            probe.curvature = read[i].curvature;
-            r.why = check_surface(&probe);
-            if (r.why == NULL)
-                r.why = check_prepared(&read[i]);
-        }
+        if (r.why == NULL)
+            rc = check_all(read, got, stop, &r.why, err);
     }
     if (rc == FACET_OK) {
         rc = r.why != NULL ? refuse(name, r.why, err)
