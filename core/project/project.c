@@ -378,6 +378,8 @@ static void prepare_run(void *argument)
     parallel_failure_clear(&job->failure);
     for (size_t i = job->first; i < job->project->nsurfaces; i += job->step) {
         struct project_surface *s = &job->project->surfaces[i];
+        /* A cache of format 3 holds the u and v lengths beside the sums. */
+        int cached = job->rest_only && surface_prepared_in_cache(&s->surface);
         int rc = job->rest_only
             ? surface_prepare_rest(&s->surface, job->stop, &job->failure.err)
             : surface_prepare_stoppable(&s->surface, job->flip_normals,
@@ -388,8 +390,9 @@ static void prepare_run(void *argument)
             job->failure.rc = rc;
             return;
         }
-        surface_uv_lengths(&s->surface.mesh, s->surface.param.uv,
-                           &s->u_length, &s->v_length);
+        if (!cached)
+            surface_uv_lengths(&s->surface.mesh, s->surface.param.uv,
+                               &s->u_length, &s->v_length);
     }
 }
 

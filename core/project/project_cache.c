@@ -22,7 +22,22 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "core/base/parallel.h"
 #include "core/base/sha256.h"
+#include "core/project/cache_checksum.h"
+#include "core/panel/panel_internal.h"
+
+/* The prepared sums are written as they lie in memory and checked as
+ * arrays of doubles (and of numbers, for the joints' triangles): a
+ * layout with padding or other fields must change the format, not be
+ * written as it comes. */
+_Static_assert(sizeof(struct panel_prep_point) == 5 * sizeof(double),
+               "panel_prep_point: the cache's layout");
+_Static_assert(sizeof(struct panel_prep_triangle) == 14 * sizeof(double),
+               "panel_prep_triangle: the cache's layout");
+_Static_assert(sizeof(struct joint_triangle) ==
+               3 * sizeof(double) + 4 * sizeof(uint32_t),
+               "joint_triangle: the cache's layout");
 
 #define MAGIC "FACETPRE"
 #define PROJECT_CACHE_PREFIX "facet-prepared-"
@@ -31,8 +46,8 @@
 /* Every array starts at a multiple of this from the file's start (the
  * header's size is one): read in place, its doubles are aligned. */
 #define ARRAY_ALIGN 8
-/* Bytes hashed between two looks at the stop: a few milliseconds. */
-#define CHECK_CHUNK ((size_t)4 << 20)
+/* Threads the checksum is checked on, at most. */
+#define CHECK_THREADS 8
 #define PROJECT_CACHE_STALE \
     "stale (made from other files, settings or another build of Facet)"
 
@@ -214,7 +229,7 @@ int project_cache_prune(const char *path, int keep, struct facet_error *err)
 
 struct writer {
     FILE *file;
-    struct sha256 hash;
+    struct cache_checksum hash;
     uint64_t bytes;
     int failed;
 };
@@ -227,7 +242,7 @@ static void put(struct writer *w, const void *data, size_t n)
         w->failed = 1;
         return;
     }
-    sha256_update(&w->hash, data, n);
+    cache_checksum_update(&w->hash, data, n);
     w->bytes += n;
 }
 
@@ -334,6 +349,42 @@ static void put_curvature(struct writer *w, const struct curvature *c)
     put_array(w, c->k2_error, V, sizeof *c->k2_error);
 }
 
+/* Format 3: what surface_prepare_rest made from the mesh, UV and
+ * curvature (its lookup's buckets, the facets' sag, the panel sums, the
+ * joints' prep) and the u and v lengths, so that a second start does not
+ * make them again (on the skin, about 3 s of CPU). The lookup's box and
+ * grid are not written: the reader remakes them from the UV
+ * (uv_index_frame). */
+static void put_prepared(struct writer *w, const struct project_surface *ps)
+{
+    const struct surface *s = &ps->surface;
+    size_t T = s->mesh.ntriangles;
+    put_f64(w, s->facet_sag);
+    put_f64(w, ps->u_length);
+    put_f64(w, ps->v_length);
+    const struct uv_index *x = &s->uv;
+    size_t cells = (size_t)x->ncells_u * (size_t)x->ncells_v;
+    put_u64(w, cells);
+    put_u64(w, x->cell_start[cells]);
+    put_array(w, x->cell_start, cells + 1, sizeof *x->cell_start);
+    put_array(w, x->cell_triangles, x->cell_start[cells],
+              sizeof *x->cell_triangles);
+    const struct panel_prep *p = &s->panels;
+    put_u64(w, p->npoints);
+    put_array(w, p->point_uv, 2 * p->npoints, sizeof *p->point_uv);
+    put_array(w, p->point, p->npoints, sizeof *p->point);
+    put_array(w, p->corner, 3 * T, sizeof *p->corner);
+    put_array(w, p->triangle, T, sizeof *p->triangle);
+    const struct joint_prep *j = &s->joints;
+    put_f64(w, j->outline);
+    for (int axis = 0; axis < 2; axis++) {
+        put_f64(w, j->reach[axis]);
+        put_array(w, j->order[axis], T, sizeof *j->order[axis]);
+        put_array(w, j->least[axis], T, sizeof *j->least[axis]);
+        put_array(w, j->triangle[axis], T, sizeof *j->triangle[axis]);
+    }
+}
+
 static void put_payload(struct writer *w, const struct project *p)
 {
     put_u64(w, p->nsurfaces);
@@ -351,6 +402,7 @@ static void put_payload(struct writer *w, const struct project *p)
         put_mesh(w, &ps->surface.mesh);
         put_param(w, &ps->surface.param, &ps->surface.mesh);
         put_curvature(w, &ps->surface.curvature);
+        put_prepared(w, ps);
     }
 }
 
@@ -388,16 +440,18 @@ int project_cache_write(const struct project *project, const char key[65],
                                   "000000000000000000000000";
     unsigned char header[PROJECT_CACHE_HEADER];
     header_bytes(header, PROJECT_CACHE_VERSION, 0, key, zeros);
-    struct writer w = {file, {{0}, 0, {0}, 0}, 0, 0};
+    struct writer w;
+    memset(&w, 0, sizeof w);
+    w.file = file;
     int failed = fwrite(header, 1, sizeof header, file) != sizeof header;
-    sha256_init(&w.hash);
+    cache_checksum_init(&w.hash);
     if (!failed) {
         put_payload(&w, project);
         failed = w.failed;
     }
     if (!failed) {
         char checksum[65];
-        sha256_hex(&w.hash, checksum);
+        cache_checksum_hex(&w.hash, checksum);
         header_bytes(header, PROJECT_CACHE_VERSION, w.bytes, key, checksum);
         failed = fseek(file, 0, SEEK_SET) != 0 ||
                  fwrite(header, 1, sizeof header, file) != sizeof header;
@@ -685,7 +739,141 @@ struct read_surface {
     struct mesh mesh;
     struct parameterization param;
     struct curvature curvature;
+    /* Format 3's prepared sections (put_prepared), their arrays in the
+     * file's bytes; uv's box and grid are remade (check_prepared). */
+    double facet_sag, u_length, v_length;
+    uint64_t cells, entries;
+    struct uv_index uv;
+    struct panel_prep panels;
+    struct joint_prep joints;
 };
+
+static void get_prepared(struct reader *r, struct read_surface *s)
+{
+    uint64_t T = s->mesh.ntriangles;
+    s->facet_sag = get_f64(r);
+    s->u_length = get_f64(r);
+    s->v_length = get_f64(r);
+    s->cells = get_count(r);
+    s->entries = get_count(r);
+    get_array(r, &s->uv.cell_start, s->cells + 1, sizeof *s->uv.cell_start);
+    get_array(r, &s->uv.cell_triangles, s->entries,
+              sizeof *s->uv.cell_triangles);
+    struct panel_prep *p = &s->panels;
+    p->npoints = (size_t)get_count(r);
+    get_array(r, &p->point_uv, 2 * (uint64_t)p->npoints, sizeof *p->point_uv);
+    get_array(r, &p->point, p->npoints, sizeof *p->point);
+    get_array(r, &p->corner, 3 * T, sizeof *p->corner);
+    get_array(r, &p->triangle, T, sizeof *p->triangle);
+    struct joint_prep *j = &s->joints;
+    j->ntriangles = (size_t)T;
+    j->outline = get_f64(r);
+    for (int axis = 0; axis < 2; axis++) {
+        j->reach[axis] = get_f64(r);
+        get_array(r, &j->order[axis], T, sizeof *j->order[axis]);
+        get_array(r, &j->least[axis], T, sizeof *j->least[axis]);
+        get_array(r, &j->triangle[axis], T, sizeof *j->triangle[axis]);
+    }
+    if (r->why == NULL &&
+        (s->uv.cell_start == NULL || s->uv.cell_triangles == NULL ||
+         p->point_uv == NULL || p->point == NULL || p->corner == NULL ||
+         p->triangle == NULL || j->order[0] == NULL || j->order[1] == NULL ||
+         j->least[0] == NULL || j->least[1] == NULL ||
+         j->triangle[0] == NULL || j->triangle[1] == NULL))
+        r->why = "damaged (its prepared sums are incomplete)";
+}
+
+static int finite_length(double x)
+{
+    return isfinite(x) && x >= 0;
+}
+
+/* The prepared sections against the mesh, UV and curvature they were
+ * made from (checked already, check_surface): every count, index and
+ * number, so that a file made by hand with a right checksum is refused
+ * rather than read out of bounds or into a wrong lookup. The lookup's box
+ * and grid are remade from the UV here (s->uv gets them). */
+static const char *check_prepared(struct read_surface *s)
+{
+    const struct mesh *m = &s->mesh;
+    size_t V = m->nvertices, T = m->ntriangles;
+    if (!finite_length(s->facet_sag) || !finite_length(s->u_length) ||
+        !finite_length(s->v_length))
+        return "damaged (a length is not a number)";
+
+    /* The lookup: the cells the UV gives, each listing triangles. */
+    struct facet_error ignored;
+    uint32_t *cell_start = s->uv.cell_start,
+             *cell_triangles = s->uv.cell_triangles;
+    if (uv_index_frame(s->param.uv, T, &s->uv, &ignored) != FACET_OK)
+        return "damaged (a coordinate is not a number)";
+    s->uv.cell_start = cell_start;
+    s->uv.cell_triangles = cell_triangles;
+    if (s->cells != (uint64_t)s->uv.ncells_u * (uint64_t)s->uv.ncells_v ||
+        cell_start[0] != 0 || cell_start[s->cells] != s->entries ||
+        !non_decreasing(cell_start, (size_t)s->cells + 1))
+        return "damaged (its UV lookup's cells)";
+    if (!all_below(cell_triangles, (size_t)s->entries, T, 0))
+        return "damaged (an index out of range)";
+
+    /* The panel sums: each corner's point, numbered as first met (as
+     * panel_prep_build numbers them: every point is some corner's), at
+     * that corner's UV, position and curvature. */
+    const struct panel_prep *p = &s->panels;
+    size_t n = p->npoints, met = 0;
+    if (n == 0 || n > 3 * T)
+        return "damaged (its count of panel points)";
+    const double *uv = s->param.uv;
+    for (size_t c = 0; c < 3 * T; c++) {
+        uint32_t q = p->corner[c];
+        if (q > met || q >= n)
+            return "damaged (an index out of range)";
+        met += q == met;
+        const struct panel_prep_point *P = &p->point[q];
+        size_t v = m->triangle[c];
+        const double *x = m->position + 3 * v;
+        if (p->point_uv[2 * (size_t)q] != uv[2 * c] ||
+            p->point_uv[2 * (size_t)q + 1] != uv[2 * c + 1] ||
+            P->position[0] != x[0] || P->position[1] != x[1] ||
+            P->position[2] != x[2] || P->k1 != s->curvature.k1[v] ||
+            P->k2 != s->curvature.k2[v])
+            return "damaged (a panel point is not its corner's)";
+    }
+    if (met != n)
+        return "damaged (its count of panel points)";
+    if (!all_finite((const double *)p->triangle,
+                    T * (sizeof *p->triangle / sizeof(double))))
+        return "damaged (a panel sum is not a number)";
+
+    /* The joints' prep: along each axis every triangle's corners as the
+     * UV and the mesh give them, in order of their least coordinate. */
+    const struct joint_prep *j = &s->joints;
+    if (!finite_length(j->outline))
+        return "damaged (a length is not a number)";
+    for (int axis = 0; axis < 2; axis++) {
+        if (!finite_length(j->reach[axis]))
+            return "damaged (a length is not a number)";
+        for (size_t i = 0; i < T; i++) {
+            uint32_t t = j->order[axis][i];
+            if (t >= T)
+                return "damaged (an index out of range)";
+            const struct joint_triangle *J = &j->triangle[axis][i];
+            double least = J->x[0];
+            for (int k = 0; k < 3; k++) {
+                size_t c = 3 * (size_t)t + (size_t)k;
+                if (J->x[k] != uv[2 * c + (size_t)axis] ||
+                    J->vertex[k] != m->triangle[c])
+                    return "damaged (a joint triangle is not its mesh's)";
+                least = fmin(least, J->x[k]);
+            }
+            if (J->outline > 7 || j->least[axis][i] != least ||
+                (i > 0 && !(j->least[axis][i - 1] <= least)))
+                return "damaged (its joints' order)";
+        }
+    }
+    (void)V;
+    return NULL;
+}
 
 static void get_surface(struct reader *r, struct read_surface *s,
                         size_t npaths)
@@ -717,6 +905,7 @@ static void get_surface(struct reader *r, struct read_surface *s,
     get_mesh(r, &s->mesh);
     get_param(r, &s->param, &s->mesh);
     get_curvature(r, &s->curvature, &s->mesh);
+    get_prepared(r, s);
 }
 
 /* Makes out the project of the surfaces read, as project_open makes it:
@@ -754,6 +943,17 @@ static int build(struct read_surface *read, size_t n,
         memset(&rs->param, 0, sizeof rs->param);
         ps->surface.curvature = rs->curvature;
         memset(&rs->curvature, 0, sizeof rs->curvature);
+        /* The prepared sums, pointed at the surface where it now lies. */
+        struct surface *s = &ps->surface;
+        s->uv = rs->uv;
+        s->panels = rs->panels;
+        s->panels.mesh = &s->mesh;
+        s->panels.index = &s->uv;
+        s->panels.curvature = &s->curvature;
+        s->joints = rs->joints;
+        s->facet_sag = rs->facet_sag;
+        ps->u_length = rs->u_length;
+        ps->v_length = rs->v_length;
         if (rc != FACET_OK)
             return rc;
         out->ntriangles += ps->surface.mesh.ntriangles;
@@ -808,6 +1008,20 @@ static void detach(struct surface *s, const unsigned char *base,
     if (inside(c->surface_normal, base, size)) c->surface_normal = NULL;
     if (inside(c->k1_error, base, size)) c->k1_error = NULL;
     if (inside(c->k2_error, base, size)) c->k2_error = NULL;
+    struct uv_index *x = &s->uv;
+    if (inside(x->cell_start, base, size)) x->cell_start = NULL;
+    if (inside(x->cell_triangles, base, size)) x->cell_triangles = NULL;
+    struct panel_prep *p = &s->panels;
+    if (inside(p->point_uv, base, size)) p->point_uv = NULL;
+    if (inside(p->point, base, size)) p->point = NULL;
+    if (inside(p->corner, base, size)) p->corner = NULL;
+    if (inside(p->triangle, base, size)) p->triangle = NULL;
+    struct joint_prep *j = &s->joints;
+    for (int axis = 0; axis < 2; axis++) {
+        if (inside(j->order[axis], base, size)) j->order[axis] = NULL;
+        if (inside(j->least[axis], base, size)) j->least[axis] = NULL;
+        if (inside(j->triangle[axis], base, size)) j->triangle[axis] = NULL;
+    }
 }
 
 void project_cache_release(struct project *project)
@@ -822,27 +1036,87 @@ void project_cache_release(struct project *project)
     project->cache_size = 0;
 }
 
-/* The payload's SHA-256 against the header's, asking stop between
- * chunks of a few milliseconds: FACET_OK (*why set when it does not
- * match) or FACET_ESTOP. */
+/* The payload's checksum (cache_checksum.h) against the header's, its
+ * pieces hashed on the threads, each asking stop every few milliseconds:
+ * FACET_OK (*why set when it does not match), FACET_ESTOP or FACET_EWORK. */
 static int check_sum(const unsigned char *payload, uint64_t size,
                      const unsigned char expected[64],
                      const struct facet_stop *stop, const char **why,
                      struct facet_error *err)
 {
-    struct sha256 h;
-    sha256_init(&h);
-    for (uint64_t at = 0; at < size; at += CHECK_CHUNK) {
-        int rc = facet_stop_check(stop, err);
-        if (rc != FACET_OK)
-            return rc;
-        uint64_t n = size - at < CHECK_CHUNK ? size - at : CHECK_CHUNK;
-        sha256_update(&h, payload + at, (size_t)n);
-    }
     char checksum[65];
-    sha256_hex(&h, checksum);
-    if (memcmp(checksum, expected, 64) != 0)
+    int rc = cache_checksum_of(payload, size, parallel_cpus(CHECK_THREADS),
+                               stop, checksum, err);
+    if (rc == FACET_OK && memcmp(checksum, expected, 64) != 0)
         *why = "damaged (its checksum does not match)";
+    return rc;
+}
+
+/* One thread's share of the surfaces' checks: first, first + step, ...,
+ * stopping at the first found wrong. */
+struct check_job {
+    struct read_surface *read;
+    size_t n, first, step;
+    const struct facet_stop *stop;
+    size_t failed;             /* the surface found wrong, or n */
+    const char *why;           /* what was */
+    int rc;                    /* FACET_ESTOP when the stop fired */
+    struct facet_error err;
+};
+
+static void check_run(void *argument)
+{
+    struct check_job *job = argument;
+    job->failed = job->n;
+    job->why = NULL;
+    job->rc = FACET_OK;
+    for (size_t i = job->first; i < job->n; i += job->step) {
+        if ((job->rc = facet_stop_check(job->stop, &job->err)) != FACET_OK)
+            return;
+        struct surface probe;
+        memset(&probe, 0, sizeof probe);
+        probe.mesh = job->read[i].mesh;
+        probe.param = job->read[i].param;
+        probe.curvature = job->read[i].curvature;
+        job->why = check_surface(&probe);
+        if (job->why == NULL)
+            job->why = check_prepared(&job->read[i]);
+        if (job->why != NULL) {
+            job->failed = i;
+            return;
+        }
+    }
+}
+
+/* Checks the n surfaces read, dealt round the threads (they are
+ * independent): FACET_OK, *why set to what the first surface found wrong
+ * says (the same whatever the threads' timing), or FACET_ESTOP. */
+static int check_all(struct read_surface *read, size_t n,
+                     const struct facet_stop *stop, const char **why,
+                     struct facet_error *err)
+{
+    struct check_job jobs[CHECK_THREADS];
+    int count = parallel_jobs(parallel_cpus(CHECK_THREADS), n);
+    for (int k = 0; k < count; k++) {
+        memset(&jobs[k], 0, sizeof jobs[k]);
+        jobs[k].read = read;
+        jobs[k].n = n;
+        jobs[k].first = (size_t)k;
+        jobs[k].step = (size_t)count;
+        jobs[k].stop = stop;
+    }
+    parallel_run(jobs, sizeof jobs[0], count, check_run);
+    size_t first = n;
+    for (int k = 0; k < count; k++) {
+        if (jobs[k].rc != FACET_OK) {
+            *err = jobs[k].err;
+            return jobs[k].rc;
+        }
+        if (jobs[k].failed < first) {
+            first = jobs[k].failed;
+            *why = jobs[k].why;
+        }
+    }
     return FACET_OK;
 }
 
@@ -916,16 +1190,8 @@ static int read_bytes(unsigned char *bytes, size_t size, const char *name,
             get_surface(&r, &read[got], npaths);
         if (r.why == NULL && r.at != r.end)
             r.why = "damaged (bytes past its end)";
-        for (size_t i = 0; r.why == NULL && i < got; i++) {
-            if ((rc = facet_stop_check(stop, err)) != FACET_OK)
-                break;
-            struct surface probe;
-            memset(&probe, 0, sizeof probe);
-            probe.mesh = read[i].mesh;
-            probe.param = read[i].param;
-            probe.curvature = read[i].curvature;
-            r.why = check_surface(&probe);
-        }
+        if (r.why == NULL)
+            rc = check_all(read, got, stop, &r.why, err);
     }
     if (rc == FACET_OK) {
         rc = r.why != NULL ? refuse(name, r.why, err)

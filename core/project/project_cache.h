@@ -5,13 +5,14 @@
  * Preparing a building (project_prepare: each surface's UV and vertex
  * curvature, then the sums every grid starts from) takes most of a short
  * run on a large skin, and every run, resume and map of the same files
- * did it again. The cache keeps what is expensive to remake: per surface
- * its mesh in metres (every array of struct mesh), its parameterization
- * and its vertex curvature. What follows from those alone (the UV's
- * lookup, the facets' sag, the panel sums, the joints' prep, the fit
- * points, the u and v lengths) is remade by project_prepare_rest_stoppable,
- * the code a fresh preparation runs, so that a building read back is the
- * same to the bit as one prepared anew.
+ * did it again. The cache keeps, per surface, its mesh in metres (every
+ * array of struct mesh), its parameterization and its vertex curvature,
+ * and (format 3) what follows from those alone and took most of a second
+ * start to remake (about 3 s of CPU on the skin): the UV lookup's buckets,
+ * the facets' sag, the panel sums, the joints' prep and the u and v
+ * lengths, each as the preparation made it, so that a building read back
+ * is the same to the bit as one prepared anew. Only the fit points, cheap,
+ * are remade (project_prepare_rest_stoppable, surface_prepare_rest).
  *
  * The file (native byte order and doubles, which the header checks):
  *
@@ -21,28 +22,43 @@
  *     byte order           uint32, 0x01020304 as written
  *     payload bytes        uint64, what follows the header
  *     key                  64 hex digits: project_cache_key
- *     checksum             64 hex digits: SHA-256 of the payload
+ *     checksum             64 hex digits: the payload's, SHA-256 of its
+ *                          32 MB pieces' SHA-256s (cache_checksum.h)
  *   payload:
  *     nsurfaces            uint64
  *     per surface          its name, key, file, first face, mesh,
- *                          parameterization and curvature, every array
- *                          preceded by a presence byte, then zeros to
- *                          the next multiple of 8 bytes from the file's
- *                          start (project_cache.c)
+ *                          parameterization and curvature, then its
+ *                          prepared sums (facets' sag, u and v lengths,
+ *                          the lookup's cell starts and triangles, the
+ *                          panel points and corners and triangle sums,
+ *                          the joints' outline and per axis its reach,
+ *                          order, least coordinates and triangles), every
+ *                          array preceded by a presence byte, then zeros
+ *                          to the next multiple of 8 bytes from the
+ *                          file's start (project_cache.c)
  *
  * Reading maps the file and uses its arrays where they lie (aligned by
- * that padding): the skin's 400 MB are neither copied nor faulted into
+ * that padding): the skin's 1 GB is neither copied nor faulted into
  * fresh memory, which took most of a second run's start (version 1 read
- * them into buffers). It checks, in order, before anything read is used:
+ * them into buffers). A cache of an earlier format is refused as
+ * another version and rebuilt. It checks, in order, before anything read is used:
  * the file's size against the header's, the magic, the version and byte
  * order, the key (the files' SHA-256s, the settings that shape a
  * preparation and the code that made it: anything else is stale or
- * foreign), the checksum over the whole payload (the stop asked every
- * few milliseconds of it), every length against the bytes left in the
- * file, then every index (triangle corners, neighbours, the triangles
- * round a vertex, the loops, the components, the surface's file) against
- * what it indexes and every coordinate, UV and curvature (curvature.h
- * promises every value finite) for being finite. A damaged, truncated,
+ * foreign), the checksum over the whole payload (its pieces on the
+ * threads, the stop asked every few milliseconds of it), every length
+ * against the bytes left in the file, then every index (triangle
+ * corners, neighbours, the triangles round a vertex, the loops, the
+ * components, the surface's file) against what it indexes and every
+ * coordinate, UV and curvature (curvature.h promises every value finite)
+ * for being finite; then the prepared sums against the mesh, UV and
+ * curvature just checked: the lookup's grid is remade from the UV (never
+ * read) and its cell starts must run from 0 up to its count of entries,
+ * each naming a triangle; each corner's panel point must be numbered as
+ * first met and lie at that corner's UV, position and curvature; every
+ * triangle sum, the sag, the lengths and the reaches finite; along each
+ * axis the joints' order must name triangles, each at its corners' UV
+ * and vertices, in order of their least coordinate. A damaged, truncated,
  * stale or foreign file is refused with one line saying which; never a
  * wrong building. The mapping is private: a stage that wrote into an
  * array would change its own copy, never the file. Facet never changes
@@ -68,7 +84,7 @@
 #include "core/base/error.h"
 #include "core/project/project.h"
 
-#define PROJECT_CACHE_VERSION 2
+#define PROJECT_CACHE_VERSION 3
 #define PROJECT_CACHE_HEADER 152  /* bytes */
 
 /* What shapes a preparation besides the files' bytes. */

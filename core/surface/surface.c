@@ -43,6 +43,16 @@ static int check_precision(const struct surface *s, struct facet_error *err)
     double far = 0;
     for (int k = 0; k < 3; k++)
         far = fmax(far, fmax(fabs(m->bbox_min[k]), fabs(m->bbox_max[k])));
+    /* The median facet is no smaller than the smallest: when even that
+     * one is fine, the median (a sort of every facet, a tenth of a
+     * second on the skin, at every read of it or its cache) is not
+     * needed to say so. */
+    double least = INFINITY;
+    for (size_t t = 0; t < m->ntriangles; t++)
+        least = fmin(least, m->face_area[t]);
+    double smallest = sqrt(2 * least);
+    if (smallest > 0 && far <= 1e9 * smallest)
+        return FACET_OK;
     double facet;
     int rc = mesh_facet_size(m, &facet, err);
     if (rc != FACET_OK)
@@ -230,6 +240,10 @@ int surface_require_single(const struct surface *surface,
         "to panelize on its own", surface->path, surface->mesh.ncomponents);
 }
 
+static int prepare_rest(struct surface *surface, int cached,
+                        const struct facet_stop *stop,
+                        struct facet_error *err);
+
 int surface_prepare(struct surface *surface, int flip_normals,
                     enum param_method uv, struct facet_error *err)
 {
@@ -257,28 +271,42 @@ int surface_prepare_stoppable(struct surface *surface, int flip_normals,
                                              stop, &surface->curvature, err);
     if (rc != FACET_OK)
         return rc;
-    return surface_prepare_rest(surface, stop, err);
+    return prepare_rest(surface, 0, stop, err);
 }
 
 int surface_prepare_rest(struct surface *surface,
                          const struct facet_stop *stop,
                          struct facet_error *err)
 {
+    return prepare_rest(surface, surface_prepared_in_cache(surface), stop,
+                        err);
+}
+
+/* surface_prepare_rest; cached: the lookup, sag, sums and joints' prep
+ * came with the surface (its cache read them, and checked them). */
+static int prepare_rest(struct surface *surface, int cached,
+                        const struct facet_stop *stop,
+                        struct facet_error *err)
+{
     assert(surface->param.uv != NULL && surface->curvature.k1 != NULL);
     if (surface->param.report.degenerate > 0)
         warn(surface, "%zu triangles have no extent in UV and add no area "
              "to any panel", surface->param.report.degenerate);
     int rc = facet_stop_check(stop, err);
-    if (rc == FACET_OK)
+    /* A surface read back from its cache comes with its lookup, sag,
+     * panel sums and joints' prep: only the fit points, cheap, are made. */
+    if (rc == FACET_OK && !cached)
         rc = uv_index_build(surface->param.uv, surface->mesh.ntriangles,
                             &surface->uv, err);
-    if (rc == FACET_OK)
+    if (rc == FACET_OK && !cached)
         rc = mesh_facet_sag(&surface->mesh, &surface->curvature,
                             &surface->facet_sag, err);
-    if (rc == FACET_OK && (rc = facet_stop_check(stop, err)) == FACET_OK)
+    if (rc == FACET_OK && !cached &&
+        (rc = facet_stop_check(stop, err)) == FACET_OK)
         rc = panel_prep_build(&surface->mesh, &surface->uv,
                               &surface->curvature, &surface->panels, err);
-    if (rc == FACET_OK && (rc = facet_stop_check(stop, err)) == FACET_OK)
+    if (rc == FACET_OK && !cached &&
+        (rc = facet_stop_check(stop, err)) == FACET_OK)
         rc = joint_prep_build(&surface->mesh, &surface->uv, &surface->joints,
                               err);
     if (rc == FACET_OK && (rc = facet_stop_check(stop, err)) == FACET_OK)
@@ -287,6 +315,12 @@ int surface_prepare_rest(struct surface *surface,
         return rc;
     surface->prepared = 1;
     return FACET_OK;
+}
+
+int surface_prepared_in_cache(const struct surface *surface)
+{
+    return surface->uv.cell_start != NULL && surface->panels.triangle != NULL &&
+           surface->joints.order[0] != NULL;
 }
 
 void surface_close(struct surface *surface)

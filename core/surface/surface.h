@@ -121,10 +121,18 @@ int surface_prepare_stoppable(struct surface *surface, int flip_normals,
  * surface_prepare with the same settings): the UV warning, the UV's
  * lookup, the facets' sag, the panel sums, the joints' prep and the fit
  * points, all functions of the mesh, UV and curvature alone, so the same
- * to the bit as surface_prepare makes them. FACET_ESTOP when stop fires. */
+ * to the bit as surface_prepare makes them. A surface whose lookup, sag,
+ * sums and joints' prep came from the cache too (format 3:
+ * surface_prepared_in_cache) gets the UV warning and the fit points only.
+ * FACET_ESTOP when stop fires. */
 int surface_prepare_rest(struct surface *surface,
                          const struct facet_stop *stop,
                          struct facet_error *err);
+
+/* Whether surface's UV lookup, panel sums and joints' prep are already
+ * set (read back from a prepared building's cache), so that
+ * surface_prepare_rest does not make them again. */
+int surface_prepared_in_cache(const struct surface *surface);
 
 void surface_close(struct surface *surface);
 

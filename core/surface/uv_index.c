@@ -44,7 +44,7 @@ static int cell_of(double x, double origin, double size, int count)
     return (int)f;
 }
 
-int uv_index_build(const double *uv, size_t ntriangles, struct uv_index *out,
+int uv_index_frame(const double *uv, size_t ntriangles, struct uv_index *out,
                    struct facet_error *err)
 {
     memset(out, 0, sizeof *out);
@@ -80,7 +80,15 @@ int uv_index_build(const double *uv, size_t ntriangles, struct uv_index *out,
     out->ncells_v = (int)fmin(fmax(nv, 1), MAX_CELLS_PER_AXIS);
     out->cell_u = width / out->ncells_u;
     out->cell_v = height / out->ncells_v;
+    return FACET_OK;
+}
 
+int uv_index_build(const double *uv, size_t ntriangles, struct uv_index *out,
+                   struct facet_error *err)
+{
+    int rc = uv_index_frame(uv, ntriangles, out, err);
+    if (rc != FACET_OK)
+        return rc;
     size_t ncells = (size_t)out->ncells_u * (size_t)out->ncells_v;
     out->cell_start = calloc(ncells + 1, sizeof *out->cell_start);
     if (out->cell_start == NULL)

@@ -36,6 +36,14 @@ struct uv_index {
 int uv_index_build(const double *uv, size_t ntriangles, struct uv_index *out,
                    struct facet_error *err);
 
+/* The first half of uv_index_build: the UV box and the bucket grid (every
+ * field but cell_start and cell_triangles, left NULL), which follow from
+ * uv alone. A prepared building's cache (project_cache.h) keeps the
+ * buckets and remakes this half, so that the grid the buckets are checked
+ * against is never read from the file. Same returns. */
+int uv_index_frame(const double *uv, size_t ntriangles, struct uv_index *out,
+                   struct facet_error *err);
+
 /* The triangle whose UV triangle contains (u, v), with the barycentric
  * coordinates of the point in it, or UINT32_MAX when no triangle does.
  * tolerance widens each triangle by that much in barycentric terms (0 for

@@ -4,7 +4,7 @@
  * resume and the workbench's map read one beside the database.
  *
  * The header is made here around the bytes, with the key the reader is
- * given and the payload's own SHA-256 as its checksum: a fuzzer never
+ * given and the payload's own checksum (cache_checksum.h) as its checksum: a fuzzer never
  * guesses a checksum, and without it every input would stop there. So the
  * reader's own checks (every length against the bytes left, every index
  * against what it indexes, every coordinate finite) are what is fuzzed,
@@ -21,7 +21,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "core/base/sha256.h"
+#include "core/project/cache_checksum.h"
 #include "core/project/project_cache.h"
 #include "fuzz.h"
 
@@ -35,11 +35,11 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     unsigned char *file = malloc(total + 1);
     if (file == NULL)
         return 0;
-    struct sha256 h;
-    sha256_init(&h);
-    sha256_update(&h, data, size);
+    struct cache_checksum h;
+    cache_checksum_init(&h);
+    cache_checksum_update(&h, data, size);
     char checksum[65];
-    sha256_hex(&h, checksum);
+    cache_checksum_hex(&h, checksum);
     uint32_t version = PROJECT_CACHE_VERSION, order = 0x01020304u;
     uint64_t payload = size;
     memcpy(file, "FACETPRE", 8);

@@ -25,6 +25,7 @@
 
 #include "core/base/sha256.h"
 #include "core/panel/panel_internal.h"
+#include "core/project/cache_checksum.h"
 #include "core/project/project.h"
 #include "core/project/project_cache.h"
 #include "core/surface/example_skin.h"
@@ -262,6 +263,10 @@ static void round_trip(const char *obj, enum mesh_units units, int flip,
     int rc = project_cache_read(cache, key, &obj, 1, units, &b, &err);
     if (rc != FACET_OK)
         fail_msg("%s", err.message);
+    /* The lookup, sums and joints' prep come from the file (format 3),
+     * not made again: what is compared below is what was kept. */
+    for (size_t i = 0; i < b.nsurfaces; i++)
+        assert_true(surface_prepared_in_cache(&b.surfaces[i].surface));
     assert_int_equal(project_prepare_rest_stoppable(&b, NULL, &err),
                      FACET_OK);
     same_project(&a, &b);
@@ -453,6 +458,169 @@ static void test_curvature_not_a_number_is_refused(void **state)
             project_close(&a);
             refused(cache, key, obj, "not a number");
         }
+}
+
+/* One way to spoil the prepared sums of a building's second surface
+ * (format 3) while keeping the file's checksum right: what a file made
+ * by hand, or a Facet that got them wrong, would hold. */
+enum spoil {
+    SPOIL_CELL_TRIANGLE,   /* a lookup cell lists triangle #T */
+    SPOIL_CELL_START,      /* a cell's start past the next one's */
+    SPOIL_CORNER,          /* a corner's point #points */
+    SPOIL_CORNER_ORDER,    /* a corner's point not yet met */
+    SPOIL_POINT,           /* a point elsewhere than its corner */
+    SPOIL_SUM,             /* a triangle's second moment NaN */
+    SPOIL_ORDER,           /* the joints' order names triangle #T */
+    SPOIL_VERTEX,          /* a joint triangle's corner vertex #V */
+    SPOIL_LEAST,           /* the joints' order out of order */
+    SPOIL_REACH,           /* a reach infinite */
+    SPOIL_SAG,             /* the facets' sag NaN */
+    SPOIL_COUNT
+};
+
+static void spoil(struct project *p, enum spoil how)
+{
+    struct surface *s = &p->surfaces[1].surface;
+    size_t T = s->mesh.ntriangles, V = s->mesh.nvertices;
+    size_t cells = (size_t)s->uv.ncells_u * (size_t)s->uv.ncells_v;
+    size_t mid = T / 2;
+    switch (how) {
+    case SPOIL_CELL_TRIANGLE:
+        s->uv.cell_triangles[s->uv.cell_start[cells] / 2] = (uint32_t)T;
+        break;
+    case SPOIL_CELL_START:
+        assert_true(cells >= 2);
+        s->uv.cell_start[1] = s->uv.cell_start[cells] + 1;
+        break;
+    case SPOIL_CORNER:
+        s->panels.corner[3 * mid] = (uint32_t)s->panels.npoints;
+        break;
+    case SPOIL_CORNER_ORDER:
+        /* the first corner names the last point: in range, yet no
+         * preparation numbers them so, and its fit point would be
+         * another's */
+        s->panels.corner[0] = (uint32_t)s->panels.npoints - 1;
+        break;
+    case SPOIL_POINT:
+        s->panels.point[s->panels.corner[3 * mid]].position[2] += 1e-3;
+        break;
+    case SPOIL_SUM:
+        s->panels.triangle[mid].second[4] = NAN;
+        break;
+    case SPOIL_ORDER:
+        s->joints.order[0][mid] = (uint32_t)T;
+        break;
+    case SPOIL_VERTEX:
+        s->joints.triangle[1][mid].vertex[2] = (uint32_t)V;
+        break;
+    case SPOIL_LEAST: {
+        /* the first and last swapped, each whole: every triangle where
+         * the mesh has it, the order alone wrong */
+        size_t last = T - 1;
+        uint32_t o = s->joints.order[0][0];
+        double l = s->joints.least[0][0];
+        struct joint_triangle t = s->joints.triangle[0][0];
+        s->joints.order[0][0] = s->joints.order[0][last];
+        s->joints.least[0][0] = s->joints.least[0][last];
+        s->joints.triangle[0][0] = s->joints.triangle[0][last];
+        s->joints.order[0][last] = o;
+        s->joints.least[0][last] = l;
+        s->joints.triangle[0][last] = t;
+        break;
+    }
+    case SPOIL_REACH:
+        s->joints.reach[1] = INFINITY;
+        break;
+    case SPOIL_SAG:
+        s->facet_sag = NAN;
+        break;
+    case SPOIL_COUNT:
+        break;
+    }
+}
+
+/* A cache whose checksum holds but one of whose prepared sums (format 3)
+ * is out of range, out of order or not a number: refused as damaged, for
+ * each, never read (an index past its array would be read out of bounds
+ * by the first option's panels, lookup or joints). The project is
+ * prepared, one number spoiled, then written: the writer writes what it
+ * is given, with a right checksum. */
+static void test_prepared_sums_out_of_range_are_refused(void **state)
+{
+    (void)state;
+    char obj[128], cache[128];
+    snprintf(obj, sizeof obj, "%s/sheets_forged.obj", dir);
+    snprintf(cache, sizeof cache, "%s/forged.cache", dir);
+    write_sheets(obj, 4, -1);
+    struct project_cache_settings s = {UNITS_M, 0, PARAM_AUTO, "test"};
+    char key[65];
+    key_of(obj, &s, key);
+    for (int how = 0; how < SPOIL_COUNT; how++) {
+        struct project a;
+        fresh(obj, UNITS_M, 0, PARAM_AUTO, &a);
+        spoil(&a, (enum spoil)how);
+        struct facet_error err;
+        assert_int_equal(project_cache_write(&a, key, cache, &err), FACET_OK);
+        project_close(&a);
+        refused(cache, key, obj, "damaged");
+    }
+}
+
+/* The checksum over pieces (cache_checksum.h), against its definition
+ * computed here with SHA-256 alone: each 32 MB piece's digest in hex,
+ * those hashed; written in uneven lengths, checked on 1 and 3 threads;
+ * for a payload of 2 pieces and a bit, of exactly 2, and of a few
+ * bytes; and a byte changed in the last piece changes it. */
+static void test_checksum_over_pieces(void **state)
+{
+    (void)state;
+    size_t piece = (size_t)CACHE_CHECKSUM_PIECE;
+    size_t sizes[3] = {2 * piece + 12345, 2 * piece, 100};
+    unsigned char *bytes = malloc(sizes[0]);
+    assert_non_null(bytes);
+    for (size_t i = 0; i < sizes[0]; i++)
+        bytes[i] = (unsigned char)((i * 2654435761u) >> 13);
+    for (int k = 0; k < 3; k++) {
+        size_t n = sizes[k];
+        struct sha256 outer;
+        sha256_init(&outer);
+        for (size_t at = 0; at < n; at += piece) {
+            struct sha256 h;
+            sha256_init(&h);
+            sha256_update(&h, bytes + at, n - at < piece ? n - at : piece);
+            char hex[65];
+            sha256_hex(&h, hex);
+            sha256_update(&outer, hex, 64);
+        }
+        char truth[65];
+        sha256_hex(&outer, truth);
+
+        struct cache_checksum c;
+        cache_checksum_init(&c);
+        for (size_t at = 0, step = 1; at < n; step = step * 7 + 3) {
+            size_t take = n - at < step ? n - at : step;
+            cache_checksum_update(&c, bytes + at, take);
+            at += take;
+        }
+        char written[65];
+        cache_checksum_hex(&c, written);
+        assert_string_equal(written, truth);
+        for (int threads = 1; threads <= 3; threads += 2) {
+            char checked[65];
+            struct facet_error err;
+            assert_int_equal(cache_checksum_of(bytes, n, threads, NULL,
+                                               checked, &err), FACET_OK);
+            assert_string_equal(checked, truth);
+        }
+        bytes[n - 1] ^= 1;
+        char changed[65];
+        struct facet_error err;
+        assert_int_equal(cache_checksum_of(bytes, n, 2, NULL, changed, &err),
+                         FACET_OK);
+        assert_string_not_equal(changed, truth);
+        bytes[n - 1] ^= 1;
+    }
+    free(bytes);
 }
 
 /* The reader asks its stop: one that fires gives FACET_ESTOP and
@@ -807,6 +975,60 @@ static void test_study_reuses_and_rebuilds(void **state)
     assert_int_equal(prepared(db, obj, 0, PARAM_AUTO).reused, 1);
 }
 
+/* The study meets such a cache beside its database: one note, the
+ * building prepared again from its files (the same to the bit as a fresh
+ * preparation), and the cache made good for the next run. */
+static void test_study_rebuilds_a_forged_cache(void **state)
+{
+    (void)state;
+    char obj[128], db[128];
+    snprintf(obj, sizeof obj, "%s/sheets_forged_study.obj", dir);
+    snprintf(db, sizeof db, "%s/forged/runs.db", dir);
+    char folder[128];
+    snprintf(folder, sizeof folder, "%s/forged", dir);
+    assert_int_equal(mkdir(folder, 0700), 0);
+    write_sheets(obj, 4, -1);
+    assert_int_equal(prepared(db, obj, 0, PARAM_AUTO).again, 0);
+    char found[2][256];
+    assert_int_equal(caches(db, found), 1);
+    /* The key the study gives (its program's among it), from the file
+     * it wrote. */
+    char key[65];
+    FILE *in = fopen(found[0], "rb");
+    assert_non_null(in);
+    assert_int_equal(fseek(in, 24, SEEK_SET), 0);
+    assert_int_equal(fread(key, 1, 64, in), 64);
+    key[64] = '\0';
+    fclose(in);
+    const enum spoil hows[] = {SPOIL_CELL_TRIANGLE, SPOIL_CORNER,
+                               SPOIL_ORDER, SPOIL_VERTEX};
+    for (size_t k = 0; k < sizeof hows / sizeof hows[0]; k++) {
+        struct project a;
+        fresh(obj, UNITS_M, 0, PARAM_AUTO, &a);
+        spoil(&a, hows[k]);
+        struct facet_error err;
+        assert_int_equal(project_cache_write(&a, key, found[0], &err),
+                         FACET_OK);
+        project_close(&a);
+        struct notes n = prepared(db, obj, 0, PARAM_AUTO);
+        assert_int_equal(n.again, 1);
+        assert_non_null(strstr(n.last, "damaged"));
+        assert_int_equal(prepared(db, obj, 0, PARAM_AUTO).reused, 1);
+    }
+    /* A cache of format 2 (no prepared sums): another version, rebuilt
+     * with a note. */
+    uint32_t two = 2;
+    FILE *io = fopen(found[0], "r+b");
+    assert_non_null(io);
+    assert_int_equal(fseek(io, 8, SEEK_SET), 0);
+    assert_int_equal(fwrite(&two, 4, 1, io), 1);
+    fclose(io);
+    struct notes n = prepared(db, obj, 0, PARAM_AUTO);
+    assert_int_equal(n.again, 1);
+    assert_non_null(strstr(n.last, "format version 2"));
+    assert_int_equal(prepared(db, obj, 0, PARAM_AUTO).reused, 1);
+}
+
 /* A resume knows its files' SHA-256s (it found them by them): the cache
  * is keyed by those, and one made from other bytes is stale. */
 static void test_resume_uses_known_digests(void **state)
@@ -894,6 +1116,9 @@ int main(void)
         cmocka_unit_test(test_damage_and_truncation_are_refused),
         cmocka_unit_test(test_another_key_is_stale),
         cmocka_unit_test(test_curvature_not_a_number_is_refused),
+        cmocka_unit_test(test_prepared_sums_out_of_range_are_refused),
+        cmocka_unit_test(test_study_rebuilds_a_forged_cache),
+        cmocka_unit_test(test_checksum_over_pieces),
         cmocka_unit_test(test_reader_asks_its_stop),
         cmocka_unit_test(test_stop_while_reading_the_cache),
         cmocka_unit_test(test_study_reuses_and_rebuilds),
