@@ -234,6 +234,13 @@ int panel_prep_build(const struct mesh *mesh, const struct uv_index *index,
                      const struct curvature *curvature,
                      struct panel_prep *out, struct facet_error *err);
 
+/* For a prep whose sums were read rather than built (a prepared
+ * building's cache, checked: core/project/project_cache.h) over its mesh
+ * and curvature: makes what panel_prep_build derives from the curvature
+ * alone and the cache does not keep, the triangles' curvature extremes.
+ * Returns FACET_OK, FACET_EWORK when out of memory. */
+int panel_prep_add_ranges(struct panel_prep *prep, struct facet_error *err);
+
 void panel_prep_free(struct panel_prep *prep);
 
 /* panels_build for prep's mesh, index and curvature: the same panels, to

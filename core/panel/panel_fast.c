@@ -124,6 +124,15 @@ int panel_prep_build(const struct mesh *mesh, const struct uv_index *index,
     return FACET_OK;
 }
 
+int panel_prep_add_ranges(struct panel_prep *prep, struct facet_error *err)
+{
+    assert(prep->curvature_range == NULL);
+    if (triangle_curvature_ranges(prep->mesh, prep->curvature,
+                                  &prep->curvature_range) != FACET_OK)
+        return facet_error_set(err, FACET_EWORK, "out of memory (panels)");
+    return FACET_OK;
+}
+
 void panel_prep_free(struct panel_prep *prep)
 {
     free(prep->point_uv);

@@ -309,6 +309,10 @@ static int prepare_rest(struct surface *surface, int cached,
         (rc = facet_stop_check(stop, err)) == FACET_OK)
         rc = joint_prep_build(&surface->mesh, &surface->uv, &surface->joints,
                               err);
+    /* the triangles' curvature extremes are not kept in the cache: one
+     * pass over the curvature it holds */
+    if (rc == FACET_OK && cached && surface->panels.curvature_range == NULL)
+        rc = panel_prep_add_ranges(&surface->panels, err);
     if (rc == FACET_OK && (rc = facet_stop_check(stop, err)) == FACET_OK)
         rc = fit_points_build(&surface->panels, &surface->fit, err);
     if (rc != FACET_OK)

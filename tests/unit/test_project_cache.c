@@ -199,6 +199,8 @@ static void same_surface(const struct surface *a, const struct surface *b)
     SAME(r->point, s->point, r->npoints);
     SAME(r->corner, s->corner, 3 * T);
     SAME(r->triangle, s->triangle, T);
+    /* not in the file: remade from the curvature it holds */
+    SAME(r->curvature_range, s->curvature_range, T);
 
     const struct joint_prep *j = &a->joints, *k = &b->joints;
     SAME(&j->outline, &k->outline, 1);
