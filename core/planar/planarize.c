@@ -24,9 +24,6 @@
 #define WEIGHT_ANCHOR 0.01
 /* The least Levenberg-Marquardt damping, beside a diagonal of about 1. */
 #define MU_LEAST 1e-4
-/* A step that raises the sum is halved at most this many times before
- * the weight is called done (a sixteenth of it). */
-#define STEP_HALVINGS 4
 
 static const int corner_offset[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
 
@@ -368,23 +365,6 @@ static double energy(const struct problem *p, const double *x,
     return sum;
 }
 
-/* The quads of x over the planarity tolerance (over their longer
- * diagonal, as measure counts them). */
-static size_t quads_over(const struct problem *p, const double *x,
-                         double tolerance)
-{
-    size_t over = 0;
-    for (size_t q = 0; q < p->nquads; q++) {
-        double c[4][3];
-        for (int k = 0; k < 4; k++)
-            memcpy(c[k], &x[3 * p->quad[q][k]], sizeof c[k]);
-        double diagonal = quad_diagonal(c);
-        if (diagonal > 0 && quad_planarity(c) / diagonal > tolerance)
-            over++;
-    }
-    return over;
-}
-
 /* The Gauss-Newton system at x into A (values) and rhs (minus half the
  * gradient), damped by mu on the diagonal. */
 static void system_fill(const struct problem *p, cholmod_sparse *A,
@@ -552,10 +532,8 @@ static int solve(const struct nearest_index *index, const struct problem *p,
         goto done;
     }
     /* A step is done when no corner moves by more than still, or the sum
-     * falls by less than a thousandth (a hundredth at the last weight once
-     * every quad is within the tolerance); a weight is done after a done
-     * step, or after steps_per_weight steps, or when no length of the
-     * step lowers the sum. */
+     * falls by less than a thousandth; a weight is done after a done
+     * step, or after steps_per_weight steps. */
     double still = fmax(1e-3 * o->closeness, 1e-6);
     const int steps_per_weight = 8;
     double w_p = WEIGHT_PLANARITY_FIRST;
@@ -588,44 +566,32 @@ static int solve(const struct nearest_index *index, const struct problem *p,
         }
         const double *dx = step->x;
         double largest = 0;
+        for (size_t k = 0; k < n; k++)
+            trial[k] = x[k] + dx[k];
         for (int v = 0; v < p->nvars; v++) {
             double d2 = dx[3 * v] * dx[3 * v] + dx[3 * v + 1] * dx[3 * v + 1] +
                         dx[3 * v + 2] * dx[3 * v + 2];
             largest = fmax(largest, d2);
         }
         largest = sqrt(largest);
-        /* The step, then halved while it raises the sum: a halving costs
-         * one nearest-point pass, a factorization (more damping) 10 to
-         * 20 of them. */
-        double length = 1, trial_e = 0;
-        for (int halving = 0; halving <= STEP_HALVINGS; halving++) {
-            for (size_t k = 0; k < n; k++)
-                trial[k] = x[k] + length * dx[k];
-            double trial_closeness = feet_find(index, p->nvars, trial,
-                                               trial_foot, trial_normal);
-            trial_e = energy(p, trial, x0, trial_closeness, w_p);
-            if (trial_e <= e || length * largest < still)
-                break;
-            length /= 2;
-        }
         cm->free_dense(&step, c);
+        double trial_closeness = feet_find(index, p->nvars, trial, trial_foot,
+                                           trial_normal);
+        double trial_e = energy(p, trial, x0, trial_closeness, w_p);
         (*iterations)++;
         at_weight++;
-        int done_step = length * largest < still;
+        int done_step = largest < still;
         if (trial_e <= e || done_step) {
-            double enough = w_p >= WEIGHT_PLANARITY &&
-                            quads_over(p, trial, o->planarity) == 0
-                                ? 1e-2 : 1e-3;
-            done_step = done_step || e - trial_e <= enough * e;
+            done_step = done_step || e - trial_e <= 1e-3 * e;
             memcpy(x, trial, n * sizeof *x);
             memcpy(foot, trial_foot, n * sizeof *foot);
             memcpy(normal, trial_normal, n * sizeof *normal);
             e = trial_e;
             mu = fmax(mu / 3, MU_LEAST);
         } else {
-            /* No length of the step lowers the sum: as far as this
-             * weight goes. */
-            done_step = 1;
+            mu *= 10;
+            /* No step lowers the sum: as far as this weight goes. */
+            done_step = mu > 1e4;
         }
         if (done_step || at_weight >= steps_per_weight) {
             if (w_p >= WEIGHT_PLANARITY) {

@@ -22,13 +22,7 @@
  * corner coordinates, with SuiteSparse's CHOLMOD: its pattern (corners of
  * a quad, three along a grid line) never changes, so the fill-reducing
  * ordering and the symbolic analysis are made once, and each step only
- * refactors the numbers. A step that raises the sum is halved, up to four
- * times (each a nearest-point pass, a fraction of a factorization), before
- * the weight is called done; at the last weight, once every quad is within
- * the planarity tolerance, a step that lowers the sum by less than a
- * hundredth ends the run (else a thousandth): what is left then is the
- * slow slide of the corners' closeness (the roof's 100 x 100 grid: 0.4 mm
- * over the next ten steps). Why not ShapeUp's local/global (project each quad
+ * refactors the numbers. Why not ShapeUp's local/global (project each quad
  * onto its best-fit plane, solve a fixed matrix): its fixed point is a
  * compromise between the terms, with planarity only as good as the weight
  * ratio and convergence that slows as that ratio grows; planarity to 1e-6
@@ -100,11 +94,8 @@ struct planarize_result {
     double max_relative;
     double start_max_relative;            /* the start grid's */
     int iterations;
-    int converged;           /* the last weight ended on a done step (no
-                                corner moved by more than a thousandth of
-                                the budget, or 1 um; the sum fell by less
-                                than above; or no length of the step
-                                lowered it), not at the iteration limit */
+    int converged;           /* the last step moved no corner by more than
+                                a thousandth of the budget (or 1 um) */
     int feasible;            /* over == 0 and max_distance <= closeness */
 };
 
