@@ -71,47 +71,51 @@ static void store_piece(void *context, size_t cell, uint32_t triangle,
     }
 }
 
-/* A raw vertex under its tolerance bucket, for merging. */
-struct bucket_key {
-    int64_t qu, qv;
-    size_t k;          /* raw vertex */
+/* Two numbers and a third to break ties, sorted in that order: a raw
+ * vertex under its tolerance bucket, for merging (first, second: the
+ * bucket's qu, qv; k: the raw vertex), or a directed edge between merged
+ * vertices, for tracing outlines (first, second: its start and end; k 0).
+ * One sort serves both. */
+struct sort_key {
+    int64_t first, second;
+    size_t k;
 };
 
-/* Whether x sorts before y: by bucket, then raw vertex (a total order,
- * so every sort gives the same order). */
-static inline int bucket_before(const struct bucket_key *x,
-                                const struct bucket_key *y)
+/* Whether x sorts before y: by first, second, then k (a total order, so
+ * every sort gives the same order). */
+static inline int key_before(const struct sort_key *x,
+                             const struct sort_key *y)
 {
-    if (x->qu != y->qu)
-        return x->qu < y->qu;
-    if (x->qv != y->qv)
-        return x->qv < y->qv;
+    if (x->first != y->first)
+        return x->first < y->first;
+    if (x->second != y->second)
+        return x->second < y->second;
     return x->k < y->k;
 }
 
-/* Sorts keys[0..n) by bucket_before. qsort's call through a pointer per
+/* Sorts keys[0..n) by key_before. qsort's call through a pointer per
  * comparison was a fifth of the panels' widths in the paper study (issue
  * 27): a quicksort of its own, median of three, insertion below 16. */
-static void sort_buckets(struct bucket_key *keys, size_t n)
+static void sort_keys(struct sort_key *keys, size_t n)
 {
     while (n > 16) {
         size_t mid = n / 2;
-        struct bucket_key t;
-        if (bucket_before(&keys[mid], &keys[0])) {
+        struct sort_key t;
+        if (key_before(&keys[mid], &keys[0])) {
             t = keys[mid]; keys[mid] = keys[0]; keys[0] = t;
         }
-        if (bucket_before(&keys[n - 1], &keys[mid])) {
+        if (key_before(&keys[n - 1], &keys[mid])) {
             t = keys[mid]; keys[mid] = keys[n - 1]; keys[n - 1] = t;
-            if (bucket_before(&keys[mid], &keys[0])) {
+            if (key_before(&keys[mid], &keys[0])) {
                 t = keys[mid]; keys[mid] = keys[0]; keys[0] = t;
             }
         }
-        struct bucket_key pivot = keys[mid];
+        struct sort_key pivot = keys[mid];
         size_t i = 0, j = n - 1;
         for (;;) {
-            while (bucket_before(&keys[i], &pivot))
+            while (key_before(&keys[i], &pivot))
                 i++;
-            while (bucket_before(&pivot, &keys[j]))
+            while (key_before(&pivot, &keys[j]))
                 j--;
             if (i >= j)
                 break;
@@ -123,18 +127,18 @@ static void sort_buckets(struct bucket_key *keys, size_t n)
          * larger by the loop, so the stack stays O(log n). */
         size_t left = j + 1;
         if (left < n - left) {
-            sort_buckets(keys, left);
+            sort_keys(keys, left);
             keys += left;
             n -= left;
         } else {
-            sort_buckets(keys + left, n - left);
+            sort_keys(keys + left, n - left);
             n = left;
         }
     }
     for (size_t i = 1; i < n; i++) {
-        struct bucket_key x = keys[i];
+        struct sort_key x = keys[i];
         size_t j = i;
-        for (; j > 0 && bucket_before(&x, &keys[j - 1]); j--)
+        for (; j > 0 && key_before(&x, &keys[j - 1]); j--)
             keys[j] = keys[j - 1];
         keys[j] = x;
     }
@@ -144,106 +148,48 @@ static void sort_buckets(struct bucket_key *keys, size_t n)
  * *from, which it leaves there: the keys are sorted, so a caller whose
  * (qu, qv) never decreases walks each key once in all, where a binary
  * search a vertex was a third of the merge (issue 27). */
-static size_t lower_bound_from(const struct bucket_key *keys, size_t n,
+static size_t lower_bound_from(const struct sort_key *keys, size_t n,
                                int64_t qu, int64_t qv, size_t *from)
 {
     size_t lo = *from;
     while (lo < n &&
-           (keys[lo].qu < qu || (keys[lo].qu == qu && keys[lo].qv < qv)))
+           (keys[lo].first < qu ||
+            (keys[lo].first == qu && keys[lo].second < qv)))
         lo++;
     *from = lo;
     return lo;
 }
 
-/* A directed edge between merged vertices. */
-struct edge {
-    size_t a, b;
-};
-
-/* Whether edge e sorts before f: by start, then end. */
-static inline int edge_before(const struct edge *e, const struct edge *f)
-{
-    return e->a != f->a ? e->a < f->a : e->b < f->b;
-}
-
-/* Sorts edges[0..n) by edge_before, as sort_buckets sorts its keys (and
- * for the same reason: qsort's call a comparison). Equal edges are equal
- * structs, so their order is no matter. */
-static void sort_edges(struct edge *edges, size_t n)
-{
-    while (n > 16) {
-        size_t mid = n / 2;
-        struct edge t;
-        if (edge_before(&edges[mid], &edges[0])) {
-            t = edges[mid]; edges[mid] = edges[0]; edges[0] = t;
-        }
-        if (edge_before(&edges[n - 1], &edges[mid])) {
-            t = edges[mid]; edges[mid] = edges[n - 1]; edges[n - 1] = t;
-            if (edge_before(&edges[mid], &edges[0])) {
-                t = edges[mid]; edges[mid] = edges[0]; edges[0] = t;
-            }
-        }
-        struct edge pivot = edges[mid];
-        size_t i = 0, j = n - 1;
-        for (;;) {
-            while (edge_before(&edges[i], &pivot))
-                i++;
-            while (edge_before(&pivot, &edges[j]))
-                j--;
-            if (i >= j)
-                break;
-            t = edges[i]; edges[i] = edges[j]; edges[j] = t;
-            i++;
-            j--;
-        }
-        size_t left = j + 1;
-        if (left < n - left) {
-            sort_edges(edges, left);
-            edges += left;
-            n -= left;
-        } else {
-            sort_edges(edges + left, n - left);
-            n = left;
-        }
-    }
-    for (size_t i = 1; i < n; i++) {
-        struct edge x = edges[i];
-        size_t j = i;
-        for (; j > 0 && edge_before(&x, &edges[j - 1]); j--)
-            edges[j] = edges[j - 1];
-        edges[j] = x;
-    }
-}
-
 /* How many of edges[0..n) (sorted) are (a, b). */
-static size_t edge_count(const struct edge *edges, size_t n, size_t a,
-                         size_t b)
+static size_t edge_count(const struct sort_key *edges, size_t n, int64_t a,
+                         int64_t b)
 {
     size_t lo = 0, hi = n;
     while (lo < hi) {
         size_t mid = lo + (hi - lo) / 2;
-        if (edges[mid].a < a || (edges[mid].a == a && edges[mid].b < b))
+        if (edges[mid].first < a ||
+            (edges[mid].first == a && edges[mid].second < b))
             lo = mid + 1;
         else
             hi = mid;
     }
     size_t count = 0;
-    while (lo + count < n && edges[lo + count].a == a &&
-           edges[lo + count].b == b)
+    while (lo + count < n && edges[lo + count].first == a &&
+           edges[lo + count].second == b)
         count++;
     return count;
 }
 
 /* Working memory reused from panel to panel, sized for the largest. */
 struct scratch {
-    struct bucket_key *keys;  /* panel's raw vertices */
+    struct sort_key *keys;    /* panel's raw vertices */
     size_t *root;             /* raw vertex -> its cluster's first member
                                  in sorted order */
     size_t *number;           /* cluster root -> merged number */
     size_t *merged;           /* raw vertex -> merged number in the panel */
     size_t *first;            /* merged number -> first raw vertex */
-    struct edge *edges;       /* panel's piece edges */
-    struct edge *boundary;    /* edges left uncancelled */
+    struct sort_key *edges;   /* panel's piece edges */
+    struct sort_key *boundary;  /* edges left uncancelled */
     unsigned char *used;      /* boundary edges already in a loop */
 };
 
@@ -263,13 +209,13 @@ static size_t merge_vertices(const struct raw *r, size_t v0, size_t v1,
     size_t m = v1 - v0;
     for (size_t k = 0; k < m; k++) {
         const double *uv = &r->uv[2 * (v0 + k)];
-        s->keys[k].qu = (int64_t)floor((uv[0] - umin) / tolerance);
-        s->keys[k].qv = (int64_t)floor((uv[1] - vmin) / tolerance);
+        s->keys[k].first = (int64_t)floor((uv[0] - umin) / tolerance);
+        s->keys[k].second = (int64_t)floor((uv[1] - vmin) / tolerance);
         s->keys[k].k = k;
         s->root[k] = SIZE_MAX;
         s->number[k] = SIZE_MAX;
     }
-    sort_buckets(s->keys, m);
+    sort_keys(s->keys, m);
     /* Each vertex joins the cluster of a vertex already seen within
      * tolerance in its own or a neighbouring bucket, or starts one. A
      * root's label is itself, so labels never chain. */
@@ -281,10 +227,10 @@ static size_t merge_vertices(const struct raw *r, size_t v0, size_t v1,
         const double *uv = &r->uv[2 * (v0 + k)];
         size_t root = k;
         for (int64_t d = -1; d <= 1 && root == k; d++) {
-            size_t y = lower_bound_from(s->keys, m, s->keys[x].qu + d,
-                                        s->keys[x].qv - 1, &from[d + 1]);
-            for (; y < m && s->keys[y].qu == s->keys[x].qu + d &&
-                   s->keys[y].qv <= s->keys[x].qv + 1; y++) {
+            size_t y = lower_bound_from(s->keys, m, s->keys[x].first + d,
+                                        s->keys[x].second - 1, &from[d + 1]);
+            for (; y < m && s->keys[y].first == s->keys[x].first + d &&
+                   s->keys[y].second <= s->keys[x].second + 1; y++) {
                 size_t other = s->keys[y].k;
                 if (s->root[other] == SIZE_MAX)
                     continue;
@@ -366,22 +312,25 @@ static void trace_outline(struct panel_geometry *g, size_t n,
     for (size_t p = g->panel_piece[n]; p < g->panel_piece[n + 1]; p++) {
         size_t c0 = g->piece_start[p], c1 = g->piece_start[p + 1];
         for (size_t c = c0; c < c1; c++) {
-            s->edges[nedges].a = g->corner[c];
-            s->edges[nedges].b = g->corner[c + 1 < c1 ? c + 1 : c0];
+            s->edges[nedges].first = (int64_t)g->corner[c];
+            s->edges[nedges].second =
+                (int64_t)g->corner[c + 1 < c1 ? c + 1 : c0];
+            s->edges[nedges].k = 0;
             nedges++;
         }
     }
-    sort_edges(s->edges, nedges);
+    sort_keys(s->edges, nedges);
     /* An edge is on the outline as often as it is not matched the other
      * way round by a neighbouring piece. */
     size_t nboundary = 0;
     for (size_t e = 0; e < nedges;) {
         size_t same = 1;
-        while (e + same < nedges && s->edges[e + same].a == s->edges[e].a &&
-               s->edges[e + same].b == s->edges[e].b)
+        while (e + same < nedges &&
+               s->edges[e + same].first == s->edges[e].first &&
+               s->edges[e + same].second == s->edges[e].second)
             same++;
-        size_t reverse = edge_count(s->edges, nedges, s->edges[e].b,
-                                    s->edges[e].a);
+        size_t reverse = edge_count(s->edges, nedges, s->edges[e].second,
+                                    s->edges[e].first);
         for (size_t k = reverse; k < same; k++)
             s->boundary[nboundary++] = s->edges[e];
         e += same;
@@ -397,21 +346,22 @@ static void trace_outline(struct panel_geometry *g, size_t n,
         size_t length = 0, e = e0;
         for (;;) {
             s->used[e] = 1;
-            out[length++] = s->boundary[e].a;
-            size_t to = s->boundary[e].b;
-            if (to == s->boundary[e0].a)
+            out[length++] = (size_t)s->boundary[e].first;
+            int64_t to = s->boundary[e].second;
+            if (to == s->boundary[e0].first)
                 break;
             size_t lo = 0, hi = nboundary;
             while (lo < hi) {
                 size_t mid = lo + (hi - lo) / 2;
-                if (s->boundary[mid].a < to)
+                if (s->boundary[mid].first < to)
                     lo = mid + 1;
                 else
                     hi = mid;
             }
-            while (lo < nboundary && s->boundary[lo].a == to && s->used[lo])
+            while (lo < nboundary && s->boundary[lo].first == to &&
+                   s->used[lo])
                 lo++;
-            if (lo >= nboundary || s->boundary[lo].a != to)
+            if (lo >= nboundary || s->boundary[lo].first != to)
                 break;  /* open chain: only a non-manifold mesh does this */
             e = lo;
         }
