@@ -165,7 +165,10 @@ check "help: ] and [ page through the building's surfaces" '\] / \[ +a project.s
 keys q q
 check "back on the options table" "^ Run 1 "
 keys L
-check "L: the New run form says it takes no project" "like this: the New run form takes a single surface"
+check "L: the New run form like the building's option, its module narrowed around it" \
+    '^[ v^]Module W x H \(m\) +[0-9.]+:[0-9.]+:[0-9.]+x[0-9.]+:[0-9.]+:[0-9.]+$'
+keys Escape
+check "Escape: back on the options table" "^ Run 1 "
 keys F10
 check_exit "the workbench quits cleanly"
 
