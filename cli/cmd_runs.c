@@ -130,17 +130,6 @@ static void print_json(const struct run_info *runs,
     json_finish(&w);
 }
 
-/* The welding tolerance a building's run found its seams at (mm), "-"
- * where it has none: a single surface, or a building an older Facet ran
- * (before schema v15), never 0. */
-static void weld_text(const struct run_info *r, char *out, size_t size)
-{
-    if (isfinite(r->weld_mm))
-        snprintf(out, size, "%g", r->weld_mm);
-    else
-        snprintf(out, size, "-");
-}
-
 /* How run types SP panels, the joint limits its options are held to and
  * a building's welding tolerance, in one line. */
 static void run_built_note(const struct run_info *r, char *line,
@@ -191,7 +180,7 @@ static void print_human(const struct run_info *runs,
         const struct run_info *r = &runs[k];
         char id[24], options[24], pareto[24], elapsed[32];
         char cost[64] = "-", hv[32] = "-", label[1200], weld[32];
-        weld_text(r, weld, sizeof weld);
+        store_run_weld_text(r, weld, sizeof weld);
         snprintf(id, sizeof id, "%lld", (long long)r->id);
         snprintf(options, sizeof options, "%lld", (long long)r->options);
         snprintf(pareto, sizeof pareto, "%lld", (long long)r->pareto_options);

@@ -177,6 +177,13 @@ int store_run_incomplete(const struct run_info *run);
 const char *store_run_status_text(const struct run_info *run, char *text,
                                   size_t size);
 
+/* What a listing shows for the welding tolerance a building's run found
+ * its seams at, into text (size bytes): its mm ("%g"), or "-" where it
+ * has none (a single surface, or a building before schema v15), never 0.
+ * Returns text. */
+const char *store_run_weld_text(const struct run_info *run, char *text,
+                                size_t size);
+
 /* FACET_OK when run's setting was read from the file; FACET_EINPUT when
  * its column names nothing this Facet knows, with a one-line message
  * naming the run, the column and the value. A run is neither resumed nor

@@ -571,3 +571,13 @@ int store_run_delete(struct store *store, int64_t id,
     sqlite3_finalize(s);
     return rc;
 }
+
+const char *store_run_weld_text(const struct run_info *run, char *text,
+                                size_t size)
+{
+    if (isfinite(run->weld_mm))
+        snprintf(text, size, "%g", run->weld_mm);
+    else
+        snprintf(text, size, "-");
+    return text;
+}

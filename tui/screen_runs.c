@@ -113,13 +113,11 @@ static void runs_draw(struct tui_screen *base, struct tui_app *app,
         size_t k = s->top + (size_t)r;
         const struct run_info *run = &s->runs[k];
         char cost[32] = "-", elapsed[32], started[32], line[1400];
-        char status[32], weld[48] = "";
-        /* a building's welding tolerance, as facet runs shows it: "-"
-         * for none (a single surface, or a building before seams) */
-        if (wider && isfinite(run->weld_mm))
-            snprintf(weld, sizeof weld, "%7g %s", run->weld_mm, "");
-        else if (wider)
-            snprintf(weld, sizeof weld, "%7s ", "-");
+        char status[32], weld_mm[32], weld[48] = "";
+        /* a building's welding tolerance, as facet runs shows it */
+        if (wider)
+            snprintf(weld, sizeof weld, "%7s ",
+                     store_run_weld_text(run, weld_mm, sizeof weld_mm));
         if (isfinite(run->best_cost))
             tui_fmt_number(cost, sizeof cost, run->best_cost, 0, 1);
         tui_fmt_elapsed(elapsed, sizeof elapsed, run->elapsed);
