@@ -228,6 +228,17 @@ static size_t export_surfaces(const struct study_option *p)
     return p->building != NULL ? p->building->nsurfaces : 1;
 }
 
+/* The number every file gives surface s's first panel: a building's
+ * panels are numbered from 1 on across its surfaces in the run's order,
+ * so that the schedules, the seams and the drawings name a panel alike. */
+static size_t first_panel_id(const struct study_option *p, size_t s)
+{
+    size_t id = 1;
+    for (size_t k = 0; k < s; k++)
+        id += p->building->surfaces[k].panels.npanels;
+    return id;
+}
+
 /* Each panel's fitted cylinder or cone, the one exporters share: into
  * fit (npanels). A panel built SP on a fit the evaluation kept
  * (panel.h's sp_fit) is built on that one; only when some panel built SP
@@ -430,15 +441,14 @@ static int write_dxf(FILE *out, const struct study_option *p,
     char single[256];
     int rc = patterns && surfaces ? FACET_OK
         : facet_error_set(err, FACET_EWORK, "out of memory");
-    size_t id = 1, laid = 0;
+    size_t laid = 0;
     for (size_t s = 0; rc == FACET_OK && s < n; s++) {
         struct export_surface e = export_surface(p, s, single, sizeof single);
         const struct panel_geometry *g = geometry_of(p, s);
         rc = flat_patterns_build(g, e.panels, fit[s], &patterns[s], err);
         laid = s + 1;
         surfaces[s] = (struct dxf_surface){e.name, e.panels, g, &patterns[s],
-                                           id};
-        id += e.panels->npanels;
+                                           first_panel_id(p, s)};
     }
     if (rc == FACET_OK) {
         struct dxf_patterns x = {n, surfaces, width, height, grows};
@@ -489,12 +499,9 @@ static void write_building_csv(const struct study_option *p, FILE *csv,
 {
     const struct project_option *b = p->building;
     report_csv_header(csv, 1);
-    size_t id = 1;
-    for (size_t s = 0; s < b->nsurfaces; s++) {
+    for (size_t s = 0; s < b->nsurfaces; s++)
         report_csv_rows(csv, &b->surfaces[s].panels, p->surfaces[s].name,
-                        id);
-        id += b->surfaces[s].panels.npanels;
-    }
+                        first_panel_id(p, s));
     if (totals != NULL)
         report_totals_csv(totals, &b->totals);
 }
@@ -510,11 +517,9 @@ static int write_seams_csv(const struct study_option *p, FILE *out,
     int rc = FACET_OK;
     if (names == NULL || first == NULL)
         rc = facet_error_set(err, FACET_EWORK, "out of memory");
-    size_t id = 1;
     for (size_t s = 0; rc == FACET_OK && s < n; s++) {
         names[s] = p->surfaces[s].name;
-        first[s] = id;
-        id += p->building->surfaces[s].panels.npanels;
+        first[s] = first_panel_id(p, s);
     }
     struct building_seam_joint *joints = NULL;
     size_t njoints = 0;

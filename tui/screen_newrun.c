@@ -728,21 +728,21 @@ static int like_building(struct newrun_screen *s, struct tui_app *app,
         return rc;
     char files[TUI_INPUT_MAX] = "", grids[TUI_INPUT_MAX] = "";
     size_t nfiles = 0, used = 0, gused = 0;
+    const char *comma = NULL;   /* a file name with a comma, in rows */
     for (size_t k = 0; k < n && rc == FACET_OK; k++) {
         int seen = 0;
         for (size_t j = 0; j < k && !seen; j++)
             seen = strcmp(rows[j].file, rows[k].file) == 0;
         if (!seen) {
-            if (strchr(rows[k].file, ',') != NULL && n > 1)
-                rc = facet_error_set(err, FACET_EINPUT,
-                    "%s: a comma in a file name of several", rows[k].file);
+            if (strchr(rows[k].file, ',') != NULL)
+                comma = rows[k].file;
             int w = snprintf(files + used, sizeof files - used, "%s%s",
                              nfiles ? "," : "", rows[k].file);
-            if (rc == FACET_OK && (w < 0 || (size_t)w >= sizeof files - used))
+            if (w < 0 || (size_t)w >= sizeof files - used)
                 rc = facet_error_set(err, FACET_EINPUT,
-                    "its %zu files do not fit the %s field", n,
+                    "its files do not fit the %s field",
                     field_label[F_SURFACE]);
-            else if (rc == FACET_OK)
+            else
                 used += (size_t)w;
             nfiles++;
         }
@@ -762,6 +762,11 @@ static int like_building(struct newrun_screen *s, struct tui_app *app,
                 gused += (size_t)w;
         }
     }
+    /* one file is itself, commas and all (surfaces, above); among several
+     * its commas would split it */
+    if (rc == FACET_OK && comma != NULL && nfiles > 1)
+        rc = facet_error_set(err, FACET_EINPUT,
+                             "%s: a comma in a file name of several", comma);
     free(rows);
     if (rc == FACET_OK && nfiles == 0)
         rc = facet_error_set(err, FACET_EINPUT, "run %lld has no surfaces",

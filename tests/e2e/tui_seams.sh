@@ -176,7 +176,10 @@ fi
 
 # "Like this" on a building's option (issue 31 item 4): a run with a weld,
 # its own grids and objectives that are not the defaults, from the CLI.
-"$FACET" optimize "$WORK/thirds.obj" --db "$WORK/s.db" --module 6.5:7.5:0.5x4:4 \
+# Its one file of three objects has a comma in its name, which the form
+# takes as that one file (a readable file is itself, commas and all).
+cp "$WORK/thirds.obj" "$WORK/thirds,liked.obj"
+"$FACET" optimize "$WORK/thirds,liked.obj" --db "$WORK/s.db" --module 6.5:7.5:0.5x4:4 \
     --grid third1=2x1,third2=4x1 --max-panel-area 100 --threshold 5000 \
     --max-gap 1 --weld 2.5 --objectives cost,moulds --name liked \
     --table 0 >/dev/null 2>&1 || exit 1
@@ -191,7 +194,7 @@ keys End Enter
 check "the liked run opens" "^ Run $liked liked"
 keys L
 check "L opens the New run form like the option" '^ New run into'
-check "like this: the run's file" "^ Surface \(OBJ\) +$WORK/thirds\.obj\$"
+check "like this: the run's one file, its comma and all" "^ Surface \(OBJ\) +$WORK/thirds,liked\.obj\$"
 check "like this: the module one step of the run either way (0.5 m; 0.1 m, its default)" \
     '^ Module W x H \(m\) +6:7:0\.5x3\.9:4\.1:0\.1$'
 check "like this: the surfaces' own grids" '^ Surface grids +third1=2x1,third2=4x1$'
