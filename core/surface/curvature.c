@@ -216,22 +216,12 @@ struct workspace {
     double *offset;     /* 3 x POINTS_MAX: the points less the centre */
     double *weight;     /* POINTS_MAX: their weights */
     double *local;      /* 3 x POINTS_MAX: their frame coordinates */
+    double *kept_local; /* 3 x POINTS_MAX: those of a kept fit (jet_error) */
     double *weighted;   /* TERMS_MAX x POINTS_MAX: their weighted monomials */
     double *fitted;     /* TERMS_MAX x POINTS_MAX: those of a fit's terms */
     double *height;     /* POINTS_MAX: a pass's heights less the excess */
     double *slope;      /* 3 x POINTS_MAX: the excess's derivative by c */
     struct fit_memo memo;  /* of the neighbourhood in these buffers */
-};
-
-/* The result of fitting w = f(x, y) in a frame, in metres: gradient
- * (fx, fy), dimensionless, and second derivatives (1/m). */
-struct jet {
-    double fx, fy, fxx, fxy, fyy;
-    double radius;      /* of the neighbourhood fitted (m) */
-    double cov[6];      /* the covariance of fxx, fxy, fyy (1/m^2, see
-                           fit_error): xx xy yy, then xy.xy xy.yy, yy.yy */
-    double s2;          /* the residual variance it is scaled by (scaled
-                           units^2) */
 };
 
 /* Completes the unit vector f->n into a right-handed orthonormal frame. */
@@ -485,6 +475,8 @@ struct hood {
     double *fitted;     /* TERMS_MAX x count: those of the fit's terms */
     double *height;     /* count: the last pass's heights less the excess */
     double *slope;      /* 3 x count: and the excess's derivative by c */
+    double *kept_local; /* 3 x count: a kept fit's x, y (jet_error), so
+                         * that taking its errors leaves local as it was */
     struct fit_memo *memo;  /* what fit last computed of these points */
 };
 
@@ -519,6 +511,7 @@ static int hood_prepare(const struct mesh *mesh, size_t count,
     h->fitted = ws->fitted;
     h->height = ws->height;
     h->slope = ws->slope;
+    h->kept_local = ws->kept_local;
     h->memo = &ws->memo;
     for (size_t i = 1; i < count; i++) {
         double *d = ws->offset + 3 * i;
@@ -719,6 +712,28 @@ struct model {
     int n;
     int term[TERMS_MAX];
     double factor[TERMS_MAX * TERMS_MAX];
+};
+
+/* The result of fitting w = f(x, y) in a frame, in metres: gradient
+ * (fx, fy), dimensionless, and second derivatives (1/m); and what its
+ * standard errors (jet_error) are taken from. Most fits of a vertex are
+ * steps on the way (the fit before each refit about its normal, a refit
+ * not taken, the quadric a cubic starts from) whose errors nothing reads,
+ * so they are taken only for the fits that are kept. */
+struct jet {
+    double fx, fy, fxx, fxy, fyy;
+    double radius;      /* of the neighbourhood fitted (m) */
+    double cov[6];      /* the covariance of fxx, fxy, fyy (1/m^2, see
+                           fit_error): xx xy yy, then xy.xy xy.yy, yy.yy;
+                           set by jet_error */
+    double s2;          /* the residual variance it is scaled by (scaled
+                           units^2); set by jet_error */
+    /* The fit as jet_error takes it again, to the bit: */
+    struct frame frame;     /* the frame it was fitted in */
+    int thin;               /* whether it was a thin fit, */
+    double rot_c, rot_s;    /* its axes in the frame (else 1, 0) */
+    double coef[TERMS_MAX]; /* the scaled coefficients, by monomial */
+    struct model model;     /* its terms and their factor */
 };
 
 /* linalg_cholesky_factor of the n x n normal equations a (row stride
@@ -1053,15 +1068,39 @@ static void fit_error(const struct hood *h, const struct model *model,
     if (n <= (size_t)model->n)
         return;
     excess_heights(h, coef, 0);
+    /* The residual of each point: its height less each term in the
+     * model's order, written out for the quadric with gradient and the
+     * cubic jet (terms 0..4 and 0..8 in order): the same products taken
+     * off in the same order. */
     double sum = 0;
+    int first = model_is_quadric(model) ? 5 : model->n == TERMS_MAX ? 9 : 0;
     for (size_t i = 1; i < h->count; i++) {
         const double *l = h->local + 3 * i;
         double x = l[0], y = l[1];
-        const double m[TERMS_MAX] = {x * x, x * y, y * y, x, y, x * x * x,
-                                     x * x * y, x * y * y, y * y * y};
         double r = h->height[i];
-        for (int k = 0; k < model->n; k++)
-            r -= coef[model->term[k]] * m[model->term[k]];
+        if (first == 5) {
+            r -= coef[0] * (x * x);
+            r -= coef[1] * (x * y);
+            r -= coef[2] * (y * y);
+            r -= coef[3] * x;
+            r -= coef[4] * y;
+        } else if (first == 9) {
+            r -= coef[0] * (x * x);
+            r -= coef[1] * (x * y);
+            r -= coef[2] * (y * y);
+            r -= coef[3] * x;
+            r -= coef[4] * y;
+            r -= coef[5] * (x * x * x);
+            r -= coef[6] * (x * x * y);
+            r -= coef[7] * (x * y * y);
+            r -= coef[8] * (y * y * y);
+        } else {
+            const double m[TERMS_MAX] = {x * x, x * y, y * y, x, y,
+                                         x * x * x, x * x * y, x * y * y,
+                                         y * y * y};
+            for (int k = 0; k < model->n; k++)
+                r -= coef[model->term[k]] * m[model->term[k]];
+        }
         sum += h->weight[i] * r * r;
     }
     double s2 = sum / (double)(n - (size_t)model->n);
@@ -1071,17 +1110,32 @@ static void fit_error(const struct hood *h, const struct model *model,
      * fyy = 2 c2 / radius). */
     double inv[3][3] = {{0}};
     double scale[3] = {2 / h->radius, 1 / h->radius, 2 / h->radius};
-    for (int k = 0; k < model->n; k++) {
-        int t = model->term[k];
-        if (t > 2)
-            continue;
-        double e[TERMS_MAX] = {0}, x[TERMS_MAX];
-        e[k] = 1;
-        cholesky_apply(model->n, model->factor, e, x);
+    /* Their columns of the inverse, solved together (each the bits of
+     * its own solve; their chains of divisions overlap). */
+    double e[3][TERMS_MAX] = {{0}}, x[3][TERMS_MAX];
+    int column[3], ncolumns = 0;
+    for (int k = 0; k < model->n; k++)
+        if (model->term[k] <= 2) {
+            e[ncolumns][k] = 1;
+            column[ncolumns++] = k;
+        }
+    if (ncolumns > 0) {
+        if (model->n == 5)
+            linalg_cholesky_apply_many(5, model->factor, ncolumns,
+                                       TERMS_MAX, e[0], x[0]);
+        else if (model->n == TERMS_MAX)
+            linalg_cholesky_apply_many(TERMS_MAX, model->factor, ncolumns,
+                                       TERMS_MAX, e[0], x[0]);
+        else
+            linalg_cholesky_apply_many(model->n, model->factor, ncolumns,
+                                       TERMS_MAX, e[0], x[0]);
+    }
+    for (int j = 0; j < ncolumns; j++) {
+        int t = model->term[column[j]];
         for (int q = 0; q < model->n; q++) {
             int u = model->term[q];
             if (u <= 2)
-                inv[t][u] = s2 * x[q] * scale[t] * scale[u];
+                inv[t][u] = s2 * x[j][q] * scale[t] * scale[u];
         }
     }
     /* Turned back from a thin fit's axes: H = Q^T H' Q is linear in H',
@@ -1108,6 +1162,29 @@ static void fit_error(const struct hood *h, const struct model *model,
     cov[5] = full[2][2];
 }
 
+/* The standard errors of the fit jet of h (fit_error), into jet->cov and
+ * jet->s2, as fit would have taken them when it fitted jet: the points'
+ * coordinates in its frame, turned to a thin fit's axes, taken again with
+ * the same operations (so the same bits) into h->kept_local, which leaves
+ * h->local, and so the memo, as they were. h must hold the points jet was
+ * fitted to. */
+static void jet_error(const struct hood *h, struct jet *jet)
+{
+    struct hood kept = *h;
+    kept.local = h->kept_local;
+    for (size_t i = 1; i < kept.count; i++) {
+        double *l = kept.local + 3 * i;
+        local_coordinates(h->offset + 3 * i, &jet->frame, l);
+        if (jet->thin) {  /* as fit turns them */
+            double x = l[0], y = l[1];
+            l[0] = jet->rot_c * x + jet->rot_s * y;
+            l[1] = -jet->rot_s * x + jet->rot_c * y;
+        }
+    }
+    fit_error(&kept, &jet->model, jet->coef, jet->rot_c, jet->rot_s,
+              jet->cov, &jet->s2);
+}
+
 /* Fits w = f(x, y) to the neighbourhood h in frame f at its centre, with
  * nterms_max terms at most (5 or 9), into *jet. The fit is of the
  * points' heights less the osculating excess of the fit itself, repeated
@@ -1128,7 +1205,8 @@ static void fit_error(const struct hood *h, const struct model *model,
  * developable surface stays developable.
  *
  * Returns 1 on success, 0 when the neighbourhood cannot determine even a
- * quadric without gradient (too few points, collinear). */
+ * quadric without gradient (too few points, collinear). jet's errors are
+ * not taken: jet_error takes them, for a fit that is kept. */
 static int fit(const struct hood *h, const struct frame *f, int nterms_max,
                const struct jet *guess, struct jet *jet)
 {
@@ -1329,7 +1407,12 @@ static int fit(const struct hood *h, const struct frame *f, int nterms_max,
     jet->fxy = (c * c - s * s) * pxy + c * s * (pxx - pyy);
     jet->fyy = s * s * pxx + 2 * c * s * pxy + c * c * pyy;
     jet->radius = radius;
-    fit_error(h, &model, coef, rot_c, rot_s, jet->cov, &jet->s2);
+    jet->frame = *f;
+    jet->thin = thin;
+    jet->rot_c = rot_c;
+    jet->rot_s = rot_s;
+    memcpy(jet->coef, coef, sizeof coef);
+    jet->model = model;
     return isfinite(jet->fxx) && isfinite(jet->fxy) && isfinite(jet->fyy) &&
            isfinite(jet->fx) && isfinite(jet->fy);
 }
@@ -1512,6 +1595,7 @@ static int boundary_quadric(const struct mesh *mesh, uint32_t v,
     if (!fit(&hood, &f, 5, NULL, &jet))
         return 0;
     refine_normal(&hood, 5, &f, &jet);
+    jet_error(&hood, &jet);
     shape_operator(&f, &jet, &p->k1, &p->k2, p->d1, p->d2, p->n);
     p->error1 = direction_error(&f, &jet, p->d1);
     p->error2 = direction_error(&f, &jet, p->d2);
@@ -1602,6 +1686,7 @@ static void vertex_curvature(const struct mesh *mesh, uint32_t v,
         }
     }
     refine_normal(&hood, nterms, &f, &jet);
+    jet_error(&hood, &jet);
 
     struct principal p;
     shape_operator(&f, &jet, &p.k1, &p.k2, p.d1, p.d2, p.n);
@@ -1637,6 +1722,8 @@ static void vertex_curvature(const struct mesh *mesh, uint32_t v,
      * trapezoid cells), the cubic's own reading shows. A one-sided fit
      * keeps its own scatter: there the odd terms move it. */
     double e1 = p.error1, e2 = p.error2;
+    if (cubic_fitted && !on_boundary && jet.s2 > 0)
+        jet_error(&hood, &cubic);
     if (cubic_fitted && !on_boundary && jet.s2 > 0 && cubic.s2 < jet.s2) {
         double scale = sqrt(cubic.s2 / jet.s2);
         double moved1 = fabs(normal_curvature(&f, &cubic, p.d1) -
@@ -1769,12 +1856,13 @@ static int estimate(const struct mesh *mesh, int flip_normals, int jobs,
         job[made].ws.fitted = malloc(TERMS_MAX * POINTS_MAX * sizeof(double));
         job[made].ws.height = malloc(POINTS_MAX * sizeof(double));
         job[made].ws.slope = malloc(3 * POINTS_MAX * sizeof(double));
+        job[made].ws.kept_local = malloc(3 * POINTS_MAX * sizeof(double));
         if (!job[made].ws.mark || !job[made].ws.taken ||
             !job[made].ws.points ||
             !job[made].ws.offset || !job[made].ws.weight ||
             !job[made].ws.local || !job[made].ws.weighted ||
             !job[made].ws.fitted || !job[made].ws.height ||
-            !job[made].ws.slope) {
+            !job[made].ws.slope || !job[made].ws.kept_local) {
             free(job[made].ws.mark);
             free(job[made].ws.taken);
             free(job[made].ws.points);
@@ -1785,6 +1873,7 @@ static int estimate(const struct mesh *mesh, int flip_normals, int jobs,
             free(job[made].ws.fitted);
             free(job[made].ws.height);
             free(job[made].ws.slope);
+            free(job[made].ws.kept_local);
             rc = facet_error_set(err, FACET_EWORK,
                                  "curvature: out of memory for %zu "
                                  "vertices", nv);
@@ -1810,6 +1899,7 @@ static int estimate(const struct mesh *mesh, int flip_normals, int jobs,
         free(job[k].ws.fitted);
         free(job[k].ws.height);
         free(job[k].ws.slope);
+        free(job[k].ws.kept_local);
     }
     return rc;
 }
