@@ -1060,12 +1060,14 @@ static void model_keep(const struct hood *h, const struct model *model)
  * vertex's curvature is known less well. A fit with no spare point has no
  * residual to judge by: 0. For a thin fit, turned back to the frame's
  * axes as its Hessian is (rot_c, rot_s); its curvature across, not
- * fitted, adds nothing. */
+ * fitted, adds nothing. The residual variance (scaled units^2) into
+ * *s2_out; cov NULL asks for that alone (the inverse is what costs). */
 static void fit_error(const struct hood *h, const struct model *model,
                       const double *coef, double rot_c, double rot_s,
                       double *cov, double *s2_out)
 {
-    memset(cov, 0, 6 * sizeof *cov);
+    if (cov)
+        memset(cov, 0, 6 * sizeof *cov);
     *s2_out = 0;
     size_t n = h->count - 1;
     if (n <= (size_t)model->n)
@@ -1108,6 +1110,8 @@ static void fit_error(const struct hood *h, const struct model *model,
     }
     double s2 = sum / (double)(n - (size_t)model->n);
     *s2_out = isfinite(s2) ? s2 : 0;
+    if (!cov)
+        return;
     /* The block of the inverse normal equations for the curvature terms,
      * scaled to the Hessian's (fxx = 2 c0 / radius, fxy = c1 / radius,
      * fyy = 2 c2 / radius). */
@@ -1165,13 +1169,14 @@ static void fit_error(const struct hood *h, const struct model *model,
     cov[5] = full[2][2];
 }
 
-/* The standard errors of the fit jet of h (fit_error), into jet->cov and
- * jet->s2, as fit would have taken them when it fitted jet: the points'
- * coordinates in its frame, turned to a thin fit's axes, taken again with
- * the same operations (so the same bits) into h->kept_local, which leaves
- * h->local, and so the memo, as they were. h must hold the points jet was
- * fitted to. */
-static void jet_error(const struct hood *h, struct jet *jet)
+/* The standard errors of the fit jet of h (fit_error), into jet->cov
+ * (unless cov is 0: the surface normal's cubic, whose residual alone is
+ * read; its cov is then 0) and jet->s2, as fit would have taken them when
+ * it fitted jet: the points' coordinates in its frame, turned to a thin
+ * fit's axes, taken again with the same operations (so the same bits)
+ * into h->kept_local, which leaves h->local, and so the memo, as they
+ * were. h must hold the points jet was fitted to. */
+static void jet_error(const struct hood *h, struct jet *jet, int cov)
 {
     struct hood kept = *h;
     kept.local = h->kept_local;
@@ -1184,8 +1189,10 @@ static void jet_error(const struct hood *h, struct jet *jet)
             l[1] = -jet->rot_s * x + jet->rot_c * y;
         }
     }
+    if (!cov)
+        memset(jet->cov, 0, sizeof jet->cov);
     fit_error(&kept, &jet->model, jet->coef, jet->rot_c, jet->rot_s,
-              jet->cov, &jet->s2);
+              cov ? jet->cov : NULL, &jet->s2);
 }
 
 /* Fits w = f(x, y) to the neighbourhood h in frame f at its centre, with
@@ -1598,7 +1605,7 @@ static int boundary_quadric(const struct mesh *mesh, uint32_t v,
     if (!fit(&hood, &f, 5, NULL, &jet))
         return 0;
     refine_normal(&hood, 5, &f, &jet);
-    jet_error(&hood, &jet);
+    jet_error(&hood, &jet, 1);
     shape_operator(&f, &jet, &p->k1, &p->k2, p->d1, p->d2, p->n);
     p->error1 = direction_error(&f, &jet, p->d1);
     p->error2 = direction_error(&f, &jet, p->d2);
@@ -1689,7 +1696,7 @@ static void vertex_curvature(const struct mesh *mesh, uint32_t v,
         }
     }
     refine_normal(&hood, nterms, &f, &jet);
-    jet_error(&hood, &jet);
+    jet_error(&hood, &jet, 1);
 
     struct principal p;
     shape_operator(&f, &jet, &p.k1, &p.k2, p.d1, p.d2, p.n);
@@ -1726,7 +1733,7 @@ static void vertex_curvature(const struct mesh *mesh, uint32_t v,
      * keeps its own scatter: there the odd terms move it. */
     double e1 = p.error1, e2 = p.error2;
     if (cubic_fitted && !on_boundary && jet.s2 > 0)
-        jet_error(&hood, &cubic);
+        jet_error(&hood, &cubic, 0);
     if (cubic_fitted && !on_boundary && jet.s2 > 0 && cubic.s2 < jet.s2) {
         double scale = sqrt(cubic.s2 / jet.s2);
         double moved1 = fabs(normal_curvature(&f, &cubic, p.d1) -
