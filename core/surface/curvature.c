@@ -479,7 +479,7 @@ struct hood {
     double *fitted;     /* TERMS_MAX x count: those of the fit's terms */
     double *height;     /* count: the last pass's heights less the excess */
     double *slope;      /* 3 x count: and the excess's derivative by c */
-    double *kept_local; /* 3 x count: a kept fit's x, y (jet_error), so
+    double *kept_local; /* 3 x count: a kept fit's x, y, z (jet_error), so
                          * that taking its errors leaves local as it was */
     struct fit_memo *memo;  /* what fit last computed of these points */
 };
