@@ -5,10 +5,10 @@
  *
  *   curvature_dump FILE [--flip-normals] [--jobs N]
  *
- * Output: "vertices N", then one line a vertex: k1 k2, dir1, dir2, normal
- * and surface_normal, each double as C's %a (exact, and the same text for
- * the same bits). facet curvature --csv leaves out the directions and the
- * surface normal. Exits 0, or 2 with the error message on stderr.
+ * Output: "vertices N", then one line a vertex: k1 k2, dir1, dir2, normal,
+ * surface_normal and k1_error k2_error, each double as C's %a (exact, and the same text for
+ * the same bits). facet curvature --csv leaves out the directions, the
+ * surface normal and the errors. Exits 0, or 2 with the error message on stderr.
  */
 #include <stdio.h>
 #include <stdlib.h>
@@ -67,7 +67,7 @@ int main(int argc, char **argv)
         print3(c.dir2 + 3 * v);
         print3(c.normal + 3 * v);
         print3(c.surface_normal + 3 * v);
-        putchar('\n');
+        printf(" %a %a\n", c.k1_error[v], c.k2_error[v]);
     }
     curvature_free(&c);
     surface_close(&surface);
