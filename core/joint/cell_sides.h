@@ -145,9 +145,9 @@ int cell_sides_sample_every_stoppable(const struct mesh *mesh,
  * (sp_fit.h) and measures no joints: only the SP panels' sides are
  * sampled, and of them only what the fits read: point, on and middle,
  * and smooth when smooth is 1 (NULL when 0); normal is NULL. Each side it
- * samples has the samples cell_sides_sample gives it, to the bit; the
- * sides of a grid's other panels were a third of its sampling, and the
- * normals and smooth points half of the rest (issue 27). Not for
+ * samples has the samples cell_sides_sample gives it, to the bit (the
+ * sides of the other panels, the normals and the unused smooth points are
+ * work no fit reads: issue 27's run that measures fits alone). Not for
  * joints_measure. */
 int cell_sides_sample_fits_stoppable(const struct mesh *mesh,
                                      const struct uv_index *index,
