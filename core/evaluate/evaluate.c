@@ -143,10 +143,21 @@ static int build_and_measure(const struct surface *surface,
     /* Facets that sag a fair part of t would be measured as the panels'
      * own deviation: the fits are then measured on the smooth surface. */
     int smooth = facet_sag_matters(surface->facet_sag, options->threshold);
+    int measure_joints = !(unmeasured & OPTION_MEASURE_JOINTS);
     if (fits != NULL) {
         /* The sides are the grid's, borrowed: not freed here. */
         rc = grid_fits_option_stoppable(fits, panels, options->threshold,
                                         smooth, stop, &built, &sides, err);
+    } else if (!measure_joints) {
+        /* The fits alone read the sides: the SP panels' points. */
+        rc = cell_sides_sample_fits_stoppable(&surface->mesh, &surface->uv,
+                                              &surface->curvature, panels,
+                                              smooth, stop, &sides, err);
+        if (rc == FACET_OK)
+            rc = built_option_fit_stoppable(&surface->mesh, &surface->fit,
+                                            panels, &sides,
+                                            options->threshold, smooth, stop,
+                                            &built, err);
     } else {
         rc = cell_sides_sample_stoppable(&surface->mesh, &surface->uv,
                                          &surface->curvature, panels, stop,
@@ -157,7 +168,6 @@ static int build_and_measure(const struct surface *surface,
                                             options->threshold, smooth, stop,
                                             &built, err);
     }
-    int measure_joints = !(unmeasured & OPTION_MEASURE_JOINTS);
     if (rc == FACET_OK && measure_joints)
         rc = joints_measure_stoppable(panels, &built, &sides,
                                       limit_or_none(options->max_gap),

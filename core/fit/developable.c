@@ -377,6 +377,21 @@ static double quadratic(const double m[36], const double x[6], int np)
     return sum;
 }
 
+/* linalg_cholesky_solve(np, 6, a, b, 1e-14, x), its factor and solves
+ * inlined: with np a constant where refine_np inlines it, their loops
+ * unroll (two solves of each step were a twentieth of the study as built,
+ * issue 27); the same operations in the same order, so the same bits. */
+__attribute__((always_inline))
+static inline int solve_np(const int np, const double a[36], const double b[6],
+                           double x[6])
+{
+    double l[36];
+    if (!linalg_cholesky_factor(np, 6, a, 1e-14, l))
+        return 0;
+    linalg_cholesky_apply(np, l, b, x);
+    return 1;
+}
+
 /* refine for np parameters, a constant where it is inlined (always: the
  * loops over the parameters, and linearize's, then hold no test of np),
  * stopping early, when enough > 0 (m), once no point is farther than
@@ -414,14 +429,14 @@ static inline int refine_np(struct developable *d, const double *points,
         /* Converged when the undamped (Gauss-Newton) step would move the
          * surface at the points by less than FIT_STEP: |J step|^2 =
          * step.jtj.step. */
-        if (linalg_cholesky_solve(np, 6, jtj, b, 1e-14, step) &&
+        if (solve_np(np, jtj, b, step) &&
             quadratic(jtj, step, np) <= (double)n * converged * converged)
             break;
         double a[36];
         memcpy(a, jtj, sizeof a);
         for (int r = 0; r < np; r++)
             a[r * 6 + r] += lambda * jtj[r * 6 + r];
-        if (!linalg_cholesky_solve(np, 6, a, b, 1e-14, step)) {
+        if (!solve_np(np, a, b, step)) {
             lambda *= grow;
             grow *= 2;
             if (lambda > 1e12)

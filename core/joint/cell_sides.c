@@ -137,46 +137,66 @@ static int full_dp(const struct panel *panel)
     return panel->type == TYPE_DP && !panel->trimmed && panel->ncorners == 4;
 }
 
+/* What a sampling takes: which sides, and which of their arrays. */
+enum sample_what {
+    SAMPLE_MARKED,     /* the sides cell_sides_mark marks, in full */
+    SAMPLE_EVERY,      /* every side, in full */
+    SAMPLE_FITS,       /* the SP panels' sides, their points (and smooth
+                          points when asked) alone */
+};
+
 /* 1 when the side between the panels a and b (indices, -1 for none) is to
- * be sampled. */
-static int needs_samples(const struct panelization *panels, int32_t a,
-                         int32_t b)
+ * be sampled; with fits_only, for the SP fits alone. */
+static int needs_samples_for(const struct panelization *panels, int32_t a,
+                             int32_t b, int fits_only)
 {
     const struct panel *pa = a >= 0 ? &panels->panels[a] : NULL;
     const struct panel *pb = b >= 0 ? &panels->panels[b] : NULL;
     if ((pa != NULL && pa->type == TYPE_SP) ||
         (pb != NULL && pb->type == TYPE_SP))
         return 1;
-    if (pa == NULL || pb == NULL)
+    if (fits_only || pa == NULL || pb == NULL)
         return 0;
     return !(cell_sides_flat_quad(pa) && cell_sides_flat_quad(pb)) &&
            !(full_dp(pa) && full_dp(pb));
 }
 
-void cell_sides_mark(const struct panelization *panels,
-                     unsigned char *sampled)
+/* cell_sides_mark, with fits_only the SP panels' sides alone. */
+static void mark(const struct panelization *panels, int fits_only,
+                 unsigned char *sampled)
 {
     int nu = panels->nu, nv = panels->nv;
     struct cell_sides shape = {.nu = nu, .nv = nv};
     for (int j = 0; j < nv; j++)
         for (int i = 0; i <= nu; i++)
-            sampled[cell_side_u(&shape, i, j)] = (unsigned char)needs_samples(
-                panels, i > 0 ? panels->cell_panel[j * nu + i - 1] : -1,
-                i < nu ? panels->cell_panel[j * nu + i] : -1);
+            sampled[cell_side_u(&shape, i, j)] =
+                (unsigned char)needs_samples_for(
+                    panels, i > 0 ? panels->cell_panel[j * nu + i - 1] : -1,
+                    i < nu ? panels->cell_panel[j * nu + i] : -1, fits_only);
     for (int j = 0; j <= nv; j++)
         for (int i = 0; i < nu; i++)
-            sampled[cell_side_v(&shape, i, j)] = (unsigned char)needs_samples(
-                panels, j > 0 ? panels->cell_panel[(j - 1) * nu + i] : -1,
-                j < nv ? panels->cell_panel[j * nu + i] : -1);
+            sampled[cell_side_v(&shape, i, j)] =
+                (unsigned char)needs_samples_for(
+                    panels, j > 0 ? panels->cell_panel[(j - 1) * nu + i] : -1,
+                    j < nv ? panels->cell_panel[j * nu + i] : -1, fits_only);
 }
 
-/* cell_sides_sample, or with every, cell_sides_sample_every. */
+void cell_sides_mark(const struct panelization *panels,
+                     unsigned char *sampled)
+{
+    mark(panels, 0, sampled);
+}
+
+/* cell_sides_sample, cell_sides_sample_every or cell_sides_sample_fits
+ * as what says (smooth: SAMPLE_FITS's smooth points wanted). */
 static int sample(const struct mesh *mesh, const struct uv_index *index,
                   const struct curvature *curvature,
-                  const struct panelization *panels, int every,
-                  const struct facet_stop *stop, struct cell_sides *out,
-                  struct facet_error *err)
+                  const struct panelization *panels, enum sample_what what,
+                  int smooth, const struct facet_stop *stop,
+                  struct cell_sides *out, struct facet_error *err)
 {
+    int full = what != SAMPLE_FITS;
+    int with_smooth = full || smooth;
     memset(out, 0, sizeof *out);
     int nu = panels->nu, nv = panels->nv;
     out->nu = nu;
@@ -185,22 +205,25 @@ static int sample(const struct mesh *mesh, const struct uv_index *index,
                   (size_t)nu * (size_t)(nv + 1);
     size_t nsamples = out->nsides * CELL_SIDE_SAMPLES;
     out->point = malloc(nsamples * 3 * sizeof *out->point);
-    out->smooth = malloc(nsamples * 3 * sizeof *out->smooth);
-    out->normal = malloc((out->nsides + 1) * 3 * sizeof *out->normal);
+    out->smooth = with_smooth ? malloc(nsamples * 3 * sizeof *out->smooth)
+                              : NULL;
+    out->normal = full ? malloc((out->nsides + 1) * 3 * sizeof *out->normal)
+                       : NULL;
     out->middle = malloc(out->nsides + 1);
     out->on = malloc(nsamples);
     out->sampled = calloc(out->nsides + 1, 1);
-    if (out->point == NULL || out->smooth == NULL || out->normal == NULL ||
-        out->on == NULL || out->sampled == NULL || out->middle == NULL) {
+    if (out->point == NULL || (with_smooth && out->smooth == NULL) ||
+        (full && out->normal == NULL) || out->on == NULL ||
+        out->sampled == NULL || out->middle == NULL) {
         cell_sides_free(out);
         return facet_error_set(err, FACET_EWORK,
                                "out of memory sampling %zu cell sides",
                                out->nsides);
     }
-    if (every)
+    if (what == SAMPLE_EVERY)
         memset(out->sampled, 1, out->nsides);
     else
-        cell_sides_mark(panels, out->sampled);
+        mark(panels, what == SAMPLE_FITS, out->sampled);
     double du = (panels->umax - panels->umin) / nu;
     double dv = (panels->vmax - panels->vmin) / nv;
     /* Along each grid line in turn, so that the walk from sample to sample
@@ -238,8 +261,9 @@ static int sample(const struct mesh *mesh, const struct uv_index *index,
                     out->on[at] = out->on[from];
                     memcpy(out->point + 3 * at, out->point + 3 * from,
                            3 * sizeof *out->point);
-                    memcpy(out->smooth + 3 * at, out->smooth + 3 * from,
-                           3 * sizeof *out->smooth);
+                    if (with_smooth)
+                        memcpy(out->smooth + 3 * at, out->smooth + 3 * from,
+                               3 * sizeof *out->smooth);
                 } else {
                     double f = (double)k / CELL_SIDE_SEGMENTS;
                     double u = panels->umin + (i + (along_v ? 0 : f)) * du;
@@ -248,15 +272,18 @@ static int sample(const struct mesh *mesh, const struct uv_index *index,
                                               bary[k]);
                     out->on[at] = triangle[k] != UINT32_MAX;
                     if (triangle[k] == UINT32_MAX) {
-                        for (int x = 0; x < 3; x++)
-                            out->point[3 * at + x] = out->smooth[3 * at + x] =
-                                NAN;
+                        for (int x = 0; x < 3; x++) {
+                            out->point[3 * at + x] = NAN;
+                            if (with_smooth)
+                                out->smooth[3 * at + x] = NAN;
+                        }
                         continue;
                     }
                     hint = triangle[k];
                     point_at(mesh, triangle[k], bary[k], out->point + 3 * at);
-                    smooth_at(mesh, curvature, triangle[k], bary[k],
-                              out->point + 3 * at, out->smooth + 3 * at);
+                    if (with_smooth)
+                        smooth_at(mesh, curvature, triangle[k], bary[k],
+                                  out->point + 3 * at, out->smooth + 3 * at);
                 }
                 if (k > 0 && out->on[at] &&
                     (middle < 0 || abs(2 * k - CELL_SIDE_SEGMENTS) <
@@ -268,6 +295,8 @@ static int sample(const struct mesh *mesh, const struct uv_index *index,
              * before when that was sampled (no triangle at hand), so
              * whether it could serve would depend on the other sides. */
             out->middle[s] = (signed char)middle;
+            if (!full)
+                continue;
             if (middle < 0) {
                 for (int x = 0; x < 3; x++)
                     out->normal[3 * s + x] = NAN;
@@ -287,7 +316,8 @@ int cell_sides_sample(const struct mesh *mesh, const struct uv_index *index,
                       const struct panelization *panels,
                       struct cell_sides *out, struct facet_error *err)
 {
-    return sample(mesh, index, curvature, panels, 0, NULL, out, err);
+    return sample(mesh, index, curvature, panels, SAMPLE_MARKED, 0, NULL, out,
+                  err);
 }
 
 int cell_sides_sample_stoppable(const struct mesh *mesh,
@@ -298,7 +328,8 @@ int cell_sides_sample_stoppable(const struct mesh *mesh,
                                 struct cell_sides *out,
                                 struct facet_error *err)
 {
-    return sample(mesh, index, curvature, panels, 0, stop, out, err);
+    return sample(mesh, index, curvature, panels, SAMPLE_MARKED, 0, stop, out,
+                  err);
 }
 
 int cell_sides_sample_every(const struct mesh *mesh,
@@ -307,7 +338,8 @@ int cell_sides_sample_every(const struct mesh *mesh,
                             const struct panelization *panels,
                             struct cell_sides *out, struct facet_error *err)
 {
-    return sample(mesh, index, curvature, panels, 1, NULL, out, err);
+    return sample(mesh, index, curvature, panels, SAMPLE_EVERY, 0, NULL, out,
+                  err);
 }
 
 int cell_sides_sample_every_stoppable(const struct mesh *mesh,
@@ -318,7 +350,21 @@ int cell_sides_sample_every_stoppable(const struct mesh *mesh,
                                       struct cell_sides *out,
                                       struct facet_error *err)
 {
-    return sample(mesh, index, curvature, panels, 1, stop, out, err);
+    return sample(mesh, index, curvature, panels, SAMPLE_EVERY, 0, stop, out,
+                  err);
+}
+
+int cell_sides_sample_fits_stoppable(const struct mesh *mesh,
+                                     const struct uv_index *index,
+                                     const struct curvature *curvature,
+                                     const struct panelization *panels,
+                                     int smooth,
+                                     const struct facet_stop *stop,
+                                     struct cell_sides *out,
+                                     struct facet_error *err)
+{
+    return sample(mesh, index, curvature, panels, SAMPLE_FITS, smooth, stop,
+                  out, err);
 }
 
 int cell_sides_flat_quad(const struct panel *panel)

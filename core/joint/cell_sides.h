@@ -85,7 +85,9 @@ struct cell_sides {
     unsigned char *on;    /* nsides x CELL_SIDE_SAMPLES: 1 on the surface */
     unsigned char *sampled;  /* nsides: 1 when the side was sampled; point,
                                 on, middle and normal are unset
-                                otherwise */
+                                otherwise (smooth and normal NULL when
+                                cell_sides_sample_fits_stoppable did not
+                                take them) */
 };
 
 static inline size_t cell_side_u(const struct cell_sides *s, int i, int j)
@@ -138,6 +140,23 @@ int cell_sides_sample_every_stoppable(const struct mesh *mesh,
                                       const struct facet_stop *stop,
                                       struct cell_sides *out,
                                       struct facet_error *err);
+
+/* cell_sides_sample_stoppable for a caller that fits the SP panels
+ * (sp_fit.h) and measures no joints: only the SP panels' sides are
+ * sampled, and of them only what the fits read: point, on and middle,
+ * and smooth when smooth is 1 (NULL when 0); normal is NULL. Each side it
+ * samples has the samples cell_sides_sample gives it, to the bit (the
+ * sides of the other panels, the normals and the unused smooth points are
+ * work no fit reads: issue 27's run that measures fits alone). Not for
+ * joints_measure. */
+int cell_sides_sample_fits_stoppable(const struct mesh *mesh,
+                                     const struct uv_index *index,
+                                     const struct curvature *curvature,
+                                     const struct panelization *panels,
+                                     int smooth,
+                                     const struct facet_stop *stop,
+                                     struct cell_sides *out,
+                                     struct facet_error *err);
 
 /* The sides cell_sides_sample samples for panels (classified), into
  * sampled (nsides, as cell_sides numbers them): 1 for a side to sample. */

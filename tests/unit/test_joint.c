@@ -797,6 +797,84 @@ static int same_fit(const struct developable *a, const struct developable *b)
     return same;
 }
 
+/* The sides sampled for the fits alone (cell_sides_sample_fits_stoppable,
+ * what an option whose joints are not measured takes) against all of
+ * them (alone_sides, cell_sides_sample's): the sides of every SP panel and
+ * no other, each with the same samples to the bit, no normals, smooth
+ * points only when asked; and unless alone is NULL, the panels fitted on
+ * them (from points, at threshold t with smooth) the same as alone's to
+ * the bit. */
+static void compare_fit_sides(const struct surface *s,
+                              const struct fit_points *points,
+                              const struct panelization *panels, double t,
+                              int smooth,
+                              const struct cell_sides *alone_sides,
+                              const struct built_option *alone)
+{
+    struct facet_error err;
+    struct cell_sides sides;
+    struct built_option built;
+    if (cell_sides_sample_fits_stoppable(&s->mesh, &s->uv, &s->curvature,
+                                         panels, smooth, NULL, &sides,
+                                         &err) != FACET_OK ||
+        built_option_fit(&s->mesh, points, panels, &sides, t, smooth, &built,
+                         &err) != FACET_OK)
+        fail_msg("%s", err.message);
+    assert_null(sides.normal);
+    assert_true(smooth ? sides.smooth != NULL : sides.smooth == NULL);
+    assert_int_equal(sides.nsides, alone_sides->nsides);
+    /* Which sides: those of an SP panel. */
+    unsigned char *of_sp = calloc(sides.nsides + 1, 1);
+    assert_non_null(of_sp);
+    for (size_t k = 0; k < panels->npanels; k++) {
+        const struct panel *panel = &panels->panels[k];
+        if (panel->type != TYPE_SP)
+            continue;
+        of_sp[cell_side_u(&sides, panel->i, panel->j)] = 1;
+        of_sp[cell_side_u(&sides, panel->i + 1, panel->j)] = 1;
+        of_sp[cell_side_v(&sides, panel->i, panel->j)] = 1;
+        of_sp[cell_side_v(&sides, panel->i, panel->j + 1)] = 1;
+    }
+    for (size_t side = 0; side < sides.nsides; side++) {
+        if (sides.sampled[side] != of_sp[side])
+            fail_msg("side %zu: sampled %d for the fits, of an SP panel %d",
+                     side, sides.sampled[side], of_sp[side]);
+        if (!sides.sampled[side])
+            continue;
+        assert_true(alone_sides->sampled[side]);
+        size_t at = side * CELL_SIDE_SAMPLES;
+        assert_memory_equal(sides.on + at, alone_sides->on + at,
+                            CELL_SIDE_SAMPLES);
+        assert_int_equal(sides.middle[side], alone_sides->middle[side]);
+        for (size_t x = 3 * at; x < 3 * (at + CELL_SIDE_SAMPLES); x++) {
+            assert_true(same_number(sides.point[x], alone_sides->point[x]));
+            if (smooth)
+                assert_true(same_number(sides.smooth[x],
+                                        alone_sides->smooth[x]));
+        }
+    }
+    free(of_sp);
+    for (size_t k = 0; alone != NULL && k < panels->npanels; k++) {
+        const struct built_panel *a = &alone->panels[k];
+        const struct built_panel *b = &built.panels[k];
+        if (a->type != b->type || a->fitted != b->fitted ||
+            a->misfit != b->misfit ||
+            !same_number(a->best_cylinder, b->best_cylinder) ||
+            !same_number(a->sp_deviation, b->sp_deviation) ||
+            !same_number(a->best_cone, b->best_cone) ||
+            !same_number(a->bending_radius, b->bending_radius) ||
+            !same_fit(&a->fit, &b->fit))
+            fail_msg("panel %zu: fitted on the fits' sides, not as on all "
+                     "sides", k);
+    }
+    if (alone != NULL) {
+        assert_int_equal(built.sp_fitted, alone->sp_fitted);
+        assert_int_equal(built.sp_misfits, alone->sp_misfits);
+    }
+    built_option_free(&built);
+    cell_sides_free(&sides);
+}
+
 static void compare_grid_fits(const struct surface *s, int nu, int nv,
                               const double *t, int nt,
                               struct grid_tally *tally)
@@ -832,6 +910,11 @@ static void compare_grid_fits(const struct surface *s, int nu, int nv,
                            &joints, &err) != FACET_OK)
             fail_msg("%s", err.message);
         tally->options++;
+        int smooth = facet_sag_matters(s->facet_sag, t[x]);
+        compare_fit_sides(s, &points, &o.panels, t[x], smooth, &alone_sides,
+                          &alone);
+        compare_fit_sides(s, &points, &o.panels, t[x], !smooth, &alone_sides,
+                          NULL);
         assert_int_equal(built.sp_fitted, alone.sp_fitted);
         assert_int_equal(built.sp_misfits, alone.sp_misfits);
         for (size_t k = 0; k < o.panels.npanels; k++) {
