@@ -91,8 +91,9 @@
  * about 2.2 times its time; on coarse real meshes, where nearly every fit
  * takes Newton steps and five or six fits per vertex, about 4.5 times
  * (sum of their medians). The surface normal (curvature.h: one more fit,
- * a cubic, per vertex whose fit was a quadric) took the roof from 1.6 to
- * 2.6 times when it came, the standard errors (issue 29) from 1.9 to 2.75.
+ * a cubic, per vertex off the boundary whose fit was a quadric) took the
+ * roof from 1.6 to 2.6 times when it came, the standard errors (issue 29)
+ * from 1.9 to 2.75.
  * Issue 27 asks for 1.3 times, which these results cannot reach to the
  * bit: on the roof a vertex takes 3.8 fits and 9.8 osculating passes
  * (d218719: two fits, no pass); each pass ends in a Cholesky solve whose
