@@ -42,14 +42,20 @@ struct curvature {
     double *normal;    /* #V x 3 unit vertex normal that fixes the sign */
     double *surface_normal;  /* #V x 3 the surface's unit normal as exactly
                                 as the fit knows it: where the fit was a
-                                quadric, the normal of a cubic jet refitted
-                                in its final frame, whose gradient does not
-                                take in the cubic term of a changing
-                                curvature (z = x^2/8 at 60 x 40 quads: the
-                                quadric's normal 0.048 degrees off, the
-                                cubic's 0.0005); else normal. On normal's
-                                side; for joints and the smooth surface
-                                through the vertices (cell_sides.h) */
+                                quadric off the boundary, the normal of a
+                                cubic jet refitted in its final frame,
+                                whose gradient does not take in the cubic
+                                term of a changing curvature (z = x^2/8 at
+                                60 x 40 quads: the quadric's normal 0.048
+                                degrees off, the cubic's 0.0005); else
+                                normal (on the boundary the fit's, a cubic
+                                where one-sided points allow it: within 2
+                                degrees on coarse analytic meshes, half
+                                the angle across on a strip one face wide,
+                                tests/unit/test_curvature_boundary). On
+                                normal's side; for joints and the smooth
+                                surface through the vertices
+                                (cell_sides.h) */
     double *k1_error;  /* #V how well k1 is known (1/m): the standard
                           error of the fit's curvature along dir1, by its
                           own residual and normal equations (curvature.c's
