@@ -54,6 +54,11 @@ int store_fail(struct store *store, const char *doing,
 int store_exec(struct store *store, const char *sql, const char *doing,
                struct facet_error *err);
 
+/* The one integer sql (a pragma, a count) gives, into *value; reading
+ * no row fills err. */
+int store_pragma_int(struct store *store, const char *sql, int *value,
+                     struct facet_error *err);
+
 /* Prepares sql; on failure fills err. */
 int store_prepare(struct store *store, const char *sql, sqlite3_stmt **out,
                   const char *doing, struct facet_error *err);
@@ -106,6 +111,16 @@ void store_read_quantity(sqlite3_stmt *stmt, int col, const struct quantity *q,
 int store_schema_migrate(struct store *store, int from, int to,
                          struct facet_error *err);
 
+/* Facet's schema of each version (0 .. STORE_SCHEMA_VERSION) as
+ * store_schema_migrate leaves an empty database at it: the SQL of each
+ * entry of sqlite_schema (but the automatic indexes, which SQLite makes
+ * with their tables), in its order, each ending in ';'. Run on an empty
+ * database, it makes the same sqlite_schema in one step. Written at build
+ * time by store/tool/schema_script.c, which runs the migrations
+ * ($(BUILD)/store/schema_script.c); test_store_schema compares each with
+ * a replay of the migrations. */
+extern const char *const store_schema_scripts[STORE_SCHEMA_VERSION + 1];
+
 /* Checks that what store's file holds besides data is Facet's schema of
  * version (0 .. STORE_SCHEMA_VERSION), as store_schema_migrate makes it:
  * no trigger, no view but Facet's own word for word, no virtual table,
@@ -113,7 +128,8 @@ int store_schema_migrate(struct store *store, int from, int to,
  * type, NOT NULL, default, key, in order), foreign keys and kind.
  * Indexes and other ordinary tables are let be. FACET_EINPUT with a
  * one-line message naming the file and the first difference; nothing is
- * written. (schema_check.c) */
+ * written. The expectation is built from store_schema_scripts[version]
+ * in a private in-memory database. (schema_check.c) */
 int store_schema_check(struct store *store, int version,
                        struct facet_error *err);
 
