@@ -68,7 +68,7 @@ TUI_SRC   := $(wildcard tui/*.c)
 CLI_SRC   := $(filter-out cli/main.c,$(wildcard cli/*.c))
 LIB_SRC   := $(CORE_SRC) $(STORE_SRC) $(STUDY_SRC) $(TUI_SRC) $(CLI_SRC)
 # ... and the one source written by the build: Facet's schema of each
-# version as its migrations leave it (store_schema_scripts, below).
+# version as its migrations leave it (store_schemas, below).
 LIB_OBJ   := $(LIB_SRC:%.c=$(BUILD)/%.o) $(BUILD)/store/schema_script.o
 
 SUPPORT_SRC := $(wildcard tests/support/*.c)
@@ -120,13 +120,13 @@ $(BUILD)/%.o: %.c
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS) -c -o $@ $<
 
-# store_schema_scripts (store/store_internal.h): each version's CREATE
-# statements, which store_schema_check builds its expectation from in one
-# step, written by a program that runs the migrations of store/schema.c
-# themselves (store/tool/schema_script.c). It links those objects alone,
-# not libfacet.a, which holds what it writes; an edit of any of them (the
-# migrations) writes the script again, and test_store_schema holds it to
-# a replay of the migrations.
+# store_schemas (store/store_internal.h): each version's entries of
+# sqlite_schema (type, name, CREATE statement), which store_schema_check
+# compares a file with, written by a program that runs the migrations of
+# store/schema.c themselves (store/tool/schema_script.c). It links those
+# objects alone, not libfacet.a, which holds what it writes; an edit of
+# any of them (the migrations) writes the file again, and
+# test_store_schema holds it to a replay of the migrations.
 SCHEMA_TOOL_OBJ := $(BUILD)/store/schema.o $(BUILD)/core/base/text.o \
 	$(BUILD)/core/base/error.o
 

@@ -5,9 +5,9 @@
  * every file of the store shares (store_fail, store_exec, ...). Opening a
  * file is store_open.c's. docs/store.md ("The result store") documents
  * every table, column and unit defined here. The build runs these
- * migrations once more (store/tool/schema_script.c) to write each
- * version's final CREATE statements, which store_schema_check builds its
- * expectation from.
+ * migrations once more (store/tool/schema_script.c) to write down each
+ * version's final CREATE statements (store_schemas), which
+ * store_schema_check holds a file to.
  */
 #include "store_internal.h"
 

@@ -1,9 +1,10 @@
 /*
  * test_store_schema.c: the schema a file is held to (store_schema_check).
- * Its expectation is built from a script the build writes by running the
- * migrations (store_schema_scripts, store/tool/schema_script.c): each
- * version's script makes, in SQLite's own words (sqlite_schema), the
- * schema the migrations make, so a stale script fails here; and a file
+ * Its expectation is the entries of sqlite_schema the build writes down by
+ * running the migrations (store_schemas, store/tool/schema_script.c):
+ * each version's are, in SQLite's own words (sqlite_schema), those the
+ * migrations make, and their SQL run makes the same schema, so a stale
+ * file fails here; and a file
  * whose schema differs from the migrations' by one column, one type, one
  * default, one NOT NULL, one key, one index, one constraint, a trigger or
  * a view is still refused in one line naming it, at the current version
@@ -63,10 +64,22 @@ static void memory_store(struct store *store)
                      SQLITE_OK);
 }
 
-/* Each version's script makes the sqlite_schema that replaying the
- * migrations from an empty database up to that version makes: entry for
- * entry, in order, word for word. */
-static void test_scripts_are_the_migrations(void **state)
+/* Runs the SQL of entries (store_schemas) on db. */
+static void run_entries(sqlite3 *db, const struct store_schema_entry *e,
+                        int version)
+{
+    for (; e->type != NULL; e++) {
+        char *said = NULL;
+        if (sqlite3_exec(db, e->sql, NULL, NULL, &said) != SQLITE_OK)
+            fail_msg("version %d: %s fails: %s", version, e->sql, said);
+    }
+}
+
+/* Each version's entries are, in order and word for word, the entries
+ * with SQL that replaying the migrations from an empty database up to
+ * that version leaves in sqlite_schema; and their SQL run on an empty
+ * database makes that sqlite_schema whole (its automatic indexes too). */
+static void test_entries_are_the_migrations(void **state)
 {
     (void)state;
     for (int version = 0; version <= STORE_SCHEMA_VERSION; version++) {
@@ -76,15 +89,29 @@ static void test_scripts_are_the_migrations(void **state)
         memory_store(&script);
         assert_int_equal(store_schema_migrate(&replay, 0, version, &err),
                          FACET_OK);
-        char *said = NULL;
-        if (sqlite3_exec(script.db, store_schema_scripts[version], NULL,
-                         NULL, &said) != SQLITE_OK)
-            fail_msg("the script of version %d fails: %s", version, said);
+        sqlite3_stmt *s;
+        assert_int_equal(sqlite3_prepare_v2(replay.db, "SELECT type, name,"
+            " sql FROM sqlite_schema WHERE sql IS NOT NULL ORDER BY rowid",
+            -1, &s, NULL), SQLITE_OK);
+        const struct store_schema_entry *e = store_schemas[version];
+        for (; sqlite3_step(s) == SQLITE_ROW; e++) {
+            const char *sql = (const char *)sqlite3_column_text(s, 2);
+            if (e->type == NULL)
+                fail_msg("version %d: no entry for %s", version, sql);
+            assert_string_equal(e->type, sqlite3_column_text(s, 0));
+            assert_string_equal(e->name, sqlite3_column_text(s, 1));
+            assert_string_equal(e->sql, sql);
+        }
+        if (e->type != NULL)
+            fail_msg("version %d: %s is none of the migrations'", version,
+                     e->sql);
+        sqlite3_finalize(s);
+        run_entries(script.db, store_schemas[version], version);
         char *want = schema_text(replay.db);
         char *have = schema_text(script.db);
         if (strcmp(want, have) != 0)
-            fail_msg("version %d: the migrations make\n%s\nthe script "
-                     "makes\n%s", version, want, have);
+            fail_msg("version %d: the migrations make\n%s\nthe entries "
+                     "make\n%s", version, want, have);
         /* Not empty but at 0: the comparison compared something. */
         assert_true(version == 0 || strstr(want, "table|runs|") != NULL);
         free(want);
@@ -242,6 +269,18 @@ static const struct case_ current_cases[] = {
     {"a partial index",
      "CREATE INDEX some ON options(run, cost) WHERE cost > 0;",
      "holds index 'some' on options, on an expression or with a WHERE"},
+    {"Facet's index made again on an expression",
+     "DROP INDEX options_by_cost; CREATE INDEX options_by_cost ON"
+     " options(run, abs(cost));",
+     "holds index 'options_by_cost' on options, on an expression"},
+    {"an index on an expression, said to be another table's",
+     "CREATE TABLE notes (text TEXT); CREATE INDEX spin ON"
+     " panels(abs(area)); PRAGMA writable_schema = ON; UPDATE sqlite_schema"
+     " SET tbl_name = 'notes' WHERE name = 'spin';",
+     "malformed database schema (spin)"},
+    {"a virtual table of its own",
+     "CREATE VIRTUAL TABLE mine USING fts4(text);",
+     "holds virtual table 'mine'"},
     {"a table missing", "DROP TABLE option_surface_held;",
      "table option_surface_held of Facet's schema %d is missing"},
     {"a table become a view",
@@ -337,7 +376,7 @@ static void test_altered_older_refused(void **state)
 }
 
 /* A new file, made by the migrations on disk (store_open), holds the
- * current script's schema: what the check builds is what Facet writes. */
+ * current entries' schema: what the check expects is what Facet writes. */
 static void test_new_file_is_the_script(void **state)
 {
     (void)state;
@@ -345,9 +384,8 @@ static void test_new_file_is_the_script(void **state)
     assert_int_equal(sqlite3_open_v2(template_db, &file,
                                      SQLITE_OPEN_READONLY, NULL), SQLITE_OK);
     assert_int_equal(sqlite3_open(":memory:", &script), SQLITE_OK);
-    assert_int_equal(sqlite3_exec(script,
-                                  store_schema_scripts[STORE_SCHEMA_VERSION],
-                                  NULL, NULL, NULL), SQLITE_OK);
+    run_entries(script, store_schemas[STORE_SCHEMA_VERSION],
+                STORE_SCHEMA_VERSION);
     char *want = schema_text(file);
     char *have = schema_text(script);
     assert_string_equal(have, want);
@@ -360,7 +398,7 @@ static void test_new_file_is_the_script(void **state)
 int main(void)
 {
     const struct CMUnitTest tests[] = {
-        cmocka_unit_test(test_scripts_are_the_migrations),
+        cmocka_unit_test(test_entries_are_the_migrations),
         cmocka_unit_test(test_new_file_is_the_script),
         cmocka_unit_test(test_altered_current_refused),
         cmocka_unit_test(test_altered_older_refused),
