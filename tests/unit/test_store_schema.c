@@ -375,31 +375,42 @@ static void test_altered_older_refused(void **state)
     }
 }
 
-/* A new file, made by the migrations on disk (store_open), holds the
- * current entries' schema: what the check expects is what Facet writes. */
-static void test_new_file_is_the_script(void **state)
+/* A new file (store_open) holds the schema the migrations make from
+ * an empty database, word for word, stamped as Facet's at the current
+ * version: Facet creates it from the entries in one step. */
+static void test_new_file_is_the_migrations(void **state)
 {
     (void)state;
-    sqlite3 *file, *script;
+    sqlite3 *file;
+    struct store replay;
+    struct facet_error err = {0};
     assert_int_equal(sqlite3_open_v2(template_db, &file,
                                      SQLITE_OPEN_READONLY, NULL), SQLITE_OK);
-    assert_int_equal(sqlite3_open(":memory:", &script), SQLITE_OK);
-    run_entries(script, store_schemas[STORE_SCHEMA_VERSION],
-                STORE_SCHEMA_VERSION);
-    char *want = schema_text(file);
-    char *have = schema_text(script);
+    memory_store(&replay);
+    assert_int_equal(store_schema_migrate(&replay, 0, STORE_SCHEMA_VERSION,
+                                          &err), FACET_OK);
+    char *want = schema_text(replay.db);
+    char *have = schema_text(file);
     assert_string_equal(have, want);
     free(want);
     free(have);
+    sqlite3_stmt *s;
+    assert_int_equal(sqlite3_prepare_v2(file, "SELECT (SELECT user_version"
+        " FROM pragma_user_version), (SELECT application_id FROM"
+        " pragma_application_id)", -1, &s, NULL), SQLITE_OK);
+    assert_int_equal(sqlite3_step(s), SQLITE_ROW);
+    assert_int_equal(sqlite3_column_int(s, 0), STORE_SCHEMA_VERSION);
+    assert_int_equal(sqlite3_column_int(s, 1), 0x46434554);  /* "FCET" */
+    sqlite3_finalize(s);
     sqlite3_close(file);
-    sqlite3_close(script);
+    sqlite3_close(replay.db);
 }
 
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_entries_are_the_migrations),
-        cmocka_unit_test(test_new_file_is_the_script),
+        cmocka_unit_test(test_new_file_is_the_migrations),
         cmocka_unit_test(test_altered_current_refused),
         cmocka_unit_test(test_altered_older_refused),
     };
