@@ -67,7 +67,9 @@ STUDY_SRC := $(wildcard study/*.c)
 TUI_SRC   := $(wildcard tui/*.c)
 CLI_SRC   := $(filter-out cli/main.c,$(wildcard cli/*.c))
 LIB_SRC   := $(CORE_SRC) $(STORE_SRC) $(STUDY_SRC) $(TUI_SRC) $(CLI_SRC)
-LIB_OBJ   := $(LIB_SRC:%.c=$(BUILD)/%.o)
+# ... and the one source written by the build: Facet's schema of each
+# version as its migrations leave it (store_schemas, below).
+LIB_OBJ   := $(LIB_SRC:%.c=$(BUILD)/%.o) $(BUILD)/store/schema_script.o
 
 SUPPORT_SRC := $(wildcard tests/support/*.c)
 SUPPORT_OBJ := $(SUPPORT_SRC:%.c=$(BUILD)/%.o)
@@ -116,6 +118,26 @@ $(BUILD)/libfacet.a: $(LIB_OBJ)
 
 $(BUILD)/%.o: %.c
 	@mkdir -p $(dir $@)
+	$(CC) $(CFLAGS) -c -o $@ $<
+
+# store_schemas (store/store_internal.h): each version's entries of
+# sqlite_schema (type, name, CREATE statement), which store_schema_check
+# compares a file with, written by a program that runs the migrations of
+# store/schema.c themselves (store/tool/schema_script.c). It links those
+# objects alone, not libfacet.a, which holds what it writes; an edit of
+# any of them (the migrations) writes the file again, and
+# test_store_schema holds it to a replay of the migrations.
+SCHEMA_TOOL_OBJ := $(BUILD)/store/schema.o $(BUILD)/core/base/text.o \
+	$(BUILD)/core/base/error.o
+
+$(BUILD)/store/tool/schema_script: store/tool/schema_script.c $(SCHEMA_TOOL_OBJ)
+	@mkdir -p $(dir $@)
+	$(CC) $(CFLAGS) $(LDFLAGS) -o $@ $< $(SCHEMA_TOOL_OBJ) -lsqlite3
+
+$(BUILD)/store/schema_script.c: $(BUILD)/store/tool/schema_script
+	$< $@.tmp && mv $@.tmp $@
+
+$(BUILD)/store/schema_script.o: $(BUILD)/store/schema_script.c
 	$(CC) $(CFLAGS) -c -o $@ $<
 
 $(BUILD)/tests/%: tests/unit/%.c $(SUPPORT_OBJ) $(BUILD)/libfacet.a

@@ -54,6 +54,11 @@ int store_fail(struct store *store, const char *doing,
 int store_exec(struct store *store, const char *sql, const char *doing,
                struct facet_error *err);
 
+/* The one integer sql (a pragma, a count) gives, into *value; reading
+ * no row fills err. */
+int store_pragma_int(struct store *store, const char *sql, int *value,
+                     struct facet_error *err);
+
 /* Prepares sql; on failure fills err. */
 int store_prepare(struct store *store, const char *sql, sqlite3_stmt **out,
                   const char *doing, struct facet_error *err);
@@ -106,6 +111,24 @@ void store_read_quantity(sqlite3_stmt *stmt, int col, const struct quantity *q,
 int store_schema_migrate(struct store *store, int from, int to,
                          struct facet_error *err);
 
+/* One entry of Facet's schema, as sqlite_schema holds it. */
+struct store_schema_entry {
+    const char *type;           /* "table", "index" or "view" */
+    const char *name;
+    const char *sql;            /* its CREATE statement */
+};
+
+/* Facet's schema of each version (0 .. STORE_SCHEMA_VERSION) as
+ * store_schema_migrate leaves an empty database at it: the entries of
+ * sqlite_schema (but the automatic indexes, which SQLite makes with their
+ * tables) in its order, ending with one whose type is NULL. Their SQL run
+ * in order on an empty database makes the same sqlite_schema. Written at
+ * build time by store/tool/schema_script.c, which runs the migrations
+ * ($(BUILD)/store/schema_script.c); test_store_schema compares each with
+ * a replay of the migrations. */
+extern const struct store_schema_entry *const
+    store_schemas[STORE_SCHEMA_VERSION + 1];
+
 /* Checks that what store's file holds besides data is Facet's schema of
  * version (0 .. STORE_SCHEMA_VERSION), as store_schema_migrate makes it:
  * no trigger, no view but Facet's own word for word, no virtual table,
@@ -113,7 +136,7 @@ int store_schema_migrate(struct store *store, int from, int to,
  * type, NOT NULL, default, key, in order), foreign keys and kind.
  * Indexes and other ordinary tables are let be. FACET_EINPUT with a
  * one-line message naming the file and the first difference; nothing is
- * written. (schema_check.c) */
+ * written. The expectation is store_schemas[version]. (schema_check.c) */
 int store_schema_check(struct store *store, int version,
                        struct facet_error *err);
 
