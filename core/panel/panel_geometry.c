@@ -191,6 +191,8 @@ struct scratch {
     struct sort_key *edges;   /* panel's piece edges */
     struct sort_key *boundary;  /* edges left uncancelled */
     unsigned char *used;      /* boundary edges already in a loop */
+    size_t *bucket;           /* merged number + 1 -> where its edges
+                                 start among the panel's edges */
 };
 
 /* Merges the raw vertices [v0, v1) of one panel whose UV agree within
@@ -301,6 +303,7 @@ static void scratch_free(struct scratch *s)
     free(s->edges);
     free(s->boundary);
     free(s->used);
+    free(s->bucket);
 }
 
 /* Traces the outline loops of panel n from its kept pieces, appending to
@@ -308,18 +311,38 @@ static void scratch_free(struct scratch *s)
 static void trace_outline(struct panel_geometry *g, size_t n,
                           struct scratch *s)
 {
+    /* The piece edges sorted by start then end: bucketed by their start
+     * (the panel's own vertices, numbered from base), each bucket sorted
+     * by its end. A sort of them all and a binary search for every
+     * edge's reverse was a quarter of the panels' widths (issue 27);
+     * the order is the same, so the loops are. */
+    size_t base = g->panel_vertex[n];
+    size_t nvertices = g->panel_vertex[n + 1] - base;
+    size_t *bucket = s->bucket;
+    memset(bucket, 0, (nvertices + 1) * sizeof *bucket);
     size_t nedges = 0;
+    for (size_t p = g->panel_piece[n]; p < g->panel_piece[n + 1]; p++)
+        for (size_t c = g->piece_start[p]; c < g->piece_start[p + 1]; c++) {
+            bucket[g->corner[c] - base + 1]++;
+            nedges++;
+        }
+    for (size_t v = 0; v < nvertices; v++)
+        bucket[v + 1] += bucket[v];
+    /* bucket[v] is now where vertex v's edges start; s->root serves as
+     * the cursor while they are placed. */
+    size_t *cursor = s->root;
+    memcpy(cursor, bucket, nvertices * sizeof *cursor);
     for (size_t p = g->panel_piece[n]; p < g->panel_piece[n + 1]; p++) {
         size_t c0 = g->piece_start[p], c1 = g->piece_start[p + 1];
         for (size_t c = c0; c < c1; c++) {
-            s->edges[nedges].first = (int64_t)g->corner[c];
-            s->edges[nedges].second =
-                (int64_t)g->corner[c + 1 < c1 ? c + 1 : c0];
-            s->edges[nedges].k = 0;
-            nedges++;
+            struct sort_key *edge = &s->edges[cursor[g->corner[c] - base]++];
+            edge->first = (int64_t)g->corner[c];
+            edge->second = (int64_t)g->corner[c + 1 < c1 ? c + 1 : c0];
+            edge->k = 0;
         }
     }
-    sort_keys(s->edges, nedges);
+    for (size_t v = 0; v < nvertices; v++)
+        sort_keys(s->edges + bucket[v], bucket[v + 1] - bucket[v]);
     /* An edge is on the outline as often as it is not matched the other
      * way round by a neighbouring piece. */
     size_t nboundary = 0;
@@ -329,8 +352,10 @@ static void trace_outline(struct panel_geometry *g, size_t n,
                s->edges[e + same].first == s->edges[e].first &&
                s->edges[e + same].second == s->edges[e].second)
             same++;
-        size_t reverse = edge_count(s->edges, nedges, s->edges[e].second,
-                                    s->edges[e].first);
+        size_t to = (size_t)s->edges[e].second - base;
+        size_t reverse = edge_count(s->edges + bucket[to],
+                                    bucket[to + 1] - bucket[to],
+                                    s->edges[e].second, s->edges[e].first);
         for (size_t k = reverse; k < same; k++)
             s->boundary[nboundary++] = s->edges[e];
         e += same;
@@ -542,12 +567,13 @@ int panel_geometry_build_stoppable(const struct mesh *mesh,
         malloc((largest + 1) * sizeof *s.edges),
         malloc((largest + 1) * sizeof *s.boundary),
         malloc(largest + 1),
+        malloc((largest + 2) * sizeof *s.bucket),
     };
     if (!r.piece_vertex_start || !r.piece_triangle || !r.uv ||
         !r.position || !out->position || !out->uv || !out->piece_start ||
         !out->corner || !out->piece_triangle || !out->loop_start ||
         !out->outline || !s.keys || !s.root || !s.number || !s.merged ||
-        !s.first || !s.edges || !s.boundary || !s.used) {
+        !s.first || !s.edges || !s.boundary || !s.used || !s.bucket) {
         raw_free(&r);
         scratch_free(&s);
         return facet_error_set(err, FACET_EWORK,
