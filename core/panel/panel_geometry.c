@@ -193,7 +193,20 @@ struct scratch {
     unsigned char *used;      /* boundary edges already in a loop */
     size_t *bucket;           /* merged number + 1 -> where its edges
                                  start among the panel's edges */
+    size_t *same;             /* raw vertex -> the first raw vertex equal
+                                 to it, SIZE_MAX if none */
+    size_t *slot;             /* hash table of raw vertices by UV, at
+                                 least twice their count, a power of 2 */
 };
+
+/* The hash table's size for n raw vertices: a power of 2, at least 2n. */
+static size_t hash_slots(size_t n)
+{
+    size_t slots = 16;
+    while (slots < 2 * n)
+        slots *= 2;
+    return slots;
+}
 
 /* Merges the raw vertices [v0, v1) of one panel whose UV agree within
  * tolerance and whose positions agree within reach (m): merged[k - v0]
@@ -209,14 +222,49 @@ static size_t merge_vertices(const struct raw *r, size_t v0, size_t v1,
                              double reach, struct scratch *s)
 {
     size_t m = v1 - v0;
+    /* A raw vertex equal in UV and position to an earlier one (a mesh
+     * vertex cut from each triangle around it: two in three of them in
+     * the paper study) joins that one's cluster whatever the order: the
+     * earlier is seen first in its bucket and is within any tolerance.
+     * So only the first of equal ones is sorted and sought, the others
+     * take its cluster after, to the same clusters (issue 27). */
+    size_t slots = hash_slots(m);
+    memset(s->slot, 0xff, slots * sizeof *s->slot);
+    size_t unique = 0;
     for (size_t k = 0; k < m; k++) {
         const double *uv = &r->uv[2 * (v0 + k)];
-        s->keys[k].first = (int64_t)floor((uv[0] - umin) / tolerance);
-        s->keys[k].second = (int64_t)floor((uv[1] - vmin) / tolerance);
-        s->keys[k].k = k;
+        const double *p = &r->position[3 * (v0 + k)];
         s->root[k] = SIZE_MAX;
         s->number[k] = SIZE_MAX;
+        s->same[k] = SIZE_MAX;
+        uint64_t bits[2];
+        memcpy(bits, uv, sizeof bits);
+        size_t h = (size_t)((bits[0] * UINT64_C(0x9E3779B97F4A7C15) ^
+                             bits[1] * UINT64_C(0xC2B2AE3D27D4EB4F)) >> 32) &
+                   (slots - 1);
+        for (;; h = (h + 1) & (slots - 1)) {
+            size_t o = s->slot[h];
+            if (o == SIZE_MAX) {
+                s->slot[h] = k;
+                break;
+            }
+            const double *ouv = &r->uv[2 * (v0 + o)];
+            const double *q = &r->position[3 * (v0 + o)];
+            /* Differences, as the merge tests them: no inf merged. */
+            if (ouv[0] - uv[0] == 0 && ouv[1] - uv[1] == 0 &&
+                q[0] - p[0] == 0 && q[1] - p[1] == 0 && q[2] - p[2] == 0) {
+                s->same[k] = o;
+                break;
+            }
+        }
+        if (s->same[k] != SIZE_MAX)
+            continue;
+        s->keys[unique].first = (int64_t)floor((uv[0] - umin) / tolerance);
+        s->keys[unique].second = (int64_t)floor((uv[1] - vmin) / tolerance);
+        s->keys[unique].k = k;
+        unique++;
     }
+    m = unique;
     sort_keys(s->keys, m);
     /* Each vertex joins the cluster of a vertex already seen within
      * tolerance in its own or a neighbouring bucket, or starts one. A
@@ -251,6 +299,10 @@ static size_t merge_vertices(const struct raw *r, size_t v0, size_t v1,
         }
         s->root[k] = root;
     }
+    m = v1 - v0;
+    for (size_t k = 0; k < m; k++)
+        if (s->same[k] != SIZE_MAX)
+            s->root[k] = s->root[s->same[k]];
     /* Number the clusters in order of first occurrence, so that output
      * vertices follow the pieces. */
     size_t count = 0;
@@ -304,6 +356,8 @@ static void scratch_free(struct scratch *s)
     free(s->boundary);
     free(s->used);
     free(s->bucket);
+    free(s->same);
+    free(s->slot);
 }
 
 /* Traces the outline loops of panel n from its kept pieces, appending to
@@ -568,12 +622,15 @@ int panel_geometry_build_stoppable(const struct mesh *mesh,
         malloc((largest + 1) * sizeof *s.boundary),
         malloc(largest + 1),
         malloc((largest + 2) * sizeof *s.bucket),
+        malloc((largest + 1) * sizeof *s.same),
+        malloc(hash_slots(largest) * sizeof *s.slot),
     };
     if (!r.piece_vertex_start || !r.piece_triangle || !r.uv ||
         !r.position || !out->position || !out->uv || !out->piece_start ||
         !out->corner || !out->piece_triangle || !out->loop_start ||
         !out->outline || !s.keys || !s.root || !s.number || !s.merged ||
-        !s.first || !s.edges || !s.boundary || !s.used || !s.bucket) {
+        !s.first || !s.edges || !s.boundary || !s.used || !s.bucket ||
+        !s.same || !s.slot) {
         raw_free(&r);
         scratch_free(&s);
         return facet_error_set(err, FACET_EWORK,
