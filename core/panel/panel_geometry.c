@@ -191,7 +191,22 @@ struct scratch {
     struct sort_key *edges;   /* panel's piece edges */
     struct sort_key *boundary;  /* edges left uncancelled */
     unsigned char *used;      /* boundary edges already in a loop */
+    size_t *bucket;           /* merged number + 1 -> where its edges
+                                 start among the panel's edges */
+    size_t *same;             /* raw vertex -> the first raw vertex equal
+                                 to it, SIZE_MAX if none */
+    size_t *slot;             /* hash table of raw vertices by UV, at
+                                 least twice their count, a power of 2 */
 };
+
+/* The hash table's size for n raw vertices: a power of 2, at least 2n. */
+static size_t hash_slots(size_t n)
+{
+    size_t slots = 16;
+    while (slots < 2 * n)
+        slots *= 2;
+    return slots;
+}
 
 /* Merges the raw vertices [v0, v1) of one panel whose UV agree within
  * tolerance and whose positions agree within reach (m): merged[k - v0]
@@ -207,14 +222,49 @@ static size_t merge_vertices(const struct raw *r, size_t v0, size_t v1,
                              double reach, struct scratch *s)
 {
     size_t m = v1 - v0;
+    /* A raw vertex equal in UV and position to an earlier one (a mesh
+     * vertex cut from each triangle around it: two in three of them in
+     * the paper study) joins that one's cluster whatever the order: the
+     * earlier is seen first in its bucket and is within any tolerance.
+     * So only the first of equal ones is sorted and sought, the others
+     * take its cluster after, to the same clusters (issue 27). */
+    size_t slots = hash_slots(m);
+    memset(s->slot, 0xff, slots * sizeof *s->slot);
+    size_t unique = 0;
     for (size_t k = 0; k < m; k++) {
         const double *uv = &r->uv[2 * (v0 + k)];
-        s->keys[k].first = (int64_t)floor((uv[0] - umin) / tolerance);
-        s->keys[k].second = (int64_t)floor((uv[1] - vmin) / tolerance);
-        s->keys[k].k = k;
+        const double *p = &r->position[3 * (v0 + k)];
         s->root[k] = SIZE_MAX;
         s->number[k] = SIZE_MAX;
+        s->same[k] = SIZE_MAX;
+        uint64_t bits[2];
+        memcpy(bits, uv, sizeof bits);
+        size_t h = (size_t)((bits[0] * UINT64_C(0x9E3779B97F4A7C15) ^
+                             bits[1] * UINT64_C(0xC2B2AE3D27D4EB4F)) >> 32) &
+                   (slots - 1);
+        for (;; h = (h + 1) & (slots - 1)) {
+            size_t o = s->slot[h];
+            if (o == SIZE_MAX) {
+                s->slot[h] = k;
+                break;
+            }
+            const double *ouv = &r->uv[2 * (v0 + o)];
+            const double *q = &r->position[3 * (v0 + o)];
+            /* Differences, as the merge tests them: no inf merged. */
+            if (ouv[0] - uv[0] == 0 && ouv[1] - uv[1] == 0 &&
+                q[0] - p[0] == 0 && q[1] - p[1] == 0 && q[2] - p[2] == 0) {
+                s->same[k] = o;
+                break;
+            }
+        }
+        if (s->same[k] != SIZE_MAX)
+            continue;
+        s->keys[unique].first = (int64_t)floor((uv[0] - umin) / tolerance);
+        s->keys[unique].second = (int64_t)floor((uv[1] - vmin) / tolerance);
+        s->keys[unique].k = k;
+        unique++;
     }
+    m = unique;
     sort_keys(s->keys, m);
     /* Each vertex joins the cluster of a vertex already seen within
      * tolerance in its own or a neighbouring bucket, or starts one. A
@@ -249,6 +299,10 @@ static size_t merge_vertices(const struct raw *r, size_t v0, size_t v1,
         }
         s->root[k] = root;
     }
+    m = v1 - v0;
+    for (size_t k = 0; k < m; k++)
+        if (s->same[k] != SIZE_MAX)
+            s->root[k] = s->root[s->same[k]];
     /* Number the clusters in order of first occurrence, so that output
      * vertices follow the pieces. */
     size_t count = 0;
@@ -301,6 +355,9 @@ static void scratch_free(struct scratch *s)
     free(s->edges);
     free(s->boundary);
     free(s->used);
+    free(s->bucket);
+    free(s->same);
+    free(s->slot);
 }
 
 /* Traces the outline loops of panel n from its kept pieces, appending to
@@ -308,18 +365,38 @@ static void scratch_free(struct scratch *s)
 static void trace_outline(struct panel_geometry *g, size_t n,
                           struct scratch *s)
 {
+    /* The piece edges sorted by start then end: bucketed by their start
+     * (the panel's own vertices, numbered from base), each bucket sorted
+     * by its end. A sort of them all and a binary search for every
+     * edge's reverse was a quarter of the panels' widths (issue 27);
+     * the order is the same, so the loops are. */
+    size_t base = g->panel_vertex[n];
+    size_t nvertices = g->panel_vertex[n + 1] - base;
+    size_t *bucket = s->bucket;
+    memset(bucket, 0, (nvertices + 1) * sizeof *bucket);
     size_t nedges = 0;
+    for (size_t p = g->panel_piece[n]; p < g->panel_piece[n + 1]; p++)
+        for (size_t c = g->piece_start[p]; c < g->piece_start[p + 1]; c++) {
+            bucket[g->corner[c] - base + 1]++;
+            nedges++;
+        }
+    for (size_t v = 0; v < nvertices; v++)
+        bucket[v + 1] += bucket[v];
+    /* bucket[v] is now where vertex v's edges start; s->root serves as
+     * the cursor while they are placed. */
+    size_t *cursor = s->root;
+    memcpy(cursor, bucket, nvertices * sizeof *cursor);
     for (size_t p = g->panel_piece[n]; p < g->panel_piece[n + 1]; p++) {
         size_t c0 = g->piece_start[p], c1 = g->piece_start[p + 1];
         for (size_t c = c0; c < c1; c++) {
-            s->edges[nedges].first = (int64_t)g->corner[c];
-            s->edges[nedges].second =
-                (int64_t)g->corner[c + 1 < c1 ? c + 1 : c0];
-            s->edges[nedges].k = 0;
-            nedges++;
+            struct sort_key *edge = &s->edges[cursor[g->corner[c] - base]++];
+            edge->first = (int64_t)g->corner[c];
+            edge->second = (int64_t)g->corner[c + 1 < c1 ? c + 1 : c0];
+            edge->k = 0;
         }
     }
-    sort_keys(s->edges, nedges);
+    for (size_t v = 0; v < nvertices; v++)
+        sort_keys(s->edges + bucket[v], bucket[v + 1] - bucket[v]);
     /* An edge is on the outline as often as it is not matched the other
      * way round by a neighbouring piece. */
     size_t nboundary = 0;
@@ -329,8 +406,10 @@ static void trace_outline(struct panel_geometry *g, size_t n,
                s->edges[e + same].first == s->edges[e].first &&
                s->edges[e + same].second == s->edges[e].second)
             same++;
-        size_t reverse = edge_count(s->edges, nedges, s->edges[e].second,
-                                    s->edges[e].first);
+        size_t to = (size_t)s->edges[e].second - base;
+        size_t reverse = edge_count(s->edges + bucket[to],
+                                    bucket[to + 1] - bucket[to],
+                                    s->edges[e].second, s->edges[e].first);
         for (size_t k = reverse; k < same; k++)
             s->boundary[nboundary++] = s->edges[e];
         e += same;
@@ -542,12 +621,16 @@ int panel_geometry_build_stoppable(const struct mesh *mesh,
         malloc((largest + 1) * sizeof *s.edges),
         malloc((largest + 1) * sizeof *s.boundary),
         malloc(largest + 1),
+        malloc((largest + 2) * sizeof *s.bucket),
+        malloc((largest + 1) * sizeof *s.same),
+        malloc(hash_slots(largest) * sizeof *s.slot),
     };
     if (!r.piece_vertex_start || !r.piece_triangle || !r.uv ||
         !r.position || !out->position || !out->uv || !out->piece_start ||
         !out->corner || !out->piece_triangle || !out->loop_start ||
         !out->outline || !s.keys || !s.root || !s.number || !s.merged ||
-        !s.first || !s.edges || !s.boundary || !s.used) {
+        !s.first || !s.edges || !s.boundary || !s.used || !s.bucket ||
+        !s.same || !s.slot) {
         raw_free(&r);
         scratch_free(&s);
         return facet_error_set(err, FACET_EWORK,

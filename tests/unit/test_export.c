@@ -1,7 +1,8 @@
 /*
  * test_export.c: the exports of an option (issue 6) against what they must
  * hold: panel geometry whose pieces add up to the panel areas and whose
- * outlines enclose exactly the panel's UV area (holes included); an OBJ
+ * outlines enclose exactly the panel's UV area (holes included) and are
+ * the pieces' unmatched edges, counted by brute force (issue 27); an OBJ
  * that Facet's own loader reads back with one group per panel and, per
  * material, the area of the panelization; SVG maps with one mark per
  * panel; a scatter plot with one circle per option inside its axes; and
@@ -230,6 +231,94 @@ static void test_geometry_of_examples(void **state)
 
     example_fixture(&f, "torus", 40, 7, 9);
     assert_int_equal(check_geometry(&f), 0);
+    fixture_free(&f);
+}
+
+/* Brute force, against panel_geometry's sorted merge and outline: in
+ * every panel of f, no two vertices equal in UV and position (the merge
+ * joins them), and each directed piece edge (a, b) is on the outline as
+ * often as (a, b) outnumbers (b, a) among the pieces, counted pair by
+ * pair; the outline's edges are the consecutive points of its loops. Its
+ * count of panels checked. */
+static size_t check_outline_brute(const struct fixture *f)
+{
+    const struct panel_geometry *g = &f->geometry;
+    for (size_t n = 0; n < g->npanels; n++) {
+        for (size_t a = g->panel_vertex[n]; a < g->panel_vertex[n + 1]; a++)
+            for (size_t b = a + 1; b < g->panel_vertex[n + 1]; b++) {
+                const double *x = &g->position[3 * a], *y = &g->position[3 * b];
+                const double *u = &g->uv[2 * a], *v = &g->uv[2 * b];
+                assert_false(u[0] == v[0] && u[1] == v[1] && x[0] == y[0] &&
+                             x[1] == y[1] && x[2] == y[2]);
+            }
+        /* Every directed edge of the panel's pieces, then of its loops. */
+        size_t npiece_edges = g->piece_start[g->panel_piece[n + 1]] -
+                              g->piece_start[g->panel_piece[n]];
+        size_t l0 = g->panel_loop[n], l1 = g->panel_loop[n + 1];
+        size_t nloop_edges = g->loop_start[l1] - g->loop_start[l0];
+        size_t (*piece_edges)[2] = malloc((npiece_edges + 1) *
+                                          sizeof *piece_edges);
+        size_t (*loop_edges)[2] = malloc((nloop_edges + 1) *
+                                         sizeof *loop_edges);
+        assert_non_null(piece_edges);
+        assert_non_null(loop_edges);
+        size_t e = 0;
+        for (size_t p = g->panel_piece[n]; p < g->panel_piece[n + 1]; p++)
+            for (size_t c = g->piece_start[p]; c < g->piece_start[p + 1];
+                 c++) {
+                size_t next = c + 1 < g->piece_start[p + 1]
+                                  ? c + 1 : g->piece_start[p];
+                piece_edges[e][0] = g->corner[c];
+                piece_edges[e++][1] = g->corner[next];
+            }
+        e = 0;
+        for (size_t l = l0; l < l1; l++)
+            for (size_t k = g->loop_start[l]; k < g->loop_start[l + 1];
+                 k++) {
+                size_t next = k + 1 < g->loop_start[l + 1]
+                                  ? k + 1 : g->loop_start[l];
+                loop_edges[e][0] = g->outline[k];
+                loop_edges[e++][1] = g->outline[next];
+            }
+        for (size_t i = 0; i < npiece_edges; i++) {
+            size_t a = piece_edges[i][0], b = piece_edges[i][1];
+            long forward = 0, back = 0, outline = 0;
+            for (size_t j = 0; j < npiece_edges; j++) {
+                forward += piece_edges[j][0] == a && piece_edges[j][1] == b;
+                back += piece_edges[j][0] == b && piece_edges[j][1] == a;
+            }
+            for (size_t j = 0; j < nloop_edges; j++)
+                outline += loop_edges[j][0] == a && loop_edges[j][1] == b;
+            assert_int_equal(outline, forward > back ? forward - back : 0);
+        }
+        /* And nothing on the outline that no piece has. */
+        for (size_t j = 0; j < nloop_edges; j++) {
+            long found = 0;
+            for (size_t i = 0; i < npiece_edges; i++)
+                found += piece_edges[i][0] == loop_edges[j][0] &&
+                         piece_edges[i][1] == loop_edges[j][1];
+            assert_true(found > 0);
+        }
+        free(piece_edges);
+        free(loop_edges);
+    }
+    return g->npanels;
+}
+
+static void test_outline_by_brute_force(void **state)
+{
+    (void)state;
+    struct fixture f;
+    /* facet example roof's own resolution, 140, on a front's grid. */
+    example_fixture(&f, "roof", 140, 23, 37);
+    assert_int_equal(check_outline_brute(&f), 23 * 37);
+    fixture_free(&f);
+    /* Trimmed cells: two lobes or a hole in one. */
+    ring_fixture(&f, 60, 5, 5, 0.003);
+    assert_true(check_outline_brute(&f) > 10);
+    fixture_free(&f);
+    example_fixture(&f, "torus", 40, 7, 9);
+    assert_int_equal(check_outline_brute(&f), 7 * 9);
     fixture_free(&f);
 }
 
@@ -1094,6 +1183,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_geometry_of_examples),
         cmocka_unit_test(test_geometry_of_trimmed_panels),
+        cmocka_unit_test(test_outline_by_brute_force),
         cmocka_unit_test(test_obj_roundtrip),
         cmocka_unit_test(test_svg_map),
         cmocka_unit_test(test_palette_colour_blind),
