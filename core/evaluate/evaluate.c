@@ -148,20 +148,19 @@ static int build_and_measure(const struct surface *surface,
         /* The sides are the grid's, borrowed: not freed here. */
         rc = grid_fits_option_stoppable(fits, panels, options->threshold,
                                         smooth, stop, &built, &sides, err);
-    } else if (!measure_joints) {
-        /* The fits alone read the sides: the SP panels' points. */
-        rc = cell_sides_sample_fits_stoppable(&surface->mesh, &surface->uv,
-                                              &surface->curvature, panels,
-                                              smooth, stop, &sides, err);
-        if (rc == FACET_OK)
-            rc = built_option_fit_stoppable(&surface->mesh, &surface->fit,
-                                            panels, &sides,
-                                            options->threshold, smooth, stop,
-                                            &built, err);
     } else {
-        rc = cell_sides_sample_stoppable(&surface->mesh, &surface->uv,
-                                         &surface->curvature, panels, stop,
-                                         &sides, err);
+        /* Without joints, the fits alone read the sides: the SP panels'
+         * points, sampled alone. */
+        if (measure_joints)
+            rc = cell_sides_sample_stoppable(&surface->mesh, &surface->uv,
+                                             &surface->curvature, panels,
+                                             stop, &sides, err);
+        else
+            rc = cell_sides_sample_fits_stoppable(&surface->mesh,
+                                                  &surface->uv,
+                                                  &surface->curvature,
+                                                  panels, smooth, stop,
+                                                  &sides, err);
         if (rc == FACET_OK)
             rc = built_option_fit_stoppable(&surface->mesh, &surface->fit,
                                             panels, &sides,
